@@ -1,0 +1,194 @@
+#include "base/nl_base.h"
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+nl_status nl_fail(nl_error *err, nl_status status, const char *fmt, ...)
+{
+  if (err) {
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err->msg, sizeof err->msg, fmt, ap);
+    va_end(ap);
+  }
+  return status;
+}
+
+static void oom(size_t n)
+{
+  fprintf(stderr, "noiselab: out of memory allocating %zu bytes\n", n);
+  exit(3);
+}
+
+void *nl_xmalloc(size_t n)
+{
+  void *p = malloc(n ? n : 1);
+  if (!p) oom(n);
+  return p;
+}
+
+void *nl_xcalloc(size_t n, size_t size)
+{
+  void *p = calloc(n ? n : 1, size ? size : 1);
+  if (!p) oom(n * size);
+  return p;
+}
+
+void *nl_xrealloc(void *p, size_t n)
+{
+  void *q = realloc(p, n ? n : 1);
+  if (!q) oom(n);
+  return q;
+}
+
+char *nl_xstrdup(const char *s)
+{
+  size_t n = strlen(s) + 1;
+  char *d = nl_xmalloc(n);
+  memcpy(d, s, n);
+  return d;
+}
+
+char *nl_path_join(const char *dir, const char *name)
+{
+  size_t a = strlen(dir), b = strlen(name);
+  char *p = nl_xmalloc(a + b + 2);
+  memcpy(p, dir, a);
+  size_t k = a;
+  if (a > 0 && dir[a - 1] != '/') p[k++] = '/';
+  memcpy(p + k, name, b + 1);
+  return p;
+}
+
+char *nl_temp_sibling(const char *path)
+{
+  const char *slash = strrchr(path, '/');
+  const char *base = slash ? slash + 1 : path;
+  const char *dot = strrchr(base, '.');
+  size_t dirlen = (size_t)(base - path);
+  size_t stemlen = dot ? (size_t)(dot - base) : strlen(base);
+  const char *ext = dot ? dot : "";
+  size_t n = dirlen + 1 + stemlen + 8 + strlen(ext) + 1;
+  char *t = nl_xmalloc(n);
+  snprintf(t, n, "%.*s.%.*s.XXXXXX%s", (int)dirlen, path, (int)stemlen, base, ext);
+  return t;
+}
+
+nl_status nl_atomic_open(nl_atomic_file *af, const char *path, nl_error *err)
+{
+  af->fp = NULL;
+  af->path = nl_xstrdup(path);
+  af->tmp = nl_temp_sibling(path);
+  const char *dot = strrchr(af->tmp, '.');
+  int suffix = (dot && strstr(af->tmp, "XXXXXX") < dot) ? (int)strlen(dot) : 0;
+  int fd = mkstemps(af->tmp, suffix);
+  if (fd < 0) {
+    nl_status s = nl_fail(err, NL_EIO, "%s: cannot create: %s", path, strerror(errno));
+    free(af->path); free(af->tmp);
+    af->path = af->tmp = NULL;
+    return s;
+  }
+  /* mkstemp makes 0600 files; results are meant to be shared. */
+  fchmod(fd, 0644);
+  af->fp = fdopen(fd, "w");
+  if (!af->fp) {
+    close(fd);
+    unlink(af->tmp);
+    return nl_fail(err, NL_EIO, "%s: cannot open: %s", path, strerror(errno));
+  }
+  return NL_OK;
+}
+
+nl_status nl_atomic_commit(nl_atomic_file *af, nl_error *err)
+{
+  int bad = ferror(af->fp);
+  if (fclose(af->fp) != 0) bad = 1;
+  af->fp = NULL;
+  nl_status s = NL_OK;
+  if (bad) {
+    s = nl_fail(err, NL_EIO, "%s: write failed: %s", af->path, strerror(errno));
+    unlink(af->tmp);
+  } else if (rename(af->tmp, af->path) != 0) {
+    s = nl_fail(err, NL_EIO, "%s: cannot rename into place: %s", af->path, strerror(errno));
+    unlink(af->tmp);
+  }
+  free(af->path); free(af->tmp);
+  af->path = af->tmp = NULL;
+  return s;
+}
+
+void nl_atomic_abort(nl_atomic_file *af)
+{
+  if (af->fp) fclose(af->fp);
+  if (af->tmp) unlink(af->tmp);
+  free(af->path); free(af->tmp);
+  af->fp = NULL; af->path = af->tmp = NULL;
+}
+
+nl_status nl_mkdir_p(const char *dir, nl_error *err)
+{
+  char *p = nl_xstrdup(dir);
+  for (char *q = p + 1; ; q++) {
+    if (*q == '/' || *q == '\0') {
+      char c = *q;
+      *q = '\0';
+      if (mkdir(p, 0755) != 0 && errno != EEXIST) {
+        nl_status s = nl_fail(err, NL_EIO, "%s: cannot create directory: %s", p, strerror(errno));
+        free(p);
+        return s;
+      }
+      *q = c;
+      if (c == '\0') break;
+    }
+  }
+  struct stat st;
+  nl_status s = NL_OK;
+  if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))
+    s = nl_fail(err, NL_EIO, "%s: not a directory", dir);
+  free(p);
+  return s;
+}
+
+double nl_time_now(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+nl_status nl_parse_double(const char *what, const char *s, double lo, double hi,
+                          double *out, nl_error *err)
+{
+  if (!s || !*s) return nl_fail(err, NL_EINVAL, "%s: missing value", what);
+  char *end;
+  errno = 0;
+  double v = strtod(s, &end);
+  if (*end != '\0' || end == s)
+    return nl_fail(err, NL_EINVAL, "%s: '%s' is not a number", what, s);
+  if (v != v || errno == ERANGE || v > 1.7976931348623157e308 || v < -1.7976931348623157e308)
+    return nl_fail(err, NL_EINVAL, "%s: '%s' is not a finite number", what, s);
+  if (v < lo || v > hi)
+    return nl_fail(err, NL_EINVAL, "%s: %s is outside [%g, %g]", what, s, lo, hi);
+  *out = v;
+  return NL_OK;
+}
+
+nl_status nl_parse_long(const char *what, const char *s, long lo, long hi,
+                        long *out, nl_error *err)
+{
+  if (!s || !*s) return nl_fail(err, NL_EINVAL, "%s: missing value", what);
+  char *end;
+  errno = 0;
+  long v = strtol(s, &end, 10);
+  if (*end != '\0' || end == s)
+    return nl_fail(err, NL_EINVAL, "%s: '%s' is not an integer", what, s);
+  if (errno == ERANGE || v < lo || v > hi)
+    return nl_fail(err, NL_EINVAL, "%s: %s is outside [%ld, %ld]", what, s, lo, hi);
+  *out = v;
+  return NL_OK;
+}

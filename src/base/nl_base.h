@@ -1,0 +1,75 @@
+/* nl_base.h - status codes, error messages and atomic file output.
+ *
+ * Every fallible library call returns an nl_status (0 = NL_OK) and, when it
+ * fails, leaves a one-line human message in an nl_error the caller passed
+ * (or NULL to ignore it). Messages name the input and the problem, e.g.
+ *   "data.tsv:12: column 3 is not a number: 'abc'"
+ * so that programs can print them unchanged and exit non-zero.
+ *
+ * Output files are written atomically: nl_atomic_open() creates a hidden
+ * temporary file beside the target, nl_atomic_commit() flushes and renames
+ * it over the target, nl_atomic_abort() removes it. A crash or an error half
+ * way never leaves a truncated file under the final name, and never destroys
+ * the previous version.
+ */
+#ifndef NL_BASE_H
+#define NL_BASE_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+typedef enum {
+  NL_OK = 0,
+  NL_EINVAL = 1,   /* bad argument or parameter */
+  NL_EIO = 2,      /* file cannot be opened, read or written */
+  NL_EFORMAT = 3,  /* file content malformed */
+  NL_ENOMEM = 4,
+  NL_ENUM = 5      /* numerical failure (singular matrix, no convergence) */
+} nl_status;
+
+#define NL_ERROR_LEN 512
+typedef struct { char msg[NL_ERROR_LEN]; } nl_error;
+
+/* Sets err->msg (if err != NULL) and returns status, for `return nl_fail(...)`. */
+nl_status nl_fail(nl_error *err, nl_status status, const char *fmt, ...)
+  __attribute__((format(printf, 3, 4)));
+
+/* Allocation that exits with a message on failure: out-of-memory is not a
+ * condition any caller here can recover from. */
+void *nl_xmalloc(size_t n);
+void *nl_xcalloc(size_t n, size_t size);
+void *nl_xrealloc(void *p, size_t n);
+char *nl_xstrdup(const char *s);
+
+typedef struct {
+  FILE *fp;
+  char *path;   /* final name */
+  char *tmp;    /* temporary name in the same directory */
+} nl_atomic_file;
+
+nl_status nl_atomic_open(nl_atomic_file *af, const char *path, nl_error *err);
+nl_status nl_atomic_commit(nl_atomic_file *af, nl_error *err);
+void nl_atomic_abort(nl_atomic_file *af);
+/* A temporary path beside `path` keeping its extension (image writers pick
+ * the format from it): "dir/.name.XXXXXX.png". Caller frees. */
+char *nl_temp_sibling(const char *path);
+
+/* Creates a directory and its parents (mkdir -p). */
+nl_status nl_mkdir_p(const char *dir, nl_error *err);
+/* Joins dir and name with one '/'. Caller frees. */
+char *nl_path_join(const char *dir, const char *name);
+
+/* Parse a whole string as a finite number within [lo, hi]; `what` names the
+ * argument in the message ("--octaves: 'x' is not a number"). */
+nl_status nl_parse_double(const char *what, const char *s, double lo, double hi,
+                          double *out, nl_error *err);
+nl_status nl_parse_long(const char *what, const char *s, long lo, long hi,
+                        long *out, nl_error *err);
+
+/* Wall-clock seconds from a monotonic clock. */
+double nl_time_now(void);
+
+#define NL_PI 3.14159265358979323846
+#define NL_TWO_PI 6.28318530717958647692
+
+#endif

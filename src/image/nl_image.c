@@ -1,0 +1,126 @@
+#include "image/nl_image.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The font: stb_easy_font (public domain, Debian's libstb-dev) turns text
+ * into axis-aligned quads, which we fill as rectangles. Unused-function
+ * warnings come from its static API. */
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#pragma GCC diagnostic ignored "-Wconversion"
+#include <stb/stb_easy_font.h>
+#pragma GCC diagnostic pop
+
+nl_image *nl_image_alloc(int width, int height, int channels)
+{
+  nl_image *im = nl_xmalloc(sizeof *im);
+  im->width = width;
+  im->height = height;
+  im->channels = channels;
+  im->data = nl_xcalloc((size_t)width * height * channels, sizeof *im->data);
+  return im;
+}
+
+void nl_image_free(nl_image *im)
+{
+  if (!im) return;
+  free(im->data);
+  free(im);
+}
+
+nl_image *nl_image_from_values(const double *v, int w, int h, double lo, double hi)
+{
+  nl_image *im = nl_image_alloc(w, h, 1);
+  double s = hi > lo ? 1.0 / (hi - lo) : 0.0;
+  for (size_t i = 0; i < (size_t)w * h; i++) {
+    double u = (v[i] - lo) * s;
+    im->data[i] = (float)(u < 0 ? 0 : u > 1 ? 1 : u);
+  }
+  return im;
+}
+
+nl_image *nl_image_convert(const nl_image *im, int channels)
+{
+  nl_image *o = nl_image_alloc(im->width, im->height, channels);
+  size_t n = (size_t)im->width * im->height;
+  for (size_t i = 0; i < n; i++) {
+    const float *s = im->data + i * im->channels;
+    float *d = o->data + i * channels;
+    float r = s[0], g = im->channels >= 3 ? s[1] : s[0], b = im->channels >= 3 ? s[2] : s[0];
+    float a = im->channels == 4 ? s[3] : 1.0f;
+    if (channels == 1) d[0] = 0.2126f * r + 0.7152f * g + 0.0722f * b;
+    else { d[0] = r; d[1] = g; d[2] = b; if (channels == 4) d[3] = a; }
+  }
+  return o;
+}
+
+int nl_text_width(const char *text, int scale)
+{ return stb_easy_font_width((char *)text) * scale; }
+
+int nl_text_height(const char *text, int scale)
+{ return stb_easy_font_height((char *)text) * scale; }
+
+static void fill_rect(nl_image *im, int x0, int y0, int x1, int y1, const float *rgb)
+{
+  if (x0 < 0) x0 = 0;
+  if (y0 < 0) y0 = 0;
+  if (x1 > im->width) x1 = im->width;
+  if (y1 > im->height) y1 = im->height;
+  for (int y = y0; y < y1; y++)
+    for (int x = x0; x < x1; x++) {
+      float *p = nl_image_pixel(im, x, y);
+      for (int c = 0; c < im->channels && c < 3; c++) p[c] = rgb[im->channels == 1 ? 0 : c];
+    }
+}
+
+void nl_image_text(nl_image *im, int x, int y, int scale, const char *text, const float *rgb)
+{
+  /* ~270 bytes per character, 16 bytes per vertex, 4 vertices per quad. */
+  size_t cap = 300 * (strlen(text) + 1);
+  float *vb = nl_xmalloc(cap);
+  int nq = stb_easy_font_print(0, 0, (char *)text, NULL, vb, (int)cap);
+  for (int q = 0; q < nq; q++) {
+    const float *v = vb + q * 16;           /* 4 vertices of 4 floats */
+    float qx0 = v[0], qy0 = v[1], qx1 = v[8], qy1 = v[9];
+    fill_rect(im, x + (int)lrintf(qx0 * scale), y + (int)lrintf(qy0 * scale),
+              x + (int)lrintf(qx1 * scale), y + (int)lrintf(qy1 * scale), rgb);
+  }
+  free(vb);
+}
+
+nl_image *nl_montage(const nl_image *const *images, const char *const *labels, int n,
+                     int cols, const char *title)
+{
+  int cw = 1, chh = 1, pad = 8;
+  for (int i = 0; i < n; i++) {
+    if (images[i]->width > cw) cw = images[i]->width;
+    if (images[i]->height > chh) chh = images[i]->height;
+  }
+  /* Captions scale with the panels so they stay legible in large montages. */
+  int scale = cw >= 384 ? 3 : 2;
+  int caph = 12 * scale + pad;
+  int titleh = title ? 14 * scale + pad : 0;
+  if (cols < 1) cols = 1;
+  if (cols > n) cols = n;
+  int rows = (n + cols - 1) / cols;
+  nl_image *m = nl_image_alloc(pad + cols * (cw + pad), titleh + pad + rows * (chh + caph + pad), 3);
+  for (size_t i = 0; i < (size_t)m->width * m->height * 3; i++) m->data[i] = 1.0f;
+  const float black[3] = {0, 0, 0};
+  if (title) nl_image_text(m, pad, pad, scale, title, black);
+  for (int i = 0; i < n; i++) {
+    nl_image *rgb = nl_image_convert(images[i], 3);
+    int x0 = pad + (i % cols) * (cw + pad) + (cw - rgb->width) / 2;
+    int y0 = titleh + pad + (i / cols) * (chh + caph + pad);
+    for (int y = 0; y < rgb->height; y++)
+      memcpy(nl_image_pixel(m, x0, y0 + y), nl_image_pixel(rgb, 0, y), (size_t)rgb->width * 3 * sizeof(float));
+    if (labels && labels[i]) {
+      int tw = nl_text_width(labels[i], scale);
+      nl_image_text(m, pad + (i % cols) * (cw + pad) + (cw - tw) / 2, y0 + chh + pad / 2, scale, labels[i], black);
+    }
+    nl_image_free(rgb);
+  }
+  return m;
+}

@@ -1,0 +1,57 @@
+/* nl_image.h - float images, read and written through OpenImageIO.
+ *
+ * An nl_image is width x height pixels of `channels` floats (1 grey, 3 RGB,
+ * 4 RGBA), interleaved, rows top to bottom. Integer files map to [0, 1].
+ *
+ *   nl_image *im = nl_image_alloc(512, 512, 3);
+ *   nl_image_write(im, "out.png", 8, &err);    // format from the extension;
+ *                                              // bits 8/16 for PNG, 16/32 (half/
+ *                                              // float) for EXR, 8/16/32 TIFF
+ *   nl_image_read("in.exr", &im, &err);        // any format OIIO reads
+ *
+ * Writes are atomic (temporary file beside the target, then rename). Errors
+ * name the file and carry OpenImageIO's reason.
+ *
+ * Montage: nl_montage() lays images out in a grid with a caption under each
+ * panel ("(a) 1 octave"), so a multi-panel figure is one PNG. Text uses the
+ * stb_easy_font bitmap font scaled by an integer factor.
+ */
+#ifndef NL_IMAGE_H
+#define NL_IMAGE_H
+
+#include "base/nl_base.h"
+
+typedef struct {
+  int width, height, channels;
+  float *data;
+} nl_image;
+
+nl_image *nl_image_alloc(int width, int height, int channels);
+void nl_image_free(nl_image *im);
+static inline float *nl_image_pixel(const nl_image *im, int x, int y)
+{ return im->data + ((size_t)y * im->width + x) * im->channels; }
+
+nl_status nl_image_read(const char *path, nl_image **out, nl_error *err);
+nl_status nl_image_write(const nl_image *im, const char *path, int bits, nl_error *err);
+
+/* A grey image from a w*h array of doubles, mapped linearly so that lo -> 0
+ * and hi -> 1 (values outside are clamped). */
+nl_image *nl_image_from_values(const double *v, int w, int h, double lo, double hi);
+
+/* Converts to `channels` (1, 3 or 4): grey is replicated, RGB -> grey by
+ * Rec. 709 luminance, alpha added as 1 or dropped. */
+nl_image *nl_image_convert(const nl_image *im, int channels);
+
+/* Draws text with its top-left corner at (x, y), `scale` pixels per font
+ * pixel, in colour rgb (3 floats). Clipped to the image. */
+void nl_image_text(nl_image *im, int x, int y, int scale, const char *text, const float *rgb);
+int nl_text_width(const char *text, int scale);
+int nl_text_height(const char *text, int scale);
+
+/* n images in a grid of `cols` columns on a white background, each cell as
+ * large as the largest image, a caption under each (labels may be NULL or
+ * contain NULLs), and an optional title above. Output is RGB. */
+nl_image *nl_montage(const nl_image *const *images, const char *const *labels, int n,
+                     int cols, const char *title);
+
+#endif

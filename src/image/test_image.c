@@ -1,0 +1,125 @@
+#include "image/nl_image.h"
+#include "nl_test.h"
+
+#include <dirent.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static char dir[] = "/tmp/nl_test_image_XXXXXX";
+
+static nl_image *ramp(int w, int h, int c)
+{
+  nl_image *im = nl_image_alloc(w, h, c);
+  for (size_t i = 0; i < (size_t)w * h * c; i++) im->data[i] = (float)(i % 256) / 255.0f;
+  return im;
+}
+
+static double max_diff(const nl_image *a, const nl_image *b)
+{
+  if (a->width != b->width || a->height != b->height || a->channels != b->channels) return 1e9;
+  double d = 0;
+  for (size_t i = 0; i < (size_t)a->width * a->height * a->channels; i++)
+    d = fmax(d, fabs((double)a->data[i] - b->data[i]));
+  return d;
+}
+
+static void round_trip(const char *name, int bits, int channels, double tol)
+{
+  nl_image *a = ramp(37, 23, channels), *b = NULL;
+  char *p = nl_path_join(dir, name);
+  nl_error err = {{0}};
+  NL_CHECK(nl_image_write(a, p, bits, &err) == NL_OK);
+  NL_CHECK(nl_image_read(p, &b, &err) == NL_OK);
+  if (b && max_diff(a, b) > tol) fprintf(stderr, "  %s: max diff %g\n", name, max_diff(a, b));
+  if (b) NL_CHECK(max_diff(a, b) <= tol);
+  else fprintf(stderr, "  %s: %s\n", name, err.msg);
+  nl_image_free(a); nl_image_free(b); free(p);
+}
+
+NL_TEST(png_exr_tiff_round_trips)
+{
+  round_trip("a.png", 8, 1, 1e-7);        /* k/255 survives 8 bits (to float rounding) */
+  round_trip("b.png", 16, 3, 1e-7);
+  round_trip("c.png", 8, 4, 1e-7);
+  round_trip("d.exr", 32, 3, 0.0);
+  round_trip("e.tif", 32, 1, 0.0);
+}
+
+static int fails_naming(const char *path, const char *content)
+{
+  if (content) { FILE *f = fopen(path, "w"); fputs(content, f); fclose(f); }
+  nl_image *im = NULL;
+  nl_error err = {{0}};
+  nl_status s = nl_image_read(path, &im, &err);
+  int ok = s != NL_OK && !im && strncmp(err.msg, path, strlen(path)) == 0 && !strchr(err.msg, '\n');
+  if (!ok) fprintf(stderr, "  %s -> '%s'\n", path, err.msg);
+  return ok;
+}
+
+NL_TEST(bad_images_name_the_file)
+{
+  char *missing = nl_path_join(dir, "missing.png");
+  char *text = nl_path_join(dir, "text.png");
+  NL_CHECK(fails_naming(missing, NULL));
+  NL_CHECK(fails_naming(text, "this is not an image\n"));
+  /* A PNG cut in half. */
+  nl_image *a = ramp(64, 64, 3);
+  char *full = nl_path_join(dir, "full.png");
+  nl_error err;
+  NL_CHECK(nl_image_write(a, full, 8, &err) == NL_OK);
+  FILE *f = fopen(full, "rb");
+  char buf[8192];
+  size_t n = fread(buf, 1, sizeof buf, f);
+  fclose(f);
+  char *cut = nl_path_join(dir, "cut.png");
+  f = fopen(cut, "wb");
+  fwrite(buf, 1, n / 2, f);
+  fclose(f);
+  NL_CHECK(fails_naming(cut, NULL));
+  nl_image_free(a);
+  free(missing); free(text); free(full); free(cut);
+}
+
+NL_TEST(failed_write_leaves_nothing)
+{
+  nl_image *a = ramp(8, 8, 1);
+  nl_error err;
+  NL_CHECK(nl_image_write(a, "/nonexistent/x.png", 8, &err) != NL_OK);
+  NL_CHECK(strstr(err.msg, "/nonexistent/x.png") != NULL);
+  char *noext = nl_path_join(dir, "noext");
+  NL_CHECK(nl_image_write(a, noext, 8, &err) == NL_EINVAL);
+  /* No temporary files left in the directory. */
+  DIR *d = opendir(dir);
+  struct dirent *e;
+  int hidden = 0;
+  while ((e = readdir(d))) if (e->d_name[0] == '.' && strlen(e->d_name) > 2) hidden++;
+  closedir(d);
+  NL_CHECK(hidden == 0);
+  nl_image_free(a); free(noext);
+}
+
+NL_TEST(montage_layout_and_text)
+{
+  nl_image *a = ramp(50, 40, 1), *b = ramp(30, 60, 3);
+  const nl_image *ims[] = {a, b, a};
+  const char *labels[] = {"(a) one", "(b) two", NULL};
+  nl_image *m = nl_montage(ims, labels, 3, 2, "title");
+  NL_CHECK(m->channels == 3 && m->width == 8 + 2 * (50 + 8));
+  /* Some caption pixel is black (the text was drawn). */
+  int dark = 0;
+  for (int y = 0; y < m->height; y++)
+    for (int x = 0; x < m->width; x++) if (nl_image_pixel(m, x, y)[0] == 0.0f && y > 40 + 36) dark++;
+  NL_CHECK(dark > 10);
+  nl_image_free(a); nl_image_free(b); nl_image_free(m);
+}
+
+int main(void)
+{
+  if (!mkdtemp(dir)) return 1;
+  int r = nl_test_run();
+  char cmd[128];
+  snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+  if (system(cmd) != 0) return 1;
+  return r;
+}

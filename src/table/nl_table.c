@@ -1,0 +1,228 @@
+#include "table/nl_table.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+nl_table *nl_table_alloc(size_t ncols, const char *const *names)
+{
+  nl_table *t = nl_xcalloc(1, sizeof *t);
+  t->ncols = ncols;
+  t->names = nl_xcalloc(ncols, sizeof *t->names);
+  for (size_t c = 0; c < ncols; c++)
+    t->names[c] = nl_xstrdup(names && names[c] ? names[c] : "");
+  return t;
+}
+
+void nl_table_free(nl_table *t)
+{
+  if (!t) return;
+  for (size_t c = 0; c < t->ncols; c++) free(t->names[c]);
+  if (t->text)
+    for (size_t k = 0; k < t->nrows * t->ncols; k++) free(t->text[k]);
+  free(t->names); free(t->num); free(t->text); free(t);
+}
+
+static size_t grow(nl_table *t)
+{
+  if (t->nrows == t->cap) {
+    size_t cap = t->cap ? 2 * t->cap : 16;
+    t->num = nl_xrealloc(t->num, cap * t->ncols * sizeof *t->num);
+    t->text = nl_xrealloc(t->text, cap * t->ncols * sizeof *t->text);
+    t->cap = cap;
+  }
+  size_t r = t->nrows++;
+  for (size_t c = 0; c < t->ncols; c++) {
+    t->num[r * t->ncols + c] = NAN;
+    t->text[r * t->ncols + c] = NULL;
+  }
+  return r;
+}
+
+void nl_table_append(nl_table *t, const char *fmt, ...)
+{
+  size_t r = grow(t);
+  va_list ap;
+  va_start(ap, fmt);
+  for (size_t c = 0; c < t->ncols && fmt[c]; c++) {
+    size_t k = r * t->ncols + c;
+    switch (fmt[c]) {
+    case 'd': t->num[k] = va_arg(ap, double); break;
+    case 'i': t->num[k] = (double)va_arg(ap, int); break;
+    case 's': t->text[k] = nl_xstrdup(va_arg(ap, const char *)); break;
+    default: abort(); /* programming error: bad format character */
+    }
+  }
+  va_end(ap);
+}
+
+void nl_table_append_doubles(nl_table *t, const double *row)
+{
+  size_t r = grow(t);
+  memcpy(t->num + r * t->ncols, row, t->ncols * sizeof *row);
+}
+
+long nl_table_column(const nl_table *t, const char *name)
+{
+  for (size_t c = 0; c < t->ncols; c++)
+    if (strcmp(t->names[c], name) == 0) return (long)c;
+  return -1;
+}
+
+void nl_format_double(char *buf, double v)
+{
+  if (v == 0) { strcpy(buf, v == 0 && signbit(v) ? "-0" : "0"); return; }
+  snprintf(buf, 32, "%.15g", v);
+  if (strtod(buf, NULL) != v) snprintf(buf, 32, "%.17g", v);
+}
+
+nl_status nl_table_write(const nl_table *t, const char *path, nl_error *err)
+{
+  nl_atomic_file af;
+  nl_status s = nl_atomic_open(&af, path, err);
+  if (s) return s;
+  for (size_t c = 0; c < t->ncols; c++)
+    fprintf(af.fp, "%s%s", c ? "\t" : "", t->names[c]);
+  fputc('\n', af.fp);
+  char buf[32];
+  for (size_t r = 0; r < t->nrows; r++) {
+    for (size_t c = 0; c < t->ncols; c++) {
+      size_t k = r * t->ncols + c;
+      const char *cell = t->text && t->text[k] ? t->text[k] : NULL;
+      if (!cell) { nl_format_double(buf, t->num[k]); cell = buf; }
+      fprintf(af.fp, "%s%s", c ? "\t" : "", cell);
+    }
+    fputc('\n', af.fp);
+  }
+  return nl_atomic_commit(&af, err);
+}
+
+/* ---- reading ---------------------------------------------------------- */
+
+/* Splits line in place; returns the number of fields (at most max). */
+static size_t split(char *line, int ws, char **f, size_t max)
+{
+  size_t n = 0;
+  char *p = line;
+  if (ws) {
+    for (;;) {
+      while (*p == ' ' || *p == '\t') p++;
+      if (!*p) break;
+      if (n < max) f[n] = p;
+      n++;
+      while (*p && *p != ' ' && *p != '\t') p++;
+      if (!*p) break;
+      *p++ = '\0';
+    }
+    return n;
+  }
+  for (;;) {
+    if (n < max) f[n] = p;
+    n++;
+    char *tab = strchr(p, '\t');
+    if (!tab) break;
+    *tab = '\0';
+    p = tab + 1;
+  }
+  return n;
+}
+
+/* 1 = finite number, 0 = not a number, -1 = NaN or infinite. */
+static int parse_num(const char *s, double *v)
+{
+  if (!*s) return 0;
+  char *end;
+  errno = 0;
+  *v = strtod(s, &end);
+  if (end == s) return 0;
+  while (*end == ' ') end++;
+  if (*end) return 0;
+  if (!isfinite(*v)) return -1;
+  return 1;
+}
+
+static void chomp(char *line)
+{
+  size_t n = strlen(line);
+  while (n > 0 && (line[n - 1] == '\n' || line[n - 1] == '\r')) line[--n] = '\0';
+}
+
+static int blank(const char *s)
+{
+  for (; *s; s++) if (*s != ' ' && *s != '\t') return 0;
+  return 1;
+}
+
+static nl_status read_rows(FILE *fp, const char *path, int flags, nl_table **out, nl_error *err)
+{
+  char *line = NULL;
+  size_t cap = 0, lineno = 0, fmax = 0;
+  char **f = NULL;
+  nl_table *t = NULL;
+  nl_status s = NL_OK;
+  int ws = (flags & NL_TABLE_WHITESPACE) != 0;
+  while (getline(&line, &cap, fp) >= 0) {
+    lineno++;
+    chomp(line);
+    if (line[0] == '#' || blank(line)) continue;
+    size_t len = strlen(line) + 1;   /* an upper bound on the field count */
+    if (len > fmax) { fmax = len; f = nl_xrealloc(f, fmax * sizeof *f); }
+    size_t n = split(line, ws, f, fmax);
+    if (!t) {
+      int header = 1;
+      if (flags & NL_TABLE_HEADER_AUTO) {
+        header = 0;
+        double v;
+        for (size_t c = 0; c < n; c++) if (parse_num(f[c], &v) != 1) header = 1;
+      }
+      char **names = nl_xcalloc(n, sizeof *names);
+      char num[32];
+      for (size_t c = 0; c < n; c++) {
+        if (header) names[c] = f[c];
+        else { snprintf(num, sizeof num, "c%zu", c + 1); names[c] = nl_xstrdup(num); }
+      }
+      t = nl_table_alloc(n, (const char *const *)names);
+      if (!header) for (size_t c = 0; c < n; c++) free(names[c]);
+      free(names);
+      if (header) continue;
+    }
+    if (n != t->ncols) {
+      s = nl_fail(err, NL_EFORMAT, "%s:%zu: %zu fields where the header has %zu", path, lineno, n, t->ncols);
+      break;
+    }
+    size_t r = grow(t);
+    for (size_t c = 0; c < n; c++) {
+      double v;
+      int k = parse_num(f[c], &v);
+      if (k == 1) t->num[r * t->ncols + c] = v;
+      else if (k == -1) {
+        s = nl_fail(err, NL_EFORMAT, "%s:%zu: column '%s' holds '%s' (NaN or infinite)", path, lineno, t->names[c], f[c]);
+        break;
+      } else if (flags & NL_TABLE_TEXT) t->text[r * t->ncols + c] = nl_xstrdup(f[c]);
+      else {
+        s = nl_fail(err, NL_EFORMAT, "%s:%zu: column '%s' holds '%s', not a number", path, lineno, t->names[c], f[c]);
+        break;
+      }
+    }
+    if (s) break;
+  }
+  if (!s && ferror(fp)) s = nl_fail(err, NL_EIO, "%s: read error", path);
+  if (!s && (!t || t->nrows == 0)) s = nl_fail(err, NL_EFORMAT, "%s: no data rows", path);
+  free(line); free(f);
+  if (s) { nl_table_free(t); return s; }
+  *out = t;
+  return NL_OK;
+}
+
+nl_status nl_table_read(const char *path, int flags, nl_table **out, nl_error *err)
+{
+  *out = NULL;
+  int is_stdin = strcmp(path, "-") == 0;
+  FILE *fp = is_stdin ? stdin : fopen(path, "r");
+  if (!fp) return nl_fail(err, NL_EIO, "%s: cannot open: %s", path, strerror(errno));
+  nl_status s = read_rows(fp, is_stdin ? "<stdin>" : path, flags, out, err);
+  if (!is_stdin) fclose(fp);
+  return s;
+}

@@ -1,0 +1,61 @@
+/* nl_table.h - tables of numbers (and labels) as TSV files with a header line.
+ *
+ * Writing:
+ *   const char *cols[] = {"gain", "mean", "sd"};
+ *   nl_table *t = nl_table_alloc(3, cols);
+ *   nl_table_append(t, "ddd", 0.5, m, s);           // 'd' double, 'i' int, 's' text
+ *   nl_table_write(t, "out/dist.tsv", &err);         // atomic: temp file + rename
+ *   nl_table_free(t);
+ * Doubles are written with the fewest of 15 or 17 significant digits that
+ * read back to the same bits, so a table is an exact record of the run (the
+ * regression check compares them bit for bit).
+ *
+ * Reading:
+ *   nl_table_read(path, flags, &t, &err)
+ * Rows are split on tabs (or any run of blanks with NL_TABLE_WHITESPACE).
+ * Rejected with "file:line: reason": an empty file, ragged rows, cells that
+ * are not numbers (unless NL_TABLE_TEXT allows text columns), NaN and inf.
+ * The first line is a header; with NL_TABLE_HEADER_AUTO it is a header only
+ * if one of its fields is not a number. Lines starting with '#' are comments.
+ */
+#ifndef NL_TABLE_H
+#define NL_TABLE_H
+
+#include "base/nl_base.h"
+
+typedef struct {
+  size_t nrows, ncols;
+  char **names;      /* ncols column names */
+  double *num;       /* nrows * ncols, row-major; NaN in text cells */
+  char **text;       /* nrows * ncols; NULL in numeric cells */
+  size_t cap;        /* rows allocated */
+} nl_table;
+
+enum {
+  NL_TABLE_TEXT = 1,         /* reader: allow non-numeric cells */
+  NL_TABLE_HEADER_AUTO = 2,  /* reader: header line optional */
+  NL_TABLE_WHITESPACE = 4    /* reader: split on runs of spaces/tabs */
+};
+
+nl_table *nl_table_alloc(size_t ncols, const char *const *names);
+void nl_table_free(nl_table *t);
+
+/* Appends one row; fmt has one character per column: 'd' (double),
+ * 'i' (int), 's' (const char *). */
+void nl_table_append(nl_table *t, const char *fmt, ...);
+/* Appends a row of ncols doubles. */
+void nl_table_append_doubles(nl_table *t, const double *row);
+
+static inline double nl_table_get(const nl_table *t, size_t r, size_t c)
+{ return t->num[r * t->ncols + c]; }
+/* Column index by name, or -1. */
+long nl_table_column(const nl_table *t, const char *name);
+
+nl_status nl_table_write(const nl_table *t, const char *path, nl_error *err);
+nl_status nl_table_read(const char *path, int flags, nl_table **out, nl_error *err);
+
+/* Formats a double the way the writer does (shortest of %.15g/%.17g that
+ * round-trips). buf needs 32 bytes. */
+void nl_format_double(char *buf, double v);
+
+#endif

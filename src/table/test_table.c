@@ -1,0 +1,104 @@
+#include "table/nl_table.h"
+#include "nl_test.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static char dir[] = "/tmp/nl_test_table_XXXXXX";
+
+static char *write_file(const char *name, const char *content)
+{
+  char *p = nl_path_join(dir, name);
+  FILE *f = fopen(p, "w");
+  fputs(content, f);
+  fclose(f);
+  return p;
+}
+
+static int read_fails_with(const char *content, const char *needle, int flags)
+{
+  char *p = write_file("bad.tsv", content);
+  nl_table *t = NULL;
+  nl_error err = {{0}};
+  nl_status s = nl_table_read(p, flags, &t, &err);
+  int ok = s != NL_OK && t == NULL && strstr(err.msg, needle) != NULL;
+  if (!ok) fprintf(stderr, "  content %.20s: got '%s'\n", content, err.msg);
+  free(p);
+  return ok;
+}
+
+NL_TEST(round_trip_is_exact)
+{
+  const char *cols[] = {"label", "x", "y"};
+  nl_table *t = nl_table_alloc(3, cols);
+  double xs[] = {0.1, 1.0 / 3.0, -2.5e-300, 123456789.123456789, 0};
+  for (int i = 0; i < 5; i++) nl_table_append(t, "sdi", "row", xs[i], i);
+  char *p = nl_path_join(dir, "rt.tsv");
+  nl_error err;
+  NL_CHECK(nl_table_write(t, p, &err) == NL_OK);
+  nl_table *u = NULL;
+  NL_CHECK(nl_table_read(p, NL_TABLE_TEXT, &u, &err) == NL_OK);
+  NL_CHECK(u && u->nrows == 5 && u->ncols == 3);
+  for (int i = 0; u && i < 5; i++) {
+    NL_CHECK(nl_table_get(u, i, 1) == xs[i]);   /* bit-exact */
+    NL_CHECK(nl_table_get(u, i, 2) == i);
+    NL_CHECK(strcmp(u->text[i * 3], "row") == 0);
+  }
+  NL_CHECK(u && nl_table_column(u, "y") == 2 && nl_table_column(u, "z") == -1);
+  nl_table_free(t); nl_table_free(u); free(p);
+}
+
+NL_TEST(rejects_bad_input_with_line)
+{
+  NL_CHECK(read_fails_with("", "no data rows", 0));
+  NL_CHECK(read_fails_with("a\tb\n", "no data rows", 0));
+  NL_CHECK(read_fails_with("a\tb\n1\t2\n3\n", "bad.tsv:3: 1 fields", 0));
+  NL_CHECK(read_fails_with("a\tb\n1\t2\n3\tx\n", "bad.tsv:3: column 'b' holds 'x'", 0));
+  NL_CHECK(read_fails_with("a\tb\n1\tnan\n", "bad.tsv:2: column 'b' holds 'nan' (NaN", 0));
+  NL_CHECK(read_fails_with("a\tb\ninf\t1\n", "(NaN or infinite)", NL_TABLE_TEXT));
+}
+
+NL_TEST(missing_file_names_it)
+{
+  nl_table *t;
+  nl_error err;
+  NL_CHECK(nl_table_read("/nonexistent/x.tsv", 0, &t, &err) == NL_EIO);
+  NL_CHECK(strstr(err.msg, "/nonexistent/x.tsv: cannot open") != NULL);
+}
+
+NL_TEST(optional_header_and_whitespace)
+{
+  char *p = write_file("ws.txt", "# comment\n 1.5  2\n3 4e1\n");
+  nl_table *t = NULL;
+  nl_error err;
+  NL_CHECK(nl_table_read(p, NL_TABLE_HEADER_AUTO | NL_TABLE_WHITESPACE, &t, &err) == NL_OK);
+  NL_CHECK(t && t->nrows == 2 && nl_table_get(t, 1, 1) == 40.0);
+  nl_table_free(t); free(p);
+}
+
+NL_TEST(failed_write_keeps_old_file)
+{
+  char *p = write_file("keep.tsv", "old\n");
+  const char *cols[] = {"a"};
+  nl_table *t = nl_table_alloc(1, cols);
+  nl_table_append(t, "d", 1.0);
+  nl_error err;
+  NL_CHECK(nl_table_write(t, "/nonexistent/dir/x.tsv", &err) == NL_EIO);
+  NL_CHECK(strstr(err.msg, "/nonexistent/dir/x.tsv") != NULL);
+  FILE *f = fopen(p, "r");
+  char buf[16] = {0};
+  NL_CHECK(f && fgets(buf, sizeof buf, f) && strcmp(buf, "old\n") == 0);
+  if (f) fclose(f);
+  nl_table_free(t); free(p);
+}
+
+int main(void)
+{
+  if (!mkdtemp(dir)) return 1;
+  int r = nl_test_run();
+  char cmd[128];
+  snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+  if (system(cmd) != 0) return 1;
+  return r;
+}

@@ -1,0 +1,48 @@
+/* nl_test.h - the smallest test harness that does the job.
+ *
+ *   NL_TEST(name) { NL_CHECK(x == 1); NL_CHECK_NEAR(a, b, 1e-12); }
+ *   int main(void) { return nl_test_run(); }
+ * Each failed check prints file:line and the expression; the program's exit
+ * status is the number of failed tests (0 = all passed), which is what
+ * meson test reads.
+ */
+#ifndef NL_TEST_H
+#define NL_TEST_H
+#include <math.h>
+#include <stdio.h>
+
+typedef void (*nl_test_fn)(void);
+#define NL_TEST_MAX 256
+static struct { const char *label; nl_test_fn fn; } nl__tests[NL_TEST_MAX];
+static int nl__ntests, nl__failed_checks;
+
+#define NL_TEST(name)                                              \
+  static void name(void);                                          \
+  __attribute__((constructor)) static void name##_reg(void)        \
+  { nl__tests[nl__ntests].label = #name; nl__tests[nl__ntests++].fn = name; } \
+  static void name(void)
+
+#define NL_CHECK(cond) do { if (!(cond)) {                         \
+  fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
+  nl__failed_checks++; } } while (0)
+
+#define NL_CHECK_NEAR(a, b, tol) do { double nl__a = (a), nl__b = (b); \
+  if (!(fabs(nl__a - nl__b) <= (tol))) {                           \
+  fprintf(stderr, "%s:%d: %s = %.17g, %s = %.17g, |diff| > %g\n",  \
+          __FILE__, __LINE__, #a, nl__a, #b, nl__b, (double)(tol)); \
+  nl__failed_checks++; } } while (0)
+
+static inline int nl_test_run(void)
+{
+  int failed = 0;
+  for (int i = 0; i < nl__ntests; i++) {
+    int before = nl__failed_checks;
+    nl__tests[i].fn();
+    int ok = nl__failed_checks == before;
+    printf("%s %s\n", ok ? "ok  " : "FAIL", nl__tests[i].label);
+    failed += !ok;
+  }
+  printf("%d passed, %d failed\n", nl__ntests - failed, failed);
+  return failed;
+}
+#endif
