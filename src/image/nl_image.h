@@ -54,4 +54,7 @@ int nl_text_height(const char *text, int scale);
 nl_image *nl_montage(const nl_image *const *images, const char *const *labels, int n,
                      int cols, const char *title);
 
+/* OpenImageIO's version string, for manifests. */
+const char *nl_image_library_version(void);
+
 #endif

@@ -97,3 +97,8 @@ extern "C" nl_status nl_image_write(const nl_image *im, const char *path, int bi
   if (!ok) { std::remove(t.c_str()); return set_err(err, NL_EIO, path, why.empty() ? out->geterror() : why); }
   return NL_OK;
 }
+
+extern "C" const char *nl_image_library_version(void)
+{
+  return OIIO_VERSION_STRING;
+}

@@ -1,0 +1,290 @@
+#include "report/nl_report.h"
+
+#include <gsl/gsl_version.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <time.h>
+#include <unistd.h>
+
+struct nl_run {
+  const char *name, *title;
+  char *out;
+  unsigned long seed;
+  int seeds, quick;
+  double t0;
+  char started[32];
+  int nset;
+  char **set_key, **set_val;
+  int *set_used;
+  nl_table *manifest;     /* key, value (text) */
+  char *md;               /* report section being built */
+  size_t md_len, md_cap;
+  double last_progress;
+};
+
+static void usage(const char *name, const char *title)
+{
+  printf("%s - %s\n\n"
+         "usage: %s [--out DIR] [--seed N] [--seeds K] [--quick] [--set NAME=VALUE]...\n\n"
+         "  --out DIR     output folder (default results/%s)\n"
+         "  --seed N      base seed (default 1)\n"
+         "  --seeds K     seeds for means and spreads (default 10; 3 with --quick)\n"
+         "  --quick       small sizes, for tests and CI\n"
+         "  --set K=V     set an experiment parameter (see its report for names)\n",
+         name, title, name, name);
+}
+
+void nl_run_die(nl_run *r, int code, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  fprintf(stderr, "%s: ", r ? r->name : "noiselab");
+  vfprintf(stderr, fmt, ap);
+  fputc('\n', stderr);
+  va_end(ap);
+  exit(code);
+}
+
+static void note(nl_run *r, const char *key, const char *value)
+{
+  nl_table_append(r->manifest, "ss", key, value);
+}
+
+void nl_run_note(nl_run *r, const char *key, const char *fmt, ...)
+{
+  char buf[1024];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(buf, sizeof buf, fmt, ap);
+  va_end(ap);
+  note(r, key, buf);
+}
+
+static const char *arg_value(nl_run *r, int argc, char **argv, int *i)
+{
+  if (*i + 1 >= argc) nl_run_die(r, 2, "%s: missing value", argv[*i]);
+  return argv[++*i];
+}
+
+static void parse(nl_run *r, int argc, char **argv)
+{
+  nl_error err;
+  for (int i = 1; i < argc; i++) {
+    const char *a = argv[i];
+    long v;
+    if (!strcmp(a, "--help") || !strcmp(a, "-h")) { usage(r->name, r->title); exit(0); }
+    else if (!strcmp(a, "--quick")) r->quick = 1;
+    else if (!strcmp(a, "--out")) { free(r->out); r->out = nl_xstrdup(arg_value(r, argc, argv, &i)); }
+    else if (!strcmp(a, "--seed")) {
+      if (nl_parse_long("--seed", arg_value(r, argc, argv, &i), 0, 4294967295L, &v, &err)) nl_run_die(r, 2, "%s", err.msg);
+      r->seed = (unsigned long)v;
+    } else if (!strcmp(a, "--seeds")) {
+      if (nl_parse_long("--seeds", arg_value(r, argc, argv, &i), 1, 10000, &v, &err)) nl_run_die(r, 2, "%s", err.msg);
+      r->seeds = (int)v;
+    } else if (!strcmp(a, "--set")) {
+      const char *kv = arg_value(r, argc, argv, &i), *eq = strchr(kv, '=');
+      if (!eq || eq == kv) nl_run_die(r, 2, "--set: '%s' is not NAME=VALUE", kv);
+      r->set_key = nl_xrealloc(r->set_key, (r->nset + 1) * sizeof *r->set_key);
+      r->set_val = nl_xrealloc(r->set_val, (r->nset + 1) * sizeof *r->set_val);
+      r->set_used = nl_xrealloc(r->set_used, (r->nset + 1) * sizeof *r->set_used);
+      r->set_key[r->nset] = nl_xstrdup(kv);
+      r->set_key[r->nset][eq - kv] = '\0';
+      r->set_val[r->nset] = nl_xstrdup(eq + 1);
+      r->set_used[r->nset++] = 0;
+    } else nl_run_die(r, 2, "%s: unknown option (see --help)", a);
+  }
+}
+
+nl_run *nl_run_begin(const char *name, const char *title, int argc, char **argv)
+{
+  nl_run *r = nl_xcalloc(1, sizeof *r);
+  r->name = name;
+  r->title = title;
+  r->seed = 1;
+  r->seeds = -1;
+  r->t0 = nl_time_now();
+  r->out = nl_path_join("results", name);
+  parse(r, argc, argv);
+  if (r->seeds < 0) r->seeds = r->quick ? 3 : 10;
+  nl_error err;
+  if (nl_mkdir_p(r->out, &err)) nl_run_die(r, 1, "%s", err.msg);
+  /* A folder with a manifest is a finished run; this one is not, yet. */
+  char *m = nl_run_path(r, "manifest.tsv");
+  unlink(m);
+  free(m);
+  time_t now = time(NULL);
+  strftime(r->started, sizeof r->started, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
+  const char *cols[] = {"key", "value"};
+  r->manifest = nl_table_alloc(2, cols);
+  note(r, "experiment", name);
+  nl_run_note(r, "seed", "%lu", r->seed);
+  nl_run_note(r, "seeds", "%d", r->seeds);
+  note(r, "quick", r->quick ? "yes" : "no");
+  nl_report_text(r, "## %s\n", title);
+  r->last_progress = -1;
+  return r;
+}
+
+unsigned long nl_run_seed(const nl_run *r) { return r->seed; }
+int nl_run_seeds(const nl_run *r) { return r->seeds; }
+int nl_run_quick(const nl_run *r) { return r->quick; }
+const char *nl_run_dir(const nl_run *r) { return r->out; }
+
+static const char *set_value(nl_run *r, const char *name)
+{
+  const char *v = NULL;
+  for (int k = 0; k < r->nset; k++)
+    if (!strcmp(r->set_key[k], name)) { v = r->set_val[k]; r->set_used[k] = 1; }
+  return v;
+}
+
+double nl_run_param(nl_run *r, const char *name, double def, double lo, double hi)
+{
+  const char *s = set_value(r, name);
+  double v = def;
+  nl_error err;
+  char what[128];
+  snprintf(what, sizeof what, "--set %s", name);
+  if (s && nl_parse_double(what, s, lo, hi, &v, &err)) nl_run_die(r, 2, "%s", err.msg);
+  char buf[32];
+  nl_format_double(buf, v);
+  nl_run_note(r, "param", "%s=%s", name, buf);
+  return v;
+}
+
+long nl_run_param_int(nl_run *r, const char *name, long def, long lo, long hi)
+{
+  const char *s = set_value(r, name);
+  long v = def;
+  nl_error err;
+  char what[128];
+  snprintf(what, sizeof what, "--set %s", name);
+  if (s && nl_parse_long(what, s, lo, hi, &v, &err)) nl_run_die(r, 2, "%s", err.msg);
+  nl_run_note(r, "param", "%s=%ld", name, v);
+  return v;
+}
+
+void nl_run_params_done(nl_run *r)
+{
+  for (int k = 0; k < r->nset; k++)
+    if (!r->set_used[k]) nl_run_die(r, 2, "--set %s: unknown parameter for %s", r->set_key[k], r->name);
+}
+
+char *nl_run_path(const nl_run *r, const char *file) { return nl_path_join(r->out, file); }
+
+void nl_run_table(nl_run *r, const nl_table *t, const char *file)
+{
+  char *p = nl_run_path(r, file);
+  nl_error err;
+  if (nl_table_write(t, p, &err)) nl_run_die(r, 1, "%s", err.msg);
+  free(p);
+}
+
+void nl_run_image(nl_run *r, const nl_image *im, const char *file)
+{
+  char *p = nl_run_path(r, file);
+  nl_error err;
+  if (nl_image_write(im, p, 8, &err)) nl_run_die(r, 1, "%s", err.msg);
+  free(p);
+}
+
+void nl_run_progress(nl_run *r, double fraction, const char *what)
+{
+  double now = nl_time_now();
+  int tty = isatty(2);
+  if (!tty && r->last_progress >= 0 && now - r->last_progress < 1.0 && fraction < 1.0) return;
+  r->last_progress = now;
+  fprintf(stderr, "%s[%s] %3.0f%% %s (%.1f s)%s", tty ? "\r\033[K" : "", r->name,
+          100 * fraction, what ? what : "", now - r->t0, tty ? "" : "\n");
+  if (tty && fraction >= 1.0) fputc('\n', stderr);
+  fflush(stderr);
+}
+
+/* ---- report section --------------------------------------------------- */
+
+static void md_append(nl_run *r, const char *s)
+{
+  size_t n = strlen(s);
+  if (r->md_len + n + 1 > r->md_cap) {
+    r->md_cap = 2 * (r->md_len + n + 1) + 1024;
+    r->md = nl_xrealloc(r->md, r->md_cap);
+  }
+  memcpy(r->md + r->md_len, s, n + 1);
+  r->md_len += n;
+}
+
+void nl_report_text(nl_run *r, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  int n = vsnprintf(NULL, 0, fmt, ap);
+  va_end(ap);
+  char *buf = nl_xmalloc((size_t)n + 1);
+  va_start(ap, fmt);
+  vsnprintf(buf, (size_t)n + 1, fmt, ap);
+  va_end(ap);
+  md_append(r, buf);
+  md_append(r, "\n");
+  free(buf);
+}
+
+void nl_report_table(nl_run *r, const nl_table *t, const char *caption, int digits)
+{
+  char cell[64];
+  if (caption) nl_report_text(r, "*%s*\n", caption);
+  for (size_t c = 0; c < t->ncols; c++) { md_append(r, "| "); md_append(r, t->names[c]); md_append(r, " "); }
+  md_append(r, "|\n");
+  for (size_t c = 0; c < t->ncols; c++) md_append(r, "|---");
+  md_append(r, "|\n");
+  for (size_t row = 0; row < t->nrows; row++) {
+    for (size_t c = 0; c < t->ncols; c++) {
+      size_t k = row * t->ncols + c;
+      const char *s = t->text && t->text[k] ? t->text[k] : cell;
+      if (s == cell) snprintf(cell, sizeof cell, "%.*g", digits, t->num[k]);
+      md_append(r, "| "); md_append(r, s); md_append(r, " ");
+    }
+    md_append(r, "|\n");
+  }
+  md_append(r, "\n");
+}
+
+void nl_report_figure(nl_run *r, const char *file, const char *caption)
+{
+  nl_report_text(r, "![%s](%s/%s)\n\n*%s*\n", caption, r->name, file, caption);
+}
+
+/* ---- the end ------------------------------------------------------------ */
+
+static void write_text(nl_run *r, const char *file, const char *text)
+{
+  char *p = nl_run_path(r, file);
+  nl_atomic_file af;
+  nl_error err;
+  if (nl_atomic_open(&af, p, &err)) nl_run_die(r, 1, "%s", err.msg);
+  fputs(text, af.fp);
+  if (nl_atomic_commit(&af, &err)) nl_run_die(r, 1, "%s", err.msg);
+  free(p);
+}
+
+int nl_run_end(nl_run *r)
+{
+  write_text(r, "report.md", r->md ? r->md : "");
+  const char *commit = getenv("NL_COMMIT");
+  note(r, "commit", commit && *commit ? commit : "unknown");
+  nl_run_note(r, "gsl", "%s", GSL_VERSION);
+  nl_run_note(r, "openimageio", "%s", nl_image_library_version());
+  nl_run_note(r, "compiler", "%s", __VERSION__);
+  note(r, "started", r->started);
+  nl_run_note(r, "seconds", "%.3f", nl_time_now() - r->t0);
+  struct rusage ru;
+  getrusage(RUSAGE_SELF, &ru);
+  nl_run_note(r, "peak_rss_mb", "%.1f", ru.ru_maxrss / 1024.0);
+  nl_run_table(r, r->manifest, "manifest.tsv");
+  for (int k = 0; k < r->nset; k++) { free(r->set_key[k]); free(r->set_val[k]); }
+  free(r->set_key); free(r->set_val); free(r->set_used);
+  nl_table_free(r->manifest);
+  free(r->md); free(r->out); free(r);
+  return 0;
+}

@@ -1,0 +1,28 @@
+/* nl_spectrum.h - 2D discrete Fourier transforms of images and their power
+ * spectra, on GSL's mixed-radix FFT (any size, not only powers of two).
+ *
+ *   nl_fft2(img, w, h, F)       F[2*(v*w + u) + {0,1}] = sum_xy img[y*w+x] e^{-2 pi i (ux/w + vy/h)}
+ *   nl_fft2_inverse(F, w, h, img)        the inverse, including the 1/(w h)
+ *   nl_power2(img, w, h, P)     P[v*w+u] = |F|^2 / (w h)^2, so sum P = mean(img^2)
+ *                               (Parseval); the DC term is P[0]
+ *   nl_radial_power(img, w, h, nbins, f, p)
+ *       radially averaged power: bin b covers |k| in [b, b+1) * 0.5/nbins
+ *       cycles per pixel (k folded to [-1/2, 1/2) per axis); f[b] is the
+ *       bin centre, p[b] the mean of P over the bin's frequencies (0 if none).
+ *       Frequencies past the Nyquist circle (corners) are not counted.
+ * Frequencies are in cycles per pixel; multiply by the sampling rate for
+ * cycles per unit.
+ */
+#ifndef NL_SPECTRUM_H
+#define NL_SPECTRUM_H
+
+#include "base/nl_base.h"
+
+void nl_fft2(const double *img, int w, int h, double *F);
+void nl_fft2_inverse(const double *F, int w, int h, double *img);
+void nl_power2(const double *img, int w, int h, double *P);
+void nl_radial_power(const double *img, int w, int h, int nbins, double *f, double *p);
+/* Signed frequency of index u of an n-point DFT, in cycles per sample. */
+double nl_fft_freq(int u, int n);
+
+#endif
