@@ -1,0 +1,80 @@
+#include "texture/nl_texture.h"
+
+#include <math.h>
+#include <string.h>
+
+nl_ramp nl_ramp_linear(int n, const double *pos, const float (*rgb)[3])
+{
+  nl_ramp r = {.n = n < 1 ? 1 : n > NL_RAMP_MAX ? NL_RAMP_MAX : n, .kind = NL_RAMP_LINEAR};
+  for (int k = 0; k < r.n; k++) { r.pos[k] = pos[k]; memcpy(r.rgb[k], rgb[k], sizeof r.rgb[k]); }
+  return r;
+}
+
+nl_ramp nl_ramp_spline(int n, const float (*rgb)[3])
+{
+  nl_ramp r = {.n = n < 4 ? 4 : n > NL_RAMP_MAX ? NL_RAMP_MAX : n, .kind = NL_RAMP_SPLINE};
+  for (int k = 0; k < r.n; k++) {
+    r.pos[k] = (double)k / (r.n - 1);
+    memcpy(r.rgb[k], rgb[k < n ? k : n - 1], sizeof r.rgb[k]);
+  }
+  return r;
+}
+
+static void eval_linear(const nl_ramp *r, double u, float *rgb)
+{
+  if (u <= r->pos[0] || r->n == 1) { memcpy(rgb, r->rgb[0], 3 * sizeof *rgb); return; }
+  if (u >= r->pos[r->n - 1]) { memcpy(rgb, r->rgb[r->n - 1], 3 * sizeof *rgb); return; }
+  int k = 0;
+  while (k + 2 < r->n && u >= r->pos[k + 1]) k++;
+  double t = (u - r->pos[k]) / (r->pos[k + 1] - r->pos[k]);
+  for (int c = 0; c < 3; c++) rgb[c] = (float)(r->rgb[k][c] + t * (r->rgb[k + 1][c] - r->rgb[k][c]));
+}
+
+/* Ebert et al., "Texturing & Modeling", spline(): Catmull-Rom basis over
+ * the span of four knots that contains u. */
+static void eval_spline(const nl_ramp *r, double u, float *rgb)
+{
+  int nspans = r->n - 3;
+  double x = (u < 0 ? 0 : u > 1 ? 1 : u) * nspans;
+  int span = (int)x;
+  if (span >= nspans) span = nspans - 1;
+  x -= span;
+  const float (*k)[3] = r->rgb + span;
+  for (int c = 0; c < 3; c++) {
+    double c3 = -0.5 * k[0][c] + 1.5 * k[1][c] - 1.5 * k[2][c] + 0.5 * k[3][c];
+    double c2 = 1.0 * k[0][c] - 2.5 * k[1][c] + 2.0 * k[2][c] - 0.5 * k[3][c];
+    double c1 = -0.5 * k[0][c] + 0.5 * k[2][c];
+    double c0 = k[1][c];
+    rgb[c] = (float)(((c3 * x + c2) * x + c1) * x + c0);
+  }
+}
+
+void nl_ramp_eval(const nl_ramp *r, double u, float *rgb)
+{
+  if (r->kind == NL_RAMP_SPLINE) eval_spline(r, u, rgb);
+  else eval_linear(r, u, rgb);
+}
+
+nl_image *nl_ramp_image(const nl_ramp *r, const double *values, int w, int h, double lo, double hi)
+{
+  nl_image *im = nl_image_alloc(w, h, 3);
+  double s = hi > lo ? 1.0 / (hi - lo) : 0.0;
+  for (size_t i = 0; i < (size_t)w * h; i++) nl_ramp_eval(r, (values[i] - lo) * s, im->data + 3 * i);
+  return im;
+}
+
+nl_ramp nl_ramp_grey(void)
+{
+  const double pos[] = {0, 1};
+  const float rgb[][3] = {{0, 0, 0}, {1, 1, 1}};
+  return nl_ramp_linear(2, pos, rgb);
+}
+
+nl_ramp nl_ramp_marble(void)
+{
+  /* White veins into grey-blue stone, the slides' marble palette. */
+  const double pos[] = {0.0, 0.35, 0.6, 0.8, 1.0};
+  const float rgb[][3] = {{0.95f, 0.95f, 0.93f}, {0.85f, 0.85f, 0.86f}, {0.55f, 0.58f, 0.66f},
+                          {0.28f, 0.30f, 0.42f}, {0.12f, 0.12f, 0.22f}};
+  return nl_ramp_linear(5, pos, rgb);
+}

@@ -1,0 +1,44 @@
+/* nl_texture.h - from noise values to colours: colour ramps, marble,
+ * two-colour blends.
+ *
+ * A ramp maps u to RGB through knots:
+ *   - NL_RAMP_LINEAR: knots at increasing positions pos[0..n-1], colours
+ *     linearly interpolated, u clamped to [pos[0], pos[n-1]].
+ *   - NL_RAMP_SPLINE: Ebert et al.'s spline() of "Texturing & Modeling"
+ *     (the ramp Qin & Yang's colour maps use): n >= 4 equally spaced knots,
+ *     Catmull-Rom through knots 1..n-2, knots 0 and n-1 only steer the ends;
+ *     u in [0, 1] covers the n - 3 segments. pos is ignored.
+ *
+ *   nl_ramp r = nl_ramp_linear(3, pos, rgb);
+ *   nl_image *im = nl_ramp_image(&r, values, w, h, lo, hi);   // lo -> u=0, hi -> u=1
+ *
+ * Marble (Shaffer's slides, Cheng eq. 4.1 in another form):
+ *   u = (1 + sin(y + a * s)) / 2   with s a fractal sum at the point.
+ */
+#ifndef NL_TEXTURE_H
+#define NL_TEXTURE_H
+
+#include "image/nl_image.h"
+
+#define NL_RAMP_MAX 32
+enum { NL_RAMP_LINEAR = 0, NL_RAMP_SPLINE = 1 };
+
+typedef struct {
+  int n, kind;
+  double pos[NL_RAMP_MAX];
+  float rgb[NL_RAMP_MAX][3];
+} nl_ramp;
+
+nl_ramp nl_ramp_linear(int n, const double *pos, const float (*rgb)[3]);
+nl_ramp nl_ramp_spline(int n, const float (*rgb)[3]);
+void nl_ramp_eval(const nl_ramp *r, double u, float *rgb);
+/* RGB image of values mapped by (v - lo) / (hi - lo) through the ramp. */
+nl_image *nl_ramp_image(const nl_ramp *r, const double *values, int w, int h, double lo, double hi);
+
+static inline double nl_marble(double y, double a, double s) { return 0.5 * (1.0 + __builtin_sin(y + a * s)); }
+
+/* Built-in ramps: a grey ramp and a white-grey-blue marble ramp. */
+nl_ramp nl_ramp_grey(void);
+nl_ramp nl_ramp_marble(void);
+
+#endif
