@@ -21,7 +21,7 @@
 
 #include "base/nl_base.h"
 
-typedef struct {
+typedef struct nl_image {
   int width, height, channels;
   float *data;
 } nl_image;

@@ -23,7 +23,7 @@
 
 #include "base/nl_base.h"
 
-typedef struct {
+typedef struct nl_table {
   size_t nrows, ncols;
   char **names;      /* ncols column names */
   double *num;       /* nrows * ncols, row-major; NaN in text cells */

@@ -78,3 +78,15 @@ nl_ramp nl_ramp_marble(void)
                           {0.28f, 0.30f, 0.42f}, {0.12f, 0.12f, 0.22f}};
   return nl_ramp_linear(5, pos, rgb);
 }
+
+void nl_marble_grid(const nl_basis *b, const nl_octaves *o, const nl_window *win,
+                    double omega, double a, double *u)
+{
+  nl_fractal_grid(b, o, win, u);
+  double dy = win->size / win->h;
+  for (int r = 0; r < win->h; r++) {
+    double y = win->y0 + (r + 0.5) * dy;
+    double *row = u + (size_t)r * win->w;
+    for (int c = 0; c < win->w; c++) row[c] = nl_marble(omega * y, omega * a, row[c]);
+  }
+}

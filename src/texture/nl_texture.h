@@ -19,6 +19,7 @@
 #define NL_TEXTURE_H
 
 #include "image/nl_image.h"
+#include "noise/nl_noise.h"
 
 #define NL_RAMP_MAX 32
 enum { NL_RAMP_LINEAR = 0, NL_RAMP_SPLINE = 1 };
@@ -36,6 +37,12 @@ void nl_ramp_eval(const nl_ramp *r, double u, float *rgb);
 nl_image *nl_ramp_image(const nl_ramp *r, const double *values, int w, int h, double lo, double hi);
 
 static inline double nl_marble(double y, double a, double s) { return 0.5 * (1.0 + __builtin_sin(y + a * s)); }
+
+/* Shaffer's marble on a window: p.y += a * fractal(p), then
+ * u = (1 + sin(omega * p.y)) / 2 (omega = 2 pi stripes per unit).
+ * u holds w * h values in [0, 1], rows from y0. */
+void nl_marble_grid(const nl_basis *b, const nl_octaves *o, const nl_window *win,
+                    double omega, double a, double *u);
 
 /* Built-in ramps: a grey ramp and a white-grey-blue marble ramp. */
 nl_ramp nl_ramp_grey(void);

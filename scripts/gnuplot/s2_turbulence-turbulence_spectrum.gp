@@ -1,0 +1,14 @@
+# S2: radially averaged power spectrum of turbulence, one curve per
+# octave count. Called as: gnuplot -e "dir='results/s2_turbulence'" THIS
+set terminal pngcairo size 900,600 font "DejaVu Sans,11"
+set output dir.'/turbulence_spectrum.png'
+set datafile separator "\t"
+set logscale xy
+set format y "10^{%L}"
+set xlabel "frequency (cycles per unit)"
+set ylabel "power"
+set key top right
+set grid
+set title "Turbulence: radially averaged power spectrum (mean over seeds)"
+f = dir.'/turbulence_spectrum.tsv'
+plot for [c=2:5] f using 1:c with lines lw 2 title columnheader(c)

@@ -1,0 +1,111 @@
+#include "noise/nl_noise.h"
+#include "base/nl_base.h"
+#include "spectrum/nl_spectrum.h"
+
+#include "image/nl_image.h"
+#include "table/nl_table.h"
+
+#include <gsl/gsl_statistics_double.h>
+#include <math.h>
+#include <stdlib.h>
+
+static void one_seed(nl_survey *s, nl_basis_kind kind, const nl_octaves *o, const nl_window *win,
+                     unsigned long seed, int k, double *v)
+{
+  nl_grad2 *t = NULL;
+  nl_perm3 p;
+  nl_basis b;
+  if (kind == NL_BASIS_GRAD2) { t = nl_grad2_alloc(512); nl_grad2_seed(t, seed); b = nl_basis_grad2(t); }
+  else { nl_perm3_seed(&p, seed); b = nl_basis_perm3(&p); }
+  nl_fractal_grid(&b, o, win, v);
+  size_t n = (size_t)win->w * win->h;
+  s->mean[k] = gsl_stats_mean(v, 1, n);
+  s->sd[k] = gsl_stats_sd_m(v, 1, n, s->mean[k]);
+  gsl_stats_minmax(&s->min[k], &s->max[k], v, 1, n);
+  double *f = nl_xmalloc((size_t)s->nbins * sizeof *f);
+  nl_radial_power(v, win->w, win->h, s->nbins, f, s->power + (size_t)k * s->nbins);
+  free(f);
+  s->bound = nl_octaves_bound(o, b.bound);
+  nl_grad2_free(t);
+}
+
+nl_survey *nl_survey_run(nl_basis_kind kind, const nl_octaves *o, const nl_window *win,
+                         unsigned long seed0, int nseeds)
+{
+  nl_survey *s = nl_xcalloc(1, sizeof *s);
+  s->nseeds = nseeds;
+  s->w = win->w;
+  s->h = win->h;
+  s->nbins = (win->w < win->h ? win->w : win->h) / 2;
+  s->mean = nl_xmalloc((size_t)nseeds * sizeof *s->mean);
+  s->sd = nl_xmalloc((size_t)nseeds * sizeof *s->sd);
+  s->min = nl_xmalloc((size_t)nseeds * sizeof *s->min);
+  s->max = nl_xmalloc((size_t)nseeds * sizeof *s->max);
+  s->freq = nl_xmalloc((size_t)s->nbins * sizeof *s->freq);
+  s->power = nl_xmalloc((size_t)nseeds * s->nbins * sizeof *s->power);
+  s->first = nl_xmalloc((size_t)win->w * win->h * sizeof *s->first);
+  double *v = nl_xmalloc((size_t)win->w * win->h * sizeof *v);
+  for (int k = 0; k < nseeds; k++)
+    one_seed(s, kind, o, win, seed0 + (unsigned long)k, k, k == 0 ? s->first : v);
+  /* nl_radial_power bins in cycles per pixel; a pixel is size/w units. */
+  for (int b = 0; b < s->nbins; b++) s->freq[b] = (b + 0.5) * 0.5 / s->nbins * win->w / win->size;
+  free(v);
+  return s;
+}
+
+void nl_survey_free(nl_survey *s)
+{
+  if (!s) return;
+  free(s->mean); free(s->sd); free(s->min); free(s->max);
+  free(s->freq); free(s->power); free(s->first); free(s);
+}
+
+static nl_table *dist_table(void)
+{
+  const char *cols[] = {"setting", "octaves", "gain", "lacunarity", "mean", "mean_sd", "sd", "sd_sd",
+                        "min", "max", "max_abs", "bound", "max_abs_over_bound"};
+  return nl_table_alloc(13, cols);
+}
+
+static void dist_row(nl_table *t, const nl_setting *st, const nl_survey *s)
+{
+  size_t n = (size_t)s->nseeds;
+  const nl_octaves *o = &st->oct;
+  double m = gsl_stats_mean(s->mean, 1, n), sd = gsl_stats_mean(s->sd, 1, n);
+  double msd = n > 1 ? gsl_stats_sd(s->mean, 1, n) : 0, sdsd = n > 1 ? gsl_stats_sd(s->sd, 1, n) : 0;
+  double mx = 0;
+  for (size_t k = 0; k < n; k++) mx = fmax(mx, fmax(fabs(s->min[k]), fabs(s->max[k])));
+  nl_table_append(t, "siddddddddddd", st->label, o->n, st->gain, st->lacunarity, m, msd, sd, sdsd,
+                  gsl_stats_mean(s->min, 1, n), gsl_stats_mean(s->max, 1, n), mx, s->bound, mx / s->bound);
+}
+
+void nl_survey_series(nl_basis_kind kind, const nl_setting *settings, int n,
+                      const nl_window *win, unsigned long seed0, int nseeds,
+                      nl_table **dist, nl_table **spectrum, nl_image **panels)
+{
+  nl_table *dt = dist_table(), *sp = NULL;
+  for (int i = 0; i < n; i++) {
+    nl_survey *s = nl_survey_run(kind, &settings[i].oct, win, seed0, nseeds);
+    dist_row(dt, &settings[i], s);
+    if (!sp) {
+      const char **cols = nl_xmalloc((size_t)(n + 1) * sizeof *cols);
+      cols[0] = "freq";
+      for (int k = 0; k < n; k++) cols[k + 1] = settings[k].label;
+      sp = nl_table_alloc((size_t)n + 1, cols);
+      free(cols);
+      for (int b = 0; b < s->nbins; b++) nl_table_append(sp, "d", s->freq[b]);
+    }
+    for (int b = 0; b < s->nbins; b++) {
+      double p = 0;
+      for (int k = 0; k < nseeds; k++) p += s->power[(size_t)k * s->nbins + b] / nseeds;
+      sp->num[(size_t)b * sp->ncols + (size_t)i + 1] = p;
+    }
+    if (panels) {
+      double m = s->mean[0], sd = s->sd[0] > 0 ? s->sd[0] : 1;
+      panels[i] = nl_image_from_values(s->first, win->w, win->h, m - 3 * sd, m + 3 * sd);
+    }
+    nl_survey_free(s);
+  }
+  if (dist) *dist = dt; else nl_table_free(dt);
+  if (spectrum) *spectrum = sp; else nl_table_free(sp);
+}

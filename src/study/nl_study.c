@@ -1,0 +1,52 @@
+#include "study/nl_study.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+static void put(const char *prefix, const char *what, char *buf, size_t n)
+{
+  snprintf(buf, n, "%s_%s", prefix, what);
+}
+
+void nl_study_series(nl_run *r, const char *prefix, const char *title, nl_basis_kind kind,
+                     const nl_setting *settings, int n, const nl_window *win)
+{
+  nl_table *dist, *spec;
+  nl_image **panels = nl_xcalloc((size_t)n, sizeof *panels);
+  const char **labels = nl_xcalloc((size_t)n, sizeof *labels);
+  for (int i = 0; i < n; i++) labels[i] = settings[i].label;
+  nl_survey_series(kind, settings, n, win, nl_run_seed(r), nl_run_seeds(r), &dist, &spec, panels);
+  nl_image *m = nl_montage((const nl_image *const *)panels, labels, n, n, title);
+  char f[256], cap[512];
+  put(prefix, "panels.png", f, sizeof f);
+  nl_run_image(r, m, f);
+  snprintf(cap, sizeof cap, "%s (%d x %d, each panel from mean - 3 sd to mean + 3 sd)", title, win->w, win->h);
+  nl_report_figure(r, f, cap);
+  put(prefix, "distribution.tsv", f, sizeof f);
+  nl_run_table(r, dist, f);
+  snprintf(cap, sizeof cap, "Values over %d seeds (%s): mean and sd of the per-seed mean and sd, "
+           "mean min and max, largest |value| seen against the analytic bound", nl_run_seeds(r), f);
+  nl_report_table(r, dist, cap, 4);
+  put(prefix, "spectrum.tsv", f, sizeof f);
+  nl_run_table(r, spec, f);
+  put(prefix, "spectrum.png", f, sizeof f);
+  nl_report_figure(r, f, "Radially averaged power spectrum, mean over seeds");
+  for (int i = 0; i < n; i++) nl_image_free(panels[i]);
+  free(panels); free(labels);
+  nl_image_free(m);
+  nl_table_free(dist);
+  nl_table_free(spec);
+}
+
+void nl_study_octave_settings(const int *oct, int n, int turbulence, nl_setting *settings,
+                              char (*labels)[32])
+{
+  for (int i = 0; i < n; i++) {
+    snprintf(labels[i], 32, "(%c) %d octave%s", 'a' + i, oct[i], oct[i] > 1 ? "s" : "");
+    settings[i].label = labels[i];
+    settings[i].oct = nl_octaves_fractal(oct[i]);
+    settings[i].oct.turbulence = turbulence;
+    settings[i].gain = 0.5;
+    settings[i].lacunarity = 2;
+  }
+}

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Quick S1: four settings, values inside the analytic bound, spectra written.
+set -euo pipefail
+exp="$1" expect="$2" out="$3"
+"$exp" --quick --out "$out" >/dev/null
+"$expect" "$out/fractal_distribution.tsv" rows=4 'max_abs<=bound' 'sd>0' 'octaves>=1' \
+  'max_abs_over_bound<1' file:fractal_panels.png file:manifest.tsv file:report.md
+"$expect" "$out/fractal_spectrum.tsv" rows=64 'freq>0'
+# A second run with the same seed gives the same table, byte for byte.
+"$exp" --quick --out "$out/again" >/dev/null
+cmp "$out/fractal_distribution.tsv" "$out/again/fractal_distribution.tsv"
+# Unknown parameters and bad values are refused with exit 2.
+set +e
+"$exp" --quick --out "$out/bad" --set nosuch=1 2>/dev/null; [ $? -eq 2 ] || exit 1
+"$exp" --quick --out "$out/bad" --set size=abc 2>/dev/null; [ $? -eq 2 ] || exit 1
+"$exp" --quick --out "$out/bad" --seed -4 2>/dev/null; [ $? -eq 2 ] || exit 1
+[ ! -e "$out/bad/manifest.tsv" ]

@@ -1,0 +1,199 @@
+/* noiselab render - any noise of the library to an image or a table.
+ *
+ *   noiselab render fbm --octaves 6 --gain 0.5 --lacunarity 2 --size 512 --seed 7 -o fbm.png
+ *
+ * Images go through OpenImageIO (format from the extension). Integer
+ * formats (8/16-bit PNG, TIFF, ...) store the value mapped to [0, 1] by the
+ * noise's analytic bound B: (v / B + 1) / 2, or v / B for turbulence, so
+ * grey levels mean the same thing at every setting (--normalize range maps
+ * min..max instead). Float formats (EXR, or --bits 32) store raw values.
+ * A .tsv output holds the raw values as columns x, y, value.
+ */
+#include "noise/nl_noise.h"
+#include "table/nl_table.h"
+#include "texture/nl_texture.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static const char *NOISES[] = {"noise2", "improved", "fractal", "turbulence", "fbm", "marble", NULL};
+
+typedef struct {
+  const char *noise, *out, *basis, *normalize;
+  long size, octaves, seed, table_size, bits;
+  double extent, x0, y0, z, gain, lacunarity, amplitude, stripes;
+  int reference;
+} options;
+
+static void usage(void)
+{
+  printf("usage: noiselab render NOISE [options] -o FILE\n\n"
+         "NOISE: noise2      2D gradient-table noise (Cheng 2009 eq. 3.1-3.2)\n"
+         "       improved    Perlin's improved 3D noise, on the plane z\n"
+         "       fractal     sum_j noise(2^j p) / 2^j            (Shaffer)\n"
+         "       turbulence  sum_j |noise(2^j p)| / 2^j\n"
+         "       fbm         sum_j gain^j noise(lacunarity^j p)\n"
+         "       marble      (1 + sin(2 pi stripes (y + amplitude fractal(p)))) / 2\n\n"
+         "  -o FILE              .png .exr .tif ... (OpenImageIO) or .tsv (x, y, value)\n"
+         "  --size N             pixels per side, 1..65536 (512)\n"
+         "  --extent X           side of the square in noise units (4)\n"
+         "  --x0 X --y0 Y --z Z  window origin and plane (0 0 0.5)\n"
+         "  --octaves N          1..30 (6)          --gain G (0.5)   --lacunarity L (2)\n"
+         "  --amplitude A        marble displacement a (0.5)   --stripes K per unit (1)\n"
+         "  --basis improved|table   noise under the sums (improved)\n"
+         "  --table-size M       gradient-table size for noise2/table, 4..1048576 (512)\n"
+         "  --seed S             table seed (1)   --reference  Perlin's own permutation\n"
+         "  --bits 8|16|32       image bit depth (8; EXR defaults to 32)\n"
+         "  --normalize bound|range   grey mapping for integer formats (bound)\n");
+}
+
+static void fail(const char *msg) { fprintf(stderr, "noiselab render: %s\n", msg); exit(2); }
+
+static void num(const char *opt, const char *val, double lo, double hi, double *out)
+{
+  nl_error err;
+  if (nl_parse_double(opt, val, lo, hi, out, &err)) fail(err.msg);
+}
+
+static void integer(const char *opt, const char *val, long lo, long hi, long *out)
+{
+  nl_error err;
+  if (nl_parse_long(opt, val, lo, hi, out, &err)) fail(err.msg);
+}
+
+static int one_of(const char *s, const char *const *list)
+{
+  for (int i = 0; list[i]; i++) if (!strcmp(s, list[i])) return 1;
+  return 0;
+}
+
+static void parse(int argc, char **argv, options *o)
+{
+  *o = (options){.basis = "improved", .normalize = "bound", .size = 512, .octaves = 6, .seed = 1,
+                 .table_size = 512, .bits = 0, .extent = 4, .z = 0.5, .gain = 0.5, .lacunarity = 2,
+                 .amplitude = 0.5, .stripes = 1};
+  for (int i = 1; i < argc; i++) {
+    const char *a = argv[i];
+    if (!strcmp(a, "-h") || !strcmp(a, "--help")) { usage(); exit(0); }
+    if (!strcmp(a, "--reference")) { o->reference = 1; continue; }
+    if (a[0] != '-') {
+      if (o->noise) { char m[256]; snprintf(m, sizeof m, "%s: only one NOISE may be given", a); fail(m); }
+      o->noise = a;
+      continue;
+    }
+    if (i + 1 >= argc) { char m[256]; snprintf(m, sizeof m, "%s: missing value", a); fail(m); }
+    const char *v = argv[++i];
+    if (!strcmp(a, "-o")) o->out = v;
+    else if (!strcmp(a, "--size")) integer(a, v, 1, 65536, &o->size);
+    else if (!strcmp(a, "--octaves")) integer(a, v, 1, 30, &o->octaves);
+    else if (!strcmp(a, "--seed")) integer(a, v, 0, 4294967295L, &o->seed);
+    else if (!strcmp(a, "--table-size")) integer(a, v, 4, 1048576, &o->table_size);
+    else if (!strcmp(a, "--bits")) integer(a, v, 8, 32, &o->bits);
+    else if (!strcmp(a, "--extent")) num(a, v, 1e-9, 1e9, &o->extent);
+    else if (!strcmp(a, "--x0")) num(a, v, -1e9, 1e9, &o->x0);
+    else if (!strcmp(a, "--y0")) num(a, v, -1e9, 1e9, &o->y0);
+    else if (!strcmp(a, "--z")) num(a, v, -1e9, 1e9, &o->z);
+    else if (!strcmp(a, "--gain")) num(a, v, -1e3, 1e3, &o->gain);
+    else if (!strcmp(a, "--lacunarity")) num(a, v, 1e-6, 1e6, &o->lacunarity);
+    else if (!strcmp(a, "--amplitude")) num(a, v, -1e6, 1e6, &o->amplitude);
+    else if (!strcmp(a, "--stripes")) num(a, v, 1e-9, 1e9, &o->stripes);
+    else if (!strcmp(a, "--basis")) o->basis = v;
+    else if (!strcmp(a, "--normalize")) o->normalize = v;
+    else { char m[256]; snprintf(m, sizeof m, "%s: unknown option (see --help)", a); fail(m); }
+  }
+  char m[512];
+  if (!o->noise) fail("no NOISE given (see --help)");
+  if (!one_of(o->noise, NOISES)) { snprintf(m, sizeof m, "%s: unknown noise (noise2, improved, fractal, turbulence, fbm, marble)", o->noise); fail(m); }
+  if (!o->out) fail("-o: no output file given");
+  const char *bases[] = {"improved", "table", NULL}, *norms[] = {"bound", "range", NULL};
+  if (!one_of(o->basis, bases)) { snprintf(m, sizeof m, "--basis: '%s' is not improved or table", o->basis); fail(m); }
+  if (!one_of(o->normalize, norms)) { snprintf(m, sizeof m, "--normalize: '%s' is not bound or range", o->normalize); fail(m); }
+  if (o->bits && o->bits != 8 && o->bits != 16 && o->bits != 32) { snprintf(m, sizeof m, "--bits: %ld is not 8, 16 or 32", o->bits); fail(m); }
+  double bytes = (double)o->size * o->size * 12.0;
+  if (bytes > 16e9) { snprintf(m, sizeof m, "--size: %ld needs %.0f GB of memory; at most 36000 fits in 16 GB", o->size, bytes / 1e9); fail(m); }
+}
+
+static void check_writable(const char *path)
+{
+  char *dir = nl_xstrdup(path), *slash = strrchr(dir, '/');
+  if (slash) *(slash == dir ? slash + 1 : slash) = '\0'; else strcpy(dir, ".");
+  if (access(dir, W_OK) != 0) {
+    char m[1024];
+    snprintf(m, sizeof m, "-o %s: directory '%s' does not exist or is not writable", path, dir);
+    fail(m);
+  }
+  free(dir);
+}
+
+static int ends_with(const char *s, const char *suffix)
+{
+  size_t a = strlen(s), b = strlen(suffix);
+  return a >= b && strcasecmp(s + a - b, suffix) == 0;
+}
+
+/* Evaluates the chosen noise; *lo, *hi are its analytic range. */
+static double *evaluate(const options *o, double *lo, double *hi)
+{
+  nl_window win = {o->x0, o->y0, o->z, o->extent, (int)o->size, (int)o->size};
+  nl_grad2 *t = NULL;
+  nl_perm3 p;
+  nl_basis b;
+  int table = !strcmp(o->noise, "noise2") || (!strcmp(o->basis, "table") && strcmp(o->noise, "improved"));
+  if (table) { t = nl_grad2_alloc((size_t)o->table_size); nl_grad2_seed(t, (unsigned long)o->seed); b = nl_basis_grad2(t); }
+  else { if (o->reference) nl_perm3_reference(&p); else nl_perm3_seed(&p, (unsigned long)o->seed); b = nl_basis_perm3(&p); }
+  nl_octaves oct = nl_octaves_fbm(1, 1, 1);
+  if (!strcmp(o->noise, "fractal") || !strcmp(o->noise, "marble")) oct = nl_octaves_fractal((int)o->octaves);
+  if (!strcmp(o->noise, "turbulence")) { oct = nl_octaves_fractal((int)o->octaves); oct.turbulence = 1; }
+  if (!strcmp(o->noise, "fbm")) oct = nl_octaves_fbm((int)o->octaves, o->gain, o->lacunarity);
+  double *v = nl_xmalloc((size_t)o->size * o->size * sizeof *v);
+  double B = nl_octaves_bound(&oct, b.bound);
+  if (!strcmp(o->noise, "marble")) { nl_marble_grid(&b, &oct, &win, NL_TWO_PI * o->stripes, o->amplitude, v); *lo = 0; *hi = 1; }
+  else { nl_fractal_grid(&b, &oct, &win, v); *lo = oct.turbulence ? 0 : -B; *hi = B; }
+  nl_grad2_free(t);
+  return v;
+}
+
+static void write_tsv(const options *o, const double *v)
+{
+  const char *cols[] = {"x", "y", "value"};
+  nl_table *t = nl_table_alloc(3, cols);
+  double d = o->extent / o->size;
+  for (long r = 0; r < o->size; r++)
+    for (long c = 0; c < o->size; c++)
+      nl_table_append(t, "ddd", o->x0 + (c + 0.5) * d, o->y0 + (r + 0.5) * d, v[r * o->size + c]);
+  nl_error err;
+  if (nl_table_write(t, o->out, &err)) fail(err.msg);
+  nl_table_free(t);
+}
+
+static void write_image(const options *o, const double *v, double lo, double hi)
+{
+  int raw = o->bits == 32 || (ends_with(o->out, ".exr") && o->bits != 16);
+  int bits = o->bits ? (int)o->bits : raw ? 32 : 8;
+  size_t n = (size_t)o->size * o->size;
+  if (!raw && !strcmp(o->normalize, "range")) {
+    lo = hi = v[0];
+    for (size_t k = 0; k < n; k++) { lo = v[k] < lo ? v[k] : lo; hi = v[k] > hi ? v[k] : hi; }
+  }
+  nl_image *im = raw ? nl_image_alloc((int)o->size, (int)o->size, 1)
+                     : nl_image_from_values(v, (int)o->size, (int)o->size, lo, hi);
+  if (raw) for (size_t k = 0; k < n; k++) im->data[k] = (float)v[k];
+  nl_error err;
+  if (nl_image_write(im, o->out, bits, &err)) fail(err.msg);
+  nl_image_free(im);
+}
+
+int main(int argc, char **argv)
+{
+  options o;
+  parse(argc, argv, &o);
+  check_writable(o.out);
+  double lo, hi;
+  double *v = evaluate(&o, &lo, &hi);
+  if (ends_with(o.out, ".tsv")) write_tsv(&o, v);
+  else write_image(&o, v, lo, hi);
+  free(v);
+  return 0;
+}
