@@ -2,6 +2,8 @@
  * 8 octaves (slide "Example", panels (a)-(d)). */
 #include "study/nl_study.h"
 
+#include <math.h>
+
 int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("s1_fractal_sum", "S1 - Fractal sum at 1, 2, 3 and 8 octaves", argc, argv);
@@ -18,11 +20,17 @@ int main(int argc, char **argv)
   char labels[4][32];
   nl_study_octave_settings(oct, 4, 0, st, labels);
   nl_window win = {0, 0, z, extent, size, size};
-  nl_study_series(r, "fractal", "fractal_sum(p) = sum noise(2^j p) / 2^j", NL_BASIS_IMPROVED3, st, 4, &win);
+  nl_table *d = nl_study_series(r, "fractal", "fractal_sum(p) = sum noise(2^j p) / 2^j",
+                                NL_BASIS_IMPROVED3, st, 4, &win);
+  long sd = nl_table_column(d, "sd"), ratio = nl_table_column(d, "max_abs_over_bound");
   nl_report_text(r, "Each octave adds a band one octave up at a quarter of the power (amplitude 1/2): "
-                    "the staircase of the spectrum. The sd converges as sqrt(1 + 1/4 + 1/16 + ...) "
-                    "and the largest value seen stays well inside the analytic bound, whose ratio "
-                    "to the observed extreme falls as octaves are added (extremes of independent "
-                    "octaves rarely align).\n");
+                    "the staircase of the spectrum. The sd grows from %.4f (1 octave) to %.4f "
+                    "(8 octaves), a factor %.3f; for octaves that were uncorrelated it would be "
+                    "sqrt(1 + 1/4 + ... + 1/4^7) = %.3f. The largest value seen is %.0f%% of the "
+                    "analytic bound at 1 octave and %.0f%% at 8: extremes of different octaves "
+                    "rarely align, so the bound loosens as octaves are added.\n",
+                 nl_table_get(d, 0, sd), nl_table_get(d, 3, sd), nl_table_get(d, 3, sd) / nl_table_get(d, 0, sd),
+                 sqrt((1 - pow(0.25, 8)) / 0.75), 100 * nl_table_get(d, 0, ratio), 100 * nl_table_get(d, 3, ratio));
+  nl_table_free(d);
   return nl_run_end(r);
 }

@@ -18,7 +18,7 @@ int main(int argc, char **argv)
   char labels[4][32];
   nl_study_octave_settings(oct, 4, 1, st, labels);
   nl_window win = {0, 0, z, extent, size, size};
-  nl_study_series(r, "turbulence", "turbulence(p) = sum |noise(2^j p)| / 2^j", NL_BASIS_IMPROVED3, st, 4, &win);
+  nl_table_free(nl_study_series(r, "turbulence", "turbulence(p) = sum |noise(2^j p)| / 2^j", NL_BASIS_IMPROVED3, st, 4, &win));
   nl_report_text(r, "The absolute value folds each octave at its zero set, the dark creases. Folding "
                     "moves power into the DC term (the mean is positive) and into frequencies above "
                     "the octave's band, so even one octave has a broad spectrum, unlike S1.\n");

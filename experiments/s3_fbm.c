@@ -29,13 +29,13 @@ int main(int argc, char **argv)
   }
   nl_window win = {0, 0, z, extent, size, size};
   nl_report_text(r, "### Varying the gain\n");
-  nl_study_series(r, "gain", "fBm, lacunarity 2: gain 0, 0.25, 0.5, 0.75, 1", NL_BASIS_IMPROVED3, g, 5, &win);
+  nl_table_free(nl_study_series(r, "gain", "fBm, lacunarity 2: gain 0, 0.25, 0.5, 0.75, 1", NL_BASIS_IMPROVED3, g, 5, &win));
   nl_report_text(r, "Gain 0 is one octave of noise; each step of the gain lifts the high bands of the "
                     "spectrum (power of octave j scales as gain^2j) and the sd grows as "
                     "sqrt(sum gain^2j). At gain 1 all six octaves weigh the same and the image is "
                     "close to white noise at the pixel scale.\n");
   nl_report_text(r, "### Varying the lacunarity\n");
-  nl_study_series(r, "lacunarity", "fBm, gain 0.5: lacunarity 0.5, 1, 2, 4, 8", NL_BASIS_IMPROVED3, l, 5, &win);
+  nl_table_free(nl_study_series(r, "lacunarity", "fBm, gain 0.5: lacunarity 0.5, 1, 2, 4, 8", NL_BASIS_IMPROVED3, l, 5, &win));
   nl_report_text(r, "Lacunarity 1 sums one noise six times: the picture of gain 0 at 1.97 times the "
                     "amplitude (sd and max in the table), with the same spectrum shape. Lacunarity "
                     "0.5 adds ever larger, smoother octaves, which dominate the low end of the "

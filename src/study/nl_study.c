@@ -8,8 +8,8 @@ static void put(const char *prefix, const char *what, char *buf, size_t n)
   snprintf(buf, n, "%s_%s", prefix, what);
 }
 
-void nl_study_series(nl_run *r, const char *prefix, const char *title, nl_basis_kind kind,
-                     const nl_setting *settings, int n, const nl_window *win)
+nl_table *nl_study_series(nl_run *r, const char *prefix, const char *title, nl_basis_kind kind,
+                          const nl_setting *settings, int n, const nl_window *win)
 {
   nl_table *dist, *spec;
   nl_image **panels = nl_xcalloc((size_t)n, sizeof *panels);
@@ -34,8 +34,8 @@ void nl_study_series(nl_run *r, const char *prefix, const char *title, nl_basis_
   for (int i = 0; i < n; i++) nl_image_free(panels[i]);
   free(panels); free(labels);
   nl_image_free(m);
-  nl_table_free(dist);
   nl_table_free(spec);
+  return dist;
 }
 
 void nl_study_octave_settings(const int *oct, int n, int turbulence, nl_setting *settings,

@@ -7,6 +7,8 @@
  *   PREFIX_spectrum.tsv      seed-averaged radial power per setting
  * into the run's folder and adds them to the report; the spectrum figure is
  * PREFIX_spectrum.png, drawn by scripts/gnuplot/NAME-PREFIX_spectrum.gp.
+ * Returns the distribution table (caller frees) for the text that
+ * interprets it.
  */
 #ifndef NL_STUDY_H
 #define NL_STUDY_H
@@ -14,8 +16,8 @@
 #include "noise/nl_noise.h"
 #include "report/nl_report.h"
 
-void nl_study_series(nl_run *r, const char *prefix, const char *title, nl_basis_kind kind,
-                     const nl_setting *settings, int n, const nl_window *win);
+nl_table *nl_study_series(nl_run *r, const char *prefix, const char *title, nl_basis_kind kind,
+                          const nl_setting *settings, int n, const nl_window *win);
 
 /* Fills settings[i] for octave counts oct[i] of Shaffer's fractal sum (gain
  * 1/2, lacunarity 2), optionally turbulent; labels "(a) 1 octave" are
