@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <unistd.h>
 #include <memory>
 #include <string>
@@ -40,7 +41,17 @@ extern "C" nl_status nl_image_read(const char *path, nl_image **out, nl_error *e
   nl_image *im = nl_image_alloc(spec.width, spec.height, ch == 2 ? 4 : ch);
   // Grey+alpha (2 channels) is read as grey and alpha, stored as RGBA.
   std::unique_ptr<float[]> buf(new float[(size_t)spec.width * spec.height * ch]);
-  if (!in->read_image(0, 0, 0, ch, TypeDesc::FLOAT, buf.get())) {
+  // libpng prints its own "libpng error: ..." line on stderr before OIIO
+  // reports the same reason to us; our contract is one line, so stderr is
+  // muted for the duration of the read (noiselab reads images on one thread).
+  fflush(stderr);
+  int saved = dup(2), devnull = open("/dev/null", O_WRONLY);
+  if (saved >= 0 && devnull >= 0) dup2(devnull, 2);
+  bool ok = in->read_image(0, 0, 0, ch, TypeDesc::FLOAT, buf.get());
+  if (saved >= 0 && devnull >= 0) dup2(saved, 2);
+  if (saved >= 0) close(saved);
+  if (devnull >= 0) close(devnull);
+  if (!ok) {
     std::string why = in->geterror();
     nl_image_free(im);
     return set_err(err, NL_EFORMAT, path, why);
