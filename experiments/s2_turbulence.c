@@ -5,19 +5,16 @@
 int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("s2_turbulence", "S2 - Turbulence at 1, 2, 3 and 8 octaves", argc, argv);
-  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 512, 16, 4096);
-  double extent = nl_run_param(r, "extent", 4.0, 1e-3, 1e4);
-  double z = nl_run_param(r, "z", 0.5, -1e6, 1e6);
+  nl_window win = nl_study_window(r);
   nl_run_params_done(r);
 
   nl_report_text(r, "**Slides:** turbulence, the fractal sum of |noise|, at 1, 2, 3 and 8 octaves "
                     "(images only). **Ours:** the slice z = %g of Perlin's improved 3D noise over "
-                    "[0, %g)^2, %d seeds for the numbers.\n", z, extent, nl_run_seeds(r));
+                    "[0, %g)^2, %d seeds for the numbers.\n", win.z, win.size, nl_run_seeds(r));
   const int oct[] = {1, 2, 3, 8};
   nl_setting st[4];
   char labels[4][32];
   nl_study_octave_settings(oct, 4, 1, st, labels);
-  nl_window win = {0, 0, z, extent, size, size};
   nl_table_free(nl_study_series(r, "turbulence", "turbulence(p) = sum |noise(2^j p)| / 2^j", NL_BASIS_IMPROVED3, st, 4, &win));
   nl_report_text(r, "The absolute value folds each octave at its zero set, the dark creases. Folding "
                     "moves power into the DC term (the mean is positive) and into frequencies above "

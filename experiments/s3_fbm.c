@@ -8,16 +8,14 @@
 int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("s3_fbm", "S3 - fBm: gain and lacunarity", argc, argv);
-  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 512, 16, 4096);
+  nl_window win = nl_study_window(r);
   int octaves = (int)nl_run_param_int(r, "octaves", 6, 1, 30);
-  double extent = nl_run_param(r, "extent", 4.0, 1e-3, 1e4);
-  double z = nl_run_param(r, "z", 0.5, -1e6, 1e6);
   nl_run_params_done(r);
 
   nl_report_text(r, "**Slides:** fBm with %d octaves, gain 0, 0.25, 0.5, 0.75, 1 at lacunarity 2, and "
                     "lacunarity 0.5, 1, 2, 4, 8 at gain 0.5 (images only). **Ours:** the slice z = %g of "
                     "Perlin's improved 3D noise over [0, %g)^2, %d seeds for the numbers.\n",
-                 octaves, z, extent, nl_run_seeds(r));
+                 octaves, win.z, win.size, nl_run_seeds(r));
   const double gains[] = {0, 0.25, 0.5, 0.75, 1.0}, lacs[] = {0.5, 1, 2, 4, 8};
   nl_setting g[5], l[5];
   char gl[5][32], ll[5][32];
@@ -27,7 +25,6 @@ int main(int argc, char **argv)
     g[i] = (nl_setting){gl[i], nl_octaves_fbm(octaves, gains[i], 2.0), gains[i], 2.0};
     l[i] = (nl_setting){ll[i], nl_octaves_fbm(octaves, 0.5, lacs[i]), 0.5, lacs[i]};
   }
-  nl_window win = {0, 0, z, extent, size, size};
   nl_report_text(r, "### Varying the gain\n");
   nl_table_free(nl_study_series(r, "gain", "fBm, lacunarity 2: gain 0, 0.25, 0.5, 0.75, 1", NL_BASIS_IMPROVED3, g, 5, &win));
   nl_report_text(r, "Gain 0 is one octave of noise; each step of the gain lifts the high bands of the "

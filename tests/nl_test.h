@@ -32,6 +32,26 @@ static int nl__ntests, nl__failed_checks;
           __FILE__, __LINE__, #a, nl__a, #b, nl__b, (double)(tol)); \
   nl__failed_checks++; } } while (0)
 
+/* A scratch directory for the test program, removed at exit. */
+#include <stdlib.h>
+#include <string.h>
+static char nl__tmpdir[64];
+static void nl__rm_tmpdir(void)
+{
+  char cmd[96];
+  snprintf(cmd, sizeof cmd, "rm -rf '%s'", nl__tmpdir);
+  if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", nl__tmpdir);
+}
+static inline const char *nl_test_tmpdir(void)
+{
+  if (!nl__tmpdir[0]) {
+    strcpy(nl__tmpdir, "/tmp/nl_test_XXXXXX");
+    if (!mkdtemp(nl__tmpdir)) { perror("mkdtemp"); exit(1); }
+    atexit(nl__rm_tmpdir);
+  }
+  return nl__tmpdir;
+}
+
 static inline int nl_test_run(void)
 {
   int failed = 0;

@@ -6,7 +6,7 @@
 #include <string.h>
 #include <unistd.h>
 
-static char dir[] = "/tmp/nl_test_image_XXXXXX";
+static const char *dir;
 
 static nl_image *ramp(int w, int h, int c)
 {
@@ -116,10 +116,6 @@ NL_TEST(montage_layout_and_text)
 
 int main(void)
 {
-  if (!mkdtemp(dir)) return 1;
-  int r = nl_test_run();
-  char cmd[128];
-  snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-  if (system(cmd) != 0) return 1;
-  return r;
+  dir = nl_test_tmpdir();
+  return nl_test_run();
 }

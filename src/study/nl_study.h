@@ -19,6 +19,10 @@
 nl_table *nl_study_series(nl_run *r, const char *prefix, const char *title, nl_basis_kind kind,
                           const nl_setting *settings, int n, const nl_window *win);
 
+/* The square window of the S experiments from the run's parameters:
+ * size (pixels; 512, or 128 with --quick), extent (4 units) and z (0.5). */
+nl_window nl_study_window(nl_run *r);
+
 /* Fills settings[i] for octave counts oct[i] of Shaffer's fractal sum (gain
  * 1/2, lacunarity 2), optionally turbulent; labels "(a) 1 octave" are
  * written into labels[i] (32 bytes each). */

@@ -5,7 +5,7 @@
 #include <string.h>
 #include <unistd.h>
 
-static char dir[] = "/tmp/nl_test_table_XXXXXX";
+static const char *dir;
 
 static char *write_file(const char *name, const char *content)
 {
@@ -95,10 +95,6 @@ NL_TEST(failed_write_keeps_old_file)
 
 int main(void)
 {
-  if (!mkdtemp(dir)) return 1;
-  int r = nl_test_run();
-  char cmd[128];
-  snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-  if (system(cmd) != 0) return 1;
-  return r;
+  dir = nl_test_tmpdir();
+  return nl_test_run();
 }
