@@ -271,46 +271,46 @@ static double log_nfact_div_npow(double n)
   return log(n) / 2 - n + log(NL_TWO_PI) / 2 + rn * p;
 }
 
-/* scipy's _kolmogn: chooses the method by n, n d, n d^2 (Simard-L'Ecuyer). */
+/* The middle range 1 < n d < n - 1 of scipy's _kolmogn. */
+static double kolmogn_mid(size_t n, double x, int want_cdf, nl_ks_method *m)
+{
+  double nn = (double)n, nx2 = nn * x * x, p;
+  *m = NL_KS_SMIRNOV;
+  if (n > 140 && !want_cdf && nx2 >= 370.0) return 0.0;   /* below 1e-321 */
+  if (x >= 0.5 || (n <= 140 && nx2 > 4) || (n > 140 && !want_cdf && nx2 >= 2.2)) {
+    /* exact for x >= 0.5; elsewhere the two one-sided tails no longer overlap
+     * to double precision (Simard & L'Ecuyer sec. 3) */
+    p = 2 * nl_smirnov_sf(n, x);
+    return pick(want_cdf, 1.0 - p, p);
+  }
+  if (n <= 140 || (n <= 100000 && nn * pow(x, 1.5) <= 1.4 && nx2 < 18.0)) {
+    if (n > 140 || nx2 <= 0.754693) { *m = NL_KS_DURBIN_MTW; p = ks_cdf_durbin(n, x); }
+    else { *m = NL_KS_POMERANZ; p = ks_cdf_pomeranz(n, x); }
+    return pick(want_cdf, p, 1.0 - p);
+  }
+  if (nx2 >= 18.0) return pick(want_cdf, 1.0, 0.0);
+  *m = NL_KS_PELZ_GOOD;
+  return clip01(ks_pelz_good(n, x, want_cdf));
+}
+
+/* scipy's _kolmogn: P(D_n <= x) or P(D_n >= x), choosing the method by n,
+ * n x and n x^2 (Simard & L'Ecuyer 2011, fig. 1). */
 static double kolmogn(size_t n, double x, int want_cdf, nl_ks_method *method)
 {
   nl_ks_method m = NL_KS_RUBEN_GAMBINO;
   double nn = (double)n, t = nn * x, r;
   if (x >= 1.0) r = pick(want_cdf, 1.0, 0.0);
   else if (x <= 0.0 || t <= 0.5) r = pick(want_cdf, 0.0, 1.0);
-  else if (t <= 1.0) {
+  else if (t <= 1.0) {        /* Ruben & Gambino (1982): n!/n^n (2t-1)^n */
     double p = 1.0;
     if (n <= 140) for (size_t i = 1; i <= n; i++) p *= (double)i * (1.0 / nn) * (2 * t - 1);
     else p = exp(log_nfact_div_npow(nn) + nn * log(2 * t - 1));
     r = pick(want_cdf, p, 1.0 - p);
-  } else if (t >= nn - 1) {
+  } else if (t >= nn - 1) {   /* Ruben & Gambino: 2 (1-x)^n */
     double p = 2 * pow(1.0 - x, nn);
     r = pick(want_cdf, 1 - p, p);
   } else {
-    double nx2 = t * x, p, p2 = -1.0;   /* p2 >= 0: answer is 2 x Smirnov */
-    m = NL_KS_SMIRNOV;
-    if (x >= 0.5) p2 = 2 * nl_smirnov_sf(n, x);
-    else if (n <= 140) {
-      if (nx2 <= 0.754693) { m = NL_KS_DURBIN_MTW; p = ks_cdf_durbin(n, x); }
-      else if (nx2 <= 4) { m = NL_KS_POMERANZ; p = ks_cdf_pomeranz(n, x); }
-      else p2 = 2 * nl_smirnov_sf(n, x);
-    }
-    if (p2 >= 0.0) r = pick(want_cdf, 1.0 - p2, p2);
-    else if (n <= 140) r = pick(want_cdf, p, 1.0 - p);
-    } else if (!want_cdf && nx2 >= 370.0) {
-      r = 0.0;
-    } else if (!want_cdf && nx2 >= 2.2) {
-      r = clip01(2 * nl_smirnov_sf(n, x));
-    } else if (nx2 >= 18.0) {
-      r = pick(want_cdf, 1.0, 0.0);
-    } else if (n <= 100000 && nn * pow(x, 1.5) <= 1.4) {
-      m = NL_KS_DURBIN_MTW;
-      p = ks_cdf_durbin(n, x);
-      r = pick(want_cdf, p, 1.0 - p);
-    } else {
-      m = NL_KS_PELZ_GOOD;
-      r = clip01(ks_pelz_good(n, x, want_cdf));
-    }
+    r = kolmogn_mid(n, x, want_cdf, &m);
   }
   if (method) *method = m;
   return r;
@@ -324,4 +324,75 @@ double nl_ks_sf(size_t n, double d, nl_ks_method *method)
 double nl_ks_cdf(size_t n, double d, nl_ks_method *method)
 {
   return kolmogn(n, d, 1, method);
+}
+
+/* P(D_{n,n} >= h/n) = 2 sum_k (-1)^(k-1) C(2n, n-kh)/C(2n, n), summed
+ * Horner-fashion from the smallest term to avoid cancellation (scipy's
+ * _compute_prob_outside_square). */
+static double ks2_prob_outside_square(long n, long h)
+{
+  double P = 0.0;
+  for (long k = n / h; k >= 0; k--) {
+    double p1 = 1.0;
+    for (long j = 0; j < h; j++)
+      p1 = (double)(n - k * h - j) * p1 / (double)(n + k * h + j + 1);
+    P = p1 * (1.0 - P);
+  }
+  return 2 * P;
+}
+
+static long floor_div(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+static long ceil_div(long a, long b) { return -floor_div(-a, b); }
+
+/* Proportion of lattice paths from (0,0) to (m,n) leaving the band
+ * |x/m - y/n| < h/lcm(m,n), by the column recursion for 1 - p (Viehmann
+ * 2021; scipy's _compute_outer_prob_inside_method). O(m * band width). */
+static double ks2_outer_prob_inside(long m, long n, long g, long h)
+{
+  if (m < n) { long t = m; m = n; n = t; }
+  long mg = m / g, ng = n / g;
+  long minj = 0, maxj = ceil_div(h, mg) < n + 1 ? ceil_div(h, mg) : n + 1;
+  long curlen = maxj - minj, lenA = 2 * maxj + 2 < n + 1 ? 2 * maxj + 2 : n + 1;
+  double *A = nl_xmalloc((size_t)lenA * sizeof(double)), res;
+  for (long j = 0; j < lenA; j++) A[j] = j < maxj ? 0.0 : 1.0;
+  for (long i = 1; i <= m; i++) {
+    long lastminj = minj, lastlen = curlen;
+    minj = floor_div(ng * i - h, mg) + 1;
+    minj = minj < 0 ? 0 : minj > n ? n : minj;
+    maxj = ceil_div(ng * i + h, mg) < n + 1 ? ceil_div(ng * i + h, mg) : n + 1;
+    if (maxj <= minj) { free(A); return 1.0; }
+    double val = minj == 0 ? 0.0 : 1.0;
+    for (long jj = 0; jj < maxj - minj; jj++) {
+      long j = jj + minj;
+      val = (A[jj + minj - lastminj] * (double)i + val * (double)j) / (double)(i + j);
+      A[jj] = val;
+    }
+    curlen = maxj - minj;
+    for (long j = curlen; j < curlen + (lastlen - curlen) && j < lenA; j++) A[j] = 1.0;
+  }
+  res = A[maxj - minj - 1];
+  free(A);
+  return res;
+}
+
+static long gcd_long(long a, long b) { while (b) { long t = a % b; a = b; b = t; } return a; }
+
+double nl_ks2_sf(size_t n1, size_t n2, double d, nl_ks_method *method)
+{
+  if (n1 <= 10000 && n2 <= 10000) {
+    long g = gcd_long((long)n1, (long)n2), lcm = (long)n1 / g * (long)n2;
+    long h = (long)nearbyint(d * (double)lcm);
+    double p = h <= 0 ? 1.0
+             : n1 == n2 ? ks2_prob_outside_square((long)n1, h)
+             : ks2_outer_prob_inside((long)n1, (long)n2, g, h);
+    if (isfinite(p) && p >= 0.0 && p <= 1.0) {
+      if (method) *method = NL_KS_TWO_SAMPLE_EXACT;
+      return p;
+    }
+  }
+  /* Smirnov's limit through the one-sample law at n1 n2 / (n1 + n2),
+   * rounded half to even like numpy. */
+  double a = (double)n1, b = (double)n2, en = nearbyint(a * b / (a + b));
+  if (method) *method = NL_KS_TWO_SAMPLE_ASYMP;
+  return nl_ks_sf(en < 1.0 ? 1 : (size_t)en, d, NULL);
 }

@@ -1,0 +1,220 @@
+/* bench_stats - speed of src/stats against scipy / scikit-learn on the same data.
+ *
+ *   build/bench/bench_stats [DIR]      (DIR for the shared data, default /tmp/noiselab_bench_stats)
+ *
+ * C side (always): GMM EM on 10,000 x 81, K = 30 full covariance, from k-means
+ * labels (time per EM iteration, log-likelihood at convergence); complete and
+ * single linkage on the same 10,000 x 81 (time, peak memory of a child
+ * process); KS with exact p at n = 512 (microseconds per call) and the
+ * incremental statistic (moves per second). It writes the data and labels to
+ * DIR, then runs bench/bench_stats.py on them when /usr/bin/python3 can import
+ * sklearn, so the Python side starts EM from the same labels.
+ * OpenBLAS is pinned to one thread on both sides (OPENBLAS_NUM_THREADS=1; this
+ * program re-executes itself with it set).
+ */
+#include "stats/nl_cluster.h"
+#include "stats/nl_gmm.h"
+#include "stats/nl_stats.h"
+#include "table/nl_table.h"
+
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+enum { N = 10000, D = 81, K = 30 };
+
+/* A mixture of K Gaussians with random centres and random covariances
+ * A A^T / d + 0.5 I: the clusters overlap a little, as real features do. */
+static double *make_data(gsl_rng *rng)
+{
+  double *x = nl_xmalloc((size_t)N * D * sizeof(double));
+  double *A = nl_xmalloc((size_t)K * D * D * sizeof(double)), *mu = nl_xmalloc(K * D * sizeof(double));
+  for (size_t i = 0; i < (size_t)K * D * D; i++) A[i] = gsl_ran_gaussian(rng, 1.0) / sqrt((double)D);
+  for (size_t i = 0; i < (size_t)K * D; i++) mu[i] = gsl_ran_gaussian(rng, 0.4);
+  double z[D];
+  for (size_t i = 0; i < N; i++) {
+    size_t k = gsl_rng_uniform_int(rng, K);
+    for (int j = 0; j < D; j++) z[j] = gsl_ran_gaussian(rng, 1.0);
+    for (int r = 0; r < D; r++) {
+      double v = mu[k * D + r] + 0.7 * gsl_ran_gaussian(rng, 1.0);
+      for (int j = 0; j < D; j++) v += A[(k * D + r) * D + j] * z[j];
+      x[i * D + r] = v;
+    }
+  }
+  free(A);
+  free(mu);
+  return x;
+}
+
+static void save(const char *dir, const char *name, size_t rows, size_t cols, const double *v)
+{
+  char **names = nl_xmalloc(cols * sizeof(char *));
+  for (size_t j = 0; j < cols; j++) { names[j] = nl_xmalloc(16); snprintf(names[j], 16, "c%zu", j); }
+  nl_table *t = nl_table_alloc(cols, (const char *const *)names);
+  for (size_t i = 0; i < rows; i++) nl_table_append_doubles(t, v + i * cols);
+  char *p = nl_path_join(dir, name);
+  nl_error err;
+  if (nl_table_write(t, p, &err)) { fprintf(stderr, "%s\n", err.msg); exit(1); }
+  free(p);
+  nl_table_free(t);
+  for (size_t j = 0; j < cols; j++) free(names[j]);
+  free(names);
+}
+
+static void bench_gmm(const double *x, const int *labels)
+{
+  nl_gmm_options o;
+  nl_gmm_options_default(&o);
+  o.init_labels = labels;
+  nl_gmm *g = nl_gmm_alloc(K, D, NL_GMM_FULL);
+  nl_error err;
+  double t0 = nl_time_now();
+  if (nl_gmm_fit(g, x, N, &o, &err)) { fprintf(stderr, "gmm: %s\n", err.msg); exit(1); }
+  double t = nl_time_now() - t0;
+  printf("gmm_em   C    n=%d d=%d K=%d full: %.3f s total, %zu iterations, %.4f s/iteration, "
+         "mean loglik %.10f, converged %d\n", N, D, K, t, g->iterations, t / (double)g->iterations,
+         g->loglik / N, g->converged);
+  nl_gmm_free(g);
+}
+
+/* Runs linkage in a child so that its peak RSS is its own. */
+static void bench_linkage(const double *x, nl_linkage_method m, const char *name)
+{
+  fflush(stdout);
+  pid_t pid = fork();
+  if (pid == 0) {
+    double *Z = nl_xmalloc((N - 1) * 4 * sizeof(double));
+    double t0 = nl_time_now();
+    nl_error err;
+    if (nl_linkage(x, N, D, m, Z, &err)) { fprintf(stderr, "%s\n", err.msg); _exit(1); }
+    double t = nl_time_now() - t0;
+    printf("linkage  C    %-8s n=%d d=%d: %.3f s, top merge height %.10g\n", name, N, D, t, Z[4 * (N - 2) + 2]);
+    fflush(stdout);
+    _exit(0);
+  }
+  int status;
+  struct rusage ru;
+  wait4(pid, &status, 0, &ru);
+  printf("linkage  C    %-8s peak RSS of the process %.0f MiB\n", name, ru.ru_maxrss / 1024.0);
+}
+
+static void bench_ks(gsl_rng *rng)
+{
+  enum { M = 512 };
+  double a[M], ab[2] = {0.0, NL_TWO_PI};
+  for (int i = 0; i < M; i++) a[i] = NL_TWO_PI * gsl_rng_uniform(rng);
+  nl_ks_result r;
+  int reps = 20000;
+  double t0 = nl_time_now(), sink = 0.0;
+  for (int i = 0; i < reps; i++) {
+    a[i % M] = NL_TWO_PI * gsl_rng_uniform(rng);
+    nl_ks_test_uniform(a, M, 0.0, NL_TWO_PI, &r, NULL);
+    sink += r.p;
+  }
+  double t = (nl_time_now() - t0) / reps;
+  printf("ks       C    n=%d exact p (sort + D + p): %.2f us/call  (last D=%.6f p=%.6f method=%s)\n",
+         M, t * 1e6, r.d, r.p, nl_ks_method_name(r.method));
+  /* annealer moves: small perturbations and random jumps, half each */
+  nl_ks_incr *s = nl_ks_incr_alloc(a, M, nl_cdf_uniform, ab, NULL);
+  int moves = 2000000;
+  double *steps = nl_xmalloc(2 * (size_t)moves * sizeof(double));
+  for (int i = 0; i < moves; i++) {
+    steps[2 * i] = (double)gsl_rng_uniform_int(rng, M);
+    steps[2 * i + 1] = i % 2 ? 0.02 * (gsl_rng_uniform(rng) - 0.5) : NL_TWO_PI * gsl_rng_uniform(rng);
+  }
+  t0 = nl_time_now();
+  for (int i = 0; i < moves; i++) {
+    size_t j = (size_t)steps[2 * i];
+    double nv = i % 2 ? fmod(a[j] + steps[2 * i + 1] + NL_TWO_PI, NL_TWO_PI) : steps[2 * i + 1];
+    nl_ks_incr_replace(s, a[j], nv, NULL);
+    a[j] = nv;
+    sink += s->d;
+  }
+  t = nl_time_now() - t0;
+  printf("ks_incr  C    n=%d: %.0f ns/move, %.2f million moves/s\n", M, t / moves * 1e9, moves / t / 1e6);
+  /* the alternative: keep the sorted array but rescan all n terms per move */
+  double u[M], dp, dm;
+  memcpy(u, s->u, sizeof u);
+  t0 = nl_time_now();
+  for (int i = 0; i < moves; i++) {
+    nl_ks_statistic(u, M, &dp, &dm);
+    sink += dp + dm;
+  }
+  t = nl_time_now() - t0;
+  printf("ks_full  C    n=%d: full O(n) rescan %.0f ns/move (the block scheme above avoids it)\n",
+         M, t / moves * 1e9);
+  if (sink == 42.0) printf(" ");
+  free(steps);
+  nl_ks_incr_free(s);
+}
+
+static void run_python(const char *dir)
+{
+  if (system("/usr/bin/python3 -c 'import sklearn' >/dev/null 2>&1") != 0) {
+    printf("python   scikit-learn not importable by /usr/bin/python3: Python side skipped\n");
+    return;
+  }
+  const char *candidates[] = {"bench/bench_stats.py", "../bench/bench_stats.py", "../../bench/bench_stats.py"};
+  for (int i = 0; i < 3; i++) {
+    if (access(candidates[i], R_OK) != 0) continue;
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd, "OPENBLAS_NUM_THREADS=1 /usr/bin/python3 %s %s", candidates[i], dir);
+    fflush(stdout);
+    if (system(cmd) != 0) printf("python   %s failed\n", candidates[i]);
+    return;
+  }
+  printf("python   bench/bench_stats.py not found from here; run it from the source tree:\n"
+         "         OPENBLAS_NUM_THREADS=1 /usr/bin/python3 bench/bench_stats.py %s\n", dir);
+}
+
+int main(int argc, char **argv)
+{
+  const char *env = getenv("OPENBLAS_NUM_THREADS");
+  if (!env || strcmp(env, "1") != 0) {   /* OpenBLAS reads it when it loads */
+    setenv("OPENBLAS_NUM_THREADS", "1", 1);
+    execv("/proc/self/exe", argv);
+  }
+  const char *dir = argc > 1 ? argv[1] : "/tmp/noiselab_bench_stats";
+  mkdir(dir, 0755);
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, 2024);
+  printf("bench_stats: OPENBLAS_NUM_THREADS=%s, data in %s\n", getenv("OPENBLAS_NUM_THREADS"), dir);
+  bench_ks(rng);
+  double *x = make_data(rng);
+  /* k-means labels from our k-means++ (seed 0), shared with the Python side */
+  nl_gmm_options o;
+  nl_gmm_options_default(&o);
+  o.max_iter = 1;
+  o.tol = 0;
+  nl_gmm *g = nl_gmm_alloc(K, D, NL_GMM_FULL);
+  nl_error err;
+  nl_gmm_fit(g, x, N, &o, &err);   /* one iteration to get k-means labels via the means */
+  int *labels = nl_xmalloc(N * sizeof(int));
+  double *lab = nl_xmalloc(N * sizeof(double));
+  for (size_t i = 0; i < N; i++) {   /* label = nearest k-means-initialised mean */
+    size_t best = 0;
+    double bd = INFINITY;
+    for (size_t k = 0; k < K; k++) {
+      double dd = nl_euclidean(x + i * D, g->means + k * D, D);
+      if (dd < bd) { bd = dd; best = k; }
+    }
+    labels[i] = (int)best;
+    lab[i] = (double)best;
+  }
+  nl_gmm_free(g);
+  save(dir, "X.tsv", N, D, x);
+  save(dir, "labels.tsv", N, 1, lab);
+  bench_gmm(x, labels);
+  bench_linkage(x, NL_LINKAGE_COMPLETE, "complete");
+  bench_linkage(x, NL_LINKAGE_SINGLE, "single");
+  run_python(dir);
+  free(x); free(labels); free(lab);
+  gsl_rng_free(rng);
+  return 0;
+}

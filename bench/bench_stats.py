@@ -1,0 +1,86 @@
+#!/usr/bin/python3
+"""Python side of bench/bench_stats.c: scikit-learn and scipy on the same data.
+
+    OPENBLAS_NUM_THREADS=1 /usr/bin/python3 bench/bench_stats.py DIR
+
+DIR holds X.tsv (10,000 x 81) and labels.tsv written by build/bench/bench_stats.
+EM starts from those labels through sklearn's own _initialize, as the C side
+does. Each linkage runs in a fresh process so its peak RSS is its own.
+"""
+import os
+import resource
+import subprocess
+import sys
+import time
+
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+import numpy as np  # noqa: E402
+
+
+def load(d):
+    X = np.loadtxt(os.path.join(d, "X.tsv"), skiprows=1)
+    labels = np.loadtxt(os.path.join(d, "labels.tsv"), skiprows=1).astype(int)
+    return X, labels
+
+
+def bench_gmm(X, labels):
+    from sklearn.mixture import GaussianMixture
+
+    class FromLabels(GaussianMixture):
+        def _initialize_parameters(self, X, random_state):
+            resp = np.zeros((X.shape[0], self.n_components))
+            resp[np.arange(X.shape[0]), labels] = 1
+            self._initialize(X, resp)
+
+    g = FromLabels(n_components=30, covariance_type="full", tol=1e-3, reg_covar=1e-6, max_iter=100)
+    t0 = time.perf_counter()
+    g.fit(X)
+    t = time.perf_counter() - t0
+    print(f"gmm_em   sklearn n={X.shape[0]} d={X.shape[1]} K=30 full: {t:.3f} s total, {g.n_iter_} iterations, "
+          f"{t / g.n_iter_:.4f} s/iteration, mean loglik {g.score(X):.10f}, converged {int(g.converged_)}")
+
+
+def linkage_child(d, method):
+    import scipy.cluster.hierarchy as sch
+    X, _ = load(d)
+    base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    t0 = time.perf_counter()
+    Z = sch.linkage(X, method=method)
+    t = time.perf_counter() - t0
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    print(f"linkage  scipy {method:8s} n={X.shape[0]} d={X.shape[1]}: {t:.3f} s, top merge height {Z[-1, 2]:.10g}")
+    print(f"linkage  scipy {method:8s} peak RSS of the process {peak / 1024:.0f} MiB "
+          f"({(peak - base) / 1024:.0f} MiB above the loaded data)")
+
+
+def bench_ks():
+    import scipy.stats as st
+    rng = np.random.default_rng(0)
+    x = rng.uniform(0, 2 * np.pi, 512)
+    cdf = st.uniform(0, 2 * np.pi).cdf
+    reps = 3000
+    t0 = time.perf_counter()
+    for i in range(reps):
+        x[i % 512] = rng.uniform(0, 2 * np.pi)
+        r = st.kstest(x, cdf)
+    t = (time.perf_counter() - t0) / reps
+    print(f"ks       scipy n=512 kstest exact p: {t * 1e6:.1f} us/call (last D={r.statistic:.6f} p={r.pvalue:.6f})")
+
+
+def main():
+    if len(sys.argv) == 3 and sys.argv[1] == "--linkage-child":
+        d, method = sys.argv[2].split(":")
+        linkage_child(d, method)
+        return
+    d = sys.argv[1] if len(sys.argv) > 1 else "/tmp/noiselab_bench_stats"
+    bench_ks()
+    X, labels = load(d)
+    bench_gmm(X, labels)
+    for method in ("complete", "single"):
+        sys.stdout.flush()
+        subprocess.run([sys.executable, os.path.abspath(__file__), "--linkage-child", f"{d}:{method}"], check=True)
+
+
+if __name__ == "__main__":
+    main()

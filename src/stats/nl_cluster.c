@@ -1,0 +1,318 @@
+/* nl_cluster.c - hierarchical clustering: MST single linkage, NN-chain
+ * complete/average linkage, flat clusters. Follows scipy 1.10's
+ * scipy/cluster/_hierarchy.pyx (mst_single_linkage, nn_chain, label,
+ * cluster_monocrit) so that outputs can be compared row by row. */
+#include "stats/nl_cluster.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+nl_status nl_linkage_method_parse(const char *name, nl_linkage_method *m, nl_error *err)
+{
+  static const char *names[] = {"single", "complete", "average"};
+  for (int i = 0; i < 3; i++)
+    if (strcmp(name, names[i]) == 0) { *m = (nl_linkage_method)i; return NL_OK; }
+  return nl_fail(err, NL_EINVAL, "unknown linkage '%s' (single, complete or average)", name);
+}
+
+/* 8 lanes as two 4-wide vectors; GCC emits SSE2 pairs or, in the AVX2 clone,
+ * 256-bit ops. The summation order is the same in both. */
+typedef double v4d __attribute__((vector_size(32)));
+
+/* sum_j (a_j - b_j)^2, or sum_j a_j^2 when b is NULL. */
+__attribute__((target_clones("avx2", "default")))
+static double sq_diff_sum(const double *a, const double *b, size_t d)
+{
+  static const v4d zero = {0, 0, 0, 0};
+  v4d s0 = zero, s1 = zero;
+  size_t j = 0;
+  for (; j + 8 <= d; j += 8) {
+    v4d a0, a1, b0 = zero, b1 = zero;
+    memcpy(&a0, a + j, 32); memcpy(&a1, a + j + 4, 32);
+    if (b) { memcpy(&b0, b + j, 32); memcpy(&b1, b + j + 4, 32); }
+    v4d t0 = a0 - b0, t1 = a1 - b1;
+    s0 += t0 * t0;
+    s1 += t1 * t1;
+  }
+  v4d s = s0 + s1;
+  double r = (s[0] + s[1]) + (s[2] + s[3]);
+  for (; j < d; j++) {
+    double t = a[j] - (b ? b[j] : 0.0);
+    r += t * t;
+  }
+  return r;
+}
+
+double nl_euclidean(const double *a, const double *b, size_t d)
+{
+  return sqrt(sq_diff_sum(a, b, d));
+}
+
+double nl_sumsq(const double *a, size_t d)
+{
+  return sq_diff_sum(a, NULL, d);
+}
+
+/* ---- turning merges into scipy's format ----------------------------------- */
+
+typedef struct { double dist; size_t order; } merge_key;
+
+static int cmp_key(const void *pa, const void *pb)
+{
+  const merge_key *a = pa, *b = pb;
+  if (a->dist != b->dist) return a->dist < b->dist ? -1 : 1;
+  return a->order < b->order ? -1 : a->order > b->order;   /* stable */
+}
+
+/* Sorts the merges by height (stably, like numpy's mergesort) and relabels
+ * them with a union-find: each merge joins the current roots of its two
+ * points, the smaller id first, and creates cluster n + row (scipy's label). */
+static void sort_and_label(double *Z, size_t n)
+{
+  size_t m = n - 1;
+  merge_key *k = nl_xmalloc(m * sizeof *k);
+  double *tmp = nl_xmalloc(m * 4 * sizeof(double));
+  for (size_t i = 0; i < m; i++) { k[i].dist = Z[4 * i + 2]; k[i].order = i; }
+  qsort(k, m, sizeof *k, cmp_key);
+  for (size_t i = 0; i < m; i++) memcpy(tmp + 4 * i, Z + 4 * k[i].order, 4 * sizeof(double));
+  size_t *parent = nl_xmalloc((2 * n - 1) * sizeof(size_t));
+  double *size = nl_xmalloc((2 * n - 1) * sizeof(double));
+  for (size_t i = 0; i < 2 * n - 1; i++) { parent[i] = i; size[i] = 1.0; }
+  for (size_t i = 0; i < m; i++) {
+    size_t r[2];
+    for (int s = 0; s < 2; s++) {
+      size_t x = (size_t)tmp[4 * i + s];
+      while (parent[x] != x) x = parent[x] = parent[parent[x]];   /* path halving */
+      r[s] = x;
+    }
+    size_t a = r[0] < r[1] ? r[0] : r[1], b = r[0] < r[1] ? r[1] : r[0];
+    parent[a] = parent[b] = n + i;
+    size[n + i] = size[a] + size[b];
+    Z[4 * i] = (double)a;
+    Z[4 * i + 1] = (double)b;
+    Z[4 * i + 2] = tmp[4 * i + 2];
+    Z[4 * i + 3] = size[n + i];
+  }
+  free(parent); free(size); free(tmp); free(k);
+}
+
+/* ---- single linkage: Prim's MST -------------------------------------------- */
+
+static void linkage_single(const double *x, size_t n, size_t d, double *Z)
+{
+  double *dmin = nl_xmalloc(n * sizeof(double));
+  unsigned char *merged = nl_xcalloc(n, 1);
+  for (size_t i = 0; i < n; i++) dmin[i] = INFINITY;
+  size_t cur = 0;
+  for (size_t k = 0; k + 1 < n; k++) {
+    merged[cur] = 1;
+    double best = INFINITY;
+    size_t y = cur;
+    for (size_t i = 0; i < n; i++) {
+      if (merged[i]) continue;
+      double dist = nl_euclidean(x + cur * d, x + i * d, d);
+      if (dist < dmin[i]) dmin[i] = dist;
+      if (dmin[i] < best || y == cur) { best = dmin[i]; y = i; }
+    }
+    Z[4 * k] = (double)cur;
+    Z[4 * k + 1] = (double)y;
+    Z[4 * k + 2] = best;
+    cur = y;
+  }
+  free(dmin);
+  free(merged);
+}
+
+/* ---- complete / average: nearest-neighbour chain ----------------------------- */
+
+/* Row i < j of the condensed matrix, as scipy.spatial.distance.pdist stores it. */
+static inline size_t cidx(size_t n, size_t i, size_t j)
+{
+  if (i > j) { size_t t = i; i = j; j = t; }
+  return n * i - i * (i + 1) / 2 + (j - i - 1);
+}
+
+static double *condensed_distances(const double *x, size_t n, size_t d)
+{
+  size_t m = n * (n - 1) / 2;
+  double *D = malloc(m * sizeof(double));
+  if (!D) return NULL;
+  for (size_t i = 0; i + 1 < n; i++) {
+    double *row = D + cidx(n, i, i + 1);
+    for (size_t j = i + 1; j < n; j++) row[j - i - 1] = nl_euclidean(x + i * d, x + j * d, d);
+  }
+  return D;
+}
+
+/* The nearest active neighbour of x; prefers prev (the element before x on
+ * the chain) on ties, which is what keeps the chain from cycling. */
+static size_t nearest(const double *D, size_t n, const double *size, size_t x, size_t prev,
+                      double *dmin)
+{
+  double best = prev < n ? D[cidx(n, x, prev)] : INFINITY;
+  size_t y = prev;
+  for (size_t i = 0; i < x; i++) {       /* column x above the diagonal: strided */
+    if (size[i] == 0.0) continue;
+    double v = D[cidx(n, i, x)];
+    if (v < best) { best = v; y = i; }
+  }
+  const double *row = D + (x + 1 < n ? cidx(n, x, x + 1) : 0);
+  for (size_t i = x + 1; i < n; i++) {   /* row x: contiguous */
+    if (size[i] == 0.0) continue;
+    if (row[i - x - 1] < best) { best = row[i - x - 1]; y = i; }
+  }
+  *dmin = best;
+  return y;
+}
+
+static void linkage_nn_chain(double *D, size_t n, nl_linkage_method method, double *Z)
+{
+  double *size = nl_xmalloc(n * sizeof(double));
+  size_t *chain = nl_xmalloc(n * sizeof(size_t)), len = 0;
+  for (size_t i = 0; i < n; i++) size[i] = 1.0;
+  for (size_t k = 0; k + 1 < n; k++) {
+    if (len == 0)
+      for (size_t i = 0; i < n; i++) if (size[i] > 0.0) { chain[len++] = i; break; }
+    size_t x, y;
+    double dmin;
+    for (;;) {
+      x = chain[len - 1];
+      size_t prev = len > 1 ? chain[len - 2] : n;
+      y = nearest(D, n, size, x, prev, &dmin);
+      if (len > 1 && y == prev) break;
+      chain[len++] = y;
+    }
+    len -= 2;
+    if (x > y) { size_t t = x; x = y; y = t; }
+    double nx = size[x], ny = size[y];
+    Z[4 * k] = (double)x;
+    Z[4 * k + 1] = (double)y;
+    Z[4 * k + 2] = dmin;
+    size[x] = 0.0;            /* x is dropped, y becomes the merged cluster */
+    size[y] = nx + ny;
+    for (size_t i = 0; i < n; i++) {
+      if (size[i] == 0.0 || i == y) continue;
+      double dx = D[cidx(n, i, x)], dy = D[cidx(n, i, y)];
+      D[cidx(n, i, y)] = method == NL_LINKAGE_COMPLETE ? fmax(dx, dy)
+                                                      : (nx * dx + ny * dy) / (nx + ny);
+    }
+  }
+  free(size);
+  free(chain);
+}
+
+nl_status nl_linkage(const double *x, size_t n, size_t d, nl_linkage_method method,
+                     double *Z, nl_error *err)
+{
+  if (n < 2) return nl_fail(err, NL_EINVAL, "clustering needs at least 2 points, got %zu", n);
+  if (d < 1) return nl_fail(err, NL_EINVAL, "points have no coordinates");
+  for (size_t i = 0; i < n * d; i++)
+    if (!isfinite(x[i]))
+      return nl_fail(err, NL_EINVAL, "point %zu, coordinate %zu is not finite", i / d + 1, i % d + 1);
+  if (method == NL_LINKAGE_SINGLE) {
+    linkage_single(x, n, d, Z);
+  } else {
+    double *D = condensed_distances(x, n, d);
+    if (!D)
+      return nl_fail(err, NL_ENOMEM, "%zu points need %.0f MB for the distance matrix",
+                     n, (double)n * (double)(n - 1) / 2 * 8 / 1e6);
+    linkage_nn_chain(D, n, method, Z);
+    free(D);
+  }
+  sort_and_label(Z, n);
+  return NL_OK;
+}
+
+/* ---- flat clusters ------------------------------------------------------------- */
+
+static nl_status check_Z(const double *Z, size_t n, nl_error *err)
+{
+  if (n < 2) return nl_fail(err, NL_EINVAL, "a linkage needs at least 2 points");
+  for (size_t i = 0; i + 1 < n; i++)
+    if (!(Z[4 * i] >= 0 && Z[4 * i] < (double)(n + i) && Z[4 * i + 1] >= 0 &&
+          Z[4 * i + 1] < (double)(n + i) && Z[4 * i + 2] >= 0))
+      return nl_fail(err, NL_EINVAL, "linkage row %zu is not a valid merge", i + 1);
+  return NL_OK;
+}
+
+/* Largest merge height in each subtree (scipy's get_max_dist_for_each_cluster);
+ * equals the node's own height for monotone linkages, computed for safety. */
+static double *max_dists(const double *Z, size_t n)
+{
+  double *md = nl_xmalloc((n - 1) * sizeof(double));
+  for (size_t i = 0; i + 1 < n; i++) {
+    double m = Z[4 * i + 2];
+    for (int s = 0; s < 2; s++) {
+      size_t c = (size_t)Z[4 * i + s];
+      if (c >= n) m = fmax(m, md[c - n]);
+    }
+    md[i] = m;
+  }
+  return md;
+}
+
+/* scipy's cluster_monocrit: depth-first from the root, left child first;
+ * the first node on a path with md <= cutoff starts a cluster holding all
+ * its leaves; leaves outside any such node are singletons. */
+static size_t monocrit(const double *Z, const double *md, size_t n, double cutoff, int *T)
+{
+  size_t *stack = nl_xmalloc(n * sizeof(size_t));
+  unsigned char *visited = nl_xcalloc(2 * n, 1);
+  long k = 0, leader = -1;
+  size_t ncl = 0;
+  stack[0] = 2 * n - 2;
+  while (k >= 0) {
+    size_t root = stack[k] - n, lc = (size_t)Z[4 * root], rc = (size_t)Z[4 * root + 1];
+    if (leader == -1 && md[root] <= cutoff) { leader = (long)root; ncl++; }
+    if (lc >= n && !visited[lc]) { visited[lc] = 1; stack[++k] = lc; continue; }
+    if (rc >= n && !visited[rc]) { visited[rc] = 1; stack[++k] = rc; continue; }
+    if (lc < n) { if (leader == -1) ncl++; T[lc] = (int)ncl; }
+    if (rc < n) { if (leader == -1) ncl++; T[rc] = (int)ncl; }
+    if (leader == (long)root) leader = -1;
+    k--;
+  }
+  free(stack);
+  free(visited);
+  return ncl;
+}
+
+nl_status nl_fcluster_distance(const double *Z, size_t n, double t, int *labels,
+                               size_t *nclusters, nl_error *err)
+{
+  if (!(t >= 0.0) || !isfinite(t))
+    return nl_fail(err, NL_EINVAL, "cutoff distance %g must be finite and >= 0", t);
+  nl_status s = check_Z(Z, n, err);
+  if (s) return s;
+  double *md = max_dists(Z, n);
+  size_t k = monocrit(Z, md, n, t, labels);
+  free(md);
+  if (nclusters) *nclusters = k;
+  return NL_OK;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+nl_status nl_fcluster_maxclust(const double *Z, size_t n, size_t k, int *labels,
+                               size_t *nclusters, nl_error *err)
+{
+  if (k < 1) return nl_fail(err, NL_EINVAL, "number of clusters must be >= 1");
+  nl_status s = check_Z(Z, n, err);
+  if (s) return s;
+  double *md = max_dists(Z, n), *sorted = nl_xmalloc((n - 1) * sizeof(double));
+  memcpy(sorted, md, (n - 1) * sizeof(double));
+  qsort(sorted, n - 1, sizeof(double), cmp_double);
+  /* cutting at height t leaves n - #{md <= t} clusters (md is monotone up
+   * the tree), so the lowest cut with at most k clusters is the (n-k)th
+   * smallest md; k >= n cuts below every merge */
+  double t = k >= n ? -1.0 : sorted[n - k - 1];
+  size_t got = monocrit(Z, md, n, t, labels);
+  free(md);
+  free(sorted);
+  if (nclusters) *nclusters = got;
+  return NL_OK;
+}

@@ -1,0 +1,472 @@
+/* nl_gof.c - goodness-of-fit tests (KS, Kuiper, chi-square), ECDF, histogram. */
+#include "stats/nl_stats.h"
+
+#include <gsl/gsl_cdf.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- sorting ------------------------------------------------------------ */
+
+static void swap_d(double *a, double *b) { double t = *a; *a = *b; *b = t; }
+
+static void insertion_sort(double *x, size_t n)
+{
+  for (size_t i = 1; i < n; i++) {
+    double v = x[i];
+    size_t j = i;
+    for (; j > 0 && x[j - 1] > v; j--) x[j] = x[j - 1];
+    x[j] = v;
+  }
+}
+
+static void sift_down(double *x, size_t root, size_t n)
+{
+  for (size_t c; (c = 2 * root + 1) < n; root = c) {
+    if (c + 1 < n && x[c + 1] > x[c]) c++;
+    if (!(x[c] > x[root])) return;
+    swap_d(&x[c], &x[root]);
+  }
+}
+
+static void heap_sort(double *x, size_t n)
+{
+  for (size_t i = n / 2; i-- > 0;) sift_down(x, i, n);
+  for (size_t i = n; i-- > 1;) { swap_d(&x[0], &x[i]); sift_down(x, 0, i); }
+}
+
+/* Introsort (Musser 1997): median-of-3 quicksort, heapsort past 2 log2 n
+ * levels, insertion sort below 16 elements. */
+static void intro_sort(double *x, size_t n, int depth)
+{
+  while (n > 16) {
+    if (depth-- == 0) { heap_sort(x, n); return; }
+    size_t mid = n / 2;
+    if (x[mid] < x[0]) swap_d(&x[mid], &x[0]);
+    if (x[n - 1] < x[0]) swap_d(&x[n - 1], &x[0]);
+    if (x[n - 1] < x[mid]) swap_d(&x[n - 1], &x[mid]);
+    double pivot = x[mid];
+    size_t i = 0, j = n - 1;
+    for (;;) {
+      while (x[i] < pivot) i++;
+      while (pivot < x[j]) j--;
+      if (i >= j) break;
+      swap_d(&x[i++], &x[j--]);
+    }
+    /* recurse into the smaller part, loop on the larger: O(log n) stack */
+    if (j + 1 < n - j - 1) { intro_sort(x, j + 1, depth); x += j + 1; n -= j + 1; }
+    else { intro_sort(x + j + 1, n - j - 1, depth); n = j + 1; }
+  }
+  insertion_sort(x, n);
+}
+
+void nl_sort_double(double *x, size_t n)
+{
+  int depth = 0;
+  for (size_t m = n; m > 1; m >>= 1) depth += 2;
+  intro_sort(x, n, depth);
+}
+
+/* ---- one-sample KS and Kuiper ------------------------------------------- */
+
+double nl_cdf_uniform(double x, void *params)
+{
+  const double *ab = params;
+  double u = (x - ab[0]) / (ab[1] - ab[0]);
+  return u < 0.0 ? 0.0 : u > 1.0 ? 1.0 : u;
+}
+
+/* The two terms at rank i (0-based) with F value u: scipy's
+ * arange(1, n+1)/n - cdf and cdf - arange(0, n)/n. Every path (full and
+ * incremental) uses these, which is what makes them agree bit for bit. */
+static inline double term_plus(size_t i, size_t n, double u) { return (double)(i + 1) / (double)n - u; }
+static inline double term_minus(size_t i, size_t n, double u) { return u - (double)i / (double)n; }
+
+static void ks_range_max(const double *u, size_t lo, size_t hi, size_t n,
+                         double *dp, double *dm)
+{
+  double p = -INFINITY, m = -INFINITY;
+  for (size_t i = lo; i < hi; i++) {
+    p = fmax(p, term_plus(i, n, u[i]));
+    m = fmax(m, term_minus(i, n, u[i]));
+  }
+  *dp = p;
+  *dm = m;
+}
+
+void nl_ks_statistic(const double *u, size_t n, double *d_plus, double *d_minus)
+{
+  ks_range_max(u, 0, n, n, d_plus, d_minus);
+}
+
+static nl_status check_finite(const double *x, size_t n, const char *what, nl_error *err)
+{
+  if (n == 0) return nl_fail(err, NL_EINVAL, "%s: no values", what);
+  for (size_t i = 0; i < n; i++)
+    if (!isfinite(x[i]))
+      return nl_fail(err, NL_EINVAL, "%s: value %zu is %g (NaN or infinite)", what, i + 1, x[i]);
+  return NL_OK;
+}
+
+/* Sorted copy of x and F at each value. *xs and *us are malloc'ed. */
+static nl_status sorted_cdf(const double *x, size_t n, nl_cdf_fn cdf, void *params,
+                            double **xs, double **us, nl_error *err)
+{
+  nl_status s = check_finite(x, n, "sample", err);
+  if (s) return s;
+  double *a = nl_xmalloc(n * sizeof(double)), *u = nl_xmalloc(n * sizeof(double));
+  memcpy(a, x, n * sizeof(double));
+  nl_sort_double(a, n);
+  for (size_t i = 0; i < n; i++) {
+    u[i] = cdf(a[i], params);
+    if (!(u[i] >= 0.0 && u[i] <= 1.0)) {
+      free(a); free(u);
+      return nl_fail(err, NL_EINVAL, "CDF returned %g at x = %g, outside [0, 1]", u[i], a[i]);
+    }
+  }
+  *xs = a;
+  *us = u;
+  return NL_OK;
+}
+
+static nl_status check_interval(double a, double b, nl_error *err)
+{
+  if (!(isfinite(a) && isfinite(b) && a < b))
+    return nl_fail(err, NL_EINVAL, "interval [%g, %g) is empty or not finite", a, b);
+  return NL_OK;
+}
+
+nl_status nl_ks_test(const double *x, size_t n, nl_cdf_fn cdf, void *params,
+                     nl_ks_result *res, nl_error *err)
+{
+  double *xs, *u;
+  nl_status s = sorted_cdf(x, n, cdf, params, &xs, &u, err);
+  if (s) return s;
+  memset(res, 0, sizeof *res);
+  nl_ks_statistic(u, n, &res->d_plus, &res->d_minus);
+  res->d = fmax(res->d_plus, res->d_minus);
+  res->n = n;
+  res->p = nl_ks_sf(n, res->d, &res->method);
+  free(xs);
+  free(u);
+  return NL_OK;
+}
+
+nl_status nl_ks_test_uniform(const double *x, size_t n, double a, double b,
+                             nl_ks_result *res, nl_error *err)
+{
+  double ab[2] = {a, b};
+  nl_status s = check_interval(a, b, err);
+  return s ? s : nl_ks_test(x, n, nl_cdf_uniform, ab, res, err);
+}
+
+double nl_kuiper_sf(size_t n, double v)
+{
+  double N = (double)n;
+  if (n < 2 || v <= 1.0 / N) return 1.0;   /* V >= 1/n always; n = 1 gives V = 1 */
+  if (v >= 1.0) return 0.0;
+  double p;
+  if (v < 2.0 / N) {
+    /* Stephens (1965): 1 - n! (v - 1/n)^(n-1) */
+    p = 1.0 - exp(lgamma(N + 1.0) + (N - 1.0) * log(v - 1.0 / N));
+  } else if (v < 3.0 / N) {
+    double k = -(N * v - 1.0) / 2.0, r = sqrt(k * k - (N * v - 2.0) * (N * v - 2.0) / 2.0);
+    double a = -k + r, b = -k - r;
+    double lc = lgamma(N) - (N - 2.0) * log(N);
+    double t1 = exp(lc + (N - 1.0) * log(b)) * (1.0 - a);
+    double t2 = exp(lc + (N - 1.0) * log(a)) * (1.0 - b);
+    p = 1.0 - (t1 - t2) / (b - a);
+  } else if ((v > 0.5 && n % 2 == 0) || (v > (N - 1.0) / (2.0 * N) && n % 2 == 1)) {
+    /* Stephens (1965), exact upper tail */
+    p = 0.0;
+    for (double t = 0.0; t <= floor(N * (1.0 - v)); t += 1.0) {
+      double y = v + t / N, c = 1.0 - v - t / N;
+      double br = y * y * y * N - y * y * t * (3 - 2 / N) + y * t * (t - 1) * (3 - 2 / N) / N
+                  - t * (t - 1) * (t - 2) / (N * N);
+      double lt = lgamma(N + 1) - lgamma(t + 1) - lgamma(N - t + 1) + (t - 3) * log(y);
+      if (c > 0.0) lt += (N - t - 1) * log(c);
+      else if (N - t - 1 > 0) continue;
+      p += br * exp(lt);
+    }
+  } else {
+    /* Stephens (1970) asymptotic series; terms past m z > 18.82 underflow */
+    double z = v * sqrt(N), s1 = 0.0, s2 = 0.0;
+    for (double m = 1.0; m < 18.82 / z; m += 1.0) {
+      double q = m * m * z * z, e = exp(-2.0 * q);
+      s1 += 2.0 * (4.0 * q - 1.0) * e;
+      s2 += m * m * (4.0 * q - 3.0) * e;
+    }
+    p = s1 - 8.0 * v / 3.0 * s2;
+  }
+  return p < 0.0 ? 0.0 : p > 1.0 ? 1.0 : p;
+}
+
+nl_status nl_kuiper_test(const double *x, size_t n, nl_cdf_fn cdf, void *params,
+                         nl_kuiper_result *res, nl_error *err)
+{
+  double *xs, *u;
+  nl_status s = sorted_cdf(x, n, cdf, params, &xs, &u, err);
+  if (s) return s;
+  nl_ks_statistic(u, n, &res->d_plus, &res->d_minus);
+  res->v = res->d_plus + res->d_minus;
+  res->n = n;
+  res->p = nl_kuiper_sf(n, res->v);
+  free(xs);
+  free(u);
+  return NL_OK;
+}
+
+nl_status nl_kuiper_test_uniform(const double *x, size_t n, double a, double b,
+                                 nl_kuiper_result *res, nl_error *err)
+{
+  double ab[2] = {a, b};
+  nl_status s = check_interval(a, b, err);
+  return s ? s : nl_kuiper_test(x, n, nl_cdf_uniform, ab, res, err);
+}
+
+/* ---- two-sample KS ------------------------------------------------------ */
+
+nl_status nl_ks2_test(const double *x, size_t n1, const double *y, size_t n2,
+                      nl_ks_result *res, nl_error *err)
+{
+  nl_status s = check_finite(x, n1, "first sample", err);
+  if (!s) s = check_finite(y, n2, "second sample", err);
+  if (s) return s;
+  double *a = nl_xmalloc(n1 * sizeof(double)), *b = nl_xmalloc(n2 * sizeof(double));
+  memcpy(a, x, n1 * sizeof(double));
+  memcpy(b, y, n2 * sizeof(double));
+  nl_sort_double(a, n1);
+  nl_sort_double(b, n2);
+  /* Walk the pooled sample; evaluate F1 - F2 only after all copies of a value
+   * are consumed (scipy's searchsorted(side='right')). */
+  double dp = 0.0, dm = 0.0;
+  size_t i = 0, j = 0;
+  while (i < n1 || j < n2) {
+    double v = (j >= n2 || (i < n1 && a[i] <= b[j])) ? a[i] : b[j];
+    while (i < n1 && a[i] == v) i++;
+    while (j < n2 && b[j] == v) j++;
+    double diff = (double)i / (double)n1 - (double)j / (double)n2;
+    dp = fmax(dp, diff);
+    dm = fmax(dm, -diff);
+  }
+  free(a);
+  free(b);
+  memset(res, 0, sizeof *res);
+  res->d_plus = dp;
+  res->d_minus = dm;
+  res->d = fmax(dp, dm);
+  res->n = n1;
+  res->n2 = n2;
+  res->p = nl_ks2_sf(n1, n2, res->d, &res->method);
+  if (res->method == NL_KS_TWO_SAMPLE_EXACT) {
+    /* report the lattice value the exact p belongs to, as scipy does */
+    long g = (long)n1, h = (long)n2;
+    while (h) { long t = g % h; g = h; h = t; }
+    double lcm = (double)((long)n1 / g * (long)n2);
+    res->d = nearbyint(res->d * lcm) / lcm;
+  }
+  return NL_OK;
+}
+
+/* ---- incremental KS ------------------------------------------------------ */
+
+static void incr_block(nl_ks_incr *s, size_t b)
+{
+  size_t lo = b * NL_KS_INCR_BLOCK, hi = lo + NL_KS_INCR_BLOCK;
+  ks_range_max(s->u, lo, hi < s->n ? hi : s->n, s->n, &s->bplus[b], &s->bminus[b]);
+}
+
+static void incr_total(nl_ks_incr *s)
+{
+  double p = -INFINITY, m = -INFINITY;
+  for (size_t b = 0; b < s->nblocks; b++) {
+    p = fmax(p, s->bplus[b]);
+    m = fmax(m, s->bminus[b]);
+  }
+  s->d_plus = p;
+  s->d_minus = m;
+  s->d = fmax(p, m);
+}
+
+nl_ks_incr *nl_ks_incr_alloc(const double *x, size_t n, nl_cdf_fn cdf, void *params,
+                             nl_error *err)
+{
+  double *xs, *u;
+  if (sorted_cdf(x, n, cdf, params, &xs, &u, err)) return NULL;
+  nl_ks_incr *s = nl_xcalloc(1, sizeof *s);
+  s->n = n;
+  s->x = xs;
+  s->u = u;
+  s->cdf = cdf;
+  s->params = params;
+  s->nblocks = (n + NL_KS_INCR_BLOCK - 1) / NL_KS_INCR_BLOCK;
+  s->bplus = nl_xmalloc(s->nblocks * sizeof(double));
+  s->bminus = nl_xmalloc(s->nblocks * sizeof(double));
+  for (size_t b = 0; b < s->nblocks; b++) incr_block(s, b);
+  incr_total(s);
+  return s;
+}
+
+void nl_ks_incr_free(nl_ks_incr *s)
+{
+  if (!s) return;
+  free(s->x);
+  free(s->u);
+  free(s->bplus);
+  free(s->bminus);
+  free(s);
+}
+
+/* First index with x[i] >= v (lower_bound). */
+static size_t lower_bound(const double *x, size_t n, double v)
+{
+  size_t lo = 0, hi = n;
+  while (lo < hi) {
+    size_t mid = lo + (hi - lo) / 2;
+    if (x[mid] < v) lo = mid + 1; else hi = mid;
+  }
+  return lo;
+}
+
+nl_status nl_ks_incr_replace(nl_ks_incr *s, double old_value, double new_value,
+                             nl_error *err)
+{
+  size_t n = s->n, p = lower_bound(s->x, n, old_value), q;
+  if (p == n || s->x[p] != old_value)
+    return nl_fail(err, NL_EINVAL, "value %.17g is not in the sample", old_value);
+  double u = isfinite(new_value) ? s->cdf(new_value, s->params) : NAN;
+  if (!(u >= 0.0 && u <= 1.0))
+    return nl_fail(err, NL_EINVAL, "new value %g (F = %g) is not finite or F not in [0, 1]",
+                   new_value, u);
+  /* Remove rank p, insert at the rank that keeps the order: shift the
+   * ranks in between by one place. */
+  if (new_value > old_value) {
+    q = lower_bound(s->x + p + 1, n - p - 1, new_value) + p;   /* final rank */
+    memmove(s->x + p, s->x + p + 1, (q - p) * sizeof(double));
+    memmove(s->u + p, s->u + p + 1, (q - p) * sizeof(double));
+  } else {
+    q = lower_bound(s->x, p, new_value);
+    memmove(s->x + q + 1, s->x + q, (p - q) * sizeof(double));
+    memmove(s->u + q + 1, s->u + q, (p - q) * sizeof(double));
+  }
+  s->x[q] = new_value;
+  s->u[q] = u;
+  size_t lo = p < q ? p : q, hi = p < q ? q : p;
+  for (size_t b = lo / NL_KS_INCR_BLOCK; b <= hi / NL_KS_INCR_BLOCK; b++) incr_block(s, b);
+  incr_total(s);
+  return NL_OK;
+}
+
+double nl_ks_incr_p(const nl_ks_incr *s)
+{
+  return nl_ks_sf(s->n, s->d, NULL);
+}
+
+/* ---- chi-square ----------------------------------------------------------- */
+
+nl_status nl_chisq_test(const double *observed, const double *expected, size_t k,
+                        nl_chisq_result *res, nl_error *err)
+{
+  if (k < 2) return nl_fail(err, NL_EINVAL, "chi-square needs at least 2 bins, got %zu", k);
+  double chi2 = 0.0, emin = INFINITY, n = 0.0;
+  for (size_t i = 0; i < k; i++) {
+    if (!(expected[i] > 0.0 && isfinite(expected[i]) && isfinite(observed[i])))
+      return nl_fail(err, NL_EINVAL, "bin %zu: expected count %g is not positive and finite",
+                     i + 1, expected[i]);
+    double dlt = observed[i] - expected[i];
+    chi2 += dlt * dlt / expected[i];
+    emin = fmin(emin, expected[i]);
+    n += observed[i];
+  }
+  res->chi2 = chi2;
+  res->df = k - 1;
+  res->p = gsl_cdf_chisq_Q(chi2, (double)(k - 1));
+  res->min_expected = emin;
+  res->low_expected = emin < 5.0;
+  res->n = (size_t)n;
+  res->k = k;
+  return NL_OK;
+}
+
+/* Bin index of v in k equal bins of [a, b], numpy.histogram's rule: compute
+ * the index arithmetically, then correct it against the bin edges
+ * a + i (b - a)/k so that values on an edge go to the bin the edge opens; the
+ * last bin is closed. */
+static size_t bin_index(double v, size_t k, double a, double b)
+{
+  double step = (b - a) / (double)k;
+  size_t i = (size_t)((v - a) * ((double)k / (b - a)));
+  if (i >= k) i = k - 1;
+  if (i > 0 && v < a + (double)i * step) i--;
+  else if (i + 1 < k && v >= a + (double)(i + 1) * step) i++;
+  return i;
+}
+
+gsl_histogram *nl_histogram_uniform(const double *x, size_t n, size_t k, double a,
+                                    double b, size_t *outside, nl_error *err)
+{
+  if (k < 1 || check_interval(a, b, err)) {
+    if (k < 1) nl_fail(err, NL_EINVAL, "histogram needs at least 1 bin");
+    return NULL;
+  }
+  gsl_histogram *h = gsl_histogram_alloc(k);
+  gsl_histogram_set_ranges_uniform(h, a, b);
+  size_t out = 0;
+  for (size_t i = 0; i < n; i++) {
+    if (!(x[i] >= a && x[i] <= b)) { out++; continue; }
+    h->bin[bin_index(x[i], k, a, b)] += 1.0;
+  }
+  if (outside) *outside = out;
+  return h;
+}
+
+nl_status nl_chisq_test_uniform(const double *x, size_t n, size_t k, double a, double b,
+                                nl_chisq_result *res, nl_error *err)
+{
+  nl_status s = check_finite(x, n, "sample", err);
+  if (s) return s;
+  if (k < 2) return nl_fail(err, NL_EINVAL, "chi-square needs at least 2 bins, got %zu", k);
+  size_t out;
+  gsl_histogram *h = nl_histogram_uniform(x, n, k, a, b, &out, err);
+  if (!h) return NL_EINVAL;
+  if (out) {
+    gsl_histogram_free(h);
+    return nl_fail(err, NL_EINVAL, "%zu of %zu values lie outside [%g, %g]", out, n, a, b);
+  }
+  double *e = nl_xmalloc(k * sizeof(double));
+  for (size_t i = 0; i < k; i++) e[i] = (double)n / (double)k;
+  s = nl_chisq_test(h->bin, e, k, res, err);
+  free(e);
+  gsl_histogram_free(h);
+  return s;
+}
+
+/* ---- ECDF ------------------------------------------------------------------ */
+
+nl_ecdf *nl_ecdf_alloc(const double *x, size_t n, nl_error *err)
+{
+  if (check_finite(x, n, "sample", err)) return NULL;
+  nl_ecdf *e = nl_xmalloc(sizeof *e);
+  e->n = n;
+  e->x = nl_xmalloc(n * sizeof(double));
+  memcpy(e->x, x, n * sizeof(double));
+  nl_sort_double(e->x, n);
+  return e;
+}
+
+void nl_ecdf_free(nl_ecdf *e)
+{
+  if (!e) return;
+  free(e->x);
+  free(e);
+}
+
+double nl_ecdf_eval(const nl_ecdf *e, double t)
+{
+  size_t lo = 0, hi = e->n;   /* first index with x > t */
+  while (lo < hi) {
+    size_t mid = lo + (hi - lo) / 2;
+    if (e->x[mid] <= t) lo = mid + 1; else hi = mid;
+  }
+  return (double)lo / (double)e->n;
+}

@@ -1,0 +1,98 @@
+/* Tests of nl_cluster.h against scipy.cluster.hierarchy 1.10
+ * (tests/reference/make_stats_vectors.py: 200 points in 6-D, 5 blobs).
+ * Tolerances: merge heights 1e-12 relative (distances are summed in another
+ * order than pdist's); merged ids and sizes exact; flat-cluster labels exact
+ * (we number clusters in scipy's order; a relabelling would also be a
+ * correct answer, but equal labels are the stronger check).
+ */
+#include "stats/nl_cluster.h"
+#include "nl_test.h"
+#include "test_vectors.h"
+
+#include <string.h>
+
+static const char *methods[] = {"single", "complete", "average"};
+
+static double *load_points(size_t *n, size_t *d)
+{
+  nl_table *t = vec_read("hclust_X.tsv");
+  double *x = nl_xmalloc(t->nrows * t->ncols * sizeof(double));
+  memcpy(x, t->num, t->nrows * t->ncols * sizeof(double));
+  *n = t->nrows;
+  *d = t->ncols;
+  nl_table_free(t);
+  return x;
+}
+
+NL_TEST(linkage_matches_scipy)
+{
+  size_t n, d;
+  double *x = load_points(&n, &d), *Z = nl_xmalloc((n - 1) * 4 * sizeof(double));
+  for (int m = 0; m < 3; m++) {
+    nl_linkage_method lm;
+    NL_CHECK(nl_linkage_method_parse(methods[m], &lm, NULL) == NL_OK);
+    NL_CHECK(nl_linkage(x, n, d, lm, Z, NULL) == NL_OK);
+    char name[64];
+    snprintf(name, sizeof name, "hclust_%s_Z.tsv", methods[m]);
+    nl_table *t = vec_read(name);
+    NL_CHECK(t->nrows == n - 1);
+    int bad = 0;
+    for (size_t i = 0; i + 1 < n; i++) {
+      bad += Z[4 * i] != nl_table_get(t, i, 0) || Z[4 * i + 1] != nl_table_get(t, i, 1);
+      bad += !vec_close(Z[4 * i + 2], nl_table_get(t, i, 2), 1e-12, 0);
+      bad += Z[4 * i + 3] != nl_table_get(t, i, 3);
+    }
+    if (bad) fprintf(stderr, "  %s: %d mismatches\n", methods[m], bad);
+    NL_CHECK(bad == 0);
+    nl_table_free(t);
+  }
+  free(x);
+  free(Z);
+}
+
+NL_TEST(fcluster_matches_scipy)
+{
+  size_t n, d;
+  double *x = load_points(&n, &d), *Z = nl_xmalloc((n - 1) * 4 * sizeof(double));
+  int *lab = nl_xmalloc(n * sizeof(int));
+  for (int m = 0; m < 3; m++) {
+    nl_linkage_method lm = (nl_linkage_method)m;
+    nl_linkage(x, n, d, lm, Z, NULL);
+    char name[64];
+    snprintf(name, sizeof name, "hclust_%s_labels.tsv", methods[m]);
+    nl_table *t = vec_read(name);
+    for (size_t c = 0; c < t->ncols; c++) {
+      size_t k;
+      if (strncmp(t->names[c], "cut_", 4) == 0)
+        NL_CHECK(nl_fcluster_distance(Z, n, atof(t->names[c] + 4), lab, &k, NULL) == NL_OK);
+      else
+        NL_CHECK(nl_fcluster_maxclust(Z, n, (size_t)atol(t->names[c] + 9), lab, &k, NULL) == NL_OK);
+      int bad = 0, kmax = 0;
+      for (size_t i = 0; i < n; i++) {
+        bad += lab[i] != (int)nl_table_get(t, i, c);
+        kmax = lab[i] > kmax ? lab[i] : kmax;
+      }
+      if (bad) fprintf(stderr, "  %s %s: %d labels differ\n", methods[m], t->names[c], bad);
+      NL_CHECK(bad == 0 && (size_t)kmax == k);
+    }
+    nl_table_free(t);
+  }
+  free(x); free(Z); free(lab);
+}
+
+NL_TEST(bad_input)
+{
+  nl_error err;
+  double x[] = {0, 1, NAN, 2}, Z[8];
+  int lab[3];
+  NL_CHECK(nl_linkage(x, 1, 2, NL_LINKAGE_SINGLE, Z, &err) == NL_EINVAL);
+  NL_CHECK(nl_linkage(x, 2, 2, NL_LINKAGE_SINGLE, Z, &err) == NL_EINVAL);
+  double y[] = {0, 1, 3};
+  NL_CHECK(nl_linkage(y, 3, 1, NL_LINKAGE_AVERAGE, Z, &err) == NL_OK);
+  NL_CHECK(nl_fcluster_distance(Z, 3, -1.0, lab, NULL, &err) == NL_EINVAL && strstr(err.msg, ">= 0"));
+  NL_CHECK(nl_fcluster_maxclust(Z, 3, 0, lab, NULL, &err) == NL_EINVAL);
+  nl_linkage_method m;
+  NL_CHECK(nl_linkage_method_parse("ward", &m, &err) == NL_EINVAL);
+}
+
+int main(void) { return nl_test_run(); }

@@ -1,0 +1,133 @@
+/* Tests of nl_gmm.h against scikit-learn 1.2 GaussianMixture started from the
+ * same k-means labels (tests/reference/make_stats_vectors.py: 750 points in
+ * 4-D from 3 correlated Gaussians; k = 1..4, full and diagonal).
+ * Tolerances: log-likelihood, AIC, BIC 1e-8 relative (EM from the same
+ * responsibilities; only rounding differs); iteration count and converged
+ * flag exact; k = 3 weights and means 1e-6 absolute (data scale ~5).
+ */
+#include "stats/nl_gmm.h"
+#include "nl_test.h"
+#include "test_vectors.h"
+
+#include <string.h>
+
+static double *load_X(size_t *n, size_t *d)
+{
+  nl_table *t = vec_read("gmm_X.tsv");
+  double *x = nl_xmalloc(t->nrows * t->ncols * sizeof(double));
+  memcpy(x, t->num, t->nrows * t->ncols * sizeof(double));
+  *n = t->nrows;
+  *d = t->ncols;
+  nl_table_free(t);
+  return x;
+}
+
+static int *load_labels(size_t k, size_t n)
+{
+  char name[64];
+  snprintf(name, sizeof name, "gmm_labels_k%zu.tsv", k);
+  nl_table *t = vec_read(name);
+  int *lab = nl_xmalloc(n * sizeof(int));
+  for (size_t i = 0; i < n; i++) lab[i] = (int)nl_table_get(t, i, 0);
+  nl_table_free(t);
+  return lab;
+}
+
+NL_TEST(em_matches_sklearn_from_same_labels)
+{
+  size_t n, d;
+  double *x = load_X(&n, &d);
+  nl_table *t = vec_read("gmm_fit.tsv");
+  for (size_t r = 0; r < t->nrows; r++) {
+    size_t k = (size_t)vec_get(t, r, "k");
+    nl_gmm_options o;
+    nl_gmm_options_default(&o);
+    o.covariance = strcmp(vec_text(t, r, "covariance"), "full") == 0 ? NL_GMM_FULL : NL_GMM_DIAG;
+    int *lab = load_labels(k, n);
+    o.init_labels = lab;
+    nl_gmm *g = nl_gmm_alloc(k, d, o.covariance);
+    nl_error err;
+    NL_CHECK(nl_gmm_fit(g, x, n, &o, &err) == NL_OK);
+    NL_CHECK(vec_close(g->loglik, vec_get(t, r, "loglik"), 1e-8, 0));
+    NL_CHECK(vec_close(g->aic, vec_get(t, r, "aic"), 1e-8, 0));
+    NL_CHECK(vec_close(g->bic, vec_get(t, r, "bic"), 1e-8, 0));
+    NL_CHECK(g->iterations == (size_t)vec_get(t, r, "iterations"));
+    NL_CHECK(g->converged == (int)vec_get(t, r, "converged"));
+    if (k == 3) {
+      char name[64];
+      snprintf(name, sizeof name, "gmm_params_k3_%s.tsv", vec_text(t, r, "covariance"));
+      nl_table *p = vec_read(name);
+      for (size_t c = 0; c < k; c++) {
+        NL_CHECK_NEAR(g->weights[c], nl_table_get(p, c, 0), 1e-6);
+        for (size_t j = 0; j < d; j++) NL_CHECK_NEAR(g->means[c * d + j], nl_table_get(p, c, 1 + j), 1e-6);
+      }
+      nl_table_free(p);
+    }
+    nl_gmm_free(g);
+    free(lab);
+  }
+  nl_table_free(t);
+  free(x);
+}
+
+NL_TEST(kmeans_init_sampling_and_selection)
+{
+  /* sample 3000 points from a known 3-component mixture, refit from
+   * k-means++: the fit must recover weights, and AIC selection must stop at 3 */
+  nl_gmm *truth = nl_gmm_alloc(3, 2, NL_GMM_FULL);
+  double w[] = {0.5, 0.3, 0.2}, mu[] = {0, 0, 8, 0, 0, 8};
+  double cov[] = {1, 0.5, 0.5, 1, 1, 0, 0, 0.25, 0.5, -0.2, -0.2, 1};
+  memcpy(truth->weights, w, sizeof w);
+  memcpy(truth->means, mu, sizeof mu);
+  for (int k = 0; k < 3; k++) {   /* 2x2 Cholesky by hand */
+    double *c = cov + 4 * k, *L = truth->chol + 4 * k;
+    L[0] = sqrt(c[0]); L[1] = 0; L[2] = c[2] / L[0]; L[3] = sqrt(c[3] - L[2] * L[2]);
+  }
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  size_t n = 3000;
+  double *x = nl_xmalloc(n * 2 * sizeof(double));
+  nl_gmm_sample(truth, rng, n, x, NULL);
+  nl_gmm_options o;
+  nl_gmm_options_default(&o);
+  o.seed = 5;
+  nl_gmm *best;
+  nl_gmm_step path[8];
+  size_t np;
+  NL_CHECK(nl_gmm_select_aic(x, n, 2, 1, 10.0, 8, &o, &best, path, &np, NULL) == NL_OK);
+  NL_CHECK(best && best->k == 3 && np == 4);
+  double wsum = 0, wmin = 1;
+  for (size_t k = 0; best && k < best->k; k++) { wsum += best->weights[k]; wmin = fmin(wmin, best->weights[k]); }
+  NL_CHECK_NEAR(wsum, 1.0, 1e-12);
+  NL_CHECK(fabs(wmin - 0.2) < 0.03);
+  for (size_t i = 1; i < np; i++) NL_CHECK(path[i].k == path[i - 1].k + 1);
+  nl_gmm_free(best);
+  nl_gmm_free(truth);
+  free(x);
+  gsl_rng_free(rng);
+}
+
+NL_TEST(constant_column_stays_finite_and_bad_input_fails)
+{
+  double x[40];
+  for (int i = 0; i < 20; i++) { x[2 * i] = i % 7; x[2 * i + 1] = 3.0; }
+  nl_gmm_options o;
+  nl_gmm_options_default(&o);
+  nl_gmm *g = nl_gmm_alloc(2, 2, NL_GMM_FULL);
+  nl_error err;
+  NL_CHECK(nl_gmm_fit(g, x, 20, &o, &err) == NL_OK);
+  NL_CHECK(isfinite(g->loglik) && isfinite(g->aic));
+  NL_CHECK(fabs(g->covs[3] - 1e-6) < 1e-9);   /* the constant column's variance is reg_covar */
+  nl_gmm_free(g);
+  g = nl_gmm_alloc(30, 2, NL_GMM_FULL);
+  NL_CHECK(nl_gmm_fit(g, x, 20, &o, &err) == NL_EINVAL && strstr(err.msg, "components"));
+  nl_gmm_free(g);
+  g = nl_gmm_alloc(2, 2, NL_GMM_FULL);
+  o.reg_covar = 0.0;
+  NL_CHECK(nl_gmm_fit(g, x, 20, &o, &err) == NL_ENUM && strstr(err.msg, "positive definite"));
+  x[5] = NAN;
+  o.reg_covar = 1e-6;
+  NL_CHECK(nl_gmm_fit(g, x, 20, &o, &err) == NL_EINVAL);
+  nl_gmm_free(g);
+}
+
+int main(void) { return nl_test_run(); }

@@ -1,0 +1,133 @@
+#!/bin/bash
+# Integration test of the stat command line: tests/cli_stat.sh PATH/TO/noiselab-stat
+# Known values come from scipy 1.10 / scikit-learn 1.2 (tests/data/stats, made by
+# tests/reference/make_stats_vectors.py); bad inputs must give exit 2 and one
+# line on stderr naming the input.
+set -u
+STAT=${1:?usage: cli_stat.sh PATH/TO/noiselab-stat}
+HERE=$(cd "$(dirname "$0")" && pwd)
+DATA=$HERE/data/stats
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+pass=0 fail=0
+
+ok()  { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*" >&2; }
+
+# expect_value "LINE" KEY WANT TOL: KEY=value in LINE within TOL of WANT (relative)
+expect_value() {
+  local got
+  got=$(printf '%s\n' "$1" | tr ' ' '\n' | sed -n "s/^$2=//p")
+  if [ -n "$got" ] && awk -v a="$got" -v b="$3" -v t="$4" \
+       'BEGIN { d = a - b; if (d < 0) d = -d; m = b < 0 ? -b : b; exit !(d <= t * m + 1e-300) }'; then
+    ok
+  else
+    bad "$2: got '$got', want $3 (line: $1)"
+  fi
+}
+
+# expect_error NEEDLE CMD...: exit 2, exactly one stderr line containing NEEDLE, no stdout
+expect_error() {
+  local needle=$1; shift
+  "$@" >"$TMP/out" 2>"$TMP/err" </dev/null
+  local rc=$? lines
+  lines=$(wc -l <"$TMP/err")
+  if [ "$rc" = 2 ] && [ "$lines" = 1 ] && grep -q -- "$needle" "$TMP/err" && [ ! -s "$TMP/out" ]; then
+    ok
+  else
+    bad "expected exit 2 with one line containing '$needle' from: $* (rc=$rc, stderr: $(cat "$TMP/err"))"
+  fi
+}
+
+TWO_PI=6.283185307179586
+
+# ---- known values --------------------------------------------------------------
+line=$("$STAT" ks "$DATA/ks_facts_512.tsv" --uniform 0 $TWO_PI)
+expect_value "$line" D 0.06383549510032682 1e-15
+expect_value "$line" p 0.02947543990965429 1e-10
+expect_value "$line" n 512 0
+case $line in *method=pelz-good*) ok ;; *) bad "ks method: $line" ;; esac
+
+line=$("$STAT" ks "$DATA/ks_pow1.3_5000_s2.tsv" --uniform 0 $TWO_PI)
+expect_value "$line" p "$(awk -F'\t' '$1 == "ks_pow1.3_5000_s2.tsv" { print $6 }' "$DATA/ks_one.tsv")" 1e-10
+
+line=$(awk 'NR > 1 { printf "%.17g\n", $1 / 6.283185307179586 }' "$DATA/ks_unif_100_s0.tsv" | "$STAT" ks -)
+expect_value "$line" D "$(awk -F'\t' '$1 == "ks_unif_100_s0.tsv" { print $3 }' "$DATA/ks_one.tsv")" 1e-12
+
+line=$("$STAT" ks2 "$DATA/ks2_1_a.tsv" "$DATA/ks2_1_b.tsv")
+expect_value "$line" D 0.43333333333333335 1e-15
+expect_value "$line" p "$(awk -F'\t' '$1 == "ks2_1_a.tsv" { print $6 }' "$DATA/ks2.tsv")" 1e-10
+
+line=$("$STAT" kuiper "$DATA/ks_facts_512.tsv" --uniform 0 $TWO_PI)
+expect_value "$line" V "$(awk -F'\t' '$1 == "ks_facts_512.tsv" { print $3 }' "$DATA/kuiper_one.tsv")" 1e-15
+expect_value "$line" p "$(awk -F'\t' '$1 == "ks_facts_512.tsv" { print $4 }' "$DATA/kuiper_one.tsv")" 1e-9
+
+line=$("$STAT" chisq "$DATA/chisq_0.tsv" --bins 500 --uniform 0 $TWO_PI 2>"$TMP/err")
+expect_value "$line" chi2 "$(awk -F'\t' '$1 == "chisq_0.tsv" { print $4 }' "$DATA/chisq.tsv")" 1e-12
+expect_value "$line" p "$(awk -F'\t' '$1 == "chisq_0.tsv" { print $6 }' "$DATA/chisq.tsv")" 1e-10
+expect_value "$line" df 499 0
+expect_value "$line" min_expected 1.024 1e-15
+grep -q "unreliable" "$TMP/err" && ok || bad "chisq: no warning for expected counts < 5"
+
+# hclust: labels and merges against scipy
+line=$("$STAT" hclust "$DATA/hclust_X.tsv" --linkage average --clusters 5 \
+       --labels "$TMP/lab.tsv" --merges "$TMP/merges.tsv")
+expect_value "$line" clusters 5 0
+if cmp -s <(tail -n +2 "$TMP/lab.tsv") <(cut -f6 "$DATA/hclust_average_labels.tsv" | tail -n +2); then ok
+else bad "hclust labels differ from scipy's fcluster maxclust 5"; fi
+if paste "$TMP/merges.tsv" "$DATA/hclust_average_Z.tsv" | awk -F'\t' 'NR > 1 {
+     d = $3 - $7; if (d < 0) d = -d; if ($1 != $5 || $2 != $6 || $4 != $8 || d > 1e-12 * $7) bad = 1 }
+     END { exit bad }'; then ok; else bad "hclust merges differ from scipy's linkage"; fi
+line=$("$STAT" hclust "$DATA/hclust_X.tsv" --linkage single --cutoff 1e9)
+expect_value "$line" clusters 1 0
+
+# gmm: the k-means++ start finds sklearn's optimum on this data (k = 3)
+line=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --params "$TMP/params.tsv")
+expect_value "$line" loglik -5069.630131017421 1e-8
+expect_value "$line" aic 10227.260262034843 1e-8
+expect_value "$line" bic 10430.543483122177 1e-8
+expect_value "$line" converged 1 0
+[ "$(grep -c weight "$TMP/params.tsv")" = 3 ] && ok || bad "gmm --params: expected 3 weights"
+out=$("$STAT" gmm "$DATA/gmm_X.tsv" --select-aic 1 20 --covariance full)
+case $out in *selected=3*) ok ;; *) bad "gmm --select-aic 1 20: $out" ;; esac
+[ "$(printf '%s\n' "$out" | grep -c '^k=')" = 4 ] && ok || bad "gmm selection path should list k = 1..4: $out"
+
+# constant column: finite result, exit 0, a note on stderr
+printf '1 5\n2 5\n3 5\n4 5\n10 5\n11 5\n12 5\n' >"$TMP/const.txt"
+line=$("$STAT" gmm "$TMP/const.txt" --k 2 2>"$TMP/err")
+rc=$?
+if [ $rc = 0 ] && ! printf '%s' "$line" | grep -qi nan && grep -q "column 2 is constant" "$TMP/err"; then ok
+else bad "constant column: rc=$rc line=$line err=$(cat "$TMP/err")"; fi
+
+# help
+"$STAT" gmm --help | grep -q "usage: noiselab stat gmm" && ok || bad "gmm --help"
+"$STAT" --help | grep -q "hclust" && ok || bad "--help"
+
+# ---- bad input: exit 2, one line ---------------------------------------------
+: >"$TMP/empty.tsv"
+printf 'x\n0.5\n' >"$TMP/one.tsv"
+printf '0.1\nnan\n0.3\n' >"$TMP/nan.tsv"
+printf '0.1\ninf\n0.3\n' >"$TMP/inf.tsv"
+printf '0.1\n0.2\nabc\n' >"$TMP/word.tsv"
+printf '0.1 0.2\n0.3\n0.4 0.5\n' >"$TMP/ragged.tsv"
+printf '0.1 0.2\n0.3 0.4\n0.5 0.7\n' >"$TMP/three.tsv"
+expect_error "empty.tsv" "$STAT" ks "$TMP/empty.tsv"
+expect_error "one.tsv" "$STAT" ks "$TMP/one.tsv"
+expect_error "nan.tsv:2" "$STAT" ks "$TMP/nan.tsv"
+expect_error "inf.tsv:2" "$STAT" kuiper "$TMP/inf.tsv"
+expect_error "word.tsv:3" "$STAT" chisq "$TMP/word.tsv" --bins 4
+expect_error "ragged.tsv:2" "$STAT" hclust "$TMP/ragged.tsv" --linkage single --clusters 2
+expect_error "only 3 rows" "$STAT" gmm "$TMP/three.tsv" --k 4
+expect_error "--bins" "$STAT" chisq "$DATA/chisq_0.tsv" --bins 1
+expect_error "--cutoff" "$STAT" hclust "$DATA/hclust_X.tsv" --linkage single --cutoff -1
+expect_error "outside" "$STAT" chisq "$DATA/chisq_0.tsv" --bins 10
+expect_error "cannot open" "$STAT" ks "$TMP/missing.tsv"
+expect_error "unknown option" "$STAT" ks "$DATA/ks_facts_512.tsv" --bogus
+expect_error "no column 2" "$STAT" ks "$DATA/ks_facts_512.tsv" --column 2
+expect_error "linkage" "$STAT" hclust "$DATA/hclust_X.tsv" --linkage ward --clusters 2
+expect_error "exactly one" "$STAT" gmm "$DATA/gmm_X.tsv"
+expect_error "two files" "$STAT" ks2 "$DATA/ks2_1_a.tsv"
+expect_error "unknown subcommand" "$STAT" frobnicate x
+
+echo "$pass passed, $fail failed"
+[ "$fail" = 0 ]
