@@ -1,0 +1,71 @@
+/* A1 - Arnerin 2009 eq. 4.1-4.3 and 5.1-5.4: the octave bound 2^-i, the
+ * fractal bound S_{n-1} = 2 - 2^-(n-1) and the incremental bound, checked on
+ * random points of Perlin's improved 3D noise, under the paper's assumption
+ * |noise| <= 1 and under the noise's analytic bound. */
+#include "bounds/nl_bounds.h"
+#include "report/nl_report.h"
+
+#include <gsl/gsl_statistics_double.h>
+#include <math.h>
+
+int main(int argc, char **argv)
+{
+  nl_run *r = nl_run_begin("a1_bounds", "A1 - Octave, fractal and incremental bounds", argc, argv);
+  int nmax = (int)nl_run_param_int(r, "octaves", nl_run_quick(r) ? 8 : 12, 1, 30);
+  long points = nl_run_param_int(r, "points", nl_run_quick(r) ? 5000 : 100000, 1, 100000000);
+  nl_run_params_done(r);
+  int seeds = nl_run_seeds(r);
+  unsigned long seed0 = nl_run_seed(r);
+
+  const char *cols[] = {"octaves", "S", "bound", "max_abs", "max_abs_mean", "max_abs_sd",
+                        "max_noise", "points", "over_paper", "over_paper_incremental",
+                        "over_bound", "over_bound_incremental"};
+  nl_table *t = nl_table_alloc(12, cols);
+  double *maxes = nl_xmalloc((size_t)seeds * sizeof *maxes);
+  for (int n = 1; n <= nmax; n++) {
+    nl_octaves o = nl_octaves_fractal(n);
+    long over_p = 0, over_pi = 0, over_b = 0, over_bi = 0;
+    double max_noise = 0;
+    for (int s = 0; s < seeds; s++) {
+      nl_perm3 p;
+      nl_perm3_seed(&p, seed0 + (unsigned long)s);
+      nl_bounds_check paper, ours;
+      nl_bounds_check_random(&p, &o, 1.0, points, seed0 + 1000u * (unsigned long)n + (unsigned long)s, &paper);
+      nl_bounds_check_random(&p, &o, NL_NOISE3_BOUND, points, seed0 + 1000u * (unsigned long)n + (unsigned long)s, &ours);
+      maxes[s] = ours.max_abs_sum;
+      max_noise = fmax(max_noise, ours.max_abs_noise);
+      over_p += paper.over_fractal; over_pi += paper.over_incremental;
+      over_b += ours.over_fractal; over_bi += ours.over_incremental;
+    }
+    double mx = gsl_stats_max(maxes, 1, (size_t)seeds);
+    double mean = gsl_stats_mean(maxes, 1, (size_t)seeds);
+    double sd = seeds > 1 ? gsl_stats_sd(maxes, 1, (size_t)seeds) : 0.0;
+    nl_table_append(t, "iddddddiiiii", n, nl_bounds_fractal(n), NL_NOISE3_BOUND * nl_bounds_fractal(n),
+                    mx, mean, sd, max_noise, (int)(points * seeds), (int)over_p, (int)over_pi,
+                    (int)over_b, (int)over_bi);
+    nl_run_progress(r, (double)n / nmax, "octaves");
+  }
+  nl_run_table(r, t, "bounds.tsv");
+
+  nl_report_text(r, "**Paper:** |b_i| <= 2^-i (eq. 4.1), |Fnoise_n| <= S_{n-1}, S_n = 2 - 2^-n "
+                    "(eq. 4.2-4.3), and after k octaves the rest of the sum adds at most "
+                    "S_{Nmax-1} - S_{k-1} (eq. 5.3-5.4, read as the interval partial +- remainder). "
+                    "All assume |noise| <= 1.\n\n"
+                    "**Ours:** Perlin's improved 3D noise on %ld random points in [-100, 100)^3 "
+                    "per octave count and seed, %d seeds. `S` is the paper's bound S_{n-1}; "
+                    "`bound` = %.4f S_{n-1} uses the analytic bound of improved noise "
+                    "(NL_NOISE3_BOUND, gradients of length sqrt 2). `over_*` count points whose sum "
+                    "leaves the fractal bound, or some incremental interval.\n",
+                  points, seeds, NL_NOISE3_BOUND);
+  nl_report_table(r, t, "Observed extremes against the bounds", 4);
+  nl_report_figure(r, "bounds.png", "Largest |Fnoise_n| seen against S_{n-1} and 1.2247 S_{n-1}");
+  double m1 = 0;
+  for (size_t k = 0; k < t->nrows; k++) m1 = fmax(m1, nl_table_get(t, k, 6));
+  nl_report_text(r, "The largest single-octave |noise| seen is %.4f. Improved noise can exceed 1 "
+                    "(its analytic bound is 1.2247), so the paper's unit bound is an assumption, not a "
+                    "theorem, for it: `over_paper*` count where it failed. Sums stay far inside either bound because the extremes of "
+                    "different octaves rarely coincide.\n", m1);
+  free(maxes);
+  nl_table_free(t);
+  return nl_run_end(r);
+}

@@ -1,0 +1,316 @@
+#include "bounds/nl_bounds.h"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_fft_real.h>
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- fractal bounds ---------------------------------------------------- */
+
+double nl_bounds_octave(int i) { return ldexp(1.0, -i); }
+
+double nl_bounds_series(int n) { return 2.0 - ldexp(1.0, -n); }
+
+/* eq. 4.2: n octaves, i = 0..n-1, are bounded by S_{n-1}; S_{-1} = 0. */
+double nl_bounds_fractal(int n) { return n <= 0 ? 0.0 : nl_bounds_series(n - 1); }
+
+void nl_bounds_remainders(const nl_octaves *o, double basis_bound, double *rem)
+{
+  /* Summed from the smallest term up, so rem[0] equals nl_octaves_bound()
+   * up to rounding and every rem[k] is the exact tail of eq. 5.3. */
+  rem[o->n] = 0.0;
+  for (int k = o->n - 1; k >= 0; k--) rem[k] = rem[k + 1] + basis_bound * fabs(o->amp[k]);
+}
+
+nl_interval nl_bounds_incremental(double partial, double remainder)
+{
+  nl_interval iv = {partial - remainder, partial + remainder};
+  return iv;
+}
+
+/* ---- incremental evaluation -------------------------------------------- */
+
+/* 1 if CLAMP(base + s) is already decided for every s in [partial - rem,
+ * partial + rem], with the decided value in *v. */
+static int clamp_decided(double base, double partial, double rem, double *v)
+{
+  if (base + partial + rem <= 0.0) { *v = 0.0; return 1; }
+  if (base + partial - rem >= 1.0) { *v = 1.0; return 1; }
+  return 0;
+}
+
+static double clamp01(double x) { return x < 0.0 ? 0.0 : x > 1.0 ? 1.0 : x; }
+
+/* The loop behind nl_bounds_clamped_fractal and Fig. 5.3: *decided is the
+ * number of terms after which eq. 5.4 fixed the clamp (checked before each
+ * term and after the last), o->n + 1 if the value lies strictly inside
+ * (0, 1); plain evaluation (incremental = 0) never checks. */
+static double clamped_sum(const nl_perm3 *p, const nl_octaves *o, const double *rem,
+                          double base, const double *xyz, int incremental,
+                          int *terms, int *decided, double *max_abs)
+{
+  double partial = 0.0, v;
+  for (int k = 0; k <= o->n; k++) {
+    if (incremental && clamp_decided(base, partial, rem[k], &v)) {
+      *terms = k;
+      *decided = k;
+      return v;
+    }
+    if (k == o->n) break;
+    double f = o->freq[k];
+    double nz = nl_noise3(p, f * xyz[0], f * xyz[1], f * xyz[2]);
+    if (max_abs && fabs(nz) > *max_abs) *max_abs = fabs(nz);
+    partial += o->amp[k] * nz;
+  }
+  *terms = o->n;
+  *decided = o->n + 1;
+  return clamp01(base + partial);
+}
+
+double nl_bounds_clamped_fractal(const nl_perm3 *p, const nl_octaves *o, const double *rem,
+                                 double base, const double *xyz, int incremental,
+                                 int *terms, double *max_abs)
+{
+  int t, d;
+  double v = clamped_sum(p, o, rem, base, xyz, incremental, &t, &d, max_abs);
+  if (terms) *terms = t;
+  return v;
+}
+
+/* One point: partial sums of every prefix, then the checks. */
+static void check_point(const nl_perm3 *p, const nl_octaves *o, const double *rem,
+                        const double *xyz, nl_bounds_check *c)
+{
+  double partial[NL_MAX_OCTAVES + 1] = {0};
+  for (int l = 0; l < o->n; l++) {
+    double f = o->freq[l], v = nl_noise3(p, f * xyz[0], f * xyz[1], f * xyz[2]);
+    c->max_abs_noise = fmax(c->max_abs_noise, fabs(v));
+    partial[l + 1] = partial[l] + o->amp[l] * v;
+  }
+  double full = partial[o->n];
+  c->max_abs_sum = fmax(c->max_abs_sum, fabs(full));
+  c->over_fractal += fabs(full) > rem[0];
+  int out = 0;
+  for (int k = 0; k <= o->n; k++) {
+    nl_interval iv = nl_bounds_incremental(partial[k], rem[k]);
+    out |= !(iv.lo <= full && full <= iv.hi);
+  }
+  c->over_incremental += out;
+}
+
+void nl_bounds_check_random(const nl_perm3 *p, const nl_octaves *o, double basis_bound,
+                            long npoints, unsigned long seed, nl_bounds_check *out)
+{
+  double rem[NL_MAX_OCTAVES + 1];
+  nl_bounds_remainders(o, basis_bound, rem);
+  memset(out, 0, sizeof *out);
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, seed);
+  for (long s = 0; s < npoints; s++) {
+    double xyz[3];
+    for (int a = 0; a < 3; a++) xyz[a] = 200.0 * gsl_rng_uniform(r) - 100.0;
+    check_point(p, o, rem, xyz, out);
+  }
+  out->points = npoints;
+  gsl_rng_free(r);
+}
+
+/* ---- smoke ball -------------------------------------------------------- */
+
+nl_smoke nl_smoke_default(void)
+{
+  nl_smoke s = {.width = 512, .height = 512, .step = 0.01, .stop_opacity = 0.99,
+                .slope = -4.0, .freq = 4.0, .kappa = 30.0,
+                .octave_bound = NL_NOISE3_BOUND, .octaves = 1, .incremental = 0};
+  return s;
+}
+
+static nl_status smoke_check(const nl_smoke *s, nl_error *err)
+{
+  if (s->width < 1 || s->height < 1) return nl_fail(err, NL_EINVAL, "smoke: image size must be positive");
+  if (!(s->step > 0.0)) return nl_fail(err, NL_EINVAL, "smoke: step must be positive");
+  if (!(s->slope < 0.0)) return nl_fail(err, NL_EINVAL, "smoke: slope a must be negative");
+  if (s->octaves < 0 || s->octaves > NL_MAX_OCTAVES)
+    return nl_fail(err, NL_EINVAL, "smoke: octaves must be in 0..%d", NL_MAX_OCTAVES);
+  if (!(s->octave_bound >= 0.0)) return nl_fail(err, NL_EINVAL, "smoke: octave bound must be >= 0");
+  return NL_OK;
+}
+
+/* Fnoise(f0 p): octave l at frequency f0 2^l with amplitude 2^-l. */
+static nl_octaves smoke_octaves(const nl_smoke *s)
+{
+  nl_octaves o = nl_octaves_fractal(s->octaves);
+  for (int l = 0; l < o.n; l++) o.freq[l] *= s->freq;
+  return o;
+}
+
+/* distNoise at p (Fig. 5.1): base = a |p| + 1. */
+static double smoke_density(const nl_perm3 *p, const nl_smoke *s, const nl_octaves *o,
+                            const double *rem, const double *xyz, int *terms, double *max_abs)
+{
+  double d = sqrt(xyz[0] * xyz[0] + xyz[1] * xyz[1] + xyz[2] * xyz[2]);
+  return nl_bounds_clamped_fractal(p, o, rem, s->slope * d + 1.0, xyz, s->incremental,
+                                   terms, max_abs);
+}
+
+/* One ray along +z through the unit cube; emission-absorption. */
+static double smoke_ray(const nl_perm3 *p, const nl_smoke *s, const nl_octaves *o,
+                        const double *rem, double x, double y, nl_smoke_stats *st)
+{
+  double trans = 1.0, colour = 0.0, stop = 1.0 - s->stop_opacity;
+  long nsteps = (long)floor(1.0 / s->step);
+  for (long i = 0; i <= nsteps && trans > stop; i++) {
+    double xyz[3] = {x, y, -0.5 + (double)i * s->step};
+    int terms;
+    double dens = smoke_density(p, s, o, rem, xyz, &terms, &st->max_abs_noise);
+    st->samples++;
+    st->noise_evals += terms;
+    double t1 = trans * exp(-s->kappa * dens * s->step);
+    colour += trans - t1;
+    trans = t1;
+  }
+  return colour;
+}
+
+nl_status nl_smoke_render(const nl_perm3 *p, const nl_smoke *s, double *img,
+                          nl_smoke_stats *st, nl_error *err)
+{
+  nl_status rc = smoke_check(s, err);
+  if (rc) return rc;
+  nl_octaves o = smoke_octaves(s);
+  double rem[NL_MAX_OCTAVES + 1];
+  nl_bounds_remainders(&o, s->octave_bound, rem);
+  memset(st, 0, sizeof *st);
+  for (int r = 0; r < s->height; r++) {
+    double y = -0.5 + (r + 0.5) / s->height;
+    for (int c = 0; c < s->width; c++)
+      img[(size_t)r * s->width + c] = smoke_ray(p, s, &o, rem, -0.5 + (c + 0.5) / s->width, y, st);
+  }
+  return NL_OK;
+}
+
+nl_status nl_smoke_decision_map(const nl_perm3 *p, const nl_smoke *s, double z, int *terms,
+                                nl_error *err)
+{
+  nl_status rc = smoke_check(s, err);
+  if (rc) return rc;
+  nl_octaves o = smoke_octaves(s);
+  double rem[NL_MAX_OCTAVES + 1];
+  nl_bounds_remainders(&o, s->octave_bound, rem);
+  for (int r = 0; r < s->height; r++)
+    for (int c = 0; c < s->width; c++) {
+      double xyz[3] = {-0.5 + (c + 0.5) / s->width, -0.5 + (r + 0.5) / s->height, z};
+      double d = sqrt(xyz[0] * xyz[0] + xyz[1] * xyz[1] + xyz[2] * xyz[2]);
+      int t;
+      clamped_sum(p, &o, rem, s->slope * d + 1.0, xyz, 1, &t, &terms[(size_t)r * s->width + c], NULL);
+    }
+  return NL_OK;
+}
+
+/* ---- spectral bandwidth ------------------------------------------------ */
+
+nl_status nl_psd1(const double *x, size_t n, double rate, double *f, double *P, nl_error *err)
+{
+  if (n < 2 || !(rate > 0.0)) return nl_fail(err, NL_EINVAL, "psd1: need n >= 2 and rate > 0");
+  double *d = nl_xmalloc(n * sizeof *d);
+  memcpy(d, x, n * sizeof *d);
+  gsl_fft_real_wavetable *wt = gsl_fft_real_wavetable_alloc(n);
+  gsl_fft_real_workspace *ws = gsl_fft_real_workspace_alloc(n);
+  int gs = gsl_fft_real_transform(d, 1, n, wt, ws);
+  gsl_fft_real_workspace_free(ws);
+  gsl_fft_real_wavetable_free(wt);
+  if (gs) { free(d); return nl_fail(err, NL_ENUM, "psd1: %s", gsl_strerror(gs)); }
+  /* Half-complex layout: d[0] = X_0, (d[2k-1], d[2k]) = X_k, d[n-1] = X_{n/2}
+   * for even n. |X_k|^2 / n^2 per two-sided bin (Parseval, eq. 4.4, over
+   * n^2 so that the sum is the mean square); folded to one side. */
+  double nn = (double)n * (double)n;
+  size_t m = n / 2 + 1;
+  for (size_t k = 0; k < m; k++) {
+    double re, im = 0.0;
+    if (k == 0) re = d[0];
+    else if (2 * k == n) re = d[n - 1];
+    else { re = d[2 * k - 1]; im = d[2 * k]; }
+    double two_sided = (re * re + im * im) / nn;
+    P[k] = (k == 0 || 2 * k == n) ? two_sided : 2.0 * two_sided;
+    f[k] = (double)k * rate / (double)n;
+  }
+  free(d);
+  return NL_OK;
+}
+
+void nl_psd1_tail(const double *P, size_t m, double *gamma)
+{
+  double s = 0.0;
+  for (size_t k = m; k-- > 0;) { s += P[k]; gamma[k] = s; }
+}
+
+double nl_psd1_tail_inverse(const double *f, const double *gamma, size_t m, double e)
+{
+  for (size_t k = 0; k < m; k++)
+    if (gamma[k] <= e) return f[k];
+  return f[m - 1];
+}
+
+static void mean_sigma(const double *x, size_t n, double *mean, double *sigma)
+{
+  double s = 0.0, ss = 0.0;
+  for (size_t k = 0; k < n; k++) s += x[k];
+  *mean = s / (double)n;
+  for (size_t k = 0; k < n; k++) ss += (x[k] - *mean) * (x[k] - *mean);
+  *sigma = sqrt(ss / (double)n);
+}
+
+nl_status nl_bandwidth_1d(const double *x, size_t n, double rate, double T, nl_bandwidth *bw,
+                          nl_error *err)
+{
+  if (!(T > 0.0)) return nl_fail(err, NL_EINVAL, "bandwidth: threshold T must be positive");
+  size_t m = n / 2 + 1;
+  double *f = nl_xmalloc(m * sizeof *f), *P = nl_xmalloc(m * sizeof *P);
+  nl_status rc = nl_psd1(x, n, rate, f, P, err);
+  if (!rc) {
+    double *g = nl_xmalloc(m * sizeof *g);
+    nl_psd1_tail(P, m, g);
+    mean_sigma(x, n, &bw->mean, &bw->sigma);
+    double lo = bw->sigma - sqrt(T);
+    bw->f_sup = nl_psd1_tail_inverse(f, g, m, T);
+    bw->f_inf = nl_psd1_tail_inverse(f, g, m, lo > 0.0 ? lo * lo : 0.0);
+    double rms = sqrt(g[0]) - sqrt(T);
+    bw->f_inf_rms = nl_psd1_tail_inverse(f, g, m, rms > 0.0 ? rms * rms : 0.0);
+    bw->resolution = rate / (double)n;
+    bw->nyquist = 0.5 * rate;
+    free(g);
+  }
+  free(f); free(P);
+  return rc;
+}
+
+nl_status nl_psd1_fraction_above(const double *x, size_t n, double rate, double fc,
+                                 double *fraction, nl_error *err)
+{
+  size_t m = n / 2 + 1;
+  double *f = nl_xmalloc(m * sizeof *f), *P = nl_xmalloc(m * sizeof *P);
+  nl_status rc = nl_psd1(x, n, rate, f, P, err);
+  if (!rc) {
+    double above = 0.0, var = 0.0;
+    for (size_t k = 1; k < m; k++) { var += P[k]; if (f[k] > fc) above += P[k]; }
+    *fraction = var > 0.0 ? above / var : 0.0;
+  }
+  free(f); free(P);
+  return rc;
+}
+
+void nl_bounds_sample_line(const nl_perm3 *p, const nl_octaves *o, const double *origin,
+                           const double *dir, double rate, size_t n, double *out)
+{
+  for (size_t k = 0; k < n; k++) {
+    double t = (double)k / rate, s = 0.0;
+    for (int l = 0; l < o->n; l++) {
+      double f = o->freq[l];
+      s += o->amp[l] * nl_noise3(p, f * (origin[0] + t * dir[0]), f * (origin[1] + t * dir[1]),
+                                 f * (origin[2] + t * dir[2]));
+    }
+    out[k] = s;
+  }
+}

@@ -1,0 +1,500 @@
+#include "cellular/nl_cellular.h"
+#include "image/nl_image.h"
+
+#include <ctype.h>
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+static inline long lfloor(double x) { long i = (long)x; return i - (x < (double)i); }
+
+/* ---- tables ------------------------------------------------------------ */
+
+nl_status nl_cellular_alloc(double lambda, int M, nl_count_rule rule, unsigned long seed,
+                            nl_cellular **out, nl_error *err)
+{
+  *out = NULL;
+  if (!(lambda > 0.0 && lambda <= 1000.0))
+    return nl_fail(err, NL_EINVAL, "cellular: lambda must be in (0, 1000], got %g", lambda);
+  if (M < 1 || M > NL_CELLULAR_MAX_M)
+    return nl_fail(err, NL_EINVAL, "cellular: M must be in 1..%d, got %d", NL_CELLULAR_MAX_M, M);
+  if (rule != NL_COUNT_CLOSEST && rule != NL_COUNT_INVERSE_CDF)
+    return nl_fail(err, NL_EINVAL, "cellular: unknown count rule %d", (int)rule);
+  nl_cellular *c = nl_xcalloc(1, sizeof *c);
+  c->lambda = lambda;
+  c->M = M;
+  c->rule = rule;
+  /* eq. 3 in log form: lambda^m / m! overflows long before M = 64 would. */
+  double acc = 0.0;
+  for (int m = 0; m <= M; m++) {
+    c->pmf[m] = exp(m * log(lambda) - lambda - lgamma(m + 1.0));
+    acc += c->pmf[m];
+    c->cdf[m] = acc;
+  }
+  /* Step 1 of sec. 3.2.2: a table of 2^16 values in 0..2^16-1; we take a
+   * permutation so that every seed s is equally likely. */
+  c->perm = nl_xmalloc(NL_CELLULAR_PERM * sizeof *c->perm);
+  for (unsigned k = 0; k < NL_CELLULAR_PERM; k++) c->perm[k] = (unsigned short)k;
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, seed);
+  gsl_ran_shuffle(r, c->perm, NL_CELLULAR_PERM, sizeof *c->perm);
+  gsl_rng_free(r);
+  *out = c;
+  return NL_OK;
+}
+
+void nl_cellular_free(nl_cellular *c)
+{
+  if (!c) return;
+  free(c->perm);
+  free(c);
+}
+
+const char *nl_count_rule_name(nl_count_rule rule)
+{
+  return rule == NL_COUNT_CLOSEST ? "closest" : "inverse-cdf";
+}
+
+int nl_cellular_count_from_r(const nl_cellular *c, double r)
+{
+  if (c->rule == NL_COUNT_INVERSE_CDF) {
+    for (int m = 0; m <= c->M; m++)
+      if (r < c->cdf[m]) return m;
+    return c->M;
+  }
+  /* The paper's rule, literally: argmin_m |p(m) - r|, first m on ties. */
+  int best = 0;
+  for (int m = 1; m <= c->M; m++)
+    if (fabs(c->pmf[m] - r) < fabs(c->pmf[best] - r)) best = m;
+  return best;
+}
+
+/* ---- per-cube generator ------------------------------------------------ */
+
+/* splitmix64 (Steele, Lea & Flood 2014): a fast generator that is fine
+ * from any seed, including the small integers s < 2^16 used here. */
+static inline uint64_t splitmix(uint64_t *state)
+{
+  uint64_t z = (*state += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+static inline double uniform01(uint64_t *state) { return (double)(splitmix(state) >> 11) * 0x1.0p-53; }
+
+/* Step 3 (1)-(5): s = PERM(x1 + PERM(x2 + PERM(x3))). */
+static inline unsigned cube_seed(const nl_cellular *c, long i, long j, long k)
+{
+  const unsigned long mask = NL_CELLULAR_PERM - 1;
+  unsigned long s = c->perm[(unsigned long)k & mask];
+  s = c->perm[((unsigned long)j + s) & mask];
+  return c->perm[((unsigned long)i + s) & mask];
+}
+
+int nl_cellular_cube(const nl_cellular *c, long i, long j, long k, double *xyz)
+{
+  uint64_t st = cube_seed(c, i, j, k);
+  int m = nl_cellular_count_from_r(c, uniform01(&st));
+  for (int q = 0; q < m; q++) {
+    xyz[3 * q] = (double)i + uniform01(&st);
+    xyz[3 * q + 1] = (double)j + uniform01(&st);
+    xyz[3 * q + 2] = (double)k + uniform01(&st);
+  }
+  return m;
+}
+
+/* ---- F1..Fn ------------------------------------------------------------ */
+
+/* Keeps d2[0..n-1] as the n smallest squared distances, ascending. */
+static inline void insert_d2(double *d2, int n, double v)
+{
+  if (v >= d2[n - 1]) return;
+  int q = n - 1;
+  while (q > 0 && d2[q - 1] > v) { d2[q] = d2[q - 1]; q--; }
+  d2[q] = v;
+}
+
+static void scan_points(const double *pts, int m, double x, double y, double z, int n, double *d2)
+{
+  for (int q = 0; q < m; q++) {
+    double ax = pts[3 * q] - x, ay = pts[3 * q + 1] - y, az = pts[3 * q + 2] - z;
+    insert_d2(d2, n, ax * ax + ay * ay + az * az);
+  }
+}
+
+static void finish(const double *d2, int n, double *F)
+{
+  for (int q = 0; q < n; q++)
+    F[q] = d2[q] < NL_CELLULAR_FMAX * NL_CELLULAR_FMAX ? sqrt(d2[q]) : NL_CELLULAR_FMAX;
+}
+
+static void reset_d2(double *d2, int n)
+{
+  for (int q = 0; q < n; q++) d2[q] = INFINITY;
+}
+
+void nl_cellular_eval(const nl_cellular *c, const double *xyz, int n, double *F)
+{
+  double pts[3 * NL_CELLULAR_MAX_M], d2[NL_CELLULAR_NMAX];
+  long i = lfloor(xyz[0]), j = lfloor(xyz[1]), k = lfloor(xyz[2]);
+  reset_d2(d2, n);
+  /* Steps 2-6: the cube around x and its 26 neighbours. */
+  for (long di = -1; di <= 1; di++)
+    for (long dj = -1; dj <= 1; dj++)
+      for (long dk = -1; dk <= 1; dk++) {
+        int m = nl_cellular_cube(c, i + di, j + dj, k + dk, pts);
+        scan_points(pts, m, xyz[0], xyz[1], xyz[2], n, d2);
+      }
+  finish(d2, n, F);
+}
+
+/* A row at fixed (y, z) touches the columns of cubes ifirst..ifirst+ncol-1;
+ * column bucket b holds the points of its 9 cubes (j-1..j+1, k-1..k+1),
+ * so each cube is generated once per row, not once per sample. */
+typedef struct {
+  double *pts;     /* 3 * total */
+  size_t *start;   /* ncol + 1 offsets, in points */
+} buckets;
+
+static void buckets_fill(const nl_cellular *c, long ifirst, size_t ncol, long j, long k,
+                         buckets *b)
+{
+  size_t cap = ncol * 9 * 8, total = 0;
+  b->pts = nl_xmalloc(3 * cap * sizeof *b->pts);
+  b->start = nl_xmalloc((ncol + 1) * sizeof *b->start);
+  double tmp[3 * NL_CELLULAR_MAX_M];
+  for (size_t col = 0; col < ncol; col++) {
+    b->start[col] = total;
+    for (long dj = -1; dj <= 1; dj++)
+      for (long dk = -1; dk <= 1; dk++) {
+        int m = nl_cellular_cube(c, ifirst + (long)col, j + dj, k + dk, tmp);
+        if (total + (size_t)m > cap) {
+          cap = 2 * (total + (size_t)m);
+          b->pts = nl_xrealloc(b->pts, 3 * cap * sizeof *b->pts);
+        }
+        memcpy(b->pts + 3 * total, tmp, 3 * (size_t)m * sizeof *tmp);
+        total += (size_t)m;
+      }
+  }
+  b->start[ncol] = total;
+}
+
+void nl_cellular_row(const nl_cellular *c, double x0, double dx, double y, double z,
+                     size_t count, int n, double *F)
+{
+  if (count == 0) return;
+  double xl = x0 + (double)(count - 1) * dx;
+  long ifirst = lfloor(fmin(x0, xl)) - 1, ilast = lfloor(fmax(x0, xl)) + 1;
+  size_t ncol = (size_t)(ilast - ifirst + 1);
+  if (ncol > 2 * count + 8) {   /* sparse row: buckets would cost more */
+    for (size_t s = 0; s < count; s++) {
+      double p[3] = {x0 + (double)s * dx, y, z};
+      nl_cellular_eval(c, p, n, F + s * (size_t)n);
+    }
+    return;
+  }
+  buckets b;
+  buckets_fill(c, ifirst, ncol, lfloor(y), lfloor(z), &b);
+  double d2[NL_CELLULAR_NMAX];
+  for (size_t s = 0; s < count; s++) {
+    double x = x0 + (double)s * dx;
+    size_t col = (size_t)(lfloor(x) - ifirst);   /* >= 1: ifirst has a margin */
+    reset_d2(d2, n);
+    /* Same cubes as nl_cellular_eval, visited in the same i, j, k order. */
+    scan_points(b.pts + 3 * b.start[col - 1], (int)(b.start[col + 2] - b.start[col - 1]),
+                x, y, z, n, d2);
+    finish(d2, n, F + s * (size_t)n);
+  }
+  free(b.pts);
+  free(b.start);
+}
+
+/* ---- GCTBF ------------------------------------------------------------- */
+
+nl_status nl_gctbf_add(nl_gctbf *g, int i, int j, double v, nl_error *err)
+{
+  if (i < 1 || i > NL_CELLULAR_NMAX || j < 0 || j > NL_CELLULAR_NMAX)
+    return nl_fail(err, NL_EINVAL, "gctbf: F index must be in 1..%d", NL_CELLULAR_NMAX);
+  if (!isfinite(v)) return nl_fail(err, NL_EINVAL, "gctbf: coefficient is not finite");
+  if (j == 0) g->c[i - 1] += v;
+  else g->cc[i - 1][j - 1] += v;
+  int hi = i > j ? i : j;
+  if (hi > g->n) g->n = hi;
+  return NL_OK;
+}
+
+static const char *skip_ws(const char *s) { while (isspace((unsigned char)*s)) s++; return s; }
+
+/* factor := 'F' digit; returns the index or 0 (s unchanged). */
+static int parse_factor(const char **s)
+{
+  const char *p = skip_ws(*s);
+  if (*p == '*') p = skip_ws(p + 1);
+  if ((*p != 'F' && *p != 'f') || !isdigit((unsigned char)p[1])) return 0;
+  *s = p + 2;
+  return p[1] - '0';
+}
+
+/* term := [number] factor [factor], sign already consumed. */
+static nl_status parse_term(const char **s, double sign, nl_gctbf *g, const char *expr,
+                            nl_error *err)
+{
+  const char *p = skip_ws(*s);
+  double coef = 1.0;
+  if (*p != 'F' && *p != 'f') {
+    char *end;
+    coef = strtod(p, &end);
+    if (end == p || !isfinite(coef))
+      return nl_fail(err, NL_EINVAL, "gctbf '%s': expected a number or F1..F4 at '%s'", expr, p);
+    p = end;
+  }
+  int i = parse_factor(&p);
+  if (!i) return nl_fail(err, NL_EINVAL, "gctbf '%s': expected F1..F4 at '%s'", expr, skip_ws(p));
+  int j = parse_factor(&p);
+  if (i > NL_CELLULAR_NMAX || j > NL_CELLULAR_NMAX)
+    return nl_fail(err, NL_EINVAL, "gctbf '%s': F index must be in 1..%d", expr, NL_CELLULAR_NMAX);
+  *s = p;
+  return nl_gctbf_add(g, i, j, sign * coef, err);
+}
+
+nl_status nl_gctbf_parse(const char *expr, nl_gctbf *g, nl_error *err)
+{
+  memset(g, 0, sizeof *g);
+  const char *p = skip_ws(expr);
+  if (!*p) return nl_fail(err, NL_EINVAL, "gctbf: empty expression");
+  int first = 1;
+  while (*p) {
+    double sign = 1.0;
+    if (*p == '+' || *p == '-') { sign = *p == '-' ? -1.0 : 1.0; p++; }
+    else if (!first) return nl_fail(err, NL_EINVAL, "gctbf '%s': expected + or - at '%s'", expr, p);
+    nl_status rc = parse_term(&p, sign, g, expr, err);
+    if (rc) { memset(g, 0, sizeof *g); return rc; }
+    p = skip_ws(p);
+    first = 0;
+  }
+  return NL_OK;
+}
+
+static void append_term(char *buf, size_t len, double v, const char *factors)
+{
+  size_t used = strlen(buf);
+  if (used >= len) return;
+  const char *sign = v < 0 ? (used ? " - " : "-") : (used ? " + " : "");
+  double a = fabs(v);
+  if (a == 1.0) snprintf(buf + used, len - used, "%s%s", sign, factors);
+  else snprintf(buf + used, len - used, "%s%g%s", sign, a, factors);
+}
+
+void nl_gctbf_format(const nl_gctbf *g, char *buf, size_t len)
+{
+  if (!len) return;
+  buf[0] = '\0';
+  char f[8];
+  for (int i = 0; i < NL_CELLULAR_NMAX; i++)
+    if (g->c[i] != 0.0) { snprintf(f, sizeof f, "F%d", i + 1); append_term(buf, len, g->c[i], f); }
+  for (int i = 0; i < NL_CELLULAR_NMAX; i++)
+    for (int j = 0; j < NL_CELLULAR_NMAX; j++)
+      if (g->cc[i][j] != 0.0) {
+        snprintf(f, sizeof f, "F%dF%d", i + 1, j + 1);
+        append_term(buf, len, g->cc[i][j], f);
+      }
+  if (!buf[0]) snprintf(buf, len, "0");
+}
+
+double nl_gctbf_value(const nl_gctbf *g, const double *F)
+{
+  double v = 0.0;
+  for (int i = 0; i < g->n; i++) {
+    v += g->c[i] * F[i];
+    for (int j = 0; j < g->n; j++) v += g->cc[i][j] * F[i] * F[j];
+  }
+  return v;
+}
+
+double nl_gctbf_bound(const nl_gctbf *g)
+{
+  double b = 0.0;
+  for (int i = 0; i < NL_CELLULAR_NMAX; i++) {
+    b += fabs(g->c[i]) * NL_CELLULAR_FMAX;
+    for (int j = 0; j < NL_CELLULAR_NMAX; j++) b += fabs(g->cc[i][j]) * NL_CELLULAR_FMAX * NL_CELLULAR_FMAX;
+  }
+  return b;
+}
+
+void nl_gctbf_row(const nl_cellular *c, const nl_gctbf *g, double x0, double dx, double y,
+                  double z, size_t count, double *out)
+{
+  int n = g->n > 0 ? g->n : 1;
+  double *F = nl_xmalloc(count * (size_t)n * sizeof *F);
+  nl_cellular_row(c, x0, dx, y, z, count, n, F);
+  for (size_t s = 0; s < count; s++) out[s] = g->n ? nl_gctbf_value(g, F + s * (size_t)n) : 0.0;
+  free(F);
+}
+
+void nl_gctbf_grid(const nl_cellular *c, const nl_gctbf *g, const nl_window *win, double *out)
+{
+  double dx = win->size / win->w, dy = win->size / win->h;
+  for (int r = 0; r < win->h; r++)
+    nl_gctbf_row(c, g, win->x0 + 0.5 * dx, dx, win->y0 + (r + 0.5) * dy, win->z, (size_t)win->w,
+                 out + (size_t)r * win->w);
+}
+
+static void gctbf_basis_row(const void *ctx, double x0, double dx, double y, double z, size_t n,
+                            double *out)
+{
+  const nl_gctbf_basis *b = ctx;
+  nl_gctbf_row(b->cell, &b->g, x0, dx, y, z, n, out);
+}
+
+nl_basis nl_basis_gctbf(const nl_gctbf_basis *ctx)
+{
+  nl_basis b = {gctbf_basis_row, ctx, nl_gctbf_bound(&ctx->g)};
+  return b;
+}
+
+/* ---- count statistics -------------------------------------------------- */
+
+void nl_cellular_count_histogram(const nl_cellular *c, long origin, int side, double *hist)
+{
+  for (int m = 0; m <= c->M; m++) hist[m] = 0.0;
+  for (long i = origin; i < origin + side; i++)
+    for (long j = origin; j < origin + side; j++)
+      for (long k = origin; k < origin + side; k++) {
+        uint64_t st = cube_seed(c, i, j, k);
+        hist[nl_cellular_count_from_r(c, uniform01(&st))] += 1.0;
+      }
+}
+
+nl_status nl_cellular_count_chisq(const nl_cellular *c, const double *hist,
+                                  nl_chisq_result *res, nl_error *err)
+{
+  double n = 0.0;
+  for (int m = 0; m <= c->M; m++) n += hist[m];
+  /* Bins 0..K-1 exact, bin K pools m >= K against the Poisson tail
+   * 1 - P(K-1) (not the truncated table: the test is against Poisson). */
+  int K = 0;
+  while (K < c->M && n * c->pmf[K] >= 5.0 && n * (1.0 - c->cdf[K]) >= 5.0) K++;
+  if (K < 1) return nl_fail(err, NL_EINVAL, "cellular chi-square: too few cubes (%g)", n);
+  double obs[NL_CELLULAR_MAX_M + 1], exp_[NL_CELLULAR_MAX_M + 1];
+  for (int m = 0; m < K; m++) { obs[m] = hist[m]; exp_[m] = n * c->pmf[m]; }
+  obs[K] = 0.0;
+  for (int m = K; m <= c->M; m++) obs[K] += hist[m];
+  exp_[K] = n * (1.0 - c->cdf[K - 1]);
+  return nl_chisq_test(obs, exp_, (size_t)K + 1, res, err);
+}
+
+double nl_cellular_f1_cdf(double r, void *params)
+{
+  double lambda = *(const double *)params;
+  return r <= 0.0 ? 0.0 : -expm1(-lambda * 4.0 / 3.0 * NL_PI * r * r * r);
+}
+
+nl_status nl_cellular_f1_ks(const nl_cellular *c, size_t n, unsigned long seed,
+                            nl_ks_result *res, double *mean_f1, nl_error *err)
+{
+  if (n < 1) return nl_fail(err, NL_EINVAL, "cellular KS: need at least one point");
+  double *f1 = nl_xmalloc(n * sizeof *f1), sum = 0.0, lambda = c->lambda;
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, seed);
+  for (size_t s = 0; s < n; s++) {
+    double p[3];
+    for (int a = 0; a < 3; a++) p[a] = 1000.0 * gsl_rng_uniform(r);
+    nl_cellular_eval(c, p, 1, f1 + s);
+    sum += f1[s];
+  }
+  gsl_rng_free(r);
+  if (mean_f1) *mean_f1 = sum / (double)n;
+  nl_status rc = nl_ks_test(f1, n, nl_cellular_f1_cdf, &lambda, res, err);
+  free(f1);
+  return rc;
+}
+
+/* ---- texturing --------------------------------------------------------- */
+
+/* Sum over octaves i = 0..octaves of w_i(GCTBF(2^i k x)), row by row. */
+typedef double (*octave_term)(double g, int i);
+
+static double bump_term(double g, int i) { return fabs(0.5 - g) / ldexp(1.0, i); }
+static double cloud_term(double g, int i) { return (1.0 - 2.0 * g) / ldexp(1.0, i); }
+
+static void octave_grid(const nl_gctbf_basis *b, int octaves, double k, const nl_window *win,
+                        octave_term term, double *out)
+{
+  double dx = win->size / win->w, dy = win->size / win->h;
+  double *g = nl_xmalloc((size_t)win->w * sizeof *g);
+  for (size_t s = 0; s < (size_t)win->w * win->h; s++) out[s] = 0.0;
+  for (int i = 0; i <= octaves; i++) {
+    double f = k * ldexp(1.0, i);
+    for (int r = 0; r < win->h; r++) {
+      double *o = out + (size_t)r * win->w;
+      nl_gctbf_row(b->cell, &b->g, f * (win->x0 + 0.5 * dx), f * dx,
+                   f * (win->y0 + (r + 0.5) * dy), f * win->z, (size_t)win->w, g);
+      for (int s = 0; s < win->w; s++) o[s] += term(g[s], i);
+    }
+  }
+  free(g);
+}
+
+void nl_gctbf_fractal_bump_grid(const nl_gctbf_basis *b, int octaves, double k,
+                                const nl_window *win, double *out)
+{
+  octave_grid(b, octaves, k, win, bump_term, out);
+  /* eq. 6: bump = fractal^3 */
+  for (size_t s = 0; s < (size_t)win->w * win->h; s++) out[s] = out[s] * out[s] * out[s];
+}
+
+/* eq. 7's smoothscale(p) is RenderMan's antialiasing fade (Ebert ch. 10-13),
+ * which depends on the shading footprint; on our rasters the octaves stay
+ * well below the pixel rate, so it is 1 here. */
+void nl_gctbf_cloud_grid(const nl_gctbf_basis *b, int octaves, double k,
+                         const nl_window *win, double *out)
+{
+  octave_grid(b, octaves, k, win, cloud_term, out);
+}
+
+nl_ramp nl_cellular_marble_ramp(void)
+{
+  static const float k[13][3] = {
+    {0.25f, 0.25f, 0.35f}, {0.25f, 0.25f, 0.35f}, {0.10f, 0.10f, 0.30f}, {0.10f, 0.10f, 0.30f},
+    {0.10f, 0.10f, 0.30f}, {0.25f, 0.25f, 0.35f}, {0.25f, 0.25f, 0.35f}, {0.05f, 0.05f, 0.26f},
+    {0.05f, 0.05f, 0.26f}, {0.03f, 0.03f, 0.20f}, {0.03f, 0.03f, 0.20f}, {0.25f, 0.25f, 0.35f},
+    {0.03f, 0.03f, 0.20f}};
+  return nl_ramp_spline(13, k);
+}
+
+static double smoothstep01(double t)
+{
+  t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+  return t * t * (3.0 - 2.0 * t);   /* RenderMan's Hermite smoothstep */
+}
+
+nl_image *nl_gctbf_cloud_colour(const double *v, int w, int h)
+{
+  static const float sky[3] = {0.15f, 0.15f, 0.60f}, cloud[3] = {1.0f, 1.0f, 1.0f};
+  nl_image *im = nl_image_alloc(w, h, 3);
+  for (size_t k = 0; k < (size_t)w * h; k++) {
+    float t = (float)smoothstep01(v[k]);
+    for (int a = 0; a < 3; a++) im->data[3 * k + a] = (1.0f - t) * sky[a] + t * cloud[a];
+  }
+  return im;
+}
+
+void nl_heightfield_shade(const double *height, int w, int h, double spacing,
+                          const double *light, double *out)
+{
+  for (int r = 0; r < h; r++)
+    for (int c = 0; c < w; c++) {
+      int cl = c > 0 ? c - 1 : c, cr = c < w - 1 ? c + 1 : c;
+      int ru = r > 0 ? r - 1 : r, rd = r < h - 1 ? r + 1 : r;
+      /* surface z = -height: gradient of z, normal (-zx, -zy, 1) normalised */
+      double zx = -(height[(size_t)r * w + cr] - height[(size_t)r * w + cl]) / ((cr - cl) * spacing);
+      double zy = -(height[(size_t)rd * w + c] - height[(size_t)ru * w + c]) / ((rd - ru) * spacing);
+      double nx = -zx, ny = -zy, nz = 1.0, len = sqrt(nx * nx + ny * ny + nz * nz);
+      double d = (nx * light[0] + ny * light[1] + nz * light[2]) / len;
+      out[(size_t)r * w + c] = d > 0.0 ? d : 0.0;
+    }
+}

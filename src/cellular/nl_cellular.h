@@ -1,0 +1,167 @@
+/* nl_cellular.h - Qin & Yang 2000: cellular distances F1..F4 (Worley 1996)
+ * and the generalized cellular texture basis function (GCTBF).
+ *
+ * Feature points (sec. 3.2). Space is cut into unit cubes. The cube with
+ * base (i, j, k) = floor(x) gets a seed through a permutation table of 2^16
+ * entries (sec. 3.2.2 step 3):
+ *   PERM(v) = perm[v & 0xffff],  s = PERM(i + PERM(j + PERM(k))),
+ * a fast generator (splitmix64) started from s draws a uniform r in [0, 1),
+ * the count m from r (below), then 3 m coordinates inside the cube. F_i(x)
+ * is the distance from x to the i-th closest feature point of the 27 cubes
+ * around x; F1 <= F2 <= F3 <= F4. Values are exact when F_i <= 1 (every
+ * point outside the 27 cubes is at least 1 away); if the 27 cubes hold
+ * fewer than i points, F_i = NL_CELLULAR_FMAX = 2 sqrt 3, the largest
+ * distance inside them.
+ *
+ * Count rules, with p(m) = lambda^m e^-lambda / m! tabulated for m = 0..M
+ * (eq. 3; lambda = 4, M = 50 in the paper):
+ *   NL_COUNT_CLOSEST      the paper's words: the m whose p(m) is closest to
+ *                         r. This is not a sampler of p: with lambda = 4 every
+ *                         r above max p(m) ~ 0.195 gives m = 3 (p(3) = p(4)),
+ *                         and small r give large m. Q1 measures what it gives.
+ *   NL_COUNT_INVERSE_CDF  the smallest m with r < P(m) = sum_{k<=m} p(k)
+ *                         (M if r is beyond the truncated table): Poisson.
+ *
+ *   nl_cellular *c;
+ *   nl_cellular_alloc(4.0, 50, NL_COUNT_INVERSE_CDF, seed, &c, &err);
+ *   double F[4];
+ *   nl_cellular_eval(c, xyz, 4, F);                      // F1..F4 at a point
+ *   nl_cellular_row(c, x0, dx, y, z, count, 4, Frow);    // Frow[k*4 + i]
+ *   nl_cellular_free(c);
+ * A row reuses each cube's points for every sample of the row, so a raster
+ * costs far less than point evaluations; both give the same bits.
+ *
+ * GCTBF (eq. 1):  GCTBF(x) = sum_i c_i F_i(x) + sum_{i,j} c_ij F_i(x) F_j(x),
+ * i, j = 1..4. nl_gctbf_parse() reads it from text, e.g.
+ *   "F2 - F1 - F1F1"    "0.5*F1 + 2 F1*F2"    "F1F2 + F2F3"
+ * (terms: optional sign, optional number, one or two factors F1..F4, with or
+ * without '*'); a bad number, an index outside 1..4 or any other text is an
+ * NL_EINVAL with a one-line message. As a basis for sums and rendering:
+ *   nl_gctbf_basis gb = {c, g};
+ *   nl_basis b = nl_basis_gctbf(&gb);     // b.row(...) evaluates GCTBF rows
+ * b.bound = sum |c_i| FMAX + sum |c_ij| FMAX^2 (a valid, loose bound).
+ *
+ * Count statistics (Q1): nl_cellular_count_histogram() counts points per
+ * cube over a block of cubes; nl_cellular_count_chisq() tests it against
+ * Poisson(lambda) with Pearson's chi-square (bins 0..K-1 and a pooled tail
+ * ">= K", K the largest with every expected count >= 5; nl_chisq_test);
+ * nl_cellular_f1_ks() tests F1 at random points against the nearest-
+ * neighbour law of a Poisson process, P(F1 <= r) = 1 - exp(-lambda 4/3 pi r^3)
+ * (nl_ks_test).
+ *
+ * Texturing with the GCTBF (sec. 4), on a window of the plane z:
+ *   nl_gctbf_fractal_bump_grid()  eq. 6 (and eq. 5 for octaves = 0):
+ *       fractal = sum_{i=0}^{oct} |0.5 - GCTBF(2^i k x)| / 2^i, bump = fractal^3
+ *   nl_gctbf_cloud_grid()         eq. 7 with smoothscale = 1 (see .c):
+ *       sum_{i=0}^{oct} 2^-i (1 - 2 GCTBF(2^i k x))
+ *   nl_gctbf_cloud_colour()       cloudPattern of eq. 7: mix(sky, cloud,
+ *       smoothstep(0, 1, fractal)), sky (0.15, 0.15, 0.60), cloud white
+ *   nl_heightfield_shade()        Lambert shading of the plane displaced by
+ *       -bump along its normal, normals by central differences.
+ */
+#ifndef NL_CELLULAR_H
+#define NL_CELLULAR_H
+
+#include "base/nl_base.h"
+#include "image/nl_image.h"
+#include "noise/nl_noise.h"
+#include "stats/nl_stats.h"
+#include "texture/nl_texture.h"
+
+#define NL_CELLULAR_PERM 65536
+#define NL_CELLULAR_MAX_M 64
+#define NL_CELLULAR_NMAX 4
+#define NL_CELLULAR_FMAX 3.46410161513775458705   /* 2 sqrt 3 */
+
+typedef enum { NL_COUNT_CLOSEST = 0, NL_COUNT_INVERSE_CDF = 1 } nl_count_rule;
+
+typedef struct {
+  double lambda;                          /* mean points per unit cube */
+  int M;                                  /* largest count in the table */
+  nl_count_rule rule;
+  double pmf[NL_CELLULAR_MAX_M + 1];      /* p(m), eq. 3 */
+  double cdf[NL_CELLULAR_MAX_M + 1];      /* sum_{k<=m} p(k) */
+  unsigned short *perm;                   /* 2^16 entries, a permutation */
+} nl_cellular;
+
+/* lambda > 0, 1 <= M <= NL_CELLULAR_MAX_M; perm shuffled from seed (MT19937). */
+nl_status nl_cellular_alloc(double lambda, int M, nl_count_rule rule, unsigned long seed,
+                            nl_cellular **out, nl_error *err);
+void nl_cellular_free(nl_cellular *c);
+const char *nl_count_rule_name(nl_count_rule rule);   /* "closest", "inverse-cdf" */
+
+/* The count for a uniform r in [0, 1) under c->rule. */
+int nl_cellular_count_from_r(const nl_cellular *c, double r);
+/* Feature points of cube (i, j, k): returns m, writes 3 m absolute coordinates. */
+int nl_cellular_cube(const nl_cellular *c, long i, long j, long k, double *xyz);
+
+/* F[0..n-1] = F1..Fn at xyz, 1 <= n <= 4. */
+void nl_cellular_eval(const nl_cellular *c, const double *xyz, int n, double *F);
+/* F[k n + i] = F_{i+1}(x0 + k dx, y, z), k < count. */
+void nl_cellular_row(const nl_cellular *c, double x0, double dx, double y, double z,
+                     size_t count, int n, double *F);
+
+/* ---- GCTBF (eq. 1) ---------------------------------------------------- */
+
+typedef struct {
+  int n;                                              /* largest index used, 1..4 */
+  double c[NL_CELLULAR_NMAX];                         /* c_i, i = 1..4 at [i-1] */
+  double cc[NL_CELLULAR_NMAX][NL_CELLULAR_NMAX];      /* c_ij */
+} nl_gctbf;
+
+nl_status nl_gctbf_parse(const char *expr, nl_gctbf *g, nl_error *err);
+/* Adds coefficient v to c_i (j = 0) or c_ij; i, j in 1..4. */
+nl_status nl_gctbf_add(nl_gctbf *g, int i, int j, double v, nl_error *err);
+/* Canonical text, e.g. "F2 - F1 - F1F1"; buf of len bytes. */
+void nl_gctbf_format(const nl_gctbf *g, char *buf, size_t len);
+double nl_gctbf_value(const nl_gctbf *g, const double *F);
+double nl_gctbf_bound(const nl_gctbf *g);
+/* out[k] = GCTBF(x0 + k dx, y, z). */
+void nl_gctbf_row(const nl_cellular *c, const nl_gctbf *g, double x0, double dx, double y,
+                  double z, size_t count, double *out);
+
+/* GCTBF on a window (pixel centres, row 0 at y0), like nl_fractal_grid. */
+void nl_gctbf_grid(const nl_cellular *c, const nl_gctbf *g, const nl_window *win, double *out);
+
+typedef struct {
+  const nl_cellular *cell;
+  nl_gctbf g;
+} nl_gctbf_basis;
+/* A basis for nl_fractal_row / nl_fractal_grid and the render tool; ctx must
+ * outlive the basis. */
+nl_basis nl_basis_gctbf(const nl_gctbf_basis *ctx);
+
+/* ---- count statistics (Q1) -------------------------------------------- */
+
+/* hist[m] (M + 1 entries) = number of cubes with m points among the cubes
+ * (i, j, k), origin <= i, j, k < origin + side. */
+void nl_cellular_count_histogram(const nl_cellular *c, long origin, int side, double *hist);
+nl_status nl_cellular_count_chisq(const nl_cellular *c, const double *hist,
+                                  nl_chisq_result *res, nl_error *err);
+/* 1 - exp(-lambda 4/3 pi r^3); params points to lambda. */
+double nl_cellular_f1_cdf(double r, void *params);
+/* F1 at n points uniform in [0, 1000)^3 drawn from seed (MT19937), KS test
+ * against nl_cellular_f1_cdf. mean_f1 (may be NULL) gets the sample mean. */
+nl_status nl_cellular_f1_ks(const nl_cellular *c, size_t n, unsigned long seed,
+                            nl_ks_result *res, double *mean_f1, nl_error *err);
+
+/* ---- texturing (sec. 4) ----------------------------------------------- */
+
+/* bump(x) of eq. 6 on win (scale k multiplies x); octaves 0..30. */
+void nl_gctbf_fractal_bump_grid(const nl_gctbf_basis *b, int octaves, double k,
+                                const nl_window *win, double *out);
+/* fractal(x) of eq. 7 with smoothscale = 1. */
+void nl_gctbf_cloud_grid(const nl_gctbf_basis *b, int octaves, double k,
+                         const nl_window *win, double *out);
+/* Sec. 4.1's 13-knot blue-marble spline ramp (nl_ramp_spline):
+ * c1 = c2 = c6 = c7 = c12 = (0.25, 0.25, 0.35), c3 = c4 = c5 = (0.10, 0.10, 0.30),
+ * c8 = c9 = (0.05, 0.05, 0.26), c10 = c11 = c13 = (0.03, 0.03, 0.20). */
+nl_ramp nl_cellular_marble_ramp(void);
+/* RGB image of eq. 7's mix(skycolor, cloudcolor, smoothstep(0, 1, v)). */
+nl_image *nl_gctbf_cloud_colour(const double *v, int w, int h);
+/* out = max(0, N . L) of the surface z = -height over a w x h grid (w, h >= 2) with spacing
+ * `spacing`; light is a unit vector. */
+void nl_heightfield_shade(const double *height, int w, int h, double spacing,
+                          const double *light, double *out);
+
+#endif

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Quick Q1: inverse-CDF counts pass chi-square against Poisson(4) and F1 passes
+# KS against the nearest-neighbour law on every seed (alpha = 0.01); the
+# paper's closest-p rule fails both on every seed; bad lambda / M refused.
+set -euo pipefail
+exp="$1" expect="$2" out="$3"
+"$exp" --quick --out "$out" 2>/dev/null >/dev/null
+"$expect" "$out/summary.tsv" rows=2 'mean_f1_theory>0.34' 'mean_f1_theory<0.36' file:planes.png
+awk -F'\t' '$1=="inverse-cdf" && ($4!=0 || $6!=0 || $2<3.8 || $2>4.2) {exit 1}
+            $1=="closest" && ($4!=$9 || $6!=$9) {exit 1}' "$out/summary.tsv"
+awk -F'\t' 'NR>1 && $1=="inverse-cdf" && ($6<0.01 || $9<0.01) {exit 1}' "$out/tests.tsv"
+"$expect" "$out/tests.tsv" rows=6 'chi2>0' 'ks_d>0' 'df>=8'
+"$expect" "$out/counts.tsv" rows=21 'poisson>0' 'closest>=0' 'inverse_cdf>=0'
+"$exp" --quick --out "$out/again" 2>/dev/null >/dev/null
+cmp "$out/tests.tsv" "$out/again/tests.tsv"
+set +e
+"$exp" --quick --out "$out/bad" --set lambda=-1 2>/dev/null; [ $? -eq 2 ] || exit 1
+"$exp" --quick --out "$out/bad" --set M=0 2>/dev/null; [ $? -eq 2 ] || exit 1
+[ ! -e "$out/bad/manifest.tsv" ]

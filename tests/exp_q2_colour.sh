@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Quick Q2: six patterns (Perlin + five GCTBF), each with spread, the montage
+# written; the GCTBF values stay inside their analytic bounds (F <= 2 sqrt 3).
+set -euo pipefail
+exp="$1" expect="$2" out="$3"
+"$exp" --quick --out "$out" 2>/dev/null >/dev/null
+"$expect" "$out/values.tsv" rows=6 'sd>0.01' 'max>min' 'max<=24.8' 'min>=-12' \
+  file:colour.png file:report.md
+"$exp" --quick --out "$out/again" 2>/dev/null >/dev/null
+cmp "$out/values.tsv" "$out/again/values.tsv"
