@@ -9,7 +9,10 @@ mkdir -p "$out"
 "$render" marble --size 32 --bits 16 -o "$out/m.tif"
 "$render" noise2 --size 16 --seed 3 -o "$out/n.tsv"
 "$expect" "$out/n.tsv" rows=256 'value<=0.70711' 'value>=-0.70711' 'x>0' 'x<4'
-for f in fbm.png t.exr m.tif; do [ -s "$out/$f" ]; done
+"$render" gctbf --terms "F2 - F1 - F1F1" --size 32 --normalize range -o "$out/g.png"
+"$render" fbm --basis gctbf --octaves 3 --size 16 -o "$out/gf.tsv"
+"$expect" "$out/gf.tsv" rows=256
+for f in fbm.png t.exr m.tif g.png; do [ -s "$out/$f" ]; done
 # Same seed, same bytes.
 "$render" noise2 --size 16 --seed 3 -o "$out/n2.tsv"
 cmp "$out/n.tsv" "$out/n2.tsv"
@@ -28,5 +31,8 @@ bad "--octaves: 31 is outside" fbm --octaves 31 -o "$out/x.png"
 bad "--gain: 'abc' is not a number" fbm --gain abc -o "$out/x.png"
 bad "not writable" fbm --size 8 -o /nonexistent/dir/x.png
 bad "no output file" fbm --size 8
+bad "lambda must be in" gctbf --lambda -1 -o "$out/x.png"
+bad "F index must be in 1..4" gctbf --terms F5 -o "$out/x.png"
+bad "expected a number" gctbf --terms "abc*F1" -o "$out/x.png"
 [ ! -e "$out/x.png" ]
 [ -z "$(ls -A "$out" | grep '^\.' || true)" ]   # no temporary files left

@@ -9,6 +9,7 @@
  * min..max instead). Float formats (EXR, or --bits 32) store raw values.
  * A .tsv output holds the raw values as columns x, y, value.
  */
+#include "cellular/nl_cellular.h"
 #include "noise/nl_noise.h"
 #include "table/nl_table.h"
 #include "texture/nl_texture.h"
@@ -18,12 +19,12 @@
 #include <string.h>
 #include <unistd.h>
 
-static const char *NOISES[] = {"noise2", "improved", "fractal", "turbulence", "fbm", "marble", NULL};
+static const char *NOISES[] = {"noise2", "improved", "gctbf", "fractal", "turbulence", "fbm", "marble", NULL};
 
 typedef struct {
-  const char *noise, *out, *basis, *normalize;
-  long size, octaves, seed, table_size, bits;
-  double extent, x0, y0, z, gain, lacunarity, amplitude, stripes;
+  const char *noise, *out, *basis, *normalize, *terms, *count;
+  long size, octaves, seed, table_size, bits, points;
+  double extent, x0, y0, z, gain, lacunarity, amplitude, stripes, lambda;
   int reference;
 } options;
 
@@ -32,6 +33,7 @@ static void usage(void)
   printf("usage: noiselab render NOISE [options] -o FILE\n\n"
          "NOISE: noise2      2D gradient-table noise (Cheng 2009 eq. 3.1-3.2)\n"
          "       improved    Perlin's improved 3D noise, on the plane z\n"
+         "       gctbf       Qin & Yang's generalized cellular basis sum c_i F_i + c_ij F_i F_j\n"
          "       fractal     sum_j noise(2^j p) / 2^j            (Shaffer)\n"
          "       turbulence  sum_j |noise(2^j p)| / 2^j\n"
          "       fbm         sum_j gain^j noise(lacunarity^j p)\n"
@@ -42,7 +44,11 @@ static void usage(void)
          "  --x0 X --y0 Y --z Z  window origin and plane (0 0 0.5)\n"
          "  --octaves N          1..30 (6)          --gain G (0.5)   --lacunarity L (2)\n"
          "  --amplitude A        marble displacement a (0.5)   --stripes K per unit (1)\n"
-         "  --basis improved|table   noise under the sums (improved)\n"
+         "  --basis improved|table|gctbf   noise under the sums (improved)\n"
+         "  --terms EXPR         GCTBF, e.g. \"F2 - F1 - F1F1\" or \"0.5*F1 + 2 F1*F2\" (F1)\n"
+         "  --lambda L           mean feature points per unit cube (4)   --points M cap (50)\n"
+         "  --count inverse|closest  feature-point count rule (inverse: inverse-CDF sampling;\n"
+         "                       closest: the paper's 'p(m) closest to r')\n"
          "  --table-size M       gradient-table size for noise2/table, 4..1048576 (512)\n"
          "  --seed S             table seed (1)   --reference  Perlin's own permutation\n"
          "  --bits 8|16|32       image bit depth (8; EXR defaults to 32)\n"
@@ -71,7 +77,8 @@ static int one_of(const char *s, const char *const *list)
 
 static void parse(int argc, char **argv, options *o)
 {
-  *o = (options){.basis = "improved", .normalize = "bound", .size = 512, .octaves = 6, .seed = 1,
+  *o = (options){.basis = "improved", .normalize = "bound", .terms = "F1", .count = "inverse",
+                 .points = 50, .lambda = 4, .size = 512, .octaves = 6, .seed = 1,
                  .table_size = 512, .bits = 0, .extent = 4, .z = 0.5, .gain = 0.5, .lacunarity = 2,
                  .amplitude = 0.5, .stripes = 1};
   for (int i = 1; i < argc; i++) {
@@ -100,15 +107,21 @@ static void parse(int argc, char **argv, options *o)
     else if (!strcmp(a, "--amplitude")) num(a, v, -1e6, 1e6, &o->amplitude);
     else if (!strcmp(a, "--stripes")) num(a, v, 1e-9, 1e9, &o->stripes);
     else if (!strcmp(a, "--basis")) o->basis = v;
+    else if (!strcmp(a, "--terms")) o->terms = v;
+    else if (!strcmp(a, "--count")) o->count = v;
+    else if (!strcmp(a, "--lambda")) num(a, v, -1e9, 1e9, &o->lambda);
+    else if (!strcmp(a, "--points")) integer(a, v, -1000000, 1000000, &o->points);
     else if (!strcmp(a, "--normalize")) o->normalize = v;
     else { char m[256]; snprintf(m, sizeof m, "%s: unknown option (see --help)", a); fail(m); }
   }
   char m[512];
   if (!o->noise) fail("no NOISE given (see --help)");
-  if (!one_of(o->noise, NOISES)) { snprintf(m, sizeof m, "%s: unknown noise (noise2, improved, fractal, turbulence, fbm, marble)", o->noise); fail(m); }
+  if (!one_of(o->noise, NOISES)) { snprintf(m, sizeof m, "%s: unknown noise (noise2, improved, gctbf, fractal, turbulence, fbm, marble)", o->noise); fail(m); }
   if (!o->out) fail("-o: no output file given");
-  const char *bases[] = {"improved", "table", NULL}, *norms[] = {"bound", "range", NULL};
-  if (!one_of(o->basis, bases)) { snprintf(m, sizeof m, "--basis: '%s' is not improved or table", o->basis); fail(m); }
+  const char *bases[] = {"improved", "table", "gctbf", NULL}, *norms[] = {"bound", "range", NULL};
+  const char *counts[] = {"inverse", "closest", NULL};
+  if (!one_of(o->basis, bases)) { snprintf(m, sizeof m, "--basis: '%s' is not improved, table or gctbf", o->basis); fail(m); }
+  if (!one_of(o->count, counts)) { snprintf(m, sizeof m, "--count: '%s' is not inverse or closest", o->count); fail(m); }
   if (!one_of(o->normalize, norms)) { snprintf(m, sizeof m, "--normalize: '%s' is not bound or range", o->normalize); fail(m); }
   if (o->bits && o->bits != 8 && o->bits != 16 && o->bits != 32) { snprintf(m, sizeof m, "--bits: %ld is not 8, 16 or 32", o->bits); fail(m); }
   double bytes = (double)o->size * o->size * 12.0;
@@ -138,11 +151,27 @@ static double *evaluate(const options *o, double *lo, double *hi)
 {
   nl_window win = {o->x0, o->y0, o->z, o->extent, (int)o->size, (int)o->size};
   nl_grad2 *t = NULL;
+  nl_cellular *cell = NULL;
+  nl_gctbf_basis gb;
   nl_perm3 p;
   nl_basis b;
-  int table = !strcmp(o->noise, "noise2") || (!strcmp(o->basis, "table") && strcmp(o->noise, "improved"));
-  if (table) { t = nl_grad2_alloc((size_t)o->table_size); nl_grad2_seed(t, (unsigned long)o->seed); b = nl_basis_grad2(t); }
-  else { if (o->reference) nl_perm3_reference(&p); else nl_perm3_seed(&p, (unsigned long)o->seed); b = nl_basis_perm3(&p); }
+  int single = !strcmp(o->noise, "noise2") || !strcmp(o->noise, "improved") || !strcmp(o->noise, "gctbf");
+  const char *kind = single ? o->noise : o->basis;
+  if (!strcmp(kind, "noise2") || !strcmp(kind, "table")) {
+    t = nl_grad2_alloc((size_t)o->table_size);
+    nl_grad2_seed(t, (unsigned long)o->seed);
+    b = nl_basis_grad2(t);
+  } else if (!strcmp(kind, "gctbf")) {
+    nl_error err;
+    nl_count_rule rule = !strcmp(o->count, "closest") ? NL_COUNT_CLOSEST : NL_COUNT_INVERSE_CDF;
+    if (nl_cellular_alloc(o->lambda, (int)o->points, rule, (unsigned long)o->seed, &cell, &err)) fail(err.msg);
+    gb.cell = cell;
+    if (nl_gctbf_parse(o->terms, &gb.g, &err)) { char m[600]; snprintf(m, sizeof m, "--terms: %s", err.msg); fail(m); }
+    b = nl_basis_gctbf(&gb);
+  } else {
+    if (o->reference) nl_perm3_reference(&p); else nl_perm3_seed(&p, (unsigned long)o->seed);
+    b = nl_basis_perm3(&p);
+  }
   nl_octaves oct = nl_octaves_fbm(1, 1, 1);
   if (!strcmp(o->noise, "fractal") || !strcmp(o->noise, "marble")) oct = nl_octaves_fractal((int)o->octaves);
   if (!strcmp(o->noise, "turbulence")) { oct = nl_octaves_fractal((int)o->octaves); oct.turbulence = 1; }
@@ -152,6 +181,7 @@ static double *evaluate(const options *o, double *lo, double *hi)
   if (!strcmp(o->noise, "marble")) { nl_marble_grid(&b, &oct, &win, NL_TWO_PI * o->stripes, o->amplitude, v); *lo = 0; *hi = 1; }
   else { nl_fractal_grid(&b, &oct, &win, v); *lo = oct.turbulence ? 0 : -B; *hi = B; }
   nl_grad2_free(t);
+  nl_cellular_free(cell);
   return v;
 }
 
