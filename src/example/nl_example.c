@@ -1,0 +1,421 @@
+#include "example/nl_example.h"
+#include "spectrum/nl_spectrum.h"
+
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_eigen.h>
+#include <gsl/gsl_interp.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- noise by example (sec. 4) ------------------------------------------ */
+
+int nl_example_band_count(int w, int h)
+{
+  /* Lowest non-zero frequency 1/max(w, h) cycles per pixel lies in band
+   * floor(log2 max(w, h)) of eq. 13 (512 -> 9). */
+  int m = w > h ? w : h, k = 0;
+  while ((2 << k) <= m) k++;
+  return k < NL_WAVELET_MAX_BANDS ? k : NL_WAVELET_MAX_BANDS;
+}
+
+/* Eq. 13 band k = i - 1 for a frequency with max(|f_x|, |f_y|) = m cycles per
+ * pixel (m > 0): i = floor(log2(1 / 2m)) + 1. frexp keeps exact powers of two
+ * on the right side of each boundary. */
+static int band_of(double m)
+{
+  int e;
+  frexp(1.0 / (2.0 * m), &e);   /* 1/(2m) = f 2^e, f in [1/2, 1) */
+  return e - 1;
+}
+
+void nl_example_band_power(const double *img, int w, int h, int nbands, double *power)
+{
+  double *P = nl_xmalloc((size_t)w * h * sizeof *P);
+  nl_power2(img, w, h, P);
+  memset(power, 0, (size_t)nbands * sizeof *power);
+  for (int v = 0; v < h; v++) {
+    double fy = fabs(nl_fft_freq(v, h));
+    for (int u = 0; u < w; u++) {
+      double m = fmax(fabs(nl_fft_freq(u, w)), fy);
+      if (m == 0) continue;   /* DC: in no band */
+      int k = band_of(m);
+      if (k < nbands) power[k] += P[(size_t)v * w + u];
+    }
+  }
+  free(P);
+}
+
+void nl_example_weights(const double *img, int w, int h, int nbands, double sigma2, double *wts)
+{
+  nl_example_band_power(img, w, h, nbands, wts);
+  for (int k = 0; k < nbands; k++) wts[k] = sqrt(wts[k] / sigma2);
+}
+
+void nl_example_band_leakage(const nl_wavelet_tile *t, int size, int nbands, unsigned long seed,
+                             double *share, double *var)
+{
+  double *img = nl_xmalloc((size_t)size * size * sizeof *img), w[NL_WAVELET_MAX_BANDS];
+  for (int k = 0; k < nbands; k++) {
+    nl_wavelet_bands b;
+    for (int j = 0; j < nbands; j++) w[j] = j == k;
+    nl_wavelet_bands_init(&b, nbands, w, t->n, seed, NULL);
+    nl_wavelet_bands_grid(t, &b, size, size, 0, 1, img);
+    double *row = share + (size_t)k * nbands;
+    nl_example_band_power(img, size, size, nbands, row);
+    var[k] = 0;
+    for (int j = 0; j < nbands; j++) var[k] += row[j];
+    for (int j = 0; j < nbands; j++) row[j] /= var[k];
+  }
+  free(img);
+}
+
+double nl_example_sigma2(int n)
+{
+  /* Cached: synthesis and analysis ask for the same tile period. */
+  static int cached_n;
+  static double cached;
+  if (n == cached_n) return cached;
+  nl_wavelet_tile *t = nl_wavelet_tile_alloc(2, n);
+  if (!t) return 0;
+  double s = 0;
+  for (unsigned long seed = 1; seed <= 4; seed++) {
+    nl_wavelet_tile_seed(t, seed);
+    s += nl_wavelet_tile_variance(t, 4);
+  }
+  nl_wavelet_tile_free(t);
+  cached_n = n;
+  cached = s / 4;
+  return cached;
+}
+
+/* ---- colour (sec. 5.1) --------------------------------------------------- */
+
+static int colour_channels(const nl_image *im) { return im->channels >= 3 ? 3 : 1; }
+
+/* Orients the principal axes: entries summing >= 0 (ties: largest entry
+ * positive), then det = +1 by flipping the weakest axis. */
+static void orient_axes(double M[3][3])
+{
+  for (int r = 0; r < 3; r++) {
+    double s = M[r][0] + M[r][1] + M[r][2];
+    if (fabs(s) < 1e-9) {
+      int j = 0;
+      for (int c = 1; c < 3; c++) if (fabs(M[r][c]) > fabs(M[r][j])) j = c;
+      s = M[r][j];
+    }
+    if (s < 0) for (int c = 0; c < 3; c++) M[r][c] = -M[r][c];
+  }
+  double det = M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1])
+             - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0])
+             + M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
+  if (det < 0) for (int c = 0; c < 3; c++) M[2][c] = -M[2][c];
+}
+
+nl_status nl_example_pca(const nl_image *im, double mean[3], double matrix[3][3], nl_error *err)
+{
+  int nch = colour_channels(im), C = im->channels;
+  size_t n = (size_t)im->width * im->height;
+  if (n == 0) return nl_fail(err, NL_EINVAL, "empty image");
+  double cov[9] = {0};
+  memset(matrix, 0, 9 * sizeof(double));
+  for (int c = 0; c < 3; c++) {
+    mean[c] = 0;
+    if (c >= nch) continue;
+    for (size_t i = 0; i < n; i++) mean[c] += im->data[i * C + c];
+    mean[c] /= (double)n;
+  }
+  if (nch == 1) { matrix[0][0] = 1; return NL_OK; }
+  for (size_t i = 0; i < n; i++) {
+    const float *px = im->data + i * C;
+    double d[3] = {px[0] - mean[0], px[1] - mean[1], px[2] - mean[2]};
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 3; b++) cov[3 * a + b] += d[a] * d[b];
+  }
+  gsl_matrix_view A = gsl_matrix_view_array(cov, 3, 3);
+  gsl_vector *eval = gsl_vector_alloc(3);
+  gsl_matrix *evec = gsl_matrix_alloc(3, 3);
+  gsl_eigen_symmv_workspace *ws = gsl_eigen_symmv_alloc(3);
+  int rc = gsl_eigen_symmv(&A.matrix, eval, evec, ws);
+  gsl_eigen_symmv_sort(eval, evec, GSL_EIGEN_SORT_VAL_DESC);
+  for (int r = 0; r < 3; r++)
+    for (int c = 0; c < 3; c++) matrix[r][c] = gsl_matrix_get(evec, c, r);   /* columns -> rows */
+  gsl_eigen_symmv_free(ws);
+  gsl_matrix_free(evec);
+  gsl_vector_free(eval);
+  if (rc) return nl_fail(err, NL_ENUM, "PCA: eigen decomposition failed");
+  orient_axes(matrix);
+  return NL_OK;
+}
+
+void nl_example_decorrelate(const nl_image *im, int nch, const double mean[3],
+                            const double matrix[3][3], double **plane)
+{
+  size_t n = (size_t)im->width * im->height;
+  for (size_t i = 0; i < n; i++) {
+    const float *px = im->data + i * im->channels;
+    for (int r = 0; r < nch; r++) {
+      double s = 0;
+      for (int c = 0; c < nch; c++) s += matrix[r][c] * (px[c] - mean[c]);
+      plane[r][i] = s;
+    }
+  }
+}
+
+void nl_example_recorrelate(double *const *plane, int nch, const double mean[3],
+                            const double matrix[3][3], nl_image *out)
+{
+  size_t n = (size_t)out->width * out->height;
+  for (size_t i = 0; i < n; i++) {
+    float *px = out->data + i * out->channels;
+    for (int c = 0; c < nch; c++) {
+      double s = mean[c];
+      for (int r = 0; r < nch; r++) s += matrix[r][c] * plane[r][i];   /* M^T */
+      px[c] = (float)s;
+    }
+  }
+}
+
+/* ---- histograms (sec. 5.2) ----------------------------------------------- */
+
+static int cmp_double(const void *a, const void *b)
+{
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+void nl_example_quantiles(const double *v, size_t n, double *q)
+{
+  double *s = nl_xmalloc(n * sizeof *s);
+  memcpy(s, v, n * sizeof *s);
+  qsort(s, n, sizeof *s, cmp_double);
+  for (int j = 0; j < NL_EXAMPLE_HIST; j++) {
+    double pos = (double)j / (NL_EXAMPLE_HIST - 1) * (double)(n - 1);
+    size_t i = (size_t)pos;
+    double f = pos - (double)i;
+    q[j] = i + 1 < n ? s[i] + f * (s[i + 1] - s[i]) : s[n - 1];
+  }
+  free(s);
+}
+
+typedef struct { double v; size_t i; } ranked;
+
+static int cmp_ranked(const void *a, const void *b)
+{
+  const ranked *x = a, *y = b;
+  if (x->v != y->v) return (x->v > y->v) - (x->v < y->v);
+  return (x->i > y->i) - (x->i < y->i);
+}
+
+void nl_example_gaussianize(double *v, size_t n)
+{
+  ranked *r = nl_xmalloc(n * sizeof *r);
+  for (size_t i = 0; i < n; i++) { r[i].v = v[i]; r[i].i = i; }
+  qsort(r, n, sizeof *r, cmp_ranked);
+  for (size_t k = 0; k < n; k++) v[r[k].i] = gsl_cdf_ugaussian_Pinv(((double)k + 0.5) / (double)n);
+  free(r);
+}
+
+/* Fritsch-Carlson slopes: PCHIP's harmonic mean inside (Fritsch & Butland),
+ * the shape-preserving three-point formula at the ends, then FC's limiter
+ * alpha^2 + beta^2 <= 9 on every interval. */
+static void fc_slopes(const double *x, const double *y, int n, double *d)
+{
+  double del[64] = {0}, hh[64] = {0};
+  for (int k = 0; k + 1 < n; k++) { hh[k] = x[k + 1] - x[k]; del[k] = (y[k + 1] - y[k]) / hh[k]; }
+  for (int k = 1; k + 1 < n; k++) {
+    if (del[k - 1] * del[k] <= 0) { d[k] = 0; continue; }
+    double w1 = 2 * hh[k] + hh[k - 1], w2 = hh[k] + 2 * hh[k - 1];
+    d[k] = (w1 + w2) / (w1 / del[k - 1] + w2 / del[k]);
+  }
+  for (int e = 0; e < 2; e++) {   /* ends */
+    int k = e ? n - 1 : 0, a = e ? n - 2 : 0, b = e ? n - 3 : 1;
+    double h0 = hh[a], h1 = hh[b], d0 = del[a], d1 = del[b];
+    double s = n > 2 ? ((2 * h0 + h1) * d0 - h0 * d1) / (h0 + h1) : d0;
+    if (s * d0 <= 0) s = 0;
+    else if (d0 * d1 < 0 && fabs(s) > 3 * fabs(d0)) s = 3 * d0;
+    d[k] = s;
+  }
+  for (int k = 0; k + 1 < n; k++) {
+    if (del[k] == 0) { d[k] = d[k + 1] = 0; continue; }
+    double al = d[k] / del[k], be = d[k + 1] / del[k], r2 = al * al + be * be;
+    if (r2 > 9) { double t = 3 / sqrt(r2); d[k] = t * al * del[k]; d[k + 1] = t * be * del[k]; }
+  }
+}
+
+static double hermite(const double *x, const double *y, const double *d, int n, double t)
+{
+  int k = 0;
+  while (k + 2 < n && t > x[k + 1]) k++;
+  double h = x[k + 1] - x[k], s = (t - x[k]) / h, s2 = s * s, s3 = s2 * s;
+  /* Written around y[k] so that a flat interval stays exactly flat. */
+  return y[k] + (y[k + 1] - y[k]) * (3 * s2 - 2 * s3) + h * (d[k] * (s3 - 2 * s2 + s) + d[k + 1] * (s3 - s2));
+}
+
+void nl_example_spline(const double *x, const double *y, int n, nl_spline_kind kind,
+                       const double *xs, double *ys, size_t m)
+{
+  if (kind == NL_SPLINE_STEFFEN) {
+    gsl_interp *ip = gsl_interp_alloc(gsl_interp_steffen, (size_t)n);
+    gsl_interp_accel *acc = gsl_interp_accel_alloc();
+    gsl_interp_init(ip, x, y, (size_t)n);
+    for (size_t i = 0; i < m; i++)
+      ys[i] = gsl_interp_eval(ip, x, y, fmin(fmax(xs[i], x[0]), x[n - 1]), acc);
+    gsl_interp_accel_free(acc);
+    gsl_interp_free(ip);
+    return;
+  }
+  double d[64];
+  fc_slopes(x, y, n, d);
+  for (size_t i = 0; i < m; i++) ys[i] = hermite(x, y, d, n, fmin(fmax(xs[i], x[0]), x[n - 1]));
+}
+
+void nl_example_match(double *v, size_t n, double sigma, const double *q, nl_spline_kind kind)
+{
+  double p[NL_EXAMPLE_HIST];
+  for (int j = 0; j < NL_EXAMPLE_HIST; j++) p[j] = (double)j / (NL_EXAMPLE_HIST - 1);
+  /* The expected CDF of the noise (a Gaussian of variance sigma^2, eq. 14)
+   * takes noise to a probability, the exemplar's inverse cumulative
+   * histogram takes it to an intensity. */
+  for (size_t i = 0; i < n; i++) v[i] = gsl_cdf_ugaussian_P(v[i] / sigma);
+  if (q[NL_EXAMPLE_HIST - 1] == q[0]) {   /* constant channel */
+    for (size_t i = 0; i < n; i++) v[i] = q[0];
+    return;
+  }
+  nl_example_spline(p, q, NL_EXAMPLE_HIST, kind, v, v, n);
+}
+
+/* ---- analysis and synthesis (sec. 5.3) ----------------------------------- */
+
+nl_status nl_example_analyse(const nl_image *im, const nl_example_options *opt,
+                             nl_example_params *p, nl_error *err)
+{
+  nl_example_options o = {1, 1, 0, 0};
+  if (opt) o = *opt;
+  if (o.tile == 0) o.tile = NL_EXAMPLE_TILE;
+  if (im->width < NL_EXAMPLE_MIN_SIZE || im->height < NL_EXAMPLE_MIN_SIZE)
+    return nl_fail(err, NL_EINVAL, "image is %d x %d pixels, smaller than %d", im->width,
+                   im->height, NL_EXAMPLE_MIN_SIZE);
+  if (o.tile < 8 || o.tile % 2) return nl_fail(err, NL_EINVAL, "tile period %d not even and >= 8", o.tile);
+  memset(p, 0, sizeof *p);
+  p->channels = colour_channels(im);
+  p->nbands = nl_example_band_count(im->width, im->height);
+  p->tile = o.tile;
+  p->histogram = o.histogram;
+  p->sigma2 = o.sigma2 > 0 ? o.sigma2 : nl_example_sigma2(o.tile);
+  nl_status st = nl_example_pca(im, p->mean, p->matrix, err);
+  if (st) return st;
+  if (!o.decorrelate) {
+    memset(p->matrix, 0, sizeof p->matrix);
+    for (int c = 0; c < 3; c++) p->matrix[c][c] = 1;
+  }
+  size_t n = (size_t)im->width * im->height;
+  double *plane[3];
+  for (int c = 0; c < p->channels; c++) plane[c] = nl_xmalloc(n * sizeof(double));
+  nl_example_decorrelate(im, p->channels, p->mean, p->matrix, plane);
+  for (int c = 0; c < p->channels; c++) {
+    nl_example_quantiles(plane[c], n, p->hist[c]);
+    int flat = p->hist[c][0] == p->hist[c][NL_EXAMPLE_HIST - 1];
+    if (p->histogram && !flat) nl_example_gaussianize(plane[c], n);
+    if (!flat) nl_example_weights(plane[c], im->width, im->height, p->nbands, p->sigma2, p->w[c]);
+    free(plane[c]);
+  }
+  return NL_OK;
+}
+
+void nl_example_channel_noise(const nl_example_params *p, int c, const nl_wavelet_tile *t,
+                              double gain, int w, int h, unsigned long seed,
+                              const nl_example_synth_options *opt, double *out)
+{
+  double wts[NL_WAVELET_MAX_BANDS];
+  for (int k = 0; k < p->nbands; k++) wts[k] = gain * p->w[c][k];
+  nl_wavelet_bands b;
+  nl_wavelet_bands_init(&b, p->nbands, wts, t->n, 4 * seed + (unsigned long)c, NULL);
+  double scale = opt && opt->scale > 0 ? opt->scale : 1.0;
+  nl_wavelet_bands_grid(t, &b, w, h, opt ? opt->z : 0, scale, out);
+}
+
+nl_status nl_example_synthesize(const nl_example_params *p, int w, int h, unsigned long seed,
+                                const nl_example_synth_options *opt, nl_image **out,
+                                nl_error *err)
+{
+  if (w < 1 || h < 1 || (double)w * h > 1e9)
+    return nl_fail(err, NL_EINVAL, "output size %d x %d out of range", w, h);
+  int solid = opt && opt->solid;
+  nl_wavelet_tile *t = nl_wavelet_tile_alloc(solid ? 3 : 2, solid ? NL_EXAMPLE_TILE3 : p->tile);
+  if (!t) return nl_fail(err, NL_EINVAL, "tile period %d not even and >= 8", p->tile);
+  nl_wavelet_tile_seed(t, seed);
+  /* Scale this tile's noise to the sigma_N^2 the weights were computed with:
+   * the variance then is sigma_N^2 sum w^2 whatever the tile (and 3D noise,
+   * whose band variance differs from 2D's, gets the same 2D weights). */
+  double gain = sqrt(p->sigma2 / nl_wavelet_tile_variance(t, solid ? 2 : 4));
+  size_t n = (size_t)w * h;
+  double *plane[3];
+  for (int c = 0; c < p->channels; c++) {
+    plane[c] = nl_xmalloc(n * sizeof(double));
+    nl_example_channel_noise(p, c, t, gain, w, h, seed, opt, plane[c]);
+    if (p->histogram) {
+      double ss = 0;
+      for (int k = 0; k < p->nbands; k++) ss += p->w[c][k] * p->w[c][k];
+      double sigma_m = sqrt(p->sigma2 * ss);
+      if (sigma_m > 0) nl_example_match(plane[c], n, sigma_m, p->hist[c], opt ? opt->spline : 0);
+      else for (size_t i = 0; i < n; i++) plane[c][i] = p->hist[c][NL_EXAMPLE_HIST / 2];
+    }
+  }
+  nl_wavelet_tile_free(t);
+  *out = nl_image_alloc(w, h, p->channels);
+  nl_example_recorrelate(plane, p->channels, p->mean, p->matrix, *out);
+  for (int c = 0; c < p->channels; c++) free(plane[c]);
+  return NL_OK;
+}
+
+int nl_example_param_count(const nl_example_params *p)
+{
+  return p->channels * p->channels + p->channels * (NL_EXAMPLE_HIST + p->nbands);
+}
+
+void nl_example_attenuate(nl_example_params *p, int nfine, double factor)
+{
+  for (int c = 0; c < p->channels; c++)
+    for (int k = 0; k < nfine && k < p->nbands; k++) p->w[c][k] *= factor;
+}
+
+nl_image *nl_example_spectrum_image(const double *img, int w, int h, double decades)
+{
+  size_t n = (size_t)w * h;
+  double *P = nl_xmalloc(n * sizeof *P), *L = nl_xmalloc(n * sizeof *L), top = -INFINITY;
+  nl_power2(img, w, h, P);
+  for (int v = 0; v < h; v++)
+    for (int u = 0; u < w; u++) {
+      double l = log10(P[(size_t)v * w + u] + 1e-300);
+      L[(size_t)((v + h / 2) % h) * w + (size_t)((u + w / 2) % w)] = l;   /* DC to the centre */
+      if (u || v) top = fmax(top, l);
+    }
+  nl_image *im = nl_image_from_values(L, w, h, top - decades, top);
+  free(P);
+  free(L);
+  return im;
+}
+
+void nl_example_channel(const nl_image *im, int c, double *out)
+{
+  size_t n = (size_t)im->width * im->height;
+  for (size_t i = 0; i < n; i++) out[i] = im->data[i * im->channels + c];
+}
+
+void nl_example_correlation(const nl_image *im, double corr[3][3])
+{
+  double mean[3], M[3][3], cov[3][3] = {{0}};
+  int nch = colour_channels(im);
+  size_t n = (size_t)im->width * im->height;
+  nl_example_pca(im, mean, M, NULL);
+  for (size_t i = 0; i < n; i++)
+    for (int a = 0; a < nch; a++)
+      for (int b = 0; b < nch; b++)
+        cov[a][b] += (im->data[i * im->channels + a] - mean[a]) * (im->data[i * im->channels + b] - mean[b]);
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) {
+      double d = a < nch && b < nch ? sqrt(cov[a][a] * cov[b][b]) : 0;
+      corr[a][b] = a == b ? 1 : d > 0 ? cov[a][b] / d : 0;
+    }
+}

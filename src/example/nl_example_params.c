@@ -1,0 +1,265 @@
+/* Parameter files and morphing for nl_example (see nl_example.h).
+ *
+ * File format: one "key value..." line per field, '#' comments:
+ *   noiselab-example 1
+ *   channels 3            bands 9 (one per line)
+ *   tile 256
+ *   histogram 1
+ *   sigma2 0.28...
+ *   mean m0 m1 m2
+ *   matrix (channels^2 values, row-major)
+ *   hist0 .. hist{channels-1}        10 values each, non-decreasing
+ *   weights0 .. weights{channels-1}  `bands` values each, >= 0
+ * Numbers use the shortest form that reads back to the same bits, so
+ * save -> load -> synthesize equals synthesize.
+ */
+#include "example/nl_example.h"
+#include "table/nl_table.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void put_values(FILE *fp, const char *key, const double *v, int n)
+{
+  char buf[32];
+  fputs(key, fp);
+  for (int i = 0; i < n; i++) { nl_format_double(buf, v[i]); fprintf(fp, " %s", buf); }
+  fputc('\n', fp);
+}
+
+nl_status nl_example_params_save(const nl_example_params *p, const char *path, nl_error *err)
+{
+  nl_atomic_file af;
+  nl_status st = nl_atomic_open(&af, path, err);
+  if (st) return st;
+  int C = p->channels;
+  fprintf(af.fp, "# procedural texture by example (Lagae et al. 2010), %d parameters in the paper's count\n",
+          nl_example_param_count(p));
+  fprintf(af.fp, "noiselab-example 1\nchannels %d\nbands %d\ntile %d\nhistogram %d\n", C,
+          p->nbands, p->tile, p->histogram);
+  put_values(af.fp, "sigma2", &p->sigma2, 1);
+  put_values(af.fp, "mean", p->mean, C);
+  double m[9];
+  for (int r = 0; r < C; r++)
+    for (int c = 0; c < C; c++) m[r * C + c] = p->matrix[r][c];
+  put_values(af.fp, "matrix", m, C * C);
+  char key[32];
+  for (int c = 0; c < C; c++) {
+    snprintf(key, sizeof key, "hist%d", c);
+    put_values(af.fp, key, p->hist[c], NL_EXAMPLE_HIST);
+  }
+  for (int c = 0; c < C; c++) {
+    snprintf(key, sizeof key, "weights%d", c);
+    put_values(af.fp, key, p->w[c], p->nbands);
+  }
+  return nl_atomic_commit(&af, err);
+}
+
+/* ---- loading ------------------------------------------------------------- */
+
+#define MAX_FIELDS 32
+#define MAX_VALUES 32
+typedef struct {
+  char key[32];
+  int line, n;
+  double v[MAX_VALUES];
+} field;
+
+/* Splits one line into a key and numbers; NL_EFORMAT names the bad token. */
+static nl_status parse_line(const char *path, int lineno, char *s, field *f, nl_error *err)
+{
+  char *tok = strtok(s, " \t\r\n");
+  snprintf(f->key, sizeof f->key, "%s", tok);
+  f->line = lineno;
+  f->n = 0;
+  while ((tok = strtok(NULL, " \t\r\n"))) {
+    if (f->n == MAX_VALUES)
+      return nl_fail(err, NL_EFORMAT, "%s:%d: too many values for '%s'", path, lineno, f->key);
+    char *end;
+    errno = 0;
+    double v = strtod(tok, &end);
+    if (*end || end == tok || errno == ERANGE || !isfinite(v))
+      return nl_fail(err, NL_EFORMAT, "%s:%d: '%s' of '%s' is not a finite number", path, lineno,
+                     tok, f->key);
+    f->v[f->n++] = v;
+  }
+  return NL_OK;
+}
+
+static nl_status read_fields(const char *path, field *f, int *nf, nl_error *err)
+{
+  FILE *fp = fopen(path, "r");
+  if (!fp) return nl_fail(err, NL_EIO, "%s: cannot open: %s", path, strerror(errno));
+  char buf[4096];
+  int lineno = 0;
+  nl_status st = NL_OK;
+  *nf = 0;
+  while (!st && fgets(buf, sizeof buf, fp)) {
+    lineno++;
+    char *s = buf;
+    while (isspace((unsigned char)*s)) s++;
+    if (!*s || *s == '#') continue;
+    if (*nf == MAX_FIELDS) st = nl_fail(err, NL_EFORMAT, "%s:%d: too many lines", path, lineno);
+    else st = parse_line(path, lineno, s, &f[(*nf)++], err);
+  }
+  fclose(fp);
+  return st;
+}
+
+/* The values of `key`, which must hold exactly n numbers. */
+static nl_status need(const char *path, const field *f, int nf, const char *key, int n,
+                      const double **v, nl_error *err)
+{
+  for (int i = 0; i < nf; i++)
+    if (!strcmp(f[i].key, key)) {
+      if (f[i].n != n)
+        return nl_fail(err, NL_EFORMAT, "%s:%d: '%s' needs %d value%s, has %d", path, f[i].line,
+                       key, n, n == 1 ? "" : "s", f[i].n);
+      *v = f[i].v;
+      return NL_OK;
+    }
+  return nl_fail(err, NL_EFORMAT, "%s: missing field '%s'", path, key);
+}
+
+static nl_status need_int(const char *path, const field *f, int nf, const char *key, int lo,
+                          int hi, int *out, nl_error *err)
+{
+  const double *v = NULL;
+  nl_status st = need(path, f, nf, key, 1, &v, err);
+  if (st) return st;
+  if (v[0] != floor(v[0]) || v[0] < lo || v[0] > hi)
+    return nl_fail(err, NL_EFORMAT, "%s: '%s' must be an integer in %d..%d, is %g", path, key,
+                   lo, hi, v[0]);
+  *out = (int)v[0];
+  return NL_OK;
+}
+
+static nl_status check_arrays(const char *path, const nl_example_params *p, nl_error *err)
+{
+  if (!(p->sigma2 > 0)) return nl_fail(err, NL_EFORMAT, "%s: 'sigma2' must be positive", path);
+  if (p->tile % 2) return nl_fail(err, NL_EFORMAT, "%s: 'tile' must be even", path);
+  if (p->channels == 2) return nl_fail(err, NL_EFORMAT, "%s: 'channels' must be 1 or 3", path);
+  for (int c = 0; c < p->channels; c++) {
+    for (int j = 1; j < NL_EXAMPLE_HIST; j++)
+      if (p->hist[c][j] < p->hist[c][j - 1])
+        return nl_fail(err, NL_EFORMAT, "%s: 'hist%d' is not non-decreasing", path, c);
+    for (int k = 0; k < p->nbands; k++)
+      if (p->w[c][k] < 0) return nl_fail(err, NL_EFORMAT, "%s: 'weights%d' has a negative weight", path, c);
+  }
+  return NL_OK;
+}
+
+nl_status nl_example_params_load(const char *path, nl_example_params *p, nl_error *err)
+{
+  field f[MAX_FIELDS];
+  int nf, version;
+  const double *v = NULL;
+  nl_status st = read_fields(path, f, &nf, err);
+  if (st) return st;
+  memset(p, 0, sizeof *p);
+  if ((st = need_int(path, f, nf, "noiselab-example", 1, 1, &version, err)) ||
+      (st = need_int(path, f, nf, "channels", 1, 3, &p->channels, err)) ||
+      (st = need_int(path, f, nf, "bands", 1, NL_WAVELET_MAX_BANDS, &p->nbands, err)) ||
+      (st = need_int(path, f, nf, "tile", 8, 8192, &p->tile, err)) ||
+      (st = need_int(path, f, nf, "histogram", 0, 1, &p->histogram, err)) ||
+      (st = need(path, f, nf, "sigma2", 1, &v, err)))
+    return st;
+  p->sigma2 = v[0];
+  int C = p->channels;
+  if (C != 2) {
+    if ((st = need(path, f, nf, "mean", C, &v, err))) return st;
+    memcpy(p->mean, v, (size_t)C * sizeof *v);
+    if ((st = need(path, f, nf, "matrix", C * C, &v, err))) return st;
+    for (int r = 0; r < C; r++)
+      for (int c = 0; c < C; c++) p->matrix[r][c] = v[r * C + c];
+    char key[32];
+    for (int c = 0; c < C; c++) {
+      snprintf(key, sizeof key, "hist%d", c);
+      if ((st = need(path, f, nf, key, NL_EXAMPLE_HIST, &v, err))) return st;
+      memcpy(p->hist[c], v, NL_EXAMPLE_HIST * sizeof *v);
+      snprintf(key, sizeof key, "weights%d", c);
+      if ((st = need(path, f, nf, key, p->nbands, &v, err))) return st;
+      memcpy(p->w[c], v, (size_t)p->nbands * sizeof *v);
+    }
+  }
+  return check_arrays(path, p, err);
+}
+
+/* ---- morphing (Fig. 12) ---------------------------------------------------- */
+
+/* Rotation matrix -> unit quaternion (w, x, y, z), Shepperd's branches. */
+static void mat_to_quat(const double m[3][3], double q[4])
+{
+  double tr = m[0][0] + m[1][1] + m[2][2], s;
+  if (tr > 0) {
+    s = 2 * sqrt(tr + 1);
+    q[0] = s / 4; q[1] = (m[2][1] - m[1][2]) / s; q[2] = (m[0][2] - m[2][0]) / s; q[3] = (m[1][0] - m[0][1]) / s;
+  } else if (m[0][0] > m[1][1] && m[0][0] > m[2][2]) {
+    s = 2 * sqrt(1 + m[0][0] - m[1][1] - m[2][2]);
+    q[0] = (m[2][1] - m[1][2]) / s; q[1] = s / 4; q[2] = (m[0][1] + m[1][0]) / s; q[3] = (m[0][2] + m[2][0]) / s;
+  } else if (m[1][1] > m[2][2]) {
+    s = 2 * sqrt(1 + m[1][1] - m[0][0] - m[2][2]);
+    q[0] = (m[0][2] - m[2][0]) / s; q[1] = (m[0][1] + m[1][0]) / s; q[2] = s / 4; q[3] = (m[1][2] + m[2][1]) / s;
+  } else {
+    s = 2 * sqrt(1 + m[2][2] - m[0][0] - m[1][1]);
+    q[0] = (m[1][0] - m[0][1]) / s; q[1] = (m[0][2] + m[2][0]) / s; q[2] = (m[1][2] + m[2][1]) / s; q[3] = s / 4;
+  }
+}
+
+static void quat_to_mat(const double q[4], double m[3][3])
+{
+  double w = q[0], x = q[1], y = q[2], z = q[3];
+  m[0][0] = 1 - 2 * (y * y + z * z); m[0][1] = 2 * (x * y - z * w); m[0][2] = 2 * (x * z + y * w);
+  m[1][0] = 2 * (x * y + z * w); m[1][1] = 1 - 2 * (x * x + z * z); m[1][2] = 2 * (y * z - x * w);
+  m[2][0] = 2 * (x * z - y * w); m[2][1] = 2 * (y * z + x * w); m[2][2] = 1 - 2 * (x * x + y * y);
+}
+
+/* Spherical linear interpolation along the shorter arc (q and -q are the
+ * same rotation); nearly equal quaternions fall back to normalised lerp. */
+static void slerp(const double a[4], const double b0[4], double t, double q[4])
+{
+  double b[4], dot = 0;
+  for (int i = 0; i < 4; i++) dot += a[i] * b0[i];
+  for (int i = 0; i < 4; i++) b[i] = dot < 0 ? -b0[i] : b0[i];
+  dot = fabs(dot);
+  double wa = 1 - t, wb = t;
+  if (dot < 0.9995) {
+    double th = acos(dot), s = sin(th);
+    wa = sin((1 - t) * th) / s;
+    wb = sin(t * th) / s;
+  }
+  double norm = 0;
+  for (int i = 0; i < 4; i++) { q[i] = wa * a[i] + wb * b[i]; norm += q[i] * q[i]; }
+  for (int i = 0; i < 4; i++) q[i] /= sqrt(norm);
+}
+
+nl_status nl_example_morph(const nl_example_params *a, const nl_example_params *b, double t,
+                           nl_example_params *out, nl_error *err)
+{
+  if (a->channels != b->channels)
+    return nl_fail(err, NL_EINVAL, "cannot morph %d channels into %d", a->channels, b->channels);
+  if (a->nbands != b->nbands)
+    return nl_fail(err, NL_EINVAL, "cannot morph %d bands into %d (exemplars of different sizes)",
+                   a->nbands, b->nbands);
+  if (a->histogram != b->histogram)
+    return nl_fail(err, NL_EINVAL, "cannot morph with and without histogram matching");
+  nl_example_params r = *a;
+  r.sigma2 = (1 - t) * a->sigma2 + t * b->sigma2;
+  for (int c = 0; c < 3; c++) {
+    r.mean[c] = (1 - t) * a->mean[c] + t * b->mean[c];
+    for (int j = 0; j < NL_EXAMPLE_HIST; j++) r.hist[c][j] = (1 - t) * a->hist[c][j] + t * b->hist[c][j];
+    for (int k = 0; k < a->nbands; k++) r.w[c][k] = (1 - t) * a->w[c][k] + t * b->w[c][k];
+  }
+  if (a->channels == 3) {
+    double qa[4], qb[4], q[4];
+    mat_to_quat(a->matrix, qa);
+    mat_to_quat(b->matrix, qb);
+    slerp(qa, qb, t, q);
+    quat_to_mat(q, r.matrix);
+  }
+  *out = r;
+  return NL_OK;
+}

@@ -1,0 +1,238 @@
+#include "wavelet/nl_wavelet.h"
+
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Cook & DeRose's analysis (downsampling) filter, appendix: 16 printed
+ * values, mirrored. Centred so that tap j in [-16, 15] is A[j + 16]. */
+static const double A_HALF[16] = {
+  0.000334, -0.001528, 0.000410, 0.003545, -0.000938, -0.008233, 0.002172, 0.019120,
+  -0.005040, -0.044412, 0.011655, 0.103311, -0.025936, -0.243780, 0.033979, 0.655340};
+#define ARAD 16
+
+static double afilter(int j)   /* j in [-ARAD, ARAD) */
+{
+  int k = j + ARAD;
+  return k < ARAD ? A_HALF[k] : A_HALF[2 * ARAD - 1 - k];
+}
+
+static long wrap(long i, long n) { long r = i % n; return r < 0 ? r + n : r; }
+
+nl_wavelet_tile *nl_wavelet_tile_alloc(int dim, int n)
+{
+  if ((dim != 2 && dim != 3) || n < 8 || n % 2 || n > (dim == 2 ? 8192 : 512)) return NULL;
+  nl_wavelet_tile *t = nl_xmalloc(sizeof *t);
+  t->dim = dim;
+  t->n = n;
+  size_t total = (size_t)n * n * (dim == 3 ? (size_t)n : 1);
+  t->data = nl_xcalloc(total, sizeof *t->data);
+  return t;
+}
+
+void nl_wavelet_tile_free(nl_wavelet_tile *t)
+{
+  if (!t) return;
+  free(t->data);
+  free(t);
+}
+
+void nl_wavelet_coarse_line(const float *line, size_t stride, int n, double *coarse)
+{
+  /* Downsample: the appendix's loop is k <= 2i + ARAD, one tap too many;
+   * the filter has taps -ARAD .. ARAD-1. */
+  int h = n / 2;
+  double down[4096];
+  for (int i = 0; i < h; i++) {
+    double s = 0;
+    for (int k = 2 * i - ARAD; k < 2 * i + ARAD; k++)
+      s += afilter(k - 2 * i) * line[(size_t)wrap(k, n) * stride];
+    down[i] = s;
+  }
+  /* Upsample with {1/4, 3/4, 3/4, 1/4} centred at 2: p[i - 2k]. */
+  static const double P[4] = {0.25, 0.75, 0.75, 0.25};
+  for (int i = 0; i < n; i++) {
+    double s = 0;
+    for (int k = i / 2; k <= i / 2 + 1; k++) s += P[i - 2 * k + 2] * down[wrap(k, h)];
+    coarse[i] = s;
+  }
+}
+
+/* Replaces every line along one axis of `a` by its coarse part. */
+static void coarse_axis(float *a, int n, int dim, int axis)
+{
+  size_t stride = axis == 0 ? 1 : axis == 1 ? (size_t)n : (size_t)n * n;
+  size_t lines = dim == 2 ? (size_t)n : (size_t)n * n;
+  double *c = nl_xmalloc((size_t)n * sizeof *c);
+  for (size_t l = 0; l < lines; l++) {
+    /* Line l starts at the l-th index with the axis coordinate zero. */
+    size_t lo = l % stride, hi = l / stride;
+    float *line = a + lo + hi * stride * n;
+    nl_wavelet_coarse_line(line, stride, n, c);
+    for (int i = 0; i < n; i++) line[(size_t)i * stride] = (float)c[i];
+  }
+  free(c);
+}
+
+void nl_wavelet_tile_seed(nl_wavelet_tile *t, unsigned long seed)
+{
+  int n = t->n, d = t->dim;
+  size_t total = (size_t)n * n * (d == 3 ? (size_t)n : 1);
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, seed);
+  for (size_t i = 0; i < total; i++) t->data[i] = (float)gsl_ran_gaussian_ziggurat(rng, 1.0);
+  gsl_rng_free(rng);
+
+  /* Steps 2-3: coarse = (UD)_z (UD)_y (UD)_x noise; keep noise - coarse. */
+  float *coarse = nl_xmalloc(total * sizeof *coarse);
+  memcpy(coarse, t->data, total * sizeof *coarse);
+  for (int axis = 0; axis < d; axis++) coarse_axis(coarse, n, d, axis);
+  for (size_t i = 0; i < total; i++) t->data[i] -= coarse[i];
+
+  /* Step 4: add the copy shifted by an odd offset along every axis. */
+  long off = n / 2;
+  if (off % 2 == 0) off++;
+  float *shifted = coarse;
+  for (size_t i = 0; i < total; i++) {
+    long x = (long)(i % n), y = (long)((i / n) % n), z = d == 3 ? (long)(i / ((size_t)n * n)) : 0;
+    size_t j = (size_t)wrap(x + off, n) + (size_t)wrap(y + off, n) * n
+             + (d == 3 ? (size_t)wrap(z + off, n) * n * n : 0);
+    shifted[i] = t->data[j];
+  }
+  for (size_t i = 0; i < total; i++) t->data[i] += shifted[i];
+  free(coarse);
+}
+
+/* Quadratic B-spline weights and first lattice index along one axis. */
+static long bspline(double p, double w[3])
+{
+  double mid = ceil(p - 0.5), t = mid - (p - 0.5);
+  w[0] = t * t / 2;
+  w[2] = (1 - t) * (1 - t) / 2;
+  w[1] = 1 - w[0] - w[2];
+  return (long)mid - 1;
+}
+
+/* The tile collapsed across y (and z) at a fixed point: column c of the
+ * result is sum_z wz sum_y wy tile[z][y][c]. Point and row evaluation both
+ * go through it, so they agree bit for bit. */
+typedef struct { const float *rows[9]; double wt[9]; int nrows; } collapse;
+
+static void collapse_init(const nl_wavelet_tile *t, double y, double z, collapse *c)
+{
+  int n = t->n;
+  double wy[3], wz[3] = {1, 0, 0};
+  long y0 = bspline(y, wy), z0 = t->dim == 3 ? bspline(z, wz) : 0;
+  c->nrows = 0;
+  for (int jz = 0; jz < (t->dim == 3 ? 3 : 1); jz++)
+    for (int jy = 0; jy < 3; jy++) {
+      size_t base = (size_t)wrap(y0 + jy, n) * n
+                  + (t->dim == 3 ? (size_t)wrap(z0 + jz, n) * n * n : 0);
+      c->rows[c->nrows] = t->data + base;
+      c->wt[c->nrows++] = t->dim == 3 ? wz[jz] * wy[jy] : wy[jy];
+    }
+}
+
+static double collapse_column(const collapse *c, long col)
+{
+  double s = 0;
+  for (int r = 0; r < c->nrows; r++) s += c->wt[r] * c->rows[r][col];
+  return s;
+}
+
+static double eval_point(const nl_wavelet_tile *t, double x, double y, double z)
+{
+  collapse c;
+  collapse_init(t, y, z, &c);
+  double wx[3];
+  long x0 = bspline(x, wx);
+  double s = 0;
+  for (int j = 0; j < 3; j++) s += wx[j] * collapse_column(&c, wrap(x0 + j, t->n));
+  return s;
+}
+
+double nl_wavelet_eval2(const nl_wavelet_tile *t, double x, double y) { return eval_point(t, x, y, 0); }
+double nl_wavelet_eval3(const nl_wavelet_tile *t, double x, double y, double z) { return eval_point(t, x, y, z); }
+
+void nl_wavelet_row(const nl_wavelet_tile *t, double x0, double dx, double y, double z,
+                    size_t count, double weight, double *out)
+{
+  int n = t->n;
+  collapse c;
+  collapse_init(t, y, z, &c);
+  /* Collapse the whole period once, plus two wrapped columns so that the
+   * three taps at i, i+1, i+2 never need a modulo. */
+  double *line = nl_xmalloc((size_t)(n + 2) * sizeof *line);
+  for (int i = 0; i < n; i++) line[i] = collapse_column(&c, i);
+  line[n] = line[0];
+  line[n + 1] = line[1];
+  for (size_t k = 0; k < count; k++) {
+    double wx[3];
+    long i = wrap(bspline(x0 + (double)k * dx, wx), n);
+    out[k] += weight * (wx[0] * line[i] + wx[1] * line[i + 1] + wx[2] * line[i + 2]);
+  }
+  free(line);
+}
+
+double nl_wavelet_tile_variance(const nl_wavelet_tile *t, int per_unit)
+{
+  int m = t->n * per_unit;
+  double d = 1.0 / per_unit, sum = 0;
+  double *row = nl_xmalloc((size_t)m * sizeof *row);
+  int planes = t->dim == 3 ? m : 1;
+  for (int iz = 0; iz < planes; iz++)
+    for (int iy = 0; iy < m; iy++) {
+      memset(row, 0, (size_t)m * sizeof *row);
+      nl_wavelet_row(t, 0.5 * d, d, (iy + 0.5) * d, (iz + 0.5) * d, (size_t)m, 1.0, row);
+      for (int ix = 0; ix < m; ix++) sum += row[ix] * row[ix];
+    }
+  free(row);
+  return sum / ((double)m * m * planes);
+}
+
+double nl_wavelet_lattice_variance(const nl_wavelet_tile *t, double frac)
+{
+  int n = t->n, planes = t->dim == 3 ? n : 1;
+  double *row = nl_xmalloc((size_t)n * sizeof *row), sum = 0;
+  for (int iz = 0; iz < planes; iz++)
+    for (int iy = 0; iy < n; iy++) {
+      memset(row, 0, (size_t)n * sizeof *row);
+      nl_wavelet_row(t, frac, 1.0, iy + frac, iz + frac, (size_t)n, 1.0, row);
+      for (int ix = 0; ix < n; ix++) sum += row[ix] * row[ix];
+    }
+  free(row);
+  return sum / ((double)n * n * planes);
+}
+
+nl_status nl_wavelet_bands_init(nl_wavelet_bands *b, int nbands, const double *w,
+                                int n, unsigned long seed, nl_error *err)
+{
+  if (nbands < 1 || nbands > NL_WAVELET_MAX_BANDS)
+    return nl_fail(err, NL_EINVAL, "band count %d outside 1..%d", nbands, NL_WAVELET_MAX_BANDS);
+  memset(b, 0, sizeof *b);
+  b->nbands = nbands;
+  /* A stream of its own, so that offsets do not repeat the tile's values. */
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, seed ^ 0x5bd1e995UL);
+  for (int k = 0; k < nbands; k++) {
+    b->w[k] = w ? w[k] : 1.0;
+    for (int a = 0; a < 3; a++) b->off[k][a] = n * gsl_rng_uniform(rng);
+  }
+  gsl_rng_free(rng);
+  return NL_OK;
+}
+
+void nl_wavelet_bands_grid(const nl_wavelet_tile *t, const nl_wavelet_bands *b, int w, int h,
+                           double z, double scale, double *out)
+{
+  memset(out, 0, (size_t)w * h * sizeof *out);
+  for (int y = 0; y < h; y++)
+    for (int k = 0; k < b->nbands; k++) {
+      if (b->w[k] == 0) continue;
+      double s = scale * ldexp(1.0, -k);
+      nl_wavelet_row(t, 0.5 * s + b->off[k][0], s, (y + 0.5) * s + b->off[k][1],
+                     z * s + b->off[k][2], (size_t)w, b->w[k], out + (size_t)y * w);
+    }
+}

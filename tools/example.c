@@ -1,0 +1,161 @@
+/* noiselab example - procedural textures by example (Lagae et al. 2010).
+ *
+ *   noiselab example analyse IMAGE -o PARAMS [--rgb] [--no-histogram]
+ *   noiselab example synthesize PARAMS --size N [--height H] [--seed S]
+ *                    [--scale S] [--solid [--z Z]] -o OUT.png|.exr|.tif
+ *   noiselab example morph PARAMS1 PARAMS2 --t T -o OUT.params
+ *                    (or with --size N [--seed S]: -o OUT.png, the image)
+ * Errors: one line on stderr naming the input and the problem, exit 2.
+ * Outputs are written atomically (temporary file, then rename).
+ */
+#include "example/nl_example.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void usage(FILE *fp)
+{
+  fputs("usage: noiselab example analyse IMAGE -o PARAMS [--rgb] [--no-histogram]\n"
+        "       noiselab example synthesize PARAMS --size N [--height H] [--seed S] [--scale S]\n"
+        "                        [--solid [--z Z]] -o OUT.png|.exr|.tif\n"
+        "       noiselab example morph PARAMS1 PARAMS2 --t T -o OUT.params\n"
+        "                        [--size N [--seed S]  (then OUT is an image)]\n"
+        "  analyse     fit the 66-parameter procedural texture of an exemplar (grey, RGB, RGBA;\n"
+        "              8/16-bit or float; at least 16 x 16 pixels)\n"
+        "  --rgb       no PCA colour decorrelation;  --no-histogram  no histogram matching\n"
+        "  synthesize  evaluate it on an N x H grid (pixels of the exemplar's size times --scale);\n"
+        "              --solid uses 3D wavelet noise, the slice at depth --z\n"
+        "  morph       interpolate two parameter files at t in [0, 1] (matrix by quaternion slerp)\n",
+        fp);
+}
+
+static void die(const char *msg) __attribute__((noreturn));
+static void die(const char *msg)
+{
+  fprintf(stderr, "noiselab example: %s\n", msg);
+  exit(2);
+}
+
+static void check(nl_status st, const nl_error *err) { if (st) die(err->msg); }
+
+typedef struct {
+  const char *pos[2];
+  int npos;
+  const char *out;
+  long size, height, seed;
+  double t, scale, z;
+  int rgb, nohist, solid, have_t, have_size;
+} args;
+
+static void parse(int argc, char **argv, args *a)
+{
+  nl_error err;
+  memset(a, 0, sizeof *a);
+  a->seed = 1;
+  a->scale = 1;
+  for (int i = 2; i < argc; i++) {
+    const char *s = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+    int takes = !strcmp(s, "-o") || !strcmp(s, "--size") || !strcmp(s, "--height") ||
+                !strcmp(s, "--seed") || !strcmp(s, "--t") || !strcmp(s, "--scale") || !strcmp(s, "--z");
+    if (takes && !v) { snprintf(err.msg, sizeof err.msg, "%s needs a value", s); die(err.msg); }
+    if (!strcmp(s, "-o")) a->out = v;
+    else if (!strcmp(s, "--size")) { check(nl_parse_long("--size", v, 1, 32768, &a->size, &err), &err); a->have_size = 1; }
+    else if (!strcmp(s, "--height")) check(nl_parse_long("--height", v, 1, 32768, &a->height, &err), &err);
+    else if (!strcmp(s, "--seed")) check(nl_parse_long("--seed", v, 0, 4294967295L, &a->seed, &err), &err);
+    else if (!strcmp(s, "--t")) { check(nl_parse_double("--t", v, 0, 1, &a->t, &err), &err); a->have_t = 1; }
+    else if (!strcmp(s, "--scale")) check(nl_parse_double("--scale", v, 1e-6, 1e6, &a->scale, &err), &err);
+    else if (!strcmp(s, "--z")) check(nl_parse_double("--z", v, -1e9, 1e9, &a->z, &err), &err);
+    else if (!strcmp(s, "--rgb")) { a->rgb = 1; continue; }
+    else if (!strcmp(s, "--no-histogram")) { a->nohist = 1; continue; }
+    else if (!strcmp(s, "--solid")) { a->solid = 1; continue; }
+    else if (!strcmp(s, "-h") || !strcmp(s, "--help")) { usage(stdout); exit(0); }
+    else if (s[0] == '-' && s[1]) { snprintf(err.msg, sizeof err.msg, "unknown option '%s' (try --help)", s); die(err.msg); }
+    else if (a->npos < 2) { a->pos[a->npos++] = s; continue; }
+    else { snprintf(err.msg, sizeof err.msg, "unexpected argument '%s'", s); die(err.msg); }
+    i++;
+  }
+  if (!a->out) die("-o OUT is required");
+}
+
+static void write_image(const nl_image *im, const char *path)
+{
+  nl_error err;
+  check(nl_image_write(im, path, 16, &err), &err);
+}
+
+static int analyse(const args *a)
+{
+  nl_error err;
+  nl_image *im;
+  if (a->npos != 1) die("analyse takes one IMAGE");
+  check(nl_image_read(a->pos[0], &im, &err), &err);
+  nl_example_options o = {!a->rgb, !a->nohist, 0, 0};
+  nl_example_params p;
+  if (nl_example_analyse(im, &o, &p, &err)) {
+    char msg[NL_ERROR_LEN + 300];
+    snprintf(msg, sizeof msg, "%s: %s", a->pos[0], err.msg);
+    die(msg);
+  }
+  check(nl_example_params_save(&p, a->out, &err), &err);
+  nl_image_free(im);
+  return 0;
+}
+
+static void synth_write(const nl_example_params *p, const args *a)
+{
+  nl_error err;
+  nl_image *im;
+  if (!a->have_size) die("--size N is required");
+  nl_example_synth_options so = {a->scale, a->solid, a->z, NL_SPLINE_STEFFEN};
+  check(nl_example_synthesize(p, (int)a->size, (int)(a->height ? a->height : a->size),
+                              (unsigned long)a->seed, &so, &im, &err), &err);
+  write_image(im, a->out);
+  nl_image_free(im);
+}
+
+static int synthesize(const args *a)
+{
+  nl_error err;
+  nl_example_params p;
+  if (a->npos != 1) die("synthesize takes one PARAMS file");
+  check(nl_example_params_load(a->pos[0], &p, &err), &err);
+  synth_write(&p, a);
+  return 0;
+}
+
+static int morph(const args *a)
+{
+  nl_error err;
+  nl_example_params p1, p2, m;
+  if (a->npos != 2) die("morph takes two PARAMS files");
+  if (!a->have_t) die("--t T is required");
+  check(nl_example_params_load(a->pos[0], &p1, &err), &err);
+  check(nl_example_params_load(a->pos[1], &p2, &err), &err);
+  if (nl_example_morph(&p1, &p2, a->t, &m, &err)) {
+    char msg[NL_ERROR_LEN + 600];
+    snprintf(msg, sizeof msg, "%s, %s: %s", a->pos[0], a->pos[1], err.msg);
+    die(msg);
+  }
+  if (a->have_size) synth_write(&m, a);
+  else check(nl_example_params_save(&m, a->out, &err), &err);
+  return 0;
+}
+
+int main(int argc, char **argv)
+{
+  if (argc < 2) { usage(stderr); return 2; }
+  const char *cmd = argv[1];
+  if (!strcmp(cmd, "-h") || !strcmp(cmd, "--help")) { usage(stdout); return 0; }
+  args a;
+  if (strcmp(cmd, "analyse") && strcmp(cmd, "analyze") && strcmp(cmd, "synthesize") &&
+      strcmp(cmd, "synthesise") && strcmp(cmd, "morph")) {
+    char msg[300];
+    snprintf(msg, sizeof msg, "unknown command '%.200s' (analyse, synthesize, morph)", cmd);
+    die(msg);
+  }
+  parse(argc, argv, &a);
+  if (!strncmp(cmd, "analy", 5)) return analyse(&a);
+  if (!strncmp(cmd, "synthes", 7)) return synthesize(&a);
+  return morph(&a);
+}
