@@ -12,6 +12,8 @@ mkdir -p "$out"
 "$render" gctbf --terms "F2 - F1 - F1F1" --size 32 --normalize range -o "$out/g.png"
 "$render" fbm --basis gctbf --octaves 3 --size 16 -o "$out/gf.tsv"
 "$expect" "$out/gf.tsv" rows=256
+"$render" wavelet --size 16 --tile 16 -o "$out/w.tsv"
+"$expect" "$out/w.tsv" rows=256 'value<=1.5' 'value>=-1.5'
 for f in fbm.png t.exr m.tif g.png; do [ -s "$out/$f" ]; done
 # Same seed, same bytes.
 "$render" noise2 --size 16 --seed 3 -o "$out/n2.tsv"
@@ -31,6 +33,7 @@ bad "--octaves: 31 is outside" fbm --octaves 31 -o "$out/x.png"
 bad "--gain: 'abc' is not a number" fbm --gain abc -o "$out/x.png"
 bad "not writable" fbm --size 8 -o /nonexistent/dir/x.png
 bad "no output file" fbm --size 8
+bad "must be even" wavelet --tile 9 -o "$out/x.png"
 bad "lambda must be in" gctbf --lambda -1 -o "$out/x.png"
 bad "F index must be in 1..4" gctbf --terms F5 -o "$out/x.png"
 bad "expected a number" gctbf --terms "abc*F1" -o "$out/x.png"

@@ -13,17 +13,18 @@
 #include "noise/nl_noise.h"
 #include "table/nl_table.h"
 #include "texture/nl_texture.h"
+#include "wavelet/nl_wavelet.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
-static const char *NOISES[] = {"noise2", "improved", "gctbf", "fractal", "turbulence", "fbm", "marble", NULL};
+static const char *NOISES[] = {"noise2", "improved", "gctbf", "wavelet", "fractal", "turbulence", "fbm", "marble", NULL};
 
 typedef struct {
   const char *noise, *out, *basis, *normalize, *terms, *count;
-  long size, octaves, seed, table_size, bits, points;
+  long size, octaves, seed, table_size, bits, points, tile;
   double extent, x0, y0, z, gain, lacunarity, amplitude, stripes, lambda;
   int reference;
 } options;
@@ -34,6 +35,7 @@ static void usage(void)
          "NOISE: noise2      2D gradient-table noise (Cheng 2009 eq. 3.1-3.2)\n"
          "       improved    Perlin's improved 3D noise, on the plane z\n"
          "       gctbf       Qin & Yang's generalized cellular basis sum c_i F_i + c_ij F_i F_j\n"
+         "       wavelet     Cook & DeRose's wavelet noise (3D tile, plane z)\n"
          "       fractal     sum_j noise(2^j p) / 2^j            (Shaffer)\n"
          "       turbulence  sum_j |noise(2^j p)| / 2^j\n"
          "       fbm         sum_j gain^j noise(lacunarity^j p)\n"
@@ -44,7 +46,8 @@ static void usage(void)
          "  --x0 X --y0 Y --z Z  window origin and plane (0 0 0.5)\n"
          "  --octaves N          1..30 (6)          --gain G (0.5)   --lacunarity L (2)\n"
          "  --amplitude A        marble displacement a (0.5)   --stripes K per unit (1)\n"
-         "  --basis improved|table|gctbf   noise under the sums (improved)\n"
+         "  --basis improved|table|gctbf|wavelet   noise under the sums (improved)\n"
+         "  --tile N             wavelet tile period, even, 8..256 (64)\n"
          "  --terms EXPR         GCTBF, e.g. \"F2 - F1 - F1F1\" or \"0.5*F1 + 2 F1*F2\" (F1)\n"
          "  --lambda L           mean feature points per unit cube (4)   --points M cap (50)\n"
          "  --count inverse|closest  feature-point count rule (inverse: inverse-CDF sampling;\n"
@@ -78,7 +81,7 @@ static int one_of(const char *s, const char *const *list)
 static void parse(int argc, char **argv, options *o)
 {
   *o = (options){.basis = "improved", .normalize = "bound", .terms = "F1", .count = "inverse",
-                 .points = 50, .lambda = 4, .size = 512, .octaves = 6, .seed = 1,
+                 .points = 50, .tile = 64, .lambda = 4, .size = 512, .octaves = 6, .seed = 1,
                  .table_size = 512, .bits = 0, .extent = 4, .z = 0.5, .gain = 0.5, .lacunarity = 2,
                  .amplitude = 0.5, .stripes = 1};
   for (int i = 1; i < argc; i++) {
@@ -108,6 +111,7 @@ static void parse(int argc, char **argv, options *o)
     else if (!strcmp(a, "--stripes")) num(a, v, 1e-9, 1e9, &o->stripes);
     else if (!strcmp(a, "--basis")) o->basis = v;
     else if (!strcmp(a, "--terms")) o->terms = v;
+    else if (!strcmp(a, "--tile")) integer(a, v, 8, 256, &o->tile);
     else if (!strcmp(a, "--count")) o->count = v;
     else if (!strcmp(a, "--lambda")) num(a, v, -1e9, 1e9, &o->lambda);
     else if (!strcmp(a, "--points")) integer(a, v, -1000000, 1000000, &o->points);
@@ -116,11 +120,11 @@ static void parse(int argc, char **argv, options *o)
   }
   char m[512];
   if (!o->noise) fail("no NOISE given (see --help)");
-  if (!one_of(o->noise, NOISES)) { snprintf(m, sizeof m, "%s: unknown noise (noise2, improved, gctbf, fractal, turbulence, fbm, marble)", o->noise); fail(m); }
+  if (!one_of(o->noise, NOISES)) { snprintf(m, sizeof m, "%s: unknown noise (noise2, improved, gctbf, wavelet, fractal, turbulence, fbm, marble)", o->noise); fail(m); }
   if (!o->out) fail("-o: no output file given");
-  const char *bases[] = {"improved", "table", "gctbf", NULL}, *norms[] = {"bound", "range", NULL};
+  const char *bases[] = {"improved", "table", "gctbf", "wavelet", NULL}, *norms[] = {"bound", "range", NULL};
   const char *counts[] = {"inverse", "closest", NULL};
-  if (!one_of(o->basis, bases)) { snprintf(m, sizeof m, "--basis: '%s' is not improved, table or gctbf", o->basis); fail(m); }
+  if (!one_of(o->basis, bases)) { snprintf(m, sizeof m, "--basis: '%s' is not improved, table, gctbf or wavelet", o->basis); fail(m); }
   if (!one_of(o->count, counts)) { snprintf(m, sizeof m, "--count: '%s' is not inverse or closest", o->count); fail(m); }
   if (!one_of(o->normalize, norms)) { snprintf(m, sizeof m, "--normalize: '%s' is not bound or range", o->normalize); fail(m); }
   if (o->bits && o->bits != 8 && o->bits != 16 && o->bits != 32) { snprintf(m, sizeof m, "--bits: %ld is not 8, 16 or 32", o->bits); fail(m); }
@@ -155,7 +159,9 @@ static double *evaluate(const options *o, double *lo, double *hi)
   nl_gctbf_basis gb;
   nl_perm3 p;
   nl_basis b;
-  int single = !strcmp(o->noise, "noise2") || !strcmp(o->noise, "improved") || !strcmp(o->noise, "gctbf");
+  nl_wavelet_tile *tile = NULL;
+  int single = !strcmp(o->noise, "noise2") || !strcmp(o->noise, "improved") || !strcmp(o->noise, "gctbf")
+               || !strcmp(o->noise, "wavelet");
   const char *kind = single ? o->noise : o->basis;
   if (!strcmp(kind, "noise2") || !strcmp(kind, "table")) {
     t = nl_grad2_alloc((size_t)o->table_size);
@@ -168,6 +174,11 @@ static double *evaluate(const options *o, double *lo, double *hi)
     gb.cell = cell;
     if (nl_gctbf_parse(o->terms, &gb.g, &err)) { char m[600]; snprintf(m, sizeof m, "--terms: %s", err.msg); fail(m); }
     b = nl_basis_gctbf(&gb);
+  } else if (!strcmp(kind, "wavelet")) {
+    if (o->tile % 2) fail("--tile: the wavelet tile period must be even");
+    tile = nl_wavelet_tile_alloc(3, (int)o->tile);
+    nl_wavelet_tile_seed(tile, (unsigned long)o->seed);
+    b = nl_basis_wavelet(tile);
   } else {
     if (o->reference) nl_perm3_reference(&p); else nl_perm3_seed(&p, (unsigned long)o->seed);
     b = nl_basis_perm3(&p);
@@ -182,6 +193,7 @@ static double *evaluate(const options *o, double *lo, double *hi)
   else { nl_fractal_grid(&b, &oct, &win, v); *lo = oct.turbulence ? 0 : -B; *hi = B; }
   nl_grad2_free(t);
   nl_cellular_free(cell);
+  nl_wavelet_tile_free(tile);
   return v;
 }
 

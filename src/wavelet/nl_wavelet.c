@@ -236,3 +236,19 @@ void nl_wavelet_bands_grid(const nl_wavelet_tile *t, const nl_wavelet_bands *b, 
                      z * s + b->off[k][2], (size_t)w, b->w[k], out + (size_t)y * w);
     }
 }
+
+static void wavelet_basis_row(const void *ctx, double x0, double dx, double y, double z,
+                              size_t n, double *out)
+{
+  for (size_t k = 0; k < n; k++) out[k] = 0;
+  nl_wavelet_row(ctx, x0, dx, y, z, n, 1.0, out);
+}
+
+nl_basis nl_basis_wavelet(const nl_wavelet_tile *t)
+{
+  size_t n = (size_t)t->n * t->n * (t->dim == 3 ? (size_t)t->n : 1);
+  double m = 0;
+  for (size_t k = 0; k < n; k++) m = fmax(m, fabs(t->data[k]));
+  nl_basis b = {wavelet_basis_row, t, m};
+  return b;
+}

@@ -50,6 +50,7 @@
 #define NL_WAVELET_H
 
 #include "base/nl_base.h"
+#include "noise/nl_noise.h"
 
 #include <stddef.h>
 
@@ -76,6 +77,11 @@ double nl_wavelet_eval3(const nl_wavelet_tile *t, double x, double y, double z);
 /* out[k] += weight * N(x0 + k dx, y[, z]), k < count. 2D tiles ignore z. */
 void nl_wavelet_row(const nl_wavelet_tile *t, double x0, double dx, double y, double z,
                     size_t count, double weight, double *out);
+
+/* The tile as a basis for sums of octaves and rendering (nl_noise.h). Its
+ * bound is max |coefficient|: quadratic B-spline weights are non-negative
+ * and sum to 1. The tile must outlive the basis. */
+nl_basis nl_basis_wavelet(const nl_wavelet_tile *t);
 
 /* <N^2> on a grid of per_unit samples per unit and axis over one period
  * (midpoints, (i + 1/2) / per_unit). Wavelet noise is not stationary: its
