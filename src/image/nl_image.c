@@ -91,6 +91,24 @@ void nl_image_text(nl_image *im, int x, int y, int scale, const char *text, cons
   free(vb);
 }
 
+nl_image *nl_image_downsample(const nl_image *im, int f)
+{
+  int w = im->width / f, h = im->height / f, c = im->channels;
+  if (w < 1) w = 1;
+  if (h < 1) h = 1;
+  nl_image *o = nl_image_alloc(w, h, c);
+  for (int y = 0; y < h; y++)
+    for (int x = 0; x < w; x++) {
+      float *d = nl_image_pixel(o, x, y);
+      for (int dy = 0; dy < f && y * f + dy < im->height; dy++)
+        for (int dx = 0; dx < f && x * f + dx < im->width; dx++) {
+          const float *s = nl_image_pixel(im, x * f + dx, y * f + dy);
+          for (int k = 0; k < c; k++) d[k] += s[k] / (float)(f * f);
+        }
+    }
+  return o;
+}
+
 nl_image *nl_montage(const nl_image *const *images, const char *const *labels, int n,
                      int cols, const char *title)
 {
@@ -99,12 +117,22 @@ nl_image *nl_montage(const nl_image *const *images, const char *const *labels, i
     if (images[i]->width > cw) cw = images[i]->width;
     if (images[i]->height > chh) chh = images[i]->height;
   }
+  if (cols < 1) cols = 1;
+  if (cols > n) cols = n;
+  int f = 1;
+  while (pad + cols * (cw / f + pad) > NL_MONTAGE_MAX_WIDTH && cw / f > 64) f++;
+  if (f > 1) {
+    nl_image **small = nl_xmalloc((size_t)n * sizeof *small);
+    for (int i = 0; i < n; i++) small[i] = nl_image_downsample(images[i], f);
+    nl_image *m = nl_montage((const nl_image *const *)small, labels, n, cols, title);
+    for (int i = 0; i < n; i++) nl_image_free(small[i]);
+    free(small);
+    return m;
+  }
   /* Captions scale with the panels so they stay legible in large montages. */
   int scale = cw >= 384 ? 3 : 2;
   int caph = 12 * scale + pad;
   int titleh = title ? 14 * scale + pad : 0;
-  if (cols < 1) cols = 1;
-  if (cols > n) cols = n;
   int rows = (n + cols - 1) / cols;
   nl_image *m = nl_image_alloc(pad + cols * (cw + pad), titleh + pad + rows * (chh + caph + pad), 3);
   for (size_t i = 0; i < (size_t)m->width * m->height * 3; i++) m->data[i] = 1.0f;

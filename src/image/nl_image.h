@@ -48,9 +48,17 @@ void nl_image_text(nl_image *im, int x, int y, int scale, const char *text, cons
 int nl_text_width(const char *text, int scale);
 int nl_text_height(const char *text, int scale);
 
+/* Box-filter reduction by an integer factor f (w/f x h/f, remainders
+ * dropped). */
+nl_image *nl_image_downsample(const nl_image *im, int f);
+
 /* n images in a grid of `cols` columns on a white background, each cell as
  * large as the largest image, a caption under each (labels may be NULL or
- * contain NULLs), and an optional title above. Output is RGB. */
+ * contain NULLs), and an optional title above. Output is RGB. Montages are
+ * for reports: when the grid would be wider than NL_MONTAGE_MAX_WIDTH the
+ * panels are box-filtered down by the smallest integer factor that fits
+ * (the full-size data stays in the experiment's tables and images). */
+#define NL_MONTAGE_MAX_WIDTH 2200
 nl_image *nl_montage(const nl_image *const *images, const char *const *labels, int n,
                      int cols, const char *title);
 

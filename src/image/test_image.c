@@ -114,6 +114,21 @@ NL_TEST(montage_layout_and_text)
   nl_image_free(a); nl_image_free(b); nl_image_free(m);
 }
 
+NL_TEST(downsample_box_filter_and_wide_montage)
+{
+  nl_image *a = nl_image_alloc(4, 2, 1);
+  for (int i = 0; i < 8; i++) a->data[i] = (float)i;     /* rows 0 1 2 3 / 4 5 6 7 */
+  nl_image *d = nl_image_downsample(a, 2);
+  NL_CHECK(d->width == 2 && d->height == 1);
+  NL_CHECK_NEAR(d->data[0], 2.5, 1e-6);                   /* (0 + 1 + 4 + 5) / 4 */
+  NL_CHECK_NEAR(d->data[1], 4.5, 1e-6);
+  nl_image *big = nl_image_alloc(600, 100, 1);
+  const nl_image *ims[] = {big, big, big, big, big};
+  nl_image *m = nl_montage(ims, NULL, 5, 5, NULL);
+  NL_CHECK(m->width <= NL_MONTAGE_MAX_WIDTH && m->width == 8 + 5 * (300 + 8));
+  nl_image_free(a); nl_image_free(d); nl_image_free(big); nl_image_free(m);
+}
+
 int main(void)
 {
   dir = nl_test_tmpdir();
