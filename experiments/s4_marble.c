@@ -62,6 +62,13 @@ int main(int argc, char **argv)
   nl_run_image(r, mont, "panels.png");
   nl_run_table(r, hist, "u_density.tsv");
   nl_run_table(r, dist, "distribution.tsv");
+  /* Regression rules: u_mean and u_sd are means over seeds with their spreads
+   * beside them (statistical rules, see nl_report.h); the density is a count
+   * of samples per bin and stays exact. */
+  nl_run_check(r, "distribution.tsv", "u_mean", "welch u_mean_sd 1e-3");
+  nl_run_check(r, "distribution.tsv", "u_sd", "welch u_sd_sd 1e-3");
+  nl_run_check(r, "distribution.tsv", "u_mean_sd", "ftest 1e-3");
+  nl_run_check(r, "distribution.tsv", "u_sd_sd", "ftest 1e-3");
 
   nl_report_text(r, "**Slides:** u = (1 + sin(y)) / 2 through a marble colour ramp, after p.y = p.y + "
                     "a fractal_sum(p) (images only, a not given). **Ours:** %g stripe%s per unit "

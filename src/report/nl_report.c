@@ -19,6 +19,7 @@ struct nl_run {
   char **set_key, **set_val;
   int *set_used;
   nl_table *manifest;     /* key, value (text) */
+  nl_table *checks;       /* table, column, rule (text): regression rules */
   char *md;               /* report section being built */
   size_t md_len, md_cap;
   double last_progress;
@@ -118,6 +119,8 @@ nl_run *nl_run_begin(const char *name, const char *title, int argc, char **argv)
   strftime(r->started, sizeof r->started, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
   const char *cols[] = {"key", "value"};
   r->manifest = nl_table_alloc(2, cols);
+  const char *ccols[] = {"table", "column", "rule"};
+  r->checks = nl_table_alloc(3, ccols);
   note(r, "experiment", name);
   nl_run_note(r, "seed", "%lu", r->seed);
   nl_run_note(r, "seeds", "%d", r->seeds);
@@ -255,6 +258,63 @@ void nl_report_figure(nl_run *r, const char *file, const char *caption)
   nl_report_text(r, "![%s](%s/%s)\n\n*%s*\n", caption, r->name, file, caption);
 }
 
+/* ---- regression rules ----------------------------------------------------- */
+
+static nl_status rule_number(const char *rule, const char *tok, double lo, double hi, double *v, nl_error *err)
+{
+  char *end;
+  if (!tok) return nl_fail(err, NL_EINVAL, "rule '%s': missing number", rule);
+  *v = strtod(tok, &end);
+  if (*end || end == tok || !(*v >= lo && *v <= hi))
+    return nl_fail(err, NL_EINVAL, "rule '%s': '%s' is not a number in [%g, %g]", rule, tok, lo, hi);
+  return NL_OK;
+}
+
+nl_status nl_check_rule_parse(const char *s, nl_check_rule *rule, nl_error *err)
+{
+  char buf[256], *save = NULL;
+  if (strlen(s) >= sizeof buf) return nl_fail(err, NL_EINVAL, "rule '%.40s...': too long", s);
+  strcpy(buf, s);
+  const char *kind = strtok_r(buf, " ", &save);
+  memset(rule, 0, sizeof *rule);
+  nl_status st = NL_OK;
+  if (!kind) return nl_fail(err, NL_EINVAL, "empty rule");
+  if (!strcmp(kind, "exact")) rule->kind = NL_CHECK_EXACT;
+  else if (!strcmp(kind, "ignore")) rule->kind = NL_CHECK_IGNORE;
+  else if (!strcmp(kind, "abs") || !strcmp(kind, "rel")) {
+    rule->kind = kind[0] == 'a' ? NL_CHECK_ABS : NL_CHECK_REL;
+    st = rule_number(s, strtok_r(NULL, " ", &save), 0, 1e300, &rule->tol, err);
+  } else if (!strcmp(kind, "welch")) {
+    const char *col = strtok_r(NULL, " ", &save);
+    if (!col || strlen(col) >= sizeof rule->sdcol) return nl_fail(err, NL_EINVAL, "rule '%s': welch needs SDCOL ALPHA", s);
+    strcpy(rule->sdcol, col);
+    rule->kind = NL_CHECK_WELCH;
+    st = rule_number(s, strtok_r(NULL, " ", &save), 1e-300, 0.5, &rule->tol, err);
+  } else if (!strcmp(kind, "ftest")) {
+    rule->kind = NL_CHECK_FTEST;
+    st = rule_number(s, strtok_r(NULL, " ", &save), 1e-300, 0.5, &rule->tol, err);
+  } else return nl_fail(err, NL_EINVAL, "rule '%s': unknown (exact, abs, rel, ignore, welch, ftest)", s);
+  if (st == NL_OK && strtok_r(NULL, " ", &save)) return nl_fail(err, NL_EINVAL, "rule '%s': extra words", s);
+  return st;
+}
+
+void nl_run_check(nl_run *r, const char *table, const char *column, const char *rule)
+{
+  nl_check_rule parsed;
+  nl_error err;
+  if (nl_check_rule_parse(rule, &parsed, &err)) nl_run_die(r, 1, "%s: %s: %s", table, column, err.msg);
+  nl_table *c = r->checks;
+  for (size_t i = 0; i < c->nrows; i++) {
+    char **row = c->text + i * c->ncols;
+    if (!strcmp(row[0], table) && !strcmp(row[1], column)) {   /* the later rule wins */
+      free(row[2]);
+      row[2] = nl_xstrdup(rule);
+      return;
+    }
+  }
+  nl_table_append(c, "sss", table, column, rule);
+}
+
 /* ---- the end ------------------------------------------------------------ */
 
 static void write_text(nl_run *r, const char *file, const char *text)
@@ -281,10 +341,13 @@ int nl_run_end(nl_run *r)
   struct rusage ru;
   getrusage(RUSAGE_SELF, &ru);
   nl_run_note(r, "peak_rss_mb", "%.1f", ru.ru_maxrss / 1024.0);
+  /* Always written: an experiment without declarations is all `exact`. */
+  nl_run_table(r, r->checks, "checks.tsv");
   nl_run_table(r, r->manifest, "manifest.tsv");
   for (int k = 0; k < r->nset; k++) { free(r->set_key[k]); free(r->set_val[k]); }
   free(r->set_key); free(r->set_val); free(r->set_used);
   nl_table_free(r->manifest);
+  nl_table_free(r->checks);
   free(r->md); free(r->out); free(r);
   return 0;
 }

@@ -25,7 +25,8 @@
  * The manifest (manifest.tsv: key, value) records the experiment, seed,
  * parameters, commit (NL_COMMIT from the entry script), library versions,
  * wall time and peak memory. It is written last and removed first, so a
- * folder with a manifest is a complete run.
+ * folder with a manifest is a complete run. checks.tsv holds the rules the
+ * regression check compares the tables by (nl_run_check below).
  *
  * Figures named with nl_report_figure are made afterwards by the entry
  * script from scripts/gnuplot/NAME-*.gp, or are images the program wrote.
@@ -73,7 +74,55 @@ void nl_report_text(nl_run *r, const char *fmt, ...) __attribute__((format(print
 void nl_report_table(nl_run *r, const nl_table *t, const char *caption, int digits);
 void nl_report_figure(nl_run *r, const char *file, const char *caption);
 
-/* Writes report.md and manifest.tsv, frees r; returns 0 for main(). */
+/* ---- regression rules ------------------------------------------------
+ *
+ * `scripts/noiselab check` reruns an experiment with the seed of its
+ * committed results and compares every table with results/NAME/ (or
+ * results/quick/NAME/ with --quick), column by column, by the rule the
+ * experiment declares here, beside the table it writes:
+ *
+ *   nl_run_table(r, dist, "distribution.tsv");
+ *   nl_run_check(r, "distribution.tsv", "mean", "welch mean_sd 1e-3");
+ *   nl_run_check(r, "distribution.tsv", "mean_sd", "ftest 1e-3");
+ *   nl_run_check(r, "spectrum.tsv", "*", "rel 1e-9");
+ *
+ * nl_run_end writes the declarations to checks.tsv (table, column, rule),
+ * which travels with the results. Rules:
+ *   exact          numbers bit-identical, text identical: the default for
+ *                  every column not declared (same seed, same program)
+ *   abs TOL        |new - committed| <= TOL
+ *   rel TOL        |new - committed| <= TOL max(|new|, |committed|): for
+ *                  sums whose order a library may change (FFTs, BLAS)
+ *   ignore         not compared (timings, work counters)
+ *   welch SDCOL A  the column is a mean over the run's n seeds (manifest
+ *                  "seeds") and SDCOL, in the same table, the sd of the
+ *                  per-seed values: drift when Welch's two-sided t-test
+ *                  rejects equal means at level A. Noise passes, shifts fail
+ *                  (use for values a change of random stream may move).
+ *   ftest A        the column is itself such an sd over n seeds: drift when
+ *                  the two-sided F-test rejects equal variances at level A.
+ * Statistical rules need n >= 2 on both sides and fall back to exact when
+ * both spreads are 0 (a value the seed does not move). Text cells are
+ * always compared exactly unless the rule is ignore.
+ * column "*" is every column of the table; a named column's rule beats "*",
+ * and a later declaration for the same table and column replaces an
+ * earlier one. A malformed rule is a bug in the experiment: exit 1.
+ */
+typedef enum {
+  NL_CHECK_EXACT, NL_CHECK_ABS, NL_CHECK_REL, NL_CHECK_IGNORE, NL_CHECK_WELCH, NL_CHECK_FTEST
+} nl_check_kind;
+
+typedef struct {
+  nl_check_kind kind;
+  double tol;        /* abs, rel: tolerance; welch, ftest: alpha */
+  char sdcol[128];   /* welch: the spread column */
+} nl_check_rule;
+
+void nl_run_check(nl_run *r, const char *table, const char *column, const char *rule);
+/* Parses a rule string as above; "rule 'x': ..." on error. */
+nl_status nl_check_rule_parse(const char *s, nl_check_rule *rule, nl_error *err);
+
+/* Writes report.md, checks.tsv and manifest.tsv, frees r; returns 0 for main(). */
 int nl_run_end(nl_run *r);
 
 #endif

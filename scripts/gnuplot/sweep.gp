@@ -1,0 +1,25 @@
+# The plot of a parameter sweep, drawn by `scripts/noiselab sweep merge`.
+# Variables (set with -e by the merge, from build/tools/noiselab-sweep):
+#   dat      plot.dat: one block per legend entry, "x \"title\" spread" then
+#            x, mean over seeds, sd over seeds; blocks ny1..nblocks-1 belong
+#            to the second column (right axis)
+#   out, title, xlabel, ylabel, y2label, logx, ny1, nblocks
+set terminal pngcairo size 960,600 font 'DejaVu Sans,10'
+set output out
+set datafile separator "\t"
+set title title noenhanced
+set xlabel xlabel noenhanced
+set ylabel ylabel noenhanced
+set key outside right top noenhanced
+set grid
+if (logx) { set logscale x; set format x "10^{%T}" }
+set bars small
+if (nblocks > ny1) {
+  set y2label y2label noenhanced
+  set ytics nomirror
+  set y2tics
+  plot for [i=0:ny1-1] dat index i using 1:2:3 with yerrorlines lw 1.5 title columnheader(2), \
+       for [i=ny1:nblocks-1] dat index i using 1:2:3 axes x1y2 with yerrorlines dt 2 lw 1.5 title columnheader(2)
+} else {
+  plot for [i=0:ny1-1] dat index i using 1:2:3 with yerrorlines lw 1.5 title columnheader(2)
+}

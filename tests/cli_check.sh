@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# noiselab check: passes on an unchanged run, fails on drift (a bit-level
+# change under `exact`, a mean shifted beyond Welch's test, a relative
+# tolerance exceeded, a missing table or changed parameter), passes on
+# noise-level differences under the statistical rules, and refuses bad
+# input with one line and exit 2.
+set -euo pipefail
+check="$1" expect="$2" out="$3"
+rm -rf "$out"; mkdir -p "$out"
+ref="$out/ref"; mkdir -p "$ref"
+
+tsv() { local f="$1"; shift; printf '%s\n' "$@" | tr '|' '\t' >"$f"; }
+# A committed run: 10 seeds; dist.tsv holds means over seeds with their sds.
+tsv "$ref/manifest.tsv" 'key|value' 'experiment|t1' 'seed|1' 'seeds|10' 'quick|no' 'param|size=8' 'seconds|1.5'
+tsv "$ref/checks.tsv" 'table|column|rule' 'dist.tsv|mean|welch mean_sd 1e-3' 'dist.tsv|mean_sd|ftest 1e-3' \
+    'dist.tsv|secs|ignore' 'spec.tsv|*|rel 1e-9'
+tsv "$ref/dist.tsv" 'label|mean|mean_sd|secs|count' '(a) one|0.5|0.1|3.2|17' '(b) two|1.5|0|1.1|4'
+tsv "$ref/spec.tsv" 'freq|power' '0.125|0.0077449593835423221' '0.375|0.0033590302577136471'
+
+copy() { rm -rf "$out/$1"; cp -r "$ref" "$out/$1"; }
+edit() {   # DIR FILE ROW COLUMN VALUE (row 1 = first data row)
+  awk -F'\t' -v OFS='\t' -v r="$3" -v c="$4" -v v="$5" 'NR == r + 1 {$c = v} {print}' "$out/$1/$2" >"$out/$1/.x"
+  mv "$out/$1/.x" "$out/$1/$2"
+}
+run() {   # WANT_RC NAME [GREP...]: runs the check of ref against NAME
+  local want="$1" name="$2"; shift 2
+  local rc=0 log="$out/$name.out"
+  "$check" "$ref" "$out/$name" >"$log" 2>"$out/$name.err" || rc=$?
+  if [ "$rc" != "$want" ]; then echo "check $name: exit $rc, wanted $want"; cat "$log" "$out/$name.err"; exit 1; fi
+  local g
+  for g in "$@"; do grep -q -- "$g" "$log" "$out/$name.err" || { echo "check $name: no '$g' in:"; cat "$log" "$out/$name.err"; exit 1; }; done
+}
+
+# Unchanged: passes, and says how much it compared.
+copy same
+run 0 same 'check: 1 experiment, 2 tables, .* 0 drifted'
+
+# exact: one unit in the last place of an undeclared column is drift.
+copy ulp; edit ulp dist.tsv 1 5 17.000000000000004
+run 1 ulp $'t1\tdist.tsv\t1 \\[(a) one\\]\tcount\t17\t17.000000000000004\texact' '1 drifted'
+
+# welch: a shift of 0.5 when the per-seed sd is 0.1 over 10 seeds (t ~ 11).
+copy shifted; edit shifted dist.tsv 1 2 1.0
+run 1 shifted $'\tmean\t0.5\t1\twelch mean_sd 1e-3: p = ' '1 drifted'
+
+# welch and ftest: noise-level differences pass (another random stream):
+# mean moved by 0.03 (t ~ 0.7), its sd by 20 %, the ignored timing anything.
+copy noise; edit noise dist.tsv 1 2 0.53; edit noise dist.tsv 1 3 0.12; edit noise dist.tsv 1 4 99
+run 0 noise '0 drifted'
+
+# ftest: a spread ten times larger is drift; a value with both sds 0 is exact.
+copy spread; edit spread dist.tsv 1 3 1.0
+run 1 spread $'\tmean_sd\t0.1\t1\tftest 1e-3'
+copy zero; edit zero dist.tsv 2 2 1.5000000000000002
+run 1 zero 'both spreads 0, compared exactly'
+
+# rel 1e-9: 1e-12 relative passes, 1e-6 does not.
+copy relok; edit relok spec.tsv 1 2 0.0077449593835500
+run 0 relok
+copy relbad; edit relbad spec.tsv 2 2 0.0033590336
+run 1 relbad $'spec.tsv\t2\tpower' 'rel 1e-9'
+
+# Shape and run: a missing table, an extra row, another parameter.
+copy notable; rm "$out/notable/spec.tsv"
+run 1 notable $'spec.tsv\t-\t-\ttable\tmissing'
+copy rows; printf '0.625\t0.001\n' >>"$out/rows/spec.tsv"
+run 1 rows '2 rows'
+copy param; edit param manifest.tsv 5 2 size=16
+run 1 param $'manifest.tsv\t-\tparam\tsize=8'
+
+# Several experiments under two roots.
+mkdir -p "$out/r1" "$out/r2"; cp -r "$ref" "$out/r1/t1"; cp -r "$ref" "$out/r2/t1"
+"$check" "$out/r1" "$out/r2" t1 | grep -q 'check: 1 experiment, 2 tables'
+
+# Bad input: one line, exit 2.
+bad() {   # WANT_FRAGMENT ARGS...
+  local want="$1"; shift
+  local err rc=0
+  err="$("$check" "$@" 2>&1 >/dev/null)" || rc=$?
+  if [ "$rc" -ne 2 ] || [ "$(printf '%s\n' "$err" | wc -l)" -ne 1 ] || [[ "$err" != *"$want"* ]]; then
+    echo "check $*: rc=$rc err='$err' (wanted '$want')"; exit 1
+  fi
+}
+bad "manifest.tsv" "$ref" "$out/nonexistent"
+bad "wanted COMMITTED NEW" "$ref"
+copy badrule; printf 'dist.tsv\tcount\twelch\n' >>"$out/badrule/checks.tsv"
+bad "welch needs SDCOL ALPHA" "$out/badrule" "$ref"
+copy nocol; printf 'dist.tsv\tcount\twelch nosuch 1e-3\n' >>"$out/nocol/checks.tsv"
+bad "no column 'nosuch'" "$out/nocol" "$ref"
+copy ragged; printf '1\t2\t3\n' >>"$out/ragged/spec.tsv"
+bad "spec.tsv:4" "$out/ragged" "$ref"
+echo "cli_check: ok"

@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# noiselab sweep: a small S3 sweep (quick, 2 values x 2 seeds) runs with GNU
+# parallel and merges; it resumes without rerunning finished tasks; a failed
+# task is reported with its log while the others finish; bad input and a
+# folder holding another sweep are refused (exit 2, nothing overwritten);
+# the job file and the Slurm script are written. With a Slurm cluster
+# (scripts/slurm-local.sh), the same sweep goes through sbatch and must merge
+# into identical tables.
+set -euo pipefail
+tool="$1" expect="$2" out="$3"
+src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+export NL_BUILD="$(cd "$(dirname "$tool")/.." && pwd)"
+sweep=(bash "$src/scripts/sweep.sh")
+rm -rf "$out"; mkdir -p "$out"
+def=(s3_fbm --quick --param z=0.5,1.5 --param size=32 --seeds 2)
+dir="$out/local sweep"   # a space in the path on purpose
+
+"${sweep[@]}" "${def[@]}" --jobs 2 --out "$dir" 2>"$out/run1.err"
+grep -q 'sweep: 4/4 done, 0 failed' "$out/run1.err"
+"$expect" "$dir/tasks.tsv" rows=4 'size==32'
+"${sweep[@]}" merge "$dir" --table gain_distribution.tsv --y sd 2>/dev/null
+"$expect" "$dir/merged/gain_distribution.tsv" rows=20 'size==32' 'seed>=1' 'seed<=2' 'max_abs<=bound'
+"$expect" "$dir/merged/gain_distribution_summary.tsv" rows=10 'n==2' 'sd_spread>=0' file:plot.png
+"$expect" "$dir/merged/gain_spectrum_summary.tsv" 'n==2'
+
+# Resumable: nothing reruns; a task without a manifest (interrupted) does.
+jl="$(wc -l <"$dir/joblog")"
+"${sweep[@]}" "${def[@]}" --jobs 2 --out "$dir" 2>"$out/run2.err"
+grep -q '4 already done, 0 to run' "$out/run2.err"
+rm "$dir/tasks/0002/manifest.tsv"
+"${sweep[@]}" "${def[@]}" --jobs 2 --out "$dir" 2>"$out/run3.err"
+grep -q '3 already done, 1 to run' "$out/run3.err"
+[ "$(wc -l <"$dir/joblog")" -eq $((jl + 1)) ]
+
+# A failed task: reported with its log, the others finish, exit 1.
+fdir="$out/fail"
+rc=0
+"${sweep[@]}" "${def[@]}" --out "$fdir" --emit parallel 2>/dev/null
+printf 'not a folder\n' >"$fdir/tasks/0001"
+"${sweep[@]}" "${def[@]}" --jobs 2 --out "$fdir" 2>"$out/fail.err" || rc=$?
+[ "$rc" = 1 ] || { echo "failed task: exit $rc"; cat "$out/fail.err"; exit 1; }
+grep -q "task 0001 .*failed; log: $fdir/logs/0001.log" "$out/fail.err"
+grep -q '3/4 done, 1 failed' "$out/fail.err"
+[ -f "$fdir/tasks/0003/manifest.tsv" ]
+
+# Bad input: one line, exit 2, and the sweep folder untouched.
+cp "$dir/sweep.tsv" "$out/sweep.before"
+bad() {   # WANT_FRAGMENT ARGS...
+  local want="$1"; shift
+  local err rc=0
+  err="$("${sweep[@]}" "$@" 2>&1 >/dev/null)" || rc=$?
+  if [ "$rc" -ne 2 ] || [ "$(printf '%s\n' "$err" | wc -l)" -ne 1 ] || [[ "$err" != *"$want"* ]]; then
+    echo "sweep $*: rc=$rc err='$err' (wanted '$want')"; exit 1
+  fi
+}
+bad "unknown experiment 'nosuch'" nosuch --param z=1 --out "$out/x"
+bad "--set gain: unknown parameter for s3_fbm" s3_fbm --quick --param gain=0:1:5 --out "$out/x"
+bad "--set size: 8 is outside [16, 4096]" s3_fbm --quick --param size=8 --out "$out/x"
+bad "empty range" s3_fbm --param z=0:1:0 --out "$out/x"
+bad "a log range needs positive ends" s3_fbm --param z=0:1:log5 --out "$out/x"
+bad "a log range needs positive ends" s3_fbm --param z=1:-2:log5 --out "$out/x"
+bad "no --param" s3_fbm --out "$out/x"
+bad "holds a different sweep" "${def[@]}" --seeds 3 --out "$dir"
+bad "holds a different sweep" s3_fbm --quick --param z=0.5,2 --param size=32 --seeds 2 --out "$dir"
+[ ! -e "$out/x" ]
+cmp "$dir/sweep.tsv" "$out/sweep.before"
+"${sweep[@]}" merge "$out/nonexistent" 2>/dev/null && exit 1
+
+# Job files: GNU parallel's and Slurm's (one array index per task).
+edir="$out/emit"
+"${sweep[@]}" s3_fbm --quick --param 'z=1e-2:1:log3' --param size=32 --seeds 2 --out "$edir" --emit slurm --cpus 1 --mem 500M --time 00:10:00 2>/dev/null
+[ "$(wc -l <"$edir/jobs.txt")" = 6 ]
+grep -q -- '--set '"'"'z=0.1'"'"'' "$edir/jobs.txt"
+grep -q '^#SBATCH --array=0-5$' "$edir/sweep.slurm"
+grep -q '^#SBATCH --mem=500M$' "$edir/sweep.slurm"
+[ ! -e "$edir/tasks/0000/manifest.tsv" ]   # emitting runs nothing
+
+# Slurm for real, when there is a cluster to submit to.
+if ! command -v sbatch >/dev/null; then
+  echo "cli_sweep: Slurm part skipped: sbatch not installed (scripts/slurm-local.sh starts a one-node cluster)"
+elif ! timeout 10 sinfo -h -o '%t' 2>/dev/null | grep -Eq 'idle|mix|alloc'; then
+  echo "cli_sweep: Slurm part skipped: no idle Slurm node answers (scripts/slurm-local.sh starts one)"
+else
+  sdir="$out/slurm sweep"
+  "${sweep[@]}" "${def[@]}" --out "$sdir" --emit slurm --mem 500M --time 00:10:00 2>/dev/null
+  timeout 300 sbatch --wait --quiet "$sdir/sweep.slurm" || { cat "$sdir"/logs/* >&2; echo "sbatch failed"; exit 1; }
+  "${sweep[@]}" merge "$sdir" --table gain_distribution.tsv --y sd 2>/dev/null
+  for f in "$dir"/merged/*.tsv; do cmp "$f" "$sdir/merged/$(basename "$f")"; done
+  echo "cli_sweep: Slurm sweep identical to the local one ($(ls "$dir"/merged/*.tsv | wc -l) tables)"
+fi
+echo "cli_sweep: ok"
