@@ -1,0 +1,58 @@
+/* Configuration: the thesis setting, checks and names. */
+#include "cheng/nl_cheng_internal.h"
+
+#include <math.h>
+#include <string.h>
+
+nl_cheng_config nl_cheng_config_default(void)
+{
+  nl_cheng_config c = {
+    .stat = NL_CHENG_STAT_KS, .con = NL_CHENG_CON_PLAIN,
+    .w1 = 0.995, .w2 = 0.005,              /* sec. 3.4.1 */
+    .octaves = 4, .f1 = 8, .a1 = 4,        /* eq. 3.10 */
+    .m = 512, .chisq_bins = 500,           /* sec. 3.2, 4.2 */
+    .propagate = 1,                        /* sec. 3.4.2 */
+    .sched = {.n_temps = 60, .moves_per_var = 20, .t_decades = 4, .p0 = 0.8, .stall = 10},
+  };
+  return c;
+}
+
+nl_status nl_cheng_config_check(const nl_cheng_config *c, nl_error *err)
+{
+  if (!(c->w1 >= 0 && c->w2 >= 0 && isfinite(c->w1) && isfinite(c->w2)))
+    return nl_fail(err, NL_EINVAL, "weights must be finite and >= 0 (w1 = %g, w2 = %g)", c->w1, c->w2);
+  if (c->w1 == 0 && c->w2 == 0) return nl_fail(err, NL_EINVAL, "weights w1 and w2 are both 0");
+  if (!(c->f1 > 0 && isfinite(c->f1))) return nl_fail(err, NL_EINVAL, "f1 must be > 0, got %g", c->f1);
+  if (!(c->a1 > 0 && isfinite(c->a1))) return nl_fail(err, NL_EINVAL, "a1 must be > 0, got %g", c->a1);
+  if (c->octaves < 1 || c->octaves > NL_CHENG_MAX_OCTAVES)
+    return nl_fail(err, NL_EINVAL, "octaves must be in 1..%d, got %d", NL_CHENG_MAX_OCTAVES, c->octaves);
+  if (c->chisq_bins < 2) return nl_fail(err, NL_EINVAL, "chi-square needs >= 2 bins");
+  if ((unsigned)c->stat > NL_CHENG_STAT_KUIPER) return nl_fail(err, NL_EINVAL, "unknown objective %d", (int)c->stat);
+  if ((unsigned)c->con > NL_CHENG_CON_FIRE) return nl_fail(err, NL_EINVAL, "unknown texture type %d", (int)c->con);
+  const nl_cheng_schedule *s = &c->sched;
+  if (s->n_temps < 1 || !(s->moves_per_var > 0) || !(s->t_decades > 0) || !(s->p0 > 0 && s->p0 < 1) || s->stall < 1)
+    return nl_fail(err, NL_EINVAL, "bad annealing schedule (n_temps %d, moves/var %g, decades %g, p0 %g, stall %d)",
+                   s->n_temps, s->moves_per_var, s->t_decades, s->p0, s->stall);
+  return NL_OK;
+}
+
+static const char *const stat_names[] = {"ks", "chisq", "kuiper"};
+static const char *const con_names[] = {"cloud", "marble", "erosion", "fire"};
+static const char *const con_alias[] = {"plain", "sin", "abs", "fire"};
+
+nl_status nl_cheng_stat_parse(const char *s, nl_cheng_stat *out, nl_error *err)
+{
+  for (int k = 0; k < 3; k++)
+    if (!strcmp(s, stat_names[k])) { *out = (nl_cheng_stat)k; return NL_OK; }
+  return nl_fail(err, NL_EINVAL, "unknown objective '%s' (ks, chisq, kuiper)", s);
+}
+
+nl_status nl_cheng_con_parse(const char *s, nl_cheng_con *out, nl_error *err)
+{
+  for (int k = 0; k < 4; k++)
+    if (!strcmp(s, con_names[k]) || !strcmp(s, con_alias[k])) { *out = (nl_cheng_con)k; return NL_OK; }
+  return nl_fail(err, NL_EINVAL, "unknown texture type '%s' (cloud, marble, erosion, fire)", s);
+}
+
+const char *nl_cheng_stat_name(nl_cheng_stat s) { return (unsigned)s < 3 ? stat_names[s] : "?"; }
+const char *nl_cheng_con_name(nl_cheng_con c) { return (unsigned)c < 4 ? con_names[c] : "?"; }

@@ -1,0 +1,146 @@
+/* Final measures of an optimised table, controlled values on a raster, the
+ * textures of sec. 4.1, and the one-run loop the experiments share. */
+#include "cheng/nl_cheng_internal.h"
+#include "texture/nl_texture.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static double amp_scale(const nl_octaves *o)
+{
+  double a = 0;
+  for (int l = 0; l < o->n; l++) a += o->amp[l];
+  return 1.0 / (NL_NOISE2_BOUND * a);
+}
+
+/* E_Con over all F octaves with the noise kernel itself (nl_noise2), an
+ * evaluation path independent of the optimiser's stored corners. */
+static double control_error(const nl_grad2 *g, const nl_cheng_config *c, const nl_cheng_pattern *pat)
+{
+  nl_octaves o = nl_octaves_cheng(c->octaves, c->f1, c->a1);
+  double s = amp_scale(&o), e = 0, nv[NL_CHENG_MAX_OCTAVES];
+  for (size_t i = 0; i < pat->n; i++) {
+    for (int l = 0; l < o.n; l++) nv[l] = nl_noise2(g, o.freq[l] * pat->x[i], o.freq[l] * pat->y[i]);
+    double d = nl_cheng__control_value(c->con, nv, o.amp, o.n, s) - pat->d[i];
+    e += d * d;
+  }
+  return e;
+}
+
+#define ROUGH_N 128
+
+/* rms of the finite-difference gradient of the control value, per unit
+ * length: a number for "smoother" (Fig 4.7). */
+static double roughness(const nl_grad2 *g, const nl_cheng_config *c)
+{
+  double *v = nl_xmalloc(ROUGH_N * ROUGH_N * sizeof *v), s = 0;
+  nl_cheng_value_grid(g, c, ROUGH_N, ROUGH_N, v);
+  for (int y = 0; y + 1 < ROUGH_N; y++)
+    for (int x = 0; x + 1 < ROUGH_N; x++) {
+      double dx = v[y * ROUGH_N + x + 1] - v[y * ROUGH_N + x], dy = v[(y + 1) * ROUGH_N + x] - v[y * ROUGH_N + x];
+      s += dx * dx + dy * dy;
+    }
+  free(v);
+  return sqrt(s / ((ROUGH_N - 1.0) * (ROUGH_N - 1.0))) * ROUGH_N;
+}
+
+nl_status nl_cheng_evaluate(const nl_grad2 *g, const nl_cheng_config *c,
+                            const nl_cheng_pattern *pat, nl_cheng_eval *out, nl_error *err)
+{
+  nl_status s = nl_cheng_config_check(c, err);
+  if (s) return s;
+  nl_ks_result ks;
+  nl_kuiper_result ku;
+  nl_chisq_result ch;
+  if ((s = nl_ks_test_uniform(g->angle, g->m, 0.0, NL_TWO_PI, &ks, err))) return s;
+  if ((s = nl_kuiper_test_uniform(g->angle, g->m, 0.0, NL_TWO_PI, &ku, err))) return s;
+  if ((s = nl_chisq_test_uniform(g->angle, g->m, c->chisq_bins, 0.0, NL_TWO_PI, &ch, err))) return s;
+  out->e_ks = ks.d; out->p_ks = ks.p;
+  out->kuiper_v = ku.v; out->p_kuiper = ku.p;
+  out->chi2 = ch.chi2; out->p_chi2 = ch.p;
+  out->e_con = control_error(g, c, pat);
+  out->rms_con = sqrt(out->e_con / (double)pat->n);
+  out->roughness = roughness(g, c);
+  double stat = nl_cheng__stat_full(c->stat, c->chisq_bins, g->angle, g->m);
+  out->e = c->w1 * stat + c->w2 * out->e_con;
+  return NL_OK;
+}
+
+void nl_cheng_value_grid(const nl_grad2 *g, const nl_cheng_config *c, int w, int h, double *out)
+{
+  nl_octaves o = nl_octaves_cheng(c->octaves, c->f1, c->a1);
+  double s = amp_scale(&o), nv[NL_CHENG_MAX_OCTAVES];
+  double *rows = nl_xmalloc((size_t)o.n * (size_t)w * sizeof *rows);
+  for (int y = 0; y < h; y++) {
+    for (int l = 0; l < o.n; l++)
+      nl_noise2_row(g, o.freq[l] * 0.5 / w, o.freq[l] / w, o.freq[l] * (y + 0.5) / h, (size_t)w,
+                    rows + (size_t)l * w);
+    for (int x = 0; x < w; x++) {
+      for (int l = 0; l < o.n; l++) nv[l] = rows[(size_t)l * w + x];
+      out[(size_t)y * w + x] = nl_cheng__control_value(c->con, nv, o.amp, o.n, s);
+    }
+  }
+  free(rows);
+}
+
+/* The 1st and 99th percentiles of v: the display range of a texture. */
+static void display_range(const double *v, size_t n, double *lo, double *hi)
+{
+  double *c = nl_xmalloc(n * sizeof *c);
+  memcpy(c, v, n * sizeof *c);
+  nl_sort_double(c, n);
+  *lo = c[n / 100];
+  *hi = c[n - 1 - n / 100];
+  if (!(*hi > *lo)) { *lo -= 0.5; *hi += 0.5; }
+  free(c);
+}
+
+nl_image *nl_cheng_texture(nl_cheng_con kind, const double *v, int w, int h)
+{
+  /* Two colours per texture, blended with the value as alpha (sec. 4.1). */
+  static const float pair[4][2][3] = {
+    {{0.20f, 0.40f, 0.85f}, {1.00f, 1.00f, 1.00f}},   /* cloud: sky to white */
+    {{0.00f, 0.00f, 0.00f}, {0.00f, 0.00f, 0.00f}},   /* marble: ramp below */
+    {{0.22f, 0.13f, 0.07f}, {0.92f, 0.82f, 0.62f}},   /* erosion: soil to sand */
+    {{0.25f, 0.00f, 0.00f}, {1.00f, 0.85f, 0.15f}},   /* fire: ember to flame */
+  };
+  size_t n = (size_t)w * h;
+  double lo, hi;
+  display_range(v, n, &lo, &hi);
+  if (kind == NL_CHENG_CON_SIN) {
+    nl_ramp r = nl_ramp_marble();
+    return nl_ramp_image(&r, v, w, h, lo, hi);
+  }
+  nl_image *im = nl_image_alloc(w, h, 3);
+  for (size_t q = 0; q < n; q++) {
+    double a = (v[q] - lo) / (hi - lo);
+    a = a < 0 ? 0 : a > 1 ? 1 : a;
+    for (int ch = 0; ch < 3; ch++)
+      im->data[3 * q + ch] = (float)((1 - a) * pair[kind][0][ch] + a * pair[kind][1][ch]);
+  }
+  return im;
+}
+
+nl_image *nl_cheng_grey_image(const double *v, int w, int h)
+{
+  double lo, hi;
+  display_range(v, (size_t)w * h, &lo, &hi);
+  return nl_image_from_values(v, w, h, lo, hi);
+}
+
+nl_status nl_cheng_run(const nl_cheng_config *c, const nl_cheng_pattern *pat, unsigned long seed,
+                       nl_cheng_eval *ev, nl_cheng_level_stats *stats, nl_grad2 **table_out,
+                       nl_error *err)
+{
+  nl_grad2 *g = nl_grad2_alloc(c->m);
+  nl_grad2_seed(g, seed);
+  nl_cheng_problem *p = nl_cheng_problem_alloc(c, pat, g, err);
+  if (!p) { nl_grad2_free(g); return NL_EINVAL; }
+  nl_cheng_optimise(p, seed + 0x9E3779B9UL, stats);   /* a stream apart from the table's */
+  nl_cheng_problem_free(p);
+  nl_status s = ev ? nl_cheng_evaluate(g, c, pat, ev, err) : NL_OK;
+  if (table_out && !s) *table_out = g;
+  else nl_grad2_free(g);
+  return s;
+}

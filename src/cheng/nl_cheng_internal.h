@@ -1,0 +1,83 @@
+/* nl_cheng_internal.h - the problem's state, shared by the module's sources
+ * (not installed; users see nl_cheng.h only). */
+#ifndef NL_CHENG_INTERNAL_H
+#define NL_CHENG_INTERNAL_H
+
+#include "cheng/nl_cheng.h"
+#include "stats/nl_stats.h"
+
+#include <math.h>
+#include <stdint.h>
+
+#define NL_CHENG_MAX_OCTAVES 8
+
+/* The statistic term over a sample of angles, kept incrementally: KS and
+ * Kuiper through nl_ks_incr, chi-square through bin counts. */
+typedef struct {
+  nl_cheng_stat kind;
+  size_t k;          /* chi-square bins */
+  size_t n;
+  nl_ks_incr *ks;
+  long *count;       /* k bins */
+  long sumsq;        /* sum of count^2 */
+  double range[2];   /* {0, 2 pi}, the uniform CDF's params */
+} nl_cheng_statstate;
+
+void nl_cheng__stat_init(nl_cheng_statstate *s, nl_cheng_stat kind, size_t bins);
+void nl_cheng__stat_clear(nl_cheng_statstate *s);
+void nl_cheng__stat_reset(nl_cheng_statstate *s, const double *x, size_t n);
+void nl_cheng__stat_replace(nl_cheng_statstate *s, double old_value, double new_value);
+double nl_cheng__stat_value(const nl_cheng_statstate *s);
+/* The same statistic from scratch through nl_stats' tests. */
+double nl_cheng__stat_full(nl_cheng_stat kind, size_t bins, const double *x, size_t n);
+/* Bin of v in k equal bins of [0, 2 pi], nl_histogram_uniform's rule. */
+size_t nl_cheng__bin(double v, size_t k);
+
+struct nl_cheng_problem {
+  nl_cheng_config c;
+  const nl_cheng_pattern *pat;
+  nl_grad2 *g;
+  size_t m, np;
+  int F, level;
+  double freq[NL_CHENG_MAX_OCTAVES], amp[NL_CHENG_MAX_OCTAVES], s;
+  uint32_t *ck;          /* np * F * 4 corner entries */
+  double *cw;            /* np * F * 4 * 2 corner weight vectors */
+  double *nv;            /* np * F octave values */
+  double *term;          /* np terms (c_i - D_i)^2 */
+  unsigned char *used;   /* F * m: entry used by octave l's lattice */
+  int *first_level;      /* m: lowest level using the entry, 0 = none */
+  size_t *lstart;        /* F * (m + 1) list offsets */
+  uint32_t *litem;       /* point indices */
+  double *lw;            /* 2 per item: the point's summed corner weight vector for the entry */
+  size_t *vars, nvars;
+  size_t *sample, nsample;
+  unsigned char *in_sample;
+  nl_cheng_statstate st;
+  double e_stat, e_con, e;
+  /* undo record of the last move */
+  int has_undo;
+  size_t uk;
+  double utheta, u_stat, u_con, u_e;
+  size_t *tp, ntouch;
+  double *tnv, *tterm;
+  unsigned *mark, stamp;
+};
+
+long nl_cheng__lattice_max(double f);
+/* The control value c of nl_cheng.h from a point's octave values (the first
+ * `levels` of them); inline because every move evaluates it per point. */
+static inline double nl_cheng__control_value(nl_cheng_con con, const double *nv, const double *amp,
+                                             int levels, double s)
+{
+  double v = 0;
+  if (con == NL_CHENG_CON_FIRE) {
+    for (int l = 0; l < levels; l++) v += amp[l] * fabs(nv[l]);
+    return s * v;
+  }
+  for (int l = 0; l < levels; l++) v += amp[l] * nv[l];
+  v *= s;   /* V in [-1, 1] */
+  return con == NL_CHENG_CON_SIN ? 0.5 * (1.0 + sin(NL_PI * v))
+       : con == NL_CHENG_CON_ABS ? fabs(v) : 0.5 * (1.0 + v);
+}
+
+#endif

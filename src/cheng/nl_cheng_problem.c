@@ -1,0 +1,307 @@
+/* The incremental objective of eq. 3.9 at one level (see nl_cheng.h). */
+#include "cheng/nl_cheng_internal.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+static inline double fade(double t) { return t * t * t * (t * (t * 6 - 15) + 10); }
+
+/* Corner weight vectors W = w(u) w(v) Delta of eq. 3.2 for a point with
+ * fractional offsets (tx, ty) in its cell; corner order (0,0) (1,0) (0,1) (1,1). */
+static void corner_weights(double tx, double ty, double *w)
+{
+  double fx = fade(tx), fy = fade(ty);
+  double sx[2] = {1 - fx, fx}, sy[2] = {1 - fy, fy};
+  for (int c = 0; c < 4; c++) {
+    int di = c & 1, dj = c >> 1;
+    double s = sx[di] * sy[dj];
+    w[2 * c] = s * (tx - di);
+    w[2 * c + 1] = s * (ty - dj);
+  }
+}
+
+long nl_cheng__lattice_max(double f) { return (long)ceil(f); }
+
+/* Corners of every (point, octave): table entry and weight vector. */
+static void build_corners(nl_cheng_problem *p)
+{
+  const nl_cheng_pattern *pat = p->pat;
+  for (size_t i = 0; i < p->np; i++)
+    for (int l = 0; l < p->F; l++) {
+      double X = p->freq[l] * pat->x[i], Y = p->freq[l] * pat->y[i];
+      long ci = (long)floor(X), cj = (long)floor(Y);
+      size_t base = (i * (size_t)p->F + (size_t)l) * 4;
+      corner_weights(X - (double)ci, Y - (double)cj, p->cw + 2 * base);
+      for (int c = 0; c < 4; c++)
+        p->ck[base + c] = (uint32_t)nl_grad2_index(p->g, ci + (c & 1), cj + (c >> 1));
+    }
+}
+
+/* Which entries each octave's lattice over the unit square uses, and the
+ * lowest level that uses each entry (0: none). */
+static void build_usage(nl_cheng_problem *p)
+{
+  for (int l = 0; l < p->F; l++) {
+    long L = nl_cheng__lattice_max(p->freq[l]);
+    for (long j = 0; j <= L; j++)
+      for (long i = 0; i <= L; i++) {
+        size_t k = nl_grad2_index(p->g, i, j);
+        p->used[(size_t)l * p->m + k] = 1;
+        if (!p->first_level[k]) p->first_level[k] = l + 1;
+      }
+  }
+}
+
+/* Inverted lists: for octave l and entry k, the points whose corners use k,
+ * each point once with the sum W of the weight vectors of its corners that
+ * use k (a move changes the octave value by W . (G_new - G_old)). */
+static void build_lists(nl_cheng_problem *p)
+{
+  size_t M = p->m, F = (size_t)p->F, M1 = M + 1;
+  p->lstart = nl_xcalloc(F * M1, sizeof *p->lstart);
+  for (size_t i = 0; i < p->np; i++)
+    for (size_t l = 0; l < F; l++) {
+      const uint32_t *k = p->ck + (i * F + l) * 4;
+      for (int c = 0; c < 4; c++) {
+        int dup = 0;
+        for (int e = 0; e < c; e++) dup |= k[e] == k[c];
+        if (!dup) p->lstart[l * M1 + k[c] + 1]++;
+      }
+    }
+  size_t total = 0;
+  for (size_t q = 0; q < F * M1; q++) { total += p->lstart[q]; p->lstart[q] = total; }
+  /* One prefix sum over all octaves: list (l, k) is [lstart[l][k], lstart[l][k+1]). */
+  p->litem = nl_xmalloc((total ? total : 1) * sizeof *p->litem);
+  p->lw = nl_xcalloc(2 * (total ? total : 1), sizeof *p->lw);
+  size_t *fill = nl_xmalloc(F * M1 * sizeof *fill);
+  memcpy(fill, p->lstart, F * M1 * sizeof *fill);
+  for (size_t i = 0; i < p->np; i++)
+    for (size_t l = 0; l < F; l++) {
+      size_t base = (i * F + l) * 4, pos[4];
+      const uint32_t *k = p->ck + base;
+      for (int c = 0; c < 4; c++) {
+        int first = c;
+        for (int e = c - 1; e >= 0; e--) if (k[e] == k[c]) first = e;
+        if (first == c) { pos[c] = fill[l * M1 + k[c]]++; p->litem[pos[c]] = (uint32_t)i; }
+        else pos[c] = pos[first];
+        p->lw[2 * pos[c]] += p->cw[2 * (base + c)];
+        p->lw[2 * pos[c] + 1] += p->cw[2 * (base + c) + 1];
+      }
+    }
+  free(fill);
+}
+
+nl_cheng_problem *nl_cheng_problem_alloc(const nl_cheng_config *c, const nl_cheng_pattern *pat,
+                                         nl_grad2 *table, nl_error *err)
+{
+  if (nl_cheng_config_check(c, err)) return NULL;
+  if (!pat || pat->n == 0) { nl_fail(err, NL_EINVAL, "control pattern has no control points"); return NULL; }
+  if (table->m != c->m || table->m < 2 || table->m > UINT32_MAX) {
+    nl_fail(err, NL_EINVAL, "table size %zu does not match the configuration's %zu", table->m, c->m);
+    return NULL;
+  }
+  nl_cheng_problem *p = nl_xcalloc(1, sizeof *p);
+  p->c = *c;
+  p->pat = pat;
+  p->g = table;
+  p->m = table->m;
+  p->np = pat->n;
+  p->F = c->octaves;
+  nl_octaves o = nl_octaves_cheng(c->octaves, c->f1, c->a1);
+  double asum = 0;
+  for (int l = 0; l < p->F; l++) { p->freq[l] = o.freq[l]; p->amp[l] = o.amp[l]; asum += o.amp[l]; }
+  p->s = 1.0 / (NL_NOISE2_BOUND * asum);   /* V = F_sum / its analytic bound */
+  size_t F = (size_t)p->F;
+  p->ck = nl_xmalloc(p->np * F * 4 * sizeof *p->ck);
+  p->cw = nl_xmalloc(p->np * F * 8 * sizeof *p->cw);
+  p->nv = nl_xcalloc(p->np * F, sizeof *p->nv);
+  p->term = nl_xcalloc(p->np, sizeof *p->term);
+  p->used = nl_xcalloc(F * p->m, 1);
+  p->first_level = nl_xcalloc(p->m, sizeof *p->first_level);
+  p->in_sample = nl_xcalloc(p->m, 1);
+  p->vars = nl_xmalloc(p->m * sizeof *p->vars);
+  p->sample = nl_xmalloc(p->m * sizeof *p->sample);
+  p->mark = nl_xcalloc(p->np, sizeof *p->mark);
+  p->tp = nl_xmalloc(p->np * sizeof *p->tp);
+  p->tnv = nl_xmalloc(p->np * F * sizeof *p->tnv);
+  p->tterm = nl_xmalloc(p->np * sizeof *p->tterm);
+  build_corners(p);
+  build_usage(p);
+  build_lists(p);
+  nl_cheng__stat_init(&p->st, c->stat, c->chisq_bins);
+  nl_cheng_set_level(p, 1);
+  return p;
+}
+
+void nl_cheng_problem_free(nl_cheng_problem *p)
+{
+  if (!p) return;
+  nl_cheng__stat_clear(&p->st);
+  free(p->ck); free(p->cw); free(p->nv); free(p->term); free(p->used); free(p->first_level);
+  free(p->in_sample); free(p->vars); free(p->sample); free(p->mark); free(p->tp);
+  free(p->tnv); free(p->tterm); free(p->lstart); free(p->litem); free(p->lw);
+  free(p);
+}
+
+/* Octave l's noise at point i from its stored corners (eq. 3.2). */
+static inline double octave_value(const nl_cheng_problem *p, size_t i, size_t l)
+{
+  size_t base = (i * (size_t)p->F + l) * 4;
+  const uint32_t *k = p->ck + base;
+  const double *w = p->cw + 2 * base;
+  const double *gx = p->g->gx, *gy = p->g->gy;
+  return (w[0] * gx[k[0]] + w[1] * gy[k[0]]) + (w[2] * gx[k[1]] + w[3] * gy[k[1]]) +
+         (w[4] * gx[k[2]] + w[5] * gy[k[2]]) + (w[6] * gx[k[3]] + w[7] * gy[k[3]]);
+}
+
+static inline double point_term(const nl_cheng_problem *p, const double *nv, size_t i)
+{
+  double e = nl_cheng__control_value(p->c.con, nv, p->amp, p->level, p->s) - p->pat->d[i];
+  return e * e;
+}
+
+/* Plain left-to-right sum of the terms: the incremental state and the full
+ * recomputation both use it, so a resum makes them agree exactly. */
+static double sum_terms(const double *t, size_t n)
+{
+  double s = 0;
+  for (size_t i = 0; i < n; i++) s += t[i];
+  return s;
+}
+
+/* Octave values <= level and terms of every point from the stored corners. */
+static void evaluate_points(nl_cheng_problem *p)
+{
+  size_t F = (size_t)p->F;
+  for (size_t i = 0; i < p->np; i++) {
+    for (size_t l = 0; l < (size_t)p->level; l++) p->nv[i * F + l] = octave_value(p, i, l);
+    p->term[i] = point_term(p, p->nv + i * F, i);
+  }
+}
+
+void nl_cheng_resum(nl_cheng_problem *p)
+{
+  evaluate_points(p);
+  p->e_con = sum_terms(p->term, p->np);
+  p->e = p->c.w1 * p->e_stat + p->c.w2 * p->e_con;
+  p->has_undo = 0;
+}
+
+void nl_cheng_set_level(nl_cheng_problem *p, int level)
+{
+  p->level = level < 1 ? 1 : level > p->F ? p->F : level;
+  p->nvars = p->nsample = 0;
+  for (size_t k = 0; k < p->m; k++) {
+    if (p->first_level[k] == p->level) p->vars[p->nvars++] = k;
+    p->in_sample[k] = p->used[(size_t)(p->level - 1) * p->m + k];
+    if (p->in_sample[k]) p->sample[p->nsample++] = k;
+  }
+  double *x = nl_xmalloc((p->nsample ? p->nsample : 1) * sizeof *x);
+  for (size_t q = 0; q < p->nsample; q++) x[q] = p->g->angle[p->sample[q]];
+  nl_cheng__stat_reset(&p->st, x, p->nsample);
+  free(x);
+  p->e_stat = nl_cheng__stat_value(&p->st);
+  nl_cheng_resum(p);
+}
+
+int nl_cheng_level(const nl_cheng_problem *p) { return p->level; }
+
+const size_t *nl_cheng_vars(const nl_cheng_problem *p, size_t *n_vars)
+{
+  *n_vars = p->nvars;
+  return p->vars;
+}
+
+double nl_cheng_energy(const nl_cheng_problem *p, double *e_stat, double *e_con)
+{
+  if (e_stat) *e_stat = p->e_stat;
+  if (e_con) *e_con = p->e_con;
+  return p->e;
+}
+
+/* Adds W . (dc, ds) to the octaves <= level of every point listed for entry
+ * k, saving each point's previous values once; returns the change of E_Con. */
+static double update_points(nl_cheng_problem *p, size_t k, double dc, double ds)
+{
+  size_t F = (size_t)p->F, M1 = p->m + 1;
+  p->ntouch = 0;
+  if (++p->stamp == 0) { memset(p->mark, 0, p->np * sizeof *p->mark); p->stamp = 1; }
+  for (size_t l = 0; l < (size_t)p->level; l++) {
+    const size_t *st = p->lstart + l * M1;
+    for (size_t q = st[k]; q < st[k + 1]; q++) {
+      size_t i = p->litem[q];
+      if (p->mark[i] != p->stamp) {
+        p->mark[i] = p->stamp;
+        memcpy(p->tnv + p->ntouch * F, p->nv + i * F, F * sizeof *p->nv);
+        p->tterm[p->ntouch] = p->term[i];
+        p->tp[p->ntouch++] = i;
+      }
+      p->nv[i * F + l] += p->lw[2 * q] * dc + p->lw[2 * q + 1] * ds;
+    }
+  }
+  double d = 0;
+  for (size_t t = 0; t < p->ntouch; t++) {
+    size_t i = p->tp[t];
+    p->term[i] = point_term(p, p->nv + i * F, i);
+    d += p->term[i] - p->tterm[t];
+  }
+  return d;
+}
+
+double nl_cheng_move(nl_cheng_problem *p, size_t k, double theta)
+{
+  p->uk = k;
+  p->utheta = p->g->angle[k];
+  p->u_stat = p->e_stat;
+  p->u_con = p->e_con;
+  p->u_e = p->e;
+  p->has_undo = 1;
+  if (p->in_sample[k]) {
+    nl_cheng__stat_replace(&p->st, p->utheta, theta);
+    p->e_stat = nl_cheng__stat_value(&p->st);
+  }
+  double gx = p->g->gx[k], gy = p->g->gy[k];
+  nl_grad2_set_angle(p->g, k, theta);
+  p->e_con += update_points(p, k, p->g->gx[k] - gx, p->g->gy[k] - gy);
+  p->e = p->c.w1 * p->e_stat + p->c.w2 * p->e_con;
+  return p->e;
+}
+
+void nl_cheng_undo(nl_cheng_problem *p)
+{
+  if (!p->has_undo) return;
+  size_t k = p->uk, F = (size_t)p->F;
+  if (p->in_sample[k]) nl_cheng__stat_replace(&p->st, p->g->angle[k], p->utheta);
+  nl_grad2_set_angle(p->g, k, p->utheta);
+  for (size_t t = 0; t < p->ntouch; t++) {
+    size_t i = p->tp[t];
+    memcpy(p->nv + i * F, p->tnv + t * F, F * sizeof *p->nv);
+    p->term[i] = p->tterm[t];
+  }
+  p->e_stat = p->u_stat;
+  p->e_con = p->u_con;
+  p->e = p->u_e;
+  p->has_undo = 0;
+}
+
+double nl_cheng_energy_full(const nl_cheng_problem *p, double *e_stat, double *e_con)
+{
+  size_t F = (size_t)p->F;
+  double nv[NL_CHENG_MAX_OCTAVES];
+  double *terms = nl_xmalloc(p->np * sizeof *terms);
+  for (size_t i = 0; i < p->np; i++) {
+    for (size_t l = 0; l < F; l++) nv[l] = octave_value(p, i, l);
+    terms[i] = point_term(p, nv, i);
+  }
+  double con = sum_terms(terms, p->np);
+  free(terms);
+  double *x = nl_xmalloc((p->nsample ? p->nsample : 1) * sizeof *x);
+  for (size_t q = 0; q < p->nsample; q++) x[q] = p->g->angle[p->sample[q]];
+  double st = nl_cheng__stat_full(p->c.stat, p->c.chisq_bins, x, p->nsample);
+  free(x);
+  if (e_stat) *e_stat = st;
+  if (e_con) *e_con = con;
+  return p->c.w1 * st + p->c.w2 * con;
+}

@@ -1,0 +1,261 @@
+#include "cheng/nl_cheng_internal.h"
+#include "nl_test.h"
+
+#include <gsl/gsl_rng.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A small problem: the flower at a 24 x 24 grid (fast), thesis octaves. */
+static nl_cheng_pattern *flower(int grid)
+{
+  nl_image *im = nl_cheng_shape("flower", 96);
+  nl_cheng_pattern *p;
+  nl_error err;
+  NL_CHECK(nl_cheng_pattern_from_image(im, grid, &p, &err) == NL_OK);
+  nl_image_free(im);
+  return p;
+}
+
+static double rel(double a, double b) { return fabs(a - b) / fmax(1.0, fabs(b)); }
+
+/* After every move of a random sequence (with random undos), at every level,
+ * for every statistic and control variant: incremental E == full E to 1e-12. */
+NL_TEST(incremental_objective_equals_full_recomputation)
+{
+  nl_cheng_pattern *pat = flower(24);
+  double worst = 0;
+  for (int stat = 0; stat < 3; stat++)
+    for (int con = 0; con < 4; con++) {
+      nl_cheng_config c = nl_cheng_config_default();
+      c.stat = (nl_cheng_stat)stat;
+      c.con = (nl_cheng_con)con;
+      c.w1 = 0.6; c.w2 = 0.4;   /* both terms visible in E */
+      nl_grad2 *g = nl_grad2_alloc(512);
+      nl_grad2_seed(g, 7 + (unsigned long)(stat * 4 + con));
+      nl_error err;
+      nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
+      gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+      gsl_rng_set(r, 99);
+      for (int L = 1; L <= 4; L++) {
+        nl_cheng_set_level(p, L);
+        for (int m = 0; m < 300; m++) {
+          size_t k = gsl_rng_uniform_int(r, 512);   /* any entry, variable or not */
+          double before = nl_cheng_energy(p, NULL, NULL);
+          nl_cheng_move(p, k, NL_TWO_PI * gsl_rng_uniform(r));
+          if (gsl_rng_uniform(r) < 0.5) {
+            nl_cheng_undo(p);
+            NL_CHECK(nl_cheng_energy(p, NULL, NULL) == before);   /* undo is exact */
+          }
+          double si, ci, sf, cf;
+          double ei = nl_cheng_energy(p, &si, &ci), ef = nl_cheng_energy_full(p, &sf, &cf);
+          worst = fmax(worst, fmax(rel(ei, ef), fmax(rel(si, sf), rel(ci, cf))));
+        }
+      }
+      gsl_rng_free(r);
+      nl_cheng_problem_free(p);
+      nl_grad2_free(g);
+    }
+  NL_CHECK_NEAR(worst, 0.0, 1e-12);
+  nl_cheng_pattern_free(pat);
+}
+
+/* The stored corner weights reproduce the noise kernel (nl_noise2). */
+NL_TEST(stored_corners_match_noise_kernel)
+{
+  nl_cheng_pattern *pat = flower(32);
+  nl_cheng_config c = nl_cheng_config_default();
+  nl_grad2 *g = nl_grad2_alloc(512);
+  nl_grad2_seed(g, 3);
+  nl_error err;
+  nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
+  nl_cheng_set_level(p, 4);
+  double con;
+  nl_cheng_energy(p, NULL, &con);
+  nl_cheng_eval ev;
+  NL_CHECK(nl_cheng_evaluate(g, &c, pat, &ev, &err) == NL_OK);
+  NL_CHECK_NEAR(con, ev.e_con, 1e-12 * ev.e_con);
+  nl_cheng_problem_free(p);
+  nl_grad2_free(g);
+  nl_cheng_pattern_free(pat);
+}
+
+/* Levels partition the used entries; level l's variables are used by octave
+ * l's lattice and by no lower one; the parent rule of eq. 3.13 holds. */
+NL_TEST(levels_and_propagation)
+{
+  nl_cheng_pattern *pat = flower(16);
+  nl_cheng_config c = nl_cheng_config_default();
+  nl_grad2 *g = nl_grad2_alloc(512);
+  nl_grad2_seed(g, 5);
+  nl_error err;
+  nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
+  int *level_of = calloc(512, sizeof *level_of);
+  size_t total = 0;
+  for (int L = 1; L <= 4; L++) {
+    nl_cheng_set_level(p, L);
+    size_t n;
+    const size_t *v = nl_cheng_vars(p, &n);
+    total += n;
+    for (size_t q = 0; q < n; q++) {
+      NL_CHECK(level_of[v[q]] == 0);
+      level_of[v[q]] = L;
+      NL_CHECK(p->used[(size_t)(L - 1) * 512 + v[q]]);
+      for (int l = 1; l < L; l++) NL_CHECK(!p->used[(size_t)(l - 1) * 512 + v[q]]);
+    }
+  }
+  NL_CHECK(total > 400 && total <= 512);   /* 81 + 289 + 1089 + 4225 lattice points */
+  nl_cheng_set_level(p, 2);
+  nl_cheng_propagate(p);
+  /* entry of lattice point (I, J) of octave 2 (f = 16) that is a level-2
+   * variable, first in row-major order, has its parent's angle */
+  unsigned char *seen = calloc(512, 1);
+  int checked = 0;
+  for (long J = 0; J <= 16; J++)
+    for (long I = 0; I <= 16; I++) {
+      size_t k = nl_grad2_index(g, I, J);
+      if (level_of[k] != 2 || seen[k]) continue;
+      seen[k] = 1;
+      NL_CHECK(g->angle[k] == g->angle[nl_grad2_index(g, I / 2, J / 2)]);
+      checked++;
+    }
+  NL_CHECK(checked > 50);
+  free(seen);
+  free(level_of);
+  nl_cheng_problem_free(p);
+  nl_grad2_free(g);
+  nl_cheng_pattern_free(pat);
+}
+
+/* Annealing lowers E at every level on a fixed seed, and the optimised
+ * table follows the pattern better than the random start. */
+NL_TEST(annealing_lowers_energy)
+{
+  nl_cheng_pattern *pat = flower(24);
+  nl_cheng_config c = nl_cheng_config_default();
+  c.sched.n_temps = 20;
+  nl_grad2 *g = nl_grad2_alloc(512);
+  nl_grad2_seed(g, 11);
+  nl_cheng_eval before, after;
+  nl_error err;
+  NL_CHECK(nl_cheng_evaluate(g, &c, pat, &before, &err) == NL_OK);
+  nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
+  nl_cheng_level_stats st[4];
+  nl_cheng_optimise(p, 12, st);
+  for (int L = 0; L < 4; L++) {
+    NL_CHECK(st[L].e_best <= st[L].e_start);
+    NL_CHECK(st[L].moves > 0 && st[L].accepted > 0);
+  }
+  NL_CHECK(st[0].e_best < 0.9 * st[0].e_start);
+  double e_inc = nl_cheng_energy(p, NULL, NULL), e_full = nl_cheng_energy_full(p, NULL, NULL);
+  NL_CHECK_NEAR(e_inc, e_full, 1e-12);
+  NL_CHECK(nl_cheng_evaluate(g, &c, pat, &after, &err) == NL_OK);
+  NL_CHECK(after.e_con < 0.85 * before.e_con);   /* ~0.73 measured: the noise cannot reach D = 0 or 1 */
+  NL_CHECK(after.e < before.e);
+  nl_cheng_problem_free(p);
+  nl_grad2_free(g);
+  nl_cheng_pattern_free(pat);
+}
+
+NL_TEST(same_seed_bit_identical)
+{
+  nl_cheng_pattern *pat = flower(16);
+  nl_cheng_config c = nl_cheng_config_default();
+  c.sched.n_temps = 10;
+  nl_cheng_eval a, b, d;
+  nl_grad2 *ga, *gb, *gd;
+  nl_error err;
+  NL_CHECK(nl_cheng_run(&c, pat, 42, &a, NULL, &ga, &err) == NL_OK);
+  NL_CHECK(nl_cheng_run(&c, pat, 42, &b, NULL, &gb, &err) == NL_OK);
+  NL_CHECK(nl_cheng_run(&c, pat, 43, &d, NULL, &gd, &err) == NL_OK);
+  NL_CHECK(memcmp(&a, &b, sizeof a) == 0);
+  NL_CHECK(memcmp(ga->angle, gb->angle, 512 * sizeof(double)) == 0);
+  NL_CHECK(memcmp(ga->angle, gd->angle, 512 * sizeof(double)) != 0);
+  nl_grad2_free(ga); nl_grad2_free(gb); nl_grad2_free(gd);
+  nl_cheng_pattern_free(pat);
+}
+
+/* Red channel -> D, alpha 0 -> no control, cells averaged. */
+NL_TEST(pattern_from_image)
+{
+  nl_image *im = nl_image_alloc(4, 4, 4);
+  for (int y = 0; y < 4; y++)
+    for (int x = 0; x < 4; x++) {
+      float *px = nl_image_pixel(im, x, y);
+      px[0] = (float)(x / 3.0); px[1] = 1; px[2] = 0; px[3] = (x == 3 && y == 3) ? 0.0f : 1.0f;
+    }
+  nl_cheng_pattern *p;
+  nl_error err;
+  NL_CHECK(nl_cheng_pattern_from_image(im, 4, &p, &err) == NL_OK);
+  NL_CHECK(p->n == 15);
+  NL_CHECK_NEAR(p->d[1], 1.0 / 3.0, 1e-7);
+  NL_CHECK_NEAR(p->x[1], 0.375, 0);
+  NL_CHECK_NEAR(p->y[4], 0.375, 0);
+  nl_cheng_pattern_free(p);
+  NL_CHECK(nl_cheng_pattern_from_image(im, 2, &p, &err) == NL_OK);   /* 2 x 2 cells */
+  NL_CHECK(p->n == 4);
+  NL_CHECK_NEAR(p->d[0], (0 + 1.0 / 3.0) / 2, 1e-7);
+  NL_CHECK_NEAR(p->d[3], 7.0 / 9.0, 1e-7);   /* (2/3 + 1 + 2/3) / 3: the transparent pixel does not count */
+  nl_cheng_pattern_free(p);
+  for (int q = 0; q < 16; q++) im->data[4 * q + 3] = 0;
+  NL_CHECK(nl_cheng_pattern_from_image(im, 4, &p, &err) == NL_EINVAL && p == NULL);
+  NL_CHECK(strstr(err.msg, "no control") != NULL);
+  nl_image_free(im);
+  NL_CHECK(nl_cheng_shape("nonsense", 8) == NULL);
+  for (int k = 0; nl_cheng_shape_names[k]; k++) {
+    nl_image *s = nl_cheng_shape(nl_cheng_shape_names[k], 32);
+    double red = 0;
+    for (int q = 0; q < 32 * 32; q++) red += s->data[4 * q];
+    NL_CHECK(red > 32 && red < 32 * 32 - 32);   /* neither empty nor full */
+    nl_image_free(s);
+  }
+}
+
+NL_TEST(bad_configuration)
+{
+  nl_cheng_config c = nl_cheng_config_default();
+  nl_error err;
+  NL_CHECK(nl_cheng_config_check(&c, &err) == NL_OK);
+  c.w1 = -0.1;
+  NL_CHECK(nl_cheng_config_check(&c, &err) == NL_EINVAL);
+  c.w1 = 0; c.w2 = 0;
+  NL_CHECK(nl_cheng_config_check(&c, &err) == NL_EINVAL);
+  NL_CHECK(strstr(err.msg, "both 0") != NULL);
+  c = nl_cheng_config_default();
+  c.f1 = 0;
+  NL_CHECK(nl_cheng_config_check(&c, &err) == NL_EINVAL);
+  nl_cheng_stat s;
+  nl_cheng_con k;
+  NL_CHECK(nl_cheng_stat_parse("kuiper", &s, &err) == NL_OK && s == NL_CHENG_STAT_KUIPER);
+  NL_CHECK(nl_cheng_stat_parse("anderson", &s, &err) == NL_EINVAL);
+  NL_CHECK(nl_cheng_con_parse("marble", &k, &err) == NL_OK && k == NL_CHENG_CON_SIN);
+  NL_CHECK(nl_cheng_con_parse("wood", &k, &err) == NL_EINVAL);
+}
+
+/* Our chi-square binning equals nl_histogram_uniform's, edges included. */
+NL_TEST(chisq_bins_match_stats_module)
+{
+  double x[1000];
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  for (int i = 0; i < 1000; i++)
+    x[i] = i < 500 ? NL_TWO_PI * gsl_rng_uniform(r) : (double)(i - 500) * (NL_TWO_PI / 500);
+  gsl_rng_free(r);
+  nl_error err;
+  gsl_histogram *h = nl_histogram_uniform(x, 1000, 500, 0, NL_TWO_PI, NULL, &err);
+  long count[500] = {0};
+  for (int i = 0; i < 1000; i++) count[nl_cheng__bin(x[i], 500)]++;
+  int same = 1;
+  for (int b = 0; b < 500; b++) same &= (double)count[b] == h->bin[b];
+  NL_CHECK(same);
+  gsl_histogram_free(h);
+}
+
+/* The median of D_n: half the null mass below it, and near Kolmogorov's
+ * asymptotic median 0.8276 / sqrt(n) (finite n sits slightly lower). */
+NL_TEST(ks_median)
+{
+  double m = nl_cheng_ks_median(512);
+  NL_CHECK_NEAR(nl_ks_cdf(512, m, NULL), 0.5, 1e-9);
+  NL_CHECK(m < 0.8276 / sqrt(512.0) && m > 0.97 * 0.8276 / sqrt(512.0));
+}
+
+int main(void) { return nl_test_run(); }

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Quick C4: Table 4.1's six pairs (printed and swapped) and a weight sweep;
+# bad input gives a one-line error and exit 2.
+set -euo pipefail
+exp="$1" expect="$2" out="$3"
+pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
+"$exp" --quick --out "$out" --patterns "$pat" >/dev/null
+"$expect" "$out/table41.tsv" rows=6 'E_ks>0' 'E_ks<0.1' 'E_con>0' 'E_ks_swapped>0' 'E_ks_swapped<=E_ks' \
+  'E_con_swapped>=E_con*0.95' file:textures.png
+"$expect" "$out/table41_runs.tsv" rows=12 'seeds==3'
+"$expect" "$out/sweep.tsv" rows=6 'E_ks>0' 'E_con>0' 'w1>0'
+# the KS-dominated end of the sweep has the lower E_KS and the higher E_Con
+awk -F'\t' 'NR==2{k=$6;c=$17} END{if(!($6<k && $17>c)){print "sweep ends not ordered"; exit 1}}' "$out/sweep.tsv"
+bad() {   # expect exit 2 and a single line on stderr
+  local rc=0; "$exp" --quick --out "$out/bad" "$@" 2>"$out/err.txt" >/dev/null || rc=$?
+  [ "$rc" -eq 2 ] || { echo "exit $rc for: $*"; exit 1; }
+  [ "$(wc -l <"$out/err.txt")" -eq 1 ] || { echo "not one line for: $*"; cat "$out/err.txt"; exit 1; }
+}
+bad --patterns "$out/no-such-folder"
+bad --patterns "$pat" --set w1=0 --set w2=0
+bad --patterns "$pat" --set w1=-1
+bad --patterns "$pat" --set f1=0
+[ ! -e "$out/bad/table41.tsv" ]
