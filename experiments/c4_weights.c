@@ -51,6 +51,9 @@ int main(int argc, char **argv)
   /* The sweep is log-spaced in w1 / w2 (w1 + w2 = 1): the balance point lies
    * at w1 / w2 ~ 1e2..1e3, where a log scale of w1 itself has no points. */
   double lo = nl_run_param(r, "ratio_lo", 1e-5, 1e-12, 1e12), hi = nl_run_param(r, "ratio_hi", 1e5, 1e-12, 1e12);
+  /* table=0: only the run at the configured (w1, w2), the unit a sweep of
+   * w1 is made of (scripts/noiselab sweep c4 --param w1=... --param table=0). */
+  int table = (int)nl_run_param_int(r, "table", 1, 0, 1);
   nl_run_params_done(r);
   nl_cheng_check_or_die(r, &base);
   if (!(lo < hi)) nl_run_die(r, 2, "ratio_lo must be below ratio_hi");
@@ -58,6 +61,18 @@ int main(int argc, char **argv)
   nl_cheng_pattern *pat = nl_cheng_pattern_load_or_die("c4_weights", pdir, "flower", grid);
 
   const char *labels[] = {"reading", "panel", "w1", "w2"};
+  nl_table *one = nl_cheng_summary_alloc(4, labels);
+  run_pair(r, &base, pat, "configured", "-", base.w1, base.w2, one, NULL);
+  nl_run_table(r, one, "configured.tsv");
+  if (!table) {
+    nl_report_text(r, "One run of the flower pattern at the configured weights (w1, w2) = (%g, %g), %d seeds "
+                      "(table=0: Table 4.1 and the internal sweep skipped).\n", base.w1, base.w2, nl_run_seeds(r));
+    nl_report_table(r, one, "Configured weights", 4);
+    nl_table_free(one);
+    nl_cheng_pattern_free(pat);
+    return nl_run_end(r);
+  }
+  nl_table_free(one);
   nl_table *tab = nl_cheng_summary_alloc(4, labels), *sweep = nl_cheng_summary_alloc(4, labels);
   nl_image *panels[NPAIR + 1];
   char plab[NPAIR + 1][64];
