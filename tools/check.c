@@ -56,7 +56,15 @@ static nl_table *nl_check_read(const char *dir, const char *file, int required)
   nl_error err;
   FILE *fp = fopen(p, "r");
   if (!fp && !required) { free(p); return NULL; }
-  if (fp) fclose(fp);
+  if (fp && !required) {
+    /* An optional table with a header and no rows (an experiment that
+     * declared no rules) means the same as no table. */
+    int lines = 0, c, last = '\n';
+    while ((c = fgetc(fp)) != EOF) { if (c == '\n' && last != '\n') lines++; last = c; }
+    if (last != '\n') lines++;
+    fclose(fp);
+    if (lines <= 1) { free(p); return NULL; }
+  } else if (fp) fclose(fp);
   if (nl_table_read(p, NL_TABLE_TEXT, &t, &err)) nl_check_die("%s", err.msg);
   free(p);
   return t;
