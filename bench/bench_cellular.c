@@ -11,16 +11,16 @@
 #include "cellular/nl_cellular.h"
 #include "noise/nl_noise.h"
 
+#include "nl_bench.h"
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 static int N = 512;
 static const double EXTENT = 16.0;
-static volatile double sink;
 static double *rx, *ry, *rz;
 
-typedef void (*grid_fn)(const void *ctx, double *out);
 
 static void g_noise3(const void *ctx, double *out)
 {
@@ -58,19 +58,6 @@ static void g_gctbf(const void *ctx, double *out)
     nl_gctbf_row(b->cell, &b->g, 0.5 * dx, dx, (r + 0.5) * dx, 0.5, (size_t)N, out + (size_t)r * N);
 }
 
-/* Million points per second, best of 3 timings of >= 0.5 s each. */
-static double rate(grid_fn f, const void *ctx, double *out)
-{
-  double best = 0;
-  for (int rep = 0; rep < 3; rep++) {
-    int iters = 0;
-    double t0 = nl_time_now(), t;
-    do { f(ctx, out); sink = out[iters % N]; iters++; t = nl_time_now() - t0; } while (t < 0.5);
-    double r = (double)iters * N * N / t / 1e6;
-    if (r > best) best = r;
-  }
-  return best;
-}
 
 int main(int argc, char **argv)
 {
@@ -91,9 +78,9 @@ int main(int argc, char **argv)
   nl_gctbf_basis gb = {ci, {0}};
   nl_gctbf_parse("F2 - F1 - F1F1", &gb.g, NULL);
 
-  double n3 = rate(g_noise3, &p, out), n3r = rate(g_noise3_random, &p, out);
-  double ri = rate(g_cell_rows, ci, out), rc = rate(g_cell_rows, cc, out);
-  double pr = rate(g_cell_random, ci, out), gr = rate(g_gctbf, &gb, out);
+  double n3 = nl_bench_rate(g_noise3, &p, out, (size_t)N * N), n3r = nl_bench_rate(g_noise3_random, &p, out, (size_t)N * N);
+  double ri = nl_bench_rate(g_cell_rows, ci, out, (size_t)N * N), rc = nl_bench_rate(g_cell_rows, cc, out, (size_t)N * N);
+  double pr = nl_bench_rate(g_cell_random, ci, out, (size_t)N * N), gr = nl_bench_rate(g_gctbf, &gb, out, (size_t)N * N);
   printf("# %d x %d grid over [0,%g)^2 at z = 0.5 (random points: [0,%g)^3), single thread,\n"
          "# Mpoints/s (best of 3); cellular: lambda = 4, M = 50, all of F1..F4 per point\n",
          N, N, EXTENT, EXTENT);

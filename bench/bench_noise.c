@@ -11,6 +11,7 @@
  */
 #include "noise/nl_noise.h"
 #include "base/nl_base.h"
+#include "nl_bench.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -25,9 +26,7 @@
 
 static int N = 1024;
 static const double EXTENT = 16.0;
-static volatile double sink;
 
-typedef void (*grid_fn)(const void *ctx, double *out);
 
 static void g_noise2(const void *ctx, double *out)
 {
@@ -73,19 +72,6 @@ static void g_noise2_random(const void *ctx, double *out)
   for (size_t k = 0; k < (size_t)N * N; k++) out[k] = nl_noise2(ctx, rx[k], ry[k]);
 }
 
-/* Million samples per second, best of 3 timings of >= 0.5 s each. */
-static double rate(grid_fn f, const void *ctx, double *out)
-{
-  double best = 0;
-  for (int rep = 0; rep < 3; rep++) {
-    int iters = 0;
-    double t0 = nl_time_now(), t;
-    do { f(ctx, out); sink = out[iters % N]; iters++; t = nl_time_now() - t0; } while (t < 0.5);
-    double r = (double)iters * N * N / t / 1e6;
-    if (r > best) best = r;
-  }
-  return best;
-}
 
 int main(int argc, char **argv)
 {
@@ -102,10 +88,10 @@ int main(int argc, char **argv)
   nl_perm3_reference(&p);
   nl_basis b2 = nl_basis_grad2(t), b3 = nl_basis_perm3(&p);
 
-  double stb = rate(g_stb3, NULL, out), stbf = rate(g_stbfbm, NULL, out);
-  double n2 = rate(g_noise2, t, out), n3 = rate(g_noise3, &p, out);
-  double f2 = rate(g_fbm, &b2, out), f3 = rate(g_fbm, &b3, out);
-  double nr = rate(g_noise2_random, t, out);
+  double stb = nl_bench_rate(g_stb3, NULL, out, (size_t)N * N), stbf = nl_bench_rate(g_stbfbm, NULL, out, (size_t)N * N);
+  double n2 = nl_bench_rate(g_noise2, t, out, (size_t)N * N), n3 = nl_bench_rate(g_noise3, &p, out, (size_t)N * N);
+  double f2 = nl_bench_rate(g_fbm, &b2, out, (size_t)N * N), f3 = nl_bench_rate(g_fbm, &b3, out, (size_t)N * N);
+  double nr = nl_bench_rate(g_noise2_random, t, out, (size_t)N * N);
   printf("# %d x %d grid over [0,%g)^2, single thread, Msamples/s (best of 3)\n", N, N, EXTENT);
   printf("%-34s %10s %10s\n", "noise", "Msample/s", "vs stb");
   printf("%-34s %10.1f %10s\n", "stb_perlin_noise3", stb, "1.00");

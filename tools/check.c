@@ -22,7 +22,6 @@
 #include "report/nl_report.h"
 #include "table/nl_table.h"
 
-#include <dirent.h>
 #include <stdarg.h>
 #include <gsl/gsl_cdf.h>
 #include <math.h>
@@ -270,25 +269,12 @@ static void nl_check_manifests(nl_check_ctx *c, const nl_table *ref, const nl_ta
   }
 }
 
-static int by_name(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
-
-/* The committed folder's tables, sorted; hidden files are temporaries. */
+/* The committed folder's tables, sorted. */
 static char **list_tables(const char *dir, size_t *n)
 {
-  DIR *d = opendir(dir);
-  if (!d) nl_check_die("%s: cannot open folder", dir);
-  char **names = NULL;
-  struct dirent *e;
-  *n = 0;
-  while ((e = readdir(d))) {
-    size_t len = strlen(e->d_name);
-    if (e->d_name[0] == '.' || len < 5 || strcmp(e->d_name + len - 4, ".tsv")) continue;
-    if (!strcmp(e->d_name, "manifest.tsv") || !strcmp(e->d_name, "checks.tsv")) continue;
-    names = nl_xrealloc(names, (*n + 1) * sizeof *names);
-    names[(*n)++] = nl_xstrdup(e->d_name);
-  }
-  closedir(d);
-  qsort(names, *n, sizeof *names, by_name);
+  nl_error err;
+  char **names = nl_run_tables(dir, n, &err);
+  if (!names) nl_check_die("%s", err.msg);
   return names;
 }
 

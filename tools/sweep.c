@@ -21,6 +21,7 @@
  *       gnuplot assignments on stdout.
  * Errors: one line on stderr, exit 2.
  */
+#include "report/nl_report.h"
 #include "table/nl_table.h"
 
 #include <ctype.h>
@@ -364,22 +365,10 @@ static void merge_load(nl_sweep_merge *m)
 static char **task_tables(const nl_sweep_merge *m, size_t *n)
 {
   char buf[32], *dir = nl_path_join(m->dir, cell(m->tasks, m->done[0], 1, buf));
-  DIR *d = opendir(dir);
-  if (!d) nl_sweep_die("%s: cannot open folder", dir);
-  char **names = NULL;
-  struct dirent *e;
-  *n = 0;
-  while ((e = readdir(d))) {
-    size_t len = strlen(e->d_name);
-    if (e->d_name[0] == '.' || len < 5 || strcmp(e->d_name + len - 4, ".tsv")) continue;
-    if (!strcmp(e->d_name, "manifest.tsv") || !strcmp(e->d_name, "checks.tsv")) continue;
-    names = nl_xrealloc(names, (*n + 1) * sizeof *names);
-    names[(*n)++] = nl_xstrdup(e->d_name);
-  }
-  closedir(d);
+  nl_error err;
+  char **names = nl_run_tables(dir, n, &err);
+  if (!names) nl_sweep_die("%s", err.msg);
   free(dir);
-  for (size_t i = 1; i < *n; i++)   /* insertion sort: a handful of names */
-    for (size_t j = i; j > 0 && strcmp(names[j - 1], names[j]) > 0; j--) { char *t = names[j]; names[j] = names[j - 1]; names[j - 1] = t; }
   return names;
 }
 

@@ -1,6 +1,8 @@
 #include "report/nl_report.h"
 
 #include <gsl/gsl_version.h>
+#include <dirent.h>
+#include <errno.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -143,15 +145,20 @@ static const char *set_value(nl_run *r, const char *name)
   return v;
 }
 
+/* The --set value for name (NULL if none) and its label for messages. */
+static const char *param_value(nl_run *r, const char *name, char *what, size_t n)
+{
+  snprintf(what, n, "--set %s", name);
+  return set_value(r, name);
+}
+
 double nl_run_param(nl_run *r, const char *name, double def, double lo, double hi)
 {
-  const char *s = set_value(r, name);
+  char what[128], buf[32];
+  const char *s = param_value(r, name, what, sizeof what);
   double v = def;
   nl_error err;
-  char what[128];
-  snprintf(what, sizeof what, "--set %s", name);
   if (s && nl_parse_double(what, s, lo, hi, &v, &err)) nl_run_die(r, 2, "%s", err.msg);
-  char buf[32];
   nl_format_double(buf, v);
   nl_run_note(r, "param", "%s=%s", name, buf);
   return v;
@@ -159,11 +166,10 @@ double nl_run_param(nl_run *r, const char *name, double def, double lo, double h
 
 long nl_run_param_int(nl_run *r, const char *name, long def, long lo, long hi)
 {
-  const char *s = set_value(r, name);
+  char what[128];
+  const char *s = param_value(r, name, what, sizeof what);
   long v = def;
   nl_error err;
-  char what[128];
-  snprintf(what, sizeof what, "--set %s", name);
   if (s && nl_parse_long(what, s, lo, hi, &v, &err)) nl_run_die(r, 2, "%s", err.msg);
   nl_run_note(r, "param", "%s=%ld", name, v);
   return v;
@@ -350,4 +356,25 @@ int nl_run_end(nl_run *r)
   nl_table_free(r->checks);
   free(r->md); free(r->out); free(r);
   return 0;
+}
+
+static int by_name(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
+
+char **nl_run_tables(const char *dir, size_t *n, nl_error *err)
+{
+  DIR *d = opendir(dir);
+  *n = 0;
+  if (!d) { nl_fail(err, NL_EIO, "%s: cannot open folder: %s", dir, strerror(errno)); return NULL; }
+  char **names = nl_xmalloc(sizeof *names);   /* non-NULL even when empty */
+  struct dirent *e;
+  while ((e = readdir(d))) {
+    size_t len = strlen(e->d_name);
+    if (e->d_name[0] == '.' || len < 5 || strcmp(e->d_name + len - 4, ".tsv")) continue;
+    if (!strcmp(e->d_name, "manifest.tsv") || !strcmp(e->d_name, "checks.tsv")) continue;
+    names = nl_xrealloc(names, (*n + 1) * sizeof *names);
+    names[(*n)++] = nl_xstrdup(e->d_name);
+  }
+  closedir(d);
+  if (*n) qsort(names, *n, sizeof *names, by_name);
+  return names;
 }

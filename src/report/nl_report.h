@@ -122,6 +122,12 @@ void nl_run_check(nl_run *r, const char *table, const char *column, const char *
 /* Parses a rule string as above; "rule 'x': ..." on error. */
 nl_status nl_check_rule_parse(const char *s, nl_check_rule *rule, nl_error *err);
 
+/* The data tables of a run folder: every *.tsv but manifest.tsv and
+ * checks.tsv (hidden files are temporaries), sorted by name. Caller frees
+ * each name and the array (never NULL when the folder is read, even if
+ * empty); NULL and a message if the folder cannot be read. */
+char **nl_run_tables(const char *dir, size_t *n, nl_error *err);
+
 /* Writes report.md, checks.tsv and manifest.tsv, frees r; returns 0 for main(). */
 int nl_run_end(nl_run *r);
 
