@@ -1,0 +1,26 @@
+# C5 (sec. 3.5.2): number of complete-linkage clusters of the 1000 input
+# samples against the cutoff (cos/sin distance), per texture; the thesis's
+# initial K as dashed lines, its (not comparable) cutoffs as points.
+# Called as: gnuplot -e "dir='results/c5_pools'" THIS
+set terminal pngcairo size 900,600 font "DejaVu Sans,10"
+set output dir.'/cutoff.png'
+set datafile separator "\t"
+f = dir.'/cutoff_k.tsv'
+set title "C5: initial K against the cutoff (complete linkage on (cos, sin) of the low angles)"
+set xlabel "cutoff (chord distance)"
+set ylabel "clusters K"
+set logscale y
+set grid
+set key top right
+plot f using (strcol(1) eq "erosion" && $2 == 1 ? $3 : NaN):4 with linespoints pt 7 ps 0.5 lc rgb "brown" title "erosion", \
+     f using (strcol(1) eq "marble" && $2 == 1 ? $3 : NaN):4 with linespoints pt 7 ps 0.5 lc rgb "blue" title "marble", \
+     f using (strcol(1) eq "cloud" && $2 == 1 ? $3 : NaN):4 with linespoints pt 7 ps 0.5 lc rgb "dark-green" title "cloud", \
+     f using (strcol(1) eq "erosion" && $2 == 2 ? $3 : NaN):4 with linespoints pt 6 ps 0.5 dt 2 lc rgb "brown" title "erosion, levels 1-2", \
+     30 with lines dt 2 lc rgb "brown" title "thesis K0 erosion (30)", \
+     39 with lines dt 2 lc rgb "blue" title "thesis K0 marble (39)", \
+     20 with lines dt 2 lc rgb "dark-green" title "thesis K0 cloud (20)", \
+     '-' using 1:2:3 with points pt 9 ps 1.5 lc rgb variable title "thesis cutoffs (other units)"
+18.6	30	10824234
+19.5	39	255
+15.5	20	25600
+e

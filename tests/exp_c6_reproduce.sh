@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Quick C6: reproductions of erosion, marble and cloud from their mixtures.
+# Reproductions stay uniform (no KS rejection), near the original's control
+# error, and far faster than an optimisation; montages and CDF tables exist;
+# same seed, same numbers.
+set -euo pipefail
+exp="$1" expect="$2" out="$3"
+pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
+"$exp" --quick --out "$out" --patterns "$pat" >/dev/null
+"$expect" "$out/summary.tsv" rows=9 'E_ks>0' 'E_ks<0.05' 'p_ks_min>0.05' 'E_con>0' 'below_ks<=1' 'below_con<=1' \
+  'ms_texture<=seconds_opt*1000' 'K>=20' file:textures_erosion.png file:textures_marble.png file:textures_cloud.png
+"$expect" "$out/reproductions.tsv" rows=48 'E_ks>0' 'p_ks>0.05' 'ks2_D>0' 'ks2_D<0.1' 'ms_reproduce>=0'
+for t in erosion marble cloud; do
+  "$expect" "$out/cdf_$t.tsv" rows=512 'F>0' 'F<=1' 'u_original>=0' 'u_original<1' 'u_r8<1'
+done
+# reproductions keep E_Con within 20% of the original's (sec. 4.4: "close")
+awk -F'\t' 'NR>1 && $2=="original"{o=$6} NR>1 && $2!="original" && ($6>1.2*o || $6<0.8*o){print "E_Con far from original: " $0; exit 1}' "$out/summary.tsv"
+"$exp" --quick --out "$out/again" --patterns "$pat" >/dev/null
+cmp <(cut -f1-7 "$out/reproductions.tsv") <(cut -f1-7 "$out/again/reproductions.tsv")
