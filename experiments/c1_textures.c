@@ -17,15 +17,12 @@ static const char *const equation[NTEX] = {"eq. 3.8", "eq. 4.1", "eq. 4.2", "eq.
 
 int main(int argc, char **argv)
 {
-  const char *pdir = nl_cheng_patterns_option(&argc, argv);
-  nl_run *r = nl_run_begin("c1_textures", "C1 - controlled cloud, marble, erosion and fire (Fig 4.1-4.4)", argc, argv);
   nl_cheng_config base;
   int grid;
-  nl_cheng_run_params(r, &base, &grid);
+  const char *pdir;
+  nl_run *r = nl_cheng_begin("c1_textures", "C1 - controlled cloud, marble, erosion and fire (Fig 4.1-4.4)", &argc, argv, &base, &grid, &pdir);
   int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 256, 16, 2048);
-  nl_run_params_done(r);
-  nl_cheng_check_or_die(r, &base);
-  nl_run_note(r, "patterns", "%s", pdir);
+  nl_cheng_params_done(r, &base, pdir);
   nl_cheng_pattern *pat[NTEX][NPAT];
   for (int t = 0; t < NTEX; t++)
     for (int j = 0; j < NPAT; j++) pat[t][j] = nl_cheng_pattern_load_or_die("c1_textures", pdir, patterns[t][j], grid);

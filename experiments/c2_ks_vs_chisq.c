@@ -16,14 +16,11 @@
 
 int main(int argc, char **argv)
 {
-  const char *pdir = nl_cheng_patterns_option(&argc, argv);
-  nl_run *r = nl_run_begin("c2_ks_vs_chisq", "C2 - KS term vs chi-square term (Fig 4.5, 4.6)", argc, argv);
   nl_cheng_config base;
   int grid;
-  nl_cheng_run_params(r, &base, &grid);
-  nl_run_params_done(r);
-  nl_cheng_check_or_die(r, &base);
-  nl_run_note(r, "patterns", "%s", pdir);
+  const char *pdir;
+  nl_run *r = nl_cheng_begin("c2_ks_vs_chisq", "C2 - KS term vs chi-square term (Fig 4.5, 4.6)", &argc, argv, &base, &grid, &pdir);
+  nl_cheng_params_done(r, &base, pdir);
 
   const char *pats[NPAT] = {"flower", "x"};
   const nl_cheng_stat objs[NOBJ] = {NL_CHENG_STAT_KS, NL_CHENG_STAT_CHISQ, NL_CHENG_STAT_KUIPER};

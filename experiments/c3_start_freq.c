@@ -10,14 +10,11 @@
 
 int main(int argc, char **argv)
 {
-  const char *pdir = nl_cheng_patterns_option(&argc, argv);
-  nl_run *r = nl_run_begin("c3_start_freq", "C3 - starting frequency f1 (Fig 4.7)", argc, argv);
   nl_cheng_config base;
   int grid;
-  nl_cheng_run_params(r, &base, &grid);
-  nl_run_params_done(r);
-  nl_cheng_check_or_die(r, &base);
-  nl_run_note(r, "patterns", "%s", pdir);
+  const char *pdir;
+  nl_run *r = nl_cheng_begin("c3_start_freq", "C3 - starting frequency f1 (Fig 4.7)", &argc, argv, &base, &grid, &pdir);
+  nl_cheng_params_done(r, &base, pdir);
   nl_cheng_pattern *pat = nl_cheng_pattern_load_or_die("c3_start_freq", pdir, "star", grid);
 
   const double f1s[NF] = {2, 4, 6, 8};

@@ -41,11 +41,10 @@ static void run_pair(nl_run *r, const nl_cheng_config *base, const nl_cheng_patt
 
 int main(int argc, char **argv)
 {
-  const char *pdir = nl_cheng_patterns_option(&argc, argv);
-  nl_run *r = nl_run_begin("c4_weights", "C4 - weights of the KS and control terms (Table 4.1, Fig 4.8)", argc, argv);
   nl_cheng_config base;
   int grid;
-  nl_cheng_run_params(r, &base, &grid);
+  const char *pdir;
+  nl_run *r = nl_cheng_begin("c4_weights", "C4 - weights of the KS and control terms (Table 4.1, Fig 4.8)", &argc, argv, &base, &grid, &pdir);
   int quick = nl_run_quick(r);
   int nsweep = (int)nl_run_param_int(r, "sweep_points", quick ? 6 : 24, 2, 1000);
   /* The sweep is log-spaced in w1 / w2 (w1 + w2 = 1): the balance point lies
@@ -54,10 +53,8 @@ int main(int argc, char **argv)
   /* table=0: only the run at the configured (w1, w2), the unit a sweep of
    * w1 is made of (scripts/noiselab sweep c4 --param w1=... --param table=0). */
   int table = (int)nl_run_param_int(r, "table", 1, 0, 1);
-  nl_run_params_done(r);
-  nl_cheng_check_or_die(r, &base);
+  nl_cheng_params_done(r, &base, pdir);
   if (!(lo < hi)) nl_run_die(r, 2, "ratio_lo must be below ratio_hi");
-  nl_run_note(r, "patterns", "%s", pdir);
   nl_cheng_pattern *pat = nl_cheng_pattern_load_or_die("c4_weights", pdir, "flower", grid);
 
   const char *labels[] = {"reading", "panel", "w1", "w2"};

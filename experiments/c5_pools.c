@@ -266,18 +266,15 @@ static void report(nl_run *r, const c5_tables *T, const nl_cheng_pool_options *p
 
 int main(int argc, char **argv)
 {
-  const char *pdir = nl_cheng_patterns_option(&argc, argv);
-  nl_run *r = nl_run_begin("c5_pools", "C5 - noise reproduction: pools, clustering, GMM/AIC (Tables 4.2-4.4)", argc, argv);
   nl_cheng_config base;
   int grid;
-  nl_cheng_run_params(r, &base, &grid);
+  const char *pdir;
+  nl_run *r = nl_cheng_begin("c5_pools", "C5 - noise reproduction: pools, clustering, GMM/AIC (Tables 4.2-4.4)", &argc, argv, &base, &grid, &pdir);
   nl_cheng_pool_options po;
   nl_cheng_model_options mo;
   nl_cheng_repro_params(r, &po, &mo);
   int alt = (int)nl_run_param_int(r, "alt_low_levels", 2, 0, 7);  /* erosion again, other split; 0: no */
-  nl_run_params_done(r);
-  nl_cheng_check_or_die(r, &base);
-  nl_run_note(r, "patterns", "%s", pdir);
+  nl_cheng_params_done(r, &base, pdir);
   nl_run_note(r, "pool_threads", "%d (results do not depend on it)", po.threads);
   int nseeds = nl_run_seeds(r) > MAXSEEDS ? MAXSEEDS : nl_run_seeds(r);
   c5_tables T = {

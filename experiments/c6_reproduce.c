@@ -138,19 +138,16 @@ static void report(nl_run *r, const nl_table *sum, int nrep, double swap, const 
 
 int main(int argc, char **argv)
 {
-  const char *pdir = nl_cheng_patterns_option(&argc, argv);
-  nl_run *r = nl_run_begin("c6_reproduce", "C6 - reproduced vs original textures (Fig 4.9-4.14)", argc, argv);
   nl_cheng_config base;
   int grid;
-  nl_cheng_run_params(r, &base, &grid);
+  const char *pdir;
+  nl_run *r = nl_cheng_begin("c6_reproduce", "C6 - reproduced vs original textures (Fig 4.9-4.14)", &argc, argv, &base, &grid, &pdir);
   nl_cheng_pool_options po;
   nl_cheng_model_options mo;
   nl_cheng_repro_params(r, &po, &mo);
   int nrep = (int)nl_run_param_int(r, "reps", nl_run_quick(r) ? NSHOW : 24, NSHOW, 4096);
   double swap = nl_run_param(r, "swap", 1.0, 0, 1);
-  nl_run_params_done(r);
-  nl_cheng_check_or_die(r, &base);
-  nl_run_note(r, "patterns", "%s", pdir);
+  nl_cheng_params_done(r, &base, pdir);
   nl_table *reps = nl_table_alloc(sizeof rep_cols / sizeof *rep_cols, rep_cols);
   nl_table *sum = nl_table_alloc(sizeof sum_cols / sizeof *sum_cols, sum_cols);
   samples *s = nl_xmalloc(sizeof *s);

@@ -10,15 +10,12 @@
 
 int main(int argc, char **argv)
 {
-  const char *pdir = nl_cheng_patterns_option(&argc, argv);
-  nl_run *r = nl_run_begin("c7_terrain", "C7 - terrain height maps (Fig 4.15-4.17)", argc, argv);
   nl_cheng_config c;
   int grid;
-  nl_cheng_run_params(r, &c, &grid);
+  const char *pdir;
+  nl_run *r = nl_cheng_begin("c7_terrain", "C7 - terrain height maps (Fig 4.15-4.17)", &argc, argv, &c, &grid, &pdir);
   int mesh = (int)nl_run_param_int(r, "mesh", nl_run_quick(r) ? 48 : 96, 8, 512);
-  nl_run_params_done(r);
-  nl_cheng_check_or_die(r, &c);
-  nl_run_note(r, "patterns", "%s", pdir);
+  nl_cheng_params_done(r, &c, pdir);
   const char *names[NPAT] = {"flower", "x", "star"};
   nl_cheng_pattern *pat[NPAT];
   for (int i = 0; i < NPAT; i++) pat[i] = nl_cheng_pattern_load_or_die("c7_terrain", pdir, names[i], grid);

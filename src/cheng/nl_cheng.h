@@ -273,11 +273,17 @@ nl_status nl_cheng_run(const nl_cheng_config *c, const nl_cheng_pattern *pat, un
 
 struct nl_run;
 struct nl_table;
-/* Standard --set parameters: grid (64), w1, w2, f1, a1, octaves, temps
- * (n_temps; quick 8), moves_per_var (quick 5). Config from defaults. */
-void nl_cheng_run_params(struct nl_run *r, nl_cheng_config *c, int *grid);
-/* nl_cheng_config_check or "NAME: message", exit 2. */
-void nl_cheng_check_or_die(struct nl_run *r, const nl_cheng_config *c);
+/* The opening every Cheng experiment shares: strips "--patterns DIR"
+ * (nl_cheng_patterns_option) into *patterns, starts the run, and reads the
+ * standard --set parameters into *c and *grid: grid (64), w1, w2, f1, a1,
+ * octaves, temps (n_temps; quick 8), moves_per_var (quick 5), defaults
+ * otherwise. The experiment then reads its own parameters and calls
+ * nl_cheng_params_done. */
+struct nl_run *nl_cheng_begin(const char *name, const char *title, int *argc, char **argv,
+                              nl_cheng_config *c, int *grid, const char **patterns);
+/* nl_run_params_done, then nl_cheng_config_check ("NAME: message", exit 2),
+ * and the patterns folder into the manifest. */
+void nl_cheng_params_done(struct nl_run *r, const nl_cheng_config *c, const char *patterns);
 /* nl_cheng_run for seeds seed0 .. seed0+k-1 into evs[k]; the first seed's
  * table in *first if not NULL. */
 nl_status nl_cheng_run_seeds(const nl_cheng_config *c, const nl_cheng_pattern *pat,

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-void nl_cheng_run_params(nl_run *r, nl_cheng_config *c, int *grid)
+static void run_params(nl_run *r, nl_cheng_config *c, int *grid)
 {
   int q = nl_run_quick(r);
   *c = nl_cheng_config_default();
@@ -22,10 +22,21 @@ void nl_cheng_run_params(nl_run *r, nl_cheng_config *c, int *grid)
   c->sched.moves_per_var = nl_run_param(r, "moves_per_var", q ? 5 : c->sched.moves_per_var, 1e-3, 1e6);
 }
 
-void nl_cheng_check_or_die(nl_run *r, const nl_cheng_config *c)
+nl_run *nl_cheng_begin(const char *name, const char *title, int *argc, char **argv,
+                       nl_cheng_config *c, int *grid, const char **patterns)
 {
+  *patterns = nl_cheng_patterns_option(argc, argv);
+  nl_run *r = nl_run_begin(name, title, *argc, argv);
+  run_params(r, c, grid);
+  return r;
+}
+
+void nl_cheng_params_done(nl_run *r, const nl_cheng_config *c, const char *patterns)
+{
+  nl_run_params_done(r);
   nl_error err;
   if (nl_cheng_config_check(c, &err)) nl_run_die(r, 2, "%s", err.msg);
+  nl_run_note(r, "patterns", "%s", patterns);
 }
 
 nl_status nl_cheng_run_seeds(const nl_cheng_config *c, const nl_cheng_pattern *pat,
