@@ -192,3 +192,33 @@ nl_status nl_parse_long(const char *what, const char *s, long lo, long hi,
   *out = v;
   return NL_OK;
 }
+
+/* splitmix64 (Steele, Lea & Flood, "Fast splittable pseudorandom number
+ * generators", OOPSLA 2014): the golden-ratio increment, then Stafford's
+ * variant 13 finaliser. A bijection on 64 bits, so distinct inputs never
+ * collide before the final truncation. */
+unsigned long long nl_seed_mix(unsigned long long x)
+{
+  unsigned long long z = x + 0x9E3779B97F4A7C15ULL;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31);
+}
+
+unsigned long nl_seed_stream(unsigned long seed, const char *role, unsigned long index)
+{
+  unsigned long long h = 0xcbf29ce484222325ULL;   /* FNV-1a 64 of the role name */
+  for (const unsigned char *p = (const unsigned char *)role; *p; p++) {
+    h ^= *p;
+    h *= 0x100000001b3ULL;
+  }
+  unsigned long long z = nl_seed_mix((unsigned long long)seed);
+  z = nl_seed_mix(z ^ h);
+  z = nl_seed_mix(z ^ (unsigned long long)index);
+  return (unsigned long)z;
+}
+
+unsigned long nl_seed_replicate(unsigned long base, long k)
+{
+  return base + (unsigned long)k;
+}

@@ -66,6 +66,37 @@ nl_status nl_parse_double(const char *what, const char *s, double lo, double hi,
 nl_status nl_parse_long(const char *what, const char *s, long lo, long hi,
                         long *out, nl_error *err);
 
+/* ---- the seed rule -----------------------------------------------------
+ *
+ * Every random stream in noiselab is derived by one rule from the run seed
+ * (--seed) and a stream id: a role name and an index.
+ *
+ *   unsigned long s = nl_seed_stream(seed, "pool.run", q);   // run q's annealer
+ *   gsl_rng_set(rng, s);
+ *
+ * The derivation is splitmix64 (Steele, Lea & Flood 2014, the seeding
+ * generator of Java's SplittableRandom and of numpy's SeedSequence idea):
+ * z = mix(seed), z = mix(z ^ fnv1a(role)), z = mix(z ^ index). Distinct
+ * (role, index) pairs give unrelated seeds, so roles that must be
+ * independent (a noise table and the annealer that walks it, a subsample
+ * and k-means++) only need different role names; an index numbers the
+ * members of one role (run q of a pool, colour channel c). Results then do
+ * not depend on which thread runs which stream.
+ *
+ * GSL's mt19937 reads the low 32 bits of a seed; a seed whose low 32 bits
+ * are 0 means 4357 there, which the rule reaches with probability 2^-32.
+ *
+ * Replicates: an experiment with --seed N --seeds K makes K independent
+ * runs whose run seeds are N, N+1, ..., N+K-1 (nl_seed_replicate), so a
+ * sweep can split the K runs across tasks and still merge to the same set.
+ * Every stream of replicate k is then derived from its run seed by the rule.
+ * No other seed arithmetic appears anywhere in the code. */
+unsigned long nl_seed_stream(unsigned long seed, const char *role, unsigned long index);
+/* The run seed of replicate k of a run with base seed `base`: base + k. */
+unsigned long nl_seed_replicate(unsigned long base, long k);
+/* splitmix64's output function (the mixer behind nl_seed_stream). */
+unsigned long long nl_seed_mix(unsigned long long x);
+
 /* Wall-clock seconds from a monotonic clock. */
 double nl_time_now(void);
 
