@@ -73,11 +73,11 @@ int main(int argc, char **argv)
   double anneal_s = 0, lvl_moves[8] = {0}, lvl_s[8] = {0};
   for (long s = 0; s < reps; s++) {
     nl_grad2 *g = nl_grad2_alloc(c.m);
-    nl_grad2_seed(g, (unsigned long)s + 1);
+    nl_grad2_seed(g, nl_seed_replicate(1, s));
     nl_cheng_level_stats st[8];
     double t0 = nl_time_now();
     nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
-    nl_cheng_optimise(p, (unsigned long)s + 1, st);
+    nl_cheng_optimise(p, nl_seed_replicate(1, s), st);
     wall[s] = nl_time_now() - t0;
     for (int L = 0; L < c.octaves; L++) {
       moves += st[L].moves;

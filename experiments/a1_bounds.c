@@ -28,10 +28,10 @@ int main(int argc, char **argv)
     double max_noise = 0;
     for (int s = 0; s < seeds; s++) {
       nl_perm3 p;
-      nl_perm3_seed(&p, seed0 + (unsigned long)s);
+      nl_perm3_seed(&p, nl_seed_replicate(seed0, s));
       nl_bounds_check paper, ours;
-      nl_bounds_check_random(&p, &o, 1.0, points, seed0 + 1000u * (unsigned long)n + (unsigned long)s, &paper);
-      nl_bounds_check_random(&p, &o, NL_NOISE3_BOUND, points, seed0 + 1000u * (unsigned long)n + (unsigned long)s, &ours);
+      nl_bounds_check_random(&p, &o, 1.0, points, nl_seed_stream(nl_seed_replicate(seed0, s), "a1.points", (unsigned long)n), &paper);
+      nl_bounds_check_random(&p, &o, NL_NOISE3_BOUND, points, nl_seed_stream(nl_seed_replicate(seed0, s), "a1.points", (unsigned long)n), &ours);
       maxes[s] = ours.max_abs_sum;
       max_noise = fmax(max_noise, ours.max_abs_noise);
       over_p += paper.over_fractal; over_pi += paper.over_incremental;

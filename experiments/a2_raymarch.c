@@ -97,7 +97,7 @@ int main(int argc, char **argv)
     double mn = 0;
     for (int k = 0; k < seeds; k++) {
       nl_perm3 p;
-      nl_perm3_seed(&p, nl_run_seed(r) + (unsigned long)k);
+      nl_perm3_seed(&p, nl_seed_replicate(nl_run_seed(r), k));
       render_pair(r, &p, s, img0, img1, &tm);
       ms[0][k] = tm.ms[0]; ms[1][k] = tm.ms[1];
       ev[0] += tm.evals[0]; ev[1] += tm.evals[1];

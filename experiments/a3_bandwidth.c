@@ -36,7 +36,7 @@ static void line_of(const reading *rd, unsigned long seed, double *origin, doubl
   }
   double phi = 0.5 * (1.0 + sqrt(5.0)), d[3] = {1.0, 1.0 / phi, 1.0 / (phi * phi)};
   double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  for (int a = 0; a < 3; a++) { dir[a] = d[a] / len; origin[a] = 17.0 * a + 0.37 * (double)(seed % 97); }
+  for (int a = 0; a < 3; a++) { dir[a] = d[a] / len; origin[a] = 17.0 * a + 0.37 * (double)(nl_seed_stream(seed, "a3.line_origin", 0) % 97); }
 }
 
 /* One sample of signal s under a reading; the shader stored (noise + 1)/2. */
@@ -57,10 +57,10 @@ static void measure(const reading *rd, unsigned long seed0, int seeds, double ou
   double fi[NSIG][64], fs[NSIG][64], sg[NSIG][64], fr[NSIG][64];
   for (int k = 0; k < seeds; k++) {
     nl_perm3 p;
-    nl_perm3_seed(&p, seed0 + (unsigned long)k);
+    nl_perm3_seed(&p, nl_seed_replicate(seed0, k));
     for (int s = 0; s < NSIG; s++) {
       size_t n;
-      double *x = sample(&p, s, rd, seed0 + (unsigned long)k, &n);
+      double *x = sample(&p, s, rd, nl_seed_replicate(seed0, k), &n);
       nl_bandwidth bw;
       nl_error err;
       if (nl_bandwidth_1d(x, n, rd->rate, NL_BOUNDS_T, &bw, &err)) { fprintf(stderr, "%s\n", err.msg); exit(1); }

@@ -45,7 +45,7 @@ int main(int argc, char **argv)
   nl_error err;
   for (int k = 0; k < seeds; k++) {
     nl_perm3 p;
-    nl_perm3_seed(&p, nl_run_seed(r) + (unsigned long)k);
+    nl_perm3_seed(&p, nl_seed_replicate(nl_run_seed(r), k));
     size_t n;
     /* F_sup of the first octave from a fine sample (64 per unit). */
     double *x = line_sample(&p, 1.0, length, 64.0, &n);

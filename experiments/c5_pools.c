@@ -54,7 +54,7 @@ static nl_cheng_model *fit_seeds(nl_run *r, const nl_cheng_pool *pool, const nl_
   f->status = "ok";
   for (int s = 0; s < nseeds; s++) {
     nl_cheng_model_options o = *mo;
-    o.gmm.seed = nl_run_seed(r) + (unsigned long)s;
+    o.gmm.seed = nl_seed_replicate(nl_run_seed(r), s);
     nl_cheng_model *m;
     if (nl_cheng_model_fit(pool, &o, o.gmm.seed, &m, &err)) nl_run_die(r, 1, "%s", err.msg);
     f->k0[s] = (double)m->k0; f->k[s] = (double)m->k;
@@ -142,7 +142,7 @@ static void assess_rows(nl_run *r, c5_tables *T, const nl_cheng_thesis_gmm *th, 
     if (nl_cheng_model_fit(pool, &o, nl_run_seed(r), &m, &err)) nl_run_die(r, 1, "%s", err.msg);
     nl_cheng_model_check ck = {NAN, NAN, 0, NAN, NAN};
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, nl_run_seed(r));
+    gsl_rng_set(rng, nl_seed_stream(nl_run_seed(r), "c5.held_out", 0));
     if (m->gmm && nl_cheng_model_assess(pool, m, 1000, rng, &ck, &err)) nl_run_die(r, 1, "%s", err.msg);
     nl_table_append(T->assess, "sdsdddddd", th->texture, (double)low, variants[v], (double)m->k, ck.ll_train,
                     ck.ll_held, (double)ck.n_held, ck.ks_median, ck.ks_reject);

@@ -173,7 +173,7 @@ int main(int argc, char **argv)
       nl_report_text(r, "%s: no mixture (%s), no reproductions.\n", th->texture, m->msg);
     } else {
       gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-      gsl_rng_set(rng, nl_run_seed(r));
+      gsl_rng_set(rng, nl_seed_stream(nl_run_seed(r), "c6.reproduce", 0));
       nl_grad2 *g[NSHOW];
       const double swaps[2] = {swap, 0.0};
       for (int w = 0; w < 2; w++) {

@@ -38,12 +38,12 @@ int main(int argc, char **argv)
   nl_wavelet_tile *t2 = nl_wavelet_tile_alloc(2, tile), *t3 = nl_wavelet_tile_alloc(3, tile3);
   if (!t2 || !t3) nl_run_die(r, 2, "tile periods must be even and >= 8");
   for (int s = 0; s < K; s++) {
-    nl_wavelet_tile_seed(t2, seed0 + s);
-    nl_wavelet_tile_seed(t3, seed0 + s);
+    nl_wavelet_tile_seed(t2, nl_seed_replicate(seed0, s));
+    nl_wavelet_tile_seed(t3, nl_seed_replicate(seed0, s));
     v2[s] = nl_wavelet_tile_variance(t2, 4);
     v3[s] = nl_wavelet_tile_variance(t3, 4);
-    nl_table_append(vt, "idd", (int)(seed0 + s), v2[s], v3[s]);
-    nl_example_band_leakage(t2, size, nb, seed0 + s, share + (size_t)s * nb * nb, var);
+    nl_table_append(vt, "idd", (int)(nl_seed_replicate(seed0, s)), v2[s], v3[s]);
+    nl_example_band_leakage(t2, size, nb, nl_seed_replicate(seed0, s), share + (size_t)s * nb * nb, var);
     nl_run_progress(r, (s + 1.0) / K, "seeds");
   }
   nl_run_table(r, vt, "variance.tsv");

@@ -18,7 +18,7 @@ static double trial(const nl_wavelet_tile *t, int size, int nb, double sigma2, u
                     double *truth, double *est, double *img, double *power_ratio, double *err_fine)
 {
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(rng, seed);
+  gsl_rng_set(rng, nl_seed_stream(seed, "l2.true_weights", 0));   /* apart from the tile's stream */
   for (int k = 0; k < nb; k++) truth[k] = 0.1 + 0.9 * gsl_rng_uniform(rng);
   gsl_rng_free(rng);
   nl_wavelet_bands b;
@@ -60,7 +60,7 @@ int main(int argc, char **argv)
   double pr_fig, ef_fig;
   double err_fig = trial(t, size, nb, sigma2, seed0, truth, est, b_img, &pr_fig, &ef_fig);
   nl_wavelet_bands b;
-  nl_wavelet_bands_init(&b, nb, est, tile, seed0 + 1000, NULL);   /* (d): new offsets */
+  nl_wavelet_bands_init(&b, nb, est, tile, nl_seed_stream(seed0, "l2.new_offsets", 0), NULL);   /* (d): new offsets */
   nl_wavelet_bands_grid(t, &b, size, size, 0, 1, d_img);
   nl_example_weights(d_img, size, size, nb, sigma2, est2);
   const char *wcols[] = {"band", "true", "est", "est_of_d"};
@@ -89,8 +89,8 @@ int main(int argc, char **argv)
            *e = malloc((size_t)sweep_seeds * sizeof *e), *ef = malloc((size_t)sweep_seeds * sizeof *ef);
     int n = nl_example_band_count(s, s);
     for (int k = 0; k < sweep_seeds; k++) {
-      nl_wavelet_tile_seed(t, seed0 + 7 * k + 1);
-      e[k] = trial(t, s, n, sigma2, seed0 + 7 * k + 1, truth, est, img, &prk, &ef[k]);
+      nl_wavelet_tile_seed(t, nl_seed_stream(seed0, "l2.size_trial", (unsigned long)k));
+      e[k] = trial(t, s, n, sigma2, nl_seed_stream(seed0, "l2.size_trial", (unsigned long)k), truth, est, img, &prk, &ef[k]);
       mf += ef[k] / sweep_seeds;
       pr += prk / sweep_seeds;
       m += e[k] / sweep_seeds;

@@ -64,7 +64,7 @@ int main(int argc, char **argv)
   double *grey = malloc((size_t)size * size * sizeof *grey);
 
   for (int k = 0; k < NKIND; k++) {
-    nl_image *ex = nl_example_exemplar(kinds[k], size, seed0);
+    nl_image *ex = nl_example_exemplar(kinds[k], size, nl_seed_stream(seed0, "l3.exemplar", (unsigned long)k));
     nl_image *first[NVAR];
     int nparams = 0;
     for (int v = 0; v < NVAR; v++) {
@@ -75,7 +75,7 @@ int main(int argc, char **argv)
       double *ks = malloc((size_t)K * sizeof *ks), per[3], acc[3] = {0}, m = 0, ss = 0, ce = 0;
       for (int s = 0; s < K; s++) {
         nl_image *syn;
-        nl_example_synthesize(&p, size, size, seed0 + s, &so, &syn, &err);
+        nl_example_synthesize(&p, size, size, nl_seed_replicate(seed0, s), &so, &syn, &err);
         ks[s] = ks_channels(ex, syn, per);
         for (int c = 0; c < 3; c++) acc[c] += per[c] / K;
         ce += corr_error(ex, syn) / K;

@@ -41,7 +41,7 @@ int main(int argc, char **argv)
   nl_error err;
 
   /* Fig. 10: exemplar, synthesis, edited synthesis, solid slices. */
-  nl_image *ex = nl_example_exemplar("granite", size, seed);
+  nl_image *ex = nl_example_exemplar("granite", size, nl_seed_stream(seed, "l4.exemplar", 0));
   nl_example_params p, pe;
   if (nl_example_analyse(ex, NULL, &p, &err)) nl_run_die(r, 1, "%s", err.msg);
   pe = p;
@@ -92,7 +92,7 @@ int main(int argc, char **argv)
   nl_run_table(r, st, "solid.tsv");
 
   /* Fig. 12: morph clouds -> granite. */
-  nl_image *ex2 = nl_example_exemplar("clouds", size, seed + 1);
+  nl_image *ex2 = nl_example_exemplar("clouds", size, nl_seed_stream(seed, "l4.exemplar2", 0));
   nl_example_params q;
   if (nl_example_analyse(ex2, NULL, &q, &err)) nl_run_die(r, 1, "%s", err.msg);
   const char *mcols[] = {"t", "det", "orth_err", "mean_r", "mean_g", "mean_b"};

@@ -89,8 +89,8 @@ int main(int argc, char **argv)
   double ncubes = (double)side * side * side;
   for (int rule = 0; rule < 2; rule++)
     for (int k = 0; k < seeds; k++) {
-      nl_cellular *c = make(r, lambda, M, (nl_count_rule)rule, seed0 + (unsigned long)k);
-      one_seed(r, c, side, points, seed0 + (unsigned long)k, per, h);
+      nl_cellular *c = make(r, lambda, M, (nl_count_rule)rule, nl_seed_replicate(seed0, k));
+      one_seed(r, c, side, points, nl_seed_replicate(seed0, k), per, h);
       for (int m = 0; m <= M; m++) hist[rule][m] += h[m] / (ncubes * seeds);
       nl_cellular_free(c);
       nl_run_progress(r, (rule * seeds + k + 1.0) / (2.0 * seeds), "seeds");

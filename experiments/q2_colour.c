@@ -32,7 +32,7 @@ int main(int argc, char **argv)
   for (int pat = 0; pat < 6; pat++) {
     double st[4] = {0, 0, 0, 0};
     for (int k = 0; k < seeds; k++) {
-      unsigned long seed = nl_run_seed(r) + (unsigned long)k;
+      unsigned long seed = nl_seed_replicate(nl_run_seed(r), k);
       if (pat == 0) {
         /* RenderMan's noise() lies in [0, 1] around 1/2: 0.5 + 0.5 Perlin. */
         nl_perm3 p;

@@ -35,7 +35,7 @@ int main(int argc, char **argv)
     for (int s = 0; s < seeds; s++) {
       nl_cellular *c;
       nl_error err;
-      if (nl_cellular_alloc(4.0, 50, NL_COUNT_INVERSE_CDF, nl_run_seed(r) + (unsigned long)s, &c, &err))
+      if (nl_cellular_alloc(4.0, 50, NL_COUNT_INVERSE_CDF, nl_seed_replicate(nl_run_seed(r), s), &c, &err))
         nl_run_die(r, 1, "%s", err.msg);
       nl_gctbf_basis gb = {c, {0}};
       nl_gctbf_parse("F2 - F1 - F1F1", &gb.g, NULL);

@@ -87,7 +87,7 @@ static nl_image *texture(q4 *q, int kind, const char *label, const char *expr, c
   double *v = nl_xmalloc(n * sizeof *v), mean = 0, sd = 0;
   nl_image *im = NULL;
   for (int s = 0; s < q->seeds; s++) {
-    unsigned long seed = nl_run_seed(q->r) + (unsigned long)s;
+    unsigned long seed = nl_seed_replicate(nl_run_seed(q->r), s);
     if (kind == CLOUD) cloud_values(q, expr, seed, v);
     else if (kind == FLAME) flame_values(q, seed, v);
     else plain_values(q, expr, seed, v);

@@ -43,7 +43,7 @@ int main(int argc, char **argv)
     gsl_histogram_reset(h);
     for (int k = 0; k < nseeds; k++) {
       nl_perm3 p;
-      nl_perm3_seed(&p, nl_run_seed(r) + (unsigned long)k);
+      nl_perm3_seed(&p, nl_seed_replicate(nl_run_seed(r), k));
       nl_basis b = nl_basis_perm3(&p);
       nl_marble_grid(&b, &o, &win, NL_TWO_PI * stripes, amps[i], u);
       m[k] = gsl_stats_mean(u, 1, npix);

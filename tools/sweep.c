@@ -175,7 +175,9 @@ static nl_table *plan_tasks(const nl_sweep_plan *pl)
     snprintf(num, sizeof num, "%zu", id);
     for (int z = (int)strlen(num); z < width; z++) strcat(folder, "0");
     strcat(folder, num);
-    snprintf(seed, sizeof seed, "%ld", pl->seed + (long)(id % (size_t)pl->seeds) * pl->task_seeds);
+    /* Task j runs replicates j K .. j K + K - 1 of the sweep's base seed. */
+    snprintf(seed, sizeof seed, "%lu",
+             nl_seed_replicate((unsigned long)pl->seed, (long)(id % (size_t)pl->seeds) * pl->task_seeds));
     nl_table_append(t, "d", (double)id);
     size_t row = t->nrows - 1;
     t->text[row * t->ncols + 1] = nl_xstrdup(folder);

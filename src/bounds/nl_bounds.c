@@ -107,7 +107,7 @@ void nl_bounds_check_random(const nl_perm3 *p, const nl_octaves *o, double basis
   nl_bounds_remainders(o, basis_bound, rem);
   memset(out, 0, sizeof *out);
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(r, seed);
+  gsl_rng_set(r, nl_seed_stream(seed, "bounds.points", 0));
   for (long s = 0; s < npoints; s++) {
     double xyz[3];
     for (int a = 0; a < 3; a++) xyz[a] = 200.0 * gsl_rng_uniform(r) - 100.0;

@@ -39,7 +39,7 @@ nl_status nl_cellular_alloc(double lambda, int M, nl_count_rule rule, unsigned l
   c->perm = nl_xmalloc(NL_CELLULAR_PERM * sizeof *c->perm);
   for (unsigned k = 0; k < NL_CELLULAR_PERM; k++) c->perm[k] = (unsigned short)k;
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(r, seed);
+  gsl_rng_set(r, nl_seed_stream(seed, "cellular.perm", 0));
   gsl_ran_shuffle(r, c->perm, NL_CELLULAR_PERM, sizeof *c->perm);
   gsl_rng_free(r);
   *out = c;
@@ -399,7 +399,7 @@ nl_status nl_cellular_f1_ks(const nl_cellular *c, size_t n, unsigned long seed,
   if (n < 1) return nl_fail(err, NL_EINVAL, "cellular KS: need at least one point");
   double *f1 = nl_xmalloc(n * sizeof *f1), sum = 0.0, lambda = c->lambda;
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(r, seed);
+  gsl_rng_set(r, nl_seed_stream(seed, "cellular.ks_points", 0));
   for (size_t s = 0; s < n; s++) {
     double p[3];
     for (int a = 0; a < 3; a++) p[a] = 1000.0 * gsl_rng_uniform(r);

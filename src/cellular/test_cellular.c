@@ -79,22 +79,36 @@ NL_TEST(ordering_rows_and_brute_force)
   nl_cellular_free(c);
 }
 
-/* The inverse-CDF rule passes the chi-square test against Poisson(4) at
- * alpha = 0.01 (seed 1, 32^3 cubes); the paper's closest-p rule fails it. */
+/* Counts against Poisson(4) on 32^3 cubes, seeds 1..20. The paper's
+ * closest-p rule fails chi-square on every seed. The inverse-CDF rule keeps
+ * the mean at lambda but does not pass at the nominal rate: measured over
+ * seeds 1..200 (and over the same seeds before the seed rule changed), 9-10%
+ * of seeds give p <= 0.01 and 24-30% p <= 0.05, where independent counts
+ * would give 1% and 5%: neighbouring cubes' counts are not independent
+ * under the PERM hash of step 3. A one-seed "p > 0.01" test passes or fails
+ * by the draw, so we test what holds on every seed set: the mean count, and
+ * a chi-square far below the closest-p rule's. */
 NL_TEST(count_distribution_chisq)
 {
-  nl_cellular *a = make(NL_COUNT_INVERSE_CDF, 1), *b = make(NL_COUNT_CLOSEST, 1);
-  double ha[51], hb[51];
-  nl_chisq_result ra, rb;
-  nl_cellular_count_histogram(a, 0, 32, ha);
-  nl_cellular_count_histogram(b, 0, 32, hb);
-  NL_CHECK(nl_cellular_count_chisq(a, ha, &ra, NULL) == NL_OK);
-  NL_CHECK(nl_cellular_count_chisq(b, hb, &rb, NULL) == NL_OK);
-  NL_CHECK(ra.p > 0.01);
-  NL_CHECK(rb.p < 1e-10);
-  NL_CHECK(ra.df >= 9 && !ra.low_expected);
-  nl_cellular_free(a);
-  nl_cellular_free(b);
+  double sum = 0, n = 0;
+  for (unsigned long seed = 1; seed <= 20; seed++) {
+    nl_cellular *a = make(NL_COUNT_INVERSE_CDF, seed), *b = make(NL_COUNT_CLOSEST, seed);
+    double ha[51], hb[51];
+    nl_chisq_result ra, rb;
+    nl_cellular_count_histogram(a, 0, 32, ha);
+    nl_cellular_count_histogram(b, 0, 32, hb);
+    NL_CHECK(nl_cellular_count_chisq(a, ha, &ra, NULL) == NL_OK);
+    NL_CHECK(nl_cellular_count_chisq(b, hb, &rb, NULL) == NL_OK);
+    NL_CHECK(rb.p < 1e-10);
+    NL_CHECK(ra.chi2 < rb.chi2 / 100);
+    NL_CHECK(ra.df >= 9 && !ra.low_expected);
+    for (int m = 0; m <= 50; m++) { sum += m * ha[m]; n += ha[m]; }
+    nl_cellular_free(a);
+    nl_cellular_free(b);
+  }
+  /* 655360 counts: sd of the mean 2 / sqrt(n) = 0.0025 if independent;
+   * 0.03 leaves room for a doubled variance at 8 sd. */
+  NL_CHECK_NEAR(sum / n, 4.0, 0.03);
 }
 
 /* F1 follows 1 - exp(-lambda 4/3 pi r^3) under the inverse-CDF rule. */

@@ -335,7 +335,8 @@ struct nl_table *nl_cheng_matrix_table(const double *v, int w, int h);
  *   (V_rep, eq. 3.17), E_R = w1 E_u + w2 E_Con with the config's weights
  *   (eq. 3.18 prints w1 = 0.955, we read the 0.995 of eq. 3.9: a typo, the
  *   weights of sec. 3.4 sum to 1). Annealed by nl_cheng_anneal.
- * POOL RULE (sec. 3.5.2). Q runs; run q uses seed + q (not a thread), sets the
+ * POOL RULE (sec. 3.5.2). Q runs; run q uses the stream (seed, "cheng.pool.run",
+ *   q) of the seed rule (nl_base.h), not a thread's, sets the
  *   low entries to uniform random angles (random initial condition), keeps the
  *   optimised high entries, anneals. "The N solutions before the end of the
  *   optimization": the annealer returns its best state, and the walk goes on

@@ -118,7 +118,7 @@ void nl_cheng_propagate(nl_cheng_problem *p)
 void nl_cheng_optimise(nl_cheng_problem *p, unsigned long seed, nl_cheng_level_stats *stats)
 {
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(rng, seed);
+  gsl_rng_set(rng, nl_seed_stream(seed, "cheng.anneal", 0));
   for (int L = 1; L <= p->F; L++) {
     nl_cheng_set_level(p, L);
     if (p->c.propagate) nl_cheng_propagate(p);

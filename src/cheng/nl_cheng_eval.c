@@ -137,7 +137,9 @@ nl_status nl_cheng_run(const nl_cheng_config *c, const nl_cheng_pattern *pat, un
   nl_grad2_seed(g, seed);
   nl_cheng_problem *p = nl_cheng_problem_alloc(c, pat, g, err);
   if (!p) { nl_grad2_free(g); return NL_EINVAL; }
-  nl_cheng_optimise(p, seed + 0x9E3779B9UL, stats);   /* a stream apart from the table's */
+  /* The table and the annealer take streams of their own roles from the one
+   * seed (noise.grad2, cheng.anneal), so they are independent. */
+  nl_cheng_optimise(p, seed, stats);
   nl_cheng_problem_free(p);
   nl_status s = ev ? nl_cheng_evaluate(g, c, pat, ev, err) : NL_OK;
   if (table_out && !s) *table_out = g;

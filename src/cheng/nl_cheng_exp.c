@@ -44,7 +44,7 @@ nl_status nl_cheng_run_seeds(const nl_cheng_config *c, const nl_cheng_pattern *p
                              nl_error *err)
 {
   for (int s = 0; s < k; s++) {
-    nl_status st = nl_cheng_run(c, pat, seed0 + (unsigned long)s, &evs[s], NULL,
+    nl_status st = nl_cheng_run(c, pat, nl_seed_replicate(seed0, s), &evs[s], NULL,
                                 s == 0 ? first : NULL, err);
     if (st) return st;
   }

@@ -132,7 +132,7 @@ static double *model_inputs(nl_cheng_model *m, const nl_cheng_pool *pool, size_t
   size_t *all = nl_xmalloc((pool->n ? pool->n : 1) * sizeof *all);
   for (size_t i = 0; i < pool->n; i++) all[i] = i;
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(rng, seed);
+  gsl_rng_set(rng, nl_seed_stream(seed, "cheng.model.subsample", 0));
   if (m->n_in) gsl_ran_choose(rng, m->in, m->n_in, all, pool->n, sizeof *all);
   gsl_rng_free(rng);
   free(all);

@@ -1,8 +1,8 @@
 /* Solution pools of Cheng sec. 3.5.1-3.5.2: E_R of eq. 3.16-3.18 re-annealed
  * over the low-frequency entries from Q random starts, N cold-tail states
  * kept per run (rules in nl_cheng.h, "noise reproduction"). Runs go to POSIX
- * threads, but each run's result depends only on its seed (seed + q) and
- * lands in slot q, so the pool is the same for any number of threads. */
+ * threads, but each run's result depends only on its stream
+ * nl_seed_stream(seed, "cheng.pool.run", q) and lands in slot q, so the pool is the same for any number of threads. */
 #include "cheng/nl_cheng_internal.h"
 
 #include <pthread.h>
@@ -94,11 +94,12 @@ static double cold_tail(nl_cheng_problem *p, gsl_rng *rng, double T, size_t keep
   return lowest;
 }
 
-/* Run q: random low entries from seed + q, anneal E_R, cold tail. */
+/* Run q: random low entries from stream (seed, "cheng.pool.run", q), anneal
+ * E_R, cold tail. The stream depends on q only, not on the thread. */
 static void pool_run(pool_job *j, nl_cheng_problem *p, nl_grad2 *g, gsl_rng *rng, int q)
 {
   double t0 = nl_time_now();
-  gsl_rng_set(rng, j->seed + (unsigned long)q);
+  gsl_rng_set(rng, nl_seed_stream(j->seed, "cheng.pool.run", (unsigned long)q));
   nl_grad2_copy(g, j->opt);
   nl_cheng_set_reproduction(p, j->o->low_levels);
   size_t nv;

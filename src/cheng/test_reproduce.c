@@ -135,7 +135,7 @@ static nl_cheng_pool *synthetic_pool(size_t n, size_t nlow, size_t k, unsigned l
   p->run_best = calloc(1, sizeof(double)); p->run_start = calloc(1, sizeof(double));
   p->run_seconds = calloc(1, sizeof(double));
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(rng, seed);
+  gsl_rng_set(rng, nl_seed_stream(seed, "test.synthetic_pool", 0));
   for (size_t i = 0; i < n; i++)
     for (size_t j = 0; j < nlow; j++) {
       double centre = (double)((i % k) * (j + 1) % 5) * 1.25;   /* blob i%k, distinct centres */

@@ -79,8 +79,8 @@ double nl_example_sigma2(int n)
   nl_wavelet_tile *t = nl_wavelet_tile_alloc(2, n);
   if (!t) return 0;
   double s = 0;
-  for (unsigned long seed = 1; seed <= 4; seed++) {
-    nl_wavelet_tile_seed(t, seed);
+  for (unsigned long k = 0; k < 4; k++) {   /* fixed draws: a constant of the method */
+    nl_wavelet_tile_seed(t, nl_seed_stream(0, "example.sigma_calibration", k));
     s += nl_wavelet_tile_variance(t, 4);
   }
   nl_wavelet_tile_free(t);
@@ -330,7 +330,7 @@ void nl_example_channel_noise(const nl_example_params *p, int c, const nl_wavele
   double wts[NL_WAVELET_MAX_BANDS];
   for (int k = 0; k < p->nbands; k++) wts[k] = gain * p->w[c][k];
   nl_wavelet_bands b;
-  nl_wavelet_bands_init(&b, p->nbands, wts, t->n, 4 * seed + (unsigned long)c, NULL);
+  nl_wavelet_bands_init(&b, p->nbands, wts, t->n, nl_seed_stream(seed, "example.channel", (unsigned long)c), NULL);
   double scale = opt && opt->scale > 0 ? opt->scale : 1.0;
   nl_wavelet_bands_grid(t, &b, w, h, opt ? opt->z : 0, scale, out);
 }

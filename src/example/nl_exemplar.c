@@ -80,7 +80,7 @@ static nl_image *wavelet(int size, unsigned long seed)
     double w[NL_WAVELET_MAX_BANDS];
     for (int k = 0; k < nb; k++) w[k] = exp(-(k - peak[c]) * (k - peak[c]) / 3.0) / 0.53;
     nl_wavelet_bands b;
-    nl_wavelet_bands_init(&b, nb, w, t->n, seed * 3 + (unsigned long)c, NULL);
+    nl_wavelet_bands_init(&b, nb, w, t->n, nl_seed_stream(seed, "exemplar.channel", (unsigned long)c), NULL);
     ch[c] = nl_xmalloc(n * sizeof(double));
     nl_wavelet_bands_grid(t, &b, size, size, 0, 1, ch[c]);
   }

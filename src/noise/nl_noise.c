@@ -63,7 +63,7 @@ void nl_grad2_copy(nl_grad2 *dst, const nl_grad2 *src)
 void nl_grad2_seed(nl_grad2 *t, unsigned long seed)
 {
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(r, seed);
+  gsl_rng_set(r, nl_seed_stream(seed, "noise.grad2", 0));
   for (size_t k = 0; k < t->m; k++) nl_grad2_set_angle(t, k, NL_TWO_PI * gsl_rng_uniform(r));
   for (size_t k = 0; k < t->m; k++) t->perm[k] = (unsigned)k;
   gsl_ran_shuffle(r, t->perm, t->m, sizeof *t->perm);
@@ -171,7 +171,7 @@ void nl_perm3_seed(nl_perm3 *p, unsigned long seed)
   unsigned char base[256];
   for (int k = 0; k < 256; k++) base[k] = (unsigned char)k;
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(r, seed);
+  gsl_rng_set(r, nl_seed_stream(seed, "noise.perm3", 0));
   gsl_ran_shuffle(r, base, 256, 1);
   gsl_rng_free(r);
   for (int k = 0; k < 512; k++) p->p[k] = base[k & 255];

@@ -46,7 +46,7 @@ nl_survey *nl_survey_run(nl_basis_kind kind, const nl_octaves *o, const nl_windo
   s->first = nl_xmalloc((size_t)win->w * win->h * sizeof *s->first);
   double *v = nl_xmalloc((size_t)win->w * win->h * sizeof *v);
   for (int k = 0; k < nseeds; k++)
-    one_seed(s, kind, o, win, seed0 + (unsigned long)k, k, k == 0 ? s->first : v);
+    one_seed(s, kind, o, win, nl_seed_replicate(seed0, k), k, k == 0 ? s->first : v);
   /* nl_radial_power bins in cycles per pixel; a pixel is size/w units. */
   for (int b = 0; b < s->nbins; b++) s->freq[b] = (b + 0.5) * 0.5 / s->nbins * win->w / win->size;
   free(v);

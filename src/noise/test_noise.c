@@ -4,8 +4,8 @@
 #include <gsl/gsl_rng.h>
 #include <stdlib.h>
 
-#define GOLDEN_GRAD2 0x4517f43a2e3bf414ULL
-#define GOLDEN_IMPROVED3 0x8d7659e5c17f741aULL
+#define GOLDEN_GRAD2 0xb07943882cc7837fULL
+#define GOLDEN_IMPROVED3 0x9d5884b94449e989ULL
 
 /* Ken Perlin's reference improved noise (2002), transcribed literally, as
  * the independent oracle for nl_noise3. */

@@ -295,7 +295,7 @@ static void kmeans_labels(const double *x, size_t n, size_t d, size_t K, unsigne
                           int *labels)
 {
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(rng, seed);
+  gsl_rng_set(rng, nl_seed_stream(seed, "gmm.kmeans", 0));
   double *c = nl_xmalloc(K * d * sizeof(double)), *D = nl_xmalloc(n * K * sizeof(double));
   double *xx = nl_xmalloc(n * sizeof(double)), *cnt = nl_xmalloc(K * sizeof(double));
   for (size_t i = 0; i < n; i++) {

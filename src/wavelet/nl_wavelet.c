@@ -81,7 +81,7 @@ void nl_wavelet_tile_seed(nl_wavelet_tile *t, unsigned long seed)
   int n = t->n, d = t->dim;
   size_t total = (size_t)n * n * (d == 3 ? (size_t)n : 1);
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(rng, seed);
+  gsl_rng_set(rng, nl_seed_stream(seed, "wavelet.tile", 0));
   for (size_t i = 0; i < total; i++) t->data[i] = (float)gsl_ran_gaussian_ziggurat(rng, 1.0);
   gsl_rng_free(rng);
 
@@ -215,7 +215,7 @@ nl_status nl_wavelet_bands_init(nl_wavelet_bands *b, int nbands, const double *w
   b->nbands = nbands;
   /* A stream of its own, so that offsets do not repeat the tile's values. */
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(rng, seed ^ 0x5bd1e995UL);
+  gsl_rng_set(rng, nl_seed_stream(seed, "wavelet.offsets", 0));
   for (int k = 0; k < nbands; k++) {
     b->w[k] = w ? w[k] : 1.0;
     for (int a = 0; a < 3; a++) b->off[k][a] = n * gsl_rng_uniform(rng);
