@@ -163,6 +163,17 @@ nl_run *nl_run_begin(const char *name, const char *title, int argc, char **argv)
   return r;
 }
 
+/* The file name the manifest is written under: manifest.tsv, or
+ * NL_MANIFEST_NAME when it is a plain hidden file name. The entry script sets
+ * it to a pending name and renames the file to manifest.tsv once the run's
+ * figures are made, so a folder is complete only when its figures are. */
+static const char *manifest_name(void)
+{
+  const char *s = getenv("NL_MANIFEST_NAME");
+  if (s && s[0] == '.' && strlen(s) > 1 && !strchr(s, '/') && strcmp(s, "..")) return s;
+  return "manifest.tsv";
+}
+
 /* The run is about to write: every parameter has been accepted (unknown
  * --set names are refused here at the latest), so now the folder is made and
  * the previous run's manifest removed (a folder with a manifest is a
@@ -174,9 +185,12 @@ static void prepare(nl_run *r)
   if (!r->params_checked) nl_run_params_done(r);
   nl_error err;
   if (nl_mkdir_p(r->out, &err)) nl_run_die(r, 1, "%s", err.msg);
-  char *m = nl_path_join(r->out, "manifest.tsv");
-  if (unlink(m) && errno != ENOENT) nl_run_die(r, 1, "%s: cannot remove: %s", m, strerror(errno));
-  free(m);
+  const char *names[2] = {"manifest.tsv", manifest_name()};
+  for (int k = 0; k < 2; k++) {
+    char *m = nl_path_join(r->out, names[k]);
+    if (unlink(m) && errno != ENOENT) nl_run_die(r, 1, "%s: cannot remove: %s", m, strerror(errno));
+    free(m);
+  }
   r->prepared = 1;
 }
 
@@ -402,7 +416,7 @@ int nl_run_end(nl_run *r)
   nl_run_note(r, "peak_rss_mb", "%.1f", ru.ru_maxrss / 1024.0);
   /* Always written: an experiment without declarations is all `exact`. */
   nl_run_table(r, r->checks, "checks.tsv");
-  nl_run_table(r, r->manifest, "manifest.tsv");
+  nl_run_table(r, r->manifest, manifest_name());
   for (int k = 0; k < r->nset; k++) { free(r->set_key[k]); free(r->set_val[k]); }
   free(r->set_key); free(r->set_val); free(r->set_used);
   nl_table_free(r->manifest);
