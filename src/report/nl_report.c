@@ -1,7 +1,10 @@
+#define _GNU_SOURCE   /* RTLD_DEFAULT, dladdr */
 #include "report/nl_report.h"
+#include "report/nl_build_info.h"
 
 #include <gsl/gsl_version.h>
 #include <dirent.h>
+#include <dlfcn.h>
 #include <errno.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -401,6 +404,56 @@ static void write_text(nl_run *r, const char *file, const char *text)
   free(p);
 }
 
+/* ---- where the run was made --------------------------------------------- */
+
+/* /proc/cpuinfo's first "model name" (x86) or "Model"/"cpu model", else "unknown". */
+static void cpu_model(char *buf, size_t n)
+{
+  snprintf(buf, n, "unknown");
+  FILE *fp = fopen("/proc/cpuinfo", "r");
+  if (!fp) return;
+  char line[512];
+  while (fgets(line, sizeof line, fp)) {
+    char *colon = strchr(line, ':');
+    if (!colon) continue;
+    if (strncmp(line, "model name", 10) && strncmp(line, "Model", 5) && strncmp(line, "cpu model", 9)) continue;
+    char *v = colon + 1;
+    while (*v == ' ' || *v == '\t') v++;
+    v[strcspn(v, "\r\n")] = '\0';
+    if (*v) { snprintf(buf, n, "%s", v); break; }
+  }
+  fclose(fp);
+}
+
+/* The BLAS the process runs with. OpenBLAS's own functions are looked up at
+ * run time (dlsym), so the library builds and runs without OpenBLAS. */
+static void note_platform(nl_run *r)
+{
+  char buf[512];
+  cpu_model(buf, sizeof buf);
+  note(r, "cpu", buf);
+  void *sym = dlsym(RTLD_DEFAULT, "openblas_get_config");
+  if (!sym) sym = dlsym(RTLD_DEFAULT, "cblas_dgemm");
+  Dl_info info;
+  const char *lib = sym && dladdr(sym, &info) && info.dli_fname ? info.dli_fname : "unknown";
+  char *(*corename)(void) = (char *(*)(void))dlsym(RTLD_DEFAULT, "openblas_get_corename");
+  char *(*config)(void) = (char *(*)(void))dlsym(RTLD_DEFAULT, "openblas_get_config");
+  int (*threads)(void) = (int (*)(void))dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
+  if (config) {
+    nl_run_note(r, "blas", "OpenBLAS (%s)", lib);
+    const char *core = corename ? corename() : NULL, *cfg = config();
+    note(r, "blas_core", core && *core ? core : "unknown");
+    note(r, "blas_config", cfg && *cfg ? cfg : "unknown");
+    if (threads) nl_run_note(r, "blas_threads", "%d", threads());
+    else note(r, "blas_threads", "unknown");
+  } else {
+    nl_run_note(r, "blas", "%s", lib);
+    note(r, "blas_core", "none");
+    note(r, "blas_config", "none");
+    note(r, "blas_threads", "1");
+  }
+}
+
 int nl_run_end(nl_run *r)
 {
   write_text(r, "report.md", r->md ? r->md : "");
@@ -409,6 +462,8 @@ int nl_run_end(nl_run *r)
   nl_run_note(r, "gsl", "%s", GSL_VERSION);
   nl_run_note(r, "openimageio", "%s", nl_image_library_version());
   nl_run_note(r, "compiler", "%s", __VERSION__);
+  note(r, "cflags", NL_BUILD_CFLAGS);
+  note_platform(r);
   note(r, "started", r->started);
   nl_run_note(r, "seconds", "%.3f", nl_time_now() - r->t0);
   struct rusage ru;

@@ -25,8 +25,16 @@
  *   --help
  * The manifest (manifest.tsv: key, value) records the experiment, seed,
  * parameters, commit (NL_COMMIT from the entry script), library versions,
- * wall time, peak memory and the platform (cpu, blas, blas_core, blas_config,
- * blas_threads, compiler, cflags). It is written last and removed first, so a
+ * wall time, peak memory and where it was made: compiler (version), cflags
+ * (project and user C flags, buildtype, optimisation, sanitizers), cpu
+ * (/proc/cpuinfo model name), blas (library file; "OpenBLAS (path)" when
+ * OpenBLAS is loaded), blas_core, blas_config, blas_threads (OpenBLAS's
+ * openblas_get_corename/config/num_threads; "none" without OpenBLAS).
+ * The regression check compares none of these (nor started, seconds,
+ * peak_rss_mb), but names cpu and blas_core when it finds drift.
+ * NL_MANIFEST_NAME (a hidden file name, set by the entry script) makes
+ * nl_run_end write the manifest under that name instead; the script renames
+ * it to manifest.tsv once the figures are made. It is written last and removed first, so a
  * folder with a manifest is a complete run. Nothing in the output folder is
  * touched before the run writes: the folder is made and the old manifest
  * removed at the first write (nl_run_table, nl_run_image, nl_run_path,
