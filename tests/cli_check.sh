@@ -72,6 +72,36 @@ run 1 param $'manifest.tsv\t-\tparam\tsize=8'
 mkdir -p "$out/r1" "$out/r2"; cp -r "$ref" "$out/r1/t1"; cp -r "$ref" "$out/r2/t1"
 "$check" "$out/r1" "$out/r2" t1 | grep -q 'check: 1 experiment, 2 tables'
 
+# Many drifted values: the first 10 lines and a count; --all every line. The
+# summary names the experiment and the platform of both runs: the reference
+# predates the cpu/blas_core keys ("unknown"), then another kernel, then same.
+copy many
+for i in $(seq 12); do printf '%s\t0.001\n' "$i" >>"$out/many/spec.tsv"; done
+cp -r "$out/many" "$out/many12"
+for i in $(seq 12); do edit many12 spec.tsv $((i + 2)) 2 0.002; done
+cp "$ref/spec.tsv" "$out/spec.orig"; cp "$ref/manifest.tsv" "$out/manifest.orig"; cp "$out/many/spec.tsv" "$ref/spec.tsv"
+rc=0; "$check" "$ref" "$out/many12" >"$out/many.out" || rc=$?
+[ "$rc" = 1 ] || { echo "many: exit $rc"; cat "$out/many.out"; exit 1; }
+[ "$(grep -c $'^t1\tspec.tsv\t' "$out/many.out")" = 10 ] || { echo "many: wanted 10 value lines"; cat "$out/many.out"; exit 1; }
+grep -q '^check: t1: 12 drifted (first 10 shown; --all for every one); reference vs this run: CPU unknown (reference: not recorded, this run: not recorded), BLAS kernel unknown' "$out/many.out" \
+  || { echo "many: summary line"; cat "$out/many.out"; exit 1; }
+grep -q 'check: 1 experiment, 2 tables, .* 12 drifted' "$out/many.out" || { echo "many: total"; cat "$out/many.out"; exit 1; }
+rc=0; "$check" --all "$ref" "$out/many12" >"$out/all.out" || rc=$?
+[ "$rc" = 1 ] && [ "$(grep -c $'^t1\tspec.tsv\t' "$out/all.out")" = 12 ] && grep -q '^check: t1: 12 drifted; ' "$out/all.out" \
+  || { echo "--all: rc=$rc"; cat "$out/all.out"; exit 1; }
+printf 'cpu\tAMD EPYC\nblas_core\tSkylakeX\n' >>"$ref/manifest.tsv"
+printf 'cpu\tAMD EPYC\nblas_core\tHaswell\nstarted\t2030-01-01T00:00:00Z\nseconds\t99\npeak_rss_mb\t1\nblas_threads\t7\n' >>"$out/many12/manifest.tsv"
+"$check" "$ref" "$out/many12" >"$out/plat.out" || true
+grep -q '^check: t1: 12 drifted.*CPU same (AMD EPYC), BLAS kernel other (reference SkylakeX, this run Haswell)$' "$out/plat.out" \
+  || { echo "platform: summary"; cat "$out/plat.out"; exit 1; }
+# Platform and timing lines are never compared: same tables, other platform, no drift.
+cp -r "$ref" "$out/plat"; printf 'cpu\tOther CPU\nblas_core\tPrescott\n' >>"$out/plat/manifest.tsv"
+sed -i 's/^seconds\t.*/seconds\t42/' "$out/plat/manifest.tsv"
+run 0 plat '0 drifted'
+cp "$out/spec.orig" "$ref/spec.tsv"; cp "$out/manifest.orig" "$ref/manifest.tsv"
+rm -rf "$out/many" "$out/many12" "$out/plat"
+copy same; run 0 same '0 drifted'
+
 # Bad input: one line, exit 2.
 bad() {   # WANT_FRAGMENT ARGS...
   local want="$1"; shift
@@ -83,6 +113,7 @@ bad() {   # WANT_FRAGMENT ARGS...
 }
 bad "manifest.tsv" "$ref" "$out/nonexistent"
 bad "wanted COMMITTED NEW" "$ref"
+bad "--frob: unknown option" --frob "$ref" "$out/same"
 copy badrule; printf 'dist.tsv\tcount\twelch\n' >>"$out/badrule/checks.tsv"
 bad "welch needs SDCOL ALPHA" "$out/badrule" "$ref"
 copy nocol; printf 'dist.tsv\tcount\twelch nosuch 1e-3\n' >>"$out/nocol/checks.tsv"

@@ -12,9 +12,16 @@
  * declaration takes effect when the references are made again). The
  * manifests' seed, seeds, quick and param lines must match exactly.
  *
+ * The other manifest lines (commit, versions, cpu, blas*, cflags, started,
+ * seconds, peak_rss_mb) are never compared.
+ *
  * Output: one tab-separated line per drifted value on stdout
  *   experiment  table  row  column  committed  new  rule[: detail]
- * (row: 1-based data row, with its first text cell as a label), then
+ * (row: 1-based data row, with its first text cell as a label), the first
+ * 10 of an experiment only unless --all; for an experiment with drift a line
+ *   check: EXPERIMENT: D drifted[ (first 10 shown; --all for every one)];
+ *     reference vs this run: CPU same|other|unknown (...), BLAS kernel ...
+ * ("unknown" when a manifest predates the cpu and blas_core keys), then
  *   check: E experiments, T tables, V values compared, D drifted
  * Exit 0: no drift; 1: drift; 2: bad input (missing folder or manifest,
  * unreadable table, malformed rule or a rule naming a missing column).
@@ -29,8 +36,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#define NL_CHECK_SHOWN 10   /* drifted values printed per experiment without --all */
+
 typedef struct {
   const char *exp;
+  int all;                   /* --all: every drifted value */
+  size_t exp_drifted;        /* drift in the current experiment */
   int n_ref, n_new;          /* seeds behind each side's multi-seed summaries */
   nl_table *rules;           /* committed checks.tsv, or NULL: all exact */
   size_t tables, values, drifted;
@@ -80,8 +91,9 @@ static const char *cell_text(const nl_table *t, size_t row, size_t col, char *bu
 static void drift(nl_check_ctx *c, const char *table, const char *row, const char *col,
                   const char *ref, const char *new, const char *rule)
 {
-  printf("%s\t%s\t%s\t%s\t%s\t%s\t%s\n", c->exp, table, row, col, ref, new, rule);
   c->drifted++;
+  if (++c->exp_drifted <= NL_CHECK_SHOWN || c->all)
+    printf("%s\t%s\t%s\t%s\t%s\t%s\t%s\n", c->exp, table, row, col, ref, new, rule);
 }
 
 /* The rule for table/column: a named column beats "*"; default exact. */
@@ -269,6 +281,32 @@ static void nl_check_manifests(nl_check_ctx *c, const nl_table *ref, const nl_ta
   }
 }
 
+/* "CPU same (X)", "CPU other (X -> Y)" or "CPU unknown (...)" for one
+ * platform key of the two manifests. */
+static void platform_phrase(const nl_table *ref, const nl_table *new, const char *key,
+                            const char *label, char *out, size_t n)
+{
+  char ba[32], bb[32];
+  const char *a = manifest_get(ref, key, ba), *b = manifest_get(new, key, bb);
+  if (!a || !b || !strcmp(a, "unknown") || !strcmp(b, "unknown"))
+    snprintf(out, n, "%s unknown (reference: %s, this run: %s)", label, a ? a : "not recorded", b ? b : "not recorded");
+  else if (!strcmp(a, b)) snprintf(out, n, "%s same (%s)", label, a);
+  else snprintf(out, n, "%s other (reference %s, this run %s)", label, a, b);
+}
+
+/* After an experiment with drift: how much, and whether the reference was
+ * made on another CPU or BLAS kernel than the new run. */
+static void nl_check_summary(const nl_check_ctx *c, const nl_table *ref, const nl_table *new)
+{
+  char cpu[600], core[300], shown[80] = "";
+  if (!c->exp_drifted) return;
+  platform_phrase(ref, new, "cpu", "CPU", cpu, sizeof cpu);
+  platform_phrase(ref, new, "blas_core", "BLAS kernel", core, sizeof core);
+  if (!c->all && c->exp_drifted > NL_CHECK_SHOWN)
+    snprintf(shown, sizeof shown, " (first %d shown; --all for every one)", NL_CHECK_SHOWN);
+  printf("check: %s: %zu drifted%s; reference vs this run: %s, %s\n", c->exp, c->exp_drifted, shown, cpu, core);
+}
+
 /* The committed folder's tables, sorted. */
 static char **list_tables(const char *dir, size_t *n)
 {
@@ -295,23 +333,34 @@ static void nl_check_experiment(nl_check_ctx *c, const char *ref_dir, const char
   free(tables);
   nl_table_free(c->rules);
   c->rules = NULL;
+  nl_check_summary(c, mref, mnew);
+  c->exp_drifted = 0;
   nl_table_free(mref); nl_table_free(mnew);
   c->exp = NULL;
 }
 
 int main(int argc, char **argv)
 {
-  if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
-    printf("usage: noiselab-check COMMITTED_DIR NEW_DIR\n"
-           "       noiselab-check COMMITTED_ROOT NEW_ROOT EXPERIMENT...\n\n"
-           "Compares every table of the committed run with the new run by the rules of\n"
-           "the committed checks.tsv; prints one line per drifted value\n"
-           "(experiment, table, row, column, committed, new, rule) and a summary.\n"
-           "Exit 0: no drift, 1: drift, 2: bad input.\n");
-    return 0;
-  }
-  if (argc < 3) nl_check_die("wanted COMMITTED NEW [EXPERIMENT...] (see --help)");
   nl_check_ctx c = {0};
+  int w = 1;
+  for (int i = 1; i < argc; i++) {
+    if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+      printf("usage: noiselab-check [--all] COMMITTED_DIR NEW_DIR\n"
+             "       noiselab-check [--all] COMMITTED_ROOT NEW_ROOT EXPERIMENT...\n\n"
+             "Compares every table of the committed run with the new run by the rules of\n"
+             "the committed checks.tsv; prints one line per drifted value\n"
+             "(experiment, table, row, column, committed, new, rule), the first %d of\n"
+             "an experiment (--all: every one), a line per drifted experiment naming\n"
+             "the CPU and BLAS kernel of both runs, and a summary.\n"
+             "Exit 0: no drift, 1: drift, 2: bad input.\n", NL_CHECK_SHOWN);
+      return 0;
+    }
+    if (!strcmp(argv[i], "--all")) { c.all = 1; continue; }
+    if (argv[i][0] == '-' && argv[i][1]) nl_check_die("%s: unknown option (see --help)", argv[i]);
+    argv[w++] = argv[i];
+  }
+  argc = w;
+  if (argc < 3) nl_check_die("wanted COMMITTED NEW [EXPERIMENT...] (see --help)");
   int nexp = argc > 3 ? argc - 3 : 1;
   if (argc == 3) nl_check_experiment(&c, argv[1], argv[2]);
   for (int i = 3; i < argc; i++) {

@@ -139,9 +139,16 @@ nl_image *nl_cheng_pattern_image(const nl_cheng_pattern *p);
 nl_image *nl_cheng_shape(const char *name, int size);
 extern const char *const nl_cheng_shape_names[];   /* NULL-terminated */
 
-/* Removes "--patterns DIR" from argv (before nl_run_begin sees it) and returns
- * DIR, or "data/patterns" (experiments run from the repository root). */
+/* Removes "--patterns DIR" from argv (before nl_run_begin sees it) and sets
+ * *dir to DIR, or "data/patterns" (experiments run from the repository root);
+ * "--patterns: missing value" on error. */
+nl_status nl_cheng_patterns_parse(int *argc, char **argv, const char **dir, nl_error *err);
+/* The same; on error prints "PROG: message" and exits 2. */
 const char *nl_cheng_patterns_option(int *argc, char **argv);
+/* A pattern folder is what tools/patterns.c writes: the folder exists and
+ * every shape of nl_cheng_shape_names is there as NAME.png and reads as a
+ * pattern at `grid`. Checked before an experiment touches its output. */
+nl_status nl_cheng_patterns_check(const char *dir, int grid, nl_error *err);
 /* DIR/NAME.png read at `grid`; on failure prints "PROG: reason" and exits 2. */
 nl_cheng_pattern *nl_cheng_pattern_load_or_die(const char *prog, const char *dir,
                                                const char *name, int grid);
@@ -274,10 +281,11 @@ nl_status nl_cheng_run(const nl_cheng_config *c, const nl_cheng_pattern *pat, un
 struct nl_run;
 struct nl_table;
 /* The opening every Cheng experiment shares: strips "--patterns DIR"
- * (nl_cheng_patterns_option) into *patterns, starts the run, and reads the
+ * (nl_cheng_patterns_option) into *patterns, starts the run, reads the
  * standard --set parameters into *c and *grid: grid (64), w1, w2, f1, a1,
  * octaves, temps (n_temps; quick 8), moves_per_var (quick 5), defaults
- * otherwise. The experiment then reads its own parameters and calls
+ * otherwise, and checks the patterns folder (nl_cheng_patterns_check; "NAME:
+ * control patterns: ...", exit 2), all before the output folder is touched. The experiment then reads its own parameters and calls
  * nl_cheng_params_done. */
 struct nl_run *nl_cheng_begin(const char *name, const char *title, int *argc, char **argv,
                               nl_cheng_config *c, int *grid, const char **patterns);

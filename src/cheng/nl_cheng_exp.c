@@ -25,9 +25,18 @@ static void run_params(nl_run *r, nl_cheng_config *c, int *grid)
 nl_run *nl_cheng_begin(const char *name, const char *title, int *argc, char **argv,
                        nl_cheng_config *c, int *grid, const char **patterns)
 {
-  *patterns = nl_cheng_patterns_option(argc, argv);
+  nl_error err;
+  if (nl_cheng_patterns_parse(argc, argv, patterns, &err)) {
+    fprintf(stderr, "%s: %s\n", name, err.msg);
+    exit(2);
+  }
   nl_run *r = nl_run_begin(name, title, *argc, argv);
   run_params(r, c, grid);
+  /* Every pattern loads before the output folder is touched (nl_run_begin
+   * does not touch it; the first write does). */
+  if (nl_cheng_patterns_check(*patterns, *grid, &err))
+    nl_run_die(r, 2, "control patterns: %s (make them with build/tools/noiselab-patterns "
+                     "data/patterns, or pass --patterns DIR)", err.msg);
   return r;
 }
 

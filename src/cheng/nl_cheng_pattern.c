@@ -2,9 +2,11 @@
  * channel, alpha 0 = no control; built-in shapes for the shipped PNGs. */
 #include "cheng/nl_cheng_internal.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 /* Red and alpha of a pixel for 1 (grey), 2 (grey+alpha), 3 (RGB), 4 (RGBA) channels. */
 static void red_alpha(const nl_image *im, int x, int y, double *red, double *alpha)
@@ -173,21 +175,51 @@ nl_image *nl_cheng_shape(const char *name, int size)
 
 /* ---- experiments' pattern folder ---------------------------------------- */
 
-const char *nl_cheng_patterns_option(int *argc, char **argv)
+nl_status nl_cheng_patterns_parse(int *argc, char **argv, const char **dir, nl_error *err)
 {
-  const char *dir = "data/patterns";
   int w = 1;
+  *dir = "data/patterns";
   for (int i = 1; i < *argc; i++) {
     if (!strcmp(argv[i], "--patterns")) {
-      if (i + 1 >= *argc) { fprintf(stderr, "%s: --patterns: missing value\n", argv[0]); exit(2); }
-      dir = argv[++i];
+      if (i + 1 >= *argc) return nl_fail(err, NL_EINVAL, "--patterns: missing value");
+      if (!argv[i + 1][0]) return nl_fail(err, NL_EINVAL, "--patterns: empty folder name");
+      *dir = argv[++i];
       continue;
     }
     argv[w++] = argv[i];
   }
   *argc = w;
   argv[w] = NULL;
+  return NL_OK;
+}
+
+const char *nl_cheng_patterns_option(int *argc, char **argv)
+{
+  const char *dir;
+  nl_error err;
+  if (nl_cheng_patterns_parse(argc, argv, &dir, &err)) {
+    fprintf(stderr, "%s: %s\n", argv[0], err.msg);
+    exit(2);
+  }
   return dir;
+}
+
+nl_status nl_cheng_patterns_check(const char *dir, int grid, nl_error *err)
+{
+  struct stat st;
+  if (stat(dir, &st)) return nl_fail(err, NL_EIO, "--patterns %s: %s", dir, strerror(errno));
+  if (!S_ISDIR(st.st_mode)) return nl_fail(err, NL_EIO, "--patterns %s: not a folder", dir);
+  for (int k = 0; nl_cheng_shape_names[k]; k++) {
+    char file[64];
+    snprintf(file, sizeof file, "%s.png", nl_cheng_shape_names[k]);
+    char *path = nl_path_join(dir, file);
+    nl_cheng_pattern *p;
+    nl_status s = nl_cheng_pattern_read(path, grid, &p, err);
+    free(path);
+    if (s) return s;
+    nl_cheng_pattern_free(p);
+  }
+  return NL_OK;
 }
 
 nl_cheng_pattern *nl_cheng_pattern_load_or_die(const char *prog, const char *dir,

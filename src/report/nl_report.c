@@ -1,7 +1,10 @@
+#define _GNU_SOURCE   /* RTLD_DEFAULT, dladdr */
 #include "report/nl_report.h"
+#include "report/nl_build_info.h"
 
 #include <gsl/gsl_version.h>
 #include <dirent.h>
+#include <dlfcn.h>
 #include <errno.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -20,6 +23,8 @@ struct nl_run {
   int nset;
   char **set_key, **set_val;
   int *set_used;
+  int params_checked;     /* nl_run_params_done ran */
+  int prepared;           /* the output folder exists and its old manifest is gone */
   nl_table *manifest;     /* key, value (text) */
   nl_table *checks;       /* table, column, rule (text): regression rules */
   char *md;               /* report section being built */
@@ -32,10 +37,12 @@ static void usage(const char *name, const char *title)
   printf("%s - %s\n\n"
          "usage: %s [--out DIR] [--seed N] [--seeds K] [--quick] [--set NAME=VALUE]...\n\n"
          "  --out DIR     output folder (default results/%s)\n"
-         "  --seed N      base seed (default 1)\n"
+         "  --seed N      base seed, 0..4294967295 (default 1)\n"
          "  --seeds K     seeds for means and spreads (default 10; 3 with --quick)\n"
          "  --quick       small sizes, for tests and CI\n"
-         "  --set K=V     set an experiment parameter (see its report for names)\n",
+         "  --set K=V     set an experiment parameter (see its report for names)\n\n"
+         "Nothing in the output folder changes until every option and parameter\n"
+         "is accepted; a folder with a manifest.tsv is a finished run.\n",
          name, title, name, name);
 }
 
@@ -65,58 +72,85 @@ void nl_run_note(nl_run *r, const char *key, const char *fmt, ...)
   note(r, key, buf);
 }
 
-static const char *arg_value(nl_run *r, int argc, char **argv, int *i)
+/* ---- options ------------------------------------------------------------ */
+
+void nl_run_options_free(nl_run_options *o)
 {
-  if (*i + 1 >= argc) nl_run_die(r, 2, "%s: missing value", argv[*i]);
-  return argv[++*i];
+  if (!o) return;
+  for (int k = 0; k < o->nset; k++) { free(o->set_key[k]); free(o->set_val[k]); }
+  free(o->set_key); free(o->set_val); free(o->out);
+  memset(o, 0, sizeof *o);
 }
 
-static void parse(nl_run *r, int argc, char **argv)
+static nl_status option_value(int argc, char **argv, int *i, const char **v, nl_error *err)
 {
-  nl_error err;
+  if (*i + 1 >= argc) return nl_fail(err, NL_EINVAL, "%s: missing value", argv[*i]);
+  *v = argv[++*i];
+  return NL_OK;
+}
+
+nl_status nl_run_parse(nl_run_options *o, int argc, char **argv, nl_error *err)
+{
+  memset(o, 0, sizeof *o);
+  o->seed = 1;
+  o->seeds = -1;
   for (int i = 1; i < argc; i++) {
-    const char *a = argv[i];
-    long v;
-    if (!strcmp(a, "--help") || !strcmp(a, "-h")) { usage(r->name, r->title); exit(0); }
-    else if (!strcmp(a, "--quick")) r->quick = 1;
-    else if (!strcmp(a, "--out")) { free(r->out); r->out = nl_xstrdup(arg_value(r, argc, argv, &i)); }
-    else if (!strcmp(a, "--seed")) {
-      if (nl_parse_long("--seed", arg_value(r, argc, argv, &i), 0, 4294967295L, &v, &err)) nl_run_die(r, 2, "%s", err.msg);
-      r->seed = (unsigned long)v;
+    const char *a = argv[i], *v;
+    long n;
+    nl_status st = NL_OK;
+    if (!strcmp(a, "--help") || !strcmp(a, "-h")) o->help = 1;
+    else if (!strcmp(a, "--quick")) o->quick = 1;
+    else if (!strcmp(a, "--out")) {
+      if (!(st = option_value(argc, argv, &i, &v, err))) {
+        if (!*v) st = nl_fail(err, NL_EINVAL, "--out: empty folder name");
+        else { free(o->out); o->out = nl_xstrdup(v); }
+      }
+    } else if (!strcmp(a, "--seed")) {
+      if (!(st = option_value(argc, argv, &i, &v, err)) &&
+          !(st = nl_parse_long("--seed", v, 0, 4294967295L, &n, err))) o->seed = (unsigned long)n;
     } else if (!strcmp(a, "--seeds")) {
-      if (nl_parse_long("--seeds", arg_value(r, argc, argv, &i), 1, 10000, &v, &err)) nl_run_die(r, 2, "%s", err.msg);
-      r->seeds = (int)v;
+      if (!(st = option_value(argc, argv, &i, &v, err)) &&
+          !(st = nl_parse_long("--seeds", v, 1, 10000, &n, err))) o->seeds = (int)n;
     } else if (!strcmp(a, "--set")) {
-      const char *kv = arg_value(r, argc, argv, &i), *eq = strchr(kv, '=');
-      if (!eq || eq == kv) nl_run_die(r, 2, "--set: '%s' is not NAME=VALUE", kv);
-      r->set_key = nl_xrealloc(r->set_key, (r->nset + 1) * sizeof *r->set_key);
-      r->set_val = nl_xrealloc(r->set_val, (r->nset + 1) * sizeof *r->set_val);
-      r->set_used = nl_xrealloc(r->set_used, (r->nset + 1) * sizeof *r->set_used);
-      r->set_key[r->nset] = nl_xstrdup(kv);
-      r->set_key[r->nset][eq - kv] = '\0';
-      r->set_val[r->nset] = nl_xstrdup(eq + 1);
-      r->set_used[r->nset++] = 0;
-    } else nl_run_die(r, 2, "%s: unknown option (see --help)", a);
+      if (!(st = option_value(argc, argv, &i, &v, err))) {
+        const char *eq = strchr(v, '=');
+        if (!eq || eq == v) st = nl_fail(err, NL_EINVAL, "--set: '%s' is not NAME=VALUE", v);
+        else {
+          o->set_key = nl_xrealloc(o->set_key, (size_t)(o->nset + 1) * sizeof *o->set_key);
+          o->set_val = nl_xrealloc(o->set_val, (size_t)(o->nset + 1) * sizeof *o->set_val);
+          o->set_key[o->nset] = nl_xstrdup(v);
+          o->set_key[o->nset][eq - v] = '\0';
+          o->set_val[o->nset++] = nl_xstrdup(eq + 1);
+        }
+      }
+    } else st = nl_fail(err, NL_EINVAL, "%s: unknown option (see --help)", a);
+    if (st) { nl_run_options_free(o); return st; }
   }
+  return NL_OK;
 }
 
 nl_run *nl_run_begin(const char *name, const char *title, int argc, char **argv)
 {
+  nl_run_options o;
+  nl_error err;
+  if (nl_run_parse(&o, argc, argv, &err)) {
+    fprintf(stderr, "%s: %s\n", name, err.msg);
+    exit(2);
+  }
+  if (o.help) { usage(name, title); nl_run_options_free(&o); exit(0); }
   nl_run *r = nl_xcalloc(1, sizeof *r);
   r->name = name;
   r->title = title;
-  r->seed = 1;
-  r->seeds = -1;
+  r->seed = o.seed;
+  r->seeds = o.seeds < 0 ? (o.quick ? 3 : 10) : o.seeds;
+  r->quick = o.quick;
   r->t0 = nl_time_now();
-  r->out = nl_path_join("results", name);
-  parse(r, argc, argv);
-  if (r->seeds < 0) r->seeds = r->quick ? 3 : 10;
-  nl_error err;
-  if (nl_mkdir_p(r->out, &err)) nl_run_die(r, 1, "%s", err.msg);
-  /* A folder with a manifest is a finished run; this one is not, yet. */
-  char *m = nl_run_path(r, "manifest.tsv");
-  unlink(m);
-  free(m);
+  r->out = o.out ? o.out : nl_path_join("results", name);
+  r->nset = o.nset;
+  r->set_key = o.set_key;
+  r->set_val = o.set_val;
+  r->set_used = nl_xcalloc((size_t)o.nset + 1, sizeof *r->set_used);
+  /* The output folder is not touched here: see prepare(). */
   time_t now = time(NULL);
   strftime(r->started, sizeof r->started, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
   const char *cols[] = {"key", "value"};
@@ -132,10 +166,41 @@ nl_run *nl_run_begin(const char *name, const char *title, int argc, char **argv)
   return r;
 }
 
+/* The file name the manifest is written under: manifest.tsv, or
+ * NL_MANIFEST_NAME when it is a plain hidden file name. The entry script sets
+ * it to a pending name and renames the file to manifest.tsv once the run's
+ * figures are made, so a folder is complete only when its figures are. */
+static const char *manifest_name(void)
+{
+  const char *s = getenv("NL_MANIFEST_NAME");
+  if (s && s[0] == '.' && strlen(s) > 1 && !strchr(s, '/') && strcmp(s, "..")) return s;
+  return "manifest.tsv";
+}
+
+/* The run is about to write: every parameter has been accepted (unknown
+ * --set names are refused here at the latest), so now the folder is made and
+ * the previous run's manifest removed (a folder with a manifest is a
+ * finished run; this one is not, yet). Called by every function that writes
+ * into the folder or hands out a path in it. */
+static void prepare(nl_run *r)
+{
+  if (r->prepared) return;
+  if (!r->params_checked) nl_run_params_done(r);
+  nl_error err;
+  if (nl_mkdir_p(r->out, &err)) nl_run_die(r, 1, "%s", err.msg);
+  const char *names[2] = {"manifest.tsv", manifest_name()};
+  for (int k = 0; k < 2; k++) {
+    char *m = nl_path_join(r->out, names[k]);
+    if (unlink(m) && errno != ENOENT) nl_run_die(r, 1, "%s: cannot remove: %s", m, strerror(errno));
+    free(m);
+  }
+  r->prepared = 1;
+}
+
 unsigned long nl_run_seed(const nl_run *r) { return r->seed; }
 int nl_run_seeds(const nl_run *r) { return r->seeds; }
 int nl_run_quick(const nl_run *r) { return r->quick; }
-const char *nl_run_dir(const nl_run *r) { return r->out; }
+const char *nl_run_dir(const nl_run *r) { prepare((nl_run *)r); return r->out; }
 
 static const char *set_value(nl_run *r, const char *name)
 {
@@ -177,11 +242,16 @@ long nl_run_param_int(nl_run *r, const char *name, long def, long lo, long hi)
 
 void nl_run_params_done(nl_run *r)
 {
+  r->params_checked = 1;
   for (int k = 0; k < r->nset; k++)
     if (!r->set_used[k]) nl_run_die(r, 2, "--set %s: unknown parameter for %s", r->set_key[k], r->name);
 }
 
-char *nl_run_path(const nl_run *r, const char *file) { return nl_path_join(r->out, file); }
+char *nl_run_path(const nl_run *r, const char *file)
+{
+  prepare((nl_run *)r);   /* r is always a heap nl_run; the folder must exist for the caller */
+  return nl_path_join(r->out, file);
+}
 
 void nl_run_table(nl_run *r, const nl_table *t, const char *file)
 {
@@ -334,6 +404,56 @@ static void write_text(nl_run *r, const char *file, const char *text)
   free(p);
 }
 
+/* ---- where the run was made --------------------------------------------- */
+
+/* /proc/cpuinfo's first "model name" (x86) or "Model"/"cpu model", else "unknown". */
+static void cpu_model(char *buf, size_t n)
+{
+  snprintf(buf, n, "unknown");
+  FILE *fp = fopen("/proc/cpuinfo", "r");
+  if (!fp) return;
+  char line[512];
+  while (fgets(line, sizeof line, fp)) {
+    char *colon = strchr(line, ':');
+    if (!colon) continue;
+    if (strncmp(line, "model name", 10) && strncmp(line, "Model", 5) && strncmp(line, "cpu model", 9)) continue;
+    char *v = colon + 1;
+    while (*v == ' ' || *v == '\t') v++;
+    v[strcspn(v, "\r\n")] = '\0';
+    if (*v) { snprintf(buf, n, "%s", v); break; }
+  }
+  fclose(fp);
+}
+
+/* The BLAS the process runs with. OpenBLAS's own functions are looked up at
+ * run time (dlsym), so the library builds and runs without OpenBLAS. */
+static void note_platform(nl_run *r)
+{
+  char buf[512];
+  cpu_model(buf, sizeof buf);
+  note(r, "cpu", buf);
+  void *sym = dlsym(RTLD_DEFAULT, "openblas_get_config");
+  if (!sym) sym = dlsym(RTLD_DEFAULT, "cblas_dgemm");
+  Dl_info info;
+  const char *lib = sym && dladdr(sym, &info) && info.dli_fname ? info.dli_fname : "unknown";
+  char *(*corename)(void) = (char *(*)(void))dlsym(RTLD_DEFAULT, "openblas_get_corename");
+  char *(*config)(void) = (char *(*)(void))dlsym(RTLD_DEFAULT, "openblas_get_config");
+  int (*threads)(void) = (int (*)(void))dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
+  if (config) {
+    nl_run_note(r, "blas", "OpenBLAS (%s)", lib);
+    const char *core = corename ? corename() : NULL, *cfg = config();
+    note(r, "blas_core", core && *core ? core : "unknown");
+    note(r, "blas_config", cfg && *cfg ? cfg : "unknown");
+    if (threads) nl_run_note(r, "blas_threads", "%d", threads());
+    else note(r, "blas_threads", "unknown");
+  } else {
+    nl_run_note(r, "blas", "%s", lib);
+    note(r, "blas_core", "none");
+    note(r, "blas_config", "none");
+    note(r, "blas_threads", "1");
+  }
+}
+
 int nl_run_end(nl_run *r)
 {
   write_text(r, "report.md", r->md ? r->md : "");
@@ -342,6 +462,8 @@ int nl_run_end(nl_run *r)
   nl_run_note(r, "gsl", "%s", GSL_VERSION);
   nl_run_note(r, "openimageio", "%s", nl_image_library_version());
   nl_run_note(r, "compiler", "%s", __VERSION__);
+  note(r, "cflags", NL_BUILD_CFLAGS);
+  note_platform(r);
   note(r, "started", r->started);
   nl_run_note(r, "seconds", "%.3f", nl_time_now() - r->t0);
   struct rusage ru;
@@ -349,7 +471,7 @@ int nl_run_end(nl_run *r)
   nl_run_note(r, "peak_rss_mb", "%.1f", ru.ru_maxrss / 1024.0);
   /* Always written: an experiment without declarations is all `exact`. */
   nl_run_table(r, r->checks, "checks.tsv");
-  nl_run_table(r, r->manifest, "manifest.tsv");
+  nl_run_table(r, r->manifest, manifest_name());
   for (int k = 0; k < r->nset; k++) { free(r->set_key[k]); free(r->set_val[k]); }
   free(r->set_key); free(r->set_val); free(r->set_used);
   nl_table_free(r->manifest);

@@ -15,7 +15,8 @@
  *     return nl_run_end(r);                                     // report.md + manifest.tsv
  *   }
  *
- * Common options, parsed by nl_run_begin (errors: one line, exit 2):
+ * Common options, parsed by nl_run_begin through nl_run_parse (errors: one
+ * line, exit 2):
  *   --out DIR    output folder (default results/NAME)
  *   --seed N     base seed (default 1); multi-seed summaries use N, N+1, ...
  *   --seeds K    number of seeds for means and spreads (default 10, quick 3)
@@ -24,8 +25,22 @@
  *   --help
  * The manifest (manifest.tsv: key, value) records the experiment, seed,
  * parameters, commit (NL_COMMIT from the entry script), library versions,
- * wall time and peak memory. It is written last and removed first, so a
- * folder with a manifest is a complete run. checks.tsv holds the rules the
+ * wall time, peak memory and where it was made: compiler (version), cflags
+ * (project and user C flags, buildtype, optimisation, sanitizers), cpu
+ * (/proc/cpuinfo model name), blas (library file; "OpenBLAS (path)" when
+ * OpenBLAS is loaded), blas_core, blas_config, blas_threads (OpenBLAS's
+ * openblas_get_corename/config/num_threads; "none" without OpenBLAS).
+ * The regression check compares none of these (nor started, seconds,
+ * peak_rss_mb), but names cpu and blas_core when it finds drift.
+ * NL_MANIFEST_NAME (a hidden file name, set by the entry script) makes
+ * nl_run_end write the manifest under that name instead; the script renames
+ * it to manifest.tsv once the figures are made. It is written last and removed first, so a
+ * folder with a manifest is a complete run. Nothing in the output folder is
+ * touched before the run writes: the folder is made and the old manifest
+ * removed at the first write (nl_run_table, nl_run_image, nl_run_path,
+ * nl_run_dir or nl_run_end), after every option and --set value was checked
+ * (nl_run_params_done runs then at the latest), so a rejected run leaves a
+ * finished one intact and no empty folder behind. checks.tsv holds the rules the
  * regression check compares the tables by (nl_run_check below).
  *
  * Figures named with nl_report_figure are made afterwards by the entry
@@ -40,12 +55,29 @@
 
 typedef struct nl_run nl_run;
 
+/* The common options as parsed, nothing else done (no output, no exit). */
+typedef struct {
+  char *out;               /* --out, or NULL: results/NAME */
+  unsigned long seed;      /* 1 unless --seed */
+  int seeds;               /* -1 unless --seeds */
+  int quick, help;
+  int nset;                /* --set NAME=VALUE, in order */
+  char **set_key, **set_val;
+} nl_run_options;
+
+/* Parses argv[1..argc-1] into *o. On error *o is empty (nothing to free)
+ * and err says "OPTION: problem". nl_run_options_free releases a parsed *o. */
+nl_status nl_run_parse(nl_run_options *o, int argc, char **argv, nl_error *err);
+void nl_run_options_free(nl_run_options *o);
+
+/* nl_run_parse; on error prints "NAME: message" and exits 2, --help prints
+ * the usage and exits 0. Touches no file. */
 nl_run *nl_run_begin(const char *name, const char *title, int argc, char **argv);
 
 unsigned long nl_run_seed(const nl_run *r);   /* base seed */
 int nl_run_seeds(const nl_run *r);            /* K seeds: seed .. seed+K-1 */
 int nl_run_quick(const nl_run *r);
-const char *nl_run_dir(const nl_run *r);
+const char *nl_run_dir(const nl_run *r);      /* prepares the folder (see above) */
 
 /* Parameter `name` from --set, else def; range-checked; recorded. */
 double nl_run_param(nl_run *r, const char *name, double def, double lo, double hi);

@@ -1,0 +1,141 @@
+#!/usr/bin/env bash
+# scripts/noiselab reproduce, check and bench as a user runs them:
+#  - a bad seed or experiment is one line and exit 2, and writes nothing;
+#  - REPORT.md is 0644, dated by SOURCE_DATE_EPOCH when set, never written
+#    when nothing ran, and names complete folders only;
+#  - SIGINT / SIGTERM during gnuplot stop it with exit 130 / 143, SIGKILL
+#    leaves no figure under its final name that is not whole and no folder
+#    with a manifest but without its figures; a rerun recovers;
+#  - a second reproduce into the same folder names the first and exits 1;
+#  - bench runs every benchmark, skips meson's bench_*.p/ folders, and fails
+#    at the end naming the failed ones.
+# Args: NOISELAB_SCRIPT EXPECT OUTDIR. A fake gnuplot on PATH writes half a
+# PNG where gnuplot would, then sleeps, so the signal lands mid-figure.
+set -euo pipefail
+nl="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")" out="$3"
+root="$(cd "$(dirname "$nl")/.." && pwd)"
+rm -rf "$out"; mkdir -p "$out/bin"
+for v in $(env | sed -n 's/^\(NL_[A-Za-z0-9_]*\)=.*/\1/p'); do unset "$v"; done
+unset SOURCE_DATE_EPOCH
+fail() { echo "cli_reproduce: $*"; exit 1; }
+
+one_line_exit2() {   # WANT_FRAGMENT ARGS...
+  local want="$1"; shift
+  local err rc=0
+  err="$("$nl" "$@" 2>&1 >/dev/null)" || rc=$?
+  [ "$rc" = 2 ] && [ "$(printf '%s\n' "$err" | wc -l)" = 1 ] && [[ "$err" == *"$want"* ]] \
+    || fail "noiselab $*: rc=$rc, wanted exit 2 and one line with '$want'; got: $err"
+}
+one_line_exit2 "unknown experiment 'Z9'" check Z9
+one_line_exit2 "--seed: '99999999999' is not an integer in 0..4294967295" reproduce --quick --seed 99999999999 --out "$out/seed" S3
+one_line_exit2 "--seed: '4294967296'" reproduce --quick --seed 4294967296 --out "$out/seed" S3
+[ ! -e "$out/seed" ] || fail "a refused seed made $out/seed"
+
+r="$out/r"
+# A complete run of two experiments: REPORT.md 0644, dated by SOURCE_DATE_EPOCH.
+SOURCE_DATE_EPOCH=86400 "$nl" reproduce --quick --seed 4294967295 --out "$r" S3 S4 2>"$out/first.log" || { cat "$out/first.log"; fail "first reproduce failed"; }
+[ "$(stat -c %a "$r/REPORT.md")" = 644 ] || fail "REPORT.md mode $(stat -c %a "$r/REPORT.md"), wanted 644"
+grep -q 'on 1970-01-02\.' "$r/REPORT.md" || fail "REPORT.md not dated by SOURCE_DATE_EPOCH"
+grep -q $'^seed\t4294967295$' "$r/s3_fbm/manifest.tsv" || fail "seed 4294967295 did not reach the experiment"
+
+# Nothing ran (the experiment cannot make its folder): no REPORT.md written.
+mkdir -p "$out/none"; : >"$out/none/s3_fbm"
+rc=0; "$nl" reproduce --quick --out "$out/none" S3 2>"$out/none.log" || rc=$?
+[ "$rc" != 0 ] || fail "reproduce into a blocked folder passed"
+[ ! -e "$out/none/REPORT.md" ] || fail "REPORT.md written when nothing ran"
+
+# Whole PNG: the signature first and the IEND chunk last.
+png_ok() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] && [ "$(tail -c 12 "$1" | head -c 8 | tail -c 4)" = IEND ]; }
+consistent() {   # LABEL: every final PNG whole; a manifest only with all figures; REPORT.md names complete folders only
+  local label="$1" f d e gp fig
+  while IFS= read -r f; do png_ok "$f" || fail "$label: $f is not a whole PNG"; done < <(find "$r" -name '*.png' -not -path '*/.fig-*')
+  for d in "$r"/*/; do
+    e="$(basename "$d")"
+    [ -f "$d/manifest.tsv" ] || continue
+    for gp in "$root"/scripts/gnuplot/"$e"-*.gp; do
+      [ -e "$gp" ] || continue
+      fig="$(basename "$gp" .gp)"; fig="${fig#"$e"-}"
+      [ -s "$d/$fig.png" ] || fail "$label: $e has a manifest but no $fig.png"
+    done
+  done
+  if [ -f "$r/REPORT.md" ]; then
+    for e in $(sed -n 's/^<a id="\(.*\)"><\/a>$/\1/p' "$r/REPORT.md"); do
+      [ -f "$r/$e/manifest.tsv" ] || fail "$label: REPORT.md names $e, which has no manifest"
+    done
+  fi
+}
+consistent "complete run"
+
+cat >"$out/bin/gnuplot" <<'FAKE'
+#!/usr/bin/env bash
+# Fake gnuplot: half a PNG where the script's `set output dir.'/X.png'` says, then waits.
+dir=""; gp=""
+while [ $# -gt 0 ]; do
+  case "$1" in -e) dir="$(printf '%s' "$2" | sed -n "s/^dir='\(.*\)'$/\1/p")"; shift ;; *) gp="$1" ;; esac
+  shift
+done
+f="$(sed -n "s/^set output dir\.'\(.*\)'.*/\1/p" "$gp" | head -n 1)"
+printf '\211PNG\r\n\032\n\000\000\000\rIHDR' >"$dir$f"
+echo $$ >"$FAKE_GNUPLOT_MARK"
+exec sleep 60   # the pid in the mark is the one to stop
+FAKE
+chmod +x "$out/bin/gnuplot"
+
+start_slow() {   # EXPERIMENT: reproduce in the background with the fake gnuplot; sets PID once gnuplot runs
+  rm -f "$out/mark"
+  # Job control on: without it bash starts background jobs with SIGINT
+  # ignored, and an ignored signal cannot be trapped.
+  set -m
+  FAKE_GNUPLOT_MARK="$out/mark" PATH="$out/bin:$PATH" "$nl" reproduce --quick --out "$r" "$1" 2>"$out/slow.log" &
+  PID=$!
+  local k
+  for k in $(seq 600); do [ -s "$out/mark" ] && { set +m; return 0; }; kill -0 "$PID" 2>/dev/null || break; sleep 0.1; done
+  set +m
+  cat "$out/slow.log"; fail "the fake gnuplot never ran"
+}
+stop_slow() {   # SIGNAL WANT_RC
+  local rc=0
+  kill -"$1" "$PID"
+  wait "$PID" || rc=$?
+  [ "$rc" = "$2" ] || { cat "$out/slow.log"; fail "reproduce got SIG$1 during gnuplot: exit $rc, wanted $2"; }
+}
+
+# SIGINT during gnuplot: exit 130, S3 incomplete, REPORT.md rewritten with S4 only.
+start_slow S3
+# Meanwhile a second run into the same folder names the first and exits 1.
+rc=0; err="$("$nl" reproduce --quick --out "$r" S4 2>&1 >/dev/null)" || rc=$?
+[ "$rc" = 1 ] && [[ "$err" == *"in use"*"pid $PID"*"reproduce"* ]] || fail "second reproduce: rc=$rc: $err"
+stop_slow INT 130
+consistent "SIGINT"
+[ ! -f "$r/s3_fbm/manifest.tsv" ] || fail "SIGINT: s3_fbm kept a manifest"
+grep -q '<a id="s4_marble">' "$r/REPORT.md" && ! grep -q '<a id="s3_fbm">' "$r/REPORT.md" || fail "SIGINT: REPORT.md not rewritten from the complete folders"
+[ -z "$(find "$r" -name '.fig-*')" ] || fail "SIGINT left temporary figure folders"
+
+# SIGTERM: exit 143; no complete folder is left, so no REPORT.md either.
+start_slow S4
+stop_slow TERM 143
+consistent "SIGTERM"
+[ ! -e "$r/REPORT.md" ] || fail "SIGTERM: REPORT.md names folders that are not complete"
+
+# SIGKILL: nothing runs after it; the fake gnuplot is stopped by its pid.
+start_slow S3
+stop_slow KILL 137
+kill "$(cat "$out/mark")" 2>/dev/null || true
+consistent "SIGKILL"
+
+# A rerun recovers: both complete, no leftovers.
+"$nl" reproduce --quick --out "$r" S3 S4 2>"$out/rerun.log" || { cat "$out/rerun.log"; fail "rerun failed"; }
+consistent "rerun"
+[ -f "$r/s3_fbm/manifest.tsv" ] && [ -f "$r/s4_marble/manifest.tsv" ] || fail "rerun: a folder is incomplete"
+[ -z "$(find "$r" -name '.fig-*' -o -name '.manifest-pending.tsv')" ] || fail "rerun left temporaries"
+
+# bench: every regular executable bench_* runs; a failure is reported at the end.
+b="$out/bench"; mkdir -p "$b/bench_cellular.p"
+printf '#!/bin/sh\necho ran-a >>"%s/ran"\n' "$b" >"$b/bench_a"
+printf '#!/bin/sh\necho ran-c >>"%s/ran"\nexit 3\n' "$b" >"$b/bench_c"
+printf '#!/bin/sh\necho ran-d >>"%s/ran"\n' "$b" >"$b/bench_d"
+chmod +x "$b"/bench_*
+rc=0; err="$(bash -c 'source "$1"; run_benchmarks "$2"' _ "$nl" "$b" 2>&1 >/dev/null)" || rc=$?
+[ "$rc" = 2 ] && [[ "$err" == *"1 benchmark(s) failed: bench_c"* ]] || fail "bench: rc=$rc: $err"
+[ "$(tr '\n' ' ' <"$b/ran")" = "ran-a ran-c ran-d " ] || fail "bench: ran $(cat "$b/ran")"
+echo "cli_reproduce: ok"

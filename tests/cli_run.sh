@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# The run harness (src/report/nl_report.c, nl_cheng_begin): a rejected run
+# touches nothing. Bad options, bad or unknown --set values and a missing or
+# broken patterns folder give one line and exit 2, leave a finished run's
+# manifest and tables as they were, and make no folder.
+# Args: S3_BINARY C2_BINARY OUTDIR
+set -euo pipefail
+s3="$1" c2="$2" out="$3"
+rm -rf "$out"; mkdir -p "$out"
+pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
+
+# A finished run of each: a real quick S3, and a C2 folder that looks finished.
+"$s3" --quick --seeds 1 --out "$out/s3" >/dev/null
+mkdir -p "$out/c2"; printf 'key\tvalue\nexperiment\tc2_ks_vs_chisq\n' >"$out/c2/manifest.tsv"
+printf 'a\n1\n' >"$out/c2/summary.tsv"
+snap() { (cd "$out" && find s3 c2 -type f -print0 | LC_ALL=C sort -z | xargs -0 sha256sum); }
+before="$(snap)"
+
+rejected() {   # WANT_FRAGMENT BINARY ARGS...
+  local want="$1" bin="$2"; shift 2
+  local err rc=0
+  err="$("$bin" "$@" 2>&1 >/dev/null)" || rc=$?
+  if [ "$rc" -ne 2 ] || [ "$(printf '%s\n' "$err" | wc -l)" -ne 1 ] || [[ "$err" != *"$want"* ]]; then
+    echo "$(basename "$bin") $*: rc=$rc err='$err' (wanted exit 2, one line with '$want')"; exit 1
+  fi
+  [ "$(snap)" = "$before" ] || { echo "$(basename "$bin") $*: changed a finished run"; exit 1; }
+}
+for o in "$out/s3" "$out/fresh"; do
+  rejected "'nan' is not an integer" "$s3" --quick --out "$o" --set octaves=nan
+  rejected "outside" "$s3" --quick --out "$o" --set octaves=0
+  rejected "--set nosuch: unknown parameter" "$s3" --quick --out "$o" --set nosuch=1
+  rejected "is not NAME=VALUE" "$s3" --quick --out "$o" --set =1
+  rejected "--seed" "$s3" --quick --out "$o" --seed 4294967296
+  rejected "--seeds: missing value" "$s3" --quick --out "$o" --seeds
+  rejected "--frobnicate: unknown option" "$s3" --out "$o" --frobnicate
+done
+rejected "--out: empty" "$s3" --out ""
+c2o="$out/c2"
+rejected "--patterns /nonexistent" "$c2" --quick --out "$c2o" --patterns /nonexistent
+rejected "--patterns: missing value" "$c2" --quick --out "$c2o" --patterns
+rejected "not a folder" "$c2" --quick --out "$c2o" --patterns "$pat/flower.png"
+# A folder missing one pattern, and one with a broken PNG.
+mkdir -p "$out/pat-missing" "$out/pat-broken"
+cp "$pat"/*.png "$out/pat-missing/"; rm "$out/pat-missing/rings.png"
+cp "$pat"/*.png "$out/pat-broken/"; printf 'not a png' >"$out/pat-broken/x.png"
+rejected "rings.png" "$c2" --quick --out "$c2o" --patterns "$out/pat-missing"
+rejected "x.png" "$c2" --quick --out "$c2o" --patterns "$out/pat-broken"
+rejected "--set nosuch: unknown parameter" "$c2" --quick --out "$c2o" --patterns "$pat" --set nosuch=1
+rejected "'x' is not a number" "$c2" --quick --out "$c2o/new" --patterns "$pat" --set w1=x
+# No empty folders from rejected runs.
+[ ! -e "$out/fresh" ] || { echo "a rejected run made $out/fresh"; exit 1; }
+[ ! -e "$c2o/new" ] || { echo "a rejected run made $c2o/new"; exit 1; }
+
+# --help writes nothing either, and an accepted run still replaces the old one.
+"$s3" --help --out "$out/help" >/dev/null
+[ ! -e "$out/help" ] || { echo "--help made a folder"; exit 1; }
+"$s3" --quick --seeds 1 --out "$out/s3" --set octaves=2 >/dev/null
+grep -q $'^param\toctaves=2$' "$out/s3/manifest.tsv" || { echo "accepted run did not write its manifest"; exit 1; }
+echo "cli_run: ok"
