@@ -95,7 +95,7 @@ nl_status nl_run_parse(nl_run_options *o, int argc, char **argv, nl_error *err)
   o->seed = 1;
   o->seeds = -1;
   for (int i = 1; i < argc; i++) {
-    const char *a = argv[i], *v;
+    const char *a = argv[i], *v = NULL;
     long n;
     nl_status st = NL_OK;
     if (!strcmp(a, "--help") || !strcmp(a, "-h")) o->help = 1;
@@ -201,6 +201,7 @@ unsigned long nl_run_seed(const nl_run *r) { return r->seed; }
 int nl_run_seeds(const nl_run *r) { return r->seeds; }
 int nl_run_quick(const nl_run *r) { return r->quick; }
 const char *nl_run_dir(const nl_run *r) { prepare((nl_run *)r); return r->out; }
+const char *nl_run_name(const nl_run *r) { return r->name; }
 
 static const char *set_value(nl_run *r, const char *name)
 {

@@ -78,6 +78,7 @@ unsigned long nl_run_seed(const nl_run *r);   /* base seed */
 int nl_run_seeds(const nl_run *r);            /* K seeds: seed .. seed+K-1 */
 int nl_run_quick(const nl_run *r);
 const char *nl_run_dir(const nl_run *r);      /* prepares the folder (see above) */
+const char *nl_run_name(const nl_run *r);     /* "s3_fbm" */
 
 /* Parameter `name` from --set, else def; range-checked; recorded. */
 double nl_run_param(nl_run *r, const char *name, double def, double lo, double hi);
@@ -151,6 +152,20 @@ typedef struct {
 } nl_check_rule;
 
 void nl_run_check(nl_run *r, const char *table, const char *column, const char *rule);
+
+/* Tolerances from a measurement, for tables whose values pass through a
+ * CPU-dependent computation (OpenBLAS picks its kernel per CPU; glibc's libm
+ * has FMA variants): scripts/blas-spread.sh reruns the experiment under
+ * every OpenBLAS kernel this CPU can run, one and two BLAS threads and libm
+ * without FMA, and records per table and column the largest spread in
+ * data/blas_spread.tsv (for this scale: quick or full). This declares, for
+ * each column of `table` that moved, "rel (multiple x its relative spread)",
+ * or "abs (multiple x its absolute spread)" when the values are themselves
+ * at rounding level (relative spread > 1e-3); columns that did not move
+ * stay exact. It adds one line to the report naming the largest spread and
+ * the multiple. A table missing from the measurement is an error (exit 1):
+ * measure it first. NL_BLAS_SPREAD overrides the file's path. */
+void nl_run_check_measured(nl_run *r, const char *table, double multiple);
 /* Parses a rule string as above; "rule 'x': ..." on error. */
 nl_status nl_check_rule_parse(const char *s, nl_check_rule *rule, nl_error *err);
 

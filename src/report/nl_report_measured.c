@@ -1,0 +1,90 @@
+/* Regression tolerances from a measurement (nl_run_check_measured in
+ * nl_report.h): the spread of each column over the CPU-dependent
+ * configurations, measured by scripts/blas-spread.sh into
+ * data/blas_spread.tsv, times a stated multiple. */
+#include "report/nl_report.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "report/nl_build_info.h"   /* NL_SOURCE_ROOT */
+
+/* Relative spreads above this are of values that are themselves rounding
+ * noise (an orthogonality error of 1e-16, a p-value near 0): their relative
+ * change says nothing, so the tolerance is absolute. */
+#define NL_MEASURED_REL_LIMIT 1e-3
+
+static nl_table *spread_table(nl_run *r)
+{
+  static nl_table *t;
+  static int tried;
+  if (tried) return t;
+  tried = 1;
+  const char *env = getenv("NL_BLAS_SPREAD");   /* tests point it elsewhere */
+  char *path = env && *env ? nl_xstrdup(env) : nl_path_join(NL_SOURCE_ROOT, "data/blas_spread.tsv");
+  nl_error err;
+  if (nl_table_read(path, NL_TABLE_TEXT, &t, &err)) nl_run_die(r, 1, "tolerances: %s", err.msg);
+  free(path);
+  return t;
+}
+
+static const char *cell(const nl_table *t, size_t row, long col, char *buf)
+{
+  size_t k = row * t->ncols + (size_t)col;
+  if (t->text[k]) return t->text[k];
+  nl_format_double(buf, t->num[k]);
+  return buf;
+}
+
+void nl_run_check_measured(nl_run *r, const char *table, double multiple)
+{
+  nl_table *t = spread_table(r);
+  long ce = nl_table_column(t, "experiment"), cs = nl_table_column(t, "scale"),
+       ct = nl_table_column(t, "table"), cc = nl_table_column(t, "column"),
+       cr = nl_table_column(t, "max_rel_spread"), ca = nl_table_column(t, "max_abs_spread"),
+       cg = nl_table_column(t, "configs");
+  if (ce < 0 || cs < 0 || ct < 0 || cc < 0 || cr < 0 || ca < 0 || cg < 0)
+    nl_run_die(r, 1, "tolerances: data/blas_spread.tsv lacks a column (experiment, scale, table, "
+                     "column, max_rel_spread, max_abs_spread, configs)");
+  const char *scale = nl_run_quick(r) ? "quick" : "full";
+  char b1[64], b2[64], b3[64], b4[64], b5[64], b6[64];
+  int found = 0;
+  double worst = 0;
+  int ndiff = 0, nabs = 0;
+  char worst_col[128] = "", configs[1024] = "";
+  for (size_t i = 0; i < t->nrows; i++) {
+    if (strcmp(cell(t, i, ce, b1), nl_run_name(r)) || strcmp(cell(t, i, cs, b2), scale) ||
+        strcmp(cell(t, i, ct, b3), table)) continue;
+    found = 1;
+    const char *col = cell(t, i, cc, b4);
+    double rel = strtod(cell(t, i, cr, b5), NULL), ab = strtod(cell(t, i, ca, b6), NULL);
+    snprintf(configs, sizeof configs, "%s", t->text[i * t->ncols + (size_t)cg] ? t->text[i * t->ncols + (size_t)cg] : "");
+    char rule[64];
+    if (rel == 0) continue;   /* identical under every configuration: stays exact */
+    ndiff++;
+    if (rel > NL_MEASURED_REL_LIMIT) { snprintf(rule, sizeof rule, "abs %.2g", multiple * ab); nabs++; }
+    else snprintf(rule, sizeof rule, "rel %.2g", multiple * rel);
+    nl_run_check(r, table, col, rule);
+    if (rel > worst && rel <= NL_MEASURED_REL_LIMIT) { worst = rel; snprintf(worst_col, sizeof worst_col, "%s", col); }
+  }
+  if (!found)
+    nl_run_die(r, 1, "tolerances: no measured spread for %s %s (%s scale) in data/blas_spread.tsv; "
+                     "run scripts/blas-spread.sh%s %s", nl_run_name(r), table, scale,
+               nl_run_quick(r) ? " --quick" : "", nl_run_name(r));
+  int nconf = 0;
+  for (const char *p = configs; *p; p++) nconf += (p == configs || p[-1] == ' ') && *p != ' ';
+  if (ndiff == 0)
+    nl_report_text(r, "Regression rule for `%s`: exact; no value moved over %d CPU configurations "
+                      "(OpenBLAS kernels, BLAS threads, libm without FMA; data/blas_spread.tsv).\n",
+                   table, nconf);
+  else
+    nl_report_text(r, "Regression rule for `%s`: %d column%s moved over %d CPU configurations (OpenBLAS "
+                      "kernels, BLAS threads, libm without FMA; data/blas_spread.tsv), the largest "
+                      "relative spread %.2g (`%s`); each such column is compared with %g x its measured "
+                      "spread (relative%s), the others exactly.\n",
+                   table, ndiff, ndiff == 1 ? "" : "s", nconf, worst, worst_col[0] ? worst_col : "-",
+                   multiple, nabs ? "; absolute for values at rounding level" : "");
+}
