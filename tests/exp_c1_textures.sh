@@ -1,9 +1,27 @@
 #!/usr/bin/env bash
-# Quick C1: four textures x three patterns, every table uniform-looking by KS
-# and better than a random table on the control term (E_Con < pixels / 4).
+# Quick C1: four textures x three patterns (3 seeds per row). What the method
+# claims, bounded by measurements at --quick over seeds 1..5:
+#  - the optimised tables stay uniform: E_ks < 0.02 (measured 0.0084..0.0134;
+#    a random table of 512 angles has mean D = 0.87 / sqrt(512) = 0.038) and
+#    KS never rejects: p_ks_min > 0.9 (measured >= 0.9991; a random table's p
+#    is uniform on [0, 1], so 0.9 fails 90% of unoptimised tables);
+#  - the control term works: each row's rms control error is below that of the
+#    same run with w2 = 0 (KS only, the control ignored). Ceilings below are the
+#    smallest rms_con of the w2 = 0 runs over seeds 1..5 (3 seeds each, rounded
+#    down); the optimised rows measured 0.006 (cloud/star) to 0.09 (marble)
+#    below them, about 5x the seed-to-seed sd (0.003) of a 3-seed mean.
 set -euo pipefail
 exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
 "$exp" --quick --out "$out" --patterns "$pat" >/dev/null
-"$expect" "$out/summary.tsv" rows=12 'seeds==3' 'E_ks>0' 'E_ks<0.06' 'E_con>0' 'rms_con<0.5' \
-  'p_ks>=0' 'p_ks<=1' 'roughness>0' file:cloud.png file:marble.png file:erosion.png file:fire.png
+"$expect" "$out/summary.tsv" rows=12 'seeds==3' 'E_ks>0' 'E_ks<0.02' 'E_con>0' 'p_ks_min>0.9' \
+  'roughness>0' file:cloud.png file:marble.png file:erosion.png file:fire.png
+awk -F'\t' 'BEGIN{
+    ceil["cloud/flower"]=0.494; ceil["cloud/x"]=0.492; ceil["cloud/star"]=0.489
+    ceil["marble/rings"]=0.525; ceil["marble/spiral"]=0.531; ceil["marble/letter"]=0.544
+    ceil["erosion/disc"]=0.523; ceil["erosion/star"]=0.443; ceil["erosion/x"]=0.485
+    ceil["fire/flower"]=0.485; ceil["fire/gradient"]=0.392; ceil["fire/letter"]=0.478 }
+  NR==1{for(i=1;i<=NF;i++) if($i=="rms_con") k=i}
+  NR>1{key=$1"/"$2; if(!(key in ceil)){print "no ceiling for " key; exit 1}
+       if(!($k < ceil[key])){print "rms_con " $k " not below the KS-only table'"'"'s " ceil[key] " for " key; exit 1}; n++}
+  END{if(n!=12) exit 1}' "$out/summary.tsv"

@@ -1,19 +1,42 @@
 #!/usr/bin/env bash
-# Quick C2: KS / chi-square / Kuiper objectives on two patterns; the chi-square
-# objective gives the lowest chi2 (thesis sec. 4.2), CDF and histogram tables
-# cover 512 angles and 500 bins.
+# Quick C2: KS / chi-square / Kuiper objectives on two patterns (thesis sec. 4.2).
+# Each objective wins on its own statistic: chi-square gives the lowest chi2,
+# Kuiper the lowest V, KS a lower D than chi-square. Bounds measured at --quick
+# over seeds 1..5 (values are means over 3 seeds per row, first-seed CDFs):
+#  - every row passes KS and Kuiper at 5% (p_kuiper_min measured >= 0.85):
+#    E_ks < 0.060 = 1.358 / sqrt(512), the critical
+#    D (chi-square rows measured up to 0.026: KS is not what they optimise);
+#  - the KS and Kuiper objectives reach E_ks 0.0077..0.0113 and V 0.0130..0.0217;
+#    bounds 0.02 / 0.03 (about 1.8x the worst seed; a random table has mean
+#    D = 0.87 / sqrt(512) = 0.038 and fails them);
+#  - the first seed's empirical CDF stays within 0.02 of the uniform one for KS
+#    and Kuiper (measured max 0.0123) and 0.06 for chi-square (measured 0.0385;
+#    the KS critical value);
+#  - Kuiper's V of the Kuiper objective is below the KS objective's V (measured
+#    ratio 0.60..0.81) and the chi-square one's (0.42..0.52); KS objective's D
+#    below the chi-square objective's (ratio 0.39..0.59). A margin of 0.9 on
+#    each ratio keeps the check away from the noise of 3-seed means.
 set -euo pipefail
 exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
 "$exp" --quick --out "$out" --patterns "$pat" >/dev/null
-"$expect" "$out/summary.tsv" rows=6 'E_ks>=0' 'E_ks<0.06' 'V_kuiper>=E_ks' 'chi2>0' 'E_con>0' \
-  'p_kuiper>=0' 'p_kuiper<=1' file:noise_flower.png file:noise_x.png
+"$expect" "$out/summary.tsv" rows=6 'E_ks<0.06' 'chi2>0' 'E_con>0' 'p_kuiper_min>0.05' \
+  file:noise_flower.png file:noise_x.png
+awk -F'\t' 'NR == 1 || $2 != "chisq"' "$out/summary.tsv" > "$out/summary_ks_kuiper.tsv"
+"$expect" "$out/summary_ks_kuiper.tsv" rows=4 'E_ks<0.02' 'V_kuiper<0.03'
 for p in flower x; do
-  "$expect" "$out/cdf_$p.tsv" rows=512 'F>0' 'F<=1' 'u_ks>=0' 'u_ks<1' 'u_chisq<1' 'u_kuiper<1'
-  "$expect" "$out/hist_$p.tsv" rows=500 'ks>=0' 'chisq>=0' 'kuiper>=0'
+  "$expect" "$out/cdf_$p.tsv" rows=512 'u_ks~F:0.02' 'u_kuiper~F:0.02' 'u_chisq~F:0.06'
+  # every histogram column counts all 512 angles
+  awk -F'\t' 'NR>1{a+=$2; b+=$3; c+=$4} END{if(a!=512||b!=512||c!=512){print "histogram counts " a, b, c; exit 1}}' "$out/hist_$p.tsv"
+  "$expect" "$out/hist_$p.tsv" rows=500
 done
-# chi-square objective: lowest chi2 of the three on each pattern (rows 2 and 5)
-awk -F'\t' 'NR==2||NR==5{ks=$12} NR==3||NR==6{if(!($12<ks)){print "chi2 not lowest: " $0; exit 1}}' "$out/summary.tsv"
+# rows per pattern: ks, chisq, kuiper (columns: 4 E_ks, 8 V_kuiper, 12 chi2)
+awk -F'\t' 'NR>1{r=(NR-2)%3; d[r]=$4; v[r]=$8; c[r]=$12}
+  NR>1 && r==2 {
+    if(!(c[1] < c[0] && c[1] < c[2])) {print "chi2 not lowest for the chi-square objective: " $1; exit 1}
+    if(!(v[2] < 0.9*v[0] && v[2] < 0.9*v[1])) {print "V not lowest for the Kuiper objective: " $1; exit 1}
+    if(!(d[0] < 0.9*d[1])) {print "KS objective D not below chi-square objective D: " $1; exit 1}
+  }' "$out/summary.tsv"
 # same seed, same table
 "$exp" --quick --out "$out/again" --patterns "$pat" >/dev/null
 cmp "$out/summary.tsv" "$out/again/summary.tsv"

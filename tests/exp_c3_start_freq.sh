@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Quick C3: f1 = 2, 4, 6, 8; lower f1 is smoother (roughness grows with f1).
+# Tables stay uniform: E_ks measured 0.0082..0.030 at --quick over seeds 1..5
+# (3-seed means); bound 0.05, under the KS 5% critical D 1.358/sqrt(512) = 0.060
+# (was E_ks>=0, true of any D).
 set -euo pipefail
 exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
 "$exp" --quick --out "$out" --patterns "$pat" >/dev/null
-"$expect" "$out/summary.tsv" rows=4 'E_ks>=0' 'E_con>0' 'roughness>0' 'roughness>f1*0.3' file:panels.png
+"$expect" "$out/summary.tsv" rows=4 'E_ks<0.05' 'E_con>0' 'roughness>0' 'roughness>f1*0.3' file:panels.png
 awk -F'\t' 'NR>2 && !($(NF-1) > prev){print "roughness not increasing with f1 at row " NR; exit 1} {prev=$(NF-1)}' "$out/summary.tsv"

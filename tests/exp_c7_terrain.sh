@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Quick C7: three height maps (mesh x mesh) with heights in [0, 1].
+# Quick C7: three height maps (mesh x mesh) with heights in [0, 1] (c = (1 + V)/2
+# with V over its analytic bound: a bound check of the kernel). Tables stay
+# uniform: E_ks measured 0.0092..0.0115 at --quick over seeds 1..5; bound 0.02
+# (a random table's mean D is 0.87/sqrt(512) = 0.038; was E_ks>=0, always true).
 set -euo pipefail
 exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
 "$exp" --quick --out "$out" --patterns "$pat" >/dev/null
-"$expect" "$out/summary.tsv" rows=3 'E_ks>=0' 'E_con>0' file:heightmaps.png
+"$expect" "$out/summary.tsv" rows=3 'E_ks<0.02' 'E_con>0' file:heightmaps.png
 for p in flower x star; do
   "$expect" "$out/height_$p.tsv" rows=48 'c0>=0' 'c0<=1' 'c47>=0' 'c47<=1'
 done

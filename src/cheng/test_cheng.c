@@ -259,3 +259,119 @@ NL_TEST(ks_median)
 }
 
 int main(void) { return nl_test_run(); }
+
+/* Eq. 3.9, E = w1 E_KS + w2 E_Con, pinned on a table small enough to check by
+ * hand, with w1 != w2 so that exchanging the weights anywhere in the library
+ * (the formula in the problem, in nl_cheng_evaluate, or the thesis defaults)
+ * fails. Values below are worked by hand and re-derived independently with
+ * plain python3 (math module only) from eq. 3.1-3.2 and eq. 3.7.
+ *
+ * Setup: M = 4, one octave, f1 = 1, a1 = 1 (amp 1, s = 1 / (sqrt2/2) = sqrt2),
+ * cloud control c = (1 + V) / 2, V = s Noise. perm = {0, 2, 1, 3} makes the
+ * hash G[P[P[i] + j]] give the four corners of cell (0, 0) the four entries:
+ * (0,0) -> 0, (1,0) -> 1, (0,1) -> 2, (1,1) -> 3; the lattice of f = 1 is those
+ * four points, so level 1's sample is all 4 entries.
+ * Angles 0, pi/2, pi, 3 pi/2: G0 = (1,0), G1 = (0,1), G2 = (-1,0), G3 = (0,-1).
+ *
+ * E_KS: F(x) = x / 2pi = 0, 1/4, 1/2, 3/4; D+ = max(i/4 - F_(i)) = 1/4,
+ *   D- = max(F_(i) - (i-1)/4) = 0, so E_KS = 1/4.
+ * Point A (0.5, 0.5), D = 1: fade(1/2) = 1/2, each corner weight 1/4, Delta =
+ *   (+-1/2, +-1/2): Noise = 1/8 [(1+0) + (-0+1) + (-1-0) + (-0+1)] = 1/4,
+ *   V = sqrt2/4, c = 1/2 + sqrt2/8, term = (1/2 - sqrt2/8)^2 = 9/32 - sqrt2/8
+ *   = 0.10447330470336313.
+ * Point B (0.25, 0.5), D = 0: fade(1/4) = 53/512, fade(1/2) = 1/2; corner
+ *   weights (1 - 53/512)/2 = 459/1024 for i = 0 and 53/1024 for i = 1;
+ *   Noise = 459/1024 (1/4)(1) + 53/1024 (1/2)(1) + 459/1024 (1/4)(-1)
+ *         + 53/1024 (-1/2)(-1) = 53/1024,
+ *   c = 1/2 + sqrt2 53/2048, term = c^2 = 0.28793773577552439.
+ * E_Con = 0.39241104047888753; with w1 = 0.7, w2 = 0.3:
+ *   E = 0.7/4 + 0.3 E_Con = 0.29272331214366626 (swapped: 0.34968772833522127).
+ *
+ * Incremental move: entry 3 to pi/4 (G3 = (sqrt2/2, sqrt2/2)). Fractions 0,
+ * 1/4, 1/2, 1/8: D+ = max(1/4 - 0, 2/4 - 1/8, 3/4 - 1/4, 1 - 1/2) = 1/2, D- = 0:
+ * E_KS = 1/2. A: Noise = 1/8 (1 + 1 - 1 - sqrt2) = (1 - sqrt2)/8,
+ *   c = 1/2 + (sqrt2 - 2)/16, term = (c - 1)^2 = 0.28795206543960189;
+ * B: the i = 0 corners cancel as before; Noise = 53/2048 + 53/1024 (-3/4, -1/2)
+ *   . (sqrt2/2, sqrt2/2) = (212 - 265 sqrt2) / 8192, c = 1/2 + sqrt2 Noise / 2,
+ *   term = c^2 = 0.23614790525108098; E_Con = 0.52409997069068281,
+ *   E = 0.35 + 0.3 E_Con = 0.5072299912072048 (swapped: 0.5168699794834779).
+ * 1e-12: the values pass through a handful of double operations (cos/sin of
+ * pi/2 give 6e-17 instead of 0), so they agree to ~1e-16; 1e-12 is the
+ * library's documented incremental-vs-full accuracy. */
+static nl_cheng_pattern *two_points(void)
+{
+  nl_cheng_pattern *p = nl_xcalloc(1, sizeof *p);
+  p->grid = 2;
+  p->n = 2;
+  p->x = nl_xmalloc(2 * sizeof *p->x);
+  p->y = nl_xmalloc(2 * sizeof *p->y);
+  p->d = nl_xmalloc(2 * sizeof *p->d);
+  p->cell = nl_xmalloc(2 * sizeof *p->cell);
+  p->x[0] = 0.5;  p->y[0] = 0.5; p->d[0] = 1.0; p->cell[0] = 3;
+  p->x[1] = 0.25; p->y[1] = 0.5; p->d[1] = 0.0; p->cell[1] = 2;
+  return p;
+}
+
+NL_TEST(objective_eq_3_9_by_hand)
+{
+  /* The thesis weights (sec. 3.4.1) are the defaults, not exchanged. */
+  nl_cheng_config d = nl_cheng_config_default();
+  NL_CHECK(d.w1 == 0.995 && d.w2 == 0.005);
+
+  nl_cheng_pattern *pat = two_points();
+  nl_cheng_config c = nl_cheng_config_default();
+  c.stat = NL_CHENG_STAT_KS;
+  c.con = NL_CHENG_CON_PLAIN;
+  c.w1 = 0.7; c.w2 = 0.3;
+  c.octaves = 1; c.f1 = 1; c.a1 = 1; c.m = 4;
+  nl_grad2 *g = nl_grad2_alloc(4);
+  static const unsigned perm[4] = {0, 2, 1, 3};
+  for (size_t k = 0; k < 4; k++) {
+    g->perm[k] = perm[k];
+    nl_grad2_set_angle(g, k, NL_TWO_PI * 0.25 * (double)k);
+  }
+  NL_CHECK(nl_grad2_index(g, 0, 0) == 0 && nl_grad2_index(g, 1, 0) == 1 &&
+           nl_grad2_index(g, 0, 1) == 2 && nl_grad2_index(g, 1, 1) == 3);
+  nl_error err;
+  nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
+  NL_CHECK(p != NULL);
+  const double ks0 = 0.25, con0 = 0.39241104047888753, e0 = 0.29272331214366626;
+  const double ks1 = 0.5, con1 = 0.52409997069068281, e1 = 0.5072299912072048;
+  double st, con, e = nl_cheng_energy(p, &st, &con);
+  NL_CHECK_NEAR(st, ks0, 1e-12);
+  NL_CHECK_NEAR(con, con0, 1e-12);
+  NL_CHECK_NEAR(e, e0, 1e-12);
+  e = nl_cheng_energy_full(p, &st, &con);
+  NL_CHECK_NEAR(st, ks0, 1e-12);
+  NL_CHECK_NEAR(con, con0, 1e-12);
+  NL_CHECK_NEAR(e, e0, 1e-12);
+  nl_cheng_eval ev;
+  NL_CHECK(nl_cheng_evaluate(g, &c, pat, &ev, &err) == NL_OK);
+  NL_CHECK_NEAR(ev.e_ks, ks0, 1e-12);
+  NL_CHECK_NEAR(ev.kuiper_v, 0.25, 1e-12);   /* D+ + D- = 1/4 + 0 */
+  NL_CHECK_NEAR(ev.e_con, con0, 1e-12);
+  NL_CHECK_NEAR(ev.e, e0, 1e-12);
+
+  /* incremental update, then its undo */
+  NL_CHECK_NEAR(nl_cheng_move(p, 3, NL_TWO_PI * 0.125), e1, 1e-12);
+  e = nl_cheng_energy(p, &st, &con);
+  NL_CHECK_NEAR(st, ks1, 1e-12);
+  NL_CHECK_NEAR(con, con1, 1e-12);
+  NL_CHECK_NEAR(e, e1, 1e-12);
+  NL_CHECK_NEAR(nl_cheng_energy_full(p, NULL, NULL), e1, 1e-12);
+  NL_CHECK(nl_cheng_evaluate(g, &c, pat, &ev, &err) == NL_OK);
+  NL_CHECK_NEAR(ev.e, e1, 1e-12);
+  nl_cheng_resum(p);   /* the full re-sum of a temperature step gives the same E */
+  NL_CHECK_NEAR(nl_cheng_energy(p, NULL, NULL), e1, 1e-12);
+  nl_cheng_move(p, 3, NL_TWO_PI * 0.125);
+  nl_cheng_undo(p);
+  NL_CHECK_NEAR(nl_cheng_energy(p, NULL, NULL), e1, 1e-12);
+  nl_cheng_move(p, 3, NL_TWO_PI * 0.75);   /* back to the first table */
+  e = nl_cheng_energy(p, &st, &con);
+  NL_CHECK_NEAR(st, ks0, 1e-12);
+  NL_CHECK_NEAR(con, con0, 1e-12);
+  NL_CHECK_NEAR(e, e0, 1e-12);
+  nl_cheng_problem_free(p);
+  nl_grad2_free(g);
+  nl_cheng_pattern_free(pat);
+}
