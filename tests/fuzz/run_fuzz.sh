@@ -1,12 +1,17 @@
 #!/usr/bin/env bash
 # A bounded libFuzzer run, registered by tests/fuzz/meson.build:
 #   run_fuzz.sh FUZZER CORPUS WORKDIR RUNS [libFuzzer options...]
-# Runs FUZZER from the seed corpus CORPUS for RUNS executions with a fixed
+# Runs FUZZER from the seed corpus CORPUS for RUNS executions (-1: until
+# another limit such as -max_total_time=S, or a finding) with a fixed
 # seed (the same inputs every time for the same build). New inputs go to
 # WORKDIR/corpus (never into the committed seed corpus), a crashing input to
 # WORKDIR/crash-*. Exit 77 (skipped) when FUZZER is empty: clang or libFuzzer
 # was absent at configure time.
 set -euo pipefail
+# Outside meson test (longer runs by hand) the same sanitizer options.
+export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$(cd "$(dirname "$0")" && pwd)/lsan.supp}"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}"
 fuzzer="$1" corpus="$2" work="$3" runs="$4"; shift 4
 if [ -z "$fuzzer" ]; then
   echo "fuzz: clang with libFuzzer not found at configure time (Debian: clang libclang-rt-14-dev)"
