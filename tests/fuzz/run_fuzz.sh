@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# A bounded libFuzzer run, registered by tests/fuzz/meson.build:
+#   run_fuzz.sh FUZZER CORPUS WORKDIR RUNS [libFuzzer options...]
+# Runs FUZZER from the seed corpus CORPUS for RUNS executions (-1: until
+# another limit such as -max_total_time=S, or a finding) with a fixed
+# seed (the same inputs every time for the same build). New inputs go to
+# WORKDIR/corpus (never into the committed seed corpus), a crashing input to
+# WORKDIR/crash-*. Exit 77 (skipped) when FUZZER is empty: clang or libFuzzer
+# was absent at configure time.
+set -euo pipefail
+# Outside meson test (longer runs by hand) the same sanitizer options.
+export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$(cd "$(dirname "$0")" && pwd)/lsan.supp}"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}"
+fuzzer="$1" corpus="$2" work="$3" runs="$4"; shift 4
+if [ -z "$fuzzer" ]; then
+  echo "fuzz: clang with libFuzzer not found at configure time (Debian: clang libclang-rt-14-dev)"
+  exit 77
+fi
+[ -d "$corpus" ] && [ -n "$(ls -A "$corpus")" ] || { echo "fuzz: no seed corpus in $corpus"; exit 1; }
+rm -rf "$work"; mkdir -p "$work/corpus"
+log="$work/fuzz.log"
+# The targets write each input to a file in $TMPDIR: in memory when possible
+# (on a disk each write can cost milliseconds: 10x fewer executions).
+tmp="$(mktemp -d -p /dev/shm nl_fuzz.XXXXXX 2>/dev/null || mktemp -d -p "$work")"
+trap 'rm -rf "$tmp"' EXIT
+rc=0
+TMPDIR="$tmp" "$fuzzer" -runs="$runs" -seed=1 -max_len=8192 -timeout=20 -rss_limit_mb=2048 \
+  -artifact_prefix="$work/" -print_final_stats=1 "$@" "$work/corpus" "$corpus" >"$log" 2>&1 || rc=$?
+if [ "$rc" != 0 ]; then
+  tail -n 60 "$log"
+  crash="$(ls "$work"/crash-* "$work"/leak-* "$work"/timeout-* "$work"/oom-* 2>/dev/null | head -n 1 || true)"
+  echo "fuzz: $(basename "$fuzzer") failed (exit $rc); reproduce: $fuzzer ${crash:-<input>}"
+  exit 1
+fi
+# A run that stopped early (or never started) is a failure too.
+done_line="$(grep -E '^Done [0-9]+ runs' "$log" || true)"
+n="$(printf '%s' "$done_line" | awk '{print $2}')"
+if [ -z "$n" ] || [ "$n" -lt "$runs" ]; then
+  tail -n 30 "$log"
+  echo "fuzz: $(basename "$fuzzer") did not complete $runs runs (${done_line:-no 'Done' line})"
+  exit 1
+fi
+grep -E '^(INFO: Seed|INFO: seed corpus|#[0-9]+ +(INITED|DONE)|stat::|Done )' "$log" || true
+echo "fuzz: $(basename "$fuzzer") $done_line"
