@@ -15,6 +15,11 @@ nl_status nl_fail(nl_error *err, nl_status status, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(err->msg, sizeof err->msg, fmt, ap);
     va_end(ap);
+    /* One line whatever the input echoed in it (a file name or an argument
+     * holding a newline or a NUL-truncated byte run): control characters
+     * become '?', so a program can print the message as its one line. */
+    for (char *c = err->msg; *c; c++)
+      if ((unsigned char)*c < 0x20 || *c == 0x7f) *c = '?';
   }
   return status;
 }

@@ -30,7 +30,8 @@ typedef enum {
 #define NL_ERROR_LEN 512
 typedef struct { char msg[NL_ERROR_LEN]; } nl_error;
 
-/* Sets err->msg (if err != NULL) and returns status, for `return nl_fail(...)`. */
+/* Sets err->msg (if err != NULL) and returns status, for `return nl_fail(...)`.
+ * Control characters in the message (from an echoed input) become '?'. */
 nl_status nl_fail(nl_error *err, nl_status status, const char *fmt, ...)
   __attribute__((format(printf, 3, 4)));
 
