@@ -392,6 +392,18 @@ void nl_run_check(nl_run *r, const char *table, const char *column, const char *
   nl_table_append(c, "sss", table, column, rule);
 }
 
+const char *nl_run_check_rule(const nl_run *r, const char *table, const char *column)
+{
+  const char *star = NULL;
+  for (size_t i = 0; i < r->checks->nrows; i++) {
+    char **row = r->checks->text + i * r->checks->ncols;
+    if (strcmp(row[0], table)) continue;
+    if (!strcmp(row[1], column)) return row[2];
+    if (!strcmp(row[1], "*")) star = row[2];
+  }
+  return star;
+}
+
 /* ---- the end ------------------------------------------------------------ */
 
 static void write_text(nl_run *r, const char *file, const char *text)

@@ -152,6 +152,9 @@ typedef struct {
 } nl_check_rule;
 
 void nl_run_check(nl_run *r, const char *table, const char *column, const char *rule);
+/* The rule declared so far for table/column (a named column beats "*"), or
+ * NULL: exact. */
+const char *nl_run_check_rule(const nl_run *r, const char *table, const char *column);
 
 /* Tolerances from a measurement, for tables whose values pass through a
  * CPU-dependent computation (OpenBLAS picks its kernel per CPU; glibc's libm
@@ -162,9 +165,11 @@ void nl_run_check(nl_run *r, const char *table, const char *column, const char *
  * each column of `table` that moved, "rel (multiple x its relative spread)",
  * or "abs (multiple x its absolute spread)" when the values are themselves
  * at rounding level (relative spread > 1e-3); columns that did not move
- * stay exact. It adds one line to the report naming the largest spread and
+ * stay exact. A column that already has a rule other than exact (welch
+ * for a mean over seeds, ignore for a timing) keeps it. It adds one line to the report naming the largest spread and
  * the multiple. A table missing from the measurement is an error (exit 1):
- * measure it first. NL_BLAS_SPREAD overrides the file's path. */
+ * measure it first. table "*": every table measured for this experiment
+ * and scale. NL_BLAS_SPREAD overrides the file's path. */
 void nl_run_check_measured(nl_run *r, const char *table, double multiple);
 /* Parses a rule string as above; "rule 'x': ..." on error. */
 nl_status nl_check_rule_parse(const char *s, nl_check_rule *rule, nl_error *err);
