@@ -137,8 +137,17 @@ static void parse(int argc, char **argv, options *o)
   if (!one_of(o->count, counts)) { snprintf(m, sizeof m, "--count: '%s' is not inverse or closest", o->count); fail(m); }
   if (!one_of(o->normalize, norms)) { snprintf(m, sizeof m, "--normalize: '%s' is not bound or range", o->normalize); fail(m); }
   if (o->bits && o->bits != 8 && o->bits != 16 && o->bits != 32) { snprintf(m, sizeof m, "--bits: %ld is not 8, 16 or 32", o->bits); fail(m); }
-  double bytes = (double)o->size * o->size * 12.0;
-  if (bytes > 16e9) { snprintf(m, sizeof m, "--size: %ld needs %.0f GB of memory; at most 36000 fits in 16 GB", o->size, bytes / 1e9); fail(m); }
+  /* values (double) and the image (float); a .tsv holds 3 columns of a
+   * table (number and text slot each) that may be doubled while growing */
+  size_t len = strlen(o->out);
+  int tsv = len >= 4 && strcasecmp(o->out + len - 4, ".tsv") == 0;
+  double bytes = (double)o->size * o->size * (12.0 + (tsv ? 96.0 : 0.0));
+  if (!nl_mem_fits(bytes)) {
+    char b1[32], b2[32];
+    snprintf(m, sizeof m, "--size %ld%s needs %s of memory; this machine has %s", o->size,
+             tsv ? " as a .tsv" : "", nl_format_bytes(b1, bytes), nl_format_bytes(b2, nl_mem_physical()));
+    fail(m);
+  }
 }
 
 static void check_writable(const char *path)

@@ -30,8 +30,31 @@ static void put_values(FILE *fp, const char *key, const double *v, int n)
   fputc('\n', fp);
 }
 
+/* The first value of p that is NaN or infinite, named, or NULL. */
+static const char *non_finite(const nl_example_params *p, char *buf, size_t len)
+{
+  int C = p->channels;
+  if (!isfinite(p->sigma2)) { snprintf(buf, len, "sigma2"); return buf; }
+  for (int c = 0; c < C; c++) {
+    if (!isfinite(p->mean[c])) { snprintf(buf, len, "mean %d", c + 1); return buf; }
+    for (int k = 0; k < C; k++)
+      if (!isfinite(p->matrix[c][k])) { snprintf(buf, len, "matrix %d,%d", c + 1, k + 1); return buf; }
+    for (int k = 0; k < NL_EXAMPLE_HIST; k++)
+      if (!isfinite(p->hist[c][k])) { snprintf(buf, len, "hist%d %d", c, k + 1); return buf; }
+    for (int k = 0; k < p->nbands && k < NL_WAVELET_MAX_BANDS; k++)
+      if (!isfinite(p->w[c][k])) { snprintf(buf, len, "weights%d %d", c, k + 1); return buf; }
+  }
+  return NULL;
+}
+
 nl_status nl_example_params_save(const nl_example_params *p, const char *path, nl_error *err)
 {
+  /* A file the loader would reject is not written (nothing written). */
+  char what[64];
+  if (p->channels < 1 || p->channels > 3)
+    return nl_fail(err, NL_EINVAL, "%s: %d channels; parameters have 1 or 3", path, p->channels);
+  if (non_finite(p, what, sizeof what))
+    return nl_fail(err, NL_EINVAL, "%s: parameter %s is not finite; nothing written", path, what);
   nl_atomic_file af;
   nl_status st = nl_atomic_open(&af, path, err);
   if (st) return st;
