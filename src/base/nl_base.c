@@ -82,6 +82,11 @@ char *nl_temp_sibling(const char *path)
 nl_status nl_atomic_open(nl_atomic_file *af, const char *path, nl_error *err)
 {
   af->fp = NULL;
+  af->path = af->tmp = NULL;
+  /* "", "dir/", a directory or a parent that is a file: say so, naming the
+   * target, before a temporary file is made. */
+  nl_status c = nl_path_check_writable(path, err);
+  if (c) return c;
   af->path = nl_xstrdup(path);
   af->tmp = nl_temp_sibling(path);
   const char *dot = strrchr(af->tmp, '.');

@@ -261,7 +261,7 @@ static nl_status read_rows(FILE *fp, const char *path, int flags, nl_table **out
     }
     if (s) break;
   }
-  if (!s && ferror(fp)) s = nl_fail(err, NL_EIO, "%s: read error", path);
+  if (!s && ferror(fp)) s = nl_fail(err, NL_EIO, "%s: read error: %s", path, strerror(errno));
   if (!s && (!t || t->nrows == 0)) s = nl_fail(err, NL_EFORMAT, "%s: no data rows", path);
   free(line); free(f);
   if (s) { nl_table_free(t); return s; }
