@@ -150,9 +150,23 @@ nl_status nl_mkdir_p(const char *dir, nl_error *err)
       char c = *q;
       *q = '\0';
       if (mkdir(p, 0755) != 0 && errno != EEXIST) {
-        nl_status s = errno == ENOTDIR
-          ? nl_fail(err, NL_EIO, "%s: cannot create directory: a parent of %s is not a directory", dir, p)
-          : nl_fail(err, NL_EIO, "%s: cannot create directory %s: %s", dir, p, strerror(errno));
+        nl_status s;
+        if (errno == ENOTDIR) {
+          /* name the component that is a file */
+          struct stat st;
+          char *q2 = p + 1;
+          for (;; q2++)
+            if (*q2 == '/' || *q2 == '\0') {
+              char c2 = *q2;
+              *q2 = '\0';
+              int file = stat(p, &st) == 0 && !S_ISDIR(st.st_mode);
+              if (file || c2 == '\0') break;
+              *q2 = c2;
+            }
+          s = nl_fail(err, NL_EIO, "%s: cannot create directory: %s is not a directory", dir, p);
+        } else {
+          s = nl_fail(err, NL_EIO, "%s: cannot create directory %s: %s", dir, p, strerror(errno));
+        }
         free(p);
         return s;
       }
