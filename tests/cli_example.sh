@@ -100,5 +100,72 @@ bad synthesize "$out/rgb.params" --size 0 -o "$out/x.png"
 bad synthesize "$out/rgb.params" -o "$out/x.png"
 bad morph "$out/rgb.params" "$out/rgb.params" --t 1.5 -o "$out/x.params"
 bad frobnicate
+# exr_1ch FILE W H PIXEL: an uncompressed one-channel float EXR made by hand,
+# every pixel PIXEL (4 bytes as printf escapes, little-endian).
+le32() { printf "\\x$(printf %02x $(($1 & 255)))\\x$(printf %02x $((($1 >> 8) & 255)))\\x$(printf %02x $((($1 >> 16) & 255)))\\x$(printf %02x $((($1 >> 24) & 255)))"; }
+exr_1ch() {
+  local f=$1 w=$2 h=$3 px=$4 y x start
+  {
+    printf '\x76\x2f\x31\x01\x02\x00\x00\x00'
+    printf 'channels\0chlist\0'; le32 18; printf 'Y\0'; le32 2; printf '\0\0\0\0'; le32 1; le32 1; printf '\0'
+    printf 'compression\0compression\0'; le32 1; printf '\0'
+    printf 'dataWindow\0box2i\0'; le32 16; le32 0; le32 0; le32 $((w - 1)); le32 $((h - 1))
+    printf 'displayWindow\0box2i\0'; le32 16; le32 0; le32 0; le32 $((w - 1)); le32 $((h - 1))
+    printf 'lineOrder\0lineOrder\0'; le32 1; printf '\0'
+    printf 'pixelAspectRatio\0float\0'; le32 4; printf '\0\0\x80\x3f'
+    printf 'screenWindowCenter\0v2f\0'; le32 8; printf '\0\0\0\0\0\0\0\0'
+    printf 'screenWindowWidth\0float\0'; le32 4; printf '\0\0\x80\x3f'
+    printf '\0'
+  } > "$f"
+  start=$(( $(stat -c %s "$f") + 8 * h ))
+  {
+    for ((y = 0; y < h; y++)); do le32 $((start + y * (8 + 4 * w))); le32 0; done
+    for ((y = 0; y < h; y++)); do
+      le32 $y; le32 $((4 * w))
+      for ((x = 0; x < w; x++)); do printf "$px"; done
+    done
+  } >> "$f"
+}
+# The hand-made EXR reads (0.5 everywhere: a flat exemplar analyses fine) ...
+exr_1ch "$out/half.exr" 16 16 '\x00\x00\x00\x3f'
+"$tool" analyse "$out/half.exr" -o "$out/half.params"
+grep -q '^channels 1' "$out/half.params"
+# ... and an all-inf one is refused naming the first pixel, nothing written (13.6).
+exr_1ch "$out/inf.exr" 16 16 '\x00\x00\x80\x7f'
+bad analyse "$out/inf.exr" -o "$out/x.params"
+grep -q 'inf.exr: pixel (0, 0) channel 1 is inf' "$out/err.txt"
+exr_1ch "$out/nan.exr" 16 16 '\x00\x00\xc0\x7f'
+bad analyse "$out/nan.exr" -o "$out/x.params"
+grep -q 'nan.exr: pixel (0, 0) channel 1 is NaN' "$out/err.txt"
+# A 278-byte EXR declaring an 894 MB attribute: refused from its header,
+# before OpenEXR allocates it (13.8; it took 7-20 s and 1 GB).
+{ printf '\x76\x2f\x31\x01\x02\x00\x00\x00channels\0chlist\0\x80\x6b\x49\x35'; head -c 250 /dev/zero; } > "$out/hostile.exr"
+t0=$SECONDS
+bad analyse "$out/hostile.exr" -o "$out/x.params"
+grep -q "hostile.exr: EXR header: attribute 'channels' declares 894004096 bytes but the file has 250 left" "$out/err.txt"
+[ $((SECONDS - t0)) -le 5 ]
+# A 0x0 PNG (valid CRC): one line, ours, no libpng line before it (13.9).
+printf '\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR\x00\x00\x00\x00\x00\x00\x00\x00\x08\x00\x00\x00\x00\x1e\xe0\x23\xce\x00\x00\x00\x00IEND\xae\x42\x60\x82' > "$out/zero.png"
+bad analyse "$out/zero.png" -o "$out/x.params"
+grep -q '^noiselab example: .*zero.png: ' "$out/err.txt"
+# Params files: NUL bytes, endless and non-regular inputs, long lines.
+printf 'noiselab-example 1\nchannels 1\0\n' > "$out/nul.params"
+bad synthesize "$out/nul.params" --size 8 -o "$out/x.png"
+grep -q 'nul.params:2: NUL byte' "$out/err.txt"
+bad synthesize /dev/zero --size 8 -o "$out/x.png"
+bad synthesize "$out" --size 8 -o "$out/x.png"
+grep -q 'Is a directory' "$out/err.txt"
+rc=0; yes '#' | timeout 120 "$tool" synthesize /dev/stdin --size 8 -o "$out/x.png" 2> "$out/err.txt" || rc=$?
+[ "$rc" -eq 2 ] && grep -q 'longer than 1 MiB' "$out/err.txt"
+# Outputs: an empty name, a parent that is a file, sizes beyond memory.
+bad analyse "$out/half.exr" -o ""
+grep -q "'': empty file name" "$out/err.txt"
+bad analyse "$out/half.exr" -o "$out/half.params/x.params"
+grep -q "parent $out/half.params is not a directory" "$out/err.txt"
+if [ "$(awk '/^MemTotal:/ { print $2 }' /proc/meminfo)" -lt 30000000 ]; then   # 32.4 GB needed
+  bad synthesize "$out/rgb.params" --size 30000 --height 30000 -o "$out/x.png"
+  grep -q 'output 30000 x 30000 with 3 channels needs' "$out/err.txt"
+fi
 test ! -e "$out/x.png" && test ! -e "$out/x.params"
+[ -z "$(ls -A "$out" | grep '^\.' || true)" ]   # no temporary files left
 echo "cli_example: ok"

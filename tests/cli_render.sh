@@ -31,11 +31,50 @@ bad "--size: 0 is outside" fbm --size 0 -o "$out/x.png"
 bad "--size: 65537 is outside" fbm --size 65537 -o "$out/x.png"
 bad "--octaves: 31 is outside" fbm --octaves 31 -o "$out/x.png"
 bad "--gain: 'abc' is not a number" fbm --gain abc -o "$out/x.png"
-bad "not writable" fbm --size 8 -o /nonexistent/dir/x.png
+bad "/nonexistent/dir/x.png: directory /nonexistent/dir does not exist" fbm --size 8 -o /nonexistent/dir/x.png
 bad "no output file" fbm --size 8
 bad "must be even" wavelet --tile 9 -o "$out/x.png"
-bad "lambda must be in" gctbf --lambda -1 -o "$out/x.png"
+bad "--lambda: -1 must be in (0, 1000]" gctbf --lambda -1 -o "$out/x.png"
 bad "F index must be in 1..4" gctbf --terms F5 -o "$out/x.png"
 bad "expected a number" gctbf --terms "abc*F1" -o "$out/x.png"
-[ ! -e "$out/x.png" ]
+# Issue 13.4: lattice coordinates beyond 2^52 (once NaN with exit 0 and
+# signed overflow in the floor) are refused naming the options.
+bad "--lacunarity 10 with --octaves 30: the finest octave's frequency 1e+29" fbm --octaves 30 --lacunarity 10 --size 4 -o "$out/x.tsv"
+bad "--lacunarity 10 with --octaves 30" fbm --octaves 30 --lacunarity 10 --size 4 -o "$out/x.png"
+bad "--lacunarity 10 with --octaves 30" fbm --basis gctbf --octaves 30 --lacunarity 10 --size 4 -o "$out/x.tsv"
+bad "--lacunarity 1e+06 with --octaves 4" fbm --basis wavelet --tile 8 --octaves 4 --lacunarity 1e6 --size 4 -o "$out/x.tsv"
+bad "--octaves 30: the finest octave's frequency" fractal --octaves 30 --x0 1e9 --size 4 -o "$out/x.tsv"
+bad "--octaves 30: the finest octave's frequency" marble --octaves 30 --y0 -1e9 --size 4 -o "$out/x.png"
+# In range, large: finite values only.
+"$render" fbm --octaves 12 --lacunarity 10 --gain 1000 --size 8 -o "$out/big.tsv"
+! grep -qi 'nan\|inf' "$out/big.tsv"
+"$render" fbm --basis table --octaves 30 --lacunarity 0.001 --size 8 -o "$out/small.tsv"
+! grep -qi 'nan\|inf' "$out/small.tsv"
+rm -f "$out/big.tsv" "$out/small.tsv"
+# Issue 13.9: a parent that is a file, option names and ranges.
+: > "$out/afile"
+bad "$out/afile/x.png: parent $out/afile is not a directory" fbm --size 8 -o "$out/afile/x.png"
+bad "$out/afile/x.tsv: parent $out/afile is not a directory" fbm --size 8 -o "$out/afile/x.tsv"
+bad "--points: -3 is outside [1, 64]" gctbf --points -3 -o "$out/x.png"
+bad "--points: 65 is outside [1, 64]" gctbf --points 65 -o "$out/x.png"
+bad "--lambda: 0 must be in (0, 1000]" gctbf --lambda 0 -o "$out/x.png"
+bad "'': empty file name" fbm --size 8 -o ""
+bad "$out: is a directory" fbm --size 8 -o "$out"
+bad "names a directory" fbm --size 8 -o "$out/"
+bad "--size 65536 as a .tsv needs" fbm --size 65536 -o "$out/x.tsv"   # 463 GB
+SOURCE_DATE_EPOCH=yesterday bad "SOURCE_DATE_EPOCH 'yesterday' is not a number" fbm --size 8 -o "$out/x.tif"
+rm -f "$out/afile"
+# Issue 12.4: same seed, same bytes, for every image format (no timestamp).
+for e in png tif exr; do
+  "$render" fbm --octaves 6 --size 64 --seed 11 -o "$out/same1.$e"
+  sleep 1   # a written time would now differ
+  "$render" fbm --octaves 6 --size 64 --seed 11 -o "$out/same2.$e"
+  cmp "$out/same1.$e" "$out/same2.$e"
+  rm -f "$out/same1.$e" "$out/same2.$e"
+done
+# SOURCE_DATE_EPOCH, when set, is the time written.
+SOURCE_DATE_EPOCH=0 "$render" fbm --size 8 -o "$out/epoch.tif"
+grep -aq '1970:01:01 00:00:00' "$out/epoch.tif"
+rm -f "$out/epoch.tif"
+[ ! -e "$out/x.png" ] && [ ! -e "$out/x.tsv" ] && [ ! -e "$out/x.tif" ]
 [ -z "$(ls -A "$out" | grep '^\.' || true)" ]   # no temporary files left

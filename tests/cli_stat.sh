@@ -129,5 +129,24 @@ expect_error "exactly one" "$STAT" gmm "$DATA/gmm_X.tsv"
 expect_error "two files" "$STAT" ks2 "$DATA/ks2_1_a.tsv"
 expect_error "unknown subcommand" "$STAT" frobnicate x
 
+# Issue 13.6-13.7: NUL bytes, endless lines, endless non-regular files,
+# requests beyond the machine's memory: refused at once, input named.
+printf 'a\tb\n1\t2\n3\t4\0005\n' >"$TMP/nul.tsv"
+expect_error "nul.tsv:3: NUL byte in column 2" "$STAT" ks "$TMP/nul.tsv"
+expect_error "/dev/zero:1: line longer than 1048576 bytes" timeout 120 "$STAT" ks /dev/zero
+expect_error "/dev/urandom:" timeout 120 "$STAT" kuiper /dev/urandom
+expect_error "read error: Is a directory" "$STAT" ks "$TMP"
+awk 'BEGIN { for (i = 0; i < 1000000; i++) print i % 97, i % 13 }' >"$TMP/big.tsv"
+expect_error "big.tsv: 1000000 rows need 4 TB for the distance matrix; this machine has" \
+  timeout 120 "$STAT" hclust "$TMP/big.tsv" --linkage complete --clusters 3
+expect_error "big.tsv: 1000000 rows of 2 columns with 100000 components need" \
+  timeout 120 "$STAT" gmm "$TMP/big.tsv" --k 100000
+expect_error "big.tsv: 1000000 rows of 2 columns with 100000 components need" \
+  timeout 120 "$STAT" gmm "$TMP/big.tsv" --select-aic 1 0.5 --max-k 100000
+rm -f "$TMP/big.tsv"
+awk 'BEGIN { for (i = 0; i < 20; i++) { for (j = 0; j < 100000; j++) printf "%d ", (i * j) % 7; print "" } }' >"$TMP/wide.tsv"
+expect_error "wide.tsv: 20 rows of 100000 columns with 3 components need" timeout 120 "$STAT" gmm "$TMP/wide.tsv" --k 3
+expect_error "parent $TMP/nul.tsv is not a directory" "$STAT" hclust "$DATA/hclust_X.tsv" --linkage single --clusters 2 --labels "$TMP/nul.tsv/x.tsv"
+
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]

@@ -15,6 +15,7 @@
 #include "texture/nl_texture.h"
 #include "wavelet/nl_wavelet.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -49,7 +50,8 @@ static void usage(void)
          "  --basis improved|table|gctbf|wavelet   noise under the sums (improved)\n"
          "  --tile N             wavelet tile period, even, 8..256 (64)\n"
          "  --terms EXPR         GCTBF, e.g. \"F2 - F1 - F1F1\" or \"0.5*F1 + 2 F1*F2\" (F1)\n"
-         "  --lambda L           mean feature points per unit cube (4)   --points M cap (50)\n"
+         "  --lambda L           mean feature points per unit cube, (0, 1000] (4)\n"
+         "  --points M           feature points per cube at most, 1..64 (50)\n"
          "  --count inverse|closest  feature-point count rule (inverse: inverse-CDF sampling;\n"
          "                       closest: the paper's 'p(m) closest to r')\n"
          "  --table-size M       gradient-table size for noise2/table, 4..1048576 (512)\n"
@@ -113,8 +115,15 @@ static void parse(int argc, char **argv, options *o)
     else if (!strcmp(a, "--terms")) o->terms = v;
     else if (!strcmp(a, "--tile")) integer(a, v, 8, 256, &o->tile);
     else if (!strcmp(a, "--count")) o->count = v;
-    else if (!strcmp(a, "--lambda")) num(a, v, -1e9, 1e9, &o->lambda);
-    else if (!strcmp(a, "--points")) integer(a, v, -1000000, 1000000, &o->points);
+    else if (!strcmp(a, "--lambda")) {
+      num(a, v, -1e9, 1e9, &o->lambda);
+      if (!(o->lambda > 0 && o->lambda <= 1000)) {
+        char m[256];
+        snprintf(m, sizeof m, "--lambda: %s must be in (0, 1000] (mean feature points per unit cube)", v);
+        fail(m);
+      }
+    }
+    else if (!strcmp(a, "--points")) integer(a, v, 1, NL_CELLULAR_MAX_M, &o->points);
     else if (!strcmp(a, "--normalize")) o->normalize = v;
     else { char m[256]; snprintf(m, sizeof m, "%s: unknown option (see --help)", a); fail(m); }
   }
@@ -128,20 +137,47 @@ static void parse(int argc, char **argv, options *o)
   if (!one_of(o->count, counts)) { snprintf(m, sizeof m, "--count: '%s' is not inverse or closest", o->count); fail(m); }
   if (!one_of(o->normalize, norms)) { snprintf(m, sizeof m, "--normalize: '%s' is not bound or range", o->normalize); fail(m); }
   if (o->bits && o->bits != 8 && o->bits != 16 && o->bits != 32) { snprintf(m, sizeof m, "--bits: %ld is not 8, 16 or 32", o->bits); fail(m); }
-  double bytes = (double)o->size * o->size * 12.0;
-  if (bytes > 16e9) { snprintf(m, sizeof m, "--size: %ld needs %.0f GB of memory; at most 36000 fits in 16 GB", o->size, bytes / 1e9); fail(m); }
+  /* values (double) and the image (float); a .tsv holds 3 columns of a
+   * table (number and text slot each) that may be doubled while growing */
+  size_t len = strlen(o->out);
+  int tsv = len >= 4 && strcasecmp(o->out + len - 4, ".tsv") == 0;
+  double bytes = (double)o->size * o->size * (12.0 + (tsv ? 96.0 : 0.0));
+  if (!nl_mem_fits(bytes)) {
+    char b1[32], b2[32];
+    snprintf(m, sizeof m, "--size %ld%s needs %s of memory; this machine has %s", o->size,
+             tsv ? " as a .tsv" : "", nl_format_bytes(b1, bytes), nl_format_bytes(b2, nl_mem_physical()));
+    fail(m);
+  }
 }
 
 static void check_writable(const char *path)
 {
-  char *dir = nl_xstrdup(path), *slash = strrchr(dir, '/');
-  if (slash) *(slash == dir ? slash + 1 : slash) = '\0'; else strcpy(dir, ".");
-  if (access(dir, W_OK) != 0) {
-    char m[1024];
-    snprintf(m, sizeof m, "-o %s: directory '%s' does not exist or is not writable", path, dir);
-    fail(m);
-  }
-  free(dir);
+  nl_error err;
+  if (nl_path_check_writable(path, &err)) fail(err.msg);
+}
+
+/* The lattice coordinate of the finest octave must stay below 2^52: beyond
+ * it doubles have no fractional bits, the noise is 0 or meaningless, and
+ * (before the floors were made safe) the cell index overflowed a long. */
+static void check_lattice(const options *o, const nl_octaves *oct, const char *kind)
+{
+  double c = fmax(fmax(fabs(o->x0), fabs(o->x0 + o->extent)), fmax(fabs(o->y0), fabs(o->y0 + o->extent)));
+  if (strcmp(kind, "noise2") && strcmp(kind, "table")) c = fmax(c, fabs(o->z));   /* 3D bases */
+  double f = 0;
+  for (int l = 0; l < oct->n; l++) f = fmax(f, fabs(oct->freq[l]));
+  if (f * c < 0x1p52) return;
+  char m[600];
+  if (!strcmp(o->noise, "fbm"))
+    snprintf(m, sizeof m, "--lacunarity %g with --octaves %ld: the finest octave's frequency %g "
+             "times the window's largest coordinate %g is %g, beyond 2^52 = 4.5e15 where the "
+             "noise lattice has no fractional positions; use fewer octaves or a smaller lacunarity",
+             o->lacunarity, o->octaves, f, c, f * c);
+  else
+    snprintf(m, sizeof m, "--octaves %ld: the finest octave's frequency %g times the window's "
+             "largest coordinate %g is %g, beyond 2^52 = 4.5e15 where the noise lattice has no "
+             "fractional positions; use fewer octaves or a window nearer the origin",
+             o->octaves, f, c, f * c);
+  fail(m);
 }
 
 static int ends_with(const char *s, const char *suffix)
@@ -187,6 +223,7 @@ static double *evaluate(const options *o, double *lo, double *hi)
   if (!strcmp(o->noise, "fractal") || !strcmp(o->noise, "marble")) oct = nl_octaves_fractal((int)o->octaves);
   if (!strcmp(o->noise, "turbulence")) { oct = nl_octaves_fractal((int)o->octaves); oct.turbulence = 1; }
   if (!strcmp(o->noise, "fbm")) oct = nl_octaves_fbm((int)o->octaves, o->gain, o->lacunarity);
+  check_lattice(o, &oct, kind);
   double *v = nl_xmalloc((size_t)o->size * o->size * sizeof *v);
   double B = nl_octaves_bound(&oct, b.bound);
   if (!strcmp(o->noise, "marble")) { nl_marble_grid(&b, &oct, &win, NL_TWO_PI * o->stripes, o->amplitude, v); *lo = 0; *hi = 1; }
@@ -227,6 +264,19 @@ static void write_image(const options *o, const double *v, double lo, double hi)
   nl_image_free(im);
 }
 
+/* No file is written holding NaN or inf: name the first such pixel. */
+static void check_finite(const options *o, const double *v)
+{
+  size_t n = (size_t)o->size * o->size;
+  for (size_t k = 0; k < n; k++)
+    if (!isfinite(v[k])) {
+      char m[256];
+      snprintf(m, sizeof m, "%s: the noise is not finite (%g) at pixel (%zu, %zu); nothing written",
+               o->out, v[k], k % (size_t)o->size, k / (size_t)o->size);
+      fail(m);
+    }
+}
+
 int main(int argc, char **argv)
 {
   options o;
@@ -234,6 +284,7 @@ int main(int argc, char **argv)
   check_writable(o.out);
   double lo, hi;
   double *v = evaluate(&o, &lo, &hi);
+  check_finite(&o, v);
   if (ends_with(o.out, ".tsv")) write_tsv(&o, v);
   else write_image(&o, v, lo, hi);
   free(v);

@@ -330,6 +330,7 @@ static void run_gmm(const opts *o)
       snprintf(m, sizeof m, "%s: %ld components but only %zu rows", shown(o->files[0]), o->k, n);
       die(o->sub, m);
     }
+    if (nl_gmm_check_size(n, d, (size_t)o->k, go.covariance, &err)) fail_lib(o, o->files[0], &err);
     g = nl_gmm_alloc((size_t)o->k, d, go.covariance);
     if (nl_gmm_fit(g, t->num, n, &go, &err)) fail_lib(o, o->files[0], &err);
     print_fit(g->k, g->loglik, g->aic, g->bic, g->iterations, g->converged);

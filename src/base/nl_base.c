@@ -87,13 +87,21 @@ char *nl_temp_sibling(const char *path)
 nl_status nl_atomic_open(nl_atomic_file *af, const char *path, nl_error *err)
 {
   af->fp = NULL;
+  af->path = af->tmp = NULL;
+  /* "", "dir/", a directory or a parent that is a file: say so, naming the
+   * target, before a temporary file is made. */
+  nl_status c = nl_path_check_writable(path, err);
+  if (c) return c;
   af->path = nl_xstrdup(path);
   af->tmp = nl_temp_sibling(path);
   const char *dot = strrchr(af->tmp, '.');
   int suffix = (dot && strstr(af->tmp, "XXXXXX") < dot) ? (int)strlen(dot) : 0;
   int fd = mkstemps(af->tmp, suffix);
   if (fd < 0) {
-    nl_status s = nl_fail(err, NL_EIO, "%s: cannot create: %s", path, strerror(errno));
+    int e = errno;
+    /* The reason, naming the target rather than the temporary name. */
+    nl_status s = nl_path_check_writable(path, err);
+    if (!s) s = nl_fail(err, NL_EIO, "%s: cannot create: %s", path, strerror(e));
     free(af->path); free(af->tmp);
     af->path = af->tmp = NULL;
     return s;
@@ -102,9 +110,12 @@ nl_status nl_atomic_open(nl_atomic_file *af, const char *path, nl_error *err)
   fchmod(fd, 0644);
   af->fp = fdopen(fd, "w");
   if (!af->fp) {
+    nl_status s = nl_fail(err, NL_EIO, "%s: cannot open: %s", path, strerror(errno));
     close(fd);
     unlink(af->tmp);
-    return nl_fail(err, NL_EIO, "%s: cannot open: %s", path, strerror(errno));
+    free(af->path); free(af->tmp);
+    af->path = af->tmp = NULL;
+    return s;
   }
   return NL_OK;
 }
@@ -137,13 +148,30 @@ void nl_atomic_abort(nl_atomic_file *af)
 
 nl_status nl_mkdir_p(const char *dir, nl_error *err)
 {
+  if (!dir || !*dir) return nl_fail(err, NL_EINVAL, "'': empty directory name");
   char *p = nl_xstrdup(dir);
   for (char *q = p + 1; ; q++) {
     if (*q == '/' || *q == '\0') {
       char c = *q;
       *q = '\0';
       if (mkdir(p, 0755) != 0 && errno != EEXIST) {
-        nl_status s = nl_fail(err, NL_EIO, "%s: cannot create directory: %s", p, strerror(errno));
+        nl_status s;
+        if (errno == ENOTDIR) {
+          /* name the component that is a file */
+          struct stat st;
+          char *q2 = p + 1;
+          for (;; q2++)
+            if (*q2 == '/' || *q2 == '\0') {
+              char c2 = *q2;
+              *q2 = '\0';
+              int file = stat(p, &st) == 0 && !S_ISDIR(st.st_mode);
+              if (file || c2 == '\0') break;
+              *q2 = c2;
+            }
+          s = nl_fail(err, NL_EIO, "%s: cannot create directory: %s is not a directory", dir, p);
+        } else {
+          s = nl_fail(err, NL_EIO, "%s: cannot create directory %s: %s", dir, p, strerror(errno));
+        }
         free(p);
         return s;
       }
@@ -157,6 +185,57 @@ nl_status nl_mkdir_p(const char *dir, nl_error *err)
     s = nl_fail(err, NL_EIO, "%s: not a directory", dir);
   free(p);
   return s;
+}
+
+nl_status nl_path_check_writable(const char *path, nl_error *err)
+{
+  if (!path || !*path) return nl_fail(err, NL_EINVAL, "'': empty file name");
+  size_t n = strlen(path);
+  if (path[n - 1] == '/') return nl_fail(err, NL_EINVAL, "%s: names a directory, not a file", path);
+  const char *slash = strrchr(path, '/');
+  char *dir = slash ? nl_xstrdup(path) : nl_xstrdup(".");
+  if (slash) dir[slash == path ? 1 : (size_t)(slash - path)] = '\0';
+  struct stat st;
+  nl_status s = NL_OK;
+  if (stat(dir, &st) != 0) {
+    if (errno == ENOTDIR)
+      s = nl_fail(err, NL_EIO, "%s: a parent of %s is not a directory", path, dir);
+    else if (errno == ENOENT)
+      s = nl_fail(err, NL_EIO, "%s: directory %s does not exist", path, dir);
+    else
+      s = nl_fail(err, NL_EIO, "%s: parent %s: %s", path, dir, strerror(errno));
+  } else if (!S_ISDIR(st.st_mode)) {
+    s = nl_fail(err, NL_EIO, "%s: parent %s is not a directory", path, dir);
+  } else if (access(dir, W_OK) != 0) {
+    s = nl_fail(err, NL_EIO, "%s: directory %s is not writable: %s", path, dir, strerror(errno));
+  } else if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
+    s = nl_fail(err, NL_EIO, "%s: is a directory", path);
+  }
+  free(dir);
+  return s;
+}
+
+double nl_mem_physical(void)
+{
+  long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || size <= 0) return 0;
+  return (double)pages * (double)size;
+}
+
+int nl_mem_fits(double bytes)
+{
+  double m = nl_mem_physical();
+  return m <= 0 || bytes <= m;
+}
+
+const char *nl_format_bytes(char *buf, double bytes)
+{
+  if (bytes >= 1e12) snprintf(buf, 32, "%.3g TB", bytes / 1e12);
+  else if (bytes >= 1e9) snprintf(buf, 32, "%.3g GB", bytes / 1e9);
+  else if (bytes >= 1e6) snprintf(buf, 32, "%.3g MB", bytes / 1e6);
+  else if (bytes >= 1e3) snprintf(buf, 32, "%.3g kB", bytes / 1e3);
+  else snprintf(buf, 32, "%.0f bytes", bytes);
+  return buf;
 }
 
 double nl_time_now(void)

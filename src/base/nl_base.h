@@ -55,8 +55,26 @@ void nl_atomic_abort(nl_atomic_file *af);
  * the format from it): "dir/.name.XXXXXX.png". Caller frees. */
 char *nl_temp_sibling(const char *path);
 
-/* Creates a directory and its parents (mkdir -p). */
+/* Creates a directory and its parents (mkdir -p). An empty name is an
+ * error ("'': empty directory name"). */
 nl_status nl_mkdir_p(const char *dir, nl_error *err);
+/* Checks that a file can be created at `path`: its parent exists, is a
+ * directory and is writable. Fails with a message naming path and the
+ * reason ("afile/x.png: parent afile is not a directory"). */
+nl_status nl_path_check_writable(const char *path, nl_error *err);
+
+/* ---- memory a request needs ---------------------------------------------
+ *
+ * Places that allocate sizes derived from input (rows of a table, pixels of
+ * an image, a distance matrix) check the size against the machine first
+ * and refuse with a message naming the input, instead of dying in
+ * nl_xmalloc or being killed. */
+/* Physical memory of this machine in bytes (sysconf), or 0 if unknown. */
+double nl_mem_physical(void);
+/* 1 when `bytes` fits in the machine's physical memory (always when unknown). */
+int nl_mem_fits(double bytes);
+/* "160 GB", "894 MB", "512 kB", "12 bytes" (decimal units) into buf[32]; returns buf. */
+const char *nl_format_bytes(char *buf, double bytes);
 /* Joins dir and name with one '/'. Caller frees. */
 char *nl_path_join(const char *dir, const char *name);
 

@@ -9,7 +9,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-static inline long lfloor(double x) { long i = (long)x; return i - (x < (double)i); }
+/* floor as a long, defined for every double (see lfloor in nl_noise.c):
+ * beyond 2^62 the cube index wraps modulo 2^62, NaN and inf map to 0. */
+static inline long lfloor(double x)
+{
+  if (x > -0x1p62 && x < 0x1p62) { long i = (long)x; return i - (x < (double)i); }
+  return isfinite(x) ? (long)fmod(x, 0x1p62) : 0;
+}
 
 /* ---- tables ------------------------------------------------------------ */
 
@@ -188,6 +194,13 @@ void nl_cellular_row(const nl_cellular *c, double x0, double dx, double y, doubl
 {
   if (count == 0) return;
   double xl = x0 + (double)(count - 1) * dx;
+  if (!(fabs(x0) < 0x1p52 && fabs(xl) < 0x1p52)) {   /* no fractional cells: point by point */
+    for (size_t s = 0; s < count; s++) {
+      double p[3] = {x0 + (double)s * dx, y, z};
+      nl_cellular_eval(c, p, n, F + s * (size_t)n);
+    }
+    return;
+  }
   long ifirst = lfloor(fmin(x0, xl)) - 1, ilast = lfloor(fmax(x0, xl)) + 1;
   size_t ncol = (size_t)(ilast - ifirst + 1);
   if (ncol > 2 * count + 8) {   /* sparse row: buckets would cost more */

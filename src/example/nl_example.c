@@ -320,6 +320,16 @@ nl_status nl_example_analyse(const nl_image *im, const nl_example_options *opt,
     if (!flat) nl_example_weights(plane[c], im->width, im->height, p->nbands, p->sigma2, p->w[c]);
     free(plane[c]);
   }
+  /* Finite pixels can still overflow (values near FLT_MAX squared in the
+   * PCA): a result synthesis would reject is an error here. */
+  for (int c = 0; c < p->channels; c++) {
+    int bad = !isfinite(p->mean[c]);
+    for (int k = 0; k < p->channels; k++) bad |= !isfinite(p->matrix[c][k]);
+    for (int k = 0; k < NL_EXAMPLE_HIST; k++) bad |= !isfinite(p->hist[c][k]);
+    for (int k = 0; k < p->nbands; k++) bad |= !isfinite(p->w[c][k]);
+    if (bad)
+      return nl_fail(err, NL_ENUM, "the fitted parameters of channel %d are not finite (pixel values too large?)", c + 1);
+  }
   return NL_OK;
 }
 
@@ -341,6 +351,13 @@ nl_status nl_example_synthesize(const nl_example_params *p, int w, int h, unsign
 {
   if (w < 1 || h < 1 || (double)w * h > 1e9)
     return nl_fail(err, NL_EINVAL, "output size %d x %d out of range", w, h);
+  /* channel planes (double) and the image (float), checked before allocating */
+  double need = (double)w * h * p->channels * (sizeof(double) + sizeof(float));
+  if (!nl_mem_fits(need)) {
+    char b1[32], b2[32];
+    return nl_fail(err, NL_ENOMEM, "output %d x %d with %d channels needs %s; this machine has %s",
+                   w, h, p->channels, nl_format_bytes(b1, need), nl_format_bytes(b2, nl_mem_physical()));
+  }
   int solid = opt && opt->solid;
   nl_wavelet_tile *t = nl_wavelet_tile_alloc(solid ? 3 : 2, solid ? NL_EXAMPLE_TILE3 : p->tile);
   if (!t) return nl_fail(err, NL_EINVAL, "tile period %d not even and >= 8", p->tile);

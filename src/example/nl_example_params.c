@@ -30,8 +30,31 @@ static void put_values(FILE *fp, const char *key, const double *v, int n)
   fputc('\n', fp);
 }
 
+/* The first value of p that is NaN or infinite, named, or NULL. */
+static const char *non_finite(const nl_example_params *p, char *buf, size_t len)
+{
+  int C = p->channels;
+  if (!isfinite(p->sigma2)) { snprintf(buf, len, "sigma2"); return buf; }
+  for (int c = 0; c < C; c++) {
+    if (!isfinite(p->mean[c])) { snprintf(buf, len, "mean %d", c + 1); return buf; }
+    for (int k = 0; k < C; k++)
+      if (!isfinite(p->matrix[c][k])) { snprintf(buf, len, "matrix %d,%d", c + 1, k + 1); return buf; }
+    for (int k = 0; k < NL_EXAMPLE_HIST; k++)
+      if (!isfinite(p->hist[c][k])) { snprintf(buf, len, "hist%d %d", c, k + 1); return buf; }
+    for (int k = 0; k < p->nbands && k < NL_WAVELET_MAX_BANDS; k++)
+      if (!isfinite(p->w[c][k])) { snprintf(buf, len, "weights%d %d", c, k + 1); return buf; }
+  }
+  return NULL;
+}
+
 nl_status nl_example_params_save(const nl_example_params *p, const char *path, nl_error *err)
 {
+  /* A file the loader would reject is not written (nothing written). */
+  char what[64];
+  if (p->channels < 1 || p->channels > 3)
+    return nl_fail(err, NL_EINVAL, "%s: %d channels; parameters have 1 or 3", path, p->channels);
+  if (non_finite(p, what, sizeof what))
+    return nl_fail(err, NL_EINVAL, "%s: parameter %s is not finite; nothing written", path, what);
   nl_atomic_file af;
   nl_status st = nl_atomic_open(&af, path, err);
   if (st) return st;
@@ -69,6 +92,17 @@ typedef struct {
 } field;
 
 /* Splits one line into a key and numbers; NL_EFORMAT names the bad token. */
+/* s with non-printable bytes as '?', cut with "..." to fit buf: messages
+ * stay one readable line whatever a file holds. */
+static const char *printable(const char *s, char *buf, size_t len)
+{
+  size_t k = 0;
+  for (; s[k] && k + 4 < len; k++) buf[k] = isprint((unsigned char)s[k]) ? s[k] : '?';
+  if (s[k]) { memcpy(buf + k, "...", 3); k += 3; }
+  buf[k] = '\0';
+  return buf;
+}
+
 static nl_status parse_line(const char *path, int lineno, char *s, field *f, nl_error *err)
 {
   char *tok = strtok(s, " \t\r\n");
@@ -81,9 +115,11 @@ static nl_status parse_line(const char *path, int lineno, char *s, field *f, nl_
     char *end;
     errno = 0;
     double v = strtod(tok, &end);
-    if (*end || end == tok || errno == ERANGE || !isfinite(v))
+    if (*end || end == tok || errno == ERANGE || !isfinite(v)) {
+      char t1[48], t2[48];
       return nl_fail(err, NL_EFORMAT, "%s:%d: '%s' of '%s' is not a finite number", path, lineno,
-                     tok, f->key);
+                     printable(tok, t1, sizeof t1), printable(f->key, t2, sizeof t2));
+    }
     f->v[f->n++] = v;
   }
   return NL_OK;
@@ -94,17 +130,35 @@ static nl_status read_fields(const char *path, field *f, int *nf, nl_error *err)
   FILE *fp = fopen(path, "r");
   if (!fp) return nl_fail(err, NL_EIO, "%s: cannot open: %s", path, strerror(errno));
   char buf[4096];
-  int lineno = 0;
+  int lineno = 0, c = 0;
+  long total = 0;
   nl_status st = NL_OK;
   *nf = 0;
-  while (!st && fgets(buf, sizeof buf, fp)) {
+  /* Lines are read whole and bounded: a longer line, a NUL byte or a file
+   * beyond 1 MiB (/dev/zero, an endless stream) is an error, not a line
+   * silently cut in two or a read that never ends. */
+  while (!st && c != EOF) {
+    size_t n = 0;
+    int nul = 0;
+    while ((c = getc(fp)) != EOF && c != '\n') {
+      if (++total > (1L << 20)) break;
+      if (c == '\0') { nul = 1; break; }
+      if (n + 1 >= sizeof buf) break;
+      buf[n++] = (char)c;
+    }
+    if (c == EOF && n == 0) break;
     lineno++;
+    if (total > (1L << 20)) { st = nl_fail(err, NL_EFORMAT, "%s: longer than 1 MiB; not a parameter file", path); break; }
+    if (nul) { st = nl_fail(err, NL_EFORMAT, "%s:%d: NUL byte", path, lineno); break; }
+    if (c != EOF && c != '\n') { st = nl_fail(err, NL_EFORMAT, "%s:%d: line longer than %zu bytes", path, lineno, sizeof buf - 1); break; }
+    buf[n] = '\0';
     char *s = buf;
     while (isspace((unsigned char)*s)) s++;
     if (!*s || *s == '#') continue;
     if (*nf == MAX_FIELDS) st = nl_fail(err, NL_EFORMAT, "%s:%d: too many lines", path, lineno);
     else st = parse_line(path, lineno, s, &f[(*nf)++], err);
   }
+  if (!st && ferror(fp)) st = nl_fail(err, NL_EIO, "%s: read error: %s", path, strerror(errno));
   fclose(fp);
   return st;
 }

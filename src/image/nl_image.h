@@ -31,7 +31,17 @@ void nl_image_free(nl_image *im);
 static inline float *nl_image_pixel(const nl_image *im, int x, int y)
 { return im->data + ((size_t)y * im->width + x) * im->channels; }
 
+/* Reading refuses, with a message naming the file: NaN or infinite pixel
+ * values (the first one named), images beyond NL_IMAGE_MAX_PIXELS or the
+ * machine's memory, and EXR headers whose attributes declare more bytes
+ * than the file holds (checked before OpenEXR allocates them). Codecs'
+ * own stderr lines are muted: the message is the one line. */
+#define NL_IMAGE_MAX_PIXELS (1L << 28)
 nl_status nl_image_read(const char *path, nl_image **out, nl_error *err);
+/* Writing embeds no time: TIFF DateTime / EXR capDate are left out, so the
+ * same image gives the same bytes; with SOURCE_DATE_EPOCH set (seconds
+ * since 1970) that time is written instead. The parent directory of path
+ * is checked first ("x/y.png: parent x is not a directory"). */
 nl_status nl_image_write(const nl_image *im, const char *path, int bits, nl_error *err);
 
 /* A grey image from a w*h array of doubles, mapped linearly so that lo -> 0

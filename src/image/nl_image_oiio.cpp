@@ -3,9 +3,14 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <ctime>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <memory>
 #include <string>
@@ -25,32 +30,155 @@ static nl_status set_err(nl_error *err, nl_status s, const char *path, const std
   return nl_fail(err, s, "%s: %s", path, w.empty() ? "unknown OpenImageIO error" : w.c_str());
 }
 
+// libpng (and other codecs) print their own "libpng error: ..." line on
+// stderr before OIIO reports the same reason to us; our contract is one
+// line, so stderr is muted while a file is opened and read (noiselab reads
+// images on one thread).
+namespace {
+struct mute_stderr {
+  int saved = -1, devnull = -1;
+  mute_stderr()
+  {
+    std::fflush(stderr);
+    saved = dup(2);
+    devnull = open("/dev/null", O_WRONLY);
+    if (saved >= 0 && devnull >= 0) dup2(devnull, 2);
+  }
+  ~mute_stderr()
+  {
+    if (saved >= 0 && devnull >= 0) dup2(saved, 2);
+    if (saved >= 0) close(saved);
+    if (devnull >= 0) close(devnull);
+  }
+};
+}
+
+// A tiny hostile file must not make a codec allocate a gigabyte: OpenEXR
+// allocates each header attribute at its declared size before it finds the
+// file too short (a 284-byte file declaring an 894 MB attribute took 20 s
+// and 1 GB). We walk an EXR header ourselves first: every attribute must
+// fit in what is left of the file, and the data window within the pixel
+// cap. Anything else is left to OpenEXR's own checks.
+static bool rd32(FILE *f, int32_t *v)
+{
+  unsigned char b[4];
+  if (std::fread(b, 1, 4, f) != 4) return false;
+  *v = (int32_t)((uint32_t)b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16 | (uint32_t)b[3] << 24);
+  return true;
+}
+
+static bool rdname(FILE *f, char *buf, size_t max, size_t *len)
+{
+  size_t n = 0;
+  for (;;) {
+    int c = std::fgetc(f);
+    if (c == EOF) return false;
+    if (c == 0) break;
+    if (n + 1 >= max) return false;
+    buf[n++] = (char)c;
+  }
+  buf[n] = '\0';
+  *len = n;
+  return true;
+}
+
+static nl_status check_exr_header(const char *path, FILE *f, long long fsize, nl_error *err)
+{
+  int32_t magic, version;
+  if (!rd32(f, &magic) || magic != 20000630) return NL_OK;   // not EXR: OIIO decides
+  if (!rd32(f, &version)) return NL_OK;
+  bool longnames = version & 0x400, multipart = version & 0x1000;
+  size_t maxname = longnames ? 256 : 32;
+  char name[300], type[300];
+  for (int part = 0; ; part++) {
+    for (int attr = 0; ; attr++) {
+      size_t nlen;
+      long long at = std::ftell(f);
+      if (!rdname(f, name, maxname, &nlen))
+        return nl_fail(err, NL_EFORMAT, "%s: EXR header: attribute name at byte %lld is unterminated or too long", path, at);
+      if (nlen == 0) {
+        if (attr == 0 && (part > 0 || !multipart)) {
+          if (part == 0) return nl_fail(err, NL_EFORMAT, "%s: EXR header has no attributes", path);
+          return NL_OK;   // the empty header ends a multi-part list
+        }
+        break;            // end of this header
+      }
+      size_t tlen;
+      int32_t size;
+      if (!rdname(f, type, maxname, &tlen) || !rd32(f, &size))
+        return nl_fail(err, NL_EFORMAT, "%s: EXR header: attribute '%s' is truncated", path, name);
+      long long left = fsize - (long long)std::ftell(f);
+      if (size < 0 || (long long)size > left)
+        return nl_fail(err, NL_EFORMAT, "%s: EXR header: attribute '%s' declares %lld bytes but the file has %lld left (%lld bytes in all)",
+                       path, name, (long long)size, left, fsize);
+      if (!std::strcmp(name, "dataWindow") && !std::strcmp(type, "box2i") && size == 16) {
+        int32_t b[4];
+        for (int k = 0; k < 4; k++) if (!rd32(f, &b[k])) return NL_OK;
+        double w = (double)b[2] - b[0] + 1, h = (double)b[3] - b[1] + 1;
+        if (w < 1 || h < 1 || w * h > NL_IMAGE_MAX_PIXELS)
+          return nl_fail(err, NL_EFORMAT, "%s: EXR data window %.0f x %.0f is empty or beyond %.0f pixels",
+                         path, w, h, (double)NL_IMAGE_MAX_PIXELS);
+      } else if (std::fseek(f, size, SEEK_CUR) != 0) {
+        return NL_OK;
+      }
+    }
+    if (!multipart) return NL_OK;
+  }
+}
+
+static nl_status precheck(const char *path, nl_error *err)
+{
+  struct stat st;
+  if (stat(path, &st) != 0) return nl_fail(err, NL_EIO, "%s: cannot open: %s", path, std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) return nl_fail(err, NL_EIO, "%s: is a directory", path);
+  if (!S_ISREG(st.st_mode)) return nl_fail(err, NL_EIO, "%s: not a regular file", path);
+  FILE *f = std::fopen(path, "rb");
+  if (!f) return nl_fail(err, NL_EIO, "%s: cannot open: %s", path, std::strerror(errno));
+  nl_status s = check_exr_header(path, f, (long long)st.st_size, err);
+  std::fclose(f);
+  return s;
+}
+
 extern "C" nl_status nl_image_read(const char *path, nl_image **out, nl_error *err)
 {
   *out = nullptr;
+  nl_status ps = precheck(path, err);
+  if (ps) return ps;
   // Pixels are kept unassociated (straight) alpha: a transparent pixel keeps
   // its colour, which control patterns and round trips rely on.
   ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = ImageInput::open(path, &config);
+  std::unique_ptr<ImageInput> in;
+  {
+    mute_stderr m;
+    in = ImageInput::open(path, &config);
+  }
   if (!in) return set_err(err, NL_EIO, path, OIIO::geterror());
   const ImageSpec &spec = in->spec();
   if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)
     return set_err(err, NL_EFORMAT, path, "image has no pixels");
   int ch = spec.nchannels > 4 ? 4 : spec.nchannels;
+  // Refuse sizes no exemplar or pattern needs before allocating them.
+  double npixd = (double)spec.width * spec.height;
+  double bytes = npixd * (ch + (ch == 2 ? 4 : ch)) * sizeof(float);
+  if (npixd * spec.depth > NL_IMAGE_MAX_PIXELS)
+    return nl_fail(err, NL_EFORMAT, "%s: %d x %d pixels%s is beyond the %.0f-pixel limit",
+                   path, spec.width, spec.height, spec.depth > 1 ? " (and depth)" : "",
+                   (double)NL_IMAGE_MAX_PIXELS);
+  if (!nl_mem_fits(bytes)) {
+    char b1[32], b2[32];
+    return nl_fail(err, NL_ENOMEM, "%s: %d x %d x %d pixels need %s to read; this machine has %s",
+                   path, spec.width, spec.height, ch, nl_format_bytes(b1, bytes),
+                   nl_format_bytes(b2, nl_mem_physical()));
+  }
   nl_image *im = nl_image_alloc(spec.width, spec.height, ch == 2 ? 4 : ch);
   // Grey+alpha (2 channels) is read as grey and alpha, stored as RGBA.
   std::unique_ptr<float[]> buf(new float[(size_t)spec.width * spec.height * ch]);
-  // libpng prints its own "libpng error: ..." line on stderr before OIIO
-  // reports the same reason to us; our contract is one line, so stderr is
-  // muted for the duration of the read (noiselab reads images on one thread).
-  fflush(stderr);
-  int saved = dup(2), devnull = open("/dev/null", O_WRONLY);
-  if (saved >= 0 && devnull >= 0) dup2(devnull, 2);
-  bool ok = in->read_image(0, 0, 0, ch, TypeDesc::FLOAT, buf.get());
-  if (saved >= 0 && devnull >= 0) dup2(saved, 2);
-  if (saved >= 0) close(saved);
-  if (devnull >= 0) close(devnull);
+  bool ok;
+  {
+    mute_stderr m;
+    ok = in->read_image(0, 0, 0, ch, TypeDesc::FLOAT, buf.get());
+  }
   if (!ok) {
     std::string why = in->geterror();
     nl_image_free(im);
@@ -63,10 +191,16 @@ extern "C" nl_status nl_image_read(const char *path, nl_image **out, nl_error *e
     if (ch == 2) { d[0] = d[1] = d[2] = s[0]; d[3] = s[1]; }
     else std::memcpy(d, s, ch * sizeof(float));
   }
-  for (size_t i = 0; i < npix * im->channels; i++)
-    if (!(im->data[i] == im->data[i])) {
+  // NaN and infinities are no pixel values (an all-inf EXR once became a
+  // params file holding inf and -nan): name the first one.
+  for (size_t i = 0; i < npix * ch; i++)
+    if (!std::isfinite(buf[i])) {
+      size_t p = i / ch;
+      nl_status s = nl_fail(err, NL_EFORMAT, "%s: pixel (%zu, %zu) channel %zu is %s; pixel values must be finite",
+                            path, p % (size_t)spec.width, p / (size_t)spec.width, i % ch + 1,
+                            std::isnan(buf[i]) ? "NaN" : buf[i] > 0 ? "inf" : "-inf");
       nl_image_free(im);
-      return set_err(err, NL_EFORMAT, path, "image holds NaN pixel values");
+      return s;
     }
   *out = im;
   return NL_OK;
@@ -81,12 +215,33 @@ static TypeDesc type_for(const std::string &path, int bits)
   return bits == 16 ? TypeDesc::UINT16 : TypeDesc::UINT8;
 }
 
+static nl_status nl_image_timestamp(const char *path, std::string *out, nl_error *err)
+{
+  out->clear();
+  const char *e = std::getenv("SOURCE_DATE_EPOCH");
+  if (!e || !*e) return NL_OK;
+  char *end;
+  errno = 0;
+  long long t = std::strtoll(e, &end, 10);
+  if (*end || errno || t < 0 || t > 253402300799LL)
+    return nl_fail(err, NL_EINVAL, "%s: SOURCE_DATE_EPOCH '%s' is not a number of seconds since 1970", path, e);
+  time_t tt = (time_t)t;
+  struct tm tm;
+  gmtime_r(&tt, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y:%m:%d %H:%M:%S", &tm);
+  *out = buf;
+  return NL_OK;
+}
+
 extern "C" nl_status nl_image_write(const nl_image *im, const char *path, int bits, nl_error *err)
 {
   if (bits != 8 && bits != 16 && bits != 32)
     return nl_fail(err, NL_EINVAL, "%s: bit depth %d is not 8, 16 or 32", path, bits);
   if (!std::strrchr(path, '.'))
     return nl_fail(err, NL_EINVAL, "%s: no file extension to choose a format from", path);
+  nl_status pc = nl_path_check_writable(path, err);
+  if (pc) return pc;
   char *tmp = nl_temp_sibling(path);
   // mkstemps is not needed: the XXXXXX is made unique from the pid below.
   std::string t(tmp);
@@ -99,13 +254,31 @@ extern "C" nl_status nl_image_write(const nl_image *im, const char *path, int bi
   if (!out) return set_err(err, NL_EIO, path, OIIO::geterror());
   ImageSpec spec(im->width, im->height, im->channels, type_for(path, bits));
   if (im->channels == 4) spec.attribute("oiio:UnassociatedAlpha", 1);
+  // Same input, same bytes: TIFF and EXR writers stamp the current time
+  // (DateTime, EXR capDate) unless told otherwise; an empty DateTime writes
+  // none. SOURCE_DATE_EPOCH (reproducible-builds.org) gives a fixed one.
+  std::string when;
+  nl_status ws = nl_image_timestamp(path, &when, err);
+  if (ws) return ws;
+  spec.attribute("DateTime", when);
   // Integer formats clamp to [0, 1] on conversion from float.
-  if (!out->open(t, spec)) { std::string why = out->geterror(); std::remove(t.c_str()); return set_err(err, NL_EIO, path, why); }
+  if (!out->open(t, spec)) {
+    std::string why = out->geterror();
+    std::remove(t.c_str());
+    for (size_t at; (at = why.find(t)) != std::string::npos;) why.replace(at, t.size(), path);
+    return set_err(err, NL_EIO, path, why);
+  }
   bool ok = out->write_image(TypeDesc::FLOAT, im->data);
   std::string why = ok ? "" : out->geterror();
   ok = out->close() && ok;
   if (ok && std::rename(t.c_str(), path) != 0) { ok = false; why = std::strerror(errno); }
-  if (!ok) { std::remove(t.c_str()); return set_err(err, NL_EIO, path, why.empty() ? out->geterror() : why); }
+  if (!ok) {
+    std::remove(t.c_str());
+    if (why.empty()) why = out->geterror();
+    // Name the target, not our temporary name.
+    for (size_t at; (at = why.find(t)) != std::string::npos;) why.replace(at, t.size(), path);
+    return set_err(err, NL_EIO, path, why);
+  }
   return NL_OK;
 }
 

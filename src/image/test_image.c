@@ -1,3 +1,4 @@
+#define _GNU_SOURCE   /* memmem */
 #include "image/nl_image.h"
 #include "nl_test.h"
 
@@ -127,6 +128,111 @@ NL_TEST(downsample_box_filter_and_wide_montage)
   nl_image *m = nl_montage(ims, NULL, 5, 5, NULL);
   NL_CHECK(m->width <= NL_MONTAGE_MAX_WIDTH && m->width == 8 + 5 * (300 + 8));
   nl_image_free(a); nl_image_free(d); nl_image_free(big); nl_image_free(m);
+}
+
+static long file_bytes(const char *path, unsigned char *buf, size_t cap)
+{
+  FILE *f = fopen(path, "rb");
+  if (!f) return -1;
+  size_t n = fread(buf, 1, cap, f);
+  fclose(f);
+  return (long)n;
+}
+
+/* Same image, same bytes: no timestamp in TIFF or EXR (issue 12.4). */
+NL_TEST(same_image_same_bytes)
+{
+  const char *names[][2] = {{"s1.png", "s2.png"}, {"s1.tif", "s2.tif"}, {"s1.exr", "s2.exr"}};
+  static unsigned char a[65536], b[65536];
+  nl_image *im = ramp(32, 16, 3);
+  unsetenv("SOURCE_DATE_EPOCH");
+  for (int k = 0; k < 3; k++) {
+    char *p1 = nl_path_join(dir, names[k][0]), *p2 = nl_path_join(dir, names[k][1]);
+    nl_error err;
+    NL_CHECK(nl_image_write(im, p1, 16, &err) == NL_OK);
+    sleep(1);   /* a timestamp would now differ */
+    NL_CHECK(nl_image_write(im, p2, 16, &err) == NL_OK);
+    long n1 = file_bytes(p1, a, sizeof a), n2 = file_bytes(p2, b, sizeof b);
+    NL_CHECK(n1 > 0 && n1 == n2 && memcmp(a, b, (size_t)n1) == 0);
+    free(p1); free(p2);
+  }
+  /* SOURCE_DATE_EPOCH gives a fixed time; a malformed one is an error. */
+  char *p = nl_path_join(dir, "epoch.tif");
+  nl_error err;
+  setenv("SOURCE_DATE_EPOCH", "0", 1);
+  NL_CHECK(nl_image_write(im, p, 8, &err) == NL_OK);
+  long n = file_bytes(p, a, sizeof a);
+  NL_CHECK(n > 0 && memmem(a, (size_t)n, "1970:01:01 00:00:00", 19) != NULL);
+  setenv("SOURCE_DATE_EPOCH", "yesterday", 1);
+  NL_CHECK(nl_image_write(im, p, 8, &err) == NL_EINVAL && strstr(err.msg, "SOURCE_DATE_EPOCH"));
+  unsetenv("SOURCE_DATE_EPOCH");
+  nl_image_free(im); free(p);
+}
+
+/* Infinities are rejected like NaN, naming the first bad pixel (13.6). */
+NL_TEST(non_finite_pixels_rejected)
+{
+  nl_image *im = ramp(8, 4, 3), *back = NULL;
+  nl_image_pixel(im, 5, 2)[1] = INFINITY;
+  nl_image_pixel(im, 6, 3)[0] = NAN;
+  char *p = nl_path_join(dir, "inf.exr");
+  nl_error err;
+  NL_CHECK(nl_image_write(im, p, 32, &err) == NL_OK);
+  NL_CHECK(nl_image_read(p, &back, &err) == NL_EFORMAT && back == NULL);
+  NL_CHECK(strstr(err.msg, "pixel (5, 2) channel 2 is inf") != NULL);
+  if (!strstr(err.msg, "pixel (5, 2)")) fprintf(stderr, "  %s\n", err.msg);
+  nl_image_free(im); free(p);
+}
+
+/* A few hundred bytes declaring an 894 MB header attribute: refused before
+ * OpenEXR allocates it, quickly (13.8). */
+NL_TEST(hostile_exr_header_refused_quickly)
+{
+  unsigned char h[278] = {0x76, 0x2f, 0x31, 0x01, 0x02, 0, 0, 0};
+  memcpy(h + 8, "channels\0chlist\0", 16);
+  h[24] = 0x80; h[25] = 0x6b; h[26] = 0x49; h[27] = 0x35;   /* 894,004,096 */
+  char *p = nl_path_join(dir, "hostile.exr");
+  FILE *f = fopen(p, "wb");
+  fwrite(h, 1, sizeof h, f);
+  fclose(f);
+  nl_image *im = NULL;
+  nl_error err;
+  double t0 = nl_time_now();
+  NL_CHECK(nl_image_read(p, &im, &err) == NL_EFORMAT && im == NULL);
+  NL_CHECK(nl_time_now() - t0 < 2.0);
+  NL_CHECK(strstr(err.msg, "attribute 'channels' declares 894004096 bytes") != NULL);
+  NL_CHECK(strncmp(err.msg, p, strlen(p)) == 0 && !strchr(err.msg, '\n'));
+  /* A data window beyond the pixel cap: refused from the header too. */
+  nl_image *ok = ramp(4, 4, 1);
+  NL_CHECK(nl_image_write(ok, p, 32, &err) == NL_OK);
+  static unsigned char buf[8192];
+  long n = file_bytes(p, buf, sizeof buf);
+  unsigned char *dw = memmem(buf, (size_t)n, "dataWindow\0box2i\0", 17);
+  NL_CHECK(dw != NULL);
+  if (dw) {
+    unsigned char *xmax = dw + 17 + 4 + 8;       /* size, then xmin ymin xmax ymax */
+    xmax[0] = 0xff; xmax[1] = 0xff; xmax[2] = 0xff; xmax[3] = 0x3f;   /* 2^30 - 1 */
+    f = fopen(p, "wb");
+    fwrite(buf, 1, (size_t)n, f);
+    fclose(f);
+    NL_CHECK(nl_image_read(p, &im, &err) == NL_EFORMAT && strstr(err.msg, "data window") != NULL);
+  }
+  nl_image_free(ok); free(p);
+}
+
+NL_TEST(write_names_the_parent_problem)
+{
+  nl_image *a = ramp(4, 4, 1);
+  char *file = nl_path_join(dir, "afile"), *under = nl_path_join(dir, "afile/x.png");
+  FILE *f = fopen(file, "w");
+  fclose(f);
+  nl_error err;
+  NL_CHECK(nl_image_write(a, under, 8, &err) == NL_EIO);
+  char want[600];
+  snprintf(want, sizeof want, "%s: parent %s is not a directory", under, file);
+  NL_CHECK(strcmp(err.msg, want) == 0);
+  if (strcmp(err.msg, want)) fprintf(stderr, "  %s\n", err.msg);
+  nl_image_free(a); free(file); free(under);
 }
 
 int main(void)

@@ -11,8 +11,31 @@
 static inline double fade(double t) { return t * t * t * (t * (t * 6 - 15) + 10); }
 
 /* floor() is a libm call without SSE4.1; the x86-64 baseline has only a
- * truncating conversion, so correct it for negative non-integers. */
-static inline long lfloor(double x) { long i = (long)x; return i - (x < (double)i); }
+ * truncating conversion, so correct it for negative non-integers.
+ * Safe for every double: a long holds floor(x) only for |x| < 2^63, so
+ * beyond 2^62 the cell wraps modulo 2^62 (every such double is an integer
+ * and its fraction is 0: deterministic, no undefined conversion), and NaN
+ * or an infinity maps to cell 0 (lfrac then gives NaN, so the output says
+ * it). Callers that sample rows keep to |x| < 2^52 (row_columns). */
+#define NL_LATTICE_WRAP 0x1p62
+static inline long lfloor(double x)
+{
+  if (x > -NL_LATTICE_WRAP && x < NL_LATTICE_WRAP) { long i = (long)x; return i - (x < (double)i); }
+  if (!isfinite(x)) return 0;
+  return (long)fmod(x, NL_LATTICE_WRAP);
+}
+
+/* The fraction x - floor(x) in [0, 1) for the cell i = lfloor(x): exact for
+ * |x| < 2^62, 0 beyond (x is an integer there), NaN for NaN and inf. */
+static inline double lfrac(double x, long i)
+{
+  double f = x - (double)i;
+  return f >= 0 && f < 1 ? f : isfinite(x) ? 0.0 : NAN;
+}
+
+/* Row sampling indexes collapsed columns by cell: only where the lattice
+ * coordinate is below 2^52 (beyond, doubles have no fractional bits). */
+#define NL_LATTICE_EXACT 0x1p52
 
 static inline long lmod(long a, long m) { long r = a % m; return r < 0 ? r + m : r; }
 
@@ -90,10 +113,10 @@ static inline void column2(const nl_grad2 *t, long i, long j, double fy, double 
 double nl_noise2(const nl_grad2 *t, double x, double y)
 {
   long i = lfloor(x), j = lfloor(y);
-  double fy = y - (double)j, v = fade(fy), g0, a0, g1, a1;
+  double fy = lfrac(y, j), v = fade(fy), g0, a0, g1, a1;
   column2(t, i, j, fy, v, &g0, &a0);
   column2(t, i + 1, j, fy, v, &g1, &a1);
-  return blend(x - (double)i, g0, a0, g1, a1);
+  return blend(lfrac(x, i), g0, a0, g1, a1);
 }
 
 /* The sample loop shared by both noises once columns are collapsed. */
@@ -104,7 +127,7 @@ static void row_from_columns(const double *gx, const double *a, long ifirst,
     double x = x0 + (double)k * dx;
     long i = lfloor(x);
     size_t c = (size_t)(i - ifirst);
-    out[k] = blend(x - (double)i, gx[c], a[c], gx[c + 1], a[c + 1]);
+    out[k] = blend(lfrac(x, i), gx[c], a[c], gx[c + 1], a[c + 1]);
   }
 }
 
@@ -113,6 +136,7 @@ static void row_from_columns(const double *gx, const double *a, long ifirst,
 static size_t row_columns(double x0, double dx, size_t n, long *ifirst)
 {
   double xl = x0 + (double)(n - 1) * dx;
+  if (!(fabs(x0) < NL_LATTICE_EXACT && fabs(xl) < NL_LATTICE_EXACT)) return 0;
   long a = lfloor(dx >= 0 ? x0 : xl), b = lfloor(dx >= 0 ? xl : x0);
   *ifirst = a;
   size_t ncol = (size_t)(b - a) + 2;
@@ -134,7 +158,7 @@ void nl_noise2_row(const nl_grad2 *t, double x0, double dx, double y, size_t n, 
   double *gx = ncol <= NL_STACK_COLS ? sgx : nl_xmalloc(ncol * sizeof *gx);
   double *a = ncol <= NL_STACK_COLS ? sa : nl_xmalloc(ncol * sizeof *a);
   long j = lfloor(y);
-  double fy = y - (double)j, v = fade(fy);
+  double fy = lfrac(y, j), v = fade(fy);
   for (size_t c = 0; c < ncol; c++) column2(t, ifirst + (long)c, j, fy, v, &gx[c], &a[c]);
   row_from_columns(gx, a, ifirst, x0, dx, n, out);
   if (gx != sgx) { free(gx); free(a); }
@@ -201,10 +225,10 @@ static inline void column3(const nl_perm3 *p, long i, long j, long k, double fy,
 double nl_noise3(const nl_perm3 *p, double x, double y, double z)
 {
   long i = lfloor(x), j = lfloor(y), k = lfloor(z);
-  double fy = y - (double)j, fz = z - (double)k, v = fade(fy), w = fade(fz), g0, a0, g1, a1;
+  double fy = lfrac(y, j), fz = lfrac(z, k), v = fade(fy), w = fade(fz), g0, a0, g1, a1;
   column3(p, i, j, k, fy, fz, v, w, &g0, &a0);
   column3(p, i + 1, j, k, fy, fz, v, w, &g1, &a1);
-  return blend(x - (double)i, g0, a0, g1, a1);
+  return blend(lfrac(x, i), g0, a0, g1, a1);
 }
 
 void nl_noise3_row(const nl_perm3 *p, double x0, double dx, double y, double z,
@@ -221,7 +245,7 @@ void nl_noise3_row(const nl_perm3 *p, double x0, double dx, double y, double z,
   double *gx = ncol <= NL_STACK_COLS ? sgx : nl_xmalloc(ncol * sizeof *gx);
   double *a = ncol <= NL_STACK_COLS ? sa : nl_xmalloc(ncol * sizeof *a);
   long j = lfloor(y), k = lfloor(z);
-  double fy = y - (double)j, fz = z - (double)k, v = fade(fy), w = fade(fz);
+  double fy = lfrac(y, j), fz = lfrac(z, k), v = fade(fy), w = fade(fz);
   for (size_t c = 0; c < ncol; c++) column3(p, ifirst + (long)c, j, k, fy, fz, v, w, &gx[c], &a[c]);
   row_from_columns(gx, a, ifirst, x0, dx, n, out);
   if (gx != sgx) { free(gx); free(a); }

@@ -213,10 +213,17 @@ nl_status nl_linkage(const double *x, size_t n, size_t d, nl_linkage_method meth
   if (method == NL_LINKAGE_SINGLE) {
     linkage_single(x, n, d, Z);
   } else {
+    /* Checked before trying: malloc may grant what the machine cannot hold
+     * (overcommit), and the O(n^2) fill would run for minutes first. */
+    double need = (double)n * (double)(n - 1) / 2 * sizeof(double);
+    char b1[32], b2[32];
+    if (!nl_mem_fits(need))
+      return nl_fail(err, NL_ENOMEM, "%zu rows need %s for the distance matrix; this machine has %s",
+                     n, nl_format_bytes(b1, need), nl_format_bytes(b2, nl_mem_physical()));
     double *D = condensed_distances(x, n, d);
     if (!D)
-      return nl_fail(err, NL_ENOMEM, "%zu points need %.0f MB for the distance matrix",
-                     n, (double)n * (double)(n - 1) / 2 * 8 / 1e6);
+      return nl_fail(err, NL_ENOMEM, "%zu rows need %s for the distance matrix; allocating it failed",
+                     n, nl_format_bytes(b1, need));
     linkage_nn_chain(D, n, method, Z);
     free(D);
   }

@@ -52,6 +52,24 @@ nl_gmm *nl_gmm_alloc(size_t k, size_t d, nl_gmm_covariance covariance)
   return g;
 }
 
+double nl_gmm_bytes(size_t n, size_t d, size_t k, nl_gmm_covariance covariance)
+{
+  double N = (double)n, D = (double)d, K = (double)k;
+  double cs = covariance == NL_GMM_FULL ? D * D : D;
+  double model = K * (1 + D + 3 * cs);
+  return sizeof(double) * (2 * N * K + N + 2 * model + BLOCK * (2 * D + K)) + sizeof(int) * N;
+}
+
+nl_status nl_gmm_check_size(size_t n, size_t d, size_t k, nl_gmm_covariance covariance,
+                            nl_error *err)
+{
+  double need = nl_gmm_bytes(n, d, k, covariance);
+  if (nl_mem_fits(need)) return NL_OK;
+  char b1[32], b2[32];
+  return nl_fail(err, NL_ENOMEM, "%zu rows of %zu columns with %zu components need %s; this machine has %s",
+                 n, d, k, nl_format_bytes(b1, need), nl_format_bytes(b2, nl_mem_physical()));
+}
+
 void nl_gmm_free(nl_gmm *g)
 {
   if (!g) return;
@@ -338,6 +356,8 @@ static nl_status check_fit_args(const nl_gmm *g, const double *x, size_t n,
   if (n < 2) return nl_fail(err, NL_EINVAL, "a mixture needs at least 2 rows, got %zu", n);
   if (g->k < 1 || g->k > n)
     return nl_fail(err, NL_EINVAL, "%zu components for %zu rows: need 1 <= k <= rows", g->k, n);
+  nl_status s = nl_gmm_check_size(n, g->d, g->k, g->covariance, err);
+  if (s) return s;
   if (o->covariance != g->covariance)
     return nl_fail(err, NL_EINVAL, "options ask for another covariance type than the model has");
   if (!(o->tol >= 0.0) || !(o->reg_covar >= 0.0) || o->max_iter < 1)
@@ -430,6 +450,8 @@ nl_status nl_gmm_select_aic(const double *x, size_t n, size_t d, size_t k0, doub
     return nl_fail(err, NL_EINVAL, "start K0 = %zu must be in 1..%zu rows (and <= k_max %zu)",
                    k0, n, k_max);
   if (!(threshold >= 0.0)) return nl_fail(err, NL_EINVAL, "AIC threshold must be >= 0");
+  nl_status sz = nl_gmm_check_size(n, d, k_max < n ? k_max : n, o->covariance, err);
+  if (sz) return sz;
   nl_gmm_options ok = *o;
   ok.init_labels = NULL;   /* labels are for one k; each fit seeds k-means */
   for (size_t k = k0; k <= k_max && k <= n; k++) {

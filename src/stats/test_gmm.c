@@ -130,4 +130,13 @@ NL_TEST(constant_column_stays_finite_and_bad_input_fails)
   nl_gmm_free(g);
 }
 
+NL_TEST(gmm_size_checked_against_memory)
+{
+  nl_error err = {{0}};
+  NL_CHECK(nl_gmm_check_size(100, 3, 2, NL_GMM_FULL, &err) == NL_OK);
+  NL_CHECK(nl_gmm_check_size(200000, 30000, 100, NL_GMM_FULL, &err) == NL_ENOMEM);
+  NL_CHECK(strstr(err.msg, "200000 rows of 30000 columns with 100 components need") != NULL);
+  NL_CHECK(strstr(err.msg, "this machine has") != NULL);
+}
+
 int main(void) { return nl_test_run(); }

@@ -155,16 +155,61 @@ static int blank(const char *s)
   return 1;
 }
 
+/* Reads one line (without its '\n') into *line, at most NL_TABLE_MAX_LINE
+ * bytes: 1 = a line, 0 = end of file, -1 = longer than the limit (the rest
+ * is not read: /dev/zero has no end). *len counts the bytes read, NUL
+ * bytes included, so a NUL inside a cell can be told from the line end. */
+static int read_line(FILE *fp, char **line, size_t *cap, size_t *len)
+{
+  size_t n = 0;
+  int c;
+  while ((c = getc_unlocked(fp)) != EOF && c != '\n') {
+    if (n >= NL_TABLE_MAX_LINE) return -1;
+    if (n + 2 > *cap) {
+      *cap = *cap ? 2 * *cap : 256;
+      *line = nl_xrealloc(*line, *cap);
+    }
+    (*line)[n++] = (char)c;
+  }
+  if (c == EOF && n == 0) return 0;
+  if (!*line) { *cap = 256; *line = nl_xmalloc(*cap); }
+  (*line)[n] = '\0';
+  *len = n;
+  return 1;
+}
+
+/* The 1-based column holding byte `pos` of a line (before it is split). */
+static size_t column_at(const char *line, size_t pos, int ws)
+{
+  size_t col = ws ? 0 : 1;
+  for (size_t i = 0; i < pos; i++) {
+    int sep = line[i] == '\t' || (ws && line[i] == ' ');
+    if (!ws) col += sep;
+    else if (!sep && (i == 0 || line[i - 1] == ' ' || line[i - 1] == '\t')) col++;
+  }
+  if (ws && (pos == 0 || line[pos - 1] == ' ' || line[pos - 1] == '\t')) col++;   /* the NUL starts a field */
+  return col ? col : 1;
+}
+
 static nl_status read_rows(FILE *fp, const char *path, int flags, nl_table **out, nl_error *err)
 {
   char *line = NULL;
-  size_t cap = 0, lineno = 0, fmax = 0;
+  size_t cap = 0, lineno = 0, fmax = 0, len = 0;
   char **f = NULL;
   nl_table *t = NULL;
   nl_status s = NL_OK;
-  int ws = (flags & NL_TABLE_WHITESPACE) != 0;
-  while (getline(&line, &cap, fp) >= 0) {
+  int ws = (flags & NL_TABLE_WHITESPACE) != 0, got;
+  while ((got = read_line(fp, &line, &cap, &len)) != 0) {
     lineno++;
+    if (got < 0) {
+      s = nl_fail(err, NL_EFORMAT, "%s:%zu: line longer than %d bytes", path, lineno, NL_TABLE_MAX_LINE);
+      break;
+    }
+    size_t nul = strlen(line);
+    if (nul < len) {
+      s = nl_fail(err, NL_EFORMAT, "%s:%zu: NUL byte in column %zu", path, lineno, column_at(line, nul, ws));
+      break;
+    }
     chomp(line);
     if (line[0] == '#' || blank(line)) continue;
     size_t len = strlen(line) + 1;   /* an upper bound on the field count */
@@ -192,6 +237,14 @@ static nl_status read_rows(FILE *fp, const char *path, int flags, nl_table **out
       s = nl_fail(err, NL_EFORMAT, "%s:%zu: %zu fields where the header has %zu", path, lineno, n, t->ncols);
       break;
     }
+    if (t->nrows == t->cap && !nl_mem_fits(2.0 * (double)t->cap * (double)t->ncols * (sizeof *t->num + sizeof *t->text))) {
+      char b1[32], b2[32];
+      s = nl_fail(err, NL_ENOMEM, "%s:%zu: %zu rows of %zu columns would need more than %s; this machine has %s",
+                  path, lineno, t->nrows, t->ncols,
+                  nl_format_bytes(b1, 2.0 * (double)t->cap * (double)t->ncols * (sizeof *t->num + sizeof *t->text)),
+                  nl_format_bytes(b2, nl_mem_physical()));
+      break;
+    }
     size_t r = grow(t);
     for (size_t c = 0; c < n; c++) {
       double v;
@@ -208,7 +261,7 @@ static nl_status read_rows(FILE *fp, const char *path, int flags, nl_table **out
     }
     if (s) break;
   }
-  if (!s && ferror(fp)) s = nl_fail(err, NL_EIO, "%s: read error", path);
+  if (!s && ferror(fp)) s = nl_fail(err, NL_EIO, "%s: read error: %s", path, strerror(errno));
   if (!s && (!t || t->nrows == 0)) s = nl_fail(err, NL_EFORMAT, "%s: no data rows", path);
   free(line); free(f);
   if (s) { nl_table_free(t); return s; }

@@ -17,7 +17,12 @@
  * are not numbers (unless NL_TABLE_TEXT allows text columns), NaN and inf.
  * The first line is a header; with NL_TABLE_HEADER_AUTO it is a header only
  * if one of its fields is not a number. Lines starting with '#' are comments.
+ * Also rejected: a line longer than NL_TABLE_MAX_LINE bytes ("FILE:LINE:
+ * line longer than 1048576 bytes"; an endless line such as /dev/zero ends
+ * there), a NUL byte ("FILE:LINE: NUL byte in column C"), and a table
+ * growing beyond the machine's memory (an endless stream of rows).
  */
+#define NL_TABLE_MAX_LINE 1048576
 #ifndef NL_TABLE_H
 #define NL_TABLE_H
 

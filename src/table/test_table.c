@@ -93,6 +93,57 @@ NL_TEST(failed_write_keeps_old_file)
   nl_table_free(t); free(p);
 }
 
+static char *write_bytes(const char *name, const char *content, size_t n)
+{
+  char *p = nl_path_join(dir, name);
+  FILE *f = fopen(p, "wb");
+  fwrite(content, 1, n, f);
+  fclose(f);
+  return p;
+}
+
+static int bytes_fail_with(const char *content, size_t n, const char *needle, int flags)
+{
+  char *p = write_bytes("nul.tsv", content, n);
+  nl_table *t = NULL;
+  nl_error err = {{0}};
+  int ok = nl_table_read(p, flags, &t, &err) == NL_EFORMAT && t == NULL && strstr(err.msg, needle);
+  if (!ok) fprintf(stderr, "  got '%s' (wanted '%s')\n", err.msg, needle);
+  free(p);
+  return ok;
+}
+
+/* A NUL byte inside a cell once read as a truncated number (13.6). */
+NL_TEST(nul_byte_is_rejected_with_its_column)
+{
+  NL_CHECK(bytes_fail_with("a\tb\n1\t2\n3\t4\0005\n", 13, "nul.tsv:3: NUL byte in column 2", 0));
+  NL_CHECK(bytes_fail_with("1\0002 3\n", 6, "nul.tsv:1: NUL byte in column 1", NL_TABLE_WHITESPACE | NL_TABLE_HEADER_AUTO));
+  NL_CHECK(bytes_fail_with("1 2\n3  \0004\n", 10, "nul.tsv:2: NUL byte in column 2", NL_TABLE_WHITESPACE | NL_TABLE_HEADER_AUTO));
+  NL_CHECK(bytes_fail_with("x\n\000\n", 4, "nul.tsv:2: NUL byte in column 1", 0));
+}
+
+/* /dev/zero is one endless line: refused at the limit, not read forever
+ * (13.7); a long but bounded line is still fine. */
+NL_TEST(line_length_is_bounded)
+{
+  nl_table *t = NULL;
+  nl_error err = {{0}};
+  NL_CHECK(nl_table_read("/dev/zero", NL_TABLE_WHITESPACE, &t, &err) == NL_EFORMAT && t == NULL);
+  NL_CHECK(strcmp(err.msg, "/dev/zero:1: line longer than 1048576 bytes") == 0);
+  size_t n = NL_TABLE_MAX_LINE + 10;
+  char *big = malloc(n + 1);
+  memset(big, '1', n);
+  big[n] = '\n';
+  NL_CHECK(bytes_fail_with(big, n + 1, "nul.tsv:1: line longer than 1048576 bytes", 0));
+  /* exactly at the limit: a (long) header and a row read */
+  memset(big, 'a', NL_TABLE_MAX_LINE);
+  memcpy(big + NL_TABLE_MAX_LINE, "\n1\n", 3);
+  char *p = write_bytes("long.tsv", big, NL_TABLE_MAX_LINE + 3);
+  NL_CHECK(nl_table_read(p, 0, &t, &err) == NL_OK && t && t->nrows == 1);
+  nl_table_free(t);
+  free(big); free(p);
+}
+
 int main(void)
 {
   dir = nl_test_tmpdir();

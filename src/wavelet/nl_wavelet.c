@@ -112,7 +112,10 @@ static long bspline(double p, double w[3])
   w[0] = t * t / 2;
   w[2] = (1 - t) * (1 - t) / 2;
   w[1] = 1 - w[0] - w[2];
-  return (long)mid - 1;
+  /* A long holds mid only below 2^63: wrap beyond 2^62 (no undefined
+   * conversion; the taps there are meaningless anyway), 0 for NaN/inf. */
+  long m = fabs(mid) < 0x1p62 ? (long)mid : isfinite(mid) ? (long)fmod(mid, 0x1p62) : 0;
+  return m - 1;
 }
 
 /* The tile collapsed across y (and z) at a fixed point: column c of the
