@@ -165,11 +165,13 @@ const char *nl_run_check_rule(const nl_run *r, const char *table, const char *co
  * each column of `table` that moved, "rel (multiple x its relative spread)",
  * or "abs (multiple x its absolute spread)" when the values are themselves
  * at rounding level (relative spread > 1e-3); columns that did not move
- * stay exact. A column that already has a rule other than exact (welch
+ * stay exact (a scale not measured uses the other scale's spreads, and the
+ * report says so). A column that already has a rule other than exact (welch
  * for a mean over seeds, ignore for a timing) keeps it. It adds one line to the report naming the largest spread and
  * the multiple. A table missing from the measurement is an error (exit 1):
  * measure it first. table "*": every table measured for this experiment
- * and scale. NL_BLAS_SPREAD overrides the file's path. */
+ * and scale. NL_BLAS_SPREAD overrides the file's path; NL_MEASURING=1
+ * (set by scripts/blas-spread.sh) makes it do nothing. */
 void nl_run_check_measured(nl_run *r, const char *table, double multiple);
 /* Parses a rule string as above; "rule 'x': ..." on error. */
 nl_status nl_check_rule_parse(const char *s, nl_check_rule *rule, nl_error *err);
