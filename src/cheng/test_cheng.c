@@ -31,7 +31,7 @@ NL_TEST(incremental_objective_equals_full_recomputation)
       c.con = (nl_cheng_con)con;
       c.w1 = 0.6; c.w2 = 0.4;   /* both terms visible in E */
       nl_grad2 *g = nl_grad2_alloc(512);
-      nl_grad2_seed(g, 7 + (unsigned long)(stat * 4 + con));
+      nl_grad2_seed(g, nl_seed_stream(7, "test.incremental", (unsigned long)(stat * 4 + con)));
       nl_error err;
       nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
       gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
