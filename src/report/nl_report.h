@@ -158,7 +158,7 @@ const char *nl_run_check_rule(const nl_run *r, const char *table, const char *co
 
 /* Tolerances from a measurement, for tables whose values pass through a
  * CPU-dependent computation (OpenBLAS picks its kernel per CPU; glibc's libm
- * has FMA variants): scripts/blas-spread.sh reruns the experiment under
+ * has FMA variants): bench/blas-spread.sh reruns the experiment under
  * every OpenBLAS kernel this CPU can run, one and two BLAS threads and libm
  * without FMA, and records per table and column the largest spread in
  * data/blas_spread.tsv (for this scale: quick or full). This declares, for
@@ -171,7 +171,7 @@ const char *nl_run_check_rule(const nl_run *r, const char *table, const char *co
  * the multiple. A table missing from the measurement is an error (exit 1):
  * measure it first. table "*": every table measured for this experiment
  * and scale. NL_BLAS_SPREAD overrides the file's path; NL_MEASURING=1
- * (set by scripts/blas-spread.sh) makes it do nothing. */
+ * (set by bench/blas-spread.sh) makes it do nothing. */
 void nl_run_check_measured(nl_run *r, const char *table, double multiple);
 /* Parses a rule string as above; "rule 'x': ..." on error. */
 nl_status nl_check_rule_parse(const char *s, nl_check_rule *rule, nl_error *err);

@@ -1,6 +1,6 @@
 /* Regression tolerances from a measurement (nl_run_check_measured in
  * nl_report.h): the spread of each column over the CPU-dependent
- * configurations, measured by scripts/blas-spread.sh into
+ * configurations, measured by bench/blas-spread.sh into
  * data/blas_spread.tsv, times a stated multiple. */
 #include "report/nl_report.h"
 
@@ -41,7 +41,7 @@ static const char *cell(const nl_table *t, size_t row, long col, char *buf)
 
 void nl_run_check_measured(nl_run *r, const char *table, double multiple)
 {
-  /* scripts/blas-spread.sh sets this: the run is the measurement itself. */
+  /* bench/blas-spread.sh sets this: the run is the measurement itself. */
   const char *measuring = getenv("NL_MEASURING");
   if (measuring && *measuring == '1') return;
   nl_table *t = spread_table(r);
@@ -96,7 +96,7 @@ void nl_run_check_measured(nl_run *r, const char *table, double multiple)
   }
   if (!found)
     nl_run_die(r, 1, "tolerances: no measured spread for %s %s (%s scale) in data/blas_spread.tsv; "
-                     "run scripts/blas-spread.sh%s %s", nl_run_name(r), table, scale,
+                     "run bench/blas-spread.sh%s %s", nl_run_name(r), table, scale,
                nl_run_quick(r) ? " --quick" : "", nl_run_name(r));
   int nconf = 0;
   for (const char *p = configs; *p; p++) nconf += (p == configs || p[-1] == ' ') && *p != ' ';

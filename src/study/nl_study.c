@@ -34,7 +34,7 @@ nl_table *nl_study_series(nl_run *r, const char *prefix, const char *title, nl_b
    * new random stream passes and a shift fails. Everything else, the
    * spectrum included, is exact for a seed: GSL's FFT has no CPU-dependent
    * plan, and no value moved over the CPU configurations of
-   * scripts/blas-spread.sh (the experiment's nl_run_check_measured). */
+   * bench/blas-spread.sh (the experiment's nl_run_check_measured). */
   char dname[256];
   put(prefix, "distribution.tsv", dname, sizeof dname);
   nl_run_check(r, dname, "mean", "welch mean_sd 1e-3");

@@ -6,7 +6,7 @@
 # Its output, data/blas_spread.tsv, is what the experiments' regression
 # tolerances are set from (nl_run_check_measured in src/report/nl_report.h).
 #
-#   bash scripts/blas-spread.sh [--quick] [--out DIR] [--configs A,B,...] EXPERIMENT...
+#   bash bench/blas-spread.sh [--quick] [--out DIR] [--configs A,B,...] EXPERIMENT...
 #
 # A measurement made by hand, never by tests, CI or the entry script: it is
 # the one place where OPENBLAS_CORETYPE is set (DEVELOPERS.md: some CPUs need
