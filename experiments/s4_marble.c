@@ -29,7 +29,7 @@ int main(int argc, char **argv)
   double *u = nl_xmalloc(npix * sizeof *u);
   const char *hcols[NA + 1] = {"u", "a=0", "a=0.25", "a=0.5", "a=1"};
   nl_table *hist = nl_table_alloc(NA + 1, hcols);
-  for (int b = 0; b < NBINS; b++) nl_table_append(hist, "d", (b + 0.5) / NBINS);
+  for (int b = 0; b < NBINS; b++) nl_table_set(hist, nl_table_append_empty(hist), "u", (b + 0.5) / NBINS);
   const char *dcols[] = {"a", "u_mean", "u_mean_sd", "u_sd", "u_sd_sd"};
   nl_table *dist = nl_table_alloc(5, dcols);
   nl_image *panels[NA];
@@ -52,7 +52,7 @@ int main(int argc, char **argv)
       if (k == 0) panels[i] = nl_ramp_image(&ramp, u, size, size, 0, 1);
     }
     for (int bin = 0; bin < NBINS; bin++)
-      hist->num[(size_t)bin * hist->ncols + i + 1] = gsl_histogram_get(h, bin) / ((double)npix * nseeds) * NBINS;
+      nl_table_set(hist, (size_t)bin, hcols[i + 1], gsl_histogram_get(h, bin) / ((double)npix * nseeds) * NBINS);
     nl_table_append(dist, "ddddd", amps[i], gsl_stats_mean(m, 1, nseeds), nseeds > 1 ? gsl_stats_sd(m, 1, nseeds) : 0,
                     gsl_stats_mean(sd, 1, nseeds), nseeds > 1 ? gsl_stats_sd(sd, 1, nseeds) : 0);
     snprintf(labels[i], sizeof labels[i], "(%c) a = %g", 'a' + i, amps[i]);

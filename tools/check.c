@@ -80,14 +80,6 @@ static nl_table *nl_check_read(const char *dir, const char *file, int required)
   return t;
 }
 
-static const char *cell_text(const nl_table *t, size_t row, size_t col, char *buf)
-{
-  size_t k = row * t->ncols + col;
-  if (t->text[k]) return t->text[k];
-  nl_format_double(buf, t->num[k]);
-  return buf;
-}
-
 static void drift(nl_check_ctx *c, const char *table, const char *row, const char *col,
                   const char *ref, const char *new, const char *rule)
 {
@@ -211,7 +203,7 @@ static void nl_check_column(nl_check_ctx *c, const char *file, const nl_table *r
     if (!nl_check_cell(c, &rule, ref, new, i, cr, cn, sr, sn, detail, sizeof detail)) continue;
     row_label(ref, i, label, sizeof label);
     snprintf(full, sizeof full, "%s%s", text, detail);
-    drift(c, file, label, col, cell_text(ref, i, cr, a), cell_text(new, i, cn, b), full);
+    drift(c, file, label, col, nl_table_cell_text(ref, i, (size_t)cr, a), nl_table_cell_text(new, i, (size_t)cn, b), full);
   }
 }
 
@@ -243,7 +235,7 @@ static void nl_check_table(nl_check_ctx *c, const char *ref_dir, const char *new
 static const char *manifest_get(const nl_table *m, const char *key, char *buf)
 {
   for (size_t i = 0; i < m->nrows; i++)
-    if (m->text[i * 2] && !strcmp(m->text[i * 2], key)) return cell_text(m, i, 1, buf);
+    if (m->text[i * 2] && !strcmp(m->text[i * 2], key)) return nl_table_cell_text(m, i, 1, buf);
   return NULL;
 }
 

@@ -93,12 +93,12 @@ void nl_survey_series(nl_basis_kind kind, const nl_setting *settings, int n,
       for (int k = 0; k < n; k++) cols[k + 1] = settings[k].label;
       sp = nl_table_alloc((size_t)n + 1, cols);
       free(cols);
-      for (int b = 0; b < s->nbins; b++) nl_table_append(sp, "d", s->freq[b]);
+      for (int b = 0; b < s->nbins; b++) nl_table_set(sp, nl_table_append_empty(sp), "freq", s->freq[b]);
     }
     for (int b = 0; b < s->nbins; b++) {
       double p = 0;
       for (int k = 0; k < nseeds; k++) p += s->power[(size_t)k * s->nbins + b] / nseeds;
-      sp->num[(size_t)b * sp->ncols + (size_t)i + 1] = p;
+      nl_table_set(sp, (size_t)b, settings[i].label, p);
     }
     if (panels) {
       double m = s->mean[0], sd = s->sd[0] > 0 ? s->sd[0] : 1;

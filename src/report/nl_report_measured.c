@@ -31,14 +31,6 @@ static nl_table *spread_table(nl_run *r)
   return t;
 }
 
-static const char *cell(const nl_table *t, size_t row, long col, char *buf)
-{
-  size_t k = row * t->ncols + (size_t)col;
-  if (t->text[k]) return t->text[k];
-  nl_format_double(buf, t->num[k]);
-  return buf;
-}
-
 void nl_run_check_measured(nl_run *r, const char *table, double multiple)
 {
   /* bench/blas-spread.sh sets this: the run is the measurement itself. */
@@ -60,7 +52,7 @@ void nl_run_check_measured(nl_run *r, const char *table, double multiple)
     int have = 0;
     char b0[64], b1[64];
     for (size_t i = 0; i < t->nrows && !have; i++)
-      have = !strcmp(cell(t, i, ce, b0), nl_run_name(r)) && !strcmp(cell(t, i, cs, b1), scale);
+      have = !strcmp(nl_table_cell_text(t, i, (size_t)ce, b0), nl_run_name(r)) && !strcmp(nl_table_cell_text(t, i, (size_t)cs, b1), scale);
     if (!have) { scale = nl_run_quick(r) ? "full" : "quick"; borrowed = 1; }
   }
   char b[6][64];
@@ -68,12 +60,12 @@ void nl_run_check_measured(nl_run *r, const char *table, double multiple)
   double worst = 0;
   char worst_at[256] = "", configs[1024] = "", moved[1024] = "", last[128] = "";
   for (size_t i = 0; i < t->nrows; i++) {
-    const char *tab = cell(t, i, ct, b[2]);
-    if (strcmp(cell(t, i, ce, b[0]), nl_run_name(r)) || strcmp(cell(t, i, cs, b[1]), scale) ||
+    const char *tab = nl_table_cell_text(t, i, (size_t)ct, b[2]);
+    if (strcmp(nl_table_cell_text(t, i, (size_t)ce, b[0]), nl_run_name(r)) || strcmp(nl_table_cell_text(t, i, (size_t)cs, b[1]), scale) ||
         (!all && strcmp(tab, table))) continue;
     found = 1;
-    const char *col = cell(t, i, cc, b[3]);
-    double rel = strtod(cell(t, i, cr, b[4]), NULL), ab = strtod(cell(t, i, ca, b[5]), NULL);
+    const char *col = nl_table_cell_text(t, i, (size_t)cc, b[3]);
+    double rel = strtod(nl_table_cell_text(t, i, (size_t)cr, b[4]), NULL), ab = strtod(nl_table_cell_text(t, i, (size_t)ca, b[5]), NULL);
     const char *g = t->text[i * t->ncols + (size_t)cg];
     snprintf(configs, sizeof configs, "%s", g ? g : "");
     if (rel == 0) continue;   /* identical under every configuration: stays exact */

@@ -43,6 +43,11 @@ static size_t grow(nl_table *t)
 
 void nl_table_append(nl_table *t, const char *fmt, ...)
 {
+  if (strlen(fmt) != t->ncols || strspn(fmt, "dis") != t->ncols) {
+    fprintf(stderr, "nl_table_append: format \"%s\" does not give one of d, i, s for each of %zu columns (first: %s)\n",
+            fmt, t->ncols, t->ncols ? t->names[0] : "-");
+    abort();
+  }
   size_t r = grow(t);
   va_list ap;
   va_start(ap, fmt);
@@ -58,6 +63,8 @@ void nl_table_append(nl_table *t, const char *fmt, ...)
   va_end(ap);
 }
 
+size_t nl_table_append_empty(nl_table *t) { return grow(t); }
+
 void nl_table_append_doubles(nl_table *t, const double *row)
 {
   size_t r = grow(t);
@@ -71,6 +78,36 @@ long nl_table_column(const nl_table *t, const char *name)
   return -1;
 }
 
+size_t nl_table_column_must(const nl_table *t, const char *name)
+{
+  long c = nl_table_column(t, name);
+  if (c >= 0) return (size_t)c;
+  fprintf(stderr, "nl_table: no column '%s' (columns:", name);
+  for (size_t k = 0; k < t->ncols; k++) fprintf(stderr, "%s %s", k ? "," : "", t->names[k]);
+  fprintf(stderr, ")\n");
+  abort();
+}
+
+double nl_table_value(const nl_table *t, size_t r, const char *name)
+{
+  return nl_table_get(t, r, nl_table_column_must(t, name));
+}
+
+void nl_table_set(nl_table *t, size_t r, const char *name, double v)
+{
+  size_t c = nl_table_column_must(t, name);
+  if (t->text) { free(t->text[r * t->ncols + c]); t->text[r * t->ncols + c] = NULL; }
+  t->num[r * t->ncols + c] = v;
+}
+
+const char *nl_table_cell_text(const nl_table *t, size_t r, size_t c, char *buf)
+{
+  size_t k = r * t->ncols + c;
+  if (t->text && t->text[k]) return t->text[k];
+  nl_format_double(buf, t->num[k]);
+  return buf;
+}
+
 void nl_format_double(char *buf, double v)
 {
   if (v == 0) { strcpy(buf, v == 0 && signbit(v) ? "-0" : "0"); return; }
@@ -80,6 +117,10 @@ void nl_format_double(char *buf, double v)
 
 nl_status nl_table_write(const nl_table *t, const char *path, nl_error *err)
 {
+  for (size_t k = 0; k < t->nrows * t->ncols; k++)
+    if (!(t->text && t->text[k]) && !isfinite(t->num[k]))
+      return nl_fail(err, NL_EINVAL, "%s: column '%s' row %zu holds %g (NaN or infinite; the reader rejects it)",
+                     path, t->names[k % t->ncols], k / t->ncols + 1, t->num[k]);
   nl_atomic_file af;
   nl_status s = nl_atomic_open(&af, path, err);
   if (s) return s;
@@ -88,12 +129,8 @@ nl_status nl_table_write(const nl_table *t, const char *path, nl_error *err)
   fputc('\n', af.fp);
   char buf[32];
   for (size_t r = 0; r < t->nrows; r++) {
-    for (size_t c = 0; c < t->ncols; c++) {
-      size_t k = r * t->ncols + c;
-      const char *cell = t->text && t->text[k] ? t->text[k] : NULL;
-      if (!cell) { nl_format_double(buf, t->num[k]); cell = buf; }
-      fprintf(af.fp, "%s%s", c ? "\t" : "", cell);
-    }
+    for (size_t c = 0; c < t->ncols; c++)
+      fprintf(af.fp, "%s%s", c ? "\t" : "", nl_table_cell_text(t, r, c, buf));
     fputc('\n', af.fp);
   }
   return nl_atomic_commit(&af, err);

@@ -46,8 +46,13 @@ nl_table *nl_table_alloc(size_t ncols, const char *const *names);
 void nl_table_free(nl_table *t);
 
 /* Appends one row; fmt has one character per column: 'd' (double),
- * 'i' (int), 's' (const char *). */
+ * 'i' (int), 's' (const char *). A format whose length is not ncols, or an
+ * unknown character, is a programming error: a message and abort(). */
 void nl_table_append(nl_table *t, const char *fmt, ...);
+/* Appends a row with every cell unset, to be filled by nl_table_set (a wide
+ * table built column by column); a cell left unset is NaN, which the writer
+ * refuses. Returns the row's index. */
+size_t nl_table_append_empty(nl_table *t);
 /* Appends a row of ncols doubles. */
 void nl_table_append_doubles(nl_table *t, const double *row);
 
@@ -56,6 +61,23 @@ static inline double nl_table_get(const nl_table *t, size_t r, size_t c)
 /* Column index by name, or -1. */
 long nl_table_column(const nl_table *t, const char *name);
 
+/* By name -- the way programs, gnuplot scripts and tests address a table,
+ * so that adding a column never shifts what another place reads:
+ *   double m = nl_table_value(t, r, "mean");
+ *   nl_table_set(t, r, "mean", 0.5);
+ * A name the table does not have is a programming error: both print
+ * "nl_table: no column 'NAME' (columns: a, b, ...)" and abort(), as GSL's
+ * default error handler does. nl_table_value of a text cell is NaN. */
+double nl_table_value(const nl_table *t, size_t r, const char *name);
+void nl_table_set(nl_table *t, size_t r, const char *name, double v);
+/* Like nl_table_column, but aborts (as above) when the name is missing. */
+size_t nl_table_column_must(const nl_table *t, const char *name);
+/* The cell as the writer writes it: its text, or the double formatted by
+ * nl_format_double into buf (32 bytes). */
+const char *nl_table_cell_text(const nl_table *t, size_t r, size_t c, char *buf);
+
+/* Refuses (NL_EINVAL, nothing written) a NaN or infinite number, which the
+ * reader would reject: one rule for both directions. */
 nl_status nl_table_write(const nl_table *t, const char *path, nl_error *err);
 nl_status nl_table_read(const char *path, int flags, nl_table **out, nl_error *err);
 

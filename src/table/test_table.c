@@ -1,6 +1,7 @@
 #include "table/nl_table.h"
 #include "nl_test.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -142,6 +143,30 @@ NL_TEST(line_length_is_bounded)
   NL_CHECK(nl_table_read(p, 0, &t, &err) == NL_OK && t && t->nrows == 1);
   nl_table_free(t);
   free(big); free(p);
+}
+
+NL_TEST(columns_by_name_and_nan_refused)
+{
+  const char *cols[] = {"k", "mean", "label"};
+  nl_table *t = nl_table_alloc(3, cols);
+  nl_table_append(t, "ids", 1, 0.25, "a");
+  nl_table_append(t, "ids", 2, 0.5, "b");
+  NL_CHECK(nl_table_value(t, 1, "mean") == 0.5);
+  NL_CHECK(nl_table_column_must(t, "label") == 2);
+  nl_table_set(t, 0, "mean", 0.75);
+  NL_CHECK(nl_table_get(t, 0, 1) == 0.75);
+  char buf[32];
+  NL_CHECK(strcmp(nl_table_cell_text(t, 1, 2, buf), "b") == 0);
+  NL_CHECK(strcmp(nl_table_cell_text(t, 1, 1, buf), "0.5") == 0);
+  /* the writer refuses what the reader rejects, and writes nothing */
+  nl_table_set(t, 1, "mean", NAN);
+  char *p = nl_path_join(dir, "nan.tsv");
+  nl_error err = {{0}};
+  NL_CHECK(nl_table_write(t, p, &err) == NL_EINVAL);
+  NL_CHECK(strstr(err.msg, "column 'mean' row 2") != NULL);
+  NL_CHECK(access(p, F_OK) != 0);
+  free(p);
+  nl_table_free(t);
 }
 
 int main(void)
