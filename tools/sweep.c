@@ -178,12 +178,12 @@ static nl_table *plan_tasks(const nl_sweep_plan *pl)
     /* Task j runs replicates j K .. j K + K - 1 of the sweep's base seed. */
     snprintf(seed, sizeof seed, "%lu",
              nl_seed_replicate((unsigned long)pl->seed, (long)(id % (size_t)pl->seeds) * pl->task_seeds));
-    nl_table_append(t, "d", (double)id);
-    size_t row = t->nrows - 1;
-    t->text[row * t->ncols + 1] = nl_xstrdup(folder);
-    t->text[row * t->ncols + 2] = nl_xstrdup(seed);
+    size_t row = nl_table_append_empty(t);
+    nl_table_set(t, row, "task", (double)id);
+    nl_table_set_text(t, row, "folder", folder);
+    nl_table_set_text(t, row, "seed", seed);
     for (int k = pl->np - 1; k >= 0; k--) {
-      t->text[row * t->ncols + 3 + (size_t)k] = nl_xstrdup(pl->p[k].values[rest % pl->p[k].n]);
+      nl_table_set_text(t, row, pl->p[k].name, pl->p[k].values[rest % pl->p[k].n]);
       rest /= pl->p[k].n;
     }
   }
