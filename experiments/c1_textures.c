@@ -2,7 +2,7 @@
  * textures, each from three control patterns with its own control term
  * (eq. 3.8, 4.1, 4.2, 4.3); one montage per texture: pattern | controlled
  * value | texture. */
-#include "cheng/nl_cheng.h"
+#include "study/nl_study_cheng.h"
 #include "report/nl_report.h"
 
 #include <stdio.h>

@@ -2,7 +2,7 @@
  * KS term, the chi-square term (500 bins) and, added here, the Kuiper term;
  * CDF of the optimised angles against the ideal line, histograms, and every
  * statistic with its p-value over seeds. */
-#include "cheng/nl_cheng.h"
+#include "study/nl_study_cheng.h"
 #include "report/nl_report.h"
 #include "stats/nl_stats.h"
 

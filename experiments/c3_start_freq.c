@@ -1,6 +1,6 @@
 /* C3 - Cheng 2009 Fig 4.7 (sec. 4.3.1): the starting frequency f1 = 2, 4, 6,
  * 8 of the controlled fractal sum; lower f1 should look smoother. */
-#include "cheng/nl_cheng.h"
+#include "study/nl_study_cheng.h"
 #include "report/nl_report.h"
 
 #include <stdio.h>

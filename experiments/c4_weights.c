@@ -3,7 +3,7 @@
  * numbers, the same pairs with w1 and w2 swapped (the reading the thesis's
  * text implies), and a dense log sweep of w1 / w2 (w1 + w2 = 1) as the E_KS vs
  * E_Con trade-off curve. */
-#include "cheng/nl_cheng.h"
+#include "study/nl_study_cheng.h"
 #include "report/nl_report.h"
 
 #include <math.h>

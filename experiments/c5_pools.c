@@ -6,7 +6,7 @@
  * table beside ours; K against the cutoff; the other low/high split on
  * erosion; and, beyond the paper, whether the mixture describes the pool
  * (held-out likelihood, per-angle KS) for three model variants. */
-#include "cheng/nl_cheng.h"
+#include "study/nl_study_cheng.h"
 #include "report/nl_report.h"
 #include "table/nl_table.h"
 

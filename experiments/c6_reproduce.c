@@ -6,7 +6,7 @@
  * original's, the CDF of reproduced angles over the original's, a montage,
  * and the "real time" claim measured: ms per reproduction against the
  * seconds of one optimisation. */
-#include "cheng/nl_cheng.h"
+#include "study/nl_study_cheng.h"
 #include "report/nl_report.h"
 #include "stats/nl_stats.h"
 #include "table/nl_table.h"

@@ -1,6 +1,6 @@
 /* C7 - Cheng 2009 Fig 4.15-4.17 (sec. 4.5): terrain height maps from the
  * flower, "X" and star patterns; the controlled value is the height. */
-#include "cheng/nl_cheng.h"
+#include "study/nl_study_cheng.h"
 #include "report/nl_report.h"
 
 #include <stdio.h>

@@ -1,15 +1,14 @@
 /* nl_cheng_internal.h - the problem's state, shared by the module's sources
- * (not installed; users see nl_cheng.h only). */
+ * (not installed; users see nl_cheng.h and nl_cheng_repro.h only). */
 #ifndef NL_CHENG_INTERNAL_H
 #define NL_CHENG_INTERNAL_H
 
 #include "cheng/nl_cheng.h"
+#include "cheng/nl_cheng_repro.h"
 #include "stats/nl_stats.h"
 
 #include <math.h>
 #include <stdint.h>
-
-#define NL_CHENG_MAX_OCTAVES 8
 
 /* The statistic term over a sample of angles, kept incrementally: KS and
  * Kuiper through nl_ks_incr, chi-square through bin counts. */

@@ -114,3 +114,15 @@ double nl_cheng__stat_full(nl_cheng_stat kind, size_t bins, const double *x, siz
   if (st) { fprintf(stderr, "nl_cheng: %s\n", err.msg); abort(); }
   return v;
 }
+
+/* Median of the one-sample KS statistic D_n under the null: the yardstick
+ * for "as uniform as a random table". */
+double nl_cheng_ks_median(size_t n)
+{
+  double lo = 0, hi = 1;   /* bisection on the exact CDF of D_n */
+  for (int it = 0; it < 60; it++) {
+    double mid = 0.5 * (lo + hi);
+    if (nl_ks_cdf(n, mid, NULL) < 0.5) lo = mid; else hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}

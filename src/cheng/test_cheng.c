@@ -1,4 +1,5 @@
 #include "cheng/nl_cheng_internal.h"
+#include "study/nl_study_cheng.h"
 #include "nl_test.h"
 
 #include <gsl/gsl_rng.h>

@@ -2,7 +2,7 @@
  * incremental state, pools independent of threads, the circular
  * representation, recovery of a known mixture's K, sampling, degenerate
  * cases. */
-#include "cheng/nl_cheng.h"
+#include "study/nl_study_cheng.h"
 #include "nl_test.h"
 
 #include <gsl/gsl_randist.h>

@@ -1,7 +1,8 @@
-/* The loops and tables experiments C1-C4 and C7 share: standard parameters,
- * runs over seeds, summary rows (mean and spread), CDF and histogram tables. */
-#include "cheng/nl_cheng_internal.h"
-#include "report/nl_report.h"
+/* The opening and tables experiments C1-C7 share: --patterns, standard
+ * parameters, summary rows (mean and spread over seeds), CDF, histogram and
+ * height-map tables. */
+#include "study/nl_study_cheng.h"
+#include "stats/nl_stats.h"
 
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>
@@ -48,18 +49,6 @@ void nl_cheng_params_done(nl_run *r, const nl_cheng_config *c, const char *patte
   nl_run_note(r, "patterns", "%s", patterns);
 }
 
-nl_status nl_cheng_run_seeds(const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                             unsigned long seed0, int k, nl_cheng_eval *evs, nl_grad2 **first,
-                             nl_error *err)
-{
-  for (int s = 0; s < k; s++) {
-    nl_status st = nl_cheng_run(c, pat, nl_seed_replicate(seed0, s), &evs[s], NULL,
-                                s == 0 ? first : NULL, err);
-    if (st) return st;
-  }
-  return NL_OK;
-}
-
 static const char *const summary_cols[] = {
   "seeds", "E_ks", "E_ks_sd", "p_ks", "p_ks_min", "V_kuiper", "V_kuiper_sd", "p_kuiper",
   "p_kuiper_min", "chi2", "chi2_sd", "p_chi2", "E_con", "E_con_sd", "rms_con", "E",
@@ -76,8 +65,15 @@ nl_table *nl_cheng_summary_alloc(int nlabels, const char *const *labels)
 
 #define FIELD(evs, k, f, out) do { for (int i_ = 0; i_ < (k); i_++) (out)[i_] = (evs)[i_].f; } while (0)
 
-static double sd_of(const double *x, int k) { return k > 1 ? gsl_stats_sd(x, 1, (size_t)k) : 0.0; }
-static double min_of(const double *x, int k) { double m = x[0]; for (int i = 1; i < k; i++) m = fmin(m, x[i]); return m; }
+double nl_study_mean(const double *x, int n) { return gsl_stats_mean(x, 1, (size_t)n); }
+double nl_study_sd(const double *x, int n) { return n > 1 ? gsl_stats_sd(x, 1, (size_t)n) : 0.0; }
+double nl_study_min(const double *x, int n)
+{
+  double m = x[0];
+  for (int i = 1; i < n; i++) m = fmin(m, x[i]);
+  return m;
+}
+
 static double frac_at_least(const double *x, int k, double a)
 {
   int n = 0;
@@ -94,20 +90,20 @@ void nl_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
   double *x = nl_xmalloc((size_t)k * sizeof *x), row[32];
   int c = nlabels;
   row[c++] = k;
-  FIELD(evs, k, e_ks, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k); row[c++] = sd_of(x, k);
-  FIELD(evs, k, p_ks, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k); row[c++] = min_of(x, k);
+  FIELD(evs, k, e_ks, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, p_ks, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_min(x, k);
   double uks = frac_at_least(x, k, 0.05);
-  FIELD(evs, k, kuiper_v, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k); row[c++] = sd_of(x, k);
-  FIELD(evs, k, p_kuiper, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k); row[c++] = min_of(x, k);
+  FIELD(evs, k, kuiper_v, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, p_kuiper, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_min(x, k);
   double uku = frac_at_least(x, k, 0.05);
-  FIELD(evs, k, chi2, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k); row[c++] = sd_of(x, k);
-  FIELD(evs, k, p_chi2, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k);
-  FIELD(evs, k, e_con, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k); row[c++] = sd_of(x, k);
-  FIELD(evs, k, rms_con, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k);
-  FIELD(evs, k, e, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k);
+  FIELD(evs, k, chi2, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, p_chi2, x); row[c++] = nl_study_mean(x, k);
+  FIELD(evs, k, e_con, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, rms_con, x); row[c++] = nl_study_mean(x, k);
+  FIELD(evs, k, e, x); row[c++] = nl_study_mean(x, k);
   row[c++] = uks;
   row[c++] = uku;
-  FIELD(evs, k, roughness, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k); row[c++] = sd_of(x, k);
+  FIELD(evs, k, roughness, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
   for (int i = 0; i < nlabels; i++) row[i] = 0;
   nl_table_append_doubles(t, row);
   size_t r = t->nrows - 1;
@@ -159,35 +155,6 @@ nl_table *nl_cheng_hist_table(const nl_grad2 *const *tables, const char *const *
   return t;
 }
 
-nl_image *nl_cheng_value_image(const nl_grad2 *g, const nl_cheng_config *c, int size)
-{
-  double *v = nl_xmalloc((size_t)size * size * sizeof *v);
-  nl_cheng_value_grid(g, c, size, size, v);
-  nl_image *im = nl_cheng_grey_image(v, size, size);
-  free(v);
-  return im;
-}
-
-nl_image *nl_cheng_texture_image(const nl_grad2 *g, const nl_cheng_config *c, int size)
-{
-  double *v = nl_xmalloc((size_t)size * size * sizeof *v);
-  nl_cheng_value_grid(g, c, size, size, v);
-  nl_image *im = nl_cheng_texture(c->con, v, size, size);
-  free(v);
-  return im;
-}
-
-nl_image *nl_cheng_pattern_panel(const nl_cheng_pattern *p, int size)
-{
-  nl_image *small = nl_cheng_pattern_image(p), *im = nl_image_alloc(size, size, 3);
-  for (int y = 0; y < size; y++)
-    for (int x = 0; x < size; x++)
-      memcpy(nl_image_pixel(im, x, y), nl_image_pixel(small, x * p->grid / size, y * p->grid / size),
-             3 * sizeof(float));
-  nl_image_free(small);
-  return im;
-}
-
 nl_table *nl_cheng_matrix_table(const double *v, int w, int h)
 {
   char (*names)[16] = nl_xmalloc((size_t)w * sizeof *names);
@@ -198,14 +165,4 @@ nl_table *nl_cheng_matrix_table(const double *v, int w, int h)
   free(cols);
   free(names);
   return t;
-}
-
-double nl_cheng_ks_median(size_t n)
-{
-  double lo = 0, hi = 1;   /* bisection on the exact CDF of D_n */
-  for (int it = 0; it < 60; it++) {
-    double mid = 0.5 * (lo + hi);
-    if (nl_ks_cdf(n, mid, NULL) < 0.5) lo = mid; else hi = mid;
-  }
-  return 0.5 * (lo + hi);
 }

@@ -1,8 +1,6 @@
 /* What C5 and C6 share (noise reproduction): the thesis's Tables 4.2-4.4,
  * the --set parameters, and the chain original -> pool -> model. */
-#include "cheng/nl_cheng_internal.h"
-#include "report/nl_report.h"
-#include "stats/nl_cluster.h"
+#include "study/nl_study_cheng.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -55,20 +53,4 @@ void nl_cheng_repro_clear(nl_cheng_repro *rp)
   nl_grad2_free(rp->opt);
   nl_cheng_pool_free(rp->pool);
   memset(rp, 0, sizeof *rp);
-}
-
-nl_status nl_cheng_k_curve(const nl_cheng_pool *pool, const nl_cheng_model *m, const double *cut,
-                           size_t ncut, size_t *k, nl_error *err)
-{
-  if (m->n_in < 2) return nl_fail(err, NL_EINVAL, "fewer than 2 input samples");
-  size_t n = m->n_in, nl = pool->nlow;
-  double *th = nl_xmalloc(n * nl * sizeof *th), *x = nl_xmalloc(n * 2 * nl * sizeof *x);
-  double *Z = nl_xmalloc((n - 1) * 4 * sizeof *Z);
-  int *lab = nl_xmalloc(n * sizeof *lab);
-  for (size_t i = 0; i < n; i++) memcpy(th + i * nl, pool->theta + m->in[i] * nl, nl * sizeof *th);
-  nl_cheng_rep_encode(NL_CHENG_REP_COSSIN, th, n, nl, m->mu, x);
-  nl_status st = nl_linkage(x, n, 2 * nl, NL_LINKAGE_COMPLETE, Z, err);
-  for (size_t q = 0; q < ncut && !st; q++) st = nl_fcluster_distance(Z, n, cut[q], lab, &k[q], err);
-  free(th); free(x); free(Z); free(lab);
-  return st;
 }
