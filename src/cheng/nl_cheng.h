@@ -10,10 +10,10 @@
  * API (sections below in this order)
  *   pattern   nl_cheng_pattern_from_pixels, nl_cheng_pattern_free
  *   config    nl_cheng_config_default / _check, nl_cheng_stat_parse / _name,
- *             nl_cheng_con_parse / _name
+ *             nl_cheng_con_parse / _name, nl_cheng_objective (eq. 3.9, the one
+ *             place E = w1 E_stat + w2 E_Con is formed)
  *   problem   nl_cheng_problem_alloc / _free, nl_cheng_set_level, nl_cheng_vars,
- *             nl_cheng_energy, nl_cheng_objective (eq. 3.9, the one place
- *             E = w1 E_stat + w2 E_Con is formed), nl_cheng_move / _undo,
+ *             nl_cheng_energy, nl_cheng_move / _undo,
  *             nl_cheng_energy_full, nl_cheng_resum
  *   anneal    nl_cheng_anneal, nl_cheng_propagate, nl_cheng_optimise
  *   eval      nl_cheng_evaluate, nl_cheng_value_grid, nl_cheng_run,
@@ -180,6 +180,10 @@ nl_status nl_cheng_stat_parse(const char *s, nl_cheng_stat *out, nl_error *err);
 nl_status nl_cheng_con_parse(const char *s, nl_cheng_con *out, nl_error *err);
 const char *nl_cheng_stat_name(nl_cheng_stat s);
 const char *nl_cheng_con_name(nl_cheng_con c);   /* texture name: cloud, marble, ... */
+/* Eq. 3.9, E = w1 E_stat + w2 E_Con with the config's weights: the one place
+ * the objective is formed (incremental moves, full recomputation, resums,
+ * the reproduction's E_R of eq. 3.18 and nl_cheng_evaluate all call it). */
+double nl_cheng_objective(const nl_cheng_config *c, double e_stat, double e_con);
 
 /* ---- the problem: incremental objective --------------------------------- */
 

@@ -63,7 +63,7 @@ nl_status nl_cheng_evaluate(const nl_grad2 *g, const nl_cheng_config *c,
   out->rms_con = sqrt(out->e_con / (double)pat->n);
   out->roughness = roughness(g, c);
   double stat = nl_cheng__stat_full(c->stat, c->chisq_bins, g->angle, g->m);
-  out->e = c->w1 * stat + c->w2 * out->e_con;
+  out->e = nl_cheng_objective(c, stat, out->e_con);
   return NL_OK;
 }
 

@@ -6,21 +6,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* nl_histogram_uniform's binning rule (numpy.histogram's: arithmetic index,
- * corrected against the edges; last bin closed), repeated here because the
- * stats module keeps it static; the chi-square test is checked against
- * nl_chisq_test_uniform so the two cannot drift apart unnoticed. */
-size_t nl_cheng__bin(double v, size_t k)
-{
-  const double a = 0.0, b = NL_TWO_PI;
-  double step = (b - a) / (double)k;
-  size_t i = (size_t)((v - a) * ((double)k / (b - a)));
-  if (i >= k) i = k - 1;
-  if (i > 0 && v < a + (double)i * step) i--;
-  else if (i + 1 < k && v >= a + (double)(i + 1) * step) i++;
-  return i;
-}
-
 void nl_cheng__stat_init(nl_cheng_statstate *s, nl_cheng_stat kind, size_t bins)
 {
   memset(s, 0, sizeof *s);
