@@ -87,8 +87,8 @@ static double frac_at_least(const double *x, int k, double a)
 void nl_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
                           const nl_cheng_eval *evs, int k)
 {
-  double *x = nl_xmalloc((size_t)k * sizeof *x), row[32];
-  int c = nlabels;
+  double *x = nl_xmalloc((size_t)k * sizeof *x), row[NSUM];
+  int c = 0;
   row[c++] = k;
   FIELD(evs, k, e_ks, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
   FIELD(evs, k, p_ks, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_min(x, k);
@@ -104,13 +104,11 @@ void nl_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
   row[c++] = uks;
   row[c++] = uku;
   FIELD(evs, k, roughness, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
-  for (int i = 0; i < nlabels; i++) row[i] = 0;
-  nl_table_append_doubles(t, row);
-  size_t r = t->nrows - 1;
-  for (int i = 0; i < nlabels; i++) {
-    t->num[r * t->ncols + (size_t)i] = NAN;
-    t->text[r * t->ncols + (size_t)i] = nl_xstrdup(labels[i]);
-  }
+  size_t r = nl_table_append_empty(t);
+  for (size_t i = 0; i < NSUM; i++) nl_table_set(t, r, summary_cols[i], row[i]);
+  /* nl_table has no text setter yet: a label cell is text with a NaN number,
+   * the layout nl_table_append gives an 's' cell. */
+  for (int i = 0; i < nlabels; i++) t->text[r * t->ncols + (size_t)i] = nl_xstrdup(labels[i]);
   free(x);
 }
 
@@ -165,4 +163,46 @@ nl_table *nl_cheng_matrix_table(const double *v, int w, int h)
   free(cols);
   free(names);
   return t;
+}
+
+void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title, int *argc, char **argv)
+{
+  s->r = nl_cheng_begin(name, title, argc, argv, &s->c, &s->grid, &s->patterns);
+}
+
+void nl_study_cheng_ready(nl_study_cheng *s) { nl_cheng_params_done(s->r, &s->c, s->patterns); }
+
+nl_cheng_pattern *nl_study_cheng_pattern(const nl_study_cheng *s, const char *name)
+{
+  return nl_cheng_pattern_load_or_die(nl_run_name(s->r), s->patterns, name, s->grid);
+}
+
+nl_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_config *c,
+                               const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
+                               const char *const *labels)
+{
+  int k = nl_run_seeds(s->r);
+  nl_cheng_eval *evs = nl_xmalloc((size_t)k * sizeof *evs);
+  nl_grad2 *first;
+  nl_error err;
+  if (nl_cheng_run_seeds(c, pat, nl_run_seed(s->r), k, evs, &first, &err)) nl_run_die(s->r, 1, "%s", err.msg);
+  nl_cheng_summary_add(sum, nlabels, labels, evs, k);
+  free(evs);
+  return first;
+}
+
+void nl_study_cheng_montage(nl_run *r, nl_image **panels, const char *const *labels, int n, int cols,
+                            const char *title, const char *file)
+{
+  nl_image *m = nl_montage((const nl_image *const *)panels, labels, n, cols, title);
+  nl_run_image(r, m, file);
+  nl_image_free(m);
+  for (int i = 0; i < n; i++) nl_image_free(panels[i]);
+}
+
+double nl_study_column_min(const nl_table *t, const char *col)
+{
+  double m = INFINITY;
+  for (size_t q = 0; q < t->nrows; q++) m = fmin(m, nl_table_value(t, q, col));
+  return m;
 }

@@ -106,6 +106,39 @@ nl_table *nl_cheng_hist_table(const nl_grad2 *const *tables, const char *const *
 /* A w x h raster as a table of h rows and w columns c0..c{w-1} (gnuplot's
  * "matrix columnheaders" layout, for height maps). */
 nl_table *nl_cheng_matrix_table(const double *v, int w, int h);
+/* One Cheng experiment's run and its standard setting, so that an
+ * experiment opens in two lines:
+ *   nl_study_cheng s;
+ *   nl_study_cheng_open(&s, "c3_start_freq", "C3 - ...", &argc, argv);
+ *   ... its own nl_run_param calls on s.r ...
+ *   nl_study_cheng_ready(&s);
+ *   nl_cheng_pattern *pat = nl_study_cheng_pattern(&s, "star");
+ *   nl_grad2 *first = nl_study_cheng_seeds(&s, &s.c, pat, sum, 1, labels);  */
+typedef struct {
+  nl_run *r;
+  nl_cheng_config c;      /* the standard parameters (nl_cheng_begin) */
+  int grid;               /* control grid */
+  const char *patterns;   /* the --patterns folder */
+} nl_study_cheng;
+/* nl_cheng_begin into s (same checks, same exits). */
+void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title, int *argc, char **argv);
+/* nl_cheng_params_done on s's run and config. */
+void nl_study_cheng_ready(nl_study_cheng *s);
+/* The pattern NAME of s's folder at s's grid (nl_cheng_pattern_load_or_die). */
+nl_cheng_pattern *nl_study_cheng_pattern(const nl_study_cheng *s, const char *name);
+/* Config c on pat over the run's seeds (nl_cheng_run_seeds), its summary row
+ * appended to sum under the nlabels labels (nl_cheng_summary_add); returns
+ * the first seed's optimised table (caller frees). Exit 1 on error. */
+nl_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_config *c,
+                               const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
+                               const char *const *labels);
+/* The n panels as a labelled montage of `cols` columns written to the run's
+ * FILE; frees the panels. */
+void nl_study_cheng_montage(nl_run *r, nl_image **panels, const char *const *labels, int n, int cols,
+                            const char *title, const char *file);
+/* The smallest value of column `col` over the table's rows (+inf if none). */
+double nl_study_column_min(const nl_table *t, const char *col);
+
 /* Mean, sample standard deviation (0 for n < 2) and minimum of n values:
  * the spread over seeds every summary row reports. */
 double nl_study_mean(const double *x, int n);
