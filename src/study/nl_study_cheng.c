@@ -206,3 +206,8 @@ double nl_study_column_min(const nl_table *t, const char *col)
   for (size_t q = 0; q < t->nrows; q++) m = fmin(m, nl_table_value(t, q, col));
   return m;
 }
+
+const char *nl_study_text(const nl_table *t, size_t r, const char *col)
+{
+  return t->text[r * t->ncols + nl_table_column_must(t, col)];
+}

@@ -139,6 +139,8 @@ void nl_study_cheng_montage(nl_run *r, nl_image **panels, const char *const *lab
 /* The smallest value of column `col` over the table's rows (+inf if none). */
 double nl_study_column_min(const nl_table *t, const char *col);
 
+/* The text of cell (r, col) (NULL for a numeric cell). */
+const char *nl_study_text(const nl_table *t, size_t r, const char *col);
 /* Mean, sample standard deviation (0 for n < 2) and minimum of n values:
  * the spread over seeds every summary row reports. */
 double nl_study_mean(const double *x, int n);
@@ -177,5 +179,48 @@ nl_status nl_cheng_repro_original(const nl_cheng_config *c, const nl_cheng_patte
 nl_status nl_cheng_repro_pool(nl_cheng_repro *rp, const nl_cheng_config *c, const nl_cheng_pattern *pat,
                               const nl_cheng_pool_options *po, unsigned long seed, nl_error *err);
 void nl_cheng_repro_clear(nl_cheng_repro *rp);
+/* The texture th on s's setting: its pattern (returned; caller frees), *c =
+ * s's config with th's control term, the original and its pool in *rp.
+ * Exit 1 on error. */
+nl_cheng_pattern *nl_study_cheng_repro_open(const nl_study_cheng *s, const nl_cheng_thesis_gmm *th,
+                                            const nl_cheng_pool_options *po, nl_cheng_config *c,
+                                            nl_cheng_repro *rp);
+/* The mixture of the pool with the cutoff matched to the thesis's initial K
+ * (cutoff < 0, target_k = th->k0) and the run's seed; exit 1 on error. */
+nl_cheng_model *nl_study_cheng_matched_model(nl_run *r, const nl_cheng_pool *pool, const nl_cheng_thesis_gmm *th,
+                                             const nl_cheng_model_options *mo);
+
+/* C5's tables: gmm (Tables 4.2-4.4 per texture, split and cutoff rule, the
+ * thesis's numbers beside ours), path (AIC/BIC along K, first seed), curve (K
+ * against the cutoff), runs (E_R per pool run), assess (held-out checks of
+ * three model variants), orig (the original table against its pool). */
+typedef struct { nl_table *gmm, *path, *curve, *runs, *assess, *orig; } nl_study_cheng_pools;
+#define NL_STUDY_CHENG_MAXSEEDS 64   /* seeds of the model fits averaged per row */
+void nl_study_cheng_pools_alloc(nl_study_cheng_pools *T);
+/* Writes the six tables (original.tsv, gmm.tsv, aic_path.tsv, cutoff_k.tsv,
+ * pool_runs.tsv, assess.tsv) and marks their timing columns "ignore". */
+void nl_study_cheng_pools_write(nl_run *r, const nl_study_cheng_pools *T);
+void nl_study_cheng_pools_free(nl_study_cheng_pools *T);
+/* One texture at one low/high split: the original and its pool, a gmm and
+ * path row per cutoff rule (the thesis's cutoff; the one matching its K0)
+ * over nseeds seeds of the fit, K against the cutoff, and with `full` the
+ * held-out checks. */
+void nl_study_cheng_pool_case(const nl_study_cheng *s, nl_study_cheng_pools *T, const nl_cheng_thesis_gmm *th,
+                              const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nseeds,
+                              int full);
+
+/* C6's tables: reps (one row per reproduction: texture, swap, rep, E_ks, p_ks,
+ * E_con, ks2_D against the original's angles, ms_reproduce, ms_texture) and
+ * its summary (per texture: the original, then the reproductions with and
+ * without the swap: means, sd, fractions below the original, times, K). */
+nl_table *nl_study_cheng_reps_alloc(void);
+nl_table *nl_study_cheng_reps_summary_alloc(void);
+/* One texture: original, pool, matched-K0 mixture, then nrep reproductions
+ * with the high entries swapped (fraction `swap`) and nrep without; writes
+ * textures_TEX.png (original and 8 reproductions) and cdf_TEX.tsv. A
+ * degenerate model is reported in the text, with no reproductions. */
+void nl_study_cheng_reproduce_case(const nl_study_cheng *s, nl_table *reps, nl_table *sum, const nl_cheng_thesis_gmm *th,
+                                   const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nrep,
+                                   double swap);
 
 #endif
