@@ -211,3 +211,20 @@ const char *nl_study_text(const nl_table *t, size_t r, const char *col)
 {
   return t->text[r * t->ncols + nl_table_column_must(t, col)];
 }
+
+nl_table *nl_study_cheng_table41(const nl_table *runs, const double (*thesis)[NL_STUDY_TABLE41_COLS], int npair)
+{
+  const char *cc[] = {"panel", "w1", "w2", "E_ks_thesis", "E_ks", "E_ks_sd", "E_con_thesis", "E_con", "E_con_sd",
+                      "E_ks_swapped", "E_con_swapped", "p_ks_min", "p_kuiper_min"};
+  nl_table *cmp = nl_table_alloc(sizeof cc / sizeof *cc, cc);
+  for (int i = 0; i < npair; i++) {
+    size_t p = 2 * (size_t)i, s = p + 1;   /* printed, swapped */
+    char panel[4] = {(char)('a' + i), 0};
+    nl_table_append(cmp, "sdddddddddddd", panel, thesis[i][0], thesis[i][2], thesis[i][1],
+                    nl_table_value(runs, p, "E_ks"), nl_table_value(runs, p, "E_ks_sd"), thesis[i][3],
+                    nl_table_value(runs, p, "E_con"), nl_table_value(runs, p, "E_con_sd"),
+                    nl_table_value(runs, s, "E_ks"), nl_table_value(runs, s, "E_con"),
+                    nl_table_value(runs, p, "p_ks_min"), nl_table_value(runs, p, "p_kuiper_min"));
+  }
+  return cmp;
+}
