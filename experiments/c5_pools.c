@@ -31,7 +31,7 @@ static void report(nl_run *r, const nl_study_cheng_pools *T, const nl_cheng_pool
                     "linkage (the Hausdorff-type merge distance: every pair in a cluster within the cutoff); %s "
                     "covariances; AIC threshold T = %g, path capped at K0 + %zu. Means and sd over %d seeds of the "
                     "input subsample and EM's k-means seeding, one pool per texture. All readings: "
-                    "src/cheng/nl_cheng.h, \"noise reproduction\".\n",
+                    "src/cheng/nl_cheng_repro.h.\n",
                  grid, grid, c->m, c->octaves, c->f1, c->a1, c->w1, c->w2, po->runs, po->keep, po->epsilon,
                  po->low_levels > 1 ? "s" : "", po->low_levels > 1 ? "..2" : "", mo->samples,
                  mo->gmm.covariance == NL_GMM_FULL ? "full" : "diagonal", mo->threshold, mo->k_extra, nseeds);

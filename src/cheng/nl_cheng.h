@@ -29,6 +29,7 @@
  *   nl_cheng_eval ev; nl_cheng_evaluate(g, &c, pat, &ev, &err);         // E_KS, V, chi2, p, E_Con
  *   nl_cheng_value_grid(g, &c, 256, 256, v);       // the controlled value on [0,1)^2
  * (nl_cheng_run does the last five lines in one call.)
+ *
  * THE MODEL (thesis setting in nl_cheng_config_default)
  *   Noise(x, y) = sum over the 4 cell corners (i, j) of w(x-i) w(y-j) (Delta_ij . G_ij)
  *   (eq. 3.1-3.2), G_ij = G[P[P[i] + j]] (nl_grad2, M = 512 angles, quintic fade);

@@ -1,7 +1,7 @@
 /* The model of the solution pool (Cheng sec. 3.5.2-3.5.3): circular
  * representation, complete-linkage clustering for the initial K, Gaussian
  * mixture by EM with the AIC rule, and reproduction by sampling (readings in
- * nl_cheng.h, "noise reproduction"). */
+ * nl_cheng_repro.h). */
 #include "cheng/nl_cheng_internal.h"
 #include "stats/nl_cluster.h"
 

@@ -151,7 +151,7 @@ NL_TEST(clustering_and_aic_recover_k)
     NL_CHECK(nl_cheng_model_fit(pool, &o, 1, &m, &err) == NL_OK);
     NL_CHECK(m->k0 == 3 && m->status == NL_CHENG_MODEL_OK && m->n_in == 450);
     if (r) NL_CHECK(m->k == 3 && m->npath == 2 && m->path[1].aic > m->path[0].aic - o.threshold);
-    else NL_CHECK(m->k > 3);   /* cos/sin: AIC buys components for the circle's curvature (nl_cheng.h) */
+    else NL_CHECK(m->k > 3);   /* cos/sin: AIC buys components for the circle's curvature (nl_cheng_repro.h) */
     nl_cheng_model_check ck;
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     NL_CHECK(nl_cheng_model_assess(pool, m, 2000, rng, &ck, &err) == NL_OK);

@@ -80,14 +80,15 @@ nl_image *nl_cheng_pattern_panel(const nl_cheng_pattern *p, int size);
 /* ---- what C1-C7 share (nl_study_cheng.c) -------------------------------- */
 
 /* The opening every Cheng experiment shares: strips "--patterns DIR"
- * (nl_cheng_patterns_parse; "NAME: message", exit 2) into *patterns, starts the run, reads the
- * standard --set parameters into *c and *grid: grid (64), w1, w2, f1, a1,
- * octaves, temps (n_temps; quick 8), moves_per_var (quick 5), defaults
- * otherwise, and checks the patterns folder (nl_cheng_patterns_check; "NAME:
- * control patterns: ...", exit 2), all before the output folder is touched. The experiment then reads its own parameters and calls
+ * (nl_cheng_patterns_parse; "NAME: message", exit 2) into *patterns, starts
+ * the run, reads the standard --set parameters into *c and *grid: grid (64),
+ * w1, w2, f1, a1, octaves, temps (n_temps; quick 8), moves_per_var (quick 5),
+ * defaults otherwise, and checks the patterns folder (nl_cheng_patterns_check;
+ * "NAME: control patterns: ...", exit 2), all before the output folder is
+ * touched. The experiment then reads its own parameters and calls
  * nl_cheng_params_done. */
 nl_run *nl_cheng_begin(const char *name, const char *title, int *argc, char **argv,
-                              nl_cheng_config *c, int *grid, const char **patterns);
+                       nl_cheng_config *c, int *grid, const char **patterns);
 /* nl_run_params_done, then nl_cheng_config_check ("NAME: message", exit 2),
  * and the patterns folder into the manifest. */
 void nl_cheng_params_done(nl_run *r, const nl_cheng_config *c, const char *patterns);
@@ -102,7 +103,7 @@ void nl_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
 nl_table *nl_cheng_cdf_table(const nl_grad2 *const *tables, const char *const *names, int n);
 /* Histogram of each table's angles in `bins` bins: theta (bin centre), NAME counts. */
 nl_table *nl_cheng_hist_table(const nl_grad2 *const *tables, const char *const *names,
-                                     int n, size_t bins);
+                              int n, size_t bins);
 /* A w x h raster as a table of h rows and w columns c0..c{w-1} (gnuplot's
  * "matrix columnheaders" layout, for height maps). */
 nl_table *nl_cheng_matrix_table(const double *v, int w, int h);
