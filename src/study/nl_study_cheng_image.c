@@ -37,7 +37,6 @@ nl_status nl_cheng_pattern_read(const char *path, int grid, nl_cheng_pattern **o
   return NL_OK;
 }
 
-
 nl_image *nl_cheng_pattern_image(const nl_cheng_pattern *p)
 {
   nl_image *im = nl_image_alloc(p->grid, p->grid, 3);
@@ -48,7 +47,6 @@ nl_image *nl_cheng_pattern_image(const nl_cheng_pattern *p)
   }
   return im;
 }
-
 
 /* ---- shapes: red = f(u, v) on [-1, 1]^2, v down the image ---------------- */
 
@@ -119,7 +117,6 @@ nl_image *nl_cheng_shape(const char *name, int size)
     }
   return im;
 }
-
 
 /* ---- the experiments' pattern folder ------------------------------------ */
 

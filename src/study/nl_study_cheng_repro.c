@@ -8,7 +8,6 @@
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>
 #include <stdio.h>
-
 #include <stdlib.h>
 #include <string.h>
 
@@ -84,7 +83,6 @@ static const char *const rules[NRULE] = {"thesis", "matched_K0"};
 static const char *const variants[NVAR] = {"full_cossin", "diag_cossin", "full_unwrap"};
 
 typedef struct { double k0[MAXSEEDS], k[MAXSEEDS], aic[MAXSEEDS], bic[MAXSEEDS], ll[MAXSEEDS], sec; int ok; const char *status; } fits;
-
 
 /* The model over the run's seeds (input subsample and k-means seed); the
  * first seed's model is returned. */
