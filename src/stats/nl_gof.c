@@ -470,3 +470,8 @@ double nl_ecdf_eval(const nl_ecdf *e, double t)
   }
   return (double)lo / (double)e->n;
 }
+
+size_t nl_stats_chisq_bin(double v, size_t k, double a, double b)
+{
+  return bin_index(v, k, a, b);
+}

@@ -203,6 +203,16 @@ double nl_ecdf_eval(const nl_ecdf *e, double t);
 gsl_histogram *nl_histogram_uniform(const double *x, size_t n, size_t k, double a,
                                     double b, size_t *outside, nl_error *err);
 
+/* The bin of v among k equal bins of [a, b] by the rule nl_histogram_uniform
+ * and nl_chisq_test_uniform use (numpy.histogram's): the index computed
+ * arithmetically, then corrected against the bin edges a + i (b - a)/k so
+ * that a value on an edge goes to the bin the edge opens; the last bin is
+ * closed, values above b clamp to it. Exported, as GSL exports
+ * gsl_histogram_find, for code that keeps bin counts itself (the chi-square
+ * term of the Cheng optimiser updates one count per move) and must bin
+ * exactly as the test it is checked against. k >= 1, a < b. */
+size_t nl_stats_chisq_bin(double v, size_t k, double a, double b);
+
 /* Sorts doubles ascending (introsort specialised for double: 3-4x faster
  * than qsort with a comparison callback at n = 512). NaN not allowed. */
 void nl_sort_double(double *x, size_t n);

@@ -1,7 +1,8 @@
-/* The loops and tables experiments C1-C4 and C7 share: standard parameters,
- * runs over seeds, summary rows (mean and spread), CDF and histogram tables. */
-#include "cheng/nl_cheng_internal.h"
-#include "report/nl_report.h"
+/* The opening and tables experiments C1-C7 share: --patterns, standard
+ * parameters, summary rows (mean and spread over seeds), CDF, histogram and
+ * height-map tables. */
+#include "study/nl_study_cheng.h"
+#include "stats/nl_stats.h"
 
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>
@@ -48,18 +49,6 @@ void nl_cheng_params_done(nl_run *r, const nl_cheng_config *c, const char *patte
   nl_run_note(r, "patterns", "%s", patterns);
 }
 
-nl_status nl_cheng_run_seeds(const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                             unsigned long seed0, int k, nl_cheng_eval *evs, nl_grad2 **first,
-                             nl_error *err)
-{
-  for (int s = 0; s < k; s++) {
-    nl_status st = nl_cheng_run(c, pat, nl_seed_replicate(seed0, s), &evs[s], NULL,
-                                s == 0 ? first : NULL, err);
-    if (st) return st;
-  }
-  return NL_OK;
-}
-
 static const char *const summary_cols[] = {
   "seeds", "E_ks", "E_ks_sd", "p_ks", "p_ks_min", "V_kuiper", "V_kuiper_sd", "p_kuiper",
   "p_kuiper_min", "chi2", "chi2_sd", "p_chi2", "E_con", "E_con_sd", "rms_con", "E",
@@ -76,8 +65,15 @@ nl_table *nl_cheng_summary_alloc(int nlabels, const char *const *labels)
 
 #define FIELD(evs, k, f, out) do { for (int i_ = 0; i_ < (k); i_++) (out)[i_] = (evs)[i_].f; } while (0)
 
-static double sd_of(const double *x, int k) { return k > 1 ? gsl_stats_sd(x, 1, (size_t)k) : 0.0; }
-static double min_of(const double *x, int k) { double m = x[0]; for (int i = 1; i < k; i++) m = fmin(m, x[i]); return m; }
+double nl_study_mean(const double *x, int n) { return gsl_stats_mean(x, 1, (size_t)n); }
+double nl_study_sd(const double *x, int n) { return n > 1 ? gsl_stats_sd(x, 1, (size_t)n) : 0.0; }
+double nl_study_min(const double *x, int n)
+{
+  double m = x[0];
+  for (int i = 1; i < n; i++) m = fmin(m, x[i]);
+  return m;
+}
+
 static double frac_at_least(const double *x, int k, double a)
 {
   int n = 0;
@@ -91,30 +87,28 @@ static double frac_at_least(const double *x, int k, double a)
 void nl_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
                           const nl_cheng_eval *evs, int k)
 {
-  double *x = nl_xmalloc((size_t)k * sizeof *x), row[32];
-  int c = nlabels;
+  double *x = nl_xmalloc((size_t)k * sizeof *x), row[NSUM];
+  int c = 0;
   row[c++] = k;
-  FIELD(evs, k, e_ks, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k); row[c++] = sd_of(x, k);
-  FIELD(evs, k, p_ks, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k); row[c++] = min_of(x, k);
+  FIELD(evs, k, e_ks, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, p_ks, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_min(x, k);
   double uks = frac_at_least(x, k, 0.05);
-  FIELD(evs, k, kuiper_v, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k); row[c++] = sd_of(x, k);
-  FIELD(evs, k, p_kuiper, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k); row[c++] = min_of(x, k);
+  FIELD(evs, k, kuiper_v, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, p_kuiper, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_min(x, k);
   double uku = frac_at_least(x, k, 0.05);
-  FIELD(evs, k, chi2, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k); row[c++] = sd_of(x, k);
-  FIELD(evs, k, p_chi2, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k);
-  FIELD(evs, k, e_con, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k); row[c++] = sd_of(x, k);
-  FIELD(evs, k, rms_con, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k);
-  FIELD(evs, k, e, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k);
+  FIELD(evs, k, chi2, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, p_chi2, x); row[c++] = nl_study_mean(x, k);
+  FIELD(evs, k, e_con, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, rms_con, x); row[c++] = nl_study_mean(x, k);
+  FIELD(evs, k, e, x); row[c++] = nl_study_mean(x, k);
   row[c++] = uks;
   row[c++] = uku;
-  FIELD(evs, k, roughness, x); row[c++] = gsl_stats_mean(x, 1, (size_t)k); row[c++] = sd_of(x, k);
-  for (int i = 0; i < nlabels; i++) row[i] = 0;
-  nl_table_append_doubles(t, row);
-  size_t r = t->nrows - 1;
-  for (int i = 0; i < nlabels; i++) {
-    t->num[r * t->ncols + (size_t)i] = NAN;
-    t->text[r * t->ncols + (size_t)i] = nl_xstrdup(labels[i]);
-  }
+  FIELD(evs, k, roughness, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  size_t r = nl_table_append_empty(t);
+  for (size_t i = 0; i < NSUM; i++) nl_table_set(t, r, summary_cols[i], row[i]);
+  /* nl_table has no text setter yet: a label cell is text with a NaN number,
+   * the layout nl_table_append gives an 's' cell. */
+  for (int i = 0; i < nlabels; i++) t->text[r * t->ncols + (size_t)i] = nl_xstrdup(labels[i]);
   free(x);
 }
 
@@ -159,35 +153,6 @@ nl_table *nl_cheng_hist_table(const nl_grad2 *const *tables, const char *const *
   return t;
 }
 
-nl_image *nl_cheng_value_image(const nl_grad2 *g, const nl_cheng_config *c, int size)
-{
-  double *v = nl_xmalloc((size_t)size * size * sizeof *v);
-  nl_cheng_value_grid(g, c, size, size, v);
-  nl_image *im = nl_cheng_grey_image(v, size, size);
-  free(v);
-  return im;
-}
-
-nl_image *nl_cheng_texture_image(const nl_grad2 *g, const nl_cheng_config *c, int size)
-{
-  double *v = nl_xmalloc((size_t)size * size * sizeof *v);
-  nl_cheng_value_grid(g, c, size, size, v);
-  nl_image *im = nl_cheng_texture(c->con, v, size, size);
-  free(v);
-  return im;
-}
-
-nl_image *nl_cheng_pattern_panel(const nl_cheng_pattern *p, int size)
-{
-  nl_image *small = nl_cheng_pattern_image(p), *im = nl_image_alloc(size, size, 3);
-  for (int y = 0; y < size; y++)
-    for (int x = 0; x < size; x++)
-      memcpy(nl_image_pixel(im, x, y), nl_image_pixel(small, x * p->grid / size, y * p->grid / size),
-             3 * sizeof(float));
-  nl_image_free(small);
-  return im;
-}
-
 nl_table *nl_cheng_matrix_table(const double *v, int w, int h)
 {
   char (*names)[16] = nl_xmalloc((size_t)w * sizeof *names);
@@ -200,12 +165,66 @@ nl_table *nl_cheng_matrix_table(const double *v, int w, int h)
   return t;
 }
 
-double nl_cheng_ks_median(size_t n)
+void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title, int *argc, char **argv)
 {
-  double lo = 0, hi = 1;   /* bisection on the exact CDF of D_n */
-  for (int it = 0; it < 60; it++) {
-    double mid = 0.5 * (lo + hi);
-    if (nl_ks_cdf(n, mid, NULL) < 0.5) lo = mid; else hi = mid;
+  s->r = nl_cheng_begin(name, title, argc, argv, &s->c, &s->grid, &s->patterns);
+}
+
+void nl_study_cheng_ready(nl_study_cheng *s) { nl_cheng_params_done(s->r, &s->c, s->patterns); }
+
+nl_cheng_pattern *nl_study_cheng_pattern(const nl_study_cheng *s, const char *name)
+{
+  return nl_cheng_pattern_load_or_die(nl_run_name(s->r), s->patterns, name, s->grid);
+}
+
+nl_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_config *c,
+                               const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
+                               const char *const *labels)
+{
+  int k = nl_run_seeds(s->r);
+  nl_cheng_eval *evs = nl_xmalloc((size_t)k * sizeof *evs);
+  nl_grad2 *first;
+  nl_error err;
+  if (nl_cheng_run_seeds(c, pat, nl_run_seed(s->r), k, evs, &first, &err)) nl_run_die(s->r, 1, "%s", err.msg);
+  nl_cheng_summary_add(sum, nlabels, labels, evs, k);
+  free(evs);
+  return first;
+}
+
+void nl_study_cheng_montage(nl_run *r, nl_image **panels, const char *const *labels, int n, int cols,
+                            const char *title, const char *file)
+{
+  nl_image *m = nl_montage((const nl_image *const *)panels, labels, n, cols, title);
+  nl_run_image(r, m, file);
+  nl_image_free(m);
+  for (int i = 0; i < n; i++) nl_image_free(panels[i]);
+}
+
+double nl_study_column_min(const nl_table *t, const char *col)
+{
+  double m = INFINITY;
+  for (size_t q = 0; q < t->nrows; q++) m = fmin(m, nl_table_value(t, q, col));
+  return m;
+}
+
+const char *nl_study_text(const nl_table *t, size_t r, const char *col)
+{
+  return t->text[r * t->ncols + nl_table_column_must(t, col)];
+}
+
+nl_table *nl_study_cheng_table41(const nl_table *runs, const double (*thesis)[NL_STUDY_TABLE41_COLS], int npair)
+{
+  const char *cc[] = {"panel", "w1", "w2", "E_ks_thesis", "E_ks", "E_ks_sd", "E_con_thesis", "E_con", "E_con_sd",
+                      "E_ks_swapped", "E_con_swapped", "p_ks_min", "p_kuiper_min"};
+  nl_table *cmp = nl_table_alloc(sizeof cc / sizeof *cc, cc);
+  for (int i = 0; i < npair; i++) {
+    size_t p = 2 * (size_t)i, s = p + 1;   /* printed, swapped */
+    char panel[4] = {(char)('a' + i), 0};
+    nl_table_append(cmp, "sdddddddddddd", panel, thesis[i][0], thesis[i][2], thesis[i][1],
+                    nl_table_value(runs, p, "E_ks"), nl_table_value(runs, p, "E_ks_sd"), thesis[i][3],
+                    nl_table_value(runs, p, "E_con"), nl_table_value(runs, p, "E_con_sd"),
+                    nl_table_value(runs, s, "E_ks"), nl_table_value(runs, s, "E_con"),
+                    nl_table_value(runs, p, "p_ks_min"), nl_table_value(runs, p, "p_kuiper_min"));
   }
-  return 0.5 * (lo + hi);
+  return cmp;
 }
