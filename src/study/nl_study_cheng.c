@@ -106,9 +106,7 @@ void nl_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
   FIELD(evs, k, roughness, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
   size_t r = nl_table_append_empty(t);
   for (size_t i = 0; i < NSUM; i++) nl_table_set(t, r, summary_cols[i], row[i]);
-  /* nl_table has no text setter yet: a label cell is text with a NaN number,
-   * the layout nl_table_append gives an 's' cell. */
-  for (int i = 0; i < nlabels; i++) t->text[r * t->ncols + (size_t)i] = nl_xstrdup(labels[i]);
+  for (int i = 0; i < nlabels; i++) nl_table_set_text(t, r, t->names[i], labels[i]);
   free(x);
 }
 
