@@ -1,5 +1,4 @@
 #include "cellular/nl_cellular.h"
-#include "image/nl_image.h"
 
 #include <ctype.h>
 #include <gsl/gsl_randist.h>
@@ -467,33 +466,6 @@ void nl_gctbf_cloud_grid(const nl_gctbf_basis *b, int octaves, double k,
                          const nl_window *win, double *out)
 {
   octave_grid(b, octaves, k, win, cloud_term, out);
-}
-
-nl_ramp nl_cellular_marble_ramp(void)
-{
-  static const float k[13][3] = {
-    {0.25f, 0.25f, 0.35f}, {0.25f, 0.25f, 0.35f}, {0.10f, 0.10f, 0.30f}, {0.10f, 0.10f, 0.30f},
-    {0.10f, 0.10f, 0.30f}, {0.25f, 0.25f, 0.35f}, {0.25f, 0.25f, 0.35f}, {0.05f, 0.05f, 0.26f},
-    {0.05f, 0.05f, 0.26f}, {0.03f, 0.03f, 0.20f}, {0.03f, 0.03f, 0.20f}, {0.25f, 0.25f, 0.35f},
-    {0.03f, 0.03f, 0.20f}};
-  return nl_ramp_spline(13, k);
-}
-
-static double smoothstep01(double t)
-{
-  t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
-  return t * t * (3.0 - 2.0 * t);   /* RenderMan's Hermite smoothstep */
-}
-
-nl_image *nl_gctbf_cloud_colour(const double *v, int w, int h)
-{
-  static const float sky[3] = {0.15f, 0.15f, 0.60f}, cloud[3] = {1.0f, 1.0f, 1.0f};
-  nl_image *im = nl_image_alloc(w, h, 3);
-  for (size_t k = 0; k < (size_t)w * h; k++) {
-    float t = (float)smoothstep01(v[k]);
-    for (int a = 0; a < 3; a++) im->data[3 * k + a] = (1.0f - t) * sky[a] + t * cloud[a];
-  }
-  return im;
 }
 
 void nl_heightfield_shade(const double *height, int w, int h, double spacing,
