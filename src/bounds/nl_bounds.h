@@ -64,6 +64,7 @@
 
 #include "base/nl_base.h"
 #include "noise/nl_noise.h"
+#include "spectrum/nl_spectrum.h"   /* nl_psd1: bounds sits above spectrum */
 
 /* ---- fractal bounds (eq. 4.1-4.3) ------------------------------------ */
 
@@ -135,8 +136,8 @@ nl_status nl_smoke_decision_map(const nl_perm3 *p, const nl_smoke *s, double z, 
 
 #define NL_BOUNDS_T (4.0 / (255.0 * 255.0))   /* (2/255)^2 */
 
-/* f and P hold n/2 + 1 values. n >= 2, rate > 0. */
-nl_status nl_psd1(const double *x, size_t n, double rate, double *f, double *P, nl_error *err);
+/* The one-sided PSD of a line sample is nl_psd1 (spectrum/nl_spectrum.h):
+ * every FFT of the project is wrapped once, in the spectrum module. */
 /* gamma[k] = sum_{j >= k} P[j], k < m. */
 void nl_psd1_tail(const double *P, size_t m, double *gamma);
 /* Smallest f[k] with gamma[k] <= e (f[m-1] if none). */
