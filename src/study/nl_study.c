@@ -71,3 +71,23 @@ nl_window nl_study_window(nl_run *r)
   nl_window w = {0, 0, z, extent, size, size};
   return w;
 }
+
+nl_table *nl_study_octave_series(nl_run *r, const nl_window *win, int turbulence, const char *slides,
+                                 const char *prefix, const char *title)
+{
+  nl_report_text(r, "**Slides:** %s **Ours:** the slice z = %g of Perlin's improved 3D noise over "
+                    "[0, %g)^2, %d seeds for the numbers.\n", slides, win->z, win->size, nl_run_seeds(r));
+  const int oct[] = {1, 2, 3, 8};   /* the slides' panels (a)-(d) */
+  nl_setting st[4];
+  char labels[4][32];
+  nl_study_octave_settings(oct, 4, turbulence, st, labels);
+  return nl_study_series(r, prefix, title, NL_BASIS_IMPROVED3, st, 4, win);
+}
+
+void nl_study_montage(nl_run *r, const nl_image *const *panels, const char *const *labels, int n,
+                      int cols, const char *title, const char *file)
+{
+  nl_image *m = nl_montage(panels, labels, n, cols, title);
+  nl_run_image(r, m, file);
+  nl_image_free(m);
+}

@@ -72,4 +72,17 @@ nl_window nl_study_window(nl_run *r);
 void nl_study_octave_settings(const int *oct, int n, int turbulence, nl_setting *settings,
                               char (*labels)[32]);
 
+/* S1 and S2: Shaffer's sums at 1, 2, 3 and 8 octaves (fractal sum, or
+ * turbulence when `turbulence`), introduced by one paragraph ("**Slides:**
+ * SLIDES **Ours:** the slice z = ... over [0, size)^2, K seeds ...") and
+ * surveyed by nl_study_series. Returns the distribution table (caller frees). */
+nl_table *nl_study_octave_series(nl_run *r, const nl_window *win, int turbulence, const char *slides,
+                                 const char *prefix, const char *title);
+
+/* Lays panels out in a montage of `cols` columns (nl_montage), writes it as
+ * FILE in the run's folder (nl_run_image) and frees it: the figure step that
+ * most experiments end a loop with. */
+void nl_study_montage(nl_run *r, const nl_image *const *panels, const char *const *labels, int n,
+                      int cols, const char *title, const char *file);
+
 #endif
