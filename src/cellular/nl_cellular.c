@@ -468,6 +468,38 @@ void nl_gctbf_cloud_grid(const nl_gctbf_basis *b, int octaves, double k,
   octave_grid(b, octaves, k, win, cloud_term, out);
 }
 
+nl_status nl_cellular_texture_grid(nl_gctbf_texture kind, const char *expr, int octaves, double k,
+                                   const nl_window *win, unsigned long seed, double *v, nl_error *err)
+{
+  if (kind == NL_GCTBF_CLOUD && !expr) {
+    nl_perm3 p;
+    nl_perm3_seed(&p, seed);
+    nl_basis b = nl_basis_perm3(&p);
+    nl_octaves o = nl_octaves_fractal(octaves + 1);
+    for (int l = 0; l < o.n; l++) { o.freq[l] *= k; o.amp[l] = -o.amp[l]; }
+    nl_fractal_grid(&b, &o, win, v);
+    return NL_OK;
+  }
+  nl_cellular *c;
+  nl_status rc = nl_cellular_alloc(4.0, 50, NL_COUNT_INVERSE_CDF, seed, &c, err);
+  if (rc) return rc;
+  nl_gctbf_basis gb = {c, {0}};
+  rc = nl_gctbf_parse(kind == NL_GCTBF_FLAME ? "F1" : expr, &gb.g, err);
+  if (!rc && kind == NL_GCTBF_CLOUD) nl_gctbf_cloud_grid(&gb, octaves, k, win, v);
+  else if (!rc && kind == NL_GCTBF_FLAME) {
+    nl_basis b = nl_basis_gctbf(&gb);
+    nl_octaves o = nl_octaves_fractal(octaves + 1);
+    for (int l = 0; l < o.n; l++) o.freq[l] *= k;
+    nl_fractal_grid(&b, &o, win, v);
+  } else if (!rc) {
+    nl_window w = *win;
+    w.x0 *= k; w.y0 *= k; w.z *= k; w.size *= k;
+    nl_gctbf_grid(c, &gb.g, &w, v);
+  }
+  nl_cellular_free(c);
+  return rc;
+}
+
 void nl_heightfield_shade(const double *height, int w, int h, double spacing,
                           const double *light, double *out)
 {

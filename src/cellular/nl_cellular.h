@@ -152,6 +152,17 @@ void nl_gctbf_fractal_bump_grid(const nl_gctbf_basis *b, int octaves, double k,
 /* fractal(x) of eq. 7 with smoothscale = 1. */
 void nl_gctbf_cloud_grid(const nl_gctbf_basis *b, int octaves, double k,
                          const nl_window *win, double *out);
+/* Sec. 4.3's textures (Q4) for one seed: a fresh table (lambda = 4, M = 50,
+ * inverse-CDF counts) on win scaled by k, `octaves` after the first:
+ *   NL_GCTBF_CLOUD  eq. 7's fractal of expr (nl_gctbf_cloud_grid); expr NULL:
+ *                   of RenderMan's noise 0.5 + 0.5 N (improved noise of the
+ *                   seed), for which 1 - 2 noise = -N
+ *   NL_GCTBF_FLAME  the fractal sum of F1, sum_i F1(2^i k x) / 2^i
+ *   NL_GCTBF_PLAIN  the GCTBF expr itself (nl_gctbf_grid)
+ * v holds win->w * win->h values. NL_EINVAL for a bad expression. */
+typedef enum { NL_GCTBF_CLOUD, NL_GCTBF_FLAME, NL_GCTBF_PLAIN } nl_gctbf_texture;
+nl_status nl_cellular_texture_grid(nl_gctbf_texture kind, const char *expr, int octaves, double k,
+                                   const nl_window *win, unsigned long seed, double *v, nl_error *err);
 /* out = max(0, N . L) of the surface z = -height over a w x h grid (w, h >= 2) with spacing
  * `spacing`; light is a unit vector. */
 void nl_heightfield_shade(const double *height, int w, int h, double spacing,
