@@ -500,6 +500,14 @@ nl_status nl_cellular_texture_grid(nl_gctbf_texture kind, const char *expr, int 
   return rc;
 }
 
+void nl_cellular_count_moments(const double *hist, int M, double *mean, double *var)
+{
+  double n = 0, s1 = 0, s2 = 0;
+  for (int m = 0; m <= M; m++) { n += hist[m]; s1 += m * hist[m]; s2 += (double)m * m * hist[m]; }
+  *mean = s1 / n;
+  *var = s2 / n - *mean * *mean;
+}
+
 void nl_heightfield_shade(const double *height, int w, int h, double spacing,
                           const double *light, double *out)
 {

@@ -135,6 +135,8 @@ nl_basis nl_basis_gctbf(const nl_gctbf_basis *ctx);
 /* hist[m] (M + 1 entries) = number of cubes with m points among the cubes
  * (i, j, k), origin <= i, j, k < origin + side. */
 void nl_cellular_count_histogram(const nl_cellular *c, long origin, int side, double *hist);
+/* Mean and (population) variance of the counts 0..M of such a histogram. */
+void nl_cellular_count_moments(const double *hist, int M, double *mean, double *var);
 nl_status nl_cellular_count_chisq(const nl_cellular *c, const double *hist,
                                   nl_chisq_result *res, nl_error *err);
 /* 1 - exp(-lambda 4/3 pi r^3); params points to lambda. */
