@@ -13,6 +13,7 @@
 #ifndef NL_STUDY_H
 #define NL_STUDY_H
 
+#include "example/nl_example.h"
 #include "image/nl_image.h"
 #include "noise/nl_noise.h"
 #include "report/nl_report.h"
@@ -84,5 +85,20 @@ nl_table *nl_study_octave_series(nl_run *r, const nl_window *win, int turbulence
  * most experiments end a loop with. */
 void nl_study_montage(nl_run *r, const nl_image *const *panels, const char *const *labels, int n,
                       int cols, const char *title, const char *file);
+
+/* Radially averaged power (nl_radial_power, size / 2 bins, cycles per
+ * pixel) of n square size x size rasters: column "freq" then one column per
+ * raster named cols[i]; rows from bin `first` on. */
+nl_table *nl_study_radial_table(const double *const *img, const char *const *cols, int n, int size,
+                                int first);
+
+/* Two-sample KS distance between the intensities of a and b, per channel
+ * (per[0..2]; may be NULL) and their mean over R, G, B (the return): how
+ * far a synthesis' histograms are from its exemplar's (sec. 5). */
+double nl_study_ks_channels(const nl_image *a, const nl_image *b, double *per);
+
+/* Mean and sample sd (n - 1; 0 for n = 1) of n values, summed in order:
+ * the summaries of quantities measured over seeds. */
+void nl_study_mean_sd(const double *v, int n, double *m, double *sd);
 
 #endif
