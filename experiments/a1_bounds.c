@@ -60,7 +60,7 @@ int main(int argc, char **argv)
   nl_report_table(r, t, "Observed extremes against the bounds", 4);
   nl_report_figure(r, "bounds.png", "Largest |Fnoise_n| seen against S_{n-1} and 1.2247 S_{n-1}");
   double m1 = 0;
-  for (size_t k = 0; k < t->nrows; k++) m1 = fmax(m1, nl_table_get(t, k, 6));
+  for (size_t k = 0; k < t->nrows; k++) m1 = fmax(m1, nl_table_value(t, k, "max_noise"));
   nl_report_text(r, "The largest single-octave |noise| seen is %.4f. Improved noise can exceed 1 "
                     "(its analytic bound is 1.2247), so the paper's unit bound is an assumption, not a "
                     "theorem, for it: `over_paper*` count where it failed. Sums stay far inside either bound because the extremes of "
