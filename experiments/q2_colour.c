@@ -3,6 +3,7 @@
  * knots of sec. 4.1, for Perlin noise and five GCTBF combinations. */
 #include "cellular/nl_cellular.h"
 #include "report/nl_report.h"
+#include "study/nl_study.h"
 #include "texture/nl_texture.h"
 
 #include <gsl/gsl_statistics_double.h>
@@ -63,8 +64,7 @@ int main(int argc, char **argv)
     nl_table_append(t, "sdddd", labels[pat], st[0], st[1], st[2], st[3]);
   }
   nl_run_table(r, t, "values.tsv");
-  nl_image *m = nl_montage((const nl_image *const *)panels, labels, 6, 3, "Fig. 2: spline colour map");
-  nl_run_image(r, m, "colour.png");
+  nl_study_montage(r, (const nl_image *const *)panels, labels, 6, 3, "Fig. 2: spline colour map", "colour.png");
 
   nl_report_text(r, "**Paper (Fig. 2):** eq. 4 with the 13 blue-marble knots of sec. 4.1, Perlin noise "
                     "and five GCTBF combinations (images only; the combinations are drawn in the "
@@ -77,7 +77,6 @@ int main(int argc, char **argv)
   nl_report_table(r, t, "GCTBF values before the clamp", 4);
   nl_report_figure(r, "colour.png", "Fig. 2: Perlin noise and five GCTBF combinations through the 13-knot spline");
   for (int k = 0; k < 6; k++) nl_image_free(panels[k]);
-  nl_image_free(m);
   free(v);
   nl_table_free(t);
   nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
