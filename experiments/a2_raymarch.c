@@ -70,13 +70,19 @@ int main(int argc, char **argv)
   nl_run *r = nl_run_begin("a2_raymarch", "A2 - Incremental bounding on a ray-marched smoke ball", argc, argv);
   int quick = nl_run_quick(r);
   nl_smoke s = nl_smoke_default();
-  s.width = s.height = (int)nl_run_param_int(r, "size", quick ? 64 : 512, 8, 4096);
-  s.step = nl_run_param(r, "step", 0.01, 1e-4, 0.5);
-  s.stop_opacity = nl_run_param(r, "stop_opacity", 0.99, 0.0, 1.0);
-  s.slope = nl_run_param(r, "slope", -4.0, -1e3, -1e-3);
-  s.freq = nl_run_param(r, "freq", 4.0, 1e-3, 1e3);
-  s.kappa = nl_run_param(r, "kappa", 30.0, 0.0, 1e6);
-  s.octave_bound = nl_run_param(r, "octave_bound", NL_NOISE3_BOUND, 0.0, 10.0);
+  s.width = s.height = (int)nl_run_param_int(r, "size", quick ? 64 : 512, 8, 4096,
+                                             "image width and height in pixels of the ray-marched smoke ball (quick 64)");
+  s.step = nl_run_param(r, "step", 0.01, 1e-4, 0.5, "ray-march step length in unit-cube units");
+  s.stop_opacity = nl_run_param(r, "stop_opacity", 0.99, 0.0, 1.0,
+                                "a ray stops when its opacity 1 - T reaches this (Arnerin: 0.99)");
+  s.slope = nl_run_param(r, "slope", -4.0, -1e3, -1e-3,
+                         "slope a < 0 of the smoke ball's density CLAMP(a d + 1 + Fnoise(p)) (Arnerin -4)");
+  s.freq = nl_run_param(r, "freq", 4.0, 1e-3, 1e3,
+                        "frequency f0 of the first noise octave (Arnerin 4)");
+  s.kappa = nl_run_param(r, "kappa", 30.0, 0.0, 1e6,
+                         "extinction per unit density and unit length, T <- T exp(-kappa density h) (Arnerin 30)");
+  s.octave_bound = nl_run_param(r, "octave_bound", NL_NOISE3_BOUND, 0.0, 10.0,
+                                "assumed sup |noise| of one octave in the incremental bound (Arnerin: 1; default measured bound)");
   nl_run_params_done(r);
   int seeds = nl_run_seeds(r);
   size_t npix = (size_t)s.width * s.height;

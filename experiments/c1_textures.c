@@ -21,7 +21,8 @@ int main(int argc, char **argv)
   int grid;
   const char *pdir;
   nl_run *r = nl_cheng_begin("c1_textures", "C1 - controlled cloud, marble, erosion and fire (Fig 4.1-4.4)", &argc, argv, &base, &grid, &pdir);
-  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 256, 16, 2048);
+  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 256, 16, 2048,
+                                   "side in pixels of the texture and control-value images (quick 128)");
   nl_cheng_params_done(r, &base, pdir);
   nl_cheng_pattern *pat[NTEX][NPAT];
   for (int t = 0; t < NTEX; t++)

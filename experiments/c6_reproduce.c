@@ -145,8 +145,10 @@ int main(int argc, char **argv)
   nl_cheng_pool_options po;
   nl_cheng_model_options mo;
   nl_cheng_repro_params(r, &po, &mo);
-  int nrep = (int)nl_run_param_int(r, "reps", nl_run_quick(r) ? NSHOW : 24, NSHOW, 4096);
-  double swap = nl_run_param(r, "swap", 1.0, 0, 1);
+  int nrep = (int)nl_run_param_int(r, "reps", nl_run_quick(r) ? NSHOW : 24, NSHOW, 4096,
+                                   "reproductions per texture from its fitted mixture (at least the panels shown; quick: that many)");
+  double swap = nl_run_param(r, "swap", 1.0, 0, 1,
+                             "fraction of the high-frequency entries permuted in a reproduction (1: all, the thesis; 0: none)");
   nl_cheng_params_done(r, &base, pdir);
   nl_table *reps = nl_table_alloc(sizeof rep_cols / sizeof *rep_cols, rep_cols);
   nl_table *sum = nl_table_alloc(sizeof sum_cols / sizeof *sum_cols, sum_cols);

@@ -14,7 +14,8 @@ int main(int argc, char **argv)
   int grid;
   const char *pdir;
   nl_run *r = nl_cheng_begin("c7_terrain", "C7 - terrain height maps (Fig 4.15-4.17)", &argc, argv, &c, &grid, &pdir);
-  int mesh = (int)nl_run_param_int(r, "mesh", nl_run_quick(r) ? 48 : 96, 8, 512);
+  int mesh = (int)nl_run_param_int(r, "mesh", nl_run_quick(r) ? 48 : 96, 8, 512,
+                                   "height-map mesh side: mesh x mesh heights per terrain (quick 48)");
   nl_cheng_params_done(r, &c, pdir);
   const char *names[NPAT] = {"flower", "x", "star"};
   nl_cheng_pattern *pat[NPAT];
