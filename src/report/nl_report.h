@@ -206,6 +206,41 @@ void nl_run_check_measured(nl_run *r, const char *table, double multiple);
 /* Parses a rule string as above; "rule 'x': ..." on error. */
 nl_status nl_check_rule_parse(const char *s, nl_check_rule *rule, nl_error *err);
 
+/* ---- the regression check (nl_report_check.c) ------------------------
+ *
+ * Compares a committed run folder with a new one by the committed folder's
+ * checks.tsv (the reference says how it may be compared):
+ *
+ *   nl_check_state s = {0};                 // s.all = 1: every drifted value
+ *   if (nl_report_check_experiment(&s, "results/s3_fbm", "build/check/s3_fbm", &err))
+ *     ... bad input: err.msg ...
+ *   nl_report_check_totals(&s);             // "check: 1 experiment, ..."
+ *   return s.drifted ? 1 : 0;
+ *
+ * Every table (nl_run_tables) of the committed folder is compared cell by
+ * cell by its rule; the manifests' experiment, seed, seeds, quick and param
+ * lines must match exactly (the others never are). Written to s.out
+ * (stdout when NULL), one tab-separated line per drifted value
+ *   experiment  table  row  column  committed  new  rule[: detail]
+ * (row: 1-based data row, with its first text cell as a label), the first
+ * NL_CHECK_SHOWN of an experiment unless s.all; after an experiment with
+ * drift a line "check: EXP: D drifted[ (first 10 shown; ...)]; reference vs
+ * this run: CPU same|other|unknown (...), BLAS kernel ...". welch and ftest
+ * p-values come from nl_stats_welch_p and nl_stats_ftest_p. Returns NL_OK
+ * whether or not there was drift (counted in s), else a one-line message:
+ * a missing folder or manifest, an unreadable table, a malformed rule or a
+ * rule naming a missing column (the comparison stops there). */
+#define NL_CHECK_SHOWN 10   /* drifted values printed per experiment without `all` */
+typedef struct {
+  int all;                  /* print every drifted value */
+  FILE *out;                /* the report; NULL: stdout */
+  size_t experiments, tables, values, drifted;   /* totals so far */
+} nl_check_state;
+nl_status nl_report_check_experiment(nl_check_state *s, const char *ref_dir, const char *new_dir,
+                                     nl_error *err);
+/* "check: E experiments, T tables, V values compared, D drifted". */
+void nl_report_check_totals(const nl_check_state *s);
+
 /* The data tables of a run folder: every *.tsv but manifest.tsv and
  * checks.tsv (hidden files are temporaries), sorted by name. Caller frees
  * each name and the array (never NULL when the folder is read, even if
