@@ -35,6 +35,16 @@ struct nl_run {
   double last_progress;
 };
 
+/* The compiler by name and version: gcc's __VERSION__ is the bare number
+ * ("12.2.0"), clang's already names itself ("Debian Clang 14.0.6"). */
+#if defined(__clang__)
+#define NL_COMPILER __VERSION__
+#elif defined(__GNUC__)
+#define NL_COMPILER "gcc " __VERSION__
+#else
+#define NL_COMPILER __VERSION__
+#endif
+
 static void usage(const char *name, const char *title)
 {
   printf("%s - %s\n\n"
@@ -535,7 +545,7 @@ int nl_run_end(nl_run *r)
   note(r, "commit", commit && *commit ? commit : "unknown");
   nl_run_note(r, "gsl", "%s", GSL_VERSION);
   nl_run_note(r, "openimageio", "%s", nl_image_library_version());
-  nl_run_note(r, "compiler", "%s", __VERSION__);
+  nl_run_note(r, "compiler", "%s", NL_COMPILER);
   note(r, "cflags", NL_BUILD_CFLAGS);
   note_platform(r);
   note(r, "started", r->started);

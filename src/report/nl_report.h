@@ -31,7 +31,8 @@
  * --set values are then not checked, the defaults are listed).
  * The manifest (manifest.tsv: key, value) records the experiment, seed,
  * parameters, commit (NL_COMMIT from the entry script), library versions,
- * wall time, peak memory and where it was made: compiler (version), cflags
+ * wall time, peak memory and where it was made: compiler (name and version,
+ * "gcc 12.2.0"), cflags
  * (project and user C flags, buildtype, optimisation, sanitizers), cpu
  * (/proc/cpuinfo model name), blas (library file; "OpenBLAS (path)" when
  * OpenBLAS is loaded), blas_core, blas_config, blas_threads (OpenBLAS's
