@@ -56,8 +56,10 @@ err="$("$s3" --quick --out "$out/fresh" --set nosuch=1 2>&1 >/dev/null)" || true
 [[ "$err" == *"(valid: size, extent, z, octaves)" ]] || { echo "unknown --set does not list the names: '$err'"; exit 1; }
 
 # --params: a header and one TSV line per parameter (5 fields, a meaning),
-# exit 0, no folder; answered even with a --set the listing does not check.
-p="$("$s3" --params --out "$out/params" --set octaves=99)" || { echo "--params failed"; exit 1; }
+# exit 0, no folder; a --set given with it is checked as for a run.
+p="$("$s3" --params --out "$out/params" --set octaves=2)" || { echo "--params failed"; exit 1; }
+rejected "outside" "$s3" --params --out "$out/params" --set octaves=99
+rejected "(valid: size, extent, z, octaves)" "$s3" --params --out "$out/params" --set nosuch=1
 [ "$(printf '%s\n' "$p" | head -n 1)" = $'name\tdefault\tmin\tmax\tmeaning' ] || { echo "--params header: '$p'"; exit 1; }
 printf '%s\n' "$p" | grep -q $'^octaves\t6\t1\t30\t[a-z]' || { echo "--params has no octaves line: '$p'"; exit 1; }
 printf '%s\n' "$p" | awk -F'\t' 'NF != 5 || $5 == "" { bad = 1 } END { exit bad }' || { echo "--params lines need 5 fields and a meaning: '$p'"; exit 1; }

@@ -259,16 +259,14 @@ static const char *set_value(nl_run *r, const char *name)
 }
 
 /* Records the declaration (for --params, --help and the unknown-name error)
- * and returns the --set value for name (NULL if none, or when only listing:
- * a listing shows the defaults and checks no value) with its label. */
+ * and returns the --set value for name (NULL if none) with its label. */
 static const char *param_value(nl_run *r, const char *name, double def, double lo, double hi,
                                int is_int, const char *meaning, char *what, size_t n)
 {
   r->param = nl_xrealloc(r->param, (r->nparam + 1) * sizeof *r->param);
   r->param[r->nparam++] = (nl_run_param_info){name, def, lo, hi, is_int, meaning ? meaning : ""};
   snprintf(what, n, "--set %s", name);
-  const char *v = set_value(r, name);
-  return r->listing ? NULL : v;
+  return set_value(r, name);
 }
 
 double nl_run_param(nl_run *r, const char *name, double def, double lo, double hi, const char *meaning)
@@ -297,12 +295,6 @@ long nl_run_param_int(nl_run *r, const char *name, long def, long lo, long hi, c
 void nl_run_params_done(nl_run *r)
 {
   r->params_checked = 1;
-  if (r->listing) {   /* --help or --params: the list, and nothing else */
-    if (r->listing == 1) usage(r->name, r->title);
-    nl_run_params_print(r, stdout, r->listing == 1);
-    fflush(stdout);
-    exit(ferror(stdout) ? 1 : 0);
-  }
   for (int k = 0; k < r->nset; k++) {
     if (r->set_used[k]) continue;
     /* One line that names the valid parameters, so a typo is fixed at once. */
@@ -316,6 +308,15 @@ void nl_run_params_done(nl_run *r)
     }
     nl_run_die(r, 2, "--set %s: unknown parameter for %s (valid: %s)", r->set_key[k], r->name,
                r->nparam ? names : "none");
+  }
+  /* --help or --params: the list, and nothing else. Any --set given was
+   * checked like a run's, so `--params --set ...` validates a sweep's values
+   * without doing the work. */
+  if (r->listing) {
+    if (r->listing == 1) usage(r->name, r->title);
+    nl_run_params_print(r, stdout, r->listing == 1);
+    fflush(stdout);
+    exit(ferror(stdout) ? 1 : 0);
   }
 }
 

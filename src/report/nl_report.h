@@ -27,8 +27,10 @@
  *                each: name, default, min, max, meaning; exit 0
  *   --help       the usage and the parameters in readable form; exit 0
  * --help and --params are answered at nl_run_params_done, when every
- * parameter is declared and before any work or output (no file is touched;
- * --set values are then not checked, the defaults are listed).
+ * parameter is declared and before any work or output (no file is touched).
+ * --set names and values given with them are checked as for a run (exit 2),
+ * so `--params --set NAME=VALUE...` validates a sweep point; the list shows
+ * the defaults.
  * The manifest (manifest.tsv: key, value) records the experiment, seed,
  * parameters, commit (NL_COMMIT from the entry script), library versions,
  * wall time, peak memory and where it was made: compiler (name and version,
@@ -98,9 +100,9 @@ double nl_run_param(nl_run *r, const char *name, double def, double lo, double h
 long nl_run_param_int(nl_run *r, const char *name, long def, long lo, long hi,
                       const char *meaning);
 /* Every parameter is declared: refuses a --set name none declared (exit 2,
- * one line listing the valid names); with --help or --params prints the
- * list (nl_run_params_print) and exits 0. Runs at the first write at the
- * latest. */
+ * one line listing the valid names); then, with --help or --params, prints
+ * the list (nl_run_params_print) and exits 0. Runs at the first write at
+ * the latest. */
 void nl_run_params_done(nl_run *r);
 
 /* A declared parameter (integers have is_int 1 and whole def, lo, hi). */
