@@ -11,8 +11,10 @@
 int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("a1_bounds", "A1 - Octave, fractal and incremental bounds", argc, argv);
-  int nmax = (int)nl_run_param_int(r, "octaves", nl_run_quick(r) ? 8 : 12, 1, 30);
-  long points = nl_run_param_int(r, "points", nl_run_quick(r) ? 5000 : 100000, 1, 100000000);
+  int nmax = (int)nl_run_param_int(r, "octaves", nl_run_quick(r) ? 8 : 12, 1, 30,
+                                   "largest octave count n the bounds are evaluated at (quick 8)");
+  long points = nl_run_param_int(r, "points", nl_run_quick(r) ? 5000 : 100000, 1, 100000000,
+                                 "random evaluation points per octave count the bounds are checked against (quick 5000)");
   nl_run_params_done(r);
   int seeds = nl_run_seeds(r);
   unsigned long seed0 = nl_run_seed(r);

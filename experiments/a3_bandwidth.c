@@ -60,10 +60,10 @@ int main(int argc, char **argv)
   nl_run *r = nl_run_begin("a3_bandwidth", "A3 - Spectral bandwidth of 1D Perlin noise", argc, argv);
   int quick = nl_run_quick(r);
   nl_bounds_reading rd;
-  rd.length = nl_run_param(r, "length", quick ? 128 : 512, 8, 1e6);
-  rd.rate = nl_run_param(r, "rate", quick ? 16 : 64, 1, 4096);
-  rd.shader = (int)nl_run_param_int(r, "shader", 1, 0, 1);
-  rd.axis = (int)nl_run_param_int(r, "axis", 0, 0, 1);
+  rd.length = nl_run_param(r, "length", quick ? 128 : 512, 8, 1e6, "length of the sampled 1D line in noise units (quick 128)");
+  rd.rate = nl_run_param(r, "rate", quick ? 16 : 64, 1, 4096, "samples per noise unit along the line (quick 16)");
+  rd.shader = (int)nl_run_param_int(r, "shader", 1, 0, 1, "1: the shader's stored (noise + 1) / 2; 0: raw noise");
+  rd.axis = (int)nl_run_param_int(r, "axis", 0, 0, 1, "0: the x axis through the origin; 1: an oblique line");
   nl_run_params_done(r);
   int seeds = nl_run_seeds(r) > 64 ? 64 : nl_run_seeds(r);
   unsigned long seed0 = nl_run_seed(r);

@@ -34,9 +34,12 @@ int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("a4_normalised", "A4 - Spectrally normalised noise", argc, argv);
   int quick = nl_run_quick(r);
-  int size = (int)nl_run_param_int(r, "size", quick ? 96 : 256, 8, 4096);
-  double rate2d = nl_run_param(r, "rate", 2.0, 0.1, 1024);
-  double length = nl_run_param(r, "length", quick ? 128 : 512, 8, 1e6);
+  int size = (int)nl_run_param_int(r, "size", quick ? 96 : 256, 8, 4096,
+                                   "side in pixels of the 2D noise images (quick 96)");
+  double rate2d = nl_run_param(r, "rate", 2.0, 0.1, 1024,
+                               "samples per unit of the 2D images and the 1D line (Arnerin Fig. 5.7: 2)");
+  double length = nl_run_param(r, "length", quick ? 128 : 512, 8, 1e6,
+                               "length of the sampled 1D line in noise units (quick 128)");
   nl_run_params_done(r);
   int seeds = nl_run_seeds(r) > 64 ? 64 : nl_run_seeds(r);
   double fs[64], a0[64], a1[64];

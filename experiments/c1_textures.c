@@ -20,7 +20,7 @@ int main(int argc, char **argv)
   nl_study_cheng s;
   nl_study_cheng_open(&s, "c1_textures", "C1 - controlled cloud, marble, erosion and fire (Fig 4.1-4.4)", &argc, argv);
   nl_run *r = s.r;
-  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 256, 16, 2048);
+  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 256, 16, 2048, "side in pixels of the texture and control-value images (quick 128)");
   nl_study_cheng_ready(&s);
   const nl_cheng_config base = s.c;
   int grid = s.grid, k = nl_run_seeds(r);

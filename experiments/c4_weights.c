@@ -37,13 +37,13 @@ int main(int argc, char **argv)
   nl_study_cheng s;
   nl_study_cheng_open(&s, "c4_weights", "C4 - weights of the KS and control terms (Table 4.1, Fig 4.8)", &argc, argv);
   nl_run *r = s.r;
-  int nsweep = (int)nl_run_param_int(r, "sweep_points", nl_run_quick(r) ? 6 : 24, 2, 1000);
-  /* The sweep is log-spaced in w1 / w2 (w1 + w2 = 1): the balance point lies
-   * at w1 / w2 ~ 1e2..1e3, where a log scale of w1 itself has no points. */
-  double lo = nl_run_param(r, "ratio_lo", 1e-5, 1e-12, 1e12), hi = nl_run_param(r, "ratio_hi", 1e5, 1e-12, 1e12);
+  int nsweep = (int)nl_run_param_int(r, "sweep_points", nl_run_quick(r) ? 6 : 24, 2, 1000, "points of the dense E_KS / E_Con trade-off sweep over w1 / w2 (quick 6)");
+  /* Log-spaced in w1 / w2 (w1 + w2 = 1): the balance lies at w1 / w2 ~ 1e2..1e3, where a log w1 scale has no points. */
+  double lo = nl_run_param(r, "ratio_lo", 1e-5, 1e-12, 1e12, "smallest w1 / w2 of the trade-off sweep (log-spaced, w1 + w2 = 1)");
+  double hi = nl_run_param(r, "ratio_hi", 1e5, 1e-12, 1e12, "largest w1 / w2 of the trade-off sweep (log-spaced, w1 + w2 = 1)");
   /* table=0: only the run at the configured (w1, w2), the unit a sweep of
    * w1 is made of (scripts/noiselab sweep c4 --param w1=... --param table=0). */
-  int table = (int)nl_run_param_int(r, "table", 1, 0, 1);
+  int table = (int)nl_run_param_int(r, "table", 1, 0, 1, "1: Table 4.1 and the trade-off sweep; 0: only the run at the configured w1, w2 (a sweep's unit)");
   nl_study_cheng_ready(&s);
   if (!(lo < hi)) nl_run_die(r, 2, "ratio_lo must be below ratio_hi");
   nl_cheng_pattern *pat = nl_study_cheng_pattern(&s, "flower");

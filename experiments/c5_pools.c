@@ -104,7 +104,8 @@ int main(int argc, char **argv)
   nl_cheng_pool_options po;
   nl_cheng_model_options mo;
   nl_cheng_repro_params(r, &po, &mo);
-  int alt = (int)nl_run_param_int(r, "alt_low_levels", 2, 0, 7);  /* erosion again, other split; 0: no */
+  int alt = (int)nl_run_param_int(r, "alt_low_levels", 2, 0, 7,
+                                  "C5 repeats erosion with this low/high split (low_levels); 0: no repeat");
   nl_study_cheng_ready(&s);
   nl_run_note(r, "pool_threads", "%d (results do not depend on it)", po.threads);
   int nseeds = nl_run_seeds(r) > NL_STUDY_CHENG_MAXSEEDS ? NL_STUDY_CHENG_MAXSEEDS : nl_run_seeds(r);

@@ -81,8 +81,8 @@ int main(int argc, char **argv)
   nl_cheng_pool_options po;
   nl_cheng_model_options mo;
   nl_cheng_repro_params(r, &po, &mo);
-  int nrep = (int)nl_run_param_int(r, "reps", nl_run_quick(r) ? NSHOW : 24, NSHOW, 4096);
-  double swap = nl_run_param(r, "swap", 1.0, 0, 1);
+  int nrep = (int)nl_run_param_int(r, "reps", nl_run_quick(r) ? NSHOW : 24, NSHOW, 4096, "reproductions per texture from its fitted mixture (at least the panels shown; quick: that many)");
+  double swap = nl_run_param(r, "swap", 1.0, 0, 1, "fraction of the high-frequency entries permuted in a reproduction (1: all, the thesis; 0: none)");
   nl_study_cheng_ready(&s);
   nl_table *reps = nl_study_cheng_reps_alloc(), *sum = nl_study_cheng_reps_summary_alloc();
   for (int t = 0; t < NTEX; t++) {

@@ -13,7 +13,7 @@ int main(int argc, char **argv)
   nl_study_cheng s;
   nl_study_cheng_open(&s, "c7_terrain", "C7 - terrain height maps (Fig 4.15-4.17)", &argc, argv);
   nl_run *r = s.r;
-  int mesh = (int)nl_run_param_int(r, "mesh", nl_run_quick(r) ? 48 : 96, 8, 512);
+  int mesh = (int)nl_run_param_int(r, "mesh", nl_run_quick(r) ? 48 : 96, 8, 512, "height-map mesh side: mesh x mesh heights per terrain (quick 48)");
   nl_study_cheng_ready(&s);
   const char *names[NPAT] = {"flower", "x", "star"};
   const nl_cheng_config c = s.c;

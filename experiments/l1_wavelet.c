@@ -13,10 +13,13 @@ int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("l1_wavelet", "L1 - Wavelet noise: band variance and band limits", argc, argv);
   int quick = nl_run_quick(r);
-  int size = (int)nl_run_param_int(r, "size", quick ? 128 : 512, 32, 4096);
-  int tile = (int)nl_run_param_int(r, "tile", NL_EXAMPLE_TILE, 8, 2048);
-  int tile3 = (int)nl_run_param_int(r, "tile3", quick ? 32 : NL_EXAMPLE_TILE3, 8, 256);
-  int band = (int)nl_run_param_int(r, "band", 2, 0, 8);   /* band shown in the images */
+  int size = (int)nl_run_param_int(r, "size", quick ? 128 : 512, 32, 4096,
+                                   "side in pixels of the wavelet-noise images and spectra (quick 128)");
+  int tile = (int)nl_run_param_int(r, "tile", NL_EXAMPLE_TILE, 8, 2048,
+                                   "period in pixels of the 2D wavelet-noise tile (even, >= 8)");
+  int tile3 = (int)nl_run_param_int(r, "tile3", quick ? 32 : NL_EXAMPLE_TILE3, 8, 256,
+                                    "period of the 3D wavelet-noise tile (even, >= 8; quick 32)");
+  int band = (int)nl_run_param_int(r, "band", 2, 0, 8, "the band shown in the images (0 = finest)");   /* band shown in the images */
   nl_run_params_done(r);
   int K = nl_run_seeds(r), nb = nl_example_band_count(size, size);
   unsigned long seed0 = nl_run_seed(r);

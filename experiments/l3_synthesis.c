@@ -19,7 +19,8 @@ int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("l3_synthesis", "L3 - Texture synthesis by example: PCA colour and histogram matching", argc, argv);
   int quick = nl_run_quick(r);
-  int size = (int)nl_run_param_int(r, "size", quick ? 128 : 512, 16, 4096);
+  int size = (int)nl_run_param_int(r, "size", quick ? 128 : 512, 16, 4096,
+                                   "side in pixels of the exemplar analysed and of the synthesised textures (quick 128)");
   nl_run_params_done(r);
   int K = nl_run_seeds(r);
   unsigned long seed0 = nl_run_seed(r);

@@ -30,9 +30,12 @@ int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("l4_editing", "L4 - Frequency-based editing, solid extrapolation, morphing", argc, argv);
   int quick = nl_run_quick(r);
-  int size = (int)nl_run_param_int(r, "size", quick ? 128 : 512, 16, 4096);
-  int nfine = (int)nl_run_param_int(r, "edit_bands", 3, 1, 16);
-  double factor = nl_run_param(r, "edit_factor", 0.25, 0, 10);
+  int size = (int)nl_run_param_int(r, "size", quick ? 128 : 512, 16, 4096,
+                                   "side in pixels of the exemplar and the edited textures (quick 128)");
+  int nfine = (int)nl_run_param_int(r, "edit_bands", 3, 1, 16,
+                                    "how many of the finest frequency bands the edit attenuates (Lagae Fig. 10)");
+  double factor = nl_run_param(r, "edit_factor", 0.25, 0, 10,
+                               "factor the attenuated bands' weights are multiplied by (their power by its square)");
   nl_run_params_done(r);
   unsigned long seed = nl_run_seed(r);
   nl_error err;

@@ -69,11 +69,11 @@ int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("q1_cellular", "Q1 - Cellular F1..F4 and the count rule", argc, argv);
   int quick = nl_run_quick(r);
-  double lambda = nl_run_param(r, "lambda", 4.0, 1e-3, 1000.0);
-  int M = (int)nl_run_param_int(r, "M", 50, 1, NL_CELLULAR_MAX_M);
-  int side = (int)nl_run_param_int(r, "side", quick ? 16 : 32, 2, 256);
-  long points = nl_run_param_int(r, "points", quick ? 1000 : 5000, 10, 10000000);
-  int size = (int)nl_run_param_int(r, "size", quick ? 96 : 256, 8, 4096);
+  double lambda = nl_run_param(r, "lambda", 4.0, 1e-3, 1000.0, "Poisson mean lambda of feature points per unit cube (Qin & Yang: 4)");
+  int M = (int)nl_run_param_int(r, "M", 50, 1, NL_CELLULAR_MAX_M, "most feature points a cube may hold (Qin & Yang: 50)");
+  int side = (int)nl_run_param_int(r, "side", quick ? 16 : 32, 2, 256, "cubes per side of the block whose point counts are tested (side^3 cubes; quick 16)");
+  long points = nl_run_param_int(r, "points", quick ? 1000 : 5000, 10, 10000000, "random points at which F1 is tested against the nearest-neighbour law (quick 1000)");
+  int size = (int)nl_run_param_int(r, "size", quick ? 96 : 256, 8, 4096, "side in pixels of the F1..F4 images (quick 96)");
   nl_run_params_done(r);
   int seeds = nl_run_seeds(r);
   unsigned long seed0 = nl_run_seed(r);

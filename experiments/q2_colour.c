@@ -16,9 +16,12 @@ static const char *combos[5] = {"F1", "F2 - F1", "F1F2", "F2 - F1 - F1F1", "F1F2
 int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("q2_colour", "Q2 - GCTBF colour mapping with the 13-knot spline", argc, argv);
-  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 96 : 256, 8, 4096);
-  double extent = nl_run_param(r, "extent", 4.0, 1e-3, 1e4);
-  double perlin_freq = nl_run_param(r, "perlin_freq", 2.0, 1e-3, 1e3);
+  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 96 : 256, 8, 4096,
+                                   "side in pixels of the colour-mapped images (quick 96)");
+  double extent = nl_run_param(r, "extent", 4.0, 1e-3, 1e4,
+                               "side of the square [0, extent)^2 the images cover, in feature-cube units");
+  double perlin_freq = nl_run_param(r, "perlin_freq", 2.0, 1e-3, 1e3,
+                                    "frequency of the Perlin noise panel");
   nl_run_params_done(r);
   int seeds = nl_run_seeds(r);
   size_t npix = (size_t)size * size;

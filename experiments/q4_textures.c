@@ -54,9 +54,12 @@ int main(int argc, char **argv)
 {
   q4 q = {0};
   q.r = nl_run_begin("q4_textures", "Q4 - GCTBF cloud, marble, wood and flame textures", argc, argv);
-  q.size = (int)nl_run_param_int(q.r, "size", nl_run_quick(q.r) ? 96 : 256, 8, 4096);
-  q.octaves = (int)nl_run_param_int(q.r, "octaves", 4, 0, 30);
-  q.k = nl_run_param(q.r, "k", 2.0, 1e-3, 1e3);
+  q.size = (int)nl_run_param_int(q.r, "size", nl_run_quick(q.r) ? 96 : 256, 8, 4096,
+                                 "side in pixels of the texture images (quick 96)");
+  q.octaves = (int)nl_run_param_int(q.r, "octaves", 4, 0, 30,
+                                    "octaves added above the first in the cloud and texture sums (0 = one octave)");
+  q.k = nl_run_param(q.r, "k", 2.0, 1e-3, 1e3,
+                     "scale k between successive octaves of the GCTBF cloud (Qin & Yang eq. 7)");
   nl_run_params_done(q.r);
   q.seeds = nl_run_seeds(q.r);
   q.win = (nl_window){0, 0, 0.5, 2.0, q.size, q.size};

@@ -69,9 +69,12 @@ void nl_study_octave_settings(const int *oct, int n, int turbulence, nl_setting 
 
 nl_window nl_study_window(nl_run *r)
 {
-  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 512, 16, 4096);
-  double extent = nl_run_param(r, "extent", 4.0, 1e-3, 1e4);
-  double z = nl_run_param(r, "z", 0.5, -1e6, 1e6);
+  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 512, 16, 4096,
+                                   "image side in pixels of each survey slice (quick 128)");
+  double extent = nl_run_param(r, "extent", 4.0, 1e-3, 1e4,
+                               "side of the noise-space square [0, extent)^2 the slice covers");
+  double z = nl_run_param(r, "z", 0.5, -1e6, 1e6,
+                          "z of the 2D slice through Perlin's improved 3D noise");
   nl_window w = {0, 0, z, extent, size, size};
   return w;
 }

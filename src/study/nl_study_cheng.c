@@ -13,14 +13,22 @@ static void run_params(nl_run *r, nl_cheng_config *c, int *grid)
 {
   int q = nl_run_quick(r);
   *c = nl_cheng_config_default();
-  *grid = (int)nl_run_param_int(r, "grid", 64, 2, 1024);   /* see nl_cheng.h on grid vs f */
-  c->w1 = nl_run_param(r, "w1", c->w1, 0, 1e6);
-  c->w2 = nl_run_param(r, "w2", c->w2, 0, 1e6);
-  c->f1 = nl_run_param(r, "f1", c->f1, 0, 1024);
-  c->a1 = nl_run_param(r, "a1", c->a1, 1e-6, 1e6);
-  c->octaves = (int)nl_run_param_int(r, "octaves", c->octaves, 1, NL_CHENG_MAX_OCTAVES);
-  c->sched.n_temps = (int)nl_run_param_int(r, "temps", q ? 8 : c->sched.n_temps, 1, 100000);
-  c->sched.moves_per_var = nl_run_param(r, "moves_per_var", q ? 5 : c->sched.moves_per_var, 1e-3, 1e6);
+  *grid = (int)nl_run_param_int(r, "grid", 64, 2, 1024,
+                                "control grid G: the pattern is read as G x G control cells over the unit square");   /* see nl_cheng.h on grid vs f */
+  c->w1 = nl_run_param(r, "w1", c->w1, 0, 1e6,
+                       "weight w1 of the statistic term E_KS in E = w1 E_KS + w2 E_Con (Cheng eq. 3.9; thesis 0.995)");
+  c->w2 = nl_run_param(r, "w2", c->w2, 0, 1e6,
+                       "weight w2 of the control term E_Con in E = w1 E_KS + w2 E_Con (Cheng eq. 3.9; thesis 0.005)");
+  c->f1 = nl_run_param(r, "f1", c->f1, 0, 1024,
+                       "starting frequency f1 of the fractal sum, f_l = f1 2^(l-1) (Cheng eq. 3.10; thesis 8)");
+  c->a1 = nl_run_param(r, "a1", c->a1, 1e-6, 1e6,
+                       "first octave's amplitude divisor a1, a_l = a1 2^(l-1) (Cheng eq. 3.10; thesis 4)");
+  c->octaves = (int)nl_run_param_int(r, "octaves", c->octaves, 1, NL_CHENG_MAX_OCTAVES,
+                                     "octaves F of the fractal sum, one annealing level each (thesis 4)");
+  c->sched.n_temps = (int)nl_run_param_int(r, "temps", q ? 8 : c->sched.n_temps, 1, 100000,
+                                           "annealing temperature steps per level (n_temps; quick 8)");
+  c->sched.moves_per_var = nl_run_param(r, "moves_per_var", q ? 5 : c->sched.moves_per_var, 1e-3, 1e6,
+                                        "annealing moves per temperature, as a multiple of the level's variables (quick 5)");
 }
 
 nl_run *nl_cheng_begin(const char *name, const char *title, int *argc, char **argv,

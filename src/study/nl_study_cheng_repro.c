@@ -22,17 +22,28 @@ void nl_cheng_repro_params(nl_run *r, nl_cheng_pool_options *po, nl_cheng_model_
   int q = nl_run_quick(r);
   nl_cheng_pool_options_default(po);
   nl_cheng_model_options_default(mo);
-  po->runs = (int)nl_run_param_int(r, "runs", q ? 6 : po->runs, 1, 100000);          /* Q */
-  po->keep = (int)nl_run_param_int(r, "keep", q ? 20 : po->keep, 1, 100000);         /* N */
-  po->epsilon = nl_run_param(r, "epsilon", po->epsilon, 0, 1e300);
-  po->low_levels = (int)nl_run_param_int(r, "low_levels", po->low_levels, 1, NL_CHENG_MAX_OCTAVES - 1);
-  po->threads = (int)nl_run_param_int(r, "threads", po->threads, 1, 64);
-  mo->samples = (size_t)nl_run_param_int(r, "samples", q ? 100 : (long)mo->samples, 0, 1000000);
-  mo->threshold = nl_run_param(r, "T", mo->threshold, 0, 1e300);
-  mo->k_extra = (size_t)nl_run_param_int(r, "k_extra", (long)mo->k_extra, 0, 100000);
-  mo->rep = (nl_cheng_rep)nl_run_param_int(r, "unwrap", mo->rep == NL_CHENG_REP_UNWRAP, 0, 1);
-  mo->gmm.covariance = nl_run_param_int(r, "diag", 0, 0, 1) ? NL_GMM_DIAG : NL_GMM_FULL;
-  mo->gmm.max_iter = (size_t)nl_run_param_int(r, "max_iter", (long)mo->gmm.max_iter, 1, 1000000);
+  po->runs = (int)nl_run_param_int(r, "runs", q ? 6 : po->runs, 1, 100000,
+        "Q: annealing runs in the solution pool (Cheng sec. 3.5.2; quick 6)");          /* Q */
+  po->keep = (int)nl_run_param_int(r, "keep", q ? 20 : po->keep, 1, 100000,
+        "N: solutions kept per run in the pool (Cheng sec. 3.5.2; quick 20)");         /* N */
+  po->epsilon = nl_run_param(r, "epsilon", po->epsilon, 0, 1e300,
+        "error bound on E_R: pool solutions above the run's best by more than this are left out");
+  po->low_levels = (int)nl_run_param_int(r, "low_levels", po->low_levels, 1, NL_CHENG_MAX_OCTAVES - 1,
+        "levels 1..low_levels hold the shared low-frequency gradients that are reproduced");
+  po->threads = (int)nl_run_param_int(r, "threads", po->threads, 1, 64,
+        "worker threads for the pool runs (results do not depend on it)");
+  mo->samples = (size_t)nl_run_param_int(r, "samples", q ? 100 : (long)mo->samples, 0, 1000000,
+        "input samples drawn from the pool for clustering and the mixture, 0 = all (quick 100)");
+  mo->threshold = nl_run_param(r, "T", mo->threshold, 0, 1e300,
+        "AIC threshold T: a mixture component is added only if AIC falls by at least T");
+  mo->k_extra = (size_t)nl_run_param_int(r, "k_extra", (long)mo->k_extra, 0, 100000,
+        "the GMM growth path is capped at K0 + k_extra components");
+  mo->rep = (nl_cheng_rep)nl_run_param_int(r, "unwrap", mo->rep == NL_CHENG_REP_UNWRAP, 0, 1,
+        "1: angles unwrapped to a line before the mixture; 0: each angle as (cos, sin)");
+  mo->gmm.covariance = nl_run_param_int(r, "diag", 0, 0, 1,
+        "1: diagonal GMM covariances; 0: full covariances") ? NL_GMM_DIAG : NL_GMM_FULL;
+  mo->gmm.max_iter = (size_t)nl_run_param_int(r, "max_iter", (long)mo->gmm.max_iter, 1, 1000000,
+        "EM iterations allowed per mixture fit before it counts as not converged");
 }
 
 nl_status nl_cheng_repro_original(const nl_cheng_config *c, const nl_cheng_pattern *pat,
