@@ -31,21 +31,21 @@ static const double EXTENT = 16.0;
 static void g_noise2(const void *ctx, double *out)
 {
   double dx = EXTENT / N;
-  for (int r = 0; r < N; r++) nl_noise2_row(ctx, 0.5 * dx, dx, (r + 0.5) * dx, (size_t)N, out + (size_t)r * N);
+  for (int r = 0; r < N; r++) nl_noise_grad2_row(ctx, 0.5 * dx, dx, (r + 0.5) * dx, (size_t)N, out + (size_t)r * N);
 }
 
 static void g_noise3(const void *ctx, double *out)
 {
   double dx = EXTENT / N;
-  for (int r = 0; r < N; r++) nl_noise3_row(ctx, 0.5 * dx, dx, (r + 0.5) * dx, 0.5, (size_t)N, out + (size_t)r * N);
+  for (int r = 0; r < N; r++) nl_noise_perm3_row(ctx, 0.5 * dx, dx, (r + 0.5) * dx, 0.5, (size_t)N, out + (size_t)r * N);
 }
 
 static void g_fbm(const void *ctx, double *out)
 {
-  const nl_basis *b = ctx;
-  nl_octaves o = nl_octaves_fbm(4, 0.5, 2.0);
-  nl_window w = {0, 0, 0.5, EXTENT, N, N};
-  nl_fractal_grid(b, &o, &w, out);
+  const nl_noise_basis *b = ctx;
+  nl_noise_octaves o = nl_noise_octaves_fbm(4, 0.5, 2.0);
+  nl_noise_window w = {0, 0, 0.5, EXTENT, N, N};
+  nl_noise_fractal_grid(b, &o, &w, out);
 }
 
 static void g_stb3(const void *ctx, double *out)
@@ -69,7 +69,7 @@ static void g_stbfbm(const void *ctx, double *out)
 static double *rx, *ry;
 static void g_noise2_random(const void *ctx, double *out)
 {
-  for (size_t k = 0; k < (size_t)N * N; k++) out[k] = nl_noise2(ctx, rx[k], ry[k]);
+  for (size_t k = 0; k < (size_t)N * N; k++) out[k] = nl_noise_grad2_eval(ctx, rx[k], ry[k]);
 }
 
 
@@ -82,11 +82,11 @@ int main(int argc, char **argv)
   ry = nl_xmalloc((size_t)N * N * sizeof *ry);
   srand(1);
   for (size_t k = 0; k < (size_t)N * N; k++) { rx[k] = EXTENT * rand() / RAND_MAX; ry[k] = EXTENT * rand() / RAND_MAX; }
-  nl_grad2 *t = nl_grad2_alloc(512);
-  nl_grad2_seed(t, 1);
-  nl_perm3 p;
-  nl_perm3_reference(&p);
-  nl_basis b2 = nl_basis_grad2(t), b3 = nl_basis_perm3(&p);
+  nl_noise_grad2 *t = nl_noise_grad2_alloc(512);
+  nl_noise_grad2_seed(t, 1);
+  nl_noise_perm3 p;
+  nl_noise_perm3_reference(&p);
+  nl_noise_basis b2 = nl_noise_basis_grad2(t), b3 = nl_noise_basis_perm3(&p);
 
   double stb = nl_bench_rate(g_stb3, NULL, out, (size_t)N * N), stbf = nl_bench_rate(g_stbfbm, NULL, out, (size_t)N * N);
   double n2 = nl_bench_rate(g_noise2, t, out, (size_t)N * N), n3 = nl_bench_rate(g_noise3, &p, out, (size_t)N * N);
@@ -95,13 +95,13 @@ int main(int argc, char **argv)
   printf("# %d x %d grid over [0,%g)^2, single thread, Msamples/s (best of 3)\n", N, N, EXTENT);
   printf("%-34s %10s %10s\n", "noise", "Msample/s", "vs stb");
   printf("%-34s %10.1f %10s\n", "stb_perlin_noise3", stb, "1.00");
-  printf("%-34s %10.1f %10.2f\n", "nl_noise2_row (2D table, M=512)", n2, n2 / stb);
-  printf("%-34s %10.1f %10.2f\n", "nl_noise3_row (improved 3D)", n3, n3 / stb);
-  printf("%-34s %10.1f %10.2f\n", "nl_noise2 random points", nr, nr / stb);
+  printf("%-34s %10.1f %10.2f\n", "nl_noise_grad2_row (2D table, M=512)", n2, n2 / stb);
+  printf("%-34s %10.1f %10.2f\n", "nl_noise_perm3_row (improved 3D)", n3, n3 / stb);
+  printf("%-34s %10.1f %10.2f\n", "nl_noise_grad2_eval random points", nr, nr / stb);
   printf("%-34s %10.1f %10s\n", "stb_perlin_fbm_noise3 (4 oct)", stbf, "1.00");
   printf("%-34s %10.1f %10.2f\n", "fbm 4 oct, 2D table", f2, f2 / stbf);
   printf("%-34s %10.1f %10.2f\n", "fbm 4 oct, improved 3D", f3, f3 / stbf);
-  nl_grad2_free(t);
+  nl_noise_grad2_free(t);
   free(out); free(rx); free(ry);
   return 0;
 }
