@@ -1,0 +1,64 @@
+/* nl_noise_simd.h - private: the kernels behind the run-time dispatch of
+ * nl_noise.c's rows and the batch point API (issue 17).
+ *
+ * One table of kernels per instruction-set level. nl_noise_simd_body.h holds
+ * the kernels once, written with GCC vector extensions; nl_noise_simd_sse2.c,
+ * _avx2.c and _avx512.c each include it under their own `#pragma GCC target`
+ * with the few primitives that differ (floor, table lookups, lane tests).
+ * The build never uses -march: the dispatcher (nl_noise_simd.c) asks the CPU
+ * (__builtin_cpu_supports) which tables it may call.
+ *
+ * Bit-identity with the scalar code of nl_noise.c is the contract: every
+ * kernel performs, per lane, the same IEEE operations in the same order as
+ * the scalar function it replaces (no FMA: the project compiles with
+ * -ffp-contract=off and these files contain no fused intrinsics). The
+ * integer parts may differ (masks instead of lmod for power-of-two tables,
+ * floor by rounding instruction instead of truncate-and-correct) only where
+ * they give the same integers, which the preconditions below guarantee.
+ * test_noise_simd.c checks every level the CPU runs against the scalar path.
+ */
+#ifndef NL_NOISE_SIMD_H
+#define NL_NOISE_SIMD_H
+
+#include "noise/nl_noise.h"
+#include <stddef.h>
+
+/* Columns and points are padded to a multiple of this (the widest level). */
+#define NL_SIMD_PAD 8
+
+typedef struct {
+  /* The sample loop of a row (nl_noise.c's row_from_columns): out[k] =
+   * blend over columns c = floor(x_k) - ifirst, x_k = x0 + k dx, k < n.
+   * Precondition: every x_k has |x_k| < 2^52 and its column c and c + 1 lie
+   * in gx, a (row_columns guarantees both). */
+  void (*samples)(const double *gx, const double *a, long ifirst, double x0, double dx,
+                  size_t n, double *out);
+  /* Columns ifirst + c, c < ncol (rounded up to NL_SIMD_PAD, the arrays
+   * have room), of the 2D noise with a power-of-two table at row j:
+   * im = ifirst & mask, jm0 = j & mask, jm1 = (j + 1) & mask. */
+  void (*columns2)(const nl_grad2 *t, unsigned im, unsigned jm0, unsigned jm1, double fy,
+                   double v, size_t ncol, double *gx, double *a);
+  /* Columns of the improved noise: xm = ifirst & 255, ym = j & 255,
+   * zm = k & 255; p32 is the doubled permutation widened to int. */
+  void (*columns3)(const int *p32, unsigned xm, unsigned ym, unsigned zm, double fy,
+                   double fz, double v, double w, size_t ncol, double *gx, double *a);
+  /* Points; n is a multiple of NL_SIMD_PAD (the caller pads). Lanes whose
+   * coordinates leave |.| < 2^31 (or are not finite) go through the scalar
+   * nl_noise2 / nl_noise3. */
+  void (*points2)(const nl_grad2 *t, const double *x, const double *y, size_t n, double *out);
+  void (*points3)(const nl_perm3 *p, const int *p32, const double *x, const double *y,
+                  const double *z, size_t n, double *out);
+} nl_noise_simd_kernels;
+
+extern const nl_noise_simd_kernels nl_noise_simd_sse2, nl_noise_simd_avx2, nl_noise_simd_avx512;
+
+/* The hooks nl_noise.c calls first: GSL_SUCCESS when the dispatched level
+ * computed the row, GSL_CONTINUE when the scalar code should (scalar level). */
+int nl_noise_simd_row2(const nl_grad2 *t, double x0, double dx, double y, size_t n, double *out);
+int nl_noise_simd_row3(const nl_perm3 *p, double x0, double dx, double y, double z,
+                       size_t n, double *out);
+
+/* Perlin's grad3 (nl_noise.c) by component, for table lookups. */
+extern const double nl_noise_simd_g3[3][16];
+
+#endif

@@ -1,0 +1,21 @@
+/* nl_noise_simd_avx2.c - the kernels of nl_noise_simd_body.h for AVX2, 4
+ * doubles a vector. Compiled with a target pragma, never -march: called only
+ * when the dispatcher has seen the CPU support it. No FMA: see
+ * nl_noise_simd.h. */
+#pragma GCC target("avx2")
+#include "noise/nl_noise_simd.h"
+#include <immintrin.h>
+
+#define NL_SIMD_W 4
+#define NL_SIMD_TABLE nl_noise_simd_avx2
+typedef double vd __attribute__((vector_size(32)));
+typedef long long vl __attribute__((vector_size(32)));
+typedef int vi __attribute__((vector_size(16)));
+typedef unsigned vu __attribute__((vector_size(16)));
+
+static inline vd v_floor(vd x) { return (vd)_mm256_floor_pd((__m256d)x); }
+static inline vd v_gd(const double *b, vi i) { return (vd)_mm256_i32gather_pd(b, (__m128i)i, 8); }
+static inline vi v_gi(const int *b, vi i) { return (vi)_mm_i32gather_epi32(b, (__m128i)i, 4); }
+static inline int v_all(vl m) { return _mm256_movemask_pd((__m256d)m) == 15; }
+
+#include "noise/nl_noise_simd_body.h"

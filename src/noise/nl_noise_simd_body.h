@@ -1,0 +1,199 @@
+/* nl_noise_simd_body.h - the SIMD noise kernels, written once.
+ *
+ * Included by nl_noise_simd_{sse2,avx2,avx512}.c after they define, for
+ * their instruction set (see nl_noise_simd.h for the contract):
+ *   NL_SIMD_W           lanes of double
+ *   NL_SIMD_TABLE       the name of the nl_noise_simd_kernels to define
+ *   vd, vl, vi, vu      W doubles, W int64 (comparison results), W int32, W uint32
+ *   v_floor(vd)         floor, exact for |x| < 2^52, -0 for -0
+ *   v_gd(base, vi)      base[idx] for doubles; v_gi(base, vi) for ints
+ *   v_all(vl)           all lanes true
+ * Each kernel repeats the scalar operations of nl_noise.c lane by lane, in
+ * the same order; the comments name the scalar line each step copies.
+ */
+#include <string.h>
+
+static inline vd ld(const double *p) { vd v; memcpy(&v, p, sizeof v); return v; }   /* loadu */
+static inline void st(double *p, vd v) { memcpy(p, &v, sizeof v); }                 /* storeu */
+#define SPLAT(x) ((vd){0} + (double)(x))
+#define SPLATU(x) ((vu){0} + (unsigned)(x))
+
+/* fade(t) = t * t * t * (t * (t * 6 - 15) + 10), Perlin 2002's order. */
+static inline vd v_fade(vd t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
+static inline vd v_lerp(vd t, vd a, vd b) { return a + t * (b - a); }
+/* nl_noise.c blend(): the column lines L_c(t) = t GX + A across the cell. */
+static inline vd v_blend(vd t, vd gx0, vd a0, vd gx1, vd a1)
+{
+  vd l = t * gx0 + a0;
+  vd r = (t - 1.0) * gx1 + a1;
+  return l + v_fade(t) * (r - l);
+}
+/* lfloor as a double. The scalar code converts the (long) cell back to
+ * double, which is never -0: adding +0 turns floor(-0) = -0 into +0, so
+ * x - cell keeps the sign the scalar subtraction gives. */
+static inline vd v_cell(vd x) { return v_floor(x) + 0.0; }
+/* lfrac for finite x with |x| < 2^52: x - cell is in [0, 1] and exact; the
+ * scalar code maps 1 (x just below an integer, e.g. -1e-20) to 0. */
+static inline vd v_frac(vd x, vd cell)
+{
+  vd f = x - cell;
+  return (vd)((vl)f & (f < 1.0));
+}
+static inline vl v_small(vd x)   /* |x| < 2^31: the cell fits an int; false for NaN */
+{
+  vd a = (vd)((vl)x & 0x7fffffffffffffffLL);
+  return a < 0x1p31;
+}
+
+/* ---- rows ---------------------------------------------------------------- */
+
+static void samples(const double *gx, const double *a, long ifirst, double x0, double dx,
+                    size_t n, double *out)
+{
+  vd kv, vfirst = SPLAT((double)ifirst);
+  for (int l = 0; l < NL_SIMD_W; l++) kv[l] = l;
+  if (n >= NL_SIMD_W) {
+    for (size_t k = 0;;) {
+      /* x = x0 + (double)k * dx; i = lfloor(x); c = i - ifirst */
+      vd x = kv * dx + x0;
+      vd cell = v_cell(x);
+      vi c = __builtin_convertvector(cell - vfirst, vi);
+      st(out + k, v_blend(v_frac(x, cell), v_gd(gx, c), v_gd(a, c), v_gd(gx + 1, c), v_gd(a + 1, c)));
+      if (k + NL_SIMD_W >= n) break;
+      k += NL_SIMD_W;
+      kv += (double)NL_SIMD_W;
+      if (k + NL_SIMD_W > n) {   /* the last block overlaps: same values again */
+        kv += (double)(n - NL_SIMD_W) - (double)k;   /* integers < 2^53: exact */
+        k = n - NL_SIMD_W;
+      }
+    }
+    return;
+  }
+  /* Fewer samples than lanes: pad with copies of the first sample. */
+  double xs[NL_SIMD_W], res[NL_SIMD_W];
+  for (int l = 0; l < NL_SIMD_W; l++) xs[l] = x0 + (double)((size_t)l < n ? (size_t)l : 0) * dx;
+  vd x = ld(xs), cell = v_cell(x);
+  vi c = __builtin_convertvector(cell - vfirst, vi);
+  st(res, v_blend(v_frac(x, cell), v_gd(gx, c), v_gd(a, c), v_gd(gx + 1, c), v_gd(a + 1, c)));
+  memcpy(out, res, n * sizeof *out);
+}
+
+/* nl_noise.c column2 for ncol consecutive columns, power-of-two table:
+ * nl_grad2_index(i, j) = perm[(perm[i & mask] + (j & mask)) & mask]. */
+static void columns2(const nl_grad2 *t, unsigned im, unsigned jm0, unsigned jm1, double fy,
+                     double v, size_t ncol, double *gxo, double *ao)
+{
+  const int *perm = (const int *)t->perm;
+  vu mask = SPLATU(t->m - 1), iota;
+  for (int l = 0; l < NL_SIMD_W; l++) iota[l] = (unsigned)l;
+  vd vfy = SPLAT(fy), vfy1 = SPLAT(fy - 1), vv = SPLAT(v);
+  for (size_t c = 0; c < ncol; c += NL_SIMD_W) {
+    vu i = (SPLATU(im) + (unsigned)c + iota) & mask;
+    vu pi = (vu)v_gi(perm, (vi)i);
+    vi k0 = v_gi(perm, (vi)((pi + jm0) & mask)), k1 = v_gi(perm, (vi)((pi + jm1) & mask));
+    /* a0 = gy[k0] * fy, a1 = gy[k1] * (fy - 1); gx0 + v (gx1 - gx0); a0 + v (a1 - a0) */
+    vd a0 = v_gd(t->gy, k0) * vfy, a1 = v_gd(t->gy, k1) * vfy1;
+    vd g0 = v_gd(t->gx, k0), g1 = v_gd(t->gx, k1);
+    st(gxo + c, g0 + vv * (g1 - g0));
+    st(ao + c, a0 + vv * (a1 - a0));
+  }
+}
+
+/* Perlin's grad3 components, by table lookup so the products below are the
+ * scalar code's products (signed zeros included). */
+static inline vd g3(int comp, vi h) { return v_gd(nl_noise_simd_g3[comp], h); }
+
+/* nl_noise.c column3 (Perlin 2002's hashing, the x terms separated) for
+ * lanes of columns X at fixed Y, Z. */
+static inline void v_column3(const int *p, vi X, vi Y, vi Z, vd fy, vd fz, vd v, vd w,
+                             vd *gxo, vd *ao)
+{
+  vi A = v_gi(p, X) + Y, AA = v_gi(p, A) + Z, AB = v_gi(p, A + 1) + Z;
+  vi h00 = v_gi(p, AA) & 15, h10 = v_gi(p, AB) & 15, h01 = v_gi(p, AA + 1) & 15,
+     h11 = v_gi(p, AB + 1) & 15;
+  *gxo = v_lerp(w, v_lerp(v, g3(0, h00), g3(0, h10)), v_lerp(v, g3(0, h01), g3(0, h11)));
+  vd fy1 = fy - 1.0, fz1 = fz - 1.0;
+  /* yz_part(h, y, z) = grad3[h][1] * y + grad3[h][2] * z */
+  vd y00 = g3(1, h00) * fy + g3(2, h00) * fz, y10 = g3(1, h10) * fy1 + g3(2, h10) * fz;
+  vd y01 = g3(1, h01) * fy + g3(2, h01) * fz1, y11 = g3(1, h11) * fy1 + g3(2, h11) * fz1;
+  *ao = v_lerp(w, v_lerp(v, y00, y10), v_lerp(v, y01, y11));
+}
+
+static void columns3(const int *p32, unsigned xm, unsigned ym, unsigned zm, double fy,
+                     double fz, double v, double w, size_t ncol, double *gxo, double *ao)
+{
+  vi iota, Y = (vi){0} + (int)ym, Z = (vi){0} + (int)zm;
+  for (int l = 0; l < NL_SIMD_W; l++) iota[l] = l;
+  vd vfy = SPLAT(fy), vfz = SPLAT(fz), vv = SPLAT(v), vw = SPLAT(w), g, a;
+  for (size_t c = 0; c < ncol; c += NL_SIMD_W) {
+    vi X = ((int)xm + (int)(c & 255) + iota) & 255;
+    v_column3(p32, X, Y, Z, vfy, vfz, vv, vw, &g, &a);
+    st(gxo + c, g);
+    st(ao + c, a);
+  }
+}
+
+/* ---- points ---------------------------------------------------------------- */
+
+static void points2(const nl_grad2 *t, const double *x, const double *y, size_t n, double *out)
+{
+  const int *perm = (const int *)t->perm;
+  int pow2 = t->m >= 1 && (t->m & (t->m - 1)) == 0 && t->m <= 0x80000000u;
+  vu mask = SPLATU(t->m - 1);
+  for (size_t k = 0; k < n; k += NL_SIMD_W) {
+    vd vx = ld(x + k), vy = ld(y + k);
+    if (!v_all(v_small(vx) & v_small(vy))) {
+      for (size_t l = 0; l < NL_SIMD_W; l++) out[k + l] = nl_noise2(t, x[k + l], y[k + l]);
+      continue;
+    }
+    /* nl_noise2: i = lfloor(x), j = lfloor(y), fy = lfrac(y, j), v = fade(fy) */
+    vd ci = v_cell(vx), cj = v_cell(vy);
+    vd fy = v_frac(vy, cj), v = v_fade(fy), fx = v_frac(vx, ci);
+    vi i = __builtin_convertvector(ci, vi), j = __builtin_convertvector(cj, vi);
+    vi k00, k01, k10, k11;   /* nl_grad2_index(i + di, j + dj) */
+    if (pow2) {
+      vu i0 = (vu)i & mask, i1 = ((vu)i + 1u) & mask, j0 = (vu)j & mask, j1 = ((vu)j + 1u) & mask;
+      vu p0 = (vu)v_gi(perm, (vi)i0), p1 = (vu)v_gi(perm, (vi)i1);
+      k00 = v_gi(perm, (vi)((p0 + j0) & mask)); k01 = v_gi(perm, (vi)((p0 + j1) & mask));
+      k10 = v_gi(perm, (vi)((p1 + j0) & mask)); k11 = v_gi(perm, (vi)((p1 + j1) & mask));
+    } else {   /* the general path: lmod, lane by lane */
+      for (int l = 0; l < NL_SIMD_W; l++) {
+        long il = i[l], jl = j[l];
+        k00[l] = (int)nl_grad2_index(t, il, jl); k01[l] = (int)nl_grad2_index(t, il, jl + 1);
+        k10[l] = (int)nl_grad2_index(t, il + 1, jl); k11[l] = (int)nl_grad2_index(t, il + 1, jl + 1);
+      }
+    }
+    /* column2 at i and i + 1, then blend(lfrac(x, i), ...) */
+    vd fy1 = fy - 1.0;
+    vd g00 = v_gd(t->gx, k00), g01 = v_gd(t->gx, k01), g10 = v_gd(t->gx, k10), g11 = v_gd(t->gx, k11);
+    vd a00 = v_gd(t->gy, k00) * fy, a01 = v_gd(t->gy, k01) * fy1;
+    vd a10 = v_gd(t->gy, k10) * fy, a11 = v_gd(t->gy, k11) * fy1;
+    vd gx0 = g00 + v * (g01 - g00), a0 = a00 + v * (a01 - a00);
+    vd gx1 = g10 + v * (g11 - g10), a1 = a10 + v * (a11 - a10);
+    st(out + k, v_blend(fx, gx0, a0, gx1, a1));
+  }
+}
+
+static void points3(const nl_perm3 *P, const int *p, const double *x, const double *y,
+                    const double *z, size_t n, double *out)
+{
+  for (size_t k = 0; k < n; k += NL_SIMD_W) {
+    vd vx = ld(x + k), vy = ld(y + k), vz = ld(z + k);
+    if (!v_all(v_small(vx) & v_small(vy) & v_small(vz))) {
+      for (size_t l = 0; l < NL_SIMD_W; l++) out[k + l] = nl_noise3(P, x[k + l], y[k + l], z[k + l]);
+      continue;
+    }
+    /* nl_noise3: cells, fy = lfrac(y, j), fz, v = fade(fy), w = fade(fz) */
+    vd ci = v_cell(vx), cj = v_cell(vy), ck = v_cell(vz);
+    vd fy = v_frac(vy, cj), fz = v_frac(vz, ck), v = v_fade(fy), w = v_fade(fz);
+    vi i = __builtin_convertvector(ci, vi), j = __builtin_convertvector(cj, vi),
+       kk = __builtin_convertvector(ck, vi);
+    vi Y = j & 255, Z = kk & 255;
+    vd g0, a0, g1, a1;
+    v_column3(p, i & 255, Y, Z, fy, fz, v, w, &g0, &a0);
+    v_column3(p, (vi)(((vu)i + 1u) & 255u), Y, Z, fy, fz, v, w, &g1, &a1);
+    st(out + k, v_blend(v_frac(vx, ci), g0, a0, g1, a1));
+  }
+}
+
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns2, columns3, points2, points3};
