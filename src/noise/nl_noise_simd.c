@@ -2,7 +2,7 @@
  * row drivers nl_noise.c hands its rows to, and the batch point API.
  *
  * Levels: scalar (nl_noise.c's own code, the reference), SSE2 (the x86-64
- * baseline), AVX2, AVX-512 (F+DQ+BW+VL). The level is the best the CPU and
+ * baseline), AVX2, AVX-512 (F+DQ+BW+VL+VBMI). The level is the best the CPU and
  * OS support (__builtin_cpu_supports, which checks the XSAVE state too),
  * unless NL_NOISE_SIMD=scalar|sse2|avx2|avx512 asks for another (a level the
  * CPU lacks falls back to the best it has, with a warning) or a program calls
@@ -54,7 +54,7 @@ int nl_noise_simd_supported(int level)
     __builtin_cpu_init();
     return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
            __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl") &&
-           __builtin_cpu_supports("avx2");
+           __builtin_cpu_supports("avx512vbmi") && __builtin_cpu_supports("avx2");
   default: return 0;
   }
 }
@@ -134,23 +134,39 @@ static size_t row_columns(double x0, double dx, size_t n, long *ifirst)
 
 /* ---- rows ------------------------------------------------------------------ */
 
-#define NL_SIMD_STACK_COLS 1040   /* a multiple of NL_SIMD_PAD */
+#define NL_SIMD_STACK_COLS 1056   /* a multiple of NL_SIMD_PAD */
 #define NL_SIMD_CHUNK 256         /* points per call of a sparse row */
 
-/* The int copy of a permutation the gathers read, cached per thread: a row
- * of fBm calls this once per octave with the same table. */
+/* The int copy of a permutation the lookups read, cached per thread (a row
+ * of fBm asks once per octave with the same table), and whether its second
+ * half repeats the first, as nl_perm3_reference and nl_perm3_seed make it
+ * (the kernels index the first 256 entries only). NULL if it does not. */
 static const int *perm3_ints(const nl_perm3 *p)
 {
-  static _Thread_local struct { int valid; unsigned char p[512]; int p32[512]; } c;
+  static _Thread_local struct { int valid, doubled; unsigned char p[512]; int p32[512]; } c;
   if (!c.valid || memcmp(c.p, p->p, sizeof c.p) != 0) {
     memcpy(c.p, p->p, sizeof c.p);
     for (int k = 0; k < 512; k++) c.p32[k] = p->p[k];
+    c.doubled = memcmp(p->p, p->p + 256, 256) == 0;
     c.valid = 1;
   }
-  return c.p32;
+  return c.doubled ? c.p32 : NULL;
 }
 
 static int grad2_pow2(const nl_grad2 *t) { return t->m >= 1 && (t->m & (t->m - 1)) == 0 && t->m <= 0x80000000u; }
+
+/* Room for ncol columns plus the padding the kernels may read or write
+ * (NL_SIMD_COL_PAD, zeroed: a window may load past the last column). */
+#define NL_SIMD_COL_PAD 16
+static double *column_arrays(size_t ncol, double *sgx, double *sa, double **a)
+{
+  size_t len = (ncol + NL_SIMD_PAD - 1) / NL_SIMD_PAD * NL_SIMD_PAD + NL_SIMD_COL_PAD;
+  double *gx = len <= NL_SIMD_STACK_COLS ? sgx : nl_xmalloc(len * sizeof *gx);
+  *a = len <= NL_SIMD_STACK_COLS ? sa : nl_xmalloc(len * sizeof **a);
+  memset(gx + ncol, 0, (len - ncol) * sizeof *gx);
+  memset(*a + ncol, 0, (len - ncol) * sizeof **a);
+  return gx;
+}
 
 int nl_noise_simd_row2(const nl_grad2 *t, double x0, double dx, double y, size_t n, double *out)
 {
@@ -158,6 +174,7 @@ int nl_noise_simd_row2(const nl_grad2 *t, double x0, double dx, double y, size_t
   if (!K || n > ((size_t)1 << 29)) return GSL_CONTINUE;
   long ifirst;
   size_t ncol = row_columns(x0, dx, n, &ifirst);
+  double *a;
   if (ncol == 0) {   /* sparse: out[k] = nl_noise2(t, x0 + k dx, y), by batches */
     double xs[NL_SIMD_CHUNK], ys[NL_SIMD_CHUNK];
     for (size_t k0 = 0; k0 < n; k0 += NL_SIMD_CHUNK) {
@@ -167,16 +184,21 @@ int nl_noise_simd_row2(const nl_grad2 *t, double x0, double dx, double y, size_t
     }
     return GSL_SUCCESS;
   }
-  size_t ncolp = (ncol + NL_SIMD_PAD - 1) / NL_SIMD_PAD * NL_SIMD_PAD;
   double sgx[NL_SIMD_STACK_COLS], sa[NL_SIMD_STACK_COLS];
-  double *gx = ncolp <= NL_SIMD_STACK_COLS ? sgx : nl_xmalloc(ncolp * sizeof *gx);
-  double *a = ncolp <= NL_SIMD_STACK_COLS ? sa : nl_xmalloc(ncolp * sizeof *a);
+  double *gx = column_arrays(ncol, sgx, sa, &a);
   long j = lfloor(y);
   double fy = lfrac(y, j), v = fade(fy);
-  if (grad2_pow2(t)) {
-    unsigned long mask = t->m - 1;
-    K->columns2(t, (unsigned)((unsigned long)ifirst & mask), (unsigned)((unsigned long)j & mask),
-                (unsigned)((unsigned long)(j + 1) & mask), fy, v, ncolp, gx, a);
+  if (grad2_pow2(t)) {   /* nl_noise.c column2; i mod m as a mask */
+    unsigned long mask = t->m - 1, j0 = (unsigned long)j & mask, j1 = (unsigned long)(j + 1) & mask;
+    const unsigned *perm = t->perm;
+    double fy1 = fy - 1;
+    for (size_t c = 0; c < ncol; c++) {
+      unsigned long pi = perm[((unsigned long)ifirst + c) & mask];
+      size_t k0 = perm[(pi + j0) & mask], k1 = perm[(pi + j1) & mask];
+      double a0 = t->gy[k0] * fy, a1 = t->gy[k1] * fy1;
+      gx[c] = t->gx[k0] + v * (t->gx[k1] - t->gx[k0]);
+      a[c] = a0 + v * (a1 - a0);
+    }
   } else {   /* nl_noise.c column2, the general (lmod) path */
     for (size_t c = 0; c < ncol; c++) {
       long i = ifirst + (long)c;
@@ -195,7 +217,8 @@ int nl_noise_simd_row3(const nl_perm3 *p, double x0, double dx, double y, double
                        size_t n, double *out)
 {
   const nl_noise_simd_kernels *K = kernels();
-  if (!K || n > ((size_t)1 << 29)) return GSL_CONTINUE;
+  const int *p32;
+  if (!K || n > ((size_t)1 << 29) || !(p32 = perm3_ints(p))) return GSL_CONTINUE;
   long ifirst;
   size_t ncol = row_columns(x0, dx, n, &ifirst);
   if (ncol == 0) {
@@ -207,14 +230,12 @@ int nl_noise_simd_row3(const nl_perm3 *p, double x0, double dx, double y, double
     }
     return GSL_SUCCESS;
   }
-  size_t ncolp = (ncol + NL_SIMD_PAD - 1) / NL_SIMD_PAD * NL_SIMD_PAD;
-  double sgx[NL_SIMD_STACK_COLS], sa[NL_SIMD_STACK_COLS];
-  double *gx = ncolp <= NL_SIMD_STACK_COLS ? sgx : nl_xmalloc(ncolp * sizeof *gx);
-  double *a = ncolp <= NL_SIMD_STACK_COLS ? sa : nl_xmalloc(ncolp * sizeof *a);
+  double sgx[NL_SIMD_STACK_COLS], sa[NL_SIMD_STACK_COLS], *a;
+  double *gx = column_arrays(ncol, sgx, sa, &a);
   long j = lfloor(y), k = lfloor(z);
   double fy = lfrac(y, j), fz = lfrac(z, k), v = fade(fy), w = fade(fz);
-  K->columns3(perm3_ints(p), (unsigned)(ifirst & 255), (unsigned)(j & 255), (unsigned)(k & 255),
-              fy, fz, v, w, ncolp, gx, a);
+  K->columns3(p, p32, (unsigned)(ifirst & 255), (unsigned)(j & 255), (unsigned)(k & 255),
+              fy, fz, v, w, (ncol + NL_SIMD_PAD - 1) / NL_SIMD_PAD * NL_SIMD_PAD, gx, a);
   K->samples(gx, a, ifirst, x0, dx, n, out);
   if (gx != sgx) { free(gx); free(a); }
   return GSL_SUCCESS;
@@ -249,6 +270,10 @@ void nl_noise_perm3_points(const nl_perm3 *p, const double *x, const double *y, 
     return;
   }
   const int *p32 = perm3_ints(p);
+  if (!p32) {   /* not a doubled table: the scalar code indexes all 512 */
+    for (size_t k = 0; k < n; k++) out[k] = nl_noise3(p, x[k], y[k], z[k]);
+    return;
+  }
   size_t nb = n / NL_SIMD_PAD * NL_SIMD_PAD;
   if (nb) K->points3(p, p32, x, y, z, nb, out);
   if (nb == n) return;

@@ -33,14 +33,11 @@ typedef struct {
    * in gx, a (row_columns guarantees both). */
   void (*samples)(const double *gx, const double *a, long ifirst, double x0, double dx,
                   size_t n, double *out);
-  /* Columns ifirst + c, c < ncol (rounded up to NL_SIMD_PAD, the arrays
-   * have room), of the 2D noise with a power-of-two table at row j:
-   * im = ifirst & mask, jm0 = j & mask, jm1 = (j + 1) & mask. */
-  void (*columns2)(const nl_grad2 *t, unsigned im, unsigned jm0, unsigned jm1, double fy,
-                   double v, size_t ncol, double *gx, double *a);
-  /* Columns of the improved noise: xm = ifirst & 255, ym = j & 255,
-   * zm = k & 255; p32 is the doubled permutation widened to int. */
-  void (*columns3)(const int *p32, unsigned xm, unsigned ym, unsigned zm, double fy,
+  /* Columns ifirst + c, c < ncol (a multiple of NL_SIMD_PAD; the arrays
+   * have room) of the improved noise at row j, plane k: xm = ifirst & 255,
+   * ym = j & 255, zm = k & 255; p32 is the permutation widened to int, and
+   * p's second half repeats its first (the dispatcher checks). */
+  void (*columns3)(const nl_perm3 *p, const int *p32, unsigned xm, unsigned ym, unsigned zm, double fy,
                    double fz, double v, double w, size_t ncol, double *gx, double *a);
   /* Points; n is a multiple of NL_SIMD_PAD (the caller pads). Lanes whose
    * coordinates leave |.| < 2^31 (or are not finite) go through the scalar

@@ -1,10 +1,21 @@
 /* nl_noise_simd_avx512.c - the kernels of nl_noise_simd_body.h for AVX-512
- * (F, DQ, BW, VL: x86-64-v4), 8 doubles a vector. Compiled with a target
- * pragma, never -march: called only when the dispatcher has seen the CPU
- * (and the OS) support it. No FMA: see nl_noise_simd.h. */
-#pragma GCC target("avx512f,avx512dq,avx512bw,avx512vl,avx2")
+ * (F, DQ, BW, VL and VBMI: Ice Lake, Zen 4 and later), 8 doubles a vector.
+ * Compiled with a target pragma, never -march: called only when the
+ * dispatcher has seen the CPU (and the OS) support it. No FMA: see
+ * nl_noise_simd.h.
+ *
+ * Memory lookups are what limit these kernels (a gather instruction costs
+ * ~20 cycles on Zen 5, more than its loads one by one), so the tables that
+ * fit live in registers: Perlin's 256-entry permutation in four (VBMI byte
+ * permutes, 16 lookups each), his 16 gradients in two per component
+ * (vpermt2pd), and the sample loop of a row reads its columns through a
+ * window of 8 loaded once per 8 samples (vpermpd).
+ */
+#pragma GCC target("avx512f,avx512dq,avx512bw,avx512vl,avx512vbmi,avx2")
 #include "noise/nl_noise_simd.h"
 #include <immintrin.h>
+#include <math.h>
+#include <string.h>
 
 #define NL_SIMD_W 8
 #define NL_SIMD_TABLE nl_noise_simd_avx512
@@ -17,8 +28,84 @@ static inline vd v_floor(vd x)
 {
   return (vd)_mm512_roundscale_pd((__m512d)x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
 }
-static inline vd v_gd(const double *b, vi i) { return (vd)_mm512_i32gather_pd((__m256i)i, b, 8); }
-static inline vi v_gi(const int *b, vi i) { return (vi)_mm256_i32gather_epi32(b, (__m256i)i, 4); }
+/* Lookups lane by lane (the 2D tables are too big for registers). */
+static inline vd v_gd(const double *b, vi i)
+{
+  double r[NL_SIMD_W];
+  for (int l = 0; l < NL_SIMD_W; l++) r[l] = b[i[l]];
+  vd v; memcpy(&v, r, sizeof v); return v;
+}
+static inline vi v_gi(const int *b, vi i)
+{
+  int r[NL_SIMD_W];
+  for (int l = 0; l < NL_SIMD_W; l++) r[l] = b[i[l]];
+  vi v; memcpy(&v, r, sizeof v); return v;
+}
 static inline int v_all(vl m) { return _mm512_movepi64_mask((__m512i)m) == 0xff; }
 
+#define NL_SIMD_HAVE_TABLES
+typedef struct { __m512i p[4]; __m512d g[3][2]; } p3tab;
+static inline p3tab p3_make(const nl_perm3 *P, const int *p32)
+{
+  (void)p32;
+  p3tab t;
+  for (int q = 0; q < 4; q++) t.p[q] = _mm512_loadu_si512(P->p + 64 * q);
+  for (int c = 0; c < 3; c++) {
+    t.g[c][0] = _mm512_loadu_pd(nl_noise_simd_g3[c]);
+    t.g[c][1] = _mm512_loadu_pd(nl_noise_simd_g3[c] + 8);
+  }
+  return t;
+}
+/* p[idx] for idx < 512 of a doubled table: byte 0 of each int lane indexes
+ * (low 7 bits into a 128-byte pair, bit 7 picks the pair); bit 8 and the
+ * upper bytes' lookups are dropped with the & 255. */
+static inline vi p3_get(const p3tab *t, vi idx)
+{
+  __m512i ix = _mm512_castsi256_si512((__m256i)idx);
+  __m512i lo = _mm512_permutex2var_epi8(t->p[0], ix, t->p[1]);
+  __m512i hi = _mm512_permutex2var_epi8(t->p[2], ix, t->p[3]);
+  __m512i r = _mm512_mask_blend_epi8(_mm512_movepi8_mask(ix), lo, hi);
+  return (vi)_mm512_castsi512_si256(r) & 255;
+}
+static inline vd g3(const p3tab *t, int comp, vi h)
+{
+  return (vd)_mm512_permutex2var_pd(t->g[comp][0], _mm512_cvtepi32_epi64((__m256i)h), t->g[comp][1]);
+}
+
 #include "noise/nl_noise_simd_body.h"
+
+/* The row's sample loop with a window: while 8 consecutive samples span at
+ * most 7 columns (7 |dx| <= 4 leaves room for the rounding of x, whose ulp
+ * is at most 1/2 below 2^52), the columns they use are gx[b .. b + 7] for
+ * b the lowest of them, and gx[b + 1 .. b + 8] for the right-hand ones.
+ * The column arrays are padded for the load past the last column. */
+static void samples(const double *gx, const double *a, long ifirst, double x0, double dx,
+                    size_t n, double *out)
+{
+  if (n < NL_SIMD_W || !(fabs(dx) * 7 <= 4)) { samples_lanes(gx, a, ifirst, x0, dx, n, out); return; }
+  vd kv, vfirst = SPLAT((double)ifirst);
+  for (int l = 0; l < NL_SIMD_W; l++) kv[l] = l;
+  int low = dx < 0 ? NL_SIMD_W - 1 : 0;   /* the lane of the lowest column */
+  for (size_t k = 0;;) {
+    vd x = kv * dx + x0;                  /* x0 + (double)k * dx */
+    vd cell = v_cell(x);
+    vd c = cell - vfirst;                 /* lfloor(x) - ifirst, exact */
+    double cb = c[low];
+    long b = (long)cb;
+    __m512i li = _mm512_cvttpd_epi64((__m512d)(c - cb));
+    vd g0 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(gx + b));
+    vd a0 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(a + b));
+    vd g1 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(gx + b + 1));
+    vd a1 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(a + b + 1));
+    st(out + k, v_blend(v_frac(x, cell), g0, a0, g1, a1));
+    if (k + NL_SIMD_W >= n) break;
+    k += NL_SIMD_W;
+    kv += (double)NL_SIMD_W;
+    if (k + NL_SIMD_W > n) {              /* the last block overlaps: same values again */
+      kv += (double)(n - NL_SIMD_W) - (double)k;
+      k = n - NL_SIMD_W;
+    }
+  }
+}
+
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3, points2, points3};

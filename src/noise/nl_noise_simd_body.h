@@ -8,6 +8,10 @@
  *   v_floor(vd)         floor, exact for |x| < 2^52, -0 for -0
  *   v_gd(base, vi)      base[idx] for doubles; v_gi(base, vi) for ints
  *   v_all(vl)           all lanes true
+ * and, optionally, NL_SIMD_HAVE_TABLES with p3tab, p3_make, p3_get and g3
+ * (register-resident tables instead of memory lookups). The including file
+ * then defines its nl_noise_simd_kernels from the functions here (or its
+ * own sample loop: samples_lanes is the portable one).
  * Each kernel repeats the scalar operations of nl_noise.c lane by lane, in
  * the same order; the comments name the scalar line each step copies.
  */
@@ -47,7 +51,7 @@ static inline vl v_small(vd x)   /* |x| < 2^31: the cell fits an int; false for 
 
 /* ---- rows ---------------------------------------------------------------- */
 
-static void samples(const double *gx, const double *a, long ifirst, double x0, double dx,
+static void samples_lanes(const double *gx, const double *a, long ifirst, double x0, double dx,
                     size_t n, double *out)
 {
   vd kv, vfirst = SPLAT((double)ifirst);
@@ -78,56 +82,42 @@ static void samples(const double *gx, const double *a, long ifirst, double x0, d
   memcpy(out, res, n * sizeof *out);
 }
 
-/* nl_noise.c column2 for ncol consecutive columns, power-of-two table:
- * nl_grad2_index(i, j) = perm[(perm[i & mask] + (j & mask)) & mask]. */
-static void columns2(const nl_grad2 *t, unsigned im, unsigned jm0, unsigned jm1, double fy,
-                     double v, size_t ncol, double *gxo, double *ao)
-{
-  const int *perm = (const int *)t->perm;
-  vu mask = SPLATU(t->m - 1), iota;
-  for (int l = 0; l < NL_SIMD_W; l++) iota[l] = (unsigned)l;
-  vd vfy = SPLAT(fy), vfy1 = SPLAT(fy - 1), vv = SPLAT(v);
-  for (size_t c = 0; c < ncol; c += NL_SIMD_W) {
-    vu i = (SPLATU(im) + (unsigned)c + iota) & mask;
-    vu pi = (vu)v_gi(perm, (vi)i);
-    vi k0 = v_gi(perm, (vi)((pi + jm0) & mask)), k1 = v_gi(perm, (vi)((pi + jm1) & mask));
-    /* a0 = gy[k0] * fy, a1 = gy[k1] * (fy - 1); gx0 + v (gx1 - gx0); a0 + v (a1 - a0) */
-    vd a0 = v_gd(t->gy, k0) * vfy, a1 = v_gd(t->gy, k1) * vfy1;
-    vd g0 = v_gd(t->gx, k0), g1 = v_gd(t->gx, k1);
-    st(gxo + c, g0 + vv * (g1 - g0));
-    st(ao + c, a0 + vv * (a1 - a0));
-  }
-}
-
 /* Perlin's grad3 components, by table lookup so the products below are the
- * scalar code's products (signed zeros included). */
-static inline vd g3(int comp, vi h) { return v_gd(nl_noise_simd_g3[comp], h); }
+ * scalar code's products (signed zeros included); and the permutation's
+ * lookups. A level may bring its own (register tables: NL_SIMD_HAVE_TABLES). */
+#ifndef NL_SIMD_HAVE_TABLES
+typedef struct { const int *p; } p3tab;
+static inline p3tab p3_make(const nl_perm3 *P, const int *p32) { (void)P; p3tab t = {p32}; return t; }
+static inline vi p3_get(const p3tab *t, vi idx) { return v_gi(t->p, idx); }
+static inline vd g3(const p3tab *t, int comp, vi h) { (void)t; return v_gd(nl_noise_simd_g3[comp], h); }
+#endif
 
 /* nl_noise.c column3 (Perlin 2002's hashing, the x terms separated) for
  * lanes of columns X at fixed Y, Z. */
-static inline void v_column3(const int *p, vi X, vi Y, vi Z, vd fy, vd fz, vd v, vd w,
+static inline void v_column3(const p3tab *p, vi X, vi Y, vi Z, vd fy, vd fz, vd v, vd w,
                              vd *gxo, vd *ao)
 {
-  vi A = v_gi(p, X) + Y, AA = v_gi(p, A) + Z, AB = v_gi(p, A + 1) + Z;
-  vi h00 = v_gi(p, AA) & 15, h10 = v_gi(p, AB) & 15, h01 = v_gi(p, AA + 1) & 15,
-     h11 = v_gi(p, AB + 1) & 15;
-  *gxo = v_lerp(w, v_lerp(v, g3(0, h00), g3(0, h10)), v_lerp(v, g3(0, h01), g3(0, h11)));
+  vi A = p3_get(p, X) + Y, AA = p3_get(p, A) + Z, AB = p3_get(p, A + 1) + Z;
+  vi h00 = p3_get(p, AA) & 15, h10 = p3_get(p, AB) & 15, h01 = p3_get(p, AA + 1) & 15,
+     h11 = p3_get(p, AB + 1) & 15;
+  *gxo = v_lerp(w, v_lerp(v, g3(p, 0, h00), g3(p, 0, h10)), v_lerp(v, g3(p, 0, h01), g3(p, 0, h11)));
   vd fy1 = fy - 1.0, fz1 = fz - 1.0;
   /* yz_part(h, y, z) = grad3[h][1] * y + grad3[h][2] * z */
-  vd y00 = g3(1, h00) * fy + g3(2, h00) * fz, y10 = g3(1, h10) * fy1 + g3(2, h10) * fz;
-  vd y01 = g3(1, h01) * fy + g3(2, h01) * fz1, y11 = g3(1, h11) * fy1 + g3(2, h11) * fz1;
+  vd y00 = g3(p, 1, h00) * fy + g3(p, 2, h00) * fz, y10 = g3(p, 1, h10) * fy1 + g3(p, 2, h10) * fz;
+  vd y01 = g3(p, 1, h01) * fy + g3(p, 2, h01) * fz1, y11 = g3(p, 1, h11) * fy1 + g3(p, 2, h11) * fz1;
   *ao = v_lerp(w, v_lerp(v, y00, y10), v_lerp(v, y01, y11));
 }
 
-static void columns3(const int *p32, unsigned xm, unsigned ym, unsigned zm, double fy,
+static void columns3(const nl_perm3 *P, const int *p32, unsigned xm, unsigned ym, unsigned zm, double fy,
                      double fz, double v, double w, size_t ncol, double *gxo, double *ao)
 {
   vi iota, Y = (vi){0} + (int)ym, Z = (vi){0} + (int)zm;
   for (int l = 0; l < NL_SIMD_W; l++) iota[l] = l;
   vd vfy = SPLAT(fy), vfz = SPLAT(fz), vv = SPLAT(v), vw = SPLAT(w), g, a;
+  p3tab tab = p3_make(P, p32);
   for (size_t c = 0; c < ncol; c += NL_SIMD_W) {
     vi X = ((int)xm + (int)(c & 255) + iota) & 255;
-    v_column3(p32, X, Y, Z, vfy, vfz, vv, vw, &g, &a);
+    v_column3(&tab, X, Y, Z, vfy, vfz, vv, vw, &g, &a);
     st(gxo + c, g);
     st(ao + c, a);
   }
@@ -174,9 +164,10 @@ static void points2(const nl_grad2 *t, const double *x, const double *y, size_t 
   }
 }
 
-static void points3(const nl_perm3 *P, const int *p, const double *x, const double *y,
+static void points3(const nl_perm3 *P, const int *p32, const double *x, const double *y,
                     const double *z, size_t n, double *out)
 {
+  p3tab tab = p3_make(P, p32);
   for (size_t k = 0; k < n; k += NL_SIMD_W) {
     vd vx = ld(x + k), vy = ld(y + k), vz = ld(z + k);
     if (!v_all(v_small(vx) & v_small(vy) & v_small(vz))) {
@@ -190,10 +181,8 @@ static void points3(const nl_perm3 *P, const int *p, const double *x, const doub
        kk = __builtin_convertvector(ck, vi);
     vi Y = j & 255, Z = kk & 255;
     vd g0, a0, g1, a1;
-    v_column3(p, i & 255, Y, Z, fy, fz, v, w, &g0, &a0);
-    v_column3(p, (vi)(((vu)i + 1u) & 255u), Y, Z, fy, fz, v, w, &g1, &a1);
+    v_column3(&tab, i & 255, Y, Z, fy, fz, v, w, &g0, &a0);
+    v_column3(&tab, (vi)(((vu)i + 1u) & 255u), Y, Z, fy, fz, v, w, &g1, &a1);
     st(out + k, v_blend(v_frac(vx, ci), g0, a0, g1, a1));
   }
 }
-
-const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns2, columns3, points2, points3};

@@ -25,3 +25,5 @@ static inline vi v_gi(const int *b, vi i) { return (vi){b[i[0]], b[i[1]]}; }
 static inline int v_all(vl m) { return (m[0] & m[1]) != 0; }
 
 #include "noise/nl_noise_simd_body.h"
+
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples_lanes, columns3, points2, points3};
