@@ -309,6 +309,7 @@ double nl_octaves_bound(const nl_octaves *o, double basis_bound)
 void nl_fractal_row(const nl_basis *b, const nl_octaves *o, double x0, double dx,
                     double y, double z, size_t n, double *out, double *scratch)
 {
+  if (nl_noise_simd_fractal_row(b, o, x0, dx, y, z, n, out, scratch) == GSL_SUCCESS) return;
   for (size_t k = 0; k < n; k++) out[k] = 0;
   for (int l = 0; l < o->n; l++) {
     double f = o->freq[l], a = o->amp[l];

@@ -134,7 +134,7 @@ static size_t row_columns(double x0, double dx, size_t n, long *ifirst)
 
 /* ---- rows ------------------------------------------------------------------ */
 
-#define NL_SIMD_STACK_COLS 1056   /* a multiple of NL_SIMD_PAD */
+#define NL_SIMD_STACK_COLS 1056   /* doubles; a multiple of NL_SIMD_PAD */
 #define NL_SIMD_CHUNK 256         /* points per call of a sparse row */
 
 /* The int copy of a permutation the lookups read, cached per thread (a row
@@ -155,9 +155,8 @@ static const int *perm3_ints(const nl_perm3 *p)
 
 static int grad2_pow2(const nl_grad2 *t) { return t->m >= 1 && (t->m & (t->m - 1)) == 0 && t->m <= 0x80000000u; }
 
-/* Room for ncol columns plus the padding the kernels may read or write
- * (NL_SIMD_COL_PAD, zeroed: a window may load past the last column). */
-#define NL_SIMD_COL_PAD 16
+/* Room for ncol columns (rounded up to NL_SIMD_PAD) and NL_SIMD_COL_PAD
+ * zeroed doubles after them: the stack arrays or the heap. */
 static double *column_arrays(size_t ncol, double *sgx, double *sa, double **a)
 {
   size_t len = (ncol + NL_SIMD_PAD - 1) / NL_SIMD_PAD * NL_SIMD_PAD + NL_SIMD_COL_PAD;
@@ -168,27 +167,12 @@ static double *column_arrays(size_t ncol, double *sgx, double *sa, double **a)
   return gx;
 }
 
-int nl_noise_simd_row2(const nl_grad2 *t, double x0, double dx, double y, size_t n, double *out)
+/* nl_noise.c column2 for columns ifirst .. ifirst + ncol - 1 at y. */
+static void columns2(const nl_grad2 *t, long ifirst, size_t ncol, double y, double *gx, double *a)
 {
-  const nl_noise_simd_kernels *K = kernels();
-  if (!K || n > ((size_t)1 << 29)) return GSL_CONTINUE;
-  long ifirst;
-  size_t ncol = row_columns(x0, dx, n, &ifirst);
-  double *a;
-  if (ncol == 0) {   /* sparse: out[k] = nl_noise2(t, x0 + k dx, y), by batches */
-    double xs[NL_SIMD_CHUNK], ys[NL_SIMD_CHUNK];
-    for (size_t k0 = 0; k0 < n; k0 += NL_SIMD_CHUNK) {
-      size_t m = n - k0 < NL_SIMD_CHUNK ? n - k0 : NL_SIMD_CHUNK;
-      for (size_t k = 0; k < m; k++) { xs[k] = x0 + (double)(k0 + k) * dx; ys[k] = y; }
-      nl_noise_grad2_points(t, xs, ys, m, out + k0);
-    }
-    return GSL_SUCCESS;
-  }
-  double sgx[NL_SIMD_STACK_COLS], sa[NL_SIMD_STACK_COLS];
-  double *gx = column_arrays(ncol, sgx, sa, &a);
   long j = lfloor(y);
   double fy = lfrac(y, j), v = fade(fy);
-  if (grad2_pow2(t)) {   /* nl_noise.c column2; i mod m as a mask */
+  if (grad2_pow2(t)) {   /* i mod m as a mask */
     unsigned long mask = t->m - 1, j0 = (unsigned long)j & mask, j1 = (unsigned long)(j + 1) & mask;
     const unsigned *perm = t->perm;
     double fy1 = fy - 1;
@@ -199,7 +183,7 @@ int nl_noise_simd_row2(const nl_grad2 *t, double x0, double dx, double y, size_t
       gx[c] = t->gx[k0] + v * (t->gx[k1] - t->gx[k0]);
       a[c] = a0 + v * (a1 - a0);
     }
-  } else {   /* nl_noise.c column2, the general (lmod) path */
+  } else {   /* the general (lmod) path */
     for (size_t c = 0; c < ncol; c++) {
       long i = ifirst + (long)c;
       size_t k0 = nl_grad2_index(t, i, j), k1 = nl_grad2_index(t, i, j + 1);
@@ -208,8 +192,58 @@ int nl_noise_simd_row2(const nl_grad2 *t, double x0, double dx, double y, size_t
       a[c] = a0 + v * (a1 - a0);
     }
   }
-  K->samples(gx, a, ifirst, x0, dx, n, out);
+}
+
+/* nl_noise.c column3 for columns ifirst .. at (y, z), by the level's kernel. */
+static void columns3(const nl_noise_simd_kernels *K, const nl_perm3 *p, const int *p32, long ifirst,
+                     size_t ncol, double y, double z, double *gx, double *a)
+{
+  long j = lfloor(y), k = lfloor(z);
+  double fy = lfrac(y, j), fz = lfrac(z, k), v = fade(fy), w = fade(fz);
+  K->columns3(p, p32, (unsigned)(ifirst & 255), (unsigned)(j & 255), (unsigned)(k & 255), fy, fz,
+              v, w, (ncol + NL_SIMD_PAD - 1) / NL_SIMD_PAD * NL_SIMD_PAD, gx, a);
+}
+
+/* One row of either noise into out (mode, amp: see NL_SIMD_STORE); sparse
+ * rows (row_columns 0) go point by point through scratch. */
+static void row_any(const nl_noise_simd_kernels *K, const nl_grad2 *t, const nl_perm3 *p,
+                    const int *p32, double x0, double dx, double y, double z, size_t n,
+                    double *out, int mode, double amp)
+{
+  long ifirst;
+  size_t ncol = row_columns(x0, dx, n, &ifirst);
+  if (ncol == 0) {   /* out[k] = nl_noise2(t, x0 + k dx, y) (or 3), by batches */
+    double xs[NL_SIMD_CHUNK], ys[NL_SIMD_CHUNK], zs[NL_SIMD_CHUNK], v[NL_SIMD_CHUNK];
+    for (size_t k0 = 0; k0 < n; k0 += NL_SIMD_CHUNK) {
+      size_t m = n - k0 < NL_SIMD_CHUNK ? n - k0 : NL_SIMD_CHUNK;
+      for (size_t k = 0; k < m; k++) { xs[k] = x0 + (double)(k0 + k) * dx; ys[k] = y; zs[k] = z; }
+      double *dst = mode == NL_SIMD_STORE ? out + k0 : v;
+      if (t) nl_noise_grad2_points(t, xs, ys, m, dst);
+      else nl_noise_perm3_points(p, xs, ys, zs, m, dst);
+      if (mode == NL_SIMD_STORE) continue;
+      double *o = out + k0;   /* nl_fractal_row's loops */
+      for (size_t k = 0; k < m; k++) {
+        double s = mode & NL_SIMD_ABS ? fabs(v[k]) : v[k];
+        o[k] = ((mode & 3) == NL_SIMD_FIRST ? 0.0 : o[k]) + amp * s;
+      }
+    }
+    return;
+  }
+  double sgx[NL_SIMD_STACK_COLS], sa[NL_SIMD_STACK_COLS], *a;
+  double *gx = column_arrays(ncol, sgx, sa, &a);
+  if (t) columns2(t, ifirst, ncol, y, gx, a);
+  else columns3(K, p, p32, ifirst, ncol, y, z, gx, a);
+  K->samples(gx, a, ifirst, x0, dx, n, out, mode, amp);
   if (gx != sgx) { free(gx); free(a); }
+}
+
+#define NL_SIMD_MAX_N ((size_t)1 << 29)   /* column indices stay ints */
+
+int nl_noise_simd_row2(const nl_grad2 *t, double x0, double dx, double y, size_t n, double *out)
+{
+  const nl_noise_simd_kernels *K = kernels();
+  if (!K || n > NL_SIMD_MAX_N) return GSL_CONTINUE;
+  row_any(K, t, NULL, NULL, x0, dx, y, 0, n, out, NL_SIMD_STORE, 1);
   return GSL_SUCCESS;
 }
 
@@ -218,26 +252,31 @@ int nl_noise_simd_row3(const nl_perm3 *p, double x0, double dx, double y, double
 {
   const nl_noise_simd_kernels *K = kernels();
   const int *p32;
-  if (!K || n > ((size_t)1 << 29) || !(p32 = perm3_ints(p))) return GSL_CONTINUE;
-  long ifirst;
-  size_t ncol = row_columns(x0, dx, n, &ifirst);
-  if (ncol == 0) {
-    double xs[NL_SIMD_CHUNK], ys[NL_SIMD_CHUNK], zs[NL_SIMD_CHUNK];
-    for (size_t k0 = 0; k0 < n; k0 += NL_SIMD_CHUNK) {
-      size_t m = n - k0 < NL_SIMD_CHUNK ? n - k0 : NL_SIMD_CHUNK;
-      for (size_t k = 0; k < m; k++) { xs[k] = x0 + (double)(k0 + k) * dx; ys[k] = y; zs[k] = z; }
-      nl_noise_perm3_points(p, xs, ys, zs, m, out + k0);
-    }
-    return GSL_SUCCESS;
+  if (!K || n > NL_SIMD_MAX_N || !(p32 = perm3_ints(p))) return GSL_CONTINUE;
+  row_any(K, NULL, p, p32, x0, dx, y, z, n, out, NL_SIMD_STORE, 1);
+  return GSL_SUCCESS;
+}
+
+/* nl_fractal_row (nl_noise.c) with each octave summed as its row is made:
+ * the same operations, out = 0, then out = out + amp_l N_l (or |N_l|), one
+ * octave after another, without the pass through scratch. */
+int nl_noise_simd_fractal_row(const nl_basis *b, const nl_octaves *o, double x0, double dx,
+                              double y, double z, size_t n, double *out, double *scratch)
+{
+  (void)scratch;
+  const nl_noise_simd_kernels *K = kernels();
+  if (!K || n > NL_SIMD_MAX_N || o->n < 1) return GSL_CONTINUE;
+  const nl_grad2 *t = NULL;
+  const nl_perm3 *p = NULL;
+  const int *p32 = NULL;
+  if (b->row == nl_basis_grad2(NULL).row) t = b->ctx;
+  else if (b->row == nl_basis_perm3(NULL).row && (p32 = perm3_ints(b->ctx))) p = b->ctx;
+  else return GSL_CONTINUE;
+  for (int l = 0; l < o->n; l++) {
+    double f = o->freq[l];
+    int mode = (l == 0 ? NL_SIMD_FIRST : NL_SIMD_ADD) | (o->turbulence ? NL_SIMD_ABS : 0);
+    row_any(K, t, p, p32, x0 * f, dx * f, y * f, z * f, n, out, mode, o->amp[l]);
   }
-  double sgx[NL_SIMD_STACK_COLS], sa[NL_SIMD_STACK_COLS], *a;
-  double *gx = column_arrays(ncol, sgx, sa, &a);
-  long j = lfloor(y), k = lfloor(z);
-  double fy = lfrac(y, j), fz = lfrac(z, k), v = fade(fy), w = fade(fz);
-  K->columns3(p, p32, (unsigned)(ifirst & 255), (unsigned)(j & 255), (unsigned)(k & 255),
-              fy, fz, v, w, (ncol + NL_SIMD_PAD - 1) / NL_SIMD_PAD * NL_SIMD_PAD, gx, a);
-  K->samples(gx, a, ifirst, x0, dx, n, out);
-  if (gx != sgx) { free(gx); free(a); }
   return GSL_SUCCESS;
 }
 

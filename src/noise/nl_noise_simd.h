@@ -25,14 +25,22 @@
 
 /* Columns and points are padded to a multiple of this (the widest level). */
 #define NL_SIMD_PAD 8
+/* Zeroed doubles after a row's columns (a window may read past the last). */
+#define NL_SIMD_COL_PAD 16
+
+/* Sample modes: out = v; out = 0 + amp v (first octave of a sum); out =
+ * out + amp v (the others), in nl_fractal_row's operation order; | ABS:
+ * |v| (turbulence). */
+enum { NL_SIMD_STORE = 0, NL_SIMD_FIRST = 1, NL_SIMD_ADD = 2, NL_SIMD_ABS = 4 };
 
 typedef struct {
-  /* The sample loop of a row (nl_noise.c's row_from_columns): out[k] =
-   * blend over columns c = floor(x_k) - ifirst, x_k = x0 + k dx, k < n.
-   * Precondition: every x_k has |x_k| < 2^52 and its column c and c + 1 lie
-   * in gx, a (row_columns guarantees both). */
+  /* The sample loop of a row (nl_noise.c's row_from_columns): v_k = blend
+   * over columns c = floor(x_k) - ifirst, x_k = x0 + k dx, k < n, and
+   * out[k] = v_k, or the octave sum's step (mode, below). Precondition:
+   * every x_k has |x_k| < 2^52 and its columns c and c + 1 lie in gx, a
+   * (row_columns guarantees both), which are padded by NL_SIMD_COL_PAD. */
   void (*samples)(const double *gx, const double *a, long ifirst, double x0, double dx,
-                  size_t n, double *out);
+                  size_t n, double *out, int mode, double amp);
   /* Columns ifirst + c, c < ncol (a multiple of NL_SIMD_PAD; the arrays
    * have room) of the improved noise at row j, plane k: xm = ifirst & 255,
    * ym = j & 255, zm = k & 255; p32 is the permutation widened to int, and
@@ -54,6 +62,10 @@ extern const nl_noise_simd_kernels nl_noise_simd_sse2, nl_noise_simd_avx2, nl_no
 int nl_noise_simd_row2(const nl_grad2 *t, double x0, double dx, double y, size_t n, double *out);
 int nl_noise_simd_row3(const nl_perm3 *p, double x0, double dx, double y, double z,
                        size_t n, double *out);
+/* nl_fractal_row over nl_basis_grad2 or nl_basis_perm3, each octave's row
+ * summed as it is made; GSL_CONTINUE for another basis or the scalar level. */
+int nl_noise_simd_fractal_row(const nl_basis *b, const nl_octaves *o, double x0, double dx,
+                              double y, double z, size_t n, double *out, double *scratch);
 
 /* Perlin's grad3 (nl_noise.c) by component, for table lookups. */
 extern const double nl_noise_simd_g3[3][16];

@@ -80,13 +80,14 @@ static inline vd g3(const p3tab *t, int comp, vi h)
  * b the lowest of them, and gx[b + 1 .. b + 8] for the right-hand ones.
  * The column arrays are padded for the load past the last column. */
 static void samples(const double *gx, const double *a, long ifirst, double x0, double dx,
-                    size_t n, double *out)
+                    size_t n, double *out, int mode, double amp)
 {
-  if (n < NL_SIMD_W || !(fabs(dx) * 7 <= 4)) { samples_lanes(gx, a, ifirst, x0, dx, n, out); return; }
+  if (!(fabs(dx) * 7 <= 4)) { samples_lanes(gx, a, ifirst, x0, dx, n, out, mode, amp); return; }
   vd kv, vfirst = SPLAT((double)ifirst);
   for (int l = 0; l < NL_SIMD_W; l++) kv[l] = l;
   int low = dx < 0 ? NL_SIMD_W - 1 : 0;   /* the lane of the lowest column */
-  for (size_t k = 0;;) {
+  size_t k = 0;
+  for (; k + NL_SIMD_W <= n; k += NL_SIMD_W, kv += (double)NL_SIMD_W) {
     vd x = kv * dx + x0;                  /* x0 + (double)k * dx */
     vd cell = v_cell(x);
     vd c = cell - vfirst;                 /* lfloor(x) - ifirst, exact */
@@ -97,15 +98,10 @@ static void samples(const double *gx, const double *a, long ifirst, double x0, d
     vd a0 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(a + b));
     vd g1 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(gx + b + 1));
     vd a1 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(a + b + 1));
-    st(out + k, v_blend(v_frac(x, cell), g0, a0, g1, a1));
-    if (k + NL_SIMD_W >= n) break;
-    k += NL_SIMD_W;
-    kv += (double)NL_SIMD_W;
-    if (k + NL_SIMD_W > n) {              /* the last block overlaps: same values again */
-      kv += (double)(n - NL_SIMD_W) - (double)k;
-      k = n - NL_SIMD_W;
-    }
+    vd v = v_blend(v_frac(x, cell), g0, a0, g1, a1);
+    st(out + k, v_emit(out + k, v, mode, amp));
   }
+  if (k < n) samples_tail(gx, a, ifirst, x0, dx, k, n, out, mode, amp);
 }
 
 const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3, points2, points3};

@@ -51,35 +51,46 @@ static inline vl v_small(vd x)   /* |x| < 2^31: the cell fits an int; false for 
 
 /* ---- rows ---------------------------------------------------------------- */
 
+/* Where a row's values go (nl_noise_simd.h, NL_SIMD_STORE ...): stored, or
+ * added into a sum of octaves as nl_fractal_row does it, out = out + amp v
+ * (out = 0 + amp v for the first octave; |v| for turbulence). */
+static inline vd v_emit(const double *out, vd v, int mode, double amp)
+{
+  if (mode & NL_SIMD_ABS) v = (vd)((vl)v & 0x7fffffffffffffffLL);   /* fabs */
+  if ((mode & 3) == NL_SIMD_STORE) return v;
+  return ((mode & 3) == NL_SIMD_FIRST ? SPLAT(0.0) : ld(out)) + amp * v;
+}
+
+/* Samples k0 .. n - 1 (fewer than W of them) through a padded block: the
+ * spare lanes repeat sample k0, so every lane stays inside the columns. */
+static void samples_tail(const double *gx, const double *a, long ifirst, double x0, double dx,
+                         size_t k0, size_t n, double *out, int mode, double amp)
+{
+  double xs[NL_SIMD_W], res[NL_SIMD_W], acc[NL_SIMD_W] = {0};
+  for (int l = 0; l < NL_SIMD_W; l++) xs[l] = x0 + (double)(k0 + ((size_t)l < n - k0 ? (size_t)l : 0)) * dx;
+  memcpy(acc, out + k0, (n - k0) * sizeof *acc);
+  vd x = ld(xs), cell = v_cell(x);
+  vi c = __builtin_convertvector(cell - SPLAT((double)ifirst), vi);
+  vd v = v_blend(v_frac(x, cell), v_gd(gx, c), v_gd(a, c), v_gd(gx + 1, c), v_gd(a + 1, c));
+  st(res, v_emit(acc, v, mode, amp));
+  memcpy(out + k0, res, (n - k0) * sizeof *out);
+}
+
 static void samples_lanes(const double *gx, const double *a, long ifirst, double x0, double dx,
-                    size_t n, double *out)
+                          size_t n, double *out, int mode, double amp)
 {
   vd kv, vfirst = SPLAT((double)ifirst);
   for (int l = 0; l < NL_SIMD_W; l++) kv[l] = l;
-  if (n >= NL_SIMD_W) {
-    for (size_t k = 0;;) {
-      /* x = x0 + (double)k * dx; i = lfloor(x); c = i - ifirst */
-      vd x = kv * dx + x0;
-      vd cell = v_cell(x);
-      vi c = __builtin_convertvector(cell - vfirst, vi);
-      st(out + k, v_blend(v_frac(x, cell), v_gd(gx, c), v_gd(a, c), v_gd(gx + 1, c), v_gd(a + 1, c)));
-      if (k + NL_SIMD_W >= n) break;
-      k += NL_SIMD_W;
-      kv += (double)NL_SIMD_W;
-      if (k + NL_SIMD_W > n) {   /* the last block overlaps: same values again */
-        kv += (double)(n - NL_SIMD_W) - (double)k;   /* integers < 2^53: exact */
-        k = n - NL_SIMD_W;
-      }
-    }
-    return;
+  size_t k = 0;
+  for (; k + NL_SIMD_W <= n; k += NL_SIMD_W, kv += (double)NL_SIMD_W) {
+    /* x = x0 + (double)k * dx; i = lfloor(x); c = i - ifirst */
+    vd x = kv * dx + x0;
+    vd cell = v_cell(x);
+    vi c = __builtin_convertvector(cell - vfirst, vi);
+    vd v = v_blend(v_frac(x, cell), v_gd(gx, c), v_gd(a, c), v_gd(gx + 1, c), v_gd(a + 1, c));
+    st(out + k, v_emit(out + k, v, mode, amp));
   }
-  /* Fewer samples than lanes: pad with copies of the first sample. */
-  double xs[NL_SIMD_W], res[NL_SIMD_W];
-  for (int l = 0; l < NL_SIMD_W; l++) xs[l] = x0 + (double)((size_t)l < n ? (size_t)l : 0) * dx;
-  vd x = ld(xs), cell = v_cell(x);
-  vi c = __builtin_convertvector(cell - vfirst, vi);
-  st(res, v_blend(v_frac(x, cell), v_gd(gx, c), v_gd(a, c), v_gd(gx + 1, c), v_gd(a + 1, c)));
-  memcpy(out, res, n * sizeof *out);
+  if (k < n) samples_tail(gx, a, ifirst, x0, dx, k, n, out, mode, amp);
 }
 
 /* Perlin's grad3 components, by table lookup so the products below are the
