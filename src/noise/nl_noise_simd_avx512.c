@@ -104,4 +104,63 @@ static void samples(const double *gx, const double *a, long ifirst, double x0, d
   if (k < n) samples_tail(gx, a, ifirst, x0, dx, k, n, out, mode, amp);
 }
 
+/* Points 16 at a time: the byte permutes of the hashing fill a whole
+ * register of 16 int lanes; the arithmetic runs on two halves of 8 doubles. */
+typedef int vi16 __attribute__((vector_size(64)));
+static inline vi16 p3_get16(const p3tab *t, vi16 idx)
+{
+  __m512i ix = (__m512i)idx;
+  __m512i lo = _mm512_permutex2var_epi8(t->p[0], ix, t->p[1]);
+  __m512i hi = _mm512_permutex2var_epi8(t->p[2], ix, t->p[3]);
+  return (vi16)_mm512_mask_blend_epi8(_mm512_movepi8_mask(ix), lo, hi) & 255;
+}
+static inline vi16 join(vi lo, vi hi)
+{
+  return (vi16)_mm512_inserti64x4(_mm512_castsi256_si512((__m256i)lo), (__m256i)hi, 1);
+}
+static inline vi half(vi16 v, int h)
+{
+  return h ? (vi)_mm512_extracti64x4_epi64((__m512i)v, 1) : (vi)_mm512_castsi512_si256((__m512i)v);
+}
+
+static void points3(const nl_perm3 *P, const int *p32, const double *x, const double *y,
+                    const double *z, size_t n, double *out)
+{
+  p3tab tab = p3_make(P, p32);
+  size_t k = 0;
+  for (; k + 16 <= n; k += 16) {
+    vl ok = (vl){0} - 1;
+    vi i[2], j[2], kk[2];
+    for (int h = 0; h < 2; h++) {
+      vd vx = ld(x + k + 8 * h), vy = ld(y + k + 8 * h), vz = ld(z + k + 8 * h);
+      ok &= v_small(vx) & v_small(vy) & v_small(vz);
+      i[h] = __builtin_convertvector(v_cell(vx), vi);
+      j[h] = __builtin_convertvector(v_cell(vy), vi);
+      kk[h] = __builtin_convertvector(v_cell(vz), vi);
+    }
+    if (!v_all(ok)) { points3_lanes(P, p32, x + k, y + k, z + k, 16, out + k); continue; }
+    /* Perlin's hashing of columns i and i + 1 (nl_noise.c column3), 16 lanes */
+    vi16 I = join(i[0], i[1]), Y = join(j[0], j[1]) & 255, Z = join(kk[0], kk[1]) & 255;
+    vi16 hs[2][4];
+    for (int c = 0; c < 2; c++) {
+      vi16 X = (vi16)(((unsigned)c + (__attribute__((vector_size(64))) unsigned)I) & 255u);
+      vi16 A = p3_get16(&tab, X) + Y, AA = p3_get16(&tab, A) + Z, AB = p3_get16(&tab, A + 1) + Z;
+      hs[c][0] = p3_get16(&tab, AA) & 15; hs[c][1] = p3_get16(&tab, AB) & 15;
+      hs[c][2] = p3_get16(&tab, AA + 1) & 15; hs[c][3] = p3_get16(&tab, AB + 1) & 15;
+    }
+    /* the arithmetic, 8 lanes at a time; the cells again rather than kept */
+    for (int h = 0; h < 2; h++) {
+      vd vx = ld(x + k + 8 * h), vy = ld(y + k + 8 * h), vz = ld(z + k + 8 * h);
+      vd ci = v_cell(vx), fy = v_frac(vy, v_cell(vy)), fz = v_frac(vz, v_cell(vz));
+      vd v = v_fade(fy), w = v_fade(fz), g0, a0, g1, a1;
+      v_column3_fp(&tab, half(hs[0][0], h), half(hs[0][1], h), half(hs[0][2], h), half(hs[0][3], h),
+                   fy, fz, v, w, &g0, &a0);
+      v_column3_fp(&tab, half(hs[1][0], h), half(hs[1][1], h), half(hs[1][2], h), half(hs[1][3], h),
+                   fy, fz, v, w, &g1, &a1);
+      st(out + k + 8 * h, v_blend(v_frac(vx, ci), g0, a0, g1, a1));
+    }
+  }
+  if (k < n) points3_lanes(P, p32, x + k, y + k, z + k, n - k, out + k);
+}
+
 const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3, points2, points3};

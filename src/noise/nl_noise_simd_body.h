@@ -103,6 +103,9 @@ static inline vi p3_get(const p3tab *t, vi idx) { return v_gi(t->p, idx); }
 static inline vd g3(const p3tab *t, int comp, vi h) { (void)t; return v_gd(nl_noise_simd_g3[comp], h); }
 #endif
 
+static inline void v_column3_fp(const p3tab *p, vi h00, vi h10, vi h01, vi h11, vd fy, vd fz,
+                                vd v, vd w, vd *gxo, vd *ao);
+
 /* nl_noise.c column3 (Perlin 2002's hashing, the x terms separated) for
  * lanes of columns X at fixed Y, Z. */
 static inline void v_column3(const p3tab *p, vi X, vi Y, vi Z, vd fy, vd fz, vd v, vd w,
@@ -111,6 +114,13 @@ static inline void v_column3(const p3tab *p, vi X, vi Y, vi Z, vd fy, vd fz, vd 
   vi A = p3_get(p, X) + Y, AA = p3_get(p, A) + Z, AB = p3_get(p, A + 1) + Z;
   vi h00 = p3_get(p, AA) & 15, h10 = p3_get(p, AB) & 15, h01 = p3_get(p, AA + 1) & 15,
      h11 = p3_get(p, AB + 1) & 15;
+  v_column3_fp(p, h00, h10, h01, h11, fy, fz, v, w, gxo, ao);
+}
+
+/* The arithmetic of column3 once the four corner hashes are known. */
+static inline void v_column3_fp(const p3tab *p, vi h00, vi h10, vi h01, vi h11, vd fy, vd fz,
+                                vd v, vd w, vd *gxo, vd *ao)
+{
   *gxo = v_lerp(w, v_lerp(v, g3(p, 0, h00), g3(p, 0, h10)), v_lerp(v, g3(p, 0, h01), g3(p, 0, h11)));
   vd fy1 = fy - 1.0, fz1 = fz - 1.0;
   /* yz_part(h, y, z) = grad3[h][1] * y + grad3[h][2] * z */
@@ -175,7 +185,7 @@ static void points2(const nl_grad2 *t, const double *x, const double *y, size_t 
   }
 }
 
-static void points3(const nl_perm3 *P, const int *p32, const double *x, const double *y,
+static void points3_lanes(const nl_perm3 *P, const int *p32, const double *x, const double *y,
                     const double *z, size_t n, double *out)
 {
   p3tab tab = p3_make(P, p32);
