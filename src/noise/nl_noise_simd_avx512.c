@@ -78,18 +78,22 @@ static inline vd g3(const p3tab *t, int comp, vi h)
  * most 7 columns (7 |dx| <= 4 leaves room for the rounding of x, whose ulp
  * is at most 1/2 below 2^52), the columns they use are gx[b .. b + 7] for
  * b the lowest of them, and gx[b + 1 .. b + 8] for the right-hand ones.
- * The column arrays are padded for the load past the last column. */
-static void samples(const double *gx, const double *a, long ifirst, double x0, double dx,
-                    size_t n, double *out, int mode, double amp)
+ * The column arrays are padded for the load past the last column.
+ * plain: no x is -0 (so no cell is -0) and none lies in [-2^-54, 0), the
+ * only doubles whose x - floor(x) rounds to 1: v_cell's +0 and v_frac's
+ * mask change nothing there and are left out (same bits, 3 fewer
+ * operations per 8 samples). */
+static inline __attribute__((always_inline)) void
+samples_win(const double *gx, const double *a, long ifirst, double x0, double dx, size_t n,
+            double *out, int mode, double amp, int plain)
 {
-  if (!(fabs(dx) * 7 <= 4)) { samples_lanes(gx, a, ifirst, x0, dx, n, out, mode, amp); return; }
   vd kv, vfirst = SPLAT((double)ifirst);
   for (int l = 0; l < NL_SIMD_W; l++) kv[l] = l;
   int low = dx < 0 ? NL_SIMD_W - 1 : 0;   /* the lane of the lowest column */
   size_t k = 0;
   for (; k + NL_SIMD_W <= n; k += NL_SIMD_W, kv += (double)NL_SIMD_W) {
     vd x = kv * dx + x0;                  /* x0 + (double)k * dx */
-    vd cell = v_cell(x);
+    vd cell = plain ? v_floor(x) : v_cell(x);
     vd c = cell - vfirst;                 /* lfloor(x) - ifirst, exact */
     double cb = c[low];
     long b = (long)cb;
@@ -98,10 +102,20 @@ static void samples(const double *gx, const double *a, long ifirst, double x0, d
     vd a0 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(a + b));
     vd g1 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(gx + b + 1));
     vd a1 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(a + b + 1));
-    vd v = v_blend(v_frac(x, cell), g0, a0, g1, a1);
+    vd v = v_blend(plain ? x - cell : v_frac(x, cell), g0, a0, g1, a1);
     st(out + k, v_emit(out + k, v, mode, amp));
   }
   if (k < n) samples_tail(gx, a, ifirst, x0, dx, k, n, out, mode, amp);
+}
+
+static void samples(const double *gx, const double *a, long ifirst, double x0, double dx,
+                    size_t n, double *out, int mode, double amp)
+{
+  if (!(fabs(dx) * 7 <= 4)) { samples_lanes(gx, a, ifirst, x0, dx, n, out, mode, amp); return; }
+  double xl = x0 + (double)(n - 1) * dx, lo = fmin(x0, xl), hi = fmax(x0, xl);
+  int plain = !(x0 == 0 && signbit(x0)) && !(lo < 0 && hi >= -0x1p-50);
+  if (plain) samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 1);
+  else samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 0);
 }
 
 /* Points 16 at a time: the byte permutes of the hashing fill a whole
