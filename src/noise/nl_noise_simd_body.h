@@ -19,7 +19,14 @@
 
 static inline vd ld(const double *p) { vd v; memcpy(&v, p, sizeof v); return v; }   /* loadu */
 static inline void st(double *p, vd v) { memcpy(p, &v, sizeof v); }                 /* storeu */
-#define SPLAT(x) ((vd){0} + (double)(x))
+/* A broadcast; not 0 + x, which turns -0 into +0. */
+static inline vd splat(double x)
+{
+  vd v;
+  for (int l = 0; l < NL_SIMD_W; l++) v[l] = x;
+  return v;
+}
+#define SPLAT(x) splat((double)(x))
 #define SPLATU(x) ((vu){0} + (unsigned)(x))
 
 /* fade(t) = t * t * t * (t * (t * 6 - 15) + 10), Perlin 2002's order. */

@@ -204,6 +204,63 @@ NL_TEST(perm3_levels_match_scalar)
   compare_perm3(&p, 6);
 }
 
+/* Rows at the edges of the kernels' shortcuts: x = -0 (whose cell must read
+ * +0), x in [-2^-54, 0) (whose fraction rounds to 1 and is mapped to 0),
+ * steps at the window's limit (7 |dx| = 4) and either side of it, rows
+ * ending at the lattice bound 2^52, and every length up to 3 vectors. */
+NL_TEST(edge_rows_match_scalar)
+{
+  find_levels();
+  nl_grad2 *t = nl_grad2_alloc(64);
+  nl_grad2_seed(t, 5);
+  nl_perm3 p;
+  nl_perm3_seed(&p, 5);
+  const double x0s[] = {-0.0, 0.0, -0x1p-54, -0x1p-55, -1e-20, -0x1p-53, -0x1p-50, -1.0 / 3, 0x1p52 - 40,
+                        -0x1p52 + 1, 1e-300, -5e-324};
+  const double dxs[] = {1.0 / 64, -1.0 / 64, 4.0 / 7, -4.0 / 7, 0.5714286, 0x1p-60, -0x1p-60, 0.0, -0.0, 1.0, 0.75};
+  const double ys[] = {-0.0, 0.0, 3.0, -1e-20, 0.25};
+  double ref[3 * 8 + 1], got[3 * 8 + 1], acc[3 * 8 + 1];
+  int bad = 0;
+  for (size_t a = 0; a < sizeof x0s / sizeof *x0s; a++)
+    for (size_t d = 0; d < sizeof dxs / sizeof *dxs; d++)
+      for (size_t yi = 0; yi < sizeof ys / sizeof *ys; yi++)
+        for (size_t n = 1; n <= 3 * 8 + 1; n++)
+          for (int which = 0; which < 2; which++) {
+            nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
+            if (which) nl_noise3_row(&p, x0s[a], dxs[d], ys[yi], -ys[yi], n, ref);
+            else nl_noise2_row(t, x0s[a], dxs[d], ys[yi], n, ref);
+            for (int L = 0; L < nlevels; L++) {
+              nl_noise_simd_set(levels[L]);
+              if (which) nl_noise3_row(&p, x0s[a], dxs[d], ys[yi], -ys[yi], n, got);
+              else nl_noise2_row(t, x0s[a], dxs[d], ys[yi], n, got);
+              if (!same(got, ref, n) && bad++ < 5)
+                fprintf(stderr, "  %s row %s x0=%a dx=%a y=%a n=%zu differs\n", which ? "perm3" : "grad2",
+                        nl_noise_simd_name(levels[L]), x0s[a], dxs[d], ys[yi], n);
+              compared += (long)n;
+            }
+          }
+  NL_CHECK(bad == 0);
+  /* the same rows as octave sums (first octave 0 + a v, turbulence) */
+  nl_basis b[] = {nl_basis_grad2(t), nl_basis_perm3(&p)};
+  nl_octaves o = nl_octaves_fbm(3, -0.5, 2.0);
+  for (int tb = 0; tb < 2; tb++, o.turbulence = 1)
+    for (size_t a = 0; a < sizeof x0s / sizeof *x0s; a++)
+      for (size_t d = 0; d < sizeof dxs / sizeof *dxs; d++)
+        for (int bi = 0; bi < 2; bi++) {
+          size_t n = 3 * 8 + 1 - a;
+          nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
+          nl_fractal_row(&b[bi], &o, x0s[a], dxs[d], -0.0, 0.0, n, ref, acc);
+          for (int L = 0; L < nlevels; L++) {
+            nl_noise_simd_set(levels[L]);
+            nl_fractal_row(&b[bi], &o, x0s[a], dxs[d], -0.0, 0.0, n, got, acc);
+            NL_CHECK(same(got, ref, n));
+            compared += (long)n;
+          }
+        }
+  nl_noise_simd_set(nl_noise_simd_best());
+  nl_grad2_free(t);
+}
+
 /* The sums the experiments use (S1-S4): fBm grids over both bases. */
 NL_TEST(fractal_grids_match_scalar)
 {
