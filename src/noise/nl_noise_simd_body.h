@@ -207,10 +207,28 @@ static void points3_lanes(const nl_perm3 *P, const int *p32, const double *x, co
     vd fy = v_frac(vy, cj), fz = v_frac(vz, ck), v = v_fade(fy), w = v_fade(fz);
     vi i = __builtin_convertvector(ci, vi), j = __builtin_convertvector(cj, vi),
        kk = __builtin_convertvector(ck, vi);
-    vi Y = j & 255, Z = kk & 255;
     vd g0, a0, g1, a1;
+#ifdef NL_SIMD_HAVE_TABLES
+    vi Y = j & 255, Z = kk & 255;
     v_column3(&tab, i & 255, Y, Z, fy, fz, v, w, &g0, &a0);
     v_column3(&tab, (vi)(((vu)i + 1u) & 255u), Y, Z, fy, fz, v, w, &g1, &a1);
+#else
+    /* Without register tables the hashing is scalar, lane by lane, in one
+     * pass (a vector round trip per lookup costs more than the lookups). */
+    const unsigned char *pp = P->p;
+    vi h[2][4];
+    for (int l = 0; l < NL_SIMD_W; l++) {
+      int Y = j[l] & 255, Z = kk[l] & 255;
+      for (int c = 0; c < 2; c++) {
+        int X = (int)(((unsigned)i[l] + (unsigned)c) & 255u);
+        int A = pp[X] + Y, AA = pp[A] + Z, AB = pp[A + 1] + Z;
+        h[c][0][l] = pp[AA] & 15; h[c][1][l] = pp[AB] & 15;
+        h[c][2][l] = pp[AA + 1] & 15; h[c][3][l] = pp[AB + 1] & 15;
+      }
+    }
+    v_column3_fp(&tab, h[0][0], h[0][1], h[0][2], h[0][3], fy, fz, v, w, &g0, &a0);
+    v_column3_fp(&tab, h[1][0], h[1][1], h[1][2], h[1][3], fy, fz, v, w, &g1, &a1);
+#endif
     st(out + k, v_blend(v_frac(vx, ci), g0, a0, g1, a1));
   }
 }
