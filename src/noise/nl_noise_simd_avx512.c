@@ -85,19 +85,21 @@ static inline vd g3(const p3tab *t, int comp, vi h)
  * operations per 8 samples). */
 static inline __attribute__((always_inline)) void
 samples_win(const double *gx, const double *a, long ifirst, double x0, double dx, size_t n,
-            double *out, int mode, double amp, int plain)
+            double *out, int mode, double amp, int plain, int rev)
 {
   vd kv, vfirst = SPLAT((double)ifirst);
   for (int l = 0; l < NL_SIMD_W; l++) kv[l] = l;
-  int low = dx < 0 ? NL_SIMD_W - 1 : 0;   /* the lane of the lowest column */
   size_t k = 0;
   for (; k + NL_SIMD_W <= n; k += NL_SIMD_W, kv += (double)NL_SIMD_W) {
     vd x = kv * dx + x0;                  /* x0 + (double)k * dx */
     vd cell = plain ? v_floor(x) : v_cell(x);
     vd c = cell - vfirst;                 /* lfloor(x) - ifirst, exact */
-    double cb = c[low];
-    long b = (long)cb;
-    __m512i li = _mm512_cvttpd_epi64((__m512d)(c - cb));
+    /* the lowest column: lane 0, or lane 7 when dx < 0 (rev), kept in
+     * registers (a round trip through memory stalls the loads below) */
+    __m128d lane = _mm512_castpd512_pd128((__m512d)c);
+    if (rev) { __m128d q = _mm512_extractf64x2_pd((__m512d)c, 3); lane = _mm_unpackhi_pd(q, q); }
+    long b = _mm_cvttsd_si64(lane);
+    __m512i li = _mm512_cvttpd_epi64(_mm512_sub_pd((__m512d)c, _mm512_broadcastsd_pd(lane)));
     vd g0 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(gx + b));
     vd a0 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(a + b));
     vd g1 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(gx + b + 1));
@@ -114,8 +116,13 @@ static void samples(const double *gx, const double *a, long ifirst, double x0, d
   if (!(fabs(dx) * 7 <= 4)) { samples_lanes(gx, a, ifirst, x0, dx, n, out, mode, amp); return; }
   double xl = x0 + (double)(n - 1) * dx, lo = fmin(x0, xl), hi = fmax(x0, xl);
   int plain = !(x0 == 0 && signbit(x0)) && !(lo < 0 && hi >= -0x1p-50);
-  if (plain) samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 1);
-  else samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 0);
+  if (dx >= 0) {
+    if (plain) samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 1, 0);
+    else samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 0, 0);
+  } else {
+    if (plain) samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 1, 1);
+    else samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 0, 1);
+  }
 }
 
 /* Points 16 at a time: the byte permutes of the hashing fill a whole
