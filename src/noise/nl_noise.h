@@ -79,8 +79,8 @@ void nl_noise3_row(const nl_perm3 *p, double x0, double dx, double y, double z,
  *
  * Rows of both noises (and so the sums of octaves over nl_basis_grad2 and
  * nl_basis_perm3) and the batches below run on the best vector unit the CPU
- * has: SSE2 (the x86-64 baseline), AVX2 or AVX-512, chosen at run time (no
- * -march in the build). Every level returns the scalar code's bits (same IEEE
+ * has: SSE2 (the x86-64 baseline), AVX2 or AVX-512 (F, DQ, BW, VL, VBMI),
+ * chosen at run time (no -march in the build; nl_noise_simd.c). Every level returns the scalar code's bits (same IEEE
  * operations in the same order, no FMA); power-of-two tables index by mask.
  * NL_NOISE_SIMD=scalar|sse2|avx2|avx512 in the environment, or
  * nl_noise_simd_set, forces a level (tests and benchmarks compare them).

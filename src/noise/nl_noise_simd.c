@@ -167,7 +167,10 @@ static double *column_arrays(size_t ncol, double *sgx, double *sa, double **a)
   return gx;
 }
 
-/* nl_noise.c column2 for columns ifirst .. ifirst + ncol - 1 at y. */
+/* nl_noise.c column2 for columns ifirst .. ifirst + ncol - 1 at y: Cheng
+ * 2009 eq. 3.1-3.2, corners (i, j) and (i, j + 1) blended along y. Scalar on
+ * every level: a 2D table (M = 512 doubles per component) does not fit in
+ * registers, and loads one by one beat gathers; a row has few columns. */
 static void columns2(const nl_grad2 *t, long ifirst, size_t ncol, double y, double *gx, double *a)
 {
   long j = lfloor(y);
