@@ -2,7 +2,11 @@
  * doubles a vector. Compiled with a target pragma, never -march: called only
  * when the dispatcher has seen the CPU support it. No FMA: see
  * nl_noise_simd.h. */
+#if defined(__clang__)   /* clang has no GCC target pragma; popped at the end */
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#else
 #pragma GCC target("avx2")
+#endif
 #include "noise/nl_noise_simd.h"
 #include <immintrin.h>
 #include <string.h>
@@ -34,3 +38,7 @@ static inline int v_all(vl m) { return _mm256_movemask_pd((__m256d)m) == 15; }
 #include "noise/nl_noise_simd_body.h"
 
 const nl_noise_simd_kernels NL_SIMD_TABLE = {samples_lanes, columns3, points2, points3_lanes};
+
+#if defined(__clang__)
+#pragma clang attribute pop
+#endif

@@ -11,7 +11,11 @@
  * (vpermt2pd), and the sample loop of a row reads its columns through a
  * window of 8 loaded once per 8 samples (vpermpd).
  */
+#if defined(__clang__)   /* clang has no GCC target pragma; popped at the end */
+#pragma clang attribute push(__attribute__((target("avx512f,avx512dq,avx512bw,avx512vl,avx512vbmi,avx2"))), apply_to = function)
+#else
 #pragma GCC target("avx512f,avx512dq,avx512bw,avx512vl,avx512vbmi,avx2")
+#endif
 #include "noise/nl_noise_simd.h"
 #include <immintrin.h>
 #include <math.h>
@@ -185,3 +189,7 @@ static void points3(const nl_perm3 *P, const int *p32, const double *x, const do
 }
 
 const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3, points2, points3};
+
+#if defined(__clang__)
+#pragma clang attribute pop
+#endif
