@@ -103,6 +103,14 @@ void nl_noise_grad2_points(const nl_grad2 *t, const double *x, const double *y, 
                            double *out);
 void nl_noise_perm3_points(const nl_perm3 *p, const double *x, const double *y, const double *z,
                            size_t n, double *out);
+/* The sample loop of a quadratic B-spline row (wavelet noise, nl_wavelet_row)
+ * on the dispatched level: out[k] += weight * (w0 L[i] + w1 L[i+1] + w2 L[i+2])
+ * at x0 + k dx, k < count, with the weights and first tap i of nl_wavelet.c's
+ * bspline() and L the period line[0 .. n-1] repeated. GSL_SUCCESS, or
+ * GSL_CONTINUE (nothing done) on the scalar level, for sparse rows and
+ * beyond |x| < 2^51: then the caller's own loop runs. */
+int nl_noise_bspline_row(const double *line, long n, double x0, double dx, size_t count,
+                         double weight, double *out);
 
 /* ---- a noise as a basis for sums ------------------------------------ */
 

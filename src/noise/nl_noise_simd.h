@@ -53,6 +53,11 @@ typedef struct {
   void (*points2)(const nl_grad2 *t, const double *x, const double *y, size_t n, double *out);
   void (*points3)(const nl_perm3 *p, const int *p32, const double *x, const double *y,
                   const double *z, size_t n, double *out);
+  /* nl_wavelet_row's sample loop over the unwrapped line L (columns
+   * a, a + 1, ..., padded by NL_SIMD_COL_PAD): see nl_noise_bspline_row.
+   * Precondition: every x_k has |x_k| < 2^51 and its taps lie in L. */
+  void (*bspline)(const double *L, long a, double x0, double dx, size_t n, double weight,
+                  double *out);
 } nl_noise_simd_kernels;
 
 extern const nl_noise_simd_kernels nl_noise_simd_sse2, nl_noise_simd_avx2, nl_noise_simd_avx512;

@@ -19,6 +19,7 @@ typedef int vi __attribute__((vector_size(16)));
 typedef unsigned vu __attribute__((vector_size(16)));
 
 static inline vd v_floor(vd x) { return (vd)_mm256_floor_pd((__m256d)x); }
+static inline vd v_ceil(vd x) { return (vd)_mm256_ceil_pd((__m256d)x); }
 /* Lookups lane by lane: on the machines measured (AMD Zen 5) a gather
  * instruction costs more than its loads one by one. */
 static inline vd v_gd(const double *b, vi i)
@@ -37,7 +38,7 @@ static inline int v_all(vl m) { return _mm256_movemask_pd((__m256d)m) == 15; }
 
 #include "noise/nl_noise_simd_body.h"
 
-const nl_noise_simd_kernels NL_SIMD_TABLE = {samples_lanes, columns3, points2, points3_lanes};
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples_lanes, columns3, points2, points3_lanes, bspline_lanes};
 
 #if defined(__clang__)
 #pragma clang attribute pop

@@ -20,10 +20,12 @@ static inline vd v_floor(vd x)
   vd r = (x + c) - c;
   return r - (vd)((vl)((vd){0} + 1.0) & (r > x));
 }
+/* ceil(x) = -floor(-x) (the sign of a zero may differ from ceil's). */
+static inline vd v_ceil(vd x) { return -v_floor(-x); }
 static inline vd v_gd(const double *b, vi i) { return (vd){b[i[0]], b[i[1]]}; }
 static inline vi v_gi(const int *b, vi i) { return (vi){b[i[0]], b[i[1]]}; }
 static inline int v_all(vl m) { return (m[0] & m[1]) != 0; }
 
 #include "noise/nl_noise_simd_body.h"
 
-const nl_noise_simd_kernels NL_SIMD_TABLE = {samples_lanes, columns3, points2, points3_lanes};
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples_lanes, columns3, points2, points3_lanes, bspline_lanes};

@@ -8,6 +8,7 @@
  * signed zeros and NaN payloads count.
  */
 #include "noise/nl_noise.h"
+#include "wavelet/nl_wavelet.h"
 #include "nl_test.h"
 
 #include <gsl/gsl_errno.h>
@@ -259,6 +260,50 @@ NL_TEST(edge_rows_match_scalar)
         }
   nl_noise_simd_set(nl_noise_simd_best());
   nl_grad2_free(t);
+}
+
+/* Wavelet noise rows (nl_wavelet_row's sample loop, nl_noise_bspline_row):
+ * 2D tiles of power-of-two and other periods and a 3D tile, rows dense and
+ * sparse, either direction, added into values already there. */
+NL_TEST(wavelet_rows_match_scalar)
+{
+  find_levels();
+  struct { int dim, n; } tiles[] = {{2, 64}, {2, 10}, {3, 16}};
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, 77);
+  double *init = malloc(MAXROW * sizeof *init), *ref = malloc(MAXROW * sizeof *ref);
+  double *got = malloc(MAXROW * sizeof *got);
+  int bad = 0;
+  for (int ti = 0; ti < 3; ti++) {
+    nl_wavelet_tile *t = nl_wavelet_tile_alloc(tiles[ti].dim, tiles[ti].n);
+    nl_wavelet_tile_seed(t, 3 + (unsigned long)ti);
+    for (int row = 0; row < NROWS; row++) {
+      double x0, dx, y = gsl_rng_uniform(r) < 0.9 ? 100 * gsl_rng_uniform(r) - 50 : coord(r);
+      double z = gsl_rng_uniform(r) < 0.9 ? 100 * gsl_rng_uniform(r) - 50 : coord(r);
+      double weight = gsl_rng_uniform(r) < 0.2 ? 1.0 : 4 * gsl_rng_uniform(r) - 2;
+      size_t n;
+      random_row(r, &x0, &dx, &n);
+      if (row % 7 == 0) x0 = 0.5 + (double)((long)gsl_rng_uniform_int(r, 200) - 100);   /* p - 1/2 = integer */
+      for (size_t k = 0; k < n; k++) init[k] = gsl_rng_uniform(r) < 0.5 ? 0.0 : gsl_rng_uniform(r) - 0.5;
+      nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
+      memcpy(ref, init, n * sizeof *ref);
+      nl_wavelet_row(t, x0, dx, y, z, n, weight, ref);
+      for (int L = 0; L < nlevels; L++) {
+        nl_noise_simd_set(levels[L]);
+        memcpy(got, init, n * sizeof *got);
+        nl_wavelet_row(t, x0, dx, y, z, n, weight, got);
+        if (!same(got, ref, n) && bad++ < 5)
+          fprintf(stderr, "  wavelet %dD n=%d %s row x0=%a dx=%a n=%zu differs\n", tiles[ti].dim, tiles[ti].n,
+                  nl_noise_simd_name(levels[L]), x0, dx, n);
+        compared += (long)n;
+      }
+    }
+    nl_wavelet_tile_free(t);
+  }
+  NL_CHECK(bad == 0);
+  nl_noise_simd_set(nl_noise_simd_best());
+  free(init); free(ref); free(got);
+  gsl_rng_free(r);
 }
 
 /* The sums the experiments use (S1-S4): fBm grids over both bases. */
