@@ -12,7 +12,7 @@
  *
  *   build/bench/bench_cheng [--reps N] [--grid G] [--stat ks|chisq|kuiper]
  */
-#include "cheng/nl_cheng.h"
+#include "study/nl_study_cheng.h"
 
 #include <gsl/gsl_rng.h>
 #include <stdio.h>

@@ -14,35 +14,12 @@ static const int label[NROWS] = {0, 1, 2, 5, 7, 10};
 static const double paper_ms[NROWS][2] = {{54.1, 19.1}, {71.9, 40.4}, {117.5, 49.8},
                                           {298.8, 64.6}, {460.0, 69.5}, {1069.1, 89.4}};
 
-/* Largest difference of two renders in 8-bit levels. */
-static int max_level_diff(const double *a, const double *b, size_t n)
-{
-  int worst = 0;
-  for (size_t k = 0; k < n; k++) {
-    int d = abs((int)lround(255.0 * a[k]) - (int)lround(255.0 * b[k]));
-    if (d > worst) worst = d;
-  }
-  return worst;
-}
+typedef nl_smoke_pair timing;
 
-typedef struct { double ms[2]; long evals[2]; long samples; int diff; double max_noise; } timing;
-
-/* Plain then incremental render of one table; times in ms. */
 static void render_pair(nl_run *r, const nl_perm3 *p, nl_smoke s, double *img0, double *img1, timing *t)
 {
   nl_error err;
-  double *img[2] = {img0, img1};
-  for (int inc = 0; inc < 2; inc++) {
-    nl_smoke_stats st;
-    s.incremental = inc;
-    double t0 = nl_time_now();
-    if (nl_smoke_render(p, &s, img[inc], &st, &err)) nl_run_die(r, 1, "%s", err.msg);
-    t->ms[inc] = 1e3 * (nl_time_now() - t0);
-    t->evals[inc] = st.noise_evals;
-    t->samples = st.samples;
-    if (inc == 0) t->max_noise = st.max_abs_noise;
-  }
-  t->diff = max_level_diff(img0, img1, (size_t)s.width * s.height);
+  if (nl_smoke_render_pair(p, s, img0, img1, t, &err)) nl_run_die(r, 1, "%s", err.msg);
 }
 
 static nl_image *decision_image(nl_run *r, const nl_perm3 *p, const nl_smoke *s)
@@ -70,13 +47,13 @@ int main(int argc, char **argv)
   nl_run *r = nl_run_begin("a2_raymarch", "A2 - Incremental bounding on a ray-marched smoke ball", argc, argv);
   int quick = nl_run_quick(r);
   nl_smoke s = nl_smoke_default();
-  s.width = s.height = (int)nl_run_param_int(r, "size", quick ? 64 : 512, 8, 4096);
-  s.step = nl_run_param(r, "step", 0.01, 1e-4, 0.5);
-  s.stop_opacity = nl_run_param(r, "stop_opacity", 0.99, 0.0, 1.0);
-  s.slope = nl_run_param(r, "slope", -4.0, -1e3, -1e-3);
-  s.freq = nl_run_param(r, "freq", 4.0, 1e-3, 1e3);
-  s.kappa = nl_run_param(r, "kappa", 30.0, 0.0, 1e6);
-  s.octave_bound = nl_run_param(r, "octave_bound", NL_NOISE3_BOUND, 0.0, 10.0);
+  s.width = s.height = (int)nl_run_param_int(r, "size", quick ? 64 : 512, 8, 4096, "image width and height in pixels of the ray-marched smoke ball (quick 64)");
+  s.step = nl_run_param(r, "step", 0.01, 1e-4, 0.5, "ray-march step length in unit-cube units");
+  s.stop_opacity = nl_run_param(r, "stop_opacity", 0.99, 0.0, 1.0, "a ray stops when its opacity 1 - T reaches this (Arnerin: 0.99)");
+  s.slope = nl_run_param(r, "slope", -4.0, -1e3, -1e-3, "slope a < 0 of the smoke ball's density CLAMP(a d + 1 + Fnoise(p)) (Arnerin -4)");
+  s.freq = nl_run_param(r, "freq", 4.0, 1e-3, 1e3, "frequency f0 of the first noise octave (Arnerin 4)");
+  s.kappa = nl_run_param(r, "kappa", 30.0, 0.0, 1e6, "extinction per unit density and unit length, T <- T exp(-kappa density h) (Arnerin 30)");
+  s.octave_bound = nl_run_param(r, "octave_bound", NL_NOISE3_BOUND, 0.0, 10.0, "assumed sup |noise| of one octave in the incremental bound (Arnerin: 1; default measured bound)");
   nl_run_params_done(r);
   int seeds = nl_run_seeds(r);
   size_t npix = (size_t)s.width * s.height;
@@ -148,10 +125,10 @@ int main(int argc, char **argv)
                     "noise); the paper assumes |noise| <= 1, and the largest |noise| met while marching "
                     "was %.4f (`max_noise`).\n",
                   s.width, s.height, s.slope, s.freq, s.kappa, seeds, s.octave_bound,
-                  nl_table_get(t, NROWS - 1, 14));
+                  nl_table_value(t, NROWS - 1, "max_noise"));
   nl_report_table(r, t, "Plain against incrementally bounded march; paper beside ours", 4);
   int worst_diff = 0;
-  for (int k = 0; k < NROWS; k++) worst_diff = (int)fmax(worst_diff, nl_table_get(t, (size_t)k, 13));
+  for (int k = 0; k < NROWS; k++) worst_diff = (int)fmax(worst_diff, nl_table_value(t, (size_t)k, "max_diff_levels"));
   nl_report_text(r, "Bounded and plain images differ by at most %d 8-bit levels at any octave count "
                     "(they are the same sums in the same order). With the paper's unit bound at N = %d "
                     "the images differ by %d levels and the march evaluates %.1fx fewer octaves "
@@ -159,7 +136,7 @@ int main(int argc, char **argv)
                     "a shared machine: compare ratios, not milliseconds.\n",
                   worst_diff,
                   label[NROWS - 1], unit.diff, (double)unit.evals[0] / (double)unit.evals[1],
-                  nl_table_get(t, NROWS - 1, 12));
+                  nl_table_value(t, NROWS - 1, "eval_ratio"));
   nl_report_figure(r, "balls.png", "Fig. 5.2: the smoke ball at N = 0, 1, 2, 5, 7, 10 (bounded march)");
   nl_report_figure(r, "bounds.png", "Fig. 5.3: octaves needed to decide each pixel of the slice z = 0 at "
                                     "N = 10 (blue few ... red all 11; black: inside the band, never decided)");

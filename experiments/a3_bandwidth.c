@@ -6,89 +6,31 @@
 #include "bounds/nl_bounds.h"
 #include "report/nl_report.h"
 
-#include <gsl/gsl_statistics_double.h>
 #include <math.h>
-#include <string.h>
+#include <stdlib.h>
 
-enum { NSIG = 3 };
+enum { NSIG = NL_BOUNDS_NSIGNALS };
 static const char *sig_name[NSIG] = {"1st octave", "2nd octave", "Fnoise_2"};
 static const double paper[NSIG][2] = {{0.0019531, 1.7460938}, {0.0292969, 2.765625},
                                       {0.0019531, 3.1738281}};
 
-/* noise(x), noise(2x)/2 and their sum as octave lists. */
-static nl_octaves signal_octaves(int s)
+static void measure(nl_run *r, const nl_bounds_reading *rd, int seeds, double m[NSIG][7])
 {
-  nl_octaves o = nl_octaves_fractal(s == 2 ? 2 : 1);
-  if (s == 1) { o.freq[0] = 2.0; o.amp[0] = 0.5; }
-  return o;
+  nl_error err;
+  if (nl_bounds_bandwidth_seeds(rd, nl_run_seed(r), seeds, m, &err)) nl_run_die(r, 1, "%s", err.msg);
 }
 
-typedef struct { double length, rate; int shader, axis; } reading;
-
-/* The sampled line: the x axis through the origin (a GPU shader's noise(x, 0, 0))
- * or an oblique line from a random origin, which is not 256-periodic. */
-static void line_of(const reading *rd, unsigned long seed, double *origin, double *dir)
-{
-  if (rd->axis) {
-    origin[0] = origin[1] = origin[2] = 0.0;
-    dir[0] = 1.0; dir[1] = dir[2] = 0.0;
-    return;
-  }
-  double phi = 0.5 * (1.0 + sqrt(5.0)), d[3] = {1.0, 1.0 / phi, 1.0 / (phi * phi)};
-  double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  for (int a = 0; a < 3; a++) { dir[a] = d[a] / len; origin[a] = 17.0 * a + 0.37 * (double)(nl_seed_stream(seed, "a3.line_origin", 0) % 97); }
-}
-
-/* One sample of signal s under a reading; the shader stored (noise + 1)/2. */
-static double *sample(const nl_perm3 *p, int s, const reading *rd, unsigned long seed, size_t *n)
-{
-  *n = (size_t)llround(rd->length * rd->rate);
-  double *x = nl_xmalloc(*n * sizeof *x), origin[3], dir[3];
-  nl_octaves o = signal_octaves(s);
-  line_of(rd, seed, origin, dir);
-  nl_bounds_sample_line(p, &o, origin, dir, rd->rate, *n, x);
-  if (rd->shader) for (size_t k = 0; k < *n; k++) x[k] = 0.5 * (x[k] + 1.0);
-  return x;
-}
-
-/* Mean and sd over seeds of F_inf, F_sup, sigma for each signal. */
-static void measure(const reading *rd, unsigned long seed0, int seeds, double out[NSIG][7])
-{
-  double fi[NSIG][64], fs[NSIG][64], sg[NSIG][64], fr[NSIG][64];
-  for (int k = 0; k < seeds; k++) {
-    nl_perm3 p;
-    nl_perm3_seed(&p, nl_seed_replicate(seed0, k));
-    for (int s = 0; s < NSIG; s++) {
-      size_t n;
-      double *x = sample(&p, s, rd, nl_seed_replicate(seed0, k), &n);
-      nl_bandwidth bw;
-      nl_error err;
-      if (nl_bandwidth_1d(x, n, rd->rate, NL_BOUNDS_T, &bw, &err)) { fprintf(stderr, "%s\n", err.msg); exit(1); }
-      fi[s][k] = bw.f_inf; fs[s][k] = bw.f_sup; sg[s][k] = bw.sigma; fr[s][k] = bw.f_inf_rms;
-      free(x);
-    }
-  }
-  for (int s = 0; s < NSIG; s++) {
-    out[s][0] = gsl_stats_mean(fi[s], 1, (size_t)seeds);
-    out[s][1] = seeds > 1 ? gsl_stats_sd(fi[s], 1, (size_t)seeds) : 0.0;
-    out[s][2] = gsl_stats_mean(fs[s], 1, (size_t)seeds);
-    out[s][3] = seeds > 1 ? gsl_stats_sd(fs[s], 1, (size_t)seeds) : 0.0;
-    out[s][4] = gsl_stats_mean(sg[s], 1, (size_t)seeds);
-    out[s][5] = seeds > 1 ? gsl_stats_sd(sg[s], 1, (size_t)seeds) : 0.0;
-    out[s][6] = gsl_stats_mean(fr[s], 1, (size_t)seeds);
-  }
-}
-
-static void sweep_rows(nl_table *t, const char *what, const reading *rd, unsigned long seed0, int seeds)
+/* One row of the sensitivity table: mean F_inf, F_sup of each signal. */
+static void sweep_row(nl_run *r, nl_table *t, const char *what, const nl_bounds_reading *rd, int seeds)
 {
   double m[NSIG][7];
-  measure(rd, seed0, seeds, m);
+  measure(r, rd, seeds, m);
   nl_table_append(t, "sddiidddddd", what, rd->length, rd->rate, rd->shader, rd->axis,
                   m[0][0], m[0][2], m[1][0], m[1][2], m[2][0], m[2][2]);
 }
 
 /* Fig. 5.5: PSD and Gamma of the three signals of the first seed. */
-static nl_table *psd_table(const reading *rd, unsigned long seed)
+static nl_table *psd_table(nl_run *r, const nl_bounds_reading *rd, unsigned long seed)
 {
   const char *cols[] = {"freq", "psd_oct1", "psd_oct2", "psd_sum", "gamma_oct1", "gamma_oct2", "gamma_sum"};
   nl_table *t = nl_table_alloc(7, cols);
@@ -97,12 +39,12 @@ static nl_table *psd_table(const reading *rd, unsigned long seed)
   size_t n, m = 0;
   double *f = NULL, *P[NSIG], *G[NSIG];
   for (int s = 0; s < NSIG; s++) {
-    double *x = sample(&p, s, rd, seed, &n);
+    double *x = nl_bounds_reading_sample(&p, s, rd, seed, &n);
     m = n / 2 + 1;
     f = f ? f : nl_xmalloc(m * sizeof *f);
     P[s] = nl_xmalloc(m * sizeof *P[s]);
     G[s] = nl_xmalloc(m * sizeof *G[s]);
-    if (nl_psd1(x, n, rd->rate, f, P[s], NULL)) exit(1);
+    if (nl_psd1(x, n, rd->rate, f, P[s], NULL)) nl_run_die(r, 1, "psd1 failed");
     nl_psd1_tail(P[s], m, G[s]);
     free(x);
   }
@@ -117,18 +59,18 @@ int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("a3_bandwidth", "A3 - Spectral bandwidth of 1D Perlin noise", argc, argv);
   int quick = nl_run_quick(r);
-  reading rd;
-  rd.length = nl_run_param(r, "length", quick ? 128 : 512, 8, 1e6);
-  rd.rate = nl_run_param(r, "rate", quick ? 16 : 64, 1, 4096);
-  rd.shader = (int)nl_run_param_int(r, "shader", 1, 0, 1);
-  rd.axis = (int)nl_run_param_int(r, "axis", 0, 0, 1);
+  nl_bounds_reading rd;
+  rd.length = nl_run_param(r, "length", quick ? 128 : 512, 8, 1e6, "length of the sampled 1D line in noise units (quick 128)");
+  rd.rate = nl_run_param(r, "rate", quick ? 16 : 64, 1, 4096, "samples per noise unit along the line (quick 16)");
+  rd.shader = (int)nl_run_param_int(r, "shader", 1, 0, 1, "1: the shader's stored (noise + 1) / 2; 0: raw noise");
+  rd.axis = (int)nl_run_param_int(r, "axis", 0, 0, 1, "0: the x axis through the origin; 1: an oblique line");
   nl_run_params_done(r);
   int seeds = nl_run_seeds(r) > 64 ? 64 : nl_run_seeds(r);
   unsigned long seed0 = nl_run_seed(r);
 
   /* Table 5.2 beside ours under the chosen reading. */
   double m[NSIG][7];
-  measure(&rd, seed0, seeds, m);
+  measure(r, &rd, seeds, m);
   const char *cols[] = {"signal", "f_inf", "f_inf_sd", "f_sup", "f_sup_sd", "sigma",
                         "paper_f_inf", "paper_f_sup", "f_inf_bins", "f_sup_bins", "f_inf_rms"};
   nl_table *t = nl_table_alloc(11, cols);
@@ -144,25 +86,20 @@ int main(int argc, char **argv)
   nl_table *sw = nl_table_alloc(11, scols);
   int sweep_seeds = seeds < 3 ? seeds : 3;
   const double lengths[] = {64, 128, 256, 512, 1024, 2048}, rates[] = {4, 8, 16, 32, 64, 128};
-  for (int k = 0; k < (quick ? 3 : 6); k++) {
-    reading v = rd;
-    v.length = lengths[k];
-    sweep_rows(sw, "length", &v, seed0, sweep_seeds);
-    nl_run_progress(r, (k + 1) / 14.0, "sweep");
+  int nvary = quick ? 3 : 6;
+  for (int k = 0; k < 2 * nvary; k++) {   /* the lengths, then the rates */
+    nl_bounds_reading v = rd;
+    if (k < nvary) v.length = lengths[k]; else v.rate = rates[k - nvary];
+    sweep_row(r, sw, k < nvary ? "length" : "rate", &v, sweep_seeds);
+    nl_run_progress(r, (k < nvary ? k + 1 : k - nvary + 7) / 14.0, "sweep");
   }
-  for (int k = 0; k < (quick ? 3 : 6); k++) {
-    reading v = rd;
-    v.rate = rates[k];
-    sweep_rows(sw, "rate", &v, seed0, sweep_seeds);
-    nl_run_progress(r, (k + 7) / 14.0, "sweep");
-  }
-  for (int k = 0; k < 2; k++) {
-    reading v = rd;
-    if (k == 0) v.shader = !rd.shader; else v.axis = !rd.axis;
-    sweep_rows(sw, k == 0 ? "shader" : "axis", &v, seed0, sweep_seeds);
-  }
+  nl_bounds_reading enc = rd, line = rd;
+  enc.shader = !rd.shader;
+  line.axis = !rd.axis;
+  sweep_row(r, sw, "shader", &enc, sweep_seeds);
+  sweep_row(r, sw, "axis", &line, sweep_seeds);
   nl_run_table(r, sw, "sweep.tsv");
-  nl_table *pt = psd_table(&rd, seed0);
+  nl_table *pt = psd_table(r, &rd, seed0);
   nl_run_table(r, pt, "psd.tsv");
 
   nl_report_text(r, "**Paper (Table 5.2):** [F_inf, F_sup] = [0.0019531, 1.7460938] (1st octave), "

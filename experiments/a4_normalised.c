@@ -3,20 +3,18 @@
  * fraction of their energy above the Nyquist frequency (what aliases). */
 #include "bounds/nl_bounds.h"
 #include "report/nl_report.h"
+#include "study/nl_study.h"
 
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>
 
-/* Samples of noise(f p) along an oblique line (as in A3), rate per unit. */
+/* Samples of noise(f p) along A4's oblique line, rate per unit. */
 static double *line_sample(const nl_perm3 *p, double f, double length, double rate, size_t *n)
 {
-  *n = (size_t)llround(length * rate);
-  double *x = nl_xmalloc(*n * sizeof *x);
-  const double origin[3] = {0.31, 17.7, 34.2}, dir[3] = {0.80902, 0.5, 0.30902};
   nl_octaves o = nl_octaves_fbm(1, 1.0, 1.0);
   o.freq[0] = f;
-  nl_bounds_sample_line(p, &o, origin, dir, rate, *n, x);
-  return x;
+  nl_bounds_line l = nl_bounds_line_a4();
+  return nl_bounds_line_sample(p, &o, &l, length, rate, n);
 }
 
 static nl_image *plane_image(const nl_perm3 *p, double f, int size, double extent)
@@ -36,9 +34,12 @@ int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("a4_normalised", "A4 - Spectrally normalised noise", argc, argv);
   int quick = nl_run_quick(r);
-  int size = (int)nl_run_param_int(r, "size", quick ? 96 : 256, 8, 4096);
-  double rate2d = nl_run_param(r, "rate", 2.0, 0.1, 1024);
-  double length = nl_run_param(r, "length", quick ? 128 : 512, 8, 1e6);
+  int size = (int)nl_run_param_int(r, "size", quick ? 96 : 256, 8, 4096,
+                                   "side in pixels of the 2D noise images (quick 96)");
+  double rate2d = nl_run_param(r, "rate", 2.0, 0.1, 1024,
+                               "samples per unit of the 2D images and the 1D line (Arnerin Fig. 5.7: 2)");
+  double length = nl_run_param(r, "length", quick ? 128 : 512, 8, 1e6,
+                               "length of the sampled 1D line in noise units (quick 128)");
   nl_run_params_done(r);
   int seeds = nl_run_seeds(r) > 64 ? 64 : nl_run_seeds(r);
   double fs[64], a0[64], a1[64];
@@ -72,8 +73,7 @@ int main(int argc, char **argv)
   nl_perm3_seed(&p, nl_run_seed(r));
   nl_image *pan[2] = {plane_image(&p, 1.0, size, size / rate2d), plane_image(&p, 1.0 / fs[0], size, size / rate2d)};
   const char *labels[2] = {"(a) noise(x)", "(b) noise(x / F_sup)"};
-  nl_image *m = nl_montage((const nl_image *const *)pan, labels, 2, 2, "Fig. 5.7: 2 samples per unit");
-  nl_run_image(r, m, "normalised.png");
+  nl_study_montage(r, (const nl_image *const *)pan, labels, 2, 2, "Fig. 5.7: 2 samples per unit", "normalised.png");
 
   nl_report_text(r, "**Paper (Fig. 5.7):** the original and the spectrally normalised Perlin noise "
                     "Nnoise(x) = noise(x / F_sup), sampled at 2 x 2 pixels per unit^2: aliasing "
@@ -87,7 +87,7 @@ int main(int argc, char **argv)
   nl_report_text(r, "Normalising by F_sup stretches the noise by %.2f so that the energy above Nyquist "
                     "is at most T by construction; it also makes the features larger, which is the "
                     "price of the normalisation.\n", mf);
-  nl_image_free(pan[0]); nl_image_free(pan[1]); nl_image_free(m);
+  nl_image_free(pan[0]); nl_image_free(pan[1]);
   nl_table_free(t);
   nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
   return nl_run_end(r);

@@ -2,7 +2,7 @@
  * textures, each from three control patterns with its own control term
  * (eq. 3.8, 4.1, 4.2, 4.3); one montage per texture: pattern | controlled
  * value | texture. */
-#include "cheng/nl_cheng.h"
+#include "study/nl_study_cheng.h"
 #include "report/nl_report.h"
 
 #include <stdio.h>
@@ -17,47 +17,38 @@ static const char *const equation[NTEX] = {"eq. 3.8", "eq. 4.1", "eq. 4.2", "eq.
 
 int main(int argc, char **argv)
 {
-  nl_cheng_config base;
-  int grid;
-  const char *pdir;
-  nl_run *r = nl_cheng_begin("c1_textures", "C1 - controlled cloud, marble, erosion and fire (Fig 4.1-4.4)", &argc, argv, &base, &grid, &pdir);
-  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 256, 16, 2048);
-  nl_cheng_params_done(r, &base, pdir);
-  nl_cheng_pattern *pat[NTEX][NPAT];
-  for (int t = 0; t < NTEX; t++)
-    for (int j = 0; j < NPAT; j++) pat[t][j] = nl_cheng_pattern_load_or_die("c1_textures", pdir, patterns[t][j], grid);
-
-  int k = nl_run_seeds(r);
+  nl_study_cheng s;
+  nl_study_cheng_open(&s, "c1_textures", "C1 - controlled cloud, marble, erosion and fire (Fig 4.1-4.4)", &argc, argv);
+  nl_run *r = s.r;
+  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 256, 16, 2048, "side in pixels of the texture and control-value images (quick 128)");
+  nl_study_cheng_ready(&s);
+  const nl_cheng_config base = s.c;
+  int grid = s.grid, k = nl_run_seeds(r);
   const char *labels[] = {"texture", "pattern"};
   nl_table *sum = nl_cheng_summary_alloc(2, labels);
-  nl_cheng_eval *evs = nl_xmalloc((size_t)k * sizeof *evs);
-  nl_error err;
   for (int t = 0; t < NTEX; t++) {
     nl_cheng_config c = base;
-    c.con = (nl_cheng_con)t;
+    c.con = (nl_cheng_con)t;   /* eq. 3.8, 4.1, 4.2, 4.3 in nl_cheng_con's order */
     nl_image *panels[3 * NPAT];
     const char *plab[3 * NPAT];
     for (int j = 0; j < NPAT; j++) {
-      nl_grad2 *first;
-      if (nl_cheng_run_seeds(&c, pat[t][j], nl_run_seed(r), k, evs, &first, &err)) nl_run_die(r, 1, "%s", err.msg);
+      nl_cheng_pattern *pat = nl_study_cheng_pattern(&s, patterns[t][j]);
       const char *lab[2] = {nl_cheng_con_name(c.con), patterns[t][j]};
-      nl_cheng_summary_add(sum, 2, lab, evs, k);
-      panels[3 * j] = nl_cheng_pattern_panel(pat[t][j], size);
+      nl_grad2 *first = nl_study_cheng_seeds(&s, &c, pat, sum, 2, lab);
+      panels[3 * j] = nl_cheng_pattern_panel(pat, size);
       panels[3 * j + 1] = nl_cheng_value_image(first, &c, size);
       panels[3 * j + 2] = nl_cheng_texture_image(first, &c, size);
       plab[3 * j] = patterns[t][j];
       plab[3 * j + 1] = "controlled value";
       plab[3 * j + 2] = nl_cheng_con_name(c.con);
       nl_grad2_free(first);
+      nl_cheng_pattern_free(pat);
       nl_run_progress(r, (t * NPAT + j + 1.0) / (NTEX * NPAT), nl_cheng_con_name(c.con));
     }
     char title[96], file[64], cap[160];
     snprintf(title, sizeof title, "Fig 4.%d: %s (%s)", t + 1, nl_cheng_con_name(c.con), equation[t]);
-    nl_image *m = nl_montage((const nl_image *const *)panels, plab, 3 * NPAT, 3, title);
     snprintf(file, sizeof file, "%s.png", nl_cheng_con_name(c.con));
-    nl_run_image(r, m, file);
-    nl_image_free(m);
-    for (int q = 0; q < 3 * NPAT; q++) nl_image_free(panels[q]);
+    nl_study_cheng_montage(r, panels, plab, 3 * NPAT, 3, title, file);
     snprintf(cap, sizeof cap, "Fig 4.%d: %s textures, control term %s; pattern | controlled value | texture (first seed)",
              t + 1, nl_cheng_con_name(c.con), equation[t]);
     nl_report_figure(r, file, cap);
@@ -71,18 +62,10 @@ int main(int argc, char **argv)
                     "bound (nl_cheng.h); images stretch each value's 1st..99th percentile to alpha 0..1.\n",
                  grid, grid, base.octaves, base.f1, base.a1, base.w1, base.w2, k);
   nl_report_table(r, sum, "Per texture and pattern: statistics of the optimised tables (mean and spread over seeds)", 4);
-  size_t UKS = (size_t)nl_table_column(sum, "uniform_ks"), UKU = (size_t)nl_table_column(sum, "uniform_kuiper");
-  double wks = 1, wku = 1;
-  for (size_t q = 0; q < sum->nrows; q++) {
-    wks = wks < nl_table_get(sum, q, UKS) ? wks : nl_table_get(sum, q, UKS);
-    wku = wku < nl_table_get(sum, q, UKU) ? wku : nl_table_get(sum, q, UKU);
-  }
+  double wks = nl_study_column_min(sum, "uniform_ks"), wku = nl_study_column_min(sum, "uniform_kuiper");
   nl_report_text(r, "Uniformity: the smallest fraction of runs not rejected as non-uniform at alpha = 0.05 is "
                     "%.2f (KS) and %.2f (Kuiper) over the twelve panels.\n", wks, wku);
-  for (int t = 0; t < NTEX; t++)
-    for (int j = 0; j < NPAT; j++) nl_cheng_pattern_free(pat[t][j]);
   nl_table_free(sum);
-  free(evs);
   nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
   return nl_run_end(r);
 }

@@ -2,7 +2,7 @@
  * KS term, the chi-square term (500 bins) and, added here, the Kuiper term;
  * CDF of the optimised angles against the ideal line, histograms, and every
  * statistic with its p-value over seeds. */
-#include "cheng/nl_cheng.h"
+#include "study/nl_study_cheng.h"
 #include "report/nl_report.h"
 #include "stats/nl_stats.h"
 
@@ -16,33 +16,26 @@
 
 int main(int argc, char **argv)
 {
-  nl_cheng_config base;
-  int grid;
-  const char *pdir;
-  nl_run *r = nl_cheng_begin("c2_ks_vs_chisq", "C2 - KS term vs chi-square term (Fig 4.5, 4.6)", &argc, argv, &base, &grid, &pdir);
-  nl_cheng_params_done(r, &base, pdir);
-
+  nl_study_cheng s;
+  nl_study_cheng_open(&s, "c2_ks_vs_chisq", "C2 - KS term vs chi-square term (Fig 4.5, 4.6)", &argc, argv);
+  nl_study_cheng_ready(&s);
+  nl_run *r = s.r;
+  const nl_cheng_config base = s.c;
+  int grid = s.grid, k = nl_run_seeds(r);
   const char *pats[NPAT] = {"flower", "x"};
   const nl_cheng_stat objs[NOBJ] = {NL_CHENG_STAT_KS, NL_CHENG_STAT_CHISQ, NL_CHENG_STAT_KUIPER};
   const char *onames[NOBJ] = {"ks", "chisq", "kuiper"};
-  nl_cheng_pattern *pat[NPAT];
-  for (int i = 0; i < NPAT; i++) pat[i] = nl_cheng_pattern_load_or_die("c2_ks_vs_chisq", pdir, pats[i], grid);
-
-  int k = nl_run_seeds(r);
   const char *labels[] = {"pattern", "objective"};
   nl_table *sum = nl_cheng_summary_alloc(2, labels);
-  nl_cheng_eval *evs = nl_xmalloc((size_t)k * sizeof *evs);
-  nl_error err;
   int single[NPAT] = {0};   /* bins holding exactly one angle, chi-square objective, first seed */
   for (int i = 0; i < NPAT; i++) {
+    nl_cheng_pattern *pat = nl_study_cheng_pattern(&s, pats[i]);
     nl_grad2 *first[NOBJ];
     for (int o = 0; o < NOBJ; o++) {
       nl_cheng_config c = base;
       c.stat = objs[o];
-      if (nl_cheng_run_seeds(&c, pat[i], nl_run_seed(r), k, evs, &first[o], &err))
-        nl_run_die(r, 1, "%s", err.msg);
       const char *lab[2] = {pats[i], onames[o]};
-      nl_cheng_summary_add(sum, 2, lab, evs, k);
+      first[o] = nl_study_cheng_seeds(&s, &c, pat, sum, 2, lab);
       nl_run_progress(r, (double)(i * NOBJ + o + 1) / (NPAT * NOBJ), pats[i]);
     }
     char file[64];
@@ -50,21 +43,19 @@ int main(int argc, char **argv)
     snprintf(file, sizeof file, "cdf_%s.tsv", pats[i]);
     nl_run_table(r, cdf, file);
     nl_table *hist = nl_cheng_hist_table((const nl_grad2 *const *)first, onames, NOBJ, base.chisq_bins);
-    for (size_t b = 0; b < hist->nrows; b++) single[i] += nl_table_get(hist, b, 2) == 1.0;   /* chisq column */
+    for (size_t b = 0; b < hist->nrows; b++) single[i] += nl_table_value(hist, b, "chisq") == 1.0;
     snprintf(file, sizeof file, "hist_%s.tsv", pats[i]);
     nl_run_table(r, hist, file);
     nl_image *panels[NOBJ + 1];
     const char *plab[NOBJ + 1] = {"pattern", "KS term", "chi-square term", "Kuiper term"};
-    panels[0] = nl_cheng_pattern_panel(pat[i], 192);
+    panels[0] = nl_cheng_pattern_panel(pat, 192);
     for (int o = 0; o < NOBJ; o++) panels[o + 1] = nl_cheng_value_image(first[o], &base, 192);
-    nl_image *m = nl_montage((const nl_image *const *)panels, plab, NOBJ + 1, NOBJ + 1, pats[i]);
     snprintf(file, sizeof file, "noise_%s.png", pats[i]);
-    nl_run_image(r, m, file);
-    nl_image_free(m);
-    for (int o = 0; o <= NOBJ; o++) nl_image_free(panels[o]);
+    nl_study_cheng_montage(r, panels, plab, NOBJ + 1, NOBJ + 1, pats[i], file);
     for (int o = 0; o < NOBJ; o++) nl_grad2_free(first[o]);
     nl_table_free(cdf);
     nl_table_free(hist);
+    nl_cheng_pattern_free(pat);
   }
   nl_run_table(r, sum, "summary.tsv");
 
@@ -79,14 +70,11 @@ int main(int argc, char **argv)
                  pats[0], pats[1], grid, grid, base.f1, base.a1, base.w1, base.w2, k);
   nl_report_table(r, sum, "Mean (sd, min p) over seeds per pattern and objective; uniform_* = fraction of "
                           "runs not rejected as non-uniform at alpha = 0.05", 4);
-  const size_t E_KS = (size_t)nl_table_column(sum, "E_ks"), CHI2 = (size_t)nl_table_column(sum, "chi2"),
-               ECON = (size_t)nl_table_column(sum, "E_con"), UKS = (size_t)nl_table_column(sum, "uniform_ks"),
-               UKU = (size_t)nl_table_column(sum, "uniform_kuiper");
   for (int i = 0; i < NPAT; i++) {
     size_t row_ks = (size_t)i * NOBJ, row_chi = row_ks + 1;
-    double ks_ks = nl_table_get(sum, row_ks, E_KS), ks_chi = nl_table_get(sum, row_chi, E_KS);
-    double chi_ks = nl_table_get(sum, row_ks, CHI2), chi_chi = nl_table_get(sum, row_chi, CHI2);
-    double con_ks = nl_table_get(sum, row_ks, ECON), con_chi = nl_table_get(sum, row_chi, ECON);
+    double ks_ks = nl_table_value(sum, row_ks, "E_ks"), ks_chi = nl_table_value(sum, row_chi, "E_ks");
+    double chi_ks = nl_table_value(sum, row_ks, "chi2"), chi_chi = nl_table_value(sum, row_chi, "chi2");
+    double con_ks = nl_table_value(sum, row_ks, "E_con"), con_chi = nl_table_value(sum, row_chi, "E_con");
     nl_report_text(r, "%s: E_KS %.4g (KS objective) vs %.4g (chi-square objective): KS CDF %s. "
                       "chi2 %.4g vs %.4g: chi-square error %s under the chi-square objective. "
                       "E_Con %.4g vs %.4g (%.1f%% apart).\n",
@@ -94,11 +82,7 @@ int main(int argc, char **argv)
                    chi_ks, chi_chi, chi_chi < chi_ks ? "lower" : "NOT lower",
                    con_ks, con_chi, 100 * fabs(con_ks - con_chi) / con_chi);
   }
-  double worst_ks = 1, worst_ku = 1;
-  for (size_t q = 0; q < sum->nrows; q++) {
-    worst_ks = fmin(worst_ks, nl_table_get(sum, q, UKS));
-    worst_ku = fmin(worst_ku, nl_table_get(sum, q, UKU));
-  }
+  double worst_ks = nl_study_column_min(sum, "uniform_ks"), worst_ku = nl_study_column_min(sum, "uniform_kuiper");
   nl_report_text(r, "Uniformity preserved? The smallest fraction of runs not rejected at alpha = 0.05 "
                     "is %.2f by KS and %.2f by Kuiper%s\n", worst_ks, worst_ku,
                  worst_ks == 1 && worst_ku == 1 ? ": every optimised table is indistinguishable from uniform."
@@ -106,7 +90,7 @@ int main(int argc, char **argv)
   /* How regular is "uniform"? P(D_n <= d) under the null: the chance that a
    * truly random table of M angles is at least this close to the ideal line. */
   for (int o = 0; o < NOBJ; o++) {
-    double d = nl_table_get(sum, (size_t)o, E_KS);
+    double d = nl_table_value(sum, (size_t)o, "E_ks");
     nl_report_text(r, "%s objective (flower): mean E_KS %.4g; a random table of %zu uniform angles has "
                       "P(D <= %.4g) = %.3g (median D about %.4g).\n", onames[o], d, base.m, d,
                    nl_ks_cdf(base.m, d, NULL), nl_cheng_ks_median(base.m));
@@ -125,9 +109,7 @@ int main(int argc, char **argv)
   }
   nl_report_figure(r, "cdf.png", "CDF of the optimised angles (first seed) against the ideal line, and its deviation (Fig 4.5, 4.6 left)");
   nl_report_figure(r, "hist.png", "Histograms of the optimised angles, 500 bins (Fig 4.5, 4.6 right)");
-  for (int i = 0; i < NPAT; i++) nl_cheng_pattern_free(pat[i]);
   nl_table_free(sum);
-  free(evs);
   nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
   return nl_run_end(r);
 }

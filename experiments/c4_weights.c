@@ -3,7 +3,7 @@
  * numbers, the same pairs with w1 and w2 swapped (the reading the thesis's
  * text implies), and a dense log sweep of w1 / w2 (w1 + w2 = 1) as the E_KS vs
  * E_Con trade-off curve. */
-#include "cheng/nl_cheng.h"
+#include "study/nl_study_cheng.h"
 #include "report/nl_report.h"
 
 #include <math.h>
@@ -13,111 +13,78 @@
 #define NPAIR 6
 
 /* Table 4.1 as printed: w1, E_KS, w2, E_Con. */
-static const double thesis[NPAIR][4] = {
-  {0, 0.13378, 1, 49.7715},       {0.1, 0.048835, 0.9, 49.7668},
-  {0.01, 0.072425, 0.99, 49.7946}, {0.001, 0.061537, 0.999, 49.8427},
-  {0.0001, 0.017303, 0.9999, 49.7977}, {0.00001, 0.012973, 0.99999, 50.1087}};
+static const double thesis[NPAIR][NL_STUDY_TABLE41_COLS] = {
+  {0, 0.13378, 1, 49.7715}, {0.1, 0.048835, 0.9, 49.7668}, {0.01, 0.072425, 0.99, 49.7946},
+  {0.001, 0.061537, 0.999, 49.8427}, {0.0001, 0.017303, 0.9999, 49.7977}, {0.00001, 0.012973, 0.99999, 50.1087}};
 
 /* Runs (w1, w2) over the seeds and appends a summary row labelled by the
- * reading, the panel letter and the weights. */
-static void run_pair(nl_run *r, const nl_cheng_config *base, const nl_cheng_pattern *pat,
-                     const char *reading, const char *panel, double w1, double w2,
-                     nl_table *sum, nl_grad2 **first)
+ * reading, the panel letter and the weights; returns the first seed's table. */
+static nl_grad2 *run_pair(const nl_study_cheng *s, const nl_cheng_pattern *pat, const char *reading,
+                          const char *panel, double w1, double w2, nl_table *sum)
 {
-  int k = nl_run_seeds(r);
-  nl_cheng_eval *evs = nl_xmalloc((size_t)k * sizeof *evs);
-  nl_cheng_config c = *base;
+  nl_cheng_config c = s->c;
   c.w1 = w1;
   c.w2 = w2;
-  nl_error err;
-  if (nl_cheng_run_seeds(&c, pat, nl_run_seed(r), k, evs, first, &err)) nl_run_die(r, 1, "%s", err.msg);
   char a[32], b[32];
   nl_format_double(a, w1);
   nl_format_double(b, w2);
   const char *lab[4] = {reading, panel, a, b};
-  nl_cheng_summary_add(sum, 4, lab, evs, k);
-  free(evs);
+  return nl_study_cheng_seeds(s, &c, pat, sum, 4, lab);
 }
 
 int main(int argc, char **argv)
 {
-  nl_cheng_config base;
-  int grid;
-  const char *pdir;
-  nl_run *r = nl_cheng_begin("c4_weights", "C4 - weights of the KS and control terms (Table 4.1, Fig 4.8)", &argc, argv, &base, &grid, &pdir);
-  int quick = nl_run_quick(r);
-  int nsweep = (int)nl_run_param_int(r, "sweep_points", quick ? 6 : 24, 2, 1000);
-  /* The sweep is log-spaced in w1 / w2 (w1 + w2 = 1): the balance point lies
-   * at w1 / w2 ~ 1e2..1e3, where a log scale of w1 itself has no points. */
-  double lo = nl_run_param(r, "ratio_lo", 1e-5, 1e-12, 1e12), hi = nl_run_param(r, "ratio_hi", 1e5, 1e-12, 1e12);
+  nl_study_cheng s;
+  nl_study_cheng_open(&s, "c4_weights", "C4 - weights of the KS and control terms (Table 4.1, Fig 4.8)", &argc, argv);
+  nl_run *r = s.r;
+  int nsweep = (int)nl_run_param_int(r, "sweep_points", nl_run_quick(r) ? 6 : 24, 2, 1000, "points of the dense E_KS / E_Con trade-off sweep over w1 / w2 (quick 6)");
+  /* Log-spaced in w1 / w2 (w1 + w2 = 1): the balance lies at w1 / w2 ~ 1e2..1e3, where a log w1 scale has no points. */
+  double lo = nl_run_param(r, "ratio_lo", 1e-5, 1e-12, 1e12, "smallest w1 / w2 of the trade-off sweep (log-spaced, w1 + w2 = 1)");
+  double hi = nl_run_param(r, "ratio_hi", 1e5, 1e-12, 1e12, "largest w1 / w2 of the trade-off sweep (log-spaced, w1 + w2 = 1)");
   /* table=0: only the run at the configured (w1, w2), the unit a sweep of
    * w1 is made of (scripts/noiselab sweep c4 --param w1=... --param table=0). */
-  int table = (int)nl_run_param_int(r, "table", 1, 0, 1);
-  nl_cheng_params_done(r, &base, pdir);
+  int table = (int)nl_run_param_int(r, "table", 1, 0, 1, "1: Table 4.1 and the trade-off sweep; 0: only the run at the configured w1, w2 (a sweep's unit)");
+  nl_study_cheng_ready(&s);
   if (!(lo < hi)) nl_run_die(r, 2, "ratio_lo must be below ratio_hi");
-  nl_cheng_pattern *pat = nl_cheng_pattern_load_or_die("c4_weights", pdir, "flower", grid);
-
+  nl_cheng_pattern *pat = nl_study_cheng_pattern(&s, "flower");
+  const nl_cheng_config base = s.c;
   const char *labels[] = {"reading", "panel", "w1", "w2"};
   nl_table *one = nl_cheng_summary_alloc(4, labels);
-  run_pair(r, &base, pat, "configured", "-", base.w1, base.w2, one, NULL);
+  nl_grad2_free(run_pair(&s, pat, "configured", "-", base.w1, base.w2, one));
   nl_run_table(r, one, "configured.tsv");
   if (!table) {
     nl_report_text(r, "One run of the flower pattern at the configured weights (w1, w2) = (%g, %g), %d seeds "
                       "(table=0: Table 4.1 and the internal sweep skipped).\n", base.w1, base.w2, nl_run_seeds(r));
     nl_report_table(r, one, "Configured weights", 4);
-    nl_table_free(one);
-    nl_cheng_pattern_free(pat);
-    return nl_run_end(r);
   }
   nl_table_free(one);
+  if (!table) { nl_cheng_pattern_free(pat); return nl_run_end(r); }
   nl_table *tab = nl_cheng_summary_alloc(4, labels), *sweep = nl_cheng_summary_alloc(4, labels);
   nl_image *panels[NPAIR + 1];
   char plab[NPAIR + 1][64];
-  const char *plabp[NPAIR + 1];
+  const char *plabp[NPAIR + 1] = {"pattern"};
   panels[0] = nl_cheng_pattern_panel(pat, 160);
-  snprintf(plab[0], sizeof plab[0], "pattern");
-  plabp[0] = plab[0];
-  for (int i = 0; i < NPAIR; i++) {
+  for (int i = 0; i < NPAIR; i++) {   /* printed reading rows are 0, 2, 4, ...; swapped 1, 3, 5, ... */
     char panel[4] = {(char)('a' + i), 0};
-    nl_grad2 *first;
-    run_pair(r, &base, pat, "printed", panel, thesis[i][0], thesis[i][2], tab, &first);
+    nl_grad2 *first = run_pair(&s, pat, "printed", panel, thesis[i][0], thesis[i][2], tab);
     panels[i + 1] = nl_cheng_texture_image(first, &base, 160);
     snprintf(plab[i + 1], sizeof plab[i + 1], "(%s) w1=%g w2=%g", panel, thesis[i][0], thesis[i][2]);
     plabp[i + 1] = plab[i + 1];
     nl_grad2_free(first);
-    run_pair(r, &base, pat, "swapped", panel, thesis[i][2], thesis[i][0], tab, NULL);
+    nl_grad2_free(run_pair(&s, pat, "swapped", panel, thesis[i][2], thesis[i][0], tab));
     nl_run_progress(r, (i + 1.0) / (NPAIR + nsweep), "Table 4.1");
   }
   double *rhos = nl_xmalloc((size_t)nsweep * sizeof *rhos);
   for (int i = 0; i < nsweep; i++) {
     double rho = rhos[i] = lo * pow(hi / lo, (double)i / (nsweep - 1));
-    run_pair(r, &base, pat, "sweep", "-", rho / (1 + rho), 1 / (1 + rho), sweep, NULL);
+    nl_grad2_free(run_pair(&s, pat, "sweep", "-", rho / (1 + rho), 1 / (1 + rho), sweep));
     nl_run_progress(r, (NPAIR + i + 1.0) / (NPAIR + nsweep), "sweep");
   }
-  nl_image *m = nl_montage((const nl_image *const *)panels, plabp, NPAIR + 1, 4, "Fig 4.8: cloud texture per weight pair (first seed)");
-  nl_run_image(r, m, "textures.png");
-  nl_image_free(m);
-  for (int i = 0; i <= NPAIR; i++) nl_image_free(panels[i]);
-
-  /* Ours beside the thesis: printed reading rows are 0, 2, 4, ... */
-  const char *cc[] = {"panel", "w1", "w2", "E_ks_thesis", "E_ks", "E_ks_sd", "E_con_thesis", "E_con", "E_con_sd",
-                      "E_ks_swapped", "E_con_swapped", "p_ks_min", "p_kuiper_min"};
-  nl_table *cmp = nl_table_alloc(13, cc);
-  const size_t E_KS = (size_t)nl_table_column(tab, "E_ks"), ECON = (size_t)nl_table_column(tab, "E_con"),
-               PKS = (size_t)nl_table_column(tab, "p_ks_min"), PKU = (size_t)nl_table_column(tab, "p_kuiper_min"),
-               UKS = (size_t)nl_table_column(tab, "uniform_ks"), UKU = (size_t)nl_table_column(tab, "uniform_kuiper");
-  for (int i = 0; i < NPAIR; i++) {
-    size_t p = 2 * (size_t)i, s = p + 1;
-    char panel[4] = {(char)('a' + i), 0};
-    nl_table_append(cmp, "sdddddddddddd", panel, thesis[i][0], thesis[i][2], thesis[i][1],
-                    nl_table_get(tab, p, E_KS), nl_table_get(tab, p, E_KS + 1), thesis[i][3], nl_table_get(tab, p, ECON),
-                    nl_table_get(tab, p, ECON + 1), nl_table_get(tab, s, E_KS), nl_table_get(tab, s, ECON),
-                    nl_table_get(tab, p, PKS), nl_table_get(tab, p, PKU));
-  }
+  nl_study_cheng_montage(r, panels, plabp, NPAIR + 1, 4, "Fig 4.8: cloud texture per weight pair (first seed)", "textures.png");
+  nl_table *cmp = nl_study_cheng_table41(tab, thesis, NPAIR);
   nl_run_table(r, tab, "table41_runs.tsv");
   nl_run_table(r, cmp, "table41.tsv");
   nl_run_table(r, sweep, "sweep.tsv");
-
   int k = nl_run_seeds(r);
   nl_report_text(r, "**Thesis (Table 4.1):** six pairs from (w1, w2) = (0, 1) to (1e-5, 0.99999); E_KS falls "
                     "from 0.134 to 0.013 down the table while E_Con stays near 49.8; the text calls (a) the "
@@ -126,15 +93,15 @@ int main(int argc, char **argv)
                     "grid, thesis setting otherwise, %d seeds per pair; each pair also run swapped "
                     "(w1 <-> w2), and a sweep of %d pairs with w1 + w2 = 1 and w1 / w2 log-spaced in [%g, %g]. Our E_Con "
                     "sums over %d control points and so is on another scale than the thesis's (its grid is "
-                    "not stated); compare trends.\n", grid, grid, k, nsweep, lo, hi, (int)pat->n);
+                    "not stated); compare trends.\n", s.grid, s.grid, k, nsweep, lo, hi, (int)pat->n);
   nl_report_table(r, cmp, "Table 4.1: thesis vs ours (means over seeds; swapped = the same pair with w1 and w2 exchanged)", 4);
   /* Which reading reproduces the table's direction from (b) to (f)? The
    * thesis's E_KS ratio f/b is 0.27 and E_Con rises; compare both readings'
    * ratios with it on a log scale. */
-  double ks_b = nl_table_get(cmp, 1, 4), ks_f = nl_table_get(cmp, 5, 4);
-  double sks_b = nl_table_get(cmp, 1, 9), sks_f = nl_table_get(cmp, 5, 9);
-  double con_b = nl_table_get(cmp, 1, 7), con_f = nl_table_get(cmp, 5, 7);
-  double scon_b = nl_table_get(cmp, 1, 10), scon_f = nl_table_get(cmp, 5, 10);
+  double ks_b = nl_table_value(cmp, 1, "E_ks"), ks_f = nl_table_value(cmp, 5, "E_ks");
+  double sks_b = nl_table_value(cmp, 1, "E_ks_swapped"), sks_f = nl_table_value(cmp, 5, "E_ks_swapped");
+  double con_b = nl_table_value(cmp, 1, "E_con"), con_f = nl_table_value(cmp, 5, "E_con");
+  double scon_b = nl_table_value(cmp, 1, "E_con_swapped"), scon_f = nl_table_value(cmp, 5, "E_con_swapped");
   double t_ratio = thesis[5][1] / thesis[1][1];
   double d_printed = fabs(log((ks_f / ks_b) / t_ratio)), d_swapped = fabs(log((sks_f / sks_b) / t_ratio));
   nl_report_text(r, "From (b) to (f) the thesis's E_KS changes by a factor %.2f and its E_Con by %+.2f%%. "
@@ -150,25 +117,18 @@ int main(int argc, char **argv)
                      "KS term barely steers the search and E_KS stays at its control-only level: the table's "
                      "w1 / w2 columns (or its row order) are exchanged relative to the runs it reports."
                    : "Our printed-weight runs reproduce the table's direction better than the swapped ones.");
-  double worst_ks = 1, worst_ku = 1;
-  for (size_t q = 0; q < tab->nrows; q++) {
-    worst_ks = fmin(worst_ks, nl_table_get(tab, q, UKS));
-    worst_ku = fmin(worst_ku, nl_table_get(tab, q, UKU));
-  }
-  for (size_t q = 0; q < sweep->nrows; q++) {
-    worst_ks = fmin(worst_ks, nl_table_get(sweep, q, UKS));
-    worst_ku = fmin(worst_ku, nl_table_get(sweep, q, UKU));
-  }
+  double worst_ks = fmin(nl_study_column_min(tab, "uniform_ks"), nl_study_column_min(sweep, "uniform_ks"));
+  double worst_ku = fmin(nl_study_column_min(tab, "uniform_kuiper"), nl_study_column_min(sweep, "uniform_kuiper"));
   /* Smallest swept w1 / w2 from which every run passes both tests, and how
    * many printed pairs have a rejected run. */
   double safe = NAN;
   for (size_t q = sweep->nrows; q-- > 0;) {
-    if (nl_table_get(sweep, q, UKS) < 1 || nl_table_get(sweep, q, UKU) < 1) break;
+    if (nl_table_value(sweep, q, "uniform_ks") < 1 || nl_table_value(sweep, q, "uniform_kuiper") < 1) break;
     safe = rhos[q];
   }
   int rejected = 0;
-  for (int i = 0; i < NPAIR; i++)
-    rejected += nl_table_get(tab, 2 * (size_t)i, UKS) < 1 || nl_table_get(tab, 2 * (size_t)i, UKU) < 1;
+  for (size_t q = 0; q < 2 * NPAIR; q += 2)
+    rejected += nl_table_value(tab, q, "uniform_ks") < 1 || nl_table_value(tab, q, "uniform_kuiper") < 1;
   char safe_txt[96];
   if (isnan(safe)) snprintf(safe_txt, sizeof safe_txt, "even the largest swept w1 / w2 has a rejected run");
   else snprintf(safe_txt, sizeof safe_txt, "every run passes both tests from w1 / w2 = %.3g upwards", safe);

@@ -1,6 +1,6 @@
 /* C7 - Cheng 2009 Fig 4.15-4.17 (sec. 4.5): terrain height maps from the
  * flower, "X" and star patterns; the controlled value is the height. */
-#include "cheng/nl_cheng.h"
+#include "study/nl_study_cheng.h"
 #include "report/nl_report.h"
 
 #include <stdio.h>
@@ -10,44 +10,37 @@
 
 int main(int argc, char **argv)
 {
-  nl_cheng_config c;
-  int grid;
-  const char *pdir;
-  nl_run *r = nl_cheng_begin("c7_terrain", "C7 - terrain height maps (Fig 4.15-4.17)", &argc, argv, &c, &grid, &pdir);
-  int mesh = (int)nl_run_param_int(r, "mesh", nl_run_quick(r) ? 48 : 96, 8, 512);
-  nl_cheng_params_done(r, &c, pdir);
+  nl_study_cheng s;
+  nl_study_cheng_open(&s, "c7_terrain", "C7 - terrain height maps (Fig 4.15-4.17)", &argc, argv);
+  nl_run *r = s.r;
+  int mesh = (int)nl_run_param_int(r, "mesh", nl_run_quick(r) ? 48 : 96, 8, 512, "height-map mesh side: mesh x mesh heights per terrain (quick 48)");
+  nl_study_cheng_ready(&s);
   const char *names[NPAT] = {"flower", "x", "star"};
-  nl_cheng_pattern *pat[NPAT];
-  for (int i = 0; i < NPAT; i++) pat[i] = nl_cheng_pattern_load_or_die("c7_terrain", pdir, names[i], grid);
-
-  int k = nl_run_seeds(r);
+  const nl_cheng_config c = s.c;
+  int grid = s.grid, k = nl_run_seeds(r);
   const char *labels[] = {"pattern"};
   nl_table *sum = nl_cheng_summary_alloc(1, labels);
-  nl_cheng_eval *evs = nl_xmalloc((size_t)k * sizeof *evs);
   double *h = nl_xmalloc((size_t)mesh * mesh * sizeof *h);
   nl_image *panels[2 * NPAT];
   const char *plab[2 * NPAT];
-  nl_error err;
   for (int i = 0; i < NPAT; i++) {
-    nl_grad2 *first;
-    if (nl_cheng_run_seeds(&c, pat[i], nl_run_seed(r), k, evs, &first, &err)) nl_run_die(r, 1, "%s", err.msg);
-    const char *l[1] = {names[i]};
-    nl_cheng_summary_add(sum, 1, l, evs, k);
-    nl_cheng_value_grid(first, &c, mesh, mesh, h);
+    nl_cheng_pattern *pat = nl_study_cheng_pattern(&s, names[i]);
+    nl_grad2 *first = nl_study_cheng_seeds(&s, &c, pat, sum, 1, &names[i]);
+    nl_cheng_value_grid(first, &c, mesh, mesh, h);   /* the height: the controlled value */
     nl_table *ht = nl_cheng_matrix_table(h, mesh, mesh);
     char file[64];
     snprintf(file, sizeof file, "height_%s.tsv", names[i]);
     nl_run_table(r, ht, file);
     nl_table_free(ht);
-    panels[i] = nl_cheng_pattern_panel(pat[i], 192);
+    panels[i] = nl_cheng_pattern_panel(pat, 192);
     panels[NPAT + i] = nl_cheng_value_image(first, &c, 192);
     plab[i] = names[i];
     plab[NPAT + i] = "height map";
     nl_grad2_free(first);
+    nl_cheng_pattern_free(pat);
     nl_run_progress(r, (i + 1.0) / NPAT, names[i]);
   }
-  nl_image *m = nl_montage((const nl_image *const *)panels, plab, 2 * NPAT, NPAT, "Fig 4.15-4.17: patterns and height maps (first seed)");
-  nl_run_image(r, m, "heightmaps.png");
+  nl_study_cheng_montage(r, panels, plab, 2 * NPAT, NPAT, "Fig 4.15-4.17: patterns and height maps (first seed)", "heightmaps.png");
   nl_run_table(r, sum, "summary.tsv");
   nl_report_text(r, "**Thesis:** terrain from the flower, \"X\" and star patterns, height = controlled noise "
                     "(Fig 4.15-4.17, images only). **Ours:** height = the controlled value c = (1 + V)/2 of the "
@@ -56,11 +49,7 @@ int main(int argc, char **argv)
   nl_report_figure(r, "heightmaps.png", "Patterns and height maps (grey, stretched)");
   nl_report_figure(r, "terrain.png", "Shaded terrain surfaces (first seed)");
   nl_report_table(r, sum, "Statistics of the optimised tables (mean and spread over seeds)", 4);
-  for (int i = 0; i < 2 * NPAT; i++) nl_image_free(panels[i]);
-  nl_image_free(m);
-  for (int i = 0; i < NPAT; i++) nl_cheng_pattern_free(pat[i]);
   nl_table_free(sum);
-  free(evs);
   free(h);
   nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
   return nl_run_end(r);

@@ -4,28 +4,22 @@
  * eq. 13 octave. */
 #include "example/nl_example.h"
 #include "report/nl_report.h"
-#include "spectrum/nl_spectrum.h"
+#include "study/nl_study.h"
 
 #include <math.h>
 #include <stdlib.h>
-
-static void mean_sd(const double *v, int n, double *m, double *sd)
-{
-  double s = 0, ss = 0;
-  for (int i = 0; i < n; i++) s += v[i];
-  *m = s / n;
-  for (int i = 0; i < n; i++) ss += (v[i] - *m) * (v[i] - *m);
-  *sd = n > 1 ? sqrt(ss / (n - 1)) : 0;
-}
 
 int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("l1_wavelet", "L1 - Wavelet noise: band variance and band limits", argc, argv);
   int quick = nl_run_quick(r);
-  int size = (int)nl_run_param_int(r, "size", quick ? 128 : 512, 32, 4096);
-  int tile = (int)nl_run_param_int(r, "tile", NL_EXAMPLE_TILE, 8, 2048);
-  int tile3 = (int)nl_run_param_int(r, "tile3", quick ? 32 : NL_EXAMPLE_TILE3, 8, 256);
-  int band = (int)nl_run_param_int(r, "band", 2, 0, 8);   /* band shown in the images */
+  int size = (int)nl_run_param_int(r, "size", quick ? 128 : 512, 32, 4096,
+                                   "side in pixels of the wavelet-noise images and spectra (quick 128)");
+  int tile = (int)nl_run_param_int(r, "tile", NL_EXAMPLE_TILE, 8, 2048,
+                                   "period in pixels of the 2D wavelet-noise tile (even, >= 8)");
+  int tile3 = (int)nl_run_param_int(r, "tile3", quick ? 32 : NL_EXAMPLE_TILE3, 8, 256,
+                                    "period of the 3D wavelet-noise tile (even, >= 8; quick 32)");
+  int band = (int)nl_run_param_int(r, "band", 2, 0, 8, "the band shown in the images (0 = finest)");   /* band shown in the images */
   nl_run_params_done(r);
   int K = nl_run_seeds(r), nb = nl_example_band_count(size, size);
   unsigned long seed0 = nl_run_seed(r);
@@ -67,7 +61,7 @@ int main(int argc, char **argv)
       col[s] = row[k];
       for (int j = 0; j < nb; j++) { if (j > k) lo += row[j] / K; if (j < k) hi += row[j] / K; }
     }
-    mean_sd(col, K, &in, &in_sd);
+    nl_study_mean_sd(col, K, &in, &in_sd);
     /* band index grows toward low frequencies: j > k is below in frequency */
     nl_table_append(lt, "idddd", k, lo, in, in_sd, hi);
   }
@@ -85,26 +79,17 @@ int main(int argc, char **argv)
   nl_wavelet_bands_grid(t2, &b, size, size, 0, 1, img2);
   nl_wavelet_bands_init(&b, band + 1, w, tile3, seed0, NULL);
   nl_wavelet_bands_grid(t3, &b, size, size, 3.3, 1, img3);
-  const nl_image *panels[4];
   nl_image *im[4] = {nl_image_from_values(img2, size, size, -1.5, 1.5),
                      nl_image_from_values(img3, size, size, -1.5, 1.5),
                      nl_example_spectrum_image(img2, size, size, 4),
                      nl_example_spectrum_image(img3, size, size, 4)};
-  for (int i = 0; i < 4; i++) panels[i] = im[i];
   const char *labels[] = {"(a) 2D wavelet noise", "(b) slice of 3D wavelet noise",
                           "(c) power spectrum of (a)", "(d) power spectrum of (b)"};
   char title[96];
   snprintf(title, sizeof title, "One band (k = %d: 1/%d..1/%d cycles per pixel)", band, 4 << band, 2 << band);
-  nl_image *mont = nl_montage(panels, labels, 4, 2, title);
-  nl_run_image(r, mont, "noise.png");
-  int nbins = size / 2;
-  double *f = malloc((size_t)nbins * sizeof *f), *p2 = malloc((size_t)nbins * sizeof *p2),
-         *p3 = malloc((size_t)nbins * sizeof *p3);
-  nl_radial_power(img2, size, size, nbins, f, p2);
-  nl_radial_power(img3, size, size, nbins, f, p3);
-  const char *rcols[] = {"freq", "power2d", "power3d"};
-  nl_table *rt = nl_table_alloc(3, rcols);
-  for (int i = 0; i < nbins; i++) nl_table_append(rt, "ddd", f[i], p2[i], p3[i]);
+  nl_study_montage(r, (const nl_image *const *)im, labels, 4, 2, title, "noise.png");
+  const double *imgs[2] = {img2, img3};
+  nl_table *rt = nl_study_radial_table(imgs, (const char *[]){"power2d", "power3d"}, 2, size, 0);
   nl_run_table(r, rt, "radial.tsv");
   const char *ecols[] = {"lo", "hi"};
   nl_table *et = nl_table_alloc(2, ecols);
@@ -114,10 +99,10 @@ int main(int argc, char **argv)
 
   /* Summary against the literature. */
   double m2, s2, m3, s3, in0, in0sd;
-  mean_sd(v2, K, &m2, &s2);
-  mean_sd(v3, K, &m3, &s3);
-  in0 = nl_table_get(lt, 0, 2);
-  in0sd = nl_table_get(lt, 0, 3);
+  nl_study_mean_sd(v2, K, &m2, &s2);
+  nl_study_mean_sd(v3, K, &m3, &s3);
+  in0 = nl_table_value(lt, 0, "inside");
+  in0sd = nl_table_value(lt, 0, "inside_sd");
   const char *scols[] = {"quantity", "ours", "ours_sd", "paper"};
   nl_table *st = nl_table_alloc(4, scols);
   nl_table_append(st, "sddd", "sigma_N^2 2D", m2, s2, 0.265);
@@ -147,7 +132,7 @@ int main(int argc, char **argv)
                  "random offset, therefore has a variance anywhere in that range; coarser bands sample "
                  "2^k offsets and average it out. We measure sigma_N^2 as the mean over the cell (4 "
                  "samples per unit and axis; 1 sample at half-integers would give the frac-1/2 value).",
-                 nl_table_get(ft, 0, 1), nl_table_get(ft, 4, 1));
+                 nl_table_value(ft, 0, "var2d"), nl_table_value(ft, 4, "var2d"));
   nl_report_table(r, ft, "Variance on the lattice shifted by frac (one tile)", 4);
   nl_report_table(r, st, "Band variance and in-band share, ours vs the literature", 4);
   nl_report_table(r, lt, "Share of each band's power below / inside / above its eq. 13 octave (band 0 finest; coarse bands hold few Fourier coefficients)", 3);
@@ -155,11 +140,10 @@ int main(int argc, char **argv)
   nl_report_figure(r, "radial.png", "Radially averaged power of one band, 2D and 3D slice; dashed: the octave of eq. 5");
 
   for (int i = 0; i < 4; i++) nl_image_free(im[i]);
-  nl_image_free(mont);
   nl_table_free(vt); nl_table_free(ft); nl_table_free(lt); nl_table_free(rt); nl_table_free(st);
   nl_wavelet_tile_free(t2);
   nl_wavelet_tile_free(t3);
-  free(v2); free(v3); free(share); free(var); free(col); free(img2); free(img3); free(f); free(p2); free(p3);
+  free(v2); free(v3); free(share); free(var); free(col); free(img2); free(img3);
   nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
   return nl_run_end(r);
 }

@@ -42,10 +42,14 @@ int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("l2_weights", "L2 - Weights from an exemplar: the validation of Fig. 4", argc, argv);
   int quick = nl_run_quick(r);
-  int size = (int)nl_run_param_int(r, "size", quick ? 128 : 512, 16, 4096);
-  int maxsize = (int)nl_run_param_int(r, "max_size", quick ? 256 : 1024, 64, 4096);
-  int sweep_seeds = (int)nl_run_param_int(r, "sweep_seeds", quick ? 3 : 20, 1, 1000);
-  int tile = (int)nl_run_param_int(r, "tile", NL_EXAMPLE_TILE, 8, 2048);
+  int size = (int)nl_run_param_int(r, "size", quick ? 128 : 512, 16, 4096,
+                                   "side in pixels of the noise whose weights are estimated (quick 128)");
+  int maxsize = (int)nl_run_param_int(r, "max_size", quick ? 256 : 1024, 64, 4096,
+                                      "largest image side of the error-against-size sweep (quick 256)");
+  int sweep_seeds = (int)nl_run_param_int(r, "sweep_seeds", quick ? 3 : 20, 1, 1000,
+                                          "seeds per size in the error-against-size sweep (quick 3)");
+  int tile = (int)nl_run_param_int(r, "tile", NL_EXAMPLE_TILE, 8, 2048,
+                                   "period in pixels of the wavelet-noise tile (even, >= 8)");
   nl_run_params_done(r);
   unsigned long seed0 = nl_run_seed(r);
   double sigma2 = nl_example_sigma2(tile);

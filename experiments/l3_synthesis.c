@@ -5,8 +5,7 @@
  * PCA (Fig. 5b), and with a Fritsch-Carlson spline instead of steffen. */
 #include "example/nl_example.h"
 #include "report/nl_report.h"
-#include "spectrum/nl_spectrum.h"
-#include "stats/nl_stats.h"
+#include "study/nl_study.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -16,40 +15,12 @@ static const char *kinds[NKIND] = {"wavelet", "clouds", "granite", "marble"};
 static const char *variants[NVAR] = {"pca_hist", "pca_nohist", "rgb_hist", "pca_hist_fc"};
 static const nl_example_options var_opt[NVAR] = {{1, 1, 0, 0}, {1, 0, 0, 0}, {0, 1, 0, 0}, {1, 1, 0, 0}};
 
-/* Mean over channels of the two-sample KS distance between intensities. */
-static double ks_channels(const nl_image *a, const nl_image *b, double *per)
-{
-  size_t n = (size_t)a->width * a->height, m = (size_t)b->width * b->height;
-  double *x = malloc(n * sizeof *x), *y = malloc(m * sizeof *y), s = 0;
-  for (int c = 0; c < 3; c++) {
-    nl_ks_result res;
-    nl_example_channel(a, c, x);
-    nl_example_channel(b, c, y);
-    nl_ks2_test(x, n, y, m, &res, NULL);
-    per[c] = res.d;
-    s += res.d / 3;
-  }
-  free(x);
-  free(y);
-  return s;
-}
-
-/* Largest absolute difference of the off-diagonal colour correlations. */
-static double corr_error(const nl_image *a, const nl_image *b)
-{
-  double ca[3][3], cb[3][3], e = 0;
-  nl_example_correlation(a, ca);
-  nl_example_correlation(b, cb);
-  for (int i = 0; i < 3; i++)
-    for (int j = i + 1; j < 3; j++) e = fmax(e, fabs(ca[i][j] - cb[i][j]));
-  return e;
-}
-
 int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("l3_synthesis", "L3 - Texture synthesis by example: PCA colour and histogram matching", argc, argv);
   int quick = nl_run_quick(r);
-  int size = (int)nl_run_param_int(r, "size", quick ? 128 : 512, 16, 4096);
+  int size = (int)nl_run_param_int(r, "size", quick ? 128 : 512, 16, 4096,
+                                   "side in pixels of the exemplar analysed and of the synthesised textures (quick 128)");
   nl_run_params_done(r);
   int K = nl_run_seeds(r);
   unsigned long seed0 = nl_run_seed(r);
@@ -58,10 +29,8 @@ int main(int argc, char **argv)
   nl_table *kt = nl_table_alloc(9, kcols);
   const char *scols[] = {"kind", "max_abs_diff_fc_vs_steffen"};
   nl_table *ft = nl_table_alloc(2, scols);
-  int nbins = size / 2;
-  double *f = malloc((size_t)nbins * sizeof *f), *pw[3];
-  for (int i = 0; i < 3; i++) pw[i] = malloc((size_t)nbins * sizeof *pw[i]);
-  double *grey = malloc((size_t)size * size * sizeof *grey);
+  double *grey[3];
+  for (int i = 0; i < 3; i++) grey[i] = malloc((size_t)size * size * sizeof *grey[i]);
 
   for (int k = 0; k < NKIND; k++) {
     nl_image *ex = nl_example_exemplar(kinds[k], size, nl_seed_stream(seed0, "l3.exemplar", (unsigned long)k));
@@ -76,9 +45,9 @@ int main(int argc, char **argv)
       for (int s = 0; s < K; s++) {
         nl_image *syn;
         nl_example_synthesize(&p, size, size, nl_seed_replicate(seed0, s), &so, &syn, &err);
-        ks[s] = ks_channels(ex, syn, per);
+        ks[s] = nl_study_ks_channels(ex, syn, per);
         for (int c = 0; c < 3; c++) acc[c] += per[c] / K;
-        ce += corr_error(ex, syn) / K;
+        ce += nl_example_correlation_error(ex, syn) / K;
         m += ks[s] / K;
         if (s == 0) first[v] = syn; else nl_image_free(syn);
       }
@@ -97,15 +66,9 @@ int main(int argc, char **argv)
 
     /* Radial spectra of the luminance: exemplar, with and without histogram matching. */
     const nl_image *src[3] = {ex, first[0], first[1]};
-    for (int i = 0; i < 3; i++) {
-      nl_image *g = nl_image_convert(src[i], 1);
-      for (size_t j = 0; j < (size_t)size * size; j++) grey[j] = g->data[j];
-      nl_radial_power(grey, size, size, nbins, f, pw[i]);
-      nl_image_free(g);
-    }
-    const char *rcols[] = {"freq", "exemplar", "synthesis", "synthesis_nohist"};
-    nl_table *rt = nl_table_alloc(4, rcols);
-    for (int b = 1; b < nbins; b++) nl_table_append(rt, "dddd", f[b], pw[0][b], pw[1][b], pw[2][b]);
+    for (int i = 0; i < 3; i++) nl_example_luminance(src[i], grey[i]);
+    nl_table *rt = nl_study_radial_table((const double *const *)grey,
+                                         (const char *[]){"exemplar", "synthesis", "synthesis_nohist"}, 3, size, 1);
     char name[64];
     snprintf(name, sizeof name, "spectrum_%s.tsv", kinds[k]);
     nl_run_table(r, rt, name);
@@ -115,10 +78,8 @@ int main(int argc, char **argv)
     const char *labels[5] = {"(a) exemplar", "(b) paper", "(c) no hist.", "(d) RGB", "(e) FC"};
     char title[96];
     snprintf(title, sizeof title, "%s exemplar, %d x %d, seed %lu", kinds[k], size, size, seed0);
-    nl_image *mont = nl_montage(panels, labels, 5, 5, title);
     snprintf(name, sizeof name, "synthesis_%s.png", kinds[k]);
-    nl_run_image(r, mont, name);
-    nl_image_free(mont);
+    nl_study_montage(r, panels, labels, 5, 5, title, name);
     for (int v = 0; v < NVAR; v++) nl_image_free(first[v]);
     nl_image_free(ex);
   }
@@ -157,8 +118,7 @@ int main(int argc, char **argv)
 
   nl_table_free(kt);
   nl_table_free(ft);
-  free(f); free(grey);
-  for (int i = 0; i < 3; i++) free(pw[i]);
+  for (int i = 0; i < 3; i++) free(grey[i]);
   nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
   return nl_run_end(r);
 }

@@ -5,6 +5,7 @@
  * against Poisson(lambda), KS of F1 against 1 - exp(-lambda 4/3 pi r^3). */
 #include "cellular/nl_cellular.h"
 #include "report/nl_report.h"
+#include "study/nl_study.h"
 
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>
@@ -25,30 +26,29 @@ static void one_seed(nl_run *r, nl_cellular *c, int side, long points, unsigned 
   nl_chisq_result cs;
   nl_ks_result ks;
   nl_error err;
-  double mean_f1;
+  double mean_f1, mean, var;
   nl_cellular_count_histogram(c, 0, side, hist);
   if (nl_cellular_count_chisq(c, hist, &cs, &err)) nl_run_die(r, 1, "%s", err.msg);
   if (nl_cellular_f1_ks(c, (size_t)points, seed, &ks, &mean_f1, &err)) nl_run_die(r, 1, "%s", err.msg);
-  double n = 0, s1 = 0, s2 = 0;
-  for (int m = 0; m <= c->M; m++) { n += hist[m]; s1 += m * hist[m]; s2 += (double)m * m * hist[m]; }
-  double mean = s1 / n, var = s2 / n - mean * mean;
+  nl_cellular_count_moments(hist, c->M, &mean, &var);
   nl_table_append(per_seed, "siddddiddd", nl_count_rule_name(c->rule), (int)seed, mean, var,
                   cs.chi2, cs.p, (int)cs.df, ks.d, ks.p, mean_f1);
 }
 
-/* Mean of column `col` over the rows of `rule`, and how many have col2 < 0.01. */
-static void summarise(const nl_table *t, const char *rule, int col, double *mean, int *rejects)
+/* Mean of column `col` over the rows of `rule`; with pcol, how many have pcol < 0.01. */
+static double summarise(const nl_table *t, const char *rule, const char *col, const char *pcol, int *rejects)
 {
+  size_t rc = nl_table_column_must(t, "rule");
   double s = 0;
   int n = 0;
-  *rejects = 0;
+  char buf[32];
   for (size_t k = 0; k < t->nrows; k++)
-    if (!strcmp(t->text[k * t->ncols], rule)) {
-      s += nl_table_get(t, k, (size_t)col);
-      *rejects += nl_table_get(t, k, (size_t)col + 1) < 0.01;
+    if (!strcmp(nl_table_cell_text(t, k, rc, buf), rule)) {
+      s += nl_table_value(t, k, col);
+      if (pcol) *rejects += nl_table_value(t, k, pcol) < 0.01;
       n++;
     }
-  *mean = s / n;
+  return s / n;
 }
 
 static nl_image *f_panel(const nl_cellular *c, const char *expr, int size, double extent)
@@ -60,9 +60,7 @@ static nl_image *f_panel(const nl_cellular *c, const char *expr, int size, doubl
   nl_window w = {0, 0, 0.5, extent, size, size};
   double *v = nl_xmalloc((size_t)size * size * sizeof *v);
   nl_fractal_grid(&b, &o, &w, v);
-  double hi = 0;
-  for (size_t k = 0; k < (size_t)size * size; k++) hi = fmax(hi, v[k]);
-  nl_image *im = nl_image_from_values(v, size, size, 0.0, hi);
+  nl_image *im = nl_image_from_values(v, size, size, 0.0, fmax(0.0, gsl_stats_max(v, 1, (size_t)size * size)));
   free(v);
   return im;
 }
@@ -71,11 +69,11 @@ int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("q1_cellular", "Q1 - Cellular F1..F4 and the count rule", argc, argv);
   int quick = nl_run_quick(r);
-  double lambda = nl_run_param(r, "lambda", 4.0, 1e-3, 1000.0);
-  int M = (int)nl_run_param_int(r, "M", 50, 1, NL_CELLULAR_MAX_M);
-  int side = (int)nl_run_param_int(r, "side", quick ? 16 : 32, 2, 256);
-  long points = nl_run_param_int(r, "points", quick ? 1000 : 5000, 10, 10000000);
-  int size = (int)nl_run_param_int(r, "size", quick ? 96 : 256, 8, 4096);
+  double lambda = nl_run_param(r, "lambda", 4.0, 1e-3, 1000.0, "Poisson mean lambda of feature points per unit cube (Qin & Yang: 4)");
+  int M = (int)nl_run_param_int(r, "M", 50, 1, NL_CELLULAR_MAX_M, "most feature points a cube may hold (Qin & Yang: 50)");
+  int side = (int)nl_run_param_int(r, "side", quick ? 16 : 32, 2, 256, "cubes per side of the block whose point counts are tested (side^3 cubes; quick 16)");
+  long points = nl_run_param_int(r, "points", quick ? 1000 : 5000, 10, 10000000, "random points at which F1 is tested against the nearest-neighbour law (quick 1000)");
+  int size = (int)nl_run_param_int(r, "size", quick ? 96 : 256, 8, 4096, "side in pixels of the F1..F4 images (quick 96)");
   nl_run_params_done(r);
   int seeds = nl_run_seeds(r);
   unsigned long seed0 = nl_run_seed(r);
@@ -105,12 +103,9 @@ int main(int argc, char **argv)
   double theory = tgamma(4.0 / 3.0) * pow(4.0 / 3.0 * NL_PI * lambda, -1.0 / 3.0);
   for (int rule = 0; rule < 2; rule++) {
     const char *name = nl_count_rule_name((nl_count_rule)rule);
-    double mc, chi, ksd, mf;
-    int rc, rk, dummy;
-    summarise(per, name, 2, &mc, &dummy);
-    summarise(per, name, 4, &chi, &rc);
-    summarise(per, name, 7, &ksd, &rk);
-    summarise(per, name, 9, &mf, &dummy);
+    int rc = 0, rk = 0;
+    double mc = summarise(per, name, "mean_count", NULL, NULL), chi = summarise(per, name, "chi2", "chi2_p", &rc);
+    double ksd = summarise(per, name, "ks_d", "ks_p", &rk), mf = summarise(per, name, "mean_f1", NULL, NULL);
     nl_table_append(sum, "sddididdi", name, mc, chi, rc, ksd, rk, mf, theory, seeds);
   }
   nl_run_table(r, per, "tests.tsv");
@@ -123,8 +118,7 @@ int main(int argc, char **argv)
   nl_cellular *closest = make(r, lambda, M, NL_COUNT_CLOSEST, seed0);
   panels[5] = f_panel(closest, "F1", size, 4.0);
   const char *labels[] = {"F1", "F2", "F3", "F4", "F2 - F1", "F1 paper rule"};
-  nl_image *mont = nl_montage((const nl_image *const *)panels, labels, 6, 3, "F_i on z = 0.5");
-  nl_run_image(r, mont, "planes.png");
+  nl_study_montage(r, (const nl_image *const *)panels, labels, 6, 3, "F_i on z = 0.5", "planes.png");
 
   nl_report_text(r, "**Paper (sec. 3.2):** counts per unit cube from \"the m whose p(m) is closest to "
                     "r\", lambda = %g, M = %d; no statistics reported. **Ours:** both rules on %d^3 cubes "
@@ -144,12 +138,11 @@ int main(int argc, char **argv)
                     "%.4f). Inverse-CDF sampling: rejected on %d and %d of %d seeds, F1 mean %.4f "
                     "against Gamma(4/3) (4/3 pi lambda)^(-1/3) = %.4f.\n",
                   ref->pmf[(int)floor(lambda)], 100.0 * (1.0 - ref->pmf[(int)floor(lambda)]),
-                  hist[0][3 < M ? 3 : M], ref->pmf[3 < M ? 3 : M], nl_table_get(sum, 0, 1),
-                  (int)nl_table_get(sum, 0, 3), seeds, (int)nl_table_get(sum, 0, 5), seeds,
-                  nl_table_get(sum, 0, 6), (int)nl_table_get(sum, 1, 3), (int)nl_table_get(sum, 1, 5),
-                  seeds, nl_table_get(sum, 1, 6), theory);
+                  hist[0][3 < M ? 3 : M], ref->pmf[3 < M ? 3 : M], nl_table_value(sum, 0, "mean_count"),
+                  (int)nl_table_value(sum, 0, "chi2_rejects"), seeds, (int)nl_table_value(sum, 0, "ks_rejects"), seeds,
+                  nl_table_value(sum, 0, "mean_f1"), (int)nl_table_value(sum, 1, "chi2_rejects"),
+                  (int)nl_table_value(sum, 1, "ks_rejects"), seeds, nl_table_value(sum, 1, "mean_f1"), theory);
   for (int k = 0; k < 6; k++) nl_image_free(panels[k]);
-  nl_image_free(mont);
   nl_cellular_free(ref); nl_cellular_free(closest);
   nl_table_free(per); nl_table_free(sum); nl_table_free(dist);
   nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */

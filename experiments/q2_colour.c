@@ -3,6 +3,7 @@
  * knots of sec. 4.1, for Perlin noise and five GCTBF combinations. */
 #include "cellular/nl_cellular.h"
 #include "report/nl_report.h"
+#include "study/nl_study.h"
 #include "texture/nl_texture.h"
 
 #include <gsl/gsl_statistics_double.h>
@@ -15,9 +16,12 @@ static const char *combos[5] = {"F1", "F2 - F1", "F1F2", "F2 - F1 - F1F1", "F1F2
 int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("q2_colour", "Q2 - GCTBF colour mapping with the 13-knot spline", argc, argv);
-  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 96 : 256, 8, 4096);
-  double extent = nl_run_param(r, "extent", 4.0, 1e-3, 1e4);
-  double perlin_freq = nl_run_param(r, "perlin_freq", 2.0, 1e-3, 1e3);
+  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 96 : 256, 8, 4096,
+                                   "side in pixels of the colour-mapped images (quick 96)");
+  double extent = nl_run_param(r, "extent", 4.0, 1e-3, 1e4,
+                               "side of the square [0, extent)^2 the images cover, in feature-cube units");
+  double perlin_freq = nl_run_param(r, "perlin_freq", 2.0, 1e-3, 1e3,
+                                    "frequency of the Perlin noise panel");
   nl_run_params_done(r);
   int seeds = nl_run_seeds(r);
   size_t npix = (size_t)size * size;
@@ -63,8 +67,7 @@ int main(int argc, char **argv)
     nl_table_append(t, "sdddd", labels[pat], st[0], st[1], st[2], st[3]);
   }
   nl_run_table(r, t, "values.tsv");
-  nl_image *m = nl_montage((const nl_image *const *)panels, labels, 6, 3, "Fig. 2: spline colour map");
-  nl_run_image(r, m, "colour.png");
+  nl_study_montage(r, (const nl_image *const *)panels, labels, 6, 3, "Fig. 2: spline colour map", "colour.png");
 
   nl_report_text(r, "**Paper (Fig. 2):** eq. 4 with the 13 blue-marble knots of sec. 4.1, Perlin noise "
                     "and five GCTBF combinations (images only; the combinations are drawn in the "
@@ -77,7 +80,6 @@ int main(int argc, char **argv)
   nl_report_table(r, t, "GCTBF values before the clamp", 4);
   nl_report_figure(r, "colour.png", "Fig. 2: Perlin noise and five GCTBF combinations through the 13-knot spline");
   for (int k = 0; k < 6; k++) nl_image_free(panels[k]);
-  nl_image_free(m);
   free(v);
   nl_table_free(t);
   nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */

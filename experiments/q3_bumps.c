@@ -10,11 +10,16 @@
 int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("q3_bumps", "Q3 - Fractal bump wrinkles with F2 - F1 - F1F1", argc, argv);
-  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 96 : 256, 8, 4096);
-  double extent = nl_run_param(r, "extent", 2.0, 1e-3, 1e4);
-  double k = nl_run_param(r, "k", 3.0, 1e-3, 1e3);
-  int max_oct = (int)nl_run_param_int(r, "octaves", 4, 0, 30);
-  double amp = nl_run_param(r, "amp", 0.05, 1e-6, 1e3);
+  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 96 : 256, 8, 4096,
+                                   "side in pixels of the shaded bump images (quick 96)");
+  double extent = nl_run_param(r, "extent", 2.0, 1e-3, 1e4,
+                               "side of the square of the plane the images cover, in feature-cube units");
+  double k = nl_run_param(r, "k", 3.0, 1e-3, 1e3,
+                          "scale k of the fractal bump's octaves (Qin & Yang eq. 5's example: 3)");
+  int max_oct = (int)nl_run_param_int(r, "octaves", 4, 0, 30,
+                                      "highest octave of the fractal bump; panels show octaves 0..this");
+  double amp = nl_run_param(r, "amp", 0.05, 1e-6, 1e3,
+                            "displacement amplitude: the plane moves by amp x bump along its normal");
   nl_run_params_done(r);
   int seeds = nl_run_seeds(r);
   size_t npix = (size_t)size * size;

@@ -4,6 +4,7 @@
  * F3 - F3F3, sky F1F2 + F2F3 and F1, flame F1. */
 #include "cellular/nl_cellular.h"
 #include "report/nl_report.h"
+#include "study/nl_study.h"
 #include "texture/nl_texture.h"
 
 #include <gsl/gsl_statistics_double.h>
@@ -25,59 +26,7 @@ typedef struct {
   nl_table *t;
 } q4;
 
-static nl_cellular *cells(q4 *q, unsigned long seed)
-{
-  nl_cellular *c;
-  nl_error err;
-  if (nl_cellular_alloc(4.0, 50, NL_COUNT_INVERSE_CDF, seed, &c, &err)) nl_run_die(q->r, 1, "%s", err.msg);
-  return c;
-}
-
-/* Eq. 7's fractal for one seed: GCTBF (expr) or, for expr NULL, RenderMan's
- * noise 0.5 + 0.5 N, for which 1 - 2 noise = -N. */
-static void cloud_values(q4 *q, const char *expr, unsigned long seed, double *v)
-{
-  if (!expr) {
-    nl_perm3 p;
-    nl_perm3_seed(&p, seed);
-    nl_basis b = nl_basis_perm3(&p);
-    nl_octaves o = nl_octaves_fractal(q->octaves + 1);
-    for (int l = 0; l < o.n; l++) { o.freq[l] *= q->k; o.amp[l] = -o.amp[l]; }
-    nl_fractal_grid(&b, &o, &q->win, v);
-    return;
-  }
-  nl_cellular *c = cells(q, seed);
-  nl_gctbf_basis gb = {c, {0}};
-  nl_gctbf_parse(expr, &gb.g, NULL);
-  nl_gctbf_cloud_grid(&gb, q->octaves, q->k, &q->win, v);
-  nl_cellular_free(c);
-}
-
-/* Flame: the fractal sum of GCTBF = F1, sum_i F1(2^i k x) / 2^i. */
-static void flame_values(q4 *q, unsigned long seed, double *v)
-{
-  nl_cellular *c = cells(q, seed);
-  nl_gctbf_basis gb = {c, {0}};
-  nl_gctbf_parse("F1", &gb.g, NULL);
-  nl_basis b = nl_basis_gctbf(&gb);
-  nl_octaves o = nl_octaves_fractal(q->octaves + 1);
-  for (int l = 0; l < o.n; l++) o.freq[l] *= q->k;
-  nl_fractal_grid(&b, &o, &q->win, v);
-  nl_cellular_free(c);
-}
-
-static void plain_values(q4 *q, const char *expr, unsigned long seed, double *v)
-{
-  nl_cellular *c = cells(q, seed);
-  nl_gctbf g;
-  nl_gctbf_parse(expr, &g, NULL);
-  nl_window w = q->win;
-  w.x0 *= q->k; w.y0 *= q->k; w.z *= q->k; w.size *= q->k;
-  nl_gctbf_grid(c, &g, &w, v);
-  nl_cellular_free(c);
-}
-
-enum { CLOUD, FLAME, PLAIN };
+enum { CLOUD = NL_GCTBF_CLOUD, FLAME = NL_GCTBF_FLAME, PLAIN = NL_GCTBF_PLAIN };
 
 /* Values of one texture over seeds (table row), image of the first seed. */
 static nl_image *texture(q4 *q, int kind, const char *label, const char *expr, const nl_ramp *ramp,
@@ -88,9 +37,9 @@ static nl_image *texture(q4 *q, int kind, const char *label, const char *expr, c
   nl_image *im = NULL;
   for (int s = 0; s < q->seeds; s++) {
     unsigned long seed = nl_seed_replicate(nl_run_seed(q->r), s);
-    if (kind == CLOUD) cloud_values(q, expr, seed, v);
-    else if (kind == FLAME) flame_values(q, seed, v);
-    else plain_values(q, expr, seed, v);
+    nl_error err;
+    if (nl_cellular_texture_grid((nl_gctbf_texture)kind, expr, q->octaves, q->k, &q->win, seed, v, &err))
+      nl_run_die(q->r, 1, "%s", err.msg);
     mean += gsl_stats_mean(v, 1, n) / q->seeds;
     sd += gsl_stats_sd(v, 1, n) / q->seeds;
     if (s == 0) im = ramp ? nl_ramp_image(ramp, v, q->size, q->size, lo, hi) : nl_gctbf_cloud_colour(v, q->size, q->size);
@@ -105,9 +54,12 @@ int main(int argc, char **argv)
 {
   q4 q = {0};
   q.r = nl_run_begin("q4_textures", "Q4 - GCTBF cloud, marble, wood and flame textures", argc, argv);
-  q.size = (int)nl_run_param_int(q.r, "size", nl_run_quick(q.r) ? 96 : 256, 8, 4096);
-  q.octaves = (int)nl_run_param_int(q.r, "octaves", 4, 0, 30);
-  q.k = nl_run_param(q.r, "k", 2.0, 1e-3, 1e3);
+  q.size = (int)nl_run_param_int(q.r, "size", nl_run_quick(q.r) ? 96 : 256, 8, 4096,
+                                 "side in pixels of the texture images (quick 96)");
+  q.octaves = (int)nl_run_param_int(q.r, "octaves", 4, 0, 30,
+                                    "octaves added above the first in the cloud and texture sums (0 = one octave)");
+  q.k = nl_run_param(q.r, "k", 2.0, 1e-3, 1e3,
+                     "scale k between successive octaves of the GCTBF cloud (Qin & Yang eq. 7)");
   nl_run_params_done(q.r);
   q.seeds = nl_run_seeds(q.r);
   q.win = (nl_window){0, 0, 0.5, 2.0, q.size, q.size};
@@ -121,8 +73,7 @@ int main(int argc, char **argv)
     clabels[k + 1] = cloud_combos[k];
     clouds[k + 1] = texture(&q, CLOUD, "cloud", cloud_combos[k], NULL, 0, 1);
   }
-  nl_image *mc = nl_montage((const nl_image *const *)clouds, clabels, 6, 3, "Fig. 5: eq. 7 clouds");
-  nl_run_image(q.r, mc, "clouds.png");
+  nl_study_montage(q.r, (const nl_image *const *)clouds, clabels, 6, 3, "Fig. 5: eq. 7 clouds", "clouds.png");
 
   const float woodc[2][3] = {{0.80f, 0.58f, 0.34f}, {0.38f, 0.20f, 0.08f}};
   const double wpos[2] = {0.0, 1.0};
@@ -137,8 +88,7 @@ int main(int argc, char **argv)
   tex[3] = texture(&q, CLOUD, "sky", "F1F2 + F2F3", NULL, 0, 1);
   tex[4] = texture(&q, CLOUD, "sky", "F1", NULL, 0, 1);
   tex[5] = texture(&q, FLAME, "flame", "F1", &fr, 0.2, 1.0);
-  nl_image *mt = nl_montage((const nl_image *const *)tex, tlabels, 6, 3, "Fig. 6: GCTBF textures");
-  nl_run_image(q.r, mt, "textures.png");
+  nl_study_montage(q.r, (const nl_image *const *)tex, tlabels, 6, 3, "Fig. 6: GCTBF textures", "textures.png");
   nl_run_table(q.r, q.t, "textures.tsv");
 
   nl_report_text(q.r, "**Paper (Fig. 5, 6):** cloud pattern eq. 7 for Perlin and five GCTBF; marble "
@@ -160,7 +110,6 @@ int main(int argc, char **argv)
   nl_report_figure(q.r, "clouds.png", "Fig. 5: eq. 7 clouds, Perlin and five GCTBF combinations");
   nl_report_figure(q.r, "textures.png", "Fig. 6: marble, wood, sky and flame from the GCTBF");
   for (int k = 0; k < 6; k++) { nl_image_free(clouds[k]); nl_image_free(tex[k]); }
-  nl_image_free(mc); nl_image_free(mt);
   nl_table_free(q.t);
   nl_run_check_measured(q.r, "*", 100);   /* measured tolerances (nl_report.h) */
   return nl_run_end(q.r);

@@ -8,14 +8,9 @@ int main(int argc, char **argv)
   nl_window win = nl_study_window(r);
   nl_run_params_done(r);
 
-  nl_report_text(r, "**Slides:** turbulence, the fractal sum of |noise|, at 1, 2, 3 and 8 octaves "
-                    "(images only). **Ours:** the slice z = %g of Perlin's improved 3D noise over "
-                    "[0, %g)^2, %d seeds for the numbers.\n", win.z, win.size, nl_run_seeds(r));
-  const int oct[] = {1, 2, 3, 8};
-  nl_setting st[4];
-  char labels[4][32];
-  nl_study_octave_settings(oct, 4, 1, st, labels);
-  nl_table_free(nl_study_series(r, "turbulence", "turbulence(p) = sum |noise(2^j p)| / 2^j", NL_BASIS_IMPROVED3, st, 4, &win));
+  nl_table_free(nl_study_octave_series(r, &win, 1, "turbulence, the fractal sum of |noise|, at 1, 2, 3 "
+                                       "and 8 octaves (images only).", "turbulence",
+                                       "turbulence(p) = sum |noise(2^j p)| / 2^j"));
   nl_report_text(r, "The absolute value folds each octave at its zero set, the dark creases. Folding "
                     "moves power into the DC term (the mean is positive) and into frequencies above "
                     "the octave's band, so even one octave has a broad spectrum, unlike S1.\n");

@@ -9,7 +9,7 @@ int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("s3_fbm", "S3 - fBm: gain and lacunarity", argc, argv);
   nl_window win = nl_study_window(r);
-  int octaves = (int)nl_run_param_int(r, "octaves", 6, 1, 30);
+  int octaves = (int)nl_run_param_int(r, "octaves", 6, 1, 30, "octaves summed in each fBm");
   nl_run_params_done(r);
 
   nl_report_text(r, "**Slides:** fBm with %d octaves, gain 0, 0.25, 0.5, 0.75, 1 at lacunarity 2, and "

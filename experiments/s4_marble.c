@@ -15,10 +15,14 @@
 int main(int argc, char **argv)
 {
   nl_run *r = nl_run_begin("s4_marble", "S4 - Marble through a colour ramp", argc, argv);
-  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 512, 16, 4096);
-  int octaves = (int)nl_run_param_int(r, "octaves", 6, 1, 30);
-  double stripes = nl_run_param(r, "stripes", 1.0, 1e-3, 1e3);
-  double extent = nl_run_param(r, "extent", 4.0, 1e-3, 1e4);
+  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 512, 16, 4096,
+                                   "side in pixels of the marble images (quick 128)");
+  int octaves = (int)nl_run_param_int(r, "octaves", 6, 1, 30,
+                                      "octaves of the turbulence that perturbs the stripes");
+  double stripes = nl_run_param(r, "stripes", 1.0, 1e-3, 1e3,
+                                "stripes per unit along y: u = (1 + sin(2 pi stripes p.y)) / 2, p.y displaced by turbulence");
+  double extent = nl_run_param(r, "extent", 4.0, 1e-3, 1e4,
+                               "side of the noise-space square [0, extent)^2 the images cover");
   nl_run_params_done(r);
 
   const double amps[NA] = {0, 0.25, 0.5, 1.0};

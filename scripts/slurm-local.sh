@@ -19,7 +19,10 @@ LOGS=/var/log/slurm
 
 if [ "${1:-}" = --stop ]; then
   for d in slurmd slurmctld munged; do
-    if pid="$(pgrep -x "$d")"; then kill $pid && say "stopped $d ($pid)"; fi
+    if pid="$(pgrep -x "$d")"; then
+      mapfile -t pids <<<"$pid"   # one daemon may run as several processes
+      kill "${pids[@]}" && say "stopped $d (${pids[*]})"
+    fi
   done
   exit 0
 fi
@@ -97,7 +100,7 @@ wait_idle() {
   local i
   for i in $(seq 1 30); do
     if sinfo -h -o '%t' 2>/dev/null | grep -Eq '^(idle|mix|alloc)'; then say "cluster up: $(sinfo -h -o '%P %D %t %c cpus %m MB' | head -n 1)"; return 0; fi
-    [ "$i" = 5 ] && scontrol update NodeName=localhost State=RESUME 2>/dev/null || true
+    if [ "$i" = 5 ]; then scontrol update NodeName=localhost State=RESUME 2>/dev/null || true; fi
     sleep 1
   done
   sinfo >&2 || true

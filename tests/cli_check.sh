@@ -5,6 +5,7 @@
 # noise-level differences under the statistical rules, and refuses bad
 # input with one line and exit 2.
 set -euo pipefail
+. "$(dirname "$0")/tsv.sh"   # tables by column name
 check="$1" expect="$2" out="$3"
 rm -rf "$out"; mkdir -p "$out"
 ref="$out/ref"; mkdir -p "$ref"
@@ -18,8 +19,8 @@ tsv "$ref/dist.tsv" 'label|mean|mean_sd|secs|count' '(a) one|0.5|0.1|3.2|17' '(b
 tsv "$ref/spec.tsv" 'freq|power' '0.125|0.0077449593835423221' '0.375|0.0033590302577136471'
 
 copy() { rm -rf "$out/$1"; cp -r "$ref" "$out/$1"; }
-edit() {   # DIR FILE ROW COLUMN VALUE (row 1 = first data row)
-  awk -F'\t' -v OFS='\t' -v r="$3" -v c="$4" -v v="$5" 'NR == r + 1 {$c = v} {print}' "$out/$1/$2" >"$out/$1/.x"
+edit() {   # DIR FILE ROW COLUMN VALUE (row 1 = first data row; COLUMN by name)
+  tsv_awk -v r="$3" -v c="$4" -v x="$5" 'BEGIN {OFS = "\t"} NR == r + 1 {$col(c) = x} {print}' "$out/$1/$2" >"$out/$1/.x"
   mv "$out/$1/.x" "$out/$1/$2"
 }
 run() {   # WANT_RC NAME [GREP...]: runs the check of ref against NAME
@@ -36,28 +37,28 @@ copy same
 run 0 same 'check: 1 experiment, 2 tables, .* 0 drifted'
 
 # exact: one unit in the last place of an undeclared column is drift.
-copy ulp; edit ulp dist.tsv 1 5 17.000000000000004
+copy ulp; edit ulp dist.tsv 1 count 17.000000000000004
 run 1 ulp $'t1\tdist.tsv\t1 \\[(a) one\\]\tcount\t17\t17.000000000000004\texact' '1 drifted'
 
 # welch: a shift of 0.5 when the per-seed sd is 0.1 over 10 seeds (t ~ 11).
-copy shifted; edit shifted dist.tsv 1 2 1.0
+copy shifted; edit shifted dist.tsv 1 mean 1.0
 run 1 shifted $'\tmean\t0.5\t1\twelch mean_sd 1e-3: p = ' '1 drifted'
 
 # welch and ftest: noise-level differences pass (another random stream):
 # mean moved by 0.03 (t ~ 0.7), its sd by 20 %, the ignored timing anything.
-copy noise; edit noise dist.tsv 1 2 0.53; edit noise dist.tsv 1 3 0.12; edit noise dist.tsv 1 4 99
+copy noise; edit noise dist.tsv 1 mean 0.53; edit noise dist.tsv 1 mean_sd 0.12; edit noise dist.tsv 1 secs 99
 run 0 noise '0 drifted'
 
 # ftest: a spread ten times larger is drift; a value with both sds 0 is exact.
-copy spread; edit spread dist.tsv 1 3 1.0
+copy spread; edit spread dist.tsv 1 mean_sd 1.0
 run 1 spread $'\tmean_sd\t0.1\t1\tftest 1e-3'
-copy zero; edit zero dist.tsv 2 2 1.5000000000000002
+copy zero; edit zero dist.tsv 2 mean 1.5000000000000002
 run 1 zero 'both spreads 0, compared exactly'
 
 # rel 1e-9: 1e-12 relative passes, 1e-6 does not.
-copy relok; edit relok spec.tsv 1 2 0.0077449593835500
+copy relok; edit relok spec.tsv 1 power 0.0077449593835500
 run 0 relok
-copy relbad; edit relbad spec.tsv 2 2 0.0033590336
+copy relbad; edit relbad spec.tsv 2 power 0.0033590336
 run 1 relbad $'spec.tsv\t2\tpower' 'rel 1e-9'
 
 # Shape and run: a missing table, an extra row, another parameter.
@@ -65,7 +66,7 @@ copy notable; rm "$out/notable/spec.tsv"
 run 1 notable $'spec.tsv\t-\t-\ttable\tmissing'
 copy rows; printf '0.625\t0.001\n' >>"$out/rows/spec.tsv"
 run 1 rows '2 rows'
-copy param; edit param manifest.tsv 5 2 size=16
+copy param; edit param manifest.tsv 5 value size=16
 run 1 param $'manifest.tsv\t-\tparam\tsize=8'
 
 # Several experiments under two roots.
@@ -78,7 +79,7 @@ mkdir -p "$out/r1" "$out/r2"; cp -r "$ref" "$out/r1/t1"; cp -r "$ref" "$out/r2/t
 copy many
 for i in $(seq 12); do printf '%s\t0.001\n' "$i" >>"$out/many/spec.tsv"; done
 cp -r "$out/many" "$out/many12"
-for i in $(seq 12); do edit many12 spec.tsv $((i + 2)) 2 0.002; done
+for i in $(seq 12); do edit many12 spec.tsv $((i + 2)) power 0.002; done
 cp "$ref/spec.tsv" "$out/spec.orig"; cp "$ref/manifest.tsv" "$out/manifest.orig"; cp "$out/many/spec.tsv" "$ref/spec.tsv"
 rc=0; "$check" "$ref" "$out/many12" >"$out/many.out" || rc=$?
 [ "$rc" = 1 ] || { echo "many: exit $rc"; cat "$out/many.out"; exit 1; }

@@ -51,8 +51,29 @@ rejected "'x' is not a number" "$c2" --quick --out "$c2o/new" --patterns "$pat" 
 [ ! -e "$out/fresh" ] || { echo "a rejected run made $out/fresh"; exit 1; }
 [ ! -e "$c2o/new" ] || { echo "a rejected run made $c2o/new"; exit 1; }
 
-# --help writes nothing either, and an accepted run still replaces the old one.
-"$s3" --help --out "$out/help" >/dev/null
+# A wrong --set name's one line names the valid parameters.
+err="$("$s3" --quick --out "$out/fresh" --set nosuch=1 2>&1 >/dev/null)" || true
+[[ "$err" == *"(valid: size, extent, z, octaves)" ]] || { echo "unknown --set does not list the names: '$err'"; exit 1; }
+
+# --params: a header and one TSV line per parameter (5 fields, a meaning),
+# exit 0, no folder; a --set given with it is checked as for a run.
+p="$("$s3" --params --out "$out/params" --set octaves=2)" || { echo "--params failed"; exit 1; }
+rejected "outside" "$s3" --params --out "$out/params" --set octaves=99
+rejected "(valid: size, extent, z, octaves)" "$s3" --params --out "$out/params" --set nosuch=1
+[ "$(printf '%s\n' "$p" | head -n 1)" = $'name\tdefault\tmin\tmax\tmeaning' ] || { echo "--params header: '$p'"; exit 1; }
+printf '%s\n' "$p" | grep -q $'^octaves\t6\t1\t30\t[a-z]' || { echo "--params has no octaves line: '$p'"; exit 1; }
+printf '%s\n' "$p" | awk -F'\t' 'NF != 5 || $5 == "" { bad = 1 } END { exit bad }' || { echo "--params lines need 5 fields and a meaning: '$p'"; exit 1; }
+[ "$(printf '%s\n' "$p" | wc -l)" = 5 ] || { echo "--params: wanted 4 parameters: '$p'"; exit 1; }
+[ "$("$s3" --quick --params | awk -F'\t' '$1 == "size" { print $2 }')" = 128 ] || { echo "--params --quick: size default is not the quick one"; exit 1; }
+pc="$("$c2" --params --patterns "$pat")" || { echo "c2 --params failed"; exit 1; }
+printf '%s\n' "$pc" | grep -q $'^w1\t0.995\t' || { echo "c2 --params has no w1: '$pc'"; exit 1; }
+[ ! -e "$out/params" ] || { echo "--params made a folder"; exit 1; }
+
+# --help writes nothing either and lists the parameters with their meanings;
+# an accepted run still replaces the old one.
+h="$("$s3" --help --out "$out/help")" || { echo "--help failed"; exit 1; }
+[[ "$h" == *"usage: s3_fbm"* && "$h" == *"--params"* ]] || { echo "--help has no usage: '$h'"; exit 1; }
+printf '%s\n' "$h" | grep -q '^  octaves .*1, 30.*octaves summed' || { echo "--help does not list octaves: '$h'"; exit 1; }
 [ ! -e "$out/help" ] || { echo "--help made a folder"; exit 1; }
 "$s3" --quick --seeds 1 --out "$out/s3" --set octaves=2 >/dev/null
 grep -q $'^param\toctaves=2$' "$out/s3/manifest.tsv" || { echo "accepted run did not write its manifest"; exit 1; }

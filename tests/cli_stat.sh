@@ -7,6 +7,7 @@ set -u
 STAT=${1:?usage: cli_stat.sh PATH/TO/noiselab-stat}
 HERE=$(cd "$(dirname "$0")" && pwd)
 DATA=$HERE/data/stats
+. "$HERE/tsv.sh"   # tables by column name
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 pass=0 fail=0
@@ -49,22 +50,22 @@ expect_value "$line" n 512 0
 case $line in *method=pelz-good*) ok ;; *) bad "ks method: $line" ;; esac
 
 line=$("$STAT" ks "$DATA/ks_pow1.3_5000_s2.tsv" --uniform 0 $TWO_PI)
-expect_value "$line" p "$(awk -F'\t' '$1 == "ks_pow1.3_5000_s2.tsv" { print $6 }' "$DATA/ks_one.tsv")" 1e-10
+expect_value "$line" p "$(tsv_awk 'v("file") == "ks_pow1.3_5000_s2.tsv" { print v("p") }' "$DATA/ks_one.tsv")" 1e-10
 
-line=$(awk 'NR > 1 { printf "%.17g\n", $1 / 6.283185307179586 }' "$DATA/ks_unif_100_s0.tsv" | "$STAT" ks -)
-expect_value "$line" D "$(awk -F'\t' '$1 == "ks_unif_100_s0.tsv" { print $3 }' "$DATA/ks_one.tsv")" 1e-12
+line=$(tsv_awk 'NR > 1 { printf "%.17g\n", n("x0") / 6.283185307179586 }' "$DATA/ks_unif_100_s0.tsv" | "$STAT" ks -)
+expect_value "$line" D "$(tsv_awk 'v("file") == "ks_unif_100_s0.tsv" { print v("d") }' "$DATA/ks_one.tsv")" 1e-12
 
 line=$("$STAT" ks2 "$DATA/ks2_1_a.tsv" "$DATA/ks2_1_b.tsv")
 expect_value "$line" D 0.43333333333333335 1e-15
-expect_value "$line" p "$(awk -F'\t' '$1 == "ks2_1_a.tsv" { print $6 }' "$DATA/ks2.tsv")" 1e-10
+expect_value "$line" p "$(tsv_awk 'v("file1") == "ks2_1_a.tsv" { print v("p") }' "$DATA/ks2.tsv")" 1e-10
 
 line=$("$STAT" kuiper "$DATA/ks_facts_512.tsv" --uniform 0 $TWO_PI)
-expect_value "$line" V "$(awk -F'\t' '$1 == "ks_facts_512.tsv" { print $3 }' "$DATA/kuiper_one.tsv")" 1e-15
-expect_value "$line" p "$(awk -F'\t' '$1 == "ks_facts_512.tsv" { print $4 }' "$DATA/kuiper_one.tsv")" 1e-9
+expect_value "$line" V "$(tsv_awk 'v("file") == "ks_facts_512.tsv" { print v("v") }' "$DATA/kuiper_one.tsv")" 1e-15
+expect_value "$line" p "$(tsv_awk 'v("file") == "ks_facts_512.tsv" { print v("p") }' "$DATA/kuiper_one.tsv")" 1e-9
 
 line=$("$STAT" chisq "$DATA/chisq_0.tsv" --bins 500 --uniform 0 $TWO_PI 2>"$TMP/err")
-expect_value "$line" chi2 "$(awk -F'\t' '$1 == "chisq_0.tsv" { print $4 }' "$DATA/chisq.tsv")" 1e-12
-expect_value "$line" p "$(awk -F'\t' '$1 == "chisq_0.tsv" { print $6 }' "$DATA/chisq.tsv")" 1e-10
+expect_value "$line" chi2 "$(tsv_awk 'v("file") == "chisq_0.tsv" { print v("chi2") }' "$DATA/chisq.tsv")" 1e-12
+expect_value "$line" p "$(tsv_awk 'v("file") == "chisq_0.tsv" { print v("p") }' "$DATA/chisq.tsv")" 1e-10
 expect_value "$line" df 499 0
 expect_value "$line" min_expected 1.024 1e-15
 grep -q "unreliable" "$TMP/err" && ok || bad "chisq: no warning for expected counts < 5"
@@ -73,11 +74,13 @@ grep -q "unreliable" "$TMP/err" && ok || bad "chisq: no warning for expected cou
 line=$("$STAT" hclust "$DATA/hclust_X.tsv" --linkage average --clusters 5 \
        --labels "$TMP/lab.tsv" --merges "$TMP/merges.tsv")
 expect_value "$line" clusters 5 0
-if cmp -s <(tail -n +2 "$TMP/lab.tsv") <(cut -f6 "$DATA/hclust_average_labels.tsv" | tail -n +2); then ok
+if cmp -s <(tail -n +2 "$TMP/lab.tsv") <(tsv_cut "$DATA/hclust_average_labels.tsv" maxclust_5 | tail -n +2); then ok
 else bad "hclust labels differ from scipy's fcluster maxclust 5"; fi
-if paste "$TMP/merges.tsv" "$DATA/hclust_average_Z.tsv" | awk -F'\t' 'NR > 1 {
-     d = $3 - $7; if (d < 0) d = -d; if ($1 != $5 || $2 != $6 || $4 != $8 || d > 1e-12 * $7) bad = 1 }
-     END { exit bad }'; then ok; else bad "hclust merges differ from scipy's linkage"; fi
+if tsv_awk 'FNR == 1 { next }
+     NR == FNR { a[FNR] = n("a"); b[FNR] = n("b"); dist[FNR] = n("dist"); size[FNR] = n("size"); next }
+     { d = n("dist") - dist[FNR]; if (d < 0) d = -d
+       if (n("a") != a[FNR] || n("b") != b[FNR] || n("size") != size[FNR] || d > 1e-12 * dist[FNR]) bad = 1 }
+     END { exit bad }' "$DATA/hclust_average_Z.tsv" "$TMP/merges.tsv"; then ok; else bad "hclust merges differ from scipy's linkage"; fi
 line=$("$STAT" hclust "$DATA/hclust_X.tsv" --linkage single --cutoff 1e9)
 expect_value "$line" clusters 1 0
 

@@ -21,7 +21,7 @@ awk -F'\t' 'BEGIN{
     ceil["marble/rings"]=0.525; ceil["marble/spiral"]=0.531; ceil["marble/letter"]=0.544
     ceil["erosion/disc"]=0.523; ceil["erosion/star"]=0.443; ceil["erosion/x"]=0.485
     ceil["fire/flower"]=0.485; ceil["fire/gradient"]=0.392; ceil["fire/letter"]=0.478 }
-  NR==1{for(i=1;i<=NF;i++) if($i=="rms_con") k=i}
-  NR>1{key=$1"/"$2; if(!(key in ceil)){print "no ceiling for " key; exit 1}
+  NR==1{for(i=1;i<=NF;i++) col[$i]=i; k=col["rms_con"]}
+  NR>1{key=$col["texture"]"/"$col["pattern"]; if(!(key in ceil)){print "no ceiling for " key; exit 1}
        if(!($k < ceil[key])){print "rms_con " $k " not below the KS-only table'"'"'s " ceil[key] " for " key; exit 1}; n++}
   END{if(n!=12) exit 1}' "$out/summary.tsv"

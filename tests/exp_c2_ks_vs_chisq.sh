@@ -22,20 +22,22 @@ pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
 "$exp" --quick --out "$out" --patterns "$pat" >/dev/null
 "$expect" "$out/summary.tsv" rows=6 'E_ks<0.06' 'chi2>0' 'E_con>0' 'p_kuiper_min>0.05' \
   file:noise_flower.png file:noise_x.png
-awk -F'\t' 'NR == 1 || $2 != "chisq"' "$out/summary.tsv" > "$out/summary_ks_kuiper.tsv"
+awk -F'\t' 'NR == 1 {for (i = 1; i <= NF; i++) col[$i] = i} NR == 1 || $col["objective"] != "chisq"' \
+  "$out/summary.tsv" > "$out/summary_ks_kuiper.tsv"
 "$expect" "$out/summary_ks_kuiper.tsv" rows=4 'E_ks<0.02' 'V_kuiper<0.03'
 for p in flower x; do
   "$expect" "$out/cdf_$p.tsv" rows=512 'u_ks~F:0.02' 'u_kuiper~F:0.02' 'u_chisq~F:0.06'
   # every histogram column counts all 512 angles
-  awk -F'\t' 'NR>1{a+=$2; b+=$3; c+=$4} END{if(a!=512||b!=512||c!=512){print "histogram counts " a, b, c; exit 1}}' "$out/hist_$p.tsv"
+  awk -F'\t' 'NR==1{for(i=1;i<=NF;i++) col[$i]=i} NR>1{a+=$col["ks"]; b+=$col["chisq"]; c+=$col["kuiper"]} END{if(a!=512||b!=512||c!=512){print "histogram counts " a, b, c; exit 1}}' "$out/hist_$p.tsv"
   "$expect" "$out/hist_$p.tsv" rows=500
 done
-# rows per pattern: ks, chisq, kuiper (columns: 4 E_ks, 8 V_kuiper, 12 chi2)
-awk -F'\t' 'NR>1{r=(NR-2)%3; d[r]=$4; v[r]=$8; c[r]=$12}
+# rows per pattern: ks, chisq, kuiper (columns by name from the header)
+awk -F'\t' 'NR==1{for(i=1;i<=NF;i++) col[$i]=i}
+  NR>1{r=(NR-2)%3; d[r]=$col["E_ks"]; v[r]=$col["V_kuiper"]; c[r]=$col["chi2"]}
   NR>1 && r==2 {
-    if(!(c[1] < c[0] && c[1] < c[2])) {print "chi2 not lowest for the chi-square objective: " $1; exit 1}
-    if(!(v[2] < 0.9*v[0] && v[2] < 0.9*v[1])) {print "V not lowest for the Kuiper objective: " $1; exit 1}
-    if(!(d[0] < 0.9*d[1])) {print "KS objective D not below chi-square objective D: " $1; exit 1}
+    if(!(c[1] < c[0] && c[1] < c[2])) {print "chi2 not lowest for the chi-square objective: " $col["pattern"]; exit 1}
+    if(!(v[2] < 0.9*v[0] && v[2] < 0.9*v[1])) {print "V not lowest for the Kuiper objective: " $col["pattern"]; exit 1}
+    if(!(d[0] < 0.9*d[1])) {print "KS objective D not below chi-square objective D: " $col["pattern"]; exit 1}
   }' "$out/summary.tsv"
 # same seed, same table
 "$exp" --quick --out "$out/again" --patterns "$pat" >/dev/null

@@ -8,4 +8,5 @@ exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
 "$exp" --quick --out "$out" --patterns "$pat" >/dev/null
 "$expect" "$out/summary.tsv" rows=4 'E_ks<0.05' 'E_con>0' 'roughness>0' 'roughness>f1*0.3' file:panels.png
-awk -F'\t' 'NR>2 && !($(NF-1) > prev){print "roughness not increasing with f1 at row " NR; exit 1} {prev=$(NF-1)}' "$out/summary.tsv"
+awk -F'\t' 'NR==1{for(i=1;i<=NF;i++) col[$i]=i; next}
+  NR>2 && !($col["roughness"] > prev){print "roughness not increasing with f1 at row " NR; exit 1} {prev=$col["roughness"]}' "$out/summary.tsv"

@@ -10,7 +10,8 @@ pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
 "$expect" "$out/table41_runs.tsv" rows=12 'seeds==3'
 "$expect" "$out/sweep.tsv" rows=6 'E_ks>0' 'E_con>0' 'w1>0'
 # the KS-dominated end of the sweep has the lower E_KS and the higher E_Con
-awk -F'\t' 'NR==2{k=$6;c=$17} END{if(!($6<k && $17>c)){print "sweep ends not ordered"; exit 1}}' "$out/sweep.tsv"
+awk -F'\t' 'NR==1{for(i=1;i<=NF;i++) col[$i]=i} NR==2{k=$col["E_ks"]; c=$col["E_con"]}
+  END{if(!($col["E_ks"]<k && $col["E_con"]>c)){print "sweep ends not ordered"; exit 1}}' "$out/sweep.tsv"
 bad() {   # expect exit 2 and a single line on stderr
   local rc=0; "$exp" --quick --out "$out/bad" "$@" 2>"$out/err.txt" >/dev/null || rc=$?
   [ "$rc" -eq 2 ] || { echo "exit $rc for: $*"; exit 1; }

@@ -16,16 +16,22 @@ pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
 "$expect" "$out/cutoff_k.tsv" rows=192 'K>=1' 'K<=100'
 "$expect" "$out/assess.tsv" rows=9 'ks_median>0' 'ks_median<1' 'ks_reject>=0' 'ks_reject<=1' 'n_held==20' \
   file:aic_path.tsv
-# thesis cutoffs with level-1 entries: one cluster (status text in column 21)
-awk -F'\t' 'NR>1 && $2==1 && $3=="thesis" && ($10!=1 || $21!="one_cluster"){print "thesis cutoff row: " $0; exit 1}' "$out/gmm.tsv"
+# columns by name: `named` prefixes an awk program with col[NAME] = index from the header
+named() { printf 'NR==1{for(i=1;i<=NF;i++) col[$i]=i; next} %s' "$1"; }
+# drops the named columns (timings) from a table, header included
+drop() { local f="$1"; shift
+  awk -F'\t' -v OFS='\t' -v drop="$*" 'NR==1{split(drop, d, " "); for(j in d) x[d[j]]=1; for(i=1;i<=NF;i++) if(!($i in x)) k[++n]=i}
+    {s=$k[1]; for(j=2;j<=n;j++) s=s OFS $k[j]; print s}' "$f"; }
+# thesis cutoffs with level-1 entries: one cluster
+awk -F'\t' "$(named '$col["low_levels"]==1 && $col["cutoff_rule"]=="thesis" && ($col["K_initial"]!=1 || $col["status"]!="one_cluster"){print "thesis cutoff row: " $0; exit 1}')" "$out/gmm.tsv"
 # matched cutoff: exactly the thesis's initial K on every seed
-awk -F'\t' 'NR>1 && $3=="matched_K0" && ($10!=$24 || $11!=0){print "matched row: " $0; exit 1}' "$out/gmm.tsv"
+awk -F'\t' "$(named '$col["cutoff_rule"]=="matched_K0" && ($col["K_initial"]!=$col["thesis_K_initial"] || $col["K_initial_sd"]!=0){print "matched row: " $0; exit 1}')" "$out/gmm.tsv"
 # K never grows with the cutoff
-awk -F'\t' 'NR>1{key=$1"/"$2; if (key==prev && $4>k){print "K grows: " $0; exit 1} prev=key; k=$4}' "$out/cutoff_k.tsv"
+awk -F'\t' "$(named '{key=$col["texture"]"/"$col["low_levels"]; if (key==prev && $col["K"]>k){print "K grows: " $0; exit 1} prev=key; k=$col["K"]}')" "$out/cutoff_k.tsv"
 grep -q '^pool_bytes_erosion_low1' "$out/manifest.tsv"
 grep -q '^cluster_bytes_cloud_low1' "$out/manifest.tsv"
 # one thread: same pool, same models (timing columns dropped)
 "$exp" --quick --out "$out/one" --patterns "$pat" --set threads=1 >/dev/null
-cmp <(cut -f1-21 "$out/gmm.tsv") <(cut -f1-21 "$out/one/gmm.tsv")
-cmp <(cut -f1-6 "$out/pool_runs.tsv") <(cut -f1-6 "$out/one/pool_runs.tsv")
+cmp <(drop "$out/gmm.tsv" seconds_gmm) <(drop "$out/one/gmm.tsv" seconds_gmm)
+cmp <(drop "$out/pool_runs.tsv" seconds) <(drop "$out/one/pool_runs.tsv" seconds)
 cmp "$out/assess.tsv" "$out/one/assess.tsv"

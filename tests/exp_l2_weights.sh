@@ -19,17 +19,18 @@
 #    0.45 / 0.35), fine-band error at 256 below 0.9x that at 64 (measured ratio
 #    0.36..0.86).
 set -euo pipefail
+. "$(dirname "$0")/tsv.sh"   # tables by column name
 "$1" --quick --out "$3"
 "$2" "$3/weights.tsv" 'rows=7' 'file:noise.png'
-awk -F'\t' 'NR == 1 || $1 == 0' "$3/weights.tsv" > "$3/weights_b0.tsv"
-awk -F'\t' 'NR == 1 || ($1 >= 1 && $1 <= 2)' "$3/weights.tsv" > "$3/weights_b12.tsv"
-awk -F'\t' 'NR == 1 || $1 == 3' "$3/weights.tsv" > "$3/weights_b3.tsv"
+tsv_awk 'NR == 1 || n("band") == 0' "$3/weights.tsv" > "$3/weights_b0.tsv"
+tsv_awk 'NR == 1 || (n("band") >= 1 && n("band") <= 2)' "$3/weights.tsv" > "$3/weights_b12.tsv"
+tsv_awk 'NR == 1 || n("band") == 3' "$3/weights.tsv" > "$3/weights_b3.tsv"
 "$2" "$3/weights_b0.tsv" 'rows=1' 'est~true:0.2' 'est_of_d~est:0.17'
 "$2" "$3/weights_b12.tsv" 'rows=2' 'est~true:0.37' 'est_of_d~est:0.17'
 "$2" "$3/weights_b3.tsv" 'rows=1' 'est~true:0.37' 'est_of_d~est:0.21'
 "$2" "$3/error_vs_size.tsv" 'rows=3' 'err_mean>0' 'err_mean<0.45' 'err_sd>=0' 'power_ratio~1:0.25'
-awk -F'\t' 'NR == 4 && $3 >= 0.35 {print "err_mean at 256: " $3; exit 1}
-            NR == 2 {e64 = $5} NR == 4 {e256 = $5}
+tsv_awk 'NR == 4 && n("err_mean") >= 0.35 {print "err_mean at 256: " n("err_mean"); exit 1}
+            NR == 2 {e64 = n("err_fine_mean")} NR == 4 {e256 = n("err_fine_mean")}
             END {if (!(e256 < 0.9 * e64)) {print "fine error does not shrink with size: " e64 " -> " e256; exit 1}}' \
   "$3/error_vs_size.tsv"
 test -s "$3/report.md" && test -s "$3/manifest.tsv"

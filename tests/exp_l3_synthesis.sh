@@ -16,10 +16,11 @@
 #    Measured for the other checks: PCA corr_err <= 0.115, RGB >= 0.646,
 #    ks_mean <= 0.258 (pca_nohist; <= 0.193 with histogram matching).
 set -euo pipefail
+. "$(dirname "$0")/tsv.sh"   # tables by column name
 "$1" --quick --out "$3"
 "$2" "$3/ks.tsv" 'rows=16' 'ks_mean>0' 'ks_mean<0.3' 'params==60'
-awk -F'\t' 'NR == 1 || $2 == "pca_hist"' "$3/ks.tsv" > "$3/ks_pca.tsv"
-awk -F'\t' 'NR == 1 || $2 == "rgb_hist"' "$3/ks.tsv" > "$3/ks_rgb.tsv"
+tsv_awk 'NR == 1 || v("variant") == "pca_hist"' "$3/ks.tsv" > "$3/ks_pca.tsv"
+tsv_awk 'NR == 1 || v("variant") == "rgb_hist"' "$3/ks.tsv" > "$3/ks_rgb.tsv"
 "$2" "$3/ks_pca.tsv" 'rows=4' 'corr_err<0.25'
 
 "$2" "$3/ks_rgb.tsv" 'rows=4' 'corr_err>0.5'

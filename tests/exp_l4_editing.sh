@@ -22,21 +22,23 @@
 # rounding: measured |det - 1| and orth_err <= 9e-16; 1e-9 leaves room for
 # any BLAS kernel).
 set -euo pipefail
+. "$(dirname "$0")/tsv.sh"   # tables by column name
 "$1" --quick --out "$3"
 "$1" --quick --out "$3/f0" --set edit_factor=0 >/dev/null
-awk -F'\t' 'NR == 1 || $1 < 3' "$3/editing.tsv" > "$3/editing_fine.tsv"
-awk -F'\t' 'NR == 1 || $1 >= 4' "$3/editing.tsv" > "$3/editing_coarse.tsv"
+tsv_awk 'NR == 1 || n("band") < 3' "$3/editing.tsv" > "$3/editing_fine.tsv"
+tsv_awk 'NR == 1 || n("band") >= 4' "$3/editing.tsv" > "$3/editing_coarse.tsv"
 "$2" "$3/editing_fine.tsv" 'rows=3' 'ratio<0.7' 'ratio_nohist<0.7' 'expected==0.0625'
 "$2" "$3/f0/editing.tsv" 'rows>=7'
-# fine bands: ratio = r0 + 0.0625 (1 - r0) within 0.03 (columns 4 ratio, 5 ratio_nohist)
-awk -F'\t' 'FNR == 1 {next}
-  NR == FNR {r0[$1] = $4; n0[$1] = $5; next}
-  $1 < 3 {
-    p = r0[$1] + 0.0625 * (1 - r0[$1]); q = n0[$1] + 0.0625 * (1 - n0[$1]);
-    if ((r0[$1] == "") || ($4 - p > 0.03 || p - $4 > 0.03) || ($5 - q > 0.03 || q - $5 > 0.03)) {
-      printf "band %d: ratio %.4f (predicted %.4f), ratio_nohist %.4f (predicted %.4f)\n", $1, $4, p, $5, q; bad = 1; exit 1 }
-    n++ }
-  END {if (bad || n != 3) exit 1}' "$3/f0/editing.tsv" "$3/editing.tsv"
+# fine bands: ratio = r0 + 0.0625 (1 - r0) within 0.03 (columns ratio, ratio_nohist)
+tsv_awk 'FNR == 1 {next}
+  {k = n("band"); r = n("ratio"); rn = n("ratio_nohist")}
+  NR == FNR {r0[k] = r; n0[k] = rn; next}
+  k < 3 {
+    p = r0[k] + 0.0625 * (1 - r0[k]); q = n0[k] + 0.0625 * (1 - n0[k]);
+    if ((r0[k] == "") || (r - p > 0.03 || p - r > 0.03) || (rn - q > 0.03 || q - rn > 0.03)) {
+      printf "band %d: ratio %.4f (predicted %.4f), ratio_nohist %.4f (predicted %.4f)\n", k, r, p, rn, q; bad = 1; exit 1 }
+    cnt++ }
+  END {if (bad || cnt != 3) exit 1}' "$3/f0/editing.tsv" "$3/editing.tsv"
 "$2" "$3/editing_coarse.tsv" 'rows>=2' 'ratio~1.07:0.08' 'ratio_nohist~1:0.02'
 "$2" "$3/solid.tsv" 'rows=3' 'ks_2d_vs_slice<0.43'
 "$2" "$3/morph.tsv" 'rows=5' 'det~1:1e-9' 'orth_err<1e-9' 'file:morph.png' 'file:editing.png'

@@ -3,12 +3,13 @@
 # KS against the nearest-neighbour law on every seed (alpha = 0.01); the
 # paper's closest-p rule fails both on every seed; bad lambda / M refused.
 set -euo pipefail
+. "$(dirname "$0")/tsv.sh"   # tables by column name
 exp="$1" expect="$2" out="$3"
 "$exp" --quick --out "$out" 2>/dev/null >/dev/null
 "$expect" "$out/summary.tsv" rows=2 'mean_f1_theory>0.34' 'mean_f1_theory<0.36' file:planes.png
-awk -F'\t' '$1=="inverse-cdf" && ($4!=0 || $6!=0 || $2<3.8 || $2>4.2) {exit 1}
-            $1=="closest" && ($4!=$9 || $6!=$9) {exit 1}' "$out/summary.tsv"
-awk -F'\t' 'NR>1 && $1=="inverse-cdf" && ($6<0.01 || $9<0.01) {exit 1}' "$out/tests.tsv"
+tsv_awk 'v("rule")=="inverse-cdf" && (n("chi2_rejects")!=0 || n("ks_rejects")!=0 || n("mean_count")<3.8 || n("mean_count")>4.2) {exit 1}
+            v("rule")=="closest" && (n("chi2_rejects")!=n("seeds") || n("ks_rejects")!=n("seeds")) {exit 1}' "$out/summary.tsv"
+tsv_awk 'NR>1 && v("rule")=="inverse-cdf" && (n("chi2_p")<0.01 || n("ks_p")<0.01) {exit 1}' "$out/tests.tsv"
 "$expect" "$out/tests.tsv" rows=6 'chi2>0' 'ks_d>0' 'df>=8'
 "$expect" "$out/counts.tsv" rows=21 'poisson>0' 'closest>=0' 'inverse_cdf>=0'
 "$exp" --quick --out "$out/again" 2>/dev/null >/dev/null

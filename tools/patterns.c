@@ -6,7 +6,7 @@
  *
  * Errors: one line, exit 2 (bad arguments) or 1 (a file could not be written).
  */
-#include "cheng/nl_cheng.h"
+#include "study/nl_study_cheng.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,6 +1,19 @@
-/* noiselab sweep - the parts of a parameter sweep that want exact numbers:
- * expanding value specs, planning the tasks, and merging their tables.
- * scripts/sweep.sh runs the tasks (GNU parallel, or a Slurm array) between.
+/* noiselab sweep - everything of a parameter sweep but running its tasks:
+ * expanding value specs, checking names and values with the experiment
+ * (--params), planning the tasks, writing the job lines and the Slurm array
+ * script, the sweep's state, and merging the tables. scripts/sweep.sh runs
+ * the tasks (GNU parallel here, or prints how to submit them).
+ *
+ *   noiselab-sweep prepare --experiment E --exe PATH [--root DIR] [sweep options]
+ *       what `scripts/noiselab sweep E ...` does before running anything (see
+ *       usage below): checks every option, spec, parameter name (against
+ *       `PATH --params`) and value (`PATH --params --set ...`, no work done),
+ *       writes DIR/sweep.tsv, tasks.tsv and jobs.txt (and sweep.slurm for
+ *       --emit slurm), and prints "DIR<TAB>JOBS" when the tasks are to run here.
+ *   noiselab-sweep status DIR [pending|failures]
+ *       "TOTAL DONE"; the job lines of the unfinished tasks; or a line per
+ *       unfinished task with the end of its log on stderr (exit 1 if any).
+ *   noiselab-sweep usage
  *
  *   noiselab-sweep expand NAME=SPEC
  *       prints the values, one a line. SPEC: a list 0,0.1,0.5; a linear range
@@ -21,10 +34,14 @@
  *       gnuplot assignments on stdout.
  * Errors: one line on stderr, exit 2.
  */
+#define _GNU_SOURCE   /* open_memstream, popen, realpath */
 #include "report/nl_report.h"
 #include "table/nl_table.h"
 
 #include <ctype.h>
+#include <errno.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -178,12 +195,12 @@ static nl_table *plan_tasks(const nl_sweep_plan *pl)
     /* Task j runs replicates j K .. j K + K - 1 of the sweep's base seed. */
     snprintf(seed, sizeof seed, "%lu",
              nl_seed_replicate((unsigned long)pl->seed, (long)(id % (size_t)pl->seeds) * pl->task_seeds));
-    nl_table_append(t, "d", (double)id);
-    size_t row = t->nrows - 1;
-    t->text[row * t->ncols + 1] = nl_xstrdup(folder);
-    t->text[row * t->ncols + 2] = nl_xstrdup(seed);
+    size_t row = nl_table_append_empty(t);
+    nl_table_set(t, row, "task", (double)id);
+    nl_table_set_text(t, row, "folder", folder);
+    nl_table_set_text(t, row, "seed", seed);
     for (int k = pl->np - 1; k >= 0; k--) {
-      t->text[row * t->ncols + 3 + (size_t)k] = nl_xstrdup(pl->p[k].values[rest % pl->p[k].n]);
+      nl_table_set_text(t, row, pl->p[k].name, pl->p[k].values[rest % pl->p[k].n]);
       rest /= pl->p[k].n;
     }
   }
@@ -257,6 +274,16 @@ static void print_table(const nl_table *t)
   }
 }
 
+/* Names given once, seeds within 32 bits; the definition (sweep.tsv). */
+static nl_table *plan_check(const nl_sweep_plan *pl)
+{
+  for (int a = 0; a < pl->np; a++)
+    for (int b = 0; b < a; b++)
+      if (!strcmp(pl->p[a].name, pl->p[b].name)) nl_sweep_die("--param %s given twice", pl->p[a].name);
+  if (pl->seed + (pl->seeds - 1) * pl->task_seeds + pl->task_seeds - 1 > 4294967295L) nl_sweep_die("--seed: seeds run past 2^32 - 1");
+  return plan_definition(pl);
+}
+
 static int nl_sweep_plan_main(int argc, char **argv)
 {
   nl_sweep_plan pl = {.seed = 1, .seeds = 1, .task_seeds = 1};
@@ -277,11 +304,7 @@ static int nl_sweep_plan_main(int argc, char **argv)
   }
   if (!pl.experiment) nl_sweep_die("plan: --experiment missing");
   if (pl.np == 0) nl_sweep_die("no --param NAME=SPEC given");
-  for (int a = 0; a < pl.np; a++)
-    for (int b = 0; b < a; b++)
-      if (!strcmp(pl.p[a].name, pl.p[b].name)) nl_sweep_die("--param %s given twice", pl.p[a].name);
-  if (pl.seed + (pl.seeds - 1) * pl.task_seeds + pl.task_seeds - 1 > 4294967295L) nl_sweep_die("--seed: seeds run past 2^32 - 1");
-  nl_table *def = plan_definition(&pl), *tasks = plan_tasks(&pl);
+  nl_table *def = plan_check(&pl), *tasks = plan_tasks(&pl);
   if (tasks->nrows > 1000000) nl_sweep_die("%zu tasks: more than a million; split the sweep", tasks->nrows);
   if (pl.out) plan_write(&pl, def, tasks);
   else print_table(tasks);
@@ -661,13 +684,363 @@ static int nl_sweep_merge_main(int argc, char **argv)
   return 0;
 }
 
+static void usage(FILE *fp)
+{
+  fputs("usage: scripts/noiselab sweep EXPERIMENT --param NAME=SPEC... [options]\n"
+        "       scripts/noiselab sweep merge DIR [--table T] [--y COL[,COL2]] [--x NAME]\n\n"
+        "Runs EXPERIMENT once per point of the cartesian product of the parameters\n"
+        "(--set NAME=VALUE) and per seed; every task writes its own folder.\n"
+        "  SPEC          a list 0,0.1,0.5; a linear range A:B:N (N values, A to B);\n"
+        "                a log range A:B:logN (N values evenly spaced in log; A, B > 0)\n"
+        "  --seeds N     seeds per point (default 1): S, S+K, ..., S+(N-1)K\n"
+        "  --seed S      first seed (default 1)\n"
+        "  --task-seeds K  seeds each task averages over itself (the experiment's\n"
+        "                --seeds; default 1), so that no two tasks share a seed\n"
+        "  --quick       the experiments' quick sizes\n"
+        "  --out DIR     the sweep folder (default sweeps/EXPERIMENT-NAMES); running\n"
+        "                again continues an interrupted sweep, skipping finished tasks\n"
+        "  --jobs N      tasks at once on this machine (default: cores)\n"
+        "  --emit parallel  write DIR/jobs.txt for GNU parallel (e.g. --sshlogin, with\n"
+        "                the folder on a shared file system) instead of running\n"
+        "  --emit slurm  write DIR/sweep.slurm, a Slurm array job (one index a task)\n"
+        "  --cpus N --mem SIZE --time T\n"
+        "                Slurm resources per task (default 1, 2G, 01:00:00)\n"
+        "The parameters and their meanings: build/experiments/EXPERIMENT --params.\n"
+        "merge: DIR/merged/TABLE (parameters and seed as leading columns) for every\n"
+        "table, TABLE_summary.tsv (mean and spread over seeds per point) and\n"
+        "plot.png: COL (mean, error bars the sd over seeds) against the first\n"
+        "parameter (or --x), one line per row label; a second COL on the right axis.\n"
+        "Exit 2 on bad input, 1 when a task failed (its log is named).\n", fp);
+}
+
+/* ---- prepare: everything before the tasks run ------------------------------ */
+
+/* POSIX single quotes, so job lines run under any sh (parallel --sshlogin). */
+static void sh_quote(FILE *fp, const char *s)
+{
+  fputc('\'', fp);
+  for (; *s; s++) { if (*s == '\'') fputs("'\\''", fp); else fputc(*s, fp); }
+  fputc('\'', fp);
+}
+
+/* Runs a shell command line and returns its exit status (2 if it died), the
+ * first `cap` bytes of its output in buf. */
+static int run_capture(const char *cmd, char *buf, size_t cap)
+{
+  FILE *fp = popen(cmd, "r");
+  size_t n = 0, got;
+  if (!fp) nl_sweep_die("cannot run %s", cmd);
+  char tmp[4096];
+  while ((got = fread(tmp, 1, sizeof tmp, fp)) > 0)
+    for (size_t i = 0; i < got; i++) if (n + 1 < cap) buf[n++] = tmp[i];
+  buf[n] = '\0';
+  int st = pclose(fp);
+  return WIFEXITED(st) ? WEXITSTATUS(st) : 2;
+}
+
+static char *quoted(const char *s)
+{
+  char *buf = NULL;
+  size_t n = 0;
+  FILE *fp = open_memstream(&buf, &n);
+  sh_quote(fp, s);
+  fclose(fp);
+  return buf;
+}
+
+/* The last non-empty line of text (modified in place). */
+static const char *last_line(char *text)
+{
+  size_t n = strlen(text);
+  while (n && text[n - 1] == '\n') text[--n] = '\0';
+  char *nl = strrchr(text, '\n');
+  return nl ? nl + 1 : text;
+}
+
+/* The experiment lists its parameters (--params): every swept name must be
+ * one of them, and one --params run per position in the value lists, with
+ * those --set values, has the experiment check every value as a run would;
+ * none does any work. */
+static void probe(const nl_sweep_plan *pl, const char *exe)
+{
+  static char out[1 << 16];
+  char *qexe = quoted(exe), *cmd = NULL;
+  size_t cn = 0;
+  const char *quick = pl->quick ? " --quick" : "";
+  FILE *c = open_memstream(&cmd, &cn);
+  fprintf(c, "timeout 120 %s --params%s 2>&1", qexe, quick);
+  fclose(c);
+  int rc = run_capture(cmd, out, sizeof out);
+  free(cmd);
+  if (rc) nl_sweep_die("%s --params failed (exit %d): %s", pl->experiment, rc, last_line(out));
+  for (int k = 0; k < pl->np; k++) {
+    char *save = NULL, *copy = nl_xstrdup(out), *names = NULL;
+    size_t nn = 0;
+    int found = 0, first = 1;
+    FILE *nf = open_memstream(&names, &nn);
+    strtok_r(copy, "\n", &save);   /* the header */
+    for (char *line = strtok_r(NULL, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
+      line[strcspn(line, "\t")] = '\0';
+      found |= !strcmp(line, pl->p[k].name);
+      fprintf(nf, "%s%s", first ? "" : ", ", line);
+      first = 0;
+    }
+    fclose(nf);
+    if (!found) nl_sweep_die("--set %s: unknown parameter for %s (valid: %s)", pl->p[k].name, pl->experiment, names);
+    free(names); free(copy);
+  }
+  size_t max = 0;
+  for (int k = 0; k < pl->np; k++) if (pl->p[k].n > max) max = pl->p[k].n;
+  for (size_t i = 0; i < max; i++) {
+    cmd = NULL; cn = 0;
+    c = open_memstream(&cmd, &cn);
+    fprintf(c, "timeout 120 %s --params%s", qexe, quick);
+    for (int k = 0; k < pl->np; k++) {
+      char *nv = nl_xmalloc(strlen(pl->p[k].name) + strlen(pl->p[k].values[i % pl->p[k].n]) + 2);
+      sprintf(nv, "%s=%s", pl->p[k].name, pl->p[k].values[i % pl->p[k].n]);
+      fputs(" --set ", c); sh_quote(c, nv);
+      free(nv);
+    }
+    fputs(" 2>&1 >/dev/null", c);
+    fclose(c);
+    rc = run_capture(cmd, out, sizeof out);
+    free(cmd);
+    if (rc == 2) nl_sweep_die("%s", last_line(out));
+    if (rc) nl_sweep_die("dry run of %s failed (exit %d): %s", pl->experiment, rc, last_line(out));
+  }
+  free(qexe);
+}
+
+/* jobs.txt: one self-contained line per task; a finished task (manifest)
+ * skips itself. */
+static void write_jobs(const nl_sweep_plan *pl, const nl_table *tasks, const char *exe, long cpus)
+{
+  char *path = nl_path_join(pl->out, "jobs.txt");
+  const char *commit = getenv("NL_COMMIT");
+  nl_atomic_file af;
+  nl_error err;
+  if (nl_atomic_open(&af, path, &err)) nl_sweep_die("%s", err.msg);
+  FILE *fp = af.fp;
+  for (size_t r = 0; r < tasks->nrows; r++) {
+    const char *folder = tasks->text[r * tasks->ncols + 1], *id = strrchr(folder, '/') + 1;
+    char *task = nl_path_join(pl->out, folder), *man = nl_path_join(task, "manifest.tsv");
+    char *logs = nl_path_join(pl->out, "logs"), *log = nl_xmalloc(strlen(logs) + strlen(id) + 6);
+    sprintf(log, "%s/%s.log", logs, id);
+    fputs("test -f ", fp); sh_quote(fp, man);
+    fprintf(fp, " || OPENBLAS_NUM_THREADS=%ld OMP_NUM_THREADS=%ld NL_COMMIT=", cpus, cpus);
+    sh_quote(fp, commit && *commit ? commit : "unknown");
+    fputc(' ', fp); sh_quote(fp, exe);
+    fputs(" --out ", fp); sh_quote(fp, task);
+    fprintf(fp, " --seed %s --seeds %ld%s", tasks->text[r * tasks->ncols + 2], pl->task_seeds, pl->quick ? " --quick" : "");
+    for (int k = 0; k < pl->np; k++) {
+      const char *v = tasks->text[r * tasks->ncols + 3 + (size_t)k];
+      char *nv = nl_xmalloc(strlen(pl->p[k].name) + strlen(v) + 2);
+      sprintf(nv, "%s=%s", pl->p[k].name, v);
+      fputs(" --set ", fp); sh_quote(fp, nv);
+      free(nv);
+    }
+    fputs(" >", fp); sh_quote(fp, log); fputs(" 2>&1\n", fp);
+    free(task); free(man); free(logs); free(log);
+  }
+  if (nl_atomic_commit(&af, &err)) nl_sweep_die("%s", err.msg);
+  free(path);
+}
+
+/* sweep.slurm: an array job, one index per line of jobs.txt. */
+static void write_slurm(const nl_sweep_plan *pl, size_t ntasks, long cpus, const char *mem, const char *time)
+{
+  char *path = nl_path_join(pl->out, "sweep.slurm"), *jobs = nl_path_join(pl->out, "jobs.txt");
+  nl_atomic_file af;
+  nl_error err;
+  if (nl_atomic_open(&af, path, &err)) nl_sweep_die("%s", err.msg);
+  FILE *fp = af.fp;
+  fputs("#!/bin/bash\n"
+        "# Slurm array job for the noiselab sweep in this folder: one array index per\n"
+        "# line of jobs.txt (a task). Submit: sbatch ", fp);
+  sh_quote(fp, path);
+  fprintf(fp, "\n# Finished tasks skip themselves, so resubmitting continues a sweep.\n"
+              "#SBATCH --job-name=noiselab-%s\n#SBATCH --array=0-%zu\n#SBATCH --ntasks=1\n"
+              "#SBATCH --cpus-per-task=%ld\n#SBATCH --mem=%s\n#SBATCH --time=%s\n"
+              "#SBATCH --output=\"%s/logs/slurm-%%A_%%a.out\"\n"
+              "set -euo pipefail\n"
+              "line=\"$(awk -v n=\"$((SLURM_ARRAY_TASK_ID + 1))\" 'NR == n' ",
+          pl->experiment, ntasks - 1, cpus, mem, time, pl->out);
+  sh_quote(fp, jobs);
+  fputs(")\"\n"
+        "[ -n \"$line\" ] || { echo \"no task $SLURM_ARRAY_TASK_ID in jobs.txt\" >&2; exit 2; }\n"
+        "exec bash -c \"$line\"\n", fp);
+  if (nl_atomic_commit(&af, &err)) nl_sweep_die("%s", err.msg);
+  if (chmod(path, 0755)) nl_sweep_die("%s: cannot make it executable", path);
+  free(path); free(jobs);
+}
+
+static int matches(const char *s, const char *allowed, int need_digit_first)
+{
+  if (!*s || (need_digit_first && (*s < '1' || *s > '9'))) return 0;
+  for (; *s; s++) if (!strchr(allowed, *s)) return 0;
+  return 1;
+}
+
+/* The default folder ROOT/sweeps/EXPERIMENT-NAME..., made absolute (job
+ * lines run anywhere); its parent is made. */
+static char *sweep_folder(const nl_sweep_plan *pl, const char *out, const char *root)
+{
+  char *o;
+  if (out) o = nl_xstrdup(out);
+  else {
+    size_t len = strlen(root) + strlen(pl->experiment) + 16;
+    for (int k = 0; k < pl->np; k++) len += strlen(pl->p[k].name) + 1;
+    o = nl_xmalloc(len);
+    sprintf(o, "%s/sweeps/%s", root, pl->experiment);
+    for (int k = 0; k < pl->np; k++) { strcat(o, "-"); strcat(o, pl->p[k].name); }
+  }
+  size_t n = strlen(o);
+  while (n > 1 && o[n - 1] == '/') o[--n] = '\0';
+  char *slash = strrchr(o, '/'), *parent = slash ? nl_xstrdup(o) : nl_xstrdup(".");
+  if (slash) parent[slash == o ? 1 : slash - o] = '\0';
+  nl_error err;
+  if (nl_mkdir_p(parent, &err)) nl_sweep_die("%s", err.msg);
+  char *abs = realpath(parent, NULL);
+  if (!abs) nl_sweep_die("%s: %s", parent, strerror(errno));
+  const char *base = slash ? slash + 1 : o;
+  char *full = nl_xmalloc(strlen(abs) + strlen(base) + 2);
+  sprintf(full, "%s%s%s", abs, strcmp(abs, "/") ? "/" : "", base);
+  free(abs); free(parent); free(o);
+  return full;
+}
+
+static void say_quoted(const char *before, const char *path, const char *after)
+{
+  fputs(before, stderr); sh_quote(stderr, path); fputs(after, stderr);
+}
+
+/* noiselab-sweep prepare --experiment E --exe PATH --root DIR [options]
+ * NAME=SPEC via --param: checks everything, writes the sweep folder (sweep.tsv,
+ * tasks.tsv, jobs.txt, and sweep.slurm for --emit slurm), and prints
+ * "DIR<TAB>JOBS" when the tasks are to run here. */
+static int nl_sweep_prepare_main(int argc, char **argv)
+{
+  nl_sweep_plan pl = {.seed = 1, .seeds = 1, .task_seeds = 1};
+  const char *exe = NULL, *root = ".", *out = NULL, *emit = "", *mem = "2G", *time = "01:00:00";
+  long jobs = sysconf(_SC_NPROCESSORS_ONLN), cpus = 1;
+  char **specs = nl_xcalloc((size_t)argc + 1, sizeof *specs);
+  int nspec = 0;
+  if (jobs < 1) jobs = 1;
+  for (int i = 0; i < argc; i++) {
+    const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+    if (!strcmp(a, "--quick")) { pl.quick = 1; continue; }
+    if (!strcmp(a, "-h") || !strcmp(a, "--help")) { usage(stdout); exit(0); }
+    if (a[0] != '-') nl_sweep_die("one experiment per sweep, first ('%s', '%s')", pl.experiment ? pl.experiment : "", a);
+    static const char *const with_value[] = {"--experiment", "--exe", "--root", "--param", "--seeds", "--seed",
+                                             "--task-seeds", "--out", "--jobs", "--emit", "--cpus", "--mem", "--time"};
+    int known = 0;
+    for (size_t k = 0; k < sizeof with_value / sizeof *with_value; k++) known |= !strcmp(a, with_value[k]);
+    if (!known) nl_sweep_die("unknown option %s (scripts/noiselab sweep --help)", a);
+    if (!v) nl_sweep_die("%s: missing value", a);
+    i++;
+    if (!strcmp(a, "--experiment")) pl.experiment = v;
+    else if (!strcmp(a, "--exe")) exe = v;
+    else if (!strcmp(a, "--root")) root = v;
+    else if (!strcmp(a, "--param")) specs[nspec++] = argv[i];
+    else if (!strcmp(a, "--seeds")) pl.seeds = plan_long(a, v, 1, 100000);
+    else if (!strcmp(a, "--seed")) pl.seed = plan_long(a, v, 0, 4294967295L);
+    else if (!strcmp(a, "--task-seeds")) pl.task_seeds = plan_long(a, v, 1, 10000);
+    else if (!strcmp(a, "--out")) out = v;
+    else if (!strcmp(a, "--emit")) emit = v;
+    else if (!strcmp(a, "--mem")) mem = v;
+    else if (!strcmp(a, "--time")) time = v;
+    else if (!strcmp(a, "--jobs") || !strcmp(a, "--cpus")) {
+      long n;
+      char what[16];
+      snprintf(what, sizeof what, "%s", a);
+      if (!matches(v, "0123456789", 1)) nl_sweep_die("%s: '%s' is not a positive integer", a, v);
+      n = plan_long(what, v, 1, 100000);
+      if (a[2] == 'j') jobs = n; else cpus = n;
+    }
+  }
+  if (!pl.experiment || !exe) nl_sweep_die("prepare: --experiment and --exe are needed");
+  if (nspec == 0) nl_sweep_die("no --param NAME=SPEC given");
+  size_t ml = strlen(mem);
+  if (!matches(mem, "0123456789KMGT", 1) || strcspn(mem, "KMGT") < ml - 1) nl_sweep_die("--mem: '%s' is not a size like 2G", mem);
+  if (!matches(time, "0123456789:-", 0)) nl_sweep_die("--time: '%s' is not a Slurm time like 01:00:00", time);
+  if (*emit && strcmp(emit, "parallel") && strcmp(emit, "slurm")) nl_sweep_die("--emit: '%s' is neither parallel nor slurm", emit);
+  if (access(exe, X_OK)) nl_sweep_die("%s is not built (%s)", pl.experiment, exe);
+  pl.p = nl_xcalloc((size_t)nspec, sizeof *pl.p);
+  for (int k = 0; k < nspec; k++) nl_sweep_expand(&pl.p[pl.np++], specs[k]);
+  nl_table *def = plan_check(&pl), *tasks = plan_tasks(&pl);
+  if (tasks->nrows > 1000000) nl_sweep_die("%zu tasks: more than a million; split the sweep", tasks->nrows);
+  probe(&pl, exe);
+  char *dir = sweep_folder(&pl, out, root);
+  pl.out = dir;
+  plan_write(&pl, def, tasks);
+  nl_error err;
+  char *logs = nl_path_join(dir, "logs"), *tdir = nl_path_join(dir, "tasks");
+  if (nl_mkdir_p(logs, &err) || nl_mkdir_p(tdir, &err)) nl_sweep_die("%s", err.msg);
+  write_jobs(&pl, tasks, exe, cpus);
+  char *jobsf = nl_path_join(dir, "jobs.txt"), *jl = nl_path_join(dir, "joblog"), *sl = nl_path_join(dir, "sweep.slurm");
+  if (!strcmp(emit, "parallel")) {
+    fprintf(stderr, "sweep: wrote %s/jobs.txt (%zu tasks). Run, e.g. across hosts sharing this path:\n", dir, tasks->nrows);
+    say_quoted("  parallel --will-cite --joblog ", jl, " --sshlogin 8/host1,8/host2 < ");
+    say_quoted("", jobsf, "\n");
+  } else if (!strcmp(emit, "slurm")) {
+    write_slurm(&pl, tasks->nrows, cpus, mem, time);
+    fprintf(stderr, "sweep: wrote %s/sweep.slurm (%zu array tasks, each %ld cpu, %s, %s). Submit:\n", dir,
+            tasks->nrows, cpus, mem, time);
+    say_quoted("  sbatch ", sl, "    # or sbatch --wait; then scripts/noiselab sweep merge ");
+    say_quoted("", dir, "\n");
+  } else printf("%s\t%ld\n", dir, jobs);
+  nl_table_free(def); nl_table_free(tasks);
+  for (int k = 0; k < pl.np; k++) param_free(&pl.p[k]);
+  free(pl.p); free(specs); free(dir); free(logs); free(tdir); free(jobsf); free(jl); free(sl);
+  return 0;
+}
+
+/* ---- the state of a prepared sweep ------------------------------------------ */
+
+/* noiselab-sweep status DIR [pending|failures]: "TOTAL DONE"; the job lines
+ * of the unfinished tasks; or one line per unfinished task with the end of
+ * its log (exit 1 if there is one). */
+static int nl_sweep_status_main(int argc, char **argv)
+{
+  if (argc < 1 || argc > 2) nl_sweep_die("status: wanted DIR [pending|failures]");
+  const char *dir = argv[0], *what = argc > 1 ? argv[1] : "";
+  if (*what && strcmp(what, "pending") && strcmp(what, "failures")) nl_sweep_die("status: '%s'?", what);
+  nl_table *tasks = read_or_die(dir, "tasks.tsv");
+  char *jpath = nl_path_join(dir, "jobs.txt"), *jobs = !strcmp(what, "pending") ? slurp(jpath) : NULL, *save = NULL;
+  if (!strcmp(what, "pending") && !jobs) nl_sweep_die("%s: cannot read", jpath);
+  char *line = jobs ? strtok_r(jobs, "\n", &save) : NULL;
+  size_t done = 0, bad = 0;
+  for (size_t r = 0; r < tasks->nrows; r++, line = jobs ? strtok_r(NULL, "\n", &save) : NULL) {
+    char buf[32];
+    const char *folder = cell(tasks, r, 1, buf), *id = strrchr(folder, '/') ? strrchr(folder, '/') + 1 : folder;
+    if (file_exists(dir, folder, "manifest.tsv")) { done++; continue; }
+    if (line && !strcmp(what, "pending")) printf("%s\n", line);
+    if (strcmp(what, "failures")) continue;
+    char *logs = nl_path_join(dir, "logs"), *log = nl_xmalloc(strlen(logs) + strlen(id) + 6), *text;
+    sprintf(log, "%s/%s.log", logs, id);
+    text = slurp(log);
+    fprintf(stderr, "sweep: task %s (seed, params:", id);
+    for (size_t c = 2; c < tasks->ncols; c++) fprintf(stderr, " %s", cell(tasks, r, c, buf));
+    fprintf(stderr, ") failed; log: %s: %s\n", log, text ? last_line(text) : "no log");
+    free(text); free(log); free(logs);
+    bad++;
+  }
+  if (!*what) printf("%zu %zu\n", tasks->nrows, done);
+  free(jobs); free(jpath);
+  nl_table_free(tasks);
+  return bad ? 1 : 0;
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
     printf("usage: noiselab-sweep expand NAME=SPEC\n"
            "       noiselab-sweep plan --experiment E [--seed S] [--seeds N] [--task-seeds K]\n"
            "                           [--quick 0|1] [--out DIR] NAME=SPEC...\n"
+           "       noiselab-sweep prepare --experiment E --exe PATH [--root DIR] [sweep options]\n"
+           "       noiselab-sweep status DIR [pending|failures]\n"
            "       noiselab-sweep merge DIR [--table T] [--y COL[,COL2]] [--x NAME]\n"
+           "       noiselab-sweep usage\n"
            "(the engine behind scripts/noiselab sweep; see scripts/sweep.sh)\n");
     return argc < 2 ? 2 : 0;
   }
@@ -680,6 +1053,9 @@ int main(int argc, char **argv)
     return 0;
   }
   if (!strcmp(argv[1], "plan")) return nl_sweep_plan_main(argc - 2, argv + 2);
+  if (!strcmp(argv[1], "prepare")) return nl_sweep_prepare_main(argc - 2, argv + 2);
+  if (!strcmp(argv[1], "status")) return nl_sweep_status_main(argc - 2, argv + 2);
+  if (!strcmp(argv[1], "usage")) { usage(stdout); return 0; }
   if (!strcmp(argv[1], "merge")) return nl_sweep_merge_main(argc - 2, argv + 2);
-  nl_sweep_die("unknown command '%s' (expand, plan, merge)", argv[1]);
+  nl_sweep_die("unknown command '%s' (expand, plan, prepare, status, merge, usage)", argv[1]);
 }

@@ -4,6 +4,7 @@
 set terminal pngcairo size 900,600 font "DejaVu Sans,11"
 set output dir.'/bounds.png'
 set datafile separator "\t"
+set datafile columnheaders
 set key bottom right
 set grid
 set xlabel "octaves n"
@@ -11,7 +12,7 @@ set ylabel "|Fnoise_n|"
 set yrange [0:2.6]
 set title "Fractal bound (eq. 4.2) against the largest value seen"
 f = dir.'/bounds.tsv'
-plot f using 1:2 skip 1 with linespoints lw 2 title "paper: S_{n-1} (|noise| <= 1)", \
-     f using 1:3 skip 1 with linespoints lw 2 title "1.2247 S_{n-1} (analytic bound)", \
-     f using 1:5:6 skip 1 with yerrorlines lw 2 title "max |Fnoise_n| seen (mean +- sd over seeds)", \
-     f using 1:4 skip 1 with points pt 7 title "max over all seeds"
+plot f using "octaves":"S" with linespoints lw 2 title "paper: S_{n-1} (|noise| <= 1)", \
+     f using "octaves":"bound" with linespoints lw 2 title "1.2247 S_{n-1} (analytic bound)", \
+     f using "octaves":"max_abs_mean":"max_abs_sd" with yerrorlines lw 2 title "max |Fnoise_n| seen (mean +- sd over seeds)", \
+     f using "octaves":"max_abs" with points pt 7 title "max over all seeds"

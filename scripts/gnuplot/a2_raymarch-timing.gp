@@ -4,12 +4,13 @@
 set terminal pngcairo size 900,600 font "DejaVu Sans,11"
 set output dir.'/timing.png'
 set datafile separator "\t"
+set datafile columnheaders
 f = dir.'/timing.tsv'
 set key top left
 set grid
 set xlabel "octaves N (terms 0..N)"
 set ylabel "plain / bounded"
 set title "Incremental bounding: speed-up against the number of octaves"
-plot f using 1:7 skip 1 with linespoints lw 2 title "ours: time ratio", \
-     f using 1:13 skip 1 with linespoints lw 2 title "ours: noise-evaluation ratio", \
-     f using 1:10 skip 1 with linespoints lw 2 dt 2 title "paper (GPU): time ratio"
+plot f using "octaves":"ratio" with linespoints lw 2 title "ours: time ratio", \
+     f using "octaves":"eval_ratio" with linespoints lw 2 title "ours: noise-evaluation ratio", \
+     f using "octaves":"paper_ratio" with linespoints lw 2 dt 2 title "paper (GPU): time ratio"

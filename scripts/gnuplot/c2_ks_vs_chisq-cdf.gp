@@ -4,7 +4,7 @@
 set terminal pngcairo size 900,600 font "DejaVu Sans,10"
 set output dir.'/cdf.png'
 set datafile separator "\t"
-set key autotitle columnheader
+set datafile columnheaders   # columns by name: cdf_PATTERN.tsv is F, u_ks, u_chisq, u_kuiper
 set multiplot layout 2,2 title "C2: CDF of the 512 optimised gradient angles (first seed)"
 pats = "flower x"
 do for [i=1:2] {
@@ -17,9 +17,9 @@ do for [i=1:2] {
   set xrange [0:1]
   set yrange [0:1]
   plot x with lines lw 2 lc rgb "#ff69b4" title "ideal", \
-       f using 2:1 with steps lw 1.5 lc rgb "blue" title "KS term", \
-       f using 3:1 with steps lw 1.5 lc rgb "red" title "chi-square term", \
-       f using 4:1 with steps lw 1.5 lc rgb "dark-green" title "Kuiper term"
+       f using "u_ks":"F" with steps lw 1.5 lc rgb "blue" title "KS term", \
+       f using "u_chisq":"F" with steps lw 1.5 lc rgb "red" title "chi-square term", \
+       f using "u_kuiper":"F" with steps lw 1.5 lc rgb "dark-green" title "Kuiper term"
 }
 do for [i=1:2] {
   p = word(pats, i)
@@ -31,8 +31,8 @@ do for [i=1:2] {
   set xrange [0:1]
   set autoscale y
   plot 0 with lines lc rgb "#ff69b4" notitle, \
-       f using 2:($1 - $2) with steps lw 1.5 lc rgb "blue" title "KS term", \
-       f using 3:($1 - $3) with steps lw 1.5 lc rgb "red" title "chi-square term", \
-       f using 4:($1 - $4) with steps lw 1.5 lc rgb "dark-green" title "Kuiper term"
+       f using "u_ks":(column("F") - column("u_ks")) with steps lw 1.5 lc rgb "blue" title "KS term", \
+       f using "u_chisq":(column("F") - column("u_chisq")) with steps lw 1.5 lc rgb "red" title "chi-square term", \
+       f using "u_kuiper":(column("F") - column("u_kuiper")) with steps lw 1.5 lc rgb "dark-green" title "Kuiper term"
 }
 unset multiplot

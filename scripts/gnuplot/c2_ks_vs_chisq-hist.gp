@@ -4,10 +4,11 @@
 set terminal pngcairo size 900,600 font "DejaVu Sans,9"
 set output dir.'/hist.png'
 set datafile separator "\t"
-set key autotitle columnheader
+set datafile columnheaders   # columns by name: hist_PATTERN.tsv is theta, ks, chisq, kuiper
 set multiplot layout 2,3 title "C2: histograms of the 512 optimised angles, 500 bins (first seed)"
 pats = "flower x"
 objs = "KS chi-square Kuiper"
+cols = "ks chisq kuiper"
 set xrange [0:2*pi]
 set yrange [0:5]
 set xlabel "angle (rad)"
@@ -16,7 +17,7 @@ do for [i=1:2] {
   do for [o=1:3] {
     f = dir.'/hist_'.word(pats, i).'.tsv'
     set title word(pats, i)." / ".word(objs, o)." term"
-    plot f using 1:(column(o + 1)) with impulses lc rgb (o == 1 ? "blue" : o == 2 ? "red" : "dark-green") notitle, \
+    plot f using "theta":(column(word(cols, o))) with impulses lc rgb (o == 1 ? "blue" : o == 2 ? "red" : "dark-green") notitle, \
          512.0 / 500 with lines lc rgb "#ff69b4" notitle
   }
 }

@@ -5,21 +5,25 @@
 set terminal pngcairo size 900,600 font "DejaVu Sans,10"
 set output dir.'/cutoff.png'
 set datafile separator "\t"
+set datafile columnheaders   # columns by name: texture, low_levels, cutoff, K
 f = dir.'/cutoff_k.tsv'
+# the cutoff of the rows of texture t at low_levels l; NaN elsewhere
+sel(t, l) = strcol("texture") eq t && column("low_levels") == l ? column("cutoff") : NaN
 set title "C5: initial K against the cutoff (complete linkage on (cos, sin) of the low angles)"
 set xlabel "cutoff (chord distance)"
 set ylabel "clusters K"
 set logscale y
 set grid
 set key top right
-plot f using (strcol(1) eq "erosion" && $2 == 1 ? $3 : NaN):4 with linespoints pt 7 ps 0.5 lc rgb "brown" title "erosion", \
-     f using (strcol(1) eq "marble" && $2 == 1 ? $3 : NaN):4 with linespoints pt 7 ps 0.5 lc rgb "blue" title "marble", \
-     f using (strcol(1) eq "cloud" && $2 == 1 ? $3 : NaN):4 with linespoints pt 7 ps 0.5 lc rgb "dark-green" title "cloud", \
-     f using (strcol(1) eq "erosion" && $2 == 2 ? $3 : NaN):4 with linespoints pt 6 ps 0.5 dt 2 lc rgb "brown" title "erosion, levels 1-2", \
+plot f using (sel("erosion", 1)):"K" with linespoints pt 7 ps 0.5 lc rgb "brown" title "erosion", \
+     f using (sel("marble", 1)):"K" with linespoints pt 7 ps 0.5 lc rgb "blue" title "marble", \
+     f using (sel("cloud", 1)):"K" with linespoints pt 7 ps 0.5 lc rgb "dark-green" title "cloud", \
+     f using (sel("erosion", 2)):"K" with linespoints pt 6 ps 0.5 dt 2 lc rgb "brown" title "erosion, levels 1-2", \
      30 with lines dt 2 lc rgb "brown" title "thesis K0 erosion (30)", \
      39 with lines dt 2 lc rgb "blue" title "thesis K0 marble (39)", \
      20 with lines dt 2 lc rgb "dark-green" title "thesis K0 cloud (20)", \
-     '-' using 1:2:3 with points pt 9 ps 1.5 lc rgb variable title "thesis cutoffs (other units)"
+     '-' using "cutoff":"K":"colour" with points pt 9 ps 1.5 lc rgb variable title "thesis cutoffs (other units)"
+cutoff	K	colour
 18.6	30	10824234
 19.5	39	255
 15.5	20	25600

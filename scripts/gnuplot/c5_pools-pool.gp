@@ -4,6 +4,7 @@
 set terminal pngcairo size 900,600 font "DejaVu Sans,10"
 set output dir.'/pool.png'
 set datafile separator "\t"
+set datafile columnheaders   # columns by name (pool_runs.tsv, original.tsv)
 f = dir.'/pool_runs.tsv'
 o = dir.'/original.tsv'
 set multiplot layout 1,3 title "C5: E_R of the pool runs (low entries = level 1)"
@@ -13,12 +14,12 @@ set xlabel "run q"
 set logscale y
 do for [i=1:3] {
   t = word(tex, i)
-  stats o using (strcol(1) eq t && $3 == 1 ? $6 : NaN) nooutput
+  stats o using (strcol("texture") eq t && column("low_levels") == 1 ? column("E_R_original") : NaN) nooutput
   eo = STATS_max
   set title t
   set key top right font ",8"
-  plot f using (strcol(1) eq t && $2 == 1 ? $3 : NaN):4 with points pt 6 ps 0.5 lc rgb "gray50" title "random start", \
-       f using (strcol(1) eq t && $2 == 1 ? $3 : NaN):5 with points pt 7 ps 0.5 lc rgb "blue" title "best", \
+  plot f using (strcol("texture") eq t && column("low_levels") == 1 ? column("run") : NaN):"E_start" with points pt 6 ps 0.5 lc rgb "gray50" title "random start", \
+       f using (strcol("texture") eq t && column("low_levels") == 1 ? column("run") : NaN):"E_best" with points pt 7 ps 0.5 lc rgb "blue" title "best", \
        eo with lines lw 2 lc rgb "red" title "original table"
 }
 unset multiplot

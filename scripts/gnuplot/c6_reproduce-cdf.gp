@@ -5,6 +5,7 @@
 set terminal pngcairo size 900,600 font "DejaVu Sans,10"
 set output dir.'/cdf.png'
 set datafile separator "\t"
+set datafile columnheaders   # columns by name: F, u_original, u_r1 .. u_r8
 set multiplot layout 2,3 title "C6: CDF of the gradient angles, original (red) and 8 reproductions (gray)"
 tex = "erosion marble cloud"
 set grid
@@ -16,8 +17,8 @@ do for [i=1:3] {
   set xrange [0:1]
   set yrange [0:1]
   set key top left font ",8"
-  plot for [c=3:10] f using c:1 with steps lc rgb "gray60" notitle, \
-       f using 2:1 with steps lw 2 lc rgb "red" title "original", \
+  plot for [j=1:8] f using (column("u_r".j)):"F" with steps lc rgb "gray60" notitle, \
+       f using "u_original":"F" with steps lw 2 lc rgb "red" title "original", \
        x with lines dt 2 lc rgb "black" title "ideal"
 }
 do for [i=1:3] {
@@ -26,8 +27,8 @@ do for [i=1:3] {
   set ylabel "deviation"
   set autoscale y
   set key top right font ",8"
-  plot for [c=3:10] f using c:($1 - column(c)) with steps lc rgb "gray60" notitle, \
-       f using 2:($1 - $2) with steps lw 2 lc rgb "red" title "original", \
+  plot for [j=1:8] f using (column("u_r".j)):(column("F") - column("u_r".j)) with steps lc rgb "gray60" notitle, \
+       f using "u_original":(column("F") - column("u_original")) with steps lw 2 lc rgb "red" title "original", \
        0 with lines dt 2 lc rgb "black" notitle
 }
 unset multiplot

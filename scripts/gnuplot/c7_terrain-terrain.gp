@@ -20,6 +20,7 @@ pats = "flower x star"
 do for [i=1:3] {
   p = word(pats, i)
   set title p." pattern"
+  # matrix data: $1, $2, $3 are the x index, the y index and the height, not table columns
   splot dir.'/height_'.p.'.tsv' matrix columnheaders using 1:(-$2):3 with pm3d
 }
 unset multiplot

@@ -2,6 +2,7 @@
 set terminal pngcairo size 900,600
 set output dir.'/weights.png'
 set datafile separator "\t"
+set datafile columnheaders
 set style data histograms
 set style histogram clustered gap 1
 set style fill solid 0.8 border -1
@@ -10,4 +11,4 @@ set xlabel 'band k (0 = finest, 1/4..1/2 cycles per pixel)'
 set ylabel 'weight'
 set yrange [0:*]
 set key top left
-plot dir.'/weights.tsv' using 2:xtic(1) title 'true (a)', '' using 3 title 'estimated from (b): (c)', '' using 4 title 're-estimated from (d)'
+plot dir.'/weights.tsv' using "true":xtic(strcol("band")) title 'true (a)', '' using "est" title 'estimated from (b): (c)', '' using "est_of_d" title 're-estimated from (d)'

@@ -3,11 +3,12 @@
 set terminal pngcairo size 900,600
 set output dir.'/editing_bands.png'
 set datafile separator "\t"
+set datafile columnheaders
 set logscale y
 set xlabel 'band k (0 = finest)'
 set ylabel 'power ratio, edited / original'
 set key bottom right
 set xtics 1
-plot dir.'/editing.tsv' every ::1 using 1:4 with linespoints lw 2 pt 7 title 'measured (luminance)', \
-     '' every ::1 using 1:5 with linespoints lw 2 pt 5 title 'measured, no histogram matching', \
-     '' every ::1 using 1:6 with lines lw 1 dt 2 lc rgb 'black' title 'requested'
+plot dir.'/editing.tsv' using "band":"ratio" with linespoints lw 2 pt 7 title 'measured (luminance)', \
+     '' using "band":"ratio_nohist" with linespoints lw 2 pt 5 title 'measured, no histogram matching', \
+     '' using "band":"expected" with lines lw 1 dt 2 lc rgb 'black' title 'requested'

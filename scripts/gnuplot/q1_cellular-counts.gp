@@ -4,6 +4,7 @@
 set terminal pngcairo size 900,600 font "DejaVu Sans,11"
 set output dir.'/counts.png'
 set datafile separator "\t"
+set datafile columnheaders
 f = dir.'/counts.tsv'
 set style data histograms
 set style histogram clustered gap 1
@@ -13,8 +14,8 @@ set key top right
 set grid ytics
 set xlabel "points per cube m"
 set ylabel "fraction of cubes"
-set xrange [-0.5:15.5]
+set xrange [-0.5:14.5]
 set title "Count per cube: paper's rule vs inverse-CDF vs Poisson (mean over seeds)"
-plot f using 2:xtic(1) every ::0::15 title "Poisson p(m)", \
-     '' using 3 every ::0::15 title "closest-p rule (paper)", \
-     '' using 4 every ::0::15 title "inverse CDF"
+plot f using "poisson":xtic(strcol("m")) every ::0::14 title "Poisson p(m)", \
+     '' using "closest" every ::0::14 title "closest-p rule (paper)", \
+     '' using "inverse_cdf" every ::0::14 title "inverse CDF"

@@ -4,6 +4,7 @@
 set terminal pngcairo size 900,600 font "DejaVu Sans,11"
 set output dir.'/density.png'
 set datafile separator "\t"
+set datafile columnheaders
 set xlabel "u"
 set ylabel "density"
 set key top center
@@ -16,6 +17,8 @@ f = dir.'/u_density.tsv'
 # histogram estimates: (F(u + h) - F(u - h)) / 2h with F(u) = 2/pi asin(sqrt u).
 F(u) = 2 / pi * asin(sqrt(u < 0 ? 0 : u > 1 ? 1 : u))
 h = 0.025
-plot for [c=2:5] f using 1:c with linespoints lw 2 pt 7 ps 0.6 title columnheader(c), \
-     f using 1:((F($1 + h) - F($1 - h)) / (2 * h)) with lines dt 2 lw 2 lc rgb "black" \
+# One curve per column other than "u", addressed by its header name.
+ys = system("head -1 '".f."' | tr '\\t' '\\n' | grep -vx u | sed 's/.*/\"&\"/' | tr '\\n' ' '")
+plot for [i=1:words(ys)] f using "u":(column(word(ys, i))) with linespoints lw 2 pt 7 ps 0.6 title word(ys, i), \
+     f using "u":((F(column("u") + h) - F(column("u") - h)) / (2 * h)) with lines dt 2 lw 2 lc rgb "black" \
        title "arcsine law, bin average"

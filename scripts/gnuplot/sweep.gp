@@ -4,9 +4,12 @@
 #            x, mean over seeds, sd over seeds; blocks ny1..nblocks-1 belong
 #            to the second column (right axis)
 #   out, title, xlabel, ylabel, y2label, logx, ny1, nblocks
+# Columns by name ("x", "spread"); the mean's header is the block's legend
+# entry (tools/sweep.c writes it so), so it alone is taken as column 2.
 set terminal pngcairo size 960,600 font 'DejaVu Sans,10'
 set output out
 set datafile separator "\t"
+set datafile columnheaders
 set title title noenhanced
 set xlabel xlabel noenhanced
 set ylabel ylabel noenhanced
@@ -18,8 +21,8 @@ if (nblocks > ny1) {
   set y2label y2label noenhanced
   set ytics nomirror
   set y2tics
-  plot for [i=0:ny1-1] dat index i using 1:2:3 with yerrorlines lw 1.5 title columnheader(2), \
-       for [i=ny1:nblocks-1] dat index i using 1:2:3 axes x1y2 with yerrorlines dt 2 lw 1.5 title columnheader(2)
+  plot for [i=0:ny1-1] dat index i using "x":2:"spread" with yerrorlines lw 1.5 title columnheader(2), \
+       for [i=ny1:nblocks-1] dat index i using "x":2:"spread" axes x1y2 with yerrorlines dt 2 lw 1.5 title columnheader(2)
 } else {
-  plot for [i=0:ny1-1] dat index i using 1:2:3 with yerrorlines lw 1.5 title columnheader(2)
+  plot for [i=0:ny1-1] dat index i using "x":2:"spread" with yerrorlines lw 1.5 title columnheader(2)
 }

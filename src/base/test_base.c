@@ -1,6 +1,8 @@
 /* Tests of base: the seed rule (splitmix64 against its published reference,
  * distinct stream ids give different and uncorrelated streams, replicates
- * are consecutive run seeds), directories, writable targets, memory sizes. */
+ * are consecutive run seeds), directories, writable targets, memory sizes,
+ * atomic files (a failed write leaves the old file) and range-checked
+ * parsing. */
 #include "base/nl_base.h"
 #include "nl_test.h"
 
@@ -8,7 +10,11 @@
 #include <gsl/gsl_statistics_double.h>
 #include <stdlib.h>
 #include <string.h>
+#include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 static const char *dir;
 
@@ -129,6 +135,118 @@ NL_TEST(memory_sizes)
   NL_CHECK(strcmp(nl_format_bytes(b, 12), "12 bytes") == 0);
   NL_CHECK(nl_mem_physical() > 1e6);
   NL_CHECK(nl_mem_fits(1e6) && !nl_mem_fits(1e18));
+}
+
+static char *slurp_file(const char *path)
+{
+  static char buf[8192];
+  FILE *f = fopen(path, "r");
+  if (!f) return NULL;
+  size_t n = fread(buf, 1, sizeof buf - 1, f);
+  buf[n] = '\0';
+  fclose(f);
+  return buf;
+}
+
+static void write_old(const char *path)
+{
+  FILE *f = fopen(path, "w");
+  fputs("old\n", f);
+  fclose(f);
+}
+
+/* No temporary left beside the target (hidden files of the folder). */
+static int no_temporaries(const char *folder)
+{
+  char cmd[600], out[64] = "";
+  snprintf(cmd, sizeof cmd, "ls -A '%s' | grep -c '^\\.' || true", folder);
+  FILE *p = popen(cmd, "r");
+  if (!p) return 0;
+  if (!fgets(out, sizeof out, p)) out[0] = '\0';
+  pclose(p);
+  return atoi(out) == 0;
+}
+
+NL_TEST(atomic_write_replaces_whole_or_not_at_all)
+{
+  nl_error err = {{0}};
+  char *sub = nl_path_join(dir, "atomic"), *path = nl_path_join(sub, "t.tsv");
+  NL_CHECK(nl_mkdir_p(sub, &err) == NL_OK);
+  /* A committed write replaces the file. */
+  write_old(path);
+  nl_atomic_file af;
+  NL_CHECK(nl_atomic_open(&af, path, &err) == NL_OK);
+  fputs("new\n", af.fp);
+  NL_CHECK(strcmp(slurp_file(path), "old\n") == 0);   /* nothing visible before the commit */
+  NL_CHECK(nl_atomic_commit(&af, &err) == NL_OK);
+  NL_CHECK(strcmp(slurp_file(path), "new\n") == 0);
+  /* An aborted write leaves the old file and no temporary. */
+  write_old(path);
+  NL_CHECK(nl_atomic_open(&af, path, &err) == NL_OK);
+  fputs("half", af.fp);
+  nl_atomic_abort(&af);
+  NL_CHECK(strcmp(slurp_file(path), "old\n") == 0);
+  NL_CHECK(no_temporaries(sub));
+  /* A commit whose temporary vanished fails and leaves the old file. */
+  NL_CHECK(nl_atomic_open(&af, path, &err) == NL_OK);
+  fputs("lost", af.fp);
+  NL_CHECK(unlink(af.tmp) == 0);
+  NL_CHECK(nl_atomic_commit(&af, &err) != NL_OK && err.msg[0] != '\0');
+  NL_CHECK(strcmp(slurp_file(path), "old\n") == 0);
+  free(sub); free(path);
+}
+
+NL_TEST(atomic_write_that_fails_midway_leaves_the_old_file)
+{
+  /* A real failed write: a file size limit (as a full disk would) makes the
+   * data not fit; in a child, so the limit stays there. */
+  char *path = nl_path_join(dir, "big.tsv");
+  write_old(path);
+  pid_t pid = fork();
+  if (pid == 0) {
+    signal(SIGXFSZ, SIG_IGN);
+    struct rlimit rl = {256, 256};
+    if (setrlimit(RLIMIT_FSIZE, &rl)) _exit(3);
+    nl_atomic_file af;
+    nl_error err;
+    if (nl_atomic_open(&af, path, &err)) _exit(4);
+    for (int i = 0; i < 10000; i++) fputs("0123456789abcdef\n", af.fp);
+    _exit(nl_atomic_commit(&af, &err) == NL_OK ? 1 : 0);   /* 0: the commit failed, as it must */
+  }
+  int status = -1;
+  NL_CHECK(pid > 0 && waitpid(pid, &status, 0) == pid);
+  NL_CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  NL_CHECK(strcmp(slurp_file(path), "old\n") == 0);
+  NL_CHECK(no_temporaries(dir));
+  free(path);
+}
+
+NL_TEST(range_checked_parsing)
+{
+  nl_error err = {{0}};
+  long n = 7;
+  double v = 7;
+  NL_CHECK(nl_parse_long("--n", "42", 0, 100, &n, &err) == NL_OK && n == 42);
+  NL_CHECK(nl_parse_long("--n", "-5", -10, 10, &n, &err) == NL_OK && n == -5);
+  NL_CHECK(nl_parse_long("--n", "4294967295", 0, 4294967295L, &n, &err) == NL_OK && n == 4294967295L);
+  n = 7;
+  NL_CHECK(nl_parse_long("--n", "101", 0, 100, &n, &err) == NL_EINVAL && strstr(err.msg, "--n") && strstr(err.msg, "101"));
+  NL_CHECK(nl_parse_long("--n", "4294967296", 0, 4294967295L, &n, &err) == NL_EINVAL);
+  NL_CHECK(nl_parse_long("--n", "2.5", 0, 100, &n, &err) == NL_EINVAL);
+  NL_CHECK(nl_parse_long("--n", "12abc", 0, 100, &n, &err) == NL_EINVAL);
+  NL_CHECK(nl_parse_long("--n", "", 0, 100, &n, &err) == NL_EINVAL);
+  NL_CHECK(nl_parse_long("--n", "99999999999999999999999", 0, 100, &n, &err) == NL_EINVAL);
+  NL_CHECK(n == 7);   /* untouched on error */
+  NL_CHECK(nl_parse_double("--x", "0.25", 0, 1, &v, &err) == NL_OK && v == 0.25);
+  NL_CHECK(nl_parse_double("--x", "1e-3", 1e-3, 1, &v, &err) == NL_OK && v == 1e-3);   /* ends included */
+  v = 7;
+  NL_CHECK(nl_parse_double("--x", "1.5", 0, 1, &v, &err) == NL_EINVAL && strstr(err.msg, "--x"));
+  NL_CHECK(nl_parse_double("--x", "nan", 0, 1, &v, &err) == NL_EINVAL);
+  NL_CHECK(nl_parse_double("--x", "inf", -INFINITY, INFINITY, &v, &err) == NL_EINVAL);   /* finite only */
+  NL_CHECK(nl_parse_double("--x", "x", 0, 1, &v, &err) == NL_EINVAL && strstr(err.msg, "'x'"));
+  NL_CHECK(nl_parse_double("--x", "0.5 ", 0, 1, &v, &err) == NL_EINVAL);
+  NL_CHECK(nl_parse_double("--x", "", 0, 1, &v, &err) == NL_EINVAL);
+  NL_CHECK(v == 7);
 }
 
 int main(void)

@@ -1,8 +1,7 @@
 #include "bounds/nl_bounds.h"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_fft_real.h>
 #include <gsl/gsl_rng.h>
+#include <gsl/gsl_statistics_double.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -211,35 +210,6 @@ nl_status nl_smoke_decision_map(const nl_perm3 *p, const nl_smoke *s, double z, 
 
 /* ---- spectral bandwidth ------------------------------------------------ */
 
-nl_status nl_psd1(const double *x, size_t n, double rate, double *f, double *P, nl_error *err)
-{
-  if (n < 2 || !(rate > 0.0)) return nl_fail(err, NL_EINVAL, "psd1: need n >= 2 and rate > 0");
-  double *d = nl_xmalloc(n * sizeof *d);
-  memcpy(d, x, n * sizeof *d);
-  gsl_fft_real_wavetable *wt = gsl_fft_real_wavetable_alloc(n);
-  gsl_fft_real_workspace *ws = gsl_fft_real_workspace_alloc(n);
-  int gs = gsl_fft_real_transform(d, 1, n, wt, ws);
-  gsl_fft_real_workspace_free(ws);
-  gsl_fft_real_wavetable_free(wt);
-  if (gs) { free(d); return nl_fail(err, NL_ENUM, "psd1: %s", gsl_strerror(gs)); }
-  /* Half-complex layout: d[0] = X_0, (d[2k-1], d[2k]) = X_k, d[n-1] = X_{n/2}
-   * for even n. |X_k|^2 / n^2 per two-sided bin (Parseval, eq. 4.4, over
-   * n^2 so that the sum is the mean square); folded to one side. */
-  double nn = (double)n * (double)n;
-  size_t m = n / 2 + 1;
-  for (size_t k = 0; k < m; k++) {
-    double re, im = 0.0;
-    if (k == 0) re = d[0];
-    else if (2 * k == n) re = d[n - 1];
-    else { re = d[2 * k - 1]; im = d[2 * k]; }
-    double two_sided = (re * re + im * im) / nn;
-    P[k] = (k == 0 || 2 * k == n) ? two_sided : 2.0 * two_sided;
-    f[k] = (double)k * rate / (double)n;
-  }
-  free(d);
-  return NL_OK;
-}
-
 void nl_psd1_tail(const double *P, size_t m, double *gamma)
 {
   double s = 0.0;
@@ -313,4 +283,118 @@ void nl_bounds_sample_line(const nl_perm3 *p, const nl_octaves *o, const double 
     }
     out[k] = s;
   }
+}
+
+/* ---- sampling lines (A3, A4) ------------------------------------------- */
+
+nl_bounds_line nl_bounds_line_a3(int axis, unsigned long seed)
+{
+  nl_bounds_line l = {{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}};
+  if (axis) return l;
+  double phi = 0.5 * (1.0 + sqrt(5.0)), d[3] = {1.0, 1.0 / phi, 1.0 / (phi * phi)};
+  double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  for (int a = 0; a < 3; a++) {
+    l.dir[a] = d[a] / len;
+    l.origin[a] = 17.0 * a + 0.37 * (double)(nl_seed_stream(seed, "a3.line_origin", 0) % 97);
+  }
+  return l;
+}
+
+nl_bounds_line nl_bounds_line_a4(void)
+{
+  nl_bounds_line l = {{0.31, 17.7, 34.2}, {0.80902, 0.5, 0.30902}};
+  return l;
+}
+
+double *nl_bounds_line_sample(const nl_perm3 *p, const nl_octaves *o, const nl_bounds_line *l,
+                              double length, double rate, size_t *n)
+{
+  *n = (size_t)llround(length * rate);
+  double *x = nl_xmalloc(*n * sizeof *x);
+  nl_bounds_sample_line(p, o, l->origin, l->dir, rate, *n, x);
+  return x;
+}
+
+/* ---- Table 5.2 under a reading (A3) ------------------------------------ */
+
+nl_octaves nl_bounds_signal_octaves(int s)
+{
+  nl_octaves o = nl_octaves_fractal(s == 2 ? 2 : 1);
+  if (s == 1) { o.freq[0] = 2.0; o.amp[0] = 0.5; }
+  return o;
+}
+
+double *nl_bounds_reading_sample(const nl_perm3 *p, int s, const nl_bounds_reading *rd,
+                                 unsigned long seed, size_t *n)
+{
+  nl_octaves o = nl_bounds_signal_octaves(s);
+  nl_bounds_line l = nl_bounds_line_a3(rd->axis, seed);
+  double *x = nl_bounds_line_sample(p, &o, &l, rd->length, rd->rate, n);
+  if (rd->shader) for (size_t k = 0; k < *n; k++) x[k] = 0.5 * (x[k] + 1.0);   /* the shader stored (noise + 1)/2 */
+  return x;
+}
+
+nl_status nl_bounds_bandwidth_seeds(const nl_bounds_reading *rd, unsigned long seed0, int seeds,
+                                    double out[NL_BOUNDS_NSIGNALS][7], nl_error *err)
+{
+  if (seeds < 1 || seeds > NL_BOUNDS_MAX_SEEDS)
+    return nl_fail(err, NL_EINVAL, "bandwidth: seeds must be in 1..%d", NL_BOUNDS_MAX_SEEDS);
+  double fi[NL_BOUNDS_NSIGNALS][NL_BOUNDS_MAX_SEEDS], fs[NL_BOUNDS_NSIGNALS][NL_BOUNDS_MAX_SEEDS];
+  double sg[NL_BOUNDS_NSIGNALS][NL_BOUNDS_MAX_SEEDS], fr[NL_BOUNDS_NSIGNALS][NL_BOUNDS_MAX_SEEDS];
+  for (int k = 0; k < seeds; k++) {
+    nl_perm3 p;
+    nl_perm3_seed(&p, nl_seed_replicate(seed0, k));
+    for (int s = 0; s < NL_BOUNDS_NSIGNALS; s++) {
+      size_t n;
+      double *x = nl_bounds_reading_sample(&p, s, rd, nl_seed_replicate(seed0, k), &n);
+      nl_bandwidth bw;
+      nl_status rc = nl_bandwidth_1d(x, n, rd->rate, NL_BOUNDS_T, &bw, err);
+      free(x);
+      if (rc) return rc;
+      fi[s][k] = bw.f_inf; fs[s][k] = bw.f_sup; sg[s][k] = bw.sigma; fr[s][k] = bw.f_inf_rms;
+    }
+  }
+  size_t n = (size_t)seeds;
+  for (int s = 0; s < NL_BOUNDS_NSIGNALS; s++) {
+    out[s][0] = gsl_stats_mean(fi[s], 1, n);
+    out[s][1] = seeds > 1 ? gsl_stats_sd(fi[s], 1, n) : 0.0;
+    out[s][2] = gsl_stats_mean(fs[s], 1, n);
+    out[s][3] = seeds > 1 ? gsl_stats_sd(fs[s], 1, n) : 0.0;
+    out[s][4] = gsl_stats_mean(sg[s], 1, n);
+    out[s][5] = seeds > 1 ? gsl_stats_sd(sg[s], 1, n) : 0.0;
+    out[s][6] = gsl_stats_mean(fr[s], 1, n);
+  }
+  return NL_OK;
+}
+
+/* ---- plain against bounded (A2) ---------------------------------------- */
+
+/* Largest difference of two renders in 8-bit levels. */
+static int max_level_diff(const double *a, const double *b, size_t n)
+{
+  int worst = 0;
+  for (size_t k = 0; k < n; k++) {
+    int d = abs((int)lround(255.0 * a[k]) - (int)lround(255.0 * b[k]));
+    if (d > worst) worst = d;
+  }
+  return worst;
+}
+
+nl_status nl_smoke_render_pair(const nl_perm3 *p, nl_smoke s, double *img0, double *img1,
+                               nl_smoke_pair *t, nl_error *err)
+{
+  double *img[2] = {img0, img1};
+  for (int inc = 0; inc < 2; inc++) {
+    nl_smoke_stats st;
+    s.incremental = inc;
+    double t0 = nl_time_now();
+    nl_status rc = nl_smoke_render(p, &s, img[inc], &st, err);
+    if (rc) return rc;
+    t->ms[inc] = 1e3 * (nl_time_now() - t0);
+    t->evals[inc] = st.noise_evals;
+    t->samples = st.samples;
+    if (inc == 0) t->max_noise = st.max_abs_noise;
+  }
+  t->diff = max_level_diff(img0, img1, (size_t)s.width * s.height);
+  return NL_OK;
 }

@@ -64,6 +64,7 @@
 
 #include "base/nl_base.h"
 #include "noise/nl_noise.h"
+#include "spectrum/nl_spectrum.h"   /* nl_psd1: bounds sits above spectrum */
 
 /* ---- fractal bounds (eq. 4.1-4.3) ------------------------------------ */
 
@@ -135,8 +136,8 @@ nl_status nl_smoke_decision_map(const nl_perm3 *p, const nl_smoke *s, double z, 
 
 #define NL_BOUNDS_T (4.0 / (255.0 * 255.0))   /* (2/255)^2 */
 
-/* f and P hold n/2 + 1 values. n >= 2, rate > 0. */
-nl_status nl_psd1(const double *x, size_t n, double rate, double *f, double *P, nl_error *err);
+/* The one-sided PSD of a line sample is nl_psd1 (spectrum/nl_spectrum.h):
+ * every FFT of the project is wrapped once, in the spectrum module. */
 /* gamma[k] = sum_{j >= k} P[j], k < m. */
 void nl_psd1_tail(const double *P, size_t m, double *gamma);
 /* Smallest f[k] with gamma[k] <= e (f[m-1] if none). */
@@ -159,5 +160,51 @@ nl_status nl_psd1_fraction_above(const double *x, size_t n, double rate, double 
 /* out[k] = sum_l amp_l noise(freq_l (origin + (k / rate) dir)), k < n. */
 void nl_bounds_sample_line(const nl_perm3 *p, const nl_octaves *o, const double *origin,
                            const double *dir, double rate, size_t n, double *out);
+
+/* ---- sampling lines for the bandwidth (A3, A4) ------------------------
+ *
+ * The paper samples a line but says neither which nor how long. The
+ * oblique lines run along (1, 1/phi, 1/phi^2), phi the golden ratio, which
+ * is parallel to no lattice axis or diagonal, so the sample is not
+ * 256-periodic as noise(x, 0, 0) is. */
+typedef struct { double origin[3], dir[3]; } nl_bounds_line;
+/* A3: the x axis through the origin (a GPU shader's noise(x, 0, 0)) when
+ * axis, else the oblique line from an origin drawn from stream
+ * ("a3.line_origin", 0) of seed. */
+nl_bounds_line nl_bounds_line_a3(int axis, unsigned long seed);
+/* A4: the oblique direction to 5 digits, from a fixed origin. */
+nl_bounds_line nl_bounds_line_a4(void);
+/* n = llround(length rate) samples of the octaves along the line (caller
+ * frees). */
+double *nl_bounds_line_sample(const nl_perm3 *p, const nl_octaves *o, const nl_bounds_line *l,
+                              double length, double rate, size_t *n);
+
+/* ---- Table 5.2 under a reading (A3) ----------------------------------- */
+
+enum { NL_BOUNDS_NSIGNALS = 3, NL_BOUNDS_MAX_SEEDS = 64 };
+/* The signals of Table 5.2 as octave lists: 0 noise(x), 1 noise(2x)/2,
+ * 2 their sum Fnoise_2. */
+nl_octaves nl_bounds_signal_octaves(int s);
+/* The sampling choices the paper leaves open: line length (units) and rate
+ * (samples per unit), the shader's encoding (noise + 1)/2 or raw values,
+ * the x axis or the oblique line. */
+typedef struct { double length, rate; int shader, axis; } nl_bounds_reading;
+/* One sample of signal s under a reading, line from seed (caller frees). */
+double *nl_bounds_reading_sample(const nl_perm3 *p, int s, const nl_bounds_reading *rd,
+                                 unsigned long seed, size_t *n);
+/* Per signal, over seeds replicates of seed0 (at most NL_BOUNDS_MAX_SEEDS):
+ * out[s] = {mean F_inf, sd, mean F_sup, sd, mean sigma, sd, mean F_inf_rms}
+ * (nl_bandwidth_1d with T = NL_BOUNDS_T; sd 0 for one seed). */
+nl_status nl_bounds_bandwidth_seeds(const nl_bounds_reading *rd, unsigned long seed0, int seeds,
+                                    double out[NL_BOUNDS_NSIGNALS][7], nl_error *err);
+
+/* ---- plain against bounded (A2) --------------------------------------- */
+
+typedef struct { double ms[2]; long evals[2]; long samples; int diff; double max_noise; } nl_smoke_pair;
+/* Renders s plainly into img0 and incrementally into img1 (s.incremental
+ * is ignored): wall times in ms, noise calls of each, the largest
+ * difference in 8-bit levels and the largest |noise| of the plain march. */
+nl_status nl_smoke_render_pair(const nl_perm3 *p, nl_smoke s, double *img0, double *img1,
+                               nl_smoke_pair *t, nl_error *err);
 
 #endif

@@ -88,13 +88,20 @@ NL_TEST(incremental_clamp_equals_plain)
   gsl_rng_free(r);
 }
 
+/* A small smoke ball (the paper's settings otherwise) on the table of seed 1. */
+static nl_smoke small_smoke(nl_perm3 *p, int size, int octaves)
+{
+  nl_perm3_seed(p, 1);
+  nl_smoke s = nl_smoke_default();
+  s.width = s.height = size;
+  s.octaves = octaves;
+  return s;
+}
+
 NL_TEST(smoke_bounded_equals_plain)
 {
   nl_perm3 p;
-  nl_perm3_seed(&p, 1);
-  nl_smoke s = nl_smoke_default();
-  s.width = s.height = 24;
-  s.octaves = 6;
+  nl_smoke s = small_smoke(&p, 24, 6);
   double *a = malloc(24 * 24 * sizeof *a), *b = malloc(24 * 24 * sizeof *b);
   nl_smoke_stats sa, sb;
   NL_CHECK(nl_smoke_render(&p, &s, a, &sa, NULL) == NL_OK);
@@ -115,10 +122,7 @@ NL_TEST(smoke_bounded_equals_plain)
 NL_TEST(decision_map_range)
 {
   nl_perm3 p;
-  nl_perm3_seed(&p, 1);
-  nl_smoke s = nl_smoke_default();
-  s.width = s.height = 32;
-  s.octaves = 5;
+  nl_smoke s = small_smoke(&p, 32, 5);
   int t[32 * 32], seen[7] = {0};
   NL_CHECK(nl_smoke_decision_map(&p, &s, 0.0, t, NULL) == NL_OK);
   for (int k = 0; k < 32 * 32; k++) {
@@ -127,6 +131,35 @@ NL_TEST(decision_map_range)
   }
   /* the rim is never decided; far from it a few octaves decide */
   NL_CHECK(seen[6] && (seen[1] || seen[2] || seen[3]));
+}
+
+NL_TEST(smoke_render_pair_and_lines)
+{
+  nl_perm3 p;
+  nl_smoke s = small_smoke(&p, 16, 4);
+  double a[16 * 16], b[16 * 16];
+  nl_smoke_pair t;
+  NL_CHECK(nl_smoke_render_pair(&p, s, a, b, &t, NULL) == NL_OK);
+  NL_CHECK(t.diff == 0 && t.evals[1] < t.evals[0] && t.samples > 0 && t.max_noise > 0);
+  s.slope = 1.0;
+  NL_CHECK(nl_smoke_render_pair(&p, s, a, b, &t, NULL) == NL_EINVAL);
+  /* the oblique lines run along (1, 1/phi, 1/phi^2), unit length (A4's to 5 digits) */
+  nl_bounds_line l3 = nl_bounds_line_a3(0, 7), l4 = nl_bounds_line_a4(), ax = nl_bounds_line_a3(1, 7);
+  double n3 = 0, n4 = 0;
+  for (int k = 0; k < 3; k++) { n3 += l3.dir[k] * l3.dir[k]; n4 += l4.dir[k] * l4.dir[k]; }
+  NL_CHECK(fabs(n3 - 1) < 1e-15 && fabs(n4 - 1) < 1e-5 && fabs(l3.dir[0] - l4.dir[0]) < 1e-5);
+  NL_CHECK(ax.dir[0] == 1 && ax.origin[0] == 0);
+  nl_octaves o = nl_bounds_signal_octaves(1);
+  NL_CHECK(o.n == 1 && o.freq[0] == 2.0 && o.amp[0] == 0.5);
+  size_t n;
+  double *x = nl_bounds_line_sample(&p, &o, &l3, 8.0, 4.0, &n);
+  NL_CHECK(n == 32);
+  free(x);
+  nl_bounds_reading rd = {16, 8, 1, 0};
+  double m[NL_BOUNDS_NSIGNALS][7];
+  NL_CHECK(nl_bounds_bandwidth_seeds(&rd, 1, 2, m, NULL) == NL_OK);
+  NL_CHECK(m[0][2] > 0 && m[0][3] >= 0 && m[2][2] >= m[0][2]);
+  NL_CHECK(nl_bounds_bandwidth_seeds(&rd, 1, 0, m, NULL) == NL_EINVAL);
 }
 
 /* Parseval (eq. 4.4) and the bandwidth of a pure sinusoid at bin 37. */

@@ -1,5 +1,4 @@
 #include "cellular/nl_cellular.h"
-#include "image/nl_image.h"
 
 #include <ctype.h>
 #include <gsl/gsl_randist.h>
@@ -469,31 +468,44 @@ void nl_gctbf_cloud_grid(const nl_gctbf_basis *b, int octaves, double k,
   octave_grid(b, octaves, k, win, cloud_term, out);
 }
 
-nl_ramp nl_cellular_marble_ramp(void)
+nl_status nl_cellular_texture_grid(nl_gctbf_texture kind, const char *expr, int octaves, double k,
+                                   const nl_window *win, unsigned long seed, double *v, nl_error *err)
 {
-  static const float k[13][3] = {
-    {0.25f, 0.25f, 0.35f}, {0.25f, 0.25f, 0.35f}, {0.10f, 0.10f, 0.30f}, {0.10f, 0.10f, 0.30f},
-    {0.10f, 0.10f, 0.30f}, {0.25f, 0.25f, 0.35f}, {0.25f, 0.25f, 0.35f}, {0.05f, 0.05f, 0.26f},
-    {0.05f, 0.05f, 0.26f}, {0.03f, 0.03f, 0.20f}, {0.03f, 0.03f, 0.20f}, {0.25f, 0.25f, 0.35f},
-    {0.03f, 0.03f, 0.20f}};
-  return nl_ramp_spline(13, k);
-}
-
-static double smoothstep01(double t)
-{
-  t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
-  return t * t * (3.0 - 2.0 * t);   /* RenderMan's Hermite smoothstep */
-}
-
-nl_image *nl_gctbf_cloud_colour(const double *v, int w, int h)
-{
-  static const float sky[3] = {0.15f, 0.15f, 0.60f}, cloud[3] = {1.0f, 1.0f, 1.0f};
-  nl_image *im = nl_image_alloc(w, h, 3);
-  for (size_t k = 0; k < (size_t)w * h; k++) {
-    float t = (float)smoothstep01(v[k]);
-    for (int a = 0; a < 3; a++) im->data[3 * k + a] = (1.0f - t) * sky[a] + t * cloud[a];
+  if (kind == NL_GCTBF_CLOUD && !expr) {
+    nl_perm3 p;
+    nl_perm3_seed(&p, seed);
+    nl_basis b = nl_basis_perm3(&p);
+    nl_octaves o = nl_octaves_fractal(octaves + 1);
+    for (int l = 0; l < o.n; l++) { o.freq[l] *= k; o.amp[l] = -o.amp[l]; }
+    nl_fractal_grid(&b, &o, win, v);
+    return NL_OK;
   }
-  return im;
+  nl_cellular *c;
+  nl_status rc = nl_cellular_alloc(4.0, 50, NL_COUNT_INVERSE_CDF, seed, &c, err);
+  if (rc) return rc;
+  nl_gctbf_basis gb = {c, {0}};
+  rc = nl_gctbf_parse(kind == NL_GCTBF_FLAME ? "F1" : expr, &gb.g, err);
+  if (!rc && kind == NL_GCTBF_CLOUD) nl_gctbf_cloud_grid(&gb, octaves, k, win, v);
+  else if (!rc && kind == NL_GCTBF_FLAME) {
+    nl_basis b = nl_basis_gctbf(&gb);
+    nl_octaves o = nl_octaves_fractal(octaves + 1);
+    for (int l = 0; l < o.n; l++) o.freq[l] *= k;
+    nl_fractal_grid(&b, &o, win, v);
+  } else if (!rc) {
+    nl_window w = *win;
+    w.x0 *= k; w.y0 *= k; w.z *= k; w.size *= k;
+    nl_gctbf_grid(c, &gb.g, &w, v);
+  }
+  nl_cellular_free(c);
+  return rc;
+}
+
+void nl_cellular_count_moments(const double *hist, int M, double *mean, double *var)
+{
+  double n = 0, s1 = 0, s2 = 0;
+  for (int m = 0; m <= M; m++) { n += hist[m]; s1 += m * hist[m]; s2 += (double)m * m * hist[m]; }
+  *mean = s1 / n;
+  *var = s2 / n - *mean * *mean;
 }
 
 void nl_heightfield_shade(const double *height, int w, int h, double spacing,

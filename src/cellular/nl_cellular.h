@@ -54,8 +54,9 @@
  *       fractal = sum_{i=0}^{oct} |0.5 - GCTBF(2^i k x)| / 2^i, bump = fractal^3
  *   nl_gctbf_cloud_grid()         eq. 7 with smoothscale = 1 (see .c):
  *       sum_{i=0}^{oct} 2^-i (1 - 2 GCTBF(2^i k x))
- *   nl_gctbf_cloud_colour()       cloudPattern of eq. 7: mix(sky, cloud,
- *       smoothstep(0, 1, fractal)), sky (0.15, 0.15, 0.60), cloud white
+ *   (the colours of sec. 4, nl_cellular_marble_ramp() and
+ *   nl_gctbf_cloud_colour(), live in texture/nl_texture.h: the algorithm
+ *   module makes values, the texture module turns them into images)
  *   nl_heightfield_shade()        Lambert shading of the plane displaced by
  *       -bump along its normal, normals by central differences.
  */
@@ -63,10 +64,8 @@
 #define NL_CELLULAR_H
 
 #include "base/nl_base.h"
-#include "image/nl_image.h"
 #include "noise/nl_noise.h"
 #include "stats/nl_stats.h"
-#include "texture/nl_texture.h"
 
 #define NL_CELLULAR_PERM 65536
 #define NL_CELLULAR_MAX_M 64
@@ -136,6 +135,8 @@ nl_basis nl_basis_gctbf(const nl_gctbf_basis *ctx);
 /* hist[m] (M + 1 entries) = number of cubes with m points among the cubes
  * (i, j, k), origin <= i, j, k < origin + side. */
 void nl_cellular_count_histogram(const nl_cellular *c, long origin, int side, double *hist);
+/* Mean and (population) variance of the counts 0..M of such a histogram. */
+void nl_cellular_count_moments(const double *hist, int M, double *mean, double *var);
 nl_status nl_cellular_count_chisq(const nl_cellular *c, const double *hist,
                                   nl_chisq_result *res, nl_error *err);
 /* 1 - exp(-lambda 4/3 pi r^3); params points to lambda. */
@@ -153,12 +154,17 @@ void nl_gctbf_fractal_bump_grid(const nl_gctbf_basis *b, int octaves, double k,
 /* fractal(x) of eq. 7 with smoothscale = 1. */
 void nl_gctbf_cloud_grid(const nl_gctbf_basis *b, int octaves, double k,
                          const nl_window *win, double *out);
-/* Sec. 4.1's 13-knot blue-marble spline ramp (nl_ramp_spline):
- * c1 = c2 = c6 = c7 = c12 = (0.25, 0.25, 0.35), c3 = c4 = c5 = (0.10, 0.10, 0.30),
- * c8 = c9 = (0.05, 0.05, 0.26), c10 = c11 = c13 = (0.03, 0.03, 0.20). */
-nl_ramp nl_cellular_marble_ramp(void);
-/* RGB image of eq. 7's mix(skycolor, cloudcolor, smoothstep(0, 1, v)). */
-nl_image *nl_gctbf_cloud_colour(const double *v, int w, int h);
+/* Sec. 4.3's textures (Q4) for one seed: a fresh table (lambda = 4, M = 50,
+ * inverse-CDF counts) on win scaled by k, `octaves` after the first:
+ *   NL_GCTBF_CLOUD  eq. 7's fractal of expr (nl_gctbf_cloud_grid); expr NULL:
+ *                   of RenderMan's noise 0.5 + 0.5 N (improved noise of the
+ *                   seed), for which 1 - 2 noise = -N
+ *   NL_GCTBF_FLAME  the fractal sum of F1, sum_i F1(2^i k x) / 2^i
+ *   NL_GCTBF_PLAIN  the GCTBF expr itself (nl_gctbf_grid)
+ * v holds win->w * win->h values. NL_EINVAL for a bad expression. */
+typedef enum { NL_GCTBF_CLOUD, NL_GCTBF_FLAME, NL_GCTBF_PLAIN } nl_gctbf_texture;
+nl_status nl_cellular_texture_grid(nl_gctbf_texture kind, const char *expr, int octaves, double k,
+                                   const nl_window *win, unsigned long seed, double *v, nl_error *err);
 /* out = max(0, N . L) of the surface z = -height over a w x h grid (w, h >= 2) with spacing
  * `spacing`; light is a unit vector. */
 void nl_heightfield_shade(const double *height, int w, int h, double spacing,

@@ -179,4 +179,19 @@ NL_TEST(shading_flat_and_tilted)
   NL_CHECK_NEAR(out[4], 1.0 / sqrt(2.0), 1e-15);
 }
 
+NL_TEST(count_moments_and_texture_values)
+{
+  double hist[4] = {1, 2, 1, 0}, mean, var;   /* counts 0, 1, 1, 2: mean 1, variance 1/2 */
+  nl_cellular_count_moments(hist, 3, &mean, &var);
+  NL_CHECK_NEAR(mean, 1.0, 1e-15);
+  NL_CHECK_NEAR(var, 0.5, 1e-15);
+  nl_window w = {0, 0, 0.5, 2.0, 8, 8};
+  double v[64], u[64];
+  NL_CHECK(nl_cellular_texture_grid(NL_GCTBF_PLAIN, "F1", 2, 2.0, &w, 3, v, NULL) == NL_OK);
+  for (int k = 0; k < 64; k++) NL_CHECK(v[k] >= 0.0);
+  NL_CHECK(nl_cellular_texture_grid(NL_GCTBF_CLOUD, NULL, 2, 2.0, &w, 3, v, NULL) == NL_OK);
+  NL_CHECK(nl_cellular_texture_grid(NL_GCTBF_FLAME, NULL, 2, 2.0, &w, 3, u, NULL) == NL_OK);
+  NL_CHECK(nl_cellular_texture_grid(NL_GCTBF_CLOUD, "F9 +", 2, 2.0, &w, 3, v, NULL) == NL_EINVAL);
+}
+
 int main(void) { return nl_test_run(); }

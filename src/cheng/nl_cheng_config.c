@@ -56,3 +56,8 @@ nl_status nl_cheng_con_parse(const char *s, nl_cheng_con *out, nl_error *err)
 
 const char *nl_cheng_stat_name(nl_cheng_stat s) { return (unsigned)s < 3 ? stat_names[s] : "?"; }
 const char *nl_cheng_con_name(nl_cheng_con c) { return (unsigned)c < 4 ? con_names[c] : "?"; }
+
+double nl_cheng_objective(const nl_cheng_config *c, double e_stat, double e_con)
+{
+  return c->w1 * e_stat + c->w2 * e_con;
+}

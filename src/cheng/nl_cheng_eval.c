@@ -1,7 +1,7 @@
-/* Final measures of an optimised table, controlled values on a raster, the
- * textures of sec. 4.1, and the one-run loop the experiments share. */
+/* Final measures of an optimised table, controlled values on a raster, and
+ * the one-run loop the experiments share (the textures of sec. 4.1 are
+ * images: src/study/nl_study_cheng_image.c). */
 #include "cheng/nl_cheng_internal.h"
-#include "texture/nl_texture.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -63,7 +63,7 @@ nl_status nl_cheng_evaluate(const nl_grad2 *g, const nl_cheng_config *c,
   out->rms_con = sqrt(out->e_con / (double)pat->n);
   out->roughness = roughness(g, c);
   double stat = nl_cheng__stat_full(c->stat, c->chisq_bins, g->angle, g->m);
-  out->e = c->w1 * stat + c->w2 * out->e_con;
+  out->e = nl_cheng_objective(c, stat, out->e_con);
   return NL_OK;
 }
 
@@ -84,51 +84,6 @@ void nl_cheng_value_grid(const nl_grad2 *g, const nl_cheng_config *c, int w, int
   free(rows);
 }
 
-/* The 1st and 99th percentiles of v: the display range of a texture. */
-static void display_range(const double *v, size_t n, double *lo, double *hi)
-{
-  double *c = nl_xmalloc(n * sizeof *c);
-  memcpy(c, v, n * sizeof *c);
-  nl_sort_double(c, n);
-  *lo = c[n / 100];
-  *hi = c[n - 1 - n / 100];
-  if (!(*hi > *lo)) { *lo -= 0.5; *hi += 0.5; }
-  free(c);
-}
-
-nl_image *nl_cheng_texture(nl_cheng_con kind, const double *v, int w, int h)
-{
-  /* Two colours per texture, blended with the value as alpha (sec. 4.1). */
-  static const float pair[4][2][3] = {
-    {{0.20f, 0.40f, 0.85f}, {1.00f, 1.00f, 1.00f}},   /* cloud: sky to white */
-    {{0.00f, 0.00f, 0.00f}, {0.00f, 0.00f, 0.00f}},   /* marble: ramp below */
-    {{0.22f, 0.13f, 0.07f}, {0.92f, 0.82f, 0.62f}},   /* erosion: soil to sand */
-    {{0.25f, 0.00f, 0.00f}, {1.00f, 0.85f, 0.15f}},   /* fire: ember to flame */
-  };
-  size_t n = (size_t)w * h;
-  double lo, hi;
-  display_range(v, n, &lo, &hi);
-  if (kind == NL_CHENG_CON_SIN) {
-    nl_ramp r = nl_ramp_marble();
-    return nl_ramp_image(&r, v, w, h, lo, hi);
-  }
-  nl_image *im = nl_image_alloc(w, h, 3);
-  for (size_t q = 0; q < n; q++) {
-    double a = (v[q] - lo) / (hi - lo);
-    a = a < 0 ? 0 : a > 1 ? 1 : a;
-    for (int ch = 0; ch < 3; ch++)
-      im->data[3 * q + ch] = (float)((1 - a) * pair[kind][0][ch] + a * pair[kind][1][ch]);
-  }
-  return im;
-}
-
-nl_image *nl_cheng_grey_image(const double *v, int w, int h)
-{
-  double lo, hi;
-  display_range(v, (size_t)w * h, &lo, &hi);
-  return nl_image_from_values(v, w, h, lo, hi);
-}
-
 nl_status nl_cheng_run(const nl_cheng_config *c, const nl_cheng_pattern *pat, unsigned long seed,
                        nl_cheng_eval *ev, nl_cheng_level_stats *stats, nl_grad2 **table_out,
                        nl_error *err)
@@ -145,4 +100,16 @@ nl_status nl_cheng_run(const nl_cheng_config *c, const nl_cheng_pattern *pat, un
   if (table_out && !s) *table_out = g;
   else nl_grad2_free(g);
   return s;
+}
+
+nl_status nl_cheng_run_seeds(const nl_cheng_config *c, const nl_cheng_pattern *pat,
+                             unsigned long seed0, int k, nl_cheng_eval *evs, nl_grad2 **first,
+                             nl_error *err)
+{
+  for (int s = 0; s < k; s++) {
+    nl_status st = nl_cheng_run(c, pat, nl_seed_replicate(seed0, s), &evs[s], NULL,
+                                s == 0 ? first : NULL, err);
+    if (st) return st;
+  }
+  return NL_OK;
 }

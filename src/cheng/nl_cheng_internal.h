@@ -1,15 +1,14 @@
 /* nl_cheng_internal.h - the problem's state, shared by the module's sources
- * (not installed; users see nl_cheng.h only). */
+ * (not installed; users see nl_cheng.h and nl_cheng_repro.h only). */
 #ifndef NL_CHENG_INTERNAL_H
 #define NL_CHENG_INTERNAL_H
 
 #include "cheng/nl_cheng.h"
+#include "cheng/nl_cheng_repro.h"
 #include "stats/nl_stats.h"
 
 #include <math.h>
 #include <stdint.h>
-
-#define NL_CHENG_MAX_OCTAVES 8
 
 /* The statistic term over a sample of angles, kept incrementally: KS and
  * Kuiper through nl_ks_incr, chi-square through bin counts. */
@@ -30,8 +29,9 @@ void nl_cheng__stat_replace(nl_cheng_statstate *s, double old_value, double new_
 double nl_cheng__stat_value(const nl_cheng_statstate *s);
 /* The same statistic from scratch through nl_stats' tests. */
 double nl_cheng__stat_full(nl_cheng_stat kind, size_t bins, const double *x, size_t n);
-/* Bin of v in k equal bins of [0, 2 pi], nl_histogram_uniform's rule. */
-size_t nl_cheng__bin(double v, size_t k);
+/* Bin of v in k equal bins of [0, 2 pi]: nl_stats' rule, so the incremental
+ * counts bin exactly as nl_chisq_test_uniform does. */
+static inline size_t nl_cheng__bin(double v, size_t k) { return nl_stats_chisq_bin(v, k, 0.0, NL_TWO_PI); }
 
 struct nl_cheng_problem {
   nl_cheng_config c;

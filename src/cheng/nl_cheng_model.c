@@ -1,7 +1,7 @@
 /* The model of the solution pool (Cheng sec. 3.5.2-3.5.3): circular
  * representation, complete-linkage clustering for the initial K, Gaussian
  * mixture by EM with the AIC rule, and reproduction by sampling (readings in
- * nl_cheng.h, "noise reproduction"). */
+ * nl_cheng_repro.h). */
 #include "cheng/nl_cheng_internal.h"
 #include "stats/nl_cluster.h"
 
@@ -322,5 +322,21 @@ nl_status nl_cheng_model_assess(const nl_cheng_pool *pool, const nl_cheng_model 
   nl_cheng_rep_decode(m->rep, x, n_draw, m->nlow, m->mu, th);
   if (!st) ks_per_dim(m, pool, th, n_draw, out, err, &st);
   free(x); free(th); free(used); free(held);
+  return st;
+}
+
+nl_status nl_cheng_k_curve(const nl_cheng_pool *pool, const nl_cheng_model *m, const double *cut,
+                           size_t ncut, size_t *k, nl_error *err)
+{
+  if (m->n_in < 2) return nl_fail(err, NL_EINVAL, "fewer than 2 input samples");
+  size_t n = m->n_in, nl = pool->nlow;
+  double *th = nl_xmalloc(n * nl * sizeof *th), *x = nl_xmalloc(n * 2 * nl * sizeof *x);
+  double *Z = nl_xmalloc((n - 1) * 4 * sizeof *Z);
+  int *lab = nl_xmalloc(n * sizeof *lab);
+  for (size_t i = 0; i < n; i++) memcpy(th + i * nl, pool->theta + m->in[i] * nl, nl * sizeof *th);
+  nl_cheng_rep_encode(NL_CHENG_REP_COSSIN, th, n, nl, m->mu, x);
+  nl_status st = nl_linkage(x, n, 2 * nl, NL_LINKAGE_COMPLETE, Z, err);
+  for (size_t q = 0; q < ncut && !st; q++) st = nl_fcluster_distance(Z, n, cut[q], lab, &k[q], err);
+  free(th); free(x); free(Z); free(lab);
   return st;
 }

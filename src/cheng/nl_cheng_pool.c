@@ -1,6 +1,6 @@
 /* Solution pools of Cheng sec. 3.5.1-3.5.2: E_R of eq. 3.16-3.18 re-annealed
  * over the low-frequency entries from Q random starts, N cold-tail states
- * kept per run (rules in nl_cheng.h, "noise reproduction"). Runs go to POSIX
+ * kept per run (rules in nl_cheng_repro.h). Runs go to POSIX
  * threads, but each run's result depends only on its stream
  * nl_seed_stream(seed, "cheng.pool.run", q) and lands in slot q, so the pool is the same for any number of threads. */
 #include "cheng/nl_cheng_internal.h"

@@ -185,7 +185,7 @@ void nl_cheng_resum(nl_cheng_problem *p)
 {
   evaluate_points(p);
   p->e_con = sum_terms(p->term, p->np);
-  p->e = p->c.w1 * p->e_stat + p->c.w2 * p->e_con;
+  p->e = nl_cheng_objective(&p->c, p->e_stat, p->e_con);
   p->has_undo = 0;
 }
 
@@ -265,7 +265,7 @@ double nl_cheng_move(nl_cheng_problem *p, size_t k, double theta)
   double gx = p->g->gx[k], gy = p->g->gy[k];
   nl_grad2_set_angle(p->g, k, theta);
   p->e_con += update_points(p, k, p->g->gx[k] - gx, p->g->gy[k] - gy);
-  p->e = p->c.w1 * p->e_stat + p->c.w2 * p->e_con;
+  p->e = nl_cheng_objective(&p->c, p->e_stat, p->e_con);
   return p->e;
 }
 
@@ -303,5 +303,5 @@ double nl_cheng_energy_full(const nl_cheng_problem *p, double *e_stat, double *e
   free(x);
   if (e_stat) *e_stat = st;
   if (e_con) *e_con = con;
-  return p->c.w1 * st + p->c.w2 * con;
+  return nl_cheng_objective(&p->c, st, con);
 }

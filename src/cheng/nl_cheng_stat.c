@@ -6,21 +6,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* nl_histogram_uniform's binning rule (numpy.histogram's: arithmetic index,
- * corrected against the edges; last bin closed), repeated here because the
- * stats module keeps it static; the chi-square test is checked against
- * nl_chisq_test_uniform so the two cannot drift apart unnoticed. */
-size_t nl_cheng__bin(double v, size_t k)
-{
-  const double a = 0.0, b = NL_TWO_PI;
-  double step = (b - a) / (double)k;
-  size_t i = (size_t)((v - a) * ((double)k / (b - a)));
-  if (i >= k) i = k - 1;
-  if (i > 0 && v < a + (double)i * step) i--;
-  else if (i + 1 < k && v >= a + (double)(i + 1) * step) i++;
-  return i;
-}
-
 void nl_cheng__stat_init(nl_cheng_statstate *s, nl_cheng_stat kind, size_t bins)
 {
   memset(s, 0, sizeof *s);
@@ -113,4 +98,16 @@ double nl_cheng__stat_full(nl_cheng_stat kind, size_t bins, const double *x, siz
   }
   if (st) { fprintf(stderr, "nl_cheng: %s\n", err.msg); abort(); }
   return v;
+}
+
+/* Median of the one-sample KS statistic D_n under the null: the yardstick
+ * for "as uniform as a random table". */
+double nl_cheng_ks_median(size_t n)
+{
+  double lo = 0, hi = 1;   /* bisection on the exact CDF of D_n */
+  for (int it = 0; it < 60; it++) {
+    double mid = 0.5 * (lo + hi);
+    if (nl_ks_cdf(n, mid, NULL) < 0.5) lo = mid; else hi = mid;
+  }
+  return 0.5 * (lo + hi);
 }

@@ -1,20 +1,12 @@
 #include "cheng/nl_cheng_internal.h"
-#include "nl_test.h"
+#include "cheng/test_cheng_fixture.h"
 
 #include <gsl/gsl_rng.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* A small problem: the flower at a 24 x 24 grid (fast), thesis octaves. */
-static nl_cheng_pattern *flower(int grid)
-{
-  nl_image *im = nl_cheng_shape("flower", 96);
-  nl_cheng_pattern *p;
-  nl_error err;
-  NL_CHECK(nl_cheng_pattern_from_image(im, grid, &p, &err) == NL_OK);
-  nl_image_free(im);
-  return p;
-}
+/* Small problems: the flower drawn at 96 pixels on a 16..32 grid (fast), thesis octaves. */
+#define FLOWER_PX 96
 
 static double rel(double a, double b) { return fabs(a - b) / fmax(1.0, fabs(b)); }
 
@@ -22,7 +14,7 @@ static double rel(double a, double b) { return fabs(a - b) / fmax(1.0, fabs(b));
  * for every statistic and control variant: incremental E == full E to 1e-12. */
 NL_TEST(incremental_objective_equals_full_recomputation)
 {
-  nl_cheng_pattern *pat = flower(24);
+  nl_cheng_pattern *pat = test_flower(FLOWER_PX, 24);
   double worst = 0;
   for (int stat = 0; stat < 3; stat++)
     for (int con = 0; con < 4; con++) {
@@ -62,33 +54,28 @@ NL_TEST(incremental_objective_equals_full_recomputation)
 /* The stored corner weights reproduce the noise kernel (nl_noise2). */
 NL_TEST(stored_corners_match_noise_kernel)
 {
-  nl_cheng_pattern *pat = flower(32);
   nl_cheng_config c = nl_cheng_config_default();
-  nl_grad2 *g = nl_grad2_alloc(512);
-  nl_grad2_seed(g, 3);
+  test_fixture f;
+  test_fixture_open(&f, FLOWER_PX, 32, &c, 3, 1);
   nl_error err;
-  nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
-  nl_cheng_set_level(p, 4);
+  nl_cheng_set_level(f.p, 4);
   double con;
-  nl_cheng_energy(p, NULL, &con);
+  nl_cheng_energy(f.p, NULL, &con);
   nl_cheng_eval ev;
-  NL_CHECK(nl_cheng_evaluate(g, &c, pat, &ev, &err) == NL_OK);
+  NL_CHECK(nl_cheng_evaluate(f.g, &c, f.pat, &ev, &err) == NL_OK);
   NL_CHECK_NEAR(con, ev.e_con, 1e-12 * ev.e_con);
-  nl_cheng_problem_free(p);
-  nl_grad2_free(g);
-  nl_cheng_pattern_free(pat);
+  test_fixture_close(&f);
 }
 
 /* Levels partition the used entries; level l's variables are used by octave
  * l's lattice and by no lower one; the parent rule of eq. 3.13 holds. */
 NL_TEST(levels_and_propagation)
 {
-  nl_cheng_pattern *pat = flower(16);
   nl_cheng_config c = nl_cheng_config_default();
-  nl_grad2 *g = nl_grad2_alloc(512);
-  nl_grad2_seed(g, 5);
-  nl_error err;
-  nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
+  test_fixture f;
+  test_fixture_open(&f, FLOWER_PX, 16, &c, 5, 1);
+  nl_cheng_problem *p = f.p;
+  nl_grad2 *g = f.g;
   int *level_of = calloc(512, sizeof *level_of);
   size_t total = 0;
   for (int L = 1; L <= 4; L++) {
@@ -121,24 +108,23 @@ NL_TEST(levels_and_propagation)
   NL_CHECK(checked > 50);
   free(seen);
   free(level_of);
-  nl_cheng_problem_free(p);
-  nl_grad2_free(g);
-  nl_cheng_pattern_free(pat);
+  test_fixture_close(&f);
 }
 
 /* Annealing lowers E at every level on a fixed seed, and the optimised
  * table follows the pattern better than the random start. */
 NL_TEST(annealing_lowers_energy)
 {
-  nl_cheng_pattern *pat = flower(24);
   nl_cheng_config c = nl_cheng_config_default();
   c.sched.n_temps = 20;
-  nl_grad2 *g = nl_grad2_alloc(512);
-  nl_grad2_seed(g, 11);
+  test_fixture f;
+  test_fixture_open(&f, FLOWER_PX, 24, &c, 11, 1);   /* the problem does not touch the table */
+  nl_cheng_problem *p = f.p;
+  nl_grad2 *g = f.g;
+  const nl_cheng_pattern *pat = f.pat;
   nl_cheng_eval before, after;
   nl_error err;
   NL_CHECK(nl_cheng_evaluate(g, &c, pat, &before, &err) == NL_OK);
-  nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
   nl_cheng_level_stats st[4];
   nl_cheng_optimise(p, 12, st);
   for (int L = 0; L < 4; L++) {
@@ -151,14 +137,12 @@ NL_TEST(annealing_lowers_energy)
   NL_CHECK(nl_cheng_evaluate(g, &c, pat, &after, &err) == NL_OK);
   NL_CHECK(after.e_con < 0.85 * before.e_con);   /* ~0.73 measured: the noise cannot reach D = 0 or 1 */
   NL_CHECK(after.e < before.e);
-  nl_cheng_problem_free(p);
-  nl_grad2_free(g);
-  nl_cheng_pattern_free(pat);
+  test_fixture_close(&f);
 }
 
 NL_TEST(same_seed_bit_identical)
 {
-  nl_cheng_pattern *pat = flower(16);
+  nl_cheng_pattern *pat = test_flower(FLOWER_PX, 16);
   nl_cheng_config c = nl_cheng_config_default();
   c.sched.n_temps = 10;
   nl_cheng_eval a, b, d;

@@ -2,23 +2,14 @@
  * incremental state, pools independent of threads, the circular
  * representation, recovery of a known mixture's K, sampling, degenerate
  * cases. */
-#include "cheng/nl_cheng.h"
-#include "nl_test.h"
+#include "cheng/test_cheng_fixture.h"
 
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_sort.h>
 #include <stdlib.h>
 #include <string.h>
 
-static nl_cheng_pattern *flower(int grid)
-{
-  nl_image *im = nl_cheng_shape("flower", 64);
-  nl_cheng_pattern *p = NULL;
-  nl_error err;
-  NL_CHECK(nl_cheng_pattern_from_image(im, grid, &p, &err) == NL_OK);
-  nl_image_free(im);
-  return p;
-}
+#define FLOWER_PX 64   /* the flower drawn at 64 pixels */
 
 static nl_cheng_config small_config(void)
 {
@@ -30,12 +21,13 @@ static nl_cheng_config small_config(void)
 
 NL_TEST(reproduction_mode_is_eq_3_16_to_3_18)
 {
-  nl_cheng_pattern *pat = flower(32);
   nl_cheng_config c = small_config();
-  nl_grad2 *g = nl_grad2_alloc(c.m);
-  nl_grad2_seed(g, 3);
+  test_fixture f;
+  test_fixture_open(&f, FLOWER_PX, 32, &c, 3, 1);
+  nl_cheng_problem *p = f.p;
+  nl_grad2 *g = f.g;
+  const nl_cheng_pattern *pat = f.pat;
   nl_error err;
-  nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
   nl_cheng_set_reproduction(p, 1);
   size_t nv, n1, n2;
   const size_t *v = nl_cheng_vars(p, &nv);
@@ -58,17 +50,16 @@ NL_TEST(reproduction_mode_is_eq_3_16_to_3_18)
   NL_CHECK_NEAR(ec, ev.e_con, 1e-9 * ec);
   gsl_rng_free(rng);
   free(low1); free(low2);
-  nl_cheng_problem_free(p);
-  nl_grad2_free(g);
-  nl_cheng_pattern_free(pat);
+  test_fixture_close(&f);
 }
 
 NL_TEST(pool_same_for_any_thread_count)
 {
-  nl_cheng_pattern *pat = flower(16);
   nl_cheng_config c = small_config();
-  nl_grad2 *g = nl_grad2_alloc(c.m);
-  nl_grad2_seed(g, 5);
+  test_fixture f;
+  test_fixture_open(&f, FLOWER_PX, 16, &c, 5, 0);
+  const nl_grad2 *g = f.g;
+  const nl_cheng_pattern *pat = f.pat;
   nl_cheng_pool_options o;
   nl_cheng_pool_options_default(&o);
   o.runs = 5; o.keep = 4;
@@ -92,8 +83,7 @@ NL_TEST(pool_same_for_any_thread_count)
   o.low_levels = 4;   /* no high level left */
   NL_CHECK(nl_cheng_pool_collect(g, &c, pat, &o, 11, &z, &err) == NL_EINVAL && z == NULL);
   nl_cheng_pool_free(a); nl_cheng_pool_free(b); nl_cheng_pool_free(z);
-  nl_grad2_free(g);
-  nl_cheng_pattern_free(pat);
+  test_fixture_close(&f);
 }
 
 NL_TEST(circular_representation)
@@ -161,7 +151,7 @@ NL_TEST(clustering_and_aic_recover_k)
     NL_CHECK(nl_cheng_model_fit(pool, &o, 1, &m, &err) == NL_OK);
     NL_CHECK(m->k0 == 3 && m->status == NL_CHENG_MODEL_OK && m->n_in == 450);
     if (r) NL_CHECK(m->k == 3 && m->npath == 2 && m->path[1].aic > m->path[0].aic - o.threshold);
-    else NL_CHECK(m->k > 3);   /* cos/sin: AIC buys components for the circle's curvature (nl_cheng.h) */
+    else NL_CHECK(m->k > 3);   /* cos/sin: AIC buys components for the circle's curvature (nl_cheng_repro.h) */
     nl_cheng_model_check ck;
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     NL_CHECK(nl_cheng_model_assess(pool, m, 2000, rng, &ck, &err) == NL_OK);
@@ -262,7 +252,7 @@ static int cmp_double(const void *a, const void *b)
 
 NL_TEST(reproduce_keeps_high_angles)
 {
-  nl_cheng_pattern *pat = flower(16);
+  nl_cheng_pattern *pat = test_flower(FLOWER_PX, 16);
   nl_cheng_config c = small_config();
   nl_grad2 *g = nl_grad2_alloc(c.m), *h = nl_grad2_alloc(c.m);
   nl_grad2_seed(g, 8);

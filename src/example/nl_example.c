@@ -420,6 +420,33 @@ void nl_example_channel(const nl_image *im, int c, double *out)
   for (size_t i = 0; i < n; i++) out[i] = im->data[i * im->channels + c];
 }
 
+void nl_example_luminance(const nl_image *im, double *out)
+{
+  nl_image *g = nl_image_convert(im, 1);
+  nl_example_channel(g, 0, out);
+  nl_image_free(g);
+}
+
+double nl_example_correlation_error(const nl_image *a, const nl_image *b)
+{
+  double ca[3][3], cb[3][3], e = 0;
+  nl_example_correlation(a, ca);
+  nl_example_correlation(b, cb);
+  for (int i = 0; i < 3; i++)
+    for (int j = i + 1; j < 3; j++) e = fmax(e, fabs(ca[i][j] - cb[i][j]));
+  return e;
+}
+
+void nl_example_rotation_error(const double M[3][3], double *det, double *orth)
+{
+  *det = M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0])
+       + M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
+  *orth = 0;
+  for (int u = 0; u < 3; u++)
+    for (int v = 0; v < 3; v++)
+      *orth = fmax(*orth, fabs(M[u][0] * M[v][0] + M[u][1] * M[v][1] + M[u][2] * M[v][2] - (u == v)));
+}
+
 void nl_example_correlation(const nl_image *im, double corr[3][3])
 {
   double mean[3], M[3][3], cov[3][3] = {{0}};

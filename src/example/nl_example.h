@@ -159,6 +159,14 @@ void nl_example_attenuate(nl_example_params *p, int nfine, double factor);
 void nl_example_correlation(const nl_image *im, double corr[3][3]);
 /* Channel c of an image as doubles (n = width * height values). */
 void nl_example_channel(const nl_image *im, int c, double *out);
+/* The image's luminance (nl_image_convert to one channel) as doubles. */
+void nl_example_luminance(const nl_image *im, double *out);
+/* Largest |difference| of the off-diagonal colour correlations of a and b
+ * (nl_example_correlation): what independent RGB synthesis loses (Fig. 5). */
+double nl_example_correlation_error(const nl_image *a, const nl_image *b);
+/* det M and max |M M^T - I| of a 3 x 3 matrix: how far a morphed PCA
+ * matrix is from a rotation (Fig. 12). */
+void nl_example_rotation_error(const double M[3][3], double *det, double *orth);
 
 /* log10 of the power spectrum (nl_power2), DC at the centre, mapped from
  * [max - decades, max] to [0, 1]: a grey picture of a spectrum. */

@@ -196,4 +196,19 @@ NL_TEST(small_images_are_rejected)
   nl_image_free(im);
 }
 
+NL_TEST(rotation_error_and_correlation_error)
+{
+  const double I[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, S[3][3] = {{2, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  double det, orth;
+  nl_example_rotation_error(I, &det, &orth);
+  NL_CHECK(det == 1.0 && orth == 0.0);
+  nl_example_rotation_error(S, &det, &orth);
+  NL_CHECK(det == 2.0 && orth == 3.0);
+  nl_image *a = nl_example_exemplar("wavelet", 32, 1);
+  double lum[32 * 32];
+  nl_example_luminance(a, lum);
+  NL_CHECK(nl_example_correlation_error(a, a) == 0.0);
+  nl_image_free(a);
+}
+
 int main(void) { return nl_test_run(); }

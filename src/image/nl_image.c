@@ -1,8 +1,77 @@
 #include "image/nl_image.h"
+#include "image/nl_image_config.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#ifndef NL_OIIO_STATIC
+#include <dlfcn.h>
+#include <pthread.h>
+#endif
+
+/* ---- the image back-end, loaded on first use ------------------------- */
+
+typedef nl_status (*nl_oiio_read_fn)(const char *, nl_image **, nl_error *);
+typedef nl_status (*nl_oiio_write_fn)(const nl_image *, const char *, int, nl_error *);
+
+#ifdef NL_OIIO_STATIC
+/* The fuzz targets link nl_image_oiio.cpp in. */
+nl_status nl_oiio_read(const char *path, nl_image **out, nl_error *err);
+nl_status nl_oiio_write(const nl_image *im, const char *path, int bits, nl_error *err);
+static nl_oiio_read_fn oiio_read = nl_oiio_read;
+static nl_oiio_write_fn oiio_write = nl_oiio_write;
+static nl_status backend(const char *path, nl_error *err) { (void)path; (void)err; return NL_OK; }
+int nl_image_backend_loaded(void) { return 1; }
+#else
+static nl_oiio_read_fn oiio_read;
+static nl_oiio_write_fn oiio_write;
+static pthread_once_t oiio_once = PTHREAD_ONCE_INIT;
+static char oiio_why[NL_ERROR_LEN];
+
+static void backend_open(void)
+{
+  const char *env = getenv("NL_OIIO_MODULE");
+  const char *tries[3] = {env && *env ? env : NULL, NL_OIIO_MODULE_BUILD, NL_OIIO_MODULE_INSTALLED};
+  size_t used = 0;
+  for (int i = 0; i < 3; i++) {
+    if (!tries[i]) continue;
+    void *h = dlopen(tries[i], RTLD_NOW | RTLD_LOCAL);
+    if (h) {
+      oiio_read = (nl_oiio_read_fn)(void (*)(void))dlsym(h, "nl_oiio_read");
+      oiio_write = (nl_oiio_write_fn)(void (*)(void))dlsym(h, "nl_oiio_write");
+      if (oiio_read && oiio_write) return;
+      oiio_read = NULL; oiio_write = NULL;
+    }
+    const char *e = dlerror();
+    int n = snprintf(oiio_why + used, sizeof oiio_why - used, "%s%s", used ? "; " : "", e ? e : tries[i]);
+    if (n > 0) used += (size_t)n < sizeof oiio_why - used ? (size_t)n : sizeof oiio_why - used - 1;
+  }
+}
+
+static nl_status backend(const char *path, nl_error *err)
+{
+  pthread_once(&oiio_once, backend_open);
+  if (oiio_read) return NL_OK;
+  return nl_fail(err, NL_EIO, "%s: image support (OpenImageIO module) not loaded: %s", path, oiio_why);
+}
+
+int nl_image_backend_loaded(void) { return oiio_read != NULL; }
+#endif
+
+nl_status nl_image_read(const char *path, nl_image **out, nl_error *err)
+{
+  *out = NULL;
+  nl_status s = backend(path, err);
+  return s ? s : oiio_read(path, out, err);
+}
+
+nl_status nl_image_write(const nl_image *im, const char *path, int bits, nl_error *err)
+{
+  nl_status s = backend(path, err);
+  return s ? s : oiio_write(im, path, bits, err);
+}
+
+const char *nl_image_library_version(void) { return NL_OIIO_VERSION; }
 
 /* The font: stb_easy_font (public domain, Debian's libstb-dev) turns text
  * into axis-aligned quads, which we fill as rectangles. Unused-function

@@ -72,7 +72,16 @@ nl_image *nl_image_downsample(const nl_image *im, int f);
 nl_image *nl_montage(const nl_image *const *images, const char *const *labels, int n,
                      int cols, const char *title);
 
-/* OpenImageIO's version string, for manifests. */
+/* OpenImageIO's version string (the one this build was compiled against),
+ * for manifests; it does not load the image back-end. */
 const char *nl_image_library_version(void);
+
+/* The image back-end (OpenImageIO) is a module, libnl_oiio.so, opened on the
+ * first nl_image_read or nl_image_write: a program that writes only tables
+ * starts without loading OIIO's ~260 shared libraries. It is looked for at
+ * $NL_OIIO_MODULE, then in the build tree, then where `meson install` puts
+ * it; if none loads, read and write fail with NL_EIO and a message naming
+ * the places tried. 1 once it is loaded (for tests). */
+int nl_image_backend_loaded(void);
 
 #endif

@@ -1,5 +1,13 @@
 // The one file that speaks C++: OpenImageIO behind the C functions of
 // nl_image.h. Nothing else in noiselab includes an OIIO header.
+//
+// Built as a loadable module (libnl_oiio.so, see meson.build): OIIO pulls in
+// some 260 shared libraries, 0.6 s of CPU at every program start, so
+// nl_image.c opens this module on the first image read or write and a
+// program that only writes tables never loads it. The entry points are
+// nl_oiio_read / nl_oiio_write; nl_image.c's nl_image_read/nl_image_write
+// call them (directly when NL_OIIO_STATIC links this file in, as the fuzz
+// targets do).
 #include <OpenImageIO/imageio.h>
 
 #include <cerrno>
@@ -139,7 +147,7 @@ static nl_status precheck(const char *path, nl_error *err)
   return s;
 }
 
-extern "C" nl_status nl_image_read(const char *path, nl_image **out, nl_error *err)
+extern "C" nl_status nl_oiio_read(const char *path, nl_image **out, nl_error *err)
 {
   *out = nullptr;
   nl_status ps = precheck(path, err);
@@ -234,7 +242,7 @@ static nl_status nl_image_timestamp(const char *path, std::string *out, nl_error
   return NL_OK;
 }
 
-extern "C" nl_status nl_image_write(const nl_image *im, const char *path, int bits, nl_error *err)
+extern "C" nl_status nl_oiio_write(const nl_image *im, const char *path, int bits, nl_error *err)
 {
   if (bits != 8 && bits != 16 && bits != 32)
     return nl_fail(err, NL_EINVAL, "%s: bit depth %d is not 8, 16 or 32", path, bits);
@@ -282,7 +290,7 @@ extern "C" nl_status nl_image_write(const nl_image *im, const char *path, int bi
   return NL_OK;
 }
 
-extern "C" const char *nl_image_library_version(void)
+extern "C" const char *nl_oiio_version(void)
 {
   return OIIO_VERSION_STRING;
 }

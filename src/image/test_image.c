@@ -38,6 +38,22 @@ static void round_trip(const char *name, int bits, int channels, double tol)
   nl_image_free(a); nl_image_free(b); free(p);
 }
 
+/* First test: OpenImageIO is a module opened on the first image, so that
+ * programs writing only tables start in milliseconds (issue 17.5). */
+NL_TEST(backend_loads_on_first_use)
+{
+  NL_CHECK(!nl_image_backend_loaded());
+  NL_CHECK(strlen(nl_image_library_version()) > 0);   /* the manifest's: no load */
+  NL_CHECK(!nl_image_backend_loaded());
+  nl_image *im = nl_image_alloc(2, 2, 1);
+  char *p = nl_path_join(dir, "first.png");
+  nl_error err;
+  NL_CHECK(nl_image_write(im, p, 8, &err) == NL_OK);
+  NL_CHECK(nl_image_backend_loaded());
+  free(p);
+  nl_image_free(im);
+}
+
 NL_TEST(png_exr_tiff_round_trips)
 {
   round_trip("a.png", 8, 1, 1e-7);        /* k/255 survives 8 bits (to float rounding) */

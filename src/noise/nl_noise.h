@@ -149,48 +149,4 @@ void nl_fractal_row(const nl_basis *b, const nl_octaves *o, double x0, double dx
 typedef struct { double x0, y0, z, size; int w, h; } nl_window;
 void nl_fractal_grid(const nl_basis *b, const nl_octaves *o, const nl_window *win, double *out);
 
-/* ---- surveys: what a sum of octaves looks like, over seeds -------------
- *
- * nl_survey_run evaluates a sum of octaves of the chosen basis (a fresh
- * table per seed: seed0, seed0+1, ...) on a window and records, per seed, the
- * value distribution (mean, sd, min, max) and the radially averaged power
- * spectrum (frequency in cycles per unit of the window, power normalised as
- * nl_radial_power), plus the first seed's raster for pictures. Experiments
- * S1-S4 and sweeps use it so the numbers and the picture come from one pass.
- */
-typedef enum { NL_BASIS_GRAD2 = 0, NL_BASIS_IMPROVED3 = 1 } nl_basis_kind;
-
-typedef struct {
-  int nseeds, nbins, w, h;
-  double bound;                   /* analytic bound of the sum */
-  double *mean, *sd, *min, *max;  /* per seed */
-  double *freq;                   /* nbins, cycles per unit */
-  double *power;                  /* nseeds * nbins */
-  double *first;                  /* w * h values of the first seed */
-} nl_survey;
-
-nl_survey *nl_survey_run(nl_basis_kind kind, const nl_octaves *o, const nl_window *win,
-                         unsigned long seed0, int nseeds);
-void nl_survey_free(nl_survey *s);
-
-/* A series of surveys, one per setting (the slides' panels (a), (b), ...):
- *  dist     one row per setting: label, octaves, gain, lacunarity (as given
- *           in the setting), then over
- *           seeds the mean and sd of the per-seed mean and sd, the mean
- *           min and max, the largest |value| seen, the analytic bound and
- *           their ratio;
- *  spectrum freq (cycles per unit) and one column of seed-averaged radial
- *           power per setting, headed by its label;
- *  panels   the first seed's raster of each setting as a grey image mapped
- *           from [mean - 3 sd, mean + 3 sd] to [0, 1] (each panel its own
- *           contrast; the table carries the amplitudes).
- * Any output pointer may be NULL. */
-typedef struct { const char *label; nl_octaves oct; double gain, lacunarity; } nl_setting;
-struct nl_table;
-struct nl_image;
-void nl_survey_series(nl_basis_kind kind, const nl_setting *settings, int n,
-                      const nl_window *win, unsigned long seed0, int nseeds,
-                      struct nl_table **dist, struct nl_table **spectrum,
-                      struct nl_image **panels);
-
 #endif

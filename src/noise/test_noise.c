@@ -30,6 +30,16 @@ static double ref_noise(double x, double y, double z)
                            rlerp(u, rgrad(P[AB + 1], x, y - 1, z - 1), rgrad(P[BB + 1], x - 1, y - 1, z - 1))));
 }
 
+/* The 2D table (M = 512; caller frees) and the 3D permutation of one seed:
+ * most tests check both bases side by side. */
+static nl_grad2 *both_tables(unsigned long seed, nl_perm3 *p)
+{
+  nl_grad2 *t = nl_grad2_alloc(512);
+  nl_grad2_seed(t, seed);
+  nl_perm3_seed(p, seed);
+  return t;
+}
+
 NL_TEST(improved_noise_matches_perlins_reference)
 {
   nl_perm3 p;
@@ -52,10 +62,8 @@ NL_TEST(improved_noise_matches_perlins_reference)
 
 NL_TEST(rows_equal_points_bit_for_bit)
 {
-  nl_grad2 *t = nl_grad2_alloc(512);
-  nl_grad2_seed(t, 7);
   nl_perm3 p;
-  nl_perm3_seed(&p, 7);
+  nl_grad2 *t = both_tables(7, &p);
   double row[1000], row3[1000];
   double dxs[] = {0.0137, -0.29, 3.7, 1e-4};   /* dense, negative, sparse, tiny */
   for (int d = 0; d < 4; d++) {
@@ -73,10 +81,8 @@ NL_TEST(rows_equal_points_bit_for_bit)
 
 NL_TEST(zero_at_lattice_points)
 {
-  nl_grad2 *t = nl_grad2_alloc(512);
-  nl_grad2_seed(t, 1);
   nl_perm3 p;
-  nl_perm3_seed(&p, 1);
+  nl_grad2 *t = both_tables(1, &p);
   double worst = 0;
   for (int i = -40; i < 40; i++)
     for (int j = -40; j < 40; j++)
@@ -89,10 +95,8 @@ NL_TEST(continuous_across_cell_borders)
 {
   /* The noise is C2 with gradients bounded by a few units, so values
    * either side of a border 2e-9 apart differ by well under 1e-7. */
-  nl_grad2 *t = nl_grad2_alloc(512);
-  nl_grad2_seed(t, 2);
   nl_perm3 p;
-  nl_perm3_seed(&p, 2);
+  nl_grad2 *t = both_tables(2, &p);
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
   double worst = 0, e = 1e-9;
   for (int k = 0; k < 20000; k++) {
@@ -194,10 +198,8 @@ NL_TEST(octave_builders)
  * build checks), finite where the input is finite, NaN where it is not. */
 NL_TEST(huge_coordinates_are_safe)
 {
-  nl_grad2 *t = nl_grad2_alloc(512);
-  nl_grad2_seed(t, 3);
   nl_perm3 p;
-  nl_perm3_seed(&p, 3);
+  nl_grad2 *t = both_tables(3, &p);
   const double xs[] = {1e30, -1e30, 0x1p62, -0x1p63, 0x1p52 + 0.5, 1e308, -1e308, 4503599627370497.0};
   for (size_t k = 0; k < sizeof xs / sizeof *xs; k++) {
     double a = nl_noise2(t, xs[k], 0.25), b = nl_noise3(&p, 0.5, xs[k], xs[k]);
@@ -231,10 +233,8 @@ NL_TEST(golden_rasters_are_bit_identical_across_builds)
    * under the sanitizers, so passing there proves the same seed gives the
    * same bits at both optimisation levels. A change of these hashes is a
    * change of every committed result: update them only on purpose. */
-  nl_grad2 *t = nl_grad2_alloc(512);
-  nl_grad2_seed(t, 5);
   nl_perm3 p;
-  nl_perm3_seed(&p, 5);
+  nl_grad2 *t = both_tables(5, &p);
   nl_basis b2 = nl_basis_grad2(t), b3 = nl_basis_perm3(&p);
   nl_octaves o = nl_octaves_fbm(6, 0.5, 2.0);
   nl_window w = {-1.3, 0.7, 0.25, 3.0, 64, 64};

@@ -23,6 +23,9 @@ struct nl_run {
   int nset;
   char **set_key, **set_val;
   int *set_used;
+  int listing;            /* 0; 1 --help, 2 --params: print at nl_run_params_done, exit 0 */
+  size_t nparam;          /* the parameters declared so far, for --params, --help, errors */
+  nl_run_param_info *param;
   int params_checked;     /* nl_run_params_done ran */
   int prepared;           /* the output folder exists and its old manifest is gone */
   nl_table *manifest;     /* key, value (text) */
@@ -32,6 +35,16 @@ struct nl_run {
   double last_progress;
 };
 
+/* The compiler by name and version: gcc's __VERSION__ is the bare number
+ * ("12.2.0"), clang's already names itself ("Debian Clang 14.0.6"). */
+#if defined(__clang__)
+#define NL_COMPILER __VERSION__
+#elif defined(__GNUC__)
+#define NL_COMPILER "gcc " __VERSION__
+#else
+#define NL_COMPILER __VERSION__
+#endif
+
 static void usage(const char *name, const char *title)
 {
   printf("%s - %s\n\n"
@@ -40,10 +53,41 @@ static void usage(const char *name, const char *title)
          "  --seed N      base seed, 0..4294967295 (default 1)\n"
          "  --seeds K     seeds for means and spreads (default 10; 3 with --quick)\n"
          "  --quick       small sizes, for tests and CI\n"
-         "  --set K=V     set an experiment parameter (see its report for names)\n\n"
+         "  --set K=V     set an experiment parameter (listed below)\n"
+         "  --params      list the parameters as TSV (name, default, min, max, meaning)\n\n"
          "Nothing in the output folder changes until every option and parameter\n"
          "is accepted; a folder with a manifest.tsv is a finished run.\n",
          name, title, name, name);
+}
+
+/* The number as --set accepts it and the manifest records it. */
+static void param_text(char buf[32], double v, int is_int)
+{
+  if (is_int) snprintf(buf, 32, "%ld", (long)v);
+  else nl_format_double(buf, v);
+}
+
+void nl_run_params_print(const nl_run *r, FILE *fp, int readable)
+{
+  char d[32], lo[32], hi[32];
+  if (readable) fprintf(fp, "\nparameters (--set NAME=VALUE; default, range):\n");
+  else fprintf(fp, "name\tdefault\tmin\tmax\tmeaning\n");
+  if (readable && !r->nparam) fprintf(fp, "  (none)\n");
+  for (size_t k = 0; k < r->nparam; k++) {
+    const nl_run_param_info *p = &r->param[k];
+    param_text(d, p->def, p->is_int);
+    param_text(lo, p->lo, p->is_int);
+    param_text(hi, p->hi, p->is_int);
+    if (readable) fprintf(fp, "  %-16s %s%s in [%s, %s]: %s\n", p->name, p->is_int ? "integer " : "",
+                          d, lo, hi, p->meaning);
+    else fprintf(fp, "%s\t%s\t%s\t%s\t%s\n", p->name, d, lo, hi, p->meaning);
+  }
+}
+
+const nl_run_param_info *nl_run_params(const nl_run *r, size_t *n)
+{
+  *n = r->nparam;
+  return r->param;
 }
 
 void nl_run_die(nl_run *r, int code, const char *fmt, ...)
@@ -99,6 +143,7 @@ nl_status nl_run_parse(nl_run_options *o, int argc, char **argv, nl_error *err)
     long n;
     nl_status st = NL_OK;
     if (!strcmp(a, "--help") || !strcmp(a, "-h")) o->help = 1;
+    else if (!strcmp(a, "--params")) o->params = 1;
     else if (!strcmp(a, "--quick")) o->quick = 1;
     else if (!strcmp(a, "--out")) {
       if (!(st = option_value(argc, argv, &i, &v, err))) {
@@ -137,8 +182,10 @@ nl_run *nl_run_begin(const char *name, const char *title, int argc, char **argv)
     fprintf(stderr, "%s: %s\n", name, err.msg);
     exit(2);
   }
-  if (o.help) { usage(name, title); nl_run_options_free(&o); exit(0); }
   nl_run *r = nl_xcalloc(1, sizeof *r);
+  /* --help and --params are answered at nl_run_params_done, once the
+   * experiment has declared its parameters; nothing is done before. */
+  r->listing = o.help ? 1 : o.params ? 2 : 0;
   r->name = name;
   r->title = title;
   r->seed = o.seed;
@@ -211,17 +258,21 @@ static const char *set_value(nl_run *r, const char *name)
   return v;
 }
 
-/* The --set value for name (NULL if none) and its label for messages. */
-static const char *param_value(nl_run *r, const char *name, char *what, size_t n)
+/* Records the declaration (for --params, --help and the unknown-name error)
+ * and returns the --set value for name (NULL if none) with its label. */
+static const char *param_value(nl_run *r, const char *name, double def, double lo, double hi,
+                               int is_int, const char *meaning, char *what, size_t n)
 {
+  r->param = nl_xrealloc(r->param, (r->nparam + 1) * sizeof *r->param);
+  r->param[r->nparam++] = (nl_run_param_info){name, def, lo, hi, is_int, meaning ? meaning : ""};
   snprintf(what, n, "--set %s", name);
   return set_value(r, name);
 }
 
-double nl_run_param(nl_run *r, const char *name, double def, double lo, double hi)
+double nl_run_param(nl_run *r, const char *name, double def, double lo, double hi, const char *meaning)
 {
   char what[128], buf[32];
-  const char *s = param_value(r, name, what, sizeof what);
+  const char *s = param_value(r, name, def, lo, hi, 0, meaning, what, sizeof what);
   double v = def;
   nl_error err;
   if (s && nl_parse_double(what, s, lo, hi, &v, &err)) nl_run_die(r, 2, "%s", err.msg);
@@ -230,10 +281,10 @@ double nl_run_param(nl_run *r, const char *name, double def, double lo, double h
   return v;
 }
 
-long nl_run_param_int(nl_run *r, const char *name, long def, long lo, long hi)
+long nl_run_param_int(nl_run *r, const char *name, long def, long lo, long hi, const char *meaning)
 {
   char what[128];
-  const char *s = param_value(r, name, what, sizeof what);
+  const char *s = param_value(r, name, (double)def, (double)lo, (double)hi, 1, meaning, what, sizeof what);
   long v = def;
   nl_error err;
   if (s && nl_parse_long(what, s, lo, hi, &v, &err)) nl_run_die(r, 2, "%s", err.msg);
@@ -244,8 +295,29 @@ long nl_run_param_int(nl_run *r, const char *name, long def, long lo, long hi)
 void nl_run_params_done(nl_run *r)
 {
   r->params_checked = 1;
-  for (int k = 0; k < r->nset; k++)
-    if (!r->set_used[k]) nl_run_die(r, 2, "--set %s: unknown parameter for %s", r->set_key[k], r->name);
+  for (int k = 0; k < r->nset; k++) {
+    if (r->set_used[k]) continue;
+    /* One line that names the valid parameters, so a typo is fixed at once. */
+    size_t len = 0;
+    for (size_t p = 0; p < r->nparam; p++) len += strlen(r->param[p].name) + 2;
+    char *names = nl_xmalloc(len + 8);
+    names[0] = '\0';
+    for (size_t p = 0; p < r->nparam; p++) {
+      if (p) strcat(names, ", ");
+      strcat(names, r->param[p].name);
+    }
+    nl_run_die(r, 2, "--set %s: unknown parameter for %s (valid: %s)", r->set_key[k], r->name,
+               r->nparam ? names : "none");
+  }
+  /* --help or --params: the list, and nothing else. Any --set given was
+   * checked like a run's, so `--params --set ...` validates a sweep's values
+   * without doing the work. */
+  if (r->listing) {
+    if (r->listing == 1) usage(r->name, r->title);
+    nl_run_params_print(r, stdout, r->listing == 1);
+    fflush(stdout);
+    exit(ferror(stdout) ? 1 : 0);
+  }
 }
 
 char *nl_run_path(const nl_run *r, const char *file)
@@ -474,7 +546,7 @@ int nl_run_end(nl_run *r)
   note(r, "commit", commit && *commit ? commit : "unknown");
   nl_run_note(r, "gsl", "%s", GSL_VERSION);
   nl_run_note(r, "openimageio", "%s", nl_image_library_version());
-  nl_run_note(r, "compiler", "%s", __VERSION__);
+  nl_run_note(r, "compiler", "%s", NL_COMPILER);
   note(r, "cflags", NL_BUILD_CFLAGS);
   note_platform(r);
   note(r, "started", r->started);
@@ -486,7 +558,7 @@ int nl_run_end(nl_run *r)
   nl_run_table(r, r->checks, "checks.tsv");
   nl_run_table(r, r->manifest, manifest_name());
   for (int k = 0; k < r->nset; k++) { free(r->set_key[k]); free(r->set_val[k]); }
-  free(r->set_key); free(r->set_val); free(r->set_used);
+  free(r->set_key); free(r->set_val); free(r->set_used); free(r->param);
   nl_table_free(r->manifest);
   nl_table_free(r->checks);
   free(r->md); free(r->out); free(r);

@@ -5,8 +5,9 @@
  *
  *   int main(int argc, char **argv) {
  *     nl_run *r = nl_run_begin("s3_fbm", "S3 - fBm gain and lacunarity", argc, argv);
- *     int octaves = nl_run_param_int(r, "octaves", 6, 1, 30);   // --set octaves=8
- *     nl_run_params_done(r);                                    // rejects unknown --set
+ *     int octaves = nl_run_param_int(r, "octaves", 6, 1, 30,    // --set octaves=8
+ *                                    "octaves summed in the fBm");
+ *     nl_run_params_done(r);             // rejects unknown --set; answers --help, --params
  *     ... library calls ...
  *     nl_run_table(r, t, "dist.tsv");                           // out/dist.tsv, atomic
  *     nl_report_text(r, "The slides show ...");
@@ -22,10 +23,18 @@
  *   --seeds K    number of seeds for means and spreads (default 10, quick 3)
  *   --quick      small sizes for tests and CI
  *   --set K=V    an experiment parameter (repeatable), for sweeps
- *   --help
+ *   --params     print the parameters as TSV, a header line then one line
+ *                each: name, default, min, max, meaning; exit 0
+ *   --help       the usage and the parameters in readable form; exit 0
+ * --help and --params are answered at nl_run_params_done, when every
+ * parameter is declared and before any work or output (no file is touched).
+ * --set names and values given with them are checked as for a run (exit 2),
+ * so `--params --set NAME=VALUE...` validates a sweep point; the list shows
+ * the defaults.
  * The manifest (manifest.tsv: key, value) records the experiment, seed,
  * parameters, commit (NL_COMMIT from the entry script), library versions,
- * wall time, peak memory and where it was made: compiler (version), cflags
+ * wall time, peak memory and where it was made: compiler (name and version,
+ * "gcc 12.2.0"), cflags
  * (project and user C flags, buildtype, optimisation, sanitizers), cpu
  * (/proc/cpuinfo model name), blas (library file; "OpenBLAS (path)" when
  * OpenBLAS is loaded), blas_core, blas_config, blas_threads (OpenBLAS's
@@ -61,6 +70,7 @@ typedef struct {
   unsigned long seed;      /* 1 unless --seed */
   int seeds;               /* -1 unless --seeds */
   int quick, help;
+  int params;              /* --params */
   int nset;                /* --set NAME=VALUE, in order */
   char **set_key, **set_val;
 } nl_run_options;
@@ -70,8 +80,8 @@ typedef struct {
 nl_status nl_run_parse(nl_run_options *o, int argc, char **argv, nl_error *err);
 void nl_run_options_free(nl_run_options *o);
 
-/* nl_run_parse; on error prints "NAME: message" and exits 2, --help prints
- * the usage and exits 0. Touches no file. */
+/* nl_run_parse; on error prints "NAME: message" and exits 2. --help and
+ * --params are remembered and answered by nl_run_params_done. Touches no file. */
 nl_run *nl_run_begin(const char *name, const char *title, int argc, char **argv);
 
 unsigned long nl_run_seed(const nl_run *r);   /* base seed */
@@ -80,10 +90,33 @@ int nl_run_quick(const nl_run *r);
 const char *nl_run_dir(const nl_run *r);      /* prepares the folder (see above) */
 const char *nl_run_name(const nl_run *r);     /* "s3_fbm" */
 
-/* Parameter `name` from --set, else def; range-checked; recorded. */
-double nl_run_param(nl_run *r, const char *name, double def, double lo, double hi);
-long nl_run_param_int(nl_run *r, const char *name, long def, long lo, long hi);
+/* Parameter `name` from --set, else def; range-checked; recorded in the
+ * manifest. `meaning` is one line saying what the number is (units, the
+ * paper's symbol): --params and --help print it. Both strings are borrowed
+ * for the run's life (string literals). A bad value: "NAME: --set name: ...",
+ * exit 2. */
+double nl_run_param(nl_run *r, const char *name, double def, double lo, double hi,
+                    const char *meaning);
+long nl_run_param_int(nl_run *r, const char *name, long def, long lo, long hi,
+                      const char *meaning);
+/* Every parameter is declared: refuses a --set name none declared (exit 2,
+ * one line listing the valid names); then, with --help or --params, prints
+ * the list (nl_run_params_print) and exits 0. Runs at the first write at
+ * the latest. */
 void nl_run_params_done(nl_run *r);
+
+/* A declared parameter (integers have is_int 1 and whole def, lo, hi). */
+typedef struct {
+  const char *name;
+  double def, lo, hi;
+  int is_int;
+  const char *meaning;
+} nl_run_param_info;
+/* The parameters declared so far, in order (owned by r). */
+const nl_run_param_info *nl_run_params(const nl_run *r, size_t *n);
+/* readable 0: "name\tdefault\tmin\tmax\tmeaning" then one TSV line each
+ * (numbers as --set takes them); 1: the --help form. */
+void nl_run_params_print(const nl_run *r, FILE *fp, int readable);
 /* Extra manifest line (e.g. "pool_bytes"). */
 void nl_run_note(nl_run *r, const char *key, const char *fmt, ...)
   __attribute__((format(printf, 3, 4)));
@@ -175,6 +208,41 @@ const char *nl_run_check_rule(const nl_run *r, const char *table, const char *co
 void nl_run_check_measured(nl_run *r, const char *table, double multiple);
 /* Parses a rule string as above; "rule 'x': ..." on error. */
 nl_status nl_check_rule_parse(const char *s, nl_check_rule *rule, nl_error *err);
+
+/* ---- the regression check (nl_report_check.c) ------------------------
+ *
+ * Compares a committed run folder with a new one by the committed folder's
+ * checks.tsv (the reference says how it may be compared):
+ *
+ *   nl_check_state s = {0};                 // s.all = 1: every drifted value
+ *   if (nl_report_check_experiment(&s, "results/s3_fbm", "build/check/s3_fbm", &err))
+ *     ... bad input: err.msg ...
+ *   nl_report_check_totals(&s);             // "check: 1 experiment, ..."
+ *   return s.drifted ? 1 : 0;
+ *
+ * Every table (nl_run_tables) of the committed folder is compared cell by
+ * cell by its rule; the manifests' experiment, seed, seeds, quick and param
+ * lines must match exactly (the others never are). Written to s.out
+ * (stdout when NULL), one tab-separated line per drifted value
+ *   experiment  table  row  column  committed  new  rule[: detail]
+ * (row: 1-based data row, with its first text cell as a label), the first
+ * NL_CHECK_SHOWN of an experiment unless s.all; after an experiment with
+ * drift a line "check: EXP: D drifted[ (first 10 shown; ...)]; reference vs
+ * this run: CPU same|other|unknown (...), BLAS kernel ...". welch and ftest
+ * p-values come from nl_stats_welch_p and nl_stats_ftest_p. Returns NL_OK
+ * whether or not there was drift (counted in s), else a one-line message:
+ * a missing folder or manifest, an unreadable table, a malformed rule or a
+ * rule naming a missing column (the comparison stops there). */
+#define NL_CHECK_SHOWN 10   /* drifted values printed per experiment without `all` */
+typedef struct {
+  int all;                  /* print every drifted value */
+  FILE *out;                /* the report; NULL: stdout */
+  size_t experiments, tables, values, drifted;   /* totals so far */
+} nl_check_state;
+nl_status nl_report_check_experiment(nl_check_state *s, const char *ref_dir, const char *new_dir,
+                                     nl_error *err);
+/* "check: E experiments, T tables, V values compared, D drifted". */
+void nl_report_check_totals(const nl_check_state *s);
 
 /* The data tables of a run folder: every *.tsv but manifest.tsv and
  * checks.tsv (hidden files are temporaries), sorted by name. Caller frees

@@ -2,6 +2,7 @@
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_fft_complex.h>
+#include <gsl/gsl_fft_real.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -69,4 +70,35 @@ void nl_radial_power(const double *img, int w, int h, int nbins, double *f, doub
     }
   for (int b = 0; b < nbins; b++) if (count[b]) p[b] /= (double)count[b];
   free(P); free(count);
+}
+
+/* ---- 1D --------------------------------------------------------------- */
+
+nl_status nl_psd1(const double *x, size_t n, double rate, double *f, double *P, nl_error *err)
+{
+  if (n < 2 || !(rate > 0.0)) return nl_fail(err, NL_EINVAL, "psd1: need n >= 2 and rate > 0");
+  double *d = nl_xmalloc(n * sizeof *d);
+  memcpy(d, x, n * sizeof *d);
+  gsl_fft_real_wavetable *wt = gsl_fft_real_wavetable_alloc(n);
+  gsl_fft_real_workspace *ws = gsl_fft_real_workspace_alloc(n);
+  int gs = gsl_fft_real_transform(d, 1, n, wt, ws);
+  gsl_fft_real_workspace_free(ws);
+  gsl_fft_real_wavetable_free(wt);
+  if (gs) { free(d); return nl_fail(err, NL_ENUM, "psd1: %s", gsl_strerror(gs)); }
+  /* Half-complex layout: d[0] = X_0, (d[2k-1], d[2k]) = X_k, d[n-1] = X_{n/2}
+   * for even n. |X_k|^2 / n^2 per two-sided bin (Parseval, eq. 4.4, over
+   * n^2 so that the sum is the mean square); folded to one side. */
+  double nn = (double)n * (double)n;
+  size_t m = n / 2 + 1;
+  for (size_t k = 0; k < m; k++) {
+    double re, im = 0.0;
+    if (k == 0) re = d[0];
+    else if (2 * k == n) re = d[n - 1];
+    else { re = d[2 * k - 1]; im = d[2 * k]; }
+    double two_sided = (re * re + im * im) / nn;
+    P[k] = (k == 0 || 2 * k == n) ? two_sided : 2.0 * two_sided;
+    f[k] = (double)k * rate / (double)n;
+  }
+  free(d);
+  return NL_OK;
 }

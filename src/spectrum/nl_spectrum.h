@@ -12,6 +12,13 @@
  *       Frequencies past the Nyquist circle (corners) are not counted.
  * Frequencies are in cycles per pixel; multiply by the sampling rate for
  * cycles per unit.
+ *
+ * 1D (Arnerin's bandwidth, bounds/, and anything else sampled on a line):
+ *   nl_psd1(x, n, rate, f, P, err)
+ *       one-sided power spectrum of n real samples taken at `rate` per unit
+ *       (GSL's real mixed-radix FFT): f[k] = k rate / n cycles per unit and
+ *       P[k] = |X_k|^2 / n^2, doubled for 0 < k < n/2 (folded to one side),
+ *       k = 0..n/2, so that sum P = mean(x^2) (Parseval, Arnerin eq. 4.4).
  */
 #ifndef NL_SPECTRUM_H
 #define NL_SPECTRUM_H
@@ -24,5 +31,8 @@ void nl_power2(const double *img, int w, int h, double *P);
 void nl_radial_power(const double *img, int w, int h, int nbins, double *f, double *p);
 /* Signed frequency of index u of an n-point DFT, in cycles per sample. */
 double nl_fft_freq(int u, int n);
+/* f and P hold n/2 + 1 values. n >= 2, rate > 0; NL_EINVAL otherwise, NL_ENUM
+ * if GSL's transform fails. */
+nl_status nl_psd1(const double *x, size_t n, double rate, double *f, double *P, nl_error *err);
 
 #endif

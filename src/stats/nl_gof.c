@@ -136,19 +136,31 @@ static nl_status check_interval(double a, double b, nl_error *err)
   return NL_OK;
 }
 
-nl_status nl_ks_test(const double *x, size_t n, nl_cdf_fn cdf, void *params,
-                     nl_ks_result *res, nl_error *err)
+/* D+ and D- of the sample x against cdf: what KS and Kuiper share. */
+static nl_status cdf_statistic(const double *x, size_t n, nl_cdf_fn cdf, void *params,
+                               double *d_plus, double *d_minus, nl_error *err)
 {
   double *xs, *u;
   nl_status s = sorted_cdf(x, n, cdf, params, &xs, &u, err);
   if (s) return s;
+  nl_ks_statistic(u, n, d_plus, d_minus);
+  free(xs);
+  free(u);
+  return NL_OK;
+}
+
+nl_status nl_ks_test(const double *x, size_t n, nl_cdf_fn cdf, void *params,
+                     nl_ks_result *res, nl_error *err)
+{
+  double dp, dm;
+  nl_status s = cdf_statistic(x, n, cdf, params, &dp, &dm, err);
+  if (s) return s;
   memset(res, 0, sizeof *res);
-  nl_ks_statistic(u, n, &res->d_plus, &res->d_minus);
+  res->d_plus = dp;
+  res->d_minus = dm;
   res->d = fmax(res->d_plus, res->d_minus);
   res->n = n;
   res->p = nl_ks_sf(n, res->d, &res->method);
-  free(xs);
-  free(u);
   return NL_OK;
 }
 
@@ -204,15 +216,11 @@ double nl_kuiper_sf(size_t n, double v)
 nl_status nl_kuiper_test(const double *x, size_t n, nl_cdf_fn cdf, void *params,
                          nl_kuiper_result *res, nl_error *err)
 {
-  double *xs, *u;
-  nl_status s = sorted_cdf(x, n, cdf, params, &xs, &u, err);
+  nl_status s = cdf_statistic(x, n, cdf, params, &res->d_plus, &res->d_minus, err);
   if (s) return s;
-  nl_ks_statistic(u, n, &res->d_plus, &res->d_minus);
   res->v = res->d_plus + res->d_minus;
   res->n = n;
   res->p = nl_kuiper_sf(n, res->v);
-  free(xs);
-  free(u);
   return NL_OK;
 }
 
@@ -469,4 +477,9 @@ double nl_ecdf_eval(const nl_ecdf *e, double t)
     if (e->x[mid] <= t) lo = mid + 1; else hi = mid;
   }
   return (double)lo / (double)e->n;
+}
+
+size_t nl_stats_chisq_bin(double v, size_t k, double a, double b)
+{
+  return bin_index(v, k, a, b);
 }

@@ -188,6 +188,25 @@ nl_status nl_chisq_test(const double *observed, const double *expected, size_t k
 nl_status nl_chisq_test_uniform(const double *x, size_t n, size_t k, double a, double b,
                                 nl_chisq_result *res, nl_error *err);
 
+/* ---- two samples from their summaries -----------------------------------
+ *
+ * For a mean and an sd over n independent runs on each side (the regression
+ * check's means over seeds):
+ *   double p;
+ *   nl_stats_welch_p(0.51, 0.02, 10, 0.50, 0.03, 10, &p, &err);  // equal means?
+ *   nl_stats_ftest_p(0.02, 10, 0.03, 10, &p, &err);              // equal variances?
+ * Welch's t-test (unequal variances): t = |m2 - m1| / sqrt(s1^2/n1 + s2^2/n2),
+ * Welch-Satterthwaite df, p = 2 P(T_df > t): scipy.stats.ttest_ind_from_stats(
+ * m1, s1, n1, m2, s2, n2, equal_var=False).pvalue, sd with ddof = 1.
+ * F-test: F = s2^2 / s1^2 on (n2 - 1, n1 - 1) df, p = min(1, 2 min(P(F' <= F),
+ * P(F' >= F))), the two-sided test scipy has no single call for
+ * (2 min(f.cdf, f.sf)). One sd 0 and the other not: p = 0. Both sds 0, n < 2,
+ * a negative or non-finite sd or mean: NL_EINVAL (nothing to test: compare the
+ * values). Accuracy against scipy 1.10: 1e-12 relative (src/stats/test_meantest.c). */
+nl_status nl_stats_welch_p(double m1, double s1, size_t n1, double m2, double s2, size_t n2,
+                           double *p, nl_error *err);
+nl_status nl_stats_ftest_p(double s1, size_t n1, double s2, size_t n2, double *p, nl_error *err);
+
 /* Empirical CDF: a sorted copy of the sample. */
 typedef struct {
   size_t n;
@@ -202,6 +221,16 @@ double nl_ecdf_eval(const nl_ecdf *e, double t);
  * [a, b) are counted in *outside (may be NULL) and not binned. */
 gsl_histogram *nl_histogram_uniform(const double *x, size_t n, size_t k, double a,
                                     double b, size_t *outside, nl_error *err);
+
+/* The bin of v among k equal bins of [a, b] by the rule nl_histogram_uniform
+ * and nl_chisq_test_uniform use (numpy.histogram's): the index computed
+ * arithmetically, then corrected against the bin edges a + i (b - a)/k so
+ * that a value on an edge goes to the bin the edge opens; the last bin is
+ * closed, values above b clamp to it. Exported, as GSL exports
+ * gsl_histogram_find, for code that keeps bin counts itself (the chi-square
+ * term of the Cheng optimiser updates one count per move) and must bin
+ * exactly as the test it is checked against. k >= 1, a < b. */
+size_t nl_stats_chisq_bin(double v, size_t k, double a, double b);
 
 /* Sorts doubles ascending (introsort specialised for double: 3-4x faster
  * than qsort with a comparison callback at n = 512). NaN not allowed. */

@@ -13,21 +13,10 @@
 
 static const char *methods[] = {"single", "complete", "average"};
 
-static double *load_points(size_t *n, size_t *d)
-{
-  nl_table *t = vec_read("hclust_X.tsv");
-  double *x = nl_xmalloc(t->nrows * t->ncols * sizeof(double));
-  memcpy(x, t->num, t->nrows * t->ncols * sizeof(double));
-  *n = t->nrows;
-  *d = t->ncols;
-  nl_table_free(t);
-  return x;
-}
-
 NL_TEST(linkage_matches_scipy)
 {
   size_t n, d;
-  double *x = load_points(&n, &d), *Z = nl_xmalloc((n - 1) * 4 * sizeof(double));
+  double *x = vec_matrix("hclust_X.tsv", &n, &d), *Z = nl_xmalloc((n - 1) * 4 * sizeof(double));
   for (int m = 0; m < 3; m++) {
     nl_linkage_method lm;
     NL_CHECK(nl_linkage_method_parse(methods[m], &lm, NULL) == NL_OK);
@@ -53,7 +42,7 @@ NL_TEST(linkage_matches_scipy)
 NL_TEST(fcluster_matches_scipy)
 {
   size_t n, d;
-  double *x = load_points(&n, &d), *Z = nl_xmalloc((n - 1) * 4 * sizeof(double));
+  double *x = vec_matrix("hclust_X.tsv", &n, &d), *Z = nl_xmalloc((n - 1) * 4 * sizeof(double));
   int *lab = nl_xmalloc(n * sizeof(int));
   for (int m = 0; m < 3; m++) {
     nl_linkage_method lm = (nl_linkage_method)m;

@@ -11,17 +11,6 @@
 
 #include <string.h>
 
-static double *load_X(size_t *n, size_t *d)
-{
-  nl_table *t = vec_read("gmm_X.tsv");
-  double *x = nl_xmalloc(t->nrows * t->ncols * sizeof(double));
-  memcpy(x, t->num, t->nrows * t->ncols * sizeof(double));
-  *n = t->nrows;
-  *d = t->ncols;
-  nl_table_free(t);
-  return x;
-}
-
 static int *load_labels(size_t k, size_t n)
 {
   char name[64];
@@ -36,7 +25,7 @@ static int *load_labels(size_t k, size_t n)
 NL_TEST(em_matches_sklearn_from_same_labels)
 {
   size_t n, d;
-  double *x = load_X(&n, &d);
+  double *x = vec_matrix("gmm_X.tsv", &n, &d);
   nl_table *t = vec_read("gmm_fit.tsv");
   for (size_t r = 0; r < t->nrows; r++) {
     size_t k = (size_t)vec_get(t, r, "k");

@@ -25,6 +25,19 @@ static double *read_column(const char *file, size_t *n)
   return x;
 }
 
+/* Runs fn on each row of a vector table whose "file" column names a sample. */
+static void each_sample(const char *table, void (*fn)(const nl_table *t, size_t r, const double *x, size_t n))
+{
+  nl_table *t = vec_read(table);
+  for (size_t r = 0; r < t->nrows; r++) {
+    size_t n;
+    double *x = read_column(vec_text(t, r, "file"), &n);
+    fn(t, r, x, n);
+    free(x);
+  }
+  nl_table_free(t);
+}
+
 NL_TEST(kstwo_distribution_matches_scipy)
 {
   nl_table *t = vec_read("kstwo_grid.tsv");
@@ -51,25 +64,20 @@ NL_TEST(kolmogorov_limit_matches_scipy)
   nl_table_free(t);
 }
 
-NL_TEST(ks_test_matches_scipy_kstest)
+static void ks_case(const nl_table *t, size_t r, const double *x, size_t n)
 {
-  nl_table *t = vec_read("ks_one.tsv");
-  for (size_t r = 0; r < t->nrows; r++) {
-    size_t n;
-    double *x = read_column(vec_text(t, r, "file"), &n);
-    nl_ks_result res;
-    NL_CHECK(nl_ks_test_uniform(x, n, 0.0, NL_TWO_PI, &res, NULL) == NL_OK);
-    NL_CHECK(res.n == (size_t)vec_get(t, r, "n"));
-    NL_CHECK_NEAR(res.d, vec_get(t, r, "d"), 1e-15);
-    NL_CHECK_NEAR(res.d_plus, vec_get(t, r, "d_plus"), 1e-15);
-    NL_CHECK_NEAR(res.d_minus, vec_get(t, r, "d_minus"), 1e-15);
-    NL_CHECK(vec_close(res.p, vec_get(t, r, "p"), 1e-10, 1e-300));
-    NL_CHECK(vec_close(nl_kolmogorov_sf(res.d * sqrt((double)n)), vec_get(t, r, "p_kolmogorov"),
-                       1e-12, 1e-300));
-    free(x);
-  }
-  nl_table_free(t);
+  nl_ks_result res;
+  NL_CHECK(nl_ks_test_uniform(x, n, 0.0, NL_TWO_PI, &res, NULL) == NL_OK);
+  NL_CHECK(res.n == (size_t)vec_get(t, r, "n"));
+  NL_CHECK_NEAR(res.d, vec_get(t, r, "d"), 1e-15);
+  NL_CHECK_NEAR(res.d_plus, vec_get(t, r, "d_plus"), 1e-15);
+  NL_CHECK_NEAR(res.d_minus, vec_get(t, r, "d_minus"), 1e-15);
+  NL_CHECK(vec_close(res.p, vec_get(t, r, "p"), 1e-10, 1e-300));
+  NL_CHECK(vec_close(nl_kolmogorov_sf(res.d * sqrt((double)n)), vec_get(t, r, "p_kolmogorov"),
+                     1e-12, 1e-300));
 }
+
+NL_TEST(ks_test_matches_scipy_kstest) { each_sample("ks_one.tsv", ks_case); }
 
 NL_TEST(facts_reference_numbers)
 {
@@ -104,6 +112,14 @@ NL_TEST(ks2_matches_scipy_ks_2samp)
   nl_table_free(t);
 }
 
+static void kuiper_case(const nl_table *t, size_t r, const double *x, size_t n)
+{
+  nl_kuiper_result res;
+  NL_CHECK(nl_kuiper_test_uniform(x, n, 0.0, NL_TWO_PI, &res, NULL) == NL_OK);
+  NL_CHECK_NEAR(res.v, vec_get(t, r, "v"), 1e-15);
+  NL_CHECK(vec_close(res.p, vec_get(t, r, "p"), 1e-9, 1e-300));
+}
+
 NL_TEST(kuiper_matches_astropy)
 {
   nl_table *t = vec_read("kuiper_grid.tsv");
@@ -111,17 +127,7 @@ NL_TEST(kuiper_matches_astropy)
     NL_CHECK(vec_close(nl_kuiper_sf((size_t)vec_get(t, r, "n"), vec_get(t, r, "v")),
                        vec_get(t, r, "p"), 1e-9, 1e-300));
   nl_table_free(t);
-  t = vec_read("kuiper_one.tsv");
-  for (size_t r = 0; r < t->nrows; r++) {
-    size_t n;
-    double *x = read_column(vec_text(t, r, "file"), &n);
-    nl_kuiper_result res;
-    NL_CHECK(nl_kuiper_test_uniform(x, n, 0.0, NL_TWO_PI, &res, NULL) == NL_OK);
-    NL_CHECK_NEAR(res.v, vec_get(t, r, "v"), 1e-15);
-    NL_CHECK(vec_close(res.p, vec_get(t, r, "p"), 1e-9, 1e-300));
-    free(x);
-  }
-  nl_table_free(t);
+  each_sample("kuiper_one.tsv", kuiper_case);
 }
 
 NL_TEST(kuiper_p_within_monte_carlo_error)
@@ -147,24 +153,19 @@ NL_TEST(kuiper_does_not_depend_on_the_cut)
   NL_CHECK_NEAR(a.v, b.v, 1e-12);
 }
 
-NL_TEST(chisq_matches_scipy_chisquare)
+static void chisq_case(const nl_table *t, size_t r, const double *x, size_t n)
 {
-  nl_table *t = vec_read("chisq.tsv");
-  for (size_t r = 0; r < t->nrows; r++) {
-    size_t n;
-    double *x = read_column(vec_text(t, r, "file"), &n);
-    nl_chisq_result res;
-    size_t k = (size_t)vec_get(t, r, "k");
-    NL_CHECK(nl_chisq_test_uniform(x, n, k, 0.0, NL_TWO_PI, &res, NULL) == NL_OK);
-    NL_CHECK(vec_close(res.chi2, vec_get(t, r, "chi2"), 1e-12, 0));
-    NL_CHECK(res.df == (size_t)vec_get(t, r, "df"));
-    NL_CHECK(vec_close(res.p, vec_get(t, r, "p"), 1e-10, 1e-300));
-    NL_CHECK(res.min_expected == vec_get(t, r, "min_expected"));
-    NL_CHECK(res.low_expected == (res.min_expected < 5));
-    free(x);
-  }
-  nl_table_free(t);
+  nl_chisq_result res;
+  size_t k = (size_t)vec_get(t, r, "k");
+  NL_CHECK(nl_chisq_test_uniform(x, n, k, 0.0, NL_TWO_PI, &res, NULL) == NL_OK);
+  NL_CHECK(vec_close(res.chi2, vec_get(t, r, "chi2"), 1e-12, 0));
+  NL_CHECK(res.df == (size_t)vec_get(t, r, "df"));
+  NL_CHECK(vec_close(res.p, vec_get(t, r, "p"), 1e-10, 1e-300));
+  NL_CHECK(res.min_expected == vec_get(t, r, "min_expected"));
+  NL_CHECK(res.low_expected == (res.min_expected < 5));
 }
+
+NL_TEST(chisq_matches_scipy_chisquare) { each_sample("chisq.tsv", chisq_case); }
 
 NL_TEST(incremental_ks_equals_full_recomputation)
 {

@@ -42,6 +42,18 @@ static inline const char *vec_text(const nl_table *t, size_t r, const char *col)
   return t->text[r * t->ncols + (size_t)c];
 }
 
+/* A numeric table as a row-major n x d matrix (caller frees). */
+static inline double *vec_matrix(const char *name, size_t *n, size_t *d)
+{
+  nl_table *t = vec_read(name);
+  double *x = nl_xmalloc(t->nrows * t->ncols * sizeof(double));
+  for (size_t k = 0; k < t->nrows * t->ncols; k++) x[k] = t->num[k];
+  *n = t->nrows;
+  *d = t->ncols;
+  nl_table_free(t);
+  return x;
+}
+
 /* |a - b| <= rel |b| + abs_tol */
 static inline int vec_close(double a, double b, double rel, double abs_tol)
 {

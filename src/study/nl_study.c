@@ -1,5 +1,9 @@
 #include "study/nl_study.h"
 
+#include "spectrum/nl_spectrum.h"
+#include "stats/nl_stats.h"
+
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -65,9 +69,77 @@ void nl_study_octave_settings(const int *oct, int n, int turbulence, nl_setting 
 
 nl_window nl_study_window(nl_run *r)
 {
-  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 512, 16, 4096);
-  double extent = nl_run_param(r, "extent", 4.0, 1e-3, 1e4);
-  double z = nl_run_param(r, "z", 0.5, -1e6, 1e6);
+  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 512, 16, 4096,
+                                   "image side in pixels of each survey slice (quick 128)");
+  double extent = nl_run_param(r, "extent", 4.0, 1e-3, 1e4,
+                               "side of the noise-space square [0, extent)^2 the slice covers");
+  double z = nl_run_param(r, "z", 0.5, -1e6, 1e6,
+                          "z of the 2D slice through Perlin's improved 3D noise");
   nl_window w = {0, 0, z, extent, size, size};
   return w;
+}
+
+nl_table *nl_study_octave_series(nl_run *r, const nl_window *win, int turbulence, const char *slides,
+                                 const char *prefix, const char *title)
+{
+  nl_report_text(r, "**Slides:** %s **Ours:** the slice z = %g of Perlin's improved 3D noise over "
+                    "[0, %g)^2, %d seeds for the numbers.\n", slides, win->z, win->size, nl_run_seeds(r));
+  const int oct[] = {1, 2, 3, 8};   /* the slides' panels (a)-(d) */
+  nl_setting st[4];
+  char labels[4][32];
+  nl_study_octave_settings(oct, 4, turbulence, st, labels);
+  return nl_study_series(r, prefix, title, NL_BASIS_IMPROVED3, st, 4, win);
+}
+
+void nl_study_montage(nl_run *r, const nl_image *const *panels, const char *const *labels, int n,
+                      int cols, const char *title, const char *file)
+{
+  nl_image *m = nl_montage(panels, labels, n, cols, title);
+  nl_run_image(r, m, file);
+  nl_image_free(m);
+}
+
+nl_table *nl_study_radial_table(const double *const *img, const char *const *cols, int n, int size,
+                                int first)
+{
+  int nbins = size / 2;
+  const char **names = nl_xmalloc((size_t)(n + 1) * sizeof *names);
+  names[0] = "freq";
+  for (int i = 0; i < n; i++) names[i + 1] = cols[i];
+  nl_table *t = nl_table_alloc((size_t)n + 1, names);
+  double *f = nl_xmalloc((size_t)nbins * sizeof *f), *p = nl_xmalloc((size_t)n * nbins * sizeof *p);
+  for (int i = 0; i < n; i++) nl_radial_power(img[i], size, size, nbins, f, p + (size_t)i * nbins);
+  for (int b = first; b < nbins; b++) {
+    size_t row = nl_table_append_empty(t);
+    nl_table_set(t, row, "freq", f[b]);
+    for (int i = 0; i < n; i++) nl_table_set(t, row, cols[i], p[(size_t)i * nbins + b]);
+  }
+  free(names); free(f); free(p);
+  return t;
+}
+
+double nl_study_ks_channels(const nl_image *a, const nl_image *b, double *per)
+{
+  size_t n = (size_t)a->width * a->height, m = (size_t)b->width * b->height;
+  double *x = nl_xmalloc(n * sizeof *x), *y = nl_xmalloc(m * sizeof *y), s = 0;
+  for (int c = 0; c < 3; c++) {
+    nl_ks_result res;
+    nl_example_channel(a, c, x);
+    nl_example_channel(b, c, y);
+    nl_ks2_test(x, n, y, m, &res, NULL);
+    if (per) per[c] = res.d;
+    s += res.d / 3;
+  }
+  free(x);
+  free(y);
+  return s;
+}
+
+void nl_study_mean_sd(const double *v, int n, double *m, double *sd)
+{
+  double s = 0, ss = 0;
+  for (int i = 0; i < n; i++) s += v[i];
+  *m = s / n;
+  for (int i = 0; i < n; i++) ss += (v[i] - *m) * (v[i] - *m);
+  *sd = n > 1 ? sqrt(ss / (n - 1)) : 0;
 }

@@ -13,8 +13,52 @@
 #ifndef NL_STUDY_H
 #define NL_STUDY_H
 
+#include "example/nl_example.h"
+#include "image/nl_image.h"
 #include "noise/nl_noise.h"
 #include "report/nl_report.h"
+#include "table/nl_table.h"
+
+/* ---- surveys: what a sum of octaves looks like, over seeds -------------
+ *
+ * nl_survey_run evaluates a sum of octaves of the chosen basis (a fresh
+ * table per seed: seed0, seed0+1, ...) on a window and records, per seed, the
+ * value distribution (mean, sd, min, max) and the radially averaged power
+ * spectrum (frequency in cycles per unit of the window, power normalised as
+ * nl_radial_power), plus the first seed's raster for pictures. Experiments
+ * S1-S4 and sweeps use it so the numbers and the picture come from one pass.
+ */
+typedef enum { NL_BASIS_GRAD2 = 0, NL_BASIS_IMPROVED3 = 1 } nl_basis_kind;
+
+typedef struct {
+  int nseeds, nbins, w, h;
+  double bound;                   /* analytic bound of the sum */
+  double *mean, *sd, *min, *max;  /* per seed */
+  double *freq;                   /* nbins, cycles per unit */
+  double *power;                  /* nseeds * nbins */
+  double *first;                  /* w * h values of the first seed */
+} nl_survey;
+
+nl_survey *nl_survey_run(nl_basis_kind kind, const nl_octaves *o, const nl_window *win,
+                         unsigned long seed0, int nseeds);
+void nl_survey_free(nl_survey *s);
+
+/* A series of surveys, one per setting (the slides' panels (a), (b), ...):
+ *  dist     one row per setting: label, octaves, gain, lacunarity (as given
+ *           in the setting), then over
+ *           seeds the mean and sd of the per-seed mean and sd, the mean
+ *           min and max, the largest |value| seen, the analytic bound and
+ *           their ratio;
+ *  spectrum freq (cycles per unit) and one column of seed-averaged radial
+ *           power per setting, headed by its label;
+ *  panels   the first seed's raster of each setting as a grey image mapped
+ *           from [mean - 3 sd, mean + 3 sd] to [0, 1] (each panel its own
+ *           contrast; the table carries the amplitudes).
+ * Any output pointer may be NULL. */
+typedef struct { const char *label; nl_octaves oct; double gain, lacunarity; } nl_setting;
+void nl_survey_series(nl_basis_kind kind, const nl_setting *settings, int n,
+                      const nl_window *win, unsigned long seed0, int nseeds,
+                      nl_table **dist, nl_table **spectrum, nl_image **panels);
 
 nl_table *nl_study_series(nl_run *r, const char *prefix, const char *title, nl_basis_kind kind,
                           const nl_setting *settings, int n, const nl_window *win);
@@ -28,5 +72,33 @@ nl_window nl_study_window(nl_run *r);
  * written into labels[i] (32 bytes each). */
 void nl_study_octave_settings(const int *oct, int n, int turbulence, nl_setting *settings,
                               char (*labels)[32]);
+
+/* S1 and S2: Shaffer's sums at 1, 2, 3 and 8 octaves (fractal sum, or
+ * turbulence when `turbulence`), introduced by one paragraph ("**Slides:**
+ * SLIDES **Ours:** the slice z = ... over [0, size)^2, K seeds ...") and
+ * surveyed by nl_study_series. Returns the distribution table (caller frees). */
+nl_table *nl_study_octave_series(nl_run *r, const nl_window *win, int turbulence, const char *slides,
+                                 const char *prefix, const char *title);
+
+/* Lays panels out in a montage of `cols` columns (nl_montage), writes it as
+ * FILE in the run's folder (nl_run_image) and frees it: the figure step that
+ * most experiments end a loop with. */
+void nl_study_montage(nl_run *r, const nl_image *const *panels, const char *const *labels, int n,
+                      int cols, const char *title, const char *file);
+
+/* Radially averaged power (nl_radial_power, size / 2 bins, cycles per
+ * pixel) of n square size x size rasters: column "freq" then one column per
+ * raster named cols[i]; rows from bin `first` on. */
+nl_table *nl_study_radial_table(const double *const *img, const char *const *cols, int n, int size,
+                                int first);
+
+/* Two-sample KS distance between the intensities of a and b, per channel
+ * (per[0..2]; may be NULL) and their mean over R, G, B (the return): how
+ * far a synthesis' histograms are from its exemplar's (sec. 5). */
+double nl_study_ks_channels(const nl_image *a, const nl_image *b, double *per);
+
+/* Mean and sample sd (n - 1; 0 for n = 1) of n values, summed in order:
+ * the summaries of quantities measured over seeds. */
+void nl_study_mean_sd(const double *v, int n, double *m, double *sd);
 
 #endif

@@ -100,6 +100,14 @@ void nl_table_set(nl_table *t, size_t r, const char *name, double v)
   t->num[r * t->ncols + c] = v;
 }
 
+void nl_table_set_text(nl_table *t, size_t r, const char *name, const char *text)
+{
+  size_t k = r * t->ncols + nl_table_column_must(t, name);
+  free(t->text[k]);
+  t->text[k] = nl_xstrdup(text);
+  t->num[k] = NAN;
+}
+
 const char *nl_table_cell_text(const nl_table *t, size_t r, size_t c, char *buf)
 {
   size_t k = r * t->ncols + c;

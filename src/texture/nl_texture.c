@@ -90,3 +90,32 @@ void nl_marble_grid(const nl_basis *b, const nl_octaves *o, const nl_window *win
     for (int c = 0; c < win->w; c++) row[c] = nl_marble(omega * y, omega * a, row[c]);
   }
 }
+
+/* ---- Qin & Yang sec. 4 ------------------------------------------------- */
+
+nl_ramp nl_cellular_marble_ramp(void)
+{
+  static const float k[13][3] = {
+    {0.25f, 0.25f, 0.35f}, {0.25f, 0.25f, 0.35f}, {0.10f, 0.10f, 0.30f}, {0.10f, 0.10f, 0.30f},
+    {0.10f, 0.10f, 0.30f}, {0.25f, 0.25f, 0.35f}, {0.25f, 0.25f, 0.35f}, {0.05f, 0.05f, 0.26f},
+    {0.05f, 0.05f, 0.26f}, {0.03f, 0.03f, 0.20f}, {0.03f, 0.03f, 0.20f}, {0.25f, 0.25f, 0.35f},
+    {0.03f, 0.03f, 0.20f}};
+  return nl_ramp_spline(13, k);
+}
+
+static double smoothstep01(double t)
+{
+  t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+  return t * t * (3.0 - 2.0 * t);   /* RenderMan's Hermite smoothstep */
+}
+
+nl_image *nl_gctbf_cloud_colour(const double *v, int w, int h)
+{
+  static const float sky[3] = {0.15f, 0.15f, 0.60f}, cloud[3] = {1.0f, 1.0f, 1.0f};
+  nl_image *im = nl_image_alloc(w, h, 3);
+  for (size_t k = 0; k < (size_t)w * h; k++) {
+    float t = (float)smoothstep01(v[k]);
+    for (int a = 0; a < 3; a++) im->data[3 * k + a] = (1.0f - t) * sky[a] + t * cloud[a];
+  }
+  return im;
+}

@@ -48,4 +48,14 @@ void nl_marble_grid(const nl_basis *b, const nl_octaves *o, const nl_window *win
 nl_ramp nl_ramp_grey(void);
 nl_ramp nl_ramp_marble(void);
 
+/* ---- Qin & Yang's colours (sec. 4), on values from cellular/ ----------
+ * Here rather than in cellular/ so that the cellular module makes numbers
+ * only and never depends on the image module. */
+/* Sec. 4.1's 13-knot blue-marble spline ramp (nl_ramp_spline):
+ * c1 = c2 = c6 = c7 = c12 = (0.25, 0.25, 0.35), c3 = c4 = c5 = (0.10, 0.10, 0.30),
+ * c8 = c9 = (0.05, 0.05, 0.26), c10 = c11 = c13 = (0.03, 0.03, 0.20). */
+nl_ramp nl_cellular_marble_ramp(void);
+/* RGB image of eq. 7's mix(skycolor, cloudcolor, smoothstep(0, 1, v)). */
+nl_image *nl_gctbf_cloud_colour(const double *v, int w, int h);
+
 #endif

@@ -1,9 +1,7 @@
-#include "noise/nl_noise.h"
-#include "base/nl_base.h"
+/* The surveys behind S1-S3 (nl_study.h): harness-side, since they write
+ * tables and images; the noise module itself depends on base only. */
+#include "study/nl_study.h"
 #include "spectrum/nl_spectrum.h"
-
-#include "image/nl_image.h"
-#include "table/nl_table.h"
 
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>

@@ -1,0 +1,298 @@
+/* Tests of the experiment harness (report): option parsing and its errors,
+ * parameters (lookup, range errors, the unknown-name error, --params and
+ * --help), the manifest read back with nl_table_read, regression rules
+ * (well-formed and malformed) and the check engine on two tiny folders.
+ * What must exit (nl_run_die, --params) runs in a forked child whose exit
+ * status and output are read back. */
+#define _GNU_SOURCE   /* open_memstream */
+#include "report/nl_report.h"
+#include "table/nl_table.h"
+#include "nl_test.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+static const char *dir;
+
+/* ---- options -------------------------------------------------------------- */
+
+static nl_status parse(nl_run_options *o, nl_error *err, int argc, const char *const *args)
+{
+  return nl_run_parse(o, argc, (char **)args, err);
+}
+
+NL_TEST(options_parse)
+{
+  nl_run_options o;
+  nl_error err;
+  const char *a[] = {"x", "--out", "d", "--seed", "4294967295", "--seeds", "3", "--quick",
+                     "--set", "size=64", "--set", "z=0.5=1", "--params", "--help"};
+  NL_CHECK(parse(&o, &err, 14, a) == NL_OK);
+  NL_CHECK(strcmp(o.out, "d") == 0 && o.seed == 4294967295UL && o.seeds == 3 && o.quick && o.params && o.help);
+  NL_CHECK(o.nset == 2 && !strcmp(o.set_key[0], "size") && !strcmp(o.set_val[0], "64"));
+  NL_CHECK(!strcmp(o.set_key[1], "z") && !strcmp(o.set_val[1], "0.5=1"));   /* the first '=' splits */
+  nl_run_options_free(&o);
+  const char *none[] = {"x"};
+  NL_CHECK(parse(&o, &err, 1, none) == NL_OK && o.seed == 1 && o.seeds == -1 && !o.out && !o.quick && !o.params);
+  nl_run_options_free(&o);
+}
+
+NL_TEST(option_errors_are_one_line_naming_the_option)
+{
+  static const struct { int argc; const char *args[3]; const char *want; } bad[] = {
+    {2, {"x", "--frobnicate"}, "--frobnicate: unknown option"},
+    {2, {"x", "--out"}, "--out: missing value"},
+    {3, {"x", "--out", ""}, "--out: empty folder name"},
+    {3, {"x", "--seed", "4294967296"}, "--seed"},
+    {3, {"x", "--seed", "-1"}, "--seed"},
+    {3, {"x", "--seeds", "0"}, "--seeds"},
+    {3, {"x", "--seeds", "two"}, "--seeds"},
+    {3, {"x", "--set", "=1"}, "is not NAME=VALUE"},
+    {3, {"x", "--set", "size"}, "is not NAME=VALUE"},
+  };
+  for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
+    nl_run_options o;
+    nl_error err = {{0}};
+    NL_CHECK(parse(&o, &err, bad[i].argc, bad[i].args) == NL_EINVAL);
+    NL_CHECK(strstr(err.msg, bad[i].want) != NULL && !strchr(err.msg, '\n'));
+    NL_CHECK(o.nset == 0 && o.out == NULL);   /* nothing to free on error */
+  }
+}
+
+/* ---- parameters, in a child ------------------------------------------------- */
+
+typedef struct { int status; char out[4096], err[4096]; } child_result;
+
+static void read_into(const char *path, char *buf, size_t n)
+{
+  FILE *f = fopen(path, "r");
+  size_t got = f ? fread(buf, 1, n - 1, f) : 0;
+  buf[got] = '\0';
+  if (f) fclose(f);
+}
+
+/* The little experiment the children run: declares size (int, 16..4096)
+ * and z (double, -1..1), calls nl_run_params_done and says "ran". */
+static int little_experiment(int argc, char **argv)
+{
+  nl_run *r = nl_run_begin("t_exp", "T - a test", argc, argv);
+  long size = nl_run_param_int(r, "size", 64, 16, 4096, "image side in pixels");
+  double z = nl_run_param(r, "z", 0.5, -1, 1, "slice height");
+  nl_run_params_done(r);
+  printf("ran size=%ld z=%g\n", size, z);
+  fflush(stdout);
+  _exit(0);   /* the run is never ended (no output): not a leak for LeakSanitizer */
+}
+
+/* Runs this program again (a fresh process: a forked copy would inherit
+ * OpenBLAS's threads and this test's exit handlers) as the little
+ * experiment with argv[1..], output to files. */
+static child_result run_child(int argc, const char **argv)
+{
+  child_result res;
+  char *o = nl_path_join(dir, "child.out"), *e = nl_path_join(dir, "child.err");
+  const char **args = nl_xcalloc((size_t)argc + 2, sizeof *args);
+  args[0] = "test_report";
+  args[1] = "--child";   /* main's switch; the experiment sees it as its argv[0] */
+  for (int i = 1; i < argc; i++) args[i + 1] = argv[i];
+  fflush(NULL);
+  pid_t pid = fork();
+  if (pid == 0) {
+    if (!freopen(o, "w", stdout) || !freopen(e, "w", stderr)) _exit(99);
+    execv("/proc/self/exe", (char **)args);
+    _exit(98);
+  }
+  waitpid(pid, &res.status, 0);
+  res.status = WIFEXITED(res.status) ? WEXITSTATUS(res.status) : -1;
+  read_into(o, res.out, sizeof res.out);
+  read_into(e, res.err, sizeof res.err);
+  free(o); free(e); free(args);
+  return res;
+}
+
+NL_TEST(parameters_lookup_and_range_errors)
+{
+  const char *ok[] = {"t", "--set", "size=128", "--set", "z=-1"};
+  child_result c = run_child(5, ok);
+  NL_CHECK(c.status == 0 && strstr(c.out, "ran size=128 z=-1"));
+  const char *def[] = {"t"};
+  c = run_child(1, def);
+  NL_CHECK(c.status == 0 && strstr(c.out, "ran size=64 z=0.5"));
+  const char *outside[] = {"t", "--set", "size=8"};
+  c = run_child(3, outside);
+  NL_CHECK(c.status == 2 && strstr(c.err, "t_exp: --set size: ") && strstr(c.err, "outside") && !strstr(c.out, "ran"));
+  const char *notint[] = {"t", "--set", "size=2.5"};
+  c = run_child(3, notint);
+  NL_CHECK(c.status == 2 && strstr(c.err, "--set size"));
+  const char *nan[] = {"t", "--set", "z=nan"};
+  c = run_child(3, nan);
+  NL_CHECK(c.status == 2 && strstr(c.err, "--set z"));
+  const char *unknown[] = {"t", "--set", "sise=1"};
+  c = run_child(3, unknown);
+  NL_CHECK(c.status == 2 && !strcmp(c.err, "t_exp: --set sise: unknown parameter for t_exp (valid: size, z)\n"));
+}
+
+NL_TEST(params_lists_tsv_and_help_reads_well)
+{
+  const char *p[] = {"t", "--params", "--out", "never"};
+  child_result c = run_child(4, p);
+  NL_CHECK(c.status == 0);
+  NL_CHECK(!strcmp(c.out, "name\tdefault\tmin\tmax\tmeaning\n"
+                          "size\t64\t16\t4096\timage side in pixels\n"
+                          "z\t0.5\t-1\t1\tslice height\n"));
+  NL_CHECK(access("never", F_OK) != 0);
+  const char *bad[] = {"t", "--params", "--set", "z=2"};   /* values given are still checked */
+  c = run_child(4, bad);
+  NL_CHECK(c.status == 2 && strstr(c.err, "--set z"));
+  const char *h[] = {"t", "--help"};
+  c = run_child(2, h);
+  NL_CHECK(c.status == 0 && strstr(c.out, "usage: t_exp") && strstr(c.out, "--params"));
+  NL_CHECK(strstr(c.out, "  size ") && strstr(c.out, "[16, 4096]: image side in pixels"));
+  NL_CHECK(strstr(c.out, "  z ") && strstr(c.out, "slice height") && !strstr(c.out, "ran size"));
+}
+
+/* ---- the manifest, read back ---------------------------------------------- */
+
+static const char *manifest_value(const nl_table *m, const char *key, int nth)
+{
+  for (size_t i = 0; i < m->nrows; i++)
+    if (m->text[i * 2] && !strcmp(m->text[i * 2], key) && nth-- == 0) return m->text[i * 2 + 1];
+  return NULL;
+}
+
+NL_TEST(manifest_round_trip)
+{
+  char *out = nl_path_join(dir, "run");
+  const char *argv[] = {"t", "--out", out, "--seed", "7", "--seeds", "2", "--set", "z=0.25"};
+  nl_run *r = nl_run_begin("t_exp", "T - a test", 9, (char **)argv);
+  long size = nl_run_param_int(r, "size", 64, 16, 4096, "image side in pixels");
+  double z = nl_run_param(r, "z", 0.5, -1, 1, "slice height");
+  NL_CHECK(size == 64 && z == 0.25);
+  size_t np;
+  const nl_run_param_info *pi = nl_run_params(r, &np);
+  NL_CHECK(np == 2 && !strcmp(pi[0].name, "size") && pi[0].is_int && pi[1].lo == -1 && !strcmp(pi[1].meaning, "slice height"));
+  nl_run_params_done(r);
+  nl_run_note(r, "pool_bytes", "%d", 123);
+  nl_run_check(r, "a.tsv", "x", "rel 1e-9");
+  nl_run_check(r, "a.tsv", "*", "abs 0.5");
+  nl_run_check(r, "a.tsv", "x", "ignore");   /* the later rule wins */
+  NL_CHECK(!strcmp(nl_run_check_rule(r, "a.tsv", "x"), "ignore"));
+  NL_CHECK(!strcmp(nl_run_check_rule(r, "a.tsv", "y"), "abs 0.5"));
+  NL_CHECK(nl_run_check_rule(r, "b.tsv", "x") == NULL);
+  NL_CHECK(nl_run_end(r) == 0);
+  char *mp = nl_path_join(out, "manifest.tsv"), *cp = nl_path_join(out, "checks.tsv");
+  nl_table *m = NULL, *ck = NULL;
+  nl_error err;
+  NL_CHECK(nl_table_read(mp, NL_TABLE_TEXT, &m, &err) == NL_OK);
+  NL_CHECK(nl_table_read(cp, NL_TABLE_TEXT, &ck, &err) == NL_OK);
+  if (m && ck) {
+    NL_CHECK(m->ncols == 2 && !strcmp(m->names[0], "key") && !strcmp(m->names[1], "value"));
+    NL_CHECK(!strcmp(manifest_value(m, "experiment", 0), "t_exp"));
+    char b[32];
+    for (size_t i = 0; i < m->nrows; i++)
+      if (!strcmp(m->text[i * 2], "seed")) NL_CHECK(!strcmp(nl_table_cell_text(m, i, 1, b), "7"));
+    NL_CHECK(!strcmp(manifest_value(m, "quick", 0), "no"));
+    NL_CHECK(!strcmp(manifest_value(m, "param", 0), "size=64"));
+    NL_CHECK(!strcmp(manifest_value(m, "param", 1), "z=0.25"));
+    const char *cc = manifest_value(m, "compiler", 0);
+    NL_CHECK(cc && (!strncmp(cc, "gcc ", 4) || strstr(cc, "lang")));   /* names the compiler */
+    NL_CHECK(manifest_value(m, "cflags", 0) && manifest_value(m, "blas", 0) && manifest_value(m, "cpu", 0));
+    NL_CHECK(ck->nrows == 2 && !strcmp(ck->text[0 * 3 + 2], "ignore") && !strcmp(ck->text[1 * 3 + 1], "*"));
+  }
+  nl_table_free(m); nl_table_free(ck);
+  free(mp); free(cp); free(out);
+}
+
+/* ---- rules ----------------------------------------------------------------- */
+
+NL_TEST(rules_parse_and_malformed_ones_are_refused)
+{
+  nl_check_rule r;
+  nl_error err;
+  NL_CHECK(nl_check_rule_parse("exact", &r, &err) == NL_OK && r.kind == NL_CHECK_EXACT);
+  NL_CHECK(nl_check_rule_parse("ignore", &r, &err) == NL_OK && r.kind == NL_CHECK_IGNORE);
+  NL_CHECK(nl_check_rule_parse("abs 0.5", &r, &err) == NL_OK && r.kind == NL_CHECK_ABS && r.tol == 0.5);
+  NL_CHECK(nl_check_rule_parse("rel 1e-9", &r, &err) == NL_OK && r.kind == NL_CHECK_REL && r.tol == 1e-9);
+  NL_CHECK(nl_check_rule_parse("welch mean_sd 1e-3", &r, &err) == NL_OK && r.kind == NL_CHECK_WELCH
+           && !strcmp(r.sdcol, "mean_sd") && r.tol == 1e-3);
+  NL_CHECK(nl_check_rule_parse("ftest 0.01", &r, &err) == NL_OK && r.kind == NL_CHECK_FTEST && r.tol == 0.01);
+  static const char *const bad[] = {"", "exactly", "abs", "abs x", "abs -1", "rel 1e-9 extra", "welch 1e-3",
+                                    "welch sd", "welch sd 0.7", "ftest 0", "ftest", "exact 1"};
+  for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
+    err.msg[0] = '\0';
+    NL_CHECK(nl_check_rule_parse(bad[i], &r, &err) == NL_EINVAL && err.msg[0]);
+  }
+  char longrule[400];
+  memset(longrule, 'a', sizeof longrule - 1);
+  longrule[sizeof longrule - 1] = '\0';
+  NL_CHECK(nl_check_rule_parse(longrule, &r, &err) == NL_EINVAL && strstr(err.msg, "too long"));
+}
+
+/* ---- the check engine -------------------------------------------------------- */
+
+static void put(const char *folder, const char *file, const char *text)
+{
+  nl_error err;
+  char *p = nl_path_join(folder, file);
+  NL_CHECK(nl_mkdir_p(folder, &err) == NL_OK);
+  FILE *f = fopen(p, "w");
+  fputs(text, f);
+  fclose(f);
+  free(p);
+}
+
+static const char *MANIFEST = "key\tvalue\nexperiment\tt1\nseed\t1\nseeds\t10\nquick\tno\nparam\tsize=8\ncpu\tX\n";
+
+static nl_status check(const char *a, const char *b, nl_check_state *s, char **report, nl_error *err)
+{
+  size_t n;
+  FILE *fp = open_memstream(report, &n);
+  s->out = fp;
+  nl_status st = nl_report_check_experiment(s, a, b, err);
+  nl_report_check_totals(s);
+  fclose(fp);
+  return st;
+}
+
+NL_TEST(check_engine_on_two_folders)
+{
+  char *ref = nl_path_join(dir, "ref"), *same = nl_path_join(dir, "same"), *moved = nl_path_join(dir, "moved");
+  char *badrule = nl_path_join(dir, "badrule");
+  const char *checks = "table\tcolumn\trule\nd.tsv\tmean\twelch mean_sd 1e-3\nd.tsv\tmean_sd\tftest 1e-3\n"
+                       "d.tsv\tsecs\tignore\n";
+  const char *d = "label\tmean\tmean_sd\tsecs\tcount\na\t0.5\t0.1\t3\t17\nb\t1.5\t0\t1\t4\n";
+  const char *folders[] = {ref, same, moved};
+  for (int k = 0; k < 3; k++) { put(folders[k], "manifest.tsv", MANIFEST); put(folders[k], "checks.tsv", checks); put(folders[k], "d.tsv", d); }
+  put(moved, "d.tsv", "label\tmean\tmean_sd\tsecs\tcount\na\t0.53\t0.12\t99\t17\nb\t1.5\t0\t1\t5\n");
+  nl_check_state s = {0};
+  char *rep = NULL;
+  nl_error err;
+  NL_CHECK(check(ref, same, &s, &rep, &err) == NL_OK && s.drifted == 0 && s.tables == 1);
+  NL_CHECK(strstr(rep, "check: 1 experiment, 1 tables, ") && strstr(rep, " 0 drifted"));
+  free(rep);
+  /* noise under welch passes, the timing is ignored, a count that moved drifts */
+  nl_check_state s2 = {0};
+  NL_CHECK(check(ref, moved, &s2, &rep, &err) == NL_OK && s2.drifted == 1);
+  NL_CHECK(strstr(rep, "t1\td.tsv\t2 [b]\tcount\t4\t5\texact\n") && strstr(rep, "check: t1: 1 drifted; reference vs this run: CPU same (X)"));
+  free(rep);
+  /* bad input is a status and a message, not an exit */
+  put(badrule, "manifest.tsv", MANIFEST);
+  put(badrule, "checks.tsv", "table\tcolumn\trule\nd.tsv\tmean\twelch nosuch 1e-3\n");
+  put(badrule, "d.tsv", d);
+  nl_check_state s3 = {0};
+  NL_CHECK(check(badrule, same, &s3, &rep, &err) == NL_EFORMAT && strstr(err.msg, "no column 'nosuch'"));
+  free(rep);
+  nl_check_state s4 = {0};
+  NL_CHECK(check(ref, "/nonexistent/folder", &s4, &rep, &err) != NL_OK && strstr(err.msg, "manifest.tsv"));
+  free(rep);
+  free(ref); free(same); free(moved); free(badrule);
+}
+
+int main(int argc, char **argv)
+{
+  if (argc > 1 && !strcmp(argv[1], "--child")) return little_experiment(argc - 1, argv + 1);
+  dir = nl_test_tmpdir();
+  return nl_test_run();
+}

@@ -1,0 +1,236 @@
+/* The opening and tables experiments C1-C7 share: --patterns, standard
+ * parameters, summary rows (mean and spread over seeds), CDF, histogram and
+ * height-map tables. */
+#include "study/nl_study_cheng.h"
+#include "stats/nl_stats.h"
+
+#include <gsl/gsl_statistics_double.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void run_params(nl_run *r, nl_cheng_config *c, int *grid)
+{
+  int q = nl_run_quick(r);
+  *c = nl_cheng_config_default();
+  *grid = (int)nl_run_param_int(r, "grid", 64, 2, 1024,
+                                "control grid G: the pattern is read as G x G control cells over the unit square");   /* see nl_cheng.h on grid vs f */
+  c->w1 = nl_run_param(r, "w1", c->w1, 0, 1e6,
+                       "weight w1 of the statistic term E_KS in E = w1 E_KS + w2 E_Con (Cheng eq. 3.9; thesis 0.995)");
+  c->w2 = nl_run_param(r, "w2", c->w2, 0, 1e6,
+                       "weight w2 of the control term E_Con in E = w1 E_KS + w2 E_Con (Cheng eq. 3.9; thesis 0.005)");
+  c->f1 = nl_run_param(r, "f1", c->f1, 0, 1024,
+                       "starting frequency f1 of the fractal sum, f_l = f1 2^(l-1) (Cheng eq. 3.10; thesis 8)");
+  c->a1 = nl_run_param(r, "a1", c->a1, 1e-6, 1e6,
+                       "first octave's amplitude divisor a1, a_l = a1 2^(l-1) (Cheng eq. 3.10; thesis 4)");
+  c->octaves = (int)nl_run_param_int(r, "octaves", c->octaves, 1, NL_CHENG_MAX_OCTAVES,
+                                     "octaves F of the fractal sum, one annealing level each (thesis 4)");
+  c->sched.n_temps = (int)nl_run_param_int(r, "temps", q ? 8 : c->sched.n_temps, 1, 100000,
+                                           "annealing temperature steps per level (n_temps; quick 8)");
+  c->sched.moves_per_var = nl_run_param(r, "moves_per_var", q ? 5 : c->sched.moves_per_var, 1e-3, 1e6,
+                                        "annealing moves per temperature, as a multiple of the level's variables (quick 5)");
+}
+
+nl_run *nl_cheng_begin(const char *name, const char *title, int *argc, char **argv,
+                       nl_cheng_config *c, int *grid, const char **patterns)
+{
+  nl_error err;
+  if (nl_cheng_patterns_parse(argc, argv, patterns, &err)) {
+    fprintf(stderr, "%s: %s\n", name, err.msg);
+    exit(2);
+  }
+  nl_run *r = nl_run_begin(name, title, *argc, argv);
+  run_params(r, c, grid);
+  /* Every pattern loads before the output folder is touched (nl_run_begin
+   * does not touch it; the first write does). */
+  if (nl_cheng_patterns_check(*patterns, *grid, &err))
+    nl_run_die(r, 2, "control patterns: %s (make them with build/tools/noiselab-patterns "
+                     "data/patterns, or pass --patterns DIR)", err.msg);
+  return r;
+}
+
+void nl_cheng_params_done(nl_run *r, const nl_cheng_config *c, const char *patterns)
+{
+  nl_run_params_done(r);
+  nl_error err;
+  if (nl_cheng_config_check(c, &err)) nl_run_die(r, 2, "%s", err.msg);
+  nl_run_note(r, "patterns", "%s", patterns);
+}
+
+static const char *const summary_cols[] = {
+  "seeds", "E_ks", "E_ks_sd", "p_ks", "p_ks_min", "V_kuiper", "V_kuiper_sd", "p_kuiper",
+  "p_kuiper_min", "chi2", "chi2_sd", "p_chi2", "E_con", "E_con_sd", "rms_con", "E",
+  "uniform_ks", "uniform_kuiper", "roughness", "roughness_sd"};
+#define NSUM (sizeof summary_cols / sizeof *summary_cols)
+
+nl_table *nl_cheng_summary_alloc(int nlabels, const char *const *labels)
+{
+  const char *names[32];
+  for (int i = 0; i < nlabels; i++) names[i] = labels[i];
+  for (size_t i = 0; i < NSUM; i++) names[nlabels + (int)i] = summary_cols[i];
+  return nl_table_alloc((size_t)nlabels + NSUM, names);
+}
+
+#define FIELD(evs, k, f, out) do { for (int i_ = 0; i_ < (k); i_++) (out)[i_] = (evs)[i_].f; } while (0)
+
+double nl_study_mean(const double *x, int n) { return gsl_stats_mean(x, 1, (size_t)n); }
+double nl_study_sd(const double *x, int n) { return n > 1 ? gsl_stats_sd(x, 1, (size_t)n) : 0.0; }
+double nl_study_min(const double *x, int n)
+{
+  double m = x[0];
+  for (int i = 1; i < n; i++) m = fmin(m, x[i]);
+  return m;
+}
+
+static double frac_at_least(const double *x, int k, double a)
+{
+  int n = 0;
+  for (int i = 0; i < k; i++) n += x[i] >= a;
+  return (double)n / k;
+}
+
+/* Appends one row: label cells as text (numbers read back as numbers), then
+ * the mean (and sd, min) over the k runs; uniform_* = fraction of runs whose
+ * p-value is >= 0.05 (not rejected as non-uniform at alpha = 0.05). */
+void nl_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
+                          const nl_cheng_eval *evs, int k)
+{
+  double *x = nl_xmalloc((size_t)k * sizeof *x), row[NSUM];
+  int c = 0;
+  row[c++] = k;
+  FIELD(evs, k, e_ks, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, p_ks, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_min(x, k);
+  double uks = frac_at_least(x, k, 0.05);
+  FIELD(evs, k, kuiper_v, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, p_kuiper, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_min(x, k);
+  double uku = frac_at_least(x, k, 0.05);
+  FIELD(evs, k, chi2, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, p_chi2, x); row[c++] = nl_study_mean(x, k);
+  FIELD(evs, k, e_con, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, rms_con, x); row[c++] = nl_study_mean(x, k);
+  FIELD(evs, k, e, x); row[c++] = nl_study_mean(x, k);
+  row[c++] = uks;
+  row[c++] = uku;
+  FIELD(evs, k, roughness, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  size_t r = nl_table_append_empty(t);
+  for (size_t i = 0; i < NSUM; i++) nl_table_set(t, r, summary_cols[i], row[i]);
+  for (int i = 0; i < nlabels; i++) nl_table_set_text(t, r, t->names[i], labels[i]);
+  free(x);
+}
+
+nl_table *nl_cheng_cdf_table(const nl_grad2 *const *tables, const char *const *names, int n)
+{
+  const char *cols[16];
+  char buf[16][48];
+  cols[0] = "F";
+  for (int i = 0; i < n; i++) { snprintf(buf[i], sizeof buf[i], "u_%s", names[i]); cols[i + 1] = buf[i]; }
+  nl_table *t = nl_table_alloc((size_t)n + 1, cols);
+  size_t m = tables[0]->m;
+  double *sorted = nl_xmalloc((size_t)n * m * sizeof *sorted), row[16];
+  for (int i = 0; i < n; i++) {
+    memcpy(sorted + (size_t)i * m, tables[i]->angle, m * sizeof *sorted);
+    nl_sort_double(sorted + (size_t)i * m, m);
+  }
+  for (size_t q = 0; q < m; q++) {
+    row[0] = (double)(q + 1) / (double)m;   /* ECDF just after the q-th order statistic */
+    for (int i = 0; i < n; i++) row[i + 1] = sorted[(size_t)i * m + q] / NL_TWO_PI;
+    nl_table_append_doubles(t, row);
+  }
+  free(sorted);
+  return t;
+}
+
+nl_table *nl_cheng_hist_table(const nl_grad2 *const *tables, const char *const *names, int n,
+                              size_t bins)
+{
+  const char *cols[16];
+  cols[0] = "theta";
+  for (int i = 0; i < n; i++) cols[i + 1] = names[i];
+  nl_table *t = nl_table_alloc((size_t)n + 1, cols);
+  gsl_histogram *h[16];
+  for (int i = 0; i < n; i++) h[i] = nl_histogram_uniform(tables[i]->angle, tables[i]->m, bins, 0, NL_TWO_PI, NULL, NULL);
+  double row[16];
+  for (size_t b = 0; b < bins; b++) {
+    row[0] = (b + 0.5) * NL_TWO_PI / (double)bins;
+    for (int i = 0; i < n; i++) row[i + 1] = h[i]->bin[b];
+    nl_table_append_doubles(t, row);
+  }
+  for (int i = 0; i < n; i++) gsl_histogram_free(h[i]);
+  return t;
+}
+
+nl_table *nl_cheng_matrix_table(const double *v, int w, int h)
+{
+  char (*names)[16] = nl_xmalloc((size_t)w * sizeof *names);
+  const char **cols = nl_xmalloc((size_t)w * sizeof *cols);
+  for (int x = 0; x < w; x++) { snprintf(names[x], sizeof names[x], "c%d", x); cols[x] = names[x]; }
+  nl_table *t = nl_table_alloc((size_t)w, cols);
+  for (int y = 0; y < h; y++) nl_table_append_doubles(t, v + (size_t)y * w);
+  free(cols);
+  free(names);
+  return t;
+}
+
+void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title, int *argc, char **argv)
+{
+  s->r = nl_cheng_begin(name, title, argc, argv, &s->c, &s->grid, &s->patterns);
+}
+
+void nl_study_cheng_ready(nl_study_cheng *s) { nl_cheng_params_done(s->r, &s->c, s->patterns); }
+
+nl_cheng_pattern *nl_study_cheng_pattern(const nl_study_cheng *s, const char *name)
+{
+  return nl_cheng_pattern_load_or_die(nl_run_name(s->r), s->patterns, name, s->grid);
+}
+
+nl_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_config *c,
+                               const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
+                               const char *const *labels)
+{
+  int k = nl_run_seeds(s->r);
+  nl_cheng_eval *evs = nl_xmalloc((size_t)k * sizeof *evs);
+  nl_grad2 *first;
+  nl_error err;
+  if (nl_cheng_run_seeds(c, pat, nl_run_seed(s->r), k, evs, &first, &err)) nl_run_die(s->r, 1, "%s", err.msg);
+  nl_cheng_summary_add(sum, nlabels, labels, evs, k);
+  free(evs);
+  return first;
+}
+
+void nl_study_cheng_montage(nl_run *r, nl_image **panels, const char *const *labels, int n, int cols,
+                            const char *title, const char *file)
+{
+  nl_image *m = nl_montage((const nl_image *const *)panels, labels, n, cols, title);
+  nl_run_image(r, m, file);
+  nl_image_free(m);
+  for (int i = 0; i < n; i++) nl_image_free(panels[i]);
+}
+
+double nl_study_column_min(const nl_table *t, const char *col)
+{
+  double m = INFINITY;
+  for (size_t q = 0; q < t->nrows; q++) m = fmin(m, nl_table_value(t, q, col));
+  return m;
+}
+
+const char *nl_study_text(const nl_table *t, size_t r, const char *col)
+{
+  return t->text[r * t->ncols + nl_table_column_must(t, col)];
+}
+
+nl_table *nl_study_cheng_table41(const nl_table *runs, const double (*thesis)[NL_STUDY_TABLE41_COLS], int npair)
+{
+  const char *cc[] = {"panel", "w1", "w2", "E_ks_thesis", "E_ks", "E_ks_sd", "E_con_thesis", "E_con", "E_con_sd",
+                      "E_ks_swapped", "E_con_swapped", "p_ks_min", "p_kuiper_min"};
+  nl_table *cmp = nl_table_alloc(sizeof cc / sizeof *cc, cc);
+  for (int i = 0; i < npair; i++) {
+    size_t p = 2 * (size_t)i, s = p + 1;   /* printed, swapped */
+    char panel[4] = {(char)('a' + i), 0};
+    nl_table_append(cmp, "sdddddddddddd", panel, thesis[i][0], thesis[i][2], thesis[i][1],
+                    nl_table_value(runs, p, "E_ks"), nl_table_value(runs, p, "E_ks_sd"), thesis[i][3],
+                    nl_table_value(runs, p, "E_con"), nl_table_value(runs, p, "E_con_sd"),
+                    nl_table_value(runs, s, "E_ks"), nl_table_value(runs, s, "E_con"),
+                    nl_table_value(runs, p, "p_ks_min"), nl_table_value(runs, p, "p_kuiper_min"));
+  }
+  return cmp;
+}

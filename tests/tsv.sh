@@ -1,0 +1,34 @@
+# tests/tsv.sh - tables by column name for the shell tests (sourced:
+#   . "$(dirname "$0")/tsv.sh").
+# Tests address a column by its header, never by its position, so that a
+# column added to a table shifts no check (as nl_table_value does in C and
+# `set datafile columnheaders` in gnuplot).
+#
+#   tsv_awk [-v NAME=VALUE ...] 'PROGRAM' FILE...
+#       awk -F'\t' with, before PROGRAM, a rule that reads the header of
+#       each file (FNR == 1) and two functions:
+#         col("name")  the column's index in the current file
+#         v("name")    the current row's value in that column, as text
+#         n("name")    the same as a number
+#       A name the file does not have stops awk with exit 2 and a message.
+#   tsv_cut FILE NAME      the column NAME of FILE (header included), as cut -f
+TSV_AWK_LIB='
+FNR == 1 { split("", TSV_COL); for (TSV_I = 1; TSV_I <= NF; TSV_I++) TSV_COL[$TSV_I] = TSV_I }
+function col(name) {
+  if (!(name in TSV_COL)) { printf "tsv: no column \"%s\" in %s\n", name, FILENAME > "/dev/stderr"; exit 2 }
+  return TSV_COL[name]
+}
+function v(name) { return $(col(name)) "" }
+function n(name) { return $(col(name)) + 0 }
+'
+
+tsv_awk() {
+  local opts=()
+  while [ "$#" -gt 1 ] && [ "$1" = -v ]; do opts+=("$1" "$2"); shift 2; done
+  local prog="$1"; shift
+  awk -F'\t' "${opts[@]}" "$TSV_AWK_LIB$prog" "$@"
+}
+
+tsv_cut() {
+  tsv_awk -v name="$2" '{ print v(name) }' "$1"
+}
