@@ -26,12 +26,12 @@ static void g_noise3(const void *ctx, double *out)
 {
   double dx = EXTENT / N;
   for (int r = 0; r < N; r++)
-    nl_noise3_row(ctx, 0.5 * dx, dx, (r + 0.5) * dx, 0.5, (size_t)N, out + (size_t)r * N);
+    nl_noise_perm3_row(ctx, 0.5 * dx, dx, (r + 0.5) * dx, 0.5, (size_t)N, out + (size_t)r * N);
 }
 
 static void g_noise3_random(const void *ctx, double *out)
 {
-  for (size_t k = 0; k < (size_t)N * N; k++) out[k] = nl_noise3(ctx, rx[k], ry[k], rz[k]);
+  for (size_t k = 0; k < (size_t)N * N; k++) out[k] = nl_noise_perm3_eval(ctx, rx[k], ry[k], rz[k]);
 }
 
 /* out holds 4 N^2 doubles. */
@@ -52,10 +52,10 @@ static void g_cell_random(const void *ctx, double *out)
 
 static void g_gctbf(const void *ctx, double *out)
 {
-  const nl_gctbf_basis *b = ctx;
+  const nl_cellular_gctbf_basis *b = ctx;
   double dx = EXTENT / N;
   for (int r = 0; r < N; r++)
-    nl_gctbf_row(b->cell, &b->g, 0.5 * dx, dx, (r + 0.5) * dx, 0.5, (size_t)N, out + (size_t)r * N);
+    nl_cellular_gctbf_row(b->cell, &b->g, 0.5 * dx, dx, (r + 0.5) * dx, 0.5, (size_t)N, out + (size_t)r * N);
 }
 
 
@@ -70,13 +70,13 @@ int main(int argc, char **argv)
   for (size_t k = 0; k < np; k++) {
     rx[k] = EXTENT * rand() / RAND_MAX; ry[k] = EXTENT * rand() / RAND_MAX; rz[k] = EXTENT * rand() / RAND_MAX;
   }
-  nl_perm3 p;
-  nl_perm3_reference(&p);
+  nl_noise_perm3 p;
+  nl_noise_perm3_reference(&p);
   nl_cellular *ci, *cc;
   if (nl_cellular_alloc(4.0, 50, NL_COUNT_INVERSE_CDF, 1, &ci, NULL) ||
       nl_cellular_alloc(4.0, 50, NL_COUNT_CLOSEST, 1, &cc, NULL)) return 1;
-  nl_gctbf_basis gb = {ci, {0}};
-  nl_gctbf_parse("F2 - F1 - F1F1", &gb.g, NULL);
+  nl_cellular_gctbf_basis gb = {ci, {0}};
+  nl_cellular_gctbf_parse("F2 - F1 - F1F1", &gb.g, NULL);
 
   double n3 = nl_bench_rate(g_noise3, &p, out, (size_t)N * N), n3r = nl_bench_rate(g_noise3_random, &p, out, (size_t)N * N);
   double ri = nl_bench_rate(g_cell_rows, ci, out, (size_t)N * N), rc = nl_bench_rate(g_cell_rows, cc, out, (size_t)N * N);
@@ -85,11 +85,11 @@ int main(int argc, char **argv)
          "# Mpoints/s (best of 3); cellular: lambda = 4, M = 50, all of F1..F4 per point\n",
          N, N, EXTENT, EXTENT);
   printf("%-40s %10s %10s\n", "function", "Mpoint/s", "vs noise3");
-  printf("%-40s %10.2f %10s\n", "nl_noise3_row (improved 3D)", n3, "1.000");
+  printf("%-40s %10.2f %10s\n", "nl_noise_perm3_row (improved 3D)", n3, "1.000");
   printf("%-40s %10.2f %10.3f\n", "nl_cellular_row F1..F4 (inverse CDF)", ri, ri / n3);
   printf("%-40s %10.2f %10.3f\n", "nl_cellular_row F1..F4 (closest-p rule)", rc, rc / n3);
-  printf("%-40s %10.2f %10.3f\n", "nl_gctbf_row F2 - F1 - F1F1", gr, gr / n3);
-  printf("%-40s %10.2f %10s\n", "nl_noise3 random points", n3r, "1.000");
+  printf("%-40s %10.2f %10.3f\n", "nl_cellular_gctbf_row F2 - F1 - F1F1", gr, gr / n3);
+  printf("%-40s %10.2f %10s\n", "nl_noise_perm3_eval random points", n3r, "1.000");
   printf("%-40s %10.2f %10.3f\n", "nl_cellular_eval F1..F4 random points", pr, pr / n3r);
   nl_cellular_free(ci); nl_cellular_free(cc);
   free(out); free(rx); free(ry); free(rz);

@@ -60,9 +60,9 @@ int main(int argc, char **argv)
       if (nl_cheng_stat_parse(argv[++i], &c.stat, &err)) { fprintf(stderr, "bench_cheng: %s\n", err.msg); return 2; }
     } else { fprintf(stderr, "bench_cheng: unknown argument '%s'\n", argv[i]); return 2; }
   }
-  nl_image *im = nl_cheng_shape("flower", 128);
+  nl_image *im = nl_study_cheng_shape("flower", 128);
   nl_cheng_pattern *pat;
-  if (nl_cheng_pattern_from_image(im, (int)grid, &pat, &err)) { fprintf(stderr, "bench_cheng: %s\n", err.msg); return 1; }
+  if (nl_study_cheng_pattern_from_image(im, (int)grid, &pat, &err)) { fprintf(stderr, "bench_cheng: %s\n", err.msg); return 1; }
   nl_image_free(im);
   printf("bench_cheng: M = %zu, F = %d, f1 = %g, a1 = %g, objective %s, %ld x %ld control grid (%zu points), "
          "schedule %d temps x %g moves/var\n", c.m, c.octaves, c.f1, c.a1, nl_cheng_stat_name(c.stat), grid, grid,
@@ -72,8 +72,8 @@ int main(int argc, char **argv)
   long moves = 0;
   double anneal_s = 0, lvl_moves[8] = {0}, lvl_s[8] = {0};
   for (long s = 0; s < reps; s++) {
-    nl_grad2 *g = nl_grad2_alloc(c.m);
-    nl_grad2_seed(g, nl_seed_replicate(1, s));
+    nl_noise_grad2 *g = nl_noise_grad2_alloc(c.m);
+    nl_noise_grad2_seed(g, nl_seed_replicate(1, s));
     nl_cheng_level_stats st[8];
     double t0 = nl_time_now();
     nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
@@ -86,7 +86,7 @@ int main(int argc, char **argv)
       lvl_s[L] += st[L].seconds;
     }
     nl_cheng_problem_free(p);
-    nl_grad2_free(g);
+    nl_noise_grad2_free(g);
   }
   for (int L = 0; L < c.octaves; L++)
     printf("  level %d: %.0f moves per optimisation, %.2f M moves/s\n", L + 1, lvl_moves[L] / reps,
@@ -95,13 +95,13 @@ int main(int argc, char **argv)
   printf("annealing: %.2f M moves/s overall (%ld moves in %.2f s)\n", (double)moves / anneal_s / 1e6, moves, anneal_s);
   printf("full 4-level optimisation: best %.3f s, median %.3f s over %ld runs\n", wall[0], wall[reps / 2], reps);
 
-  nl_grad2 *g = nl_grad2_alloc(c.m);
-  nl_grad2_seed(g, 1);
+  nl_noise_grad2 *g = nl_noise_grad2_alloc(c.m);
+  nl_noise_grad2_seed(g, 1);
   nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
   printf("raw move + undo (uniform new angle): level 1 %.2f M pairs/s, level 4 %.2f M pairs/s\n",
          raw_moves_per_second(p, 1) / 1e6, raw_moves_per_second(p, c.octaves) / 1e6);
   nl_cheng_problem_free(p);
-  nl_grad2_free(g);
+  nl_noise_grad2_free(g);
   nl_cheng_pattern_free(pat);
   free(wall);
   return 0;

@@ -1,28 +1,28 @@
 /* bench_example - speed of noise by example (issue targets: analysis of a
  * 512 x 512 RGB exemplar < 0.5 s, synthesis of 1024 x 1024 RGB < 1 s, on
  * one core) and the wavelet-noise evaluation rate. Best of 5 runs each. */
-#include "example/nl_example.h"
+#include "byexample/nl_byexample.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 
 int main(void)
 {
-  nl_image *ex = nl_example_exemplar("granite", 512, 1), *out;
-  nl_example_params p;
+  nl_image *ex = nl_byexample_exemplar("granite", 512, 1), *out;
+  nl_byexample_params p;
   double best_a = 1e30, best_s = 1e30, best_w = 1e30, best_cold = 0;
   /* First analysis includes measuring sigma_N^2 (4 tiles), as a fresh
    * `noiselab example analyse` process does. */
   double t0 = nl_time_now();
-  nl_example_analyse(ex, NULL, &p, NULL);
+  nl_byexample_analyse(ex, NULL, &p, NULL);
   best_cold = nl_time_now() - t0;
   for (int i = 0; i < 5; i++) {
     t0 = nl_time_now();
-    nl_example_analyse(ex, NULL, &p, NULL);
+    nl_byexample_analyse(ex, NULL, &p, NULL);
     double t = nl_time_now() - t0;
     if (t < best_a) best_a = t;
     t0 = nl_time_now();
-    nl_example_synthesize(&p, 1024, 1024, (unsigned long)i + 1, NULL, &out, NULL);
+    nl_byexample_synthesize(&p, 1024, 1024, (unsigned long)i + 1, NULL, &out, NULL);
     t = nl_time_now() - t0;
     if (t < best_s) best_s = t;
     nl_image_free(out);

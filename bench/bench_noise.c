@@ -51,21 +51,21 @@ enum { ROUNDS = 9 };   /* rounds of >= 0.1 s CPU per kernel */
 static void g_noise2(const void *ctx, double *out)
 {
   double dx = EXTENT / N;
-  for (int r = 0; r < N; r++) nl_noise2_row(ctx, 0.5 * dx, dx, (r + 0.5) * dx, (size_t)N, out + (size_t)r * N);
+  for (int r = 0; r < N; r++) nl_noise_grad2_row(ctx, 0.5 * dx, dx, (r + 0.5) * dx, (size_t)N, out + (size_t)r * N);
 }
 
 static void g_noise3(const void *ctx, double *out)
 {
   double dx = EXTENT / N;
-  for (int r = 0; r < N; r++) nl_noise3_row(ctx, 0.5 * dx, dx, (r + 0.5) * dx, 0.5, (size_t)N, out + (size_t)r * N);
+  for (int r = 0; r < N; r++) nl_noise_perm3_row(ctx, 0.5 * dx, dx, (r + 0.5) * dx, 0.5, (size_t)N, out + (size_t)r * N);
 }
 
 static void g_fbm(const void *ctx, double *out)
 {
-  const nl_basis *b = ctx;
-  nl_octaves o = nl_octaves_fbm(4, 0.5, 2.0);
-  nl_window w = {0, 0, 0.5, EXTENT, N, N};
-  nl_fractal_grid(b, &o, &w, out);
+  const nl_noise_basis *b = ctx;
+  nl_noise_octaves o = nl_noise_octaves_fbm(4, 0.5, 2.0);
+  nl_noise_window w = {0, 0, 0.5, EXTENT, N, N};
+  nl_noise_fractal_grid(b, &o, &w, out);
 }
 
 static void g_stb3(const void *ctx, double *out)
@@ -176,19 +176,19 @@ int main(int argc, char **argv)
   for (size_t k = 0; k < (size_t)N * N; k++) {
     rx[k] = EXTENT * rand() / RAND_MAX; ry[k] = EXTENT * rand() / RAND_MAX; rz[k] = EXTENT * rand() / RAND_MAX;
   }
-  nl_grad2 *t = nl_grad2_alloc(512);
-  nl_grad2_seed(t, 1);
-  nl_perm3 p;
-  nl_perm3_reference(&p);
-  nl_basis b2 = nl_basis_grad2(t), b3 = nl_basis_perm3(&p);
+  nl_noise_grad2 *t = nl_noise_grad2_alloc(512);
+  nl_noise_grad2_seed(t, 1);
+  nl_noise_perm3 p;
+  nl_noise_perm3_reference(&p);
+  nl_noise_basis b2 = nl_noise_basis_grad2(t), b3 = nl_noise_basis_perm3(&p);
   nl_wavelet_tile *wt = nl_wavelet_tile_alloc(2, 256);
   nl_wavelet_tile_seed(wt, 1);
 
   /* fbm: 1 compares with stb's fBm, 0 and 2 with stb_perlin_noise3 */
   struct { const char *name, *label; void (*f)(const void *, double *); const void *ctx; int fbm; timing tm; } k[] = {
-    {"noise3_row", "nl_noise3_row (improved 3D)", g_noise3, &p, 0, {0, 0, 0}},
+    {"noise3_row", "nl_noise_perm3_row (improved 3D)", g_noise3, &p, 0, {0, 0, 0}},
     {"noise3_points", "nl_noise_perm3_points, random", g_noise3_points, &p, 0, {0, 0, 0}},
-    {"noise2_row", "nl_noise2_row (2D table, M=512)", g_noise2, t, 0, {0, 0, 0}},
+    {"noise2_row", "nl_noise_grad2_row (2D table, M=512)", g_noise2, t, 0, {0, 0, 0}},
     {"noise2_points", "nl_noise_grad2_points, random", g_noise2_points, t, 0, {0, 0, 0}},
     {"fbm4_3d_row", "fbm 4 oct, improved 3D", g_fbm, &b3, 1, {0, 0, 0}},
     {"fbm4_2d_row", "fbm 4 oct, 2D table", g_fbm, &b2, 1, {0, 0, 0}},
@@ -229,7 +229,7 @@ int main(int argc, char **argv)
              k[i].tm.rate / (k[i].fbm == 1 ? stbf.rate : stb.rate));
     }
   }
-  nl_grad2_free(t);
+  nl_noise_grad2_free(t);
   nl_wavelet_tile_free(wt);
   free(out); free(rx); free(ry); free(rz);
   return 0;

@@ -84,7 +84,7 @@ static void bench_gmm(const double *x, const int *labels)
 }
 
 /* Runs linkage in a child so that its peak RSS is its own. */
-static void bench_linkage(const double *x, nl_linkage_method m, const char *name)
+static void bench_linkage(const double *x, nl_cluster_linkage_method m, const char *name)
 {
   fflush(stdout);
   pid_t pid = fork();
@@ -92,7 +92,7 @@ static void bench_linkage(const double *x, nl_linkage_method m, const char *name
     double *Z = nl_xmalloc((N - 1) * 4 * sizeof(double));
     double t0 = nl_time_now();
     nl_error err;
-    if (nl_linkage(x, N, D, m, Z, &err)) { fprintf(stderr, "%s\n", err.msg); _exit(1); }
+    if (nl_cluster_linkage(x, N, D, m, Z, &err)) { fprintf(stderr, "%s\n", err.msg); _exit(1); }
     double t = nl_time_now() - t0;
     printf("linkage  C    %-8s n=%d d=%d: %.3f s, top merge height %.10g\n", name, N, D, t, Z[4 * (N - 2) + 2]);
     fflush(stdout);
@@ -109,19 +109,19 @@ static void bench_ks(gsl_rng *rng)
   enum { M = 512 };
   double a[M], ab[2] = {0.0, NL_TWO_PI};
   for (int i = 0; i < M; i++) a[i] = NL_TWO_PI * gsl_rng_uniform(rng);
-  nl_ks_result r;
+  nl_stats_ks_result r;
   int reps = 20000;
   double t0 = nl_time_now(), sink = 0.0;
   for (int i = 0; i < reps; i++) {
     a[i % M] = NL_TWO_PI * gsl_rng_uniform(rng);
-    nl_ks_test_uniform(a, M, 0.0, NL_TWO_PI, &r, NULL);
+    nl_stats_ks_test_uniform(a, M, 0.0, NL_TWO_PI, &r, NULL);
     sink += r.p;
   }
   double t = (nl_time_now() - t0) / reps;
   printf("ks       C    n=%d exact p (sort + D + p): %.2f us/call  (last D=%.6f p=%.6f method=%s)\n",
-         M, t * 1e6, r.d, r.p, nl_ks_method_name(r.method));
+         M, t * 1e6, r.d, r.p, nl_stats_ks_method_name(r.method));
   /* annealer moves: small perturbations and random jumps, half each */
-  nl_ks_incr *s = nl_ks_incr_alloc(a, M, nl_cdf_uniform, ab, NULL);
+  nl_stats_ks_incr *s = nl_stats_ks_incr_alloc(a, M, nl_stats_cdf_uniform, ab, NULL);
   int moves = 2000000;
   double *steps = nl_xmalloc(2 * (size_t)moves * sizeof(double));
   for (int i = 0; i < moves; i++) {
@@ -132,7 +132,7 @@ static void bench_ks(gsl_rng *rng)
   for (int i = 0; i < moves; i++) {
     size_t j = (size_t)steps[2 * i];
     double nv = i % 2 ? fmod(a[j] + steps[2 * i + 1] + NL_TWO_PI, NL_TWO_PI) : steps[2 * i + 1];
-    nl_ks_incr_replace(s, a[j], nv, NULL);
+    nl_stats_ks_incr_replace(s, a[j], nv, NULL);
     a[j] = nv;
     sink += s->d;
   }
@@ -143,7 +143,7 @@ static void bench_ks(gsl_rng *rng)
   memcpy(u, s->u, sizeof u);
   t0 = nl_time_now();
   for (int i = 0; i < moves; i++) {
-    nl_ks_statistic(u, M, &dp, &dm);
+    nl_stats_ks_statistic(u, M, &dp, &dm);
     sink += dp + dm;
   }
   t = nl_time_now() - t0;
@@ -151,7 +151,7 @@ static void bench_ks(gsl_rng *rng)
          M, t / moves * 1e9);
   if (sink == 42.0) printf(" ");
   free(steps);
-  nl_ks_incr_free(s);
+  nl_stats_ks_incr_free(s);
 }
 
 static void run_python(const char *dir)
@@ -201,7 +201,7 @@ int main(int argc, char **argv)
     size_t best = 0;
     double bd = INFINITY;
     for (size_t k = 0; k < K; k++) {
-      double dd = nl_euclidean(x + i * D, g->means + k * D, D);
+      double dd = nl_cluster_euclidean(x + i * D, g->means + k * D, D);
       if (dd < bd) { bd = dd; best = k; }
     }
     labels[i] = (int)best;

@@ -4,7 +4,7 @@
 # kernel (OpenBLAS picks one per CPU at load time), BLAS's thread count, and
 # glibc's libm variants (exp, log, pow, sin have FMA versions chosen per CPU).
 # Its output, data/blas_spread.tsv, is what the experiments' regression
-# tolerances are set from (nl_run_check_measured in src/report/nl_report.h).
+# tolerances are set from (nl_harness_check_measured in src/harness/nl_harness.h).
 #
 #   bash bench/blas-spread.sh [--quick] [--out DIR] [--configs A,B,...] EXPERIMENT...
 #

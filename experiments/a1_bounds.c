@@ -3,21 +3,21 @@
  * random points of Perlin's improved 3D noise, under the paper's assumption
  * |noise| <= 1 and under the noise's analytic bound. */
 #include "bounds/nl_bounds.h"
-#include "report/nl_report.h"
+#include "harness/nl_harness.h"
 
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>
 
 int main(int argc, char **argv)
 {
-  nl_run *r = nl_run_begin("a1_bounds", "A1 - Octave, fractal and incremental bounds", argc, argv);
-  int nmax = (int)nl_run_param_int(r, "octaves", nl_run_quick(r) ? 8 : 12, 1, 30,
+  nl_harness *r = nl_harness_begin("a1_bounds", "A1 - Octave, fractal and incremental bounds", argc, argv);
+  int nmax = (int)nl_harness_param_int(r, "octaves", nl_harness_quick(r) ? 8 : 12, 1, 30,
                                    "largest octave count n the bounds are evaluated at (quick 8)");
-  long points = nl_run_param_int(r, "points", nl_run_quick(r) ? 5000 : 100000, 1, 100000000,
+  long points = nl_harness_param_int(r, "points", nl_harness_quick(r) ? 5000 : 100000, 1, 100000000,
                                  "random evaluation points per octave count the bounds are checked against (quick 5000)");
-  nl_run_params_done(r);
-  int seeds = nl_run_seeds(r);
-  unsigned long seed0 = nl_run_seed(r);
+  nl_harness_params_done(r);
+  int seeds = nl_harness_seeds(r);
+  unsigned long seed0 = nl_harness_seed(r);
 
   const char *cols[] = {"octaves", "S", "bound", "max_abs", "max_abs_mean", "max_abs_sd",
                         "max_noise", "points", "over_paper", "over_paper_incremental",
@@ -25,12 +25,12 @@ int main(int argc, char **argv)
   nl_table *t = nl_table_alloc(12, cols);
   double *maxes = nl_xmalloc((size_t)seeds * sizeof *maxes);
   for (int n = 1; n <= nmax; n++) {
-    nl_octaves o = nl_octaves_fractal(n);
+    nl_noise_octaves o = nl_noise_octaves_fractal(n);
     long over_p = 0, over_pi = 0, over_b = 0, over_bi = 0;
     double max_noise = 0;
     for (int s = 0; s < seeds; s++) {
-      nl_perm3 p;
-      nl_perm3_seed(&p, nl_seed_replicate(seed0, s));
+      nl_noise_perm3 p;
+      nl_noise_perm3_seed(&p, nl_seed_replicate(seed0, s));
       nl_bounds_check paper, ours;
       nl_bounds_check_random(&p, &o, 1.0, points, nl_seed_stream(nl_seed_replicate(seed0, s), "a1.points", (unsigned long)n), &paper);
       nl_bounds_check_random(&p, &o, NL_NOISE3_BOUND, points, nl_seed_stream(nl_seed_replicate(seed0, s), "a1.points", (unsigned long)n), &ours);
@@ -45,11 +45,11 @@ int main(int argc, char **argv)
     nl_table_append(t, "iddddddiiiii", n, nl_bounds_fractal(n), NL_NOISE3_BOUND * nl_bounds_fractal(n),
                     mx, mean, sd, max_noise, (int)(points * seeds), (int)over_p, (int)over_pi,
                     (int)over_b, (int)over_bi);
-    nl_run_progress(r, (double)n / nmax, "octaves");
+    nl_harness_progress(r, (double)n / nmax, "octaves");
   }
-  nl_run_table(r, t, "bounds.tsv");
+  nl_harness_write_table(r, t, "bounds.tsv");
 
-  nl_report_text(r, "**Paper:** |b_i| <= 2^-i (eq. 4.1), |Fnoise_n| <= S_{n-1}, S_n = 2 - 2^-n "
+  nl_harness_text(r, "**Paper:** |b_i| <= 2^-i (eq. 4.1), |Fnoise_n| <= S_{n-1}, S_n = 2 - 2^-n "
                     "(eq. 4.2-4.3), and after k octaves the rest of the sum adds at most "
                     "S_{Nmax-1} - S_{k-1} (eq. 5.3-5.4, read as the interval partial +- remainder). "
                     "All assume |noise| <= 1.\n\n"
@@ -59,8 +59,8 @@ int main(int argc, char **argv)
                     "(NL_NOISE3_BOUND, gradients of length sqrt 2). `over_*` count points whose sum "
                     "leaves the fractal bound, or some incremental interval.\n",
                   points, seeds, NL_NOISE3_BOUND);
-  nl_report_table(r, t, "Observed extremes against the bounds", 4);
-  nl_report_figure(r, "bounds.png", "Largest |Fnoise_n| seen against S_{n-1} and 1.2247 S_{n-1}");
+  nl_harness_report_table(r, t, "Observed extremes against the bounds", 4);
+  nl_harness_figure(r, "bounds.png", "Largest |Fnoise_n| seen against S_{n-1} and 1.2247 S_{n-1}");
   double m1 = 0;
   long over[4] = {0, 0, 0, 0}, at[4] = {0, 0, 0, 0};
   const char *oc[4] = {"over_paper", "over_paper_incremental", "over_bound", "over_bound_incremental"};
@@ -78,7 +78,7 @@ int main(int argc, char **argv)
   else
     snprintf(paper, sizeof paper, "the paper's fractal bound failed at %ld points and an incremental interval at %ld "
              "(first at %ld octaves)", over[0], over[1], at[0] ? at[0] : at[1]);
-  nl_report_text(r, "The largest single-octave |noise| seen is %.6f. Improved noise can exceed 1 "
+  nl_harness_text(r, "The largest single-octave |noise| seen is %.6f. Improved noise can exceed 1 "
                     "(its analytic bound is 1.2247), so the paper's unit bound is an assumption, not a "
                     "theorem, for it. Over the %d octave counts (%ld points each) %s; with the analytic "
                     "bound, %ld and %ld points. Sums stay far inside either bound because the extremes of "
@@ -86,6 +86,6 @@ int main(int argc, char **argv)
                   m1, nmax, points * seeds, paper, over[2], over[3]);
   free(maxes);
   nl_table_free(t);
-  nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
-  return nl_run_end(r);
+  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  return nl_harness_end(r);
 }

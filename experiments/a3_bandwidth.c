@@ -4,7 +4,7 @@
  * octave and their sum; with a sweep of the sample length and rate, which
  * the paper does not state. */
 #include "bounds/nl_bounds.h"
-#include "report/nl_report.h"
+#include "harness/nl_harness.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -14,14 +14,14 @@ static const char *sig_name[NSIG] = {"1st octave", "2nd octave", "Fnoise_2"};
 static const double paper[NSIG][2] = {{0.0019531, 1.7460938}, {0.0292969, 2.765625},
                                       {0.0019531, 3.1738281}};
 
-static void measure(nl_run *r, const nl_bounds_reading *rd, int seeds, double m[NSIG][7])
+static void measure(nl_harness *r, const nl_bounds_reading *rd, int seeds, double m[NSIG][7])
 {
   nl_error err;
-  if (nl_bounds_bandwidth_seeds(rd, nl_run_seed(r), seeds, m, &err)) nl_run_die(r, 1, "%s", err.msg);
+  if (nl_bounds_bandwidth_seeds(rd, nl_harness_seed(r), seeds, m, &err)) nl_harness_die(r, 1, "%s", err.msg);
 }
 
 /* One row of the sensitivity table: mean F_inf, F_sup of each signal. */
-static void sweep_row(nl_run *r, nl_table *t, const char *what, const nl_bounds_reading *rd, int seeds)
+static void sweep_row(nl_harness *r, nl_table *t, const char *what, const nl_bounds_reading *rd, int seeds)
 {
   double m[NSIG][7];
   measure(r, rd, seeds, m);
@@ -30,12 +30,12 @@ static void sweep_row(nl_run *r, nl_table *t, const char *what, const nl_bounds_
 }
 
 /* Fig. 5.5: PSD and Gamma of the three signals of the first seed. */
-static nl_table *psd_table(nl_run *r, const nl_bounds_reading *rd, unsigned long seed)
+static nl_table *psd_table(nl_harness *r, const nl_bounds_reading *rd, unsigned long seed)
 {
   const char *cols[] = {"freq", "psd_oct1", "psd_oct2", "psd_sum", "gamma_oct1", "gamma_oct2", "gamma_sum"};
   nl_table *t = nl_table_alloc(7, cols);
-  nl_perm3 p;
-  nl_perm3_seed(&p, seed);
+  nl_noise_perm3 p;
+  nl_noise_perm3_seed(&p, seed);
   size_t n, m = 0;
   double *f = NULL, *P[NSIG], *G[NSIG];
   for (int s = 0; s < NSIG; s++) {
@@ -44,8 +44,8 @@ static nl_table *psd_table(nl_run *r, const nl_bounds_reading *rd, unsigned long
     f = f ? f : nl_xmalloc(m * sizeof *f);
     P[s] = nl_xmalloc(m * sizeof *P[s]);
     G[s] = nl_xmalloc(m * sizeof *G[s]);
-    if (nl_psd1(x, n, rd->rate, f, P[s], NULL)) nl_run_die(r, 1, "psd1 failed");
-    nl_psd1_tail(P[s], m, G[s]);
+    if (nl_spectrum_psd1(x, n, rd->rate, f, P[s], NULL)) nl_harness_die(r, 1, "psd1 failed");
+    nl_bounds_psd1_tail(P[s], m, G[s]);
     free(x);
   }
   for (size_t k = 1; k < m && f[k] <= 8.0; k++)
@@ -57,16 +57,16 @@ static nl_table *psd_table(nl_run *r, const nl_bounds_reading *rd, unsigned long
 
 int main(int argc, char **argv)
 {
-  nl_run *r = nl_run_begin("a3_bandwidth", "A3 - Spectral bandwidth of 1D Perlin noise", argc, argv);
-  int quick = nl_run_quick(r);
+  nl_harness *r = nl_harness_begin("a3_bandwidth", "A3 - Spectral bandwidth of 1D Perlin noise", argc, argv);
+  int quick = nl_harness_quick(r);
   nl_bounds_reading rd;
-  rd.length = nl_run_param(r, "length", quick ? 128 : 512, 8, 1e6, "length of the sampled 1D line in noise units (quick 128)");
-  rd.rate = nl_run_param(r, "rate", quick ? 16 : 64, 1, 4096, "samples per noise unit along the line (quick 16)");
-  rd.shader = (int)nl_run_param_int(r, "shader", 1, 0, 1, "1: the shader's stored (noise + 1) / 2; 0: raw noise");
-  rd.axis = (int)nl_run_param_int(r, "axis", 0, 0, 1, "0: the x axis through the origin; 1: an oblique line");
-  nl_run_params_done(r);
-  int seeds = nl_run_seeds(r) > 64 ? 64 : nl_run_seeds(r);
-  unsigned long seed0 = nl_run_seed(r);
+  rd.length = nl_harness_param(r, "length", quick ? 128 : 512, 8, 1e6, "length of the sampled 1D line in noise units (quick 128)");
+  rd.rate = nl_harness_param(r, "rate", quick ? 16 : 64, 1, 4096, "samples per noise unit along the line (quick 16)");
+  rd.shader = (int)nl_harness_param_int(r, "shader", 1, 0, 1, "1: the shader's stored (noise + 1) / 2; 0: raw noise");
+  rd.axis = (int)nl_harness_param_int(r, "axis", 0, 0, 1, "0: the x axis through the origin; 1: an oblique line");
+  nl_harness_params_done(r);
+  int seeds = nl_harness_seeds(r) > 64 ? 64 : nl_harness_seeds(r);
+  unsigned long seed0 = nl_harness_seed(r);
 
   /* Table 5.2 beside ours under the chosen reading. */
   double m[NSIG][7];
@@ -78,7 +78,7 @@ int main(int argc, char **argv)
   for (int s = 0; s < NSIG; s++)
     nl_table_append(t, "sdddddddddd", sig_name[s], m[s][0], m[s][1], m[s][2], m[s][3], m[s][4],
                     paper[s][0], paper[s][1], m[s][0] / res, m[s][2] / res, m[s][6]);
-  nl_run_table(r, t, "bandwidth.tsv");
+  nl_harness_write_table(r, t, "bandwidth.tsv");
 
   /* How the band moves with the unstated sample length, rate, encoding and line. */
   const char *scols[] = {"vary", "length", "rate", "shader", "axis", "oct1_f_inf", "oct1_f_sup",
@@ -91,18 +91,18 @@ int main(int argc, char **argv)
     nl_bounds_reading v = rd;
     if (k < nvary) v.length = lengths[k]; else v.rate = rates[k - nvary];
     sweep_row(r, sw, k < nvary ? "length" : "rate", &v, sweep_seeds);
-    nl_run_progress(r, (k < nvary ? k + 1 : k - nvary + 7) / 14.0, "sweep");
+    nl_harness_progress(r, (k < nvary ? k + 1 : k - nvary + 7) / 14.0, "sweep");
   }
   nl_bounds_reading enc = rd, line = rd;
   enc.shader = !rd.shader;
   line.axis = !rd.axis;
   sweep_row(r, sw, "shader", &enc, sweep_seeds);
   sweep_row(r, sw, "axis", &line, sweep_seeds);
-  nl_run_table(r, sw, "sweep.tsv");
+  nl_harness_write_table(r, sw, "sweep.tsv");
   nl_table *pt = psd_table(r, &rd, seed0);
-  nl_run_table(r, pt, "psd.tsv");
+  nl_harness_write_table(r, pt, "psd.tsv");
 
-  nl_report_text(r, "**Paper (Table 5.2):** [F_inf, F_sup] = [0.0019531, 1.7460938] (1st octave), "
+  nl_harness_text(r, "**Paper (Table 5.2):** [F_inf, F_sup] = [0.0019531, 1.7460938] (1st octave), "
                     "[0.0292969, 2.765625] (2nd), [0.0019531, 3.1738281] (Fnoise_2), T = (2/255)^2; "
                     "sample length and rate not given.\n\n"
                     "**Reading chosen:** a line of length %g units (frequency resolution 1/%g = "
@@ -114,11 +114,11 @@ int main(int argc, char **argv)
                   rd.shader ? "the shader's encoded value (noise + 1)/2" : "raw noise values",
                   rd.axis ? "along the x axis through the origin" : "along an oblique line (not 256-periodic)",
                   seeds);
-  nl_report_table(r, t, "Bandwidth: ours (mean and sd over seeds) beside Table 5.2; *_bins = frequency / resolution", 7);
-  nl_report_figure(r, "psd.png", "Fig. 5.5: PSD and Gamma(lambda) of the octaves and their sum (first seed)");
-  nl_report_table(r, sw, "Sensitivity: mean F_inf, F_sup over 3 seeds when one choice changes", 5);
-  nl_report_figure(r, "sweep.png", "F_sup of the three signals against sample length and rate");
-  nl_report_text(r, "F_sup is a property of the noise (where the tail energy drops under T): it "
+  nl_harness_report_table(r, t, "Bandwidth: ours (mean and sd over seeds) beside Table 5.2; *_bins = frequency / resolution", 7);
+  nl_harness_figure(r, "psd.png", "Fig. 5.5: PSD and Gamma(lambda) of the octaves and their sum (first seed)");
+  nl_harness_report_table(r, sw, "Sensitivity: mean F_inf, F_sup over 3 seeds when one choice changes", 5);
+  nl_harness_figure(r, "sweep.png", "F_sup of the three signals against sample length and rate");
+  nl_harness_text(r, "F_sup is a property of the noise (where the tail energy drops under T): it "
                     "settles once the length exceeds ~128 units and does not move with the rate "
                     "above 8 samples per unit, so the unstated sampling cannot explain the gap to "
                     "the paper's F_sup (1.746 for the first octave): at 1.746 our tail energy is "
@@ -135,6 +135,6 @@ int main(int argc, char **argv)
   nl_table_free(t);
   nl_table_free(sw);
   nl_table_free(pt);
-  nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
-  return nl_run_end(r);
+  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  return nl_harness_end(r);
 }

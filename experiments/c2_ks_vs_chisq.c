@@ -3,7 +3,7 @@
  * CDF of the optimised angles against the ideal line, histograms, and every
  * statistic with its p-value over seeds. */
 #include "study/nl_study_cheng.h"
-#include "report/nl_report.h"
+#include "harness/nl_harness.h"
 #include "stats/nl_stats.h"
 
 #include <math.h>
@@ -19,47 +19,47 @@ int main(int argc, char **argv)
   nl_study_cheng s;
   nl_study_cheng_open(&s, "c2_ks_vs_chisq", "C2 - KS term vs chi-square term (Fig 4.5, 4.6)", &argc, argv);
   nl_study_cheng_ready(&s);
-  nl_run *r = s.r;
+  nl_harness *r = s.r;
   const nl_cheng_config base = s.c;
-  int grid = s.grid, k = nl_run_seeds(r);
+  int grid = s.grid, k = nl_harness_seeds(r);
   const char *pats[NPAT] = {"flower", "x"};
   const nl_cheng_stat objs[NOBJ] = {NL_CHENG_STAT_KS, NL_CHENG_STAT_CHISQ, NL_CHENG_STAT_KUIPER};
   const char *onames[NOBJ] = {"ks", "chisq", "kuiper"};
   const char *labels[] = {"pattern", "objective"};
-  nl_table *sum = nl_cheng_summary_alloc(2, labels);
+  nl_table *sum = nl_study_cheng_summary_alloc(2, labels);
   int single[NPAT] = {0};   /* bins holding exactly one angle, chi-square objective, first seed */
   for (int i = 0; i < NPAT; i++) {
     nl_cheng_pattern *pat = nl_study_cheng_pattern(&s, pats[i]);
-    nl_grad2 *first[NOBJ];
+    nl_noise_grad2 *first[NOBJ];
     for (int o = 0; o < NOBJ; o++) {
       nl_cheng_config c = base;
       c.stat = objs[o];
       const char *lab[2] = {pats[i], onames[o]};
       first[o] = nl_study_cheng_seeds(&s, &c, pat, sum, 2, lab);
-      nl_run_progress(r, (double)(i * NOBJ + o + 1) / (NPAT * NOBJ), pats[i]);
+      nl_harness_progress(r, (double)(i * NOBJ + o + 1) / (NPAT * NOBJ), pats[i]);
     }
     char file[64];
-    nl_table *cdf = nl_cheng_cdf_table((const nl_grad2 *const *)first, onames, NOBJ);
+    nl_table *cdf = nl_study_cheng_cdf_table((const nl_noise_grad2 *const *)first, onames, NOBJ);
     snprintf(file, sizeof file, "cdf_%s.tsv", pats[i]);
-    nl_run_table(r, cdf, file);
-    nl_table *hist = nl_cheng_hist_table((const nl_grad2 *const *)first, onames, NOBJ, base.chisq_bins);
+    nl_harness_write_table(r, cdf, file);
+    nl_table *hist = nl_study_cheng_hist_table((const nl_noise_grad2 *const *)first, onames, NOBJ, base.chisq_bins);
     for (size_t b = 0; b < hist->nrows; b++) single[i] += nl_table_value(hist, b, "chisq") == 1.0;
     snprintf(file, sizeof file, "hist_%s.tsv", pats[i]);
-    nl_run_table(r, hist, file);
+    nl_harness_write_table(r, hist, file);
     nl_image *panels[NOBJ + 1];
     const char *plab[NOBJ + 1] = {"pattern", "KS term", "chi-square term", "Kuiper term"};
-    panels[0] = nl_cheng_pattern_panel(pat, 192);
-    for (int o = 0; o < NOBJ; o++) panels[o + 1] = nl_cheng_value_image(first[o], &base, 192);
+    panels[0] = nl_study_cheng_pattern_panel(pat, 192);
+    for (int o = 0; o < NOBJ; o++) panels[o + 1] = nl_study_cheng_value_image(first[o], &base, 192);
     snprintf(file, sizeof file, "noise_%s.png", pats[i]);
     nl_study_cheng_montage(r, panels, plab, NOBJ + 1, NOBJ + 1, pats[i], file);
-    for (int o = 0; o < NOBJ; o++) nl_grad2_free(first[o]);
+    for (int o = 0; o < NOBJ; o++) nl_noise_grad2_free(first[o]);
     nl_table_free(cdf);
     nl_table_free(hist);
     nl_cheng_pattern_free(pat);
   }
-  nl_run_table(r, sum, "summary.tsv");
+  nl_harness_write_table(r, sum, "summary.tsv");
 
-  nl_report_text(r, "**Thesis:** two patterns optimised with the KS term (eq. 3.7) and with the "
+  nl_harness_text(r, "**Thesis:** two patterns optimised with the KS term (eq. 3.7) and with the "
                     "chi-square term (eq. 3.4, 512 angles in 500 bins): the KS CDF lies closer to the "
                     "ideal line, the chi-square error is lower under the chi-square objective, and E_Con "
                     "is close in both (numbers not printed). **Ours:** patterns %s and %s on a %d x %d "
@@ -68,14 +68,14 @@ int main(int argc, char **argv)
                     "so the thesis weights keep their balance (nl_cheng.h). Kuiper's V is a third "
                     "objective. Statistics are over all 512 angles.\n",
                  pats[0], pats[1], grid, grid, base.f1, base.a1, base.w1, base.w2, k);
-  nl_report_table(r, sum, "Mean (sd, min p) over seeds per pattern and objective; uniform_* = fraction of "
+  nl_harness_report_table(r, sum, "Mean (sd, min p) over seeds per pattern and objective; uniform_* = fraction of "
                           "runs not rejected as non-uniform at alpha = 0.05", 4);
   for (int i = 0; i < NPAT; i++) {
     size_t row_ks = (size_t)i * NOBJ, row_chi = row_ks + 1;
     double ks_ks = nl_table_value(sum, row_ks, "E_ks"), ks_chi = nl_table_value(sum, row_chi, "E_ks");
     double chi_ks = nl_table_value(sum, row_ks, "chi2"), chi_chi = nl_table_value(sum, row_chi, "chi2");
     double con_ks = nl_table_value(sum, row_ks, "E_con"), con_chi = nl_table_value(sum, row_chi, "E_con");
-    nl_report_text(r, "%s: E_KS %.4g (KS objective) vs %.4g (chi-square objective): KS CDF %s. "
+    nl_harness_text(r, "%s: E_KS %.4g (KS objective) vs %.4g (chi-square objective): KS CDF %s. "
                       "chi2 %.4g vs %.4g: chi-square error %s under the chi-square objective. "
                       "E_Con %.4g vs %.4g (%.1f%% apart).\n",
                    pats[i], ks_ks, ks_chi, ks_ks < ks_chi ? "closer to the ideal line, as in the thesis" : "NOT closer",
@@ -83,7 +83,7 @@ int main(int argc, char **argv)
                    con_ks, con_chi, 100 * fabs(con_ks - con_chi) / con_chi);
   }
   double worst_ks = nl_study_column_min(sum, "uniform_ks"), worst_ku = nl_study_column_min(sum, "uniform_kuiper");
-  nl_report_text(r, "Uniformity preserved? The smallest fraction of runs not rejected at alpha = 0.05 "
+  nl_harness_text(r, "Uniformity preserved? The smallest fraction of runs not rejected at alpha = 0.05 "
                     "is %.2f by KS and %.2f by Kuiper%s\n", worst_ks, worst_ku,
                  worst_ks == 1 && worst_ku == 1 ? ": every optimised table is indistinguishable from uniform."
                                                 : ": some optimised tables are rejected (see p_*_min).");
@@ -91,11 +91,11 @@ int main(int argc, char **argv)
    * truly random table of M angles is at least this close to the ideal line. */
   for (int o = 0; o < NOBJ; o++) {
     double d = nl_table_value(sum, (size_t)o, "E_ks");
-    nl_report_text(r, "%s objective (flower): mean E_KS %.4g; a random table of %zu uniform angles has "
+    nl_harness_text(r, "%s objective (flower): mean E_KS %.4g; a random table of %zu uniform angles has "
                       "P(D <= %.4g) = %.3g (median D about %.4g).\n", onames[o], d, base.m, d,
-                   nl_ks_cdf(base.m, d, NULL), nl_cheng_ks_median(base.m));
+                   nl_stats_ks_cdf(base.m, d, NULL), nl_cheng_ks_median(base.m));
   }
-  nl_report_text(r, "So p-values near 1 do not mean \"typical uniform\": the statistic terms drive the angles "
+  nl_harness_text(r, "So p-values near 1 do not mean \"typical uniform\": the statistic terms drive the angles "
                     "to a more-regular-than-random set (under the chi-square objective %d of %zu bins hold exactly "
                     "one angle on %s, first seed; in a random table about %.0f%% do), which no test at "
                     "alpha = 0.05 rejects but which a random table would almost never produce.\n",
@@ -105,11 +105,11 @@ int main(int argc, char **argv)
     char f[64], cap[128];
     snprintf(f, sizeof f, "noise_%s.png", pats[i]);
     snprintf(cap, sizeof cap, "%s: pattern and the controlled value per objective (first seed)", pats[i]);
-    nl_report_figure(r, f, cap);
+    nl_harness_figure(r, f, cap);
   }
-  nl_report_figure(r, "cdf.png", "CDF of the optimised angles (first seed) against the ideal line, and its deviation (Fig 4.5, 4.6 left)");
-  nl_report_figure(r, "hist.png", "Histograms of the optimised angles, 500 bins (Fig 4.5, 4.6 right)");
+  nl_harness_figure(r, "cdf.png", "CDF of the optimised angles (first seed) against the ideal line, and its deviation (Fig 4.5, 4.6 left)");
+  nl_harness_figure(r, "hist.png", "Histograms of the optimised angles, 500 bins (Fig 4.5, 4.6 right)");
   nl_table_free(sum);
-  nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
-  return nl_run_end(r);
+  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  return nl_harness_end(r);
 }

@@ -4,7 +4,7 @@
  * text implies), and a dense log sweep of w1 / w2 (w1 + w2 = 1) as the E_KS vs
  * E_Con trade-off curve. */
 #include "study/nl_study_cheng.h"
-#include "report/nl_report.h"
+#include "harness/nl_harness.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -19,15 +19,15 @@ static const double thesis[NPAIR][NL_STUDY_TABLE41_COLS] = {
 
 /* Runs (w1, w2) over the seeds and appends a summary row labelled by the
  * reading, the panel letter and the weights; returns the first seed's table. */
-static nl_grad2 *run_pair(const nl_study_cheng *s, const nl_cheng_pattern *pat, const char *reading,
+static nl_noise_grad2 *run_pair(const nl_study_cheng *s, const nl_cheng_pattern *pat, const char *reading,
                           const char *panel, double w1, double w2, nl_table *sum)
 {
   nl_cheng_config c = s->c;
   c.w1 = w1;
   c.w2 = w2;
   char a[32], b[32];
-  nl_format_double(a, w1);
-  nl_format_double(b, w2);
+  nl_table_format_double(a, w1);
+  nl_table_format_double(b, w2);
   const char *lab[4] = {reading, panel, a, b};
   return nl_study_cheng_seeds(s, &c, pat, sum, 4, lab);
 }
@@ -36,57 +36,57 @@ int main(int argc, char **argv)
 {
   nl_study_cheng s;
   nl_study_cheng_open(&s, "c4_weights", "C4 - weights of the KS and control terms (Table 4.1, Fig 4.8)", &argc, argv);
-  nl_run *r = s.r;
-  int nsweep = (int)nl_run_param_int(r, "sweep_points", nl_run_quick(r) ? 6 : 24, 2, 1000, "points of the dense E_KS / E_Con trade-off sweep over w1 / w2 (quick 6)");
+  nl_harness *r = s.r;
+  int nsweep = (int)nl_harness_param_int(r, "sweep_points", nl_harness_quick(r) ? 6 : 24, 2, 1000, "points of the dense E_KS / E_Con trade-off sweep over w1 / w2 (quick 6)");
   /* Log-spaced in w1 / w2 (w1 + w2 = 1): the balance lies at w1 / w2 ~ 1e2..1e3, where a log w1 scale has no points. */
-  double lo = nl_run_param(r, "ratio_lo", 1e-5, 1e-12, 1e12, "smallest w1 / w2 of the trade-off sweep (log-spaced, w1 + w2 = 1)");
-  double hi = nl_run_param(r, "ratio_hi", 1e5, 1e-12, 1e12, "largest w1 / w2 of the trade-off sweep (log-spaced, w1 + w2 = 1)");
+  double lo = nl_harness_param(r, "ratio_lo", 1e-5, 1e-12, 1e12, "smallest w1 / w2 of the trade-off sweep (log-spaced, w1 + w2 = 1)");
+  double hi = nl_harness_param(r, "ratio_hi", 1e5, 1e-12, 1e12, "largest w1 / w2 of the trade-off sweep (log-spaced, w1 + w2 = 1)");
   /* table=0: only the run at the configured (w1, w2), the unit a sweep of
    * w1 is made of (scripts/noiselab sweep c4 --param w1=... --param table=0). */
-  int table = (int)nl_run_param_int(r, "table", 1, 0, 1, "1: Table 4.1 and the trade-off sweep; 0: only the run at the configured w1, w2 (a sweep's unit)");
+  int table = (int)nl_harness_param_int(r, "table", 1, 0, 1, "1: Table 4.1 and the trade-off sweep; 0: only the run at the configured w1, w2 (a sweep's unit)");
   nl_study_cheng_ready(&s);
-  if (!(lo < hi)) nl_run_die(r, 2, "ratio_lo must be below ratio_hi");
+  if (!(lo < hi)) nl_harness_die(r, 2, "ratio_lo must be below ratio_hi");
   nl_cheng_pattern *pat = nl_study_cheng_pattern(&s, "flower");
   const nl_cheng_config base = s.c;
   const char *labels[] = {"reading", "panel", "w1", "w2"};
-  nl_table *one = nl_cheng_summary_alloc(4, labels);
-  nl_grad2_free(run_pair(&s, pat, "configured", "-", base.w1, base.w2, one));
-  nl_run_table(r, one, "configured.tsv");
+  nl_table *one = nl_study_cheng_summary_alloc(4, labels);
+  nl_noise_grad2_free(run_pair(&s, pat, "configured", "-", base.w1, base.w2, one));
+  nl_harness_write_table(r, one, "configured.tsv");
   if (!table) {
-    nl_report_text(r, "One run of the flower pattern at the configured weights (w1, w2) = (%g, %g), %d seeds "
-                      "(table=0: Table 4.1 and the internal sweep skipped).\n", base.w1, base.w2, nl_run_seeds(r));
-    nl_report_table(r, one, "Configured weights", 4);
+    nl_harness_text(r, "One run of the flower pattern at the configured weights (w1, w2) = (%g, %g), %d seeds "
+                      "(table=0: Table 4.1 and the internal sweep skipped).\n", base.w1, base.w2, nl_harness_seeds(r));
+    nl_harness_report_table(r, one, "Configured weights", 4);
   }
   nl_table_free(one);
-  if (!table) { nl_cheng_pattern_free(pat); return nl_run_end(r); }
-  nl_table *tab = nl_cheng_summary_alloc(4, labels), *sweep = nl_cheng_summary_alloc(4, labels);
+  if (!table) { nl_cheng_pattern_free(pat); return nl_harness_end(r); }
+  nl_table *tab = nl_study_cheng_summary_alloc(4, labels), *sweep = nl_study_cheng_summary_alloc(4, labels);
   nl_image *panels[NPAIR + 1];
   char plab[NPAIR + 1][64];
   const char *plabp[NPAIR + 1] = {"pattern"};
-  panels[0] = nl_cheng_pattern_panel(pat, 160);
+  panels[0] = nl_study_cheng_pattern_panel(pat, 160);
   for (int i = 0; i < NPAIR; i++) {   /* printed reading rows are 0, 2, 4, ...; swapped 1, 3, 5, ... */
     char panel[4] = {(char)('a' + i), 0};
-    nl_grad2 *first = run_pair(&s, pat, "printed", panel, thesis[i][0], thesis[i][2], tab);
-    panels[i + 1] = nl_cheng_texture_image(first, &base, 160);
+    nl_noise_grad2 *first = run_pair(&s, pat, "printed", panel, thesis[i][0], thesis[i][2], tab);
+    panels[i + 1] = nl_study_cheng_texture_image(first, &base, 160);
     snprintf(plab[i + 1], sizeof plab[i + 1], "(%s) w1=%g w2=%g", panel, thesis[i][0], thesis[i][2]);
     plabp[i + 1] = plab[i + 1];
-    nl_grad2_free(first);
-    nl_grad2_free(run_pair(&s, pat, "swapped", panel, thesis[i][2], thesis[i][0], tab));
-    nl_run_progress(r, (i + 1.0) / (NPAIR + nsweep), "Table 4.1");
+    nl_noise_grad2_free(first);
+    nl_noise_grad2_free(run_pair(&s, pat, "swapped", panel, thesis[i][2], thesis[i][0], tab));
+    nl_harness_progress(r, (i + 1.0) / (NPAIR + nsweep), "Table 4.1");
   }
   double *rhos = nl_xmalloc((size_t)nsweep * sizeof *rhos);
   for (int i = 0; i < nsweep; i++) {
     double rho = rhos[i] = lo * pow(hi / lo, (double)i / (nsweep - 1));
-    nl_grad2_free(run_pair(&s, pat, "sweep", "-", rho / (1 + rho), 1 / (1 + rho), sweep));
-    nl_run_progress(r, (NPAIR + i + 1.0) / (NPAIR + nsweep), "sweep");
+    nl_noise_grad2_free(run_pair(&s, pat, "sweep", "-", rho / (1 + rho), 1 / (1 + rho), sweep));
+    nl_harness_progress(r, (NPAIR + i + 1.0) / (NPAIR + nsweep), "sweep");
   }
   nl_study_cheng_montage(r, panels, plabp, NPAIR + 1, 4, "Fig 4.8: cloud texture per weight pair (first seed)", "textures.png");
   nl_table *cmp = nl_study_cheng_table41(tab, thesis, NPAIR);
-  nl_run_table(r, tab, "table41_runs.tsv");
-  nl_run_table(r, cmp, "table41.tsv");
-  nl_run_table(r, sweep, "sweep.tsv");
-  int k = nl_run_seeds(r);
-  nl_report_text(r, "**Thesis (Table 4.1):** six pairs from (w1, w2) = (0, 1) to (1e-5, 0.99999); E_KS falls "
+  nl_harness_write_table(r, tab, "table41_runs.tsv");
+  nl_harness_write_table(r, cmp, "table41.tsv");
+  nl_harness_write_table(r, sweep, "sweep.tsv");
+  int k = nl_harness_seeds(r);
+  nl_harness_text(r, "**Thesis (Table 4.1):** six pairs from (w1, w2) = (0, 1) to (1e-5, 0.99999); E_KS falls "
                     "from 0.134 to 0.013 down the table while E_Con stays near 49.8; the text calls (a) the "
                     "best-preserved pattern and (f) the case where \"the weight of KS term sets to large value\", "
                     "which is backwards for the printed weights. **Ours:** pattern flower, %d x %d control "
@@ -94,7 +94,7 @@ int main(int argc, char **argv)
                     "(w1 <-> w2), and a sweep of %d pairs with w1 + w2 = 1 and w1 / w2 log-spaced in [%g, %g]. Our E_Con "
                     "sums over %d control points and so is on another scale than the thesis's (its grid is "
                     "not stated); compare trends.\n", s.grid, s.grid, k, nsweep, lo, hi, (int)pat->n);
-  nl_report_table(r, cmp, "Table 4.1: thesis vs ours (means over seeds; swapped = the same pair with w1 and w2 exchanged)", 4);
+  nl_harness_report_table(r, cmp, "Table 4.1: thesis vs ours (means over seeds; swapped = the same pair with w1 and w2 exchanged)", 4);
   /* Which reading reproduces the table's direction from (b) to (f)? The
    * thesis's E_KS ratio f/b is 0.27 and E_Con rises; compare both readings'
    * ratios with it on a log scale. */
@@ -104,7 +104,7 @@ int main(int argc, char **argv)
   double scon_b = nl_table_value(cmp, 1, "E_con_swapped"), scon_f = nl_table_value(cmp, 5, "E_con_swapped");
   double t_ratio = thesis[5][1] / thesis[1][1];
   double d_printed = fabs(log((ks_f / ks_b) / t_ratio)), d_swapped = fabs(log((sks_f / sks_b) / t_ratio));
-  nl_report_text(r, "From (b) to (f) the thesis's E_KS changes by a factor %.2f and its E_Con by %+.2f%%. "
+  nl_harness_text(r, "From (b) to (f) the thesis's E_KS changes by a factor %.2f and its E_Con by %+.2f%%. "
                     "Printed weights, ours: E_KS %.4g -> %.4g (factor %.2f), E_Con %.4g -> %.4g (%+.2f%%). "
                     "Swapped weights, ours: E_KS %.4g -> %.4g (factor %.2f), E_Con %.4g -> %.4g (%+.2f%%). "
                     "**The data support the %s reading.** %s\n",
@@ -132,19 +132,19 @@ int main(int argc, char **argv)
   char safe_txt[96];
   if (isnan(safe)) snprintf(safe_txt, sizeof safe_txt, "even the largest swept w1 / w2 has a rejected run");
   else snprintf(safe_txt, sizeof safe_txt, "every run passes both tests from w1 / w2 = %.3g upwards", safe);
-  nl_report_text(r, "Uniformity: over all pairs and sweep points, the smallest fraction of runs not rejected "
+  nl_harness_text(r, "Uniformity: over all pairs and sweep points, the smallest fraction of runs not rejected "
                     "as non-uniform at alpha = 0.05 is %.2f (KS) and %.2f (Kuiper). %d of the six printed pairs "
                     "have at least one run rejected by KS or Kuiper (see p_ks_min, p_kuiper_min), so the "
                     "thesis's claim that the statistics are preserved %s. In the sweep %s; the default "
                     "w1 / w2 = 0.995 / 0.005 = 199.\n", worst_ks, worst_ku, rejected,
                  rejected ? "does not hold for control-dominated weights" : "holds for every printed pair here",
                  safe_txt);
-  nl_report_figure(r, "textures.png", "Fig 4.8: cloud textures for the six printed weight pairs (first seed)");
-  nl_report_figure(r, "tradeoff.png", "E_KS vs E_Con over the w1 sweep (mean and sd over seeds), with the printed and swapped pairs");
-  nl_report_table(r, sweep, "Sweep of w1 / w2 (w1 + w2 = 1)", 4);
+  nl_harness_figure(r, "textures.png", "Fig 4.8: cloud textures for the six printed weight pairs (first seed)");
+  nl_harness_figure(r, "tradeoff.png", "E_KS vs E_Con over the w1 sweep (mean and sd over seeds), with the printed and swapped pairs");
+  nl_harness_report_table(r, sweep, "Sweep of w1 / w2 (w1 + w2 = 1)", 4);
   nl_cheng_pattern_free(pat);
   nl_table_free(tab); nl_table_free(sweep); nl_table_free(cmp);
   free(rhos);
-  nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
-  return nl_run_end(r);
+  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  return nl_harness_end(r);
 }

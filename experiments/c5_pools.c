@@ -7,7 +7,7 @@
  * erosion; and, beyond the paper, whether the mixture describes the pool
  * (held-out likelihood, per-angle KS) for three model variants. */
 #include "study/nl_study_cheng.h"
-#include "report/nl_report.h"
+#include "harness/nl_harness.h"
 #include "table/nl_table.h"
 
 #include <math.h>
@@ -17,10 +17,10 @@
 
 #define NTEX 3
 
-static void report(nl_run *r, const nl_study_cheng_pools *T, const nl_cheng_pool_options *po, const nl_cheng_model_options *mo,
+static void report(nl_harness *r, const nl_study_cheng_pools *T, const nl_cheng_pool_options *po, const nl_cheng_model_options *mo,
                    const nl_cheng_config *c, int grid, int nseeds)
 {
-  nl_report_text(r, "**Thesis** (sec. 3.5, Tables 4.2-4.4): Q = 100 re-optimisations of the low-frequency gradients "
+  nl_harness_text(r, "**Thesis** (sec. 3.5, Tables 4.2-4.4): Q = 100 re-optimisations of the low-frequency gradients "
                     "under E_R (eq. 3.16-3.18), N = 100 solutions each within epsilon = 10.0 of the run's best, "
                     "hierarchical clustering with a hand-tuned cutoff for the initial K, GMM by EM with K grown while "
                     "AIC improves; 1000 input samples; one run per texture, patterns not named. **Ours:** patterns "
@@ -35,11 +35,11 @@ static void report(nl_run *r, const nl_study_cheng_pools *T, const nl_cheng_pool
                  grid, grid, c->m, c->octaves, c->f1, c->a1, c->w1, c->w2, po->runs, po->keep, po->epsilon,
                  po->low_levels > 1 ? "s" : "", po->low_levels > 1 ? "..2" : "", mo->samples,
                  mo->gmm.covariance == NL_GMM_FULL ? "full" : "diagonal", mo->threshold, mo->k_extra, nseeds);
-  nl_report_table(r, T->gmm, "Tables 4.2-4.4, ours beside the thesis's (thesis_* columns): one row per texture, "
+  nl_harness_report_table(r, T->gmm, "Tables 4.2-4.4, ours beside the thesis's (thesis_* columns): one row per texture, "
                              "split and cutoff rule", 5);
   for (size_t q = 0; q < T->gmm->nrows; q++) {
     const char *tex = nl_study_text(T->gmm, q, "texture"), *rule = nl_study_text(T->gmm, q, "cutoff_rule");
-    nl_report_text(r, "%s (low levels %g), %s cutoff %.4g: K %.3g -> %.3g (thesis %g -> %g), AIC %.6g (thesis %.6g; "
+    nl_harness_text(r, "%s (low levels %g), %s cutoff %.4g: K %.3g -> %.3g (thesis %g -> %g), AIC %.6g (thesis %.6g; "
                       "per input sample %.4g vs %.4g), status %s.\n", tex, nl_table_value(T->gmm, q, "low_levels"), rule,
                    nl_table_value(T->gmm, q, "cutoff"), nl_table_value(T->gmm, q, "K_initial"), nl_table_value(T->gmm, q, "K_final"),
                    nl_table_value(T->gmm, q, "thesis_K_initial"), nl_table_value(T->gmm, q, "thesis_K_final"), nl_table_value(T->gmm, q, "AIC"),
@@ -47,7 +47,7 @@ static void report(nl_run *r, const nl_study_cheng_pools *T, const nl_cheng_pool
                    nl_table_value(T->gmm, q, "thesis_AIC") / nl_table_value(T->gmm, q, "thesis_samples"), nl_study_text(T->gmm, q, "status"));
   }
   double maxchord = 2 * sqrt(nl_table_value(T->orig, 0, "n_low"));
-  nl_report_text(r, "What cannot be compared: the thesis's cutoffs (15.5-19.5) and AIC values are in units of a distance "
+  nl_harness_text(r, "What cannot be compared: the thesis's cutoffs (15.5-19.5) and AIC values are in units of a distance "
                     "and a dimension it does not state. With %g low angles as (cos, sin) no two solutions are more than "
                     "2 sqrt(%g) = %.4g apart, so the literal cutoffs leave one cluster (row \"thesis\": status "
                     "one_cluster, and the AIC path then starts at K = 1); row \"matched_K0\" takes the cutoff that gives "
@@ -60,68 +60,68 @@ static void report(nl_run *r, const nl_study_cheng_pools *T, const nl_cheng_pool
                  nl_table_value(T->orig, 0, "n_low"), nl_table_value(T->orig, 0, "n_low"), maxchord);
   if (T->orig->nrows > NTEX && T->gmm->nrows > 2 * NTEX) {
     double nl2 = nl_table_value(T->orig, NTEX, "n_low");
-    nl_report_text(r, "The other split (low entries = levels 1-2, %g angles, largest chord 2 sqrt(%g) = %.4g), measured on "
+    nl_harness_text(r, "The other split (low entries = levels 1-2, %g angles, largest chord 2 sqrt(%g) = %.4g), measured on "
                       "erosion: the thesis's cutoff %g now gives K0 = %.3g (thesis 30) and the AIC path ends at %.3g "
                       "(thesis 36); the cutoff for K0 = 30 is %.4g. So the thesis's cutoffs are of the size of (cos, sin) "
                       "distances over a few hundred angles, which hints at the wider split, but does not settle it.\n",
                    nl2, nl2, 2 * sqrt(nl2), nl_table_value(T->gmm, 2 * NTEX, "cutoff"), nl_table_value(T->gmm, 2 * NTEX, "K_initial"),
                    nl_table_value(T->gmm, 2 * NTEX, "K_final"), nl_table_value(T->gmm, 2 * NTEX + 1, "cutoff"));
   }
-  nl_report_table(r, T->orig, "The original optimised table (E_KS, E_Con over all 512 angles and 4 octaves), E_R of the "
+  nl_harness_report_table(r, T->orig, "The original optimised table (E_KS, E_Con over all 512 angles and 4 octaves), E_R of the "
                               "original and of the pool, and times", 5);
   for (size_t q = 0; q < T->orig->nrows; q++)
-    nl_report_text(r, "%s (low levels %g): E_R of the original %.5g; pool runs reach %.5g (best) and the kept solutions "
+    nl_harness_text(r, "%s (low levels %g): E_R of the original %.5g; pool runs reach %.5g (best) and the kept solutions "
                       "have median %.5g; the largest distance of a kept solution above its run's best is %.3g, so "
                       "epsilon = %g excluded %g of %g solutions: on our scale of E_R the thesis's bound keeps every "
                       "tail state.\n", nl_study_text(T->orig, q, "texture"), nl_table_value(T->orig, q, "low_levels"),
                    nl_table_value(T->orig, q, "E_R_original"), nl_table_value(T->orig, q, "E_R_pool_best"), nl_table_value(T->orig, q, "E_R_pool_median"),
                    nl_table_value(T->orig, q, "E_R_pool_max_gap"), po->epsilon, nl_table_value(T->gmm, 2 * q, "excluded"),
                    nl_table_value(T->gmm, 2 * q, "pool") + nl_table_value(T->gmm, 2 * q, "excluded"));
-  nl_report_text(r, "**Beyond the paper: does the mixture describe the pool?** The model with the matched cutoff, fitted "
+  nl_harness_text(r, "**Beyond the paper: does the mixture describe the pool?** The model with the matched cutoff, fitted "
                     "on the input samples, scored on the pool rows it did not see (mean log-likelihood per row, "
                     "ll_held, against ll_train), and 1000 draws against 1000 pool rows, angle by angle (two-sample KS: "
                     "median D and the fraction of the angles where p < 0.05), for full covariances on (cos, sin) (the "
                     "default), diagonal ones, and full ones on unwrapped angles.\n");
-  nl_report_table(r, T->assess, "Held-out likelihood and per-angle KS of the mixture against the pool", 4);
+  nl_harness_report_table(r, T->assess, "Held-out likelihood and per-angle KS of the mixture against the pool", 4);
   for (size_t q = 0; q < T->assess->nrows; q++) {
     double tr = nl_table_value(T->assess, q, "ll_train"), he = nl_table_value(T->assess, q, "ll_held");
-    nl_report_text(r, "%s, %s: ll_train %.4g, ll_held %.4g (%s); per-angle KS median D %.3g, rejected on %.0f%% of the angles.\n",
+    nl_harness_text(r, "%s, %s: ll_train %.4g, ll_held %.4g (%s); per-angle KS median D %.3g, rejected on %.0f%% of the angles.\n",
                    nl_study_text(T->assess, q, "texture"), nl_study_text(T->assess, q, "model"), tr, he,
                    he < tr - 0.1 * fabs(tr) ? "the mixture fits its input far better than the rest of the pool: over-fitted"
                                             : "held-out rows score like the input: it generalises",
                    nl_table_value(T->assess, q, "ks_median"), 100 * nl_table_value(T->assess, q, "ks_reject"));
   }
-  nl_report_figure(r, "aic.png", "AIC (and BIC) against K along the selection path, per texture and cutoff rule (first seed)");
-  nl_report_figure(r, "cutoff.png", "Initial K against the complete-linkage cutoff, with the thesis's K0 marked");
-  nl_report_figure(r, "pool.png", "E_R per pool run: random start and best, with the original table's E_R");
+  nl_harness_figure(r, "aic.png", "AIC (and BIC) against K along the selection path, per texture and cutoff rule (first seed)");
+  nl_harness_figure(r, "cutoff.png", "Initial K against the complete-linkage cutoff, with the thesis's K0 marked");
+  nl_harness_figure(r, "pool.png", "E_R per pool run: random start and best, with the original table's E_R");
 }
 
 int main(int argc, char **argv)
 {
   nl_study_cheng s;
   nl_study_cheng_open(&s, "c5_pools", "C5 - noise reproduction: pools, clustering, GMM/AIC (Tables 4.2-4.4)", &argc, argv);
-  nl_run *r = s.r;
+  nl_harness *r = s.r;
   nl_cheng_pool_options po;
   nl_cheng_model_options mo;
-  nl_cheng_repro_params(r, &po, &mo);
-  int alt = (int)nl_run_param_int(r, "alt_low_levels", 2, 0, 7,
+  nl_study_cheng_repro_params(r, &po, &mo);
+  int alt = (int)nl_harness_param_int(r, "alt_low_levels", 2, 0, 7,
                                   "C5 repeats erosion with this low/high split (low_levels); 0: no repeat");
   nl_study_cheng_ready(&s);
-  nl_run_note(r, "pool_threads", "%d (results do not depend on it)", po.threads);
-  int nseeds = nl_run_seeds(r) > NL_STUDY_CHENG_MAXSEEDS ? NL_STUDY_CHENG_MAXSEEDS : nl_run_seeds(r);
+  nl_harness_note(r, "pool_threads", "%d (results do not depend on it)", po.threads);
+  int nseeds = nl_harness_seeds(r) > NL_STUDY_CHENG_MAXSEEDS ? NL_STUDY_CHENG_MAXSEEDS : nl_harness_seeds(r);
   nl_study_cheng_pools T;
   nl_study_cheng_pools_alloc(&T);
   int ncase = NTEX + (alt && alt != po.low_levels && alt < s.c.octaves);
   for (int t = 0; t < ncase; t++) {
     nl_cheng_pool_options p = po;
     if (t == NTEX) p.low_levels = alt;   /* the other split, measured on erosion */
-    nl_study_cheng_pool_case(&s, &T, &nl_cheng_thesis_gmm_tables[t % NTEX], &p, &mo, nseeds, t < NTEX);
-    nl_run_progress(r, (t + 1.0) / ncase, nl_cheng_thesis_gmm_tables[t % NTEX].texture);
+    nl_study_cheng_pool_case(&s, &T, &nl_study_cheng_thesis_gmm_tables[t % NTEX], &p, &mo, nseeds, t < NTEX);
+    nl_harness_progress(r, (t + 1.0) / ncase, nl_study_cheng_thesis_gmm_tables[t % NTEX].texture);
   }
   nl_study_cheng_pools_write(r, &T);
   /* EM's sums go through BLAS: their tolerances are measured (below). */
   report(r, &T, &po, &mo, &s.c, s.grid, nseeds);
   nl_study_cheng_pools_free(&T);
-  nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
-  return nl_run_end(r);
+  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  return nl_harness_end(r);
 }

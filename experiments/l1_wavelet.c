@@ -2,8 +2,8 @@
  * 2005) as the band of a multiresolution noise; its band variance sigma_N^2
  * against the paper's 0.265, and how much of a band's power stays inside its
  * eq. 13 octave. */
-#include "example/nl_example.h"
-#include "report/nl_report.h"
+#include "byexample/nl_byexample.h"
+#include "harness/nl_harness.h"
 #include "study/nl_study.h"
 
 #include <math.h>
@@ -11,18 +11,18 @@
 
 int main(int argc, char **argv)
 {
-  nl_run *r = nl_run_begin("l1_wavelet", "L1 - Wavelet noise: band variance and band limits", argc, argv);
-  int quick = nl_run_quick(r);
-  int size = (int)nl_run_param_int(r, "size", quick ? 128 : 512, 32, 4096,
+  nl_harness *r = nl_harness_begin("l1_wavelet", "L1 - Wavelet noise: band variance and band limits", argc, argv);
+  int quick = nl_harness_quick(r);
+  int size = (int)nl_harness_param_int(r, "size", quick ? 128 : 512, 32, 4096,
                                    "side in pixels of the wavelet-noise images and spectra (quick 128)");
-  int tile = (int)nl_run_param_int(r, "tile", NL_EXAMPLE_TILE, 8, 2048,
+  int tile = (int)nl_harness_param_int(r, "tile", NL_EXAMPLE_TILE, 8, 2048,
                                    "period in pixels of the 2D wavelet-noise tile (even, >= 8)");
-  int tile3 = (int)nl_run_param_int(r, "tile3", quick ? 32 : NL_EXAMPLE_TILE3, 8, 256,
+  int tile3 = (int)nl_harness_param_int(r, "tile3", quick ? 32 : NL_EXAMPLE_TILE3, 8, 256,
                                     "period of the 3D wavelet-noise tile (even, >= 8; quick 32)");
-  int band = (int)nl_run_param_int(r, "band", 2, 0, 8, "the band shown in the images (0 = finest)");   /* band shown in the images */
-  nl_run_params_done(r);
-  int K = nl_run_seeds(r), nb = nl_example_band_count(size, size);
-  unsigned long seed0 = nl_run_seed(r);
+  int band = (int)nl_harness_param_int(r, "band", 2, 0, 8, "the band shown in the images (0 = finest)");   /* band shown in the images */
+  nl_harness_params_done(r);
+  int K = nl_harness_seeds(r), nb = nl_byexample_band_count(size, size);
+  unsigned long seed0 = nl_harness_seed(r);
 
   /* Band variance per seed, 2D tile and 3D tile. */
   const char *vcols[] = {"seed", "var2d", "var3d"};
@@ -30,17 +30,17 @@ int main(int argc, char **argv)
   double *v2 = calloc((size_t)K, sizeof *v2), *v3 = calloc((size_t)K, sizeof *v3);
   double *share = calloc((size_t)K * nb * nb, sizeof *share), *var = calloc((size_t)nb, sizeof *var);
   nl_wavelet_tile *t2 = nl_wavelet_tile_alloc(2, tile), *t3 = nl_wavelet_tile_alloc(3, tile3);
-  if (!t2 || !t3) nl_run_die(r, 2, "tile periods must be even and >= 8");
+  if (!t2 || !t3) nl_harness_die(r, 2, "tile periods must be even and >= 8");
   for (int s = 0; s < K; s++) {
     nl_wavelet_tile_seed(t2, nl_seed_replicate(seed0, s));
     nl_wavelet_tile_seed(t3, nl_seed_replicate(seed0, s));
     v2[s] = nl_wavelet_tile_variance(t2, 4);
     v3[s] = nl_wavelet_tile_variance(t3, 4);
     nl_table_append(vt, "idd", (int)(nl_seed_replicate(seed0, s)), v2[s], v3[s]);
-    nl_example_band_leakage(t2, size, nb, nl_seed_replicate(seed0, s), share + (size_t)s * nb * nb, var);
-    nl_run_progress(r, (s + 1.0) / K, "seeds");
+    nl_byexample_band_leakage(t2, size, nb, nl_seed_replicate(seed0, s), share + (size_t)s * nb * nb, var);
+    nl_harness_progress(r, (s + 1.0) / K, "seeds");
   }
-  nl_run_table(r, vt, "variance.tsv");
+  nl_harness_write_table(r, vt, "variance.tsv");
 
   /* Non-stationarity: variance on lattices shifted by frac (last seed). */
   const char *fcols[] = {"frac", "var2d", "var3d"};
@@ -48,7 +48,7 @@ int main(int argc, char **argv)
   for (int i = 0; i <= 8; i++)
     nl_table_append(ft, "ddd", i / 8.0, nl_wavelet_lattice_variance(t2, i / 8.0),
                     nl_wavelet_lattice_variance(t3, i / 8.0));
-  nl_run_table(r, ft, "lattice.tsv");
+  nl_harness_write_table(r, ft, "lattice.tsv");
 
   /* Leakage: mean over seeds of the share of band k's power in band j. */
   const char *lcols[] = {"band", "below", "inside", "inside_sd", "above"};
@@ -65,7 +65,7 @@ int main(int argc, char **argv)
     /* band index grows toward low frequencies: j > k is below in frequency */
     nl_table_append(lt, "idddd", k, lo, in, in_sd, hi);
   }
-  nl_run_table(r, lt, "leakage.tsv");
+  nl_harness_write_table(r, lt, "leakage.tsv");
 
   /* Images of one band in 2D and a slice of 3D, their spectra, and radial
    * power profiles (frequency in cycles per pixel). */
@@ -81,8 +81,8 @@ int main(int argc, char **argv)
   nl_wavelet_bands_grid(t3, &b, size, size, 3.3, 1, img3);
   nl_image *im[4] = {nl_image_from_values(img2, size, size, -1.5, 1.5),
                      nl_image_from_values(img3, size, size, -1.5, 1.5),
-                     nl_example_spectrum_image(img2, size, size, 4),
-                     nl_example_spectrum_image(img3, size, size, 4)};
+                     nl_byexample_spectrum_image(img2, size, size, 4),
+                     nl_byexample_spectrum_image(img3, size, size, 4)};
   const char *labels[] = {"(a) 2D wavelet noise", "(b) slice of 3D wavelet noise",
                           "(c) power spectrum of (a)", "(d) power spectrum of (b)"};
   char title[96];
@@ -90,11 +90,11 @@ int main(int argc, char **argv)
   nl_study_montage(r, (const nl_image *const *)im, labels, 4, 2, title, "noise.png");
   const double *imgs[2] = {img2, img3};
   nl_table *rt = nl_study_radial_table(imgs, (const char *[]){"power2d", "power3d"}, 2, size, 0);
-  nl_run_table(r, rt, "radial.tsv");
+  nl_harness_write_table(r, rt, "radial.tsv");
   const char *ecols[] = {"lo", "hi"};
   nl_table *et = nl_table_alloc(2, ecols);
   nl_table_append(et, "dd", ldexp(1.0, -(band + 2)), ldexp(1.0, -(band + 1)));
-  nl_run_table(r, et, "edges.tsv");
+  nl_harness_write_table(r, et, "edges.tsv");
   nl_table_free(et);
 
   /* Summary against the literature. */
@@ -108,42 +108,42 @@ int main(int argc, char **argv)
   nl_table_append(st, "sddd", "sigma_N^2 2D", m2, s2, 0.265);
   nl_table_append(st, "sddd", "sigma_N^2 3D", m3, s3, 0.296);
   nl_table_append(st, "sddd", "in-band share band 0", in0, in0sd, 1.0);
-  nl_run_table(r, st, "summary.tsv");
+  nl_harness_write_table(r, st, "summary.tsv");
 
-  nl_report_text(r, "Wavelet noise tiles after Cook & DeRose's appendix (2D period %d, 3D period %d), "
+  nl_harness_text(r, "Wavelet noise tiles after Cook & DeRose's appendix (2D period %d, 3D period %d), "
                  "evaluated with the quadratic B-spline; %d seeds from %lu. The downsampling loop "
                  "uses the 32 taps -16..15 (the appendix's `k <= 2i+16` reads one past its array), "
                  "the filter is the first 16 printed values mirrored, and the odd-shifted copy is "
                  "shifted along each axis (the appendix's loop also transposes it).",
                  tile, tile3, K, seed0);
-  nl_report_text(r, "Band variance sigma_N^2 = <N^2> over one period (4 samples per unit and axis): 2D %.4f +- %.4f, 3D %.4f +- %.4f (mean +- sd over seeds). The paper "
+  nl_harness_text(r, "Band variance sigma_N^2 = <N^2> over one period (4 samples per unit and axis): 2D %.4f +- %.4f, 3D %.4f +- %.4f (mean +- sd over seeds). The paper "
                  "quotes 0.265 (eq. 11, citing Cook & DeRose); Cook & DeRose's code normalises with "
                  "0.296 and 0.210 (projected). Our 2D value is %.0f%% %s 0.265; we use our measured "
                  "value in eq. 12 and 14.", m2, s2, m3, s3, 100 * fabs(m2 / 0.265 - 1),
                  m2 > 0.265 ? "above" : "below");
-  nl_report_text(r, "Eq. 5-7 assume each band's power lies inside its octave (D_i F(N_j) = 0 for i != j). "
+  nl_harness_text(r, "Eq. 5-7 assume each band's power lies inside its octave (D_i F(N_j) = 0 for i != j). "
                  "Measured on %d x %d images of single bands: band 0 keeps %.1f%% +- %.1f%% of its power "
                  "inside (1/4, 1/2] cycles per pixel; the rest leaks into the neighbouring octave(s). "
                  "This leakage is what biases eq. 12 when neighbouring weights differ (L2).",
                  size, size, 100 * in0, 100 * in0sd);
-  nl_report_text(r, "Wavelet noise is not stationary: on the lattice shifted by frac its variance runs from "
+  nl_harness_text(r, "Wavelet noise is not stationary: on the lattice shifted by frac its variance runs from "
                  "%.3f (frac 0, B-spline weights 1/8 3/4 1/8) to %.3f (frac 1/2, weights 1/2 1/2) in 2D "
                  "(table below). The finest band of an image, sampled once per lattice unit at one "
                  "random offset, therefore has a variance anywhere in that range; coarser bands sample "
                  "2^k offsets and average it out. We measure sigma_N^2 as the mean over the cell (4 "
                  "samples per unit and axis; 1 sample at half-integers would give the frac-1/2 value).",
                  nl_table_value(ft, 0, "var2d"), nl_table_value(ft, 4, "var2d"));
-  nl_report_table(r, ft, "Variance on the lattice shifted by frac (one tile)", 4);
-  nl_report_table(r, st, "Band variance and in-band share, ours vs the literature", 4);
-  nl_report_table(r, lt, "Share of each band's power below / inside / above its eq. 13 octave (band 0 finest; coarse bands hold few Fourier coefficients)", 3);
-  nl_report_figure(r, "noise.png", "Fig. 3 (a, b): one band of 2D wavelet noise, a slice of 3D wavelet noise, and their power spectra (log, 4 decades)");
-  nl_report_figure(r, "radial.png", "Radially averaged power of one band, 2D and 3D slice; dashed: the octave of eq. 5");
+  nl_harness_report_table(r, ft, "Variance on the lattice shifted by frac (one tile)", 4);
+  nl_harness_report_table(r, st, "Band variance and in-band share, ours vs the literature", 4);
+  nl_harness_report_table(r, lt, "Share of each band's power below / inside / above its eq. 13 octave (band 0 finest; coarse bands hold few Fourier coefficients)", 3);
+  nl_harness_figure(r, "noise.png", "Fig. 3 (a, b): one band of 2D wavelet noise, a slice of 3D wavelet noise, and their power spectra (log, 4 decades)");
+  nl_harness_figure(r, "radial.png", "Radially averaged power of one band, 2D and 3D slice; dashed: the octave of eq. 5");
 
   for (int i = 0; i < 4; i++) nl_image_free(im[i]);
   nl_table_free(vt); nl_table_free(ft); nl_table_free(lt); nl_table_free(rt); nl_table_free(st);
   nl_wavelet_tile_free(t2);
   nl_wavelet_tile_free(t3);
   free(v2); free(v3); free(share); free(var); free(col); free(img2); free(img3);
-  nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
-  return nl_run_end(r);
+  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  return nl_harness_end(r);
 }

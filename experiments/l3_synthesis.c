@@ -3,8 +3,8 @@
  * synthesised four ways: the paper's method (PCA + histogram matching,
  * steffen spline), without histogram matching (Fig. 6b), in RGB without
  * PCA (Fig. 5b), and with a Fritsch-Carlson spline instead of steffen. */
-#include "example/nl_example.h"
-#include "report/nl_report.h"
+#include "byexample/nl_byexample.h"
+#include "harness/nl_harness.h"
 #include "study/nl_study.h"
 
 #include <math.h>
@@ -13,17 +13,17 @@
 enum { NKIND = 4, NVAR = 4 };
 static const char *kinds[NKIND] = {"wavelet", "clouds", "granite", "marble"};
 static const char *variants[NVAR] = {"pca_hist", "pca_nohist", "rgb_hist", "pca_hist_fc"};
-static const nl_example_options var_opt[NVAR] = {{1, 1, 0, 0}, {1, 0, 0, 0}, {0, 1, 0, 0}, {1, 1, 0, 0}};
+static const nl_byexample_options var_opt[NVAR] = {{1, 1, 0, 0}, {1, 0, 0, 0}, {0, 1, 0, 0}, {1, 1, 0, 0}};
 
 int main(int argc, char **argv)
 {
-  nl_run *r = nl_run_begin("l3_synthesis", "L3 - Texture synthesis by example: PCA colour and histogram matching", argc, argv);
-  int quick = nl_run_quick(r);
-  int size = (int)nl_run_param_int(r, "size", quick ? 128 : 512, 16, 4096,
+  nl_harness *r = nl_harness_begin("l3_synthesis", "L3 - Texture synthesis by example: PCA colour and histogram matching", argc, argv);
+  int quick = nl_harness_quick(r);
+  int size = (int)nl_harness_param_int(r, "size", quick ? 128 : 512, 16, 4096,
                                    "side in pixels of the exemplar analysed and of the synthesised textures (quick 128)");
-  nl_run_params_done(r);
-  int K = nl_run_seeds(r);
-  unsigned long seed0 = nl_run_seed(r);
+  nl_harness_params_done(r);
+  int K = nl_harness_seeds(r);
+  unsigned long seed0 = nl_harness_seed(r);
 
   const char *kcols[] = {"kind", "variant", "ks_mean", "ks_sd", "ks_r", "ks_g", "ks_b", "corr_err", "params"};
   nl_table *kt = nl_table_alloc(9, kcols);
@@ -33,30 +33,30 @@ int main(int argc, char **argv)
   for (int i = 0; i < 3; i++) grey[i] = malloc((size_t)size * size * sizeof *grey[i]);
 
   for (int k = 0; k < NKIND; k++) {
-    nl_image *ex = nl_example_exemplar(kinds[k], size, nl_seed_stream(seed0, "l3.exemplar", (unsigned long)k));
+    nl_image *ex = nl_byexample_exemplar(kinds[k], size, nl_seed_stream(seed0, "l3.exemplar", (unsigned long)k));
     nl_image *first[NVAR];
     int nparams = 0;
     for (int v = 0; v < NVAR; v++) {
-      nl_example_params p;
+      nl_byexample_params p;
       nl_error err;
-      if (nl_example_analyse(ex, &var_opt[v], &p, &err)) nl_run_die(r, 1, "%s: %s", kinds[k], err.msg);
-      nl_example_synth_options so = {1, 0, 0, v == 3 ? NL_SPLINE_FRITSCH_CARLSON : NL_SPLINE_STEFFEN};
+      if (nl_byexample_analyse(ex, &var_opt[v], &p, &err)) nl_harness_die(r, 1, "%s: %s", kinds[k], err.msg);
+      nl_byexample_synth_options so = {1, 0, 0, v == 3 ? NL_SPLINE_FRITSCH_CARLSON : NL_SPLINE_STEFFEN};
       double *ks = malloc((size_t)K * sizeof *ks), per[3], acc[3] = {0}, m = 0, ss = 0, ce = 0;
       for (int s = 0; s < K; s++) {
         nl_image *syn;
-        nl_example_synthesize(&p, size, size, nl_seed_replicate(seed0, s), &so, &syn, &err);
+        nl_byexample_synthesize(&p, size, size, nl_seed_replicate(seed0, s), &so, &syn, &err);
         ks[s] = nl_study_ks_channels(ex, syn, per);
         for (int c = 0; c < 3; c++) acc[c] += per[c] / K;
-        ce += nl_example_correlation_error(ex, syn) / K;
+        ce += nl_byexample_correlation_error(ex, syn) / K;
         m += ks[s] / K;
         if (s == 0) first[v] = syn; else nl_image_free(syn);
       }
       for (int s = 0; s < K; s++) ss += (ks[s] - m) * (ks[s] - m);
-      nparams = nl_example_param_count(&p);
+      nparams = nl_byexample_param_count(&p);
       nl_table_append(kt, "ssddddddi", kinds[k], variants[v], m, K > 1 ? sqrt(ss / (K - 1)) : 0.0,
                       acc[0], acc[1], acc[2], ce, nparams);
       free(ks);
-      nl_run_progress(r, (k * NVAR + v + 1.0) / (NKIND * NVAR), kinds[k]);
+      nl_harness_progress(r, (k * NVAR + v + 1.0) / (NKIND * NVAR), kinds[k]);
     }
     /* steffen vs Fritsch-Carlson on the same noise (seed0): pixel difference. */
     double dmax = 0;
@@ -66,12 +66,12 @@ int main(int argc, char **argv)
 
     /* Radial spectra of the luminance: exemplar, with and without histogram matching. */
     const nl_image *src[3] = {ex, first[0], first[1]};
-    for (int i = 0; i < 3; i++) nl_example_luminance(src[i], grey[i]);
+    for (int i = 0; i < 3; i++) nl_byexample_luminance(src[i], grey[i]);
     nl_table *rt = nl_study_radial_table((const double *const *)grey,
                                          (const char *[]){"exemplar", "synthesis", "synthesis_nohist"}, 3, size, 1);
     char name[64];
     snprintf(name, sizeof name, "spectrum_%s.tsv", kinds[k]);
-    nl_run_table(r, rt, name);
+    nl_harness_write_table(r, rt, name);
     nl_table_free(rt);
 
     const nl_image *panels[5] = {ex, first[0], first[1], first[2], first[3]};
@@ -83,10 +83,10 @@ int main(int argc, char **argv)
     for (int v = 0; v < NVAR; v++) nl_image_free(first[v]);
     nl_image_free(ex);
   }
-  nl_run_table(r, kt, "ks.tsv");
-  nl_run_table(r, ft, "spline.tsv");
+  nl_harness_write_table(r, kt, "ks.tsv");
+  nl_harness_write_table(r, ft, "spline.tsv");
 
-  nl_report_text(r, "Exemplars are made procedurally at %d x %d (no photographs ship with the repo): "
+  nl_harness_text(r, "Exemplars are made procedurally at %d x %d (no photographs ship with the repo): "
                  "`wavelet` (three multiresolution wavelet noises mixed by a correlated colour matrix: "
                  "the class the method models exactly), `clouds` (fBm of improved noise through a "
                  "sky ramp, clipped at both ends: a skewed histogram with spikes), `granite` "
@@ -95,7 +95,7 @@ int main(int argc, char **argv)
                  "seeds; KS = two-sample Kolmogorov-Smirnov distance between the exemplar's and the "
                  "synthesis' intensities per channel (mean over R, G, B, then mean +- sd over seeds); "
                  "corr_err = largest difference of the inter-channel correlations.", size, size, K);
-  nl_report_text(r, "Readings: the cumulative histogram is stored as the channel's quantiles at "
+  nl_harness_text(r, "Readings: the cumulative histogram is stored as the channel's quantiles at "
                  "p = j/9, j = 0..9 (min to max); synthesis maps noise by Phi(M / sigma_M) then a "
                  "monotone cubic through (p_j, q_j); sigma_M^2 = sigma_N^2 sum w_i^2 (the paper's "
                  "eq. 14 prints sum w_i, which cannot be a variance of a weighted sum). The paper "
@@ -105,20 +105,20 @@ int main(int argc, char **argv)
                  "difference between the two, same noise, is in the spline table. The paper counts "
                  "66 parameters for 512^2 RGB (9 matrix + 30 histogram + 27 weights); our count is "
                  "in the params column (we also store 3 means, sigma_N^2 and the tile period).");
-  nl_report_table(r, kt, "KS distance and colour-correlation error per exemplar and variant", 3);
-  nl_report_table(r, ft, "steffen vs Fritsch-Carlson: largest pixel difference (intensity units)", 4);
+  nl_harness_report_table(r, kt, "KS distance and colour-correlation error per exemplar and variant", 3);
+  nl_harness_report_table(r, ft, "steffen vs Fritsch-Carlson: largest pixel difference (intensity units)", 4);
   for (int k = 0; k < NKIND; k++) {
     char file[64], cap[320];
     snprintf(file, sizeof file, "synthesis_%s.png", kinds[k]);
     snprintf(cap, sizeof cap, "Fig. 5-8 analogue, %s: (a) exemplar, (b) PCA + histogram matching (the paper's method), "
              "(c) without histogram matching (Fig. 6b), (d) independent RGB channels (Fig. 5b), (e) Fritsch-Carlson spline", kinds[k]);
-    nl_report_figure(r, file, cap);
+    nl_harness_figure(r, file, cap);
   }
-  nl_report_figure(r, "spectra.png", "Radially averaged power spectra (luminance) of exemplar and synthesis, per exemplar");
+  nl_harness_figure(r, "spectra.png", "Radially averaged power spectra (luminance) of exemplar and synthesis, per exemplar");
 
   nl_table_free(kt);
   nl_table_free(ft);
   for (int i = 0; i < 3; i++) free(grey[i]);
-  nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
-  return nl_run_end(r);
+  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  return nl_harness_end(r);
 }

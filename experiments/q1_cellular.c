@@ -4,34 +4,34 @@
  * closest to r") and under inverse-CDF sampling: chi-square of the counts
  * against Poisson(lambda), KS of F1 against 1 - exp(-lambda 4/3 pi r^3). */
 #include "cellular/nl_cellular.h"
-#include "report/nl_report.h"
+#include "harness/nl_harness.h"
 #include "study/nl_study.h"
 
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>
 #include <string.h>
 
-static nl_cellular *make(nl_run *r, double lambda, int M, nl_count_rule rule, unsigned long seed)
+static nl_cellular *make(nl_harness *r, double lambda, int M, nl_cellular_count_rule rule, unsigned long seed)
 {
   nl_cellular *c;
   nl_error err;
-  if (nl_cellular_alloc(lambda, M, rule, seed, &c, &err)) nl_run_die(r, 2, "%s", err.msg);
+  if (nl_cellular_alloc(lambda, M, rule, seed, &c, &err)) nl_harness_die(r, 2, "%s", err.msg);
   return c;
 }
 
 /* Per seed: chi-square of the counts and KS of F1; one row of `per_seed`. */
-static void one_seed(nl_run *r, nl_cellular *c, int side, long points, unsigned long seed,
+static void one_seed(nl_harness *r, nl_cellular *c, int side, long points, unsigned long seed,
                      nl_table *per_seed, double *hist)
 {
-  nl_chisq_result cs;
-  nl_ks_result ks;
+  nl_stats_chisq_result cs;
+  nl_stats_ks_result ks;
   nl_error err;
   double mean_f1, mean, var;
   nl_cellular_count_histogram(c, 0, side, hist);
-  if (nl_cellular_count_chisq(c, hist, &cs, &err)) nl_run_die(r, 1, "%s", err.msg);
-  if (nl_cellular_f1_ks(c, (size_t)points, seed, &ks, &mean_f1, &err)) nl_run_die(r, 1, "%s", err.msg);
+  if (nl_cellular_count_chisq(c, hist, &cs, &err)) nl_harness_die(r, 1, "%s", err.msg);
+  if (nl_cellular_f1_ks(c, (size_t)points, seed, &ks, &mean_f1, &err)) nl_harness_die(r, 1, "%s", err.msg);
   nl_cellular_count_moments(hist, c->M, &mean, &var);
-  nl_table_append(per_seed, "siddddiddd", nl_count_rule_name(c->rule), (int)seed, mean, var,
+  nl_table_append(per_seed, "siddddiddd", nl_cellular_count_rule_name(c->rule), (int)seed, mean, var,
                   cs.chi2, cs.p, (int)cs.df, ks.d, ks.p, mean_f1);
 }
 
@@ -53,13 +53,13 @@ static double summarise(const nl_table *t, const char *rule, const char *col, co
 
 static nl_image *f_panel(const nl_cellular *c, const char *expr, int size, double extent)
 {
-  nl_gctbf_basis gb = {c, {0}};
-  nl_gctbf_parse(expr, &gb.g, NULL);
-  nl_basis b = nl_basis_gctbf(&gb);
-  nl_octaves o = nl_octaves_fbm(1, 1.0, 1.0);
-  nl_window w = {0, 0, 0.5, extent, size, size};
+  nl_cellular_gctbf_basis gb = {c, {0}};
+  nl_cellular_gctbf_parse(expr, &gb.g, NULL);
+  nl_noise_basis b = nl_cellular_basis_gctbf(&gb);
+  nl_noise_octaves o = nl_noise_octaves_fbm(1, 1.0, 1.0);
+  nl_noise_window w = {0, 0, 0.5, extent, size, size};
   double *v = nl_xmalloc((size_t)size * size * sizeof *v);
-  nl_fractal_grid(&b, &o, &w, v);
+  nl_noise_fractal_grid(&b, &o, &w, v);
   nl_image *im = nl_image_from_values(v, size, size, 0.0, fmax(0.0, gsl_stats_max(v, 1, (size_t)size * size)));
   free(v);
   return im;
@@ -67,16 +67,16 @@ static nl_image *f_panel(const nl_cellular *c, const char *expr, int size, doubl
 
 int main(int argc, char **argv)
 {
-  nl_run *r = nl_run_begin("q1_cellular", "Q1 - Cellular F1..F4 and the count rule", argc, argv);
-  int quick = nl_run_quick(r);
-  double lambda = nl_run_param(r, "lambda", 4.0, 1e-3, 1000.0, "Poisson mean lambda of feature points per unit cube (Qin & Yang: 4)");
-  int M = (int)nl_run_param_int(r, "M", 50, 1, NL_CELLULAR_MAX_M, "most feature points a cube may hold (Qin & Yang: 50)");
-  int side = (int)nl_run_param_int(r, "side", quick ? 16 : 32, 2, 256, "cubes per side of the block whose point counts are tested (side^3 cubes; quick 16)");
-  long points = nl_run_param_int(r, "points", quick ? 1000 : 5000, 10, 10000000, "random points at which F1 is tested against the nearest-neighbour law (quick 1000)");
-  int size = (int)nl_run_param_int(r, "size", quick ? 96 : 256, 8, 4096, "side in pixels of the F1..F4 images (quick 96)");
-  nl_run_params_done(r);
-  int seeds = nl_run_seeds(r);
-  unsigned long seed0 = nl_run_seed(r);
+  nl_harness *r = nl_harness_begin("q1_cellular", "Q1 - Cellular F1..F4 and the count rule", argc, argv);
+  int quick = nl_harness_quick(r);
+  double lambda = nl_harness_param(r, "lambda", 4.0, 1e-3, 1000.0, "Poisson mean lambda of feature points per unit cube (Qin & Yang: 4)");
+  int M = (int)nl_harness_param_int(r, "M", 50, 1, NL_CELLULAR_MAX_M, "most feature points a cube may hold (Qin & Yang: 50)");
+  int side = (int)nl_harness_param_int(r, "side", quick ? 16 : 32, 2, 256, "cubes per side of the block whose point counts are tested (side^3 cubes; quick 16)");
+  long points = nl_harness_param_int(r, "points", quick ? 1000 : 5000, 10, 10000000, "random points at which F1 is tested against the nearest-neighbour law (quick 1000)");
+  int size = (int)nl_harness_param_int(r, "size", quick ? 96 : 256, 8, 4096, "side in pixels of the F1..F4 images (quick 96)");
+  nl_harness_params_done(r);
+  int seeds = nl_harness_seeds(r);
+  unsigned long seed0 = nl_harness_seed(r);
 
   const char *pcols[] = {"rule", "seed", "mean_count", "var_count", "chi2", "chi2_p", "df",
                          "ks_d", "ks_p", "mean_f1"};
@@ -87,11 +87,11 @@ int main(int argc, char **argv)
   double ncubes = (double)side * side * side;
   for (int rule = 0; rule < 2; rule++)
     for (int k = 0; k < seeds; k++) {
-      nl_cellular *c = make(r, lambda, M, (nl_count_rule)rule, nl_seed_replicate(seed0, k));
+      nl_cellular *c = make(r, lambda, M, (nl_cellular_count_rule)rule, nl_seed_replicate(seed0, k));
       one_seed(r, c, side, points, nl_seed_replicate(seed0, k), per, h);
       for (int m = 0; m <= M; m++) hist[rule][m] += h[m] / (ncubes * seeds);
       nl_cellular_free(c);
-      nl_run_progress(r, (rule * seeds + k + 1.0) / (2.0 * seeds), "seeds");
+      nl_harness_progress(r, (rule * seeds + k + 1.0) / (2.0 * seeds), "seeds");
     }
   nl_cellular *ref = make(r, lambda, M, NL_COUNT_INVERSE_CDF, seed0);
   for (int m = 0; m <= (M < 20 ? M : 20); m++)
@@ -102,15 +102,15 @@ int main(int argc, char **argv)
   nl_table *sum = nl_table_alloc(9, scols);
   double theory = tgamma(4.0 / 3.0) * pow(4.0 / 3.0 * NL_PI * lambda, -1.0 / 3.0);
   for (int rule = 0; rule < 2; rule++) {
-    const char *name = nl_count_rule_name((nl_count_rule)rule);
+    const char *name = nl_cellular_count_rule_name((nl_cellular_count_rule)rule);
     int rc = 0, rk = 0;
     double mc = summarise(per, name, "mean_count", NULL, NULL), chi = summarise(per, name, "chi2", "chi2_p", &rc);
     double ksd = summarise(per, name, "ks_d", "ks_p", &rk), mf = summarise(per, name, "mean_f1", NULL, NULL);
     nl_table_append(sum, "sddididdi", name, mc, chi, rc, ksd, rk, mf, theory, seeds);
   }
-  nl_run_table(r, per, "tests.tsv");
-  nl_run_table(r, sum, "summary.tsv");
-  nl_run_table(r, dist, "counts.tsv");
+  nl_harness_write_table(r, per, "tests.tsv");
+  nl_harness_write_table(r, sum, "summary.tsv");
+  nl_harness_write_table(r, dist, "counts.tsv");
 
   const char *exprs[] = {"F1", "F2", "F3", "F4", "F2 - F1"};
   nl_image *panels[6];
@@ -120,17 +120,17 @@ int main(int argc, char **argv)
   const char *labels[] = {"F1", "F2", "F3", "F4", "F2 - F1", "F1 paper rule"};
   nl_study_montage(r, (const nl_image *const *)panels, labels, 6, 3, "F_i on z = 0.5", "planes.png");
 
-  nl_report_text(r, "**Paper (sec. 3.2):** counts per unit cube from \"the m whose p(m) is closest to "
+  nl_harness_text(r, "**Paper (sec. 3.2):** counts per unit cube from \"the m whose p(m) is closest to "
                     "r\", lambda = %g, M = %d; no statistics reported. **Ours:** both rules on %d^3 cubes "
                     "(chi-square against Poisson(lambda), tail pooled so every expected count is >= 5) "
                     "and F1 at %ld random points in [0, 1000)^3 (KS against 1 - exp(-lambda 4/3 pi r^3)), "
                     "%d seeds (permutation tables); `*_rejects` counts seeds with p < 0.01.\n",
                   lambda, M, side, points, seeds);
-  nl_report_table(r, sum, "Count rule against Poisson and the nearest-neighbour law", 4);
-  nl_report_table(r, dist, "Fraction of cubes with m points (mean over seeds)", 4);
-  nl_report_figure(r, "counts.png", "Count distribution of the two rules against Poisson(lambda)");
-  nl_report_figure(r, "planes.png", "F1..F4 and F2 - F1 on the plane z = 0.5 (inverse-CDF rule), and F1 under the paper's rule");
-  nl_report_text(r, "The paper's rule is not a sampler of p: every r above max p(m) = %.4f "
+  nl_harness_report_table(r, sum, "Count rule against Poisson and the nearest-neighbour law", 4);
+  nl_harness_report_table(r, dist, "Fraction of cubes with m points (mean over seeds)", 4);
+  nl_harness_figure(r, "counts.png", "Count distribution of the two rules against Poisson(lambda)");
+  nl_harness_figure(r, "planes.png", "F1..F4 and F2 - F1 on the plane z = 0.5 (inverse-CDF rule), and F1 under the paper's rule");
+  nl_harness_text(r, "The paper's rule is not a sampler of p: every r above max p(m) = %.4f "
                     "(%.0f%% of draws) gives the mode, and small r give large m, so the counts "
                     "concentrate on one value (fraction %.3f at m = 3 against Poisson's %.3f; mean count "
                     "%.3f, not lambda). Chi-square rejects it (p < 0.01) on %d of %d seeds and KS "
@@ -145,6 +145,6 @@ int main(int argc, char **argv)
   for (int k = 0; k < 6; k++) nl_image_free(panels[k]);
   nl_cellular_free(ref); nl_cellular_free(closest);
   nl_table_free(per); nl_table_free(sum); nl_table_free(dist);
-  nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
-  return nl_run_end(r);
+  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  return nl_harness_end(r);
 }

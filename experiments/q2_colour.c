@@ -2,7 +2,7 @@
  * pattern(x) = spline(clamp(GCTBF(x), 0, 1), c1..c13) with the 13 blue-marble
  * knots of sec. 4.1, for Perlin noise and five GCTBF combinations. */
 #include "cellular/nl_cellular.h"
-#include "report/nl_report.h"
+#include "harness/nl_harness.h"
 #include "study/nl_study.h"
 #include "texture/nl_texture.h"
 
@@ -15,18 +15,18 @@ static const char *combos[5] = {"F1", "F2 - F1", "F1F2", "F2 - F1 - F1F1", "F1F2
 
 int main(int argc, char **argv)
 {
-  nl_run *r = nl_run_begin("q2_colour", "Q2 - GCTBF colour mapping with the 13-knot spline", argc, argv);
-  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 96 : 256, 8, 4096,
+  nl_harness *r = nl_harness_begin("q2_colour", "Q2 - GCTBF colour mapping with the 13-knot spline", argc, argv);
+  int size = (int)nl_harness_param_int(r, "size", nl_harness_quick(r) ? 96 : 256, 8, 4096,
                                    "side in pixels of the colour-mapped images (quick 96)");
-  double extent = nl_run_param(r, "extent", 4.0, 1e-3, 1e4,
+  double extent = nl_harness_param(r, "extent", 4.0, 1e-3, 1e4,
                                "side of the square [0, extent)^2 the images cover, in feature-cube units");
-  double perlin_freq = nl_run_param(r, "perlin_freq", 2.0, 1e-3, 1e3,
+  double perlin_freq = nl_harness_param(r, "perlin_freq", 2.0, 1e-3, 1e3,
                                     "frequency of the Perlin noise panel");
-  nl_run_params_done(r);
-  int seeds = nl_run_seeds(r);
+  nl_harness_params_done(r);
+  int seeds = nl_harness_seeds(r);
   size_t npix = (size_t)size * size;
-  nl_window win = {0, 0, 0.5, extent, size, size};
-  nl_ramp ramp = nl_cellular_marble_ramp();
+  nl_noise_window win = {0, 0, 0.5, extent, size, size};
+  nl_texture_ramp ramp = nl_texture_ramp_cellular_marble();
   double *v = nl_xmalloc(npix * sizeof *v);
   nl_image *panels[6];
   const char *labels[6] = {"Perlin noise"};
@@ -36,23 +36,23 @@ int main(int argc, char **argv)
   for (int pat = 0; pat < 6; pat++) {
     double st[4] = {0, 0, 0, 0};
     for (int k = 0; k < seeds; k++) {
-      unsigned long seed = nl_seed_replicate(nl_run_seed(r), k);
+      unsigned long seed = nl_seed_replicate(nl_harness_seed(r), k);
       if (pat == 0) {
         /* RenderMan's noise() lies in [0, 1] around 1/2: 0.5 + 0.5 Perlin. */
-        nl_perm3 p;
-        nl_perm3_seed(&p, seed);
-        nl_basis b = nl_basis_perm3(&p);
-        nl_octaves o = nl_octaves_fbm(1, 0.5, 1.0);
+        nl_noise_perm3 p;
+        nl_noise_perm3_seed(&p, seed);
+        nl_noise_basis b = nl_noise_basis_perm3(&p);
+        nl_noise_octaves o = nl_noise_octaves_fbm(1, 0.5, 1.0);
         o.freq[0] = perlin_freq;
-        nl_fractal_grid(&b, &o, &win, v);
+        nl_noise_fractal_grid(&b, &o, &win, v);
         for (size_t q = 0; q < npix; q++) v[q] = 0.5 + 0.5 * v[q];
       } else {
         nl_cellular *c;
-        nl_gctbf g;
+        nl_cellular_gctbf g;
         nl_error err;
-        if (nl_cellular_alloc(4.0, 50, NL_COUNT_INVERSE_CDF, seed, &c, &err)) nl_run_die(r, 1, "%s", err.msg);
-        if (nl_gctbf_parse(combos[pat - 1], &g, &err)) nl_run_die(r, 2, "%s", err.msg);
-        nl_gctbf_grid(c, &g, &win, v);
+        if (nl_cellular_alloc(4.0, 50, NL_COUNT_INVERSE_CDF, seed, &c, &err)) nl_harness_die(r, 1, "%s", err.msg);
+        if (nl_cellular_gctbf_parse(combos[pat - 1], &g, &err)) nl_harness_die(r, 2, "%s", err.msg);
+        nl_cellular_gctbf_grid(c, &g, &win, v);
         nl_cellular_free(c);
         labels[pat] = combos[pat - 1];
       }
@@ -62,14 +62,14 @@ int main(int argc, char **argv)
       st[1] += gsl_stats_sd(v, 1, npix) / seeds;
       st[2] = k ? fmin(st[2], mn) : mn;
       st[3] = k ? fmax(st[3], mx) : mx;
-      if (k == 0) panels[pat] = nl_ramp_image(&ramp, v, size, size, 0.0, 1.0);
+      if (k == 0) panels[pat] = nl_texture_ramp_image(&ramp, v, size, size, 0.0, 1.0);
     }
     nl_table_append(t, "sdddd", labels[pat], st[0], st[1], st[2], st[3]);
   }
-  nl_run_table(r, t, "values.tsv");
+  nl_harness_write_table(r, t, "values.tsv");
   nl_study_montage(r, (const nl_image *const *)panels, labels, 6, 3, "Fig. 2: spline colour map", "colour.png");
 
-  nl_report_text(r, "**Paper (Fig. 2):** eq. 4 with the 13 blue-marble knots of sec. 4.1, Perlin noise "
+  nl_harness_text(r, "**Paper (Fig. 2):** eq. 4 with the 13 blue-marble knots of sec. 4.1, Perlin noise "
                     "and five GCTBF combinations (images only; the combinations are drawn in the "
                     "figure, not named in the text). **Ours:** the plane z = 0.5 over [0, %g)^2, "
                     "lambda = 4 with inverse-CDF counts, Ebert's Catmull-Rom spline (knots 1 and 13 "
@@ -77,11 +77,11 @@ int main(int argc, char **argv)
                     "Combinations chosen: F1, F2 - F1 (Worley's linear ones), F1F2, F2 - F1 - F1F1, "
                     "F1F2 + F2F3. The table gives the value range that the clamp to [0, 1] sees "
                     "(mean over %d seeds).\n", extent, perlin_freq, seeds);
-  nl_report_table(r, t, "GCTBF values before the clamp", 4);
-  nl_report_figure(r, "colour.png", "Fig. 2: Perlin noise and five GCTBF combinations through the 13-knot spline");
+  nl_harness_report_table(r, t, "GCTBF values before the clamp", 4);
+  nl_harness_figure(r, "colour.png", "Fig. 2: Perlin noise and five GCTBF combinations through the 13-knot spline");
   for (int k = 0; k < 6; k++) nl_image_free(panels[k]);
   free(v);
   nl_table_free(t);
-  nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
-  return nl_run_end(r);
+  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  return nl_harness_end(r);
 }

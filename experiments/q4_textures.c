@@ -3,7 +3,7 @@
  * marble sum (-1)^i F_i + sum (-1)^(i+j) F_i F_j, wood F1 - F1F1 and
  * F3 - F3F3, sky F1F2 + F2F3 and F1, flame F1. */
 #include "cellular/nl_cellular.h"
-#include "report/nl_report.h"
+#include "harness/nl_harness.h"
 #include "study/nl_study.h"
 #include "texture/nl_texture.h"
 
@@ -19,30 +19,30 @@ static const char *marble =
   " + F3F1 - F3F2 + F3F3 - F3F4 - F4F1 + F4F2 - F4F3 + F4F4";
 
 typedef struct {
-  nl_run *r;
+  nl_harness *r;
   int size, octaves, seeds;
   double k;
-  nl_window win;
+  nl_noise_window win;
   nl_table *t;
 } q4;
 
 enum { CLOUD = NL_GCTBF_CLOUD, FLAME = NL_GCTBF_FLAME, PLAIN = NL_GCTBF_PLAIN };
 
 /* Values of one texture over seeds (table row), image of the first seed. */
-static nl_image *texture(q4 *q, int kind, const char *label, const char *expr, const nl_ramp *ramp,
+static nl_image *texture(q4 *q, int kind, const char *label, const char *expr, const nl_texture_ramp *ramp,
                          double lo, double hi)
 {
   size_t n = (size_t)q->size * q->size;
   double *v = nl_xmalloc(n * sizeof *v), mean = 0, sd = 0;
   nl_image *im = NULL;
   for (int s = 0; s < q->seeds; s++) {
-    unsigned long seed = nl_seed_replicate(nl_run_seed(q->r), s);
+    unsigned long seed = nl_seed_replicate(nl_harness_seed(q->r), s);
     nl_error err;
-    if (nl_cellular_texture_grid((nl_gctbf_texture)kind, expr, q->octaves, q->k, &q->win, seed, v, &err))
-      nl_run_die(q->r, 1, "%s", err.msg);
+    if (nl_cellular_texture_grid((nl_cellular_gctbf_texture)kind, expr, q->octaves, q->k, &q->win, seed, v, &err))
+      nl_harness_die(q->r, 1, "%s", err.msg);
     mean += gsl_stats_mean(v, 1, n) / q->seeds;
     sd += gsl_stats_sd(v, 1, n) / q->seeds;
-    if (s == 0) im = ramp ? nl_ramp_image(ramp, v, q->size, q->size, lo, hi) : nl_gctbf_cloud_colour(v, q->size, q->size);
+    if (s == 0) im = ramp ? nl_texture_ramp_image(ramp, v, q->size, q->size, lo, hi) : nl_texture_cloud_colour(v, q->size, q->size);
   }
   nl_table_append(q->t, "sssdd", label, kind == CLOUD ? "eq. 7 cloud" : kind == FLAME ? "fractal + spline" : "spline / ramp",
                   expr ? expr : "Perlin", mean, sd);
@@ -53,16 +53,16 @@ static nl_image *texture(q4 *q, int kind, const char *label, const char *expr, c
 int main(int argc, char **argv)
 {
   q4 q = {0};
-  q.r = nl_run_begin("q4_textures", "Q4 - GCTBF cloud, marble, wood and flame textures", argc, argv);
-  q.size = (int)nl_run_param_int(q.r, "size", nl_run_quick(q.r) ? 96 : 256, 8, 4096,
+  q.r = nl_harness_begin("q4_textures", "Q4 - GCTBF cloud, marble, wood and flame textures", argc, argv);
+  q.size = (int)nl_harness_param_int(q.r, "size", nl_harness_quick(q.r) ? 96 : 256, 8, 4096,
                                  "side in pixels of the texture images (quick 96)");
-  q.octaves = (int)nl_run_param_int(q.r, "octaves", 4, 0, 30,
+  q.octaves = (int)nl_harness_param_int(q.r, "octaves", 4, 0, 30,
                                     "octaves added above the first in the cloud and texture sums (0 = one octave)");
-  q.k = nl_run_param(q.r, "k", 2.0, 1e-3, 1e3,
+  q.k = nl_harness_param(q.r, "k", 2.0, 1e-3, 1e3,
                      "scale k between successive octaves of the GCTBF cloud (Qin & Yang eq. 7)");
-  nl_run_params_done(q.r);
-  q.seeds = nl_run_seeds(q.r);
-  q.win = (nl_window){0, 0, 0.5, 2.0, q.size, q.size};
+  nl_harness_params_done(q.r);
+  q.seeds = nl_harness_seeds(q.r);
+  q.win = (nl_noise_window){0, 0, 0.5, 2.0, q.size, q.size};
   const char *cols[] = {"texture", "method", "gctbf", "mean", "sd"};
   q.t = nl_table_alloc(5, cols);
 
@@ -79,7 +79,7 @@ int main(int argc, char **argv)
   const double wpos[2] = {0.0, 1.0};
   const float firec[6][3] = {{0, 0, 0}, {0, 0, 0}, {0.8f, 0.1f, 0.0f}, {1.0f, 0.55f, 0.0f},
                              {1.0f, 0.95f, 0.5f}, {1.0f, 1.0f, 1.0f}};
-  nl_ramp mr = nl_cellular_marble_ramp(), wr = nl_ramp_linear(2, wpos, woodc), fr = nl_ramp_spline(6, firec);
+  nl_texture_ramp mr = nl_texture_ramp_cellular_marble(), wr = nl_texture_ramp_linear(2, wpos, woodc), fr = nl_texture_ramp_spline(6, firec);
   nl_image *tex[6];
   const char *tlabels[6] = {"marble", "wood F1 - F1F1", "wood F3 - F3F3", "sky F1F2 + F2F3", "sky F1", "flame F1"};
   tex[0] = texture(&q, PLAIN, "marble", marble, &mr, 0.0, 1.0);
@@ -89,9 +89,9 @@ int main(int argc, char **argv)
   tex[4] = texture(&q, CLOUD, "sky", "F1", NULL, 0, 1);
   tex[5] = texture(&q, FLAME, "flame", "F1", &fr, 0.2, 1.0);
   nl_study_montage(q.r, (const nl_image *const *)tex, tlabels, 6, 3, "Fig. 6: GCTBF textures", "textures.png");
-  nl_run_table(q.r, q.t, "textures.tsv");
+  nl_harness_write_table(q.r, q.t, "textures.tsv");
 
-  nl_report_text(q.r, "**Paper (Fig. 5, 6):** cloud pattern eq. 7 for Perlin and five GCTBF; marble "
+  nl_harness_text(q.r, "**Paper (Fig. 5, 6):** cloud pattern eq. 7 for Perlin and five GCTBF; marble "
                       "sum (-1)^i F_i + sum (-1)^(i+j) F_i F_j, wood F1 - F1F1 and F3 - F3F3, sky "
                       "F1F2 + F2F3 and F1, flame F1 (images only; colours other than the sky/cloud of "
                       "eq. 7 and the marble knots of sec. 4.1 are not given). **Ours:** plane z = 0.5, "
@@ -106,11 +106,11 @@ int main(int argc, char **argv)
                       "F - F^2 for F <= 1) linearly from light to dark brown; flame maps the fractal "
                       "sum of F1 over [0.2, 1] through a black-red-orange-yellow-white spline.\n",
                   q.k, q.octaves, q.seeds);
-  nl_report_table(q.r, q.t, "Value statistics before colour mapping (mean over seeds)", 4);
-  nl_report_figure(q.r, "clouds.png", "Fig. 5: eq. 7 clouds, Perlin and five GCTBF combinations");
-  nl_report_figure(q.r, "textures.png", "Fig. 6: marble, wood, sky and flame from the GCTBF");
+  nl_harness_report_table(q.r, q.t, "Value statistics before colour mapping (mean over seeds)", 4);
+  nl_harness_figure(q.r, "clouds.png", "Fig. 5: eq. 7 clouds, Perlin and five GCTBF combinations");
+  nl_harness_figure(q.r, "textures.png", "Fig. 6: marble, wood, sky and flame from the GCTBF");
   for (int k = 0; k < 6; k++) { nl_image_free(clouds[k]); nl_image_free(tex[k]); }
   nl_table_free(q.t);
-  nl_run_check_measured(q.r, "*", 100);   /* measured tolerances (nl_report.h) */
-  return nl_run_end(q.r);
+  nl_harness_check_measured(q.r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  return nl_harness_end(q.r);
 }

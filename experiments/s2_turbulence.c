@@ -4,16 +4,16 @@
 
 int main(int argc, char **argv)
 {
-  nl_run *r = nl_run_begin("s2_turbulence", "S2 - Turbulence at 1, 2, 3 and 8 octaves", argc, argv);
-  nl_window win = nl_study_window(r);
-  nl_run_params_done(r);
+  nl_harness *r = nl_harness_begin("s2_turbulence", "S2 - Turbulence at 1, 2, 3 and 8 octaves", argc, argv);
+  nl_noise_window win = nl_study_window(r);
+  nl_harness_params_done(r);
 
   nl_table_free(nl_study_octave_series(r, &win, 1, "turbulence, the fractal sum of |noise|, at 1, 2, 3 "
                                        "and 8 octaves (images only).", "turbulence",
                                        "turbulence(p) = sum |noise(2^j p)| / 2^j"));
-  nl_report_text(r, "The absolute value folds each octave at its zero set, the dark creases. Folding "
+  nl_harness_text(r, "The absolute value folds each octave at its zero set, the dark creases. Folding "
                     "moves power into the DC term (the mean is positive) and into frequencies above "
                     "the octave's band, so even one octave has a broad spectrum, unlike S1.\n");
-  nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
-  return nl_run_end(r);
+  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  return nl_harness_end(r);
 }

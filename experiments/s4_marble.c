@@ -1,7 +1,7 @@
 /* S4 - Shaffer's marble: p.y += a * fractal_sum(p); u = (1 + sin(p.y)) / 2,
  * mapped through a colour ramp (slides "Marble", panels (a)-(c)). */
 #include "noise/nl_noise.h"
-#include "report/nl_report.h"
+#include "harness/nl_harness.h"
 #include "texture/nl_texture.h"
 
 #include <gsl/gsl_histogram.h>
@@ -14,21 +14,21 @@
 
 int main(int argc, char **argv)
 {
-  nl_run *r = nl_run_begin("s4_marble", "S4 - Marble through a colour ramp", argc, argv);
-  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 512, 16, 4096,
+  nl_harness *r = nl_harness_begin("s4_marble", "S4 - Marble through a colour ramp", argc, argv);
+  int size = (int)nl_harness_param_int(r, "size", nl_harness_quick(r) ? 128 : 512, 16, 4096,
                                    "side in pixels of the marble images (quick 128)");
-  int octaves = (int)nl_run_param_int(r, "octaves", 6, 1, 30,
+  int octaves = (int)nl_harness_param_int(r, "octaves", 6, 1, 30,
                                       "octaves of the turbulence that perturbs the stripes");
-  double stripes = nl_run_param(r, "stripes", 1.0, 1e-3, 1e3,
+  double stripes = nl_harness_param(r, "stripes", 1.0, 1e-3, 1e3,
                                 "stripes per unit along y: u = (1 + sin(2 pi stripes p.y)) / 2, p.y displaced by turbulence");
-  double extent = nl_run_param(r, "extent", 4.0, 1e-3, 1e4,
+  double extent = nl_harness_param(r, "extent", 4.0, 1e-3, 1e4,
                                "side of the noise-space square [0, extent)^2 the images cover");
-  nl_run_params_done(r);
+  nl_harness_params_done(r);
 
   const double amps[NA] = {0, 0.25, 0.5, 1.0};
-  nl_octaves o = nl_octaves_fractal(octaves);
-  nl_window win = {0, 0, 0.5, extent, size, size};
-  nl_ramp ramp = nl_ramp_marble();
+  nl_noise_octaves o = nl_noise_octaves_fractal(octaves);
+  nl_noise_window win = {0, 0, 0.5, extent, size, size};
+  nl_texture_ramp ramp = nl_texture_ramp_marble();
   size_t npix = (size_t)size * size;
   double *u = nl_xmalloc(npix * sizeof *u);
   const char *hcols[NA + 1] = {"u", "a=0", "a=0.25", "a=0.5", "a=1"};
@@ -39,21 +39,21 @@ int main(int argc, char **argv)
   nl_image *panels[NA];
   char labels[NA][32];
   const char *lab[NA];
-  int nseeds = nl_run_seeds(r);
+  int nseeds = nl_harness_seeds(r);
   double *m = nl_xmalloc((size_t)nseeds * sizeof *m), *sd = nl_xmalloc((size_t)nseeds * sizeof *sd);
   gsl_histogram *h = gsl_histogram_alloc(NBINS);
   gsl_histogram_set_ranges_uniform(h, 0.0, 1.0 + 1e-12);
   for (int i = 0; i < NA; i++) {
     gsl_histogram_reset(h);
     for (int k = 0; k < nseeds; k++) {
-      nl_perm3 p;
-      nl_perm3_seed(&p, nl_seed_replicate(nl_run_seed(r), k));
-      nl_basis b = nl_basis_perm3(&p);
-      nl_marble_grid(&b, &o, &win, NL_TWO_PI * stripes, amps[i], u);
+      nl_noise_perm3 p;
+      nl_noise_perm3_seed(&p, nl_seed_replicate(nl_harness_seed(r), k));
+      nl_noise_basis b = nl_noise_basis_perm3(&p);
+      nl_texture_marble_grid(&b, &o, &win, NL_TWO_PI * stripes, amps[i], u);
       m[k] = gsl_stats_mean(u, 1, npix);
       sd[k] = gsl_stats_sd_m(u, 1, npix, m[k]);
       for (size_t q = 0; q < npix; q++) gsl_histogram_increment(h, u[q]);
-      if (k == 0) panels[i] = nl_ramp_image(&ramp, u, size, size, 0, 1);
+      if (k == 0) panels[i] = nl_texture_ramp_image(&ramp, u, size, size, 0, 1);
     }
     for (int bin = 0; bin < NBINS; bin++)
       nl_table_set(hist, (size_t)bin, hcols[i + 1], gsl_histogram_get(h, bin) / ((double)npix * nseeds) * NBINS);
@@ -62,28 +62,28 @@ int main(int argc, char **argv)
     snprintf(labels[i], sizeof labels[i], "(%c) a = %g", 'a' + i, amps[i]);
     lab[i] = labels[i];
   }
-  nl_image *mont = nl_montage((const nl_image *const *)panels, lab, NA, NA, "marble: u = (1 + sin(2 pi (y + a fractal_sum(p)))) / 2");
-  nl_run_image(r, mont, "panels.png");
-  nl_run_table(r, hist, "u_density.tsv");
-  nl_run_table(r, dist, "distribution.tsv");
+  nl_image *mont = nl_image_montage((const nl_image *const *)panels, lab, NA, NA, "marble: u = (1 + sin(2 pi (y + a fractal_sum(p)))) / 2");
+  nl_harness_write_image(r, mont, "panels.png");
+  nl_harness_write_table(r, hist, "u_density.tsv");
+  nl_harness_write_table(r, dist, "distribution.tsv");
   /* Regression rules: u_mean and u_sd are means over seeds with their spreads
-   * beside them (statistical rules, see nl_report.h); the density is a count
+   * beside them (statistical rules, see nl_harness.h); the density is a count
    * of samples per bin and stays exact. */
-  nl_run_check(r, "distribution.tsv", "u_mean", "welch u_mean_sd 1e-3");
-  nl_run_check(r, "distribution.tsv", "u_sd", "welch u_sd_sd 1e-3");
-  nl_run_check(r, "distribution.tsv", "u_mean_sd", "ftest 1e-3");
-  nl_run_check(r, "distribution.tsv", "u_sd_sd", "ftest 1e-3");
+  nl_harness_check(r, "distribution.tsv", "u_mean", "welch u_mean_sd 1e-3");
+  nl_harness_check(r, "distribution.tsv", "u_sd", "welch u_sd_sd 1e-3");
+  nl_harness_check(r, "distribution.tsv", "u_mean_sd", "ftest 1e-3");
+  nl_harness_check(r, "distribution.tsv", "u_sd_sd", "ftest 1e-3");
 
-  nl_report_text(r, "**Slides:** u = (1 + sin(y)) / 2 through a marble colour ramp, after p.y = p.y + "
+  nl_harness_text(r, "**Slides:** u = (1 + sin(y)) / 2 through a marble colour ramp, after p.y = p.y + "
                     "a fractal_sum(p) (images only, a not given). **Ours:** %g stripe%s per unit "
                     "(u = (1 + sin(2 pi %g (y + a F(p)))) / 2), F the %d-octave fractal sum of "
                     "Perlin's improved noise on z = 0.5, over [0, %g)^2; a = 0 is the unperturbed "
                     "ramp of the slide's first panel. A white-grey-blue ramp of 5 knots.\n",
                  stripes, stripes == 1 ? "" : "s", stripes, octaves, extent);
-  nl_report_figure(r, "panels.png", "Marble for growing turbulence amplitude a");
-  nl_report_table(r, dist, "Mean and sd of u over seeds", 4);
-  nl_report_figure(r, "density.png", "Density of u (mean over seeds) against the arcsine law of pure stripes");
-  nl_report_text(r, "Pure stripes give u the arcsine density 1 / (pi sqrt(u (1 - u))), piling up at "
+  nl_harness_figure(r, "panels.png", "Marble for growing turbulence amplitude a");
+  nl_harness_report_table(r, dist, "Mean and sd of u over seeds", 4);
+  nl_harness_figure(r, "density.png", "Density of u (mean over seeds) against the arcsine law of pure stripes");
+  nl_harness_text(r, "Pure stripes give u the arcsine density 1 / (pi sqrt(u (1 - u))), piling up at "
                     "0 and 1. The fractal displacement changes where the stripes run, not how u is "
                     "distributed: the density stays close to the arcsine law for every a, which is "
                     "why marble keeps the ramp's end colours dominant however turbulent it gets.\n");
@@ -92,6 +92,6 @@ int main(int argc, char **argv)
   nl_image_free(mont);
   nl_table_free(hist); nl_table_free(dist);
   free(u); free(m); free(sd);
-  nl_run_check_measured(r, "*", 100);   /* measured tolerances (nl_report.h) */
-  return nl_run_end(r);
+  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  return nl_harness_end(r);
 }

@@ -1,6 +1,6 @@
 /* noiselab check - compare an experiment's new tables with its committed
  * ones, column by column, by the rules the experiment declared
- * (nl_run_check, checks.tsv; see src/report/nl_report.h).
+ * (nl_harness_check, checks.tsv; see src/harness/nl_harness.h).
  *
  *   noiselab-check COMMITTED_DIR NEW_DIR              two experiment folders
  *   noiselab-check COMMITTED_ROOT NEW_ROOT NAME...    ROOT/NAME for each name
@@ -25,10 +25,10 @@
  *   check: E experiments, T tables, V values compared, D drifted
  * Exit 0: no drift; 1: drift; 2: bad input (missing folder or manifest,
  * unreadable table, malformed rule or a rule naming a missing column).
- * The engine is the harness's (nl_report_check_experiment in
- * src/report/nl_report.h); this is its command line.
+ * The engine is the harness's (nl_harness_check_experiment in
+ * src/harness/nl_harness.h); this is its command line.
  */
-#include "report/nl_report.h"
+#include "harness/nl_harness.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -41,7 +41,7 @@ static int die(const char *msg)
 
 int main(int argc, char **argv)
 {
-  nl_check_state s = {0};
+  nl_harness_check_state s = {0};
   nl_error err;
   int w = 1;
   for (int i = 1; i < argc; i++) {
@@ -65,13 +65,13 @@ int main(int argc, char **argv)
   }
   argc = w;
   if (argc < 3) return die("wanted COMMITTED NEW [EXPERIMENT...] (see --help)");
-  if (argc == 3 && nl_report_check_experiment(&s, argv[1], argv[2], &err)) return die(err.msg);
+  if (argc == 3 && nl_harness_check_experiment(&s, argv[1], argv[2], &err)) return die(err.msg);
   for (int i = 3; i < argc; i++) {
     char *a = nl_path_join(argv[1], argv[i]), *b = nl_path_join(argv[2], argv[i]);
-    nl_status st = nl_report_check_experiment(&s, a, b, &err);
+    nl_status st = nl_harness_check_experiment(&s, a, b, &err);
     free(a); free(b);
     if (st) return die(err.msg);
   }
-  nl_report_check_totals(&s);
+  nl_harness_check_totals(&s);
   return s.drifted ? 1 : 0;
 }

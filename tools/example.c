@@ -8,7 +8,7 @@
  * Errors: one line on stderr naming the input and the problem, exit 2.
  * Outputs are written atomically (temporary file, then rename).
  */
-#include "example/nl_example.h"
+#include "byexample/nl_byexample.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -90,25 +90,25 @@ static int analyse(const args *a)
   nl_image *im;
   if (a->npos != 1) die("analyse takes one IMAGE");
   check(nl_image_read(a->pos[0], &im, &err), &err);
-  nl_example_options o = {!a->rgb, !a->nohist, 0, 0};
-  nl_example_params p;
-  if (nl_example_analyse(im, &o, &p, &err)) {
+  nl_byexample_options o = {!a->rgb, !a->nohist, 0, 0};
+  nl_byexample_params p;
+  if (nl_byexample_analyse(im, &o, &p, &err)) {
     char msg[NL_ERROR_LEN + 300];
     snprintf(msg, sizeof msg, "%s: %s", a->pos[0], err.msg);
     die(msg);
   }
-  check(nl_example_params_save(&p, a->out, &err), &err);
+  check(nl_byexample_params_save(&p, a->out, &err), &err);
   nl_image_free(im);
   return 0;
 }
 
-static void synth_write(const nl_example_params *p, const args *a)
+static void synth_write(const nl_byexample_params *p, const args *a)
 {
   nl_error err;
   nl_image *im;
   if (!a->have_size) die("--size N is required");
-  nl_example_synth_options so = {a->scale, a->solid, a->z, NL_SPLINE_STEFFEN};
-  check(nl_example_synthesize(p, (int)a->size, (int)(a->height ? a->height : a->size),
+  nl_byexample_synth_options so = {a->scale, a->solid, a->z, NL_SPLINE_STEFFEN};
+  check(nl_byexample_synthesize(p, (int)a->size, (int)(a->height ? a->height : a->size),
                               (unsigned long)a->seed, &so, &im, &err), &err);
   write_image(im, a->out);
   nl_image_free(im);
@@ -117,9 +117,9 @@ static void synth_write(const nl_example_params *p, const args *a)
 static int synthesize(const args *a)
 {
   nl_error err;
-  nl_example_params p;
+  nl_byexample_params p;
   if (a->npos != 1) die("synthesize takes one PARAMS file");
-  check(nl_example_params_load(a->pos[0], &p, &err), &err);
+  check(nl_byexample_params_load(a->pos[0], &p, &err), &err);
   synth_write(&p, a);
   return 0;
 }
@@ -127,18 +127,18 @@ static int synthesize(const args *a)
 static int morph(const args *a)
 {
   nl_error err;
-  nl_example_params p1, p2, m;
+  nl_byexample_params p1, p2, m;
   if (a->npos != 2) die("morph takes two PARAMS files");
   if (!a->have_t) die("--t T is required");
-  check(nl_example_params_load(a->pos[0], &p1, &err), &err);
-  check(nl_example_params_load(a->pos[1], &p2, &err), &err);
-  if (nl_example_morph(&p1, &p2, a->t, &m, &err)) {
+  check(nl_byexample_params_load(a->pos[0], &p1, &err), &err);
+  check(nl_byexample_params_load(a->pos[1], &p2, &err), &err);
+  if (nl_byexample_morph(&p1, &p2, a->t, &m, &err)) {
     char msg[NL_ERROR_LEN + 600];
     snprintf(msg, sizeof msg, "%s, %s: %s", a->pos[0], a->pos[1], err.msg);
     die(msg);
   }
   if (a->have_size) synth_write(&m, a);
-  else check(nl_example_params_save(&m, a->out, &err), &err);
+  else check(nl_byexample_params_save(&m, a->out, &err), &err);
   return 0;
 }
 

@@ -1,6 +1,6 @@
 /* noiselab patterns - writes the control patterns of Cheng 2009 (Fig 3.7
  * convention: black = 0, red = 1 in the red channel, alpha 0 = no control)
- * as RGBA PNGs, one per built-in shape of nl_cheng_shape():
+ * as RGBA PNGs, one per built-in shape of nl_study_cheng_shape():
  *
  *   noiselab patterns DIR [--size N]      (default 128; data/patterns ships them)
  *
@@ -22,7 +22,7 @@ int main(int argc, char **argv)
       if (nl_parse_long("--size", argv[++i], 8, 4096, &size, &err)) { fprintf(stderr, "patterns: %s\n", err.msg); return 2; }
     } else if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
       printf("usage: noiselab patterns DIR [--size N]\nshapes:");
-      for (int k = 0; nl_cheng_shape_names[k]; k++) printf(" %s", nl_cheng_shape_names[k]);
+      for (int k = 0; nl_study_cheng_shape_names[k]; k++) printf(" %s", nl_study_cheng_shape_names[k]);
       printf("\n");
       return 0;
     } else if (argv[i][0] == '-' || dir) {
@@ -32,11 +32,11 @@ int main(int argc, char **argv)
   }
   if (!dir) { fprintf(stderr, "patterns: missing output folder (usage: noiselab patterns DIR [--size N])\n"); return 2; }
   if (nl_mkdir_p(dir, &err)) { fprintf(stderr, "patterns: %s\n", err.msg); return 1; }
-  for (int k = 0; nl_cheng_shape_names[k]; k++) {
+  for (int k = 0; nl_study_cheng_shape_names[k]; k++) {
     char file[64];
-    snprintf(file, sizeof file, "%s.png", nl_cheng_shape_names[k]);
+    snprintf(file, sizeof file, "%s.png", nl_study_cheng_shape_names[k]);
     char *path = nl_path_join(dir, file);
-    nl_image *im = nl_cheng_shape(nl_cheng_shape_names[k], (int)size);
+    nl_image *im = nl_study_cheng_shape(nl_study_cheng_shape_names[k], (int)size);
     nl_status s = nl_image_write(im, path, 8, &err);
     nl_image_free(im);
     if (s) { fprintf(stderr, "patterns: %s\n", err.msg); free(path); return 1; }

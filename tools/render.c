@@ -159,7 +159,7 @@ static void check_writable(const char *path)
 /* The lattice coordinate of the finest octave must stay below 2^52: beyond
  * it doubles have no fractional bits, the noise is 0 or meaningless, and
  * (before the floors were made safe) the cell index overflowed a long. */
-static void check_lattice(const options *o, const nl_octaves *oct, const char *kind)
+static void check_lattice(const options *o, const nl_noise_octaves *oct, const char *kind)
 {
   double c = fmax(fmax(fabs(o->x0), fabs(o->x0 + o->extent)), fmax(fabs(o->y0), fabs(o->y0 + o->extent)));
   if (strcmp(kind, "noise2") && strcmp(kind, "table")) c = fmax(c, fabs(o->z));   /* 3D bases */
@@ -189,46 +189,46 @@ static int ends_with(const char *s, const char *suffix)
 /* Evaluates the chosen noise; *lo, *hi are its analytic range. */
 static double *evaluate(const options *o, double *lo, double *hi)
 {
-  nl_window win = {o->x0, o->y0, o->z, o->extent, (int)o->size, (int)o->size};
-  nl_grad2 *t = NULL;
+  nl_noise_window win = {o->x0, o->y0, o->z, o->extent, (int)o->size, (int)o->size};
+  nl_noise_grad2 *t = NULL;
   nl_cellular *cell = NULL;
-  nl_gctbf_basis gb;
-  nl_perm3 p;
-  nl_basis b;
+  nl_cellular_gctbf_basis gb;
+  nl_noise_perm3 p;
+  nl_noise_basis b;
   nl_wavelet_tile *tile = NULL;
   int single = !strcmp(o->noise, "noise2") || !strcmp(o->noise, "improved") || !strcmp(o->noise, "gctbf")
                || !strcmp(o->noise, "wavelet");
   const char *kind = single ? o->noise : o->basis;
   if (!strcmp(kind, "noise2") || !strcmp(kind, "table")) {
-    t = nl_grad2_alloc((size_t)o->table_size);
-    nl_grad2_seed(t, (unsigned long)o->seed);
-    b = nl_basis_grad2(t);
+    t = nl_noise_grad2_alloc((size_t)o->table_size);
+    nl_noise_grad2_seed(t, (unsigned long)o->seed);
+    b = nl_noise_basis_grad2(t);
   } else if (!strcmp(kind, "gctbf")) {
     nl_error err;
-    nl_count_rule rule = !strcmp(o->count, "closest") ? NL_COUNT_CLOSEST : NL_COUNT_INVERSE_CDF;
+    nl_cellular_count_rule rule = !strcmp(o->count, "closest") ? NL_COUNT_CLOSEST : NL_COUNT_INVERSE_CDF;
     if (nl_cellular_alloc(o->lambda, (int)o->points, rule, (unsigned long)o->seed, &cell, &err)) fail(err.msg);
     gb.cell = cell;
-    if (nl_gctbf_parse(o->terms, &gb.g, &err)) { char m[600]; snprintf(m, sizeof m, "--terms: %s", err.msg); fail(m); }
-    b = nl_basis_gctbf(&gb);
+    if (nl_cellular_gctbf_parse(o->terms, &gb.g, &err)) { char m[600]; snprintf(m, sizeof m, "--terms: %s", err.msg); fail(m); }
+    b = nl_cellular_basis_gctbf(&gb);
   } else if (!strcmp(kind, "wavelet")) {
     if (o->tile % 2) fail("--tile: the wavelet tile period must be even");
     tile = nl_wavelet_tile_alloc(3, (int)o->tile);
     nl_wavelet_tile_seed(tile, (unsigned long)o->seed);
-    b = nl_basis_wavelet(tile);
+    b = nl_wavelet_basis(tile);
   } else {
-    if (o->reference) nl_perm3_reference(&p); else nl_perm3_seed(&p, (unsigned long)o->seed);
-    b = nl_basis_perm3(&p);
+    if (o->reference) nl_noise_perm3_reference(&p); else nl_noise_perm3_seed(&p, (unsigned long)o->seed);
+    b = nl_noise_basis_perm3(&p);
   }
-  nl_octaves oct = nl_octaves_fbm(1, 1, 1);
-  if (!strcmp(o->noise, "fractal") || !strcmp(o->noise, "marble")) oct = nl_octaves_fractal((int)o->octaves);
-  if (!strcmp(o->noise, "turbulence")) { oct = nl_octaves_fractal((int)o->octaves); oct.turbulence = 1; }
-  if (!strcmp(o->noise, "fbm")) oct = nl_octaves_fbm((int)o->octaves, o->gain, o->lacunarity);
+  nl_noise_octaves oct = nl_noise_octaves_fbm(1, 1, 1);
+  if (!strcmp(o->noise, "fractal") || !strcmp(o->noise, "marble")) oct = nl_noise_octaves_fractal((int)o->octaves);
+  if (!strcmp(o->noise, "turbulence")) { oct = nl_noise_octaves_fractal((int)o->octaves); oct.turbulence = 1; }
+  if (!strcmp(o->noise, "fbm")) oct = nl_noise_octaves_fbm((int)o->octaves, o->gain, o->lacunarity);
   check_lattice(o, &oct, kind);
   double *v = nl_xmalloc((size_t)o->size * o->size * sizeof *v);
-  double B = nl_octaves_bound(&oct, b.bound);
-  if (!strcmp(o->noise, "marble")) { nl_marble_grid(&b, &oct, &win, NL_TWO_PI * o->stripes, o->amplitude, v); *lo = 0; *hi = 1; }
-  else { nl_fractal_grid(&b, &oct, &win, v); *lo = oct.turbulence ? 0 : -B; *hi = B; }
-  nl_grad2_free(t);
+  double B = nl_noise_octaves_bound(&oct, b.bound);
+  if (!strcmp(o->noise, "marble")) { nl_texture_marble_grid(&b, &oct, &win, NL_TWO_PI * o->stripes, o->amplitude, v); *lo = 0; *hi = 1; }
+  else { nl_noise_fractal_grid(&b, &oct, &win, v); *lo = oct.turbulence ? 0 : -B; *hi = B; }
+  nl_noise_grad2_free(t);
   nl_cellular_free(cell);
   nl_wavelet_tile_free(tile);
   return v;

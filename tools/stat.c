@@ -175,7 +175,7 @@ static void fail_lib(const opts *o, const char *path, const nl_error *err)
   die(o->sub, m);
 }
 
-static const char *fmt(char *buf, double v) { nl_format_double(buf, v); return buf; }
+static const char *fmt(char *buf, double v) { nl_table_format_double(buf, v); return buf; }
 
 static void run_ks(const opts *o, int kuiper)
 {
@@ -184,14 +184,14 @@ static void run_ks(const opts *o, int kuiper)
   nl_error err;
   char b1[32], b2[32];
   if (kuiper) {
-    nl_kuiper_result r;
-    if (nl_kuiper_test_uniform(x, t->nrows, o->a, o->b, &r, &err)) fail_lib(o, o->files[0], &err);
+    nl_stats_kuiper_result r;
+    if (nl_stats_kuiper_test_uniform(x, t->nrows, o->a, o->b, &r, &err)) fail_lib(o, o->files[0], &err);
     printf("V=%s p=%s n=%zu\n", fmt(b1, r.v), fmt(b2, r.p), r.n);
   } else {
-    nl_ks_result r;
-    if (nl_ks_test_uniform(x, t->nrows, o->a, o->b, &r, &err)) fail_lib(o, o->files[0], &err);
+    nl_stats_ks_result r;
+    if (nl_stats_ks_test_uniform(x, t->nrows, o->a, o->b, &r, &err)) fail_lib(o, o->files[0], &err);
     printf("D=%s p=%s n=%zu method=%s\n", fmt(b1, r.d), fmt(b2, r.p), r.n,
-           nl_ks_method_name(r.method));
+           nl_stats_ks_method_name(r.method));
   }
   free(x);
   nl_table_free(t);
@@ -202,12 +202,12 @@ static void run_ks2(const opts *o)
   if (o->nfiles != 2) die(o->sub, "needs two files (see " PROG " ks2 --help)");
   nl_table *t1 = read_table(o, o->files[0]), *t2 = read_table(o, o->files[1]);
   double *x = column(o, t1, o->files[0]), *y = column(o, t2, o->files[1]);
-  nl_ks_result r;
+  nl_stats_ks_result r;
   nl_error err;
   char b1[32], b2[32];
-  if (nl_ks2_test(x, t1->nrows, y, t2->nrows, &r, &err)) fail_lib(o, o->files[0], &err);
+  if (nl_stats_ks2_test(x, t1->nrows, y, t2->nrows, &r, &err)) fail_lib(o, o->files[0], &err);
   printf("D=%s p=%s n=%zu,%zu method=%s\n", fmt(b1, r.d), fmt(b2, r.p), r.n, r.n2,
-         nl_ks_method_name(r.method));
+         nl_stats_ks_method_name(r.method));
   free(x); free(y);
   nl_table_free(t1); nl_table_free(t2);
 }
@@ -217,10 +217,10 @@ static void run_chisq(const opts *o)
   if (!o->have_bins) die(o->sub, "--bins K is required");
   nl_table *t = read_table(o, o->files[0]);
   double *x = column(o, t, o->files[0]);
-  nl_chisq_result r;
+  nl_stats_chisq_result r;
   nl_error err;
   char b1[32], b2[32], b3[32];
-  if (nl_chisq_test_uniform(x, t->nrows, (size_t)o->bins, o->a, o->b, &r, &err))
+  if (nl_stats_chisq_test_uniform(x, t->nrows, (size_t)o->bins, o->a, o->b, &r, &err))
     fail_lib(o, o->files[0], &err);
   printf("chi2=%s df=%zu p=%s min_expected=%s\n", fmt(b1, r.chi2), r.df, fmt(b2, r.p),
          fmt(b3, r.min_expected));
@@ -240,19 +240,19 @@ static void write_or_die(const opts *o, nl_table *t, const char *path)
 
 static void run_hclust(const opts *o)
 {
-  nl_linkage_method m;
+  nl_cluster_linkage_method m;
   nl_error err;
   if (!o->linkage) die(o->sub, "--linkage single|complete|average is required");
-  if (nl_linkage_method_parse(o->linkage, &m, &err)) die(o->sub, err.msg);
+  if (nl_cluster_linkage_method_parse(o->linkage, &m, &err)) die(o->sub, err.msg);
   if (o->have_cutoff == o->have_clusters) die(o->sub, "give exactly one of --cutoff C and --clusters K");
   nl_table *t = read_table(o, o->files[0]);
   size_t n = t->nrows;
   double *Z = nl_xmalloc((n - 1) * 4 * sizeof(double));
   int *lab = nl_xmalloc(n * sizeof(int));
   size_t k;
-  if (nl_linkage(t->num, n, t->ncols, m, Z, &err)) fail_lib(o, o->files[0], &err);
-  nl_status s = o->have_cutoff ? nl_fcluster_distance(Z, n, o->cutoff, lab, &k, &err)
-                               : nl_fcluster_maxclust(Z, n, (size_t)o->clusters, lab, &k, &err);
+  if (nl_cluster_linkage(t->num, n, t->ncols, m, Z, &err)) fail_lib(o, o->files[0], &err);
+  nl_status s = o->have_cutoff ? nl_cluster_fcluster_distance(Z, n, o->cutoff, lab, &k, &err)
+                               : nl_cluster_fcluster_maxclust(Z, n, (size_t)o->clusters, lab, &k, &err);
   if (s) fail_lib(o, o->files[0], &err);
   if (o->labels_out) {
     const char *cols[] = {"label"};

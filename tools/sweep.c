@@ -35,7 +35,7 @@
  * Errors: one line on stderr, exit 2.
  */
 #define _GNU_SOURCE   /* open_memstream, popen, realpath */
-#include "report/nl_report.h"
+#include "harness/nl_harness.h"
 #include "table/nl_table.h"
 
 #include <ctype.h>
@@ -267,7 +267,7 @@ static void print_table(const nl_table *t)
     for (size_t c = 0; c < t->ncols; c++) {
       char buf[32];
       const char *s = t->text[r * t->ncols + c];
-      if (!s) { nl_format_double(buf, t->num[r * t->ncols + c]); s = buf; }
+      if (!s) { nl_table_format_double(buf, t->num[r * t->ncols + c]); s = buf; }
       printf("%s%s", c ? "\t" : "", s);
     }
     putchar('\n');
@@ -339,7 +339,7 @@ static const char *cell(const nl_table *t, size_t r, size_t c, char *buf)
 {
   const char *s = t->text[r * t->ncols + c];
   if (s) return s;
-  nl_format_double(buf, t->num[r * t->ncols + c]);
+  nl_table_format_double(buf, t->num[r * t->ncols + c]);
   return buf;
 }
 
@@ -391,7 +391,7 @@ static char **task_tables(const nl_sweep_merge *m, size_t *n)
 {
   char buf[32], *dir = nl_path_join(m->dir, cell(m->tasks, m->done[0], 1, buf));
   nl_error err;
-  char **names = nl_run_tables(dir, n, &err);
+  char **names = nl_harness_tables(dir, n, &err);
   if (!names) nl_sweep_die("%s", err.msg);
   free(dir);
   return names;
@@ -532,7 +532,7 @@ static void group_title(const nl_sweep_merge *m, const nl_table *s, size_t r, in
     int varies = 0;   /* a parameter held at one value says nothing here */
     for (size_t q = 0; q < s->nrows; q++) varies |= nl_table_get(s, q, (size_t)k) != nl_table_get(s, 0, (size_t)k);
     if (k == xi || !varies) continue;
-    nl_format_double(v, nl_table_get(s, r, (size_t)k));
+    nl_table_format_double(v, nl_table_get(s, r, (size_t)k));
     len += (size_t)snprintf(buf + len, n - len, "%s=%s ", m->pname[k], v);
   }
   if (len > 0 && len < n && buf[len - 1] == ' ') buf[len - 1] = '\0';
@@ -565,7 +565,7 @@ static int plot_blocks(FILE *fp, const nl_sweep_merge *m, const nl_table *s, int
     fprintf(fp, "%sx\t\"%s\"\tspread\n", blocks ? "\n\n" : "", title);
     for (size_t i = 0; i < n; i++) {
       char a[32], b[32], c[32];
-      nl_format_double(a, pt[i].x); nl_format_double(b, pt[i].y); nl_format_double(c, pt[i].e);
+      nl_table_format_double(a, pt[i].x); nl_table_format_double(b, pt[i].y); nl_table_format_double(c, pt[i].e);
       fprintf(fp, "%s\t%s\t%s\n", a, b, c);
     }
     blocks++;

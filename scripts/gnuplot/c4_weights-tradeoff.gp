@@ -5,7 +5,7 @@
 set terminal pngcairo size 900,600 font "DejaVu Sans,10"
 set output dir.'/tradeoff.png'
 set datafile separator "\t"
-set datafile columnheaders   # columns by name (nl_cheng_summary_alloc)
+set datafile columnheaders   # columns by name (nl_study_cheng_summary_alloc)
 s = dir.'/sweep.tsv'
 t = dir.'/table41_runs.tsv'
 set multiplot layout 1,2 title "C4: weight sweep, E = w1 E_{KS} + w2 E_{Con}"

@@ -15,17 +15,17 @@ double nl_bounds_series(int n) { return 2.0 - ldexp(1.0, -n); }
 /* eq. 4.2: n octaves, i = 0..n-1, are bounded by S_{n-1}; S_{-1} = 0. */
 double nl_bounds_fractal(int n) { return n <= 0 ? 0.0 : nl_bounds_series(n - 1); }
 
-void nl_bounds_remainders(const nl_octaves *o, double basis_bound, double *rem)
+void nl_bounds_remainders(const nl_noise_octaves *o, double basis_bound, double *rem)
 {
-  /* Summed from the smallest term up, so rem[0] equals nl_octaves_bound()
+  /* Summed from the smallest term up, so rem[0] equals nl_noise_octaves_bound()
    * up to rounding and every rem[k] is the exact tail of eq. 5.3. */
   rem[o->n] = 0.0;
   for (int k = o->n - 1; k >= 0; k--) rem[k] = rem[k + 1] + basis_bound * fabs(o->amp[k]);
 }
 
-nl_interval nl_bounds_incremental(double partial, double remainder)
+nl_bounds_interval nl_bounds_incremental(double partial, double remainder)
 {
-  nl_interval iv = {partial - remainder, partial + remainder};
+  nl_bounds_interval iv = {partial - remainder, partial + remainder};
   return iv;
 }
 
@@ -46,7 +46,7 @@ static double clamp01(double x) { return x < 0.0 ? 0.0 : x > 1.0 ? 1.0 : x; }
  * number of terms after which eq. 5.4 fixed the clamp (checked before each
  * term and after the last), o->n + 1 if the value lies strictly inside
  * (0, 1); plain evaluation (incremental = 0) never checks. */
-static double clamped_sum(const nl_perm3 *p, const nl_octaves *o, const double *rem,
+static double clamped_sum(const nl_noise_perm3 *p, const nl_noise_octaves *o, const double *rem,
                           double base, const double *xyz, int incremental,
                           int *terms, int *decided, double *max_abs)
 {
@@ -59,7 +59,7 @@ static double clamped_sum(const nl_perm3 *p, const nl_octaves *o, const double *
     }
     if (k == o->n) break;
     double f = o->freq[k];
-    double nz = nl_noise3(p, f * xyz[0], f * xyz[1], f * xyz[2]);
+    double nz = nl_noise_perm3_eval(p, f * xyz[0], f * xyz[1], f * xyz[2]);
     if (max_abs && fabs(nz) > *max_abs) *max_abs = fabs(nz);
     partial += o->amp[k] * nz;
   }
@@ -68,7 +68,7 @@ static double clamped_sum(const nl_perm3 *p, const nl_octaves *o, const double *
   return clamp01(base + partial);
 }
 
-double nl_bounds_clamped_fractal(const nl_perm3 *p, const nl_octaves *o, const double *rem,
+double nl_bounds_clamped_fractal(const nl_noise_perm3 *p, const nl_noise_octaves *o, const double *rem,
                                  double base, const double *xyz, int incremental,
                                  int *terms, double *max_abs)
 {
@@ -79,12 +79,12 @@ double nl_bounds_clamped_fractal(const nl_perm3 *p, const nl_octaves *o, const d
 }
 
 /* One point: partial sums of every prefix, then the checks. */
-static void check_point(const nl_perm3 *p, const nl_octaves *o, const double *rem,
+static void check_point(const nl_noise_perm3 *p, const nl_noise_octaves *o, const double *rem,
                         const double *xyz, nl_bounds_check *c)
 {
   double partial[NL_MAX_OCTAVES + 1] = {0};
   for (int l = 0; l < o->n; l++) {
-    double f = o->freq[l], v = nl_noise3(p, f * xyz[0], f * xyz[1], f * xyz[2]);
+    double f = o->freq[l], v = nl_noise_perm3_eval(p, f * xyz[0], f * xyz[1], f * xyz[2]);
     c->max_abs_noise = fmax(c->max_abs_noise, fabs(v));
     partial[l + 1] = partial[l] + o->amp[l] * v;
   }
@@ -93,13 +93,13 @@ static void check_point(const nl_perm3 *p, const nl_octaves *o, const double *re
   c->over_fractal += fabs(full) > rem[0];
   int out = 0;
   for (int k = 0; k <= o->n; k++) {
-    nl_interval iv = nl_bounds_incremental(partial[k], rem[k]);
+    nl_bounds_interval iv = nl_bounds_incremental(partial[k], rem[k]);
     out |= !(iv.lo <= full && full <= iv.hi);
   }
   c->over_incremental += out;
 }
 
-void nl_bounds_check_random(const nl_perm3 *p, const nl_octaves *o, double basis_bound,
+void nl_bounds_check_random(const nl_noise_perm3 *p, const nl_noise_octaves *o, double basis_bound,
                             long npoints, unsigned long seed, nl_bounds_check *out)
 {
   double rem[NL_MAX_OCTAVES + 1];
@@ -118,15 +118,15 @@ void nl_bounds_check_random(const nl_perm3 *p, const nl_octaves *o, double basis
 
 /* ---- smoke ball -------------------------------------------------------- */
 
-nl_smoke nl_smoke_default(void)
+nl_bounds_smoke nl_bounds_smoke_default(void)
 {
-  nl_smoke s = {.width = 512, .height = 512, .step = 0.01, .stop_opacity = 0.99,
+  nl_bounds_smoke s = {.width = 512, .height = 512, .step = 0.01, .stop_opacity = 0.99,
                 .slope = -4.0, .freq = 4.0, .kappa = 30.0,
                 .octave_bound = NL_NOISE3_BOUND, .octaves = 1, .incremental = 0};
   return s;
 }
 
-static nl_status smoke_check(const nl_smoke *s, nl_error *err)
+static nl_status smoke_check(const nl_bounds_smoke *s, nl_error *err)
 {
   if (s->width < 1 || s->height < 1) return nl_fail(err, NL_EINVAL, "smoke: image size must be positive");
   if (!(s->step > 0.0)) return nl_fail(err, NL_EINVAL, "smoke: step must be positive");
@@ -138,15 +138,15 @@ static nl_status smoke_check(const nl_smoke *s, nl_error *err)
 }
 
 /* Fnoise(f0 p): octave l at frequency f0 2^l with amplitude 2^-l. */
-static nl_octaves smoke_octaves(const nl_smoke *s)
+static nl_noise_octaves smoke_octaves(const nl_bounds_smoke *s)
 {
-  nl_octaves o = nl_octaves_fractal(s->octaves);
+  nl_noise_octaves o = nl_noise_octaves_fractal(s->octaves);
   for (int l = 0; l < o.n; l++) o.freq[l] *= s->freq;
   return o;
 }
 
 /* distNoise at p (Fig. 5.1): base = a |p| + 1. */
-static double smoke_density(const nl_perm3 *p, const nl_smoke *s, const nl_octaves *o,
+static double smoke_density(const nl_noise_perm3 *p, const nl_bounds_smoke *s, const nl_noise_octaves *o,
                             const double *rem, const double *xyz, int *terms, double *max_abs)
 {
   double d = sqrt(xyz[0] * xyz[0] + xyz[1] * xyz[1] + xyz[2] * xyz[2]);
@@ -155,8 +155,8 @@ static double smoke_density(const nl_perm3 *p, const nl_smoke *s, const nl_octav
 }
 
 /* One ray along +z through the unit cube; emission-absorption. */
-static double smoke_ray(const nl_perm3 *p, const nl_smoke *s, const nl_octaves *o,
-                        const double *rem, double x, double y, nl_smoke_stats *st)
+static double smoke_ray(const nl_noise_perm3 *p, const nl_bounds_smoke *s, const nl_noise_octaves *o,
+                        const double *rem, double x, double y, nl_bounds_smoke_stats *st)
 {
   double trans = 1.0, colour = 0.0, stop = 1.0 - s->stop_opacity;
   long nsteps = (long)floor(1.0 / s->step);
@@ -173,12 +173,12 @@ static double smoke_ray(const nl_perm3 *p, const nl_smoke *s, const nl_octaves *
   return colour;
 }
 
-nl_status nl_smoke_render(const nl_perm3 *p, const nl_smoke *s, double *img,
-                          nl_smoke_stats *st, nl_error *err)
+nl_status nl_bounds_smoke_render(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double *img,
+                          nl_bounds_smoke_stats *st, nl_error *err)
 {
   nl_status rc = smoke_check(s, err);
   if (rc) return rc;
-  nl_octaves o = smoke_octaves(s);
+  nl_noise_octaves o = smoke_octaves(s);
   double rem[NL_MAX_OCTAVES + 1];
   nl_bounds_remainders(&o, s->octave_bound, rem);
   memset(st, 0, sizeof *st);
@@ -190,12 +190,12 @@ nl_status nl_smoke_render(const nl_perm3 *p, const nl_smoke *s, double *img,
   return NL_OK;
 }
 
-nl_status nl_smoke_decision_map(const nl_perm3 *p, const nl_smoke *s, double z, int *terms,
+nl_status nl_bounds_smoke_decision_map(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double z, int *terms,
                                 nl_error *err)
 {
   nl_status rc = smoke_check(s, err);
   if (rc) return rc;
-  nl_octaves o = smoke_octaves(s);
+  nl_noise_octaves o = smoke_octaves(s);
   double rem[NL_MAX_OCTAVES + 1];
   nl_bounds_remainders(&o, s->octave_bound, rem);
   for (int r = 0; r < s->height; r++)
@@ -210,13 +210,13 @@ nl_status nl_smoke_decision_map(const nl_perm3 *p, const nl_smoke *s, double z, 
 
 /* ---- spectral bandwidth ------------------------------------------------ */
 
-void nl_psd1_tail(const double *P, size_t m, double *gamma)
+void nl_bounds_psd1_tail(const double *P, size_t m, double *gamma)
 {
   double s = 0.0;
   for (size_t k = m; k-- > 0;) { s += P[k]; gamma[k] = s; }
 }
 
-double nl_psd1_tail_inverse(const double *f, const double *gamma, size_t m, double e)
+double nl_bounds_psd1_tail_inverse(const double *f, const double *gamma, size_t m, double e)
 {
   for (size_t k = 0; k < m; k++)
     if (gamma[k] <= e) return f[k];
@@ -232,22 +232,22 @@ static void mean_sigma(const double *x, size_t n, double *mean, double *sigma)
   *sigma = sqrt(ss / (double)n);
 }
 
-nl_status nl_bandwidth_1d(const double *x, size_t n, double rate, double T, nl_bandwidth *bw,
+nl_status nl_bounds_bandwidth_1d(const double *x, size_t n, double rate, double T, nl_bounds_bandwidth *bw,
                           nl_error *err)
 {
   if (!(T > 0.0)) return nl_fail(err, NL_EINVAL, "bandwidth: threshold T must be positive");
   size_t m = n / 2 + 1;
   double *f = nl_xmalloc(m * sizeof *f), *P = nl_xmalloc(m * sizeof *P);
-  nl_status rc = nl_psd1(x, n, rate, f, P, err);
+  nl_status rc = nl_spectrum_psd1(x, n, rate, f, P, err);
   if (!rc) {
     double *g = nl_xmalloc(m * sizeof *g);
-    nl_psd1_tail(P, m, g);
+    nl_bounds_psd1_tail(P, m, g);
     mean_sigma(x, n, &bw->mean, &bw->sigma);
     double lo = bw->sigma - sqrt(T);
-    bw->f_sup = nl_psd1_tail_inverse(f, g, m, T);
-    bw->f_inf = nl_psd1_tail_inverse(f, g, m, lo > 0.0 ? lo * lo : 0.0);
+    bw->f_sup = nl_bounds_psd1_tail_inverse(f, g, m, T);
+    bw->f_inf = nl_bounds_psd1_tail_inverse(f, g, m, lo > 0.0 ? lo * lo : 0.0);
     double rms = sqrt(g[0]) - sqrt(T);
-    bw->f_inf_rms = nl_psd1_tail_inverse(f, g, m, rms > 0.0 ? rms * rms : 0.0);
+    bw->f_inf_rms = nl_bounds_psd1_tail_inverse(f, g, m, rms > 0.0 ? rms * rms : 0.0);
     bw->resolution = rate / (double)n;
     bw->nyquist = 0.5 * rate;
     free(g);
@@ -256,12 +256,12 @@ nl_status nl_bandwidth_1d(const double *x, size_t n, double rate, double T, nl_b
   return rc;
 }
 
-nl_status nl_psd1_fraction_above(const double *x, size_t n, double rate, double fc,
+nl_status nl_bounds_psd1_fraction_above(const double *x, size_t n, double rate, double fc,
                                  double *fraction, nl_error *err)
 {
   size_t m = n / 2 + 1;
   double *f = nl_xmalloc(m * sizeof *f), *P = nl_xmalloc(m * sizeof *P);
-  nl_status rc = nl_psd1(x, n, rate, f, P, err);
+  nl_status rc = nl_spectrum_psd1(x, n, rate, f, P, err);
   if (!rc) {
     double above = 0.0, var = 0.0;
     for (size_t k = 1; k < m; k++) { var += P[k]; if (f[k] > fc) above += P[k]; }
@@ -271,14 +271,14 @@ nl_status nl_psd1_fraction_above(const double *x, size_t n, double rate, double 
   return rc;
 }
 
-void nl_bounds_sample_line(const nl_perm3 *p, const nl_octaves *o, const double *origin,
+void nl_bounds_sample_line(const nl_noise_perm3 *p, const nl_noise_octaves *o, const double *origin,
                            const double *dir, double rate, size_t n, double *out)
 {
   for (size_t k = 0; k < n; k++) {
     double t = (double)k / rate, s = 0.0;
     for (int l = 0; l < o->n; l++) {
       double f = o->freq[l];
-      s += o->amp[l] * nl_noise3(p, f * (origin[0] + t * dir[0]), f * (origin[1] + t * dir[1]),
+      s += o->amp[l] * nl_noise_perm3_eval(p, f * (origin[0] + t * dir[0]), f * (origin[1] + t * dir[1]),
                                  f * (origin[2] + t * dir[2]));
     }
     out[k] = s;
@@ -306,7 +306,7 @@ nl_bounds_line nl_bounds_line_a4(void)
   return l;
 }
 
-double *nl_bounds_line_sample(const nl_perm3 *p, const nl_octaves *o, const nl_bounds_line *l,
+double *nl_bounds_line_sample(const nl_noise_perm3 *p, const nl_noise_octaves *o, const nl_bounds_line *l,
                               double length, double rate, size_t *n)
 {
   *n = (size_t)llround(length * rate);
@@ -317,17 +317,17 @@ double *nl_bounds_line_sample(const nl_perm3 *p, const nl_octaves *o, const nl_b
 
 /* ---- Table 5.2 under a reading (A3) ------------------------------------ */
 
-nl_octaves nl_bounds_signal_octaves(int s)
+nl_noise_octaves nl_bounds_signal_octaves(int s)
 {
-  nl_octaves o = nl_octaves_fractal(s == 2 ? 2 : 1);
+  nl_noise_octaves o = nl_noise_octaves_fractal(s == 2 ? 2 : 1);
   if (s == 1) { o.freq[0] = 2.0; o.amp[0] = 0.5; }
   return o;
 }
 
-double *nl_bounds_reading_sample(const nl_perm3 *p, int s, const nl_bounds_reading *rd,
+double *nl_bounds_reading_sample(const nl_noise_perm3 *p, int s, const nl_bounds_reading *rd,
                                  unsigned long seed, size_t *n)
 {
-  nl_octaves o = nl_bounds_signal_octaves(s);
+  nl_noise_octaves o = nl_bounds_signal_octaves(s);
   nl_bounds_line l = nl_bounds_line_a3(rd->axis, seed);
   double *x = nl_bounds_line_sample(p, &o, &l, rd->length, rd->rate, n);
   if (rd->shader) for (size_t k = 0; k < *n; k++) x[k] = 0.5 * (x[k] + 1.0);   /* the shader stored (noise + 1)/2 */
@@ -342,13 +342,13 @@ nl_status nl_bounds_bandwidth_seeds(const nl_bounds_reading *rd, unsigned long s
   double fi[NL_BOUNDS_NSIGNALS][NL_BOUNDS_MAX_SEEDS], fs[NL_BOUNDS_NSIGNALS][NL_BOUNDS_MAX_SEEDS];
   double sg[NL_BOUNDS_NSIGNALS][NL_BOUNDS_MAX_SEEDS], fr[NL_BOUNDS_NSIGNALS][NL_BOUNDS_MAX_SEEDS];
   for (int k = 0; k < seeds; k++) {
-    nl_perm3 p;
-    nl_perm3_seed(&p, nl_seed_replicate(seed0, k));
+    nl_noise_perm3 p;
+    nl_noise_perm3_seed(&p, nl_seed_replicate(seed0, k));
     for (int s = 0; s < NL_BOUNDS_NSIGNALS; s++) {
       size_t n;
       double *x = nl_bounds_reading_sample(&p, s, rd, nl_seed_replicate(seed0, k), &n);
-      nl_bandwidth bw;
-      nl_status rc = nl_bandwidth_1d(x, n, rd->rate, NL_BOUNDS_T, &bw, err);
+      nl_bounds_bandwidth bw;
+      nl_status rc = nl_bounds_bandwidth_1d(x, n, rd->rate, NL_BOUNDS_T, &bw, err);
       free(x);
       if (rc) return rc;
       fi[s][k] = bw.f_inf; fs[s][k] = bw.f_sup; sg[s][k] = bw.sigma; fr[s][k] = bw.f_inf_rms;
@@ -380,15 +380,15 @@ static int max_level_diff(const double *a, const double *b, size_t n)
   return worst;
 }
 
-nl_status nl_smoke_render_pair(const nl_perm3 *p, nl_smoke s, double *img0, double *img1,
-                               nl_smoke_pair *t, nl_error *err)
+nl_status nl_bounds_smoke_render_pair(const nl_noise_perm3 *p, nl_bounds_smoke s, double *img0, double *img1,
+                               nl_bounds_smoke_pair *t, nl_error *err)
 {
   double *img[2] = {img0, img1};
   for (int inc = 0; inc < 2; inc++) {
-    nl_smoke_stats st;
+    nl_bounds_smoke_stats st;
     s.incremental = inc;
     double t0 = nl_time_now();
-    nl_status rc = nl_smoke_render(p, &s, img[inc], &st, err);
+    nl_status rc = nl_bounds_smoke_render(p, &s, img[inc], &st, err);
     if (rc) return rc;
     t->ms[inc] = 1e3 * (nl_time_now() - t0);
     t->evals[inc] = st.noise_evals;

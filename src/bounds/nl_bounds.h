@@ -9,7 +9,7 @@
  *   nl_bounds_fractal(n) = S_{n-1}  (0 for n = 0).
  * Perlin's improved 3D noise does not satisfy |noise| <= 1 (its analytic bound
  * is NL_NOISE3_BOUND ~ 1.2247, observed maxima are near 1.03), so the general
- * functions take the basis bound B and any nl_octaves:
+ * functions take the basis bound B and any nl_noise_octaves:
  *   nl_bounds_remainders(o, B, rem)   rem[k] = B sum_{l >= k} |amp_l|, k = 0..n
  * rem[0] is the fractal bound, rem[n] = 0.
  *
@@ -28,15 +28,15 @@
  * pixel marches from z = -1/2 with step h and absorbs by Beer-Lambert,
  *   T <- T exp(-kappa density h),  colour += (T_before - T_after) (white smoke),
  * and stops when the opacity 1 - T reaches stop_opacity (0.99) or the ray
- * leaves the cube. nl_smoke_render() fills a w x h grey image in [0, 1] and
- * counts samples and noise evaluations; nl_smoke_decision_map() is Fig. 5.3:
+ * leaves the cube. nl_bounds_smoke_render() fills a w x h grey image in [0, 1] and
+ * counts samples and noise evaluations; nl_bounds_smoke_decision_map() is Fig. 5.3:
  * in the plane z, how many terms were evaluated before the value was decided
  * (n + 1 = never decided: the pixel needs the whole sum).
  *
- *   nl_smoke s = nl_smoke_default();          // 512 x 512, step 0.01, 99 %
+ *   nl_bounds_smoke s = nl_bounds_smoke_default();          // 512 x 512, step 0.01, 99 %
  *   s.octaves = 11; s.incremental = 1;
- *   nl_smoke_stats st;
- *   nl_smoke_render(&perm, &s, img, &st, &err);
+ *   nl_bounds_smoke_stats st;
+ *   nl_bounds_smoke_render(&perm, &s, img, &st, &err);
  *
  * Spectral bandwidth (chapter 5.2). For samples x[0..n-1] at `rate` samples
  * per unit: the one-sided periodogram P[k] at f[k] = k rate / n, k = 0..n/2,
@@ -52,8 +52,8 @@
  * The frequency resolution is rate / n = 1 / (length in units): the paper's
  * F_inf = 0.0019531 = 1/512 suggests 512 units.
  *
- *   nl_bandwidth bw;
- *   nl_bandwidth_1d(x, n, rate, NL_BOUNDS_T, &bw, &err);   // bw.f_inf, bw.f_sup
+ *   nl_bounds_bandwidth bw;
+ *   nl_bounds_bandwidth_1d(x, n, rate, NL_BOUNDS_T, &bw, &err);   // bw.f_inf, bw.f_sup
  *
  * nl_bounds_sample_line() gives such a sample of a fractal sum of improved
  * noise along a line, point by point (any direction, so the 256-periodicity
@@ -64,7 +64,7 @@
 
 #include "base/nl_base.h"
 #include "noise/nl_noise.h"
-#include "spectrum/nl_spectrum.h"   /* nl_psd1: bounds sits above spectrum */
+#include "spectrum/nl_spectrum.h"   /* nl_spectrum_psd1: bounds sits above spectrum */
 
 /* ---- fractal bounds (eq. 4.1-4.3) ------------------------------------ */
 
@@ -72,19 +72,19 @@ double nl_bounds_octave(int i);      /* 2^-i */
 double nl_bounds_series(int n);      /* S_n = 2 - 2^-n */
 double nl_bounds_fractal(int n);     /* S_{n-1}: bound of an n-octave sum */
 /* rem[k] = basis_bound * sum_{l=k}^{n-1} |amp_l| for k = 0..o->n; rem holds n + 1. */
-void nl_bounds_remainders(const nl_octaves *o, double basis_bound, double *rem);
+void nl_bounds_remainders(const nl_noise_octaves *o, double basis_bound, double *rem);
 
 /* ---- incremental bounding (eq. 5.1-5.4) ------------------------------ */
 
-typedef struct { double lo, hi; } nl_interval;
+typedef struct { double lo, hi; } nl_bounds_interval;
 /* Where the full sum can still go: [partial - remainder, partial + remainder]. */
-nl_interval nl_bounds_incremental(double partial, double remainder);
+nl_bounds_interval nl_bounds_incremental(double partial, double remainder);
 
 /* CLAMP(base + sum_l amp_l noise(freq_l p)) to [0, 1]. rem from
  * nl_bounds_remainders. incremental: stop once eq. 5.4 decides the clamp.
  * *terms (may be NULL) receives the number of noise evaluations; *max_abs
  * (may be NULL) is raised to the largest |noise| seen. */
-double nl_bounds_clamped_fractal(const nl_perm3 *p, const nl_octaves *o, const double *rem,
+double nl_bounds_clamped_fractal(const nl_noise_perm3 *p, const nl_noise_octaves *o, const double *rem,
                                  double base, const double *xyz, int incremental,
                                  int *terms, double *max_abs);
 
@@ -97,7 +97,7 @@ typedef struct {
   double max_abs_sum, max_abs_noise;
   long over_fractal, over_incremental;
 } nl_bounds_check;
-void nl_bounds_check_random(const nl_perm3 *p, const nl_octaves *o, double basis_bound,
+void nl_bounds_check_random(const nl_noise_perm3 *p, const nl_noise_octaves *o, double basis_bound,
                             long npoints, unsigned long seed, nl_bounds_check *out);
 
 /* ---- the smoke ball (Table 5.1, Fig. 5.1-5.3) ------------------------ */
@@ -112,36 +112,36 @@ typedef struct {
   double octave_bound;   /* assumed sup |noise| per octave (Arnerin: 1) */
   int octaves;           /* number of terms of Fnoise, 0..NL_MAX_OCTAVES */
   int incremental;       /* 1: incremental bounding */
-} nl_smoke;
+} nl_bounds_smoke;
 
 typedef struct {
   long samples;          /* density evaluations */
   long noise_evals;      /* noise() calls */
   double max_abs_noise;  /* largest |noise| over those calls */
-} nl_smoke_stats;
+} nl_bounds_smoke_stats;
 
 /* Paper values; slope -4, f0 = 4, kappa = 30, octave_bound = NL_NOISE3_BOUND,
  * 1 octave, plain evaluation. */
-nl_smoke nl_smoke_default(void);
+nl_bounds_smoke nl_bounds_smoke_default(void);
 /* img: width * height doubles, row 0 at y = -1/2. */
-nl_status nl_smoke_render(const nl_perm3 *p, const nl_smoke *s, double *img,
-                          nl_smoke_stats *st, nl_error *err);
+nl_status nl_bounds_smoke_render(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double *img,
+                          nl_bounds_smoke_stats *st, nl_error *err);
 /* Fig. 5.3: terms[y * width + x] = number of terms evaluated before the
  * incremental bound decided the density in the plane z; octaves + 1 when
  * it never did. */
-nl_status nl_smoke_decision_map(const nl_perm3 *p, const nl_smoke *s, double z, int *terms,
+nl_status nl_bounds_smoke_decision_map(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double z, int *terms,
                                 nl_error *err);
 
 /* ---- spectral bandwidth (sec. 4.2.2, 5.2) ---------------------------- */
 
 #define NL_BOUNDS_T (4.0 / (255.0 * 255.0))   /* (2/255)^2 */
 
-/* The one-sided PSD of a line sample is nl_psd1 (spectrum/nl_spectrum.h):
+/* The one-sided PSD of a line sample is nl_spectrum_psd1 (spectrum/nl_spectrum.h):
  * every FFT of the project is wrapped once, in the spectrum module. */
 /* gamma[k] = sum_{j >= k} P[j], k < m. */
-void nl_psd1_tail(const double *P, size_t m, double *gamma);
+void nl_bounds_psd1_tail(const double *P, size_t m, double *gamma);
 /* Smallest f[k] with gamma[k] <= e (f[m-1] if none). */
-double nl_psd1_tail_inverse(const double *f, const double *gamma, size_t m, double e);
+double nl_bounds_psd1_tail_inverse(const double *f, const double *gamma, size_t m, double e);
 
 typedef struct {
   double f_inf, f_sup;   /* the relevant band */
@@ -149,16 +149,16 @@ typedef struct {
   double mean, sigma;    /* of the sample */
   double resolution;     /* rate / n */
   double nyquist;        /* rate / 2 */
-} nl_bandwidth;
-nl_status nl_bandwidth_1d(const double *x, size_t n, double rate, double T, nl_bandwidth *bw,
+} nl_bounds_bandwidth;
+nl_status nl_bounds_bandwidth_1d(const double *x, size_t n, double rate, double T, nl_bounds_bandwidth *bw,
                           nl_error *err);
 /* Energy above frequency f as a fraction of the variance: what aliases
  * when the signal is sampled with Nyquist frequency f. */
-nl_status nl_psd1_fraction_above(const double *x, size_t n, double rate, double f,
+nl_status nl_bounds_psd1_fraction_above(const double *x, size_t n, double rate, double f,
                                  double *fraction, nl_error *err);
 
 /* out[k] = sum_l amp_l noise(freq_l (origin + (k / rate) dir)), k < n. */
-void nl_bounds_sample_line(const nl_perm3 *p, const nl_octaves *o, const double *origin,
+void nl_bounds_sample_line(const nl_noise_perm3 *p, const nl_noise_octaves *o, const double *origin,
                            const double *dir, double rate, size_t n, double *out);
 
 /* ---- sampling lines for the bandwidth (A3, A4) ------------------------
@@ -176,7 +176,7 @@ nl_bounds_line nl_bounds_line_a3(int axis, unsigned long seed);
 nl_bounds_line nl_bounds_line_a4(void);
 /* n = llround(length rate) samples of the octaves along the line (caller
  * frees). */
-double *nl_bounds_line_sample(const nl_perm3 *p, const nl_octaves *o, const nl_bounds_line *l,
+double *nl_bounds_line_sample(const nl_noise_perm3 *p, const nl_noise_octaves *o, const nl_bounds_line *l,
                               double length, double rate, size_t *n);
 
 /* ---- Table 5.2 under a reading (A3) ----------------------------------- */
@@ -184,27 +184,27 @@ double *nl_bounds_line_sample(const nl_perm3 *p, const nl_octaves *o, const nl_b
 enum { NL_BOUNDS_NSIGNALS = 3, NL_BOUNDS_MAX_SEEDS = 64 };
 /* The signals of Table 5.2 as octave lists: 0 noise(x), 1 noise(2x)/2,
  * 2 their sum Fnoise_2. */
-nl_octaves nl_bounds_signal_octaves(int s);
+nl_noise_octaves nl_bounds_signal_octaves(int s);
 /* The sampling choices the paper leaves open: line length (units) and rate
  * (samples per unit), the shader's encoding (noise + 1)/2 or raw values,
  * the x axis or the oblique line. */
 typedef struct { double length, rate; int shader, axis; } nl_bounds_reading;
 /* One sample of signal s under a reading, line from seed (caller frees). */
-double *nl_bounds_reading_sample(const nl_perm3 *p, int s, const nl_bounds_reading *rd,
+double *nl_bounds_reading_sample(const nl_noise_perm3 *p, int s, const nl_bounds_reading *rd,
                                  unsigned long seed, size_t *n);
 /* Per signal, over seeds replicates of seed0 (at most NL_BOUNDS_MAX_SEEDS):
  * out[s] = {mean F_inf, sd, mean F_sup, sd, mean sigma, sd, mean F_inf_rms}
- * (nl_bandwidth_1d with T = NL_BOUNDS_T; sd 0 for one seed). */
+ * (nl_bounds_bandwidth_1d with T = NL_BOUNDS_T; sd 0 for one seed). */
 nl_status nl_bounds_bandwidth_seeds(const nl_bounds_reading *rd, unsigned long seed0, int seeds,
                                     double out[NL_BOUNDS_NSIGNALS][7], nl_error *err);
 
 /* ---- plain against bounded (A2) --------------------------------------- */
 
-typedef struct { double ms[2]; long evals[2]; long samples; int diff; double max_noise; } nl_smoke_pair;
+typedef struct { double ms[2]; long evals[2]; long samples; int diff; double max_noise; } nl_bounds_smoke_pair;
 /* Renders s plainly into img0 and incrementally into img1 (s.incremental
  * is ignored): wall times in ms, noise calls of each, the largest
  * difference in 8-bit levels and the largest |noise| of the plain march. */
-nl_status nl_smoke_render_pair(const nl_perm3 *p, nl_smoke s, double *img0, double *img1,
-                               nl_smoke_pair *t, nl_error *err);
+nl_status nl_bounds_smoke_render_pair(const nl_noise_perm3 *p, nl_bounds_smoke s, double *img0, double *img1,
+                               nl_bounds_smoke_pair *t, nl_error *err);
 
 #endif

@@ -17,11 +17,11 @@ NL_TEST(series_values)
   /* S_n equals the sum of the octave bounds 2^-i, i = 0..n (eq. 4.2). */
   double s = 0;
   for (int i = 0; i <= 20; i++) { s += nl_bounds_octave(i); NL_CHECK(s == nl_bounds_series(i)); }
-  nl_octaves o = nl_octaves_fractal(5);
+  nl_noise_octaves o = nl_noise_octaves_fractal(5);
   double rem[6];
   nl_bounds_remainders(&o, 1.0, rem);
   for (int k = 0; k <= 5; k++) NL_CHECK_NEAR(rem[k], nl_bounds_fractal(5) - nl_bounds_fractal(k), 1e-15);
-  NL_CHECK_NEAR(rem[0], nl_octaves_bound(&o, 1.0), 1e-15);
+  NL_CHECK_NEAR(rem[0], nl_noise_octaves_bound(&o, 1.0), 1e-15);
 }
 
 /* 20000 random points, 1..12 octaves: the fractal bound (eq. 4.2) with the
@@ -29,8 +29,8 @@ NL_TEST(series_values)
  * contain the full sum. */
 NL_TEST(random_sums_stay_within_bounds)
 {
-  nl_perm3 p;
-  nl_perm3_seed(&p, 7);
+  nl_noise_perm3 p;
+  nl_noise_perm3_seed(&p, 7);
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(r, 11);
   long violations = 0, checks = 0;
@@ -39,18 +39,18 @@ NL_TEST(random_sums_stay_within_bounds)
     double xyz[3];
     random_point(r, xyz);
     int n = 1 + (int)gsl_rng_uniform_int(r, 12);
-    nl_octaves o = nl_octaves_fractal(n);
+    nl_noise_octaves o = nl_noise_octaves_fractal(n);
     double rem[NL_MAX_OCTAVES + 1], partial[NL_MAX_OCTAVES + 1] = {0};
     nl_bounds_remainders(&o, NL_NOISE3_BOUND, rem);
     for (int l = 0; l < n; l++) {
-      double f = o.freq[l], v = nl_noise3(&p, f * xyz[0], f * xyz[1], f * xyz[2]);
+      double f = o.freq[l], v = nl_noise_perm3_eval(&p, f * xyz[0], f * xyz[1], f * xyz[2]);
       if (fabs(v) > max_noise) max_noise = fabs(v);
       partial[l + 1] = partial[l] + o.amp[l] * v;
     }
     double full = partial[n];
     violations += fabs(full) > NL_NOISE3_BOUND * nl_bounds_fractal(n);
     for (int k = 0; k <= n; k++, checks++) {
-      nl_interval iv = nl_bounds_incremental(partial[k], rem[k]);
+      nl_bounds_interval iv = nl_bounds_incremental(partial[k], rem[k]);
       violations += !(iv.lo <= full && full <= iv.hi);
     }
   }
@@ -65,11 +65,11 @@ NL_TEST(random_sums_stay_within_bounds)
  * bit, and the incremental one skips terms somewhere. */
 NL_TEST(incremental_clamp_equals_plain)
 {
-  nl_perm3 p;
-  nl_perm3_seed(&p, 3);
+  nl_noise_perm3 p;
+  nl_noise_perm3_seed(&p, 3);
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(r, 5);
-  nl_octaves o = nl_octaves_fractal(8);
+  nl_noise_octaves o = nl_noise_octaves_fractal(8);
   double rem[NL_MAX_OCTAVES + 1];
   nl_bounds_remainders(&o, NL_NOISE3_BOUND, rem);
   long diff = 0, tp = 0, ti = 0;
@@ -89,10 +89,10 @@ NL_TEST(incremental_clamp_equals_plain)
 }
 
 /* A small smoke ball (the paper's settings otherwise) on the table of seed 1. */
-static nl_smoke small_smoke(nl_perm3 *p, int size, int octaves)
+static nl_bounds_smoke small_smoke(nl_noise_perm3 *p, int size, int octaves)
 {
-  nl_perm3_seed(p, 1);
-  nl_smoke s = nl_smoke_default();
+  nl_noise_perm3_seed(p, 1);
+  nl_bounds_smoke s = nl_bounds_smoke_default();
   s.width = s.height = size;
   s.octaves = octaves;
   return s;
@@ -100,13 +100,13 @@ static nl_smoke small_smoke(nl_perm3 *p, int size, int octaves)
 
 NL_TEST(smoke_bounded_equals_plain)
 {
-  nl_perm3 p;
-  nl_smoke s = small_smoke(&p, 24, 6);
+  nl_noise_perm3 p;
+  nl_bounds_smoke s = small_smoke(&p, 24, 6);
   double *a = malloc(24 * 24 * sizeof *a), *b = malloc(24 * 24 * sizeof *b);
-  nl_smoke_stats sa, sb;
-  NL_CHECK(nl_smoke_render(&p, &s, a, &sa, NULL) == NL_OK);
+  nl_bounds_smoke_stats sa, sb;
+  NL_CHECK(nl_bounds_smoke_render(&p, &s, a, &sa, NULL) == NL_OK);
   s.incremental = 1;
-  NL_CHECK(nl_smoke_render(&p, &s, b, &sb, NULL) == NL_OK);
+  NL_CHECK(nl_bounds_smoke_render(&p, &s, b, &sb, NULL) == NL_OK);
   double worst = 0, sum = 0;
   for (int k = 0; k < 24 * 24; k++) { worst = fmax(worst, fabs(a[k] - b[k])); sum += a[k]; }
   NL_CHECK(worst == 0.0);
@@ -115,16 +115,16 @@ NL_TEST(smoke_bounded_equals_plain)
   NL_CHECK(sb.noise_evals < sa.noise_evals / 2);
   NL_CHECK(sa.noise_evals == 6 * sa.samples);
   s.slope = 1.0;
-  NL_CHECK(nl_smoke_render(&p, &s, b, &sb, NULL) == NL_EINVAL);
+  NL_CHECK(nl_bounds_smoke_render(&p, &s, b, &sb, NULL) == NL_EINVAL);
   free(a); free(b);
 }
 
 NL_TEST(decision_map_range)
 {
-  nl_perm3 p;
-  nl_smoke s = small_smoke(&p, 32, 5);
+  nl_noise_perm3 p;
+  nl_bounds_smoke s = small_smoke(&p, 32, 5);
   int t[32 * 32], seen[7] = {0};
-  NL_CHECK(nl_smoke_decision_map(&p, &s, 0.0, t, NULL) == NL_OK);
+  NL_CHECK(nl_bounds_smoke_decision_map(&p, &s, 0.0, t, NULL) == NL_OK);
   for (int k = 0; k < 32 * 32; k++) {
     NL_CHECK(t[k] >= 0 && t[k] <= 6);
     if (t[k] >= 0 && t[k] <= 6) seen[t[k]] = 1;
@@ -135,21 +135,21 @@ NL_TEST(decision_map_range)
 
 NL_TEST(smoke_render_pair_and_lines)
 {
-  nl_perm3 p;
-  nl_smoke s = small_smoke(&p, 16, 4);
+  nl_noise_perm3 p;
+  nl_bounds_smoke s = small_smoke(&p, 16, 4);
   double a[16 * 16], b[16 * 16];
-  nl_smoke_pair t;
-  NL_CHECK(nl_smoke_render_pair(&p, s, a, b, &t, NULL) == NL_OK);
+  nl_bounds_smoke_pair t;
+  NL_CHECK(nl_bounds_smoke_render_pair(&p, s, a, b, &t, NULL) == NL_OK);
   NL_CHECK(t.diff == 0 && t.evals[1] < t.evals[0] && t.samples > 0 && t.max_noise > 0);
   s.slope = 1.0;
-  NL_CHECK(nl_smoke_render_pair(&p, s, a, b, &t, NULL) == NL_EINVAL);
+  NL_CHECK(nl_bounds_smoke_render_pair(&p, s, a, b, &t, NULL) == NL_EINVAL);
   /* the oblique lines run along (1, 1/phi, 1/phi^2), unit length (A4's to 5 digits) */
   nl_bounds_line l3 = nl_bounds_line_a3(0, 7), l4 = nl_bounds_line_a4(), ax = nl_bounds_line_a3(1, 7);
   double n3 = 0, n4 = 0;
   for (int k = 0; k < 3; k++) { n3 += l3.dir[k] * l3.dir[k]; n4 += l4.dir[k] * l4.dir[k]; }
   NL_CHECK(fabs(n3 - 1) < 1e-15 && fabs(n4 - 1) < 1e-5 && fabs(l3.dir[0] - l4.dir[0]) < 1e-5);
   NL_CHECK(ax.dir[0] == 1 && ax.origin[0] == 0);
-  nl_octaves o = nl_bounds_signal_octaves(1);
+  nl_noise_octaves o = nl_bounds_signal_octaves(1);
   NL_CHECK(o.n == 1 && o.freq[0] == 2.0 && o.amp[0] == 0.5);
   size_t n;
   double *x = nl_bounds_line_sample(&p, &o, &l3, 8.0, 4.0, &n);
@@ -170,26 +170,26 @@ NL_TEST(psd_and_bandwidth)
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
   double ms = 0;
   for (size_t k = 0; k < n; k++) { x[k] = gsl_rng_uniform(r) - 0.3; ms += x[k] * x[k]; }
-  NL_CHECK(nl_psd1(x, n, rate, f, P, NULL) == NL_OK);
+  NL_CHECK(nl_spectrum_psd1(x, n, rate, f, P, NULL) == NL_OK);
   double s = 0;
   for (int k = 0; k < 513; k++) s += P[k];
   NL_CHECK_NEAR(s, ms / n, 1e-12);
-  nl_psd1_tail(P, 513, g);
+  nl_bounds_psd1_tail(P, 513, g);
   NL_CHECK_NEAR(g[0], s, 1e-12);
   for (size_t k = 0; k < n; k++) x[k] = 0.25 + 0.5 * sin(NL_TWO_PI * 37.0 * k / n);
-  nl_bandwidth bw;
-  NL_CHECK(nl_bandwidth_1d(x, n, rate, NL_BOUNDS_T, &bw, NULL) == NL_OK);
+  nl_bounds_bandwidth bw;
+  NL_CHECK(nl_bounds_bandwidth_1d(x, n, rate, NL_BOUNDS_T, &bw, NULL) == NL_OK);
   NL_CHECK_NEAR(bw.resolution, rate / n, 0);
   NL_CHECK_NEAR(bw.f_sup, 38 * rate / n, 1e-12);
   NL_CHECK_NEAR(bw.f_inf, 38 * rate / n, 1e-12);
   NL_CHECK_NEAR(bw.sigma, 0.5 / sqrt(2.0), 1e-12);
   NL_CHECK_NEAR(bw.mean, 0.25, 1e-12);
   double frac;
-  NL_CHECK(nl_psd1_fraction_above(x, n, rate, 0.2, &frac, NULL) == NL_OK);
+  NL_CHECK(nl_bounds_psd1_fraction_above(x, n, rate, 0.2, &frac, NULL) == NL_OK);
   NL_CHECK_NEAR(frac, 1.0, 1e-12);
-  NL_CHECK(nl_psd1_fraction_above(x, n, rate, 0.3, &frac, NULL) == NL_OK);
+  NL_CHECK(nl_bounds_psd1_fraction_above(x, n, rate, 0.3, &frac, NULL) == NL_OK);
   NL_CHECK_NEAR(frac, 0.0, 1e-12);
-  NL_CHECK(nl_bandwidth_1d(x, n, rate, 0.0, &bw, NULL) == NL_EINVAL);
+  NL_CHECK(nl_bounds_bandwidth_1d(x, n, rate, 0.0, &bw, NULL) == NL_EINVAL);
   gsl_rng_free(r);
   free(x);
 }

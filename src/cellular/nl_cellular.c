@@ -18,7 +18,7 @@ static inline long lfloor(double x)
 
 /* ---- tables ------------------------------------------------------------ */
 
-nl_status nl_cellular_alloc(double lambda, int M, nl_count_rule rule, unsigned long seed,
+nl_status nl_cellular_alloc(double lambda, int M, nl_cellular_count_rule rule, unsigned long seed,
                             nl_cellular **out, nl_error *err)
 {
   *out = NULL;
@@ -58,7 +58,7 @@ void nl_cellular_free(nl_cellular *c)
   free(c);
 }
 
-const char *nl_count_rule_name(nl_count_rule rule)
+const char *nl_cellular_count_rule_name(nl_cellular_count_rule rule)
 {
   return rule == NL_COUNT_CLOSEST ? "closest" : "inverse-cdf";
 }
@@ -227,7 +227,7 @@ void nl_cellular_row(const nl_cellular *c, double x0, double dx, double y, doubl
 
 /* ---- GCTBF ------------------------------------------------------------- */
 
-nl_status nl_gctbf_add(nl_gctbf *g, int i, int j, double v, nl_error *err)
+nl_status nl_cellular_gctbf_add(nl_cellular_gctbf *g, int i, int j, double v, nl_error *err)
 {
   if (i < 1 || i > NL_CELLULAR_NMAX || j < 0 || j > NL_CELLULAR_NMAX)
     return nl_fail(err, NL_EINVAL, "gctbf: F index must be in 1..%d", NL_CELLULAR_NMAX);
@@ -252,7 +252,7 @@ static int parse_factor(const char **s)
 }
 
 /* term := [number] factor [factor], sign already consumed. */
-static nl_status parse_term(const char **s, double sign, nl_gctbf *g, const char *expr,
+static nl_status parse_term(const char **s, double sign, nl_cellular_gctbf *g, const char *expr,
                             nl_error *err)
 {
   const char *p = skip_ws(*s);
@@ -270,10 +270,10 @@ static nl_status parse_term(const char **s, double sign, nl_gctbf *g, const char
   if (i > NL_CELLULAR_NMAX || j > NL_CELLULAR_NMAX)
     return nl_fail(err, NL_EINVAL, "gctbf '%s': F index must be in 1..%d", expr, NL_CELLULAR_NMAX);
   *s = p;
-  return nl_gctbf_add(g, i, j, sign * coef, err);
+  return nl_cellular_gctbf_add(g, i, j, sign * coef, err);
 }
 
-nl_status nl_gctbf_parse(const char *expr, nl_gctbf *g, nl_error *err)
+nl_status nl_cellular_gctbf_parse(const char *expr, nl_cellular_gctbf *g, nl_error *err)
 {
   memset(g, 0, sizeof *g);
   const char *p = skip_ws(expr);
@@ -301,7 +301,7 @@ static void append_term(char *buf, size_t len, double v, const char *factors)
   else snprintf(buf + used, len - used, "%s%g%s", sign, a, factors);
 }
 
-void nl_gctbf_format(const nl_gctbf *g, char *buf, size_t len)
+void nl_cellular_gctbf_format(const nl_cellular_gctbf *g, char *buf, size_t len)
 {
   if (!len) return;
   buf[0] = '\0';
@@ -317,7 +317,7 @@ void nl_gctbf_format(const nl_gctbf *g, char *buf, size_t len)
   if (!buf[0]) snprintf(buf, len, "0");
 }
 
-double nl_gctbf_value(const nl_gctbf *g, const double *F)
+double nl_cellular_gctbf_value(const nl_cellular_gctbf *g, const double *F)
 {
   double v = 0.0;
   for (int i = 0; i < g->n; i++) {
@@ -327,7 +327,7 @@ double nl_gctbf_value(const nl_gctbf *g, const double *F)
   return v;
 }
 
-double nl_gctbf_bound(const nl_gctbf *g)
+double nl_cellular_gctbf_bound(const nl_cellular_gctbf *g)
 {
   double b = 0.0;
   for (int i = 0; i < NL_CELLULAR_NMAX; i++) {
@@ -337,34 +337,34 @@ double nl_gctbf_bound(const nl_gctbf *g)
   return b;
 }
 
-void nl_gctbf_row(const nl_cellular *c, const nl_gctbf *g, double x0, double dx, double y,
+void nl_cellular_gctbf_row(const nl_cellular *c, const nl_cellular_gctbf *g, double x0, double dx, double y,
                   double z, size_t count, double *out)
 {
   int n = g->n > 0 ? g->n : 1;
   double *F = nl_xmalloc(count * (size_t)n * sizeof *F);
   nl_cellular_row(c, x0, dx, y, z, count, n, F);
-  for (size_t s = 0; s < count; s++) out[s] = g->n ? nl_gctbf_value(g, F + s * (size_t)n) : 0.0;
+  for (size_t s = 0; s < count; s++) out[s] = g->n ? nl_cellular_gctbf_value(g, F + s * (size_t)n) : 0.0;
   free(F);
 }
 
-void nl_gctbf_grid(const nl_cellular *c, const nl_gctbf *g, const nl_window *win, double *out)
+void nl_cellular_gctbf_grid(const nl_cellular *c, const nl_cellular_gctbf *g, const nl_noise_window *win, double *out)
 {
   double dx = win->size / win->w, dy = win->size / win->h;
   for (int r = 0; r < win->h; r++)
-    nl_gctbf_row(c, g, win->x0 + 0.5 * dx, dx, win->y0 + (r + 0.5) * dy, win->z, (size_t)win->w,
+    nl_cellular_gctbf_row(c, g, win->x0 + 0.5 * dx, dx, win->y0 + (r + 0.5) * dy, win->z, (size_t)win->w,
                  out + (size_t)r * win->w);
 }
 
 static void gctbf_basis_row(const void *ctx, double x0, double dx, double y, double z, size_t n,
                             double *out)
 {
-  const nl_gctbf_basis *b = ctx;
-  nl_gctbf_row(b->cell, &b->g, x0, dx, y, z, n, out);
+  const nl_cellular_gctbf_basis *b = ctx;
+  nl_cellular_gctbf_row(b->cell, &b->g, x0, dx, y, z, n, out);
 }
 
-nl_basis nl_basis_gctbf(const nl_gctbf_basis *ctx)
+nl_noise_basis nl_cellular_basis_gctbf(const nl_cellular_gctbf_basis *ctx)
 {
-  nl_basis b = {gctbf_basis_row, ctx, nl_gctbf_bound(&ctx->g)};
+  nl_noise_basis b = {gctbf_basis_row, ctx, nl_cellular_gctbf_bound(&ctx->g)};
   return b;
 }
 
@@ -382,7 +382,7 @@ void nl_cellular_count_histogram(const nl_cellular *c, long origin, int side, do
 }
 
 nl_status nl_cellular_count_chisq(const nl_cellular *c, const double *hist,
-                                  nl_chisq_result *res, nl_error *err)
+                                  nl_stats_chisq_result *res, nl_error *err)
 {
   double n = 0.0;
   for (int m = 0; m <= c->M; m++) n += hist[m];
@@ -396,7 +396,7 @@ nl_status nl_cellular_count_chisq(const nl_cellular *c, const double *hist,
   obs[K] = 0.0;
   for (int m = K; m <= c->M; m++) obs[K] += hist[m];
   exp_[K] = n * (1.0 - c->cdf[K - 1]);
-  return nl_chisq_test(obs, exp_, (size_t)K + 1, res, err);
+  return nl_stats_chisq_test(obs, exp_, (size_t)K + 1, res, err);
 }
 
 double nl_cellular_f1_cdf(double r, void *params)
@@ -406,7 +406,7 @@ double nl_cellular_f1_cdf(double r, void *params)
 }
 
 nl_status nl_cellular_f1_ks(const nl_cellular *c, size_t n, unsigned long seed,
-                            nl_ks_result *res, double *mean_f1, nl_error *err)
+                            nl_stats_ks_result *res, double *mean_f1, nl_error *err)
 {
   if (n < 1) return nl_fail(err, NL_EINVAL, "cellular KS: need at least one point");
   double *f1 = nl_xmalloc(n * sizeof *f1), sum = 0.0, lambda = c->lambda;
@@ -420,7 +420,7 @@ nl_status nl_cellular_f1_ks(const nl_cellular *c, size_t n, unsigned long seed,
   }
   gsl_rng_free(r);
   if (mean_f1) *mean_f1 = sum / (double)n;
-  nl_status rc = nl_ks_test(f1, n, nl_cellular_f1_cdf, &lambda, res, err);
+  nl_status rc = nl_stats_ks_test(f1, n, nl_cellular_f1_cdf, &lambda, res, err);
   free(f1);
   return rc;
 }
@@ -433,7 +433,7 @@ typedef double (*octave_term)(double g, int i);
 static double bump_term(double g, int i) { return fabs(0.5 - g) / ldexp(1.0, i); }
 static double cloud_term(double g, int i) { return (1.0 - 2.0 * g) / ldexp(1.0, i); }
 
-static void octave_grid(const nl_gctbf_basis *b, int octaves, double k, const nl_window *win,
+static void octave_grid(const nl_cellular_gctbf_basis *b, int octaves, double k, const nl_noise_window *win,
                         octave_term term, double *out)
 {
   double dx = win->size / win->w, dy = win->size / win->h;
@@ -443,7 +443,7 @@ static void octave_grid(const nl_gctbf_basis *b, int octaves, double k, const nl
     double f = k * ldexp(1.0, i);
     for (int r = 0; r < win->h; r++) {
       double *o = out + (size_t)r * win->w;
-      nl_gctbf_row(b->cell, &b->g, f * (win->x0 + 0.5 * dx), f * dx,
+      nl_cellular_gctbf_row(b->cell, &b->g, f * (win->x0 + 0.5 * dx), f * dx,
                    f * (win->y0 + (r + 0.5) * dy), f * win->z, (size_t)win->w, g);
       for (int s = 0; s < win->w; s++) o[s] += term(g[s], i);
     }
@@ -451,8 +451,8 @@ static void octave_grid(const nl_gctbf_basis *b, int octaves, double k, const nl
   free(g);
 }
 
-void nl_gctbf_fractal_bump_grid(const nl_gctbf_basis *b, int octaves, double k,
-                                const nl_window *win, double *out)
+void nl_cellular_gctbf_fractal_bump_grid(const nl_cellular_gctbf_basis *b, int octaves, double k,
+                                const nl_noise_window *win, double *out)
 {
   octave_grid(b, octaves, k, win, bump_term, out);
   /* eq. 6: bump = fractal^3 */
@@ -462,39 +462,39 @@ void nl_gctbf_fractal_bump_grid(const nl_gctbf_basis *b, int octaves, double k,
 /* eq. 7's smoothscale(p) is RenderMan's antialiasing fade (Ebert ch. 10-13),
  * which depends on the shading footprint; on our rasters the octaves stay
  * well below the pixel rate, so it is 1 here. */
-void nl_gctbf_cloud_grid(const nl_gctbf_basis *b, int octaves, double k,
-                         const nl_window *win, double *out)
+void nl_cellular_gctbf_cloud_grid(const nl_cellular_gctbf_basis *b, int octaves, double k,
+                         const nl_noise_window *win, double *out)
 {
   octave_grid(b, octaves, k, win, cloud_term, out);
 }
 
-nl_status nl_cellular_texture_grid(nl_gctbf_texture kind, const char *expr, int octaves, double k,
-                                   const nl_window *win, unsigned long seed, double *v, nl_error *err)
+nl_status nl_cellular_texture_grid(nl_cellular_gctbf_texture kind, const char *expr, int octaves, double k,
+                                   const nl_noise_window *win, unsigned long seed, double *v, nl_error *err)
 {
   if (kind == NL_GCTBF_CLOUD && !expr) {
-    nl_perm3 p;
-    nl_perm3_seed(&p, seed);
-    nl_basis b = nl_basis_perm3(&p);
-    nl_octaves o = nl_octaves_fractal(octaves + 1);
+    nl_noise_perm3 p;
+    nl_noise_perm3_seed(&p, seed);
+    nl_noise_basis b = nl_noise_basis_perm3(&p);
+    nl_noise_octaves o = nl_noise_octaves_fractal(octaves + 1);
     for (int l = 0; l < o.n; l++) { o.freq[l] *= k; o.amp[l] = -o.amp[l]; }
-    nl_fractal_grid(&b, &o, win, v);
+    nl_noise_fractal_grid(&b, &o, win, v);
     return NL_OK;
   }
   nl_cellular *c;
   nl_status rc = nl_cellular_alloc(4.0, 50, NL_COUNT_INVERSE_CDF, seed, &c, err);
   if (rc) return rc;
-  nl_gctbf_basis gb = {c, {0}};
-  rc = nl_gctbf_parse(kind == NL_GCTBF_FLAME ? "F1" : expr, &gb.g, err);
-  if (!rc && kind == NL_GCTBF_CLOUD) nl_gctbf_cloud_grid(&gb, octaves, k, win, v);
+  nl_cellular_gctbf_basis gb = {c, {0}};
+  rc = nl_cellular_gctbf_parse(kind == NL_GCTBF_FLAME ? "F1" : expr, &gb.g, err);
+  if (!rc && kind == NL_GCTBF_CLOUD) nl_cellular_gctbf_cloud_grid(&gb, octaves, k, win, v);
   else if (!rc && kind == NL_GCTBF_FLAME) {
-    nl_basis b = nl_basis_gctbf(&gb);
-    nl_octaves o = nl_octaves_fractal(octaves + 1);
+    nl_noise_basis b = nl_cellular_basis_gctbf(&gb);
+    nl_noise_octaves o = nl_noise_octaves_fractal(octaves + 1);
     for (int l = 0; l < o.n; l++) o.freq[l] *= k;
-    nl_fractal_grid(&b, &o, win, v);
+    nl_noise_fractal_grid(&b, &o, win, v);
   } else if (!rc) {
-    nl_window w = *win;
+    nl_noise_window w = *win;
     w.x0 *= k; w.y0 *= k; w.z *= k; w.size *= k;
-    nl_gctbf_grid(c, &gb.g, &w, v);
+    nl_cellular_gctbf_grid(c, &gb.g, &w, v);
   }
   nl_cellular_free(c);
   return rc;
@@ -508,7 +508,7 @@ void nl_cellular_count_moments(const double *hist, int M, double *mean, double *
   *var = s2 / n - *mean * *mean;
 }
 
-void nl_heightfield_shade(const double *height, int w, int h, double spacing,
+void nl_cellular_heightfield_shade(const double *height, int w, int h, double spacing,
                           const double *light, double *out)
 {
   for (int r = 0; r < h; r++)

@@ -32,32 +32,32 @@
  * costs far less than point evaluations; both give the same bits.
  *
  * GCTBF (eq. 1):  GCTBF(x) = sum_i c_i F_i(x) + sum_{i,j} c_ij F_i(x) F_j(x),
- * i, j = 1..4. nl_gctbf_parse() reads it from text, e.g.
+ * i, j = 1..4. nl_cellular_gctbf_parse() reads it from text, e.g.
  *   "F2 - F1 - F1F1"    "0.5*F1 + 2 F1*F2"    "F1F2 + F2F3"
  * (terms: optional sign, optional number, one or two factors F1..F4, with or
  * without '*'); a bad number, an index outside 1..4 or any other text is an
  * NL_EINVAL with a one-line message. As a basis for sums and rendering:
- *   nl_gctbf_basis gb = {c, g};
- *   nl_basis b = nl_basis_gctbf(&gb);     // b.row(...) evaluates GCTBF rows
+ *   nl_cellular_gctbf_basis gb = {c, g};
+ *   nl_noise_basis b = nl_cellular_basis_gctbf(&gb);     // b.row(...) evaluates GCTBF rows
  * b.bound = sum |c_i| FMAX + sum |c_ij| FMAX^2 (a valid, loose bound).
  *
  * Count statistics (Q1): nl_cellular_count_histogram() counts points per
  * cube over a block of cubes; nl_cellular_count_chisq() tests it against
  * Poisson(lambda) with Pearson's chi-square (bins 0..K-1 and a pooled tail
- * ">= K", K the largest with every expected count >= 5; nl_chisq_test);
+ * ">= K", K the largest with every expected count >= 5; nl_stats_chisq_test);
  * nl_cellular_f1_ks() tests F1 at random points against the nearest-
  * neighbour law of a Poisson process, P(F1 <= r) = 1 - exp(-lambda 4/3 pi r^3)
- * (nl_ks_test).
+ * (nl_stats_ks_test).
  *
  * Texturing with the GCTBF (sec. 4), on a window of the plane z:
- *   nl_gctbf_fractal_bump_grid()  eq. 6 (and eq. 5 for octaves = 0):
+ *   nl_cellular_gctbf_fractal_bump_grid()  eq. 6 (and eq. 5 for octaves = 0):
  *       fractal = sum_{i=0}^{oct} |0.5 - GCTBF(2^i k x)| / 2^i, bump = fractal^3
- *   nl_gctbf_cloud_grid()         eq. 7 with smoothscale = 1 (see .c):
+ *   nl_cellular_gctbf_cloud_grid()         eq. 7 with smoothscale = 1 (see .c):
  *       sum_{i=0}^{oct} 2^-i (1 - 2 GCTBF(2^i k x))
- *   (the colours of sec. 4, nl_cellular_marble_ramp() and
- *   nl_gctbf_cloud_colour(), live in texture/nl_texture.h: the algorithm
+ *   (the colours of sec. 4, nl_texture_ramp_cellular_marble() and
+ *   nl_texture_cloud_colour(), live in texture/nl_texture.h: the algorithm
  *   module makes values, the texture module turns them into images)
- *   nl_heightfield_shade()        Lambert shading of the plane displaced by
+ *   nl_cellular_heightfield_shade()        Lambert shading of the plane displaced by
  *       -bump along its normal, normals by central differences.
  */
 #ifndef NL_CELLULAR_H
@@ -72,22 +72,22 @@
 #define NL_CELLULAR_NMAX 4
 #define NL_CELLULAR_FMAX 3.46410161513775458705   /* 2 sqrt 3 */
 
-typedef enum { NL_COUNT_CLOSEST = 0, NL_COUNT_INVERSE_CDF = 1 } nl_count_rule;
+typedef enum { NL_COUNT_CLOSEST = 0, NL_COUNT_INVERSE_CDF = 1 } nl_cellular_count_rule;
 
 typedef struct {
   double lambda;                          /* mean points per unit cube */
   int M;                                  /* largest count in the table */
-  nl_count_rule rule;
+  nl_cellular_count_rule rule;
   double pmf[NL_CELLULAR_MAX_M + 1];      /* p(m), eq. 3 */
   double cdf[NL_CELLULAR_MAX_M + 1];      /* sum_{k<=m} p(k) */
   unsigned short *perm;                   /* 2^16 entries, a permutation */
 } nl_cellular;
 
 /* lambda > 0, 1 <= M <= NL_CELLULAR_MAX_M; perm shuffled from seed (MT19937). */
-nl_status nl_cellular_alloc(double lambda, int M, nl_count_rule rule, unsigned long seed,
+nl_status nl_cellular_alloc(double lambda, int M, nl_cellular_count_rule rule, unsigned long seed,
                             nl_cellular **out, nl_error *err);
 void nl_cellular_free(nl_cellular *c);
-const char *nl_count_rule_name(nl_count_rule rule);   /* "closest", "inverse-cdf" */
+const char *nl_cellular_count_rule_name(nl_cellular_count_rule rule);   /* "closest", "inverse-cdf" */
 
 /* The count for a uniform r in [0, 1) under c->rule. */
 int nl_cellular_count_from_r(const nl_cellular *c, double r);
@@ -106,29 +106,29 @@ typedef struct {
   int n;                                              /* largest index used, 1..4 */
   double c[NL_CELLULAR_NMAX];                         /* c_i, i = 1..4 at [i-1] */
   double cc[NL_CELLULAR_NMAX][NL_CELLULAR_NMAX];      /* c_ij */
-} nl_gctbf;
+} nl_cellular_gctbf;
 
-nl_status nl_gctbf_parse(const char *expr, nl_gctbf *g, nl_error *err);
+nl_status nl_cellular_gctbf_parse(const char *expr, nl_cellular_gctbf *g, nl_error *err);
 /* Adds coefficient v to c_i (j = 0) or c_ij; i, j in 1..4. */
-nl_status nl_gctbf_add(nl_gctbf *g, int i, int j, double v, nl_error *err);
+nl_status nl_cellular_gctbf_add(nl_cellular_gctbf *g, int i, int j, double v, nl_error *err);
 /* Canonical text, e.g. "F2 - F1 - F1F1"; buf of len bytes. */
-void nl_gctbf_format(const nl_gctbf *g, char *buf, size_t len);
-double nl_gctbf_value(const nl_gctbf *g, const double *F);
-double nl_gctbf_bound(const nl_gctbf *g);
+void nl_cellular_gctbf_format(const nl_cellular_gctbf *g, char *buf, size_t len);
+double nl_cellular_gctbf_value(const nl_cellular_gctbf *g, const double *F);
+double nl_cellular_gctbf_bound(const nl_cellular_gctbf *g);
 /* out[k] = GCTBF(x0 + k dx, y, z). */
-void nl_gctbf_row(const nl_cellular *c, const nl_gctbf *g, double x0, double dx, double y,
+void nl_cellular_gctbf_row(const nl_cellular *c, const nl_cellular_gctbf *g, double x0, double dx, double y,
                   double z, size_t count, double *out);
 
-/* GCTBF on a window (pixel centres, row 0 at y0), like nl_fractal_grid. */
-void nl_gctbf_grid(const nl_cellular *c, const nl_gctbf *g, const nl_window *win, double *out);
+/* GCTBF on a window (pixel centres, row 0 at y0), like nl_noise_fractal_grid. */
+void nl_cellular_gctbf_grid(const nl_cellular *c, const nl_cellular_gctbf *g, const nl_noise_window *win, double *out);
 
 typedef struct {
   const nl_cellular *cell;
-  nl_gctbf g;
-} nl_gctbf_basis;
-/* A basis for nl_fractal_row / nl_fractal_grid and the render tool; ctx must
+  nl_cellular_gctbf g;
+} nl_cellular_gctbf_basis;
+/* A basis for nl_noise_fractal_row / nl_noise_fractal_grid and the render tool; ctx must
  * outlive the basis. */
-nl_basis nl_basis_gctbf(const nl_gctbf_basis *ctx);
+nl_noise_basis nl_cellular_basis_gctbf(const nl_cellular_gctbf_basis *ctx);
 
 /* ---- count statistics (Q1) -------------------------------------------- */
 
@@ -138,36 +138,36 @@ void nl_cellular_count_histogram(const nl_cellular *c, long origin, int side, do
 /* Mean and (population) variance of the counts 0..M of such a histogram. */
 void nl_cellular_count_moments(const double *hist, int M, double *mean, double *var);
 nl_status nl_cellular_count_chisq(const nl_cellular *c, const double *hist,
-                                  nl_chisq_result *res, nl_error *err);
+                                  nl_stats_chisq_result *res, nl_error *err);
 /* 1 - exp(-lambda 4/3 pi r^3); params points to lambda. */
 double nl_cellular_f1_cdf(double r, void *params);
 /* F1 at n points uniform in [0, 1000)^3 drawn from seed (MT19937), KS test
  * against nl_cellular_f1_cdf. mean_f1 (may be NULL) gets the sample mean. */
 nl_status nl_cellular_f1_ks(const nl_cellular *c, size_t n, unsigned long seed,
-                            nl_ks_result *res, double *mean_f1, nl_error *err);
+                            nl_stats_ks_result *res, double *mean_f1, nl_error *err);
 
 /* ---- texturing (sec. 4) ----------------------------------------------- */
 
 /* bump(x) of eq. 6 on win (scale k multiplies x); octaves 0..30. */
-void nl_gctbf_fractal_bump_grid(const nl_gctbf_basis *b, int octaves, double k,
-                                const nl_window *win, double *out);
+void nl_cellular_gctbf_fractal_bump_grid(const nl_cellular_gctbf_basis *b, int octaves, double k,
+                                const nl_noise_window *win, double *out);
 /* fractal(x) of eq. 7 with smoothscale = 1. */
-void nl_gctbf_cloud_grid(const nl_gctbf_basis *b, int octaves, double k,
-                         const nl_window *win, double *out);
+void nl_cellular_gctbf_cloud_grid(const nl_cellular_gctbf_basis *b, int octaves, double k,
+                         const nl_noise_window *win, double *out);
 /* Sec. 4.3's textures (Q4) for one seed: a fresh table (lambda = 4, M = 50,
  * inverse-CDF counts) on win scaled by k, `octaves` after the first:
- *   NL_GCTBF_CLOUD  eq. 7's fractal of expr (nl_gctbf_cloud_grid); expr NULL:
+ *   NL_GCTBF_CLOUD  eq. 7's fractal of expr (nl_cellular_gctbf_cloud_grid); expr NULL:
  *                   of RenderMan's noise 0.5 + 0.5 N (improved noise of the
  *                   seed), for which 1 - 2 noise = -N
  *   NL_GCTBF_FLAME  the fractal sum of F1, sum_i F1(2^i k x) / 2^i
- *   NL_GCTBF_PLAIN  the GCTBF expr itself (nl_gctbf_grid)
+ *   NL_GCTBF_PLAIN  the GCTBF expr itself (nl_cellular_gctbf_grid)
  * v holds win->w * win->h values. NL_EINVAL for a bad expression. */
-typedef enum { NL_GCTBF_CLOUD, NL_GCTBF_FLAME, NL_GCTBF_PLAIN } nl_gctbf_texture;
-nl_status nl_cellular_texture_grid(nl_gctbf_texture kind, const char *expr, int octaves, double k,
-                                   const nl_window *win, unsigned long seed, double *v, nl_error *err);
+typedef enum { NL_GCTBF_CLOUD, NL_GCTBF_FLAME, NL_GCTBF_PLAIN } nl_cellular_gctbf_texture;
+nl_status nl_cellular_texture_grid(nl_cellular_gctbf_texture kind, const char *expr, int octaves, double k,
+                                   const nl_noise_window *win, unsigned long seed, double *v, nl_error *err);
 /* out = max(0, N . L) of the surface z = -height over a w x h grid (w, h >= 2) with spacing
  * `spacing`; light is a unit vector. */
-void nl_heightfield_shade(const double *height, int w, int h, double spacing,
+void nl_cellular_heightfield_shade(const double *height, int w, int h, double spacing,
                           const double *light, double *out);
 
 #endif

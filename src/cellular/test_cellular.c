@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static nl_cellular *make(nl_count_rule rule, unsigned long seed)
+static nl_cellular *make(nl_cellular_count_rule rule, unsigned long seed)
 {
   nl_cellular *c = NULL;
   NL_CHECK(nl_cellular_alloc(4.0, 50, rule, seed, &c, NULL) == NL_OK);
@@ -94,7 +94,7 @@ NL_TEST(count_distribution_chisq)
   for (unsigned long seed = 1; seed <= 20; seed++) {
     nl_cellular *a = make(NL_COUNT_INVERSE_CDF, seed), *b = make(NL_COUNT_CLOSEST, seed);
     double ha[51], hb[51];
-    nl_chisq_result ra, rb;
+    nl_stats_chisq_result ra, rb;
     nl_cellular_count_histogram(a, 0, 32, ha);
     nl_cellular_count_histogram(b, 0, 32, hb);
     NL_CHECK(nl_cellular_count_chisq(a, ha, &ra, NULL) == NL_OK);
@@ -115,7 +115,7 @@ NL_TEST(count_distribution_chisq)
 NL_TEST(f1_nearest_neighbour_law)
 {
   nl_cellular *a = make(NL_COUNT_INVERSE_CDF, 2), *b = make(NL_COUNT_CLOSEST, 2);
-  nl_ks_result ra, rb;
+  nl_stats_ks_result ra, rb;
   double ma;
   NL_CHECK(nl_cellular_f1_ks(a, 3000, 5, &ra, &ma, NULL) == NL_OK);
   NL_CHECK(nl_cellular_f1_ks(b, 3000, 5, &rb, NULL, NULL) == NL_OK);
@@ -129,39 +129,39 @@ NL_TEST(f1_nearest_neighbour_law)
 
 NL_TEST(gctbf_parse_and_format)
 {
-  nl_gctbf g;
+  nl_cellular_gctbf g;
   nl_error err;
   char buf[128];
-  NL_CHECK(nl_gctbf_parse("F2 - F1 - F1F1", &g, &err) == NL_OK);
+  NL_CHECK(nl_cellular_gctbf_parse("F2 - F1 - F1F1", &g, &err) == NL_OK);
   NL_CHECK(g.n == 2 && g.c[0] == -1 && g.c[1] == 1 && g.cc[0][0] == -1);
-  nl_gctbf_format(&g, buf, sizeof buf);
+  nl_cellular_gctbf_format(&g, buf, sizeof buf);
   NL_CHECK(strcmp(buf, "-F1 + F2 - F1F1") == 0);
-  NL_CHECK(nl_gctbf_parse(" 0.5*F1 + 2 F1*F2 -f3f4", &g, &err) == NL_OK);
+  NL_CHECK(nl_cellular_gctbf_parse(" 0.5*F1 + 2 F1*F2 -f3f4", &g, &err) == NL_OK);
   NL_CHECK(g.n == 4 && g.c[0] == 0.5 && g.cc[0][1] == 2 && g.cc[2][3] == -1);
   double F[4] = {0.1, 0.2, 0.3, 0.4};
-  NL_CHECK_NEAR(nl_gctbf_value(&g, F), 0.05 + 2 * 0.02 - 0.12, 1e-15);
-  NL_CHECK(nl_gctbf_parse("F5", &g, &err) == NL_EINVAL && strstr(err.msg, "1..4"));
-  NL_CHECK(nl_gctbf_parse("F1 + abc", &g, &err) == NL_EINVAL && strstr(err.msg, "abc"));
-  NL_CHECK(nl_gctbf_parse("", &g, &err) == NL_EINVAL);
-  NL_CHECK(nl_gctbf_parse("2", &g, &err) == NL_EINVAL);
-  NL_CHECK(nl_gctbf_parse("F1 F2 F3", &g, &err) == NL_EINVAL);
-  NL_CHECK(nl_gctbf_parse("nan F1", &g, &err) == NL_EINVAL);
-  NL_CHECK(nl_gctbf_add(&g, 0, 1, 1.0, &err) == NL_EINVAL);
+  NL_CHECK_NEAR(nl_cellular_gctbf_value(&g, F), 0.05 + 2 * 0.02 - 0.12, 1e-15);
+  NL_CHECK(nl_cellular_gctbf_parse("F5", &g, &err) == NL_EINVAL && strstr(err.msg, "1..4"));
+  NL_CHECK(nl_cellular_gctbf_parse("F1 + abc", &g, &err) == NL_EINVAL && strstr(err.msg, "abc"));
+  NL_CHECK(nl_cellular_gctbf_parse("", &g, &err) == NL_EINVAL);
+  NL_CHECK(nl_cellular_gctbf_parse("2", &g, &err) == NL_EINVAL);
+  NL_CHECK(nl_cellular_gctbf_parse("F1 F2 F3", &g, &err) == NL_EINVAL);
+  NL_CHECK(nl_cellular_gctbf_parse("nan F1", &g, &err) == NL_EINVAL);
+  NL_CHECK(nl_cellular_gctbf_add(&g, 0, 1, 1.0, &err) == NL_EINVAL);
 }
 
 /* The basis evaluates eq. 1 on rows and never leaves its bound. */
 NL_TEST(gctbf_basis)
 {
   nl_cellular *c = make(NL_COUNT_INVERSE_CDF, 4);
-  nl_gctbf_basis gb = {c, {0}};
-  NL_CHECK(nl_gctbf_parse("F1F2 + F2F3 - 3 F4", &gb.g, NULL) == NL_OK);
-  nl_basis b = nl_basis_gctbf(&gb);
+  nl_cellular_gctbf_basis gb = {c, {0}};
+  NL_CHECK(nl_cellular_gctbf_parse("F1F2 + F2F3 - 3 F4", &gb.g, NULL) == NL_OK);
+  nl_noise_basis b = nl_cellular_basis_gctbf(&gb);
   double out[200], F[4], worst = 0;
   b.row(b.ctx, 0.3, 0.05, 1.7, 2.2, 200, out);
   for (int s = 0; s < 200; s++) {
     double p[3] = {0.3 + s * 0.05, 1.7, 2.2};
     nl_cellular_eval(c, p, 4, F);
-    NL_CHECK(out[s] == nl_gctbf_value(&gb.g, F));
+    NL_CHECK(out[s] == nl_cellular_gctbf_value(&gb.g, F));
     worst = fmax(worst, fabs(out[s]));
   }
   NL_CHECK(worst <= b.bound && worst > 0);
@@ -171,11 +171,11 @@ NL_TEST(gctbf_basis)
 NL_TEST(shading_flat_and_tilted)
 {
   double h[9] = {0}, out[9], up[3] = {0, 0, 1};
-  nl_heightfield_shade(h, 3, 3, 1.0, up, out);
+  nl_cellular_heightfield_shade(h, 3, 3, 1.0, up, out);
   for (int k = 0; k < 9; k++) NL_CHECK_NEAR(out[k], 1.0, 1e-15);
   /* surface z = -h with h = x: slope -1 in x, normal (1, 0, 1)/sqrt 2 */
   for (int k = 0; k < 9; k++) h[k] = k % 3;
-  nl_heightfield_shade(h, 3, 3, 1.0, up, out);
+  nl_cellular_heightfield_shade(h, 3, 3, 1.0, up, out);
   NL_CHECK_NEAR(out[4], 1.0 / sqrt(2.0), 1e-15);
 }
 
@@ -185,7 +185,7 @@ NL_TEST(count_moments_and_texture_values)
   nl_cellular_count_moments(hist, 3, &mean, &var);
   NL_CHECK_NEAR(mean, 1.0, 1e-15);
   NL_CHECK_NEAR(var, 0.5, 1e-15);
-  nl_window w = {0, 0, 0.5, 2.0, 8, 8};
+  nl_noise_window w = {0, 0, 0.5, 2.0, 8, 8};
   double v[64], u[64];
   NL_CHECK(nl_cellular_texture_grid(NL_GCTBF_PLAIN, "F1", 2, 2.0, &w, 3, v, NULL) == NL_OK);
   for (int k = 0; k < 64; k++) NL_CHECK(v[k] >= 0.0);

@@ -22,8 +22,8 @@
  *   nl_cheng_pattern *pat;
  *   nl_cheng_pattern_from_pixels(rgba, w, h, 4, 64, &pat, &err);      // 64 x 64 control grid
  *   nl_cheng_config c = nl_cheng_config_default();                      // thesis setting
- *   nl_grad2 *g = nl_grad2_alloc(512);
- *   nl_grad2_seed(g, seed);                        // random start (level 1's initial guess)
+ *   nl_noise_grad2 *g = nl_noise_grad2_alloc(512);
+ *   nl_noise_grad2_seed(g, seed);                        // random start (level 1's initial guess)
  *   nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);     // g is edited in place
  *   nl_cheng_optimise(p, seed, stats);             // levels 1..F, stats may be NULL
  *   nl_cheng_eval ev; nl_cheng_evaluate(g, &c, pat, &ev, &err);         // E_KS, V, chi2, p, E_Con
@@ -32,7 +32,7 @@
  *
  * THE MODEL (thesis setting in nl_cheng_config_default)
  *   Noise(x, y) = sum over the 4 cell corners (i, j) of w(x-i) w(y-j) (Delta_ij . G_ij)
- *   (eq. 3.1-3.2), G_ij = G[P[P[i] + j]] (nl_grad2, M = 512 angles, quintic fade);
+ *   (eq. 3.1-3.2), G_ij = G[P[P[i] + j]] (nl_noise_grad2, M = 512 angles, quintic fade);
  *   fractal sum F_sum = sum_{l=1..F} Noise(f_l x, f_l y) / a_l, f_l = f1 2^(l-1),
  *   a_l = a1 2^(l-1), F = 4, f1 = 8, a1 = 4 (eq. 3.10), over the unit square.
  *
@@ -78,7 +78,7 @@
  *   an inverted list names the points whose cells use the entry, with W summed
  *   over those corners. A move on entry k adds W . (G_new - G_old) to only those
  *   points' octave values, re-evaluates their terms, and updates the statistic
- *   through nl_ks_incr (KS; Kuiper's V = D+ + D- of the same state: O(log n +
+ *   through nl_stats_ks_incr (KS; Kuiper's V = D+ + D- of the same state: O(log n +
  *   rank shift + n/32)) or bin counts (chi-square: O(1), the sum of squared
  *   counts kept exactly in integers). nl_cheng_undo restores the saved values
  *   exactly. At every temperature step all points are re-evaluated from the
@@ -193,7 +193,7 @@ typedef struct nl_cheng_problem nl_cheng_problem;
 /* Borrows the pattern and the table (the table is edited by moves; keep both
  * alive). Starts at level 1. */
 nl_cheng_problem *nl_cheng_problem_alloc(const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                                         nl_grad2 *table, nl_error *err);
+                                         nl_noise_grad2 *table, nl_error *err);
 void nl_cheng_problem_free(nl_cheng_problem *p);
 
 /* Switches to level l (1..F): variables, statistic sample and E_Con's partial
@@ -250,27 +250,27 @@ typedef struct {
                                  of [0,1)^2, per unit length (smoothness, Fig 4.7) */
 } nl_cheng_eval;
 
-nl_status nl_cheng_evaluate(const nl_grad2 *table, const nl_cheng_config *c,
+nl_status nl_cheng_evaluate(const nl_noise_grad2 *table, const nl_cheng_config *c,
                             const nl_cheng_pattern *pat, nl_cheng_eval *out, nl_error *err);
 
 /* The control value c(x, y) of the config's variant (all F octaves) at the
  * centres of a w x h raster of [0,1)^2, row 0 at y = 0. */
-void nl_cheng_value_grid(const nl_grad2 *table, const nl_cheng_config *c, int w, int h,
+void nl_cheng_value_grid(const nl_noise_grad2 *table, const nl_cheng_config *c, int w, int h,
                          double *out);
 
 /* One complete run, the loop the experiments share: random table from `seed`,
  * multi-level optimisation, evaluation; the optimised table is returned in
  * *table_out if not NULL (caller frees). stats: F entries or NULL. */
 nl_status nl_cheng_run(const nl_cheng_config *c, const nl_cheng_pattern *pat, unsigned long seed,
-                       nl_cheng_eval *ev, nl_cheng_level_stats *stats, nl_grad2 **table_out,
+                       nl_cheng_eval *ev, nl_cheng_level_stats *stats, nl_noise_grad2 **table_out,
                        nl_error *err);
 /* nl_cheng_run for seeds nl_seed_replicate(seed0, 0 .. k-1) into evs[k]; the
  * first seed's table in *first if not NULL. */
 nl_status nl_cheng_run_seeds(const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                             unsigned long seed0, int k, nl_cheng_eval *evs, nl_grad2 **first,
+                             unsigned long seed0, int k, nl_cheng_eval *evs, nl_noise_grad2 **first,
                              nl_error *err);
 /* Median of the one-sample KS statistic D_n under the null (bisection on
- * nl_ks_cdf): the yardstick for "as uniform as a random table". */
+ * nl_stats_ks_cdf): the yardstick for "as uniform as a random table". */
 double nl_cheng_ks_median(size_t n);
 
 #endif

@@ -104,11 +104,11 @@ void nl_cheng_propagate(nl_cheng_problem *p)
   unsigned char *done = nl_xcalloc(p->m, 1);
   for (long J = 0; J <= lmax; J++)
     for (long I = 0; I <= lmax; I++) {
-      size_t k = nl_grad2_index(p->g, I, J);
+      size_t k = nl_noise_grad2_index(p->g, I, J);
       if (p->first_level[k] != L || done[k]) continue;
       /* eq. 3.13: the lattice point at half the frequency (f_l = 2 f_{l-1}). */
-      size_t parent = nl_grad2_index(p->g, I / 2, J / 2);
-      nl_grad2_set_angle(p->g, k, p->g->angle[parent]);
+      size_t parent = nl_noise_grad2_index(p->g, I / 2, J / 2);
+      nl_noise_grad2_set_angle(p->g, k, p->g->angle[parent]);
       done[k] = 1;
     }
   free(done);

@@ -7,21 +7,21 @@
 #include <stdlib.h>
 #include <string.h>
 
-static double amp_scale(const nl_octaves *o)
+static double amp_scale(const nl_noise_octaves *o)
 {
   double a = 0;
   for (int l = 0; l < o->n; l++) a += o->amp[l];
   return 1.0 / (NL_NOISE2_BOUND * a);
 }
 
-/* E_Con over all F octaves with the noise kernel itself (nl_noise2), an
+/* E_Con over all F octaves with the noise kernel itself (nl_noise_grad2_eval), an
  * evaluation path independent of the optimiser's stored corners. */
-static double control_error(const nl_grad2 *g, const nl_cheng_config *c, const nl_cheng_pattern *pat)
+static double control_error(const nl_noise_grad2 *g, const nl_cheng_config *c, const nl_cheng_pattern *pat)
 {
-  nl_octaves o = nl_octaves_cheng(c->octaves, c->f1, c->a1);
+  nl_noise_octaves o = nl_noise_octaves_cheng(c->octaves, c->f1, c->a1);
   double s = amp_scale(&o), e = 0, nv[NL_CHENG_MAX_OCTAVES];
   for (size_t i = 0; i < pat->n; i++) {
-    for (int l = 0; l < o.n; l++) nv[l] = nl_noise2(g, o.freq[l] * pat->x[i], o.freq[l] * pat->y[i]);
+    for (int l = 0; l < o.n; l++) nv[l] = nl_noise_grad2_eval(g, o.freq[l] * pat->x[i], o.freq[l] * pat->y[i]);
     double d = nl_cheng__control_value(c->con, nv, o.amp, o.n, s) - pat->d[i];
     e += d * d;
   }
@@ -32,7 +32,7 @@ static double control_error(const nl_grad2 *g, const nl_cheng_config *c, const n
 
 /* rms of the finite-difference gradient of the control value, per unit
  * length: a number for "smoother" (Fig 4.7). */
-static double roughness(const nl_grad2 *g, const nl_cheng_config *c)
+static double roughness(const nl_noise_grad2 *g, const nl_cheng_config *c)
 {
   double *v = nl_xmalloc(ROUGH_N * ROUGH_N * sizeof *v), s = 0;
   nl_cheng_value_grid(g, c, ROUGH_N, ROUGH_N, v);
@@ -45,17 +45,17 @@ static double roughness(const nl_grad2 *g, const nl_cheng_config *c)
   return sqrt(s / ((ROUGH_N - 1.0) * (ROUGH_N - 1.0))) * ROUGH_N;
 }
 
-nl_status nl_cheng_evaluate(const nl_grad2 *g, const nl_cheng_config *c,
+nl_status nl_cheng_evaluate(const nl_noise_grad2 *g, const nl_cheng_config *c,
                             const nl_cheng_pattern *pat, nl_cheng_eval *out, nl_error *err)
 {
   nl_status s = nl_cheng_config_check(c, err);
   if (s) return s;
-  nl_ks_result ks;
-  nl_kuiper_result ku;
-  nl_chisq_result ch;
-  if ((s = nl_ks_test_uniform(g->angle, g->m, 0.0, NL_TWO_PI, &ks, err))) return s;
-  if ((s = nl_kuiper_test_uniform(g->angle, g->m, 0.0, NL_TWO_PI, &ku, err))) return s;
-  if ((s = nl_chisq_test_uniform(g->angle, g->m, c->chisq_bins, 0.0, NL_TWO_PI, &ch, err))) return s;
+  nl_stats_ks_result ks;
+  nl_stats_kuiper_result ku;
+  nl_stats_chisq_result ch;
+  if ((s = nl_stats_ks_test_uniform(g->angle, g->m, 0.0, NL_TWO_PI, &ks, err))) return s;
+  if ((s = nl_stats_kuiper_test_uniform(g->angle, g->m, 0.0, NL_TWO_PI, &ku, err))) return s;
+  if ((s = nl_stats_chisq_test_uniform(g->angle, g->m, c->chisq_bins, 0.0, NL_TWO_PI, &ch, err))) return s;
   out->e_ks = ks.d; out->p_ks = ks.p;
   out->kuiper_v = ku.v; out->p_kuiper = ku.p;
   out->chi2 = ch.chi2; out->p_chi2 = ch.p;
@@ -67,14 +67,14 @@ nl_status nl_cheng_evaluate(const nl_grad2 *g, const nl_cheng_config *c,
   return NL_OK;
 }
 
-void nl_cheng_value_grid(const nl_grad2 *g, const nl_cheng_config *c, int w, int h, double *out)
+void nl_cheng_value_grid(const nl_noise_grad2 *g, const nl_cheng_config *c, int w, int h, double *out)
 {
-  nl_octaves o = nl_octaves_cheng(c->octaves, c->f1, c->a1);
+  nl_noise_octaves o = nl_noise_octaves_cheng(c->octaves, c->f1, c->a1);
   double s = amp_scale(&o), nv[NL_CHENG_MAX_OCTAVES];
   double *rows = nl_xmalloc((size_t)o.n * (size_t)w * sizeof *rows);
   for (int y = 0; y < h; y++) {
     for (int l = 0; l < o.n; l++)
-      nl_noise2_row(g, o.freq[l] * 0.5 / w, o.freq[l] / w, o.freq[l] * (y + 0.5) / h, (size_t)w,
+      nl_noise_grad2_row(g, o.freq[l] * 0.5 / w, o.freq[l] / w, o.freq[l] * (y + 0.5) / h, (size_t)w,
                     rows + (size_t)l * w);
     for (int x = 0; x < w; x++) {
       for (int l = 0; l < o.n; l++) nv[l] = rows[(size_t)l * w + x];
@@ -85,25 +85,25 @@ void nl_cheng_value_grid(const nl_grad2 *g, const nl_cheng_config *c, int w, int
 }
 
 nl_status nl_cheng_run(const nl_cheng_config *c, const nl_cheng_pattern *pat, unsigned long seed,
-                       nl_cheng_eval *ev, nl_cheng_level_stats *stats, nl_grad2 **table_out,
+                       nl_cheng_eval *ev, nl_cheng_level_stats *stats, nl_noise_grad2 **table_out,
                        nl_error *err)
 {
-  nl_grad2 *g = nl_grad2_alloc(c->m);
-  nl_grad2_seed(g, seed);
+  nl_noise_grad2 *g = nl_noise_grad2_alloc(c->m);
+  nl_noise_grad2_seed(g, seed);
   nl_cheng_problem *p = nl_cheng_problem_alloc(c, pat, g, err);
-  if (!p) { nl_grad2_free(g); return NL_EINVAL; }
+  if (!p) { nl_noise_grad2_free(g); return NL_EINVAL; }
   /* The table and the annealer take streams of their own roles from the one
    * seed (noise.grad2, cheng.anneal), so they are independent. */
   nl_cheng_optimise(p, seed, stats);
   nl_cheng_problem_free(p);
   nl_status s = ev ? nl_cheng_evaluate(g, c, pat, ev, err) : NL_OK;
   if (table_out && !s) *table_out = g;
-  else nl_grad2_free(g);
+  else nl_noise_grad2_free(g);
   return s;
 }
 
 nl_status nl_cheng_run_seeds(const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                             unsigned long seed0, int k, nl_cheng_eval *evs, nl_grad2 **first,
+                             unsigned long seed0, int k, nl_cheng_eval *evs, nl_noise_grad2 **first,
                              nl_error *err)
 {
   for (int s = 0; s < k; s++) {

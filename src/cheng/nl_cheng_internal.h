@@ -11,12 +11,12 @@
 #include <stdint.h>
 
 /* The statistic term over a sample of angles, kept incrementally: KS and
- * Kuiper through nl_ks_incr, chi-square through bin counts. */
+ * Kuiper through nl_stats_ks_incr, chi-square through bin counts. */
 typedef struct {
   nl_cheng_stat kind;
   size_t k;          /* chi-square bins */
   size_t n;
-  nl_ks_incr *ks;
+  nl_stats_ks_incr *ks;
   long *count;       /* k bins */
   long sumsq;        /* sum of count^2 */
   double range[2];   /* {0, 2 pi}, the uniform CDF's params */
@@ -30,13 +30,13 @@ double nl_cheng__stat_value(const nl_cheng_statstate *s);
 /* The same statistic from scratch through nl_stats' tests. */
 double nl_cheng__stat_full(nl_cheng_stat kind, size_t bins, const double *x, size_t n);
 /* Bin of v in k equal bins of [0, 2 pi]: nl_stats' rule, so the incremental
- * counts bin exactly as nl_chisq_test_uniform does. */
+ * counts bin exactly as nl_stats_chisq_test_uniform does. */
 static inline size_t nl_cheng__bin(double v, size_t k) { return nl_stats_chisq_bin(v, k, 0.0, NL_TWO_PI); }
 
 struct nl_cheng_problem {
   nl_cheng_config c;
   const nl_cheng_pattern *pat;
-  nl_grad2 *g;
+  nl_noise_grad2 *g;
   size_t m, np;
   int F, level;
   double freq[NL_CHENG_MAX_OCTAVES], amp[NL_CHENG_MAX_OCTAVES], s;

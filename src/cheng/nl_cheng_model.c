@@ -77,7 +77,7 @@ const char *nl_cheng_rep_name(nl_cheng_rep rep) { return rep == NL_CHENG_REP_COS
 static nl_status complete_linkage(const double *x, size_t n, size_t d, double **Z, nl_error *err)
 {
   *Z = nl_xmalloc((n - 1) * 4 * sizeof **Z);
-  nl_status st = nl_linkage(x, n, d, NL_LINKAGE_COMPLETE, *Z, err);
+  nl_status st = nl_cluster_linkage(x, n, d, NL_LINKAGE_COMPLETE, *Z, err);
   if (st) { free(*Z); *Z = NULL; }
   return st;
 }
@@ -90,7 +90,7 @@ nl_status nl_cheng_initial_k(const double *x, size_t n, size_t d, double cutoff,
   nl_status st = complete_linkage(x, n, d, &Z, err);
   if (st) return st;
   int *lab = labels ? labels : nl_xmalloc(n * sizeof *lab);
-  st = nl_fcluster_distance(Z, n, cutoff, lab, k, err);
+  st = nl_cluster_fcluster_distance(Z, n, cutoff, lab, k, err);
   if (!labels) free(lab);
   free(Z);
   return st;
@@ -157,7 +157,7 @@ static nl_status model_cluster(nl_cheng_model *m, const double *chord, const nl_
   m->cluster_bytes = m->n_in * (m->n_in - 1) / 2 * sizeof(double) + (m->n_in - 1) * 4 * sizeof(double);
   m->cutoff = o->cutoff >= 0 ? o->cutoff : nl_cheng_cutoff_for_k(Z, m->n_in, o->target_k);
   int *lab = nl_xmalloc(m->n_in * sizeof *lab);
-  st = nl_fcluster_distance(Z, m->n_in, m->cutoff, lab, &m->k0, err);
+  st = nl_cluster_fcluster_distance(Z, m->n_in, m->cutoff, lab, &m->k0, err);
   free(lab);
   free(Z);
   m->seconds_cluster = nl_time_now() - t0;
@@ -237,17 +237,17 @@ void nl_cheng_model_free(nl_cheng_model *m)
 
 /* ---- reproduction ------------------------------------------------------- */
 
-nl_status nl_cheng_reproduce(const nl_grad2 *opt, const nl_cheng_model *m, double swap_fraction,
-                             gsl_rng *rng, nl_grad2 *out, nl_error *err)
+nl_status nl_cheng_reproduce(const nl_noise_grad2 *opt, const nl_cheng_model *m, double swap_fraction,
+                             gsl_rng *rng, nl_noise_grad2 *out, nl_error *err)
 {
   if (!m->gmm) return nl_fail(err, NL_EINVAL, "no mixture to sample (%s)", m->msg);
   if (out->m != opt->m) return nl_fail(err, NL_EINVAL, "table sizes differ");
-  nl_grad2_copy(out, opt);
+  nl_noise_grad2_copy(out, opt);
   double *x = nl_xmalloc(m->d * sizeof *x), *th = nl_xmalloc(m->nlow * sizeof *th);
   nl_gmm_sample(m->gmm, rng, 1, x, NULL);
   nl_cheng_rep_decode(m->rep, x, 1, m->nlow, m->mu, th);
   unsigned char *is_low = nl_xcalloc(opt->m, 1);
-  for (size_t j = 0; j < m->nlow; j++) { nl_grad2_set_angle(out, m->low[j], th[j]); is_low[m->low[j]] = 1; }
+  for (size_t j = 0; j < m->nlow; j++) { nl_noise_grad2_set_angle(out, m->low[j], th[j]); is_low[m->low[j]] = 1; }
   /* Sec. 3.5.3: swap high entries at random; a permutation keeps their angles. */
   size_t nh = 0, *high = nl_xmalloc(opt->m * sizeof *high);
   for (size_t k = 0; k < opt->m; k++) if (!is_low[k]) high[nh++] = k;
@@ -258,7 +258,7 @@ nl_status nl_cheng_reproduce(const nl_grad2 *opt, const nl_cheng_model *m, doubl
     gsl_ran_choose(rng, pick, ns, high, nh, sizeof *high);
     for (size_t q = 0; q < ns; q++) a[q] = opt->angle[pick[q]];
     gsl_ran_shuffle(rng, a, ns, sizeof *a);
-    for (size_t q = 0; q < ns; q++) nl_grad2_set_angle(out, pick[q], a[q]);
+    for (size_t q = 0; q < ns; q++) nl_noise_grad2_set_angle(out, pick[q], a[q]);
     free(pick);
     free(a);
   }
@@ -293,8 +293,8 @@ static void ks_per_dim(const nl_cheng_model *m, const nl_cheng_pool *pool, const
   for (size_t j = 0; j < m->nlow && !*st; j++) {
     for (size_t i = 0; i < np; i++) a[i] = wrap_angle(pool->theta[(i * pool->n / np) * m->nlow + j] - m->mu[j] + NL_PI);
     for (size_t i = 0; i < nd; i++) b[i] = wrap_angle(draw[i * m->nlow + j] - m->mu[j] + NL_PI);
-    nl_ks_result r;
-    *st = nl_ks2_test(a, np, b, nd, &r, err);
+    nl_stats_ks_result r;
+    *st = nl_stats_ks2_test(a, np, b, nd, &r, err);
     dv[j] = r.d;
     rej += r.p < 0.05;
   }
@@ -335,8 +335,8 @@ nl_status nl_cheng_k_curve(const nl_cheng_pool *pool, const nl_cheng_model *m, c
   int *lab = nl_xmalloc(n * sizeof *lab);
   for (size_t i = 0; i < n; i++) memcpy(th + i * nl, pool->theta + m->in[i] * nl, nl * sizeof *th);
   nl_cheng_rep_encode(NL_CHENG_REP_COSSIN, th, n, nl, m->mu, x);
-  nl_status st = nl_linkage(x, n, 2 * nl, NL_LINKAGE_COMPLETE, Z, err);
-  for (size_t q = 0; q < ncut && !st; q++) st = nl_fcluster_distance(Z, n, cut[q], lab, &k[q], err);
+  nl_status st = nl_cluster_linkage(x, n, 2 * nl, NL_LINKAGE_COMPLETE, Z, err);
+  for (size_t q = 0; q < ncut && !st; q++) st = nl_cluster_fcluster_distance(Z, n, cut[q], lab, &k[q], err);
   free(th); free(x); free(Z); free(lab);
   return st;
 }

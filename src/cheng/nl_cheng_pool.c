@@ -29,12 +29,12 @@ void nl_cheng_set_reproduction(nl_cheng_problem *p, int low_levels)
   nl_cheng_resum(p);
 }
 
-size_t *nl_cheng_low_entries(const nl_grad2 *table, const nl_cheng_config *c,
+size_t *nl_cheng_low_entries(const nl_noise_grad2 *table, const nl_cheng_config *c,
                              const nl_cheng_pattern *pat, int low_levels, size_t *nlow,
                              nl_error *err)
 {
-  nl_grad2 *g = nl_grad2_alloc(table->m);
-  nl_grad2_copy(g, table);
+  nl_noise_grad2 *g = nl_noise_grad2_alloc(table->m);
+  nl_noise_grad2_copy(g, table);
   nl_cheng_problem *p = nl_cheng_problem_alloc(c, pat, g, err);
   size_t *low = NULL;
   if (p) {
@@ -44,7 +44,7 @@ size_t *nl_cheng_low_entries(const nl_grad2 *table, const nl_cheng_config *c,
     memcpy(low, v, *nlow * sizeof *low);
   }
   nl_cheng_problem_free(p);
-  nl_grad2_free(g);
+  nl_noise_grad2_free(g);
   return low;
 }
 
@@ -56,7 +56,7 @@ static double wrap_angle(double t)
 }
 
 typedef struct {
-  const nl_grad2 *opt;
+  const nl_noise_grad2 *opt;
   const nl_cheng_config *c;
   const nl_cheng_pattern *pat;
   const nl_cheng_pool_options *o;
@@ -96,15 +96,15 @@ static double cold_tail(nl_cheng_problem *p, gsl_rng *rng, double T, size_t keep
 
 /* Run q: random low entries from stream (seed, "cheng.pool.run", q), anneal
  * E_R, cold tail. The stream depends on q only, not on the thread. */
-static void pool_run(pool_job *j, nl_cheng_problem *p, nl_grad2 *g, gsl_rng *rng, int q)
+static void pool_run(pool_job *j, nl_cheng_problem *p, nl_noise_grad2 *g, gsl_rng *rng, int q)
 {
   double t0 = nl_time_now();
   gsl_rng_set(rng, nl_seed_stream(j->seed, "cheng.pool.run", (unsigned long)q));
-  nl_grad2_copy(g, j->opt);
+  nl_noise_grad2_copy(g, j->opt);
   nl_cheng_set_reproduction(p, j->o->low_levels);
   size_t nv;
   const size_t *vars = nl_cheng_vars(p, &nv);
-  for (size_t v = 0; v < nv; v++) nl_grad2_set_angle(g, vars[v], wrap_angle(NL_TWO_PI * gsl_rng_uniform(rng)));
+  for (size_t v = 0; v < nv; v++) nl_noise_grad2_set_angle(g, vars[v], wrap_angle(NL_TWO_PI * gsl_rng_uniform(rng)));
   nl_cheng_set_reproduction(p, j->o->low_levels);   /* recompute from the new start */
   j->start[q] = p->e;
   nl_cheng_level_stats st;
@@ -118,8 +118,8 @@ static void pool_run(pool_job *j, nl_cheng_problem *p, nl_grad2 *g, gsl_rng *rng
 static void *pool_worker(void *arg)
 {
   pool_job *j = arg;
-  nl_grad2 *g = nl_grad2_alloc(j->opt->m);
-  nl_grad2_copy(g, j->opt);
+  nl_noise_grad2 *g = nl_noise_grad2_alloc(j->opt->m);
+  nl_noise_grad2_copy(g, j->opt);
   nl_error err;
   nl_cheng_problem *p = nl_cheng_problem_alloc(j->c, j->pat, g, &err);
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
@@ -133,7 +133,7 @@ static void *pool_worker(void *arg)
   }
   gsl_rng_free(rng);
   nl_cheng_problem_free(p);
-  nl_grad2_free(g);
+  nl_noise_grad2_free(g);
   return NULL;
 }
 
@@ -167,7 +167,7 @@ static void pool_compact(nl_cheng_pool *pool, const pool_job *j)
   pool->run = nl_xrealloc(pool->run, keep * sizeof *pool->run);
 }
 
-nl_status nl_cheng_pool_collect(const nl_grad2 *opt, const nl_cheng_config *c,
+nl_status nl_cheng_pool_collect(const nl_noise_grad2 *opt, const nl_cheng_config *c,
                                 const nl_cheng_pattern *pat, const nl_cheng_pool_options *o,
                                 unsigned long seed, nl_cheng_pool **out, nl_error *err)
 {
@@ -197,13 +197,13 @@ nl_status nl_cheng_pool_collect(const nl_grad2 *opt, const nl_cheng_config *c,
   pthread_mutex_destroy(&j.lock);
   if (j.status) { *err = j.err; nl_cheng_pool_free(pool); return j.status; }
   pool_compact(pool, &j);   /* in place: slot order is run order, compaction only moves left */
-  nl_grad2 *g = nl_grad2_alloc(opt->m);
-  nl_grad2_copy(g, opt);
+  nl_noise_grad2 *g = nl_noise_grad2_alloc(opt->m);
+  nl_noise_grad2_copy(g, opt);
   nl_cheng_problem *p = nl_cheng_problem_alloc(c, pat, g, err);
   nl_cheng_set_reproduction(p, o->low_levels);
   pool->e_opt = nl_cheng_energy(p, NULL, NULL);
   nl_cheng_problem_free(p);
-  nl_grad2_free(g);
+  nl_noise_grad2_free(g);
   *out = pool;
   return NL_OK;
 }

@@ -35,7 +35,7 @@ static void build_corners(nl_cheng_problem *p)
       size_t base = (i * (size_t)p->F + (size_t)l) * 4;
       corner_weights(X - (double)ci, Y - (double)cj, p->cw + 2 * base);
       for (int c = 0; c < 4; c++)
-        p->ck[base + c] = (uint32_t)nl_grad2_index(p->g, ci + (c & 1), cj + (c >> 1));
+        p->ck[base + c] = (uint32_t)nl_noise_grad2_index(p->g, ci + (c & 1), cj + (c >> 1));
     }
 }
 
@@ -47,7 +47,7 @@ static void build_usage(nl_cheng_problem *p)
     long L = nl_cheng__lattice_max(p->freq[l]);
     for (long j = 0; j <= L; j++)
       for (long i = 0; i <= L; i++) {
-        size_t k = nl_grad2_index(p->g, i, j);
+        size_t k = nl_noise_grad2_index(p->g, i, j);
         p->used[(size_t)l * p->m + k] = 1;
         if (!p->first_level[k]) p->first_level[k] = l + 1;
       }
@@ -94,7 +94,7 @@ static void build_lists(nl_cheng_problem *p)
 }
 
 nl_cheng_problem *nl_cheng_problem_alloc(const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                                         nl_grad2 *table, nl_error *err)
+                                         nl_noise_grad2 *table, nl_error *err)
 {
   if (nl_cheng_config_check(c, err)) return NULL;
   if (!pat || pat->n == 0) { nl_fail(err, NL_EINVAL, "control pattern has no control points"); return NULL; }
@@ -109,7 +109,7 @@ nl_cheng_problem *nl_cheng_problem_alloc(const nl_cheng_config *c, const nl_chen
   p->m = table->m;
   p->np = pat->n;
   p->F = c->octaves;
-  nl_octaves o = nl_octaves_cheng(c->octaves, c->f1, c->a1);
+  nl_noise_octaves o = nl_noise_octaves_cheng(c->octaves, c->f1, c->a1);
   double asum = 0;
   for (int l = 0; l < p->F; l++) { p->freq[l] = o.freq[l]; p->amp[l] = o.amp[l]; asum += o.amp[l]; }
   p->s = 1.0 / (NL_NOISE2_BOUND * asum);   /* V = F_sum / its analytic bound */
@@ -263,7 +263,7 @@ double nl_cheng_move(nl_cheng_problem *p, size_t k, double theta)
     p->e_stat = nl_cheng__stat_value(&p->st);
   }
   double gx = p->g->gx[k], gy = p->g->gy[k];
-  nl_grad2_set_angle(p->g, k, theta);
+  nl_noise_grad2_set_angle(p->g, k, theta);
   p->e_con += update_points(p, k, p->g->gx[k] - gx, p->g->gy[k] - gy);
   p->e = nl_cheng_objective(&p->c, p->e_stat, p->e_con);
   return p->e;
@@ -274,7 +274,7 @@ void nl_cheng_undo(nl_cheng_problem *p)
   if (!p->has_undo) return;
   size_t k = p->uk, F = (size_t)p->F;
   if (p->in_sample[k]) nl_cheng__stat_replace(&p->st, p->g->angle[k], p->utheta);
-  nl_grad2_set_angle(p->g, k, p->utheta);
+  nl_noise_grad2_set_angle(p->g, k, p->utheta);
   for (size_t t = 0; t < p->ntouch; t++) {
     size_t i = p->tp[t];
     memcpy(p->nv + i * F, p->tnv + t * F, F * sizeof *p->nv);

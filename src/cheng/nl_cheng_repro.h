@@ -65,7 +65,7 @@
  *   the two clusters exceeds the cutoff": complete linkage (max pairwise
  *   distance) is the Hausdorff-type distance between point sets that makes
  *   "every pair in a cluster within the cutoff" true; flat clusters by
- *   nl_fcluster_distance. The true Hausdorff distance is not a reducible
+ *   nl_cluster_fcluster_distance. The true Hausdorff distance is not a reducible
  *   linkage; we say so rather than approximate it. The initial K is the number
  *   of clusters. cutoff < 0 asks for the cutoff that gives target_k clusters
  *   (midpoint of the merge heights around it): the thesis tuned its cutoff
@@ -122,10 +122,10 @@ void nl_cheng_pool_options_default(nl_cheng_pool_options *o);
 void nl_cheng_set_reproduction(nl_cheng_problem *p, int low_levels);
 /* The low entries of levels 1..low_levels of `table` (its permutation
  * decides them) under this config, ascending; caller frees. NULL on error. */
-size_t *nl_cheng_low_entries(const nl_grad2 *table, const nl_cheng_config *c,
+size_t *nl_cheng_low_entries(const nl_noise_grad2 *table, const nl_cheng_config *c,
                              const nl_cheng_pattern *pat, int low_levels, size_t *nlow,
                              nl_error *err);
-nl_status nl_cheng_pool_collect(const nl_grad2 *opt, const nl_cheng_config *c,
+nl_status nl_cheng_pool_collect(const nl_noise_grad2 *opt, const nl_cheng_config *c,
                                 const nl_cheng_pattern *pat, const nl_cheng_pool_options *o,
                                 unsigned long seed, nl_cheng_pool **out, nl_error *err);
 void nl_cheng_pool_free(nl_cheng_pool *p);
@@ -194,8 +194,8 @@ nl_status nl_cheng_model_fit(const nl_cheng_pool *pool, const nl_cheng_model_opt
 void nl_cheng_model_free(nl_cheng_model *m);
 /* out = opt with low entries drawn from the mixture and a swap_fraction of
  * the high entries permuted at random. NL_EINVAL without a mixture. */
-nl_status nl_cheng_reproduce(const nl_grad2 *opt, const nl_cheng_model *m, double swap_fraction,
-                             gsl_rng *rng, nl_grad2 *out, nl_error *err);
+nl_status nl_cheng_reproduce(const nl_noise_grad2 *opt, const nl_cheng_model *m, double swap_fraction,
+                             gsl_rng *rng, nl_noise_grad2 *out, nl_error *err);
 /* Does the mixture describe the pool? (beyond the paper) Mean log-likelihood
  * per row of the input samples and of the pool rows not used (held out;
  * NAN if none), and per-dimension two-sample KS between n_draw mixture draws

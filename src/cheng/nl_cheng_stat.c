@@ -17,7 +17,7 @@ void nl_cheng__stat_init(nl_cheng_statstate *s, nl_cheng_stat kind, size_t bins)
 
 void nl_cheng__stat_clear(nl_cheng_statstate *s)
 {
-  nl_ks_incr_free(s->ks);
+  nl_stats_ks_incr_free(s->ks);
   free(s->count);
   s->ks = NULL;
   s->count = NULL;
@@ -37,7 +37,7 @@ void nl_cheng__stat_reset(nl_cheng_statstate *s, const double *x, size_t n)
   }
   /* Angles are produced in [0, 2 pi) by construction; a failure here is a bug. */
   nl_error err;
-  s->ks = nl_ks_incr_alloc(x, n, nl_cdf_uniform, s->range, &err);
+  s->ks = nl_stats_ks_incr_alloc(x, n, nl_stats_cdf_uniform, s->range, &err);
   if (!s->ks) { fprintf(stderr, "nl_cheng: %s\n", err.msg); abort(); }
 }
 
@@ -54,7 +54,7 @@ void nl_cheng__stat_replace(nl_cheng_statstate *s, double old_value, double new_
     return;
   }
   nl_error err;
-  if (nl_ks_incr_replace(s->ks, old_value, new_value, &err)) {
+  if (nl_stats_ks_incr_replace(s->ks, old_value, new_value, &err)) {
     fprintf(stderr, "nl_cheng: %s\n", err.msg);
     abort();
   }
@@ -84,16 +84,16 @@ double nl_cheng__stat_full(nl_cheng_stat kind, size_t bins, const double *x, siz
   nl_status st;
   double v = 0;
   if (kind == NL_CHENG_STAT_CHISQ) {
-    nl_chisq_result r;
-    st = nl_chisq_test_uniform(x, n, bins, 0.0, NL_TWO_PI, &r, &err);
+    nl_stats_chisq_result r;
+    st = nl_stats_chisq_test_uniform(x, n, bins, 0.0, NL_TWO_PI, &r, &err);
     v = cramer_v(r.chi2, n, bins);
   } else if (kind == NL_CHENG_STAT_KUIPER) {
-    nl_kuiper_result r;
-    st = nl_kuiper_test_uniform(x, n, 0.0, NL_TWO_PI, &r, &err);
+    nl_stats_kuiper_result r;
+    st = nl_stats_kuiper_test_uniform(x, n, 0.0, NL_TWO_PI, &r, &err);
     v = r.v;
   } else {
-    nl_ks_result r;
-    st = nl_ks_test_uniform(x, n, 0.0, NL_TWO_PI, &r, &err);
+    nl_stats_ks_result r;
+    st = nl_stats_ks_test_uniform(x, n, 0.0, NL_TWO_PI, &r, &err);
     v = r.d;
   }
   if (st) { fprintf(stderr, "nl_cheng: %s\n", err.msg); abort(); }
@@ -107,7 +107,7 @@ double nl_cheng_ks_median(size_t n)
   double lo = 0, hi = 1;   /* bisection on the exact CDF of D_n */
   for (int it = 0; it < 60; it++) {
     double mid = 0.5 * (lo + hi);
-    if (nl_ks_cdf(n, mid, NULL) < 0.5) lo = mid; else hi = mid;
+    if (nl_stats_ks_cdf(n, mid, NULL) < 0.5) lo = mid; else hi = mid;
   }
   return 0.5 * (lo + hi);
 }

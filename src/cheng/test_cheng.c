@@ -22,8 +22,8 @@ NL_TEST(incremental_objective_equals_full_recomputation)
       c.stat = (nl_cheng_stat)stat;
       c.con = (nl_cheng_con)con;
       c.w1 = 0.6; c.w2 = 0.4;   /* both terms visible in E */
-      nl_grad2 *g = nl_grad2_alloc(512);
-      nl_grad2_seed(g, nl_seed_stream(7, "test.incremental", (unsigned long)(stat * 4 + con)));
+      nl_noise_grad2 *g = nl_noise_grad2_alloc(512);
+      nl_noise_grad2_seed(g, nl_seed_stream(7, "test.incremental", (unsigned long)(stat * 4 + con)));
       nl_error err;
       nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
       gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
@@ -45,13 +45,13 @@ NL_TEST(incremental_objective_equals_full_recomputation)
       }
       gsl_rng_free(r);
       nl_cheng_problem_free(p);
-      nl_grad2_free(g);
+      nl_noise_grad2_free(g);
     }
   NL_CHECK_NEAR(worst, 0.0, 1e-12);
   nl_cheng_pattern_free(pat);
 }
 
-/* The stored corner weights reproduce the noise kernel (nl_noise2). */
+/* The stored corner weights reproduce the noise kernel (nl_noise_grad2_eval). */
 NL_TEST(stored_corners_match_noise_kernel)
 {
   nl_cheng_config c = nl_cheng_config_default();
@@ -75,7 +75,7 @@ NL_TEST(levels_and_propagation)
   test_fixture f;
   test_fixture_open(&f, FLOWER_PX, 16, &c, 5, 1);
   nl_cheng_problem *p = f.p;
-  nl_grad2 *g = f.g;
+  nl_noise_grad2 *g = f.g;
   int *level_of = calloc(512, sizeof *level_of);
   size_t total = 0;
   for (int L = 1; L <= 4; L++) {
@@ -99,10 +99,10 @@ NL_TEST(levels_and_propagation)
   int checked = 0;
   for (long J = 0; J <= 16; J++)
     for (long I = 0; I <= 16; I++) {
-      size_t k = nl_grad2_index(g, I, J);
+      size_t k = nl_noise_grad2_index(g, I, J);
       if (level_of[k] != 2 || seen[k]) continue;
       seen[k] = 1;
-      NL_CHECK(g->angle[k] == g->angle[nl_grad2_index(g, I / 2, J / 2)]);
+      NL_CHECK(g->angle[k] == g->angle[nl_noise_grad2_index(g, I / 2, J / 2)]);
       checked++;
     }
   NL_CHECK(checked > 50);
@@ -120,7 +120,7 @@ NL_TEST(annealing_lowers_energy)
   test_fixture f;
   test_fixture_open(&f, FLOWER_PX, 24, &c, 11, 1);   /* the problem does not touch the table */
   nl_cheng_problem *p = f.p;
-  nl_grad2 *g = f.g;
+  nl_noise_grad2 *g = f.g;
   const nl_cheng_pattern *pat = f.pat;
   nl_cheng_eval before, after;
   nl_error err;
@@ -146,7 +146,7 @@ NL_TEST(same_seed_bit_identical)
   nl_cheng_config c = nl_cheng_config_default();
   c.sched.n_temps = 10;
   nl_cheng_eval a, b, d;
-  nl_grad2 *ga, *gb, *gd;
+  nl_noise_grad2 *ga, *gb, *gd;
   nl_error err;
   NL_CHECK(nl_cheng_run(&c, pat, 42, &a, NULL, &ga, &err) == NL_OK);
   NL_CHECK(nl_cheng_run(&c, pat, 42, &b, NULL, &gb, &err) == NL_OK);
@@ -154,7 +154,7 @@ NL_TEST(same_seed_bit_identical)
   NL_CHECK(memcmp(&a, &b, sizeof a) == 0);
   NL_CHECK(memcmp(ga->angle, gb->angle, 512 * sizeof(double)) == 0);
   NL_CHECK(memcmp(ga->angle, gd->angle, 512 * sizeof(double)) != 0);
-  nl_grad2_free(ga); nl_grad2_free(gb); nl_grad2_free(gd);
+  nl_noise_grad2_free(ga); nl_noise_grad2_free(gb); nl_noise_grad2_free(gd);
   nl_cheng_pattern_free(pat);
 }
 
@@ -169,24 +169,24 @@ NL_TEST(pattern_from_image)
     }
   nl_cheng_pattern *p;
   nl_error err;
-  NL_CHECK(nl_cheng_pattern_from_image(im, 4, &p, &err) == NL_OK);
+  NL_CHECK(nl_study_cheng_pattern_from_image(im, 4, &p, &err) == NL_OK);
   NL_CHECK(p->n == 15);
   NL_CHECK_NEAR(p->d[1], 1.0 / 3.0, 1e-7);
   NL_CHECK_NEAR(p->x[1], 0.375, 0);
   NL_CHECK_NEAR(p->y[4], 0.375, 0);
   nl_cheng_pattern_free(p);
-  NL_CHECK(nl_cheng_pattern_from_image(im, 2, &p, &err) == NL_OK);   /* 2 x 2 cells */
+  NL_CHECK(nl_study_cheng_pattern_from_image(im, 2, &p, &err) == NL_OK);   /* 2 x 2 cells */
   NL_CHECK(p->n == 4);
   NL_CHECK_NEAR(p->d[0], (0 + 1.0 / 3.0) / 2, 1e-7);
   NL_CHECK_NEAR(p->d[3], 7.0 / 9.0, 1e-7);   /* (2/3 + 1 + 2/3) / 3: the transparent pixel does not count */
   nl_cheng_pattern_free(p);
   for (int q = 0; q < 16; q++) im->data[4 * q + 3] = 0;
-  NL_CHECK(nl_cheng_pattern_from_image(im, 4, &p, &err) == NL_EINVAL && p == NULL);
+  NL_CHECK(nl_study_cheng_pattern_from_image(im, 4, &p, &err) == NL_EINVAL && p == NULL);
   NL_CHECK(strstr(err.msg, "no control") != NULL);
   nl_image_free(im);
-  NL_CHECK(nl_cheng_shape("nonsense", 8) == NULL);
-  for (int k = 0; nl_cheng_shape_names[k]; k++) {
-    nl_image *s = nl_cheng_shape(nl_cheng_shape_names[k], 32);
+  NL_CHECK(nl_study_cheng_shape("nonsense", 8) == NULL);
+  for (int k = 0; nl_study_cheng_shape_names[k]; k++) {
+    nl_image *s = nl_study_cheng_shape(nl_study_cheng_shape_names[k], 32);
     double red = 0;
     for (int q = 0; q < 32 * 32; q++) red += s->data[4 * q];
     NL_CHECK(red > 32 && red < 32 * 32 - 32);   /* neither empty nor full */
@@ -215,7 +215,7 @@ NL_TEST(bad_configuration)
   NL_CHECK(nl_cheng_con_parse("wood", &k, &err) == NL_EINVAL);
 }
 
-/* Our chi-square binning equals nl_histogram_uniform's, edges included. */
+/* Our chi-square binning equals nl_stats_histogram_uniform's, edges included. */
 NL_TEST(chisq_bins_match_stats_module)
 {
   double x[1000];
@@ -224,7 +224,7 @@ NL_TEST(chisq_bins_match_stats_module)
     x[i] = i < 500 ? NL_TWO_PI * gsl_rng_uniform(r) : (double)(i - 500) * (NL_TWO_PI / 500);
   gsl_rng_free(r);
   nl_error err;
-  gsl_histogram *h = nl_histogram_uniform(x, 1000, 500, 0, NL_TWO_PI, NULL, &err);
+  gsl_histogram *h = nl_stats_histogram_uniform(x, 1000, 500, 0, NL_TWO_PI, NULL, &err);
   long count[500] = {0};
   for (int i = 0; i < 1000; i++) count[nl_cheng__bin(x[i], 500)]++;
   int same = 1;
@@ -238,7 +238,7 @@ NL_TEST(chisq_bins_match_stats_module)
 NL_TEST(ks_median)
 {
   double m = nl_cheng_ks_median(512);
-  NL_CHECK_NEAR(nl_ks_cdf(512, m, NULL), 0.5, 1e-9);
+  NL_CHECK_NEAR(nl_stats_ks_cdf(512, m, NULL), 0.5, 1e-9);
   NL_CHECK(m < 0.8276 / sqrt(512.0) && m > 0.97 * 0.8276 / sqrt(512.0));
 }
 
@@ -308,14 +308,14 @@ NL_TEST(objective_eq_3_9_by_hand)
   c.con = NL_CHENG_CON_PLAIN;
   c.w1 = 0.7; c.w2 = 0.3;
   c.octaves = 1; c.f1 = 1; c.a1 = 1; c.m = 4;
-  nl_grad2 *g = nl_grad2_alloc(4);
+  nl_noise_grad2 *g = nl_noise_grad2_alloc(4);
   static const unsigned perm[4] = {0, 2, 1, 3};
   for (size_t k = 0; k < 4; k++) {
     g->perm[k] = perm[k];
-    nl_grad2_set_angle(g, k, NL_TWO_PI * 0.25 * (double)k);
+    nl_noise_grad2_set_angle(g, k, NL_TWO_PI * 0.25 * (double)k);
   }
-  NL_CHECK(nl_grad2_index(g, 0, 0) == 0 && nl_grad2_index(g, 1, 0) == 1 &&
-           nl_grad2_index(g, 0, 1) == 2 && nl_grad2_index(g, 1, 1) == 3);
+  NL_CHECK(nl_noise_grad2_index(g, 0, 0) == 0 && nl_noise_grad2_index(g, 1, 0) == 1 &&
+           nl_noise_grad2_index(g, 0, 1) == 2 && nl_noise_grad2_index(g, 1, 1) == 3);
   nl_error err;
   nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
   NL_CHECK(p != NULL);
@@ -356,6 +356,6 @@ NL_TEST(objective_eq_3_9_by_hand)
   NL_CHECK_NEAR(con, con0, 1e-12);
   NL_CHECK_NEAR(e, e0, 1e-12);
   nl_cheng_problem_free(p);
-  nl_grad2_free(g);
+  nl_noise_grad2_free(g);
   nl_cheng_pattern_free(pat);
 }

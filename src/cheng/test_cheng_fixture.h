@@ -11,10 +11,10 @@
 /* The flower drawn at size x size pixels, as a grid x grid pattern. */
 static inline nl_cheng_pattern *test_flower(int size, int grid)
 {
-  nl_image *im = nl_cheng_shape("flower", size);
+  nl_image *im = nl_study_cheng_shape("flower", size);
   nl_cheng_pattern *p = NULL;
   nl_error err;
-  NL_CHECK(nl_cheng_pattern_from_image(im, grid, &p, &err) == NL_OK);
+  NL_CHECK(nl_study_cheng_pattern_from_image(im, grid, &p, &err) == NL_OK);
   nl_image_free(im);
   return p;
 }
@@ -22,7 +22,7 @@ static inline nl_cheng_pattern *test_flower(int size, int grid)
 typedef struct {
   nl_cheng_pattern *pat;
   nl_cheng_config c;
-  nl_grad2 *g;          /* c.m angles from `seed` */
+  nl_noise_grad2 *g;          /* c.m angles from `seed` */
   nl_cheng_problem *p;  /* on c, pat and g; NULL when with_problem is 0 */
 } test_fixture;
 
@@ -32,8 +32,8 @@ static inline void test_fixture_open(test_fixture *f, int size, int grid, const 
   nl_error err;
   f->pat = test_flower(size, grid);
   f->c = *c;
-  f->g = nl_grad2_alloc(c->m);
-  nl_grad2_seed(f->g, seed);
+  f->g = nl_noise_grad2_alloc(c->m);
+  nl_noise_grad2_seed(f->g, seed);
   f->p = with_problem ? nl_cheng_problem_alloc(&f->c, f->pat, f->g, &err) : NULL;
   NL_CHECK(!with_problem || f->p);
 }
@@ -41,7 +41,7 @@ static inline void test_fixture_open(test_fixture *f, int size, int grid, const 
 static inline void test_fixture_close(test_fixture *f)
 {
   nl_cheng_problem_free(f->p);
-  nl_grad2_free(f->g);
+  nl_noise_grad2_free(f->g);
   nl_cheng_pattern_free(f->pat);
 }
 

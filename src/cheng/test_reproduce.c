@@ -25,7 +25,7 @@ NL_TEST(reproduction_mode_is_eq_3_16_to_3_18)
   test_fixture f;
   test_fixture_open(&f, FLOWER_PX, 32, &c, 3, 1);
   nl_cheng_problem *p = f.p;
-  nl_grad2 *g = f.g;
+  nl_noise_grad2 *g = f.g;
   const nl_cheng_pattern *pat = f.pat;
   nl_error err;
   nl_cheng_set_reproduction(p, 1);
@@ -58,7 +58,7 @@ NL_TEST(pool_same_for_any_thread_count)
   nl_cheng_config c = small_config();
   test_fixture f;
   test_fixture_open(&f, FLOWER_PX, 16, &c, 5, 0);
-  const nl_grad2 *g = f.g;
+  const nl_noise_grad2 *g = f.g;
   const nl_cheng_pattern *pat = f.pat;
   nl_cheng_pool_options o;
   nl_cheng_pool_options_default(&o);
@@ -184,7 +184,7 @@ NL_TEST(degenerate_cases_are_statuses)
   o.cutoff = 0;          /* every point its own cluster */
   NL_CHECK(nl_cheng_model_fit(pool, &o, 1, &m, &err) == NL_OK);
   NL_CHECK(m->status == NL_CHENG_MODEL_ONE_PER_POINT && m->gmm == NULL && m->k0 == 60);
-  nl_grad2 *g = nl_grad2_alloc(512), *h = nl_grad2_alloc(512);
+  nl_noise_grad2 *g = nl_noise_grad2_alloc(512), *h = nl_noise_grad2_alloc(512);
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
   NL_CHECK(nl_cheng_reproduce(g, m, 1, rng, h, &err) == NL_EINVAL);
   nl_cheng_model_free(m);
@@ -201,7 +201,7 @@ NL_TEST(degenerate_cases_are_statuses)
   NL_CHECK(nl_cheng_model_fit(pool, &o, 1, &m, &err) == NL_OK && m->status == NL_CHENG_MODEL_TOO_SMALL);
   nl_cheng_model_free(m);
   gsl_rng_free(rng);
-  nl_grad2_free(g); nl_grad2_free(h);
+  nl_noise_grad2_free(g); nl_noise_grad2_free(h);
   nl_cheng_pool_free(pool);
 }
 
@@ -254,8 +254,8 @@ NL_TEST(reproduce_keeps_high_angles)
 {
   nl_cheng_pattern *pat = test_flower(FLOWER_PX, 16);
   nl_cheng_config c = small_config();
-  nl_grad2 *g = nl_grad2_alloc(c.m), *h = nl_grad2_alloc(c.m);
-  nl_grad2_seed(g, 8);
+  nl_noise_grad2 *g = nl_noise_grad2_alloc(c.m), *h = nl_noise_grad2_alloc(c.m);
+  nl_noise_grad2_seed(g, 8);
   nl_cheng_pool_options po;
   nl_cheng_pool_options_default(&po);
   po.runs = 6; po.keep = 10;
@@ -284,7 +284,7 @@ NL_TEST(reproduce_keeps_high_angles)
   gsl_rng_free(rng);
   nl_cheng_model_free(m);
   nl_cheng_pool_free(pool);
-  nl_grad2_free(g); nl_grad2_free(h);
+  nl_noise_grad2_free(g); nl_noise_grad2_free(h);
   nl_cheng_pattern_free(pat);
 }
 

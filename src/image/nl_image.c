@@ -126,10 +126,10 @@ nl_image *nl_image_convert(const nl_image *im, int channels)
   return o;
 }
 
-int nl_text_width(const char *text, int scale)
+int nl_image_text_width(const char *text, int scale)
 { return stb_easy_font_width((char *)text) * scale; }
 
-int nl_text_height(const char *text, int scale)
+int nl_image_text_height(const char *text, int scale)
 { return stb_easy_font_height((char *)text) * scale; }
 
 static void fill_rect(nl_image *im, int x0, int y0, int x1, int y1, const float *rgb)
@@ -178,7 +178,7 @@ nl_image *nl_image_downsample(const nl_image *im, int f)
   return o;
 }
 
-nl_image *nl_montage(const nl_image *const *images, const char *const *labels, int n,
+nl_image *nl_image_montage(const nl_image *const *images, const char *const *labels, int n,
                      int cols, const char *title)
 {
   int cw = 1, chh = 1, pad = 8;
@@ -193,7 +193,7 @@ nl_image *nl_montage(const nl_image *const *images, const char *const *labels, i
   if (f > 1) {
     nl_image **small = nl_xmalloc((size_t)n * sizeof *small);
     for (int i = 0; i < n; i++) small[i] = nl_image_downsample(images[i], f);
-    nl_image *m = nl_montage((const nl_image *const *)small, labels, n, cols, title);
+    nl_image *m = nl_image_montage((const nl_image *const *)small, labels, n, cols, title);
     for (int i = 0; i < n; i++) nl_image_free(small[i]);
     free(small);
     return m;
@@ -214,7 +214,7 @@ nl_image *nl_montage(const nl_image *const *images, const char *const *labels, i
     for (int y = 0; y < rgb->height; y++)
       memcpy(nl_image_pixel(m, x0, y0 + y), nl_image_pixel(rgb, 0, y), (size_t)rgb->width * 3 * sizeof(float));
     if (labels && labels[i]) {
-      int tw = nl_text_width(labels[i], scale);
+      int tw = nl_image_text_width(labels[i], scale);
       nl_image_text(m, pad + (i % cols) * (cw + pad) + (cw - tw) / 2, y0 + chh + pad / 2, scale, labels[i], black);
     }
     nl_image_free(rgb);

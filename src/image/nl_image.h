@@ -12,7 +12,7 @@
  * Writes are atomic (temporary file beside the target, then rename). Errors
  * name the file and carry OpenImageIO's reason.
  *
- * Montage: nl_montage() lays images out in a grid with a caption under each
+ * Montage: nl_image_montage() lays images out in a grid with a caption under each
  * panel ("(a) 1 octave"), so a multi-panel figure is one PNG. Text uses the
  * stb_easy_font bitmap font scaled by an integer factor.
  */
@@ -55,8 +55,8 @@ nl_image *nl_image_convert(const nl_image *im, int channels);
 /* Draws text with its top-left corner at (x, y), `scale` pixels per font
  * pixel, in colour rgb (3 floats). Clipped to the image. */
 void nl_image_text(nl_image *im, int x, int y, int scale, const char *text, const float *rgb);
-int nl_text_width(const char *text, int scale);
-int nl_text_height(const char *text, int scale);
+int nl_image_text_width(const char *text, int scale);
+int nl_image_text_height(const char *text, int scale);
 
 /* Box-filter reduction by an integer factor f (w/f x h/f, remainders
  * dropped). */
@@ -69,7 +69,7 @@ nl_image *nl_image_downsample(const nl_image *im, int f);
  * panels are box-filtered down by the smallest integer factor that fits
  * (the full-size data stays in the experiment's tables and images). */
 #define NL_MONTAGE_MAX_WIDTH 2200
-nl_image *nl_montage(const nl_image *const *images, const char *const *labels, int n,
+nl_image *nl_image_montage(const nl_image *const *images, const char *const *labels, int n,
                      int cols, const char *title);
 
 /* OpenImageIO's version string (the one this build was compiled against),

@@ -121,7 +121,7 @@ NL_TEST(montage_layout_and_text)
   nl_image *a = ramp(50, 40, 1), *b = ramp(30, 60, 3);
   const nl_image *ims[] = {a, b, a};
   const char *labels[] = {"(a) one", "(b) two", NULL};
-  nl_image *m = nl_montage(ims, labels, 3, 2, "title");
+  nl_image *m = nl_image_montage(ims, labels, 3, 2, "title");
   NL_CHECK(m->channels == 3 && m->width == 8 + 2 * (50 + 8));
   /* Some caption pixel is black (the text was drawn). */
   int dark = 0;
@@ -141,7 +141,7 @@ NL_TEST(downsample_box_filter_and_wide_montage)
   NL_CHECK_NEAR(d->data[1], 4.5, 1e-6);
   nl_image *big = nl_image_alloc(600, 100, 1);
   const nl_image *ims[] = {big, big, big, big, big};
-  nl_image *m = nl_montage(ims, NULL, 5, 5, NULL);
+  nl_image *m = nl_image_montage(ims, NULL, 5, 5, NULL);
   NL_CHECK(m->width <= NL_MONTAGE_MAX_WIDTH && m->width == 8 + 5 * (300 + 8));
   nl_image_free(a); nl_image_free(d); nl_image_free(big); nl_image_free(m);
 }

@@ -52,32 +52,32 @@ static inline double blend(double t, double gx0, double a0, double gx1, double a
 
 /* ---- 2D --------------------------------------------------------------- */
 
-nl_grad2 *nl_grad2_alloc(size_t m)
+nl_noise_grad2 *nl_noise_grad2_alloc(size_t m)
 {
-  nl_grad2 *t = nl_xmalloc(sizeof *t);
+  nl_noise_grad2 *t = nl_xmalloc(sizeof *t);
   t->m = m;
   t->angle = nl_xcalloc(m, sizeof *t->angle);
   t->gx = nl_xcalloc(m, sizeof *t->gx);
   t->gy = nl_xcalloc(m, sizeof *t->gy);
   t->perm = nl_xcalloc(m, sizeof *t->perm);
-  for (size_t k = 0; k < m; k++) { t->perm[k] = (unsigned)k; nl_grad2_set_angle(t, k, 0); }
+  for (size_t k = 0; k < m; k++) { t->perm[k] = (unsigned)k; nl_noise_grad2_set_angle(t, k, 0); }
   return t;
 }
 
-void nl_grad2_free(nl_grad2 *t)
+void nl_noise_grad2_free(nl_noise_grad2 *t)
 {
   if (!t) return;
   free(t->angle); free(t->gx); free(t->gy); free(t->perm); free(t);
 }
 
-void nl_grad2_set_angle(nl_grad2 *t, size_t k, double theta)
+void nl_noise_grad2_set_angle(nl_noise_grad2 *t, size_t k, double theta)
 {
   t->angle[k] = theta;
   t->gx[k] = cos(theta);
   t->gy[k] = sin(theta);
 }
 
-void nl_grad2_copy(nl_grad2 *dst, const nl_grad2 *src)
+void nl_noise_grad2_copy(nl_noise_grad2 *dst, const nl_noise_grad2 *src)
 {
   memcpy(dst->angle, src->angle, src->m * sizeof *src->angle);
   memcpy(dst->gx, src->gx, src->m * sizeof *src->gx);
@@ -85,17 +85,17 @@ void nl_grad2_copy(nl_grad2 *dst, const nl_grad2 *src)
   memcpy(dst->perm, src->perm, src->m * sizeof *src->perm);
 }
 
-void nl_grad2_seed(nl_grad2 *t, unsigned long seed)
+void nl_noise_grad2_seed(nl_noise_grad2 *t, unsigned long seed)
 {
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(r, nl_seed_stream(seed, "noise.grad2", 0));
-  for (size_t k = 0; k < t->m; k++) nl_grad2_set_angle(t, k, NL_TWO_PI * gsl_rng_uniform(r));
+  for (size_t k = 0; k < t->m; k++) nl_noise_grad2_set_angle(t, k, NL_TWO_PI * gsl_rng_uniform(r));
   for (size_t k = 0; k < t->m; k++) t->perm[k] = (unsigned)k;
   gsl_ran_shuffle(r, t->perm, t->m, sizeof *t->perm);
   gsl_rng_free(r);
 }
 
-size_t nl_grad2_index(const nl_grad2 *t, long i, long j)
+size_t nl_noise_grad2_index(const nl_noise_grad2 *t, long i, long j)
 {
   long m = (long)t->m;
   /* A power-of-two m: i mod m is a mask (two's complement), no division. */
@@ -105,16 +105,16 @@ size_t nl_grad2_index(const nl_grad2 *t, long i, long j)
 
 /* Column i at row j with fractional fy and its fade v: blend the two
  * corners along y into the line t GX + A. */
-static inline void column2(const nl_grad2 *t, long i, long j, double fy, double v,
+static inline void column2(const nl_noise_grad2 *t, long i, long j, double fy, double v,
                            double *gxo, double *ao)
 {
-  size_t k0 = nl_grad2_index(t, i, j), k1 = nl_grad2_index(t, i, j + 1);
+  size_t k0 = nl_noise_grad2_index(t, i, j), k1 = nl_noise_grad2_index(t, i, j + 1);
   double a0 = t->gy[k0] * fy, a1 = t->gy[k1] * (fy - 1);
   *gxo = t->gx[k0] + v * (t->gx[k1] - t->gx[k0]);
   *ao = a0 + v * (a1 - a0);
 }
 
-double nl_noise2(const nl_grad2 *t, double x, double y)
+double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, double y)
 {
   long i = lfloor(x), j = lfloor(y);
   double fy = lfrac(y, j), v = fade(fy), g0, a0, g1, a1;
@@ -149,14 +149,14 @@ static size_t row_columns(double x0, double dx, size_t n, long *ifirst)
 
 #define NL_STACK_COLS 1040
 
-void nl_noise2_row(const nl_grad2 *t, double x0, double dx, double y, size_t n, double *out)
+void nl_noise_grad2_row(const nl_noise_grad2 *t, double x0, double dx, double y, size_t n, double *out)
 {
   if (n == 0) return;
   if (nl_noise_simd_row2(t, x0, dx, y, n, out) == GSL_SUCCESS) return;   /* nl_noise_simd.c */
   long ifirst;
   size_t ncol = row_columns(x0, dx, n, &ifirst);
   if (ncol == 0) {
-    for (size_t k = 0; k < n; k++) out[k] = nl_noise2(t, x0 + (double)k * dx, y);
+    for (size_t k = 0; k < n; k++) out[k] = nl_noise_grad2_eval(t, x0 + (double)k * dx, y);
     return;
   }
   double sgx[NL_STACK_COLS], sa[NL_STACK_COLS];
@@ -190,12 +190,12 @@ static const double grad3[16][3] = {
   {1,1,0},{-1,1,0},{1,-1,0},{-1,-1,0},{1,0,1},{-1,0,1},{1,0,-1},{-1,0,-1},
   {0,1,1},{0,-1,1},{0,1,-1},{0,-1,-1},{1,1,0},{0,-1,1},{-1,1,0},{0,-1,-1}};
 
-void nl_perm3_reference(nl_perm3 *p)
+void nl_noise_perm3_reference(nl_noise_perm3 *p)
 {
   for (int k = 0; k < 512; k++) p->p[k] = perlin_permutation[k & 255];
 }
 
-void nl_perm3_seed(nl_perm3 *p, unsigned long seed)
+void nl_noise_perm3_seed(nl_noise_perm3 *p, unsigned long seed)
 {
   unsigned char base[256];
   for (int k = 0; k < 256; k++) base[k] = (unsigned char)k;
@@ -214,7 +214,7 @@ static inline double yz_part(int h, double fy, double fz)
 
 static inline double lerp(double t, double a, double b) { return a + t * (b - a); }
 
-static inline void column3(const nl_perm3 *p, long i, long j, long k, double fy, double fz,
+static inline void column3(const nl_noise_perm3 *p, long i, long j, long k, double fy, double fz,
                            double v, double w, double *gxo, double *ao)
 {
   int X = (int)(i & 255), Y = (int)(j & 255), Z = (int)(k & 255);
@@ -227,7 +227,7 @@ static inline void column3(const nl_perm3 *p, long i, long j, long k, double fy,
   *ao = a;
 }
 
-double nl_noise3(const nl_perm3 *p, double x, double y, double z)
+double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, double y, double z)
 {
   long i = lfloor(x), j = lfloor(y), k = lfloor(z);
   double fy = lfrac(y, j), fz = lfrac(z, k), v = fade(fy), w = fade(fz), g0, a0, g1, a1;
@@ -236,7 +236,7 @@ double nl_noise3(const nl_perm3 *p, double x, double y, double z)
   return blend(lfrac(x, i), g0, a0, g1, a1);
 }
 
-void nl_noise3_row(const nl_perm3 *p, double x0, double dx, double y, double z,
+void nl_noise_perm3_row(const nl_noise_perm3 *p, double x0, double dx, double y, double z,
                    size_t n, double *out)
 {
   if (n == 0) return;
@@ -244,7 +244,7 @@ void nl_noise3_row(const nl_perm3 *p, double x0, double dx, double y, double z,
   long ifirst;
   size_t ncol = row_columns(x0, dx, n, &ifirst);
   if (ncol == 0) {
-    for (size_t k = 0; k < n; k++) out[k] = nl_noise3(p, x0 + (double)k * dx, y, z);
+    for (size_t k = 0; k < n; k++) out[k] = nl_noise_perm3_eval(p, x0 + (double)k * dx, y, z);
     return;
   }
   double sgx[NL_STACK_COLS], sa[NL_STACK_COLS];
@@ -262,51 +262,51 @@ void nl_noise3_row(const nl_perm3 *p, double x0, double dx, double y, double z,
 static void grad2_row(const void *ctx, double x0, double dx, double y, double z, size_t n, double *out)
 {
   (void)z;
-  nl_noise2_row(ctx, x0, dx, y, n, out);
+  nl_noise_grad2_row(ctx, x0, dx, y, n, out);
 }
 
 static void perm3_row(const void *ctx, double x0, double dx, double y, double z, size_t n, double *out)
 {
-  nl_noise3_row(ctx, x0, dx, y, z, n, out);
+  nl_noise_perm3_row(ctx, x0, dx, y, z, n, out);
 }
 
-nl_basis nl_basis_grad2(const nl_grad2 *t)
+nl_noise_basis nl_noise_basis_grad2(const nl_noise_grad2 *t)
 {
-  nl_basis b = {grad2_row, t, NL_NOISE2_BOUND};
+  nl_noise_basis b = {grad2_row, t, NL_NOISE2_BOUND};
   return b;
 }
 
-nl_basis nl_basis_perm3(const nl_perm3 *p)
+nl_noise_basis nl_noise_basis_perm3(const nl_noise_perm3 *p)
 {
-  nl_basis b = {perm3_row, p, NL_NOISE3_BOUND};
+  nl_noise_basis b = {perm3_row, p, NL_NOISE3_BOUND};
   return b;
 }
 
-nl_octaves nl_octaves_fbm(int n, double gain, double lacunarity)
+nl_noise_octaves nl_noise_octaves_fbm(int n, double gain, double lacunarity)
 {
-  nl_octaves o = {.n = n < 0 ? 0 : n > NL_MAX_OCTAVES ? NL_MAX_OCTAVES : n};
+  nl_noise_octaves o = {.n = n < 0 ? 0 : n > NL_MAX_OCTAVES ? NL_MAX_OCTAVES : n};
   double a = 1, f = 1;
   for (int l = 0; l < o.n; l++, a *= gain, f *= lacunarity) { o.amp[l] = a; o.freq[l] = f; }
   return o;
 }
 
-nl_octaves nl_octaves_fractal(int n) { return nl_octaves_fbm(n, 0.5, 2.0); }
+nl_noise_octaves nl_noise_octaves_fractal(int n) { return nl_noise_octaves_fbm(n, 0.5, 2.0); }
 
-nl_octaves nl_octaves_cheng(int n, double f1, double a1)
+nl_noise_octaves nl_noise_octaves_cheng(int n, double f1, double a1)
 {
-  nl_octaves o = nl_octaves_fbm(n, 1.0, 2.0);
+  nl_noise_octaves o = nl_noise_octaves_fbm(n, 1.0, 2.0);
   for (int l = 0; l < o.n; l++) { o.freq[l] = f1 * o.freq[l]; o.amp[l] = 1.0 / (a1 * ldexp(1.0, l)); }
   return o;
 }
 
-double nl_octaves_bound(const nl_octaves *o, double basis_bound)
+double nl_noise_octaves_bound(const nl_noise_octaves *o, double basis_bound)
 {
   double s = 0;
   for (int l = 0; l < o->n; l++) s += fabs(o->amp[l]);
   return s * basis_bound;
 }
 
-void nl_fractal_row(const nl_basis *b, const nl_octaves *o, double x0, double dx,
+void nl_noise_fractal_row(const nl_noise_basis *b, const nl_noise_octaves *o, double x0, double dx,
                     double y, double z, size_t n, double *out, double *scratch)
 {
   if (nl_noise_simd_fractal_row(b, o, x0, dx, y, z, n, out, scratch) == GSL_SUCCESS) return;
@@ -319,12 +319,12 @@ void nl_fractal_row(const nl_basis *b, const nl_octaves *o, double x0, double dx
   }
 }
 
-void nl_fractal_grid(const nl_basis *b, const nl_octaves *o, const nl_window *win, double *out)
+void nl_noise_fractal_grid(const nl_noise_basis *b, const nl_noise_octaves *o, const nl_noise_window *win, double *out)
 {
   double dx = win->size / win->w, dy = win->size / win->h;
   double *scratch = nl_xmalloc((size_t)win->w * sizeof *scratch);
   for (int r = 0; r < win->h; r++)
-    nl_fractal_row(b, o, win->x0 + 0.5 * dx, dx, win->y0 + (r + 0.5) * dy, win->z,
+    nl_noise_fractal_row(b, o, win->x0 + 0.5 * dx, dx, win->y0 + (r + 0.5) * dy, win->z,
                    (size_t)win->w, out + (size_t)r * win->w, scratch);
   free(scratch);
 }

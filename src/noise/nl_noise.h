@@ -2,14 +2,14 @@
  *
  * Two gradient noises, both evaluated a row of samples at a time:
  *
- *  - nl_grad2: 2D gradient noise as in Cheng 2009 eq. 3.1-3.2. A table of m
+ *  - nl_noise_grad2: 2D gradient noise as in Cheng 2009 eq. 3.1-3.2. A table of m
  *    unit gradients stored as angles (the optimiser edits them one at a time)
  *    and a permutation P of 0..m-1; lattice point (i, j) uses gradient
  *    G[P[(P[i mod m] + j) mod m]]. Quintic fade 6t^5 - 15t^4 + 10t^3.
  *    |noise| <= sqrt(2)/2 (the value at a cell centre with all four
  *    gradients pointing at it); noise is 0 at every lattice point.
  *
- *  - nl_perm3: Perlin's 2002 improved noise in 3D (12 edge gradients chosen
+ *  - nl_noise_perm3: Perlin's 2002 improved noise in 3D (12 edge gradients chosen
  *    by hash & 15, same fade), with his reference permutation or one
  *    shuffled from a seed. Its gradients have length sqrt(2), so
  *    |noise| <= sqrt(2) * sqrt(3)/2 ~ 1.2247; in practice it stays near
@@ -31,7 +31,7 @@
  *
  * Sums of octaves (Cheng eq. 3.3, Shaffer's fractal sum, turbulence, fBm):
  *     sum_l amp_l * N(freq_l * p)       (|N(...)| for turbulence)
- * nl_octaves holds freq and amp explicitly; builders give fBm
+ * nl_noise_octaves holds freq and amp explicitly; builders give fBm
  * (amp = gain^l, freq = lacunarity^l) and Cheng's f_l = f1 2^l with
  * amplitude 1/a_l, a_l = a1 2^l. The analytic bound of a sum is
  * bound(N) * sum |amp_l| (Arnerin 2009 eq. 4.2 with |N| <= bound(N)).
@@ -46,39 +46,39 @@
 typedef struct {
   size_t m;          /* table size; Cheng uses 512 */
   double *angle;     /* m gradient angles in [0, 2pi) */
-  double *gx, *gy;   /* cos and sin of angle, kept in step by nl_grad2_set_angle */
+  double *gx, *gy;   /* cos and sin of angle, kept in step by nl_noise_grad2_set_angle */
   unsigned *perm;    /* permutation of 0..m-1 */
-} nl_grad2;
+} nl_noise_grad2;
 
-nl_grad2 *nl_grad2_alloc(size_t m);
-void nl_grad2_free(nl_grad2 *t);
+nl_noise_grad2 *nl_noise_grad2_alloc(size_t m);
+void nl_noise_grad2_free(nl_noise_grad2 *t);
 /* Uniform angles on [0, 2pi) and a uniform random permutation. */
-void nl_grad2_seed(nl_grad2 *t, unsigned long seed);
-void nl_grad2_set_angle(nl_grad2 *t, size_t k, double theta);
-void nl_grad2_copy(nl_grad2 *dst, const nl_grad2 *src);   /* same m */
+void nl_noise_grad2_seed(nl_noise_grad2 *t, unsigned long seed);
+void nl_noise_grad2_set_angle(nl_noise_grad2 *t, size_t k, double theta);
+void nl_noise_grad2_copy(nl_noise_grad2 *dst, const nl_noise_grad2 *src);   /* same m */
 /* Table entry used by lattice point (i, j). */
-size_t nl_grad2_index(const nl_grad2 *t, long i, long j);
+size_t nl_noise_grad2_index(const nl_noise_grad2 *t, long i, long j);
 
-double nl_noise2(const nl_grad2 *t, double x, double y);
+double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, double y);
 /* out[k] = noise(x0 + k dx, y), k < n. */
-void nl_noise2_row(const nl_grad2 *t, double x0, double dx, double y, size_t n, double *out);
+void nl_noise_grad2_row(const nl_noise_grad2 *t, double x0, double dx, double y, size_t n, double *out);
 #define NL_NOISE2_BOUND 0.70710678118654752440
 
 /* ---- Perlin's improved 3D noise ------------------------------------- */
 
-typedef struct { unsigned char p[512]; } nl_perm3;   /* 256 entries, doubled */
+typedef struct { unsigned char p[512]; } nl_noise_perm3;   /* 256 entries, doubled */
 
-void nl_perm3_reference(nl_perm3 *p);                 /* Perlin 2002's table */
-void nl_perm3_seed(nl_perm3 *p, unsigned long seed);  /* shuffled 0..255 */
-double nl_noise3(const nl_perm3 *p, double x, double y, double z);
-void nl_noise3_row(const nl_perm3 *p, double x0, double dx, double y, double z,
+void nl_noise_perm3_reference(nl_noise_perm3 *p);                 /* Perlin 2002's table */
+void nl_noise_perm3_seed(nl_noise_perm3 *p, unsigned long seed);  /* shuffled 0..255 */
+double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, double y, double z);
+void nl_noise_perm3_row(const nl_noise_perm3 *p, double x0, double dx, double y, double z,
                    size_t n, double *out);
 #define NL_NOISE3_BOUND 1.22474487139158904910
 
 /* ---- SIMD kernels, run-time dispatch, batches of points (issue 17) -----
  *
- * Rows of both noises (and so the sums of octaves over nl_basis_grad2 and
- * nl_basis_perm3) and the batches below run on the best vector unit the CPU
+ * Rows of both noises (and so the sums of octaves over nl_noise_basis_grad2 and
+ * nl_noise_basis_perm3) and the batches below run on the best vector unit the CPU
  * has: SSE2 (the x86-64 baseline), AVX2 or AVX-512 (F, DQ, BW, VL, VBMI),
  * chosen at run time (no -march in the build; nl_noise_simd.c). Every level returns the scalar code's bits (same IEEE
  * operations in the same order, no FMA); power-of-two tables index by mask.
@@ -97,11 +97,11 @@ int nl_noise_simd_set(int level);
 const char *nl_noise_simd_name(int level);          /* "scalar", ..., "avx512" */
 int nl_noise_simd_from_name(const char *name);      /* -1 if none */
 
-/* out[k] = nl_noise2(t, x[k], y[k]) and nl_noise3(p, x[k], y[k], z[k]),
+/* out[k] = nl_noise_grad2_eval(t, x[k], y[k]) and nl_noise_perm3_eval(p, x[k], y[k], z[k]),
  * k < n. out may be one of the inputs (the same array), not overlap one. */
-void nl_noise_grad2_points(const nl_grad2 *t, const double *x, const double *y, size_t n,
+void nl_noise_grad2_points(const nl_noise_grad2 *t, const double *x, const double *y, size_t n,
                            double *out);
-void nl_noise_perm3_points(const nl_perm3 *p, const double *x, const double *y, const double *z,
+void nl_noise_perm3_points(const nl_noise_perm3 *p, const double *x, const double *y, const double *z,
                            size_t n, double *out);
 /* The sample loop of a quadratic B-spline row (wavelet noise, nl_wavelet_row)
  * on the dispatched level: out[k] += weight * (w0 L[i] + w1 L[i+1] + w2 L[i+2])
@@ -119,10 +119,10 @@ typedef struct {
   void (*row)(const void *ctx, double x0, double dx, double y, double z, size_t n, double *out);
   const void *ctx;
   double bound;      /* sup |N| */
-} nl_basis;
+} nl_noise_basis;
 
-nl_basis nl_basis_grad2(const nl_grad2 *t);
-nl_basis nl_basis_perm3(const nl_perm3 *p);
+nl_noise_basis nl_noise_basis_grad2(const nl_noise_grad2 *t);
+nl_noise_basis nl_noise_basis_perm3(const nl_noise_perm3 *p);
 
 #define NL_MAX_OCTAVES 32
 typedef struct {
@@ -130,23 +130,23 @@ typedef struct {
   int turbulence;               /* 1: sum |N| instead of N */
   double freq[NL_MAX_OCTAVES];
   double amp[NL_MAX_OCTAVES];
-} nl_octaves;
+} nl_noise_octaves;
 
-nl_octaves nl_octaves_fbm(int n, double gain, double lacunarity);
+nl_noise_octaves nl_noise_octaves_fbm(int n, double gain, double lacunarity);
 /* Shaffer's fractal sum: fBm with gain 1/2 and lacunarity 2. */
-nl_octaves nl_octaves_fractal(int n);
+nl_noise_octaves nl_noise_octaves_fractal(int n);
 /* Cheng eq. 3.10: f_l = f1 2^l, amplitude 1 / (a1 2^l), l = 0..n-1. */
-nl_octaves nl_octaves_cheng(int n, double f1, double a1);
+nl_noise_octaves nl_noise_octaves_cheng(int n, double f1, double a1);
 /* bound(N) * sum |amp|: the sum never leaves [-b, b] ([0, b] if turbulence). */
-double nl_octaves_bound(const nl_octaves *o, double basis_bound);
+double nl_noise_octaves_bound(const nl_noise_octaves *o, double basis_bound);
 
 /* out[k] = sum of octaves at (x0 + k dx, y, z); scratch holds n doubles. */
-void nl_fractal_row(const nl_basis *b, const nl_octaves *o, double x0, double dx,
+void nl_noise_fractal_row(const nl_noise_basis *b, const nl_noise_octaves *o, double x0, double dx,
                     double y, double z, size_t n, double *out, double *scratch);
 
 /* A w x h raster of the square [x0, x0 + size) x [y0, y0 + size) in the
  * plane z, sampled at pixel centres; row 0 is y0. */
-typedef struct { double x0, y0, z, size; int w, h; } nl_window;
-void nl_fractal_grid(const nl_basis *b, const nl_octaves *o, const nl_window *win, double *out);
+typedef struct { double x0, y0, z, size; int w, h; } nl_noise_window;
+void nl_noise_fractal_grid(const nl_noise_basis *b, const nl_noise_octaves *o, const nl_noise_window *win, double *out);
 
 #endif

@@ -139,9 +139,9 @@ static size_t row_columns(double x0, double dx, size_t n, long *ifirst)
 
 /* The int copy of a permutation the lookups read, cached per thread (a row
  * of fBm asks once per octave with the same table), and whether its second
- * half repeats the first, as nl_perm3_reference and nl_perm3_seed make it
+ * half repeats the first, as nl_noise_perm3_reference and nl_noise_perm3_seed make it
  * (the kernels index the first 256 entries only). NULL if it does not. */
-static const int *perm3_ints(const nl_perm3 *p)
+static const int *perm3_ints(const nl_noise_perm3 *p)
 {
   static _Thread_local struct { int valid, doubled; unsigned char p[512]; int p32[512]; } c;
   if (!c.valid || memcmp(c.p, p->p, sizeof c.p) != 0) {
@@ -153,7 +153,7 @@ static const int *perm3_ints(const nl_perm3 *p)
   return c.doubled ? c.p32 : NULL;
 }
 
-static int grad2_pow2(const nl_grad2 *t) { return t->m >= 1 && (t->m & (t->m - 1)) == 0 && t->m <= 0x80000000u; }
+static int grad2_pow2(const nl_noise_grad2 *t) { return t->m >= 1 && (t->m & (t->m - 1)) == 0 && t->m <= 0x80000000u; }
 
 /* Room for ncol columns (rounded up to NL_SIMD_PAD) and NL_SIMD_COL_PAD
  * zeroed doubles after them: the stack arrays or the heap. */
@@ -171,7 +171,7 @@ static double *column_arrays(size_t ncol, double *sgx, double *sa, double **a)
  * 2009 eq. 3.1-3.2, corners (i, j) and (i, j + 1) blended along y. Scalar on
  * every level: a 2D table (M = 512 doubles per component) does not fit in
  * registers, and loads one by one beat gathers; a row has few columns. */
-static void columns2(const nl_grad2 *t, long ifirst, size_t ncol, double y, double *gx, double *a)
+static void columns2(const nl_noise_grad2 *t, long ifirst, size_t ncol, double y, double *gx, double *a)
 {
   long j = lfloor(y);
   double fy = lfrac(y, j), v = fade(fy);
@@ -189,7 +189,7 @@ static void columns2(const nl_grad2 *t, long ifirst, size_t ncol, double y, doub
   } else {   /* the general (lmod) path */
     for (size_t c = 0; c < ncol; c++) {
       long i = ifirst + (long)c;
-      size_t k0 = nl_grad2_index(t, i, j), k1 = nl_grad2_index(t, i, j + 1);
+      size_t k0 = nl_noise_grad2_index(t, i, j), k1 = nl_noise_grad2_index(t, i, j + 1);
       double a0 = t->gy[k0] * fy, a1 = t->gy[k1] * (fy - 1);
       gx[c] = t->gx[k0] + v * (t->gx[k1] - t->gx[k0]);
       a[c] = a0 + v * (a1 - a0);
@@ -198,7 +198,7 @@ static void columns2(const nl_grad2 *t, long ifirst, size_t ncol, double y, doub
 }
 
 /* nl_noise.c column3 for columns ifirst .. at (y, z), by the level's kernel. */
-static void columns3(const nl_noise_simd_kernels *K, const nl_perm3 *p, const int *p32, long ifirst,
+static void columns3(const nl_noise_simd_kernels *K, const nl_noise_perm3 *p, const int *p32, long ifirst,
                      size_t ncol, double y, double z, double *gx, double *a)
 {
   long j = lfloor(y), k = lfloor(z);
@@ -209,13 +209,13 @@ static void columns3(const nl_noise_simd_kernels *K, const nl_perm3 *p, const in
 
 /* One row of either noise into out (mode, amp: see NL_SIMD_STORE); sparse
  * rows (row_columns 0) go point by point through scratch. */
-static void row_any(const nl_noise_simd_kernels *K, const nl_grad2 *t, const nl_perm3 *p,
+static void row_any(const nl_noise_simd_kernels *K, const nl_noise_grad2 *t, const nl_noise_perm3 *p,
                     const int *p32, double x0, double dx, double y, double z, size_t n,
                     double *out, int mode, double amp)
 {
   long ifirst;
   size_t ncol = row_columns(x0, dx, n, &ifirst);
-  if (ncol == 0) {   /* out[k] = nl_noise2(t, x0 + k dx, y) (or 3), by batches */
+  if (ncol == 0) {   /* out[k] = nl_noise_grad2_eval(t, x0 + k dx, y) (or 3), by batches */
     double xs[NL_SIMD_CHUNK], ys[NL_SIMD_CHUNK], zs[NL_SIMD_CHUNK], v[NL_SIMD_CHUNK];
     for (size_t k0 = 0; k0 < n; k0 += NL_SIMD_CHUNK) {
       size_t m = n - k0 < NL_SIMD_CHUNK ? n - k0 : NL_SIMD_CHUNK;
@@ -224,7 +224,7 @@ static void row_any(const nl_noise_simd_kernels *K, const nl_grad2 *t, const nl_
       if (t) nl_noise_grad2_points(t, xs, ys, m, dst);
       else nl_noise_perm3_points(p, xs, ys, zs, m, dst);
       if (mode == NL_SIMD_STORE) continue;
-      double *o = out + k0;   /* nl_fractal_row's loops */
+      double *o = out + k0;   /* nl_noise_fractal_row's loops */
       for (size_t k = 0; k < m; k++) {
         double s = mode & NL_SIMD_ABS ? fabs(v[k]) : v[k];
         o[k] = ((mode & 3) == NL_SIMD_FIRST ? 0.0 : o[k]) + amp * s;
@@ -242,7 +242,7 @@ static void row_any(const nl_noise_simd_kernels *K, const nl_grad2 *t, const nl_
 
 #define NL_SIMD_MAX_N ((size_t)1 << 29)   /* column indices stay ints */
 
-int nl_noise_simd_row2(const nl_grad2 *t, double x0, double dx, double y, size_t n, double *out)
+int nl_noise_simd_row2(const nl_noise_grad2 *t, double x0, double dx, double y, size_t n, double *out)
 {
   const nl_noise_simd_kernels *K = kernels();
   if (!K || n > NL_SIMD_MAX_N) return GSL_CONTINUE;
@@ -250,7 +250,7 @@ int nl_noise_simd_row2(const nl_grad2 *t, double x0, double dx, double y, size_t
   return GSL_SUCCESS;
 }
 
-int nl_noise_simd_row3(const nl_perm3 *p, double x0, double dx, double y, double z,
+int nl_noise_simd_row3(const nl_noise_perm3 *p, double x0, double dx, double y, double z,
                        size_t n, double *out)
 {
   const nl_noise_simd_kernels *K = kernels();
@@ -260,20 +260,20 @@ int nl_noise_simd_row3(const nl_perm3 *p, double x0, double dx, double y, double
   return GSL_SUCCESS;
 }
 
-/* nl_fractal_row (nl_noise.c) with each octave summed as its row is made:
+/* nl_noise_fractal_row (nl_noise.c) with each octave summed as its row is made:
  * the same operations, out = 0, then out = out + amp_l N_l (or |N_l|), one
  * octave after another, without the pass through scratch. */
-int nl_noise_simd_fractal_row(const nl_basis *b, const nl_octaves *o, double x0, double dx,
+int nl_noise_simd_fractal_row(const nl_noise_basis *b, const nl_noise_octaves *o, double x0, double dx,
                               double y, double z, size_t n, double *out, double *scratch)
 {
   (void)scratch;
   const nl_noise_simd_kernels *K = kernels();
   if (!K || n > NL_SIMD_MAX_N || o->n < 1) return GSL_CONTINUE;
-  const nl_grad2 *t = NULL;
-  const nl_perm3 *p = NULL;
+  const nl_noise_grad2 *t = NULL;
+  const nl_noise_perm3 *p = NULL;
   const int *p32 = NULL;
-  if (b->row == nl_basis_grad2(NULL).row) t = b->ctx;
-  else if (b->row == nl_basis_perm3(NULL).row && (p32 = perm3_ints(b->ctx))) p = b->ctx;
+  if (b->row == nl_noise_basis_grad2(NULL).row) t = b->ctx;
+  else if (b->row == nl_noise_basis_perm3(NULL).row && (p32 = perm3_ints(b->ctx))) p = b->ctx;
   else return GSL_CONTINUE;
   for (int l = 0; l < o->n; l++) {
     double f = o->freq[l];
@@ -309,12 +309,12 @@ int nl_noise_bspline_row(const double *line, long n, double x0, double dx, size_
 
 /* ---- points ---------------------------------------------------------------- */
 
-void nl_noise_grad2_points(const nl_grad2 *t, const double *x, const double *y, size_t n,
+void nl_noise_grad2_points(const nl_noise_grad2 *t, const double *x, const double *y, size_t n,
                            double *out)
 {
   const nl_noise_simd_kernels *K = kernels();
   if (!K) {
-    for (size_t k = 0; k < n; k++) out[k] = nl_noise2(t, x[k], y[k]);
+    for (size_t k = 0; k < n; k++) out[k] = nl_noise_grad2_eval(t, x[k], y[k]);
     return;
   }
   size_t nb = n / NL_SIMD_PAD * NL_SIMD_PAD;
@@ -327,17 +327,17 @@ void nl_noise_grad2_points(const nl_grad2 *t, const double *x, const double *y, 
   memcpy(out + nb, res, (n - nb) * sizeof *res);
 }
 
-void nl_noise_perm3_points(const nl_perm3 *p, const double *x, const double *y, const double *z,
+void nl_noise_perm3_points(const nl_noise_perm3 *p, const double *x, const double *y, const double *z,
                            size_t n, double *out)
 {
   const nl_noise_simd_kernels *K = kernels();
   if (!K) {
-    for (size_t k = 0; k < n; k++) out[k] = nl_noise3(p, x[k], y[k], z[k]);
+    for (size_t k = 0; k < n; k++) out[k] = nl_noise_perm3_eval(p, x[k], y[k], z[k]);
     return;
   }
   const int *p32 = perm3_ints(p);
   if (!p32) {   /* not a doubled table: the scalar code indexes all 512 */
-    for (size_t k = 0; k < n; k++) out[k] = nl_noise3(p, x[k], y[k], z[k]);
+    for (size_t k = 0; k < n; k++) out[k] = nl_noise_perm3_eval(p, x[k], y[k], z[k]);
     return;
   }
   size_t nb = n / NL_SIMD_PAD * NL_SIMD_PAD;

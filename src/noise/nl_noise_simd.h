@@ -29,7 +29,7 @@
 #define NL_SIMD_COL_PAD 16
 
 /* Sample modes: out = v; out = 0 + amp v (first octave of a sum); out =
- * out + amp v (the others), in nl_fractal_row's operation order; | ABS:
+ * out + amp v (the others), in nl_noise_fractal_row's operation order; | ABS:
  * |v| (turbulence). */
 enum { NL_SIMD_STORE = 0, NL_SIMD_FIRST = 1, NL_SIMD_ADD = 2, NL_SIMD_ABS = 4 };
 
@@ -45,13 +45,13 @@ typedef struct {
    * have room) of the improved noise at row j, plane k: xm = ifirst & 255,
    * ym = j & 255, zm = k & 255; p32 is the permutation widened to int, and
    * p's second half repeats its first (the dispatcher checks). */
-  void (*columns3)(const nl_perm3 *p, const int *p32, unsigned xm, unsigned ym, unsigned zm, double fy,
+  void (*columns3)(const nl_noise_perm3 *p, const int *p32, unsigned xm, unsigned ym, unsigned zm, double fy,
                    double fz, double v, double w, size_t ncol, double *gx, double *a);
   /* Points; n is a multiple of NL_SIMD_PAD (the caller pads). Lanes whose
    * coordinates leave |.| < 2^31 (or are not finite) go through the scalar
-   * nl_noise2 / nl_noise3. */
-  void (*points2)(const nl_grad2 *t, const double *x, const double *y, size_t n, double *out);
-  void (*points3)(const nl_perm3 *p, const int *p32, const double *x, const double *y,
+   * nl_noise_grad2_eval / nl_noise_perm3_eval. */
+  void (*points2)(const nl_noise_grad2 *t, const double *x, const double *y, size_t n, double *out);
+  void (*points3)(const nl_noise_perm3 *p, const int *p32, const double *x, const double *y,
                   const double *z, size_t n, double *out);
   /* nl_wavelet_row's sample loop over the unwrapped line L (columns
    * a, a + 1, ..., padded by NL_SIMD_COL_PAD): see nl_noise_bspline_row.
@@ -64,12 +64,12 @@ extern const nl_noise_simd_kernels nl_noise_simd_sse2, nl_noise_simd_avx2, nl_no
 
 /* The hooks nl_noise.c calls first: GSL_SUCCESS when the dispatched level
  * computed the row, GSL_CONTINUE when the scalar code should (scalar level). */
-int nl_noise_simd_row2(const nl_grad2 *t, double x0, double dx, double y, size_t n, double *out);
-int nl_noise_simd_row3(const nl_perm3 *p, double x0, double dx, double y, double z,
+int nl_noise_simd_row2(const nl_noise_grad2 *t, double x0, double dx, double y, size_t n, double *out);
+int nl_noise_simd_row3(const nl_noise_perm3 *p, double x0, double dx, double y, double z,
                        size_t n, double *out);
-/* nl_fractal_row over nl_basis_grad2 or nl_basis_perm3, each octave's row
+/* nl_noise_fractal_row over nl_noise_basis_grad2 or nl_noise_basis_perm3, each octave's row
  * summed as it is made; GSL_CONTINUE for another basis or the scalar level. */
-int nl_noise_simd_fractal_row(const nl_basis *b, const nl_octaves *o, double x0, double dx,
+int nl_noise_simd_fractal_row(const nl_noise_basis *b, const nl_noise_octaves *o, double x0, double dx,
                               double y, double z, size_t n, double *out, double *scratch);
 
 /* Perlin's grad3 (nl_noise.c) by component, for table lookups. */

@@ -53,7 +53,7 @@ static inline int v_all(vl m) { return _mm512_movepi64_mask((__m512i)m) == 0xff;
 
 #define NL_SIMD_HAVE_TABLES
 typedef struct { __m512i p[4]; __m512d g[3][2]; } p3tab;
-static inline p3tab p3_make(const nl_perm3 *P, const int *p32)
+static inline p3tab p3_make(const nl_noise_perm3 *P, const int *p32)
 {
   (void)p32;
   p3tab t;
@@ -178,7 +178,7 @@ static inline vi half(vi16 v, int h)
   return h ? (vi)_mm512_extracti64x4_epi64((__m512i)v, 1) : (vi)_mm512_castsi512_si256((__m512i)v);
 }
 
-static void points3(const nl_perm3 *P, const int *p32, const double *x, const double *y,
+static void points3(const nl_noise_perm3 *P, const int *p32, const double *x, const double *y,
                     const double *z, size_t n, double *out)
 {
   p3tab tab = p3_make(P, p32);

@@ -61,7 +61,7 @@ static inline vl v_small(vd x)   /* |x| < 2^31: the cell fits an int; false for 
 /* ---- rows ---------------------------------------------------------------- */
 
 /* Where a row's values go (nl_noise_simd.h, NL_SIMD_STORE ...): stored, or
- * added into a sum of octaves as nl_fractal_row does it, out = out + amp v
+ * added into a sum of octaves as nl_noise_fractal_row does it, out = out + amp v
  * (out = 0 + amp v for the first octave; |v| for turbulence). */
 static inline vd v_emit(const double *out, vd v, int mode, double amp)
 {
@@ -154,7 +154,7 @@ static void bspline_lanes(const double *L, long a, double x0, double dx, size_t 
  * lookups. A level may bring its own (register tables: NL_SIMD_HAVE_TABLES). */
 #ifndef NL_SIMD_HAVE_TABLES
 typedef struct { const int *p; } p3tab;
-static inline p3tab p3_make(const nl_perm3 *P, const int *p32) { (void)P; p3tab t = {p32}; return t; }
+static inline p3tab p3_make(const nl_noise_perm3 *P, const int *p32) { (void)P; p3tab t = {p32}; return t; }
 static inline vi p3_get(const p3tab *t, vi idx) { return v_gi(t->p, idx); }
 static inline vd g3(const p3tab *t, int comp, vi h) { (void)t; return v_gd(nl_noise_simd_g3[comp], h); }
 #endif
@@ -185,7 +185,7 @@ static inline void v_column3_fp(const p3tab *p, vi h00, vi h10, vi h01, vi h11, 
   *ao = v_lerp(w, v_lerp(v, y00, y10), v_lerp(v, y01, y11));
 }
 
-static void columns3(const nl_perm3 *P, const int *p32, unsigned xm, unsigned ym, unsigned zm, double fy,
+static void columns3(const nl_noise_perm3 *P, const int *p32, unsigned xm, unsigned ym, unsigned zm, double fy,
                      double fz, double v, double w, size_t ncol, double *gxo, double *ao)
 {
   vi iota, Y = (vi){0} + (int)ym, Z = (vi){0} + (int)zm;
@@ -202,7 +202,7 @@ static void columns3(const nl_perm3 *P, const int *p32, unsigned xm, unsigned ym
 
 /* ---- points ---------------------------------------------------------------- */
 
-static void points2(const nl_grad2 *t, const double *x, const double *y, size_t n, double *out)
+static void points2(const nl_noise_grad2 *t, const double *x, const double *y, size_t n, double *out)
 {
   const int *perm = (const int *)t->perm;
   int pow2 = t->m >= 1 && (t->m & (t->m - 1)) == 0 && t->m <= 0x80000000u;
@@ -210,14 +210,14 @@ static void points2(const nl_grad2 *t, const double *x, const double *y, size_t 
   for (size_t k = 0; k < n; k += NL_SIMD_W) {
     vd vx = ld(x + k), vy = ld(y + k);
     if (!v_all(v_small(vx) & v_small(vy))) {
-      for (size_t l = 0; l < NL_SIMD_W; l++) out[k + l] = nl_noise2(t, x[k + l], y[k + l]);
+      for (size_t l = 0; l < NL_SIMD_W; l++) out[k + l] = nl_noise_grad2_eval(t, x[k + l], y[k + l]);
       continue;
     }
-    /* nl_noise2: i = lfloor(x), j = lfloor(y), fy = lfrac(y, j), v = fade(fy) */
+    /* nl_noise_grad2_eval: i = lfloor(x), j = lfloor(y), fy = lfrac(y, j), v = fade(fy) */
     vd ci = v_cell(vx), cj = v_cell(vy);
     vd fy = v_frac(vy, cj), v = v_fade(fy), fx = v_frac(vx, ci);
     vi i = __builtin_convertvector(ci, vi), j = __builtin_convertvector(cj, vi);
-    vi k00, k01, k10, k11;   /* nl_grad2_index(i + di, j + dj) */
+    vi k00, k01, k10, k11;   /* nl_noise_grad2_index(i + di, j + dj) */
     if (pow2) {
       vu i0 = (vu)i & mask, i1 = ((vu)i + 1u) & mask, j0 = (vu)j & mask, j1 = ((vu)j + 1u) & mask;
       vu p0 = (vu)v_gi(perm, (vi)i0), p1 = (vu)v_gi(perm, (vi)i1);
@@ -226,8 +226,8 @@ static void points2(const nl_grad2 *t, const double *x, const double *y, size_t 
     } else {   /* the general path: lmod, lane by lane */
       for (int l = 0; l < NL_SIMD_W; l++) {
         long il = i[l], jl = j[l];
-        k00[l] = (int)nl_grad2_index(t, il, jl); k01[l] = (int)nl_grad2_index(t, il, jl + 1);
-        k10[l] = (int)nl_grad2_index(t, il + 1, jl); k11[l] = (int)nl_grad2_index(t, il + 1, jl + 1);
+        k00[l] = (int)nl_noise_grad2_index(t, il, jl); k01[l] = (int)nl_noise_grad2_index(t, il, jl + 1);
+        k10[l] = (int)nl_noise_grad2_index(t, il + 1, jl); k11[l] = (int)nl_noise_grad2_index(t, il + 1, jl + 1);
       }
     }
     /* column2 at i and i + 1, then blend(lfrac(x, i), ...) */
@@ -241,17 +241,17 @@ static void points2(const nl_grad2 *t, const double *x, const double *y, size_t 
   }
 }
 
-static void points3_lanes(const nl_perm3 *P, const int *p32, const double *x, const double *y,
+static void points3_lanes(const nl_noise_perm3 *P, const int *p32, const double *x, const double *y,
                     const double *z, size_t n, double *out)
 {
   p3tab tab = p3_make(P, p32);
   for (size_t k = 0; k < n; k += NL_SIMD_W) {
     vd vx = ld(x + k), vy = ld(y + k), vz = ld(z + k);
     if (!v_all(v_small(vx) & v_small(vy) & v_small(vz))) {
-      for (size_t l = 0; l < NL_SIMD_W; l++) out[k + l] = nl_noise3(P, x[k + l], y[k + l], z[k + l]);
+      for (size_t l = 0; l < NL_SIMD_W; l++) out[k + l] = nl_noise_perm3_eval(P, x[k + l], y[k + l], z[k + l]);
       continue;
     }
-    /* nl_noise3: cells, fy = lfrac(y, j), fz, v = fade(fy), w = fade(fz) */
+    /* nl_noise_perm3_eval: cells, fy = lfrac(y, j), fz, v = fade(fy), w = fade(fz) */
     vd ci = v_cell(vx), cj = v_cell(vy), ck = v_cell(vz);
     vd fy = v_frac(vy, cj), fz = v_frac(vz, ck), v = v_fade(fy), w = v_fade(fz);
     vi i = __builtin_convertvector(ci, vi), j = __builtin_convertvector(cj, vi),

@@ -8,7 +8,7 @@
 #define GOLDEN_IMPROVED3 0x9d5884b94449e989ULL
 
 /* Ken Perlin's reference improved noise (2002), transcribed literally, as
- * the independent oracle for nl_noise3. */
+ * the independent oracle for nl_noise_perm3_eval. */
 static int P[512];
 static double rfade(double t) { return t * t * t * (t * (t * 6 - 15) + 10); }
 static double rlerp(double t, double a, double b) { return a + t * (b - a); }
@@ -32,28 +32,28 @@ static double ref_noise(double x, double y, double z)
 
 /* The 2D table (M = 512; caller frees) and the 3D permutation of one seed:
  * most tests check both bases side by side. */
-static nl_grad2 *both_tables(unsigned long seed, nl_perm3 *p)
+static nl_noise_grad2 *both_tables(unsigned long seed, nl_noise_perm3 *p)
 {
-  nl_grad2 *t = nl_grad2_alloc(512);
-  nl_grad2_seed(t, seed);
-  nl_perm3_seed(p, seed);
+  nl_noise_grad2 *t = nl_noise_grad2_alloc(512);
+  nl_noise_grad2_seed(t, seed);
+  nl_noise_perm3_seed(p, seed);
   return t;
 }
 
 NL_TEST(improved_noise_matches_perlins_reference)
 {
-  nl_perm3 p;
-  nl_perm3_reference(&p);
+  nl_noise_perm3 p;
+  nl_noise_perm3_reference(&p);
   for (int k = 0; k < 512; k++) P[k] = p.p[k];
   /* Published value of the reference implementation; we blend in another
    * order (see nl_noise.h), so allow a few ulps: 1e-15. */
-  NL_CHECK_NEAR(nl_noise3(&p, 3.14, 42, 7), 0.13691995878400012, 1e-15);
+  NL_CHECK_NEAR(nl_noise_perm3_eval(&p, 3.14, 42, 7), 0.13691995878400012, 1e-15);
   NL_CHECK_NEAR(ref_noise(3.14, 42, 7), 0.13691995878400012, 0);
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
   double worst = 0;
   for (int k = 0; k < 200000; k++) {
     double x = 600 * gsl_rng_uniform(r) - 300, y = 600 * gsl_rng_uniform(r) - 300, z = 600 * gsl_rng_uniform(r) - 300;
-    worst = fmax(worst, fabs(nl_noise3(&p, x, y, z) - ref_noise(x, y, z)));
+    worst = fmax(worst, fabs(nl_noise_perm3_eval(&p, x, y, z) - ref_noise(x, y, z)));
   }
   printf("  max |ours - reference| over 2e5 points: %.3g\n", worst);
   NL_CHECK(worst <= 1e-15);   /* a few ulps of values near 1 */
@@ -62,78 +62,78 @@ NL_TEST(improved_noise_matches_perlins_reference)
 
 NL_TEST(rows_equal_points_bit_for_bit)
 {
-  nl_perm3 p;
-  nl_grad2 *t = both_tables(7, &p);
+  nl_noise_perm3 p;
+  nl_noise_grad2 *t = both_tables(7, &p);
   double row[1000], row3[1000];
   double dxs[] = {0.0137, -0.29, 3.7, 1e-4};   /* dense, negative, sparse, tiny */
   for (int d = 0; d < 4; d++) {
-    nl_noise2_row(t, -3.3, dxs[d], 5.71, 1000, row);
-    nl_noise3_row(&p, -3.3, dxs[d], 5.71, -2.2, 1000, row3);
+    nl_noise_grad2_row(t, -3.3, dxs[d], 5.71, 1000, row);
+    nl_noise_perm3_row(&p, -3.3, dxs[d], 5.71, -2.2, 1000, row3);
     int same = 1;
     for (int k = 0; k < 1000; k++) {
       double x = -3.3 + (double)k * dxs[d];
-      same &= row[k] == nl_noise2(t, x, 5.71) && row3[k] == nl_noise3(&p, x, 5.71, -2.2);
+      same &= row[k] == nl_noise_grad2_eval(t, x, 5.71) && row3[k] == nl_noise_perm3_eval(&p, x, 5.71, -2.2);
     }
     NL_CHECK(same);
   }
-  nl_grad2_free(t);
+  nl_noise_grad2_free(t);
 }
 
 NL_TEST(zero_at_lattice_points)
 {
-  nl_perm3 p;
-  nl_grad2 *t = both_tables(1, &p);
+  nl_noise_perm3 p;
+  nl_noise_grad2 *t = both_tables(1, &p);
   double worst = 0;
   for (int i = -40; i < 40; i++)
     for (int j = -40; j < 40; j++)
-      worst = fmax(worst, fmax(fabs(nl_noise2(t, i, j)), fabs(nl_noise3(&p, i, j, i - j))));
+      worst = fmax(worst, fmax(fabs(nl_noise_grad2_eval(t, i, j)), fabs(nl_noise_perm3_eval(&p, i, j, i - j))));
   NL_CHECK(worst == 0);
-  nl_grad2_free(t);
+  nl_noise_grad2_free(t);
 }
 
 NL_TEST(continuous_across_cell_borders)
 {
   /* The noise is C2 with gradients bounded by a few units, so values
    * either side of a border 2e-9 apart differ by well under 1e-7. */
-  nl_perm3 p;
-  nl_grad2 *t = both_tables(2, &p);
+  nl_noise_perm3 p;
+  nl_noise_grad2 *t = both_tables(2, &p);
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
   double worst = 0, e = 1e-9;
   for (int k = 0; k < 20000; k++) {
     double i = (double)(int)(100 * gsl_rng_uniform(r)) - 50, y = 100 * gsl_rng_uniform(r) - 50;
-    worst = fmax(worst, fabs(nl_noise2(t, i - e, y) - nl_noise2(t, i + e, y)));
-    worst = fmax(worst, fabs(nl_noise2(t, y, i - e) - nl_noise2(t, y, i + e)));
-    worst = fmax(worst, fabs(nl_noise3(&p, i - e, y, 0.3) - nl_noise3(&p, i + e, y, 0.3)));
-    worst = fmax(worst, fabs(nl_noise3(&p, y, 0.3, i - e) - nl_noise3(&p, y, 0.3, i + e)));
+    worst = fmax(worst, fabs(nl_noise_grad2_eval(t, i - e, y) - nl_noise_grad2_eval(t, i + e, y)));
+    worst = fmax(worst, fabs(nl_noise_grad2_eval(t, y, i - e) - nl_noise_grad2_eval(t, y, i + e)));
+    worst = fmax(worst, fabs(nl_noise_perm3_eval(&p, i - e, y, 0.3) - nl_noise_perm3_eval(&p, i + e, y, 0.3)));
+    worst = fmax(worst, fabs(nl_noise_perm3_eval(&p, y, 0.3, i - e) - nl_noise_perm3_eval(&p, y, 0.3, i + e)));
   }
   NL_CHECK(worst < 1e-7);
   gsl_rng_free(r);
-  nl_grad2_free(t);
+  nl_noise_grad2_free(t);
 }
 
 NL_TEST(values_within_analytic_bounds)
 {
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
   double m2 = 0, m3 = 0, mf = 0, mt = 0;
-  nl_grad2 *t = nl_grad2_alloc(512);
-  nl_perm3 p;
+  nl_noise_grad2 *t = nl_noise_grad2_alloc(512);
+  nl_noise_perm3 p;
   for (unsigned long s = 1; s <= 20; s++) {
-    nl_grad2_seed(t, s);
-    nl_perm3_seed(&p, s);
+    nl_noise_grad2_seed(t, s);
+    nl_noise_perm3_seed(&p, s);
     for (int k = 0; k < 20000; k++) {
       double x = 100 * gsl_rng_uniform(r), y = 100 * gsl_rng_uniform(r), z = 100 * gsl_rng_uniform(r);
-      m2 = fmax(m2, fabs(nl_noise2(t, x, y)));
-      m3 = fmax(m3, fabs(nl_noise3(&p, x, y, z)));
+      m2 = fmax(m2, fabs(nl_noise_grad2_eval(t, x, y)));
+      m3 = fmax(m3, fabs(nl_noise_perm3_eval(&p, x, y, z)));
     }
-    nl_basis b = nl_basis_perm3(&p);
-    nl_octaves o = nl_octaves_fbm(6, 0.9, 2.0), tu = nl_octaves_fractal(6);
+    nl_noise_basis b = nl_noise_basis_perm3(&p);
+    nl_noise_octaves o = nl_noise_octaves_fbm(6, 0.9, 2.0), tu = nl_noise_octaves_fractal(6);
     tu.turbulence = 1;
     double row[512], scratch[512];
     for (int k = 0; k < 20; k++) {
-      nl_fractal_row(&b, &o, 17.3 * k, 0.031, 3.1 * k, 0.5, 512, row, scratch);
-      for (int q = 0; q < 512; q++) mf = fmax(mf, fabs(row[q]) / nl_octaves_bound(&o, b.bound));
-      nl_fractal_row(&b, &tu, 17.3 * k, 0.031, 3.1 * k, 0.5, 512, row, scratch);
-      for (int q = 0; q < 512; q++) { mt = fmax(mt, row[q] / nl_octaves_bound(&tu, b.bound)); NL_CHECK(row[q] >= 0); }
+      nl_noise_fractal_row(&b, &o, 17.3 * k, 0.031, 3.1 * k, 0.5, 512, row, scratch);
+      for (int q = 0; q < 512; q++) mf = fmax(mf, fabs(row[q]) / nl_noise_octaves_bound(&o, b.bound));
+      nl_noise_fractal_row(&b, &tu, 17.3 * k, 0.031, 3.1 * k, 0.5, 512, row, scratch);
+      for (int q = 0; q < 512; q++) { mt = fmax(mt, row[q] / nl_noise_octaves_bound(&tu, b.bound)); NL_CHECK(row[q] >= 0); }
     }
   }
   printf("  max |noise2| %.4f (bound %.4f), |noise3| %.4f (bound %.4f), fbm %.3f, turbulence %.3f of bound\n",
@@ -142,55 +142,55 @@ NL_TEST(values_within_analytic_bounds)
   NL_CHECK(m3 <= NL_NOISE3_BOUND && m3 > 0.8);
   NL_CHECK(mf <= 1 && mt <= 1);
   gsl_rng_free(r);
-  nl_grad2_free(t);
+  nl_noise_grad2_free(t);
 }
 
 NL_TEST(same_seed_same_noise)
 {
-  nl_grad2 *a = nl_grad2_alloc(512), *b = nl_grad2_alloc(512);
-  nl_grad2_seed(a, 42);
-  nl_grad2_seed(b, 42);
+  nl_noise_grad2 *a = nl_noise_grad2_alloc(512), *b = nl_noise_grad2_alloc(512);
+  nl_noise_grad2_seed(a, 42);
+  nl_noise_grad2_seed(b, 42);
   int same = 1;
   for (size_t k = 0; k < 512; k++) same &= a->angle[k] == b->angle[k] && a->perm[k] == b->perm[k];
   NL_CHECK(same);
-  nl_grad2_seed(b, 43);
-  NL_CHECK(nl_noise2(a, 0.5, 0.5) != nl_noise2(b, 0.5, 0.5));
+  nl_noise_grad2_seed(b, 43);
+  NL_CHECK(nl_noise_grad2_eval(a, 0.5, 0.5) != nl_noise_grad2_eval(b, 0.5, 0.5));
   /* Pins the seeding of the 2D table: MT19937 seeded with nl_seed_stream(42, "noise.grad2", 0)
    * (the seed rule, nl_base.h) draws the angles
    * in order, then gsl_ran_shuffle draws the permutation. The value is the one
    * the code gives (printed with %.17g); it moves if the generator, the order of
-   * the draws, the shuffle or the seed derivation of nl_grad2_seed changes, and
+   * the draws, the shuffle or the seed derivation of nl_noise_grad2_seed changes, and
    * then every committed result made from a table moves too. The 1e-15 is the
    * rounding of the few operations of one noise2 evaluation, far below what any
    * other table would give. */
-  double v = nl_noise2(a, 0.3, 0.7);
+  double v = nl_noise_grad2_eval(a, 0.3, 0.7);
   printf("  seed 42: noise2(0.3, 0.7) = %.17g\n", v);
   NL_CHECK_NEAR(v, 0.37208493179103724, 1e-15);
   /* the draws themselves, exactly: first and last angle (2 pi U), the shuffle */
   NL_CHECK(a->angle[0] == 5.7728308809606483 && a->angle[511] == 4.8973434909738742);
   NL_CHECK(a->perm[0] == 291 && a->perm[1] == 36 && a->perm[2] == 328 && a->perm[511] == 396);
-  nl_grad2_free(a); nl_grad2_free(b);
+  nl_noise_grad2_free(a); nl_noise_grad2_free(b);
 }
 
 NL_TEST(index_hash_is_cheng_eq_3_1)
 {
-  nl_grad2 *t = nl_grad2_alloc(16);
-  nl_grad2_seed(t, 3);
+  nl_noise_grad2 *t = nl_noise_grad2_alloc(16);
+  nl_noise_grad2_seed(t, 3);
   for (long i = -20; i < 20; i++)
     for (long j = -20; j < 20; j++) {
       long im = ((i % 16) + 16) % 16, jm = ((j % 16) + 16) % 16;
-      NL_CHECK(nl_grad2_index(t, i, j) == t->perm[(t->perm[im] + jm) % 16]);
+      NL_CHECK(nl_noise_grad2_index(t, i, j) == t->perm[(t->perm[im] + jm) % 16]);
     }
-  nl_grad2_free(t);
+  nl_noise_grad2_free(t);
 }
 
 NL_TEST(octave_builders)
 {
-  nl_octaves c = nl_octaves_cheng(4, 8, 4);
+  nl_noise_octaves c = nl_noise_octaves_cheng(4, 8, 4);
   NL_CHECK(c.n == 4 && c.freq[0] == 8 && c.freq[3] == 64 && c.amp[0] == 0.25 && c.amp[3] == 1.0 / 32);
-  nl_octaves f = nl_octaves_fbm(6, 0.5, 2);
-  NL_CHECK_NEAR(nl_octaves_bound(&f, 1.0), 2 - 1.0 / 32, 1e-15);   /* S_n = 2 - 2^(1-n) */
-  NL_CHECK(nl_octaves_fbm(99, 1, 1).n == NL_MAX_OCTAVES);
+  nl_noise_octaves f = nl_noise_octaves_fbm(6, 0.5, 2);
+  NL_CHECK_NEAR(nl_noise_octaves_bound(&f, 1.0), 2 - 1.0 / 32, 1e-15);   /* S_n = 2 - 2^(1-n) */
+  NL_CHECK(nl_noise_octaves_fbm(99, 1, 1).n == NL_MAX_OCTAVES);
 }
 
 /* Lattice coordinates a long cannot hold (fbm --octaves 30 --lacunarity 10
@@ -198,22 +198,22 @@ NL_TEST(octave_builders)
  * build checks), finite where the input is finite, NaN where it is not. */
 NL_TEST(huge_coordinates_are_safe)
 {
-  nl_perm3 p;
-  nl_grad2 *t = both_tables(3, &p);
+  nl_noise_perm3 p;
+  nl_noise_grad2 *t = both_tables(3, &p);
   const double xs[] = {1e30, -1e30, 0x1p62, -0x1p63, 0x1p52 + 0.5, 1e308, -1e308, 4503599627370497.0};
   for (size_t k = 0; k < sizeof xs / sizeof *xs; k++) {
-    double a = nl_noise2(t, xs[k], 0.25), b = nl_noise3(&p, 0.5, xs[k], xs[k]);
+    double a = nl_noise_grad2_eval(t, xs[k], 0.25), b = nl_noise_perm3_eval(&p, 0.5, xs[k], xs[k]);
     NL_CHECK(isfinite(a) && isfinite(b));
     double row[8];
-    nl_noise2_row(t, xs[k], 0.1, xs[k], 8, row);
+    nl_noise_grad2_row(t, xs[k], 0.1, xs[k], 8, row);
     for (int i = 0; i < 8; i++) NL_CHECK(isfinite(row[i]));
-    nl_noise3_row(&p, xs[k], xs[k] * 1e-3, 0.5, xs[k], 8, row);
+    nl_noise_perm3_row(&p, xs[k], xs[k] * 1e-3, 0.5, xs[k], 8, row);
     for (int i = 0; i < 8; i++) NL_CHECK(isfinite(row[i]));
   }
-  NL_CHECK(isnan(nl_noise2(t, NAN, 0.5)) && isnan(nl_noise3(&p, 0.5, INFINITY, 0.5)));
+  NL_CHECK(isnan(nl_noise_grad2_eval(t, NAN, 0.5)) && isnan(nl_noise_perm3_eval(&p, 0.5, INFINITY, 0.5)));
   /* Integers beyond 2^53 are lattice points: the noise there is 0. */
-  NL_CHECK(nl_noise2(t, 1e20, 3e21) == 0.0 && nl_noise3(&p, 1e20, -1e25, 0x1p70) == 0.0);
-  nl_grad2_free(t);
+  NL_CHECK(nl_noise_grad2_eval(t, 1e20, 3e21) == 0.0 && nl_noise_perm3_eval(&p, 1e20, -1e25, 0x1p70) == 0.0);
+  nl_noise_grad2_free(t);
 }
 
 int main(void) { return nl_test_run(); }
@@ -233,18 +233,18 @@ NL_TEST(golden_rasters_are_bit_identical_across_builds)
    * under the sanitizers, so passing there proves the same seed gives the
    * same bits at both optimisation levels. A change of these hashes is a
    * change of every committed result: update them only on purpose. */
-  nl_perm3 p;
-  nl_grad2 *t = both_tables(5, &p);
-  nl_basis b2 = nl_basis_grad2(t), b3 = nl_basis_perm3(&p);
-  nl_octaves o = nl_octaves_fbm(6, 0.5, 2.0);
-  nl_window w = {-1.3, 0.7, 0.25, 3.0, 64, 64};
+  nl_noise_perm3 p;
+  nl_noise_grad2 *t = both_tables(5, &p);
+  nl_noise_basis b2 = nl_noise_basis_grad2(t), b3 = nl_noise_basis_perm3(&p);
+  nl_noise_octaves o = nl_noise_octaves_fbm(6, 0.5, 2.0);
+  nl_noise_window w = {-1.3, 0.7, 0.25, 3.0, 64, 64};
   double v[64 * 64];
-  nl_fractal_grid(&b2, &o, &w, v);
+  nl_noise_fractal_grid(&b2, &o, &w, v);
   unsigned long long h2 = bits_hash(v, 64 * 64);
-  nl_fractal_grid(&b3, &o, &w, v);
+  nl_noise_fractal_grid(&b3, &o, &w, v);
   unsigned long long h3 = bits_hash(v, 64 * 64);
   printf("  hashes: grad2 %#llx, improved3 %#llx\n", h2, h3);
   NL_CHECK(h2 == GOLDEN_GRAD2);
   NL_CHECK(h3 == GOLDEN_IMPROVED3);
-  nl_grad2_free(t);
+  nl_noise_grad2_free(t);
 }

@@ -80,15 +80,15 @@ static void random_row(gsl_rng *r, double *x0, double *dx, size_t *n)
 
 static void compare_grad2(size_t m, unsigned long seed)
 {
-  nl_grad2 *t = nl_grad2_alloc(m);
-  nl_grad2_seed(t, seed);
+  nl_noise_grad2 *t = nl_noise_grad2_alloc(m);
+  nl_noise_grad2_seed(t, seed);
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(r, 1000 + m);
   double *x = malloc(NPOINTS * sizeof *x), *y = malloc(NPOINTS * sizeof *y);
   double *ref = malloc(NPOINTS * sizeof *ref), *got = malloc(NPOINTS * sizeof *got);
   for (size_t k = 0; k < NPOINTS; k++) { x[k] = coord(r); y[k] = coord(r); }
   nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
-  for (size_t k = 0; k < NPOINTS; k++) ref[k] = nl_noise2(t, x[k], y[k]);
+  for (size_t k = 0; k < NPOINTS; k++) ref[k] = nl_noise_grad2_eval(t, x[k], y[k]);
   for (int L = 0; L < nlevels; L++) {
     nl_noise_simd_set(levels[L]);
     for (size_t n = 0; n <= 17; n++) {   /* every tail length */
@@ -113,10 +113,10 @@ static void compare_grad2(size_t m, unsigned long seed)
     size_t n;
     random_row(r, &x0, &dx, &n);
     nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
-    nl_noise2_row(t, x0, dx, yy, n, rref);
+    nl_noise_grad2_row(t, x0, dx, yy, n, rref);
     for (int L = 0; L < nlevels; L++) {
       nl_noise_simd_set(levels[L]);
-      nl_noise2_row(t, x0, dx, yy, n, rgot);
+      nl_noise_grad2_row(t, x0, dx, yy, n, rgot);
       if (!same(rgot, rref, n)) {
         fprintf(stderr, "  grad2 m=%zu %s row x0=%.17g dx=%.17g y=%.17g n=%zu differs\n", m,
                 nl_noise_simd_name(levels[L]), x0, dx, yy, n);
@@ -128,7 +128,7 @@ static void compare_grad2(size_t m, unsigned long seed)
   nl_noise_simd_set(nl_noise_simd_best());
   free(rref); free(rgot); free(x); free(y); free(ref); free(got);
   gsl_rng_free(r);
-  nl_grad2_free(t);
+  nl_noise_grad2_free(t);
 }
 
 NL_TEST(grad2_levels_match_scalar)
@@ -138,7 +138,7 @@ NL_TEST(grad2_levels_match_scalar)
   for (size_t k = 0; k < sizeof ms / sizeof *ms; k++) compare_grad2(ms[k], 11 + k);
 }
 
-static void compare_perm3(const nl_perm3 *p, unsigned long seed)
+static void compare_perm3(const nl_noise_perm3 *p, unsigned long seed)
 {
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(r, seed);
@@ -146,7 +146,7 @@ static void compare_perm3(const nl_perm3 *p, unsigned long seed)
   double *ref = malloc(NPOINTS * sizeof *ref), *got = malloc(NPOINTS * sizeof *got);
   for (size_t k = 0; k < NPOINTS; k++) { x[k] = coord(r); y[k] = coord(r); z[k] = coord(r); }
   nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
-  for (size_t k = 0; k < NPOINTS; k++) ref[k] = nl_noise3(p, x[k], y[k], z[k]);
+  for (size_t k = 0; k < NPOINTS; k++) ref[k] = nl_noise_perm3_eval(p, x[k], y[k], z[k]);
   for (int L = 0; L < nlevels; L++) {
     nl_noise_simd_set(levels[L]);
     for (size_t n = 0; n <= 17; n++) {
@@ -178,10 +178,10 @@ static void compare_perm3(const nl_perm3 *p, unsigned long seed)
     size_t n;
     random_row(r, &x0, &dx, &n);
     nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
-    nl_noise3_row(p, x0, dx, yy, zz, n, rref);
+    nl_noise_perm3_row(p, x0, dx, yy, zz, n, rref);
     for (int L = 0; L < nlevels; L++) {
       nl_noise_simd_set(levels[L]);
-      nl_noise3_row(p, x0, dx, yy, zz, n, rgot);
+      nl_noise_perm3_row(p, x0, dx, yy, zz, n, rgot);
       if (!same(rgot, rref, n)) {
         fprintf(stderr, "  perm3 %s row x0=%.17g dx=%.17g y=%.17g z=%.17g n=%zu differs\n",
                 nl_noise_simd_name(levels[L]), x0, dx, yy, zz, n);
@@ -198,10 +198,10 @@ static void compare_perm3(const nl_perm3 *p, unsigned long seed)
 NL_TEST(perm3_levels_match_scalar)
 {
   find_levels();
-  nl_perm3 p;
-  nl_perm3_reference(&p);
+  nl_noise_perm3 p;
+  nl_noise_perm3_reference(&p);
   compare_perm3(&p, 5);
-  nl_perm3_seed(&p, 9);
+  nl_noise_perm3_seed(&p, 9);
   compare_perm3(&p, 6);
 }
 
@@ -212,10 +212,10 @@ NL_TEST(perm3_levels_match_scalar)
 NL_TEST(edge_rows_match_scalar)
 {
   find_levels();
-  nl_grad2 *t = nl_grad2_alloc(64);
-  nl_grad2_seed(t, 5);
-  nl_perm3 p;
-  nl_perm3_seed(&p, 5);
+  nl_noise_grad2 *t = nl_noise_grad2_alloc(64);
+  nl_noise_grad2_seed(t, 5);
+  nl_noise_perm3 p;
+  nl_noise_perm3_seed(&p, 5);
   const double x0s[] = {-0.0, 0.0, -0x1p-54, -0x1p-55, -1e-20, -0x1p-53, -0x1p-50, -1.0 / 3, 0x1p52 - 40,
                         -0x1p52 + 1, 1e-300, -5e-324};
   const double dxs[] = {1.0 / 64, -1.0 / 64, 4.0 / 7, -4.0 / 7, 0.5714286, 0x1p-60, -0x1p-60, 0.0, -0.0, 1.0, 0.75};
@@ -228,12 +228,12 @@ NL_TEST(edge_rows_match_scalar)
         for (size_t n = 1; n <= 3 * 8 + 1; n++)
           for (int which = 0; which < 2; which++) {
             nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
-            if (which) nl_noise3_row(&p, x0s[a], dxs[d], ys[yi], -ys[yi], n, ref);
-            else nl_noise2_row(t, x0s[a], dxs[d], ys[yi], n, ref);
+            if (which) nl_noise_perm3_row(&p, x0s[a], dxs[d], ys[yi], -ys[yi], n, ref);
+            else nl_noise_grad2_row(t, x0s[a], dxs[d], ys[yi], n, ref);
             for (int L = 0; L < nlevels; L++) {
               nl_noise_simd_set(levels[L]);
-              if (which) nl_noise3_row(&p, x0s[a], dxs[d], ys[yi], -ys[yi], n, got);
-              else nl_noise2_row(t, x0s[a], dxs[d], ys[yi], n, got);
+              if (which) nl_noise_perm3_row(&p, x0s[a], dxs[d], ys[yi], -ys[yi], n, got);
+              else nl_noise_grad2_row(t, x0s[a], dxs[d], ys[yi], n, got);
               if (!same(got, ref, n) && bad++ < 5)
                 fprintf(stderr, "  %s row %s x0=%a dx=%a y=%a n=%zu differs\n", which ? "perm3" : "grad2",
                         nl_noise_simd_name(levels[L]), x0s[a], dxs[d], ys[yi], n);
@@ -242,24 +242,24 @@ NL_TEST(edge_rows_match_scalar)
           }
   NL_CHECK(bad == 0);
   /* the same rows as octave sums (first octave 0 + a v, turbulence) */
-  nl_basis b[] = {nl_basis_grad2(t), nl_basis_perm3(&p)};
-  nl_octaves o = nl_octaves_fbm(3, -0.5, 2.0);
+  nl_noise_basis b[] = {nl_noise_basis_grad2(t), nl_noise_basis_perm3(&p)};
+  nl_noise_octaves o = nl_noise_octaves_fbm(3, -0.5, 2.0);
   for (int tb = 0; tb < 2; tb++, o.turbulence = 1)
     for (size_t a = 0; a < sizeof x0s / sizeof *x0s; a++)
       for (size_t d = 0; d < sizeof dxs / sizeof *dxs; d++)
         for (int bi = 0; bi < 2; bi++) {
           size_t n = 3 * 8 + 1 - a;
           nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
-          nl_fractal_row(&b[bi], &o, x0s[a], dxs[d], -0.0, 0.0, n, ref, acc);
+          nl_noise_fractal_row(&b[bi], &o, x0s[a], dxs[d], -0.0, 0.0, n, ref, acc);
           for (int L = 0; L < nlevels; L++) {
             nl_noise_simd_set(levels[L]);
-            nl_fractal_row(&b[bi], &o, x0s[a], dxs[d], -0.0, 0.0, n, got, acc);
+            nl_noise_fractal_row(&b[bi], &o, x0s[a], dxs[d], -0.0, 0.0, n, got, acc);
             NL_CHECK(same(got, ref, n));
             compared += (long)n;
           }
         }
   nl_noise_simd_set(nl_noise_simd_best());
-  nl_grad2_free(t);
+  nl_noise_grad2_free(t);
 }
 
 /* Wavelet noise rows (nl_wavelet_row's sample loop, nl_noise_bspline_row):
@@ -310,15 +310,15 @@ NL_TEST(wavelet_rows_match_scalar)
 NL_TEST(fractal_grids_match_scalar)
 {
   find_levels();
-  nl_grad2 *t = nl_grad2_alloc(512), *t3 = nl_grad2_alloc(300);
-  nl_grad2_seed(t, 3);
-  nl_grad2_seed(t3, 3);
-  nl_perm3 p;
-  nl_perm3_seed(&p, 3);
-  nl_basis bases[] = {nl_basis_grad2(t), nl_basis_grad2(t3), nl_basis_perm3(&p)};
-  nl_octaves octs[] = {nl_octaves_fbm(4, 0.5, 2.0), nl_octaves_cheng(6, 2.0, 1.0), nl_octaves_fbm(9, 0.7, 2.1)};
+  nl_noise_grad2 *t = nl_noise_grad2_alloc(512), *t3 = nl_noise_grad2_alloc(300);
+  nl_noise_grad2_seed(t, 3);
+  nl_noise_grad2_seed(t3, 3);
+  nl_noise_perm3 p;
+  nl_noise_perm3_seed(&p, 3);
+  nl_noise_basis bases[] = {nl_noise_basis_grad2(t), nl_noise_basis_grad2(t3), nl_noise_basis_perm3(&p)};
+  nl_noise_octaves octs[] = {nl_noise_octaves_fbm(4, 0.5, 2.0), nl_noise_octaves_cheng(6, 2.0, 1.0), nl_noise_octaves_fbm(9, 0.7, 2.1)};
   octs[2].turbulence = 1;
-  nl_window wins[] = {{0, 0, 0.5, 16, 96, 40}, {-37.25, 11.5, -3.75, 3, 130, 7}, {1e6, -1e6, 2.5, 1e3, 33, 9}};
+  nl_noise_window wins[] = {{0, 0, 0.5, 16, 96, 40}, {-37.25, 11.5, -3.75, 3, 130, 7}, {1e6, -1e6, 2.5, 1e3, 33, 9}};
   size_t npix = 130 * 40;
   double *ref = malloc(npix * sizeof *ref), *got = malloc(npix * sizeof *got);
   for (int b = 0; b < 3; b++)
@@ -326,10 +326,10 @@ NL_TEST(fractal_grids_match_scalar)
       for (int w = 0; w < 3; w++) {
         size_t np = (size_t)wins[w].w * (size_t)wins[w].h;
         nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
-        nl_fractal_grid(&bases[b], &octs[o], &wins[w], ref);
+        nl_noise_fractal_grid(&bases[b], &octs[o], &wins[w], ref);
         for (int L = 0; L < nlevels; L++) {
           nl_noise_simd_set(levels[L]);
-          nl_fractal_grid(&bases[b], &octs[o], &wins[w], got);
+          nl_noise_fractal_grid(&bases[b], &octs[o], &wins[w], got);
           if (!same(got, ref, np)) {
             fprintf(stderr, "  grid basis %d octaves %d window %d level %s differs\n", b, o, w,
                     nl_noise_simd_name(levels[L]));
@@ -341,7 +341,7 @@ NL_TEST(fractal_grids_match_scalar)
   nl_noise_simd_set(nl_noise_simd_best());
   printf("  %ld values compared bit for bit with the scalar path\n", compared);
   free(ref); free(got);
-  nl_grad2_free(t); nl_grad2_free(t3);
+  nl_noise_grad2_free(t); nl_noise_grad2_free(t3);
 }
 
 int main(void) { return nl_test_run(); }

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-double nl_fft_freq(int u, int n) { return (double)(2 * u < n ? u : u - n) / n; }
+double nl_spectrum_freq(int u, int n) { return (double)(2 * u < n ? u : u - n) / n; }
 
 /* Transforms every line of a complex w x h array along one axis, in place.
  * stride/dist in complex elements: rows (1, w), columns (w, 1). */
@@ -27,13 +27,13 @@ static void fft2_inplace(double *F, int w, int h, gsl_fft_direction dir)
   fft_lines(F, h, w, (size_t)w, 1, dir);
 }
 
-void nl_fft2(const double *img, int w, int h, double *F)
+void nl_spectrum_fft2(const double *img, int w, int h, double *F)
 {
   for (size_t k = 0; k < (size_t)w * h; k++) { F[2 * k] = img[k]; F[2 * k + 1] = 0; }
   fft2_inplace(F, w, h, gsl_fft_forward);
 }
 
-void nl_fft2_inverse(const double *F, int w, int h, double *img)
+void nl_spectrum_fft2_inverse(const double *F, int w, int h, double *img)
 {
   size_t n = (size_t)w * h;
   double *G = nl_xmalloc(2 * n * sizeof *G);
@@ -43,26 +43,26 @@ void nl_fft2_inverse(const double *F, int w, int h, double *img)
   free(G);
 }
 
-void nl_power2(const double *img, int w, int h, double *P)
+void nl_spectrum_power2(const double *img, int w, int h, double *P)
 {
   size_t n = (size_t)w * h;
   double *F = nl_xmalloc(2 * n * sizeof *F);
-  nl_fft2(img, w, h, F);
+  nl_spectrum_fft2(img, w, h, F);
   double s = 1.0 / ((double)n * (double)n);
   for (size_t k = 0; k < n; k++) P[k] = (F[2 * k] * F[2 * k] + F[2 * k + 1] * F[2 * k + 1]) * s;
   free(F);
 }
 
-void nl_radial_power(const double *img, int w, int h, int nbins, double *f, double *p)
+void nl_spectrum_radial(const double *img, int w, int h, int nbins, double *f, double *p)
 {
   size_t n = (size_t)w * h;
   double *P = nl_xmalloc(n * sizeof *P);
   size_t *count = nl_xcalloc((size_t)nbins, sizeof *count);
-  nl_power2(img, w, h, P);
+  nl_spectrum_power2(img, w, h, P);
   for (int b = 0; b < nbins; b++) { p[b] = 0; f[b] = (b + 0.5) * 0.5 / nbins; }
   for (int v = 0; v < h; v++)
     for (int u = 0; u < w; u++) {
-      double fu = nl_fft_freq(u, w), fv = nl_fft_freq(v, h);
+      double fu = nl_spectrum_freq(u, w), fv = nl_spectrum_freq(v, h);
       int b = (int)(sqrt(fu * fu + fv * fv) / 0.5 * nbins);
       if (b >= nbins) continue;
       p[b] += P[(size_t)v * w + u];
@@ -74,7 +74,7 @@ void nl_radial_power(const double *img, int w, int h, int nbins, double *f, doub
 
 /* ---- 1D --------------------------------------------------------------- */
 
-nl_status nl_psd1(const double *x, size_t n, double rate, double *f, double *P, nl_error *err)
+nl_status nl_spectrum_psd1(const double *x, size_t n, double rate, double *f, double *P, nl_error *err)
 {
   if (n < 2 || !(rate > 0.0)) return nl_fail(err, NL_EINVAL, "psd1: need n >= 2 and rate > 0");
   double *d = nl_xmalloc(n * sizeof *d);

@@ -1,11 +1,11 @@
 /* nl_spectrum.h - 2D discrete Fourier transforms of images and their power
  * spectra, on GSL's mixed-radix FFT (any size, not only powers of two).
  *
- *   nl_fft2(img, w, h, F)       F[2*(v*w + u) + {0,1}] = sum_xy img[y*w+x] e^{-2 pi i (ux/w + vy/h)}
- *   nl_fft2_inverse(F, w, h, img)        the inverse, including the 1/(w h)
- *   nl_power2(img, w, h, P)     P[v*w+u] = |F|^2 / (w h)^2, so sum P = mean(img^2)
+ *   nl_spectrum_fft2(img, w, h, F)       F[2*(v*w + u) + {0,1}] = sum_xy img[y*w+x] e^{-2 pi i (ux/w + vy/h)}
+ *   nl_spectrum_fft2_inverse(F, w, h, img)        the inverse, including the 1/(w h)
+ *   nl_spectrum_power2(img, w, h, P)     P[v*w+u] = |F|^2 / (w h)^2, so sum P = mean(img^2)
  *                               (Parseval); the DC term is P[0]
- *   nl_radial_power(img, w, h, nbins, f, p)
+ *   nl_spectrum_radial(img, w, h, nbins, f, p)
  *       radially averaged power: bin b covers |k| in [b, b+1) * 0.5/nbins
  *       cycles per pixel (k folded to [-1/2, 1/2) per axis); f[b] is the
  *       bin centre, p[b] the mean of P over the bin's frequencies (0 if none).
@@ -14,7 +14,7 @@
  * cycles per unit.
  *
  * 1D (Arnerin's bandwidth, bounds/, and anything else sampled on a line):
- *   nl_psd1(x, n, rate, f, P, err)
+ *   nl_spectrum_psd1(x, n, rate, f, P, err)
  *       one-sided power spectrum of n real samples taken at `rate` per unit
  *       (GSL's real mixed-radix FFT): f[k] = k rate / n cycles per unit and
  *       P[k] = |X_k|^2 / n^2, doubled for 0 < k < n/2 (folded to one side),
@@ -25,14 +25,14 @@
 
 #include "base/nl_base.h"
 
-void nl_fft2(const double *img, int w, int h, double *F);
-void nl_fft2_inverse(const double *F, int w, int h, double *img);
-void nl_power2(const double *img, int w, int h, double *P);
-void nl_radial_power(const double *img, int w, int h, int nbins, double *f, double *p);
+void nl_spectrum_fft2(const double *img, int w, int h, double *F);
+void nl_spectrum_fft2_inverse(const double *F, int w, int h, double *img);
+void nl_spectrum_power2(const double *img, int w, int h, double *P);
+void nl_spectrum_radial(const double *img, int w, int h, int nbins, double *f, double *p);
 /* Signed frequency of index u of an n-point DFT, in cycles per sample. */
-double nl_fft_freq(int u, int n);
+double nl_spectrum_freq(int u, int n);
 /* f and P hold n/2 + 1 values. n >= 2, rate > 0; NL_EINVAL otherwise, NL_ENUM
  * if GSL's transform fails. */
-nl_status nl_psd1(const double *x, size_t n, double rate, double *f, double *P, nl_error *err);
+nl_status nl_spectrum_psd1(const double *x, size_t n, double rate, double *f, double *P, nl_error *err);
 
 #endif

@@ -11,11 +11,11 @@ NL_TEST(parseval_and_round_trip_odd_size)
   double *F = malloc(2 * n * sizeof *F), ms = 0, sp = 0;
   srand(3);
   for (size_t k = 0; k < n; k++) { x[k] = rand() / (double)RAND_MAX - 0.3; ms += x[k] * x[k] / n; }
-  nl_power2(x, w, h, P);
+  nl_spectrum_power2(x, w, h, P);
   for (size_t k = 0; k < n; k++) sp += P[k];
   NL_CHECK_NEAR(sp, ms, 1e-12);
-  nl_fft2(x, w, h, F);
-  nl_fft2_inverse(F, w, h, y);
+  nl_spectrum_fft2(x, w, h, F);
+  nl_spectrum_fft2_inverse(F, w, h, y);
   double worst = 0;
   for (size_t k = 0; k < n; k++) worst = fmax(worst, fabs(x[k] - y[k]));
   NL_CHECK(worst < 1e-13);
@@ -29,12 +29,12 @@ NL_TEST(cosine_lands_in_its_bin)
   double *x = malloc(sizeof(double) * w * h), f[32], p[32];
   for (int r = 0; r < h; r++)
     for (int c = 0; c < w; c++) x[r * w + c] = cos(NL_TWO_PI * 8 * c / w);
-  nl_radial_power(x, w, h, nb, f, p);
+  nl_spectrum_radial(x, w, h, nb, f, p);
   int best = 0;
   for (int b = 1; b < nb; b++) if (p[b] > p[best]) best = b;
   NL_CHECK(best == 8);    /* 0.125 / 0.5 * 32 */
   NL_CHECK_NEAR(f[8], 8.5 / 64, 1e-15);
-  NL_CHECK_NEAR(nl_fft_freq(63, 64), -1.0 / 64, 0);
+  NL_CHECK_NEAR(nl_spectrum_freq(63, 64), -1.0 / 64, 0);
   free(x);
 }
 

@@ -8,11 +8,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-nl_status nl_linkage_method_parse(const char *name, nl_linkage_method *m, nl_error *err)
+nl_status nl_cluster_linkage_method_parse(const char *name, nl_cluster_linkage_method *m, nl_error *err)
 {
   static const char *names[] = {"single", "complete", "average"};
   for (int i = 0; i < 3; i++)
-    if (strcmp(name, names[i]) == 0) { *m = (nl_linkage_method)i; return NL_OK; }
+    if (strcmp(name, names[i]) == 0) { *m = (nl_cluster_linkage_method)i; return NL_OK; }
   return nl_fail(err, NL_EINVAL, "unknown linkage '%s' (single, complete or average)", name);
 }
 
@@ -44,12 +44,12 @@ static double sq_diff_sum(const double *a, const double *b, size_t d)
   return r;
 }
 
-double nl_euclidean(const double *a, const double *b, size_t d)
+double nl_cluster_euclidean(const double *a, const double *b, size_t d)
 {
   return sqrt(sq_diff_sum(a, b, d));
 }
 
-double nl_sumsq(const double *a, size_t d)
+double nl_cluster_sumsq(const double *a, size_t d)
 {
   return sq_diff_sum(a, NULL, d);
 }
@@ -111,7 +111,7 @@ static void linkage_single(const double *x, size_t n, size_t d, double *Z)
     size_t y = cur;
     for (size_t i = 0; i < n; i++) {
       if (merged[i]) continue;
-      double dist = nl_euclidean(x + cur * d, x + i * d, d);
+      double dist = nl_cluster_euclidean(x + cur * d, x + i * d, d);
       if (dist < dmin[i]) dmin[i] = dist;
       if (dmin[i] < best || y == cur) { best = dmin[i]; y = i; }
     }
@@ -140,7 +140,7 @@ static double *condensed_distances(const double *x, size_t n, size_t d)
   if (!D) return NULL;
   for (size_t i = 0; i + 1 < n; i++) {
     double *row = D + cidx(n, i, i + 1);
-    for (size_t j = i + 1; j < n; j++) row[j - i - 1] = nl_euclidean(x + i * d, x + j * d, d);
+    for (size_t j = i + 1; j < n; j++) row[j - i - 1] = nl_cluster_euclidean(x + i * d, x + j * d, d);
   }
   return D;
 }
@@ -166,7 +166,7 @@ static size_t nearest(const double *D, size_t n, const double *size, size_t x, s
   return y;
 }
 
-static void linkage_nn_chain(double *D, size_t n, nl_linkage_method method, double *Z)
+static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method method, double *Z)
 {
   double *size = nl_xmalloc(n * sizeof(double));
   size_t *chain = nl_xmalloc(n * sizeof(size_t)), len = 0;
@@ -202,7 +202,7 @@ static void linkage_nn_chain(double *D, size_t n, nl_linkage_method method, doub
   free(chain);
 }
 
-nl_status nl_linkage(const double *x, size_t n, size_t d, nl_linkage_method method,
+nl_status nl_cluster_linkage(const double *x, size_t n, size_t d, nl_cluster_linkage_method method,
                      double *Z, nl_error *err)
 {
   if (n < 2) return nl_fail(err, NL_EINVAL, "clustering needs at least 2 points, got %zu", n);
@@ -284,7 +284,7 @@ static size_t monocrit(const double *Z, const double *md, size_t n, double cutof
   return ncl;
 }
 
-nl_status nl_fcluster_distance(const double *Z, size_t n, double t, int *labels,
+nl_status nl_cluster_fcluster_distance(const double *Z, size_t n, double t, int *labels,
                                size_t *nclusters, nl_error *err)
 {
   if (!(t >= 0.0) || !isfinite(t))
@@ -304,7 +304,7 @@ static int cmp_double(const void *a, const void *b)
   return (x > y) - (x < y);
 }
 
-nl_status nl_fcluster_maxclust(const double *Z, size_t n, size_t k, int *labels,
+nl_status nl_cluster_fcluster_maxclust(const double *Z, size_t n, size_t k, int *labels,
                                size_t *nclusters, nl_error *err)
 {
   if (k < 1) return nl_fail(err, NL_EINVAL, "number of clusters must be >= 1");

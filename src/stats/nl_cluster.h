@@ -1,10 +1,10 @@
 /* nl_cluster.h - agglomerative hierarchical clustering (Euclidean).
  *
  *   double *Z = malloc((n - 1) * 4 * sizeof *Z);
- *   nl_linkage(x, n, d, NL_LINKAGE_COMPLETE, Z, &err);     // x: n rows of d, row-major
+ *   nl_cluster_linkage(x, n, d, NL_LINKAGE_COMPLETE, Z, &err);     // x: n rows of d, row-major
  *   int *labels = malloc(n * sizeof *labels);
  *   size_t k;
- *   nl_fcluster_distance(Z, n, 2.5, labels, &k, &err);     // or nl_fcluster_maxclust
+ *   nl_cluster_fcluster_distance(Z, n, 2.5, labels, &k, &err);     // or nl_cluster_fcluster_maxclust
  *
  * Output is scipy's linkage matrix: row i = {a, b, dist, size} merges clusters
  * a < b (0..n-1 are the points, n+j the cluster made by row j) at height dist
@@ -29,9 +29,9 @@
  *
  * Flat clusters (labels 1..k, numbered as scipy.cluster.hierarchy.fcluster
  * numbers them: depth-first from the root, left before right):
- *   nl_fcluster_distance: 'distance' criterion, points in one cluster have
+ *   nl_cluster_fcluster_distance: 'distance' criterion, points in one cluster have
  *     cophenetic distance <= t (t >= 0);
- *   nl_fcluster_maxclust: the lowest cut that leaves at most k clusters
+ *   nl_cluster_fcluster_maxclust: the lowest cut that leaves at most k clusters
  *     ('maxclust'; ties in merge height can give fewer than k).
  */
 #ifndef NL_CLUSTER_H
@@ -43,25 +43,25 @@ typedef enum {
   NL_LINKAGE_SINGLE,
   NL_LINKAGE_COMPLETE,
   NL_LINKAGE_AVERAGE
-} nl_linkage_method;
+} nl_cluster_linkage_method;
 
 /* "single", "complete", "average" -> method; NL_EINVAL otherwise. */
-nl_status nl_linkage_method_parse(const char *name, nl_linkage_method *m, nl_error *err);
+nl_status nl_cluster_linkage_method_parse(const char *name, nl_cluster_linkage_method *m, nl_error *err);
 
 /* Euclidean distance between rows a and b of length d, and sum of squares
  * of a (summed in 8 fixed lanes: see above). */
-double nl_euclidean(const double *a, const double *b, size_t d);
-double nl_sumsq(const double *a, size_t d);
+double nl_cluster_euclidean(const double *a, const double *b, size_t d);
+double nl_cluster_sumsq(const double *a, size_t d);
 
 /* Clusters n >= 2 points of dimension d >= 1 (finite values). Z has
  * (n - 1) * 4 doubles. NL_ENOMEM if the distance matrix cannot be had. */
-nl_status nl_linkage(const double *x, size_t n, size_t d, nl_linkage_method method,
+nl_status nl_cluster_linkage(const double *x, size_t n, size_t d, nl_cluster_linkage_method method,
                      double *Z, nl_error *err);
 
 /* labels: n ints, 1-based. *nclusters (may be NULL) receives k. */
-nl_status nl_fcluster_distance(const double *Z, size_t n, double t, int *labels,
+nl_status nl_cluster_fcluster_distance(const double *Z, size_t n, double t, int *labels,
                                size_t *nclusters, nl_error *err);
-nl_status nl_fcluster_maxclust(const double *Z, size_t n, size_t k, int *labels,
+nl_status nl_cluster_fcluster_maxclust(const double *Z, size_t n, size_t k, int *labels,
                                size_t *nclusters, nl_error *err);
 
 #endif

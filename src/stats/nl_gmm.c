@@ -110,7 +110,7 @@ static void block_log_prob(const nl_gmm *g, const double *xb, size_t nb, double 
       for (size_t i = 0; i < nb; i++)
         for (size_t j = 0; j < d; j++) y[i * d + j] /= c[j];
     }
-    for (size_t i = 0; i < nb; i++) lp[i * K + k] = base - 0.5 * nl_sumsq(y + i * d, d);
+    for (size_t i = 0; i < nb; i++) lp[i * K + k] = base - 0.5 * nl_cluster_sumsq(y + i * d, d);
   }
 }
 

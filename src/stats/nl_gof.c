@@ -60,7 +60,7 @@ static void intro_sort(double *x, size_t n, int depth)
   insertion_sort(x, n);
 }
 
-void nl_sort_double(double *x, size_t n)
+void nl_stats_sort(double *x, size_t n)
 {
   int depth = 0;
   for (size_t m = n; m > 1; m >>= 1) depth += 2;
@@ -69,7 +69,7 @@ void nl_sort_double(double *x, size_t n)
 
 /* ---- one-sample KS and Kuiper ------------------------------------------- */
 
-double nl_cdf_uniform(double x, void *params)
+double nl_stats_cdf_uniform(double x, void *params)
 {
   const double *ab = params;
   double u = (x - ab[0]) / (ab[1] - ab[0]);
@@ -94,7 +94,7 @@ static void ks_range_max(const double *u, size_t lo, size_t hi, size_t n,
   *dm = m;
 }
 
-void nl_ks_statistic(const double *u, size_t n, double *d_plus, double *d_minus)
+void nl_stats_ks_statistic(const double *u, size_t n, double *d_plus, double *d_minus)
 {
   ks_range_max(u, 0, n, n, d_plus, d_minus);
 }
@@ -109,14 +109,14 @@ static nl_status check_finite(const double *x, size_t n, const char *what, nl_er
 }
 
 /* Sorted copy of x and F at each value. *xs and *us are malloc'ed. */
-static nl_status sorted_cdf(const double *x, size_t n, nl_cdf_fn cdf, void *params,
+static nl_status sorted_cdf(const double *x, size_t n, nl_stats_cdf_fn cdf, void *params,
                             double **xs, double **us, nl_error *err)
 {
   nl_status s = check_finite(x, n, "sample", err);
   if (s) return s;
   double *a = nl_xmalloc(n * sizeof(double)), *u = nl_xmalloc(n * sizeof(double));
   memcpy(a, x, n * sizeof(double));
-  nl_sort_double(a, n);
+  nl_stats_sort(a, n);
   for (size_t i = 0; i < n; i++) {
     u[i] = cdf(a[i], params);
     if (!(u[i] >= 0.0 && u[i] <= 1.0)) {
@@ -137,20 +137,20 @@ static nl_status check_interval(double a, double b, nl_error *err)
 }
 
 /* D+ and D- of the sample x against cdf: what KS and Kuiper share. */
-static nl_status cdf_statistic(const double *x, size_t n, nl_cdf_fn cdf, void *params,
+static nl_status cdf_statistic(const double *x, size_t n, nl_stats_cdf_fn cdf, void *params,
                                double *d_plus, double *d_minus, nl_error *err)
 {
   double *xs, *u;
   nl_status s = sorted_cdf(x, n, cdf, params, &xs, &u, err);
   if (s) return s;
-  nl_ks_statistic(u, n, d_plus, d_minus);
+  nl_stats_ks_statistic(u, n, d_plus, d_minus);
   free(xs);
   free(u);
   return NL_OK;
 }
 
-nl_status nl_ks_test(const double *x, size_t n, nl_cdf_fn cdf, void *params,
-                     nl_ks_result *res, nl_error *err)
+nl_status nl_stats_ks_test(const double *x, size_t n, nl_stats_cdf_fn cdf, void *params,
+                     nl_stats_ks_result *res, nl_error *err)
 {
   double dp, dm;
   nl_status s = cdf_statistic(x, n, cdf, params, &dp, &dm, err);
@@ -160,19 +160,19 @@ nl_status nl_ks_test(const double *x, size_t n, nl_cdf_fn cdf, void *params,
   res->d_minus = dm;
   res->d = fmax(res->d_plus, res->d_minus);
   res->n = n;
-  res->p = nl_ks_sf(n, res->d, &res->method);
+  res->p = nl_stats_ks_sf(n, res->d, &res->method);
   return NL_OK;
 }
 
-nl_status nl_ks_test_uniform(const double *x, size_t n, double a, double b,
-                             nl_ks_result *res, nl_error *err)
+nl_status nl_stats_ks_test_uniform(const double *x, size_t n, double a, double b,
+                             nl_stats_ks_result *res, nl_error *err)
 {
   double ab[2] = {a, b};
   nl_status s = check_interval(a, b, err);
-  return s ? s : nl_ks_test(x, n, nl_cdf_uniform, ab, res, err);
+  return s ? s : nl_stats_ks_test(x, n, nl_stats_cdf_uniform, ab, res, err);
 }
 
-double nl_kuiper_sf(size_t n, double v)
+double nl_stats_kuiper_sf(size_t n, double v)
 {
   double N = (double)n;
   if (n < 2 || v <= 1.0 / N) return 1.0;   /* V >= 1/n always; n = 1 gives V = 1 */
@@ -213,29 +213,29 @@ double nl_kuiper_sf(size_t n, double v)
   return p < 0.0 ? 0.0 : p > 1.0 ? 1.0 : p;
 }
 
-nl_status nl_kuiper_test(const double *x, size_t n, nl_cdf_fn cdf, void *params,
-                         nl_kuiper_result *res, nl_error *err)
+nl_status nl_stats_kuiper_test(const double *x, size_t n, nl_stats_cdf_fn cdf, void *params,
+                         nl_stats_kuiper_result *res, nl_error *err)
 {
   nl_status s = cdf_statistic(x, n, cdf, params, &res->d_plus, &res->d_minus, err);
   if (s) return s;
   res->v = res->d_plus + res->d_minus;
   res->n = n;
-  res->p = nl_kuiper_sf(n, res->v);
+  res->p = nl_stats_kuiper_sf(n, res->v);
   return NL_OK;
 }
 
-nl_status nl_kuiper_test_uniform(const double *x, size_t n, double a, double b,
-                                 nl_kuiper_result *res, nl_error *err)
+nl_status nl_stats_kuiper_test_uniform(const double *x, size_t n, double a, double b,
+                                 nl_stats_kuiper_result *res, nl_error *err)
 {
   double ab[2] = {a, b};
   nl_status s = check_interval(a, b, err);
-  return s ? s : nl_kuiper_test(x, n, nl_cdf_uniform, ab, res, err);
+  return s ? s : nl_stats_kuiper_test(x, n, nl_stats_cdf_uniform, ab, res, err);
 }
 
 /* ---- two-sample KS ------------------------------------------------------ */
 
-nl_status nl_ks2_test(const double *x, size_t n1, const double *y, size_t n2,
-                      nl_ks_result *res, nl_error *err)
+nl_status nl_stats_ks2_test(const double *x, size_t n1, const double *y, size_t n2,
+                      nl_stats_ks_result *res, nl_error *err)
 {
   nl_status s = check_finite(x, n1, "first sample", err);
   if (!s) s = check_finite(y, n2, "second sample", err);
@@ -243,8 +243,8 @@ nl_status nl_ks2_test(const double *x, size_t n1, const double *y, size_t n2,
   double *a = nl_xmalloc(n1 * sizeof(double)), *b = nl_xmalloc(n2 * sizeof(double));
   memcpy(a, x, n1 * sizeof(double));
   memcpy(b, y, n2 * sizeof(double));
-  nl_sort_double(a, n1);
-  nl_sort_double(b, n2);
+  nl_stats_sort(a, n1);
+  nl_stats_sort(b, n2);
   /* Walk the pooled sample; evaluate F1 - F2 only after all copies of a value
    * are consumed (scipy's searchsorted(side='right')). */
   double dp = 0.0, dm = 0.0;
@@ -265,7 +265,7 @@ nl_status nl_ks2_test(const double *x, size_t n1, const double *y, size_t n2,
   res->d = fmax(dp, dm);
   res->n = n1;
   res->n2 = n2;
-  res->p = nl_ks2_sf(n1, n2, res->d, &res->method);
+  res->p = nl_stats_ks2_sf(n1, n2, res->d, &res->method);
   if (res->method == NL_KS_TWO_SAMPLE_EXACT) {
     /* report the lattice value the exact p belongs to, as scipy does */
     long g = (long)n1, h = (long)n2;
@@ -278,13 +278,13 @@ nl_status nl_ks2_test(const double *x, size_t n1, const double *y, size_t n2,
 
 /* ---- incremental KS ------------------------------------------------------ */
 
-static void incr_block(nl_ks_incr *s, size_t b)
+static void incr_block(nl_stats_ks_incr *s, size_t b)
 {
   size_t lo = b * NL_KS_INCR_BLOCK, hi = lo + NL_KS_INCR_BLOCK;
   ks_range_max(s->u, lo, hi < s->n ? hi : s->n, s->n, &s->bplus[b], &s->bminus[b]);
 }
 
-static void incr_total(nl_ks_incr *s)
+static void incr_total(nl_stats_ks_incr *s)
 {
   double p = -INFINITY, m = -INFINITY;
   for (size_t b = 0; b < s->nblocks; b++) {
@@ -296,12 +296,12 @@ static void incr_total(nl_ks_incr *s)
   s->d = fmax(p, m);
 }
 
-nl_ks_incr *nl_ks_incr_alloc(const double *x, size_t n, nl_cdf_fn cdf, void *params,
+nl_stats_ks_incr *nl_stats_ks_incr_alloc(const double *x, size_t n, nl_stats_cdf_fn cdf, void *params,
                              nl_error *err)
 {
   double *xs, *u;
   if (sorted_cdf(x, n, cdf, params, &xs, &u, err)) return NULL;
-  nl_ks_incr *s = nl_xcalloc(1, sizeof *s);
+  nl_stats_ks_incr *s = nl_xcalloc(1, sizeof *s);
   s->n = n;
   s->x = xs;
   s->u = u;
@@ -315,7 +315,7 @@ nl_ks_incr *nl_ks_incr_alloc(const double *x, size_t n, nl_cdf_fn cdf, void *par
   return s;
 }
 
-void nl_ks_incr_free(nl_ks_incr *s)
+void nl_stats_ks_incr_free(nl_stats_ks_incr *s)
 {
   if (!s) return;
   free(s->x);
@@ -336,7 +336,7 @@ static size_t lower_bound(const double *x, size_t n, double v)
   return lo;
 }
 
-nl_status nl_ks_incr_replace(nl_ks_incr *s, double old_value, double new_value,
+nl_status nl_stats_ks_incr_replace(nl_stats_ks_incr *s, double old_value, double new_value,
                              nl_error *err)
 {
   size_t n = s->n, p = lower_bound(s->x, n, old_value), q;
@@ -365,15 +365,15 @@ nl_status nl_ks_incr_replace(nl_ks_incr *s, double old_value, double new_value,
   return NL_OK;
 }
 
-double nl_ks_incr_p(const nl_ks_incr *s)
+double nl_stats_ks_incr_p(const nl_stats_ks_incr *s)
 {
-  return nl_ks_sf(s->n, s->d, NULL);
+  return nl_stats_ks_sf(s->n, s->d, NULL);
 }
 
 /* ---- chi-square ----------------------------------------------------------- */
 
-nl_status nl_chisq_test(const double *observed, const double *expected, size_t k,
-                        nl_chisq_result *res, nl_error *err)
+nl_status nl_stats_chisq_test(const double *observed, const double *expected, size_t k,
+                        nl_stats_chisq_result *res, nl_error *err)
 {
   if (k < 2) return nl_fail(err, NL_EINVAL, "chi-square needs at least 2 bins, got %zu", k);
   double chi2 = 0.0, emin = INFINITY, n = 0.0;
@@ -410,7 +410,7 @@ static size_t bin_index(double v, size_t k, double a, double b)
   return i;
 }
 
-gsl_histogram *nl_histogram_uniform(const double *x, size_t n, size_t k, double a,
+gsl_histogram *nl_stats_histogram_uniform(const double *x, size_t n, size_t k, double a,
                                     double b, size_t *outside, nl_error *err)
 {
   if (k < 1 || check_interval(a, b, err)) {
@@ -428,14 +428,14 @@ gsl_histogram *nl_histogram_uniform(const double *x, size_t n, size_t k, double 
   return h;
 }
 
-nl_status nl_chisq_test_uniform(const double *x, size_t n, size_t k, double a, double b,
-                                nl_chisq_result *res, nl_error *err)
+nl_status nl_stats_chisq_test_uniform(const double *x, size_t n, size_t k, double a, double b,
+                                nl_stats_chisq_result *res, nl_error *err)
 {
   nl_status s = check_finite(x, n, "sample", err);
   if (s) return s;
   if (k < 2) return nl_fail(err, NL_EINVAL, "chi-square needs at least 2 bins, got %zu", k);
   size_t out;
-  gsl_histogram *h = nl_histogram_uniform(x, n, k, a, b, &out, err);
+  gsl_histogram *h = nl_stats_histogram_uniform(x, n, k, a, b, &out, err);
   if (!h) return NL_EINVAL;
   if (out) {
     gsl_histogram_free(h);
@@ -443,7 +443,7 @@ nl_status nl_chisq_test_uniform(const double *x, size_t n, size_t k, double a, d
   }
   double *e = nl_xmalloc(k * sizeof(double));
   for (size_t i = 0; i < k; i++) e[i] = (double)n / (double)k;
-  s = nl_chisq_test(h->bin, e, k, res, err);
+  s = nl_stats_chisq_test(h->bin, e, k, res, err);
   free(e);
   gsl_histogram_free(h);
   return s;
@@ -451,25 +451,25 @@ nl_status nl_chisq_test_uniform(const double *x, size_t n, size_t k, double a, d
 
 /* ---- ECDF ------------------------------------------------------------------ */
 
-nl_ecdf *nl_ecdf_alloc(const double *x, size_t n, nl_error *err)
+nl_stats_ecdf *nl_stats_ecdf_alloc(const double *x, size_t n, nl_error *err)
 {
   if (check_finite(x, n, "sample", err)) return NULL;
-  nl_ecdf *e = nl_xmalloc(sizeof *e);
+  nl_stats_ecdf *e = nl_xmalloc(sizeof *e);
   e->n = n;
   e->x = nl_xmalloc(n * sizeof(double));
   memcpy(e->x, x, n * sizeof(double));
-  nl_sort_double(e->x, n);
+  nl_stats_sort(e->x, n);
   return e;
 }
 
-void nl_ecdf_free(nl_ecdf *e)
+void nl_stats_ecdf_free(nl_stats_ecdf *e)
 {
   if (!e) return;
   free(e->x);
   free(e);
 }
 
-double nl_ecdf_eval(const nl_ecdf *e, double t)
+double nl_stats_ecdf_eval(const nl_stats_ecdf *e, double t)
 {
   size_t lo = 0, hi = e->n;   /* first index with x > t */
   while (lo < hi) {

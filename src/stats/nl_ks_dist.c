@@ -25,7 +25,7 @@ static double pick(int want_cdf, double cdfprob, double sfprob)
   return clip01(want_cdf ? cdfprob : sfprob);
 }
 
-const char *nl_ks_method_name(nl_ks_method m)
+const char *nl_stats_ks_method_name(nl_stats_ks_method m)
 {
   static const char *names[] = {"ruben-gambino", "smirnov", "durbin-mtw", "pomeranz",
                                 "pelz-good", "kolmogorov", "exact", "asymp"};
@@ -36,7 +36,7 @@ const char *nl_ks_method_name(nl_ks_method m)
  * C(n,j) (1-d-j/n)^(n-j) (d+j/n)^(j-1). All terms are positive, so summing
  * them in log space loses nothing to cancellation; the relative error is that
  * of lgamma(n+1), about 1e-16 * n log n. */
-double nl_smirnov_sf(size_t n, double d)
+double nl_stats_smirnov_sf(size_t n, double d)
 {
   if (!(d > 0.0)) return 1.0;
   if (d >= 1.0) return 0.0;
@@ -55,7 +55,7 @@ double nl_smirnov_sf(size_t n, double d)
 /* P(K > lambda) for Kolmogorov's limit law: the theta-function form
  * (Jacobi) converges fast for small lambda, the alternating series for
  * large lambda; both to double precision in a few terms. */
-double nl_kolmogorov_sf(double lambda)
+double nl_stats_kolmogorov_sf(double lambda)
 {
   if (lambda <= 0.0) return 1.0;
   if (lambda < 1.0) {
@@ -272,7 +272,7 @@ static double log_nfact_div_npow(double n)
 }
 
 /* The middle range 1 < n d < n - 1 of scipy's _kolmogn. */
-static double kolmogn_mid(size_t n, double x, int want_cdf, nl_ks_method *m)
+static double kolmogn_mid(size_t n, double x, int want_cdf, nl_stats_ks_method *m)
 {
   double nn = (double)n, nx2 = nn * x * x, p;
   *m = NL_KS_SMIRNOV;
@@ -280,7 +280,7 @@ static double kolmogn_mid(size_t n, double x, int want_cdf, nl_ks_method *m)
   if (x >= 0.5 || (n <= 140 && nx2 > 4) || (n > 140 && !want_cdf && nx2 >= 2.2)) {
     /* exact for x >= 0.5; elsewhere the two one-sided tails no longer overlap
      * to double precision (Simard & L'Ecuyer sec. 3) */
-    p = 2 * nl_smirnov_sf(n, x);
+    p = 2 * nl_stats_smirnov_sf(n, x);
     return pick(want_cdf, 1.0 - p, p);
   }
   if (n <= 140 || (n <= 100000 && nn * pow(x, 1.5) <= 1.4 && nx2 < 18.0)) {
@@ -295,9 +295,9 @@ static double kolmogn_mid(size_t n, double x, int want_cdf, nl_ks_method *m)
 
 /* scipy's _kolmogn: P(D_n <= x) or P(D_n >= x), choosing the method by n,
  * n x and n x^2 (Simard & L'Ecuyer 2011, fig. 1). */
-static double kolmogn(size_t n, double x, int want_cdf, nl_ks_method *method)
+static double kolmogn(size_t n, double x, int want_cdf, nl_stats_ks_method *method)
 {
-  nl_ks_method m = NL_KS_RUBEN_GAMBINO;
+  nl_stats_ks_method m = NL_KS_RUBEN_GAMBINO;
   double nn = (double)n, t = nn * x, r;
   if (x >= 1.0) r = pick(want_cdf, 1.0, 0.0);
   else if (x <= 0.0 || t <= 0.5) r = pick(want_cdf, 0.0, 1.0);
@@ -316,12 +316,12 @@ static double kolmogn(size_t n, double x, int want_cdf, nl_ks_method *method)
   return r;
 }
 
-double nl_ks_sf(size_t n, double d, nl_ks_method *method)
+double nl_stats_ks_sf(size_t n, double d, nl_stats_ks_method *method)
 {
   return kolmogn(n, d, 0, method);
 }
 
-double nl_ks_cdf(size_t n, double d, nl_ks_method *method)
+double nl_stats_ks_cdf(size_t n, double d, nl_stats_ks_method *method)
 {
   return kolmogn(n, d, 1, method);
 }
@@ -377,7 +377,7 @@ static double ks2_outer_prob_inside(long m, long n, long g, long h)
 
 static long gcd_long(long a, long b) { while (b) { long t = a % b; a = b; b = t; } return a; }
 
-double nl_ks2_sf(size_t n1, size_t n2, double d, nl_ks_method *method)
+double nl_stats_ks2_sf(size_t n1, size_t n2, double d, nl_stats_ks_method *method)
 {
   if (n1 <= 10000 && n2 <= 10000) {
     long g = gcd_long((long)n1, (long)n2), lcm = (long)n1 / g * (long)n2;
@@ -394,5 +394,5 @@ double nl_ks2_sf(size_t n1, size_t n2, double d, nl_ks_method *method)
    * rounded half to even like numpy. */
   double a = (double)n1, b = (double)n2, en = nearbyint(a * b / (a + b));
   if (method) *method = NL_KS_TWO_SAMPLE_ASYMP;
-  return nl_ks_sf(en < 1.0 ? 1 : (size_t)en, d, NULL);
+  return nl_stats_ks_sf(en < 1.0 ? 1 : (size_t)en, d, NULL);
 }

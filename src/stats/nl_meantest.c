@@ -1,6 +1,6 @@
 /* Two-sample tests from summaries (mean, sd, n): Welch's t-test and the
  * F-test of equal variances. See nl_stats.h. The regression check
- * (nl_report_check.c) compares means and spreads over seeds with these. */
+ * (nl_harness_check.c) compares means and spreads over seeds with these. */
 #include "stats/nl_stats.h"
 
 #include <gsl/gsl_cdf.h>

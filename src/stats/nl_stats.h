@@ -1,9 +1,9 @@
 /* nl_stats.h - goodness-of-fit tests and empirical distributions.
  *
  * One-sample Kolmogorov-Smirnov (KS), against any continuous CDF:
- *   nl_ks_result r;
- *   nl_ks_test_uniform(x, n, 0.0, NL_TWO_PI, &r, &err);   // or nl_ks_test(x, n, cdf, params, ...)
- *   printf("D=%g p=%g via %s\n", r.d, r.p, nl_ks_method_name(r.method));
+ *   nl_stats_ks_result r;
+ *   nl_stats_ks_test_uniform(x, n, 0.0, NL_TWO_PI, &r, &err);   // or nl_stats_ks_test(x, n, cdf, params, ...)
+ *   printf("D=%g p=%g via %s\n", r.d, r.p, nl_stats_ks_method_name(r.method));
  * D = max(D+, D-) with D+ = max_i (i/n - F(x_(i))), D- = max_i (F(x_(i)) - (i-1)/n)
  * over the sorted sample (i = 1..n), computed with exactly the expressions of
  * scipy.stats.kstest, so D agrees with scipy to the last bit. The p-value is
@@ -18,26 +18,26 @@
  *   - Pomeranz's recursion (1974) for n <= 140 and moderate n D^2,
  *   - the Pelz-Good (1976) expansion for n > 140 in between;
  * r.method says which one ran. Relative accuracy against scipy: 1e-10 or better
- * for p > 1e-300 (tests/data/stats). nl_kolmogorov_sf() is the n -> infinity
+ * for p > 1e-300 (tests/data/stats). nl_stats_kolmogorov_sf() is the n -> infinity
  * limit (scipy.stats.kstwobign.sf(D sqrt n)) for those who want it.
  *
- * Two-sample KS (nl_ks2_test): D = max |F1 - F2| over the pooled sample, the
+ * Two-sample KS (nl_stats_ks2_test): D = max |F1 - F2| over the pooled sample, the
  * p-value exact (lattice-path counting: Hodges 1958, with Viehmann's 2021
  * recursion for 1-p) when both sizes are <= 10000, else the one-sample
  * distribution with n = round(n1 n2 / (n1 + n2)): scipy.stats.ks_2samp(
  * method='auto').
  *
- * Incremental KS for optimisers (nl_ks_incr_*): a sorted copy of the sample
+ * Incremental KS for optimisers (nl_stats_ks_incr_*): a sorted copy of the sample
  * that follows one changed value. A move relocates the value with two
  * binary searches and one memmove (O(log n + s), s = how far the value moves
  * in rank) and recomputes the maxima of the blocks of 32 ranks it touched plus
  * a scan of the n/32 block maxima: O(log n + s + 32 + n/32). For n = 512 it
  * does 2.3 million moves/s on a mix of small steps and random jumps, 2.7x the
  * rate of a full O(n) rescan (bench/bench_stats). The result is
- * bit-identical to nl_ks_statistic() on the same sample, because every term
+ * bit-identical to nl_stats_ks_statistic() on the same sample, because every term
  * is computed by the same expression from the same (rank, F value) pair.
  *
- * Kuiper's V = D+ + D- (nl_kuiper_test) does not depend on where a circle is
+ * Kuiper's V = D+ + D- (nl_stats_kuiper_test) does not depend on where a circle is
  * cut, so it suits angles. The p-value is the four-regime formula of Paltani
  * (2004) / Stephens (1965) used by astropy.stats.kuiper_false_positive_
  * probability: exact expressions for V < 3/n and for V > 1/2 (Stephens 1965),
@@ -49,15 +49,15 @@
  * Our Monte Carlo check at n = 512 (make_stats_vectors.py) agrees within the
  * simulation's 3-sigma band for p from 0.001 to 0.9.
  *
- * Pearson chi-square on k equal-width bins of [a, b) (nl_chisq_test_uniform):
+ * Pearson chi-square on k equal-width bins of [a, b) (nl_stats_chisq_test_uniform):
  * chi2 = sum (O - E)^2 / E, df = k - 1, p = gsl_cdf_chisq_Q(chi2, df)
  * (scipy.stats.chisquare). low_expected is set when E < 5, Cochran's rule for
  * the chi-square approximation to hold (512 values in 500 bins give E = 1.02).
  * Values outside [a, b) are an error: they would be dropped silently otherwise.
  *
- * ECDF and histogram helpers: nl_ecdf_* keep a sorted copy and evaluate the
+ * ECDF and histogram helpers: nl_stats_ecdf_* keep a sorted copy and evaluate the
  * right-continuous step function F_n(t) = #{x_i <= t} / n
- * (scipy.stats.ecdf); nl_histogram_uniform fills a gsl_histogram.
+ * (scipy.stats.ecdf); nl_stats_histogram_uniform fills a gsl_histogram.
  *
  * Conventions: inputs are const and never reordered (a sorted copy is made);
  * n >= 1 for the one-sample tests; NaN or infinite data give NL_EINVAL; a CDF
@@ -71,11 +71,11 @@
 #include <gsl/gsl_histogram.h>
 
 /* A continuous cumulative distribution function. */
-typedef double (*nl_cdf_fn)(double x, void *params);
+typedef double (*nl_stats_cdf_fn)(double x, void *params);
 
 /* F(x) of the uniform distribution on [a, b) with params = double[2]{a, b},
  * clipped to [0, 1]: (x - a) / (b - a), scipy.stats.uniform(a, b - a).cdf. */
-double nl_cdf_uniform(double x, void *params);
+double nl_stats_cdf_uniform(double x, void *params);
 
 typedef enum {
   NL_KS_RUBEN_GAMBINO,   /* closed forms, D <= 1/n or D >= 1 - 1/n */
@@ -86,11 +86,11 @@ typedef enum {
   NL_KS_KOLMOGOROV,      /* n -> infinity limit */
   NL_KS_TWO_SAMPLE_EXACT,
   NL_KS_TWO_SAMPLE_ASYMP /* one-sample law at the effective n */
-} nl_ks_method;
+} nl_stats_ks_method;
 
 /* "ruben-gambino", "smirnov", "durbin-mtw", "pomeranz", "pelz-good",
  * "kolmogorov", "exact", "asymp". */
-const char *nl_ks_method_name(nl_ks_method m);
+const char *nl_stats_ks_method_name(nl_stats_ks_method m);
 
 typedef struct {
   double d;          /* statistic, max(d_plus, d_minus) */
@@ -98,78 +98,78 @@ typedef struct {
   double p;          /* two-sided P(D >= d) under the null */
   size_t n;          /* sample size (two-sample: n1) */
   size_t n2;         /* two-sample: second size; else 0 */
-  nl_ks_method method;
-} nl_ks_result;
+  nl_stats_ks_method method;
+} nl_stats_ks_result;
 
 /* Distribution of the two-sided statistic D_n for a continuous F.
- * nl_ks_sf = P(D_n >= d) (scipy.stats.kstwo.sf), nl_ks_cdf = P(D_n <= d)
+ * nl_stats_ks_sf = P(D_n >= d) (scipy.stats.kstwo.sf), nl_stats_ks_cdf = P(D_n <= d)
  * (kstwo.cdf); each computed directly, not as 1 - the other, so both tails
  * keep full relative accuracy. method may be NULL. n >= 1. */
-double nl_ks_sf(size_t n, double d, nl_ks_method *method);
-double nl_ks_cdf(size_t n, double d, nl_ks_method *method);
+double nl_stats_ks_sf(size_t n, double d, nl_stats_ks_method *method);
+double nl_stats_ks_cdf(size_t n, double d, nl_stats_ks_method *method);
 /* One-sided P(D+_n >= d), exact (Birnbaum & Tingey 1951): scipy.special.smirnov. */
-double nl_smirnov_sf(size_t n, double d);
+double nl_stats_smirnov_sf(size_t n, double d);
 /* Kolmogorov's limit P(K > lambda) = 2 sum (-1)^(j-1) exp(-2 j^2 lambda^2):
  * scipy.special.kolmogorov = scipy.stats.kstwobign.sf. */
-double nl_kolmogorov_sf(double lambda);
+double nl_stats_kolmogorov_sf(double lambda);
 
 /* P(D_{n1,n2} >= d) for the two-sample statistic: exact for n1, n2 <= 10000
  * (d is rounded to the lattice h / lcm(n1, n2) first), else asymptotic;
  * scipy.stats.ks_2samp(method='auto'). */
-double nl_ks2_sf(size_t n1, size_t n2, double d, nl_ks_method *method);
+double nl_stats_ks2_sf(size_t n1, size_t n2, double d, nl_stats_ks_method *method);
 
 /* D+, D-, D of CDF values u[0..n-1] sorted ascending (no p-value). */
-void nl_ks_statistic(const double *u, size_t n, double *d_plus, double *d_minus);
+void nl_stats_ks_statistic(const double *u, size_t n, double *d_plus, double *d_minus);
 
-nl_status nl_ks_test(const double *x, size_t n, nl_cdf_fn cdf, void *params,
-                     nl_ks_result *res, nl_error *err);
+nl_status nl_stats_ks_test(const double *x, size_t n, nl_stats_cdf_fn cdf, void *params,
+                     nl_stats_ks_result *res, nl_error *err);
 /* Against the uniform distribution on [a, b), a < b. */
-nl_status nl_ks_test_uniform(const double *x, size_t n, double a, double b,
-                             nl_ks_result *res, nl_error *err);
+nl_status nl_stats_ks_test_uniform(const double *x, size_t n, double a, double b,
+                             nl_stats_ks_result *res, nl_error *err);
 /* Two-sample test; res->d_plus = max(F1 - F2), res->d_minus = max(F2 - F1). */
-nl_status nl_ks2_test(const double *x, size_t n1, const double *y, size_t n2,
-                      nl_ks_result *res, nl_error *err);
+nl_status nl_stats_ks2_test(const double *x, size_t n1, const double *y, size_t n2,
+                      nl_stats_ks_result *res, nl_error *err);
 
 /* Incremental one-sample statistic. Fields are read-only for callers. */
 typedef struct {
   size_t n;
   double *x;          /* sample, sorted ascending */
   double *u;          /* F(x[i]), same order */
-  nl_cdf_fn cdf;
+  nl_stats_cdf_fn cdf;
   void *params;
   size_t nblocks;
   double *bplus;      /* per block of NL_KS_INCR_BLOCK ranks: max of D+ terms */
   double *bminus;     /* ... and of D- terms */
   double d_plus, d_minus, d;
-} nl_ks_incr;
+} nl_stats_ks_incr;
 #define NL_KS_INCR_BLOCK 32
 
 /* Copies and sorts x. Returns NULL (with err) on n = 0, NaN/inf data or
  * CDF values outside [0, 1]. */
-nl_ks_incr *nl_ks_incr_alloc(const double *x, size_t n, nl_cdf_fn cdf, void *params,
+nl_stats_ks_incr *nl_stats_ks_incr_alloc(const double *x, size_t n, nl_stats_cdf_fn cdf, void *params,
                              nl_error *err);
-void nl_ks_incr_free(nl_ks_incr *s);
+void nl_stats_ks_incr_free(nl_stats_ks_incr *s);
 /* Replaces one occurrence of old_value by new_value and updates d_plus,
  * d_minus, d. NL_EINVAL (state unchanged) if old_value is not in the sample or
  * new_value is not finite. To undo a move, replace new_value by old_value. */
-nl_status nl_ks_incr_replace(nl_ks_incr *s, double old_value, double new_value,
+nl_status nl_stats_ks_incr_replace(nl_stats_ks_incr *s, double old_value, double new_value,
                              nl_error *err);
-/* p-value of the current statistic, nl_ks_sf(n, d). */
-double nl_ks_incr_p(const nl_ks_incr *s);
+/* p-value of the current statistic, nl_stats_ks_sf(n, d). */
+double nl_stats_ks_incr_p(const nl_stats_ks_incr *s);
 
 typedef struct {
   double v;          /* Kuiper's V = D+ + D- */
   double d_plus, d_minus;
   double p;          /* P(V_n >= v) */
   size_t n;
-} nl_kuiper_result;
+} nl_stats_kuiper_result;
 
 /* P(V_n >= v) (see the top of this header for the method and its accuracy). */
-double nl_kuiper_sf(size_t n, double v);
-nl_status nl_kuiper_test(const double *x, size_t n, nl_cdf_fn cdf, void *params,
-                         nl_kuiper_result *res, nl_error *err);
-nl_status nl_kuiper_test_uniform(const double *x, size_t n, double a, double b,
-                                 nl_kuiper_result *res, nl_error *err);
+double nl_stats_kuiper_sf(size_t n, double v);
+nl_status nl_stats_kuiper_test(const double *x, size_t n, nl_stats_cdf_fn cdf, void *params,
+                         nl_stats_kuiper_result *res, nl_error *err);
+nl_status nl_stats_kuiper_test_uniform(const double *x, size_t n, double a, double b,
+                                 nl_stats_kuiper_result *res, nl_error *err);
 
 typedef struct {
   double chi2;
@@ -178,15 +178,15 @@ typedef struct {
   double min_expected; /* smallest expected count */
   int low_expected;    /* 1 if min_expected < 5: the p-value is unreliable */
   size_t n, k;
-} nl_chisq_result;
+} nl_stats_chisq_result;
 
 /* Pearson's test of observed counts against expected counts (k >= 2, all
  * expected > 0): scipy.stats.chisquare(observed, expected). */
-nl_status nl_chisq_test(const double *observed, const double *expected, size_t k,
-                        nl_chisq_result *res, nl_error *err);
+nl_status nl_stats_chisq_test(const double *observed, const double *expected, size_t k,
+                        nl_stats_chisq_result *res, nl_error *err);
 /* Bins x into k equal bins of [a, b) and tests against equal expected counts. */
-nl_status nl_chisq_test_uniform(const double *x, size_t n, size_t k, double a, double b,
-                                nl_chisq_result *res, nl_error *err);
+nl_status nl_stats_chisq_test_uniform(const double *x, size_t n, size_t k, double a, double b,
+                                nl_stats_chisq_result *res, nl_error *err);
 
 /* ---- two samples from their summaries -----------------------------------
  *
@@ -211,19 +211,19 @@ nl_status nl_stats_ftest_p(double s1, size_t n1, double s2, size_t n2, double *p
 typedef struct {
   size_t n;
   double *x;   /* sorted ascending */
-} nl_ecdf;
-nl_ecdf *nl_ecdf_alloc(const double *x, size_t n, nl_error *err);
-void nl_ecdf_free(nl_ecdf *e);
+} nl_stats_ecdf;
+nl_stats_ecdf *nl_stats_ecdf_alloc(const double *x, size_t n, nl_error *err);
+void nl_stats_ecdf_free(nl_stats_ecdf *e);
 /* F_n(t) = #{x_i <= t} / n, by binary search: O(log n). */
-double nl_ecdf_eval(const nl_ecdf *e, double t);
+double nl_stats_ecdf_eval(const nl_stats_ecdf *e, double t);
 
 /* A gsl_histogram with k equal bins on [a, b) holding x; values outside
  * [a, b) are counted in *outside (may be NULL) and not binned. */
-gsl_histogram *nl_histogram_uniform(const double *x, size_t n, size_t k, double a,
+gsl_histogram *nl_stats_histogram_uniform(const double *x, size_t n, size_t k, double a,
                                     double b, size_t *outside, nl_error *err);
 
-/* The bin of v among k equal bins of [a, b] by the rule nl_histogram_uniform
- * and nl_chisq_test_uniform use (numpy.histogram's): the index computed
+/* The bin of v among k equal bins of [a, b] by the rule nl_stats_histogram_uniform
+ * and nl_stats_chisq_test_uniform use (numpy.histogram's): the index computed
  * arithmetically, then corrected against the bin edges a + i (b - a)/k so
  * that a value on an edge goes to the bin the edge opens; the last bin is
  * closed, values above b clamp to it. Exported, as GSL exports
@@ -234,6 +234,6 @@ size_t nl_stats_chisq_bin(double v, size_t k, double a, double b);
 
 /* Sorts doubles ascending (introsort specialised for double: 3-4x faster
  * than qsort with a comparison callback at n = 512). NaN not allowed. */
-void nl_sort_double(double *x, size_t n);
+void nl_stats_sort(double *x, size_t n);
 
 #endif

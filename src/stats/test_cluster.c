@@ -18,9 +18,9 @@ NL_TEST(linkage_matches_scipy)
   size_t n, d;
   double *x = vec_matrix("hclust_X.tsv", &n, &d), *Z = nl_xmalloc((n - 1) * 4 * sizeof(double));
   for (int m = 0; m < 3; m++) {
-    nl_linkage_method lm;
-    NL_CHECK(nl_linkage_method_parse(methods[m], &lm, NULL) == NL_OK);
-    NL_CHECK(nl_linkage(x, n, d, lm, Z, NULL) == NL_OK);
+    nl_cluster_linkage_method lm;
+    NL_CHECK(nl_cluster_linkage_method_parse(methods[m], &lm, NULL) == NL_OK);
+    NL_CHECK(nl_cluster_linkage(x, n, d, lm, Z, NULL) == NL_OK);
     char name[64];
     snprintf(name, sizeof name, "hclust_%s_Z.tsv", methods[m]);
     nl_table *t = vec_read(name);
@@ -45,17 +45,17 @@ NL_TEST(fcluster_matches_scipy)
   double *x = vec_matrix("hclust_X.tsv", &n, &d), *Z = nl_xmalloc((n - 1) * 4 * sizeof(double));
   int *lab = nl_xmalloc(n * sizeof(int));
   for (int m = 0; m < 3; m++) {
-    nl_linkage_method lm = (nl_linkage_method)m;
-    nl_linkage(x, n, d, lm, Z, NULL);
+    nl_cluster_linkage_method lm = (nl_cluster_linkage_method)m;
+    nl_cluster_linkage(x, n, d, lm, Z, NULL);
     char name[64];
     snprintf(name, sizeof name, "hclust_%s_labels.tsv", methods[m]);
     nl_table *t = vec_read(name);
     for (size_t c = 0; c < t->ncols; c++) {
       size_t k;
       if (strncmp(t->names[c], "cut_", 4) == 0)
-        NL_CHECK(nl_fcluster_distance(Z, n, atof(t->names[c] + 4), lab, &k, NULL) == NL_OK);
+        NL_CHECK(nl_cluster_fcluster_distance(Z, n, atof(t->names[c] + 4), lab, &k, NULL) == NL_OK);
       else
-        NL_CHECK(nl_fcluster_maxclust(Z, n, (size_t)atol(t->names[c] + 9), lab, &k, NULL) == NL_OK);
+        NL_CHECK(nl_cluster_fcluster_maxclust(Z, n, (size_t)atol(t->names[c] + 9), lab, &k, NULL) == NL_OK);
       int bad = 0, kmax = 0;
       for (size_t i = 0; i < n; i++) {
         bad += lab[i] != (int)nl_table_get(t, i, c);
@@ -74,14 +74,14 @@ NL_TEST(bad_input)
   nl_error err;
   double x[] = {0, 1, NAN, 2}, Z[8];
   int lab[3];
-  NL_CHECK(nl_linkage(x, 1, 2, NL_LINKAGE_SINGLE, Z, &err) == NL_EINVAL);
-  NL_CHECK(nl_linkage(x, 2, 2, NL_LINKAGE_SINGLE, Z, &err) == NL_EINVAL);
+  NL_CHECK(nl_cluster_linkage(x, 1, 2, NL_LINKAGE_SINGLE, Z, &err) == NL_EINVAL);
+  NL_CHECK(nl_cluster_linkage(x, 2, 2, NL_LINKAGE_SINGLE, Z, &err) == NL_EINVAL);
   double y[] = {0, 1, 3};
-  NL_CHECK(nl_linkage(y, 3, 1, NL_LINKAGE_AVERAGE, Z, &err) == NL_OK);
-  NL_CHECK(nl_fcluster_distance(Z, 3, -1.0, lab, NULL, &err) == NL_EINVAL && strstr(err.msg, ">= 0"));
-  NL_CHECK(nl_fcluster_maxclust(Z, 3, 0, lab, NULL, &err) == NL_EINVAL);
-  nl_linkage_method m;
-  NL_CHECK(nl_linkage_method_parse("ward", &m, &err) == NL_EINVAL);
+  NL_CHECK(nl_cluster_linkage(y, 3, 1, NL_LINKAGE_AVERAGE, Z, &err) == NL_OK);
+  NL_CHECK(nl_cluster_fcluster_distance(Z, 3, -1.0, lab, NULL, &err) == NL_EINVAL && strstr(err.msg, ">= 0"));
+  NL_CHECK(nl_cluster_fcluster_maxclust(Z, 3, 0, lab, NULL, &err) == NL_EINVAL);
+  nl_cluster_linkage_method m;
+  NL_CHECK(nl_cluster_linkage_method_parse("ward", &m, &err) == NL_EINVAL);
 }
 
 /* 3 million rows need ~36 TB of distances: refused at once with the size
@@ -92,7 +92,7 @@ NL_TEST(linkage_refuses_what_the_machine_cannot_hold)
   double *x = calloc(n, sizeof *x);
   double *Z = malloc(4 * sizeof *Z);   /* never written: refused first */
   nl_error err = {{0}};
-  NL_CHECK(nl_linkage(x, n, 1, NL_LINKAGE_COMPLETE, Z, &err) == NL_ENOMEM);
+  NL_CHECK(nl_cluster_linkage(x, n, 1, NL_LINKAGE_COMPLETE, Z, &err) == NL_ENOMEM);
   NL_CHECK(strstr(err.msg, "3000000 rows need 36 TB for the distance matrix; this machine has") != NULL);
   if (!strstr(err.msg, "36 TB")) fprintf(stderr, "  %s\n", err.msg);
   free(x); free(Z);

@@ -45,11 +45,11 @@ NL_TEST(kstwo_distribution_matches_scipy)
   for (size_t r = 0; r < t->nrows; r++) {
     size_t n = (size_t)vec_get(t, r, "n");
     double d = vec_get(t, r, "d");
-    nl_ks_method m;
-    NL_CHECK(vec_close(nl_ks_sf(n, d, &m), vec_get(t, r, "sf"), 1e-10, 1e-300));
+    nl_stats_ks_method m;
+    NL_CHECK(vec_close(nl_stats_ks_sf(n, d, &m), vec_get(t, r, "sf"), 1e-10, 1e-300));
     methods_seen |= 1 << m;
-    NL_CHECK(vec_close(nl_ks_cdf(n, d, NULL), vec_get(t, r, "cdf"), 1e-10, 1e-300));
-    NL_CHECK(vec_close(nl_smirnov_sf(n, d), vec_get(t, r, "smirnov"), 1e-10, 1e-300));
+    NL_CHECK(vec_close(nl_stats_ks_cdf(n, d, NULL), vec_get(t, r, "cdf"), 1e-10, 1e-300));
+    NL_CHECK(vec_close(nl_stats_smirnov_sf(n, d), vec_get(t, r, "smirnov"), 1e-10, 1e-300));
   }
   /* the grid visits every one-sample method */
   NL_CHECK(methods_seen == 0x1f);
@@ -60,20 +60,20 @@ NL_TEST(kolmogorov_limit_matches_scipy)
 {
   nl_table *t = vec_read("kolmogorov.tsv");
   for (size_t r = 0; r < t->nrows; r++)
-    NL_CHECK(vec_close(nl_kolmogorov_sf(vec_get(t, r, "lambda")), vec_get(t, r, "sf"), 1e-12, 1e-300));
+    NL_CHECK(vec_close(nl_stats_kolmogorov_sf(vec_get(t, r, "lambda")), vec_get(t, r, "sf"), 1e-12, 1e-300));
   nl_table_free(t);
 }
 
 static void ks_case(const nl_table *t, size_t r, const double *x, size_t n)
 {
-  nl_ks_result res;
-  NL_CHECK(nl_ks_test_uniform(x, n, 0.0, NL_TWO_PI, &res, NULL) == NL_OK);
+  nl_stats_ks_result res;
+  NL_CHECK(nl_stats_ks_test_uniform(x, n, 0.0, NL_TWO_PI, &res, NULL) == NL_OK);
   NL_CHECK(res.n == (size_t)vec_get(t, r, "n"));
   NL_CHECK_NEAR(res.d, vec_get(t, r, "d"), 1e-15);
   NL_CHECK_NEAR(res.d_plus, vec_get(t, r, "d_plus"), 1e-15);
   NL_CHECK_NEAR(res.d_minus, vec_get(t, r, "d_minus"), 1e-15);
   NL_CHECK(vec_close(res.p, vec_get(t, r, "p"), 1e-10, 1e-300));
-  NL_CHECK(vec_close(nl_kolmogorov_sf(res.d * sqrt((double)n)), vec_get(t, r, "p_kolmogorov"),
+  NL_CHECK(vec_close(nl_stats_kolmogorov_sf(res.d * sqrt((double)n)), vec_get(t, r, "p_kolmogorov"),
                      1e-12, 1e-300));
 }
 
@@ -84,11 +84,11 @@ NL_TEST(facts_reference_numbers)
   /* FACTS.md: default_rng(0), 512 uniforms on [0, 2pi) */
   size_t n;
   double *x = read_column("ks_facts_512.tsv", &n);
-  nl_ks_result res;
-  NL_CHECK(nl_ks_test_uniform(x, n, 0.0, NL_TWO_PI, &res, NULL) == NL_OK);
+  nl_stats_ks_result res;
+  NL_CHECK(nl_stats_ks_test_uniform(x, n, 0.0, NL_TWO_PI, &res, NULL) == NL_OK);
   NL_CHECK_NEAR(res.d, 0.0638354951, 1e-10);
   NL_CHECK_NEAR(res.p, 0.02947543991, 1e-11);
-  NL_CHECK_NEAR(nl_kolmogorov_sf(res.d * sqrt(512.0)), 0.03081892888, 1e-11);
+  NL_CHECK_NEAR(nl_stats_kolmogorov_sf(res.d * sqrt(512.0)), 0.03081892888, 1e-11);
   NL_CHECK(res.method == NL_KS_PELZ_GOOD);
   free(x);
 }
@@ -100,8 +100,8 @@ NL_TEST(ks2_matches_scipy_ks_2samp)
     size_t n1, n2;
     double *x = read_column(vec_text(t, r, "file1"), &n1);
     double *y = read_column(vec_text(t, r, "file2"), &n2);
-    nl_ks_result res;
-    NL_CHECK(nl_ks2_test(x, n1, y, n2, &res, NULL) == NL_OK);
+    nl_stats_ks_result res;
+    NL_CHECK(nl_stats_ks2_test(x, n1, y, n2, &res, NULL) == NL_OK);
     NL_CHECK_NEAR(res.d, vec_get(t, r, "d"), 1e-15);
     NL_CHECK(vec_close(res.p, vec_get(t, r, "p"), 1e-10, 1e-300));
     NL_CHECK(res.method == (n1 > 10000 || n2 > 10000 ? NL_KS_TWO_SAMPLE_ASYMP
@@ -114,8 +114,8 @@ NL_TEST(ks2_matches_scipy_ks_2samp)
 
 static void kuiper_case(const nl_table *t, size_t r, const double *x, size_t n)
 {
-  nl_kuiper_result res;
-  NL_CHECK(nl_kuiper_test_uniform(x, n, 0.0, NL_TWO_PI, &res, NULL) == NL_OK);
+  nl_stats_kuiper_result res;
+  NL_CHECK(nl_stats_kuiper_test_uniform(x, n, 0.0, NL_TWO_PI, &res, NULL) == NL_OK);
   NL_CHECK_NEAR(res.v, vec_get(t, r, "v"), 1e-15);
   NL_CHECK(vec_close(res.p, vec_get(t, r, "p"), 1e-9, 1e-300));
 }
@@ -124,7 +124,7 @@ NL_TEST(kuiper_matches_astropy)
 {
   nl_table *t = vec_read("kuiper_grid.tsv");
   for (size_t r = 0; r < t->nrows; r++)
-    NL_CHECK(vec_close(nl_kuiper_sf((size_t)vec_get(t, r, "n"), vec_get(t, r, "v")),
+    NL_CHECK(vec_close(nl_stats_kuiper_sf((size_t)vec_get(t, r, "n"), vec_get(t, r, "v")),
                        vec_get(t, r, "p"), 1e-9, 1e-300));
   nl_table_free(t);
   each_sample("kuiper_one.tsv", kuiper_case);
@@ -134,7 +134,7 @@ NL_TEST(kuiper_p_within_monte_carlo_error)
 {
   nl_table *t = vec_read("kuiper_mc.tsv");
   for (size_t r = 0; r < t->nrows; r++) {
-    double p = nl_kuiper_sf((size_t)vec_get(t, r, "n"), vec_get(t, r, "v"));
+    double p = nl_stats_kuiper_sf((size_t)vec_get(t, r, "n"), vec_get(t, r, "v"));
     NL_CHECK(fabs(p - vec_get(t, r, "p_mc")) <= 4 * vec_get(t, r, "se_mc"));
   }
   nl_table_free(t);
@@ -147,17 +147,17 @@ NL_TEST(kuiper_does_not_depend_on_the_cut)
   double x[200], y[200], c = 1.0;
   for (int i = 0; i < 200; i++) x[i] = fmod(0.37 * i * i + 0.1 * i, NL_TWO_PI);
   for (int i = 0; i < 200; i++) y[i] = fmod(x[i] + c, NL_TWO_PI);
-  nl_kuiper_result a, b;
-  nl_kuiper_test_uniform(x, 200, 0, NL_TWO_PI, &a, NULL);
-  nl_kuiper_test_uniform(y, 200, 0, NL_TWO_PI, &b, NULL);
+  nl_stats_kuiper_result a, b;
+  nl_stats_kuiper_test_uniform(x, 200, 0, NL_TWO_PI, &a, NULL);
+  nl_stats_kuiper_test_uniform(y, 200, 0, NL_TWO_PI, &b, NULL);
   NL_CHECK_NEAR(a.v, b.v, 1e-12);
 }
 
 static void chisq_case(const nl_table *t, size_t r, const double *x, size_t n)
 {
-  nl_chisq_result res;
+  nl_stats_chisq_result res;
   size_t k = (size_t)vec_get(t, r, "k");
-  NL_CHECK(nl_chisq_test_uniform(x, n, k, 0.0, NL_TWO_PI, &res, NULL) == NL_OK);
+  NL_CHECK(nl_stats_chisq_test_uniform(x, n, k, 0.0, NL_TWO_PI, &res, NULL) == NL_OK);
   NL_CHECK(vec_close(res.chi2, vec_get(t, r, "chi2"), 1e-12, 0));
   NL_CHECK(res.df == (size_t)vec_get(t, r, "df"));
   NL_CHECK(vec_close(res.p, vec_get(t, r, "p"), 1e-10, 1e-300));
@@ -174,47 +174,47 @@ NL_TEST(incremental_ks_equals_full_recomputation)
   double x[N], ab[2] = {0.0, NL_TWO_PI};
   for (int i = 0; i < N; i++) x[i] = NL_TWO_PI * gsl_rng_uniform(rng);
   x[7] = x[8];   /* a tie */
-  nl_ks_incr *s = nl_ks_incr_alloc(x, N, nl_cdf_uniform, ab, NULL);
+  nl_stats_ks_incr *s = nl_stats_ks_incr_alloc(x, N, nl_stats_cdf_uniform, ab, NULL);
   NL_CHECK(s != NULL);
   int bad = 0;
   for (int move = 0; move < 20000 && s; move++) {
     size_t i = gsl_rng_uniform_int(rng, N);
     double nv = move % 3 ? fmod(x[i] + 0.05 * (gsl_rng_uniform(rng) - 0.5) + NL_TWO_PI, NL_TWO_PI)
                          : NL_TWO_PI * gsl_rng_uniform(rng);
-    if (nl_ks_incr_replace(s, x[i], nv, NULL) != NL_OK) { bad++; continue; }
+    if (nl_stats_ks_incr_replace(s, x[i], nv, NULL) != NL_OK) { bad++; continue; }
     x[i] = nv;
     if (move % 97 == 0 || move > 19900) {
-      nl_ks_result full;
-      nl_ks_test_uniform(x, N, 0.0, NL_TWO_PI, &full, NULL);
+      nl_stats_ks_result full;
+      nl_stats_ks_test_uniform(x, N, 0.0, NL_TWO_PI, &full, NULL);
       bad += s->d != full.d || s->d_plus != full.d_plus || s->d_minus != full.d_minus;
-      bad += nl_ks_incr_p(s) != full.p;
+      bad += nl_stats_ks_incr_p(s) != full.p;
     }
   }
   NL_CHECK(bad == 0);
   nl_error err;
-  NL_CHECK(nl_ks_incr_replace(s, -1.0, 0.5, &err) == NL_EINVAL);
-  NL_CHECK(nl_ks_incr_replace(s, x[0], NAN, &err) == NL_EINVAL);
-  nl_ks_incr_free(s);
+  NL_CHECK(nl_stats_ks_incr_replace(s, -1.0, 0.5, &err) == NL_EINVAL);
+  NL_CHECK(nl_stats_ks_incr_replace(s, x[0], NAN, &err) == NL_EINVAL);
+  nl_stats_ks_incr_free(s);
   gsl_rng_free(rng);
 }
 
 NL_TEST(ecdf_histogram_and_sort)
 {
   double x[] = {3, 1, 2, 2, 5};
-  nl_ecdf *e = nl_ecdf_alloc(x, 5, NULL);
-  NL_CHECK(nl_ecdf_eval(e, 0.5) == 0.0);
-  NL_CHECK(nl_ecdf_eval(e, 2.0) == 0.6);
-  NL_CHECK(nl_ecdf_eval(e, 4.9) == 0.8);
-  NL_CHECK(nl_ecdf_eval(e, 5.0) == 1.0);
-  nl_ecdf_free(e);
+  nl_stats_ecdf *e = nl_stats_ecdf_alloc(x, 5, NULL);
+  NL_CHECK(nl_stats_ecdf_eval(e, 0.5) == 0.0);
+  NL_CHECK(nl_stats_ecdf_eval(e, 2.0) == 0.6);
+  NL_CHECK(nl_stats_ecdf_eval(e, 4.9) == 0.8);
+  NL_CHECK(nl_stats_ecdf_eval(e, 5.0) == 1.0);
+  nl_stats_ecdf_free(e);
   size_t out;
-  gsl_histogram *h = nl_histogram_uniform(x, 5, 4, 1.0, 5.0, &out, NULL);
+  gsl_histogram *h = nl_stats_histogram_uniform(x, 5, 4, 1.0, 5.0, &out, NULL);
   NL_CHECK(out == 0 && h->bin[0] == 1 && h->bin[1] == 2 && h->bin[2] == 1 && h->bin[3] == 1);
   gsl_histogram_free(h);
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
   double y[3000];
   for (int i = 0; i < 3000; i++) y[i] = (double)gsl_rng_uniform_int(rng, 50);  /* many ties */
-  nl_sort_double(y, 3000);
+  nl_stats_sort(y, 3000);
   int sorted = 1;
   for (int i = 1; i < 3000; i++) sorted &= y[i - 1] <= y[i];
   NL_CHECK(sorted);
@@ -224,15 +224,15 @@ NL_TEST(ecdf_histogram_and_sort)
 NL_TEST(bad_input_is_an_error)
 {
   nl_error err;
-  nl_ks_result r;
+  nl_stats_ks_result r;
   double x[] = {0.1, NAN, 0.3};
-  NL_CHECK(nl_ks_test_uniform(x, 3, 0, 1, &r, &err) == NL_EINVAL && strstr(err.msg, "value 2"));
-  NL_CHECK(nl_ks_test_uniform(x, 0, 0, 1, &r, &err) == NL_EINVAL);
-  NL_CHECK(nl_ks_test_uniform(x, 1, 1, 1, &r, &err) == NL_EINVAL);
-  nl_chisq_result c;
+  NL_CHECK(nl_stats_ks_test_uniform(x, 3, 0, 1, &r, &err) == NL_EINVAL && strstr(err.msg, "value 2"));
+  NL_CHECK(nl_stats_ks_test_uniform(x, 0, 0, 1, &r, &err) == NL_EINVAL);
+  NL_CHECK(nl_stats_ks_test_uniform(x, 1, 1, 1, &r, &err) == NL_EINVAL);
+  nl_stats_chisq_result c;
   double y[] = {0.1, 0.2, 1.5};
-  NL_CHECK(nl_chisq_test_uniform(y, 3, 1, 0, 1, &c, &err) == NL_EINVAL);
-  NL_CHECK(nl_chisq_test_uniform(y, 3, 2, 0, 1, &c, &err) == NL_EINVAL && strstr(err.msg, "outside"));
+  NL_CHECK(nl_stats_chisq_test_uniform(y, 3, 1, 0, 1, &c, &err) == NL_EINVAL);
+  NL_CHECK(nl_stats_chisq_test_uniform(y, 3, 2, 0, 1, &c, &err) == NL_EINVAL && strstr(err.msg, "outside"));
 }
 
 int main(void) { return nl_test_run(); }

@@ -12,41 +12,41 @@ static void put(const char *prefix, const char *what, char *buf, size_t n)
   snprintf(buf, n, "%s_%s", prefix, what);
 }
 
-nl_table *nl_study_series(nl_run *r, const char *prefix, const char *title, nl_basis_kind kind,
-                          const nl_setting *settings, int n, const nl_window *win)
+nl_table *nl_study_series(nl_harness *r, const char *prefix, const char *title, nl_study_basis_kind kind,
+                          const nl_study_setting *settings, int n, const nl_noise_window *win)
 {
   nl_table *dist, *spec;
   nl_image **panels = nl_xcalloc((size_t)n, sizeof *panels);
   const char **labels = nl_xcalloc((size_t)n, sizeof *labels);
   for (int i = 0; i < n; i++) labels[i] = settings[i].label;
-  nl_survey_series(kind, settings, n, win, nl_run_seed(r), nl_run_seeds(r), &dist, &spec, panels);
-  nl_image *m = nl_montage((const nl_image *const *)panels, labels, n, n, title);
+  nl_study_survey_series(kind, settings, n, win, nl_harness_seed(r), nl_harness_seeds(r), &dist, &spec, panels);
+  nl_image *m = nl_image_montage((const nl_image *const *)panels, labels, n, n, title);
   char f[256], cap[512];
   put(prefix, "panels.png", f, sizeof f);
-  nl_run_image(r, m, f);
+  nl_harness_write_image(r, m, f);
   snprintf(cap, sizeof cap, "%s (%d x %d, each panel from mean - 3 sd to mean + 3 sd)", title, win->w, win->h);
-  nl_report_figure(r, f, cap);
+  nl_harness_figure(r, f, cap);
   put(prefix, "distribution.tsv", f, sizeof f);
-  nl_run_table(r, dist, f);
+  nl_harness_write_table(r, dist, f);
   snprintf(cap, sizeof cap, "Values over %d seeds (%s): mean and sd of the per-seed mean and sd, "
-           "mean min and max, largest |value| seen against the analytic bound", nl_run_seeds(r), f);
-  nl_report_table(r, dist, cap, 4);
+           "mean min and max, largest |value| seen against the analytic bound", nl_harness_seeds(r), f);
+  nl_harness_report_table(r, dist, cap, 4);
   put(prefix, "spectrum.tsv", f, sizeof f);
-  nl_run_table(r, spec, f);
+  nl_harness_write_table(r, spec, f);
   /* Regression rules (scripts/noiselab check): mean and sd are means over
    * seeds with their spreads beside them, compared as statistics so that a
    * new random stream passes and a shift fails. Everything else, the
    * spectrum included, is exact for a seed: GSL's FFT has no CPU-dependent
    * plan, and no value moved over the CPU configurations of
-   * bench/blas-spread.sh (the experiment's nl_run_check_measured). */
+   * bench/blas-spread.sh (the experiment's nl_harness_check_measured). */
   char dname[256];
   put(prefix, "distribution.tsv", dname, sizeof dname);
-  nl_run_check(r, dname, "mean", "welch mean_sd 1e-3");
-  nl_run_check(r, dname, "sd", "welch sd_sd 1e-3");
-  nl_run_check(r, dname, "mean_sd", "ftest 1e-3");
-  nl_run_check(r, dname, "sd_sd", "ftest 1e-3");
+  nl_harness_check(r, dname, "mean", "welch mean_sd 1e-3");
+  nl_harness_check(r, dname, "sd", "welch sd_sd 1e-3");
+  nl_harness_check(r, dname, "mean_sd", "ftest 1e-3");
+  nl_harness_check(r, dname, "sd_sd", "ftest 1e-3");
   put(prefix, "spectrum.png", f, sizeof f);
-  nl_report_figure(r, f, "Radially averaged power spectrum, mean over seeds");
+  nl_harness_figure(r, f, "Radially averaged power spectrum, mean over seeds");
   for (int i = 0; i < n; i++) nl_image_free(panels[i]);
   free(panels); free(labels);
   nl_image_free(m);
@@ -54,48 +54,48 @@ nl_table *nl_study_series(nl_run *r, const char *prefix, const char *title, nl_b
   return dist;
 }
 
-void nl_study_octave_settings(const int *oct, int n, int turbulence, nl_setting *settings,
+void nl_study_octave_settings(const int *oct, int n, int turbulence, nl_study_setting *settings,
                               char (*labels)[32])
 {
   for (int i = 0; i < n; i++) {
     snprintf(labels[i], 32, "(%c) %d octave%s", 'a' + i, oct[i], oct[i] > 1 ? "s" : "");
     settings[i].label = labels[i];
-    settings[i].oct = nl_octaves_fractal(oct[i]);
+    settings[i].oct = nl_noise_octaves_fractal(oct[i]);
     settings[i].oct.turbulence = turbulence;
     settings[i].gain = 0.5;
     settings[i].lacunarity = 2;
   }
 }
 
-nl_window nl_study_window(nl_run *r)
+nl_noise_window nl_study_window(nl_harness *r)
 {
-  int size = (int)nl_run_param_int(r, "size", nl_run_quick(r) ? 128 : 512, 16, 4096,
+  int size = (int)nl_harness_param_int(r, "size", nl_harness_quick(r) ? 128 : 512, 16, 4096,
                                    "image side in pixels of each survey slice (quick 128)");
-  double extent = nl_run_param(r, "extent", 4.0, 1e-3, 1e4,
+  double extent = nl_harness_param(r, "extent", 4.0, 1e-3, 1e4,
                                "side of the noise-space square [0, extent)^2 the slice covers");
-  double z = nl_run_param(r, "z", 0.5, -1e6, 1e6,
+  double z = nl_harness_param(r, "z", 0.5, -1e6, 1e6,
                           "z of the 2D slice through Perlin's improved 3D noise");
-  nl_window w = {0, 0, z, extent, size, size};
+  nl_noise_window w = {0, 0, z, extent, size, size};
   return w;
 }
 
-nl_table *nl_study_octave_series(nl_run *r, const nl_window *win, int turbulence, const char *slides,
+nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int turbulence, const char *slides,
                                  const char *prefix, const char *title)
 {
-  nl_report_text(r, "**Slides:** %s **Ours:** the slice z = %g of Perlin's improved 3D noise over "
-                    "[0, %g)^2, %d seeds for the numbers.\n", slides, win->z, win->size, nl_run_seeds(r));
+  nl_harness_text(r, "**Slides:** %s **Ours:** the slice z = %g of Perlin's improved 3D noise over "
+                    "[0, %g)^2, %d seeds for the numbers.\n", slides, win->z, win->size, nl_harness_seeds(r));
   const int oct[] = {1, 2, 3, 8};   /* the slides' panels (a)-(d) */
-  nl_setting st[4];
+  nl_study_setting st[4];
   char labels[4][32];
   nl_study_octave_settings(oct, 4, turbulence, st, labels);
   return nl_study_series(r, prefix, title, NL_BASIS_IMPROVED3, st, 4, win);
 }
 
-void nl_study_montage(nl_run *r, const nl_image *const *panels, const char *const *labels, int n,
+void nl_study_montage(nl_harness *r, const nl_image *const *panels, const char *const *labels, int n,
                       int cols, const char *title, const char *file)
 {
-  nl_image *m = nl_montage(panels, labels, n, cols, title);
-  nl_run_image(r, m, file);
+  nl_image *m = nl_image_montage(panels, labels, n, cols, title);
+  nl_harness_write_image(r, m, file);
   nl_image_free(m);
 }
 
@@ -108,7 +108,7 @@ nl_table *nl_study_radial_table(const double *const *img, const char *const *col
   for (int i = 0; i < n; i++) names[i + 1] = cols[i];
   nl_table *t = nl_table_alloc((size_t)n + 1, names);
   double *f = nl_xmalloc((size_t)nbins * sizeof *f), *p = nl_xmalloc((size_t)n * nbins * sizeof *p);
-  for (int i = 0; i < n; i++) nl_radial_power(img[i], size, size, nbins, f, p + (size_t)i * nbins);
+  for (int i = 0; i < n; i++) nl_spectrum_radial(img[i], size, size, nbins, f, p + (size_t)i * nbins);
   for (int b = first; b < nbins; b++) {
     size_t row = nl_table_append_empty(t);
     nl_table_set(t, row, "freq", f[b]);
@@ -123,10 +123,10 @@ double nl_study_ks_channels(const nl_image *a, const nl_image *b, double *per)
   size_t n = (size_t)a->width * a->height, m = (size_t)b->width * b->height;
   double *x = nl_xmalloc(n * sizeof *x), *y = nl_xmalloc(m * sizeof *y), s = 0;
   for (int c = 0; c < 3; c++) {
-    nl_ks_result res;
-    nl_example_channel(a, c, x);
-    nl_example_channel(b, c, y);
-    nl_ks2_test(x, n, y, m, &res, NULL);
+    nl_stats_ks_result res;
+    nl_byexample_channel(a, c, x);
+    nl_byexample_channel(b, c, y);
+    nl_stats_ks2_test(x, n, y, m, &res, NULL);
     if (per) per[c] = res.d;
     s += res.d / 3;
   }

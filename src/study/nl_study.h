@@ -3,7 +3,7 @@
  * nl_study_series: a row of panels (the slides' (a), (b), ...) of sums of
  * octaves, one per setting, surveyed over the run's seeds. It writes
  *   PREFIX_panels.png        the first seed's raster of each setting, labelled
- *   PREFIX_distribution.tsv  value distribution per setting (nl_survey_series)
+ *   PREFIX_distribution.tsv  value distribution per setting (nl_study_survey_series)
  *   PREFIX_spectrum.tsv      seed-averaged radial power per setting
  * into the run's folder and adds them to the report; the spectrum figure is
  * PREFIX_spectrum.png, drawn by scripts/gnuplot/NAME-PREFIX_spectrum.gp.
@@ -13,22 +13,22 @@
 #ifndef NL_STUDY_H
 #define NL_STUDY_H
 
-#include "example/nl_example.h"
+#include "byexample/nl_byexample.h"
 #include "image/nl_image.h"
 #include "noise/nl_noise.h"
-#include "report/nl_report.h"
+#include "harness/nl_harness.h"
 #include "table/nl_table.h"
 
 /* ---- surveys: what a sum of octaves looks like, over seeds -------------
  *
- * nl_survey_run evaluates a sum of octaves of the chosen basis (a fresh
+ * nl_study_survey_run evaluates a sum of octaves of the chosen basis (a fresh
  * table per seed: seed0, seed0+1, ...) on a window and records, per seed, the
  * value distribution (mean, sd, min, max) and the radially averaged power
  * spectrum (frequency in cycles per unit of the window, power normalised as
- * nl_radial_power), plus the first seed's raster for pictures. Experiments
+ * nl_spectrum_radial), plus the first seed's raster for pictures. Experiments
  * S1-S4 and sweeps use it so the numbers and the picture come from one pass.
  */
-typedef enum { NL_BASIS_GRAD2 = 0, NL_BASIS_IMPROVED3 = 1 } nl_basis_kind;
+typedef enum { NL_BASIS_GRAD2 = 0, NL_BASIS_IMPROVED3 = 1 } nl_study_basis_kind;
 
 typedef struct {
   int nseeds, nbins, w, h;
@@ -37,11 +37,11 @@ typedef struct {
   double *freq;                   /* nbins, cycles per unit */
   double *power;                  /* nseeds * nbins */
   double *first;                  /* w * h values of the first seed */
-} nl_survey;
+} nl_study_survey;
 
-nl_survey *nl_survey_run(nl_basis_kind kind, const nl_octaves *o, const nl_window *win,
+nl_study_survey *nl_study_survey_run(nl_study_basis_kind kind, const nl_noise_octaves *o, const nl_noise_window *win,
                          unsigned long seed0, int nseeds);
-void nl_survey_free(nl_survey *s);
+void nl_study_survey_free(nl_study_survey *s);
 
 /* A series of surveys, one per setting (the slides' panels (a), (b), ...):
  *  dist     one row per setting: label, octaves, gain, lacunarity (as given
@@ -55,38 +55,38 @@ void nl_survey_free(nl_survey *s);
  *           from [mean - 3 sd, mean + 3 sd] to [0, 1] (each panel its own
  *           contrast; the table carries the amplitudes).
  * Any output pointer may be NULL. */
-typedef struct { const char *label; nl_octaves oct; double gain, lacunarity; } nl_setting;
-void nl_survey_series(nl_basis_kind kind, const nl_setting *settings, int n,
-                      const nl_window *win, unsigned long seed0, int nseeds,
+typedef struct { const char *label; nl_noise_octaves oct; double gain, lacunarity; } nl_study_setting;
+void nl_study_survey_series(nl_study_basis_kind kind, const nl_study_setting *settings, int n,
+                      const nl_noise_window *win, unsigned long seed0, int nseeds,
                       nl_table **dist, nl_table **spectrum, nl_image **panels);
 
-nl_table *nl_study_series(nl_run *r, const char *prefix, const char *title, nl_basis_kind kind,
-                          const nl_setting *settings, int n, const nl_window *win);
+nl_table *nl_study_series(nl_harness *r, const char *prefix, const char *title, nl_study_basis_kind kind,
+                          const nl_study_setting *settings, int n, const nl_noise_window *win);
 
 /* The square window of the S experiments from the run's parameters:
  * size (pixels; 512, or 128 with --quick), extent (4 units) and z (0.5). */
-nl_window nl_study_window(nl_run *r);
+nl_noise_window nl_study_window(nl_harness *r);
 
 /* Fills settings[i] for octave counts oct[i] of Shaffer's fractal sum (gain
  * 1/2, lacunarity 2), optionally turbulent; labels "(a) 1 octave" are
  * written into labels[i] (32 bytes each). */
-void nl_study_octave_settings(const int *oct, int n, int turbulence, nl_setting *settings,
+void nl_study_octave_settings(const int *oct, int n, int turbulence, nl_study_setting *settings,
                               char (*labels)[32]);
 
 /* S1 and S2: Shaffer's sums at 1, 2, 3 and 8 octaves (fractal sum, or
  * turbulence when `turbulence`), introduced by one paragraph ("**Slides:**
  * SLIDES **Ours:** the slice z = ... over [0, size)^2, K seeds ...") and
  * surveyed by nl_study_series. Returns the distribution table (caller frees). */
-nl_table *nl_study_octave_series(nl_run *r, const nl_window *win, int turbulence, const char *slides,
+nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int turbulence, const char *slides,
                                  const char *prefix, const char *title);
 
-/* Lays panels out in a montage of `cols` columns (nl_montage), writes it as
- * FILE in the run's folder (nl_run_image) and frees it: the figure step that
+/* Lays panels out in a montage of `cols` columns (nl_image_montage), writes it as
+ * FILE in the run's folder (nl_harness_write_image) and frees it: the figure step that
  * most experiments end a loop with. */
-void nl_study_montage(nl_run *r, const nl_image *const *panels, const char *const *labels, int n,
+void nl_study_montage(nl_harness *r, const nl_image *const *panels, const char *const *labels, int n,
                       int cols, const char *title, const char *file);
 
-/* Radially averaged power (nl_radial_power, size / 2 bins, cycles per
+/* Radially averaged power (nl_spectrum_radial, size / 2 bins, cycles per
  * pixel) of n square size x size rasters: column "freq" then one column per
  * raster named cols[i]; rows from bin `first` on. */
 nl_table *nl_study_radial_table(const double *const *img, const char *const *cols, int n, int size,

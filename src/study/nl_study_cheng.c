@@ -9,52 +9,52 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void run_params(nl_run *r, nl_cheng_config *c, int *grid)
+static void run_params(nl_harness *r, nl_cheng_config *c, int *grid)
 {
-  int q = nl_run_quick(r);
+  int q = nl_harness_quick(r);
   *c = nl_cheng_config_default();
-  *grid = (int)nl_run_param_int(r, "grid", 64, 2, 1024,
+  *grid = (int)nl_harness_param_int(r, "grid", 64, 2, 1024,
                                 "control grid G: the pattern is read as G x G control cells over the unit square");   /* see nl_cheng.h on grid vs f */
-  c->w1 = nl_run_param(r, "w1", c->w1, 0, 1e6,
+  c->w1 = nl_harness_param(r, "w1", c->w1, 0, 1e6,
                        "weight w1 of the statistic term E_KS in E = w1 E_KS + w2 E_Con (Cheng eq. 3.9; thesis 0.995)");
-  c->w2 = nl_run_param(r, "w2", c->w2, 0, 1e6,
+  c->w2 = nl_harness_param(r, "w2", c->w2, 0, 1e6,
                        "weight w2 of the control term E_Con in E = w1 E_KS + w2 E_Con (Cheng eq. 3.9; thesis 0.005)");
-  c->f1 = nl_run_param(r, "f1", c->f1, 0, 1024,
+  c->f1 = nl_harness_param(r, "f1", c->f1, 0, 1024,
                        "starting frequency f1 of the fractal sum, f_l = f1 2^(l-1) (Cheng eq. 3.10; thesis 8)");
-  c->a1 = nl_run_param(r, "a1", c->a1, 1e-6, 1e6,
+  c->a1 = nl_harness_param(r, "a1", c->a1, 1e-6, 1e6,
                        "first octave's amplitude divisor a1, a_l = a1 2^(l-1) (Cheng eq. 3.10; thesis 4)");
-  c->octaves = (int)nl_run_param_int(r, "octaves", c->octaves, 1, NL_CHENG_MAX_OCTAVES,
+  c->octaves = (int)nl_harness_param_int(r, "octaves", c->octaves, 1, NL_CHENG_MAX_OCTAVES,
                                      "octaves F of the fractal sum, one annealing level each (thesis 4)");
-  c->sched.n_temps = (int)nl_run_param_int(r, "temps", q ? 8 : c->sched.n_temps, 1, 100000,
+  c->sched.n_temps = (int)nl_harness_param_int(r, "temps", q ? 8 : c->sched.n_temps, 1, 100000,
                                            "annealing temperature steps per level (n_temps; quick 8)");
-  c->sched.moves_per_var = nl_run_param(r, "moves_per_var", q ? 5 : c->sched.moves_per_var, 1e-3, 1e6,
+  c->sched.moves_per_var = nl_harness_param(r, "moves_per_var", q ? 5 : c->sched.moves_per_var, 1e-3, 1e6,
                                         "annealing moves per temperature, as a multiple of the level's variables (quick 5)");
 }
 
-nl_run *nl_cheng_begin(const char *name, const char *title, int *argc, char **argv,
+nl_harness *nl_study_cheng_begin(const char *name, const char *title, int *argc, char **argv,
                        nl_cheng_config *c, int *grid, const char **patterns)
 {
   nl_error err;
-  if (nl_cheng_patterns_parse(argc, argv, patterns, &err)) {
+  if (nl_study_cheng_patterns_parse(argc, argv, patterns, &err)) {
     fprintf(stderr, "%s: %s\n", name, err.msg);
     exit(2);
   }
-  nl_run *r = nl_run_begin(name, title, *argc, argv);
+  nl_harness *r = nl_harness_begin(name, title, *argc, argv);
   run_params(r, c, grid);
-  /* Every pattern loads before the output folder is touched (nl_run_begin
+  /* Every pattern loads before the output folder is touched (nl_harness_begin
    * does not touch it; the first write does). */
-  if (nl_cheng_patterns_check(*patterns, *grid, &err))
-    nl_run_die(r, 2, "control patterns: %s (make them with build/tools/noiselab-patterns "
+  if (nl_study_cheng_patterns_check(*patterns, *grid, &err))
+    nl_harness_die(r, 2, "control patterns: %s (make them with build/tools/noiselab-patterns "
                      "data/patterns, or pass --patterns DIR)", err.msg);
   return r;
 }
 
-void nl_cheng_params_done(nl_run *r, const nl_cheng_config *c, const char *patterns)
+void nl_study_cheng_params_done(nl_harness *r, const nl_cheng_config *c, const char *patterns)
 {
-  nl_run_params_done(r);
+  nl_harness_params_done(r);
   nl_error err;
-  if (nl_cheng_config_check(c, &err)) nl_run_die(r, 2, "%s", err.msg);
-  nl_run_note(r, "patterns", "%s", patterns);
+  if (nl_cheng_config_check(c, &err)) nl_harness_die(r, 2, "%s", err.msg);
+  nl_harness_note(r, "patterns", "%s", patterns);
 }
 
 static const char *const summary_cols[] = {
@@ -63,7 +63,7 @@ static const char *const summary_cols[] = {
   "uniform_ks", "uniform_kuiper", "roughness", "roughness_sd"};
 #define NSUM (sizeof summary_cols / sizeof *summary_cols)
 
-nl_table *nl_cheng_summary_alloc(int nlabels, const char *const *labels)
+nl_table *nl_study_cheng_summary_alloc(int nlabels, const char *const *labels)
 {
   const char *names[32];
   for (int i = 0; i < nlabels; i++) names[i] = labels[i];
@@ -92,7 +92,7 @@ static double frac_at_least(const double *x, int k, double a)
 /* Appends one row: label cells as text (numbers read back as numbers), then
  * the mean (and sd, min) over the k runs; uniform_* = fraction of runs whose
  * p-value is >= 0.05 (not rejected as non-uniform at alpha = 0.05). */
-void nl_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
+void nl_study_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
                           const nl_cheng_eval *evs, int k)
 {
   double *x = nl_xmalloc((size_t)k * sizeof *x), row[NSUM];
@@ -118,7 +118,7 @@ void nl_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
   free(x);
 }
 
-nl_table *nl_cheng_cdf_table(const nl_grad2 *const *tables, const char *const *names, int n)
+nl_table *nl_study_cheng_cdf_table(const nl_noise_grad2 *const *tables, const char *const *names, int n)
 {
   const char *cols[16];
   char buf[16][48];
@@ -129,7 +129,7 @@ nl_table *nl_cheng_cdf_table(const nl_grad2 *const *tables, const char *const *n
   double *sorted = nl_xmalloc((size_t)n * m * sizeof *sorted), row[16];
   for (int i = 0; i < n; i++) {
     memcpy(sorted + (size_t)i * m, tables[i]->angle, m * sizeof *sorted);
-    nl_sort_double(sorted + (size_t)i * m, m);
+    nl_stats_sort(sorted + (size_t)i * m, m);
   }
   for (size_t q = 0; q < m; q++) {
     row[0] = (double)(q + 1) / (double)m;   /* ECDF just after the q-th order statistic */
@@ -140,7 +140,7 @@ nl_table *nl_cheng_cdf_table(const nl_grad2 *const *tables, const char *const *n
   return t;
 }
 
-nl_table *nl_cheng_hist_table(const nl_grad2 *const *tables, const char *const *names, int n,
+nl_table *nl_study_cheng_hist_table(const nl_noise_grad2 *const *tables, const char *const *names, int n,
                               size_t bins)
 {
   const char *cols[16];
@@ -148,7 +148,7 @@ nl_table *nl_cheng_hist_table(const nl_grad2 *const *tables, const char *const *
   for (int i = 0; i < n; i++) cols[i + 1] = names[i];
   nl_table *t = nl_table_alloc((size_t)n + 1, cols);
   gsl_histogram *h[16];
-  for (int i = 0; i < n; i++) h[i] = nl_histogram_uniform(tables[i]->angle, tables[i]->m, bins, 0, NL_TWO_PI, NULL, NULL);
+  for (int i = 0; i < n; i++) h[i] = nl_stats_histogram_uniform(tables[i]->angle, tables[i]->m, bins, 0, NL_TWO_PI, NULL, NULL);
   double row[16];
   for (size_t b = 0; b < bins; b++) {
     row[0] = (b + 0.5) * NL_TWO_PI / (double)bins;
@@ -159,7 +159,7 @@ nl_table *nl_cheng_hist_table(const nl_grad2 *const *tables, const char *const *
   return t;
 }
 
-nl_table *nl_cheng_matrix_table(const double *v, int w, int h)
+nl_table *nl_study_cheng_matrix_table(const double *v, int w, int h)
 {
   char (*names)[16] = nl_xmalloc((size_t)w * sizeof *names);
   const char **cols = nl_xmalloc((size_t)w * sizeof *cols);
@@ -173,35 +173,35 @@ nl_table *nl_cheng_matrix_table(const double *v, int w, int h)
 
 void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title, int *argc, char **argv)
 {
-  s->r = nl_cheng_begin(name, title, argc, argv, &s->c, &s->grid, &s->patterns);
+  s->r = nl_study_cheng_begin(name, title, argc, argv, &s->c, &s->grid, &s->patterns);
 }
 
-void nl_study_cheng_ready(nl_study_cheng *s) { nl_cheng_params_done(s->r, &s->c, s->patterns); }
+void nl_study_cheng_ready(nl_study_cheng *s) { nl_study_cheng_params_done(s->r, &s->c, s->patterns); }
 
 nl_cheng_pattern *nl_study_cheng_pattern(const nl_study_cheng *s, const char *name)
 {
-  return nl_cheng_pattern_load_or_die(nl_run_name(s->r), s->patterns, name, s->grid);
+  return nl_study_cheng_pattern_load_or_die(nl_harness_name(s->r), s->patterns, name, s->grid);
 }
 
-nl_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_config *c,
+nl_noise_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_config *c,
                                const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
                                const char *const *labels)
 {
-  int k = nl_run_seeds(s->r);
+  int k = nl_harness_seeds(s->r);
   nl_cheng_eval *evs = nl_xmalloc((size_t)k * sizeof *evs);
-  nl_grad2 *first;
+  nl_noise_grad2 *first;
   nl_error err;
-  if (nl_cheng_run_seeds(c, pat, nl_run_seed(s->r), k, evs, &first, &err)) nl_run_die(s->r, 1, "%s", err.msg);
-  nl_cheng_summary_add(sum, nlabels, labels, evs, k);
+  if (nl_cheng_run_seeds(c, pat, nl_harness_seed(s->r), k, evs, &first, &err)) nl_harness_die(s->r, 1, "%s", err.msg);
+  nl_study_cheng_summary_add(sum, nlabels, labels, evs, k);
   free(evs);
   return first;
 }
 
-void nl_study_cheng_montage(nl_run *r, nl_image **panels, const char *const *labels, int n, int cols,
+void nl_study_cheng_montage(nl_harness *r, nl_image **panels, const char *const *labels, int n, int cols,
                             const char *title, const char *file)
 {
-  nl_image *m = nl_montage((const nl_image *const *)panels, labels, n, cols, title);
-  nl_run_image(r, m, file);
+  nl_image *m = nl_image_montage((const nl_image *const *)panels, labels, n, cols, title);
+  nl_harness_write_image(r, m, file);
   nl_image_free(m);
   for (int i = 0; i < n; i++) nl_image_free(panels[i]);
 }

@@ -7,17 +7,17 @@
  * 4.2-4.4 with the chain original -> pool that C5 and C6 share.
  *
  * API
- *   patterns  nl_cheng_pattern_from_image, nl_cheng_pattern_read,
- *             nl_cheng_pattern_image, nl_cheng_shape, nl_cheng_shape_names,
- *             nl_cheng_patterns_parse, nl_cheng_patterns_check,
- *             nl_cheng_pattern_load_or_die                  (nl_study_cheng_image.c)
- *   images    nl_cheng_texture, nl_cheng_grey_image, nl_cheng_value_image,
- *             nl_cheng_texture_image, nl_cheng_pattern_panel (nl_study_cheng_image.c)
- *   runs      nl_cheng_begin, nl_cheng_params_done, nl_cheng_summary_alloc / _add,
- *             nl_cheng_cdf_table, nl_cheng_hist_table, nl_cheng_matrix_table,
+ *   patterns  nl_study_cheng_pattern_from_image, nl_study_cheng_pattern_read,
+ *             nl_study_cheng_pattern_image, nl_study_cheng_shape, nl_study_cheng_shape_names,
+ *             nl_study_cheng_patterns_parse, nl_study_cheng_patterns_check,
+ *             nl_study_cheng_pattern_load_or_die                  (nl_study_cheng_image.c)
+ *   images    nl_study_cheng_texture, nl_study_cheng_grey_image, nl_study_cheng_value_image,
+ *             nl_study_cheng_texture_image, nl_study_cheng_pattern_panel (nl_study_cheng_image.c)
+ *   runs      nl_study_cheng_begin, nl_study_cheng_params_done, nl_study_cheng_summary_alloc / _add,
+ *             nl_study_cheng_cdf_table, nl_study_cheng_hist_table, nl_study_cheng_matrix_table,
  *             nl_study_mean, nl_study_sd, nl_study_min  (nl_study_cheng.c)
- *   C5, C6    nl_cheng_thesis_gmm_tables, nl_cheng_repro_params,
- *             nl_cheng_repro_original / _pool / _clear  (nl_study_cheng_repro.c)
+ *   C5, C6    nl_study_cheng_thesis_gmm_tables, nl_study_cheng_repro_params,
+ *             nl_study_cheng_repro_original / _pool / _clear  (nl_study_cheng_repro.c)
  *
  * The names keep their cheng prefix for now (they moved here from src/cheng;
  * the project-wide rename to nl_<module>_<verb> comes later).
@@ -28,37 +28,37 @@
 #include "cheng/nl_cheng.h"
 #include "cheng/nl_cheng_repro.h"
 #include "image/nl_image.h"
-#include "report/nl_report.h"
+#include "harness/nl_harness.h"
 #include "table/nl_table.h"
 
 /* ---- control patterns from images (sec. 3.4.1) -------------------------- */
 
 /* From an RGBA/RGB/grey image: D = red (grey) channel, alpha 0 = no control.
  * NL_EINVAL if no cell carries control or grid < 1. */
-nl_status nl_cheng_pattern_from_image(const nl_image *im, int grid, nl_cheng_pattern **out,
+nl_status nl_study_cheng_pattern_from_image(const nl_image *im, int grid, nl_cheng_pattern **out,
                                       nl_error *err);
-nl_status nl_cheng_pattern_read(const char *path, int grid, nl_cheng_pattern **out,
+nl_status nl_study_cheng_pattern_read(const char *path, int grid, nl_cheng_pattern **out,
                                 nl_error *err);
 /* The pattern as an RGB image (grid x grid): red = D, no-control cells grey. */
-nl_image *nl_cheng_pattern_image(const nl_cheng_pattern *p);
+nl_image *nl_study_cheng_pattern_image(const nl_cheng_pattern *p);
 
 /* Built-in shapes for the shipped patterns (tools/patterns.c): "flower", "x",
  * "star", "rings", "disc", "letter" (an "N"), "gradient", "spiral". RGBA size x
  * size, red = 1 inside, black outside, alpha 1 everywhere except "disc", whose
  * outer corners are transparent (no control) to exercise alpha. NULL if unknown. */
-nl_image *nl_cheng_shape(const char *name, int size);
-extern const char *const nl_cheng_shape_names[];   /* NULL-terminated */
+nl_image *nl_study_cheng_shape(const char *name, int size);
+extern const char *const nl_study_cheng_shape_names[];   /* NULL-terminated */
 
-/* Removes "--patterns DIR" from argv (before nl_run_begin sees it) and sets
+/* Removes "--patterns DIR" from argv (before nl_harness_begin sees it) and sets
  * *dir to DIR, or "data/patterns" (experiments run from the repository root);
  * "--patterns: missing value" on error. */
-nl_status nl_cheng_patterns_parse(int *argc, char **argv, const char **dir, nl_error *err);
+nl_status nl_study_cheng_patterns_parse(int *argc, char **argv, const char **dir, nl_error *err);
 /* A pattern folder is what tools/patterns.c writes: the folder exists and
- * every shape of nl_cheng_shape_names is there as NAME.png and reads as a
+ * every shape of nl_study_cheng_shape_names is there as NAME.png and reads as a
  * pattern at `grid`. Checked before an experiment touches its output. */
-nl_status nl_cheng_patterns_check(const char *dir, int grid, nl_error *err);
+nl_status nl_study_cheng_patterns_check(const char *dir, int grid, nl_error *err);
 /* DIR/NAME.png read at `grid`; on failure prints "PROG: reason" and exits 2. */
-nl_cheng_pattern *nl_cheng_pattern_load_or_die(const char *prog, const char *dir,
+nl_cheng_pattern *nl_study_cheng_pattern_load_or_die(const char *prog, const char *dir,
                                                const char *name, int grid);
 
 /* ---- textures as images (sec. 4.1) -------------------------------------- */
@@ -67,75 +67,75 @@ nl_cheng_pattern *nl_cheng_pattern_load_or_die(const char *prog, const char *dir
  * alpha; marble maps the value through the marble ramp. The optimised value
  * spans only part of [0, 1] (see READINGS), so alpha 0..1 is the value's own
  * 1st..99th percentile: a display stretch, not part of the optimisation. */
-nl_image *nl_cheng_texture(nl_cheng_con kind, const double *v, int w, int h);
+nl_image *nl_study_cheng_texture(nl_cheng_con kind, const double *v, int w, int h);
 
 /* The value as grey with the same display stretch. */
-nl_image *nl_cheng_grey_image(const double *v, int w, int h);
+nl_image *nl_study_cheng_grey_image(const double *v, int w, int h);
 /* size x size images: the control value (grey), the config's texture, and
  * the pattern (nearest-neighbour upscaled). */
-nl_image *nl_cheng_value_image(const nl_grad2 *g, const nl_cheng_config *c, int size);
-nl_image *nl_cheng_texture_image(const nl_grad2 *g, const nl_cheng_config *c, int size);
-nl_image *nl_cheng_pattern_panel(const nl_cheng_pattern *p, int size);
+nl_image *nl_study_cheng_value_image(const nl_noise_grad2 *g, const nl_cheng_config *c, int size);
+nl_image *nl_study_cheng_texture_image(const nl_noise_grad2 *g, const nl_cheng_config *c, int size);
+nl_image *nl_study_cheng_pattern_panel(const nl_cheng_pattern *p, int size);
 
 /* ---- what C1-C7 share (nl_study_cheng.c) -------------------------------- */
 
 /* The opening every Cheng experiment shares: strips "--patterns DIR"
- * (nl_cheng_patterns_parse; "NAME: message", exit 2) into *patterns, starts
+ * (nl_study_cheng_patterns_parse; "NAME: message", exit 2) into *patterns, starts
  * the run, reads the standard --set parameters into *c and *grid: grid (64),
  * w1, w2, f1, a1, octaves, temps (n_temps; quick 8), moves_per_var (quick 5),
- * defaults otherwise, and checks the patterns folder (nl_cheng_patterns_check;
+ * defaults otherwise, and checks the patterns folder (nl_study_cheng_patterns_check;
  * "NAME: control patterns: ...", exit 2), all before the output folder is
  * touched. The experiment then reads its own parameters and calls
- * nl_cheng_params_done. */
-nl_run *nl_cheng_begin(const char *name, const char *title, int *argc, char **argv,
+ * nl_study_cheng_params_done. */
+nl_harness *nl_study_cheng_begin(const char *name, const char *title, int *argc, char **argv,
                        nl_cheng_config *c, int *grid, const char **patterns);
-/* nl_run_params_done, then nl_cheng_config_check ("NAME: message", exit 2),
+/* nl_harness_params_done, then nl_cheng_config_check ("NAME: message", exit 2),
  * and the patterns folder into the manifest. */
-void nl_cheng_params_done(nl_run *r, const nl_cheng_config *c, const char *patterns);
+void nl_study_cheng_params_done(nl_harness *r, const nl_cheng_config *c, const char *patterns);
 /* Summary table: nlabels label columns, then seeds, E_ks (mean), E_ks_sd, p_ks
  * (mean), p_ks_min, V_kuiper, V_kuiper_sd, p_kuiper, p_kuiper_min, chi2, chi2_sd,
  * p_chi2, E_con, E_con_sd, rms_con, E, uniform_ks, uniform_kuiper (fractions of
  * runs not rejected as non-uniform at alpha = 0.05), roughness, roughness_sd. */
-nl_table *nl_cheng_summary_alloc(int nlabels, const char *const *labels);
-void nl_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
+nl_table *nl_study_cheng_summary_alloc(int nlabels, const char *const *labels);
+void nl_study_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
                           const nl_cheng_eval *evs, int k);
 /* ECDF of each table's angles: F = i/M and u_NAME = sorted angle / 2 pi. */
-nl_table *nl_cheng_cdf_table(const nl_grad2 *const *tables, const char *const *names, int n);
+nl_table *nl_study_cheng_cdf_table(const nl_noise_grad2 *const *tables, const char *const *names, int n);
 /* Histogram of each table's angles in `bins` bins: theta (bin centre), NAME counts. */
-nl_table *nl_cheng_hist_table(const nl_grad2 *const *tables, const char *const *names,
+nl_table *nl_study_cheng_hist_table(const nl_noise_grad2 *const *tables, const char *const *names,
                               int n, size_t bins);
 /* A w x h raster as a table of h rows and w columns c0..c{w-1} (gnuplot's
  * "matrix columnheaders" layout, for height maps). */
-nl_table *nl_cheng_matrix_table(const double *v, int w, int h);
+nl_table *nl_study_cheng_matrix_table(const double *v, int w, int h);
 /* One Cheng experiment's run and its standard setting, so that an
  * experiment opens in two lines:
  *   nl_study_cheng s;
  *   nl_study_cheng_open(&s, "c3_start_freq", "C3 - ...", &argc, argv);
- *   ... its own nl_run_param calls on s.r ...
+ *   ... its own nl_harness_param calls on s.r ...
  *   nl_study_cheng_ready(&s);
  *   nl_cheng_pattern *pat = nl_study_cheng_pattern(&s, "star");
- *   nl_grad2 *first = nl_study_cheng_seeds(&s, &s.c, pat, sum, 1, labels);  */
+ *   nl_noise_grad2 *first = nl_study_cheng_seeds(&s, &s.c, pat, sum, 1, labels);  */
 typedef struct {
-  nl_run *r;
-  nl_cheng_config c;      /* the standard parameters (nl_cheng_begin) */
+  nl_harness *r;
+  nl_cheng_config c;      /* the standard parameters (nl_study_cheng_begin) */
   int grid;               /* control grid */
   const char *patterns;   /* the --patterns folder */
 } nl_study_cheng;
-/* nl_cheng_begin into s (same checks, same exits). */
+/* nl_study_cheng_begin into s (same checks, same exits). */
 void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title, int *argc, char **argv);
-/* nl_cheng_params_done on s's run and config. */
+/* nl_study_cheng_params_done on s's run and config. */
 void nl_study_cheng_ready(nl_study_cheng *s);
-/* The pattern NAME of s's folder at s's grid (nl_cheng_pattern_load_or_die). */
+/* The pattern NAME of s's folder at s's grid (nl_study_cheng_pattern_load_or_die). */
 nl_cheng_pattern *nl_study_cheng_pattern(const nl_study_cheng *s, const char *name);
 /* Config c on pat over the run's seeds (nl_cheng_run_seeds), its summary row
- * appended to sum under the nlabels labels (nl_cheng_summary_add); returns
+ * appended to sum under the nlabels labels (nl_study_cheng_summary_add); returns
  * the first seed's optimised table (caller frees). Exit 1 on error. */
-nl_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_config *c,
+nl_noise_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_config *c,
                                const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
                                const char *const *labels);
 /* The n panels as a labelled montage of `cols` columns written to the run's
  * FILE; frees the panels. */
-void nl_study_cheng_montage(nl_run *r, nl_image **panels, const char *const *labels, int n, int cols,
+void nl_study_cheng_montage(nl_harness *r, nl_image **panels, const char *const *labels, int n, int cols,
                             const char *title, const char *file);
 /* The smallest value of column `col` over the table's rows (+inf if none). */
 double nl_study_column_min(const nl_table *t, const char *col);
@@ -167,35 +167,35 @@ typedef struct {
   double epsilon;
   int k0, k;
   double cutoff, aic;
-} nl_cheng_thesis_gmm;
-extern const nl_cheng_thesis_gmm nl_cheng_thesis_gmm_tables[3];   /* erosion, marble, cloud */
+} nl_study_cheng_thesis_gmm;
+extern const nl_study_cheng_thesis_gmm nl_study_cheng_thesis_gmm_tables[3];   /* erosion, marble, cloud */
 
 /* --set parameters: runs (Q; quick 6), keep (N; quick 20), epsilon,
  * low_levels, threads, samples (quick 100), T, k_extra, unwrap (0/1), diag
  * (0/1: diagonal covariances), max_iter. */
-void nl_cheng_repro_params(nl_run *r, nl_cheng_pool_options *po, nl_cheng_model_options *mo);
+void nl_study_cheng_repro_params(nl_harness *r, nl_cheng_pool_options *po, nl_cheng_model_options *mo);
 
 /* Original optimised table (nl_cheng_run, timed) and its pool (timed). */
 typedef struct {
-  nl_grad2 *opt;
+  nl_noise_grad2 *opt;
   nl_cheng_eval ev;
   double seconds_opt, seconds_pool;
   nl_cheng_pool *pool;
-} nl_cheng_repro;
-nl_status nl_cheng_repro_original(const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                                  unsigned long seed, nl_cheng_repro *out, nl_error *err);
-nl_status nl_cheng_repro_pool(nl_cheng_repro *rp, const nl_cheng_config *c, const nl_cheng_pattern *pat,
+} nl_study_cheng_repro;
+nl_status nl_study_cheng_repro_original(const nl_cheng_config *c, const nl_cheng_pattern *pat,
+                                  unsigned long seed, nl_study_cheng_repro *out, nl_error *err);
+nl_status nl_study_cheng_repro_pool(nl_study_cheng_repro *rp, const nl_cheng_config *c, const nl_cheng_pattern *pat,
                               const nl_cheng_pool_options *po, unsigned long seed, nl_error *err);
-void nl_cheng_repro_clear(nl_cheng_repro *rp);
+void nl_study_cheng_repro_clear(nl_study_cheng_repro *rp);
 /* The texture th on s's setting: its pattern (returned; caller frees), *c =
  * s's config with th's control term, the original and its pool in *rp.
  * Exit 1 on error. */
-nl_cheng_pattern *nl_study_cheng_repro_open(const nl_study_cheng *s, const nl_cheng_thesis_gmm *th,
+nl_cheng_pattern *nl_study_cheng_repro_open(const nl_study_cheng *s, const nl_study_cheng_thesis_gmm *th,
                                             const nl_cheng_pool_options *po, nl_cheng_config *c,
-                                            nl_cheng_repro *rp);
+                                            nl_study_cheng_repro *rp);
 /* The mixture of the pool with the cutoff matched to the thesis's initial K
  * (cutoff < 0, target_k = th->k0) and the run's seed; exit 1 on error. */
-nl_cheng_model *nl_study_cheng_matched_model(nl_run *r, const nl_cheng_pool *pool, const nl_cheng_thesis_gmm *th,
+nl_cheng_model *nl_study_cheng_matched_model(nl_harness *r, const nl_cheng_pool *pool, const nl_study_cheng_thesis_gmm *th,
                                              const nl_cheng_model_options *mo);
 
 /* C5's tables: gmm (Tables 4.2-4.4 per texture, split and cutoff rule, the
@@ -207,13 +207,13 @@ typedef struct { nl_table *gmm, *path, *curve, *runs, *assess, *orig; } nl_study
 void nl_study_cheng_pools_alloc(nl_study_cheng_pools *T);
 /* Writes the six tables (original.tsv, gmm.tsv, aic_path.tsv, cutoff_k.tsv,
  * pool_runs.tsv, assess.tsv) and marks their timing columns "ignore". */
-void nl_study_cheng_pools_write(nl_run *r, const nl_study_cheng_pools *T);
+void nl_study_cheng_pools_write(nl_harness *r, const nl_study_cheng_pools *T);
 void nl_study_cheng_pools_free(nl_study_cheng_pools *T);
 /* One texture at one low/high split: the original and its pool, a gmm and
  * path row per cutoff rule (the thesis's cutoff; the one matching its K0)
  * over nseeds seeds of the fit, K against the cutoff, and with `full` the
  * held-out checks. */
-void nl_study_cheng_pool_case(const nl_study_cheng *s, nl_study_cheng_pools *T, const nl_cheng_thesis_gmm *th,
+void nl_study_cheng_pool_case(const nl_study_cheng *s, nl_study_cheng_pools *T, const nl_study_cheng_thesis_gmm *th,
                               const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nseeds,
                               int full);
 
@@ -227,7 +227,7 @@ nl_table *nl_study_cheng_reps_summary_alloc(void);
  * with the high entries swapped (fraction `swap`) and nrep without; writes
  * textures_TEX.png (original and 8 reproductions) and cdf_TEX.tsv. A
  * degenerate model is reported in the text, with no reproductions. */
-void nl_study_cheng_reproduce_case(const nl_study_cheng *s, nl_table *reps, nl_table *sum, const nl_cheng_thesis_gmm *th,
+void nl_study_cheng_reproduce_case(const nl_study_cheng *s, nl_table *reps, nl_table *sum, const nl_study_cheng_thesis_gmm *th,
                                    const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nrep,
                                    double swap);
 

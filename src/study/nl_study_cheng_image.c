@@ -15,19 +15,19 @@
 
 /* ---- patterns from images ----------------------------------------------- */
 
-nl_status nl_cheng_pattern_from_image(const nl_image *im, int grid, nl_cheng_pattern **out,
+nl_status nl_study_cheng_pattern_from_image(const nl_image *im, int grid, nl_cheng_pattern **out,
                                       nl_error *err)
 {
   return nl_cheng_pattern_from_pixels(im->data, im->width, im->height, im->channels, grid, out, err);
 }
 
-nl_status nl_cheng_pattern_read(const char *path, int grid, nl_cheng_pattern **out, nl_error *err)
+nl_status nl_study_cheng_pattern_read(const char *path, int grid, nl_cheng_pattern **out, nl_error *err)
 {
   nl_image *im;
   *out = NULL;
   nl_status s = nl_image_read(path, &im, err);
   if (s) return s;
-  s = nl_cheng_pattern_from_image(im, grid, out, err);
+  s = nl_study_cheng_pattern_from_image(im, grid, out, err);
   nl_image_free(im);
   if (s) {
     char msg[NL_ERROR_LEN];
@@ -37,7 +37,7 @@ nl_status nl_cheng_pattern_read(const char *path, int grid, nl_cheng_pattern **o
   return NL_OK;
 }
 
-nl_image *nl_cheng_pattern_image(const nl_cheng_pattern *p)
+nl_image *nl_study_cheng_pattern_image(const nl_cheng_pattern *p)
 {
   nl_image *im = nl_image_alloc(p->grid, p->grid, 3);
   for (size_t q = 0; q < (size_t)p->grid * p->grid * 3; q++) im->data[q] = 0.5f;
@@ -92,15 +92,15 @@ static double shape_spiral(double u, double v)
   return r < 0.95 && fmod(phi / NL_TWO_PI + 2.5 * r + 10.0, 1.0) < 0.45;
 }
 
-const char *const nl_cheng_shape_names[] = {"flower", "x", "star", "rings", "disc", "letter",
+const char *const nl_study_cheng_shape_names[] = {"flower", "x", "star", "rings", "disc", "letter",
                                             "gradient", "spiral", NULL};
 static double (*const shape_fns[])(double, double) = {
   shape_flower, shape_x, shape_star, shape_rings, shape_disc, shape_letter, shape_gradient, shape_spiral};
 
-nl_image *nl_cheng_shape(const char *name, int size)
+nl_image *nl_study_cheng_shape(const char *name, int size)
 {
   int idx = -1;
-  for (int k = 0; nl_cheng_shape_names[k]; k++) if (!strcmp(name, nl_cheng_shape_names[k])) idx = k;
+  for (int k = 0; nl_study_cheng_shape_names[k]; k++) if (!strcmp(name, nl_study_cheng_shape_names[k])) idx = k;
   if (idx < 0 || size < 1) return NULL;
   nl_image *im = nl_image_alloc(size, size, 4);
   for (int y = 0; y < size; y++)
@@ -120,7 +120,7 @@ nl_image *nl_cheng_shape(const char *name, int size)
 
 /* ---- the experiments' pattern folder ------------------------------------ */
 
-nl_status nl_cheng_patterns_parse(int *argc, char **argv, const char **dir, nl_error *err)
+nl_status nl_study_cheng_patterns_parse(int *argc, char **argv, const char **dir, nl_error *err)
 {
   int w = 1;
   *dir = "data/patterns";
@@ -138,17 +138,17 @@ nl_status nl_cheng_patterns_parse(int *argc, char **argv, const char **dir, nl_e
   return NL_OK;
 }
 
-nl_status nl_cheng_patterns_check(const char *dir, int grid, nl_error *err)
+nl_status nl_study_cheng_patterns_check(const char *dir, int grid, nl_error *err)
 {
   struct stat st;
   if (stat(dir, &st)) return nl_fail(err, NL_EIO, "--patterns %s: %s", dir, strerror(errno));
   if (!S_ISDIR(st.st_mode)) return nl_fail(err, NL_EIO, "--patterns %s: not a folder", dir);
-  for (int k = 0; nl_cheng_shape_names[k]; k++) {
+  for (int k = 0; nl_study_cheng_shape_names[k]; k++) {
     char file[64];
-    snprintf(file, sizeof file, "%s.png", nl_cheng_shape_names[k]);
+    snprintf(file, sizeof file, "%s.png", nl_study_cheng_shape_names[k]);
     char *path = nl_path_join(dir, file);
     nl_cheng_pattern *p;
-    nl_status s = nl_cheng_pattern_read(path, grid, &p, err);
+    nl_status s = nl_study_cheng_pattern_read(path, grid, &p, err);
     free(path);
     if (s) return s;
     nl_cheng_pattern_free(p);
@@ -156,7 +156,7 @@ nl_status nl_cheng_patterns_check(const char *dir, int grid, nl_error *err)
   return NL_OK;
 }
 
-nl_cheng_pattern *nl_cheng_pattern_load_or_die(const char *prog, const char *dir,
+nl_cheng_pattern *nl_study_cheng_pattern_load_or_die(const char *prog, const char *dir,
                                                const char *name, int grid)
 {
   char file[256];
@@ -164,7 +164,7 @@ nl_cheng_pattern *nl_cheng_pattern_load_or_die(const char *prog, const char *dir
   char *path = nl_path_join(dir, file);
   nl_cheng_pattern *p;
   nl_error err;
-  if (nl_cheng_pattern_read(path, grid, &p, &err)) {
+  if (nl_study_cheng_pattern_read(path, grid, &p, &err)) {
     fprintf(stderr, "%s: control pattern: %s (make them with build/tools/noiselab-patterns "
                     "data/patterns, or pass --patterns DIR)\n", prog, err.msg);
     exit(2);
@@ -180,14 +180,14 @@ static void display_range(const double *v, size_t n, double *lo, double *hi)
 {
   double *c = nl_xmalloc(n * sizeof *c);
   memcpy(c, v, n * sizeof *c);
-  nl_sort_double(c, n);
+  nl_stats_sort(c, n);
   *lo = c[n / 100];
   *hi = c[n - 1 - n / 100];
   if (!(*hi > *lo)) { *lo -= 0.5; *hi += 0.5; }
   free(c);
 }
 
-nl_image *nl_cheng_texture(nl_cheng_con kind, const double *v, int w, int h)
+nl_image *nl_study_cheng_texture(nl_cheng_con kind, const double *v, int w, int h)
 {
   /* Two colours per texture, blended with the value as alpha (sec. 4.1). */
   static const float pair[4][2][3] = {
@@ -200,8 +200,8 @@ nl_image *nl_cheng_texture(nl_cheng_con kind, const double *v, int w, int h)
   double lo, hi;
   display_range(v, n, &lo, &hi);
   if (kind == NL_CHENG_CON_SIN) {
-    nl_ramp r = nl_ramp_marble();
-    return nl_ramp_image(&r, v, w, h, lo, hi);
+    nl_texture_ramp r = nl_texture_ramp_marble();
+    return nl_texture_ramp_image(&r, v, w, h, lo, hi);
   }
   nl_image *im = nl_image_alloc(w, h, 3);
   for (size_t q = 0; q < n; q++) {
@@ -213,34 +213,34 @@ nl_image *nl_cheng_texture(nl_cheng_con kind, const double *v, int w, int h)
   return im;
 }
 
-nl_image *nl_cheng_grey_image(const double *v, int w, int h)
+nl_image *nl_study_cheng_grey_image(const double *v, int w, int h)
 {
   double lo, hi;
   display_range(v, (size_t)w * h, &lo, &hi);
   return nl_image_from_values(v, w, h, lo, hi);
 }
 
-nl_image *nl_cheng_value_image(const nl_grad2 *g, const nl_cheng_config *c, int size)
+nl_image *nl_study_cheng_value_image(const nl_noise_grad2 *g, const nl_cheng_config *c, int size)
 {
   double *v = nl_xmalloc((size_t)size * size * sizeof *v);
   nl_cheng_value_grid(g, c, size, size, v);
-  nl_image *im = nl_cheng_grey_image(v, size, size);
+  nl_image *im = nl_study_cheng_grey_image(v, size, size);
   free(v);
   return im;
 }
 
-nl_image *nl_cheng_texture_image(const nl_grad2 *g, const nl_cheng_config *c, int size)
+nl_image *nl_study_cheng_texture_image(const nl_noise_grad2 *g, const nl_cheng_config *c, int size)
 {
   double *v = nl_xmalloc((size_t)size * size * sizeof *v);
   nl_cheng_value_grid(g, c, size, size, v);
-  nl_image *im = nl_cheng_texture(c->con, v, size, size);
+  nl_image *im = nl_study_cheng_texture(c->con, v, size, size);
   free(v);
   return im;
 }
 
-nl_image *nl_cheng_pattern_panel(const nl_cheng_pattern *p, int size)
+nl_image *nl_study_cheng_pattern_panel(const nl_cheng_pattern *p, int size)
 {
-  nl_image *small = nl_cheng_pattern_image(p), *im = nl_image_alloc(size, size, 3);
+  nl_image *small = nl_study_cheng_pattern_image(p), *im = nl_image_alloc(size, size, 3);
   for (int y = 0; y < size; y++)
     for (int x = 0; x < size; x++)
       memcpy(nl_image_pixel(im, x, y), nl_image_pixel(small, x * p->grid / size, y * p->grid / size),

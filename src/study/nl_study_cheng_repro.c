@@ -11,43 +11,43 @@
 #include <stdlib.h>
 #include <string.h>
 
-const nl_cheng_thesis_gmm nl_cheng_thesis_gmm_tables[3] = {
+const nl_study_cheng_thesis_gmm nl_study_cheng_thesis_gmm_tables[3] = {
   {"erosion", "disc", NL_CHENG_CON_ABS, "Table 4.2", 1000, 10.0, 30, 36, 18.6, -15079449.0743},
   {"marble", "rings", NL_CHENG_CON_SIN, "Table 4.3", 1000, 10.0, 39, 42, 19.5, -25353476.4511},
   {"cloud", "flower", NL_CHENG_CON_PLAIN, "Table 4.4", 1000, 10.0, 20, 24, 15.5, -20163091.2097},
 };
 
-void nl_cheng_repro_params(nl_run *r, nl_cheng_pool_options *po, nl_cheng_model_options *mo)
+void nl_study_cheng_repro_params(nl_harness *r, nl_cheng_pool_options *po, nl_cheng_model_options *mo)
 {
-  int q = nl_run_quick(r);
+  int q = nl_harness_quick(r);
   nl_cheng_pool_options_default(po);
   nl_cheng_model_options_default(mo);
-  po->runs = (int)nl_run_param_int(r, "runs", q ? 6 : po->runs, 1, 100000,
+  po->runs = (int)nl_harness_param_int(r, "runs", q ? 6 : po->runs, 1, 100000,
         "Q: annealing runs in the solution pool (Cheng sec. 3.5.2; quick 6)");          /* Q */
-  po->keep = (int)nl_run_param_int(r, "keep", q ? 20 : po->keep, 1, 100000,
+  po->keep = (int)nl_harness_param_int(r, "keep", q ? 20 : po->keep, 1, 100000,
         "N: solutions kept per run in the pool (Cheng sec. 3.5.2; quick 20)");         /* N */
-  po->epsilon = nl_run_param(r, "epsilon", po->epsilon, 0, 1e300,
+  po->epsilon = nl_harness_param(r, "epsilon", po->epsilon, 0, 1e300,
         "error bound on E_R: pool solutions above the run's best by more than this are left out");
-  po->low_levels = (int)nl_run_param_int(r, "low_levels", po->low_levels, 1, NL_CHENG_MAX_OCTAVES - 1,
+  po->low_levels = (int)nl_harness_param_int(r, "low_levels", po->low_levels, 1, NL_CHENG_MAX_OCTAVES - 1,
         "levels 1..low_levels hold the shared low-frequency gradients that are reproduced");
-  po->threads = (int)nl_run_param_int(r, "threads", po->threads, 1, 64,
+  po->threads = (int)nl_harness_param_int(r, "threads", po->threads, 1, 64,
         "worker threads for the pool runs (results do not depend on it)");
-  mo->samples = (size_t)nl_run_param_int(r, "samples", q ? 100 : (long)mo->samples, 0, 1000000,
+  mo->samples = (size_t)nl_harness_param_int(r, "samples", q ? 100 : (long)mo->samples, 0, 1000000,
         "input samples drawn from the pool for clustering and the mixture, 0 = all (quick 100)");
-  mo->threshold = nl_run_param(r, "T", mo->threshold, 0, 1e300,
+  mo->threshold = nl_harness_param(r, "T", mo->threshold, 0, 1e300,
         "AIC threshold T: a mixture component is added only if AIC falls by at least T");
-  mo->k_extra = (size_t)nl_run_param_int(r, "k_extra", (long)mo->k_extra, 0, 100000,
+  mo->k_extra = (size_t)nl_harness_param_int(r, "k_extra", (long)mo->k_extra, 0, 100000,
         "the GMM growth path is capped at K0 + k_extra components");
-  mo->rep = (nl_cheng_rep)nl_run_param_int(r, "unwrap", mo->rep == NL_CHENG_REP_UNWRAP, 0, 1,
+  mo->rep = (nl_cheng_rep)nl_harness_param_int(r, "unwrap", mo->rep == NL_CHENG_REP_UNWRAP, 0, 1,
         "1: angles unwrapped to a line before the mixture; 0: each angle as (cos, sin)");
-  mo->gmm.covariance = nl_run_param_int(r, "diag", 0, 0, 1,
+  mo->gmm.covariance = nl_harness_param_int(r, "diag", 0, 0, 1,
         "1: diagonal GMM covariances; 0: full covariances") ? NL_GMM_DIAG : NL_GMM_FULL;
-  mo->gmm.max_iter = (size_t)nl_run_param_int(r, "max_iter", (long)mo->gmm.max_iter, 1, 1000000,
+  mo->gmm.max_iter = (size_t)nl_harness_param_int(r, "max_iter", (long)mo->gmm.max_iter, 1, 1000000,
         "EM iterations allowed per mixture fit before it counts as not converged");
 }
 
-nl_status nl_cheng_repro_original(const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                                  unsigned long seed, nl_cheng_repro *out, nl_error *err)
+nl_status nl_study_cheng_repro_original(const nl_cheng_config *c, const nl_cheng_pattern *pat,
+                                  unsigned long seed, nl_study_cheng_repro *out, nl_error *err)
 {
   memset(out, 0, sizeof *out);
   double t0 = nl_time_now();
@@ -56,7 +56,7 @@ nl_status nl_cheng_repro_original(const nl_cheng_config *c, const nl_cheng_patte
   return st;
 }
 
-nl_status nl_cheng_repro_pool(nl_cheng_repro *rp, const nl_cheng_config *c, const nl_cheng_pattern *pat,
+nl_status nl_study_cheng_repro_pool(nl_study_cheng_repro *rp, const nl_cheng_config *c, const nl_cheng_pattern *pat,
                               const nl_cheng_pool_options *po, unsigned long seed, nl_error *err)
 {
   double t0 = nl_time_now();
@@ -65,9 +65,9 @@ nl_status nl_cheng_repro_pool(nl_cheng_repro *rp, const nl_cheng_config *c, cons
   return st;
 }
 
-void nl_cheng_repro_clear(nl_cheng_repro *rp)
+void nl_study_cheng_repro_clear(nl_study_cheng_repro *rp)
 {
-  nl_grad2_free(rp->opt);
+  nl_noise_grad2_free(rp->opt);
   nl_cheng_pool_free(rp->pool);
   memset(rp, 0, sizeof *rp);
 }
@@ -97,7 +97,7 @@ typedef struct { double k0[MAXSEEDS], k[MAXSEEDS], aic[MAXSEEDS], bic[MAXSEEDS],
 
 /* The model over the run's seeds (input subsample and k-means seed); the
  * first seed's model is returned. */
-static nl_cheng_model *fit_seeds(nl_run *r, const nl_cheng_pool *pool, const nl_cheng_model_options *mo,
+static nl_cheng_model *fit_seeds(nl_harness *r, const nl_cheng_pool *pool, const nl_cheng_model_options *mo,
                                  int nseeds, fits *f)
 {
   nl_cheng_model *first = NULL;
@@ -106,9 +106,9 @@ static nl_cheng_model *fit_seeds(nl_run *r, const nl_cheng_pool *pool, const nl_
   f->status = "ok";
   for (int s = 0; s < nseeds; s++) {
     nl_cheng_model_options o = *mo;
-    o.gmm.seed = nl_seed_replicate(nl_run_seed(r), s);
+    o.gmm.seed = nl_seed_replicate(nl_harness_seed(r), s);
     nl_cheng_model *m;
-    if (nl_cheng_model_fit(pool, &o, o.gmm.seed, &m, &err)) nl_run_die(r, 1, "%s", err.msg);
+    if (nl_cheng_model_fit(pool, &o, o.gmm.seed, &m, &err)) nl_harness_die(r, 1, "%s", err.msg);
     f->k0[s] = (double)m->k0; f->k[s] = (double)m->k;
     f->aic[s] = m->gmm ? m->gmm->aic : NAN; f->bic[s] = m->gmm ? m->gmm->bic : NAN;
     f->ll[s] = m->gmm ? m->gmm->loglik : NAN;
@@ -121,7 +121,7 @@ static nl_cheng_model *fit_seeds(nl_run *r, const nl_cheng_pool *pool, const nl_
 }
 
 /* Pool rows: per run, and the original against the pool. */
-static void pool_rows(nl_study_cheng_pools *T, const nl_cheng_thesis_gmm *th, int low, const nl_cheng_repro *rp)
+static void pool_rows(nl_study_cheng_pools *T, const nl_study_cheng_thesis_gmm *th, int low, const nl_study_cheng_repro *rp)
 {
   const nl_cheng_pool *pool = rp->pool;
   double *be = nl_xmalloc((size_t)pool->runs * sizeof *be), *es = nl_xmalloc((pool->n ? pool->n : 1) * sizeof *es);
@@ -145,7 +145,7 @@ static void pool_rows(nl_study_cheng_pools *T, const nl_cheng_thesis_gmm *th, in
 }
 
 /* One cutoff rule: the row of Tables 4.2-4.4, its AIC path (first seed). */
-static nl_cheng_model *rule_rows(nl_run *r, nl_study_cheng_pools *T, const nl_cheng_thesis_gmm *th, int low, int ru,
+static nl_cheng_model *rule_rows(nl_harness *r, nl_study_cheng_pools *T, const nl_study_cheng_thesis_gmm *th, int low, int ru,
                                  const nl_cheng_pool *pool, const nl_cheng_model_options *mo, double eps, int nseeds)
 {
   nl_cheng_model_options o = *mo;
@@ -166,7 +166,7 @@ static nl_cheng_model *rule_rows(nl_run *r, nl_study_cheng_pools *T, const nl_ch
 }
 
 /* K against the cutoff, up to the largest possible chord 2 sqrt(n_low). */
-static void curve_rows(nl_run *r, nl_study_cheng_pools *T, const nl_cheng_thesis_gmm *th, int low, const nl_cheng_pool *pool,
+static void curve_rows(nl_harness *r, nl_study_cheng_pools *T, const nl_study_cheng_thesis_gmm *th, int low, const nl_cheng_pool *pool,
                        const nl_cheng_model *m)
 {
   double cut[NCUT];
@@ -174,12 +174,12 @@ static void curve_rows(nl_run *r, nl_study_cheng_pools *T, const nl_cheng_thesis
   nl_error err;
   if (m->n_in < 2) return;
   for (int q = 0; q < NCUT; q++) cut[q] = 2.0 * sqrt((double)pool->nlow) * (q + 1) / NCUT;
-  if (nl_cheng_k_curve(pool, m, cut, NCUT, kc, &err)) nl_run_die(r, 1, "%s", err.msg);
+  if (nl_cheng_k_curve(pool, m, cut, NCUT, kc, &err)) nl_harness_die(r, 1, "%s", err.msg);
   for (int q = 0; q < NCUT; q++) nl_table_append(T->curve, "sddd", th->texture, (double)low, cut[q], (double)kc[q]);
 }
 
 /* Beyond the paper: the matched-K0 model in three variants against the pool. */
-static void assess_rows(nl_run *r, nl_study_cheng_pools *T, const nl_cheng_thesis_gmm *th, int low, const nl_cheng_pool *pool,
+static void assess_rows(nl_harness *r, nl_study_cheng_pools *T, const nl_study_cheng_thesis_gmm *th, int low, const nl_cheng_pool *pool,
                         const nl_cheng_model_options *mo)
 {
   nl_error err;
@@ -190,8 +190,8 @@ static void assess_rows(nl_run *r, nl_study_cheng_pools *T, const nl_cheng_thesi
     nl_cheng_model *m = nl_study_cheng_matched_model(r, pool, th, &o);
     nl_cheng_model_check ck = {NAN, NAN, 0, NAN, NAN};
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, nl_seed_stream(nl_run_seed(r), "c5.held_out", 0));
-    if (m->gmm && nl_cheng_model_assess(pool, m, 1000, rng, &ck, &err)) nl_run_die(r, 1, "%s", err.msg);
+    gsl_rng_set(rng, nl_seed_stream(nl_harness_seed(r), "c5.held_out", 0));
+    if (m->gmm && nl_cheng_model_assess(pool, m, 1000, rng, &ck, &err)) nl_harness_die(r, 1, "%s", err.msg);
     nl_table_append(T->assess, "sdsdddddd", th->texture, (double)low, variants[v], (double)m->k, ck.ll_train,
                     ck.ll_held, (double)ck.n_held, ck.ks_median, ck.ks_reject);
     gsl_rng_free(rng);
@@ -199,30 +199,30 @@ static void assess_rows(nl_run *r, nl_study_cheng_pools *T, const nl_cheng_thesi
   }
 }
 
-nl_cheng_pattern *nl_study_cheng_repro_open(const nl_study_cheng *s, const nl_cheng_thesis_gmm *th,
+nl_cheng_pattern *nl_study_cheng_repro_open(const nl_study_cheng *s, const nl_study_cheng_thesis_gmm *th,
                                             const nl_cheng_pool_options *po, nl_cheng_config *c,
-                                            nl_cheng_repro *rp)
+                                            nl_study_cheng_repro *rp)
 {
   nl_cheng_pattern *pat = nl_study_cheng_pattern(s, th->pattern);
   nl_error err;
   *c = s->c;
   c->con = th->con;
-  if (nl_cheng_repro_original(c, pat, nl_run_seed(s->r), rp, &err) ||
-      nl_cheng_repro_pool(rp, c, pat, po, nl_run_seed(s->r), &err))
-    nl_run_die(s->r, 1, "%s: %s", th->texture, err.msg);
+  if (nl_study_cheng_repro_original(c, pat, nl_harness_seed(s->r), rp, &err) ||
+      nl_study_cheng_repro_pool(rp, c, pat, po, nl_harness_seed(s->r), &err))
+    nl_harness_die(s->r, 1, "%s: %s", th->texture, err.msg);
   return pat;
 }
 
-nl_cheng_model *nl_study_cheng_matched_model(nl_run *r, const nl_cheng_pool *pool, const nl_cheng_thesis_gmm *th,
+nl_cheng_model *nl_study_cheng_matched_model(nl_harness *r, const nl_cheng_pool *pool, const nl_study_cheng_thesis_gmm *th,
                                              const nl_cheng_model_options *mo)
 {
   nl_cheng_model_options o = *mo;
   o.cutoff = -1;   /* the cutoff that gives the thesis's initial K */
   o.target_k = (size_t)th->k0;
-  o.gmm.seed = nl_run_seed(r);
+  o.gmm.seed = nl_harness_seed(r);
   nl_cheng_model *m;
   nl_error err;
-  if (nl_cheng_model_fit(pool, &o, nl_run_seed(r), &m, &err)) nl_run_die(r, 1, "%s", err.msg);
+  if (nl_cheng_model_fit(pool, &o, nl_harness_seed(r), &m, &err)) nl_harness_die(r, 1, "%s", err.msg);
   return m;
 }
 
@@ -236,18 +236,18 @@ void nl_study_cheng_pools_alloc(nl_study_cheng_pools *T)
   T->orig = nl_table_alloc(sizeof orig_cols / sizeof *orig_cols, orig_cols);
 }
 
-void nl_study_cheng_pools_write(nl_run *r, const nl_study_cheng_pools *T)
+void nl_study_cheng_pools_write(nl_harness *r, const nl_study_cheng_pools *T)
 {
-  nl_run_table(r, T->orig, "original.tsv");
-  nl_run_table(r, T->gmm, "gmm.tsv");
-  nl_run_table(r, T->path, "aic_path.tsv");
-  nl_run_table(r, T->curve, "cutoff_k.tsv");
-  nl_run_table(r, T->runs, "pool_runs.tsv");
-  nl_run_table(r, T->assess, "assess.tsv");
-  nl_run_check(r, "original.tsv", "seconds_opt", "ignore");   /* times: never compared */
-  nl_run_check(r, "original.tsv", "seconds_pool", "ignore");
-  nl_run_check(r, "pool_runs.tsv", "seconds", "ignore");
-  nl_run_check(r, "gmm.tsv", "seconds_gmm", "ignore");
+  nl_harness_write_table(r, T->orig, "original.tsv");
+  nl_harness_write_table(r, T->gmm, "gmm.tsv");
+  nl_harness_write_table(r, T->path, "aic_path.tsv");
+  nl_harness_write_table(r, T->curve, "cutoff_k.tsv");
+  nl_harness_write_table(r, T->runs, "pool_runs.tsv");
+  nl_harness_write_table(r, T->assess, "assess.tsv");
+  nl_harness_check(r, "original.tsv", "seconds_opt", "ignore");   /* times: never compared */
+  nl_harness_check(r, "original.tsv", "seconds_pool", "ignore");
+  nl_harness_check(r, "pool_runs.tsv", "seconds", "ignore");
+  nl_harness_check(r, "gmm.tsv", "seconds_gmm", "ignore");
 }
 
 void nl_study_cheng_pools_free(nl_study_cheng_pools *T)
@@ -257,30 +257,30 @@ void nl_study_cheng_pools_free(nl_study_cheng_pools *T)
 }
 
 /* One texture at one low/high split: original, pool, both rules, curve, checks. */
-void nl_study_cheng_pool_case(const nl_study_cheng *s, nl_study_cheng_pools *T, const nl_cheng_thesis_gmm *th,
+void nl_study_cheng_pool_case(const nl_study_cheng *s, nl_study_cheng_pools *T, const nl_study_cheng_thesis_gmm *th,
                               const nl_cheng_pool_options *pop, const nl_cheng_model_options *mo, int nseeds,
                               int full)
 {
-  nl_run *r = s->r;
+  nl_harness *r = s->r;
   nl_cheng_pool_options po = *pop;
   nl_cheng_config c;
-  nl_cheng_repro rp;
+  nl_study_cheng_repro rp;
   nl_cheng_pattern *pat = nl_study_cheng_repro_open(s, th, &po, &c, &rp);
   pool_rows(T, th, po.low_levels, &rp);
   char key[64];
   snprintf(key, sizeof key, "pool_bytes_%s_low%d", th->texture, po.low_levels);
-  nl_run_note(r, key, "%zu (%zu solutions x %zu angles)", nl_cheng_pool_bytes(rp.pool), rp.pool->n, rp.pool->nlow);
+  nl_harness_note(r, key, "%zu (%zu solutions x %zu angles)", nl_cheng_pool_bytes(rp.pool), rp.pool->n, rp.pool->nlow);
   for (int ru = 0; ru < NRULE; ru++) {
     nl_cheng_model *m = rule_rows(r, T, th, po.low_levels, ru, rp.pool, mo, po.epsilon, nseeds);
     if (ru == 1) {
       curve_rows(r, T, th, po.low_levels, rp.pool, m);
       snprintf(key, sizeof key, "cluster_bytes_%s_low%d", th->texture, po.low_levels);
-      nl_run_note(r, key, "%zu (condensed distances of %zu samples + linkage)", m->cluster_bytes, m->n_in);
+      nl_harness_note(r, key, "%zu (condensed distances of %zu samples + linkage)", m->cluster_bytes, m->n_in);
     }
     nl_cheng_model_free(m);
   }
   if (full) assess_rows(r, T, th, po.low_levels, rp.pool, mo);
-  nl_cheng_repro_clear(&rp);
+  nl_study_cheng_repro_clear(&rp);
   nl_cheng_pattern_free(pat);
 }
 
@@ -296,28 +296,28 @@ static const char *const c6_sum_cols[] = {
 typedef struct { double ks[4096], con[4096], p[4096], d[4096], ms[4096], mst[4096]; } samples;
 
 /* One reproduction evaluated: E_KS, E_Con, two-sample D against the original's angles. */
-static void reproduce_one(nl_run *r, const nl_cheng_repro *rp, const nl_cheng_model *m, const nl_cheng_config *c,
-                          const nl_cheng_pattern *pat, double swap, gsl_rng *rng, nl_grad2 *out, samples *s, int i)
+static void reproduce_one(nl_harness *r, const nl_study_cheng_repro *rp, const nl_cheng_model *m, const nl_cheng_config *c,
+                          const nl_cheng_pattern *pat, double swap, gsl_rng *rng, nl_noise_grad2 *out, samples *s, int i)
 {
   nl_error err;
   double t0 = nl_time_now();
-  if (nl_cheng_reproduce(rp->opt, m, swap, rng, out, &err)) nl_run_die(r, 1, "%s", err.msg);
+  if (nl_cheng_reproduce(rp->opt, m, swap, rng, out, &err)) nl_harness_die(r, 1, "%s", err.msg);
   double t1 = nl_time_now();
-  nl_image *tex = nl_cheng_texture_image(out, c, 256);   /* what a user waits for: table + texture */
+  nl_image *tex = nl_study_cheng_texture_image(out, c, 256);   /* what a user waits for: table + texture */
   s->mst[i] = 1e3 * (nl_time_now() - t0);
   s->ms[i] = 1e3 * (t1 - t0);
   nl_image_free(tex);
   nl_cheng_eval ev;
-  nl_ks_result ks;
+  nl_stats_ks_result ks;
   if (nl_cheng_evaluate(out, c, pat, &ev, &err) ||
-      nl_ks2_test(out->angle, out->m, rp->opt->angle, rp->opt->m, &ks, &err)) nl_run_die(r, 1, "%s", err.msg);
+      nl_stats_ks2_test(out->angle, out->m, rp->opt->angle, rp->opt->m, &ks, &err)) nl_harness_die(r, 1, "%s", err.msg);
   s->ks[i] = ev.e_ks; s->con[i] = ev.e_con; s->p[i] = ev.p_ks; s->d[i] = ks.d;
 }
 
 static double frac_below(const double *x, int n, double v) { int b = 0; for (int i = 0; i < n; i++) b += x[i] < v; return (double)b / n; }
 
 static void summary_row(nl_table *t, const char *tex, const char *kind, const samples *s, int n,
-                        const nl_cheng_repro *rp, size_t k)
+                        const nl_study_cheng_repro *rp, size_t k)
 {
   nl_table_append(t, "ssdddddddddddddd", tex, kind, (double)n, nl_study_mean(s->ks, n), nl_study_sd(s->ks, n),
                   nl_study_mean(s->con, n), nl_study_sd(s->con, n), nl_study_min(s->p, n), nl_study_mean(s->d, n), nl_study_sd(s->d, n),
@@ -326,22 +326,22 @@ static void summary_row(nl_table *t, const char *tex, const char *kind, const sa
 }
 
 /* Montage: the original texture and NSHOW reproductions, E_KS / E_Con under each. */
-static void montage(nl_run *r, const char *tex, const nl_cheng_config *c, nl_grad2 *const *g, const samples *s,
-                    const nl_cheng_repro *rp)
+static void montage(nl_harness *r, const char *tex, const nl_cheng_config *c, nl_noise_grad2 *const *g, const samples *s,
+                    const nl_study_cheng_repro *rp)
 {
   nl_image *im[NSHOW + 1];
   char lab[NSHOW + 1][80], title[96], file[64];
   const char *labp[NSHOW + 1];
   for (int i = 0; i <= NSHOW; i++) {
-    im[i] = nl_cheng_texture_image(i ? g[i - 1] : rp->opt, c, 192);
+    im[i] = nl_study_cheng_texture_image(i ? g[i - 1] : rp->opt, c, 192);
     if (i) snprintf(lab[i], sizeof lab[i], "r%d %.4f / %.0f", i, s->ks[i - 1], s->con[i - 1]);
     else snprintf(lab[i], sizeof lab[i], "orig %.4f / %.0f", rp->ev.e_ks, rp->ev.e_con);
     labp[i] = lab[i];
   }
   snprintf(title, sizeof title, "%s: E_KS / E_Con", tex);
-  nl_image *m = nl_montage((const nl_image *const *)im, labp, NSHOW + 1, 3, title);
+  nl_image *m = nl_image_montage((const nl_image *const *)im, labp, NSHOW + 1, 3, title);
   snprintf(file, sizeof file, "textures_%s.png", tex);
-  nl_run_image(r, m, file);
+  nl_harness_write_image(r, m, file);
   nl_image_free(m);
   for (int i = 0; i <= NSHOW; i++) nl_image_free(im[i]);
 }
@@ -356,52 +356,52 @@ nl_table *nl_study_cheng_reps_summary_alloc(void)
   return nl_table_alloc(sizeof c6_sum_cols / sizeof *c6_sum_cols, c6_sum_cols);
 }
 
-void nl_study_cheng_reproduce_case(const nl_study_cheng *st, nl_table *reps, nl_table *sum, const nl_cheng_thesis_gmm *th,
+void nl_study_cheng_reproduce_case(const nl_study_cheng *st, nl_table *reps, nl_table *sum, const nl_study_cheng_thesis_gmm *th,
                                    const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nrep,
                                    double swap)
 {
-  nl_run *r = st->r;
+  nl_harness *r = st->r;
   samples *s = nl_xcalloc(1, sizeof *s);
   nl_cheng_config c;
-  nl_cheng_repro rp;
+  nl_study_cheng_repro rp;
   nl_cheng_pattern *pat = nl_study_cheng_repro_open(st, th, po, &c, &rp);
   nl_cheng_model *m = nl_study_cheng_matched_model(r, rp.pool, th, mo);
   s->ks[0] = rp.ev.e_ks; s->con[0] = rp.ev.e_con; s->p[0] = rp.ev.p_ks;
   summary_row(sum, th->texture, "original", s, 1, &rp, m->k);
   if (!m->gmm) {   /* degenerate model: reported, nothing to reproduce */
-    nl_report_text(r, "%s: no mixture (%s), no reproductions.\n", th->texture, m->msg);
+    nl_harness_text(r, "%s: no mixture (%s), no reproductions.\n", th->texture, m->msg);
   } else {
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, nl_seed_stream(nl_run_seed(r), "c6.reproduce", 0));
-    nl_grad2 *g[NSHOW];
+    gsl_rng_set(rng, nl_seed_stream(nl_harness_seed(r), "c6.reproduce", 0));
+    nl_noise_grad2 *g[NSHOW];
     const double swaps[2] = {swap, 0.0};   /* and without the swap, to separate the two effects */
     for (int w = 0; w < 2; w++) {
       for (int i = 0; i < nrep; i++) {
-        nl_grad2 *out = nl_grad2_alloc(rp.opt->m);
+        nl_noise_grad2 *out = nl_noise_grad2_alloc(rp.opt->m);
         reproduce_one(r, &rp, m, &c, pat, swaps[w], rng, out, s, i);
         nl_table_append(reps, "sdddddddd", th->texture, swaps[w], (double)i, s->ks[i], s->p[i], s->con[i], s->d[i], s->ms[i], s->mst[i]);
-        if (w == 0 && i < NSHOW) g[i] = out; else nl_grad2_free(out);
+        if (w == 0 && i < NSHOW) g[i] = out; else nl_noise_grad2_free(out);
       }
       char kind[48];
       snprintf(kind, sizeof kind, "reproduced_swap_%g", swaps[w]);
       summary_row(sum, th->texture, kind, s, nrep, &rp, m->k);
       if (w == 0) {
         montage(r, th->texture, &c, g, s, &rp);
-        const nl_grad2 *tabs[NSHOW + 1] = {rp.opt};
+        const nl_noise_grad2 *tabs[NSHOW + 1] = {rp.opt};
         const char *names[NSHOW + 1] = {"original", "r1", "r2", "r3", "r4", "r5", "r6", "r7", "r8"};
         for (int i = 0; i < NSHOW; i++) tabs[i + 1] = g[i];
-        nl_table *cdf = nl_cheng_cdf_table(tabs, names, NSHOW + 1);
+        nl_table *cdf = nl_study_cheng_cdf_table(tabs, names, NSHOW + 1);
         char file[64];
         snprintf(file, sizeof file, "cdf_%s.tsv", th->texture);
-        nl_run_table(r, cdf, file);
+        nl_harness_write_table(r, cdf, file);
         nl_table_free(cdf);
-        for (int i = 0; i < NSHOW; i++) nl_grad2_free(g[i]);
+        for (int i = 0; i < NSHOW; i++) nl_noise_grad2_free(g[i]);
       }
     }
     gsl_rng_free(rng);
   }
   nl_cheng_model_free(m);
-  nl_cheng_repro_clear(&rp);
+  nl_study_cheng_repro_clear(&rp);
   nl_cheng_pattern_free(pat);
   free(s);
 }

@@ -7,30 +7,30 @@
 #include <math.h>
 #include <stdlib.h>
 
-static void one_seed(nl_survey *s, nl_basis_kind kind, const nl_octaves *o, const nl_window *win,
+static void one_seed(nl_study_survey *s, nl_study_basis_kind kind, const nl_noise_octaves *o, const nl_noise_window *win,
                      unsigned long seed, int k, double *v)
 {
-  nl_grad2 *t = NULL;
-  nl_perm3 p;
-  nl_basis b;
-  if (kind == NL_BASIS_GRAD2) { t = nl_grad2_alloc(512); nl_grad2_seed(t, seed); b = nl_basis_grad2(t); }
-  else { nl_perm3_seed(&p, seed); b = nl_basis_perm3(&p); }
-  nl_fractal_grid(&b, o, win, v);
+  nl_noise_grad2 *t = NULL;
+  nl_noise_perm3 p;
+  nl_noise_basis b;
+  if (kind == NL_BASIS_GRAD2) { t = nl_noise_grad2_alloc(512); nl_noise_grad2_seed(t, seed); b = nl_noise_basis_grad2(t); }
+  else { nl_noise_perm3_seed(&p, seed); b = nl_noise_basis_perm3(&p); }
+  nl_noise_fractal_grid(&b, o, win, v);
   size_t n = (size_t)win->w * win->h;
   s->mean[k] = gsl_stats_mean(v, 1, n);
   s->sd[k] = gsl_stats_sd_m(v, 1, n, s->mean[k]);
   gsl_stats_minmax(&s->min[k], &s->max[k], v, 1, n);
   double *f = nl_xmalloc((size_t)s->nbins * sizeof *f);
-  nl_radial_power(v, win->w, win->h, s->nbins, f, s->power + (size_t)k * s->nbins);
+  nl_spectrum_radial(v, win->w, win->h, s->nbins, f, s->power + (size_t)k * s->nbins);
   free(f);
-  s->bound = nl_octaves_bound(o, b.bound);
-  nl_grad2_free(t);
+  s->bound = nl_noise_octaves_bound(o, b.bound);
+  nl_noise_grad2_free(t);
 }
 
-nl_survey *nl_survey_run(nl_basis_kind kind, const nl_octaves *o, const nl_window *win,
+nl_study_survey *nl_study_survey_run(nl_study_basis_kind kind, const nl_noise_octaves *o, const nl_noise_window *win,
                          unsigned long seed0, int nseeds)
 {
-  nl_survey *s = nl_xcalloc(1, sizeof *s);
+  nl_study_survey *s = nl_xcalloc(1, sizeof *s);
   s->nseeds = nseeds;
   s->w = win->w;
   s->h = win->h;
@@ -45,13 +45,13 @@ nl_survey *nl_survey_run(nl_basis_kind kind, const nl_octaves *o, const nl_windo
   double *v = nl_xmalloc((size_t)win->w * win->h * sizeof *v);
   for (int k = 0; k < nseeds; k++)
     one_seed(s, kind, o, win, nl_seed_replicate(seed0, k), k, k == 0 ? s->first : v);
-  /* nl_radial_power bins in cycles per pixel; a pixel is size/w units. */
+  /* nl_spectrum_radial bins in cycles per pixel; a pixel is size/w units. */
   for (int b = 0; b < s->nbins; b++) s->freq[b] = (b + 0.5) * 0.5 / s->nbins * win->w / win->size;
   free(v);
   return s;
 }
 
-void nl_survey_free(nl_survey *s)
+void nl_study_survey_free(nl_study_survey *s)
 {
   if (!s) return;
   free(s->mean); free(s->sd); free(s->min); free(s->max);
@@ -65,10 +65,10 @@ static nl_table *dist_table(void)
   return nl_table_alloc(13, cols);
 }
 
-static void dist_row(nl_table *t, const nl_setting *st, const nl_survey *s)
+static void dist_row(nl_table *t, const nl_study_setting *st, const nl_study_survey *s)
 {
   size_t n = (size_t)s->nseeds;
-  const nl_octaves *o = &st->oct;
+  const nl_noise_octaves *o = &st->oct;
   double m = gsl_stats_mean(s->mean, 1, n), sd = gsl_stats_mean(s->sd, 1, n);
   double msd = n > 1 ? gsl_stats_sd(s->mean, 1, n) : 0, sdsd = n > 1 ? gsl_stats_sd(s->sd, 1, n) : 0;
   double mx = 0;
@@ -77,13 +77,13 @@ static void dist_row(nl_table *t, const nl_setting *st, const nl_survey *s)
                   gsl_stats_mean(s->min, 1, n), gsl_stats_mean(s->max, 1, n), mx, s->bound, mx / s->bound);
 }
 
-void nl_survey_series(nl_basis_kind kind, const nl_setting *settings, int n,
-                      const nl_window *win, unsigned long seed0, int nseeds,
+void nl_study_survey_series(nl_study_basis_kind kind, const nl_study_setting *settings, int n,
+                      const nl_noise_window *win, unsigned long seed0, int nseeds,
                       nl_table **dist, nl_table **spectrum, nl_image **panels)
 {
   nl_table *dt = dist_table(), *sp = NULL;
   for (int i = 0; i < n; i++) {
-    nl_survey *s = nl_survey_run(kind, &settings[i].oct, win, seed0, nseeds);
+    nl_study_survey *s = nl_study_survey_run(kind, &settings[i].oct, win, seed0, nseeds);
     dist_row(dt, &settings[i], s);
     if (!sp) {
       const char **cols = nl_xmalloc((size_t)(n + 1) * sizeof *cols);
@@ -102,7 +102,7 @@ void nl_survey_series(nl_basis_kind kind, const nl_setting *settings, int n,
       double m = s->mean[0], sd = s->sd[0] > 0 ? s->sd[0] : 1;
       panels[i] = nl_image_from_values(s->first, win->w, win->h, m - 3 * sd, m + 3 * sd);
     }
-    nl_survey_free(s);
+    nl_study_survey_free(s);
   }
   if (dist) *dist = dt; else nl_table_free(dt);
   if (spectrum) *spectrum = sp; else nl_table_free(sp);

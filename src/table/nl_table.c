@@ -112,11 +112,11 @@ const char *nl_table_cell_text(const nl_table *t, size_t r, size_t c, char *buf)
 {
   size_t k = r * t->ncols + c;
   if (t->text && t->text[k]) return t->text[k];
-  nl_format_double(buf, t->num[k]);
+  nl_table_format_double(buf, t->num[k]);
   return buf;
 }
 
-void nl_format_double(char *buf, double v)
+void nl_table_format_double(char *buf, double v)
 {
   if (v == 0) { strcpy(buf, v == 0 && signbit(v) ? "-0" : "0"); return; }
   snprintf(buf, 32, "%.15g", v);

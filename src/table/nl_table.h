@@ -74,7 +74,7 @@ void nl_table_set_text(nl_table *t, size_t r, const char *name, const char *text
 /* Like nl_table_column, but aborts (as above) when the name is missing. */
 size_t nl_table_column_must(const nl_table *t, const char *name);
 /* The cell as the writer writes it: its text, or the double formatted by
- * nl_format_double into buf (32 bytes). */
+ * nl_table_format_double into buf (32 bytes). */
 const char *nl_table_cell_text(const nl_table *t, size_t r, size_t c, char *buf);
 
 /* Refuses (NL_EINVAL, nothing written) a NaN or infinite number, which the
@@ -84,6 +84,6 @@ nl_status nl_table_read(const char *path, int flags, nl_table **out, nl_error *e
 
 /* Formats a double the way the writer does (shortest of %.15g/%.17g that
  * round-trips). buf needs 32 bytes. */
-void nl_format_double(char *buf, double v);
+void nl_table_format_double(char *buf, double v);
 
 #endif

@@ -3,16 +3,16 @@
 #include <math.h>
 #include <string.h>
 
-nl_ramp nl_ramp_linear(int n, const double *pos, const float (*rgb)[3])
+nl_texture_ramp nl_texture_ramp_linear(int n, const double *pos, const float (*rgb)[3])
 {
-  nl_ramp r = {.n = n < 1 ? 1 : n > NL_RAMP_MAX ? NL_RAMP_MAX : n, .kind = NL_RAMP_LINEAR};
+  nl_texture_ramp r = {.n = n < 1 ? 1 : n > NL_RAMP_MAX ? NL_RAMP_MAX : n, .kind = NL_RAMP_LINEAR};
   for (int k = 0; k < r.n; k++) { r.pos[k] = pos[k]; memcpy(r.rgb[k], rgb[k], sizeof r.rgb[k]); }
   return r;
 }
 
-nl_ramp nl_ramp_spline(int n, const float (*rgb)[3])
+nl_texture_ramp nl_texture_ramp_spline(int n, const float (*rgb)[3])
 {
-  nl_ramp r = {.n = n < 4 ? 4 : n > NL_RAMP_MAX ? NL_RAMP_MAX : n, .kind = NL_RAMP_SPLINE};
+  nl_texture_ramp r = {.n = n < 4 ? 4 : n > NL_RAMP_MAX ? NL_RAMP_MAX : n, .kind = NL_RAMP_SPLINE};
   for (int k = 0; k < r.n; k++) {
     r.pos[k] = (double)k / (r.n - 1);
     memcpy(r.rgb[k], rgb[k < n ? k : n - 1], sizeof r.rgb[k]);
@@ -20,7 +20,7 @@ nl_ramp nl_ramp_spline(int n, const float (*rgb)[3])
   return r;
 }
 
-static void eval_linear(const nl_ramp *r, double u, float *rgb)
+static void eval_linear(const nl_texture_ramp *r, double u, float *rgb)
 {
   if (u <= r->pos[0] || r->n == 1) { memcpy(rgb, r->rgb[0], 3 * sizeof *rgb); return; }
   if (u >= r->pos[r->n - 1]) { memcpy(rgb, r->rgb[r->n - 1], 3 * sizeof *rgb); return; }
@@ -32,7 +32,7 @@ static void eval_linear(const nl_ramp *r, double u, float *rgb)
 
 /* Ebert et al., "Texturing & Modeling", spline(): Catmull-Rom basis over
  * the span of four knots that contains u. */
-static void eval_spline(const nl_ramp *r, double u, float *rgb)
+static void eval_spline(const nl_texture_ramp *r, double u, float *rgb)
 {
   int nspans = r->n - 3;
   double x = (u < 0 ? 0 : u > 1 ? 1 : u) * nspans;
@@ -49,58 +49,58 @@ static void eval_spline(const nl_ramp *r, double u, float *rgb)
   }
 }
 
-void nl_ramp_eval(const nl_ramp *r, double u, float *rgb)
+void nl_texture_ramp_eval(const nl_texture_ramp *r, double u, float *rgb)
 {
   if (r->kind == NL_RAMP_SPLINE) eval_spline(r, u, rgb);
   else eval_linear(r, u, rgb);
 }
 
-nl_image *nl_ramp_image(const nl_ramp *r, const double *values, int w, int h, double lo, double hi)
+nl_image *nl_texture_ramp_image(const nl_texture_ramp *r, const double *values, int w, int h, double lo, double hi)
 {
   nl_image *im = nl_image_alloc(w, h, 3);
   double s = hi > lo ? 1.0 / (hi - lo) : 0.0;
-  for (size_t i = 0; i < (size_t)w * h; i++) nl_ramp_eval(r, (values[i] - lo) * s, im->data + 3 * i);
+  for (size_t i = 0; i < (size_t)w * h; i++) nl_texture_ramp_eval(r, (values[i] - lo) * s, im->data + 3 * i);
   return im;
 }
 
-nl_ramp nl_ramp_grey(void)
+nl_texture_ramp nl_texture_ramp_grey(void)
 {
   const double pos[] = {0, 1};
   const float rgb[][3] = {{0, 0, 0}, {1, 1, 1}};
-  return nl_ramp_linear(2, pos, rgb);
+  return nl_texture_ramp_linear(2, pos, rgb);
 }
 
-nl_ramp nl_ramp_marble(void)
+nl_texture_ramp nl_texture_ramp_marble(void)
 {
   /* White veins into grey-blue stone, the slides' marble palette. */
   const double pos[] = {0.0, 0.35, 0.6, 0.8, 1.0};
   const float rgb[][3] = {{0.95f, 0.95f, 0.93f}, {0.85f, 0.85f, 0.86f}, {0.55f, 0.58f, 0.66f},
                           {0.28f, 0.30f, 0.42f}, {0.12f, 0.12f, 0.22f}};
-  return nl_ramp_linear(5, pos, rgb);
+  return nl_texture_ramp_linear(5, pos, rgb);
 }
 
-void nl_marble_grid(const nl_basis *b, const nl_octaves *o, const nl_window *win,
+void nl_texture_marble_grid(const nl_noise_basis *b, const nl_noise_octaves *o, const nl_noise_window *win,
                     double omega, double a, double *u)
 {
-  nl_fractal_grid(b, o, win, u);
+  nl_noise_fractal_grid(b, o, win, u);
   double dy = win->size / win->h;
   for (int r = 0; r < win->h; r++) {
     double y = win->y0 + (r + 0.5) * dy;
     double *row = u + (size_t)r * win->w;
-    for (int c = 0; c < win->w; c++) row[c] = nl_marble(omega * y, omega * a, row[c]);
+    for (int c = 0; c < win->w; c++) row[c] = nl_texture_marble(omega * y, omega * a, row[c]);
   }
 }
 
 /* ---- Qin & Yang sec. 4 ------------------------------------------------- */
 
-nl_ramp nl_cellular_marble_ramp(void)
+nl_texture_ramp nl_texture_ramp_cellular_marble(void)
 {
   static const float k[13][3] = {
     {0.25f, 0.25f, 0.35f}, {0.25f, 0.25f, 0.35f}, {0.10f, 0.10f, 0.30f}, {0.10f, 0.10f, 0.30f},
     {0.10f, 0.10f, 0.30f}, {0.25f, 0.25f, 0.35f}, {0.25f, 0.25f, 0.35f}, {0.05f, 0.05f, 0.26f},
     {0.05f, 0.05f, 0.26f}, {0.03f, 0.03f, 0.20f}, {0.03f, 0.03f, 0.20f}, {0.25f, 0.25f, 0.35f},
     {0.03f, 0.03f, 0.20f}};
-  return nl_ramp_spline(13, k);
+  return nl_texture_ramp_spline(13, k);
 }
 
 static double smoothstep01(double t)
@@ -109,7 +109,7 @@ static double smoothstep01(double t)
   return t * t * (3.0 - 2.0 * t);   /* RenderMan's Hermite smoothstep */
 }
 
-nl_image *nl_gctbf_cloud_colour(const double *v, int w, int h)
+nl_image *nl_texture_cloud_colour(const double *v, int w, int h)
 {
   static const float sky[3] = {0.15f, 0.15f, 0.60f}, cloud[3] = {1.0f, 1.0f, 1.0f};
   nl_image *im = nl_image_alloc(w, h, 3);

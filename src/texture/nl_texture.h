@@ -9,8 +9,8 @@
  *     Catmull-Rom through knots 1..n-2, knots 0 and n-1 only steer the ends;
  *     u in [0, 1] covers the n - 3 segments. pos is ignored.
  *
- *   nl_ramp r = nl_ramp_linear(3, pos, rgb);
- *   nl_image *im = nl_ramp_image(&r, values, w, h, lo, hi);   // lo -> u=0, hi -> u=1
+ *   nl_texture_ramp r = nl_texture_ramp_linear(3, pos, rgb);
+ *   nl_image *im = nl_texture_ramp_image(&r, values, w, h, lo, hi);   // lo -> u=0, hi -> u=1
  *
  * Marble (Shaffer's slides, Cheng eq. 4.1 in another form):
  *   u = (1 + sin(y + a * s)) / 2   with s a fractal sum at the point.
@@ -28,34 +28,34 @@ typedef struct {
   int n, kind;
   double pos[NL_RAMP_MAX];
   float rgb[NL_RAMP_MAX][3];
-} nl_ramp;
+} nl_texture_ramp;
 
-nl_ramp nl_ramp_linear(int n, const double *pos, const float (*rgb)[3]);
-nl_ramp nl_ramp_spline(int n, const float (*rgb)[3]);
-void nl_ramp_eval(const nl_ramp *r, double u, float *rgb);
+nl_texture_ramp nl_texture_ramp_linear(int n, const double *pos, const float (*rgb)[3]);
+nl_texture_ramp nl_texture_ramp_spline(int n, const float (*rgb)[3]);
+void nl_texture_ramp_eval(const nl_texture_ramp *r, double u, float *rgb);
 /* RGB image of values mapped by (v - lo) / (hi - lo) through the ramp. */
-nl_image *nl_ramp_image(const nl_ramp *r, const double *values, int w, int h, double lo, double hi);
+nl_image *nl_texture_ramp_image(const nl_texture_ramp *r, const double *values, int w, int h, double lo, double hi);
 
-static inline double nl_marble(double y, double a, double s) { return 0.5 * (1.0 + __builtin_sin(y + a * s)); }
+static inline double nl_texture_marble(double y, double a, double s) { return 0.5 * (1.0 + __builtin_sin(y + a * s)); }
 
 /* Shaffer's marble on a window: p.y += a * fractal(p), then
  * u = (1 + sin(omega * p.y)) / 2 (omega = 2 pi stripes per unit).
  * u holds w * h values in [0, 1], rows from y0. */
-void nl_marble_grid(const nl_basis *b, const nl_octaves *o, const nl_window *win,
+void nl_texture_marble_grid(const nl_noise_basis *b, const nl_noise_octaves *o, const nl_noise_window *win,
                     double omega, double a, double *u);
 
 /* Built-in ramps: a grey ramp and a white-grey-blue marble ramp. */
-nl_ramp nl_ramp_grey(void);
-nl_ramp nl_ramp_marble(void);
+nl_texture_ramp nl_texture_ramp_grey(void);
+nl_texture_ramp nl_texture_ramp_marble(void);
 
 /* ---- Qin & Yang's colours (sec. 4), on values from cellular/ ----------
  * Here rather than in cellular/ so that the cellular module makes numbers
  * only and never depends on the image module. */
-/* Sec. 4.1's 13-knot blue-marble spline ramp (nl_ramp_spline):
+/* Sec. 4.1's 13-knot blue-marble spline ramp (nl_texture_ramp_spline):
  * c1 = c2 = c6 = c7 = c12 = (0.25, 0.25, 0.35), c3 = c4 = c5 = (0.10, 0.10, 0.30),
  * c8 = c9 = (0.05, 0.05, 0.26), c10 = c11 = c13 = (0.03, 0.03, 0.20). */
-nl_ramp nl_cellular_marble_ramp(void);
+nl_texture_ramp nl_texture_ramp_cellular_marble(void);
 /* RGB image of eq. 7's mix(skycolor, cloudcolor, smoothstep(0, 1, v)). */
-nl_image *nl_gctbf_cloud_colour(const double *v, int w, int h);
+nl_image *nl_texture_cloud_colour(const double *v, int w, int h);
 
 #endif

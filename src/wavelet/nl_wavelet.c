@@ -250,11 +250,11 @@ static void wavelet_basis_row(const void *ctx, double x0, double dx, double y, d
   nl_wavelet_row(ctx, x0, dx, y, z, n, 1.0, out);
 }
 
-nl_basis nl_basis_wavelet(const nl_wavelet_tile *t)
+nl_noise_basis nl_wavelet_basis(const nl_wavelet_tile *t)
 {
   size_t n = (size_t)t->n * t->n * (t->dim == 3 ? (size_t)t->n : 1);
   double m = 0;
   for (size_t k = 0; k < n; k++) m = fmax(m, fabs(t->data[k]));
-  nl_basis b = {wavelet_basis_row, t, m};
+  nl_noise_basis b = {wavelet_basis_row, t, m};
   return b;
 }

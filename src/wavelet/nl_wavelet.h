@@ -81,7 +81,7 @@ void nl_wavelet_row(const nl_wavelet_tile *t, double x0, double dx, double y, do
 /* The tile as a basis for sums of octaves and rendering (nl_noise.h). Its
  * bound is max |coefficient|: quadratic B-spline weights are non-negative
  * and sum to 1. The tile must outlive the basis. */
-nl_basis nl_basis_wavelet(const nl_wavelet_tile *t);
+nl_noise_basis nl_wavelet_basis(const nl_wavelet_tile *t);
 
 /* <N^2> on a grid of per_unit samples per unit and axis over one period
  * (midpoints, (i + 1/2) / per_unit). Wavelet noise is not stationary: its

@@ -1,8 +1,8 @@
 /* libFuzzer target: the noise-by-example parameter file reader,
- * nl_example_params_load (src/example/nl_example_params.c). Loaded
+ * nl_byexample_params_load (src/byexample/nl_byexample_params.c). Loaded
  * parameters must satisfy the documented limits; they are saved and loaded
  * again and must come back bit for bit. */
-#include "example/nl_example.h"
+#include "byexample/nl_byexample.h"
 #include "nl_fuzz.h"
 
 #include <math.h>
@@ -16,9 +16,9 @@ static void fail(const char *what)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
   const char *path = nl_fuzz_file(data, size, "params");
-  nl_example_params p, q;
+  nl_byexample_params p, q;
   nl_error err = {{0}};
-  nl_status st = nl_example_params_load(path, &p, &err);
+  nl_status st = nl_byexample_params_load(path, &p, &err);
   nl_fuzz_check_error(st, &err);
   if (st != NL_OK) return 0;
   if (p.channels != 1 && p.channels != 3) fail("channels not 1 or 3");
@@ -33,7 +33,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   }
   /* Round trip: save beside the input, load, compare. */
   const char *out = nl_fuzz_file((const uint8_t *)"", 0, "out");
-  if (nl_example_params_save(&p, out, &err) || nl_example_params_load(out, &q, &err)) {
+  if (nl_byexample_params_save(&p, out, &err) || nl_byexample_params_load(out, &q, &err)) {
     fprintf(stderr, "nl_fuzz: round trip: %s\n", err.msg);
     abort();
   }

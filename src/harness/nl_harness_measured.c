@@ -1,8 +1,8 @@
-/* Regression tolerances from a measurement (nl_run_check_measured in
- * nl_report.h): the spread of each column over the CPU-dependent
+/* Regression tolerances from a measurement (nl_harness_check_measured in
+ * nl_harness.h): the spread of each column over the CPU-dependent
  * configurations, measured by bench/blas-spread.sh into
  * data/blas_spread.tsv, times a stated multiple. */
-#include "report/nl_report.h"
+#include "harness/nl_harness.h"
 
 #include <float.h>
 #include <math.h>
@@ -10,14 +10,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "report/nl_build_info.h"   /* NL_SOURCE_ROOT */
+#include "harness/nl_build_info.h"   /* NL_SOURCE_ROOT */
 
 /* Relative spreads above this are of values that are themselves rounding
  * noise (an orthogonality error of 1e-16, a p-value near 0): their relative
  * change says nothing, so the tolerance is absolute. */
 #define NL_MEASURED_REL_LIMIT 1e-3
 
-static nl_table *spread_table(nl_run *r)
+static nl_table *spread_table(nl_harness *r)
 {
   static nl_table *t;
   static int tried;
@@ -26,12 +26,12 @@ static nl_table *spread_table(nl_run *r)
   const char *env = getenv("NL_BLAS_SPREAD");   /* tests point it elsewhere */
   char *path = env && *env ? nl_xstrdup(env) : nl_path_join(NL_SOURCE_ROOT, "data/blas_spread.tsv");
   nl_error err;
-  if (nl_table_read(path, NL_TABLE_TEXT, &t, &err)) nl_run_die(r, 1, "tolerances: %s", err.msg);
+  if (nl_table_read(path, NL_TABLE_TEXT, &t, &err)) nl_harness_die(r, 1, "tolerances: %s", err.msg);
   free(path);
   return t;
 }
 
-void nl_run_check_measured(nl_run *r, const char *table, double multiple)
+void nl_harness_check_measured(nl_harness *r, const char *table, double multiple)
 {
   /* bench/blas-spread.sh sets this: the run is the measurement itself. */
   const char *measuring = getenv("NL_MEASURING");
@@ -42,9 +42,9 @@ void nl_run_check_measured(nl_run *r, const char *table, double multiple)
        cr = nl_table_column(t, "max_rel_spread"), ca = nl_table_column(t, "max_abs_spread"),
        cg = nl_table_column(t, "configs");
   if (ce < 0 || cs < 0 || ct < 0 || cc < 0 || cr < 0 || ca < 0 || cg < 0)
-    nl_run_die(r, 1, "tolerances: data/blas_spread.tsv lacks a column (experiment, scale, table, "
+    nl_harness_die(r, 1, "tolerances: data/blas_spread.tsv lacks a column (experiment, scale, table, "
                      "column, max_rel_spread, max_abs_spread, configs)");
-  const char *scale = nl_run_quick(r) ? "quick" : "full";
+  const char *scale = nl_harness_quick(r) ? "quick" : "full";
   int all = !strcmp(table, "*");
   /* A scale not measured borrows the other scale's spreads, and says so. */
   int borrowed = 0;
@@ -52,8 +52,8 @@ void nl_run_check_measured(nl_run *r, const char *table, double multiple)
     int have = 0;
     char b0[64], b1[64];
     for (size_t i = 0; i < t->nrows && !have; i++)
-      have = !strcmp(nl_table_cell_text(t, i, (size_t)ce, b0), nl_run_name(r)) && !strcmp(nl_table_cell_text(t, i, (size_t)cs, b1), scale);
-    if (!have) { scale = nl_run_quick(r) ? "full" : "quick"; borrowed = 1; }
+      have = !strcmp(nl_table_cell_text(t, i, (size_t)ce, b0), nl_harness_name(r)) && !strcmp(nl_table_cell_text(t, i, (size_t)cs, b1), scale);
+    if (!have) { scale = nl_harness_quick(r) ? "full" : "quick"; borrowed = 1; }
   }
   char b[6][64];
   int found = 0, ndiff = 0, nabs = 0;
@@ -61,7 +61,7 @@ void nl_run_check_measured(nl_run *r, const char *table, double multiple)
   char worst_at[256] = "", configs[1024] = "", moved[1024] = "", last[128] = "";
   for (size_t i = 0; i < t->nrows; i++) {
     const char *tab = nl_table_cell_text(t, i, (size_t)ct, b[2]);
-    if (strcmp(nl_table_cell_text(t, i, (size_t)ce, b[0]), nl_run_name(r)) || strcmp(nl_table_cell_text(t, i, (size_t)cs, b[1]), scale) ||
+    if (strcmp(nl_table_cell_text(t, i, (size_t)ce, b[0]), nl_harness_name(r)) || strcmp(nl_table_cell_text(t, i, (size_t)cs, b[1]), scale) ||
         (!all && strcmp(tab, table))) continue;
     found = 1;
     const char *col = nl_table_cell_text(t, i, (size_t)cc, b[3]);
@@ -69,13 +69,13 @@ void nl_run_check_measured(nl_run *r, const char *table, double multiple)
     const char *g = t->text[i * t->ncols + (size_t)cg];
     snprintf(configs, sizeof configs, "%s", g ? g : "");
     if (rel == 0) continue;   /* identical under every configuration: stays exact */
-    const char *had = nl_run_check_rule(r, tab, col);
+    const char *had = nl_harness_check_rule(r, tab, col);
     if (had && strcmp(had, "exact")) continue;   /* welch, ftest, ignore: the experiment's own */
     char rule[64];
     ndiff++;
     if (rel > NL_MEASURED_REL_LIMIT) { snprintf(rule, sizeof rule, "abs %.2g", multiple * ab); nabs++; }
     else snprintf(rule, sizeof rule, "rel %.2g", multiple * rel);
-    nl_run_check(r, tab, col, rule);
+    nl_harness_check(r, tab, col, rule);
     if (strcmp(last, tab)) {   /* rows of one table are consecutive */
       size_t n = strlen(moved);
       snprintf(moved + n, sizeof moved - n, "%s`%s`", n ? ", " : "", tab);
@@ -87,19 +87,19 @@ void nl_run_check_measured(nl_run *r, const char *table, double multiple)
     }
   }
   if (!found)
-    nl_run_die(r, 1, "tolerances: no measured spread for %s %s (%s scale) in data/blas_spread.tsv; "
-                     "run bench/blas-spread.sh%s %s", nl_run_name(r), table, scale,
-               nl_run_quick(r) ? " --quick" : "", nl_run_name(r));
+    nl_harness_die(r, 1, "tolerances: no measured spread for %s %s (%s scale) in data/blas_spread.tsv; "
+                     "run bench/blas-spread.sh%s %s", nl_harness_name(r), table, scale,
+               nl_harness_quick(r) ? " --quick" : "", nl_harness_name(r));
   int nconf = 0;
   for (const char *p = configs; *p; p++) nconf += (p == configs || p[-1] == ' ') && *p != ' ';
   if (borrowed)
-    nl_report_text(r, "This scale is not measured; the spreads below are those of the %s-scale run.\n", scale);
+    nl_harness_text(r, "This scale is not measured; the spreads below are those of the %s-scale run.\n", scale);
   if (ndiff == 0)
-    nl_report_text(r, "Regression rules: exact; no value of %s moved over %d CPU configurations "
+    nl_harness_text(r, "Regression rules: exact; no value of %s moved over %d CPU configurations "
                       "(OpenBLAS kernels, BLAS threads, libm without FMA; `data/blas_spread.tsv`).\n",
                    all ? "any table" : table, nconf);
   else
-    nl_report_text(r, "Regression rules: %d column%s of %s moved over %d CPU configurations (OpenBLAS "
+    nl_harness_text(r, "Regression rules: %d column%s of %s moved over %d CPU configurations (OpenBLAS "
                       "kernels, BLAS threads, libm without FMA; `data/blas_spread.tsv`), the largest "
                       "relative spread %.2g (%s); each is compared within %g x its measured spread "
                       "(relative%s); the other columns keep their declared rule (exact unless stated).\n",

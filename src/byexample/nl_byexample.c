@@ -1,4 +1,4 @@
-#include "example/nl_example.h"
+#include "byexample/nl_byexample.h"
 #include "spectrum/nl_spectrum.h"
 
 #include <gsl/gsl_cdf.h>
@@ -10,7 +10,7 @@
 
 /* ---- noise by example (sec. 4) ------------------------------------------ */
 
-int nl_example_band_count(int w, int h)
+int nl_byexample_band_count(int w, int h)
 {
   /* Lowest non-zero frequency 1/max(w, h) cycles per pixel lies in band
    * floor(log2 max(w, h)) of eq. 13 (512 -> 9). */
@@ -29,15 +29,15 @@ static int band_of(double m)
   return e - 1;
 }
 
-void nl_example_band_power(const double *img, int w, int h, int nbands, double *power)
+void nl_byexample_band_power(const double *img, int w, int h, int nbands, double *power)
 {
   double *P = nl_xmalloc((size_t)w * h * sizeof *P);
-  nl_power2(img, w, h, P);
+  nl_spectrum_power2(img, w, h, P);
   memset(power, 0, (size_t)nbands * sizeof *power);
   for (int v = 0; v < h; v++) {
-    double fy = fabs(nl_fft_freq(v, h));
+    double fy = fabs(nl_spectrum_freq(v, h));
     for (int u = 0; u < w; u++) {
-      double m = fmax(fabs(nl_fft_freq(u, w)), fy);
+      double m = fmax(fabs(nl_spectrum_freq(u, w)), fy);
       if (m == 0) continue;   /* DC: in no band */
       int k = band_of(m);
       if (k < nbands) power[k] += P[(size_t)v * w + u];
@@ -46,13 +46,13 @@ void nl_example_band_power(const double *img, int w, int h, int nbands, double *
   free(P);
 }
 
-void nl_example_weights(const double *img, int w, int h, int nbands, double sigma2, double *wts)
+void nl_byexample_weights(const double *img, int w, int h, int nbands, double sigma2, double *wts)
 {
-  nl_example_band_power(img, w, h, nbands, wts);
+  nl_byexample_band_power(img, w, h, nbands, wts);
   for (int k = 0; k < nbands; k++) wts[k] = sqrt(wts[k] / sigma2);
 }
 
-void nl_example_band_leakage(const nl_wavelet_tile *t, int size, int nbands, unsigned long seed,
+void nl_byexample_band_leakage(const nl_wavelet_tile *t, int size, int nbands, unsigned long seed,
                              double *share, double *var)
 {
   double *img = nl_xmalloc((size_t)size * size * sizeof *img), w[NL_WAVELET_MAX_BANDS];
@@ -62,7 +62,7 @@ void nl_example_band_leakage(const nl_wavelet_tile *t, int size, int nbands, uns
     nl_wavelet_bands_init(&b, nbands, w, t->n, seed, NULL);
     nl_wavelet_bands_grid(t, &b, size, size, 0, 1, img);
     double *row = share + (size_t)k * nbands;
-    nl_example_band_power(img, size, size, nbands, row);
+    nl_byexample_band_power(img, size, size, nbands, row);
     var[k] = 0;
     for (int j = 0; j < nbands; j++) var[k] += row[j];
     for (int j = 0; j < nbands; j++) row[j] /= var[k];
@@ -70,7 +70,7 @@ void nl_example_band_leakage(const nl_wavelet_tile *t, int size, int nbands, uns
   free(img);
 }
 
-double nl_example_sigma2(int n)
+double nl_byexample_sigma2(int n)
 {
   /* Cached: synthesis and analysis ask for the same tile period. */
   static int cached_n;
@@ -112,7 +112,7 @@ static void orient_axes(double M[3][3])
   if (det < 0) for (int c = 0; c < 3; c++) M[2][c] = -M[2][c];
 }
 
-nl_status nl_example_pca(const nl_image *im, double mean[3], double matrix[3][3], nl_error *err)
+nl_status nl_byexample_pca(const nl_image *im, double mean[3], double matrix[3][3], nl_error *err)
 {
   int nch = colour_channels(im), C = im->channels;
   size_t n = (size_t)im->width * im->height;
@@ -148,7 +148,7 @@ nl_status nl_example_pca(const nl_image *im, double mean[3], double matrix[3][3]
   return NL_OK;
 }
 
-void nl_example_decorrelate(const nl_image *im, int nch, const double mean[3],
+void nl_byexample_decorrelate(const nl_image *im, int nch, const double mean[3],
                             const double matrix[3][3], double **plane)
 {
   size_t n = (size_t)im->width * im->height;
@@ -162,7 +162,7 @@ void nl_example_decorrelate(const nl_image *im, int nch, const double mean[3],
   }
 }
 
-void nl_example_recorrelate(double *const *plane, int nch, const double mean[3],
+void nl_byexample_recorrelate(double *const *plane, int nch, const double mean[3],
                             const double matrix[3][3], nl_image *out)
 {
   size_t n = (size_t)out->width * out->height;
@@ -184,7 +184,7 @@ static int cmp_double(const void *a, const void *b)
   return (x > y) - (x < y);
 }
 
-void nl_example_quantiles(const double *v, size_t n, double *q)
+void nl_byexample_quantiles(const double *v, size_t n, double *q)
 {
   double *s = nl_xmalloc(n * sizeof *s);
   memcpy(s, v, n * sizeof *s);
@@ -207,7 +207,7 @@ static int cmp_ranked(const void *a, const void *b)
   return (x->i > y->i) - (x->i < y->i);
 }
 
-void nl_example_gaussianize(double *v, size_t n)
+void nl_byexample_gaussianize(double *v, size_t n)
 {
   ranked *r = nl_xmalloc(n * sizeof *r);
   for (size_t i = 0; i < n; i++) { r[i].v = v[i]; r[i].i = i; }
@@ -252,7 +252,7 @@ static double hermite(const double *x, const double *y, const double *d, int n, 
   return y[k] + (y[k + 1] - y[k]) * (3 * s2 - 2 * s3) + h * (d[k] * (s3 - 2 * s2 + s) + d[k + 1] * (s3 - s2));
 }
 
-void nl_example_spline(const double *x, const double *y, int n, nl_spline_kind kind,
+void nl_byexample_spline(const double *x, const double *y, int n, nl_byexample_spline_kind kind,
                        const double *xs, double *ys, size_t m)
 {
   if (kind == NL_SPLINE_STEFFEN) {
@@ -270,7 +270,7 @@ void nl_example_spline(const double *x, const double *y, int n, nl_spline_kind k
   for (size_t i = 0; i < m; i++) ys[i] = hermite(x, y, d, n, fmin(fmax(xs[i], x[0]), x[n - 1]));
 }
 
-void nl_example_match(double *v, size_t n, double sigma, const double *q, nl_spline_kind kind)
+void nl_byexample_match(double *v, size_t n, double sigma, const double *q, nl_byexample_spline_kind kind)
 {
   double p[NL_EXAMPLE_HIST];
   for (int j = 0; j < NL_EXAMPLE_HIST; j++) p[j] = (double)j / (NL_EXAMPLE_HIST - 1);
@@ -282,15 +282,15 @@ void nl_example_match(double *v, size_t n, double sigma, const double *q, nl_spl
     for (size_t i = 0; i < n; i++) v[i] = q[0];
     return;
   }
-  nl_example_spline(p, q, NL_EXAMPLE_HIST, kind, v, v, n);
+  nl_byexample_spline(p, q, NL_EXAMPLE_HIST, kind, v, v, n);
 }
 
 /* ---- analysis and synthesis (sec. 5.3) ----------------------------------- */
 
-nl_status nl_example_analyse(const nl_image *im, const nl_example_options *opt,
-                             nl_example_params *p, nl_error *err)
+nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *opt,
+                             nl_byexample_params *p, nl_error *err)
 {
-  nl_example_options o = {1, 1, 0, 0};
+  nl_byexample_options o = {1, 1, 0, 0};
   if (opt) o = *opt;
   if (o.tile == 0) o.tile = NL_EXAMPLE_TILE;
   if (im->width < NL_EXAMPLE_MIN_SIZE || im->height < NL_EXAMPLE_MIN_SIZE)
@@ -299,11 +299,11 @@ nl_status nl_example_analyse(const nl_image *im, const nl_example_options *opt,
   if (o.tile < 8 || o.tile % 2) return nl_fail(err, NL_EINVAL, "tile period %d not even and >= 8", o.tile);
   memset(p, 0, sizeof *p);
   p->channels = colour_channels(im);
-  p->nbands = nl_example_band_count(im->width, im->height);
+  p->nbands = nl_byexample_band_count(im->width, im->height);
   p->tile = o.tile;
   p->histogram = o.histogram;
-  p->sigma2 = o.sigma2 > 0 ? o.sigma2 : nl_example_sigma2(o.tile);
-  nl_status st = nl_example_pca(im, p->mean, p->matrix, err);
+  p->sigma2 = o.sigma2 > 0 ? o.sigma2 : nl_byexample_sigma2(o.tile);
+  nl_status st = nl_byexample_pca(im, p->mean, p->matrix, err);
   if (st) return st;
   if (!o.decorrelate) {
     memset(p->matrix, 0, sizeof p->matrix);
@@ -312,12 +312,12 @@ nl_status nl_example_analyse(const nl_image *im, const nl_example_options *opt,
   size_t n = (size_t)im->width * im->height;
   double *plane[3];
   for (int c = 0; c < p->channels; c++) plane[c] = nl_xmalloc(n * sizeof(double));
-  nl_example_decorrelate(im, p->channels, p->mean, p->matrix, plane);
+  nl_byexample_decorrelate(im, p->channels, p->mean, p->matrix, plane);
   for (int c = 0; c < p->channels; c++) {
-    nl_example_quantiles(plane[c], n, p->hist[c]);
+    nl_byexample_quantiles(plane[c], n, p->hist[c]);
     int flat = p->hist[c][0] == p->hist[c][NL_EXAMPLE_HIST - 1];
-    if (p->histogram && !flat) nl_example_gaussianize(plane[c], n);
-    if (!flat) nl_example_weights(plane[c], im->width, im->height, p->nbands, p->sigma2, p->w[c]);
+    if (p->histogram && !flat) nl_byexample_gaussianize(plane[c], n);
+    if (!flat) nl_byexample_weights(plane[c], im->width, im->height, p->nbands, p->sigma2, p->w[c]);
     free(plane[c]);
   }
   /* Finite pixels can still overflow (values near FLT_MAX squared in the
@@ -333,9 +333,9 @@ nl_status nl_example_analyse(const nl_image *im, const nl_example_options *opt,
   return NL_OK;
 }
 
-void nl_example_channel_noise(const nl_example_params *p, int c, const nl_wavelet_tile *t,
+void nl_byexample_channel_noise(const nl_byexample_params *p, int c, const nl_wavelet_tile *t,
                               double gain, int w, int h, unsigned long seed,
-                              const nl_example_synth_options *opt, double *out)
+                              const nl_byexample_synth_options *opt, double *out)
 {
   double wts[NL_WAVELET_MAX_BANDS];
   for (int k = 0; k < p->nbands; k++) wts[k] = gain * p->w[c][k];
@@ -345,8 +345,8 @@ void nl_example_channel_noise(const nl_example_params *p, int c, const nl_wavele
   nl_wavelet_bands_grid(t, &b, w, h, opt ? opt->z : 0, scale, out);
 }
 
-nl_status nl_example_synthesize(const nl_example_params *p, int w, int h, unsigned long seed,
-                                const nl_example_synth_options *opt, nl_image **out,
+nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, unsigned long seed,
+                                const nl_byexample_synth_options *opt, nl_image **out,
                                 nl_error *err)
 {
   if (w < 1 || h < 1 || (double)w * h > 1e9)
@@ -370,38 +370,38 @@ nl_status nl_example_synthesize(const nl_example_params *p, int w, int h, unsign
   double *plane[3];
   for (int c = 0; c < p->channels; c++) {
     plane[c] = nl_xmalloc(n * sizeof(double));
-    nl_example_channel_noise(p, c, t, gain, w, h, seed, opt, plane[c]);
+    nl_byexample_channel_noise(p, c, t, gain, w, h, seed, opt, plane[c]);
     if (p->histogram) {
       double ss = 0;
       for (int k = 0; k < p->nbands; k++) ss += p->w[c][k] * p->w[c][k];
       double sigma_m = sqrt(p->sigma2 * ss);
-      if (sigma_m > 0) nl_example_match(plane[c], n, sigma_m, p->hist[c], opt ? opt->spline : 0);
+      if (sigma_m > 0) nl_byexample_match(plane[c], n, sigma_m, p->hist[c], opt ? opt->spline : 0);
       else for (size_t i = 0; i < n; i++) plane[c][i] = p->hist[c][NL_EXAMPLE_HIST / 2];
     }
   }
   nl_wavelet_tile_free(t);
   *out = nl_image_alloc(w, h, p->channels);
-  nl_example_recorrelate(plane, p->channels, p->mean, p->matrix, *out);
+  nl_byexample_recorrelate(plane, p->channels, p->mean, p->matrix, *out);
   for (int c = 0; c < p->channels; c++) free(plane[c]);
   return NL_OK;
 }
 
-int nl_example_param_count(const nl_example_params *p)
+int nl_byexample_param_count(const nl_byexample_params *p)
 {
   return p->channels * p->channels + p->channels * (NL_EXAMPLE_HIST + p->nbands);
 }
 
-void nl_example_attenuate(nl_example_params *p, int nfine, double factor)
+void nl_byexample_attenuate(nl_byexample_params *p, int nfine, double factor)
 {
   for (int c = 0; c < p->channels; c++)
     for (int k = 0; k < nfine && k < p->nbands; k++) p->w[c][k] *= factor;
 }
 
-nl_image *nl_example_spectrum_image(const double *img, int w, int h, double decades)
+nl_image *nl_byexample_spectrum_image(const double *img, int w, int h, double decades)
 {
   size_t n = (size_t)w * h;
   double *P = nl_xmalloc(n * sizeof *P), *L = nl_xmalloc(n * sizeof *L), top = -INFINITY;
-  nl_power2(img, w, h, P);
+  nl_spectrum_power2(img, w, h, P);
   for (int v = 0; v < h; v++)
     for (int u = 0; u < w; u++) {
       double l = log10(P[(size_t)v * w + u] + 1e-300);
@@ -414,30 +414,30 @@ nl_image *nl_example_spectrum_image(const double *img, int w, int h, double deca
   return im;
 }
 
-void nl_example_channel(const nl_image *im, int c, double *out)
+void nl_byexample_channel(const nl_image *im, int c, double *out)
 {
   size_t n = (size_t)im->width * im->height;
   for (size_t i = 0; i < n; i++) out[i] = im->data[i * im->channels + c];
 }
 
-void nl_example_luminance(const nl_image *im, double *out)
+void nl_byexample_luminance(const nl_image *im, double *out)
 {
   nl_image *g = nl_image_convert(im, 1);
-  nl_example_channel(g, 0, out);
+  nl_byexample_channel(g, 0, out);
   nl_image_free(g);
 }
 
-double nl_example_correlation_error(const nl_image *a, const nl_image *b)
+double nl_byexample_correlation_error(const nl_image *a, const nl_image *b)
 {
   double ca[3][3], cb[3][3], e = 0;
-  nl_example_correlation(a, ca);
-  nl_example_correlation(b, cb);
+  nl_byexample_correlation(a, ca);
+  nl_byexample_correlation(b, cb);
   for (int i = 0; i < 3; i++)
     for (int j = i + 1; j < 3; j++) e = fmax(e, fabs(ca[i][j] - cb[i][j]));
   return e;
 }
 
-void nl_example_rotation_error(const double M[3][3], double *det, double *orth)
+void nl_byexample_rotation_error(const double M[3][3], double *det, double *orth)
 {
   *det = M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0])
        + M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
@@ -447,12 +447,12 @@ void nl_example_rotation_error(const double M[3][3], double *det, double *orth)
       *orth = fmax(*orth, fabs(M[u][0] * M[v][0] + M[u][1] * M[v][1] + M[u][2] * M[v][2] - (u == v)));
 }
 
-void nl_example_correlation(const nl_image *im, double corr[3][3])
+void nl_byexample_correlation(const nl_image *im, double corr[3][3])
 {
   double mean[3], M[3][3], cov[3][3] = {{0}};
   int nch = colour_channels(im);
   size_t n = (size_t)im->width * im->height;
-  nl_example_pca(im, mean, M, NULL);
+  nl_byexample_pca(im, mean, M, NULL);
   for (size_t i = 0; i < n; i++)
     for (int a = 0; a < nch; a++)
       for (int b = 0; b < nch; b++)

@@ -1,4 +1,4 @@
-/* nl_example.h - procedural noise by example (Lagae, Vangorp, Lenaerts &
+/* nl_byexample.h - procedural noise by example (Lagae, Vangorp, Lenaerts &
  * Dutre 2010): the weights of a multiresolution wavelet noise from an
  * exemplar's spectrum, and texture synthesis by analysis for isotropic
  * stochastic textures.
@@ -9,11 +9,11 @@
  * i.e. max(|f_x|, |f_y|) in (2^-(i+1), 2^-i] cycles per pixel; the DC term
  * belongs to no band. Our band k = i - 1 (k = 0 finest), the index of
  * nl_wavelet_bands. With P_k the Parseval-normalised power of band k
- * (nl_power2: the powers sum to the mean square minus the DC),
+ * (nl_spectrum_power2: the powers sum to the mean square minus the DC),
  *   w_k = sqrt(P_k / sigma_N^2)                                   (eq. 12)
  * where sigma_N^2 is the band variance of our wavelet noise, measured
- * (nl_example_sigma2), not the paper's 0.265. A 512 x 512 image has
- * floor(log2 512) = 9 bands (nl_example_band_count).
+ * (nl_byexample_sigma2), not the paper's 0.265. A 512 x 512 image has
+ * floor(log2 512) = 9 bands (nl_byexample_band_count).
  *
  * Synthesis by analysis (sec. 5.3), per exemplar:
  *   analysis  1. PCA: mean and 3x3 orthonormal matrix M (rows = principal
@@ -43,13 +43,13 @@
  * extrema, by construction. Fritsch & Carlson (1980), which the paper cites,
  * starts from other slopes (PCHIP's weighted harmonic mean, Fritsch-Butland
  * 1984) and limits them to their monotonicity region (alpha^2 + beta^2 <= 9).
- * Both are provided (nl_example_spline) so the difference can be measured.
+ * Both are provided (nl_byexample_spline) so the difference can be measured.
  *
- *   nl_example_params p;
- *   nl_example_analyse(img, NULL, &p, &err);          // defaults: PCA + histogram
- *   nl_example_params_save(&p, "wood.params", &err);
+ *   nl_byexample_params p;
+ *   nl_byexample_analyse(img, NULL, &p, &err);          // defaults: PCA + histogram
+ *   nl_byexample_params_save(&p, "wood.params", &err);
  *   nl_image *out;
- *   nl_example_synthesize(&p, 1024, 1024, seed, NULL, &out, &err);
+ *   nl_byexample_synthesize(&p, 1024, 1024, seed, NULL, &out, &err);
  */
 #ifndef NL_EXAMPLE_H
 #define NL_EXAMPLE_H
@@ -72,111 +72,111 @@ typedef struct {
   double matrix[3][3];                   /* c = M (rgb - mean) */
   double hist[3][NL_EXAMPLE_HIST];       /* channel quantiles at p = j/9 */
   double w[3][NL_WAVELET_MAX_BANDS];     /* w[c][0]: finest band */
-} nl_example_params;
+} nl_byexample_params;
 
 typedef struct {
   int decorrelate;    /* PCA (1) or plain RGB channels (0) */
   int histogram;      /* histogram matching (1) or Gaussian noise as is (0) */
-  double sigma2;      /* 0: nl_example_sigma2(tile) */
+  double sigma2;      /* 0: nl_byexample_sigma2(tile) */
   int tile;           /* 0: NL_EXAMPLE_TILE */
-} nl_example_options;
+} nl_byexample_options;
 
-typedef enum { NL_SPLINE_STEFFEN = 0, NL_SPLINE_FRITSCH_CARLSON = 1 } nl_spline_kind;
+typedef enum { NL_SPLINE_STEFFEN = 0, NL_SPLINE_FRITSCH_CARLSON = 1 } nl_byexample_spline_kind;
 
 typedef struct {
   double scale;       /* pixel size in exemplar pixels (0 -> 1) */
   int solid;          /* 1: slice z of 3D wavelet noise (solid extrapolation) */
   double z;
-  nl_spline_kind spline;
-} nl_example_synth_options;
+  nl_byexample_spline_kind spline;
+} nl_byexample_synth_options;
 
 /* ---- noise by example (sec. 4) ---------------------------------------- */
 
-int nl_example_band_count(int w, int h);
+int nl_byexample_band_count(int w, int h);
 /* power[k], k < nbands: eq. 13 band power of a w x h image (DC excluded). */
-void nl_example_band_power(const double *img, int w, int h, int nbands, double *power);
+void nl_byexample_band_power(const double *img, int w, int h, int nbands, double *power);
 /* Eq. 12. */
-void nl_example_weights(const double *img, int w, int h, int nbands, double sigma2, double *wts);
+void nl_byexample_weights(const double *img, int w, int h, int nbands, double sigma2, double *wts);
 /* How single wavelet-noise bands spread over eq. 13's bands: for k <
  * nbands, a size x size image of N(2^-k x + o_k) (offsets from seed) has
  * total power var[k] (DC excluded), of which share[k * nbands + j] falls
  * in band j. Ideal orthogonal bands (eq. 7) would give the identity. */
-void nl_example_band_leakage(const nl_wavelet_tile *t, int size, int nbands, unsigned long seed,
+void nl_byexample_band_leakage(const nl_wavelet_tile *t, int size, int nbands, unsigned long seed,
                              double *share, double *var);
 /* Band variance of our 2D wavelet noise for tile period n: the mean of
  * nl_wavelet_tile_variance(t, 4) over tiles seeded 1..4 (cached). */
-double nl_example_sigma2(int n);
+double nl_byexample_sigma2(int n);
 
 /* ---- colour and histograms (sec. 5.1-5.2) ----------------------------- */
 
 /* Mean and PCA matrix of the first min(3, channels) channels. */
-nl_status nl_example_pca(const nl_image *im, double mean[3], double matrix[3][3], nl_error *err);
+nl_status nl_byexample_pca(const nl_image *im, double mean[3], double matrix[3][3], nl_error *err);
 /* plane[c][i] = (M (px_i - mean))_c for nch channels; inverse of recorrelate. */
-void nl_example_decorrelate(const nl_image *im, int nch, const double mean[3],
+void nl_byexample_decorrelate(const nl_image *im, int nch, const double mean[3],
                             const double matrix[3][3], double **plane);
-void nl_example_recorrelate(double *const *plane, int nch, const double mean[3],
+void nl_byexample_recorrelate(double *const *plane, int nch, const double mean[3],
                             const double matrix[3][3], nl_image *out);
 /* q[j] = quantile of v at p = j/(NL_EXAMPLE_HIST-1), linear between order statistics. */
-void nl_example_quantiles(const double *v, size_t n, double *q);
+void nl_byexample_quantiles(const double *v, size_t n, double *q);
 /* v <- Phi^-1((rank + 1/2) / n), ties in index order. */
-void nl_example_gaussianize(double *v, size_t n);
+void nl_byexample_gaussianize(double *v, size_t n);
 /* v <- Q(Phi(v / sigma)), Q the monotone cubic through (j/9, q[j]). */
-void nl_example_match(double *v, size_t n, double sigma, const double *q, nl_spline_kind kind);
+void nl_byexample_match(double *v, size_t n, double sigma, const double *q, nl_byexample_spline_kind kind);
 /* The monotone cubic through (x[j], y[j]), j < n, x increasing, at xs[i]. */
-void nl_example_spline(const double *x, const double *y, int n, nl_spline_kind kind,
+void nl_byexample_spline(const double *x, const double *y, int n, nl_byexample_spline_kind kind,
                        const double *xs, double *ys, size_t m);
 
 /* ---- analysis, synthesis, parameters ---------------------------------- */
 
-nl_status nl_example_analyse(const nl_image *im, const nl_example_options *opt,
-                             nl_example_params *p, nl_error *err);
-nl_status nl_example_synthesize(const nl_example_params *p, int w, int h, unsigned long seed,
-                                const nl_example_synth_options *opt, nl_image **out,
+nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *opt,
+                             nl_byexample_params *p, nl_error *err);
+nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, unsigned long seed,
+                                const nl_byexample_synth_options *opt, nl_image **out,
                                 nl_error *err);
 /* One decorrelated channel, before histogram matching and recorrelation:
  * the multiresolution noise of weights gain * w[c], offsets from seed and c. */
-void nl_example_channel_noise(const nl_example_params *p, int c, const nl_wavelet_tile *t,
+void nl_byexample_channel_noise(const nl_byexample_params *p, int c, const nl_wavelet_tile *t,
                               double gain, int w, int h, unsigned long seed,
-                              const nl_example_synth_options *opt, double *out);
+                              const nl_byexample_synth_options *opt, double *out);
 /* The number of parameters the paper counts: channels^2 + channels * (10 + bands). */
-int nl_example_param_count(const nl_example_params *p);
+int nl_byexample_param_count(const nl_byexample_params *p);
 
-nl_status nl_example_params_save(const nl_example_params *p, const char *path, nl_error *err);
-nl_status nl_example_params_load(const char *path, nl_example_params *p, nl_error *err);
+nl_status nl_byexample_params_save(const nl_byexample_params *p, const char *path, nl_error *err);
+nl_status nl_byexample_params_load(const char *path, nl_byexample_params *p, nl_error *err);
 
 /* Everything linear except the matrix, which follows the quaternion slerp
  * between the two rotations (the paper's Fig. 12). Errors on different
  * channel or band counts. */
-nl_status nl_example_morph(const nl_example_params *a, const nl_example_params *b, double t,
-                           nl_example_params *out, nl_error *err);
+nl_status nl_byexample_morph(const nl_byexample_params *a, const nl_byexample_params *b, double t,
+                           nl_byexample_params *out, nl_error *err);
 /* Frequency-based editing (Fig. 10c): w[c][k] *= factor for the `nfine`
  * finest bands of every channel. */
-void nl_example_attenuate(nl_example_params *p, int nfine, double factor);
+void nl_byexample_attenuate(nl_byexample_params *p, int nfine, double factor);
 
 /* Pearson correlation between the first min(3, channels) channels (1 on the
  * diagonal; 0 where a channel is constant): the colour statistics that
  * independent RGB synthesis loses (Fig. 5). */
-void nl_example_correlation(const nl_image *im, double corr[3][3]);
+void nl_byexample_correlation(const nl_image *im, double corr[3][3]);
 /* Channel c of an image as doubles (n = width * height values). */
-void nl_example_channel(const nl_image *im, int c, double *out);
+void nl_byexample_channel(const nl_image *im, int c, double *out);
 /* The image's luminance (nl_image_convert to one channel) as doubles. */
-void nl_example_luminance(const nl_image *im, double *out);
+void nl_byexample_luminance(const nl_image *im, double *out);
 /* Largest |difference| of the off-diagonal colour correlations of a and b
- * (nl_example_correlation): what independent RGB synthesis loses (Fig. 5). */
-double nl_example_correlation_error(const nl_image *a, const nl_image *b);
+ * (nl_byexample_correlation): what independent RGB synthesis loses (Fig. 5). */
+double nl_byexample_correlation_error(const nl_image *a, const nl_image *b);
 /* det M and max |M M^T - I| of a 3 x 3 matrix: how far a morphed PCA
  * matrix is from a rotation (Fig. 12). */
-void nl_example_rotation_error(const double M[3][3], double *det, double *orth);
+void nl_byexample_rotation_error(const double M[3][3], double *det, double *orth);
 
-/* log10 of the power spectrum (nl_power2), DC at the centre, mapped from
+/* log10 of the power spectrum (nl_spectrum_power2), DC at the centre, mapped from
  * [max - decades, max] to [0, 1]: a grey picture of a spectrum. */
-nl_image *nl_example_spectrum_image(const double *img, int w, int h, double decades);
+nl_image *nl_byexample_spectrum_image(const double *img, int w, int h, double decades);
 
 /* Procedural exemplars for experiments and tests (no images are shipped):
  * "wavelet" (coloured multiresolution noise, Gaussian histogram), "clouds"
  * (fBm through a sky ramp, clipped: skewed histogram), "granite"
  * (turbulence, 3 colours), "marble" (stripes: anisotropic, a failure case).
  * NULL for an unknown kind. */
-nl_image *nl_example_exemplar(const char *kind, int size, unsigned long seed);
+nl_image *nl_byexample_exemplar(const char *kind, int size, unsigned long seed);
 
 #endif

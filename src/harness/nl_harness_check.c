@@ -1,9 +1,9 @@
 /* The regression check's engine: an experiment's new tables against its
  * committed ones, column by column, by the rules of the committed checks.tsv
- * (nl_run_check; see nl_report.h). tools/check.c is its command line.
+ * (nl_harness_check; see nl_harness.h). tools/check.c is its command line.
  * Every function returns a status instead of exiting, so a bad input is one
  * message for the caller and drift is a count. */
-#include "report/nl_report.h"
+#include "harness/nl_harness.h"
 #include "stats/nl_stats.h"
 #include "table/nl_table.h"
 
@@ -13,14 +13,14 @@
 #include <string.h>
 
 typedef struct {
-  nl_check_state *s;
+  nl_harness_check_state *s;
   const char *exp;
   size_t exp_drifted;        /* drift in the current experiment */
   int n_ref, n_new;          /* seeds behind each side's multi-seed summaries */
   nl_table *rules;           /* committed checks.tsv, or NULL: all exact */
 } check_ctx;
 
-static FILE *out_of(const nl_check_state *s) { return s->out ? s->out : stdout; }
+static FILE *out_of(const nl_harness_check_state *s) { return s->out ? s->out : stdout; }
 
 /* Reads DIR/FILE as text cells into *t. An optional table that is missing, or
  * has a header and no rows (an experiment that declared no rules), is NULL. */
@@ -69,7 +69,7 @@ static int same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0;
 /* Compares committed a with new b (spreads s1, s2 for welch); returns 1 on
  * drift and writes a detail for the report line. A summary the tests refuse
  * (a negative or infinite sd) has p = NaN: drift. */
-static int check_value(const check_ctx *c, const nl_check_rule *rule, double a, double b,
+static int check_value(const check_ctx *c, const nl_harness_rule *rule, double a, double b,
                        double s1, double s2, char *detail, size_t n)
 {
   double p;
@@ -101,11 +101,11 @@ static void row_label(const nl_table *t, size_t row, char *buf, size_t n)
 
 /* Parses the rule of a column and finds the welch spread column on both sides. */
 static nl_status column_rule(const check_ctx *c, const char *file, const nl_table *ref, const nl_table *new,
-                             const char *col, nl_check_rule *rule, long *sd_ref, long *sd_new, nl_error *err)
+                             const char *col, nl_harness_rule *rule, long *sd_ref, long *sd_new, nl_error *err)
 {
   const char *text = rule_for(c, file, col);
   nl_error e;
-  if (nl_check_rule_parse(text, rule, &e))
+  if (nl_harness_rule_parse(text, rule, &e))
     return nl_fail(err, NL_EFORMAT, "%s: checks.tsv: %s: %s", c->exp, file, e.msg);
   *sd_ref = *sd_new = -1;
   if (rule->kind == NL_CHECK_WELCH) {
@@ -120,13 +120,13 @@ static nl_status column_rule(const check_ctx *c, const char *file, const nl_tabl
 }
 
 /* One cell: text compared as text, numbers by the rule. Returns 1 on drift. */
-static int check_cell(const check_ctx *c, const nl_check_rule *rule, const nl_table *ref, const nl_table *new,
+static int check_cell(const check_ctx *c, const nl_harness_rule *rule, const nl_table *ref, const nl_table *new,
                       size_t i, size_t cr, size_t cn, long sr, long sn, char *detail, size_t n)
 {
   const char *ta = ref->text[i * ref->ncols + cr], *tb = new->text[i * new->ncols + cn];
   *detail = '\0';
   if (ta || tb) return !ta || !tb || strcmp(ta, tb);
-  nl_check_rule exact = {.kind = NL_CHECK_EXACT};
+  nl_harness_rule exact = {.kind = NL_CHECK_EXACT};
   double s1 = 0, s2 = 0;
   if (sr >= 0) {
     /* A text cell in the spread column leaves nothing to test with: exact. */
@@ -139,7 +139,7 @@ static int check_cell(const check_ctx *c, const nl_check_rule *rule, const nl_ta
 static nl_status check_column(check_ctx *c, const char *file, const nl_table *ref, const nl_table *new,
                               size_t cr, size_t cn, size_t nrows, nl_error *err)
 {
-  nl_check_rule rule;
+  nl_harness_rule rule;
   long sr = -1, sn = -1;
   const char *col = ref->names[cr], *text = rule_for(c, file, col);
   nl_status st = column_rule(c, file, ref, new, col, &rule, &sr, &sn, err);
@@ -268,7 +268,7 @@ static nl_status check_folders(check_ctx *c, const char *ref_dir, const char *ne
     return nl_fail(err, NL_EFORMAT, "%s/checks.tsv: wanted columns table, column, rule", ref_dir);
   check_manifests(c, mref, mnew);
   size_t n;
-  char **tables = nl_run_tables(ref_dir, &n, err);
+  char **tables = nl_harness_tables(ref_dir, &n, err);
   if (!tables) return NL_EIO;
   for (size_t i = 0; i < n; i++) {
     if (!st) st = check_table(c, ref_dir, new_dir, tables[i], err);
@@ -279,7 +279,7 @@ static nl_status check_folders(check_ctx *c, const char *ref_dir, const char *ne
   return st;
 }
 
-nl_status nl_report_check_experiment(nl_check_state *s, const char *ref_dir, const char *new_dir, nl_error *err)
+nl_status nl_harness_check_experiment(nl_harness_check_state *s, const char *ref_dir, const char *new_dir, nl_error *err)
 {
   check_ctx c = {.s = s};
   nl_table *mref = NULL, *mnew = NULL;
@@ -292,7 +292,7 @@ nl_status nl_report_check_experiment(nl_check_state *s, const char *ref_dir, con
   return st;
 }
 
-void nl_report_check_totals(const nl_check_state *s)
+void nl_harness_check_totals(const nl_harness_check_state *s)
 {
   fprintf(out_of(s), "check: %zu experiment%s, %zu tables, %zu values compared, %zu drifted\n",
           s->experiments, s->experiments == 1 ? "" : "s", s->tables, s->values, s->drifted);

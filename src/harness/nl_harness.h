@@ -1,22 +1,22 @@
-/* nl_report.h - the harness around an experiment program: options, seeds,
+/* nl_harness.h - the harness around an experiment program: options, seeds,
  * parameters, output folder, manifest and report section.
  *
  * An experiment reads like the paper's method section:
  *
  *   int main(int argc, char **argv) {
- *     nl_run *r = nl_run_begin("s3_fbm", "S3 - fBm gain and lacunarity", argc, argv);
- *     int octaves = nl_run_param_int(r, "octaves", 6, 1, 30,    // --set octaves=8
+ *     nl_harness *r = nl_harness_begin("s3_fbm", "S3 - fBm gain and lacunarity", argc, argv);
+ *     int octaves = nl_harness_param_int(r, "octaves", 6, 1, 30,    // --set octaves=8
  *                                    "octaves summed in the fBm");
- *     nl_run_params_done(r);             // rejects unknown --set; answers --help, --params
+ *     nl_harness_params_done(r);             // rejects unknown --set; answers --help, --params
  *     ... library calls ...
- *     nl_run_table(r, t, "dist.tsv");                           // out/dist.tsv, atomic
- *     nl_report_text(r, "The slides show ...");
- *     nl_report_table(r, t, "Value distribution", 4);
- *     nl_report_figure(r, "spectrum.png", "Radially averaged power spectrum");
- *     return nl_run_end(r);                                     // report.md + manifest.tsv
+ *     nl_harness_write_table(r, t, "dist.tsv");                           // out/dist.tsv, atomic
+ *     nl_harness_text(r, "The slides show ...");
+ *     nl_harness_report_table(r, t, "Value distribution", 4);
+ *     nl_harness_figure(r, "spectrum.png", "Radially averaged power spectrum");
+ *     return nl_harness_end(r);                                     // report.md + manifest.tsv
  *   }
  *
- * Common options, parsed by nl_run_begin through nl_run_parse (errors: one
+ * Common options, parsed by nl_harness_begin through nl_harness_parse (errors: one
  * line, exit 2):
  *   --out DIR    output folder (default results/NAME)
  *   --seed N     base seed (default 1); multi-seed summaries use N, N+1, ...
@@ -26,7 +26,7 @@
  *   --params     print the parameters as TSV, a header line then one line
  *                each: name, default, min, max, meaning; exit 0
  *   --help       the usage and the parameters in readable form; exit 0
- * --help and --params are answered at nl_run_params_done, when every
+ * --help and --params are answered at nl_harness_params_done, when every
  * parameter is declared and before any work or output (no file is touched).
  * --set names and values given with them are checked as for a run (exit 2),
  * so `--params --set NAME=VALUE...` validates a sweep point; the list shows
@@ -42,17 +42,17 @@
  * The regression check compares none of these (nor started, seconds,
  * peak_rss_mb), but names cpu and blas_core when it finds drift.
  * NL_MANIFEST_NAME (a hidden file name, set by the entry script) makes
- * nl_run_end write the manifest under that name instead; the script renames
+ * nl_harness_end write the manifest under that name instead; the script renames
  * it to manifest.tsv once the figures are made. It is written last and removed first, so a
  * folder with a manifest is a complete run. Nothing in the output folder is
  * touched before the run writes: the folder is made and the old manifest
- * removed at the first write (nl_run_table, nl_run_image, nl_run_path,
- * nl_run_dir or nl_run_end), after every option and --set value was checked
- * (nl_run_params_done runs then at the latest), so a rejected run leaves a
+ * removed at the first write (nl_harness_write_table, nl_harness_write_image, nl_harness_path,
+ * nl_harness_dir or nl_harness_end), after every option and --set value was checked
+ * (nl_harness_params_done runs then at the latest), so a rejected run leaves a
  * finished one intact and no empty folder behind. checks.tsv holds the rules the
- * regression check compares the tables by (nl_run_check below).
+ * regression check compares the tables by (nl_harness_check below).
  *
- * Figures named with nl_report_figure are made afterwards by the entry
+ * Figures named with nl_harness_figure are made afterwards by the entry
  * script from scripts/gnuplot/NAME-*.gp, or are images the program wrote.
  * Report links are relative to results/ ("NAME/file.png").
  */
@@ -62,7 +62,7 @@
 #include "image/nl_image.h"
 #include "table/nl_table.h"
 
-typedef struct nl_run nl_run;
+typedef struct nl_harness nl_harness;
 
 /* The common options as parsed, nothing else done (no output, no exit). */
 typedef struct {
@@ -73,37 +73,37 @@ typedef struct {
   int params;              /* --params */
   int nset;                /* --set NAME=VALUE, in order */
   char **set_key, **set_val;
-} nl_run_options;
+} nl_harness_options;
 
 /* Parses argv[1..argc-1] into *o. On error *o is empty (nothing to free)
- * and err says "OPTION: problem". nl_run_options_free releases a parsed *o. */
-nl_status nl_run_parse(nl_run_options *o, int argc, char **argv, nl_error *err);
-void nl_run_options_free(nl_run_options *o);
+ * and err says "OPTION: problem". nl_harness_options_free releases a parsed *o. */
+nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_error *err);
+void nl_harness_options_free(nl_harness_options *o);
 
-/* nl_run_parse; on error prints "NAME: message" and exits 2. --help and
- * --params are remembered and answered by nl_run_params_done. Touches no file. */
-nl_run *nl_run_begin(const char *name, const char *title, int argc, char **argv);
+/* nl_harness_parse; on error prints "NAME: message" and exits 2. --help and
+ * --params are remembered and answered by nl_harness_params_done. Touches no file. */
+nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char **argv);
 
-unsigned long nl_run_seed(const nl_run *r);   /* base seed */
-int nl_run_seeds(const nl_run *r);            /* K seeds: seed .. seed+K-1 */
-int nl_run_quick(const nl_run *r);
-const char *nl_run_dir(const nl_run *r);      /* prepares the folder (see above) */
-const char *nl_run_name(const nl_run *r);     /* "s3_fbm" */
+unsigned long nl_harness_seed(const nl_harness *r);   /* base seed */
+int nl_harness_seeds(const nl_harness *r);            /* K seeds: seed .. seed+K-1 */
+int nl_harness_quick(const nl_harness *r);
+const char *nl_harness_dir(const nl_harness *r);      /* prepares the folder (see above) */
+const char *nl_harness_name(const nl_harness *r);     /* "s3_fbm" */
 
 /* Parameter `name` from --set, else def; range-checked; recorded in the
  * manifest. `meaning` is one line saying what the number is (units, the
  * paper's symbol): --params and --help print it. Both strings are borrowed
  * for the run's life (string literals). A bad value: "NAME: --set name: ...",
  * exit 2. */
-double nl_run_param(nl_run *r, const char *name, double def, double lo, double hi,
+double nl_harness_param(nl_harness *r, const char *name, double def, double lo, double hi,
                     const char *meaning);
-long nl_run_param_int(nl_run *r, const char *name, long def, long lo, long hi,
+long nl_harness_param_int(nl_harness *r, const char *name, long def, long lo, long hi,
                       const char *meaning);
 /* Every parameter is declared: refuses a --set name none declared (exit 2,
  * one line listing the valid names); then, with --help or --params, prints
- * the list (nl_run_params_print) and exits 0. Runs at the first write at
+ * the list (nl_harness_params_print) and exits 0. Runs at the first write at
  * the latest. */
-void nl_run_params_done(nl_run *r);
+void nl_harness_params_done(nl_harness *r);
 
 /* A declared parameter (integers have is_int 1 and whole def, lo, hi). */
 typedef struct {
@@ -111,34 +111,34 @@ typedef struct {
   double def, lo, hi;
   int is_int;
   const char *meaning;
-} nl_run_param_info;
+} nl_harness_param_info;
 /* The parameters declared so far, in order (owned by r). */
-const nl_run_param_info *nl_run_params(const nl_run *r, size_t *n);
+const nl_harness_param_info *nl_harness_params(const nl_harness *r, size_t *n);
 /* readable 0: "name\tdefault\tmin\tmax\tmeaning" then one TSV line each
  * (numbers as --set takes them); 1: the --help form. */
-void nl_run_params_print(const nl_run *r, FILE *fp, int readable);
+void nl_harness_params_print(const nl_harness *r, FILE *fp, int readable);
 /* Extra manifest line (e.g. "pool_bytes"). */
-void nl_run_note(nl_run *r, const char *key, const char *fmt, ...)
+void nl_harness_note(nl_harness *r, const char *key, const char *fmt, ...)
   __attribute__((format(printf, 3, 4)));
 
 /* Path inside the output folder; caller frees. */
-char *nl_run_path(const nl_run *r, const char *file);
+char *nl_harness_path(const nl_harness *r, const char *file);
 /* Write into the output folder; on failure print the error and exit 1. */
-void nl_run_table(nl_run *r, const nl_table *t, const char *file);
-void nl_run_image(nl_run *r, const nl_image *im, const char *file);
+void nl_harness_write_table(nl_harness *r, const nl_table *t, const char *file);
+void nl_harness_write_image(nl_harness *r, const nl_image *im, const char *file);
 
 /* Progress for long runs: "[name] 40% what (3.2 s)" on stderr, one
  * rewritten line on a terminal, at most one plain line a second otherwise. */
-void nl_run_progress(nl_run *r, double fraction, const char *what);
+void nl_harness_progress(nl_harness *r, double fraction, const char *what);
 
 /* Prints "name: message" and exits with `code`; the manifest is not written. */
-void nl_run_die(nl_run *r, int code, const char *fmt, ...)
+void nl_harness_die(nl_harness *r, int code, const char *fmt, ...)
   __attribute__((format(printf, 3, 4), noreturn));
 
 /* Report section (Markdown). */
-void nl_report_text(nl_run *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-void nl_report_table(nl_run *r, const nl_table *t, const char *caption, int digits);
-void nl_report_figure(nl_run *r, const char *file, const char *caption);
+void nl_harness_text(nl_harness *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+void nl_harness_report_table(nl_harness *r, const nl_table *t, const char *caption, int digits);
+void nl_harness_figure(nl_harness *r, const char *file, const char *caption);
 
 /* ---- regression rules ------------------------------------------------
  *
@@ -147,12 +147,12 @@ void nl_report_figure(nl_run *r, const char *file, const char *caption);
  * results/quick/NAME/ with --quick), column by column, by the rule the
  * experiment declares here, beside the table it writes:
  *
- *   nl_run_table(r, dist, "distribution.tsv");
- *   nl_run_check(r, "distribution.tsv", "mean", "welch mean_sd 1e-3");
- *   nl_run_check(r, "distribution.tsv", "mean_sd", "ftest 1e-3");
- *   nl_run_check(r, "spectrum.tsv", "*", "rel 1e-9");
+ *   nl_harness_write_table(r, dist, "distribution.tsv");
+ *   nl_harness_check(r, "distribution.tsv", "mean", "welch mean_sd 1e-3");
+ *   nl_harness_check(r, "distribution.tsv", "mean_sd", "ftest 1e-3");
+ *   nl_harness_check(r, "spectrum.tsv", "*", "rel 1e-9");
  *
- * nl_run_end writes the declarations to checks.tsv (table, column, rule),
+ * nl_harness_end writes the declarations to checks.tsv (table, column, rule),
  * which travels with the results. Rules:
  *   exact          numbers bit-identical, text identical: the default for
  *                  every column not declared (same seed, same program)
@@ -176,18 +176,18 @@ void nl_report_figure(nl_run *r, const char *file, const char *caption);
  */
 typedef enum {
   NL_CHECK_EXACT, NL_CHECK_ABS, NL_CHECK_REL, NL_CHECK_IGNORE, NL_CHECK_WELCH, NL_CHECK_FTEST
-} nl_check_kind;
+} nl_harness_rule_kind;
 
 typedef struct {
-  nl_check_kind kind;
+  nl_harness_rule_kind kind;
   double tol;        /* abs, rel: tolerance; welch, ftest: alpha */
   char sdcol[128];   /* welch: the spread column */
-} nl_check_rule;
+} nl_harness_rule;
 
-void nl_run_check(nl_run *r, const char *table, const char *column, const char *rule);
+void nl_harness_check(nl_harness *r, const char *table, const char *column, const char *rule);
 /* The rule declared so far for table/column (a named column beats "*"), or
  * NULL: exact. */
-const char *nl_run_check_rule(const nl_run *r, const char *table, const char *column);
+const char *nl_harness_check_rule(const nl_harness *r, const char *table, const char *column);
 
 /* Tolerances from a measurement, for tables whose values pass through a
  * CPU-dependent computation (OpenBLAS picks its kernel per CPU; glibc's libm
@@ -205,22 +205,22 @@ const char *nl_run_check_rule(const nl_run *r, const char *table, const char *co
  * measure it first. table "*": every table measured for this experiment
  * and scale. NL_BLAS_SPREAD overrides the file's path; NL_MEASURING=1
  * (set by bench/blas-spread.sh) makes it do nothing. */
-void nl_run_check_measured(nl_run *r, const char *table, double multiple);
+void nl_harness_check_measured(nl_harness *r, const char *table, double multiple);
 /* Parses a rule string as above; "rule 'x': ..." on error. */
-nl_status nl_check_rule_parse(const char *s, nl_check_rule *rule, nl_error *err);
+nl_status nl_harness_rule_parse(const char *s, nl_harness_rule *rule, nl_error *err);
 
-/* ---- the regression check (nl_report_check.c) ------------------------
+/* ---- the regression check (nl_harness_check.c) ------------------------
  *
  * Compares a committed run folder with a new one by the committed folder's
  * checks.tsv (the reference says how it may be compared):
  *
- *   nl_check_state s = {0};                 // s.all = 1: every drifted value
- *   if (nl_report_check_experiment(&s, "results/s3_fbm", "build/check/s3_fbm", &err))
+ *   nl_harness_check_state s = {0};                 // s.all = 1: every drifted value
+ *   if (nl_harness_check_experiment(&s, "results/s3_fbm", "build/check/s3_fbm", &err))
  *     ... bad input: err.msg ...
- *   nl_report_check_totals(&s);             // "check: 1 experiment, ..."
+ *   nl_harness_check_totals(&s);             // "check: 1 experiment, ..."
  *   return s.drifted ? 1 : 0;
  *
- * Every table (nl_run_tables) of the committed folder is compared cell by
+ * Every table (nl_harness_tables) of the committed folder is compared cell by
  * cell by its rule; the manifests' experiment, seed, seeds, quick and param
  * lines must match exactly (the others never are). Written to s.out
  * (stdout when NULL), one tab-separated line per drifted value
@@ -238,19 +238,19 @@ typedef struct {
   int all;                  /* print every drifted value */
   FILE *out;                /* the report; NULL: stdout */
   size_t experiments, tables, values, drifted;   /* totals so far */
-} nl_check_state;
-nl_status nl_report_check_experiment(nl_check_state *s, const char *ref_dir, const char *new_dir,
+} nl_harness_check_state;
+nl_status nl_harness_check_experiment(nl_harness_check_state *s, const char *ref_dir, const char *new_dir,
                                      nl_error *err);
 /* "check: E experiments, T tables, V values compared, D drifted". */
-void nl_report_check_totals(const nl_check_state *s);
+void nl_harness_check_totals(const nl_harness_check_state *s);
 
 /* The data tables of a run folder: every *.tsv but manifest.tsv and
  * checks.tsv (hidden files are temporaries), sorted by name. Caller frees
  * each name and the array (never NULL when the folder is read, even if
  * empty); NULL and a message if the folder cannot be read. */
-char **nl_run_tables(const char *dir, size_t *n, nl_error *err);
+char **nl_harness_tables(const char *dir, size_t *n, nl_error *err);
 
 /* Writes report.md, checks.tsv and manifest.tsv, frees r; returns 0 for main(). */
-int nl_run_end(nl_run *r);
+int nl_harness_end(nl_harness *r);
 
 #endif

@@ -1,4 +1,4 @@
-/* Parameter files and morphing for nl_example (see nl_example.h).
+/* Parameter files and morphing for nl_byexample (see nl_byexample.h).
  *
  * File format: one "key value..." line per field, '#' comments:
  *   noiselab-example 1
@@ -13,7 +13,7 @@
  * Numbers use the shortest form that reads back to the same bits, so
  * save -> load -> synthesize equals synthesize.
  */
-#include "example/nl_example.h"
+#include "byexample/nl_byexample.h"
 #include "table/nl_table.h"
 
 #include <ctype.h>
@@ -26,12 +26,12 @@ static void put_values(FILE *fp, const char *key, const double *v, int n)
 {
   char buf[32];
   fputs(key, fp);
-  for (int i = 0; i < n; i++) { nl_format_double(buf, v[i]); fprintf(fp, " %s", buf); }
+  for (int i = 0; i < n; i++) { nl_table_format_double(buf, v[i]); fprintf(fp, " %s", buf); }
   fputc('\n', fp);
 }
 
 /* The first value of p that is NaN or infinite, named, or NULL. */
-static const char *non_finite(const nl_example_params *p, char *buf, size_t len)
+static const char *non_finite(const nl_byexample_params *p, char *buf, size_t len)
 {
   int C = p->channels;
   if (!isfinite(p->sigma2)) { snprintf(buf, len, "sigma2"); return buf; }
@@ -47,7 +47,7 @@ static const char *non_finite(const nl_example_params *p, char *buf, size_t len)
   return NULL;
 }
 
-nl_status nl_example_params_save(const nl_example_params *p, const char *path, nl_error *err)
+nl_status nl_byexample_params_save(const nl_byexample_params *p, const char *path, nl_error *err)
 {
   /* A file the loader would reject is not written (nothing written). */
   char what[64];
@@ -60,7 +60,7 @@ nl_status nl_example_params_save(const nl_example_params *p, const char *path, n
   if (st) return st;
   int C = p->channels;
   fprintf(af.fp, "# procedural texture by example (Lagae et al. 2010), %d parameters in the paper's count\n",
-          nl_example_param_count(p));
+          nl_byexample_param_count(p));
   fprintf(af.fp, "noiselab-example 1\nchannels %d\nbands %d\ntile %d\nhistogram %d\n", C,
           p->nbands, p->tile, p->histogram);
   put_values(af.fp, "sigma2", &p->sigma2, 1);
@@ -191,7 +191,7 @@ static nl_status need_int(const char *path, const field *f, int nf, const char *
   return NL_OK;
 }
 
-static nl_status check_arrays(const char *path, const nl_example_params *p, nl_error *err)
+static nl_status check_arrays(const char *path, const nl_byexample_params *p, nl_error *err)
 {
   if (!(p->sigma2 > 0)) return nl_fail(err, NL_EFORMAT, "%s: 'sigma2' must be positive", path);
   if (p->tile % 2) return nl_fail(err, NL_EFORMAT, "%s: 'tile' must be even", path);
@@ -206,7 +206,7 @@ static nl_status check_arrays(const char *path, const nl_example_params *p, nl_e
   return NL_OK;
 }
 
-nl_status nl_example_params_load(const char *path, nl_example_params *p, nl_error *err)
+nl_status nl_byexample_params_load(const char *path, nl_byexample_params *p, nl_error *err)
 {
   field f[MAX_FIELDS];
   int nf, version;
@@ -290,8 +290,8 @@ static void slerp(const double a[4], const double b0[4], double t, double q[4])
   for (int i = 0; i < 4; i++) q[i] /= sqrt(norm);
 }
 
-nl_status nl_example_morph(const nl_example_params *a, const nl_example_params *b, double t,
-                           nl_example_params *out, nl_error *err)
+nl_status nl_byexample_morph(const nl_byexample_params *a, const nl_byexample_params *b, double t,
+                           nl_byexample_params *out, nl_error *err)
 {
   if (a->channels != b->channels)
     return nl_fail(err, NL_EINVAL, "cannot morph %d channels into %d", a->channels, b->channels);
@@ -300,7 +300,7 @@ nl_status nl_example_morph(const nl_example_params *a, const nl_example_params *
                    a->nbands, b->nbands);
   if (a->histogram != b->histogram)
     return nl_fail(err, NL_EINVAL, "cannot morph with and without histogram matching");
-  nl_example_params r = *a;
+  nl_byexample_params r = *a;
   r.sigma2 = (1 - t) * a->sigma2 + t * b->sigma2;
   for (int c = 0; c < 3; c++) {
     r.mean[c] = (1 - t) * a->mean[c] + t * b->mean[c];

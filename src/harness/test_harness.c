@@ -2,10 +2,10 @@
  * parameters (lookup, range errors, the unknown-name error, --params and
  * --help), the manifest read back with nl_table_read, regression rules
  * (well-formed and malformed) and the check engine on two tiny folders.
- * What must exit (nl_run_die, --params) runs in a forked child whose exit
+ * What must exit (nl_harness_die, --params) runs in a forked child whose exit
  * status and output are read back. */
 #define _GNU_SOURCE   /* open_memstream */
-#include "report/nl_report.h"
+#include "harness/nl_harness.h"
 #include "table/nl_table.h"
 #include "nl_test.h"
 
@@ -18,14 +18,14 @@ static const char *dir;
 
 /* ---- options -------------------------------------------------------------- */
 
-static nl_status parse(nl_run_options *o, nl_error *err, int argc, const char *const *args)
+static nl_status parse(nl_harness_options *o, nl_error *err, int argc, const char *const *args)
 {
-  return nl_run_parse(o, argc, (char **)args, err);
+  return nl_harness_parse(o, argc, (char **)args, err);
 }
 
 NL_TEST(options_parse)
 {
-  nl_run_options o;
+  nl_harness_options o;
   nl_error err;
   const char *a[] = {"x", "--out", "d", "--seed", "4294967295", "--seeds", "3", "--quick",
                      "--set", "size=64", "--set", "z=0.5=1", "--params", "--help"};
@@ -33,10 +33,10 @@ NL_TEST(options_parse)
   NL_CHECK(strcmp(o.out, "d") == 0 && o.seed == 4294967295UL && o.seeds == 3 && o.quick && o.params && o.help);
   NL_CHECK(o.nset == 2 && !strcmp(o.set_key[0], "size") && !strcmp(o.set_val[0], "64"));
   NL_CHECK(!strcmp(o.set_key[1], "z") && !strcmp(o.set_val[1], "0.5=1"));   /* the first '=' splits */
-  nl_run_options_free(&o);
+  nl_harness_options_free(&o);
   const char *none[] = {"x"};
   NL_CHECK(parse(&o, &err, 1, none) == NL_OK && o.seed == 1 && o.seeds == -1 && !o.out && !o.quick && !o.params);
-  nl_run_options_free(&o);
+  nl_harness_options_free(&o);
 }
 
 NL_TEST(option_errors_are_one_line_naming_the_option)
@@ -53,7 +53,7 @@ NL_TEST(option_errors_are_one_line_naming_the_option)
     {3, {"x", "--set", "size"}, "is not NAME=VALUE"},
   };
   for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
-    nl_run_options o;
+    nl_harness_options o;
     nl_error err = {{0}};
     NL_CHECK(parse(&o, &err, bad[i].argc, bad[i].args) == NL_EINVAL);
     NL_CHECK(strstr(err.msg, bad[i].want) != NULL && !strchr(err.msg, '\n'));
@@ -74,13 +74,13 @@ static void read_into(const char *path, char *buf, size_t n)
 }
 
 /* The little experiment the children run: declares size (int, 16..4096)
- * and z (double, -1..1), calls nl_run_params_done and says "ran". */
+ * and z (double, -1..1), calls nl_harness_params_done and says "ran". */
 static int little_experiment(int argc, char **argv)
 {
-  nl_run *r = nl_run_begin("t_exp", "T - a test", argc, argv);
-  long size = nl_run_param_int(r, "size", 64, 16, 4096, "image side in pixels");
-  double z = nl_run_param(r, "z", 0.5, -1, 1, "slice height");
-  nl_run_params_done(r);
+  nl_harness *r = nl_harness_begin("t_exp", "T - a test", argc, argv);
+  long size = nl_harness_param_int(r, "size", 64, 16, 4096, "image side in pixels");
+  double z = nl_harness_param(r, "z", 0.5, -1, 1, "slice height");
+  nl_harness_params_done(r);
   printf("ran size=%ld z=%g\n", size, z);
   fflush(stdout);
   _exit(0);   /* the run is never ended (no output): not a leak for LeakSanitizer */
@@ -166,22 +166,22 @@ NL_TEST(manifest_round_trip)
 {
   char *out = nl_path_join(dir, "run");
   const char *argv[] = {"t", "--out", out, "--seed", "7", "--seeds", "2", "--set", "z=0.25"};
-  nl_run *r = nl_run_begin("t_exp", "T - a test", 9, (char **)argv);
-  long size = nl_run_param_int(r, "size", 64, 16, 4096, "image side in pixels");
-  double z = nl_run_param(r, "z", 0.5, -1, 1, "slice height");
+  nl_harness *r = nl_harness_begin("t_exp", "T - a test", 9, (char **)argv);
+  long size = nl_harness_param_int(r, "size", 64, 16, 4096, "image side in pixels");
+  double z = nl_harness_param(r, "z", 0.5, -1, 1, "slice height");
   NL_CHECK(size == 64 && z == 0.25);
   size_t np;
-  const nl_run_param_info *pi = nl_run_params(r, &np);
+  const nl_harness_param_info *pi = nl_harness_params(r, &np);
   NL_CHECK(np == 2 && !strcmp(pi[0].name, "size") && pi[0].is_int && pi[1].lo == -1 && !strcmp(pi[1].meaning, "slice height"));
-  nl_run_params_done(r);
-  nl_run_note(r, "pool_bytes", "%d", 123);
-  nl_run_check(r, "a.tsv", "x", "rel 1e-9");
-  nl_run_check(r, "a.tsv", "*", "abs 0.5");
-  nl_run_check(r, "a.tsv", "x", "ignore");   /* the later rule wins */
-  NL_CHECK(!strcmp(nl_run_check_rule(r, "a.tsv", "x"), "ignore"));
-  NL_CHECK(!strcmp(nl_run_check_rule(r, "a.tsv", "y"), "abs 0.5"));
-  NL_CHECK(nl_run_check_rule(r, "b.tsv", "x") == NULL);
-  NL_CHECK(nl_run_end(r) == 0);
+  nl_harness_params_done(r);
+  nl_harness_note(r, "pool_bytes", "%d", 123);
+  nl_harness_check(r, "a.tsv", "x", "rel 1e-9");
+  nl_harness_check(r, "a.tsv", "*", "abs 0.5");
+  nl_harness_check(r, "a.tsv", "x", "ignore");   /* the later rule wins */
+  NL_CHECK(!strcmp(nl_harness_check_rule(r, "a.tsv", "x"), "ignore"));
+  NL_CHECK(!strcmp(nl_harness_check_rule(r, "a.tsv", "y"), "abs 0.5"));
+  NL_CHECK(nl_harness_check_rule(r, "b.tsv", "x") == NULL);
+  NL_CHECK(nl_harness_end(r) == 0);
   char *mp = nl_path_join(out, "manifest.tsv"), *cp = nl_path_join(out, "checks.tsv");
   nl_table *m = NULL, *ck = NULL;
   nl_error err;
@@ -209,25 +209,25 @@ NL_TEST(manifest_round_trip)
 
 NL_TEST(rules_parse_and_malformed_ones_are_refused)
 {
-  nl_check_rule r;
+  nl_harness_rule r;
   nl_error err;
-  NL_CHECK(nl_check_rule_parse("exact", &r, &err) == NL_OK && r.kind == NL_CHECK_EXACT);
-  NL_CHECK(nl_check_rule_parse("ignore", &r, &err) == NL_OK && r.kind == NL_CHECK_IGNORE);
-  NL_CHECK(nl_check_rule_parse("abs 0.5", &r, &err) == NL_OK && r.kind == NL_CHECK_ABS && r.tol == 0.5);
-  NL_CHECK(nl_check_rule_parse("rel 1e-9", &r, &err) == NL_OK && r.kind == NL_CHECK_REL && r.tol == 1e-9);
-  NL_CHECK(nl_check_rule_parse("welch mean_sd 1e-3", &r, &err) == NL_OK && r.kind == NL_CHECK_WELCH
+  NL_CHECK(nl_harness_rule_parse("exact", &r, &err) == NL_OK && r.kind == NL_CHECK_EXACT);
+  NL_CHECK(nl_harness_rule_parse("ignore", &r, &err) == NL_OK && r.kind == NL_CHECK_IGNORE);
+  NL_CHECK(nl_harness_rule_parse("abs 0.5", &r, &err) == NL_OK && r.kind == NL_CHECK_ABS && r.tol == 0.5);
+  NL_CHECK(nl_harness_rule_parse("rel 1e-9", &r, &err) == NL_OK && r.kind == NL_CHECK_REL && r.tol == 1e-9);
+  NL_CHECK(nl_harness_rule_parse("welch mean_sd 1e-3", &r, &err) == NL_OK && r.kind == NL_CHECK_WELCH
            && !strcmp(r.sdcol, "mean_sd") && r.tol == 1e-3);
-  NL_CHECK(nl_check_rule_parse("ftest 0.01", &r, &err) == NL_OK && r.kind == NL_CHECK_FTEST && r.tol == 0.01);
+  NL_CHECK(nl_harness_rule_parse("ftest 0.01", &r, &err) == NL_OK && r.kind == NL_CHECK_FTEST && r.tol == 0.01);
   static const char *const bad[] = {"", "exactly", "abs", "abs x", "abs -1", "rel 1e-9 extra", "welch 1e-3",
                                     "welch sd", "welch sd 0.7", "ftest 0", "ftest", "exact 1"};
   for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
     err.msg[0] = '\0';
-    NL_CHECK(nl_check_rule_parse(bad[i], &r, &err) == NL_EINVAL && err.msg[0]);
+    NL_CHECK(nl_harness_rule_parse(bad[i], &r, &err) == NL_EINVAL && err.msg[0]);
   }
   char longrule[400];
   memset(longrule, 'a', sizeof longrule - 1);
   longrule[sizeof longrule - 1] = '\0';
-  NL_CHECK(nl_check_rule_parse(longrule, &r, &err) == NL_EINVAL && strstr(err.msg, "too long"));
+  NL_CHECK(nl_harness_rule_parse(longrule, &r, &err) == NL_EINVAL && strstr(err.msg, "too long"));
 }
 
 /* ---- the check engine -------------------------------------------------------- */
@@ -245,13 +245,13 @@ static void put(const char *folder, const char *file, const char *text)
 
 static const char *MANIFEST = "key\tvalue\nexperiment\tt1\nseed\t1\nseeds\t10\nquick\tno\nparam\tsize=8\ncpu\tX\n";
 
-static nl_status check(const char *a, const char *b, nl_check_state *s, char **report, nl_error *err)
+static nl_status check(const char *a, const char *b, nl_harness_check_state *s, char **report, nl_error *err)
 {
   size_t n;
   FILE *fp = open_memstream(report, &n);
   s->out = fp;
-  nl_status st = nl_report_check_experiment(s, a, b, err);
-  nl_report_check_totals(s);
+  nl_status st = nl_harness_check_experiment(s, a, b, err);
+  nl_harness_check_totals(s);
   fclose(fp);
   return st;
 }
@@ -266,14 +266,14 @@ NL_TEST(check_engine_on_two_folders)
   const char *folders[] = {ref, same, moved};
   for (int k = 0; k < 3; k++) { put(folders[k], "manifest.tsv", MANIFEST); put(folders[k], "checks.tsv", checks); put(folders[k], "d.tsv", d); }
   put(moved, "d.tsv", "label\tmean\tmean_sd\tsecs\tcount\na\t0.53\t0.12\t99\t17\nb\t1.5\t0\t1\t5\n");
-  nl_check_state s = {0};
+  nl_harness_check_state s = {0};
   char *rep = NULL;
   nl_error err;
   NL_CHECK(check(ref, same, &s, &rep, &err) == NL_OK && s.drifted == 0 && s.tables == 1);
   NL_CHECK(strstr(rep, "check: 1 experiment, 1 tables, ") && strstr(rep, " 0 drifted"));
   free(rep);
   /* noise under welch passes, the timing is ignored, a count that moved drifts */
-  nl_check_state s2 = {0};
+  nl_harness_check_state s2 = {0};
   NL_CHECK(check(ref, moved, &s2, &rep, &err) == NL_OK && s2.drifted == 1);
   NL_CHECK(strstr(rep, "t1\td.tsv\t2 [b]\tcount\t4\t5\texact\n") && strstr(rep, "check: t1: 1 drifted; reference vs this run: CPU same (X)"));
   free(rep);
@@ -281,10 +281,10 @@ NL_TEST(check_engine_on_two_folders)
   put(badrule, "manifest.tsv", MANIFEST);
   put(badrule, "checks.tsv", "table\tcolumn\trule\nd.tsv\tmean\twelch nosuch 1e-3\n");
   put(badrule, "d.tsv", d);
-  nl_check_state s3 = {0};
+  nl_harness_check_state s3 = {0};
   NL_CHECK(check(badrule, same, &s3, &rep, &err) == NL_EFORMAT && strstr(err.msg, "no column 'nosuch'"));
   free(rep);
-  nl_check_state s4 = {0};
+  nl_harness_check_state s4 = {0};
   NL_CHECK(check(ref, "/nonexistent/folder", &s4, &rep, &err) != NL_OK && strstr(err.msg, "manifest.tsv"));
   free(rep);
   free(ref); free(same); free(moved); free(badrule);

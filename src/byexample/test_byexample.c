@@ -1,4 +1,4 @@
-#include "example/nl_example.h"
+#include "byexample/nl_byexample.h"
 #include "nl_test.h"
 
 #include <gsl/gsl_cdf.h>
@@ -12,7 +12,7 @@ NL_TEST(weights_of_known_noise)
 {
   enum { N = 512, NB = 9, SEEDS = 4 };
   double truth[NB] = {0.5, 0.7, 0.9, 1.0, 1.0, 0.9, 0.8, 0.6, 0.5}, est[NB] = {0};
-  double sigma2 = nl_example_sigma2(NL_EXAMPLE_TILE);
+  double sigma2 = nl_byexample_sigma2(NL_EXAMPLE_TILE);
   nl_wavelet_tile *t = nl_wavelet_tile_alloc(2, NL_EXAMPLE_TILE);
   double *img = malloc(N * N * sizeof *img);
   for (int s = 1; s <= SEEDS; s++) {
@@ -21,7 +21,7 @@ NL_TEST(weights_of_known_noise)
     nl_wavelet_bands_init(&b, NB, truth, t->n, (unsigned long)s, NULL);
     nl_wavelet_bands_grid(t, &b, N, N, 0, 1, img);
     double w[NB];
-    nl_example_weights(img, N, N, NB, sigma2, w);
+    nl_byexample_weights(img, N, N, NB, sigma2, w);
     for (int k = 0; k < NB; k++) est[k] += w[k] / SEEDS;
   }
   for (int k = 0; k < NB; k++) printf("  band %d: true %.3f est %.3f\n", k, truth[k], est[k]);
@@ -44,10 +44,10 @@ NL_TEST(band_power_is_parseval_without_dc)
   mean /= N * N;
   for (int i = 0; i < N * N; i++) ms += (img[i] - mean) * (img[i] - mean);
   ms /= N * N;
-  NL_CHECK(nl_example_band_count(N, N) == 6);
-  NL_CHECK(nl_example_band_count(512, 512) == 9);
-  NL_CHECK(nl_example_band_count(600, 16) == 9);
-  nl_example_band_power(img, N, N, 6, p);
+  NL_CHECK(nl_byexample_band_count(N, N) == 6);
+  NL_CHECK(nl_byexample_band_count(512, 512) == 9);
+  NL_CHECK(nl_byexample_band_count(600, 16) == 9);
+  nl_byexample_band_power(img, N, N, 6, p);
   double s = 0;
   for (int k = 0; k < 6; k++) s += p[k];
   NL_CHECK_NEAR(s, ms, 1e-12);
@@ -55,16 +55,16 @@ NL_TEST(band_power_is_parseval_without_dc)
    * the top of (1/16, 1/8]). */
   for (int y = 0; y < N; y++)
     for (int x = 0; x < N; x++) img[y * N + x] = cos(NL_TWO_PI * x / 8.0);
-  nl_example_band_power(img, N, N, 6, p);
+  nl_byexample_band_power(img, N, N, 6, p);
   NL_CHECK_NEAR(p[2], 0.5, 1e-12);
   NL_CHECK_NEAR(p[1] + p[3], 0, 1e-20);
 }
 
 NL_TEST(pca_round_trip_is_identity)
 {
-  nl_image *im = nl_example_exemplar("granite", 64, 3);
+  nl_image *im = nl_byexample_exemplar("granite", 64, 3);
   double mean[3], M[3][3], *pl[3];
-  NL_CHECK(nl_example_pca(im, mean, M, NULL) == NL_OK);
+  NL_CHECK(nl_byexample_pca(im, mean, M, NULL) == NL_OK);
   for (int r = 0; r < 3; r++)
     for (int c = 0; c < 3; c++) {
       double d = 0;
@@ -72,13 +72,13 @@ NL_TEST(pca_round_trip_is_identity)
       NL_CHECK_NEAR(d, r == c, 1e-12);
     }
   for (int c = 0; c < 3; c++) pl[c] = malloc(64 * 64 * sizeof(double));
-  nl_example_decorrelate(im, 3, mean, M, pl);
+  nl_byexample_decorrelate(im, 3, mean, M, pl);
   /* Decorrelated channels: covariance 0 off the diagonal. */
   double cov01 = 0;
   for (int i = 0; i < 64 * 64; i++) cov01 += pl[0][i] * pl[1][i];
   NL_CHECK_NEAR(cov01 / (64 * 64), 0, 1e-9);
   nl_image *back = nl_image_alloc(64, 64, 3);
-  nl_example_recorrelate(pl, 3, mean, M, back);
+  nl_byexample_recorrelate(pl, 3, mean, M, back);
   double worst = 0;
   for (int i = 0; i < 64 * 64 * 3; i++) worst = fmax(worst, fabs(back->data[i] - im->data[i]));
   NL_CHECK(worst < 1e-6);   /* float pixels */
@@ -99,12 +99,12 @@ NL_TEST(histogram_matching_maps_quantiles)
     target[i] = -log(1 - u);
     g[(i * 7919) % N] = 0.7 * gsl_cdf_ugaussian_Pinv(u);
   }
-  nl_example_quantiles(target, N, qt);
+  nl_byexample_quantiles(target, N, qt);
   for (int kind = 0; kind < 2; kind++) {
     double *v = malloc(N * sizeof *v);
     memcpy(v, g, N * sizeof *v);
-    nl_example_match(v, N, 0.7, qt, (nl_spline_kind)kind);
-    nl_example_quantiles(v, N, qr);
+    nl_byexample_match(v, N, 0.7, qt, (nl_byexample_spline_kind)kind);
+    nl_byexample_quantiles(v, N, qr);
     for (int j = 1; j < 9; j++) NL_CHECK_NEAR(qr[j], qt[j], 0.03);
     NL_CHECK(qr[0] >= qt[0] && qr[9] <= qt[9]);
     free(v);
@@ -118,7 +118,7 @@ NL_TEST(splines_are_monotone_through_knots)
   double x[5] = {0, 1, 2, 3, 4}, y[5] = {0, 0.1, 0.1, 3, 3.2}, xs[401], ys[401];
   for (int i = 0; i <= 400; i++) xs[i] = i / 100.0;
   for (int kind = 0; kind < 2; kind++) {
-    nl_example_spline(x, y, 5, (nl_spline_kind)kind, xs, ys, 401);
+    nl_byexample_spline(x, y, 5, (nl_byexample_spline_kind)kind, xs, ys, 401);
     int mono = 1;
     for (int i = 1; i <= 400; i++) mono &= ys[i] >= ys[i - 1];
     NL_CHECK(mono);
@@ -129,21 +129,21 @@ NL_TEST(splines_are_monotone_through_knots)
 
 NL_TEST(analyse_save_load_synthesize_is_deterministic)
 {
-  nl_image *ex = nl_example_exemplar("clouds", 64, 2), *a, *b, *c;
-  nl_example_params p, q;
-  NL_CHECK(nl_example_analyse(ex, NULL, &p, NULL) == NL_OK);
+  nl_image *ex = nl_byexample_exemplar("clouds", 64, 2), *a, *b, *c;
+  nl_byexample_params p, q;
+  NL_CHECK(nl_byexample_analyse(ex, NULL, &p, NULL) == NL_OK);
   NL_CHECK(p.channels == 3 && p.nbands == 6);
-  NL_CHECK(nl_example_param_count(&p) == 9 + 30 + 18);
-  char path[] = "/tmp/nl_example_testXXXXXX";
+  NL_CHECK(nl_byexample_param_count(&p) == 9 + 30 + 18);
+  char path[] = "/tmp/nl_byexample_testXXXXXX";
   int fd = mkstemp(path);
   close(fd);
-  NL_CHECK(nl_example_params_save(&p, path, NULL) == NL_OK);
-  NL_CHECK(nl_example_params_load(path, &q, NULL) == NL_OK);
+  NL_CHECK(nl_byexample_params_save(&p, path, NULL) == NL_OK);
+  NL_CHECK(nl_byexample_params_load(path, &q, NULL) == NL_OK);
   NL_CHECK(memcmp(p.w, q.w, sizeof p.w) == 0 && memcmp(p.hist, q.hist, sizeof p.hist) == 0);
   NL_CHECK(memcmp(p.matrix, q.matrix, sizeof p.matrix) == 0);
-  nl_example_synthesize(&p, 48, 40, 9, NULL, &a, NULL);
-  nl_example_synthesize(&q, 48, 40, 9, NULL, &b, NULL);
-  nl_example_synthesize(&q, 48, 40, 10, NULL, &c, NULL);
+  nl_byexample_synthesize(&p, 48, 40, 9, NULL, &a, NULL);
+  nl_byexample_synthesize(&q, 48, 40, 9, NULL, &b, NULL);
+  nl_byexample_synthesize(&q, 48, 40, 10, NULL, &c, NULL);
   NL_CHECK(memcmp(a->data, b->data, 48 * 40 * 3 * sizeof(float)) == 0);
   NL_CHECK(memcmp(a->data, c->data, 48 * 40 * 3 * sizeof(float)) != 0);
   /* Bad files: a missing field, a word where a number belongs. */
@@ -151,12 +151,12 @@ NL_TEST(analyse_save_load_synthesize_is_deterministic)
   FILE *fp = fopen(path, "w");
   fputs("noiselab-example 1\nchannels 1\nbands 4\ntile 64\nhistogram 0\nsigma2 0.3\n", fp);
   fclose(fp);
-  NL_CHECK(nl_example_params_load(path, &q, &err) == NL_EFORMAT);
+  NL_CHECK(nl_byexample_params_load(path, &q, &err) == NL_EFORMAT);
   NL_CHECK(strstr(err.msg, "missing field 'mean'") != NULL);
   fp = fopen(path, "w");
   fputs("noiselab-example 1\nchannels 1\nbands x\n", fp);
   fclose(fp);
-  NL_CHECK(nl_example_params_load(path, &q, &err) == NL_EFORMAT);
+  NL_CHECK(nl_byexample_params_load(path, &q, &err) == NL_EFORMAT);
   NL_CHECK(strstr(err.msg, ":3:") != NULL);
   unlink(path);
   nl_image_free(a); nl_image_free(b); nl_image_free(c); nl_image_free(ex);
@@ -164,34 +164,34 @@ NL_TEST(analyse_save_load_synthesize_is_deterministic)
 
 NL_TEST(morph_ends_are_the_inputs)
 {
-  nl_image *e1 = nl_example_exemplar("clouds", 32, 1), *e2 = nl_example_exemplar("granite", 32, 1);
-  nl_image *e3 = nl_example_exemplar("granite", 64, 1);
-  nl_example_params a, b, c, m;
-  nl_example_analyse(e1, NULL, &a, NULL);
-  nl_example_analyse(e2, NULL, &b, NULL);
-  nl_example_analyse(e3, NULL, &c, NULL);
-  NL_CHECK(nl_example_morph(&a, &b, 1.0, &m, NULL) == NL_OK);
+  nl_image *e1 = nl_byexample_exemplar("clouds", 32, 1), *e2 = nl_byexample_exemplar("granite", 32, 1);
+  nl_image *e3 = nl_byexample_exemplar("granite", 64, 1);
+  nl_byexample_params a, b, c, m;
+  nl_byexample_analyse(e1, NULL, &a, NULL);
+  nl_byexample_analyse(e2, NULL, &b, NULL);
+  nl_byexample_analyse(e3, NULL, &c, NULL);
+  NL_CHECK(nl_byexample_morph(&a, &b, 1.0, &m, NULL) == NL_OK);
   for (int r = 0; r < 3; r++)
     for (int k = 0; k < 3; k++) NL_CHECK_NEAR(m.matrix[r][k], b.matrix[r][k], 1e-12);
-  NL_CHECK(nl_example_morph(&a, &b, 0.0, &m, NULL) == NL_OK);
+  NL_CHECK(nl_byexample_morph(&a, &b, 0.0, &m, NULL) == NL_OK);
   for (int r = 0; r < 3; r++)
     for (int k = 0; k < 3; k++) NL_CHECK_NEAR(m.matrix[r][k], a.matrix[r][k], 1e-12);
-  NL_CHECK(nl_example_morph(&a, &b, 0.5, &m, NULL) == NL_OK);
+  NL_CHECK(nl_byexample_morph(&a, &b, 0.5, &m, NULL) == NL_OK);
   NL_CHECK_NEAR(m.w[1][2], 0.5 * (a.w[1][2] + b.w[1][2]), 1e-15);
   double det = m.matrix[0][0] * (m.matrix[1][1] * m.matrix[2][2] - m.matrix[1][2] * m.matrix[2][1])
              - m.matrix[0][1] * (m.matrix[1][0] * m.matrix[2][2] - m.matrix[1][2] * m.matrix[2][0])
              + m.matrix[0][2] * (m.matrix[1][0] * m.matrix[2][1] - m.matrix[1][1] * m.matrix[2][0]);
   NL_CHECK_NEAR(det, 1, 1e-12);   /* slerp stays a rotation */
-  NL_CHECK(nl_example_morph(&a, &c, 0.5, &m, NULL) == NL_EINVAL);
+  NL_CHECK(nl_byexample_morph(&a, &c, 0.5, &m, NULL) == NL_EINVAL);
   nl_image_free(e1); nl_image_free(e2); nl_image_free(e3);
 }
 
 NL_TEST(small_images_are_rejected)
 {
   nl_image *im = nl_image_alloc(15, 40, 1);
-  nl_example_params p;
+  nl_byexample_params p;
   nl_error err;
-  NL_CHECK(nl_example_analyse(im, NULL, &p, &err) == NL_EINVAL);
+  NL_CHECK(nl_byexample_analyse(im, NULL, &p, &err) == NL_EINVAL);
   NL_CHECK(strstr(err.msg, "15 x 40") != NULL);
   nl_image_free(im);
 }
@@ -200,14 +200,14 @@ NL_TEST(rotation_error_and_correlation_error)
 {
   const double I[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, S[3][3] = {{2, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   double det, orth;
-  nl_example_rotation_error(I, &det, &orth);
+  nl_byexample_rotation_error(I, &det, &orth);
   NL_CHECK(det == 1.0 && orth == 0.0);
-  nl_example_rotation_error(S, &det, &orth);
+  nl_byexample_rotation_error(S, &det, &orth);
   NL_CHECK(det == 2.0 && orth == 3.0);
-  nl_image *a = nl_example_exemplar("wavelet", 32, 1);
+  nl_image *a = nl_byexample_exemplar("wavelet", 32, 1);
   double lum[32 * 32];
-  nl_example_luminance(a, lum);
-  NL_CHECK(nl_example_correlation_error(a, a) == 0.0);
+  nl_byexample_luminance(a, lum);
+  NL_CHECK(nl_byexample_correlation_error(a, a) == 0.0);
   nl_image_free(a);
 }
 

@@ -1,6 +1,6 @@
 #define _GNU_SOURCE   /* RTLD_DEFAULT, dladdr */
-#include "report/nl_report.h"
-#include "report/nl_build_info.h"
+#include "harness/nl_harness.h"
+#include "harness/nl_build_info.h"
 
 #include <gsl/gsl_version.h>
 #include <dirent.h>
@@ -13,7 +13,7 @@
 #include <time.h>
 #include <unistd.h>
 
-struct nl_run {
+struct nl_harness {
   const char *name, *title;
   char *out;
   unsigned long seed;
@@ -23,10 +23,10 @@ struct nl_run {
   int nset;
   char **set_key, **set_val;
   int *set_used;
-  int listing;            /* 0; 1 --help, 2 --params: print at nl_run_params_done, exit 0 */
+  int listing;            /* 0; 1 --help, 2 --params: print at nl_harness_params_done, exit 0 */
   size_t nparam;          /* the parameters declared so far, for --params, --help, errors */
-  nl_run_param_info *param;
-  int params_checked;     /* nl_run_params_done ran */
+  nl_harness_param_info *param;
+  int params_checked;     /* nl_harness_params_done ran */
   int prepared;           /* the output folder exists and its old manifest is gone */
   nl_table *manifest;     /* key, value (text) */
   nl_table *checks;       /* table, column, rule (text): regression rules */
@@ -64,17 +64,17 @@ static void usage(const char *name, const char *title)
 static void param_text(char buf[32], double v, int is_int)
 {
   if (is_int) snprintf(buf, 32, "%ld", (long)v);
-  else nl_format_double(buf, v);
+  else nl_table_format_double(buf, v);
 }
 
-void nl_run_params_print(const nl_run *r, FILE *fp, int readable)
+void nl_harness_params_print(const nl_harness *r, FILE *fp, int readable)
 {
   char d[32], lo[32], hi[32];
   if (readable) fprintf(fp, "\nparameters (--set NAME=VALUE; default, range):\n");
   else fprintf(fp, "name\tdefault\tmin\tmax\tmeaning\n");
   if (readable && !r->nparam) fprintf(fp, "  (none)\n");
   for (size_t k = 0; k < r->nparam; k++) {
-    const nl_run_param_info *p = &r->param[k];
+    const nl_harness_param_info *p = &r->param[k];
     param_text(d, p->def, p->is_int);
     param_text(lo, p->lo, p->is_int);
     param_text(hi, p->hi, p->is_int);
@@ -84,13 +84,13 @@ void nl_run_params_print(const nl_run *r, FILE *fp, int readable)
   }
 }
 
-const nl_run_param_info *nl_run_params(const nl_run *r, size_t *n)
+const nl_harness_param_info *nl_harness_params(const nl_harness *r, size_t *n)
 {
   *n = r->nparam;
   return r->param;
 }
 
-void nl_run_die(nl_run *r, int code, const char *fmt, ...)
+void nl_harness_die(nl_harness *r, int code, const char *fmt, ...)
 {
   va_list ap;
   va_start(ap, fmt);
@@ -101,12 +101,12 @@ void nl_run_die(nl_run *r, int code, const char *fmt, ...)
   exit(code);
 }
 
-static void note(nl_run *r, const char *key, const char *value)
+static void note(nl_harness *r, const char *key, const char *value)
 {
   nl_table_append(r->manifest, "ss", key, value);
 }
 
-void nl_run_note(nl_run *r, const char *key, const char *fmt, ...)
+void nl_harness_note(nl_harness *r, const char *key, const char *fmt, ...)
 {
   char buf[1024];
   va_list ap;
@@ -118,7 +118,7 @@ void nl_run_note(nl_run *r, const char *key, const char *fmt, ...)
 
 /* ---- options ------------------------------------------------------------ */
 
-void nl_run_options_free(nl_run_options *o)
+void nl_harness_options_free(nl_harness_options *o)
 {
   if (!o) return;
   for (int k = 0; k < o->nset; k++) { free(o->set_key[k]); free(o->set_val[k]); }
@@ -133,7 +133,7 @@ static nl_status option_value(int argc, char **argv, int *i, const char **v, nl_
   return NL_OK;
 }
 
-nl_status nl_run_parse(nl_run_options *o, int argc, char **argv, nl_error *err)
+nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_error *err)
 {
   memset(o, 0, sizeof *o);
   o->seed = 1;
@@ -169,21 +169,21 @@ nl_status nl_run_parse(nl_run_options *o, int argc, char **argv, nl_error *err)
         }
       }
     } else st = nl_fail(err, NL_EINVAL, "%s: unknown option (see --help)", a);
-    if (st) { nl_run_options_free(o); return st; }
+    if (st) { nl_harness_options_free(o); return st; }
   }
   return NL_OK;
 }
 
-nl_run *nl_run_begin(const char *name, const char *title, int argc, char **argv)
+nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char **argv)
 {
-  nl_run_options o;
+  nl_harness_options o;
   nl_error err;
-  if (nl_run_parse(&o, argc, argv, &err)) {
+  if (nl_harness_parse(&o, argc, argv, &err)) {
     fprintf(stderr, "%s: %s\n", name, err.msg);
     exit(2);
   }
-  nl_run *r = nl_xcalloc(1, sizeof *r);
-  /* --help and --params are answered at nl_run_params_done, once the
+  nl_harness *r = nl_xcalloc(1, sizeof *r);
+  /* --help and --params are answered at nl_harness_params_done, once the
    * experiment has declared its parameters; nothing is done before. */
   r->listing = o.help ? 1 : o.params ? 2 : 0;
   r->name = name;
@@ -205,10 +205,10 @@ nl_run *nl_run_begin(const char *name, const char *title, int argc, char **argv)
   const char *ccols[] = {"table", "column", "rule"};
   r->checks = nl_table_alloc(3, ccols);
   note(r, "experiment", name);
-  nl_run_note(r, "seed", "%lu", r->seed);
-  nl_run_note(r, "seeds", "%d", r->seeds);
+  nl_harness_note(r, "seed", "%lu", r->seed);
+  nl_harness_note(r, "seeds", "%d", r->seeds);
   note(r, "quick", r->quick ? "yes" : "no");
-  nl_report_text(r, "## %s\n", title);
+  nl_harness_text(r, "## %s\n", title);
   r->last_progress = -1;
   return r;
 }
@@ -229,28 +229,28 @@ static const char *manifest_name(void)
  * the previous run's manifest removed (a folder with a manifest is a
  * finished run; this one is not, yet). Called by every function that writes
  * into the folder or hands out a path in it. */
-static void prepare(nl_run *r)
+static void prepare(nl_harness *r)
 {
   if (r->prepared) return;
-  if (!r->params_checked) nl_run_params_done(r);
+  if (!r->params_checked) nl_harness_params_done(r);
   nl_error err;
-  if (nl_mkdir_p(r->out, &err)) nl_run_die(r, 1, "%s", err.msg);
+  if (nl_mkdir_p(r->out, &err)) nl_harness_die(r, 1, "%s", err.msg);
   const char *names[2] = {"manifest.tsv", manifest_name()};
   for (int k = 0; k < 2; k++) {
     char *m = nl_path_join(r->out, names[k]);
-    if (unlink(m) && errno != ENOENT) nl_run_die(r, 1, "%s: cannot remove: %s", m, strerror(errno));
+    if (unlink(m) && errno != ENOENT) nl_harness_die(r, 1, "%s: cannot remove: %s", m, strerror(errno));
     free(m);
   }
   r->prepared = 1;
 }
 
-unsigned long nl_run_seed(const nl_run *r) { return r->seed; }
-int nl_run_seeds(const nl_run *r) { return r->seeds; }
-int nl_run_quick(const nl_run *r) { return r->quick; }
-const char *nl_run_dir(const nl_run *r) { prepare((nl_run *)r); return r->out; }
-const char *nl_run_name(const nl_run *r) { return r->name; }
+unsigned long nl_harness_seed(const nl_harness *r) { return r->seed; }
+int nl_harness_seeds(const nl_harness *r) { return r->seeds; }
+int nl_harness_quick(const nl_harness *r) { return r->quick; }
+const char *nl_harness_dir(const nl_harness *r) { prepare((nl_harness *)r); return r->out; }
+const char *nl_harness_name(const nl_harness *r) { return r->name; }
 
-static const char *set_value(nl_run *r, const char *name)
+static const char *set_value(nl_harness *r, const char *name)
 {
   const char *v = NULL;
   for (int k = 0; k < r->nset; k++)
@@ -260,39 +260,39 @@ static const char *set_value(nl_run *r, const char *name)
 
 /* Records the declaration (for --params, --help and the unknown-name error)
  * and returns the --set value for name (NULL if none) with its label. */
-static const char *param_value(nl_run *r, const char *name, double def, double lo, double hi,
+static const char *param_value(nl_harness *r, const char *name, double def, double lo, double hi,
                                int is_int, const char *meaning, char *what, size_t n)
 {
   r->param = nl_xrealloc(r->param, (r->nparam + 1) * sizeof *r->param);
-  r->param[r->nparam++] = (nl_run_param_info){name, def, lo, hi, is_int, meaning ? meaning : ""};
+  r->param[r->nparam++] = (nl_harness_param_info){name, def, lo, hi, is_int, meaning ? meaning : ""};
   snprintf(what, n, "--set %s", name);
   return set_value(r, name);
 }
 
-double nl_run_param(nl_run *r, const char *name, double def, double lo, double hi, const char *meaning)
+double nl_harness_param(nl_harness *r, const char *name, double def, double lo, double hi, const char *meaning)
 {
   char what[128], buf[32];
   const char *s = param_value(r, name, def, lo, hi, 0, meaning, what, sizeof what);
   double v = def;
   nl_error err;
-  if (s && nl_parse_double(what, s, lo, hi, &v, &err)) nl_run_die(r, 2, "%s", err.msg);
-  nl_format_double(buf, v);
-  nl_run_note(r, "param", "%s=%s", name, buf);
+  if (s && nl_parse_double(what, s, lo, hi, &v, &err)) nl_harness_die(r, 2, "%s", err.msg);
+  nl_table_format_double(buf, v);
+  nl_harness_note(r, "param", "%s=%s", name, buf);
   return v;
 }
 
-long nl_run_param_int(nl_run *r, const char *name, long def, long lo, long hi, const char *meaning)
+long nl_harness_param_int(nl_harness *r, const char *name, long def, long lo, long hi, const char *meaning)
 {
   char what[128];
   const char *s = param_value(r, name, (double)def, (double)lo, (double)hi, 1, meaning, what, sizeof what);
   long v = def;
   nl_error err;
-  if (s && nl_parse_long(what, s, lo, hi, &v, &err)) nl_run_die(r, 2, "%s", err.msg);
-  nl_run_note(r, "param", "%s=%ld", name, v);
+  if (s && nl_parse_long(what, s, lo, hi, &v, &err)) nl_harness_die(r, 2, "%s", err.msg);
+  nl_harness_note(r, "param", "%s=%ld", name, v);
   return v;
 }
 
-void nl_run_params_done(nl_run *r)
+void nl_harness_params_done(nl_harness *r)
 {
   r->params_checked = 1;
   for (int k = 0; k < r->nset; k++) {
@@ -306,7 +306,7 @@ void nl_run_params_done(nl_run *r)
       if (p) strcat(names, ", ");
       strcat(names, r->param[p].name);
     }
-    nl_run_die(r, 2, "--set %s: unknown parameter for %s (valid: %s)", r->set_key[k], r->name,
+    nl_harness_die(r, 2, "--set %s: unknown parameter for %s (valid: %s)", r->set_key[k], r->name,
                r->nparam ? names : "none");
   }
   /* --help or --params: the list, and nothing else. Any --set given was
@@ -314,35 +314,35 @@ void nl_run_params_done(nl_run *r)
    * without doing the work. */
   if (r->listing) {
     if (r->listing == 1) usage(r->name, r->title);
-    nl_run_params_print(r, stdout, r->listing == 1);
+    nl_harness_params_print(r, stdout, r->listing == 1);
     fflush(stdout);
     exit(ferror(stdout) ? 1 : 0);
   }
 }
 
-char *nl_run_path(const nl_run *r, const char *file)
+char *nl_harness_path(const nl_harness *r, const char *file)
 {
-  prepare((nl_run *)r);   /* r is always a heap nl_run; the folder must exist for the caller */
+  prepare((nl_harness *)r);   /* r is always a heap nl_harness; the folder must exist for the caller */
   return nl_path_join(r->out, file);
 }
 
-void nl_run_table(nl_run *r, const nl_table *t, const char *file)
+void nl_harness_write_table(nl_harness *r, const nl_table *t, const char *file)
 {
-  char *p = nl_run_path(r, file);
+  char *p = nl_harness_path(r, file);
   nl_error err;
-  if (nl_table_write(t, p, &err)) nl_run_die(r, 1, "%s", err.msg);
+  if (nl_table_write(t, p, &err)) nl_harness_die(r, 1, "%s", err.msg);
   free(p);
 }
 
-void nl_run_image(nl_run *r, const nl_image *im, const char *file)
+void nl_harness_write_image(nl_harness *r, const nl_image *im, const char *file)
 {
-  char *p = nl_run_path(r, file);
+  char *p = nl_harness_path(r, file);
   nl_error err;
-  if (nl_image_write(im, p, 8, &err)) nl_run_die(r, 1, "%s", err.msg);
+  if (nl_image_write(im, p, 8, &err)) nl_harness_die(r, 1, "%s", err.msg);
   free(p);
 }
 
-void nl_run_progress(nl_run *r, double fraction, const char *what)
+void nl_harness_progress(nl_harness *r, double fraction, const char *what)
 {
   double now = nl_time_now();
   int tty = isatty(2);
@@ -356,7 +356,7 @@ void nl_run_progress(nl_run *r, double fraction, const char *what)
 
 /* ---- report section --------------------------------------------------- */
 
-static void md_append(nl_run *r, const char *s)
+static void md_append(nl_harness *r, const char *s)
 {
   size_t n = strlen(s);
   if (r->md_len + n + 1 > r->md_cap) {
@@ -367,7 +367,7 @@ static void md_append(nl_run *r, const char *s)
   r->md_len += n;
 }
 
-void nl_report_text(nl_run *r, const char *fmt, ...)
+void nl_harness_text(nl_harness *r, const char *fmt, ...)
 {
   va_list ap;
   va_start(ap, fmt);
@@ -382,10 +382,10 @@ void nl_report_text(nl_run *r, const char *fmt, ...)
   free(buf);
 }
 
-void nl_report_table(nl_run *r, const nl_table *t, const char *caption, int digits)
+void nl_harness_report_table(nl_harness *r, const nl_table *t, const char *caption, int digits)
 {
   char cell[64];
-  if (caption) nl_report_text(r, "*%s*\n", caption);
+  if (caption) nl_harness_text(r, "*%s*\n", caption);
   for (size_t c = 0; c < t->ncols; c++) { md_append(r, "| "); md_append(r, t->names[c]); md_append(r, " "); }
   md_append(r, "|\n");
   for (size_t c = 0; c < t->ncols; c++) md_append(r, "|---");
@@ -402,9 +402,9 @@ void nl_report_table(nl_run *r, const nl_table *t, const char *caption, int digi
   md_append(r, "\n");
 }
 
-void nl_report_figure(nl_run *r, const char *file, const char *caption)
+void nl_harness_figure(nl_harness *r, const char *file, const char *caption)
 {
-  nl_report_text(r, "![%s](%s/%s)\n\n*%s*\n", caption, r->name, file, caption);
+  nl_harness_text(r, "![%s](%s/%s)\n\n*%s*\n", caption, r->name, file, caption);
 }
 
 /* ---- regression rules ----------------------------------------------------- */
@@ -419,7 +419,7 @@ static nl_status rule_number(const char *rule, const char *tok, double lo, doubl
   return NL_OK;
 }
 
-nl_status nl_check_rule_parse(const char *s, nl_check_rule *rule, nl_error *err)
+nl_status nl_harness_rule_parse(const char *s, nl_harness_rule *rule, nl_error *err)
 {
   char buf[256], *save = NULL;
   if (strlen(s) >= sizeof buf) return nl_fail(err, NL_EINVAL, "rule '%.40s...': too long", s);
@@ -447,11 +447,11 @@ nl_status nl_check_rule_parse(const char *s, nl_check_rule *rule, nl_error *err)
   return st;
 }
 
-void nl_run_check(nl_run *r, const char *table, const char *column, const char *rule)
+void nl_harness_check(nl_harness *r, const char *table, const char *column, const char *rule)
 {
-  nl_check_rule parsed;
+  nl_harness_rule parsed;
   nl_error err;
-  if (nl_check_rule_parse(rule, &parsed, &err)) nl_run_die(r, 1, "%s: %s: %s", table, column, err.msg);
+  if (nl_harness_rule_parse(rule, &parsed, &err)) nl_harness_die(r, 1, "%s: %s: %s", table, column, err.msg);
   nl_table *c = r->checks;
   for (size_t i = 0; i < c->nrows; i++) {
     char **row = c->text + i * c->ncols;
@@ -464,7 +464,7 @@ void nl_run_check(nl_run *r, const char *table, const char *column, const char *
   nl_table_append(c, "sss", table, column, rule);
 }
 
-const char *nl_run_check_rule(const nl_run *r, const char *table, const char *column)
+const char *nl_harness_check_rule(const nl_harness *r, const char *table, const char *column)
 {
   const char *star = NULL;
   for (size_t i = 0; i < r->checks->nrows; i++) {
@@ -478,14 +478,14 @@ const char *nl_run_check_rule(const nl_run *r, const char *table, const char *co
 
 /* ---- the end ------------------------------------------------------------ */
 
-static void write_text(nl_run *r, const char *file, const char *text)
+static void write_text(nl_harness *r, const char *file, const char *text)
 {
-  char *p = nl_run_path(r, file);
+  char *p = nl_harness_path(r, file);
   nl_atomic_file af;
   nl_error err;
-  if (nl_atomic_open(&af, p, &err)) nl_run_die(r, 1, "%s", err.msg);
+  if (nl_atomic_open(&af, p, &err)) nl_harness_die(r, 1, "%s", err.msg);
   fputs(text, af.fp);
-  if (nl_atomic_commit(&af, &err)) nl_run_die(r, 1, "%s", err.msg);
+  if (nl_atomic_commit(&af, &err)) nl_harness_die(r, 1, "%s", err.msg);
   free(p);
 }
 
@@ -512,7 +512,7 @@ static void cpu_model(char *buf, size_t n)
 
 /* The BLAS the process runs with. OpenBLAS's own functions are looked up at
  * run time (dlsym), so the library builds and runs without OpenBLAS. */
-static void note_platform(nl_run *r)
+static void note_platform(nl_harness *r)
 {
   char buf[512];
   cpu_model(buf, sizeof buf);
@@ -525,38 +525,38 @@ static void note_platform(nl_run *r)
   char *(*config)(void) = (char *(*)(void))dlsym(RTLD_DEFAULT, "openblas_get_config");
   int (*threads)(void) = (int (*)(void))dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
   if (config) {
-    nl_run_note(r, "blas", "OpenBLAS (%s)", lib);
+    nl_harness_note(r, "blas", "OpenBLAS (%s)", lib);
     const char *core = corename ? corename() : NULL, *cfg = config();
     note(r, "blas_core", core && *core ? core : "unknown");
     note(r, "blas_config", cfg && *cfg ? cfg : "unknown");
-    if (threads) nl_run_note(r, "blas_threads", "%d", threads());
+    if (threads) nl_harness_note(r, "blas_threads", "%d", threads());
     else note(r, "blas_threads", "unknown");
   } else {
-    nl_run_note(r, "blas", "%s", lib);
+    nl_harness_note(r, "blas", "%s", lib);
     note(r, "blas_core", "none");
     note(r, "blas_config", "none");
     note(r, "blas_threads", "1");
   }
 }
 
-int nl_run_end(nl_run *r)
+int nl_harness_end(nl_harness *r)
 {
   write_text(r, "report.md", r->md ? r->md : "");
   const char *commit = getenv("NL_COMMIT");
   note(r, "commit", commit && *commit ? commit : "unknown");
-  nl_run_note(r, "gsl", "%s", GSL_VERSION);
-  nl_run_note(r, "openimageio", "%s", nl_image_library_version());
-  nl_run_note(r, "compiler", "%s", NL_COMPILER);
+  nl_harness_note(r, "gsl", "%s", GSL_VERSION);
+  nl_harness_note(r, "openimageio", "%s", nl_image_library_version());
+  nl_harness_note(r, "compiler", "%s", NL_COMPILER);
   note(r, "cflags", NL_BUILD_CFLAGS);
   note_platform(r);
   note(r, "started", r->started);
-  nl_run_note(r, "seconds", "%.3f", nl_time_now() - r->t0);
+  nl_harness_note(r, "seconds", "%.3f", nl_time_now() - r->t0);
   struct rusage ru;
   getrusage(RUSAGE_SELF, &ru);
-  nl_run_note(r, "peak_rss_mb", "%.1f", ru.ru_maxrss / 1024.0);
+  nl_harness_note(r, "peak_rss_mb", "%.1f", ru.ru_maxrss / 1024.0);
   /* Always written: an experiment without declarations is all `exact`. */
-  nl_run_table(r, r->checks, "checks.tsv");
-  nl_run_table(r, r->manifest, manifest_name());
+  nl_harness_write_table(r, r->checks, "checks.tsv");
+  nl_harness_write_table(r, r->manifest, manifest_name());
   for (int k = 0; k < r->nset; k++) { free(r->set_key[k]); free(r->set_val[k]); }
   free(r->set_key); free(r->set_val); free(r->set_used); free(r->param);
   nl_table_free(r->manifest);
@@ -567,7 +567,7 @@ int nl_run_end(nl_run *r)
 
 static int by_name(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
-char **nl_run_tables(const char *dir, size_t *n, nl_error *err)
+char **nl_harness_tables(const char *dir, size_t *n, nl_error *err)
 {
   DIR *d = opendir(dir);
   *n = 0;
