@@ -1,6 +1,8 @@
 #include "noise/nl_noise.h"
 #include "base/nl_base.h"
+#include "noise/nl_noise_simd.h"
 
+#include <gsl/gsl_errno.h>
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
 #include <math.h>
@@ -96,6 +98,8 @@ void nl_noise_grad2_seed(nl_noise_grad2 *t, unsigned long seed)
 size_t nl_noise_grad2_index(const nl_noise_grad2 *t, long i, long j)
 {
   long m = (long)t->m;
+  /* A power-of-two m: i mod m is a mask (two's complement), no division. */
+  if (m > 0 && (m & (m - 1)) == 0) { long k = m - 1; return t->perm[((long)t->perm[i & k] + j) & k]; }
   return t->perm[lmod((long)t->perm[lmod(i, m)] + lmod(j, m), m)];
 }
 
@@ -148,6 +152,7 @@ static size_t row_columns(double x0, double dx, size_t n, long *ifirst)
 void nl_noise_grad2_row(const nl_noise_grad2 *t, double x0, double dx, double y, size_t n, double *out)
 {
   if (n == 0) return;
+  if (nl_noise_simd_row2(t, x0, dx, y, n, out) == GSL_SUCCESS) return;   /* nl_noise_simd.c */
   long ifirst;
   size_t ncol = row_columns(x0, dx, n, &ifirst);
   if (ncol == 0) {
@@ -235,6 +240,7 @@ void nl_noise_perm3_row(const nl_noise_perm3 *p, double x0, double dx, double y,
                    size_t n, double *out)
 {
   if (n == 0) return;
+  if (nl_noise_simd_row3(p, x0, dx, y, z, n, out) == GSL_SUCCESS) return;   /* nl_noise_simd.c */
   long ifirst;
   size_t ncol = row_columns(x0, dx, n, &ifirst);
   if (ncol == 0) {
@@ -303,6 +309,7 @@ double nl_noise_octaves_bound(const nl_noise_octaves *o, double basis_bound)
 void nl_noise_fractal_row(const nl_noise_basis *b, const nl_noise_octaves *o, double x0, double dx,
                     double y, double z, size_t n, double *out, double *scratch)
 {
+  if (nl_noise_simd_fractal_row(b, o, x0, dx, y, z, n, out, scratch) == GSL_SUCCESS) return;
   for (size_t k = 0; k < n; k++) out[k] = 0;
   for (int l = 0; l < o->n; l++) {
     double f = o->freq[l], a = o->amp[l];

@@ -75,6 +75,43 @@ void nl_noise_perm3_row(const nl_noise_perm3 *p, double x0, double dx, double y,
                    size_t n, double *out);
 #define NL_NOISE3_BOUND 1.22474487139158904910
 
+/* ---- SIMD kernels, run-time dispatch, batches of points (issue 17) -----
+ *
+ * Rows of both noises (and so the sums of octaves over nl_noise_basis_grad2 and
+ * nl_noise_basis_perm3) and the batches below run on the best vector unit the CPU
+ * has: SSE2 (the x86-64 baseline), AVX2 or AVX-512 (F, DQ, BW, VL, VBMI),
+ * chosen at run time (no -march in the build; nl_noise_simd.c). Every level returns the scalar code's bits (same IEEE
+ * operations in the same order, no FMA); power-of-two tables index by mask.
+ * NL_NOISE_SIMD=scalar|sse2|avx2|avx512 in the environment, or
+ * nl_noise_simd_set, forces a level (tests and benchmarks compare them).
+ */
+typedef enum {
+  NL_NOISE_SIMD_SCALAR = 0, NL_NOISE_SIMD_SSE2 = 1, NL_NOISE_SIMD_AVX2 = 2, NL_NOISE_SIMD_AVX512 = 3
+} nl_noise_simd_level;
+
+int nl_noise_simd_get(void);               /* the level in use */
+int nl_noise_simd_best(void);              /* the best this CPU runs */
+int nl_noise_simd_supported(int level);    /* 1 if this CPU runs it */
+/* GSL_SUCCESS, GSL_EINVAL (no such level) or GSL_EUNSUP (not on this CPU). */
+int nl_noise_simd_set(int level);
+const char *nl_noise_simd_name(int level);          /* "scalar", ..., "avx512" */
+int nl_noise_simd_from_name(const char *name);      /* -1 if none */
+
+/* out[k] = nl_noise_grad2_eval(t, x[k], y[k]) and nl_noise_perm3_eval(p, x[k], y[k], z[k]),
+ * k < n. out may be one of the inputs (the same array), not overlap one. */
+void nl_noise_grad2_points(const nl_noise_grad2 *t, const double *x, const double *y, size_t n,
+                           double *out);
+void nl_noise_perm3_points(const nl_noise_perm3 *p, const double *x, const double *y, const double *z,
+                           size_t n, double *out);
+/* The sample loop of a quadratic B-spline row (wavelet noise, nl_wavelet_row)
+ * on the dispatched level: out[k] += weight * (w0 L[i] + w1 L[i+1] + w2 L[i+2])
+ * at x0 + k dx, k < count, with the weights and first tap i of nl_wavelet.c's
+ * bspline() and L the period line[0 .. n-1] repeated. GSL_SUCCESS, or
+ * GSL_CONTINUE (nothing done) on the scalar level, for sparse rows and
+ * beyond |x| < 2^51: then the caller's own loop runs. */
+int nl_noise_bspline_row(const double *line, long n, double x0, double dx, size_t count,
+                         double weight, double *out);
+
 /* ---- a noise as a basis for sums ------------------------------------ */
 
 typedef struct {

@@ -1,5 +1,6 @@
 #include "wavelet/nl_wavelet.h"
 
+#include <gsl/gsl_errno.h>
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
 #include <math.h>
@@ -171,6 +172,8 @@ void nl_wavelet_row(const nl_wavelet_tile *t, double x0, double dx, double y, do
   for (int i = 0; i < n; i++) line[i] = collapse_column(&c, i);
   line[n] = line[0];
   line[n + 1] = line[1];
+  /* The sample loop on the SIMD level (nl_noise.h), same bits; else below. */
+  if (nl_noise_bspline_row(line, n, x0, dx, count, weight, out) == GSL_SUCCESS) { free(line); return; }
   for (size_t k = 0; k < count; k++) {
     double wx[3];
     long i = wrap(bspline(x0 + (double)k * dx, wx), n);

@@ -1,0 +1,352 @@
+/* nl_noise_simd.c - run-time dispatch of the noise kernels (issue 17), the
+ * row drivers nl_noise.c hands its rows to, and the batch point API.
+ *
+ * Levels: scalar (nl_noise.c's own code, the reference), SSE2 (the x86-64
+ * baseline), AVX2, AVX-512 (F+DQ+BW+VL+VBMI). The level is the best the CPU and
+ * OS support (__builtin_cpu_supports, which checks the XSAVE state too),
+ * unless NL_NOISE_SIMD=scalar|sse2|avx2|avx512 asks for another (a level the
+ * CPU lacks falls back to the best it has, with a warning) or a program calls
+ * nl_noise_simd_set. Every level gives the scalar bits (nl_noise_simd.h).
+ *
+ * The small scalar helpers below repeat nl_noise.c's (lfloor, lfrac, fade,
+ * row_columns, column2) so that file keeps only a hook; test_noise_simd.c
+ * holds the two to the same bits.
+ */
+#include "noise/nl_noise_simd.h"
+#include "base/nl_base.h"
+
+#include <gsl/gsl_errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Perlin 2002's grad3 (nl_noise.c), one array per component. */
+const double nl_noise_simd_g3[3][16] = {
+  {1, -1, 1, -1, 1, -1, 1, -1, 0, 0, 0, 0, 1, 0, -1, 0},
+  {1, 1, -1, -1, 0, 0, 0, 0, 1, -1, 1, -1, 1, -1, 1, -1},
+  {0, 0, 0, 0, 1, 1, -1, -1, 1, 1, -1, -1, 0, 1, 0, -1}};
+
+/* ---- the level ------------------------------------------------------------ */
+
+static const char *const level_names[] = {"scalar", "sse2", "avx2", "avx512"};
+
+const char *nl_noise_simd_name(int level)
+{
+  return level >= 0 && level <= NL_NOISE_SIMD_AVX512 ? level_names[level] : "unknown";
+}
+
+int nl_noise_simd_from_name(const char *name)
+{
+  for (int l = 0; l <= NL_NOISE_SIMD_AVX512; l++)
+    if (name && strcmp(name, level_names[l]) == 0) return l;
+  return -1;
+}
+
+int nl_noise_simd_supported(int level)
+{
+  switch (level) {
+  case NL_NOISE_SIMD_SCALAR: case NL_NOISE_SIMD_SSE2: return 1;
+  case NL_NOISE_SIMD_AVX2:
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2");
+  case NL_NOISE_SIMD_AVX512:
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+           __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl") &&
+           __builtin_cpu_supports("avx512vbmi") && __builtin_cpu_supports("avx2");
+  default: return 0;
+  }
+}
+
+int nl_noise_simd_best(void)
+{
+  int l = NL_NOISE_SIMD_AVX512;
+  while (!nl_noise_simd_supported(l)) l--;
+  return l;
+}
+
+static int simd_level = -1;   /* -1: not yet resolved */
+
+int nl_noise_simd_get(void)
+{
+  int l = __atomic_load_n(&simd_level, __ATOMIC_ACQUIRE);
+  if (l >= 0) return l;
+  l = nl_noise_simd_best();
+  const char *env = getenv("NL_NOISE_SIMD");
+  if (env && *env && strcmp(env, "auto") != 0) {
+    int want = nl_noise_simd_from_name(env);
+    if (want < 0)
+      fprintf(stderr, "noiselab: NL_NOISE_SIMD=%s is not scalar|sse2|avx2|avx512|auto; using %s\n",
+              env, nl_noise_simd_name(l));
+    else if (!nl_noise_simd_supported(want))
+      fprintf(stderr, "noiselab: this CPU cannot run NL_NOISE_SIMD=%s; using %s\n", env,
+              nl_noise_simd_name(l));
+    else l = want;
+  }
+  __atomic_store_n(&simd_level, l, __ATOMIC_RELEASE);   /* racing first calls agree */
+  return l;
+}
+
+int nl_noise_simd_set(int level)
+{
+  if (level < 0 || level > NL_NOISE_SIMD_AVX512) return GSL_EINVAL;
+  if (!nl_noise_simd_supported(level)) return GSL_EUNSUP;
+  __atomic_store_n(&simd_level, level, __ATOMIC_RELEASE);
+  return GSL_SUCCESS;
+}
+
+static const nl_noise_simd_kernels *kernels(void)
+{
+  switch (nl_noise_simd_get()) {
+  case NL_NOISE_SIMD_SSE2: return &nl_noise_simd_sse2;
+  case NL_NOISE_SIMD_AVX2: return &nl_noise_simd_avx2;
+  case NL_NOISE_SIMD_AVX512: return &nl_noise_simd_avx512;
+  default: return NULL;
+  }
+}
+
+/* ---- nl_noise.c's scalar helpers, repeated (see the top) ------------------- */
+
+#define NL_LATTICE_WRAP 0x1p62
+static inline long lfloor(double x)
+{
+  if (x > -NL_LATTICE_WRAP && x < NL_LATTICE_WRAP) { long i = (long)x; return i - (x < (double)i); }
+  if (!isfinite(x)) return 0;
+  return (long)fmod(x, NL_LATTICE_WRAP);
+}
+static inline double lfrac(double x, long i)
+{
+  double f = x - (double)i;
+  return f >= 0 && f < 1 ? f : isfinite(x) ? 0.0 : NAN;
+}
+static inline double fade(double t) { return t * t * t * (t * (t * 6 - 15) + 10); }
+#define NL_LATTICE_EXACT 0x1p52
+static size_t row_columns(double x0, double dx, size_t n, long *ifirst)
+{
+  double xl = x0 + (double)(n - 1) * dx;
+  if (!(fabs(x0) < NL_LATTICE_EXACT && fabs(xl) < NL_LATTICE_EXACT)) return 0;
+  long a = lfloor(dx >= 0 ? x0 : xl), b = lfloor(dx >= 0 ? xl : x0);
+  *ifirst = a;
+  size_t ncol = (size_t)(b - a) + 2;
+  return ncol > 2 * n + 8 ? 0 : ncol;
+}
+
+/* ---- rows ------------------------------------------------------------------ */
+
+#define NL_SIMD_STACK_COLS 1056   /* doubles; a multiple of NL_SIMD_PAD */
+#define NL_SIMD_CHUNK 256         /* points per call of a sparse row */
+
+/* The int copy of a permutation the lookups read, cached per thread (a row
+ * of fBm asks once per octave with the same table), and whether its second
+ * half repeats the first, as nl_noise_perm3_reference and nl_noise_perm3_seed make it
+ * (the kernels index the first 256 entries only). NULL if it does not. */
+static const int *perm3_ints(const nl_noise_perm3 *p)
+{
+  static _Thread_local struct { int valid, doubled; unsigned char p[512]; int p32[512]; } c;
+  if (!c.valid || memcmp(c.p, p->p, sizeof c.p) != 0) {
+    memcpy(c.p, p->p, sizeof c.p);
+    for (int k = 0; k < 512; k++) c.p32[k] = p->p[k];
+    c.doubled = memcmp(p->p, p->p + 256, 256) == 0;
+    c.valid = 1;
+  }
+  return c.doubled ? c.p32 : NULL;
+}
+
+static int grad2_pow2(const nl_noise_grad2 *t) { return t->m >= 1 && (t->m & (t->m - 1)) == 0 && t->m <= 0x80000000u; }
+
+/* Room for ncol columns (rounded up to NL_SIMD_PAD) and NL_SIMD_COL_PAD
+ * zeroed doubles after them: the stack arrays or the heap. */
+static double *column_arrays(size_t ncol, double *sgx, double *sa, double **a)
+{
+  size_t len = (ncol + NL_SIMD_PAD - 1) / NL_SIMD_PAD * NL_SIMD_PAD + NL_SIMD_COL_PAD;
+  double *gx = len <= NL_SIMD_STACK_COLS ? sgx : nl_xmalloc(len * sizeof *gx);
+  *a = len <= NL_SIMD_STACK_COLS ? sa : nl_xmalloc(len * sizeof **a);
+  memset(gx + ncol, 0, (len - ncol) * sizeof *gx);
+  memset(*a + ncol, 0, (len - ncol) * sizeof **a);
+  return gx;
+}
+
+/* nl_noise.c column2 for columns ifirst .. ifirst + ncol - 1 at y: Cheng
+ * 2009 eq. 3.1-3.2, corners (i, j) and (i, j + 1) blended along y. Scalar on
+ * every level: a 2D table (M = 512 doubles per component) does not fit in
+ * registers, and loads one by one beat gathers; a row has few columns. */
+static void columns2(const nl_noise_grad2 *t, long ifirst, size_t ncol, double y, double *gx, double *a)
+{
+  long j = lfloor(y);
+  double fy = lfrac(y, j), v = fade(fy);
+  if (grad2_pow2(t)) {   /* i mod m as a mask */
+    unsigned long mask = t->m - 1, j0 = (unsigned long)j & mask, j1 = (unsigned long)(j + 1) & mask;
+    const unsigned *perm = t->perm;
+    double fy1 = fy - 1;
+    for (size_t c = 0; c < ncol; c++) {
+      unsigned long pi = perm[((unsigned long)ifirst + c) & mask];
+      size_t k0 = perm[(pi + j0) & mask], k1 = perm[(pi + j1) & mask];
+      double a0 = t->gy[k0] * fy, a1 = t->gy[k1] * fy1;
+      gx[c] = t->gx[k0] + v * (t->gx[k1] - t->gx[k0]);
+      a[c] = a0 + v * (a1 - a0);
+    }
+  } else {   /* the general (lmod) path */
+    for (size_t c = 0; c < ncol; c++) {
+      long i = ifirst + (long)c;
+      size_t k0 = nl_noise_grad2_index(t, i, j), k1 = nl_noise_grad2_index(t, i, j + 1);
+      double a0 = t->gy[k0] * fy, a1 = t->gy[k1] * (fy - 1);
+      gx[c] = t->gx[k0] + v * (t->gx[k1] - t->gx[k0]);
+      a[c] = a0 + v * (a1 - a0);
+    }
+  }
+}
+
+/* nl_noise.c column3 for columns ifirst .. at (y, z), by the level's kernel. */
+static void columns3(const nl_noise_simd_kernels *K, const nl_noise_perm3 *p, const int *p32, long ifirst,
+                     size_t ncol, double y, double z, double *gx, double *a)
+{
+  long j = lfloor(y), k = lfloor(z);
+  double fy = lfrac(y, j), fz = lfrac(z, k), v = fade(fy), w = fade(fz);
+  K->columns3(p, p32, (unsigned)(ifirst & 255), (unsigned)(j & 255), (unsigned)(k & 255), fy, fz,
+              v, w, (ncol + NL_SIMD_PAD - 1) / NL_SIMD_PAD * NL_SIMD_PAD, gx, a);
+}
+
+/* One row of either noise into out (mode, amp: see NL_SIMD_STORE); sparse
+ * rows (row_columns 0) go point by point through scratch. */
+static void row_any(const nl_noise_simd_kernels *K, const nl_noise_grad2 *t, const nl_noise_perm3 *p,
+                    const int *p32, double x0, double dx, double y, double z, size_t n,
+                    double *out, int mode, double amp)
+{
+  long ifirst;
+  size_t ncol = row_columns(x0, dx, n, &ifirst);
+  if (ncol == 0) {   /* out[k] = nl_noise_grad2_eval(t, x0 + k dx, y) (or 3), by batches */
+    double xs[NL_SIMD_CHUNK], ys[NL_SIMD_CHUNK], zs[NL_SIMD_CHUNK], v[NL_SIMD_CHUNK];
+    for (size_t k0 = 0; k0 < n; k0 += NL_SIMD_CHUNK) {
+      size_t m = n - k0 < NL_SIMD_CHUNK ? n - k0 : NL_SIMD_CHUNK;
+      for (size_t k = 0; k < m; k++) { xs[k] = x0 + (double)(k0 + k) * dx; ys[k] = y; zs[k] = z; }
+      double *dst = mode == NL_SIMD_STORE ? out + k0 : v;
+      if (t) nl_noise_grad2_points(t, xs, ys, m, dst);
+      else nl_noise_perm3_points(p, xs, ys, zs, m, dst);
+      if (mode == NL_SIMD_STORE) continue;
+      double *o = out + k0;   /* nl_noise_fractal_row's loops */
+      for (size_t k = 0; k < m; k++) {
+        double s = mode & NL_SIMD_ABS ? fabs(v[k]) : v[k];
+        o[k] = ((mode & 3) == NL_SIMD_FIRST ? 0.0 : o[k]) + amp * s;
+      }
+    }
+    return;
+  }
+  double sgx[NL_SIMD_STACK_COLS], sa[NL_SIMD_STACK_COLS], *a;
+  double *gx = column_arrays(ncol, sgx, sa, &a);
+  if (t) columns2(t, ifirst, ncol, y, gx, a);
+  else columns3(K, p, p32, ifirst, ncol, y, z, gx, a);
+  K->samples(gx, a, ifirst, x0, dx, n, out, mode, amp);
+  if (gx != sgx) { free(gx); free(a); }
+}
+
+#define NL_SIMD_MAX_N ((size_t)1 << 29)   /* column indices stay ints */
+
+int nl_noise_simd_row2(const nl_noise_grad2 *t, double x0, double dx, double y, size_t n, double *out)
+{
+  const nl_noise_simd_kernels *K = kernels();
+  if (!K || n > NL_SIMD_MAX_N) return GSL_CONTINUE;
+  row_any(K, t, NULL, NULL, x0, dx, y, 0, n, out, NL_SIMD_STORE, 1);
+  return GSL_SUCCESS;
+}
+
+int nl_noise_simd_row3(const nl_noise_perm3 *p, double x0, double dx, double y, double z,
+                       size_t n, double *out)
+{
+  const nl_noise_simd_kernels *K = kernels();
+  const int *p32;
+  if (!K || n > NL_SIMD_MAX_N || !(p32 = perm3_ints(p))) return GSL_CONTINUE;
+  row_any(K, NULL, p, p32, x0, dx, y, z, n, out, NL_SIMD_STORE, 1);
+  return GSL_SUCCESS;
+}
+
+/* nl_noise_fractal_row (nl_noise.c) with each octave summed as its row is made:
+ * the same operations, out = 0, then out = out + amp_l N_l (or |N_l|), one
+ * octave after another, without the pass through scratch. */
+int nl_noise_simd_fractal_row(const nl_noise_basis *b, const nl_noise_octaves *o, double x0, double dx,
+                              double y, double z, size_t n, double *out, double *scratch)
+{
+  (void)scratch;
+  const nl_noise_simd_kernels *K = kernels();
+  if (!K || n > NL_SIMD_MAX_N || o->n < 1) return GSL_CONTINUE;
+  const nl_noise_grad2 *t = NULL;
+  const nl_noise_perm3 *p = NULL;
+  const int *p32 = NULL;
+  if (b->row == nl_noise_basis_grad2(NULL).row) t = b->ctx;
+  else if (b->row == nl_noise_basis_perm3(NULL).row && (p32 = perm3_ints(b->ctx))) p = b->ctx;
+  else return GSL_CONTINUE;
+  for (int l = 0; l < o->n; l++) {
+    double f = o->freq[l];
+    int mode = (l == 0 ? NL_SIMD_FIRST : NL_SIMD_ADD) | (o->turbulence ? NL_SIMD_ABS : 0);
+    row_any(K, t, p, p32, x0 * f, dx * f, y * f, z * f, n, out, mode, o->amp[l]);
+  }
+  return GSL_SUCCESS;
+}
+
+/* ---- quadratic B-spline rows (wavelet noise) --------------------------------- */
+
+static long wrapl(long i, long n) { long r = i % n; return r < 0 ? r + n : r; }
+
+int nl_noise_bspline_row(const double *line, long n, double x0, double dx, size_t count,
+                         double weight, double *out)
+{
+  const nl_noise_simd_kernels *K = kernels();
+  if (!K || count == 0 || count > NL_SIMD_MAX_N || n < 1) return GSL_CONTINUE;
+  double xl = x0 + (double)(count - 1) * dx;
+  if (!(fabs(x0) < 0x1p51 && fabs(xl) < 0x1p51)) return GSL_CONTINUE;
+  /* the first taps (bspline's mid - 1) of the lowest and the highest sample */
+  double lo = dx >= 0 ? x0 : xl, hi = dx >= 0 ? xl : x0;
+  long a = (long)ceil(lo - 0.5) - 1, b = (long)ceil(hi - 0.5) - 1;
+  size_t ncol = (size_t)(b - a) + 3;
+  if (ncol > 2 * count + 8) return GSL_CONTINUE;   /* sparse: the caller's loop */
+  double sL[NL_SIMD_STACK_COLS], sU[NL_SIMD_STACK_COLS], *U;
+  double *L = column_arrays(ncol, sL, sU, &U);
+  for (size_t c = 0; c < ncol; c++) L[c] = line[wrapl(a + (long)c, n)];
+  K->bspline(L, a, x0, dx, count, weight, out);
+  if (L != sL) { free(L); free(U); }
+  return GSL_SUCCESS;
+}
+
+/* ---- points ---------------------------------------------------------------- */
+
+void nl_noise_grad2_points(const nl_noise_grad2 *t, const double *x, const double *y, size_t n,
+                           double *out)
+{
+  const nl_noise_simd_kernels *K = kernels();
+  if (!K) {
+    for (size_t k = 0; k < n; k++) out[k] = nl_noise_grad2_eval(t, x[k], y[k]);
+    return;
+  }
+  size_t nb = n / NL_SIMD_PAD * NL_SIMD_PAD;
+  if (nb) K->points2(t, x, y, nb, out);
+  if (nb == n) return;
+  double xs[NL_SIMD_PAD] = {0}, ys[NL_SIMD_PAD] = {0}, res[NL_SIMD_PAD];
+  memcpy(xs, x + nb, (n - nb) * sizeof *xs);
+  memcpy(ys, y + nb, (n - nb) * sizeof *ys);
+  K->points2(t, xs, ys, NL_SIMD_PAD, res);
+  memcpy(out + nb, res, (n - nb) * sizeof *res);
+}
+
+void nl_noise_perm3_points(const nl_noise_perm3 *p, const double *x, const double *y, const double *z,
+                           size_t n, double *out)
+{
+  const nl_noise_simd_kernels *K = kernels();
+  if (!K) {
+    for (size_t k = 0; k < n; k++) out[k] = nl_noise_perm3_eval(p, x[k], y[k], z[k]);
+    return;
+  }
+  const int *p32 = perm3_ints(p);
+  if (!p32) {   /* not a doubled table: the scalar code indexes all 512 */
+    for (size_t k = 0; k < n; k++) out[k] = nl_noise_perm3_eval(p, x[k], y[k], z[k]);
+    return;
+  }
+  size_t nb = n / NL_SIMD_PAD * NL_SIMD_PAD;
+  if (nb) K->points3(p, p32, x, y, z, nb, out);
+  if (nb == n) return;
+  double xs[NL_SIMD_PAD] = {0}, ys[NL_SIMD_PAD] = {0}, zs[NL_SIMD_PAD] = {0}, res[NL_SIMD_PAD];
+  memcpy(xs, x + nb, (n - nb) * sizeof *xs);
+  memcpy(ys, y + nb, (n - nb) * sizeof *ys);
+  memcpy(zs, z + nb, (n - nb) * sizeof *zs);
+  K->points3(p, p32, xs, ys, zs, NL_SIMD_PAD, res);
+  memcpy(out + nb, res, (n - nb) * sizeof *res);
+}

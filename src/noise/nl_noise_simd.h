@@ -1,0 +1,78 @@
+/* nl_noise_simd.h - private: the kernels behind the run-time dispatch of
+ * nl_noise.c's rows and the batch point API (issue 17).
+ *
+ * One table of kernels per instruction-set level. nl_noise_simd_body.h holds
+ * the kernels once, written with GCC vector extensions; nl_noise_simd_sse2.c,
+ * _avx2.c and _avx512.c each include it under their own `#pragma GCC target`
+ * with the few primitives that differ (floor, table lookups, lane tests).
+ * The build never uses -march: the dispatcher (nl_noise_simd.c) asks the CPU
+ * (__builtin_cpu_supports) which tables it may call.
+ *
+ * Bit-identity with the scalar code of nl_noise.c is the contract: every
+ * kernel performs, per lane, the same IEEE operations in the same order as
+ * the scalar function it replaces (no FMA: the project compiles with
+ * -ffp-contract=off and these files contain no fused intrinsics). The
+ * integer parts may differ (masks instead of lmod for power-of-two tables,
+ * floor by rounding instruction instead of truncate-and-correct) only where
+ * they give the same integers, which the preconditions below guarantee.
+ * test_noise_simd.c checks every level the CPU runs against the scalar path.
+ */
+#ifndef NL_NOISE_SIMD_H
+#define NL_NOISE_SIMD_H
+
+#include "noise/nl_noise.h"
+#include <stddef.h>
+
+/* Columns and points are padded to a multiple of this (the widest level). */
+#define NL_SIMD_PAD 8
+/* Zeroed doubles after a row's columns (a window may read past the last). */
+#define NL_SIMD_COL_PAD 16
+
+/* Sample modes: out = v; out = 0 + amp v (first octave of a sum); out =
+ * out + amp v (the others), in nl_noise_fractal_row's operation order; | ABS:
+ * |v| (turbulence). */
+enum { NL_SIMD_STORE = 0, NL_SIMD_FIRST = 1, NL_SIMD_ADD = 2, NL_SIMD_ABS = 4 };
+
+typedef struct {
+  /* The sample loop of a row (nl_noise.c's row_from_columns): v_k = blend
+   * over columns c = floor(x_k) - ifirst, x_k = x0 + k dx, k < n, and
+   * out[k] = v_k, or the octave sum's step (mode, below). Precondition:
+   * every x_k has |x_k| < 2^52 and its columns c and c + 1 lie in gx, a
+   * (row_columns guarantees both), which are padded by NL_SIMD_COL_PAD. */
+  void (*samples)(const double *gx, const double *a, long ifirst, double x0, double dx,
+                  size_t n, double *out, int mode, double amp);
+  /* Columns ifirst + c, c < ncol (a multiple of NL_SIMD_PAD; the arrays
+   * have room) of the improved noise at row j, plane k: xm = ifirst & 255,
+   * ym = j & 255, zm = k & 255; p32 is the permutation widened to int, and
+   * p's second half repeats its first (the dispatcher checks). */
+  void (*columns3)(const nl_noise_perm3 *p, const int *p32, unsigned xm, unsigned ym, unsigned zm, double fy,
+                   double fz, double v, double w, size_t ncol, double *gx, double *a);
+  /* Points; n is a multiple of NL_SIMD_PAD (the caller pads). Lanes whose
+   * coordinates leave |.| < 2^31 (or are not finite) go through the scalar
+   * nl_noise_grad2_eval / nl_noise_perm3_eval. */
+  void (*points2)(const nl_noise_grad2 *t, const double *x, const double *y, size_t n, double *out);
+  void (*points3)(const nl_noise_perm3 *p, const int *p32, const double *x, const double *y,
+                  const double *z, size_t n, double *out);
+  /* nl_wavelet_row's sample loop over the unwrapped line L (columns
+   * a, a + 1, ..., padded by NL_SIMD_COL_PAD): see nl_noise_bspline_row.
+   * Precondition: every x_k has |x_k| < 2^51 and its taps lie in L. */
+  void (*bspline)(const double *L, long a, double x0, double dx, size_t n, double weight,
+                  double *out);
+} nl_noise_simd_kernels;
+
+extern const nl_noise_simd_kernels nl_noise_simd_sse2, nl_noise_simd_avx2, nl_noise_simd_avx512;
+
+/* The hooks nl_noise.c calls first: GSL_SUCCESS when the dispatched level
+ * computed the row, GSL_CONTINUE when the scalar code should (scalar level). */
+int nl_noise_simd_row2(const nl_noise_grad2 *t, double x0, double dx, double y, size_t n, double *out);
+int nl_noise_simd_row3(const nl_noise_perm3 *p, double x0, double dx, double y, double z,
+                       size_t n, double *out);
+/* nl_noise_fractal_row over nl_noise_basis_grad2 or nl_noise_basis_perm3, each octave's row
+ * summed as it is made; GSL_CONTINUE for another basis or the scalar level. */
+int nl_noise_simd_fractal_row(const nl_noise_basis *b, const nl_noise_octaves *o, double x0, double dx,
+                              double y, double z, size_t n, double *out, double *scratch);
+
+/* Perlin's grad3 (nl_noise.c) by component, for table lookups. */
+extern const double nl_noise_simd_g3[3][16];
+
+#endif

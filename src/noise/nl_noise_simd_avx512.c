@@ -1,0 +1,225 @@
+/* nl_noise_simd_avx512.c - the kernels of nl_noise_simd_body.h for AVX-512
+ * (F, DQ, BW, VL and VBMI: Ice Lake, Zen 4 and later), 8 doubles a vector.
+ * Compiled with a target pragma, never -march: called only when the
+ * dispatcher has seen the CPU (and the OS) support it. No FMA: see
+ * nl_noise_simd.h.
+ *
+ * Memory lookups are what limit these kernels (a gather instruction costs
+ * ~20 cycles on Zen 5, more than its loads one by one), so the tables that
+ * fit live in registers: Perlin's 256-entry permutation in four (VBMI byte
+ * permutes, 16 lookups each), his 16 gradients in two per component
+ * (vpermt2pd), and the sample loop of a row reads its columns through a
+ * window of 8 loaded once per 8 samples (vpermpd).
+ */
+#if defined(__clang__)   /* clang has no GCC target pragma; popped at the end */
+#pragma clang attribute push(__attribute__((target("avx512f,avx512dq,avx512bw,avx512vl,avx512vbmi,avx2"))), apply_to = function)
+#else
+#pragma GCC target("avx512f,avx512dq,avx512bw,avx512vl,avx512vbmi,avx2")
+#endif
+#include "noise/nl_noise_simd.h"
+#include <immintrin.h>
+#include <math.h>
+#include <string.h>
+
+#define NL_SIMD_W 8
+#define NL_SIMD_TABLE nl_noise_simd_avx512
+typedef double vd __attribute__((vector_size(64)));
+typedef long long vl __attribute__((vector_size(64)));
+typedef int vi __attribute__((vector_size(32)));
+typedef unsigned vu __attribute__((vector_size(32)));
+
+static inline vd v_floor(vd x)
+{
+  return (vd)_mm512_roundscale_pd((__m512d)x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+}
+static inline vd v_ceil(vd x)
+{
+  return (vd)_mm512_roundscale_pd((__m512d)x, _MM_FROUND_TO_POS_INF | _MM_FROUND_NO_EXC);
+}
+/* Lookups lane by lane (the 2D tables are too big for registers). */
+static inline vd v_gd(const double *b, vi i)
+{
+  double r[NL_SIMD_W];
+  for (int l = 0; l < NL_SIMD_W; l++) r[l] = b[i[l]];
+  vd v; memcpy(&v, r, sizeof v); return v;
+}
+static inline vi v_gi(const int *b, vi i)
+{
+  int r[NL_SIMD_W];
+  for (int l = 0; l < NL_SIMD_W; l++) r[l] = b[i[l]];
+  vi v; memcpy(&v, r, sizeof v); return v;
+}
+static inline int v_all(vl m) { return _mm512_movepi64_mask((__m512i)m) == 0xff; }
+
+#define NL_SIMD_HAVE_TABLES
+typedef struct { __m512i p[4]; __m512d g[3][2]; } p3tab;
+static inline p3tab p3_make(const nl_noise_perm3 *P, const int *p32)
+{
+  (void)p32;
+  p3tab t;
+  for (int q = 0; q < 4; q++) t.p[q] = _mm512_loadu_si512(P->p + 64 * q);
+  for (int c = 0; c < 3; c++) {
+    t.g[c][0] = _mm512_loadu_pd(nl_noise_simd_g3[c]);
+    t.g[c][1] = _mm512_loadu_pd(nl_noise_simd_g3[c] + 8);
+  }
+  return t;
+}
+/* p[idx] for idx < 512 of a doubled table: byte 0 of each int lane indexes
+ * (low 7 bits into a 128-byte pair, bit 7 picks the pair); bit 8 and the
+ * upper bytes' lookups are dropped with the & 255. */
+static inline vi p3_get(const p3tab *t, vi idx)
+{
+  __m512i ix = _mm512_castsi256_si512((__m256i)idx);
+  __m512i lo = _mm512_permutex2var_epi8(t->p[0], ix, t->p[1]);
+  __m512i hi = _mm512_permutex2var_epi8(t->p[2], ix, t->p[3]);
+  __m512i r = _mm512_mask_blend_epi8(_mm512_movepi8_mask(ix), lo, hi);
+  return (vi)_mm512_castsi512_si256(r) & 255;
+}
+static inline vd g3(const p3tab *t, int comp, vi h)
+{
+  return (vd)_mm512_permutex2var_pd(t->g[comp][0], _mm512_cvtepi32_epi64((__m256i)h), t->g[comp][1]);
+}
+
+#include "noise/nl_noise_simd_body.h"
+
+/* The row's sample loop with a window: while 8 consecutive samples span at
+ * most 7 columns (7 |dx| <= 4 leaves room for the rounding of x, whose ulp
+ * is at most 1/2 below 2^52), the columns they use are gx[b .. b + 7] for
+ * b the lowest of them, and gx[b + 1 .. b + 8] for the right-hand ones.
+ * The column arrays are padded for the load past the last column.
+ * plain: no x is -0 (so no cell is -0) and none lies in [-2^-54, 0), the
+ * only doubles whose x - floor(x) rounds to 1: v_cell's +0 and v_frac's
+ * mask change nothing there and are left out (same bits, 3 fewer
+ * operations per 8 samples). */
+static inline __attribute__((always_inline)) void
+samples_win(const double *gx, const double *a, long ifirst, double x0, double dx, size_t n,
+            double *out, int mode, double amp, int plain, int rev)
+{
+  vd kv, vfirst = SPLAT((double)ifirst);
+  for (int l = 0; l < NL_SIMD_W; l++) kv[l] = l;
+  size_t k = 0;
+  for (; k + NL_SIMD_W <= n; k += NL_SIMD_W, kv += (double)NL_SIMD_W) {
+    vd x = kv * dx + x0;                  /* x0 + (double)k * dx */
+    vd cell = plain ? v_floor(x) : v_cell(x);
+    vd c = cell - vfirst;                 /* lfloor(x) - ifirst, exact */
+    /* the lowest column: lane 0, or lane 7 when dx < 0 (rev), kept in
+     * registers (a round trip through memory stalls the loads below) */
+    __m128d lane = _mm512_castpd512_pd128((__m512d)c);
+    if (rev) { __m128d q = _mm512_extractf64x2_pd((__m512d)c, 3); lane = _mm_unpackhi_pd(q, q); }
+    long b = _mm_cvttsd_si64(lane);
+    __m512i li = _mm512_cvttpd_epi64(_mm512_sub_pd((__m512d)c, _mm512_broadcastsd_pd(lane)));
+    vd g0 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(gx + b));
+    vd a0 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(a + b));
+    vd g1 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(gx + b + 1));
+    vd a1 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(a + b + 1));
+    vd v = v_blend(plain ? x - cell : v_frac(x, cell), g0, a0, g1, a1);
+    st(out + k, v_emit(out + k, v, mode, amp));
+  }
+  if (k < n) samples_tail(gx, a, ifirst, x0, dx, k, n, out, mode, amp);
+}
+
+static void samples(const double *gx, const double *a, long ifirst, double x0, double dx,
+                    size_t n, double *out, int mode, double amp)
+{
+  if (!(fabs(dx) * 7 <= 4)) { samples_lanes(gx, a, ifirst, x0, dx, n, out, mode, amp); return; }
+  double xl = x0 + (double)(n - 1) * dx, lo = fmin(x0, xl), hi = fmax(x0, xl);
+  int plain = !(x0 == 0 && signbit(x0)) && !(lo < 0 && hi >= -0x1p-50);
+  if (dx >= 0) {
+    if (plain) samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 1, 0);
+    else samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 0, 0);
+  } else {
+    if (plain) samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 1, 1);
+    else samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 0, 1);
+  }
+}
+
+/* The B-spline row through a window, as samples(): 8 samples span at most
+ * 7 first taps when 7 |dx| <= 4, and the three taps read L[b ..], L[b + 1 ..],
+ * L[b + 2 ..] with one set of local indices (b: lane 0's, the lowest). */
+static void bspline(const double *L, long a, double x0, double dx, size_t n, double weight,
+                    double *out)
+{
+  if (!(fabs(dx) * 7 <= 4) || !(dx >= 0)) { bspline_lanes(L, a, x0, dx, n, weight, out); return; }
+  vd kv, fa1 = SPLAT((double)a + 1.0);
+  for (int l = 0; l < NL_SIMD_W; l++) kv[l] = l;
+  size_t k = 0;
+  for (; k + NL_SIMD_W <= n; k += NL_SIMD_W, kv += (double)NL_SIMD_W) {
+    vd w0, w1, w2;
+    vi ci;
+    v_bspline(kv * dx + x0, fa1, &ci, &w0, &w1, &w2);
+    __m512d c = (__m512d)__builtin_convertvector(ci, vd);
+    __m128d lane = _mm512_castpd512_pd128(c);
+    long b = _mm_cvttsd_si64(lane);
+    __m512i li = _mm512_cvttpd_epi64(_mm512_sub_pd(c, _mm512_broadcastsd_pd(lane)));
+    vd l0 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(L + b));
+    vd l1 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(L + b + 1));
+    vd l2 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(L + b + 2));
+    st(out + k, ld(out + k) + weight * (w0 * l0 + w1 * l1 + w2 * l2));
+  }
+  if (k < n) bspline_tail(L, a, x0, dx, k, n, weight, out);
+}
+
+/* Points 16 at a time: the byte permutes of the hashing fill a whole
+ * register of 16 int lanes; the arithmetic runs on two halves of 8 doubles. */
+typedef int vi16 __attribute__((vector_size(64)));
+static inline vi16 p3_get16(const p3tab *t, vi16 idx)
+{
+  __m512i ix = (__m512i)idx;
+  __m512i lo = _mm512_permutex2var_epi8(t->p[0], ix, t->p[1]);
+  __m512i hi = _mm512_permutex2var_epi8(t->p[2], ix, t->p[3]);
+  return (vi16)_mm512_mask_blend_epi8(_mm512_movepi8_mask(ix), lo, hi) & 255;
+}
+static inline vi16 join(vi lo, vi hi)
+{
+  return (vi16)_mm512_inserti64x4(_mm512_castsi256_si512((__m256i)lo), (__m256i)hi, 1);
+}
+static inline vi half(vi16 v, int h)
+{
+  return h ? (vi)_mm512_extracti64x4_epi64((__m512i)v, 1) : (vi)_mm512_castsi512_si256((__m512i)v);
+}
+
+static void points3(const nl_noise_perm3 *P, const int *p32, const double *x, const double *y,
+                    const double *z, size_t n, double *out)
+{
+  p3tab tab = p3_make(P, p32);
+  size_t k = 0;
+  for (; k + 16 <= n; k += 16) {
+    vl ok = (vl){0} - 1;
+    vi i[2], j[2], kk[2];
+    for (int h = 0; h < 2; h++) {
+      vd vx = ld(x + k + 8 * h), vy = ld(y + k + 8 * h), vz = ld(z + k + 8 * h);
+      ok &= v_small(vx) & v_small(vy) & v_small(vz);
+      i[h] = __builtin_convertvector(v_cell(vx), vi);
+      j[h] = __builtin_convertvector(v_cell(vy), vi);
+      kk[h] = __builtin_convertvector(v_cell(vz), vi);
+    }
+    if (!v_all(ok)) { points3_lanes(P, p32, x + k, y + k, z + k, 16, out + k); continue; }
+    /* Perlin's hashing of columns i and i + 1 (nl_noise.c column3), 16 lanes */
+    vi16 I = join(i[0], i[1]), Y = join(j[0], j[1]) & 255, Z = join(kk[0], kk[1]) & 255;
+    vi16 hs[2][4];
+    for (int c = 0; c < 2; c++) {
+      vi16 X = (vi16)(((unsigned)c + (__attribute__((vector_size(64))) unsigned)I) & 255u);
+      vi16 A = p3_get16(&tab, X) + Y, AA = p3_get16(&tab, A) + Z, AB = p3_get16(&tab, A + 1) + Z;
+      hs[c][0] = p3_get16(&tab, AA) & 15; hs[c][1] = p3_get16(&tab, AB) & 15;
+      hs[c][2] = p3_get16(&tab, AA + 1) & 15; hs[c][3] = p3_get16(&tab, AB + 1) & 15;
+    }
+    /* the arithmetic, 8 lanes at a time; the cells again rather than kept */
+    for (int h = 0; h < 2; h++) {
+      vd vx = ld(x + k + 8 * h), vy = ld(y + k + 8 * h), vz = ld(z + k + 8 * h);
+      vd ci = v_cell(vx), fy = v_frac(vy, v_cell(vy)), fz = v_frac(vz, v_cell(vz));
+      vd v = v_fade(fy), w = v_fade(fz), g0, a0, g1, a1;
+      v_column3_fp(&tab, half(hs[0][0], h), half(hs[0][1], h), half(hs[0][2], h), half(hs[0][3], h),
+                   fy, fz, v, w, &g0, &a0);
+      v_column3_fp(&tab, half(hs[1][0], h), half(hs[1][1], h), half(hs[1][2], h), half(hs[1][3], h),
+                   fy, fz, v, w, &g1, &a1);
+      st(out + k + 8 * h, v_blend(v_frac(vx, ci), g0, a0, g1, a1));
+    }
+  }
+  if (k < n) points3_lanes(P, p32, x + k, y + k, z + k, n - k, out + k);
+}
+
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3, points2, points3, bspline};
+
+#if defined(__clang__)
+#pragma clang attribute pop
+#endif

@@ -1,0 +1,283 @@
+/* nl_noise_simd_body.h - the SIMD noise kernels, written once.
+ *
+ * Included by nl_noise_simd_{sse2,avx2,avx512}.c after they define, for
+ * their instruction set (see nl_noise_simd.h for the contract):
+ *   NL_SIMD_W           lanes of double
+ *   NL_SIMD_TABLE       the name of the nl_noise_simd_kernels to define
+ *   vd, vl, vi, vu      W doubles, W int64 (comparison results), W int32, W uint32
+ *   v_floor(vd)         floor, exact for |x| < 2^52, -0 for -0
+ *   v_ceil(vd)          ceil, exact for |x| < 2^52 (the sign of a zero result
+ *                       may differ from ceil's: the one use cannot see it)
+ *   v_gd(base, vi)      base[idx] for doubles; v_gi(base, vi) for ints
+ *   v_all(vl)           all lanes true
+ * and, optionally, NL_SIMD_HAVE_TABLES with p3tab, p3_make, p3_get and g3
+ * (register-resident tables instead of memory lookups). The including file
+ * then defines its nl_noise_simd_kernels from the functions here (or its
+ * own sample loop: samples_lanes is the portable one).
+ * Each kernel repeats the scalar operations of nl_noise.c lane by lane, in
+ * the same order; the comments name the scalar line each step copies.
+ */
+#include <string.h>
+
+static inline vd ld(const double *p) { vd v; memcpy(&v, p, sizeof v); return v; }   /* loadu */
+static inline void st(double *p, vd v) { memcpy(p, &v, sizeof v); }                 /* storeu */
+/* A broadcast; not 0 + x, which turns -0 into +0. */
+static inline vd splat(double x)
+{
+  vd v;
+  for (int l = 0; l < NL_SIMD_W; l++) v[l] = x;
+  return v;
+}
+#define SPLAT(x) splat((double)(x))
+#define SPLATU(x) ((vu){0} + (unsigned)(x))
+
+/* fade(t) = t * t * t * (t * (t * 6 - 15) + 10), Perlin 2002's order. */
+static inline vd v_fade(vd t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
+static inline vd v_lerp(vd t, vd a, vd b) { return a + t * (b - a); }
+/* nl_noise.c blend(): the column lines L_c(t) = t GX + A across the cell. */
+static inline vd v_blend(vd t, vd gx0, vd a0, vd gx1, vd a1)
+{
+  vd l = t * gx0 + a0;
+  vd r = (t - 1.0) * gx1 + a1;
+  return l + v_fade(t) * (r - l);
+}
+/* lfloor as a double. The scalar code converts the (long) cell back to
+ * double, which is never -0: adding +0 turns floor(-0) = -0 into +0, so
+ * x - cell keeps the sign the scalar subtraction gives. */
+static inline vd v_cell(vd x) { return v_floor(x) + 0.0; }
+/* lfrac for finite x with |x| < 2^52: x - cell is in [0, 1] and exact; the
+ * scalar code maps 1 (x just below an integer, e.g. -1e-20) to 0. */
+static inline vd v_frac(vd x, vd cell)
+{
+  vd f = x - cell;
+  return (vd)((vl)f & (f < 1.0));
+}
+static inline vl v_small(vd x)   /* |x| < 2^31: the cell fits an int; false for NaN */
+{
+  vd a = (vd)((vl)x & 0x7fffffffffffffffLL);
+  return a < 0x1p31;
+}
+
+/* ---- rows ---------------------------------------------------------------- */
+
+/* Where a row's values go (nl_noise_simd.h, NL_SIMD_STORE ...): stored, or
+ * added into a sum of octaves as nl_noise_fractal_row does it, out = out + amp v
+ * (out = 0 + amp v for the first octave; |v| for turbulence). */
+static inline vd v_emit(const double *out, vd v, int mode, double amp)
+{
+  if (mode & NL_SIMD_ABS) v = (vd)((vl)v & 0x7fffffffffffffffLL);   /* fabs */
+  if ((mode & 3) == NL_SIMD_STORE) return v;
+  return ((mode & 3) == NL_SIMD_FIRST ? SPLAT(0.0) : ld(out)) + amp * v;
+}
+
+/* Samples k0 .. n - 1 (fewer than W of them) through a padded block: the
+ * spare lanes repeat sample k0, so every lane stays inside the columns. */
+static void samples_tail(const double *gx, const double *a, long ifirst, double x0, double dx,
+                         size_t k0, size_t n, double *out, int mode, double amp)
+{
+  double xs[NL_SIMD_W], res[NL_SIMD_W], acc[NL_SIMD_W] = {0};
+  for (int l = 0; l < NL_SIMD_W; l++) xs[l] = x0 + (double)(k0 + ((size_t)l < n - k0 ? (size_t)l : 0)) * dx;
+  memcpy(acc, out + k0, (n - k0) * sizeof *acc);
+  vd x = ld(xs), cell = v_cell(x);
+  vi c = __builtin_convertvector(cell - SPLAT((double)ifirst), vi);
+  vd v = v_blend(v_frac(x, cell), v_gd(gx, c), v_gd(a, c), v_gd(gx + 1, c), v_gd(a + 1, c));
+  st(res, v_emit(acc, v, mode, amp));
+  memcpy(out + k0, res, (n - k0) * sizeof *out);
+}
+
+static void samples_lanes(const double *gx, const double *a, long ifirst, double x0, double dx,
+                          size_t n, double *out, int mode, double amp)
+{
+  vd kv, vfirst = SPLAT((double)ifirst);
+  for (int l = 0; l < NL_SIMD_W; l++) kv[l] = l;
+  size_t k = 0;
+  for (; k + NL_SIMD_W <= n; k += NL_SIMD_W, kv += (double)NL_SIMD_W) {
+    /* x = x0 + (double)k * dx; i = lfloor(x); c = i - ifirst */
+    vd x = kv * dx + x0;
+    vd cell = v_cell(x);
+    vi c = __builtin_convertvector(cell - vfirst, vi);
+    vd v = v_blend(v_frac(x, cell), v_gd(gx, c), v_gd(a, c), v_gd(gx + 1, c), v_gd(a + 1, c));
+    st(out + k, v_emit(out + k, v, mode, amp));
+  }
+  if (k < n) samples_tail(gx, a, ifirst, x0, dx, k, n, out, mode, amp);
+}
+
+/* ---- quadratic B-spline rows (wavelet noise) ------------------------------
+ *
+ * nl_wavelet.c's row loop over a line L of columns already unwrapped (column
+ * c is the tile's column a + c mod n): per sample its bspline() -
+ * mid = ceil(p - 1/2), t = mid - (p - 1/2), w0 = t^2/2, w2 = (1 - t)^2/2,
+ * w1 = 1 - w0 - w2, first tap mid - 1 - and
+ * out = out + weight (w0 L[c] + w1 L[c + 1] + w2 L[c + 2]). A zero mid's
+ * sign only reaches t = mid - (p - 1/2) = +-0, whose square is +0. */
+static inline void v_bspline(vd x, vd fa1, vi *cp, vd *w0, vd *w1, vd *w2)
+{
+  vd p5 = x - 0.5, mid = v_ceil(p5), t = mid - p5, u = 1.0 - t;
+  *w0 = t * t / 2.0;
+  *w2 = u * u / 2.0;
+  *w1 = 1.0 - *w0 - *w2;
+  *cp = __builtin_convertvector(mid - fa1, vi);   /* mid - 1 - a, exact */
+}
+
+static void bspline_tail(const double *L, long a, double x0, double dx, size_t k0, size_t n,
+                         double weight, double *out)
+{
+  double xs[NL_SIMD_W], acc[NL_SIMD_W] = {0}, res[NL_SIMD_W];
+  for (int l = 0; l < NL_SIMD_W; l++) xs[l] = x0 + (double)(k0 + ((size_t)l < n - k0 ? (size_t)l : 0)) * dx;
+  memcpy(acc, out + k0, (n - k0) * sizeof *acc);
+  vd w0, w1, w2;
+  vi c;
+  v_bspline(ld(xs), SPLAT((double)a + 1.0), &c, &w0, &w1, &w2);
+  vd s = w0 * v_gd(L, c) + w1 * v_gd(L + 1, c) + w2 * v_gd(L + 2, c);
+  st(res, ld(acc) + weight * s);
+  memcpy(out + k0, res, (n - k0) * sizeof *out);
+}
+
+static void bspline_lanes(const double *L, long a, double x0, double dx, size_t n, double weight,
+                          double *out)
+{
+  vd kv, fa1 = SPLAT((double)a + 1.0);
+  for (int l = 0; l < NL_SIMD_W; l++) kv[l] = l;
+  size_t k = 0;
+  for (; k + NL_SIMD_W <= n; k += NL_SIMD_W, kv += (double)NL_SIMD_W) {
+    vd w0, w1, w2;
+    vi c;
+    v_bspline(kv * dx + x0, fa1, &c, &w0, &w1, &w2);
+    vd s = w0 * v_gd(L, c) + w1 * v_gd(L + 1, c) + w2 * v_gd(L + 2, c);
+    st(out + k, ld(out + k) + weight * s);
+  }
+  if (k < n) bspline_tail(L, a, x0, dx, k, n, weight, out);
+}
+
+/* Perlin's grad3 components, by table lookup so the products below are the
+ * scalar code's products (signed zeros included); and the permutation's
+ * lookups. A level may bring its own (register tables: NL_SIMD_HAVE_TABLES). */
+#ifndef NL_SIMD_HAVE_TABLES
+typedef struct { const int *p; } p3tab;
+static inline p3tab p3_make(const nl_noise_perm3 *P, const int *p32) { (void)P; p3tab t = {p32}; return t; }
+static inline vi p3_get(const p3tab *t, vi idx) { return v_gi(t->p, idx); }
+static inline vd g3(const p3tab *t, int comp, vi h) { (void)t; return v_gd(nl_noise_simd_g3[comp], h); }
+#endif
+
+static inline void v_column3_fp(const p3tab *p, vi h00, vi h10, vi h01, vi h11, vd fy, vd fz,
+                                vd v, vd w, vd *gxo, vd *ao);
+
+/* nl_noise.c column3 (Perlin 2002's hashing, the x terms separated) for
+ * lanes of columns X at fixed Y, Z. */
+static inline void v_column3(const p3tab *p, vi X, vi Y, vi Z, vd fy, vd fz, vd v, vd w,
+                             vd *gxo, vd *ao)
+{
+  vi A = p3_get(p, X) + Y, AA = p3_get(p, A) + Z, AB = p3_get(p, A + 1) + Z;
+  vi h00 = p3_get(p, AA) & 15, h10 = p3_get(p, AB) & 15, h01 = p3_get(p, AA + 1) & 15,
+     h11 = p3_get(p, AB + 1) & 15;
+  v_column3_fp(p, h00, h10, h01, h11, fy, fz, v, w, gxo, ao);
+}
+
+/* The arithmetic of column3 once the four corner hashes are known. */
+static inline void v_column3_fp(const p3tab *p, vi h00, vi h10, vi h01, vi h11, vd fy, vd fz,
+                                vd v, vd w, vd *gxo, vd *ao)
+{
+  *gxo = v_lerp(w, v_lerp(v, g3(p, 0, h00), g3(p, 0, h10)), v_lerp(v, g3(p, 0, h01), g3(p, 0, h11)));
+  vd fy1 = fy - 1.0, fz1 = fz - 1.0;
+  /* yz_part(h, y, z) = grad3[h][1] * y + grad3[h][2] * z */
+  vd y00 = g3(p, 1, h00) * fy + g3(p, 2, h00) * fz, y10 = g3(p, 1, h10) * fy1 + g3(p, 2, h10) * fz;
+  vd y01 = g3(p, 1, h01) * fy + g3(p, 2, h01) * fz1, y11 = g3(p, 1, h11) * fy1 + g3(p, 2, h11) * fz1;
+  *ao = v_lerp(w, v_lerp(v, y00, y10), v_lerp(v, y01, y11));
+}
+
+static void columns3(const nl_noise_perm3 *P, const int *p32, unsigned xm, unsigned ym, unsigned zm, double fy,
+                     double fz, double v, double w, size_t ncol, double *gxo, double *ao)
+{
+  vi iota, Y = (vi){0} + (int)ym, Z = (vi){0} + (int)zm;
+  for (int l = 0; l < NL_SIMD_W; l++) iota[l] = l;
+  vd vfy = SPLAT(fy), vfz = SPLAT(fz), vv = SPLAT(v), vw = SPLAT(w), g, a;
+  p3tab tab = p3_make(P, p32);
+  for (size_t c = 0; c < ncol; c += NL_SIMD_W) {
+    vi X = ((int)xm + (int)(c & 255) + iota) & 255;
+    v_column3(&tab, X, Y, Z, vfy, vfz, vv, vw, &g, &a);
+    st(gxo + c, g);
+    st(ao + c, a);
+  }
+}
+
+/* ---- points ---------------------------------------------------------------- */
+
+static void points2(const nl_noise_grad2 *t, const double *x, const double *y, size_t n, double *out)
+{
+  const int *perm = (const int *)t->perm;
+  int pow2 = t->m >= 1 && (t->m & (t->m - 1)) == 0 && t->m <= 0x80000000u;
+  vu mask = SPLATU(t->m - 1);
+  for (size_t k = 0; k < n; k += NL_SIMD_W) {
+    vd vx = ld(x + k), vy = ld(y + k);
+    if (!v_all(v_small(vx) & v_small(vy))) {
+      for (size_t l = 0; l < NL_SIMD_W; l++) out[k + l] = nl_noise_grad2_eval(t, x[k + l], y[k + l]);
+      continue;
+    }
+    /* nl_noise_grad2_eval: i = lfloor(x), j = lfloor(y), fy = lfrac(y, j), v = fade(fy) */
+    vd ci = v_cell(vx), cj = v_cell(vy);
+    vd fy = v_frac(vy, cj), v = v_fade(fy), fx = v_frac(vx, ci);
+    vi i = __builtin_convertvector(ci, vi), j = __builtin_convertvector(cj, vi);
+    vi k00, k01, k10, k11;   /* nl_noise_grad2_index(i + di, j + dj) */
+    if (pow2) {
+      vu i0 = (vu)i & mask, i1 = ((vu)i + 1u) & mask, j0 = (vu)j & mask, j1 = ((vu)j + 1u) & mask;
+      vu p0 = (vu)v_gi(perm, (vi)i0), p1 = (vu)v_gi(perm, (vi)i1);
+      k00 = v_gi(perm, (vi)((p0 + j0) & mask)); k01 = v_gi(perm, (vi)((p0 + j1) & mask));
+      k10 = v_gi(perm, (vi)((p1 + j0) & mask)); k11 = v_gi(perm, (vi)((p1 + j1) & mask));
+    } else {   /* the general path: lmod, lane by lane */
+      for (int l = 0; l < NL_SIMD_W; l++) {
+        long il = i[l], jl = j[l];
+        k00[l] = (int)nl_noise_grad2_index(t, il, jl); k01[l] = (int)nl_noise_grad2_index(t, il, jl + 1);
+        k10[l] = (int)nl_noise_grad2_index(t, il + 1, jl); k11[l] = (int)nl_noise_grad2_index(t, il + 1, jl + 1);
+      }
+    }
+    /* column2 at i and i + 1, then blend(lfrac(x, i), ...) */
+    vd fy1 = fy - 1.0;
+    vd g00 = v_gd(t->gx, k00), g01 = v_gd(t->gx, k01), g10 = v_gd(t->gx, k10), g11 = v_gd(t->gx, k11);
+    vd a00 = v_gd(t->gy, k00) * fy, a01 = v_gd(t->gy, k01) * fy1;
+    vd a10 = v_gd(t->gy, k10) * fy, a11 = v_gd(t->gy, k11) * fy1;
+    vd gx0 = g00 + v * (g01 - g00), a0 = a00 + v * (a01 - a00);
+    vd gx1 = g10 + v * (g11 - g10), a1 = a10 + v * (a11 - a10);
+    st(out + k, v_blend(fx, gx0, a0, gx1, a1));
+  }
+}
+
+static void points3_lanes(const nl_noise_perm3 *P, const int *p32, const double *x, const double *y,
+                    const double *z, size_t n, double *out)
+{
+  p3tab tab = p3_make(P, p32);
+  for (size_t k = 0; k < n; k += NL_SIMD_W) {
+    vd vx = ld(x + k), vy = ld(y + k), vz = ld(z + k);
+    if (!v_all(v_small(vx) & v_small(vy) & v_small(vz))) {
+      for (size_t l = 0; l < NL_SIMD_W; l++) out[k + l] = nl_noise_perm3_eval(P, x[k + l], y[k + l], z[k + l]);
+      continue;
+    }
+    /* nl_noise_perm3_eval: cells, fy = lfrac(y, j), fz, v = fade(fy), w = fade(fz) */
+    vd ci = v_cell(vx), cj = v_cell(vy), ck = v_cell(vz);
+    vd fy = v_frac(vy, cj), fz = v_frac(vz, ck), v = v_fade(fy), w = v_fade(fz);
+    vi i = __builtin_convertvector(ci, vi), j = __builtin_convertvector(cj, vi),
+       kk = __builtin_convertvector(ck, vi);
+    vd g0, a0, g1, a1;
+#ifdef NL_SIMD_HAVE_TABLES
+    vi Y = j & 255, Z = kk & 255;
+    v_column3(&tab, i & 255, Y, Z, fy, fz, v, w, &g0, &a0);
+    v_column3(&tab, (vi)(((vu)i + 1u) & 255u), Y, Z, fy, fz, v, w, &g1, &a1);
+#else
+    /* Without register tables the hashing is scalar, lane by lane, in one
+     * pass (a vector round trip per lookup costs more than the lookups). */
+    const unsigned char *pp = P->p;
+    vi h[2][4];
+    for (int l = 0; l < NL_SIMD_W; l++) {
+      int Y = j[l] & 255, Z = kk[l] & 255;
+      for (int c = 0; c < 2; c++) {
+        int X = (int)(((unsigned)i[l] + (unsigned)c) & 255u);
+        int A = pp[X] + Y, AA = pp[A] + Z, AB = pp[A + 1] + Z;
+        h[c][0][l] = pp[AA] & 15; h[c][1][l] = pp[AB] & 15;
+        h[c][2][l] = pp[AA + 1] & 15; h[c][3][l] = pp[AB + 1] & 15;
+      }
+    }
+    v_column3_fp(&tab, h[0][0], h[0][1], h[0][2], h[0][3], fy, fz, v, w, &g0, &a0);
+    v_column3_fp(&tab, h[1][0], h[1][1], h[1][2], h[1][3], fy, fz, v, w, &g1, &a1);
+#endif
+    st(out + k, v_blend(v_frac(vx, ci), g0, a0, g1, a1));
+  }
+}

@@ -1,0 +1,347 @@
+/* test_noise_simd.c - every SIMD level this CPU runs gives the scalar bits.
+ *
+ * Rows (dense and sparse, either direction, negative and large origins, the
+ * heap path past the stack columns), batches of points (negative, large,
+ * beyond 2^31, 2^52 and 2^62, signed zeros, integers, NaN and infinities)
+ * and fractal grids, for 2D tables of power-of-two and other sizes and for
+ * the reference and shuffled 3D permutations: compared with memcmp, so
+ * signed zeros and NaN payloads count.
+ */
+#include "noise/nl_noise.h"
+#include "wavelet/nl_wavelet.h"
+#include "nl_test.h"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_rng.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define NPOINTS 20000   /* points per table and level */
+#define NROWS 300       /* rows per table and level */
+#define MAXROW 2600
+
+static long compared;
+
+/* A coordinate from a mixture: mostly ordinary, some awkward. */
+static double coord(gsl_rng *r)
+{
+  static const double special[] = {0.0, -0.0, 1.0, -1.0, 255.0, 256.0, -256.0, 0.5, -0.5,
+    -1e-20, 1e-20, 0x1p31 - 0.5, -0x1p31, 0x1p31, -0x1p31 - 1, 0x1p52 - 0.5, 0x1p52, -0x1p52,
+    0x1p62, -0x1p62, 0x1p63, 1e300, -1e300, 5e-324, INFINITY, -INFINITY, NAN, 0x1p31 - 1,
+    2147483647.75, -2147483648.25};
+  double u = gsl_rng_uniform(r);
+  if (u < 0.05) return special[gsl_rng_uniform_int(r, sizeof special / sizeof *special)];
+  if (u < 0.10) return (double)((long)gsl_rng_uniform_int(r, 2001) - 1000);          /* lattice */
+  if (u < 0.15) return ldexp(gsl_rng_uniform(r) - 0.5, (int)gsl_rng_uniform_int(r, 70)); /* any scale */
+  if (u < 0.20) return -1e9 * gsl_rng_uniform(r);
+  return 600 * gsl_rng_uniform(r) - 300;
+}
+
+static int same(const double *a, const double *b, size_t n) { return memcmp(a, b, n * sizeof *a) == 0; }
+
+static int levels[4], nlevels;
+static void find_levels(void)
+{
+  if (nlevels) return;
+  for (int l = NL_NOISE_SIMD_SSE2; l <= NL_NOISE_SIMD_AVX512; l++)
+    if (nl_noise_simd_supported(l)) levels[nlevels++] = l;
+  printf("  SIMD levels this CPU runs beside scalar:");
+  for (int k = 0; k < nlevels; k++) printf(" %s", nl_noise_simd_name(levels[k]));
+  printf(" (best: %s)\n", nl_noise_simd_name(nl_noise_simd_best()));
+}
+
+NL_TEST(levels_are_named_and_set)
+{
+  find_levels();
+  NL_CHECK(nl_noise_simd_supported(NL_NOISE_SIMD_SCALAR) && nl_noise_simd_supported(NL_NOISE_SIMD_SSE2));
+  NL_CHECK(nl_noise_simd_set(7) == GSL_EINVAL && nl_noise_simd_set(-1) == GSL_EINVAL);
+  for (int l = 0; l <= NL_NOISE_SIMD_AVX512; l++) {
+    NL_CHECK(nl_noise_simd_from_name(nl_noise_simd_name(l)) == l);
+    if (nl_noise_simd_supported(l)) { NL_CHECK(nl_noise_simd_set(l) == GSL_SUCCESS && nl_noise_simd_get() == l); }
+    else NL_CHECK(nl_noise_simd_set(l) == GSL_EUNSUP);
+  }
+  NL_CHECK(nl_noise_simd_from_name("avx1024") == -1);
+  nl_noise_simd_set(nl_noise_simd_best());
+}
+
+/* A random row: origin, step (dense, sparse, negative, zero, tiny), length. */
+static void random_row(gsl_rng *r, double *x0, double *dx, size_t *n)
+{
+  static const double steps[] = {1.0 / 64, 0.0137, -0.29, 3.7, 1e-4, 0.0, -1.0 / 64, 0.125, 0.75,
+                                 1.0, -2.5, 1e-12, 7.0 / 3};
+  *x0 = gsl_rng_uniform(r) < 0.8 ? 200 * gsl_rng_uniform(r) - 100 : coord(r);
+  *dx = gsl_rng_uniform(r) < 0.7 ? steps[gsl_rng_uniform_int(r, sizeof steps / sizeof *steps)]
+                                 : (gsl_rng_uniform(r) - 0.5) * ldexp(1, (int)gsl_rng_uniform_int(r, 8) - 4);
+  double u = gsl_rng_uniform(r);
+  *n = u < 0.1 ? 1 + gsl_rng_uniform_int(r, 9) : u < 0.2 ? 1040 + gsl_rng_uniform_int(r, MAXROW - 1040)
+                                                 : 1 + gsl_rng_uniform_int(r, 1100);
+}
+
+static void compare_grad2(size_t m, unsigned long seed)
+{
+  nl_noise_grad2 *t = nl_noise_grad2_alloc(m);
+  nl_noise_grad2_seed(t, seed);
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, 1000 + m);
+  double *x = malloc(NPOINTS * sizeof *x), *y = malloc(NPOINTS * sizeof *y);
+  double *ref = malloc(NPOINTS * sizeof *ref), *got = malloc(NPOINTS * sizeof *got);
+  for (size_t k = 0; k < NPOINTS; k++) { x[k] = coord(r); y[k] = coord(r); }
+  nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
+  for (size_t k = 0; k < NPOINTS; k++) ref[k] = nl_noise_grad2_eval(t, x[k], y[k]);
+  for (int L = 0; L < nlevels; L++) {
+    nl_noise_simd_set(levels[L]);
+    for (size_t n = 0; n <= 17; n++) {   /* every tail length */
+      nl_noise_grad2_points(t, x + 100, y + 100, n, got);
+      NL_CHECK(same(got, ref + 100, n));
+    }
+    nl_noise_grad2_points(t, x, y, NPOINTS, got);
+    if (!same(got, ref, NPOINTS)) {
+      for (size_t k = 0; k < NPOINTS; k++)
+        if (memcmp(&got[k], &ref[k], sizeof *got)) {
+          fprintf(stderr, "  grad2 m=%zu %s point (%.17g, %.17g): %.17g, scalar %.17g\n", m,
+                  nl_noise_simd_name(levels[L]), x[k], y[k], got[k], ref[k]);
+          break;
+        }
+      NL_CHECK(0);
+    }
+    compared += NPOINTS;
+  }
+  double *rref = malloc(MAXROW * sizeof *rref), *rgot = malloc(MAXROW * sizeof *rgot);
+  for (int row = 0; row < NROWS; row++) {
+    double x0, dx, yy = gsl_rng_uniform(r) < 0.9 ? 100 * gsl_rng_uniform(r) - 50 : coord(r);
+    size_t n;
+    random_row(r, &x0, &dx, &n);
+    nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
+    nl_noise_grad2_row(t, x0, dx, yy, n, rref);
+    for (int L = 0; L < nlevels; L++) {
+      nl_noise_simd_set(levels[L]);
+      nl_noise_grad2_row(t, x0, dx, yy, n, rgot);
+      if (!same(rgot, rref, n)) {
+        fprintf(stderr, "  grad2 m=%zu %s row x0=%.17g dx=%.17g y=%.17g n=%zu differs\n", m,
+                nl_noise_simd_name(levels[L]), x0, dx, yy, n);
+        NL_CHECK(0);
+      }
+      compared += (long)n;
+    }
+  }
+  nl_noise_simd_set(nl_noise_simd_best());
+  free(rref); free(rgot); free(x); free(y); free(ref); free(got);
+  gsl_rng_free(r);
+  nl_noise_grad2_free(t);
+}
+
+NL_TEST(grad2_levels_match_scalar)
+{
+  find_levels();
+  size_t ms[] = {512, 256, 64, 16, 2, 1, 1024, 100, 300, 3, 511};
+  for (size_t k = 0; k < sizeof ms / sizeof *ms; k++) compare_grad2(ms[k], 11 + k);
+}
+
+static void compare_perm3(const nl_noise_perm3 *p, unsigned long seed)
+{
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, seed);
+  double *x = malloc(NPOINTS * sizeof *x), *y = malloc(NPOINTS * sizeof *y), *z = malloc(NPOINTS * sizeof *z);
+  double *ref = malloc(NPOINTS * sizeof *ref), *got = malloc(NPOINTS * sizeof *got);
+  for (size_t k = 0; k < NPOINTS; k++) { x[k] = coord(r); y[k] = coord(r); z[k] = coord(r); }
+  nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
+  for (size_t k = 0; k < NPOINTS; k++) ref[k] = nl_noise_perm3_eval(p, x[k], y[k], z[k]);
+  for (int L = 0; L < nlevels; L++) {
+    nl_noise_simd_set(levels[L]);
+    for (size_t n = 0; n <= 17; n++) {
+      nl_noise_perm3_points(p, x + 100, y + 100, z + 100, n, got);
+      NL_CHECK(same(got, ref + 100, n));
+    }
+    nl_noise_perm3_points(p, x, y, z, NPOINTS, got);
+    if (!same(got, ref, NPOINTS)) {
+      for (size_t k = 0; k < NPOINTS; k++)
+        if (memcmp(&got[k], &ref[k], sizeof *got)) {
+          fprintf(stderr, "  perm3 %s point (%.17g, %.17g, %.17g): %.17g, scalar %.17g\n",
+                  nl_noise_simd_name(levels[L]), x[k], y[k], z[k], got[k], ref[k]);
+          break;
+        }
+      NL_CHECK(0);
+    }
+    /* in place: out is the x array */
+    double *xx = malloc(NPOINTS * sizeof *xx);
+    memcpy(xx, x, NPOINTS * sizeof *xx);
+    nl_noise_perm3_points(p, xx, y, z, NPOINTS, xx);
+    NL_CHECK(same(xx, ref, NPOINTS));
+    free(xx);
+    compared += 2 * NPOINTS;
+  }
+  double *rref = malloc(MAXROW * sizeof *rref), *rgot = malloc(MAXROW * sizeof *rgot);
+  for (int row = 0; row < NROWS; row++) {
+    double x0, dx, yy = gsl_rng_uniform(r) < 0.9 ? 100 * gsl_rng_uniform(r) - 50 : coord(r);
+    double zz = gsl_rng_uniform(r) < 0.9 ? 100 * gsl_rng_uniform(r) - 50 : coord(r);
+    size_t n;
+    random_row(r, &x0, &dx, &n);
+    nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
+    nl_noise_perm3_row(p, x0, dx, yy, zz, n, rref);
+    for (int L = 0; L < nlevels; L++) {
+      nl_noise_simd_set(levels[L]);
+      nl_noise_perm3_row(p, x0, dx, yy, zz, n, rgot);
+      if (!same(rgot, rref, n)) {
+        fprintf(stderr, "  perm3 %s row x0=%.17g dx=%.17g y=%.17g z=%.17g n=%zu differs\n",
+                nl_noise_simd_name(levels[L]), x0, dx, yy, zz, n);
+        NL_CHECK(0);
+      }
+      compared += (long)n;
+    }
+  }
+  nl_noise_simd_set(nl_noise_simd_best());
+  free(rref); free(rgot); free(x); free(y); free(z); free(ref); free(got);
+  gsl_rng_free(r);
+}
+
+NL_TEST(perm3_levels_match_scalar)
+{
+  find_levels();
+  nl_noise_perm3 p;
+  nl_noise_perm3_reference(&p);
+  compare_perm3(&p, 5);
+  nl_noise_perm3_seed(&p, 9);
+  compare_perm3(&p, 6);
+}
+
+/* Rows at the edges of the kernels' shortcuts: x = -0 (whose cell must read
+ * +0), x in [-2^-54, 0) (whose fraction rounds to 1 and is mapped to 0),
+ * steps at the window's limit (7 |dx| = 4) and either side of it, rows
+ * ending at the lattice bound 2^52, and every length up to 3 vectors. */
+NL_TEST(edge_rows_match_scalar)
+{
+  find_levels();
+  nl_noise_grad2 *t = nl_noise_grad2_alloc(64);
+  nl_noise_grad2_seed(t, 5);
+  nl_noise_perm3 p;
+  nl_noise_perm3_seed(&p, 5);
+  const double x0s[] = {-0.0, 0.0, -0x1p-54, -0x1p-55, -1e-20, -0x1p-53, -0x1p-50, -1.0 / 3, 0x1p52 - 40,
+                        -0x1p52 + 1, 1e-300, -5e-324};
+  const double dxs[] = {1.0 / 64, -1.0 / 64, 4.0 / 7, -4.0 / 7, 0.5714286, 0x1p-60, -0x1p-60, 0.0, -0.0, 1.0, 0.75};
+  const double ys[] = {-0.0, 0.0, 3.0, -1e-20, 0.25};
+  double ref[3 * 8 + 1], got[3 * 8 + 1], acc[3 * 8 + 1];
+  int bad = 0;
+  for (size_t a = 0; a < sizeof x0s / sizeof *x0s; a++)
+    for (size_t d = 0; d < sizeof dxs / sizeof *dxs; d++)
+      for (size_t yi = 0; yi < sizeof ys / sizeof *ys; yi++)
+        for (size_t n = 1; n <= 3 * 8 + 1; n++)
+          for (int which = 0; which < 2; which++) {
+            nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
+            if (which) nl_noise_perm3_row(&p, x0s[a], dxs[d], ys[yi], -ys[yi], n, ref);
+            else nl_noise_grad2_row(t, x0s[a], dxs[d], ys[yi], n, ref);
+            for (int L = 0; L < nlevels; L++) {
+              nl_noise_simd_set(levels[L]);
+              if (which) nl_noise_perm3_row(&p, x0s[a], dxs[d], ys[yi], -ys[yi], n, got);
+              else nl_noise_grad2_row(t, x0s[a], dxs[d], ys[yi], n, got);
+              if (!same(got, ref, n) && bad++ < 5)
+                fprintf(stderr, "  %s row %s x0=%a dx=%a y=%a n=%zu differs\n", which ? "perm3" : "grad2",
+                        nl_noise_simd_name(levels[L]), x0s[a], dxs[d], ys[yi], n);
+              compared += (long)n;
+            }
+          }
+  NL_CHECK(bad == 0);
+  /* the same rows as octave sums (first octave 0 + a v, turbulence) */
+  nl_noise_basis b[] = {nl_noise_basis_grad2(t), nl_noise_basis_perm3(&p)};
+  nl_noise_octaves o = nl_noise_octaves_fbm(3, -0.5, 2.0);
+  for (int tb = 0; tb < 2; tb++, o.turbulence = 1)
+    for (size_t a = 0; a < sizeof x0s / sizeof *x0s; a++)
+      for (size_t d = 0; d < sizeof dxs / sizeof *dxs; d++)
+        for (int bi = 0; bi < 2; bi++) {
+          size_t n = 3 * 8 + 1 - a;
+          nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
+          nl_noise_fractal_row(&b[bi], &o, x0s[a], dxs[d], -0.0, 0.0, n, ref, acc);
+          for (int L = 0; L < nlevels; L++) {
+            nl_noise_simd_set(levels[L]);
+            nl_noise_fractal_row(&b[bi], &o, x0s[a], dxs[d], -0.0, 0.0, n, got, acc);
+            NL_CHECK(same(got, ref, n));
+            compared += (long)n;
+          }
+        }
+  nl_noise_simd_set(nl_noise_simd_best());
+  nl_noise_grad2_free(t);
+}
+
+/* Wavelet noise rows (nl_wavelet_row's sample loop, nl_noise_bspline_row):
+ * 2D tiles of power-of-two and other periods and a 3D tile, rows dense and
+ * sparse, either direction, added into values already there. */
+NL_TEST(wavelet_rows_match_scalar)
+{
+  find_levels();
+  struct { int dim, n; } tiles[] = {{2, 64}, {2, 10}, {3, 16}};
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, 77);
+  double *init = malloc(MAXROW * sizeof *init), *ref = malloc(MAXROW * sizeof *ref);
+  double *got = malloc(MAXROW * sizeof *got);
+  int bad = 0;
+  for (int ti = 0; ti < 3; ti++) {
+    nl_wavelet_tile *t = nl_wavelet_tile_alloc(tiles[ti].dim, tiles[ti].n);
+    nl_wavelet_tile_seed(t, 3 + (unsigned long)ti);
+    for (int row = 0; row < NROWS; row++) {
+      double x0, dx, y = gsl_rng_uniform(r) < 0.9 ? 100 * gsl_rng_uniform(r) - 50 : coord(r);
+      double z = gsl_rng_uniform(r) < 0.9 ? 100 * gsl_rng_uniform(r) - 50 : coord(r);
+      double weight = gsl_rng_uniform(r) < 0.2 ? 1.0 : 4 * gsl_rng_uniform(r) - 2;
+      size_t n;
+      random_row(r, &x0, &dx, &n);
+      if (row % 7 == 0) x0 = 0.5 + (double)((long)gsl_rng_uniform_int(r, 200) - 100);   /* p - 1/2 = integer */
+      for (size_t k = 0; k < n; k++) init[k] = gsl_rng_uniform(r) < 0.5 ? 0.0 : gsl_rng_uniform(r) - 0.5;
+      nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
+      memcpy(ref, init, n * sizeof *ref);
+      nl_wavelet_row(t, x0, dx, y, z, n, weight, ref);
+      for (int L = 0; L < nlevels; L++) {
+        nl_noise_simd_set(levels[L]);
+        memcpy(got, init, n * sizeof *got);
+        nl_wavelet_row(t, x0, dx, y, z, n, weight, got);
+        if (!same(got, ref, n) && bad++ < 5)
+          fprintf(stderr, "  wavelet %dD n=%d %s row x0=%a dx=%a n=%zu differs\n", tiles[ti].dim, tiles[ti].n,
+                  nl_noise_simd_name(levels[L]), x0, dx, n);
+        compared += (long)n;
+      }
+    }
+    nl_wavelet_tile_free(t);
+  }
+  NL_CHECK(bad == 0);
+  nl_noise_simd_set(nl_noise_simd_best());
+  free(init); free(ref); free(got);
+  gsl_rng_free(r);
+}
+
+/* The sums the experiments use (S1-S4): fBm grids over both bases. */
+NL_TEST(fractal_grids_match_scalar)
+{
+  find_levels();
+  nl_noise_grad2 *t = nl_noise_grad2_alloc(512), *t3 = nl_noise_grad2_alloc(300);
+  nl_noise_grad2_seed(t, 3);
+  nl_noise_grad2_seed(t3, 3);
+  nl_noise_perm3 p;
+  nl_noise_perm3_seed(&p, 3);
+  nl_noise_basis bases[] = {nl_noise_basis_grad2(t), nl_noise_basis_grad2(t3), nl_noise_basis_perm3(&p)};
+  nl_noise_octaves octs[] = {nl_noise_octaves_fbm(4, 0.5, 2.0), nl_noise_octaves_cheng(6, 2.0, 1.0), nl_noise_octaves_fbm(9, 0.7, 2.1)};
+  octs[2].turbulence = 1;
+  nl_noise_window wins[] = {{0, 0, 0.5, 16, 96, 40}, {-37.25, 11.5, -3.75, 3, 130, 7}, {1e6, -1e6, 2.5, 1e3, 33, 9}};
+  size_t npix = 130 * 40;
+  double *ref = malloc(npix * sizeof *ref), *got = malloc(npix * sizeof *got);
+  for (int b = 0; b < 3; b++)
+    for (int o = 0; o < 3; o++)
+      for (int w = 0; w < 3; w++) {
+        size_t np = (size_t)wins[w].w * (size_t)wins[w].h;
+        nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
+        nl_noise_fractal_grid(&bases[b], &octs[o], &wins[w], ref);
+        for (int L = 0; L < nlevels; L++) {
+          nl_noise_simd_set(levels[L]);
+          nl_noise_fractal_grid(&bases[b], &octs[o], &wins[w], got);
+          if (!same(got, ref, np)) {
+            fprintf(stderr, "  grid basis %d octaves %d window %d level %s differs\n", b, o, w,
+                    nl_noise_simd_name(levels[L]));
+            NL_CHECK(0);
+          }
+          compared += (long)np;
+        }
+      }
+  nl_noise_simd_set(nl_noise_simd_best());
+  printf("  %ld values compared bit for bit with the scalar path\n", compared);
+  free(ref); free(got);
+  nl_noise_grad2_free(t); nl_noise_grad2_free(t3);
+}
+
+int main(void) { return nl_test_run(); }
