@@ -41,6 +41,7 @@ static int die(const char *msg)
 
 int main(int argc, char **argv)
 {
+  nl_set_oom_handler(nl_harness_oom_exit);
   nl_harness_check_state s = {0};
   nl_error err;
   int w = 1;

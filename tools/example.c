@@ -8,6 +8,7 @@
  * Errors: one line on stderr naming the input and the problem, exit 2.
  * Outputs are written atomically (temporary file, then rename).
  */
+#include "harness/nl_harness.h"
 #include "byexample/nl_byexample.h"
 
 #include <stdio.h>
@@ -144,6 +145,7 @@ static int morph(const args *a)
 
 int main(int argc, char **argv)
 {
+  nl_set_oom_handler(nl_harness_oom_exit);
   if (argc < 2) { usage(stderr); return 2; }
   const char *cmd = argv[1];
   if (!strcmp(cmd, "-h") || !strcmp(cmd, "--help")) { usage(stdout); return 0; }

@@ -6,6 +6,7 @@
  *
  * Errors: one line, exit 2 (bad arguments) or 1 (a file could not be written).
  */
+#include "harness/nl_harness.h"
 #include "study/nl_study_cheng.h"
 
 #include <stdio.h>
@@ -14,6 +15,7 @@
 
 int main(int argc, char **argv)
 {
+  nl_set_oom_handler(nl_harness_oom_exit);
   const char *dir = NULL;
   long size = 128;
   nl_error err;

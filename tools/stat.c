@@ -4,6 +4,7 @@
  * optional, '-' = stdin), call the library, print one line per result.
  * Every error is one line on stderr naming the input, and exit status 2.
  */
+#include "harness/nl_harness.h"
 #include "stats/nl_cluster.h"
 #include "stats/nl_gmm.h"
 #include "stats/nl_stats.h"
@@ -366,6 +367,7 @@ static const char *sub_help(const char *sub)
 
 int main(int argc, char **argv)
 {
+  nl_set_oom_handler(nl_harness_oom_exit);
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
     fputs(usage_text[0], argc < 2 ? stderr : stdout);
     return argc < 2 ? 2 : 0;

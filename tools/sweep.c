@@ -1033,6 +1033,7 @@ static int nl_sweep_status_main(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
+  nl_set_oom_handler(nl_harness_oom_exit);
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
     printf("usage: noiselab-sweep expand NAME=SPEC\n"
            "       noiselab-sweep plan --experiment E [--seed S] [--seeds N] [--task-seeds K]\n"

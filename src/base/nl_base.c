@@ -24,10 +24,25 @@ nl_status nl_fail(nl_error *err, nl_status status, const char *fmt, ...)
   return status;
 }
 
-static void oom(size_t n)
+static void oom_default(size_t n)
 {
   fprintf(stderr, "noiselab: out of memory allocating %zu bytes\n", n);
-  exit(3);
+  abort();
+}
+
+static nl_oom_handler oom_handler = oom_default;
+
+nl_oom_handler nl_set_oom_handler(nl_oom_handler h)
+{
+  nl_oom_handler old = oom_handler;
+  oom_handler = h ? h : oom_default;
+  return old;
+}
+
+static void oom(size_t n)
+{
+  oom_handler(n);
+  abort();   /* a handler must not return */
 }
 
 void *nl_xmalloc(size_t n)

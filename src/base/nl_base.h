@@ -35,8 +35,14 @@ typedef struct { char msg[NL_ERROR_LEN]; } nl_error;
 nl_status nl_fail(nl_error *err, nl_status status, const char *fmt, ...)
   __attribute__((format(printf, 3, 4)));
 
-/* Allocation that exits with a message on failure: out-of-memory is not a
- * condition any caller here can recover from. */
+/* Allocation that never returns NULL: out-of-memory is not a condition any
+ * caller here can recover from. On failure the out-of-memory handler runs
+ * with the size asked for; as GSL's default error handler, the default one
+ * prints "noiselab: out of memory allocating N bytes" and calls abort().
+ * Programs choose their own (the experiment harness installs one that
+ * exits 3); a handler must not return. Returns the previous handler. */
+typedef void (*nl_oom_handler)(size_t n);
+nl_oom_handler nl_set_oom_handler(nl_oom_handler h);
 void *nl_xmalloc(size_t n);
 void *nl_xcalloc(size_t n, size_t size);
 void *nl_xrealloc(void *p, size_t n);

@@ -174,8 +174,15 @@ nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_erro
   return NL_OK;
 }
 
+void nl_harness_oom_exit(size_t n)
+{
+  fprintf(stderr, "noiselab: out of memory allocating %zu bytes\n", n);
+  exit(3);
+}
+
 nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char **argv)
 {
+  nl_set_oom_handler(nl_harness_oom_exit);
   nl_harness_options o;
   nl_error err;
   if (nl_harness_parse(&o, argc, argv, &err)) {

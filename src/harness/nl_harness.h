@@ -80,6 +80,11 @@ typedef struct {
 nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_error *err);
 void nl_harness_options_free(nl_harness_options *o);
 
+/* The out-of-memory handler of programs (nl_set_oom_handler, nl_base.h):
+ * "noiselab: out of memory allocating N bytes", exit 3. nl_harness_begin
+ * installs it; the command-line tools install it first thing in main. */
+void nl_harness_oom_exit(size_t n);
+
 /* nl_harness_parse; on error prints "NAME: message" and exits 2. --help and
  * --params are remembered and answered by nl_harness_params_done. Touches no file. */
 nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char **argv);
