@@ -8,11 +8,12 @@
  * CPU lacks falls back to the best it has, with a warning) or a program calls
  * nl_noise_simd_set. Every level gives the scalar bits (nl_noise_simd.h).
  *
- * The small scalar helpers below repeat nl_noise.c's (lfloor, lfrac, fade,
- * row_columns, column2) so that file keeps only a hook; test_noise_simd.c
- * holds the two to the same bits.
+ * The scalar lattice helpers (lfloor, lfrac, fade, row_columns) are
+ * nl_noise.c's, from nl_noise_lattice.h; test_noise_simd.c holds the two
+ * files to the same bits.
  */
 #include "noise/nl_noise_simd.h"
+#include "noise/nl_noise_lattice.h"
 #include "base/nl_base.h"
 
 #include <gsl/gsl_errno.h>
@@ -106,31 +107,6 @@ static const nl_noise_simd_kernels *kernels(void)
   }
 }
 
-/* ---- nl_noise.c's scalar helpers, repeated (see the top) ------------------- */
-
-#define NL_LATTICE_WRAP 0x1p62
-static inline long lfloor(double x)
-{
-  if (x > -NL_LATTICE_WRAP && x < NL_LATTICE_WRAP) { long i = (long)x; return i - (x < (double)i); }
-  if (!isfinite(x)) return 0;
-  return (long)fmod(x, NL_LATTICE_WRAP);
-}
-static inline double lfrac(double x, long i)
-{
-  double f = x - (double)i;
-  return f >= 0 && f < 1 ? f : isfinite(x) ? 0.0 : NAN;
-}
-static inline double fade(double t) { return t * t * t * (t * (t * 6 - 15) + 10); }
-#define NL_LATTICE_EXACT 0x1p52
-static size_t row_columns(double x0, double dx, size_t n, long *ifirst)
-{
-  double xl = x0 + (double)(n - 1) * dx;
-  if (!(fabs(x0) < NL_LATTICE_EXACT && fabs(xl) < NL_LATTICE_EXACT)) return 0;
-  long a = lfloor(dx >= 0 ? x0 : xl), b = lfloor(dx >= 0 ? xl : x0);
-  *ifirst = a;
-  size_t ncol = (size_t)(b - a) + 2;
-  return ncol > 2 * n + 8 ? 0 : ncol;
-}
 
 /* ---- rows ------------------------------------------------------------------ */
 

@@ -22,18 +22,7 @@ static inline vd v_floor(vd x) { return (vd)_mm256_floor_pd((__m256d)x); }
 static inline vd v_ceil(vd x) { return (vd)_mm256_ceil_pd((__m256d)x); }
 /* Lookups lane by lane: on the machines measured (AMD Zen 5) a gather
  * instruction costs more than its loads one by one. */
-static inline vd v_gd(const double *b, vi i)
-{
-  double r[NL_SIMD_W];
-  for (int l = 0; l < NL_SIMD_W; l++) r[l] = b[i[l]];
-  vd v; memcpy(&v, r, sizeof v); return v;
-}
-static inline vi v_gi(const int *b, vi i)
-{
-  int r[NL_SIMD_W];
-  for (int l = 0; l < NL_SIMD_W; l++) r[l] = b[i[l]];
-  vi v; memcpy(&v, r, sizeof v); return v;
-}
+#include "noise/nl_noise_simd_lanes.h"
 static inline int v_all(vl m) { return _mm256_movemask_pd((__m256d)m) == 15; }
 
 #include "noise/nl_noise_simd_body.h"

@@ -37,18 +37,7 @@ static inline vd v_ceil(vd x)
   return (vd)_mm512_roundscale_pd((__m512d)x, _MM_FROUND_TO_POS_INF | _MM_FROUND_NO_EXC);
 }
 /* Lookups lane by lane (the 2D tables are too big for registers). */
-static inline vd v_gd(const double *b, vi i)
-{
-  double r[NL_SIMD_W];
-  for (int l = 0; l < NL_SIMD_W; l++) r[l] = b[i[l]];
-  vd v; memcpy(&v, r, sizeof v); return v;
-}
-static inline vi v_gi(const int *b, vi i)
-{
-  int r[NL_SIMD_W];
-  for (int l = 0; l < NL_SIMD_W; l++) r[l] = b[i[l]];
-  vi v; memcpy(&v, r, sizeof v); return v;
-}
+#include "noise/nl_noise_simd_lanes.h"
 static inline int v_all(vl m) { return _mm512_movepi64_mask((__m512i)m) == 0xff; }
 
 #define NL_SIMD_HAVE_TABLES
