@@ -8,6 +8,7 @@ set -euo pipefail
 s3="$1" c2="$2" out="$3"
 rm -rf "$out"; mkdir -p "$out"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
+. "$(dirname "$0")/tsv.sh"
 
 # A finished run of each: a real quick S3, and a C2 folder that looks finished.
 "$s3" --quick --seeds 1 --out "$out/s3" >/dev/null
@@ -62,9 +63,9 @@ rejected "outside" "$s3" --params --out "$out/params" --set octaves=99
 rejected "(valid: size, extent, z, octaves)" "$s3" --params --out "$out/params" --set nosuch=1
 [ "$(printf '%s\n' "$p" | head -n 1)" = $'name\tdefault\tmin\tmax\tmeaning' ] || { echo "--params header: '$p'"; exit 1; }
 printf '%s\n' "$p" | grep -q $'^octaves\t6\t1\t30\t[a-z]' || { echo "--params has no octaves line: '$p'"; exit 1; }
-printf '%s\n' "$p" | awk -F'\t' 'NF != 5 || $5 == "" { bad = 1 } END { exit bad }' || { echo "--params lines need 5 fields and a meaning: '$p'"; exit 1; }
+printf '%s\n' "$p" | tsv_awk 'NF != 5 || v("meaning") == "" { bad = 1 } END { exit bad }' - || { echo "--params lines need 5 fields and a meaning: '$p'"; exit 1; }
 [ "$(printf '%s\n' "$p" | wc -l)" = 5 ] || { echo "--params: wanted 4 parameters: '$p'"; exit 1; }
-[ "$("$s3" --quick --params | awk -F'\t' '$1 == "size" { print $2 }')" = 128 ] || { echo "--params --quick: size default is not the quick one"; exit 1; }
+[ "$("$s3" --quick --params | tsv_awk 'v("name") == "size" { print v("default") }' -)" = 128 ] || { echo "--params --quick: size default is not the quick one"; exit 1; }
 pc="$("$c2" --params --patterns "$pat")" || { echo "c2 --params failed"; exit 1; }
 printf '%s\n' "$pc" | grep -q $'^w1\t0.995\t' || { echo "c2 --params has no w1: '$pc'"; exit 1; }
 [ ! -e "$out/params" ] || { echo "--params made a folder"; exit 1; }
