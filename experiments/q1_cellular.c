@@ -11,6 +11,8 @@
 #include <math.h>
 #include <string.h>
 
+#define NRULE 3   /* closest, inverse-cdf, closest-last (nl_cellular_count_rule) */
+
 static nl_cellular *make(nl_harness *r, double lambda, int M, nl_cellular_count_rule rule, unsigned long seed)
 {
   nl_cellular *c;
@@ -33,22 +35,6 @@ static void one_seed(nl_harness *r, nl_cellular *c, int side, long points, unsig
   nl_cellular_count_moments(hist, c->M, &mean, &var);
   nl_table_append(per_seed, "siddddiddd", nl_cellular_count_rule_name(c->rule), (int)seed, mean, var,
                   cs.chi2, cs.p, (int)cs.df, ks.d, ks.p, mean_f1);
-}
-
-/* Mean of column `col` over the rows of `rule`; with pcol, how many have pcol < 0.01. */
-static double summarise(const nl_table *t, const char *rule, const char *col, const char *pcol, int *rejects)
-{
-  size_t rc = nl_table_column_must(t, "rule");
-  double s = 0;
-  int n = 0;
-  char buf[32];
-  for (size_t k = 0; k < t->nrows; k++)
-    if (!strcmp(nl_table_cell_text(t, k, rc, buf), rule)) {
-      s += nl_table_value(t, k, col);
-      if (pcol) *rejects += nl_table_value(t, k, pcol) < 0.01;
-      n++;
-    }
-  return s / n;
 }
 
 static nl_image *f_panel(const nl_cellular *c, const char *expr, int size, double extent)
@@ -81,31 +67,33 @@ int main(int argc, char **argv)
   const char *pcols[] = {"rule", "seed", "mean_count", "var_count", "chi2", "chi2_p", "df",
                          "ks_d", "ks_p", "mean_f1"};
   nl_table *per = nl_table_alloc(10, pcols);
-  const char *dcols[] = {"m", "poisson", "closest", "inverse_cdf"};
-  nl_table *dist = nl_table_alloc(4, dcols);
-  double hist[2][NL_CELLULAR_MAX_M + 1] = {{0}}, h[NL_CELLULAR_MAX_M + 1];
+  const char *dcols[] = {"m", "poisson", "closest", "inverse_cdf", "closest_last"};
+  nl_table *dist = nl_table_alloc(5, dcols);
+  double hist[NRULE][NL_CELLULAR_MAX_M + 1] = {{0}}, h[NL_CELLULAR_MAX_M + 1];
   double ncubes = (double)side * side * side;
-  for (int rule = 0; rule < 2; rule++)
+  for (int rule = 0; rule < NRULE; rule++)
     for (int k = 0; k < seeds; k++) {
       nl_cellular *c = make(r, lambda, M, (nl_cellular_count_rule)rule, nl_seed_replicate(seed0, k));
       one_seed(r, c, side, points, nl_seed_replicate(seed0, k), per, h);
       for (int m = 0; m <= M; m++) hist[rule][m] += h[m] / (ncubes * seeds);
       nl_cellular_free(c);
-      nl_harness_progress(r, (rule * seeds + k + 1.0) / (2.0 * seeds), "seeds");
+      nl_harness_progress(r, (rule * seeds + k + 1.0) / ((double)NRULE * seeds), "seeds");
     }
   nl_cellular *ref = make(r, lambda, M, NL_COUNT_INVERSE_CDF, seed0);
   for (int m = 0; m <= (M < 20 ? M : 20); m++)
-    nl_table_append(dist, "iddd", m, ref->pmf[m], hist[0][m], hist[1][m]);
+    nl_table_append(dist, "idddd", m, ref->pmf[m], hist[0][m], hist[1][m], hist[2][m]);
 
   const char *scols[] = {"rule", "mean_count", "chi2", "chi2_rejects", "ks_d", "ks_rejects",
                          "mean_f1", "mean_f1_theory", "seeds"};
   nl_table *sum = nl_table_alloc(9, scols);
   double theory = tgamma(4.0 / 3.0) * pow(4.0 / 3.0 * NL_PI * lambda, -1.0 / 3.0);
-  for (int rule = 0; rule < 2; rule++) {
+  for (int rule = 0; rule < NRULE; rule++) {
     const char *name = nl_cellular_count_rule_name((nl_cellular_count_rule)rule);
-    int rc = 0, rk = 0;
-    double mc = summarise(per, name, "mean_count", NULL, NULL), chi = summarise(per, name, "chi2", "chi2_p", &rc);
-    double ksd = summarise(per, name, "ks_d", "ks_p", &rk), mf = summarise(per, name, "mean_f1", NULL, NULL);
+    int rc, rk;
+    double mc = nl_study_mean_where(per, "rule", name, "mean_count", NULL, 0, NULL);
+    double chi = nl_study_mean_where(per, "rule", name, "chi2", "chi2_p", 0.01, &rc);
+    double ksd = nl_study_mean_where(per, "rule", name, "ks_d", "ks_p", 0.01, &rk);
+    double mf = nl_study_mean_where(per, "rule", name, "mean_f1", NULL, 0, NULL);
     nl_table_append(sum, "sddididdi", name, mc, chi, rc, ksd, rk, mf, theory, seeds);
   }
   nl_harness_write_table(r, per, "tests.tsv");
@@ -121,27 +109,39 @@ int main(int argc, char **argv)
   nl_study_montage(r, (const nl_image *const *)panels, labels, 6, 3, "F_i on z = 0.5", "planes.png");
 
   nl_harness_text(r, "**Paper (sec. 3.2):** counts per unit cube from \"the m whose p(m) is closest to "
-                    "r\", lambda = %g, M = %d; no statistics reported. **Ours:** both rules on %d^3 cubes "
+                    "r\", lambda = %g, M = %d; no statistics reported. **Ours:** the three rules on %d^3 cubes "
                     "(chi-square against Poisson(lambda), tail pooled so every expected count is >= 5) "
                     "and F1 at %ld random points in [0, 1000)^3 (KS against 1 - exp(-lambda 4/3 pi r^3)), "
                     "%d seeds (permutation tables); `*_rejects` counts seeds with p < 0.01.\n",
                   lambda, M, side, points, seeds);
   nl_harness_report_table(r, sum, "Count rule against Poisson and the nearest-neighbour law", 4);
   nl_harness_report_table(r, dist, "Fraction of cubes with m points (mean over seeds)", 4);
-  nl_harness_figure(r, "counts.png", "Count distribution of the two rules against Poisson(lambda)");
+  nl_harness_figure(r, "counts.png", "Count distribution of the three rules against Poisson(lambda)");
   nl_harness_figure(r, "planes.png", "F1..F4 and F2 - F1 on the plane z = 0.5 (inverse-CDF rule), and F1 under the paper's rule");
+  int mode[NRULE] = {0, 0, 0}, tie = -1;
+  for (int q = 0; q < NRULE; q++) for (int m = 0; m <= M; m++) if (hist[q][m] > hist[q][mode[q]]) mode[q] = m;
+  for (int m = 0; m < M && tie < 0; m++) if (ref->pmf[m] == ref->pmf[m + 1]) tie = m;
   nl_harness_text(r, "The paper's rule is not a sampler of p: every r above max p(m) = %.4f "
                     "(%.0f%% of draws) gives the mode, and small r give large m, so the counts "
-                    "concentrate on one value (fraction %.3f at m = 3 against Poisson's %.3f; mean count "
+                    "concentrate on one value (fraction %.3f at m = %d against Poisson's %.3f; mean count "
                     "%.3f, not lambda). Chi-square rejects it (p < 0.01) on %d of %d seeds and KS "
                     "rejects its F1 law on %d of %d: fewer, more regular points make F1 larger (mean "
                     "%.4f). Inverse-CDF sampling: rejected on %d and %d of %d seeds, F1 mean %.4f "
                     "against Gamma(4/3) (4/3 pi lambda)^(-1/3) = %.4f.\n",
-                  ref->pmf[(int)floor(lambda)], 100.0 * (1.0 - ref->pmf[(int)floor(lambda)]),
-                  hist[0][3 < M ? 3 : M], ref->pmf[3 < M ? 3 : M], nl_table_value(sum, 0, "mean_count"),
+                  ref->pmf[mode[1]], 100.0 * (1.0 - ref->pmf[mode[1]]),
+                  hist[0][mode[0]], mode[0], ref->pmf[mode[0]], nl_table_value(sum, 0, "mean_count"),
                   (int)nl_table_value(sum, 0, "chi2_rejects"), seeds, (int)nl_table_value(sum, 0, "ks_rejects"), seeds,
                   nl_table_value(sum, 0, "mean_f1"), (int)nl_table_value(sum, 1, "chi2_rejects"),
                   (int)nl_table_value(sum, 1, "ks_rejects"), seeds, nl_table_value(sum, 1, "mean_f1"), theory);
+  if (tie >= 0)
+    nl_harness_text(r, "**Ties.** p(%d) = p(%d) exactly in double at lambda = %g, and the paper does not say which "
+                      "m a tie gives. `closest` (our reading, above) takes the smaller m: mode %d, mean count %.3f; "
+                      "`closest-last` takes the larger: mode %d, mean count %.3f, chi-square rejects on %d and KS on "
+                      "%d of %d seeds. Either way the rule is not a sampler of Poisson(lambda).\n",
+                    tie, tie + 1, lambda, mode[0], nl_table_value(sum, 0, "mean_count"), mode[2],
+                    nl_table_value(sum, 2, "mean_count"), (int)nl_table_value(sum, 2, "chi2_rejects"),
+                    (int)nl_table_value(sum, 2, "ks_rejects"), seeds);
+  else nl_harness_text(r, "**Ties.** No two p(m) are equal at lambda = %g: `closest` and `closest-last` agree.\n", lambda);
   for (int k = 0; k < 6; k++) nl_image_free(panels[k]);
   nl_cellular_free(ref); nl_cellular_free(closest);
   nl_table_free(per); nl_table_free(sum); nl_table_free(dist);

@@ -26,7 +26,7 @@ nl_status nl_cellular_alloc(double lambda, int M, nl_cellular_count_rule rule, u
     return nl_fail(err, NL_EINVAL, "cellular: lambda must be in (0, 1000], got %g", lambda);
   if (M < 1 || M > NL_CELLULAR_MAX_M)
     return nl_fail(err, NL_EINVAL, "cellular: M must be in 1..%d, got %d", NL_CELLULAR_MAX_M, M);
-  if (rule != NL_COUNT_CLOSEST && rule != NL_COUNT_INVERSE_CDF)
+  if (rule != NL_COUNT_CLOSEST && rule != NL_COUNT_INVERSE_CDF && rule != NL_COUNT_CLOSEST_LAST)
     return nl_fail(err, NL_EINVAL, "cellular: unknown count rule %d", (int)rule);
   nl_cellular *c = nl_xcalloc(1, sizeof *c);
   c->lambda = lambda;
@@ -60,7 +60,7 @@ void nl_cellular_free(nl_cellular *c)
 
 const char *nl_cellular_count_rule_name(nl_cellular_count_rule rule)
 {
-  return rule == NL_COUNT_CLOSEST ? "closest" : "inverse-cdf";
+  return rule == NL_COUNT_CLOSEST ? "closest" : rule == NL_COUNT_INVERSE_CDF ? "inverse-cdf" : "closest-last";
 }
 
 int nl_cellular_count_from_r(const nl_cellular *c, double r)
@@ -70,10 +70,13 @@ int nl_cellular_count_from_r(const nl_cellular *c, double r)
       if (r < c->cdf[m]) return m;
     return c->M;
   }
-  /* The paper's rule, literally: argmin_m |p(m) - r|, first m on ties. */
-  int best = 0;
-  for (int m = 1; m <= c->M; m++)
-    if (fabs(c->pmf[m] - r) < fabs(c->pmf[best] - r)) best = m;
+  /* The paper's rule, literally: argmin_m |p(m) - r|; the paper does not
+   * say which m wins a tie, so both are offered (nl_cellular.h). */
+  int best = 0, last = c->rule == NL_COUNT_CLOSEST_LAST;
+  for (int m = 1; m <= c->M; m++) {
+    double d = fabs(c->pmf[m] - r), b = fabs(c->pmf[best] - r);
+    if (d < b || (last && d == b)) best = m;
+  }
   return best;
 }
 

@@ -72,7 +72,13 @@
 #define NL_CELLULAR_NMAX 4
 #define NL_CELLULAR_FMAX 3.46410161513775458705   /* 2 sqrt 3 */
 
-typedef enum { NL_COUNT_CLOSEST = 0, NL_COUNT_INVERSE_CDF = 1 } nl_cellular_count_rule;
+/* How a uniform r becomes a cube's count m (Qin & Yang sec. 3.2):
+ *   NL_COUNT_CLOSEST       the paper's "m whose p(m) is closest to r"; where two
+ *                          p(m) are equally close (at lambda = 4, p(3) = p(4)
+ *                          exactly in double) the smaller m: first on ties
+ *   NL_COUNT_INVERSE_CDF   the smallest m with r < P(m): a sampler of p
+ *   NL_COUNT_CLOSEST_LAST  the paper's rule, larger m on ties */
+typedef enum { NL_COUNT_CLOSEST = 0, NL_COUNT_INVERSE_CDF = 1, NL_COUNT_CLOSEST_LAST = 2 } nl_cellular_count_rule;
 
 typedef struct {
   double lambda;                          /* mean points per unit cube */
@@ -87,7 +93,8 @@ typedef struct {
 nl_status nl_cellular_alloc(double lambda, int M, nl_cellular_count_rule rule, unsigned long seed,
                             nl_cellular **out, nl_error *err);
 void nl_cellular_free(nl_cellular *c);
-const char *nl_cellular_count_rule_name(nl_cellular_count_rule rule);   /* "closest", "inverse-cdf" */
+/* "closest", "inverse-cdf", "closest-last" */
+const char *nl_cellular_count_rule_name(nl_cellular_count_rule rule);
 
 /* The count for a uniform r in [0, 1) under c->rule. */
 int nl_cellular_count_from_r(const nl_cellular *c, double r);

@@ -12,6 +12,21 @@ static nl_cellular *make(nl_cellular_count_rule rule, unsigned long seed)
   return c;
 }
 
+/* At lambda = 4, p(3) = p(4) exactly in double: the paper's rule ties on
+ * every r it maps to the mode; the two tie-breaks give 3 and 4. */
+NL_TEST(closest_rule_ties_at_lambda_4)
+{
+  nl_cellular *first, *last;
+  nl_error err;
+  NL_CHECK(nl_cellular_alloc(4.0, 50, NL_COUNT_CLOSEST, 1, &first, &err) == NL_OK);
+  NL_CHECK(nl_cellular_alloc(4.0, 50, NL_COUNT_CLOSEST_LAST, 1, &last, &err) == NL_OK);
+  NL_CHECK(first->pmf[3] == first->pmf[4]);
+  NL_CHECK(nl_cellular_count_from_r(first, 0.5) == 3 && nl_cellular_count_from_r(last, 0.5) == 4);
+  NL_CHECK(nl_cellular_count_from_r(first, 0.0) == nl_cellular_count_from_r(last, 0.0));   /* no tie there */
+  NL_CHECK(strcmp(nl_cellular_count_rule_name(NL_COUNT_CLOSEST_LAST), "closest-last") == 0);
+  nl_cellular_free(first); nl_cellular_free(last);
+}
+
 NL_TEST(bad_parameters)
 {
   nl_cellular *c = NULL;

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 static void put(const char *prefix, const char *what, char *buf, size_t n)
 {
@@ -142,4 +143,21 @@ void nl_study_mean_sd(const double *v, int n, double *m, double *sd)
   *m = s / n;
   for (int i = 0; i < n; i++) ss += (v[i] - *m) * (v[i] - *m);
   *sd = n > 1 ? sqrt(ss / (n - 1)) : 0;
+}
+
+double nl_study_mean_where(const nl_table *t, const char *key, const char *value, const char *col,
+                           const char *pcol, double alpha, int *below)
+{
+  size_t kc = nl_table_column_must(t, key);
+  double s = 0;
+  int n = 0, b = 0;
+  char buf[32];
+  for (size_t k = 0; k < t->nrows; k++)
+    if (!strcmp(nl_table_cell_text(t, k, kc, buf), value)) {
+      s += nl_table_value(t, k, col);
+      if (pcol) b += nl_table_value(t, k, pcol) < alpha;
+      n++;
+    }
+  if (below) *below = b;
+  return n ? s / n : NAN;
 }

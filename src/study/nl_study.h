@@ -101,4 +101,10 @@ double nl_study_ks_channels(const nl_image *a, const nl_image *b, double *per);
  * the summaries of quantities measured over seeds. */
 void nl_study_mean_sd(const double *v, int n, double *m, double *sd);
 
+/* Mean of column `col` over the rows of a per-seed table whose text column
+ * `key` reads `value` (0 rows: NaN); with pcol, *below (if not NULL) gets how
+ * many of those rows have pcol < alpha: "rejected on k of n seeds". */
+double nl_study_mean_where(const nl_table *t, const char *key, const char *value, const char *col,
+                           const char *pcol, double alpha, int *below);
+
 #endif
