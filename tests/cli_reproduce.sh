@@ -7,6 +7,7 @@
 #    leaves no figure under its final name that is not whole and no folder
 #    with a manifest but without its figures; a rerun recovers;
 #  - a second reproduce into the same folder names the first and exits 1;
+#  - list (id, name, title) and params EXPERIMENT answer as TSV tables;
 #  - bench runs every benchmark, skips meson's bench_*.p/ folders, and fails
 #    at the end naming the failed ones.
 # Args: NOISELAB_SCRIPT EXPECT OUTDIR. A fake gnuplot on PATH writes half a
@@ -27,6 +28,15 @@ one_line_exit2() {   # WANT_FRAGMENT ARGS...
     || fail "noiselab $*: rc=$rc, wanted exit 2 and one line with '$want'; got: $err"
 }
 one_line_exit2 "unknown experiment 'Z9'" check Z9
+one_line_exit2 "unknown experiment 'Z9'" params Z9
+# list and params: TSV with a header, read by column name
+. "$root/tests/tsv.sh"
+"$nl" list > "$out/list.tsv" || fail "list failed"
+[ "$(tsv_awk 'FNR > 1 && v("title") != "" { k++ } END { print k }' "$out/list.tsv")" = "$(($(wc -l < "$out/list.tsv") - 1))" ] \
+  || fail "list: a row without a title: $(cat "$out/list.tsv")"
+[ "$(tsv_awk 'v("id") == "S3" { print v("name") }' "$out/list.tsv")" = s3_fbm ] || fail "list: no S3"
+"$nl" params S3 > "$out/params.tsv" || fail "params S3 failed"
+[ "$(tsv_awk 'v("name") == "octaves" { print v("default") }' "$out/params.tsv")" = 6 ] || fail "params S3: $(cat "$out/params.tsv")"
 one_line_exit2 "--seed: '99999999999' is not an integer in 0..4294967295" reproduce --quick --seed 99999999999 --out "$out/seed" S3
 one_line_exit2 "--seed: '4294967296'" reproduce --quick --seed 4294967296 --out "$out/seed" S3
 [ ! -e "$out/seed" ] || fail "a refused seed made $out/seed"
