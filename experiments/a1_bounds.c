@@ -12,9 +12,9 @@ int main(int argc, char **argv)
 {
   nl_harness *r = nl_harness_begin("a1_bounds", "A1 - Octave, fractal and incremental bounds", argc, argv);
   int nmax = (int)nl_harness_param_int(r, "octaves", nl_harness_quick(r) ? 8 : 12, 1, 30,
-                                   "largest octave count n the bounds are evaluated at (quick 8)");
+                                       "largest octave count n the bounds are evaluated at (quick 8)");
   long points = nl_harness_param_int(r, "points", nl_harness_quick(r) ? 5000 : 100000, 1, 100000000,
-                                 "random evaluation points per octave count the bounds are checked against (quick 5000)");
+                                     "random evaluation points per octave count the bounds are checked against (quick 5000)");
   nl_harness_params_done(r);
   int seeds = nl_harness_seeds(r);
   unsigned long seed0 = nl_harness_seed(r);
@@ -50,14 +50,14 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, t, "bounds.tsv");
 
   nl_harness_text(r, "**Paper:** |b_i| <= 2^-i (eq. 4.1), |Fnoise_n| <= S_{n-1}, S_n = 2 - 2^-n "
-                    "(eq. 4.2-4.3), and after k octaves the rest of the sum adds at most "
-                    "S_{Nmax-1} - S_{k-1} (eq. 5.3-5.4, read as the interval partial +- remainder). "
-                    "All assume |noise| <= 1.\n\n"
-                    "**Ours:** Perlin's improved 3D noise on %ld random points in [-100, 100)^3 "
-                    "per octave count and seed, %d seeds. `S` is the paper's bound S_{n-1}; "
-                    "`bound` = %.4f S_{n-1} uses the analytic bound of improved noise "
-                    "(NL_NOISE3_BOUND, gradients of length sqrt 2). `over_*` count points whose sum "
-                    "leaves the fractal bound, or some incremental interval.\n",
+                     "(eq. 4.2-4.3), and after k octaves the rest of the sum adds at most "
+                     "S_{Nmax-1} - S_{k-1} (eq. 5.3-5.4, read as the interval partial +- remainder). "
+                     "All assume |noise| <= 1.\n\n"
+                     "**Ours:** Perlin's improved 3D noise on %ld random points in [-100, 100)^3 "
+                     "per octave count and seed, %d seeds. `S` is the paper's bound S_{n-1}; "
+                     "`bound` = %.4f S_{n-1} uses the analytic bound of improved noise "
+                     "(NL_NOISE3_BOUND, gradients of length sqrt 2). `over_*` count points whose sum "
+                     "leaves the fractal bound, or some incremental interval.\n",
                   points, seeds, NL_NOISE3_BOUND);
   nl_harness_report_table(r, t, "Observed extremes against the bounds", 4);
   nl_harness_figure(r, "bounds.png", "Largest |Fnoise_n| seen against S_{n-1} and 1.2247 S_{n-1}");
@@ -79,10 +79,10 @@ int main(int argc, char **argv)
     snprintf(paper, sizeof paper, "the paper's fractal bound failed at %ld points and an incremental interval at %ld "
              "(first at %ld octaves)", over[0], over[1], at[0] ? at[0] : at[1]);
   nl_harness_text(r, "The largest single-octave |noise| seen is %.6f. Improved noise can exceed 1 "
-                    "(its analytic bound is 1.2247), so the paper's unit bound is an assumption, not a "
-                    "theorem, for it. Over the %d octave counts (%ld points each) %s; with the analytic "
-                    "bound, %ld and %ld points. Sums stay far inside either bound because the extremes of "
-                    "different octaves rarely coincide.\n",
+                     "(its analytic bound is 1.2247), so the paper's unit bound is an assumption, not a "
+                     "theorem, for it. Over the %d octave counts (%ld points each) %s; with the analytic "
+                     "bound, %ld and %ld points. Sums stay far inside either bound because the extremes of "
+                     "different octaves rarely coincide.\n",
                   m1, nmax, points * seeds, paper, over[2], over[3]);
   free(maxes);
   nl_table_free(t);

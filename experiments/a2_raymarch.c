@@ -100,7 +100,7 @@ int main(int argc, char **argv)
   const char *timed[] = {"plain_ms", "plain_ms_sd", "bounded_ms", "bounded_ms_sd", "ratio"};
   for (int k = 0; k < 5; k++) nl_harness_check(r, "timing.tsv", timed[k], "ignore");
   nl_image *m = nl_image_montage((const nl_image *const *)panels, (const char *const *)labels, NROWS, 3,
-                           "Smoke ball, incremental bounding, octaves 0..N");
+                                 "Smoke ball, incremental bounding, octaves 0..N");
   nl_harness_write_image(r, m, "balls.png");
   nl_harness_write_image(r, panels[NROWS - 1], "ball.png");
 
@@ -115,31 +115,31 @@ int main(int argc, char **argv)
   render_pair(r, &p, su, img0, img1, &unit);
 
   nl_harness_text(r, "**Paper (Table 5.1, GPU):** 512 x 512, step 0.01, stop at 99%% opacity; plain / "
-                    "bounded ms at 0, 1, 2, 5, 7, 10 octaves: 54.1/19.1 ... 1069.1/89.4 (ratio 2.8 "
-                    "to 12). **Ours:** one CPU thread, %d x %d, orthographic along +z through "
-                    "[-1/2, 1/2]^3, density CLAMP(%g |p| + 1 + Fnoise(%g p)), Beer-Lambert with "
-                    "kappa = %g, %d seeds (permutation tables); times are the mean and sd over seeds.\n\n"
-                    "**Readings:** \"N octaves\" is read as octaves 0..N (N + 1 terms, column `terms`): "
-                    "with N = 0 the paper's bounded march is still 2.8x faster, which needs at least one "
-                    "noise term to skip. The per-octave bound is %.4f (the analytic bound of improved "
-                    "noise); the paper assumes |noise| <= 1, and the largest |noise| met while marching "
-                    "was %.4f (`max_noise`).\n",
+                     "bounded ms at 0, 1, 2, 5, 7, 10 octaves: 54.1/19.1 ... 1069.1/89.4 (ratio 2.8 "
+                     "to 12). **Ours:** one CPU thread, %d x %d, orthographic along +z through "
+                     "[-1/2, 1/2]^3, density CLAMP(%g |p| + 1 + Fnoise(%g p)), Beer-Lambert with "
+                     "kappa = %g, %d seeds (permutation tables); times are the mean and sd over seeds.\n\n"
+                     "**Readings:** \"N octaves\" is read as octaves 0..N (N + 1 terms, column `terms`): "
+                     "with N = 0 the paper's bounded march is still 2.8x faster, which needs at least one "
+                     "noise term to skip. The per-octave bound is %.4f (the analytic bound of improved "
+                     "noise); the paper assumes |noise| <= 1, and the largest |noise| met while marching "
+                     "was %.4f (`max_noise`).\n",
                   s.width, s.height, s.slope, s.freq, s.kappa, seeds, s.octave_bound,
                   nl_table_value(t, NROWS - 1, "max_noise"));
   nl_harness_report_table(r, t, "Plain against incrementally bounded march; paper beside ours", 4);
   int worst_diff = 0;
   for (int k = 0; k < NROWS; k++) worst_diff = (int)fmax(worst_diff, nl_table_value(t, (size_t)k, "max_diff_levels"));
   nl_harness_text(r, "Bounded and plain images differ by at most %d 8-bit levels at any octave count "
-                    "(they are the same sums in the same order). With the paper's unit bound at N = %d "
-                    "the images differ by %d levels and the march evaluates %.1fx fewer octaves "
-                    "than plain (against %.1fx with the analytic bound). Times are CPU measurements on "
-                    "a shared machine: compare ratios, not milliseconds.\n",
+                     "(they are the same sums in the same order). With the paper's unit bound at N = %d "
+                     "the images differ by %d levels and the march evaluates %.1fx fewer octaves "
+                     "than plain (against %.1fx with the analytic bound). Times are CPU measurements on "
+                     "a shared machine: compare ratios, not milliseconds.\n",
                   worst_diff,
                   label[NROWS - 1], unit.diff, (double)unit.evals[0] / (double)unit.evals[1],
                   nl_table_value(t, NROWS - 1, "eval_ratio"));
   nl_harness_figure(r, "balls.png", "Fig. 5.2: the smoke ball at N = 0, 1, 2, 5, 7, 10 (bounded march)");
   nl_harness_figure(r, "bounds.png", "Fig. 5.3: octaves needed to decide each pixel of the slice z = 0 at "
-                                    "N = 10 (blue few ... red all 11; black: inside the band, never decided)");
+                       "N = 10 (blue few ... red all 11; black: inside the band, never decided)");
   nl_harness_figure(r, "timing.png", "Table 5.1 as ratios: plain / bounded time and noise evaluations, ours and the paper's");
   for (int k = 0; k < NROWS; k++) { nl_image_free(panels[k]); free(labels[k]); }
   nl_image_free(m); nl_image_free(dm);

@@ -103,13 +103,13 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, pt, "psd.tsv");
 
   nl_harness_text(r, "**Paper (Table 5.2):** [F_inf, F_sup] = [0.0019531, 1.7460938] (1st octave), "
-                    "[0.0292969, 2.765625] (2nd), [0.0019531, 3.1738281] (Fnoise_2), T = (2/255)^2; "
-                    "sample length and rate not given.\n\n"
-                    "**Reading chosen:** a line of length %g units (frequency resolution 1/%g = "
-                    "%.7f: the paper's F_inf 0.0019531 = 1/512 and all its values are multiples of "
-                    "1/512), %g samples per unit, %s, %s; Gamma(lambda) includes lambda's own bin "
-                    "and Gamma^-1(E) is the lowest frequency whose Gamma is <= E. %d seeds "
-                    "(permutation tables).\n",
+                     "[0.0292969, 2.765625] (2nd), [0.0019531, 3.1738281] (Fnoise_2), T = (2/255)^2; "
+                     "sample length and rate not given.\n\n"
+                     "**Reading chosen:** a line of length %g units (frequency resolution 1/%g = "
+                     "%.7f: the paper's F_inf 0.0019531 = 1/512 and all its values are multiples of "
+                     "1/512), %g samples per unit, %s, %s; Gamma(lambda) includes lambda's own bin "
+                     "and Gamma^-1(E) is the lowest frequency whose Gamma is <= E. %d seeds "
+                     "(permutation tables).\n",
                   rd.length, rd.length, 1.0 / rd.length, rd.rate,
                   rd.shader ? "the shader's encoded value (noise + 1)/2" : "raw noise values",
                   rd.axis ? "along the x axis through the origin" : "along an oblique line (not 256-periodic)",
@@ -119,19 +119,19 @@ int main(int argc, char **argv)
   nl_harness_report_table(r, sw, "Sensitivity: mean F_inf, F_sup over 3 seeds when one choice changes", 5);
   nl_harness_figure(r, "sweep.png", "F_sup of the three signals against sample length and rate");
   nl_harness_text(r, "F_sup is a property of the noise (where the tail energy drops under T): it "
-                    "settles once the length exceeds ~128 units and does not move with the rate "
-                    "above 8 samples per unit, so the unstated sampling cannot explain the gap to "
-                    "the paper's F_sup (1.746 for the first octave): at 1.746 our tail energy is "
-                    "about T/20, so the paper's base noise had markedly more energy above 1.1 cycles "
-                    "per unit than improved noise evaluated in double precision (this run measures no other "
-                    "noise, so it names none). The ratio of the octaves' F_sup, about 1.6-1.7, "
-                    "is close to the paper's 2.766 / 1.746 = 1.58. F_inf with sigma = sd stays near "
-                    "0.08 (octave 1) whatever the length; only the RMS reading of sigma "
-                    "(`f_inf_rms`, sigma^2 = mean^2 + var, with the shader's mean of 1/2) lands on "
-                    "the first bin, 1/length, which is the paper's 0.0019531 = 1/512 for the first "
-                    "octave and Fnoise_2 (and gives 1/512, not 0.0293, for the second octave). "
-                    "Encoding the raw values instead of (noise + 1)/2 raises F_sup (four times the "
-                    "energy against the same T).\n");
+                     "settles once the length exceeds ~128 units and does not move with the rate "
+                     "above 8 samples per unit, so the unstated sampling cannot explain the gap to "
+                     "the paper's F_sup (1.746 for the first octave): at 1.746 our tail energy is "
+                     "about T/20, so the paper's base noise had markedly more energy above 1.1 cycles "
+                     "per unit than improved noise evaluated in double precision (this run measures no other "
+                     "noise, so it names none). The ratio of the octaves' F_sup, about 1.6-1.7, "
+                     "is close to the paper's 2.766 / 1.746 = 1.58. F_inf with sigma = sd stays near "
+                     "0.08 (octave 1) whatever the length; only the RMS reading of sigma "
+                     "(`f_inf_rms`, sigma^2 = mean^2 + var, with the shader's mean of 1/2) lands on "
+                     "the first bin, 1/length, which is the paper's 0.0019531 = 1/512 for the first "
+                     "octave and Fnoise_2 (and gives 1/512, not 0.0293, for the second octave). "
+                     "Encoding the raw values instead of (noise + 1)/2 raises F_sup (four times the "
+                     "energy against the same T).\n");
   nl_table_free(t);
   nl_table_free(sw);
   nl_table_free(pt);

@@ -35,11 +35,11 @@ int main(int argc, char **argv)
   nl_harness *r = nl_harness_begin("a4_normalised", "A4 - Spectrally normalised noise", argc, argv);
   int quick = nl_harness_quick(r);
   int size = (int)nl_harness_param_int(r, "size", quick ? 96 : 256, 8, 4096,
-                                   "side in pixels of the 2D noise images (quick 96)");
+                                       "side in pixels of the 2D noise images (quick 96)");
   double rate2d = nl_harness_param(r, "rate", 2.0, 0.1, 1024,
-                               "samples per unit of the 2D images and the 1D line (Arnerin Fig. 5.7: 2)");
+                                   "samples per unit of the 2D images and the 1D line (Arnerin Fig. 5.7: 2)");
   double length = nl_harness_param(r, "length", quick ? 128 : 512, 8, 1e6,
-                               "length of the sampled 1D line in noise units (quick 128)");
+                                   "length of the sampled 1D line in noise units (quick 128)");
   nl_harness_params_done(r);
   int seeds = nl_harness_seeds(r) > 64 ? 64 : nl_harness_seeds(r);
   double fs[64], a0[64], a1[64];
@@ -76,17 +76,17 @@ int main(int argc, char **argv)
   nl_study_montage(r, (const nl_image *const *)pan, labels, 2, 2, "Fig. 5.7: 2 samples per unit", "normalised.png");
 
   nl_harness_text(r, "**Paper (Fig. 5.7):** the original and the spectrally normalised Perlin noise "
-                    "Nnoise(x) = noise(x / F_sup), sampled at 2 x 2 pixels per unit^2: aliasing "
-                    "patterns in (a), none in (b) (images only). **Ours:** the plane z = 0.5 of improved "
-                    "noise at %g samples per unit, F_sup measured per seed as in A3 (raw values, an "
-                    "oblique line of %g units at 64 samples per unit, T = (2/255)^2): mean %.4f over %d "
-                    "seeds. The table gives the fraction of the variance above the Nyquist frequency "
-                    "%g of that sampling, i.e. what aliases.\n", rate2d, length, mf, seeds, 0.5 * rate2d);
+                     "Nnoise(x) = noise(x / F_sup), sampled at 2 x 2 pixels per unit^2: aliasing "
+                     "patterns in (a), none in (b) (images only). **Ours:** the plane z = 0.5 of improved "
+                     "noise at %g samples per unit, F_sup measured per seed as in A3 (raw values, an "
+                     "oblique line of %g units at 64 samples per unit, T = (2/255)^2): mean %.4f over %d "
+                     "seeds. The table gives the fraction of the variance above the Nyquist frequency "
+                     "%g of that sampling, i.e. what aliases.\n", rate2d, length, mf, seeds, 0.5 * rate2d);
   nl_harness_report_table(r, t, "Energy above Nyquist before and after normalisation (mean and sd over seeds)", 5);
   nl_harness_figure(r, "normalised.png", "Fig. 5.7: (a) noise, (b) noise(x / F_sup), 2 samples per unit");
   nl_harness_text(r, "Normalising by F_sup stretches the noise by %.2f so that the energy above Nyquist "
-                    "is at most T by construction; it also makes the features larger, which is the "
-                    "price of the normalisation.\n", mf);
+                     "is at most T by construction; it also makes the features larger, which is the "
+                     "price of the normalisation.\n", mf);
   nl_image_free(pan[0]); nl_image_free(pan[1]);
   nl_table_free(t);
   nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */

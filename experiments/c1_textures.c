@@ -55,16 +55,16 @@ int main(int argc, char **argv)
   }
   nl_harness_write_table(r, sum, "summary.tsv");
   nl_harness_text(r, "**Thesis:** three patterns per texture (images only); cloud, erosion and fire blend two "
-                    "colours with the noise value as alpha, marble goes through a sine; the control term "
-                    "follows the texture (eq. 3.8, 4.1, 4.2, 4.3). **Ours:** %d x %d control grid, thesis "
-                    "setting (F = %d, f1 = %g, a1 = %g, w1 = %g, w2 = %g), %d seeds per panel; the control "
-                    "value is c = (1 + V)/2, (1 + sin(pi V))/2, |V| or the octave sum of |noise| over its "
-                    "bound (nl_cheng.h); images stretch each value's 1st..99th percentile to alpha 0..1.\n",
+                     "colours with the noise value as alpha, marble goes through a sine; the control term "
+                     "follows the texture (eq. 3.8, 4.1, 4.2, 4.3). **Ours:** %d x %d control grid, thesis "
+                     "setting (F = %d, f1 = %g, a1 = %g, w1 = %g, w2 = %g), %d seeds per panel; the control "
+                     "value is c = (1 + V)/2, (1 + sin(pi V))/2, |V| or the octave sum of |noise| over its "
+                     "bound (nl_cheng.h); images stretch each value's 1st..99th percentile to alpha 0..1.\n",
                  grid, grid, base.octaves, base.f1, base.a1, base.w1, base.w2, k);
   nl_harness_report_table(r, sum, "Per texture and pattern: statistics of the optimised tables (mean and spread over seeds)", 4);
   double wks = nl_study_column_min(sum, "uniform_ks"), wku = nl_study_column_min(sum, "uniform_kuiper");
   nl_harness_text(r, "Uniformity: the smallest fraction of runs not rejected as non-uniform at alpha = 0.05 is "
-                    "%.2f (KS) and %.2f (Kuiper) over the twelve panels.\n", wks, wku);
+                     "%.2f (KS) and %.2f (Kuiper) over the twelve panels.\n", wks, wku);
   nl_table_free(sum);
   nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);

@@ -60,13 +60,13 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, sum, "summary.tsv");
 
   nl_harness_text(r, "**Thesis:** two patterns optimised with the KS term (eq. 3.7) and with the "
-                    "chi-square term (eq. 3.4, 512 angles in 500 bins): the KS CDF lies closer to the "
-                    "ideal line, the chi-square error is lower under the chi-square objective, and E_Con "
-                    "is close in both (numbers not printed). **Ours:** patterns %s and %s on a %d x %d "
-                    "control grid, thesis setting (M = 512, F = 4, f1 = %g, a1 = %g, w1 = %g, w2 = %g), "
-                    "%d seeds each; the chi-square term enters E as Cramer's V = sqrt(chi2 / (n (K - 1))) "
-                    "so the thesis weights keep their balance (nl_cheng.h). Kuiper's V is a third "
-                    "objective. Statistics are over all 512 angles.\n",
+                     "chi-square term (eq. 3.4, 512 angles in 500 bins): the KS CDF lies closer to the "
+                     "ideal line, the chi-square error is lower under the chi-square objective, and E_Con "
+                     "is close in both (numbers not printed). **Ours:** patterns %s and %s on a %d x %d "
+                     "control grid, thesis setting (M = 512, F = 4, f1 = %g, a1 = %g, w1 = %g, w2 = %g), "
+                     "%d seeds each; the chi-square term enters E as Cramer's V = sqrt(chi2 / (n (K - 1))) "
+                     "so the thesis weights keep their balance (nl_cheng.h). Kuiper's V is a third "
+                     "objective. Statistics are over all 512 angles.\n",
                  pats[0], pats[1], grid, grid, base.f1, base.a1, base.w1, base.w2, k);
   nl_harness_report_table(r, sum, "Mean (sd, min p) over seeds per pattern and objective; uniform_* = fraction of "
                           "runs not rejected as non-uniform at alpha = 0.05", 4);
@@ -76,15 +76,15 @@ int main(int argc, char **argv)
     double chi_ks = nl_table_value(sum, row_ks, "chi2"), chi_chi = nl_table_value(sum, row_chi, "chi2");
     double con_ks = nl_table_value(sum, row_ks, "E_con"), con_chi = nl_table_value(sum, row_chi, "E_con");
     nl_harness_text(r, "%s: E_KS %.4g (KS objective) vs %.4g (chi-square objective): KS CDF %s. "
-                      "chi2 %.4g vs %.4g: chi-square error %s under the chi-square objective. "
-                      "E_Con %.4g vs %.4g (%.1f%% apart).\n",
+                       "chi2 %.4g vs %.4g: chi-square error %s under the chi-square objective. "
+                       "E_Con %.4g vs %.4g (%.1f%% apart).\n",
                    pats[i], ks_ks, ks_chi, ks_ks < ks_chi ? "closer to the ideal line, as in the thesis" : "NOT closer",
                    chi_ks, chi_chi, chi_chi < chi_ks ? "lower" : "NOT lower",
                    con_ks, con_chi, 100 * fabs(con_ks - con_chi) / con_chi);
   }
   double worst_ks = nl_study_column_min(sum, "uniform_ks"), worst_ku = nl_study_column_min(sum, "uniform_kuiper");
   nl_harness_text(r, "Uniformity preserved? The smallest fraction of runs not rejected at alpha = 0.05 "
-                    "is %.2f by KS and %.2f by Kuiper%s\n", worst_ks, worst_ku,
+                     "is %.2f by KS and %.2f by Kuiper%s\n", worst_ks, worst_ku,
                  worst_ks == 1 && worst_ku == 1 ? ": every optimised table is indistinguishable from uniform."
                                                 : ": some optimised tables are rejected (see p_*_min).");
   /* How regular is "uniform"? P(D_n <= d) under the null: the chance that a
@@ -92,13 +92,13 @@ int main(int argc, char **argv)
   for (int o = 0; o < NOBJ; o++) {
     double d = nl_table_value(sum, (size_t)o, "E_ks");
     nl_harness_text(r, "%s objective (flower): mean E_KS %.4g; a random table of %zu uniform angles has "
-                      "P(D <= %.4g) = %.3g (median D about %.4g).\n", onames[o], d, base.m, d,
+                       "P(D <= %.4g) = %.3g (median D about %.4g).\n", onames[o], d, base.m, d,
                    nl_stats_ks_cdf(base.m, d, NULL), nl_cheng_ks_median(base.m));
   }
   nl_harness_text(r, "So p-values near 1 do not mean \"typical uniform\": the statistic terms drive the angles "
-                    "to a more-regular-than-random set (under the chi-square objective %d of %zu bins hold exactly "
-                    "one angle on %s, first seed; in a random table about %.0f%% do), which no test at "
-                    "alpha = 0.05 rejects but which a random table would almost never produce.\n",
+                     "to a more-regular-than-random set (under the chi-square objective %d of %zu bins hold exactly "
+                     "one angle on %s, first seed; in a random table about %.0f%% do), which no test at "
+                     "alpha = 0.05 rejects but which a random table would almost never produce.\n",
                  single[0], base.chisq_bins, pats[0],
                  100.0 * (double)base.m / base.chisq_bins * pow(1.0 - 1.0 / base.chisq_bins, (double)base.m - 1));
   for (int i = 0; i < NPAT; i++) {

@@ -54,16 +54,16 @@ int main(int argc, char **argv)
   int monotone = 1;
   for (int i = 1; i < NF; i++) monotone &= ro[i] > ro[i - 1];
   nl_harness_text(r, "**Thesis:** the controlled fractal sum for f1 = 2, 4, 6, 8 (Fig 4.7, images only); "
-                    "\"the appearance of lower starting frequency is smoother\". **Ours:** pattern star, "
-                    "%d x %d control grid, F = %d, a1 = %g, w1 = %g, w2 = %g, %d seeds per f1. Smoothness is "
-                    "measured as the rms gradient of the control value (\"roughness\", per unit length).\n",
+                     "\"the appearance of lower starting frequency is smoother\". **Ours:** pattern star, "
+                     "%d x %d control grid, F = %d, a1 = %g, w1 = %g, w2 = %g, %d seeds per f1. Smoothness is "
+                     "measured as the rms gradient of the control value (\"roughness\", per unit length).\n",
                  grid, grid, base.octaves, base.a1, base.w1, base.w2, k);
   nl_harness_figure(r, "panels.png", "Controlled value (top) and cloud texture (bottom) for f1 = 2, 4, 6, 8");
   nl_harness_report_table(r, sum, "Statistics per f1 (mean and spread over seeds)", 4);
   int best = 0;
   for (int i = 1; i < NF; i++) if (ec[i] < ec[best]) best = i;
   nl_harness_text(r, "Roughness %.3g, %.3g, %.3g, %.3g for f1 = 2, 4, 6, 8: %s. E_Con %.4g, %.4g, %.4g, %.4g is "
-                    "lowest at f1 = %g (the thesis gives no E_Con per f1 to compare).\n",
+                     "lowest at f1 = %g (the thesis gives no E_Con per f1 to compare).\n",
                  ro[0], ro[1], ro[2], ro[3],
                  monotone ? "strictly increasing with f1, so lower f1 is smoother, as the thesis says"
                           : "NOT monotone in f1",

@@ -20,7 +20,7 @@ static const double thesis[NPAIR][NL_STUDY_TABLE41_COLS] = {
 /* Runs (w1, w2) over the seeds and appends a summary row labelled by the
  * reading, the panel letter and the weights; returns the first seed's table. */
 static nl_noise_grad2 *run_pair(const nl_study_cheng *s, const nl_cheng_pattern *pat, const char *reading,
-                          const char *panel, double w1, double w2, nl_table *sum)
+                                const char *panel, double w1, double w2, nl_table *sum)
 {
   nl_cheng_config c = s->c;
   c.w1 = w1;
@@ -54,7 +54,7 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, one, "configured.tsv");
   if (!table) {
     nl_harness_text(r, "One run of the flower pattern at the configured weights (w1, w2) = (%g, %g), %d seeds "
-                      "(table=0: Table 4.1 and the internal sweep skipped).\n", base.w1, base.w2, nl_harness_seeds(r));
+                       "(table=0: Table 4.1 and the internal sweep skipped).\n", base.w1, base.w2, nl_harness_seeds(r));
     nl_harness_report_table(r, one, "Configured weights", 4);
   }
   nl_table_free(one);
@@ -87,13 +87,13 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, sweep, "sweep.tsv");
   int k = nl_harness_seeds(r);
   nl_harness_text(r, "**Thesis (Table 4.1):** six pairs from (w1, w2) = (0, 1) to (1e-5, 0.99999); E_KS falls "
-                    "from 0.134 to 0.013 down the table while E_Con stays near 49.8; the text calls (a) the "
-                    "best-preserved pattern and (f) the case where \"the weight of KS term sets to large value\", "
-                    "which is backwards for the printed weights. **Ours:** pattern flower, %d x %d control "
-                    "grid, thesis setting otherwise, %d seeds per pair; each pair also run swapped "
-                    "(w1 <-> w2), and a sweep of %d pairs with w1 + w2 = 1 and w1 / w2 log-spaced in [%g, %g]. Our E_Con "
-                    "sums over %d control points and so is on another scale than the thesis's (its grid is "
-                    "not stated); compare trends.\n", s.grid, s.grid, k, nsweep, lo, hi, (int)pat->n);
+                     "from 0.134 to 0.013 down the table while E_Con stays near 49.8; the text calls (a) the "
+                     "best-preserved pattern and (f) the case where \"the weight of KS term sets to large value\", "
+                     "which is backwards for the printed weights. **Ours:** pattern flower, %d x %d control "
+                     "grid, thesis setting otherwise, %d seeds per pair; each pair also run swapped "
+                     "(w1 <-> w2), and a sweep of %d pairs with w1 + w2 = 1 and w1 / w2 log-spaced in [%g, %g]. Our E_Con "
+                     "sums over %d control points and so is on another scale than the thesis's (its grid is "
+                     "not stated); compare trends.\n", s.grid, s.grid, k, nsweep, lo, hi, (int)pat->n);
   nl_harness_report_table(r, cmp, "Table 4.1: thesis vs ours (means over seeds; swapped = the same pair with w1 and w2 exchanged)", 4);
   /* Which reading reproduces the table's direction from (b) to (f)? The
    * thesis's E_KS ratio f/b is 0.27 and E_Con rises; compare both readings'
@@ -105,9 +105,9 @@ int main(int argc, char **argv)
   double t_ratio = thesis[5][1] / thesis[1][1];
   double d_printed = fabs(log((ks_f / ks_b) / t_ratio)), d_swapped = fabs(log((sks_f / sks_b) / t_ratio));
   nl_harness_text(r, "From (b) to (f) the thesis's E_KS changes by a factor %.2f and its E_Con by %+.2f%%. "
-                    "Printed weights, ours: E_KS %.4g -> %.4g (factor %.2f), E_Con %.4g -> %.4g (%+.2f%%). "
-                    "Swapped weights, ours: E_KS %.4g -> %.4g (factor %.2f), E_Con %.4g -> %.4g (%+.2f%%). "
-                    "**The data support the %s reading.** %s\n",
+                     "Printed weights, ours: E_KS %.4g -> %.4g (factor %.2f), E_Con %.4g -> %.4g (%+.2f%%). "
+                     "Swapped weights, ours: E_KS %.4g -> %.4g (factor %.2f), E_Con %.4g -> %.4g (%+.2f%%). "
+                     "**The data support the %s reading.** %s\n",
                  t_ratio, 100 * (thesis[5][3] / thesis[1][3] - 1), ks_b, ks_f, ks_f / ks_b, con_b, con_f,
                  100 * (con_f / con_b - 1), sks_b, sks_f, sks_f / sks_b, scon_b, scon_f, 100 * (scon_f / scon_b - 1),
                  d_swapped < d_printed ? "text's (swapped)" : "printed",
@@ -133,10 +133,10 @@ int main(int argc, char **argv)
   if (isnan(safe)) snprintf(safe_txt, sizeof safe_txt, "even the largest swept w1 / w2 has a rejected run");
   else snprintf(safe_txt, sizeof safe_txt, "every run passes both tests from w1 / w2 = %.3g upwards", safe);
   nl_harness_text(r, "Uniformity: over all pairs and sweep points, the smallest fraction of runs not rejected "
-                    "as non-uniform at alpha = 0.05 is %.2f (KS) and %.2f (Kuiper). %d of the six printed pairs "
-                    "have at least one run rejected by KS or Kuiper (see p_ks_min, p_kuiper_min), so the "
-                    "thesis's claim that the statistics are preserved %s. In the sweep %s; the default "
-                    "w1 / w2 = 0.995 / 0.005 = 199.\n", worst_ks, worst_ku, rejected,
+                     "as non-uniform at alpha = 0.05 is %.2f (KS) and %.2f (Kuiper). %d of the six printed pairs "
+                     "have at least one run rejected by KS or Kuiper (see p_ks_min, p_kuiper_min), so the "
+                     "thesis's claim that the statistics are preserved %s. In the sweep %s; the default "
+                     "w1 / w2 = 0.995 / 0.005 = 199.\n", worst_ks, worst_ku, rejected,
                  rejected ? "does not hold for control-dominated weights" : "holds for every printed pair here",
                  safe_txt);
   nl_harness_figure(r, "textures.png", "Fig 4.8: cloud textures for the six printed weight pairs (first seed)");

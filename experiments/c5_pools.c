@@ -21,26 +21,26 @@ static void report(nl_harness *r, const nl_study_cheng_pools *T, const nl_cheng_
                    const nl_cheng_config *c, int grid, int nseeds)
 {
   nl_harness_text(r, "**Thesis** (sec. 3.5, Tables 4.2-4.4): Q = 100 re-optimisations of the low-frequency gradients "
-                    "under E_R (eq. 3.16-3.18), N = 100 solutions each within epsilon = 10.0 of the run's best, "
-                    "hierarchical clustering with a hand-tuned cutoff for the initial K, GMM by EM with K grown while "
-                    "AIC improves; 1000 input samples; one run per texture, patterns not named. **Ours:** patterns "
-                    "disc (erosion), rings (marble), flower (cloud) on a %d x %d control grid, thesis setting (M = %zu, "
-                    "F = %d, f1 = %g, a1 = %g, w1 = %g, w2 = %g); Q = %d, N = %d, epsilon = %g; low entries = variables "
-                    "of level%s 1%s; %zu input samples drawn from the pool; angles as (cos, sin) pairs (the thesis's own "
-                    "representation of a gradient, eq. 3.7's text) so distances have no cut at 0 / 2 pi; complete "
-                    "linkage (the Hausdorff-type merge distance: every pair in a cluster within the cutoff); %s "
-                    "covariances; AIC threshold T = %g, path capped at K0 + %zu. Means and sd over %d seeds of the "
-                    "input subsample and EM's k-means seeding, one pool per texture. All readings: "
-                    "src/cheng/nl_cheng_repro.h.\n",
+                     "under E_R (eq. 3.16-3.18), N = 100 solutions each within epsilon = 10.0 of the run's best, "
+                     "hierarchical clustering with a hand-tuned cutoff for the initial K, GMM by EM with K grown while "
+                     "AIC improves; 1000 input samples; one run per texture, patterns not named. **Ours:** patterns "
+                     "disc (erosion), rings (marble), flower (cloud) on a %d x %d control grid, thesis setting (M = %zu, "
+                     "F = %d, f1 = %g, a1 = %g, w1 = %g, w2 = %g); Q = %d, N = %d, epsilon = %g; low entries = variables "
+                     "of level%s 1%s; %zu input samples drawn from the pool; angles as (cos, sin) pairs (the thesis's own "
+                     "representation of a gradient, eq. 3.7's text) so distances have no cut at 0 / 2 pi; complete "
+                     "linkage (the Hausdorff-type merge distance: every pair in a cluster within the cutoff); %s "
+                     "covariances; AIC threshold T = %g, path capped at K0 + %zu. Means and sd over %d seeds of the "
+                     "input subsample and EM's k-means seeding, one pool per texture. All readings: "
+                     "src/cheng/nl_cheng_repro.h.\n",
                  grid, grid, c->m, c->octaves, c->f1, c->a1, c->w1, c->w2, po->runs, po->keep, po->epsilon,
                  po->low_levels > 1 ? "s" : "", po->low_levels > 1 ? "..2" : "", mo->samples,
                  mo->gmm.covariance == NL_GMM_FULL ? "full" : "diagonal", mo->threshold, mo->k_extra, nseeds);
   nl_harness_report_table(r, T->gmm, "Tables 4.2-4.4, ours beside the thesis's (thesis_* columns): one row per texture, "
-                             "split and cutoff rule", 5);
+                          "split and cutoff rule", 5);
   for (size_t q = 0; q < T->gmm->nrows; q++) {
     const char *tex = nl_study_text(T->gmm, q, "texture"), *rule = nl_study_text(T->gmm, q, "cutoff_rule");
     nl_harness_text(r, "%s (low levels %g), %s cutoff %.4g: K %.3g -> %.3g (thesis %g -> %g), AIC %.6g (thesis %.6g; "
-                      "per input sample %.4g vs %.4g), status %s.\n", tex, nl_table_value(T->gmm, q, "low_levels"), rule,
+                       "per input sample %.4g vs %.4g), status %s.\n", tex, nl_table_value(T->gmm, q, "low_levels"), rule,
                    nl_table_value(T->gmm, q, "cutoff"), nl_table_value(T->gmm, q, "K_initial"), nl_table_value(T->gmm, q, "K_final"),
                    nl_table_value(T->gmm, q, "thesis_K_initial"), nl_table_value(T->gmm, q, "thesis_K_final"), nl_table_value(T->gmm, q, "AIC"),
                    nl_table_value(T->gmm, q, "thesis_AIC"), nl_table_value(T->gmm, q, "AIC") / nl_table_value(T->gmm, q, "input_samples"),
@@ -48,48 +48,48 @@ static void report(nl_harness *r, const nl_study_cheng_pools *T, const nl_cheng_
   }
   double maxchord = 2 * sqrt(nl_table_value(T->orig, 0, "n_low"));
   nl_harness_text(r, "What cannot be compared: the thesis's cutoffs (15.5-19.5) and AIC values are in units of a distance "
-                    "and a dimension it does not state. With %g low angles as (cos, sin) no two solutions are more than "
-                    "2 sqrt(%g) = %.4g apart, so the literal cutoffs leave one cluster (row \"thesis\": status "
-                    "one_cluster, and the AIC path then starts at K = 1); row \"matched_K0\" takes the cutoff that gives "
-                    "the thesis's initial K, the thesis's own rule of tuning the cutoff \"case by case\" for a proper K. "
-                    "Our AIC is, like the thesis's, mostly negative for the same reason (EM collapses each component onto "
-                    "a tight group of near-identical solutions, so the log-likelihood per sample is large and positive), "
-                    "but its size depends on the dimension, the parameter count, reg_covar and how tight the pool's groups "
-                    "are. With the matched cutoff the AIC rule stops at or next to K0 (AIC rises at K0 + 1), where the "
-                    "thesis grew K by 3 to 6.\n",
+                     "and a dimension it does not state. With %g low angles as (cos, sin) no two solutions are more than "
+                     "2 sqrt(%g) = %.4g apart, so the literal cutoffs leave one cluster (row \"thesis\": status "
+                     "one_cluster, and the AIC path then starts at K = 1); row \"matched_K0\" takes the cutoff that gives "
+                     "the thesis's initial K, the thesis's own rule of tuning the cutoff \"case by case\" for a proper K. "
+                     "Our AIC is, like the thesis's, mostly negative for the same reason (EM collapses each component onto "
+                     "a tight group of near-identical solutions, so the log-likelihood per sample is large and positive), "
+                     "but its size depends on the dimension, the parameter count, reg_covar and how tight the pool's groups "
+                     "are. With the matched cutoff the AIC rule stops at or next to K0 (AIC rises at K0 + 1), where the "
+                     "thesis grew K by 3 to 6.\n",
                  nl_table_value(T->orig, 0, "n_low"), nl_table_value(T->orig, 0, "n_low"), maxchord);
   if (T->orig->nrows > NTEX && T->gmm->nrows > 2 * NTEX) {
     double nl2 = nl_table_value(T->orig, NTEX, "n_low");
     nl_harness_text(r, "The other split (low entries = levels 1-2, %g angles, largest chord 2 sqrt(%g) = %.4g), measured on "
-                      "erosion: the thesis's cutoff %g now gives K0 = %.3g (thesis 30) and the AIC path ends at %.3g "
-                      "(thesis 36); the cutoff for K0 = 30 is %.4g. So the thesis's cutoffs are of the size of (cos, sin) "
-                      "distances over a few hundred angles, which hints at the wider split, but does not settle it.\n",
+                       "erosion: the thesis's cutoff %g now gives K0 = %.3g (thesis 30) and the AIC path ends at %.3g "
+                       "(thesis 36); the cutoff for K0 = 30 is %.4g. So the thesis's cutoffs are of the size of (cos, sin) "
+                       "distances over a few hundred angles, which hints at the wider split, but does not settle it.\n",
                    nl2, nl2, 2 * sqrt(nl2), nl_table_value(T->gmm, 2 * NTEX, "cutoff"), nl_table_value(T->gmm, 2 * NTEX, "K_initial"),
                    nl_table_value(T->gmm, 2 * NTEX, "K_final"), nl_table_value(T->gmm, 2 * NTEX + 1, "cutoff"));
   }
   nl_harness_report_table(r, T->orig, "The original optimised table (E_KS, E_Con over all 512 angles and 4 octaves), E_R of the "
-                              "original and of the pool, and times", 5);
+                          "original and of the pool, and times", 5);
   for (size_t q = 0; q < T->orig->nrows; q++)
     nl_harness_text(r, "%s (low levels %g): E_R of the original %.5g; pool runs reach %.5g (best) and the kept solutions "
-                      "have median %.5g; the largest distance of a kept solution above its run's best is %.3g, so "
-                      "epsilon = %g excluded %g of %g solutions: on our scale of E_R the thesis's bound keeps every "
-                      "tail state.\n", nl_study_text(T->orig, q, "texture"), nl_table_value(T->orig, q, "low_levels"),
+                       "have median %.5g; the largest distance of a kept solution above its run's best is %.3g, so "
+                       "epsilon = %g excluded %g of %g solutions: on our scale of E_R the thesis's bound keeps every "
+                       "tail state.\n", nl_study_text(T->orig, q, "texture"), nl_table_value(T->orig, q, "low_levels"),
                    nl_table_value(T->orig, q, "E_R_original"), nl_table_value(T->orig, q, "E_R_pool_best"), nl_table_value(T->orig, q, "E_R_pool_median"),
                    nl_table_value(T->orig, q, "E_R_pool_max_gap"), po->epsilon, nl_table_value(T->gmm, 2 * q, "excluded"),
                    nl_table_value(T->gmm, 2 * q, "pool") + nl_table_value(T->gmm, 2 * q, "excluded"));
   nl_harness_text(r, "**Beyond the paper: does the mixture describe the pool?** The model with the matched cutoff, fitted "
-                    "on the input samples, scored on the pool rows it did not see (mean log-likelihood per row, "
-                    "ll_held, against ll_train), and 1000 draws against 1000 pool rows, angle by angle (two-sample KS: "
-                    "median D and the fraction of the angles where p < 0.05), for full covariances on (cos, sin) (the "
-                    "default), diagonal ones, and full ones on unwrapped angles.\n");
+                     "on the input samples, scored on the pool rows it did not see (mean log-likelihood per row, "
+                     "ll_held, against ll_train), and 1000 draws against 1000 pool rows, angle by angle (two-sample KS: "
+                     "median D and the fraction of the angles where p < 0.05), for full covariances on (cos, sin) (the "
+                     "default), diagonal ones, and full ones on unwrapped angles.\n");
   nl_harness_report_table(r, T->assess, "Held-out likelihood and per-angle KS of the mixture against the pool", 4);
   for (size_t q = 0; q < T->assess->nrows; q++) {
     double tr = nl_table_value(T->assess, q, "ll_train"), he = nl_table_value(T->assess, q, "ll_held");
     nl_harness_text(r, "%s, %s: ll_train %.4g, ll_held %.4g (%s); per-angle KS median D %.3g, rejected on %.0f%% of the angles.\n",
-                   nl_study_text(T->assess, q, "texture"), nl_study_text(T->assess, q, "model"), tr, he,
-                   he < tr - 0.1 * fabs(tr) ? "the mixture fits its input far better than the rest of the pool: over-fitted"
-                                            : "held-out rows score like the input: it generalises",
-                   nl_table_value(T->assess, q, "ks_median"), 100 * nl_table_value(T->assess, q, "ks_reject"));
+                    nl_study_text(T->assess, q, "texture"), nl_study_text(T->assess, q, "model"), tr, he,
+                    he < tr - 0.1 * fabs(tr) ? "the mixture fits its input far better than the rest of the pool: over-fitted"
+                                             : "held-out rows score like the input: it generalises",
+                    nl_table_value(T->assess, q, "ks_median"), 100 * nl_table_value(T->assess, q, "ks_reject"));
   }
   nl_harness_figure(r, "aic.png", "AIC (and BIC) against K along the selection path, per texture and cutoff rule (first seed)");
   nl_harness_figure(r, "cutoff.png", "Initial K against the complete-linkage cutoff, with the thesis's K0 marked");
@@ -105,7 +105,7 @@ int main(int argc, char **argv)
   nl_cheng_model_options mo;
   nl_study_cheng_repro_params(r, &po, &mo);
   int alt = (int)nl_harness_param_int(r, "alt_low_levels", 2, 0, 7,
-                                  "C5 repeats erosion with this low/high split (low_levels); 0: no repeat");
+                                      "C5 repeats erosion with this low/high split (low_levels); 0: no repeat");
   nl_study_cheng_ready(&s);
   nl_harness_note(r, "pool_threads", "%d (results do not depend on it)", po.threads);
   int nseeds = nl_harness_seeds(r) > NL_STUDY_CHENG_MAXSEEDS ? NL_STUDY_CHENG_MAXSEEDS : nl_harness_seeds(r);

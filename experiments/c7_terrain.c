@@ -43,9 +43,9 @@ int main(int argc, char **argv)
   nl_study_cheng_montage(r, panels, plab, 2 * NPAT, NPAT, "Fig 4.15-4.17: patterns and height maps (first seed)", "heightmaps.png");
   nl_harness_write_table(r, sum, "summary.tsv");
   nl_harness_text(r, "**Thesis:** terrain from the flower, \"X\" and star patterns, height = controlled noise "
-                    "(Fig 4.15-4.17, images only). **Ours:** height = the controlled value c = (1 + V)/2 of the "
-                    "cloud variant (eq. 3.8) on a %d x %d mesh over the unit square, %d x %d control grid, thesis "
-                    "setting, %d seeds for the table; surfaces drawn by gnuplot (pm3d).\n", mesh, mesh, grid, grid, k);
+                     "(Fig 4.15-4.17, images only). **Ours:** height = the controlled value c = (1 + V)/2 of the "
+                     "cloud variant (eq. 3.8) on a %d x %d mesh over the unit square, %d x %d control grid, thesis "
+                     "setting, %d seeds for the table; surfaces drawn by gnuplot (pm3d).\n", mesh, mesh, grid, grid, k);
   nl_harness_figure(r, "heightmaps.png", "Patterns and height maps (grey, stretched)");
   nl_harness_figure(r, "terrain.png", "Shaded terrain surfaces (first seed)");
   nl_harness_report_table(r, sum, "Statistics of the optimised tables (mean and spread over seeds)", 4);

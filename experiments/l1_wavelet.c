@@ -14,11 +14,11 @@ int main(int argc, char **argv)
   nl_harness *r = nl_harness_begin("l1_wavelet", "L1 - Wavelet noise: band variance and band limits", argc, argv);
   int quick = nl_harness_quick(r);
   int size = (int)nl_harness_param_int(r, "size", quick ? 128 : 512, 32, 4096,
-                                   "side in pixels of the wavelet-noise images and spectra (quick 128)");
+                                       "side in pixels of the wavelet-noise images and spectra (quick 128)");
   int tile = (int)nl_harness_param_int(r, "tile", NL_EXAMPLE_TILE, 8, 2048,
-                                   "period in pixels of the 2D wavelet-noise tile (even, >= 8)");
+                                       "period in pixels of the 2D wavelet-noise tile (even, >= 8)");
   int tile3 = (int)nl_harness_param_int(r, "tile3", quick ? 32 : NL_EXAMPLE_TILE3, 8, 256,
-                                    "period of the 3D wavelet-noise tile (even, >= 8; quick 32)");
+                                        "period of the 3D wavelet-noise tile (even, >= 8; quick 32)");
   int band = (int)nl_harness_param_int(r, "band", 2, 0, 8, "the band shown in the images (0 = finest)");   /* band shown in the images */
   nl_harness_params_done(r);
   int K = nl_harness_seeds(r), nb = nl_byexample_band_count(size, size);
@@ -111,29 +111,29 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, st, "summary.tsv");
 
   nl_harness_text(r, "Wavelet noise tiles after Cook & DeRose's appendix (2D period %d, 3D period %d), "
-                 "evaluated with the quadratic B-spline; %d seeds from %lu. The downsampling loop "
-                 "uses the 32 taps -16..15 (the appendix's `k <= 2i+16` reads one past its array), "
-                 "the filter is the first 16 printed values mirrored, and the odd-shifted copy is "
-                 "shifted along each axis (the appendix's loop also transposes it).",
-                 tile, tile3, K, seed0);
+                  "evaluated with the quadratic B-spline; %d seeds from %lu. The downsampling loop "
+                  "uses the 32 taps -16..15 (the appendix's `k <= 2i+16` reads one past its array), "
+                  "the filter is the first 16 printed values mirrored, and the odd-shifted copy is "
+                  "shifted along each axis (the appendix's loop also transposes it).",
+                  tile, tile3, K, seed0);
   nl_harness_text(r, "Band variance sigma_N^2 = <N^2> over one period (4 samples per unit and axis): 2D %.4f +- %.4f, 3D %.4f +- %.4f (mean +- sd over seeds). The paper "
-                 "quotes 0.265 for 2D (eq. 11, citing Cook & DeRose); Cook & DeRose's code normalises plain 3D "
-                 "noise by 0.210 and projected noise by 0.296. Our 2D value is %.1f%% %s 0.265 and our 3D "
-                 "value %.1f%% %s 0.210 (the cause of the 3D gap is not measured here); we use our measured "
-                 "values in eq. 12 and 14.", m2, s2, m3, s3, 100 * fabs(m2 / 0.265 - 1),
-                 m2 > 0.265 ? "above" : "below", 100 * fabs(m3 / 0.210 - 1), m3 > 0.210 ? "above" : "below");
+                  "quotes 0.265 for 2D (eq. 11, citing Cook & DeRose); Cook & DeRose's code normalises plain 3D "
+                  "noise by 0.210 and projected noise by 0.296. Our 2D value is %.1f%% %s 0.265 and our 3D "
+                  "value %.1f%% %s 0.210 (the cause of the 3D gap is not measured here); we use our measured "
+                  "values in eq. 12 and 14.", m2, s2, m3, s3, 100 * fabs(m2 / 0.265 - 1),
+                  m2 > 0.265 ? "above" : "below", 100 * fabs(m3 / 0.210 - 1), m3 > 0.210 ? "above" : "below");
   nl_harness_text(r, "Eq. 5-7 assume each band's power lies inside its octave (D_i F(N_j) = 0 for i != j). "
-                 "Measured on %d x %d images of single bands: band 0 keeps %.1f%% +- %.1f%% of its power "
-                 "inside (1/4, 1/2] cycles per pixel; the rest leaks into the neighbouring octave(s). "
-                 "This leakage is what biases eq. 12 when neighbouring weights differ (L2).",
-                 size, size, 100 * in0, 100 * in0sd);
+                  "Measured on %d x %d images of single bands: band 0 keeps %.1f%% +- %.1f%% of its power "
+                  "inside (1/4, 1/2] cycles per pixel; the rest leaks into the neighbouring octave(s). "
+                  "This leakage is what biases eq. 12 when neighbouring weights differ (L2).",
+                  size, size, 100 * in0, 100 * in0sd);
   nl_harness_text(r, "Wavelet noise is not stationary: on the lattice shifted by frac its variance runs from "
-                 "%.3f (frac 0, B-spline weights 1/8 3/4 1/8) to %.3f (frac 1/2, weights 1/2 1/2) in 2D "
-                 "(table below). The finest band of an image, sampled once per lattice unit at one "
-                 "random offset, therefore has a variance anywhere in that range; coarser bands sample "
-                 "2^k offsets and average it out. We measure sigma_N^2 as the mean over the cell (4 "
-                 "samples per unit and axis; 1 sample at half-integers would give the frac-1/2 value).",
-                 nl_table_value(ft, 0, "var2d"), nl_table_value(ft, 4, "var2d"));
+                  "%.3f (frac 0, B-spline weights 1/8 3/4 1/8) to %.3f (frac 1/2, weights 1/2 1/2) in 2D "
+                  "(table below). The finest band of an image, sampled once per lattice unit at one "
+                  "random offset, therefore has a variance anywhere in that range; coarser bands sample "
+                  "2^k offsets and average it out. We measure sigma_N^2 as the mean over the cell (4 "
+                  "samples per unit and axis; 1 sample at half-integers would give the frac-1/2 value).",
+                  nl_table_value(ft, 0, "var2d"), nl_table_value(ft, 4, "var2d"));
   nl_harness_report_table(r, ft, "Variance on the lattice shifted by frac (one tile)", 4);
   nl_harness_report_table(r, st, "Band variance and in-band share, ours vs the literature", 4);
   nl_harness_report_table(r, lt, "Share of each band's power below / inside / above its eq. 13 octave (band 0 finest; coarse bands hold few Fourier coefficients)", 3);

@@ -43,13 +43,13 @@ int main(int argc, char **argv)
   nl_harness *r = nl_harness_begin("l2_weights", "L2 - Weights from an exemplar: the validation of Fig. 4", argc, argv);
   int quick = nl_harness_quick(r);
   int size = (int)nl_harness_param_int(r, "size", quick ? 128 : 512, 16, 4096,
-                                   "side in pixels of the noise whose weights are estimated (quick 128)");
+                                       "side in pixels of the noise whose weights are estimated (quick 128)");
   int maxsize = (int)nl_harness_param_int(r, "max_size", quick ? 256 : 1024, 64, 4096,
-                                      "largest image side of the error-against-size sweep (quick 256)");
+                                          "largest image side of the error-against-size sweep (quick 256)");
   int sweep_seeds = (int)nl_harness_param_int(r, "sweep_seeds", quick ? 3 : 20, 1, 1000,
-                                          "seeds per size in the error-against-size sweep (quick 3)");
+                                              "seeds per size in the error-against-size sweep (quick 3)");
   int tile = (int)nl_harness_param_int(r, "tile", NL_EXAMPLE_TILE, 8, 2048,
-                                   "period in pixels of the wavelet-noise tile (even, >= 8)");
+                                       "period in pixels of the wavelet-noise tile (even, >= 8)");
   nl_harness_params_done(r);
   unsigned long seed0 = nl_harness_seed(r);
   double sigma2 = nl_byexample_sigma2(tile);
@@ -110,21 +110,21 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, et, "error_vs_size.tsv");
 
   nl_harness_text(r, "Fig. 4 at %d x %d (%d bands, seed %lu): random weights uniform in [0.1, 1] "
-                 "(the paper does not say how it draws them), a 2D wavelet-noise sum with them (b), "
-                 "weights estimated by eq. 12-13 with our measured sigma_N^2 = %.4f (paper: 0.265), "
-                 "and a noise with the estimated weights and new band offsets (d). Relative RMS weight "
-                 "error |w_est - w| / |w| = %.3f; total power sum w_est^2 / sum w^2 = %.3f. The paper says only that the two sets are \"very "
-                 "similar\" and converge with sample size; the sweep below measures it.",
-                 size, size, nb, seed0, sigma2, err_fig, pr_fig);
+                  "(the paper does not say how it draws them), a 2D wavelet-noise sum with them (b), "
+                  "weights estimated by eq. 12-13 with our measured sigma_N^2 = %.4f (paper: 0.265), "
+                  "and a noise with the estimated weights and new band offsets (d). Relative RMS weight "
+                  "error |w_est - w| / |w| = %.3f; total power sum w_est^2 / sum w^2 = %.3f. The paper says only that the two sets are \"very "
+                  "similar\" and converge with sample size; the sweep below measures it.",
+                  size, size, nb, seed0, sigma2, err_fig, pr_fig);
   nl_harness_text(r, "Why they are not equal beyond sampling noise: about 8-12%% of each band's power "
-                 "falls into each neighbouring octave (L1), so eq. 12 returns sqrt(0.8 w_k^2 + 0.1 "
-                 "(w_(k-1)^2 + w_(k+1)^2)) roughly: random weights, whose neighbours differ a lot, "
-                 "keep a bias that a larger image does not remove, while smooth texture-like spectra "
-                 "come out within a few percent (unit test). The finest band also varies with its "
-                 "random sub-pixel offset (L1, non-stationarity). Over all bands the error does not "
-                 "shrink with size because the band count grows with it: the coarsest band of any "
-                 "image holds the same 8 Fourier coefficients. err_fine restricts the error to the 6 "
-                 "finest bands (fixed periods of 2-128 pixels), whose sampling improves with size.");
+                  "falls into each neighbouring octave (L1), so eq. 12 returns sqrt(0.8 w_k^2 + 0.1 "
+                  "(w_(k-1)^2 + w_(k+1)^2)) roughly: random weights, whose neighbours differ a lot, "
+                  "keep a bias that a larger image does not remove, while smooth texture-like spectra "
+                  "come out within a few percent (unit test). The finest band also varies with its "
+                  "random sub-pixel offset (L1, non-stationarity). Over all bands the error does not "
+                  "shrink with size because the band count grows with it: the coarsest band of any "
+                  "image holds the same 8 Fourier coefficients. err_fine restricts the error to the 6 "
+                  "finest bands (fixed periods of 2-128 pixels), whose sampling improves with size.");
   nl_harness_report_table(r, wt, "Fig. 4 (a, c): true and estimated weights (band 0 finest); est_of_d re-estimates from (d)", 3);
   nl_harness_figure(r, "weights.png", "Fig. 4 (a, c): true vs estimated weights");
   nl_harness_figure(r, "noise.png", "Fig. 4 (b, d): noise of the true and of the estimated weights");

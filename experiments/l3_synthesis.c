@@ -20,7 +20,7 @@ int main(int argc, char **argv)
   nl_harness *r = nl_harness_begin("l3_synthesis", "L3 - Texture synthesis by example: PCA colour and histogram matching", argc, argv);
   int quick = nl_harness_quick(r);
   int size = (int)nl_harness_param_int(r, "size", quick ? 128 : 512, 16, 4096,
-                                   "side in pixels of the exemplar analysed and of the synthesised textures (quick 128)");
+                                       "side in pixels of the exemplar analysed and of the synthesised textures (quick 128)");
   nl_harness_params_done(r);
   int K = nl_harness_seeds(r);
   unsigned long seed0 = nl_harness_seed(r);
@@ -87,24 +87,24 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, ft, "spline.tsv");
 
   nl_harness_text(r, "Exemplars are made procedurally at %d x %d (no photographs ship with the repo): "
-                 "`wavelet` (three multiresolution wavelet noises mixed by a correlated colour matrix: "
-                 "the class the method models exactly), `clouds` (fBm of improved noise through a "
-                 "sky ramp, clipped at both ends: a skewed histogram with spikes), `granite` "
-                 "(turbulence through a 4-colour ramp), `marble` (sine stripes: anisotropic, expected "
-                 "to fail like the paper's Fig. 9). Each is analysed once and synthesised with %d "
-                 "seeds; KS = two-sample Kolmogorov-Smirnov distance between the exemplar's and the "
-                 "synthesis' intensities per channel (mean over R, G, B, then mean +- sd over seeds); "
-                 "corr_err = largest difference of the inter-channel correlations.", size, size, K);
+                  "`wavelet` (three multiresolution wavelet noises mixed by a correlated colour matrix: "
+                  "the class the method models exactly), `clouds` (fBm of improved noise through a "
+                  "sky ramp, clipped at both ends: a skewed histogram with spikes), `granite` "
+                  "(turbulence through a 4-colour ramp), `marble` (sine stripes: anisotropic, expected "
+                  "to fail like the paper's Fig. 9). Each is analysed once and synthesised with %d "
+                  "seeds; KS = two-sample Kolmogorov-Smirnov distance between the exemplar's and the "
+                  "synthesis' intensities per channel (mean over R, G, B, then mean +- sd over seeds); "
+                  "corr_err = largest difference of the inter-channel correlations.", size, size, K);
   nl_harness_text(r, "Readings: the cumulative histogram is stored as the channel's quantiles at "
-                 "p = j/9, j = 0..9 (min to max); synthesis maps noise by Phi(M / sigma_M) then a "
-                 "monotone cubic through (p_j, q_j); sigma_M^2 = sigma_N^2 sum w_i^2 (the paper's "
-                 "eq. 14 prints sum w_i, which cannot be a variance of a weighted sum). The paper "
-                 "cites Fritsch-Carlson; we use GSL's steffen by default: both are monotone C1 "
-                 "Hermite cubics, steffen's slopes are min(2|s_l|, 2|s_r|, |parabola slope|), FC "
-                 "limits PCHIP's harmonic-mean slopes to alpha^2 + beta^2 <= 9. The largest pixel "
-                 "difference between the two, same noise, is in the spline table. The paper counts "
-                 "66 parameters for 512^2 RGB (9 matrix + 30 histogram + 27 weights); our count is "
-                 "in the params column (we also store 3 means, sigma_N^2 and the tile period).");
+                  "p = j/9, j = 0..9 (min to max); synthesis maps noise by Phi(M / sigma_M) then a "
+                  "monotone cubic through (p_j, q_j); sigma_M^2 = sigma_N^2 sum w_i^2 (the paper's "
+                  "eq. 14 prints sum w_i, which cannot be a variance of a weighted sum). The paper "
+                  "cites Fritsch-Carlson; we use GSL's steffen by default: both are monotone C1 "
+                  "Hermite cubics, steffen's slopes are min(2|s_l|, 2|s_r|, |parabola slope|), FC "
+                  "limits PCHIP's harmonic-mean slopes to alpha^2 + beta^2 <= 9. The largest pixel "
+                  "difference between the two, same noise, is in the spline table. The paper counts "
+                  "66 parameters for 512^2 RGB (9 matrix + 30 histogram + 27 weights); our count is "
+                  "in the params column (we also store 3 means, sigma_N^2 and the tile period).");
   nl_harness_report_table(r, kt, "KS distance and colour-correlation error per exemplar and variant", 3);
   nl_harness_report_table(r, ft, "steffen vs Fritsch-Carlson: largest pixel difference (intensity units)", 4);
   for (int k = 0; k < NKIND; k++) {

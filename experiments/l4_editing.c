@@ -31,11 +31,11 @@ int main(int argc, char **argv)
   nl_harness *r = nl_harness_begin("l4_editing", "L4 - Frequency-based editing, solid extrapolation, morphing", argc, argv);
   int quick = nl_harness_quick(r);
   int size = (int)nl_harness_param_int(r, "size", quick ? 128 : 512, 16, 4096,
-                                   "side in pixels of the exemplar and the edited textures (quick 128)");
+                                       "side in pixels of the exemplar and the edited textures (quick 128)");
   int nfine = (int)nl_harness_param_int(r, "edit_bands", 3, 1, 16,
-                                    "how many of the finest frequency bands the edit attenuates (Lagae Fig. 10)");
+                                        "how many of the finest frequency bands the edit attenuates (Lagae Fig. 10)");
   double factor = nl_harness_param(r, "edit_factor", 0.25, 0, 10,
-                               "factor the attenuated bands' weights are multiplied by (their power by its square)");
+                                   "factor the attenuated bands' weights are multiplied by (their power by its square)");
   nl_harness_params_done(r);
   unsigned long seed = nl_harness_seed(r);
   nl_error err;
@@ -107,28 +107,28 @@ int main(int argc, char **argv)
   nl_study_montage(r, (const nl_image *const *)seq, tl, 5, 5, "Fig. 12: morphing clouds into granite", "morph.png");
 
   nl_harness_text(r, "Granite exemplar (turbulence, %d x %d) analysed with PCA and histogram matching. "
-                 "Editing (Fig. 10c): the %d finest bands of every channel scaled by %g; the table "
-                 "gives the luminance band power of (c) over (b) (same seed), against %g^2 = %g for "
-                 "the edited bands. Both with and without histogram matching the fine bands keep "
-                 "far more power than asked (ratio ~0.4-0.6 vs 0.0625). The cause is measured, not "
-                 "guessed: in the FFT of a non-periodic image every band leaks ~0.5-1%% of its power "
-                 "into each finer band (edge discontinuities, the spectrum's cross), and granite's "
-                 "coarse bands carry ~40x the power of its finest, so that floor dominates the "
-                 "attenuated bands. The edit itself is exact on the weights; the picture (c) shows "
-                 "the softened detail. A window or a periodic+smooth decomposition before the FFT "
-                 "would reduce this floor in analysis and measurement alike (not done: the paper "
-                 "uses the plain FFT). Solid extrapolation (Fig. 10d): the same weights on 3D wavelet "
-                 "noise (period %d), slices at z = 0 and z = size/4; each tile's noise is scaled to "
-                 "the sigma_N^2 the weights were estimated with, because 3D wavelet noise has a "
-                 "smaller band variance than 2D (L1). Slices of 3D noise carry power below the band "
-                 "(L1), so the solid texture is somewhat blurrier.",
-                 size, size, nfine, factor, factor, factor * factor, NL_EXAMPLE_TILE3);
+                  "Editing (Fig. 10c): the %d finest bands of every channel scaled by %g; the table "
+                  "gives the luminance band power of (c) over (b) (same seed), against %g^2 = %g for "
+                  "the edited bands. Both with and without histogram matching the fine bands keep "
+                  "far more power than asked (ratio ~0.4-0.6 vs 0.0625). The cause is measured, not "
+                  "guessed: in the FFT of a non-periodic image every band leaks ~0.5-1%% of its power "
+                  "into each finer band (edge discontinuities, the spectrum's cross), and granite's "
+                  "coarse bands carry ~40x the power of its finest, so that floor dominates the "
+                  "attenuated bands. The edit itself is exact on the weights; the picture (c) shows "
+                  "the softened detail. A window or a periodic+smooth decomposition before the FFT "
+                  "would reduce this floor in analysis and measurement alike (not done: the paper "
+                  "uses the plain FFT). Solid extrapolation (Fig. 10d): the same weights on 3D wavelet "
+                  "noise (period %d), slices at z = 0 and z = size/4; each tile's noise is scaled to "
+                  "the sigma_N^2 the weights were estimated with, because 3D wavelet noise has a "
+                  "smaller band variance than 2D (L1). Slices of 3D noise carry power below the band "
+                  "(L1), so the solid texture is somewhat blurrier.",
+                  size, size, nfine, factor, factor, factor * factor, NL_EXAMPLE_TILE3);
   nl_harness_text(r, "Morphing (Fig. 12): all parameters are interpolated linearly except the 3x3 "
-                 "PCA matrix, which, as in the paper, follows quaternion spherical linear "
-                 "interpolation. Our matrices are rotations by construction (axes oriented, det "
-                 "fixed to +1), so the quaternion exists; det and the orthogonality error "
-                 "max |M M^T - I| show the interpolant stays a rotation. Bands are matched by "
-                 "index (finest to coarsest), channels by decreasing variance.");
+                  "PCA matrix, which, as in the paper, follows quaternion spherical linear "
+                  "interpolation. Our matrices are rotations by construction (axes oriented, det "
+                  "fixed to +1), so the quaternion exists; det and the orthogonality error "
+                  "max |M M^T - I| show the interpolant stays a rotation. Bands are matched by "
+                  "index (finest to coarsest), channels by decreasing variance.");
   nl_harness_report_table(r, et, "Editing: luminance band power, edited over original", 4);
   nl_harness_report_table(r, st, "Solid extrapolation: KS distance per channel", 4);
   nl_harness_report_table(r, mt, "Morph: matrix determinant, orthogonality error, mean colour", 4);

@@ -109,10 +109,10 @@ int main(int argc, char **argv)
   nl_study_montage(r, (const nl_image *const *)panels, labels, 6, 3, "F_i on z = 0.5", "planes.png");
 
   nl_harness_text(r, "**Paper (sec. 3.2):** counts per unit cube from \"the m whose p(m) is closest to "
-                    "r\", lambda = %g, M = %d; no statistics reported. **Ours:** the three rules on %d^3 cubes "
-                    "(chi-square against Poisson(lambda), tail pooled so every expected count is >= 5) "
-                    "and F1 at %ld random points in [0, 1000)^3 (KS against 1 - exp(-lambda 4/3 pi r^3)), "
-                    "%d seeds (permutation tables); `*_rejects` counts seeds with p < 0.01.\n",
+                     "r\", lambda = %g, M = %d; no statistics reported. **Ours:** the three rules on %d^3 cubes "
+                     "(chi-square against Poisson(lambda), tail pooled so every expected count is >= 5) "
+                     "and F1 at %ld random points in [0, 1000)^3 (KS against 1 - exp(-lambda 4/3 pi r^3)), "
+                     "%d seeds (permutation tables); `*_rejects` counts seeds with p < 0.01.\n",
                   lambda, M, side, points, seeds);
   nl_harness_report_table(r, sum, "Count rule against Poisson and the nearest-neighbour law", 4);
   nl_harness_report_table(r, dist, "Fraction of cubes with m points (mean over seeds)", 4);
@@ -122,12 +122,12 @@ int main(int argc, char **argv)
   for (int q = 0; q < NRULE; q++) for (int m = 0; m <= M; m++) if (hist[q][m] > hist[q][mode[q]]) mode[q] = m;
   for (int m = 0; m < M && tie < 0; m++) if (ref->pmf[m] == ref->pmf[m + 1]) tie = m;
   nl_harness_text(r, "The paper's rule is not a sampler of p: every r above max p(m) = %.4f "
-                    "(%.0f%% of draws) gives the mode, and small r give large m, so the counts "
-                    "concentrate on one value (fraction %.3f at m = %d against Poisson's %.3f; mean count "
-                    "%.3f, not lambda). Chi-square rejects it (p < 0.01) on %d of %d seeds and KS "
-                    "rejects its F1 law on %d of %d: fewer, more regular points make F1 larger (mean "
-                    "%.4f). Inverse-CDF sampling: rejected on %d and %d of %d seeds, F1 mean %.4f "
-                    "against Gamma(4/3) (4/3 pi lambda)^(-1/3) = %.4f.\n",
+                     "(%.0f%% of draws) gives the mode, and small r give large m, so the counts "
+                     "concentrate on one value (fraction %.3f at m = %d against Poisson's %.3f; mean count "
+                     "%.3f, not lambda). Chi-square rejects it (p < 0.01) on %d of %d seeds and KS "
+                     "rejects its F1 law on %d of %d: fewer, more regular points make F1 larger (mean "
+                     "%.4f). Inverse-CDF sampling: rejected on %d and %d of %d seeds, F1 mean %.4f "
+                     "against Gamma(4/3) (4/3 pi lambda)^(-1/3) = %.4f.\n",
                   ref->pmf[mode[1]], 100.0 * (1.0 - ref->pmf[mode[1]]),
                   hist[0][mode[0]], mode[0], ref->pmf[mode[0]], nl_table_value(sum, 0, "mean_count"),
                   (int)nl_table_value(sum, 0, "chi2_rejects"), seeds, (int)nl_table_value(sum, 0, "ks_rejects"), seeds,
@@ -135,9 +135,9 @@ int main(int argc, char **argv)
                   (int)nl_table_value(sum, 1, "ks_rejects"), seeds, nl_table_value(sum, 1, "mean_f1"), theory);
   if (tie >= 0)
     nl_harness_text(r, "**Ties.** p(%d) = p(%d) exactly in double at lambda = %g, and the paper does not say which "
-                      "m a tie gives. `closest` (our reading, above) takes the smaller m: mode %d, mean count %.3f; "
-                      "`closest-last` takes the larger: mode %d, mean count %.3f, chi-square rejects on %d and KS on "
-                      "%d of %d seeds. Either way the rule is not a sampler of Poisson(lambda).\n",
+                       "m a tie gives. `closest` (our reading, above) takes the smaller m: mode %d, mean count %.3f; "
+                       "`closest-last` takes the larger: mode %d, mean count %.3f, chi-square rejects on %d and KS on "
+                       "%d of %d seeds. Either way the rule is not a sampler of Poisson(lambda).\n",
                     tie, tie + 1, lambda, mode[0], nl_table_value(sum, 0, "mean_count"), mode[2],
                     nl_table_value(sum, 2, "mean_count"), (int)nl_table_value(sum, 2, "chi2_rejects"),
                     (int)nl_table_value(sum, 2, "ks_rejects"), seeds);

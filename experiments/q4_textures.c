@@ -55,11 +55,11 @@ int main(int argc, char **argv)
   q4 q = {0};
   q.r = nl_harness_begin("q4_textures", "Q4 - GCTBF cloud, marble, wood and flame textures", argc, argv);
   q.size = (int)nl_harness_param_int(q.r, "size", nl_harness_quick(q.r) ? 96 : 256, 8, 4096,
-                                 "side in pixels of the texture images (quick 96)");
+                                     "side in pixels of the texture images (quick 96)");
   q.octaves = (int)nl_harness_param_int(q.r, "octaves", 4, 0, 30,
-                                    "octaves added above the first in the cloud and texture sums (0 = one octave)");
+                                        "octaves added above the first in the cloud and texture sums (0 = one octave)");
   q.k = nl_harness_param(q.r, "k", 2.0, 1e-3, 1e3,
-                     "scale k between successive octaves of the GCTBF cloud (Qin & Yang eq. 7)");
+                         "scale k between successive octaves of the GCTBF cloud (Qin & Yang eq. 7)");
   nl_harness_params_done(q.r);
   q.seeds = nl_harness_seeds(q.r);
   q.win = (nl_noise_window){0, 0, 0.5, 2.0, q.size, q.size};
@@ -92,19 +92,19 @@ int main(int argc, char **argv)
   nl_harness_write_table(q.r, q.t, "textures.tsv");
 
   nl_harness_text(q.r, "**Paper (Fig. 5, 6):** cloud pattern eq. 7 for Perlin and five GCTBF; marble "
-                      "sum (-1)^i F_i + sum (-1)^(i+j) F_i F_j, wood F1 - F1F1 and F3 - F3F3, sky "
-                      "F1F2 + F2F3 and F1, flame F1 (images only; colours other than the sky/cloud of "
-                      "eq. 7 and the marble knots of sec. 4.1 are not given). **Ours:** plane z = 0.5, "
-                      "[0, 2)^2 scaled by k = %g, %d octaves after the first in eq. 7 and the flame, "
-                      "lambda = 4 with inverse-CDF counts, %d seeds for the numbers.\n\n"
-                      "**Readings:** smoothscale() of eq. 7 (an antialiasing fade tied to the "
-                      "RenderMan footprint) is 1; Fig. 5's five combinations are drawn, not named: "
-                      "we use F1, F2, F1 + F1F1, F1 + F1F2, F1F2 + F2F3, whose values lie around 1/2 where "
-                      "1 - 2 GCTBF changes sign (combinations with small values such as F1F1 or F2 - F1 "
-                      "make every octave positive and the sky saturates to cloud); marble maps clamp(GCTBF, 0, 1) "
-                      "through the 13-knot spline of sec. 4.1; wood maps [0, 0.25] (the range of "
-                      "F - F^2 for F <= 1) linearly from light to dark brown; flame maps the fractal "
-                      "sum of F1 over [0.2, 1] through a black-red-orange-yellow-white spline.\n",
+                       "sum (-1)^i F_i + sum (-1)^(i+j) F_i F_j, wood F1 - F1F1 and F3 - F3F3, sky "
+                       "F1F2 + F2F3 and F1, flame F1 (images only; colours other than the sky/cloud of "
+                       "eq. 7 and the marble knots of sec. 4.1 are not given). **Ours:** plane z = 0.5, "
+                       "[0, 2)^2 scaled by k = %g, %d octaves after the first in eq. 7 and the flame, "
+                       "lambda = 4 with inverse-CDF counts, %d seeds for the numbers.\n\n"
+                       "**Readings:** smoothscale() of eq. 7 (an antialiasing fade tied to the "
+                       "RenderMan footprint) is 1; Fig. 5's five combinations are drawn, not named: "
+                       "we use F1, F2, F1 + F1F1, F1 + F1F2, F1F2 + F2F3, whose values lie around 1/2 where "
+                       "1 - 2 GCTBF changes sign (combinations with small values such as F1F1 or F2 - F1 "
+                       "make every octave positive and the sky saturates to cloud); marble maps clamp(GCTBF, 0, 1) "
+                       "through the 13-knot spline of sec. 4.1; wood maps [0, 0.25] (the range of "
+                       "F - F^2 for F <= 1) linearly from light to dark brown; flame maps the fractal "
+                       "sum of F1 over [0.2, 1] through a black-red-orange-yellow-white spline.\n",
                   q.k, q.octaves, q.seeds);
   nl_harness_report_table(q.r, q.t, "Value statistics before colour mapping (mean over seeds)", 4);
   nl_harness_figure(q.r, "clouds.png", "Fig. 5: eq. 7 clouds, Perlin and five GCTBF combinations");

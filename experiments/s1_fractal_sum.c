@@ -14,11 +14,11 @@ int main(int argc, char **argv)
                                        "and 8 octaves (images only).", "fractal",
                                        "fractal_sum(p) = sum noise(2^j p) / 2^j");
   nl_harness_text(r, "Each octave adds a band one octave up at a quarter of the power (amplitude 1/2): "
-                    "the staircase of the spectrum. The sd grows from %.4f (1 octave) to %.4f "
-                    "(8 octaves), a factor %.3f; for octaves that were uncorrelated it would be "
-                    "sqrt(1 + 1/4 + ... + 1/4^7) = %.3f. The largest value seen is %.0f%% of the "
-                    "analytic bound at 1 octave and %.0f%% at 8: extremes of different octaves "
-                    "rarely align, so the bound loosens as octaves are added.\n",
+                     "the staircase of the spectrum. The sd grows from %.4f (1 octave) to %.4f "
+                     "(8 octaves), a factor %.3f; for octaves that were uncorrelated it would be "
+                     "sqrt(1 + 1/4 + ... + 1/4^7) = %.3f. The largest value seen is %.0f%% of the "
+                     "analytic bound at 1 octave and %.0f%% at 8: extremes of different octaves "
+                     "rarely align, so the bound loosens as octaves are added.\n",
                  nl_table_value(d, 0, "sd"), nl_table_value(d, 3, "sd"), nl_table_value(d, 3, "sd") / nl_table_value(d, 0, "sd"),
                  sqrt((1 - pow(0.25, 8)) / 0.75), 100 * nl_table_value(d, 0, "max_abs_over_bound"),
                  100 * nl_table_value(d, 3, "max_abs_over_bound"));

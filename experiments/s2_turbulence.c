@@ -12,8 +12,8 @@ int main(int argc, char **argv)
                                        "and 8 octaves (images only).", "turbulence",
                                        "turbulence(p) = sum |noise(2^j p)| / 2^j"));
   nl_harness_text(r, "The absolute value folds each octave at its zero set, the dark creases. Folding "
-                    "moves power into the DC term (the mean is positive) and into frequencies above "
-                    "the octave's band, so even one octave has a broad spectrum, unlike S1.\n");
+                     "moves power into the DC term (the mean is positive) and into frequencies above "
+                     "the octave's band, so even one octave has a broad spectrum, unlike S1.\n");
   nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);
 }

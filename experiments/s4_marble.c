@@ -16,13 +16,13 @@ int main(int argc, char **argv)
 {
   nl_harness *r = nl_harness_begin("s4_marble", "S4 - Marble through a colour ramp", argc, argv);
   int size = (int)nl_harness_param_int(r, "size", nl_harness_quick(r) ? 128 : 512, 16, 4096,
-                                   "side in pixels of the marble images (quick 128)");
+                                       "side in pixels of the marble images (quick 128)");
   int octaves = (int)nl_harness_param_int(r, "octaves", 6, 1, 30,
-                                      "octaves of the turbulence that perturbs the stripes");
+                                          "octaves of the turbulence that perturbs the stripes");
   double stripes = nl_harness_param(r, "stripes", 1.0, 1e-3, 1e3,
-                                "stripes per unit along y: u = (1 + sin(2 pi stripes p.y)) / 2, p.y displaced by turbulence");
+                                    "stripes per unit along y: u = (1 + sin(2 pi stripes p.y)) / 2, p.y displaced by turbulence");
   double extent = nl_harness_param(r, "extent", 4.0, 1e-3, 1e4,
-                               "side of the noise-space square [0, extent)^2 the images cover");
+                                   "side of the noise-space square [0, extent)^2 the images cover");
   nl_harness_params_done(r);
 
   const double amps[NA] = {0, 0.25, 0.5, 1.0};
@@ -75,18 +75,18 @@ int main(int argc, char **argv)
   nl_harness_check(r, "distribution.tsv", "u_sd_sd", "ftest 1e-3");
 
   nl_harness_text(r, "**Slides:** u = (1 + sin(y)) / 2 through a marble colour ramp, after p.y = p.y + "
-                    "a fractal_sum(p) (images only, a not given). **Ours:** %g stripe%s per unit "
-                    "(u = (1 + sin(2 pi %g (y + a F(p)))) / 2), F the %d-octave fractal sum of "
-                    "Perlin's improved noise on z = 0.5, over [0, %g)^2; a = 0 is the unperturbed "
-                    "ramp of the slide's first panel. A white-grey-blue ramp of 5 knots.\n",
+                     "a fractal_sum(p) (images only, a not given). **Ours:** %g stripe%s per unit "
+                     "(u = (1 + sin(2 pi %g (y + a F(p)))) / 2), F the %d-octave fractal sum of "
+                     "Perlin's improved noise on z = 0.5, over [0, %g)^2; a = 0 is the unperturbed "
+                     "ramp of the slide's first panel. A white-grey-blue ramp of 5 knots.\n",
                  stripes, stripes == 1 ? "" : "s", stripes, octaves, extent);
   nl_harness_figure(r, "panels.png", "Marble for growing turbulence amplitude a");
   nl_harness_report_table(r, dist, "Mean and sd of u over seeds", 4);
   nl_harness_figure(r, "density.png", "Density of u (mean over seeds) against the arcsine law of pure stripes");
   nl_harness_text(r, "Pure stripes give u the arcsine density 1 / (pi sqrt(u (1 - u))), piling up at "
-                    "0 and 1. The fractal displacement changes where the stripes run, not how u is "
-                    "distributed: the density stays close to the arcsine law for every a, which is "
-                    "why marble keeps the ramp's end colours dominant however turbulent it gets.\n");
+                     "0 and 1. The fractal displacement changes where the stripes run, not how u is "
+                     "distributed: the density stays close to the arcsine law for every a, which is "
+                     "why marble keeps the ramp's end colours dominant however turbulent it gets.\n");
   gsl_histogram_free(h);
   for (int i = 0; i < NA; i++) nl_image_free(panels[i]);
   nl_image_free(mont);

@@ -110,7 +110,7 @@ static void synth_write(const nl_byexample_params *p, const args *a)
   if (!a->have_size) die("--size N is required");
   nl_byexample_synth_options so = {a->scale, a->solid, a->z, NL_SPLINE_STEFFEN};
   check(nl_byexample_synthesize(p, (int)a->size, (int)(a->height ? a->height : a->size),
-                              (unsigned long)a->seed, &so, &im, &err), &err);
+                                (unsigned long)a->seed, &so, &im, &err), &err);
   write_image(im, a->out);
   nl_image_free(im);
 }

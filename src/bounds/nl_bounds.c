@@ -174,7 +174,7 @@ static double smoke_ray(const nl_noise_perm3 *p, const nl_bounds_smoke *s, const
 }
 
 nl_status nl_bounds_smoke_render(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double *img,
-                          nl_bounds_smoke_stats *st, nl_error *err)
+                                 nl_bounds_smoke_stats *st, nl_error *err)
 {
   nl_status rc = smoke_check(s, err);
   if (rc) return rc;
@@ -191,7 +191,7 @@ nl_status nl_bounds_smoke_render(const nl_noise_perm3 *p, const nl_bounds_smoke 
 }
 
 nl_status nl_bounds_smoke_decision_map(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double z, int *terms,
-                                nl_error *err)
+                                       nl_error *err)
 {
   nl_status rc = smoke_check(s, err);
   if (rc) return rc;
@@ -233,7 +233,7 @@ static void mean_sigma(const double *x, size_t n, double *mean, double *sigma)
 }
 
 nl_status nl_bounds_bandwidth_1d(const double *x, size_t n, double rate, double T, nl_bounds_bandwidth *bw,
-                          nl_error *err)
+                                 nl_error *err)
 {
   if (!(T > 0.0)) return nl_fail(err, NL_EINVAL, "bandwidth: threshold T must be positive");
   size_t m = n / 2 + 1;
@@ -257,7 +257,7 @@ nl_status nl_bounds_bandwidth_1d(const double *x, size_t n, double rate, double 
 }
 
 nl_status nl_bounds_psd1_fraction_above(const double *x, size_t n, double rate, double fc,
-                                 double *fraction, nl_error *err)
+                                        double *fraction, nl_error *err)
 {
   size_t m = n / 2 + 1;
   double *f = nl_xmalloc(m * sizeof *f), *P = nl_xmalloc(m * sizeof *P);
@@ -279,7 +279,7 @@ void nl_bounds_sample_line(const nl_noise_perm3 *p, const nl_noise_octaves *o, c
     for (int l = 0; l < o->n; l++) {
       double f = o->freq[l];
       s += o->amp[l] * nl_noise_perm3_eval(p, f * (origin[0] + t * dir[0]), f * (origin[1] + t * dir[1]),
-                                 f * (origin[2] + t * dir[2]));
+                                           f * (origin[2] + t * dir[2]));
     }
     out[k] = s;
   }
@@ -381,7 +381,7 @@ static int max_level_diff(const double *a, const double *b, size_t n)
 }
 
 nl_status nl_bounds_smoke_render_pair(const nl_noise_perm3 *p, nl_bounds_smoke s, double *img0, double *img1,
-                               nl_bounds_smoke_pair *t, nl_error *err)
+                                      nl_bounds_smoke_pair *t, nl_error *err)
 {
   double *img[2] = {img0, img1};
   for (int inc = 0; inc < 2; inc++) {

@@ -125,12 +125,12 @@ typedef struct {
 nl_bounds_smoke nl_bounds_smoke_default(void);
 /* img: width * height doubles, row 0 at y = -1/2. */
 nl_status nl_bounds_smoke_render(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double *img,
-                          nl_bounds_smoke_stats *st, nl_error *err);
+                                 nl_bounds_smoke_stats *st, nl_error *err);
 /* Fig. 5.3: terms[y * width + x] = number of terms evaluated before the
  * incremental bound decided the density in the plane z; octaves + 1 when
  * it never did. */
 nl_status nl_bounds_smoke_decision_map(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double z, int *terms,
-                                nl_error *err);
+                                       nl_error *err);
 
 /* ---- spectral bandwidth (sec. 4.2.2, 5.2) ---------------------------- */
 
@@ -151,11 +151,11 @@ typedef struct {
   double nyquist;        /* rate / 2 */
 } nl_bounds_bandwidth;
 nl_status nl_bounds_bandwidth_1d(const double *x, size_t n, double rate, double T, nl_bounds_bandwidth *bw,
-                          nl_error *err);
+                                 nl_error *err);
 /* Energy above frequency f as a fraction of the variance: what aliases
  * when the signal is sampled with Nyquist frequency f. */
 nl_status nl_bounds_psd1_fraction_above(const double *x, size_t n, double rate, double f,
-                                 double *fraction, nl_error *err);
+                                        double *fraction, nl_error *err);
 
 /* out[k] = sum_l amp_l noise(freq_l (origin + (k / rate) dir)), k < n. */
 void nl_bounds_sample_line(const nl_noise_perm3 *p, const nl_noise_octaves *o, const double *origin,
@@ -205,6 +205,6 @@ typedef struct { double ms[2]; long evals[2]; long samples; int diff; double max
  * is ignored): wall times in ms, noise calls of each, the largest
  * difference in 8-bit levels and the largest |noise| of the plain march. */
 nl_status nl_bounds_smoke_render_pair(const nl_noise_perm3 *p, nl_bounds_smoke s, double *img0, double *img1,
-                               nl_bounds_smoke_pair *t, nl_error *err);
+                                      nl_bounds_smoke_pair *t, nl_error *err);
 
 #endif

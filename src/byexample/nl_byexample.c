@@ -53,7 +53,7 @@ void nl_byexample_weights(const double *img, int w, int h, int nbands, double si
 }
 
 void nl_byexample_band_leakage(const nl_wavelet_tile *t, int size, int nbands, unsigned long seed,
-                             double *share, double *var)
+                               double *share, double *var)
 {
   double *img = nl_xmalloc((size_t)size * size * sizeof *img), w[NL_WAVELET_MAX_BANDS];
   for (int k = 0; k < nbands; k++) {
@@ -149,7 +149,7 @@ nl_status nl_byexample_pca(const nl_image *im, double mean[3], double matrix[3][
 }
 
 void nl_byexample_decorrelate(const nl_image *im, int nch, const double mean[3],
-                            const double matrix[3][3], double **plane)
+                              const double matrix[3][3], double **plane)
 {
   size_t n = (size_t)im->width * im->height;
   for (size_t i = 0; i < n; i++) {
@@ -163,7 +163,7 @@ void nl_byexample_decorrelate(const nl_image *im, int nch, const double mean[3],
 }
 
 void nl_byexample_recorrelate(double *const *plane, int nch, const double mean[3],
-                            const double matrix[3][3], nl_image *out)
+                              const double matrix[3][3], nl_image *out)
 {
   size_t n = (size_t)out->width * out->height;
   for (size_t i = 0; i < n; i++) {
@@ -253,7 +253,7 @@ static double hermite(const double *x, const double *y, const double *d, int n, 
 }
 
 void nl_byexample_spline(const double *x, const double *y, int n, nl_byexample_spline_kind kind,
-                       const double *xs, double *ys, size_t m)
+                         const double *xs, double *ys, size_t m)
 {
   if (kind == NL_SPLINE_STEFFEN) {
     gsl_interp *ip = gsl_interp_alloc(gsl_interp_steffen, (size_t)n);
@@ -288,7 +288,7 @@ void nl_byexample_match(double *v, size_t n, double sigma, const double *q, nl_b
 /* ---- analysis and synthesis (sec. 5.3) ----------------------------------- */
 
 nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *opt,
-                             nl_byexample_params *p, nl_error *err)
+                               nl_byexample_params *p, nl_error *err)
 {
   nl_byexample_options o = {1, 1, 0, 0};
   if (opt) o = *opt;
@@ -334,8 +334,8 @@ nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *o
 }
 
 void nl_byexample_channel_noise(const nl_byexample_params *p, int c, const nl_wavelet_tile *t,
-                              double gain, int w, int h, unsigned long seed,
-                              const nl_byexample_synth_options *opt, double *out)
+                                double gain, int w, int h, unsigned long seed,
+                                const nl_byexample_synth_options *opt, double *out)
 {
   double wts[NL_WAVELET_MAX_BANDS];
   for (int k = 0; k < p->nbands; k++) wts[k] = gain * p->w[c][k];
@@ -346,8 +346,8 @@ void nl_byexample_channel_noise(const nl_byexample_params *p, int c, const nl_wa
 }
 
 nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, unsigned long seed,
-                                const nl_byexample_synth_options *opt, nl_image **out,
-                                nl_error *err)
+                                  const nl_byexample_synth_options *opt, nl_image **out,
+                                  nl_error *err)
 {
   if (w < 1 || h < 1 || (double)w * h > 1e9)
     return nl_fail(err, NL_EINVAL, "output size %d x %d out of range", w, h);

@@ -102,7 +102,7 @@ void nl_byexample_weights(const double *img, int w, int h, int nbands, double si
  * total power var[k] (DC excluded), of which share[k * nbands + j] falls
  * in band j. Ideal orthogonal bands (eq. 7) would give the identity. */
 void nl_byexample_band_leakage(const nl_wavelet_tile *t, int size, int nbands, unsigned long seed,
-                             double *share, double *var);
+                               double *share, double *var);
 /* Band variance of our 2D wavelet noise for tile period n: the mean of
  * nl_wavelet_tile_variance(t, 4) over tiles seeded 1..4 (cached). */
 double nl_byexample_sigma2(int n);
@@ -113,9 +113,9 @@ double nl_byexample_sigma2(int n);
 nl_status nl_byexample_pca(const nl_image *im, double mean[3], double matrix[3][3], nl_error *err);
 /* plane[c][i] = (M (px_i - mean))_c for nch channels; inverse of recorrelate. */
 void nl_byexample_decorrelate(const nl_image *im, int nch, const double mean[3],
-                            const double matrix[3][3], double **plane);
+                              const double matrix[3][3], double **plane);
 void nl_byexample_recorrelate(double *const *plane, int nch, const double mean[3],
-                            const double matrix[3][3], nl_image *out);
+                              const double matrix[3][3], nl_image *out);
 /* q[j] = quantile of v at p = j/(NL_EXAMPLE_HIST-1), linear between order statistics. */
 void nl_byexample_quantiles(const double *v, size_t n, double *q);
 /* v <- Phi^-1((rank + 1/2) / n), ties in index order. */
@@ -124,20 +124,20 @@ void nl_byexample_gaussianize(double *v, size_t n);
 void nl_byexample_match(double *v, size_t n, double sigma, const double *q, nl_byexample_spline_kind kind);
 /* The monotone cubic through (x[j], y[j]), j < n, x increasing, at xs[i]. */
 void nl_byexample_spline(const double *x, const double *y, int n, nl_byexample_spline_kind kind,
-                       const double *xs, double *ys, size_t m);
+                         const double *xs, double *ys, size_t m);
 
 /* ---- analysis, synthesis, parameters ---------------------------------- */
 
 nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *opt,
-                             nl_byexample_params *p, nl_error *err);
+                               nl_byexample_params *p, nl_error *err);
 nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, unsigned long seed,
-                                const nl_byexample_synth_options *opt, nl_image **out,
-                                nl_error *err);
+                                  const nl_byexample_synth_options *opt, nl_image **out,
+                                  nl_error *err);
 /* One decorrelated channel, before histogram matching and recorrelation:
  * the multiresolution noise of weights gain * w[c], offsets from seed and c. */
 void nl_byexample_channel_noise(const nl_byexample_params *p, int c, const nl_wavelet_tile *t,
-                              double gain, int w, int h, unsigned long seed,
-                              const nl_byexample_synth_options *opt, double *out);
+                                double gain, int w, int h, unsigned long seed,
+                                const nl_byexample_synth_options *opt, double *out);
 /* The number of parameters the paper counts: channels^2 + channels * (10 + bands). */
 int nl_byexample_param_count(const nl_byexample_params *p);
 
@@ -148,7 +148,7 @@ nl_status nl_byexample_params_load(const char *path, nl_byexample_params *p, nl_
  * between the two rotations (the paper's Fig. 12). Errors on different
  * channel or band counts. */
 nl_status nl_byexample_morph(const nl_byexample_params *a, const nl_byexample_params *b, double t,
-                           nl_byexample_params *out, nl_error *err);
+                             nl_byexample_params *out, nl_error *err);
 /* Frequency-based editing (Fig. 10c): w[c][k] *= factor for the `nfine`
  * finest bands of every channel. */
 void nl_byexample_attenuate(nl_byexample_params *p, int nfine, double factor);

@@ -291,7 +291,7 @@ static void slerp(const double a[4], const double b0[4], double t, double q[4])
 }
 
 nl_status nl_byexample_morph(const nl_byexample_params *a, const nl_byexample_params *b, double t,
-                           nl_byexample_params *out, nl_error *err)
+                             nl_byexample_params *out, nl_error *err)
 {
   if (a->channels != b->channels)
     return nl_fail(err, NL_EINVAL, "cannot morph %d channels into %d", a->channels, b->channels);

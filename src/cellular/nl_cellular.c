@@ -341,7 +341,7 @@ double nl_cellular_gctbf_bound(const nl_cellular_gctbf *g)
 }
 
 void nl_cellular_gctbf_row(const nl_cellular *c, const nl_cellular_gctbf *g, double x0, double dx, double y,
-                  double z, size_t count, double *out)
+                           double z, size_t count, double *out)
 {
   int n = g->n > 0 ? g->n : 1;
   double *F = nl_xmalloc(count * (size_t)n * sizeof *F);
@@ -355,7 +355,7 @@ void nl_cellular_gctbf_grid(const nl_cellular *c, const nl_cellular_gctbf *g, co
   double dx = win->size / win->w, dy = win->size / win->h;
   for (int r = 0; r < win->h; r++)
     nl_cellular_gctbf_row(c, g, win->x0 + 0.5 * dx, dx, win->y0 + (r + 0.5) * dy, win->z, (size_t)win->w,
-                 out + (size_t)r * win->w);
+                          out + (size_t)r * win->w);
 }
 
 static void gctbf_basis_row(const void *ctx, double x0, double dx, double y, double z, size_t n,
@@ -447,7 +447,7 @@ static void octave_grid(const nl_cellular_gctbf_basis *b, int octaves, double k,
     for (int r = 0; r < win->h; r++) {
       double *o = out + (size_t)r * win->w;
       nl_cellular_gctbf_row(b->cell, &b->g, f * (win->x0 + 0.5 * dx), f * dx,
-                   f * (win->y0 + (r + 0.5) * dy), f * win->z, (size_t)win->w, g);
+                            f * (win->y0 + (r + 0.5) * dy), f * win->z, (size_t)win->w, g);
       for (int s = 0; s < win->w; s++) o[s] += term(g[s], i);
     }
   }
@@ -455,7 +455,7 @@ static void octave_grid(const nl_cellular_gctbf_basis *b, int octaves, double k,
 }
 
 void nl_cellular_gctbf_fractal_bump_grid(const nl_cellular_gctbf_basis *b, int octaves, double k,
-                                const nl_noise_window *win, double *out)
+                                         const nl_noise_window *win, double *out)
 {
   octave_grid(b, octaves, k, win, bump_term, out);
   /* eq. 6: bump = fractal^3 */
@@ -466,7 +466,7 @@ void nl_cellular_gctbf_fractal_bump_grid(const nl_cellular_gctbf_basis *b, int o
  * which depends on the shading footprint; on our rasters the octaves stay
  * well below the pixel rate, so it is 1 here. */
 void nl_cellular_gctbf_cloud_grid(const nl_cellular_gctbf_basis *b, int octaves, double k,
-                         const nl_noise_window *win, double *out)
+                                  const nl_noise_window *win, double *out)
 {
   octave_grid(b, octaves, k, win, cloud_term, out);
 }
@@ -512,7 +512,7 @@ void nl_cellular_count_moments(const double *hist, int M, double *mean, double *
 }
 
 void nl_cellular_heightfield_shade(const double *height, int w, int h, double spacing,
-                          const double *light, double *out)
+                                   const double *light, double *out)
 {
   for (int r = 0; r < h; r++)
     for (int c = 0; c < w; c++) {

@@ -124,7 +124,7 @@ double nl_cellular_gctbf_value(const nl_cellular_gctbf *g, const double *F);
 double nl_cellular_gctbf_bound(const nl_cellular_gctbf *g);
 /* out[k] = GCTBF(x0 + k dx, y, z). */
 void nl_cellular_gctbf_row(const nl_cellular *c, const nl_cellular_gctbf *g, double x0, double dx, double y,
-                  double z, size_t count, double *out);
+                           double z, size_t count, double *out);
 
 /* GCTBF on a window (pixel centres, row 0 at y0), like nl_noise_fractal_grid. */
 void nl_cellular_gctbf_grid(const nl_cellular *c, const nl_cellular_gctbf *g, const nl_noise_window *win, double *out);
@@ -157,10 +157,10 @@ nl_status nl_cellular_f1_ks(const nl_cellular *c, size_t n, unsigned long seed,
 
 /* bump(x) of eq. 6 on win (scale k multiplies x); octaves 0..30. */
 void nl_cellular_gctbf_fractal_bump_grid(const nl_cellular_gctbf_basis *b, int octaves, double k,
-                                const nl_noise_window *win, double *out);
+                                         const nl_noise_window *win, double *out);
 /* fractal(x) of eq. 7 with smoothscale = 1. */
 void nl_cellular_gctbf_cloud_grid(const nl_cellular_gctbf_basis *b, int octaves, double k,
-                         const nl_noise_window *win, double *out);
+                                  const nl_noise_window *win, double *out);
 /* Sec. 4.3's textures (Q4) for one seed: a fresh table (lambda = 4, M = 50,
  * inverse-CDF counts) on win scaled by k, `octaves` after the first:
  *   NL_GCTBF_CLOUD  eq. 7's fractal of expr (nl_cellular_gctbf_cloud_grid); expr NULL:
@@ -175,6 +175,6 @@ nl_status nl_cellular_texture_grid(nl_cellular_gctbf_texture kind, const char *e
 /* out = max(0, N . L) of the surface z = -height over a w x h grid (w, h >= 2) with spacing
  * `spacing`; light is a unit vector. */
 void nl_cellular_heightfield_shade(const double *height, int w, int h, double spacing,
-                          const double *light, double *out);
+                                   const double *light, double *out);
 
 #endif

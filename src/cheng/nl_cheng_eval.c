@@ -75,7 +75,7 @@ void nl_cheng_value_grid(const nl_noise_grad2 *g, const nl_cheng_config *c, int 
   for (int y = 0; y < h; y++) {
     for (int l = 0; l < o.n; l++)
       nl_noise_grad2_row(g, o.freq[l] * 0.5 / w, o.freq[l] / w, o.freq[l] * (y + 0.5) / h, (size_t)w,
-                    rows + (size_t)l * w);
+                         rows + (size_t)l * w);
     for (int x = 0; x < w; x++) {
       for (int l = 0; l < o.n; l++) nv[l] = rows[(size_t)l * w + x];
       out[(size_t)y * w + x] = nl_cheng__control_value(c->con, nv, o.amp, o.n, s);

@@ -314,7 +314,7 @@ void nl_harness_params_done(nl_harness *r)
       strcat(names, r->param[p].name);
     }
     nl_harness_die(r, 2, "--set %s: unknown parameter for %s (valid: %s)", r->set_key[k], r->name,
-               r->nparam ? names : "none");
+                   r->nparam ? names : "none");
   }
   /* --help or --params: the list, and nothing else. Any --set given was
    * checked like a run's, so `--params --set ...` validates a sweep's values

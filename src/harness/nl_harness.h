@@ -101,9 +101,9 @@ const char *nl_harness_name(const nl_harness *r);     /* "s3_fbm" */
  * for the run's life (string literals). A bad value: "NAME: --set name: ...",
  * exit 2. */
 double nl_harness_param(nl_harness *r, const char *name, double def, double lo, double hi,
-                    const char *meaning);
+                        const char *meaning);
 long nl_harness_param_int(nl_harness *r, const char *name, long def, long lo, long hi,
-                      const char *meaning);
+                          const char *meaning);
 /* Every parameter is declared: refuses a --set name none declared (exit 2,
  * one line listing the valid names); then, with --help or --params, prints
  * the list (nl_harness_params_print) and exits 0. Runs at the first write at
@@ -245,7 +245,7 @@ typedef struct {
   size_t experiments, tables, values, drifted;   /* totals so far */
 } nl_harness_check_state;
 nl_status nl_harness_check_experiment(nl_harness_check_state *s, const char *ref_dir, const char *new_dir,
-                                     nl_error *err);
+                                      nl_error *err);
 /* "check: E experiments, T tables, V values compared, D drifted". */
 void nl_harness_check_totals(const nl_harness_check_state *s);
 

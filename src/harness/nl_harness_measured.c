@@ -43,7 +43,7 @@ void nl_harness_check_measured(nl_harness *r, const char *table, double multiple
        cg = nl_table_column(t, "configs");
   if (ce < 0 || cs < 0 || ct < 0 || cc < 0 || cr < 0 || ca < 0 || cg < 0)
     nl_harness_die(r, 1, "tolerances: data/blas_spread.tsv lacks a column (experiment, scale, table, "
-                     "column, max_rel_spread, max_abs_spread, configs)");
+                   "column, max_rel_spread, max_abs_spread, configs)");
   const char *scale = nl_harness_quick(r) ? "quick" : "full";
   int all = !strcmp(table, "*");
   /* A scale not measured borrows the other scale's spreads, and says so. */
@@ -88,7 +88,7 @@ void nl_harness_check_measured(nl_harness *r, const char *table, double multiple
   }
   if (!found)
     nl_harness_die(r, 1, "tolerances: no measured spread for %s %s (%s scale) in data/blas_spread.tsv; "
-                     "run bench/blas-spread.sh%s %s", nl_harness_name(r), table, scale,
+                   "run bench/blas-spread.sh%s %s", nl_harness_name(r), table, scale,
                nl_harness_quick(r) ? " --quick" : "", nl_harness_name(r));
   int nconf = 0;
   for (const char *p = configs; *p; p++) nconf += (p == configs || p[-1] == ' ') && *p != ' ';
@@ -96,13 +96,13 @@ void nl_harness_check_measured(nl_harness *r, const char *table, double multiple
     nl_harness_text(r, "This scale is not measured; the spreads below are those of the %s-scale run.\n", scale);
   if (ndiff == 0)
     nl_harness_text(r, "Regression rules: exact; no value of %s moved over %d CPU configurations "
-                      "(OpenBLAS kernels, BLAS threads, libm without FMA; `data/blas_spread.tsv`).\n",
+                       "(OpenBLAS kernels, BLAS threads, libm without FMA; `data/blas_spread.tsv`).\n",
                    all ? "any table" : table, nconf);
   else
     nl_harness_text(r, "Regression rules: %d column%s of %s moved over %d CPU configurations (OpenBLAS "
-                      "kernels, BLAS threads, libm without FMA; `data/blas_spread.tsv`), the largest "
-                      "relative spread %.2g (%s); each is compared within %g x its measured spread "
-                      "(relative%s); the other columns keep their declared rule (exact unless stated).\n",
+                       "kernels, BLAS threads, libm without FMA; `data/blas_spread.tsv`), the largest "
+                       "relative spread %.2g (%s); each is compared within %g x its measured spread "
+                       "(relative%s); the other columns keep their declared rule (exact unless stated).\n",
                    ndiff, ndiff == 1 ? "" : "s", moved, nconf, worst, worst_at[0] ? worst_at : "-",
                    multiple, nabs ? "; absolute for values at rounding level" : "");
 }

@@ -179,7 +179,7 @@ nl_image *nl_image_downsample(const nl_image *im, int f)
 }
 
 nl_image *nl_image_montage(const nl_image *const *images, const char *const *labels, int n,
-                     int cols, const char *title)
+                           int cols, const char *title)
 {
   int cw = 1, chh = 1, pad = 8;
   for (int i = 0; i < n; i++) {

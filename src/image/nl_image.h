@@ -70,7 +70,7 @@ nl_image *nl_image_downsample(const nl_image *im, int f);
  * (the full-size data stays in the experiment's tables and images). */
 #define NL_MONTAGE_MAX_WIDTH 2200
 nl_image *nl_image_montage(const nl_image *const *images, const char *const *labels, int n,
-                     int cols, const char *title);
+                           int cols, const char *title);
 
 /* OpenImageIO's version string (the one this build was compiled against),
  * for manifests; it does not load the image back-end. */

@@ -183,7 +183,7 @@ static inline void column3(const nl_noise_perm3 *p, long i, long j, long k, doub
   int h00 = p->p[AA] & 15, h10 = p->p[AB] & 15, h01 = p->p[AA + 1] & 15, h11 = p->p[AB + 1] & 15;
   double gx = lerp(w, lerp(v, grad3[h00][0], grad3[h10][0]), lerp(v, grad3[h01][0], grad3[h11][0]));
   double a = lerp(w, lerp(v, yz_part(h00, fy, fz), yz_part(h10, fy - 1, fz)),
-                     lerp(v, yz_part(h01, fy, fz - 1), yz_part(h11, fy - 1, fz - 1)));
+                  lerp(v, yz_part(h01, fy, fz - 1), yz_part(h11, fy - 1, fz - 1)));
   *gxo = gx;
   *ao = a;
 }
@@ -198,7 +198,7 @@ double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, double y, double z
 }
 
 void nl_noise_perm3_row(const nl_noise_perm3 *p, double x0, double dx, double y, double z,
-                   size_t n, double *out)
+                        size_t n, double *out)
 {
   if (n == 0) return;
   if (nl_noise_simd_row3(p, x0, dx, y, z, n, out) == GSL_SUCCESS) return;   /* nl_noise_simd.c */
@@ -268,7 +268,7 @@ double nl_noise_octaves_bound(const nl_noise_octaves *o, double basis_bound)
 }
 
 void nl_noise_fractal_row(const nl_noise_basis *b, const nl_noise_octaves *o, double x0, double dx,
-                    double y, double z, size_t n, double *out, double *scratch)
+                          double y, double z, size_t n, double *out, double *scratch)
 {
   if (nl_noise_simd_fractal_row(b, o, x0, dx, y, z, n, out, scratch) == GSL_SUCCESS) return;
   for (size_t k = 0; k < n; k++) out[k] = 0;
@@ -286,6 +286,6 @@ void nl_noise_fractal_grid(const nl_noise_basis *b, const nl_noise_octaves *o, c
   double *scratch = nl_xmalloc((size_t)win->w * sizeof *scratch);
   for (int r = 0; r < win->h; r++)
     nl_noise_fractal_row(b, o, win->x0 + 0.5 * dx, dx, win->y0 + (r + 0.5) * dy, win->z,
-                   (size_t)win->w, out + (size_t)r * win->w, scratch);
+                         (size_t)win->w, out + (size_t)r * win->w, scratch);
   free(scratch);
 }

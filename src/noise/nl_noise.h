@@ -72,7 +72,7 @@ void nl_noise_perm3_reference(nl_noise_perm3 *p);                 /* Perlin 2002
 void nl_noise_perm3_seed(nl_noise_perm3 *p, unsigned long seed);  /* shuffled 0..255 */
 double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, double y, double z);
 void nl_noise_perm3_row(const nl_noise_perm3 *p, double x0, double dx, double y, double z,
-                   size_t n, double *out);
+                        size_t n, double *out);
 #define NL_NOISE3_BOUND 1.22474487139158904910
 
 /* ---- SIMD kernels, run-time dispatch, batches of points (issue 17) -----
@@ -142,7 +142,7 @@ double nl_noise_octaves_bound(const nl_noise_octaves *o, double basis_bound);
 
 /* out[k] = sum of octaves at (x0 + k dx, y, z); scratch holds n doubles. */
 void nl_noise_fractal_row(const nl_noise_basis *b, const nl_noise_octaves *o, double x0, double dx,
-                    double y, double z, size_t n, double *out, double *scratch);
+                          double y, double z, size_t n, double *out, double *scratch);
 
 /* A w x h raster of the square [x0, x0 + size) x [y0, y0 + size) in the
  * plane z, sampled at pixel centres; row 0 is y0. */

@@ -242,7 +242,7 @@ static void points2(const nl_noise_grad2 *t, const double *x, const double *y, s
 }
 
 static void points3_lanes(const nl_noise_perm3 *P, const int *p32, const double *x, const double *y,
-                    const double *z, size_t n, double *out)
+                          const double *z, size_t n, double *out)
 {
   p3tab tab = p3_make(P, p32);
   for (size_t k = 0; k < n; k += NL_SIMD_W) {

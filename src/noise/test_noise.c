@@ -25,9 +25,9 @@ static double ref_noise(double x, double y, double z)
   double u = rfade(x), v = rfade(y), w = rfade(z);
   int A = P[X] + Y, AA = P[A] + Z, AB = P[A + 1] + Z, B = P[X + 1] + Y, BA = P[B] + Z, BB = P[B + 1] + Z;
   return rlerp(w, rlerp(v, rlerp(u, rgrad(P[AA], x, y, z), rgrad(P[BA], x - 1, y, z)),
-                           rlerp(u, rgrad(P[AB], x, y - 1, z), rgrad(P[BB], x - 1, y - 1, z))),
+                        rlerp(u, rgrad(P[AB], x, y - 1, z), rgrad(P[BB], x - 1, y - 1, z))),
                   rlerp(v, rlerp(u, rgrad(P[AA + 1], x, y, z - 1), rgrad(P[BA + 1], x - 1, y, z - 1)),
-                           rlerp(u, rgrad(P[AB + 1], x, y - 1, z - 1), rgrad(P[BB + 1], x - 1, y - 1, z - 1))));
+                        rlerp(u, rgrad(P[AB + 1], x, y - 1, z - 1), rgrad(P[BB + 1], x - 1, y - 1, z - 1))));
 }
 
 /* The 2D table (M = 512; caller frees) and the 3D permutation of one seed:

@@ -203,7 +203,7 @@ static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method meth
 }
 
 nl_status nl_cluster_linkage(const double *x, size_t n, size_t d, nl_cluster_linkage_method method,
-                     double *Z, nl_error *err)
+                             double *Z, nl_error *err)
 {
   if (n < 2) return nl_fail(err, NL_EINVAL, "clustering needs at least 2 points, got %zu", n);
   if (d < 1) return nl_fail(err, NL_EINVAL, "points have no coordinates");
@@ -285,7 +285,7 @@ static size_t monocrit(const double *Z, const double *md, size_t n, double cutof
 }
 
 nl_status nl_cluster_fcluster_distance(const double *Z, size_t n, double t, int *labels,
-                               size_t *nclusters, nl_error *err)
+                                       size_t *nclusters, nl_error *err)
 {
   if (!(t >= 0.0) || !isfinite(t))
     return nl_fail(err, NL_EINVAL, "cutoff distance %g must be finite and >= 0", t);
@@ -305,7 +305,7 @@ static int cmp_double(const void *a, const void *b)
 }
 
 nl_status nl_cluster_fcluster_maxclust(const double *Z, size_t n, size_t k, int *labels,
-                               size_t *nclusters, nl_error *err)
+                                       size_t *nclusters, nl_error *err)
 {
   if (k < 1) return nl_fail(err, NL_EINVAL, "number of clusters must be >= 1");
   nl_status s = check_Z(Z, n, err);

@@ -56,12 +56,12 @@ double nl_cluster_sumsq(const double *a, size_t d);
 /* Clusters n >= 2 points of dimension d >= 1 (finite values). Z has
  * (n - 1) * 4 doubles. NL_ENOMEM if the distance matrix cannot be had. */
 nl_status nl_cluster_linkage(const double *x, size_t n, size_t d, nl_cluster_linkage_method method,
-                     double *Z, nl_error *err);
+                             double *Z, nl_error *err);
 
 /* labels: n ints, 1-based. *nclusters (may be NULL) receives k. */
 nl_status nl_cluster_fcluster_distance(const double *Z, size_t n, double t, int *labels,
-                               size_t *nclusters, nl_error *err);
+                                       size_t *nclusters, nl_error *err);
 nl_status nl_cluster_fcluster_maxclust(const double *Z, size_t n, size_t k, int *labels,
-                               size_t *nclusters, nl_error *err);
+                                       size_t *nclusters, nl_error *err);
 
 #endif

@@ -150,7 +150,7 @@ static nl_status cdf_statistic(const double *x, size_t n, nl_stats_cdf_fn cdf, v
 }
 
 nl_status nl_stats_ks_test(const double *x, size_t n, nl_stats_cdf_fn cdf, void *params,
-                     nl_stats_ks_result *res, nl_error *err)
+                           nl_stats_ks_result *res, nl_error *err)
 {
   double dp, dm;
   nl_status s = cdf_statistic(x, n, cdf, params, &dp, &dm, err);
@@ -165,7 +165,7 @@ nl_status nl_stats_ks_test(const double *x, size_t n, nl_stats_cdf_fn cdf, void 
 }
 
 nl_status nl_stats_ks_test_uniform(const double *x, size_t n, double a, double b,
-                             nl_stats_ks_result *res, nl_error *err)
+                                   nl_stats_ks_result *res, nl_error *err)
 {
   double ab[2] = {a, b};
   nl_status s = check_interval(a, b, err);
@@ -214,7 +214,7 @@ double nl_stats_kuiper_sf(size_t n, double v)
 }
 
 nl_status nl_stats_kuiper_test(const double *x, size_t n, nl_stats_cdf_fn cdf, void *params,
-                         nl_stats_kuiper_result *res, nl_error *err)
+                               nl_stats_kuiper_result *res, nl_error *err)
 {
   nl_status s = cdf_statistic(x, n, cdf, params, &res->d_plus, &res->d_minus, err);
   if (s) return s;
@@ -225,7 +225,7 @@ nl_status nl_stats_kuiper_test(const double *x, size_t n, nl_stats_cdf_fn cdf, v
 }
 
 nl_status nl_stats_kuiper_test_uniform(const double *x, size_t n, double a, double b,
-                                 nl_stats_kuiper_result *res, nl_error *err)
+                                       nl_stats_kuiper_result *res, nl_error *err)
 {
   double ab[2] = {a, b};
   nl_status s = check_interval(a, b, err);
@@ -235,7 +235,7 @@ nl_status nl_stats_kuiper_test_uniform(const double *x, size_t n, double a, doub
 /* ---- two-sample KS ------------------------------------------------------ */
 
 nl_status nl_stats_ks2_test(const double *x, size_t n1, const double *y, size_t n2,
-                      nl_stats_ks_result *res, nl_error *err)
+                            nl_stats_ks_result *res, nl_error *err)
 {
   nl_status s = check_finite(x, n1, "first sample", err);
   if (!s) s = check_finite(y, n2, "second sample", err);
@@ -297,7 +297,7 @@ static void incr_total(nl_stats_ks_incr *s)
 }
 
 nl_stats_ks_incr *nl_stats_ks_incr_alloc(const double *x, size_t n, nl_stats_cdf_fn cdf, void *params,
-                             nl_error *err)
+                                         nl_error *err)
 {
   double *xs, *u;
   if (sorted_cdf(x, n, cdf, params, &xs, &u, err)) return NULL;
@@ -337,7 +337,7 @@ static size_t lower_bound(const double *x, size_t n, double v)
 }
 
 nl_status nl_stats_ks_incr_replace(nl_stats_ks_incr *s, double old_value, double new_value,
-                             nl_error *err)
+                                   nl_error *err)
 {
   size_t n = s->n, p = lower_bound(s->x, n, old_value), q;
   if (p == n || s->x[p] != old_value)
@@ -373,7 +373,7 @@ double nl_stats_ks_incr_p(const nl_stats_ks_incr *s)
 /* ---- chi-square ----------------------------------------------------------- */
 
 nl_status nl_stats_chisq_test(const double *observed, const double *expected, size_t k,
-                        nl_stats_chisq_result *res, nl_error *err)
+                              nl_stats_chisq_result *res, nl_error *err)
 {
   if (k < 2) return nl_fail(err, NL_EINVAL, "chi-square needs at least 2 bins, got %zu", k);
   double chi2 = 0.0, emin = INFINITY, n = 0.0;
@@ -411,7 +411,7 @@ static size_t bin_index(double v, size_t k, double a, double b)
 }
 
 gsl_histogram *nl_stats_histogram_uniform(const double *x, size_t n, size_t k, double a,
-                                    double b, size_t *outside, nl_error *err)
+                                          double b, size_t *outside, nl_error *err)
 {
   if (k < 1 || check_interval(a, b, err)) {
     if (k < 1) nl_fail(err, NL_EINVAL, "histogram needs at least 1 bin");
@@ -429,7 +429,7 @@ gsl_histogram *nl_stats_histogram_uniform(const double *x, size_t n, size_t k, d
 }
 
 nl_status nl_stats_chisq_test_uniform(const double *x, size_t n, size_t k, double a, double b,
-                                nl_stats_chisq_result *res, nl_error *err)
+                                      nl_stats_chisq_result *res, nl_error *err)
 {
   nl_status s = check_finite(x, n, "sample", err);
   if (s) return s;

@@ -122,13 +122,13 @@ double nl_stats_ks2_sf(size_t n1, size_t n2, double d, nl_stats_ks_method *metho
 void nl_stats_ks_statistic(const double *u, size_t n, double *d_plus, double *d_minus);
 
 nl_status nl_stats_ks_test(const double *x, size_t n, nl_stats_cdf_fn cdf, void *params,
-                     nl_stats_ks_result *res, nl_error *err);
+                           nl_stats_ks_result *res, nl_error *err);
 /* Against the uniform distribution on [a, b), a < b. */
 nl_status nl_stats_ks_test_uniform(const double *x, size_t n, double a, double b,
-                             nl_stats_ks_result *res, nl_error *err);
+                                   nl_stats_ks_result *res, nl_error *err);
 /* Two-sample test; res->d_plus = max(F1 - F2), res->d_minus = max(F2 - F1). */
 nl_status nl_stats_ks2_test(const double *x, size_t n1, const double *y, size_t n2,
-                      nl_stats_ks_result *res, nl_error *err);
+                            nl_stats_ks_result *res, nl_error *err);
 
 /* Incremental one-sample statistic. Fields are read-only for callers. */
 typedef struct {
@@ -147,13 +147,13 @@ typedef struct {
 /* Copies and sorts x. Returns NULL (with err) on n = 0, NaN/inf data or
  * CDF values outside [0, 1]. */
 nl_stats_ks_incr *nl_stats_ks_incr_alloc(const double *x, size_t n, nl_stats_cdf_fn cdf, void *params,
-                             nl_error *err);
+                                         nl_error *err);
 void nl_stats_ks_incr_free(nl_stats_ks_incr *s);
 /* Replaces one occurrence of old_value by new_value and updates d_plus,
  * d_minus, d. NL_EINVAL (state unchanged) if old_value is not in the sample or
  * new_value is not finite. To undo a move, replace new_value by old_value. */
 nl_status nl_stats_ks_incr_replace(nl_stats_ks_incr *s, double old_value, double new_value,
-                             nl_error *err);
+                                   nl_error *err);
 /* p-value of the current statistic, nl_stats_ks_sf(n, d). */
 double nl_stats_ks_incr_p(const nl_stats_ks_incr *s);
 
@@ -167,9 +167,9 @@ typedef struct {
 /* P(V_n >= v) (see the top of this header for the method and its accuracy). */
 double nl_stats_kuiper_sf(size_t n, double v);
 nl_status nl_stats_kuiper_test(const double *x, size_t n, nl_stats_cdf_fn cdf, void *params,
-                         nl_stats_kuiper_result *res, nl_error *err);
+                               nl_stats_kuiper_result *res, nl_error *err);
 nl_status nl_stats_kuiper_test_uniform(const double *x, size_t n, double a, double b,
-                                 nl_stats_kuiper_result *res, nl_error *err);
+                                       nl_stats_kuiper_result *res, nl_error *err);
 
 typedef struct {
   double chi2;
@@ -183,10 +183,10 @@ typedef struct {
 /* Pearson's test of observed counts against expected counts (k >= 2, all
  * expected > 0): scipy.stats.chisquare(observed, expected). */
 nl_status nl_stats_chisq_test(const double *observed, const double *expected, size_t k,
-                        nl_stats_chisq_result *res, nl_error *err);
+                              nl_stats_chisq_result *res, nl_error *err);
 /* Bins x into k equal bins of [a, b) and tests against equal expected counts. */
 nl_status nl_stats_chisq_test_uniform(const double *x, size_t n, size_t k, double a, double b,
-                                nl_stats_chisq_result *res, nl_error *err);
+                                      nl_stats_chisq_result *res, nl_error *err);
 
 /* ---- two samples from their summaries -----------------------------------
  *
@@ -220,7 +220,7 @@ double nl_stats_ecdf_eval(const nl_stats_ecdf *e, double t);
 /* A gsl_histogram with k equal bins on [a, b) holding x; values outside
  * [a, b) are counted in *outside (may be NULL) and not binned. */
 gsl_histogram *nl_stats_histogram_uniform(const double *x, size_t n, size_t k, double a,
-                                    double b, size_t *outside, nl_error *err);
+                                          double b, size_t *outside, nl_error *err);
 
 /* The bin of v among k equal bins of [a, b] by the rule nl_stats_histogram_uniform
  * and nl_stats_chisq_test_uniform use (numpy.histogram's): the index computed

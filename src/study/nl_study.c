@@ -71,11 +71,11 @@ void nl_study_octave_settings(const int *oct, int n, int turbulence, nl_study_se
 nl_noise_window nl_study_window(nl_harness *r)
 {
   int size = (int)nl_harness_param_int(r, "size", nl_harness_quick(r) ? 128 : 512, 16, 4096,
-                                   "image side in pixels of each survey slice (quick 128)");
+                                       "image side in pixels of each survey slice (quick 128)");
   double extent = nl_harness_param(r, "extent", 4.0, 1e-3, 1e4,
-                               "side of the noise-space square [0, extent)^2 the slice covers");
+                                   "side of the noise-space square [0, extent)^2 the slice covers");
   double z = nl_harness_param(r, "z", 0.5, -1e6, 1e6,
-                          "z of the 2D slice through Perlin's improved 3D noise");
+                              "z of the 2D slice through Perlin's improved 3D noise");
   nl_noise_window w = {0, 0, z, extent, size, size};
   return w;
 }
@@ -84,7 +84,7 @@ nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int 
                                  const char *prefix, const char *title)
 {
   nl_harness_text(r, "**Slides:** %s **Ours:** the slice z = %g of Perlin's improved 3D noise over "
-                    "[0, %g)^2, %d seeds for the numbers.\n", slides, win->z, win->size, nl_harness_seeds(r));
+                     "[0, %g)^2, %d seeds for the numbers.\n", slides, win->z, win->size, nl_harness_seeds(r));
   const int oct[] = {1, 2, 3, 8};   /* the slides' panels (a)-(d) */
   nl_study_setting st[4];
   char labels[4][32];

@@ -40,7 +40,7 @@ typedef struct {
 } nl_study_survey;
 
 nl_study_survey *nl_study_survey_run(nl_study_basis_kind kind, const nl_noise_octaves *o, const nl_noise_window *win,
-                         unsigned long seed0, int nseeds);
+                                     unsigned long seed0, int nseeds);
 void nl_study_survey_free(nl_study_survey *s);
 
 /* A series of surveys, one per setting (the slides' panels (a), (b), ...):
@@ -57,8 +57,8 @@ void nl_study_survey_free(nl_study_survey *s);
  * Any output pointer may be NULL. */
 typedef struct { const char *label; nl_noise_octaves oct; double gain, lacunarity; } nl_study_setting;
 void nl_study_survey_series(nl_study_basis_kind kind, const nl_study_setting *settings, int n,
-                      const nl_noise_window *win, unsigned long seed0, int nseeds,
-                      nl_table **dist, nl_table **spectrum, nl_image **panels);
+                            const nl_noise_window *win, unsigned long seed0, int nseeds,
+                            nl_table **dist, nl_table **spectrum, nl_image **panels);
 
 nl_table *nl_study_series(nl_harness *r, const char *prefix, const char *title, nl_study_basis_kind kind,
                           const nl_study_setting *settings, int n, const nl_noise_window *win);

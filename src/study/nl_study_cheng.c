@@ -16,23 +16,23 @@ static void run_params(nl_harness *r, nl_cheng_config *c, int *grid)
   *grid = (int)nl_harness_param_int(r, "grid", 64, 2, 1024,
                                 "control grid G: the pattern is read as G x G control cells over the unit square");   /* see nl_cheng.h on grid vs f */
   c->w1 = nl_harness_param(r, "w1", c->w1, 0, 1e6,
-                       "weight w1 of the statistic term E_KS in E = w1 E_KS + w2 E_Con (Cheng eq. 3.9; thesis 0.995)");
+                           "weight w1 of the statistic term E_KS in E = w1 E_KS + w2 E_Con (Cheng eq. 3.9; thesis 0.995)");
   c->w2 = nl_harness_param(r, "w2", c->w2, 0, 1e6,
-                       "weight w2 of the control term E_Con in E = w1 E_KS + w2 E_Con (Cheng eq. 3.9; thesis 0.005)");
+                           "weight w2 of the control term E_Con in E = w1 E_KS + w2 E_Con (Cheng eq. 3.9; thesis 0.005)");
   c->f1 = nl_harness_param(r, "f1", c->f1, 0, 1024,
-                       "starting frequency f1 of the fractal sum, f_l = f1 2^(l-1) (Cheng eq. 3.10; thesis 8)");
+                           "starting frequency f1 of the fractal sum, f_l = f1 2^(l-1) (Cheng eq. 3.10; thesis 8)");
   c->a1 = nl_harness_param(r, "a1", c->a1, 1e-6, 1e6,
-                       "first octave's amplitude divisor a1, a_l = a1 2^(l-1) (Cheng eq. 3.10; thesis 4)");
+                           "first octave's amplitude divisor a1, a_l = a1 2^(l-1) (Cheng eq. 3.10; thesis 4)");
   c->octaves = (int)nl_harness_param_int(r, "octaves", c->octaves, 1, NL_CHENG_MAX_OCTAVES,
-                                     "octaves F of the fractal sum, one annealing level each (thesis 4)");
+                                         "octaves F of the fractal sum, one annealing level each (thesis 4)");
   c->sched.n_temps = (int)nl_harness_param_int(r, "temps", q ? 8 : c->sched.n_temps, 1, 100000,
-                                           "annealing temperature steps per level (n_temps; quick 8)");
+                                               "annealing temperature steps per level (n_temps; quick 8)");
   c->sched.moves_per_var = nl_harness_param(r, "moves_per_var", q ? 5 : c->sched.moves_per_var, 1e-3, 1e6,
-                                        "annealing moves per temperature, as a multiple of the level's variables (quick 5)");
+                                            "annealing moves per temperature, as a multiple of the level's variables (quick 5)");
 }
 
 nl_harness *nl_study_cheng_begin(const char *name, const char *title, int *argc, char **argv,
-                       nl_cheng_config *c, int *grid, const char **patterns)
+                                 nl_cheng_config *c, int *grid, const char **patterns)
 {
   nl_error err;
   if (nl_study_cheng_patterns_parse(argc, argv, patterns, &err)) {
@@ -45,7 +45,7 @@ nl_harness *nl_study_cheng_begin(const char *name, const char *title, int *argc,
    * does not touch it; the first write does). */
   if (nl_study_cheng_patterns_check(*patterns, *grid, &err))
     nl_harness_die(r, 2, "control patterns: %s (make them with build/tools/noiselab-patterns "
-                     "data/patterns, or pass --patterns DIR)", err.msg);
+                   "data/patterns, or pass --patterns DIR)", err.msg);
   return r;
 }
 
@@ -93,7 +93,7 @@ static double frac_at_least(const double *x, int k, double a)
  * the mean (and sd, min) over the k runs; uniform_* = fraction of runs whose
  * p-value is >= 0.05 (not rejected as non-uniform at alpha = 0.05). */
 void nl_study_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
-                          const nl_cheng_eval *evs, int k)
+                                const nl_cheng_eval *evs, int k)
 {
   double *x = nl_xmalloc((size_t)k * sizeof *x), row[NSUM];
   int c = 0;
@@ -141,7 +141,7 @@ nl_table *nl_study_cheng_cdf_table(const nl_noise_grad2 *const *tables, const ch
 }
 
 nl_table *nl_study_cheng_hist_table(const nl_noise_grad2 *const *tables, const char *const *names, int n,
-                              size_t bins)
+                                    size_t bins)
 {
   const char *cols[16];
   cols[0] = "theta";
@@ -184,8 +184,8 @@ nl_cheng_pattern *nl_study_cheng_pattern(const nl_study_cheng *s, const char *na
 }
 
 nl_noise_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_config *c,
-                               const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
-                               const char *const *labels)
+                                     const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
+                                     const char *const *labels)
 {
   int k = nl_harness_seeds(s->r);
   nl_cheng_eval *evs = nl_xmalloc((size_t)k * sizeof *evs);

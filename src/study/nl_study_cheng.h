@@ -36,9 +36,9 @@
 /* From an RGBA/RGB/grey image: D = red (grey) channel, alpha 0 = no control.
  * NL_EINVAL if no cell carries control or grid < 1. */
 nl_status nl_study_cheng_pattern_from_image(const nl_image *im, int grid, nl_cheng_pattern **out,
-                                      nl_error *err);
+                                            nl_error *err);
 nl_status nl_study_cheng_pattern_read(const char *path, int grid, nl_cheng_pattern **out,
-                                nl_error *err);
+                                      nl_error *err);
 /* The pattern as an RGB image (grid x grid): red = D, no-control cells grey. */
 nl_image *nl_study_cheng_pattern_image(const nl_cheng_pattern *p);
 
@@ -59,7 +59,7 @@ nl_status nl_study_cheng_patterns_parse(int *argc, char **argv, const char **dir
 nl_status nl_study_cheng_patterns_check(const char *dir, int grid, nl_error *err);
 /* DIR/NAME.png read at `grid`; on failure prints "PROG: reason" and exits 2. */
 nl_cheng_pattern *nl_study_cheng_pattern_load_or_die(const char *prog, const char *dir,
-                                               const char *name, int grid);
+                                                     const char *name, int grid);
 
 /* ---- textures as images (sec. 4.1) -------------------------------------- */
 
@@ -88,7 +88,7 @@ nl_image *nl_study_cheng_pattern_panel(const nl_cheng_pattern *p, int size);
  * touched. The experiment then reads its own parameters and calls
  * nl_study_cheng_params_done. */
 nl_harness *nl_study_cheng_begin(const char *name, const char *title, int *argc, char **argv,
-                       nl_cheng_config *c, int *grid, const char **patterns);
+                                 nl_cheng_config *c, int *grid, const char **patterns);
 /* nl_harness_params_done, then nl_cheng_config_check ("NAME: message", exit 2),
  * and the patterns folder into the manifest. */
 void nl_study_cheng_params_done(nl_harness *r, const nl_cheng_config *c, const char *patterns);
@@ -98,12 +98,12 @@ void nl_study_cheng_params_done(nl_harness *r, const nl_cheng_config *c, const c
  * runs not rejected as non-uniform at alpha = 0.05), roughness, roughness_sd. */
 nl_table *nl_study_cheng_summary_alloc(int nlabels, const char *const *labels);
 void nl_study_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
-                          const nl_cheng_eval *evs, int k);
+                                const nl_cheng_eval *evs, int k);
 /* ECDF of each table's angles: F = i/M and u_NAME = sorted angle / 2 pi. */
 nl_table *nl_study_cheng_cdf_table(const nl_noise_grad2 *const *tables, const char *const *names, int n);
 /* Histogram of each table's angles in `bins` bins: theta (bin centre), NAME counts. */
 nl_table *nl_study_cheng_hist_table(const nl_noise_grad2 *const *tables, const char *const *names,
-                              int n, size_t bins);
+                                    int n, size_t bins);
 /* A w x h raster as a table of h rows and w columns c0..c{w-1} (gnuplot's
  * "matrix columnheaders" layout, for height maps). */
 nl_table *nl_study_cheng_matrix_table(const double *v, int w, int h);
@@ -131,8 +131,8 @@ nl_cheng_pattern *nl_study_cheng_pattern(const nl_study_cheng *s, const char *na
  * appended to sum under the nlabels labels (nl_study_cheng_summary_add); returns
  * the first seed's optimised table (caller frees). Exit 1 on error. */
 nl_noise_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_config *c,
-                               const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
-                               const char *const *labels);
+                                     const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
+                                     const char *const *labels);
 /* The n panels as a labelled montage of `cols` columns written to the run's
  * FILE; frees the panels. */
 void nl_study_cheng_montage(nl_harness *r, nl_image **panels, const char *const *labels, int n, int cols,
@@ -183,9 +183,9 @@ typedef struct {
   nl_cheng_pool *pool;
 } nl_study_cheng_repro;
 nl_status nl_study_cheng_repro_original(const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                                  unsigned long seed, nl_study_cheng_repro *out, nl_error *err);
+                                        unsigned long seed, nl_study_cheng_repro *out, nl_error *err);
 nl_status nl_study_cheng_repro_pool(nl_study_cheng_repro *rp, const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                              const nl_cheng_pool_options *po, unsigned long seed, nl_error *err);
+                                    const nl_cheng_pool_options *po, unsigned long seed, nl_error *err);
 void nl_study_cheng_repro_clear(nl_study_cheng_repro *rp);
 /* The texture th on s's setting: its pattern (returned; caller frees), *c =
  * s's config with th's control term, the original and its pool in *rp.

@@ -16,7 +16,7 @@
 /* ---- patterns from images ----------------------------------------------- */
 
 nl_status nl_study_cheng_pattern_from_image(const nl_image *im, int grid, nl_cheng_pattern **out,
-                                      nl_error *err)
+                                            nl_error *err)
 {
   return nl_cheng_pattern_from_pixels(im->data, im->width, im->height, im->channels, grid, out, err);
 }
@@ -157,7 +157,7 @@ nl_status nl_study_cheng_patterns_check(const char *dir, int grid, nl_error *err
 }
 
 nl_cheng_pattern *nl_study_cheng_pattern_load_or_die(const char *prog, const char *dir,
-                                               const char *name, int grid)
+                                                     const char *name, int grid)
 {
   char file[256];
   snprintf(file, sizeof file, "%s.png", name);

@@ -47,7 +47,7 @@ void nl_study_cheng_repro_params(nl_harness *r, nl_cheng_pool_options *po, nl_ch
 }
 
 nl_status nl_study_cheng_repro_original(const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                                  unsigned long seed, nl_study_cheng_repro *out, nl_error *err)
+                                        unsigned long seed, nl_study_cheng_repro *out, nl_error *err)
 {
   memset(out, 0, sizeof *out);
   double t0 = nl_time_now();
@@ -57,7 +57,7 @@ nl_status nl_study_cheng_repro_original(const nl_cheng_config *c, const nl_cheng
 }
 
 nl_status nl_study_cheng_repro_pool(nl_study_cheng_repro *rp, const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                              const nl_cheng_pool_options *po, unsigned long seed, nl_error *err)
+                                    const nl_cheng_pool_options *po, unsigned long seed, nl_error *err)
 {
   double t0 = nl_time_now();
   nl_status st = nl_cheng_pool_collect(rp->opt, c, pat, po, seed, &rp->pool, err);

@@ -28,7 +28,7 @@ static void one_seed(nl_study_survey *s, nl_study_basis_kind kind, const nl_nois
 }
 
 nl_study_survey *nl_study_survey_run(nl_study_basis_kind kind, const nl_noise_octaves *o, const nl_noise_window *win,
-                         unsigned long seed0, int nseeds)
+                                     unsigned long seed0, int nseeds)
 {
   nl_study_survey *s = nl_xcalloc(1, sizeof *s);
   s->nseeds = nseeds;
@@ -78,8 +78,8 @@ static void dist_row(nl_table *t, const nl_study_setting *st, const nl_study_sur
 }
 
 void nl_study_survey_series(nl_study_basis_kind kind, const nl_study_setting *settings, int n,
-                      const nl_noise_window *win, unsigned long seed0, int nseeds,
-                      nl_table **dist, nl_table **spectrum, nl_image **panels)
+                            const nl_noise_window *win, unsigned long seed0, int nseeds,
+                            nl_table **dist, nl_table **spectrum, nl_image **panels)
 {
   nl_table *dt = dist_table(), *sp = NULL;
   for (int i = 0; i < n; i++) {

@@ -80,7 +80,7 @@ nl_texture_ramp nl_texture_ramp_marble(void)
 }
 
 void nl_texture_marble_grid(const nl_noise_basis *b, const nl_noise_octaves *o, const nl_noise_window *win,
-                    double omega, double a, double *u)
+                            double omega, double a, double *u)
 {
   nl_noise_fractal_grid(b, o, win, u);
   double dy = win->size / win->h;

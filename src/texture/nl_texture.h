@@ -42,7 +42,7 @@ static inline double nl_texture_marble(double y, double a, double s) { return 0.
  * u = (1 + sin(omega * p.y)) / 2 (omega = 2 pi stripes per unit).
  * u holds w * h values in [0, 1], rows from y0. */
 void nl_texture_marble_grid(const nl_noise_basis *b, const nl_noise_octaves *o, const nl_noise_window *win,
-                    double omega, double a, double *u);
+                            double omega, double a, double *u);
 
 /* Built-in ramps: a grey ramp and a white-grey-blue marble ramp. */
 nl_texture_ramp nl_texture_ramp_grey(void);
