@@ -24,25 +24,22 @@ nl_status nl_fail(nl_error *err, nl_status status, const char *fmt, ...)
   return status;
 }
 
-static void oom_default(size_t n)
-{
-  fprintf(stderr, "noiselab: out of memory allocating %zu bytes\n", n);
-  abort();
-}
-
-static nl_oom_handler oom_handler = oom_default;
+/* NULL: abort() after the message, as GSL's default error handler does. */
+static nl_oom_handler oom_handler = NULL;
 
 nl_oom_handler nl_set_oom_handler(nl_oom_handler h)
 {
   nl_oom_handler old = oom_handler;
-  oom_handler = h ? h : oom_default;
+  oom_handler = h;
   return old;
 }
 
+/* The message is always the same; the handler only decides how to end. */
 static void oom(size_t n)
 {
-  oom_handler(n);
-  abort();   /* a handler must not return */
+  fprintf(stderr, "noiselab: out of memory allocating %zu bytes\n", n);
+  if (oom_handler) oom_handler(n);
+  abort();   /* the default, and a handler must not return */
 }
 
 void *nl_xmalloc(size_t n)

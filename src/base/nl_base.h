@@ -36,11 +36,12 @@ nl_status nl_fail(nl_error *err, nl_status status, const char *fmt, ...)
   __attribute__((format(printf, 3, 4)));
 
 /* Allocation that never returns NULL: out-of-memory is not a condition any
- * caller here can recover from. On failure the out-of-memory handler runs
- * with the size asked for; as GSL's default error handler, the default one
- * prints "noiselab: out of memory allocating N bytes" and calls abort().
- * Programs choose their own (the experiment harness installs one that
- * exits 3); a handler must not return. Returns the previous handler. */
+ * caller here can recover from. On failure it prints "noiselab: out of
+ * memory allocating N bytes", then calls the out-of-memory handler with the
+ * size asked for, which decides how the program ends and must not return;
+ * with none (NULL, the default) it calls abort(), as GSL's default error
+ * handler does. Programs choose their own (the experiment harness installs
+ * one that exits 3). nl_set_oom_handler returns the previous handler. */
 typedef void (*nl_oom_handler)(size_t n);
 nl_oom_handler nl_set_oom_handler(nl_oom_handler h);
 void *nl_xmalloc(size_t n);

@@ -176,7 +176,7 @@ nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_erro
 
 void nl_harness_oom_exit(size_t n)
 {
-  fprintf(stderr, "noiselab: out of memory allocating %zu bytes\n", n);
+  (void)n;   /* base has printed the message */
   exit(3);
 }
 

@@ -81,7 +81,7 @@ nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_erro
 void nl_harness_options_free(nl_harness_options *o);
 
 /* The out-of-memory handler of programs (nl_set_oom_handler, nl_base.h):
- * "noiselab: out of memory allocating N bytes", exit 3. nl_harness_begin
+ * after base's "noiselab: out of memory allocating N bytes", exit 3. nl_harness_begin
  * installs it; the command-line tools install it first thing in main. */
 void nl_harness_oom_exit(size_t n);
 
