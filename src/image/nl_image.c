@@ -32,7 +32,6 @@ static void backend_open(void)
 {
   const char *env = getenv("NL_OIIO_MODULE");
   const char *tries[3] = {env && *env ? env : NULL, NL_OIIO_MODULE_BUILD, NL_OIIO_MODULE_INSTALLED};
-  size_t used = 0;
   for (int i = 0; i < 3; i++) {
     if (!tries[i]) continue;
     void *h = dlopen(tries[i], RTLD_NOW | RTLD_LOCAL);
@@ -42,9 +41,10 @@ static void backend_open(void)
       if (oiio_read && oiio_write) return;
       oiio_read = NULL; oiio_write = NULL;
     }
-    const char *e = dlerror();
-    int n = snprintf(oiio_why + used, sizeof oiio_why - used, "%s%s", used ? "; " : "", e ? e : tries[i]);
-    if (n > 0) used += (size_t)n < sizeof oiio_why - used ? (size_t)n : sizeof oiio_why - used - 1;
+    const char *e = dlerror();   /* why dlopen or dlsym failed: the message names the file */
+    if (h) dlclose(h);
+    size_t used = strlen(oiio_why);   /* snprintf truncates what does not fit */
+    snprintf(oiio_why + used, sizeof oiio_why - used, "%s%s", used ? "; " : "", e ? e : tries[i]);
   }
 }
 
