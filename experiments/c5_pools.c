@@ -38,13 +38,13 @@ static void report(nl_harness *r, const nl_study_cheng_pools *T, const nl_cheng_
   nl_harness_report_table(r, T->gmm, "Tables 4.2-4.4, ours beside the thesis's (thesis_* columns): one row per texture, "
                           "split and cutoff rule", 5);
   for (size_t q = 0; q < T->gmm->nrows; q++) {
-    const char *tex = nl_study_text(T->gmm, q, "texture"), *rule = nl_study_text(T->gmm, q, "cutoff_rule");
+    const char *tex = nl_table_text(T->gmm, q, "texture"), *rule = nl_table_text(T->gmm, q, "cutoff_rule");
     nl_harness_text(r, "%s (low levels %g), %s cutoff %.4g: K %.3g -> %.3g (thesis %g -> %g), AIC %.6g (thesis %.6g; "
                        "per input sample %.4g vs %.4g), status %s.\n", tex, nl_table_value(T->gmm, q, "low_levels"), rule,
                    nl_table_value(T->gmm, q, "cutoff"), nl_table_value(T->gmm, q, "K_initial"), nl_table_value(T->gmm, q, "K_final"),
                    nl_table_value(T->gmm, q, "thesis_K_initial"), nl_table_value(T->gmm, q, "thesis_K_final"), nl_table_value(T->gmm, q, "AIC"),
                    nl_table_value(T->gmm, q, "thesis_AIC"), nl_table_value(T->gmm, q, "AIC") / nl_table_value(T->gmm, q, "input_samples"),
-                   nl_table_value(T->gmm, q, "thesis_AIC") / nl_table_value(T->gmm, q, "thesis_samples"), nl_study_text(T->gmm, q, "status"));
+                   nl_table_value(T->gmm, q, "thesis_AIC") / nl_table_value(T->gmm, q, "thesis_samples"), nl_table_text(T->gmm, q, "status"));
   }
   double maxchord = 2 * sqrt(nl_table_value(T->orig, 0, "n_low"));
   nl_harness_text(r, "What cannot be compared: the thesis's cutoffs (15.5-19.5) and AIC values are in units of a distance "
@@ -73,7 +73,7 @@ static void report(nl_harness *r, const nl_study_cheng_pools *T, const nl_cheng_
     nl_harness_text(r, "%s (low levels %g): E_R of the original %.5g; pool runs reach %.5g (best) and the kept solutions "
                        "have median %.5g; the largest distance of a kept solution above its run's best is %.3g, so "
                        "epsilon = %g excluded %g of %g solutions: on our scale of E_R the thesis's bound keeps every "
-                       "tail state.\n", nl_study_text(T->orig, q, "texture"), nl_table_value(T->orig, q, "low_levels"),
+                       "tail state.\n", nl_table_text(T->orig, q, "texture"), nl_table_value(T->orig, q, "low_levels"),
                    nl_table_value(T->orig, q, "E_R_original"), nl_table_value(T->orig, q, "E_R_pool_best"), nl_table_value(T->orig, q, "E_R_pool_median"),
                    nl_table_value(T->orig, q, "E_R_pool_max_gap"), po->epsilon, nl_table_value(T->gmm, 2 * q, "excluded"),
                    nl_table_value(T->gmm, 2 * q, "pool") + nl_table_value(T->gmm, 2 * q, "excluded"));
@@ -86,7 +86,7 @@ static void report(nl_harness *r, const nl_study_cheng_pools *T, const nl_cheng_
   for (size_t q = 0; q < T->assess->nrows; q++) {
     double tr = nl_table_value(T->assess, q, "ll_train"), he = nl_table_value(T->assess, q, "ll_held");
     nl_harness_text(r, "%s, %s: ll_train %.4g, ll_held %.4g (%s); per-angle KS median D %.3g, rejected on %.0f%% of the angles.\n",
-                    nl_study_text(T->assess, q, "texture"), nl_study_text(T->assess, q, "model"), tr, he,
+                    nl_table_text(T->assess, q, "texture"), nl_table_text(T->assess, q, "model"), tr, he,
                     he < tr - 0.1 * fabs(tr) ? "the mixture fits its input far better than the rest of the pool: over-fitted"
                                              : "held-out rows score like the input: it generalises",
                     nl_table_value(T->assess, q, "ks_median"), 100 * nl_table_value(T->assess, q, "ks_reject"));

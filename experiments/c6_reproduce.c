@@ -36,7 +36,7 @@ static void report(nl_harness *r, const nl_table *sum, int nrep, double swap, co
                           "a reproduction's angles and the original's", 4);
   for (size_t q = 0; q + 1 < sum->nrows; q++) {
     if (nl_table_value(sum, q, "n") != 1) continue;   /* an original row, its reproductions follow */
-    const char *tex = nl_study_text(sum, q, "texture");
+    const char *tex = nl_table_text(sum, q, "texture");
     size_t w = q + 1;
     if (w >= sum->nrows || nl_table_value(sum, w, "n") == 1) continue;
     nl_harness_text(r, "%s: E_KS %.4g (original) vs %.4g +- %.2g (reproduced; %.0f%% below the original); E_Con %.4g vs "
@@ -52,7 +52,7 @@ static void report(nl_harness *r, const nl_table *sum, int nrep, double swap, co
     if (w + 1 < sum->nrows && nl_table_value(sum, w + 1, "n") != 1)
       nl_harness_text(r, "%s without the swap (%s): E_KS %.4g +- %.2g (%.0f%% below the original), E_Con %.4g +- %.3g "
                          "(%.0f%% below): the swap of the high entries moves E_Con by %+.1f%%.\n", tex,
-                     nl_study_text(sum, w + 1, "kind"), nl_table_value(sum, w + 1, "E_ks"), nl_table_value(sum, w + 1, "E_ks_sd"),
+                     nl_table_text(sum, w + 1, "kind"), nl_table_value(sum, w + 1, "E_ks"), nl_table_value(sum, w + 1, "E_ks_sd"),
                      100 * nl_table_value(sum, w + 1, "below_ks"), nl_table_value(sum, w + 1, "E_con"), nl_table_value(sum, w + 1, "E_con_sd"),
                      100 * nl_table_value(sum, w + 1, "below_con"),
                      100 * (nl_table_value(sum, w, "E_con") - nl_table_value(sum, w + 1, "E_con")) / nl_table_value(sum, w + 1, "E_con"));

@@ -3,6 +3,7 @@
 #include "spectrum/nl_spectrum.h"
 #include "stats/nl_stats.h"
 
+#include <gsl/gsl_statistics_double.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -160,4 +161,13 @@ double nl_study_mean_where(const nl_table *t, const char *key, const char *value
     }
   if (below) *below = b;
   return n ? s / n : NAN;
+}
+
+double nl_study_mean(const double *x, int n) { return gsl_stats_mean(x, 1, (size_t)n); }
+double nl_study_sd(const double *x, int n) { return n > 1 ? gsl_stats_sd(x, 1, (size_t)n) : 0.0; }
+double nl_study_min(const double *x, int n)
+{
+  double m = x[0];
+  for (int i = 1; i < n; i++) m = fmin(m, x[i]);
+  return m;
 }

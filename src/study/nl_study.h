@@ -97,8 +97,14 @@ nl_table *nl_study_radial_table(const double *const *img, const char *const *col
  * far a synthesis' histograms are from its exemplar's (sec. 5). */
 double nl_study_ks_channels(const nl_image *a, const nl_image *b, double *per);
 
-/* Mean and sample sd (n - 1; 0 for n = 1) of n values, summed in order:
- * the summaries of quantities measured over seeds. */
+/* Summaries of quantities measured over seeds. Two roundings exist because
+ * the references were made with both: nl_study_mean/_sd are GSL's
+ * (gsl_stats_mean's running mean; sd 0 for n < 2), nl_study_mean_sd sums in
+ * order (two passes; sd 0 for n = 1). Making one call the other would move
+ * the last digits of the tables built on it. */
+double nl_study_mean(const double *x, int n);
+double nl_study_sd(const double *x, int n);
+double nl_study_min(const double *x, int n);
 void nl_study_mean_sd(const double *v, int n, double *m, double *sd);
 
 /* Mean of column `col` over the rows of a per-seed table whose text column

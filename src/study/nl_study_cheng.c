@@ -73,15 +73,6 @@ nl_table *nl_study_cheng_summary_alloc(int nlabels, const char *const *labels)
 
 #define FIELD(evs, k, f, out) do { for (int i_ = 0; i_ < (k); i_++) (out)[i_] = (evs)[i_].f; } while (0)
 
-double nl_study_mean(const double *x, int n) { return gsl_stats_mean(x, 1, (size_t)n); }
-double nl_study_sd(const double *x, int n) { return n > 1 ? gsl_stats_sd(x, 1, (size_t)n) : 0.0; }
-double nl_study_min(const double *x, int n)
-{
-  double m = x[0];
-  for (int i = 1; i < n; i++) m = fmin(m, x[i]);
-  return m;
-}
-
 static double frac_at_least(const double *x, int k, double a)
 {
   int n = 0;
@@ -211,11 +202,6 @@ double nl_study_column_min(const nl_table *t, const char *col)
   double m = INFINITY;
   for (size_t q = 0; q < t->nrows; q++) m = fmin(m, nl_table_value(t, q, col));
   return m;
-}
-
-const char *nl_study_text(const nl_table *t, size_t r, const char *col)
-{
-  return t->text[r * t->ncols + nl_table_column_must(t, col)];
 }
 
 nl_table *nl_study_cheng_table41(const nl_table *runs, const double (*thesis)[NL_STUDY_TABLE41_COLS], int npair)

@@ -15,7 +15,6 @@
  *             nl_study_cheng_texture_image, nl_study_cheng_pattern_panel (nl_study_cheng_image.c)
  *   runs      nl_study_cheng_begin, nl_study_cheng_params_done, nl_study_cheng_summary_alloc / _add,
  *             nl_study_cheng_cdf_table, nl_study_cheng_hist_table, nl_study_cheng_matrix_table,
- *             nl_study_mean, nl_study_sd, nl_study_min  (nl_study_cheng.c)
  *   C5, C6    nl_study_cheng_thesis_gmm_tables, nl_study_cheng_repro_params,
  *             nl_study_cheng_repro_original / _pool / _clear  (nl_study_cheng_repro.c)
  *
@@ -29,6 +28,7 @@
 #include "cheng/nl_cheng_repro.h"
 #include "image/nl_image.h"
 #include "harness/nl_harness.h"
+#include "study/nl_study.h"
 #include "table/nl_table.h"
 
 /* ---- control patterns from images (sec. 3.4.1) -------------------------- */
@@ -147,13 +147,6 @@ double nl_study_column_min(const nl_table *t, const char *col);
  * E_con_swapped, p_ks_min, p_kuiper_min (caller frees). */
 #define NL_STUDY_TABLE41_COLS 4
 nl_table *nl_study_cheng_table41(const nl_table *runs, const double (*thesis)[NL_STUDY_TABLE41_COLS], int npair);
-/* The text of cell (r, col) (NULL for a numeric cell). */
-const char *nl_study_text(const nl_table *t, size_t r, const char *col);
-/* Mean, sample standard deviation (0 for n < 2) and minimum of n values:
- * the spread over seeds every summary row reports. */
-double nl_study_mean(const double *x, int n);
-double nl_study_sd(const double *x, int n);
-double nl_study_min(const double *x, int n);
 
 /* ---- what C5 and C6 share (nl_study_cheng_repro.c) ----------------------- */
 

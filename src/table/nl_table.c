@@ -108,6 +108,11 @@ void nl_table_set_text(nl_table *t, size_t r, const char *name, const char *text
   t->num[k] = NAN;
 }
 
+const char *nl_table_text(const nl_table *t, size_t r, const char *name)
+{
+  return t->text ? t->text[r * t->ncols + nl_table_column_must(t, name)] : NULL;
+}
+
 const char *nl_table_cell_text(const nl_table *t, size_t r, size_t c, char *buf)
 {
   size_t k = r * t->ncols + c;

@@ -71,6 +71,8 @@ long nl_table_column(const nl_table *t, const char *name);
 double nl_table_value(const nl_table *t, size_t r, const char *name);
 void nl_table_set(nl_table *t, size_t r, const char *name, double v);
 void nl_table_set_text(nl_table *t, size_t r, const char *name, const char *text);
+/* The text of a cell by column name; NULL for a numeric cell. */
+const char *nl_table_text(const nl_table *t, size_t r, const char *name);
 /* Like nl_table_column, but aborts (as above) when the name is missing. */
 size_t nl_table_column_must(const nl_table *t, const char *name);
 /* The cell as the writer writes it: its text, or the double formatted by
