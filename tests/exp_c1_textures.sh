@@ -24,4 +24,4 @@ awk -F'\t' 'BEGIN{
   NR==1{for(i=1;i<=NF;i++) col[$i]=i; k=col["rms_con"]}
   NR>1{key=$col["texture"]"/"$col["pattern"]; if(!(key in ceil)){print "no ceiling for " key; exit 1}
        if(!($k < ceil[key])){print "rms_con " $k " not below the KS-only table'"'"'s " ceil[key] " for " key; exit 1}; n++}
-  END{if(n!=12) exit 1}' "$out/summary.tsv"
+  END{if(n!=12) {print "summary rows: " n ", wanted 12"; exit 1}}' "$out/summary.tsv"

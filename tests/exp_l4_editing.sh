@@ -38,7 +38,7 @@ tsv_awk 'FNR == 1 {next}
     if ((r0[k] == "") || (r - p > 0.03 || p - r > 0.03) || (rn - q > 0.03 || q - rn > 0.03)) {
       printf "band %d: ratio %.4f (predicted %.4f), ratio_nohist %.4f (predicted %.4f)\n", k, r, p, rn, q; bad = 1; exit 1 }
     cnt++ }
-  END {if (bad || cnt != 3) exit 1}' "$3/f0/editing.tsv" "$3/editing.tsv"
+  END {if (bad || cnt != 3) {print "editing rows bad: " bad ", count " cnt " (wanted 3)"; exit 1}}' "$3/f0/editing.tsv" "$3/editing.tsv"
 "$2" "$3/editing_coarse.tsv" 'rows>=2' 'ratio~1.07:0.08' 'ratio_nohist~1:0.02'
 "$2" "$3/solid.tsv" 'rows=3' 'ks_2d_vs_slice<0.43'
 "$2" "$3/morph.tsv" 'rows=5' 'det~1:1e-9' 'orth_err<1e-9' 'file:morph.png' 'file:editing.png'

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Quick S1: four settings, values inside the analytic bound, spectra written.
 set -euo pipefail
+. "$(dirname "$0")/tsv.sh"   # tables by column name; refused
 exp="$1" expect="$2" out="$3"
 "$exp" --quick --out "$out" >/dev/null
 "$expect" "$out/fractal_distribution.tsv" rows=4 'max_abs<=bound' 'sd>0' 'octaves>=1' \
@@ -11,7 +12,7 @@ exp="$1" expect="$2" out="$3"
 cmp "$out/fractal_distribution.tsv" "$out/again/fractal_distribution.tsv"
 # Unknown parameters and bad values are refused with exit 2.
 set +e
-"$exp" --quick --out "$out/bad" --set nosuch=1 2>/dev/null; [ $? -eq 2 ] || exit 1
-"$exp" --quick --out "$out/bad" --set size=abc 2>/dev/null; [ $? -eq 2 ] || exit 1
-"$exp" --quick --out "$out/bad" --seed -4 2>/dev/null; [ $? -eq 2 ] || exit 1
+refused "$exp" --quick --out "$out/bad" --set nosuch=1
+refused "$exp" --quick --out "$out/bad" --set size=abc
+refused "$exp" --quick --out "$out/bad" --seed -4
 [ ! -e "$out/bad/manifest.tsv" ]

@@ -32,3 +32,16 @@ tsv_awk() {
 tsv_cut() {
   tsv_awk -v name="$2" '{ print v(name) }' "$1"
 }
+
+# refused CMD...: CMD must refuse its input as the guide says bad input is
+# refused: exit 2 with a one-line message on stderr. On anything else it
+# says what happened (exit code and CMD's stderr), so that a CI log shows
+# why, and returns 1.
+refused() {
+  local err rc=0
+  err="$("$@" 2>&1 >/dev/null)" || rc=$?
+  if [ "$rc" -ne 2 ] || [ "$(printf '%s\n' "$err" | wc -l)" -ne 1 ] || [ -z "$err" ]; then
+    printf 'expected exit 2 and one line on stderr from: %s\ngot exit %d and:\n%s\n' "$*" "$rc" "$err" >&2
+    return 1
+  fi
+}
