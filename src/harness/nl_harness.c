@@ -6,6 +6,7 @@
 #include <dirent.h>
 #include <dlfcn.h>
 #include <errno.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -30,6 +31,7 @@ struct nl_harness {
   int prepared;           /* the output folder exists and its old manifest is gone */
   nl_table *manifest;     /* key, value (text) */
   nl_table *checks;       /* table, column, rule (text): regression rules */
+  nl_table *verdicts;     /* quantity, source, paper, ours, ours_sd, rule, verdict, reason */
   char *md;               /* report section being built */
   size_t md_len, md_cap;
   double last_progress;
@@ -483,6 +485,45 @@ const char *nl_harness_check_rule(const nl_harness *r, const char *table, const 
   return star;
 }
 
+/* ---- verdicts ------------------------------------------------------------ */
+
+void nl_harness_verdict(nl_harness *r, const char *file, const nl_table *t, size_t row,
+                        const char *quantity, const char *paper_col, const char *ours_col,
+                        const char *sd_col, const char *rule, const char *note)
+{
+  if (row >= t->nrows) nl_harness_die(r, 1, "verdict '%s': %s has no row %zu", quantity, file, row + 1);
+  const char *cols[] = {paper_col, ours_col, sd_col};
+  for (int k = 0; k < 3; k++)
+    if (cols[k] && nl_table_column(t, cols[k]) < 0)
+      nl_harness_die(r, 1, "verdict '%s': %s has no column '%s'", quantity, file, cols[k]);
+  double paper = nl_table_value(t, row, paper_col), ours = nl_table_value(t, row, ours_col);
+  double sd = sd_col ? nl_table_value(t, row, sd_col) : NAN;
+  nl_harness_verdict_kind v;
+  char reason[256], source[256];
+  nl_error err;
+  if (nl_harness_verdict_decide(rule, paper, ours, sd, &v, reason, sizeof reason, &err))
+    nl_harness_die(r, 1, "verdict '%s': %s", quantity, err.msg);
+  if (!r->verdicts) {
+    const char *vcols[] = {"quantity", "source", "paper", "ours", "ours_sd", "rule", "verdict", "reason"};
+    r->verdicts = nl_table_alloc(8, vcols);
+  }
+  snprintf(source, sizeof source, "%s:%s", file, ours_col);
+  size_t i = nl_table_append_empty(r->verdicts);
+  nl_table_set_text(r->verdicts, i, "quantity", quantity);
+  nl_table_set_text(r->verdicts, i, "source", source);
+  nl_table_set(r->verdicts, i, "paper", paper);
+  nl_table_set(r->verdicts, i, "ours", ours);
+  if (sd_col) nl_table_set(r->verdicts, i, "ours_sd", sd);
+  else nl_table_set_text(r->verdicts, i, "ours_sd", "-");
+  nl_table_set_text(r->verdicts, i, "rule", rule);
+  nl_table_set_text(r->verdicts, i, "verdict", nl_harness_verdict_name(v));
+  if (note && *note) {
+    size_t n = strlen(reason);
+    snprintf(reason + n, sizeof reason - n, "; %s", note);
+  }
+  nl_table_set_text(r->verdicts, i, "reason", reason);
+}
+
 /* ---- the end ------------------------------------------------------------ */
 
 static void write_text(nl_harness *r, const char *file, const char *text)
@@ -561,6 +602,10 @@ int nl_harness_end(nl_harness *r)
   struct rusage ru;
   getrusage(RUSAGE_SELF, &ru);
   nl_harness_note(r, "peak_rss_mb", "%.1f", ru.ru_maxrss / 1024.0);
+  if (r->verdicts) {
+    nl_harness_write_table(r, r->verdicts, "verdicts.tsv");
+    nl_harness_check(r, "verdicts.tsv", "*", "ignore");   /* copies of compared values */
+  }
   /* Always written: an experiment without declarations is all `exact`. */
   nl_harness_write_table(r, r->checks, "checks.tsv");
   nl_harness_write_table(r, r->manifest, manifest_name());
@@ -568,6 +613,7 @@ int nl_harness_end(nl_harness *r)
   free(r->set_key); free(r->set_val); free(r->set_used); free(r->param);
   nl_table_free(r->manifest);
   nl_table_free(r->checks);
+  nl_table_free(r->verdicts);
   free(r->md); free(r->out); free(r);
   return 0;
 }

@@ -255,7 +255,47 @@ void nl_harness_check_totals(const nl_harness_check_state *s);
  * empty); NULL and a message if the folder cannot be read. */
 char **nl_harness_tables(const char *dir, size_t *n, nl_error *err);
 
-/* Writes report.md, checks.tsv and manifest.tsv, frees r; returns 0 for main(). */
+/* ---- verdicts: the paper's numbers against ours (nl_harness_verdict.c) -
+ *
+ * REPORT.md opens with one row per paper number: id, quantity, paper, ours
+ * +- sd, verdict, reason. No verdict is typed: the experiment declares the
+ * comparison beside the table it wrote, naming the columns that hold the
+ * paper's number and ours, and the rule that decides:
+ *
+ *   nl_harness_write_table(r, t, "timing.tsv");
+ *   nl_harness_verdict(r, "timing.tsv", t, row, "plain/bounded ratio, N = 10",
+ *                      "paper_ratio", "eval_ratio", NULL, "factor 1.1 1.5", NULL);
+ *
+ * Rules, each with two thresholds A <= B: "reproduced" within A, "partly"
+ * within B, else "not reproduced":
+ *   rel A B     |ours - paper| <= A |paper|            (relative difference)
+ *   abs A B     |ours - paper| <= A                    (absolute difference)
+ *   factor A B  max(ours/paper, paper/ours) <= A       (ratios, counts; both > 0)
+ *   sd A B      |ours - paper| <= A sd (sd_col: the spread over seeds of ours)
+ * The reason is generated from the numbers and the rule ("4.6% above the
+ * paper; reproduced within 5%, partly within 25%"); `note` (may be NULL) is
+ * appended after a semicolon and must hold no number of the run (it names
+ * the reading, e.g. "slope fitted to the paper's ratios"). A malformed rule,
+ * a missing column, or sd without sd_col is a bug in the experiment: exit 1.
+ * nl_harness_end writes the rows to verdicts.tsv (columns quantity, source,
+ * paper, ours, ours_sd, rule, verdict, reason); the entry script gathers
+ * every folder's verdicts.tsv into the table at the top of REPORT.md. The
+ * regression check ignores verdicts.tsv: each value in it is a copy of a
+ * value compared, by its own rule, in the table it came from. */
+typedef enum { NL_VERDICT_REPRODUCED, NL_VERDICT_PARTLY, NL_VERDICT_NOT } nl_harness_verdict_kind;
+void nl_harness_verdict(nl_harness *r, const char *file, const nl_table *t, size_t row,
+                        const char *quantity, const char *paper_col, const char *ours_col,
+                        const char *sd_col, const char *rule, const char *note);
+/* The decision alone: verdict and reason (at most `len` bytes) for
+ * paper, ours, sd (NAN when there is none) under `rule`. */
+nl_status nl_harness_verdict_decide(const char *rule, double paper, double ours, double sd,
+                                    nl_harness_verdict_kind *verdict, char *reason, size_t len,
+                                    nl_error *err);
+/* "reproduced", "partly", "not reproduced". */
+const char *nl_harness_verdict_name(nl_harness_verdict_kind v);
+
+/* Writes report.md, checks.tsv, verdicts.tsv (when declared) and manifest.tsv,
+ * frees r; returns 0 for main(). */
 int nl_harness_end(nl_harness *r);
 
 #endif

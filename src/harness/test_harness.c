@@ -290,6 +290,30 @@ NL_TEST(check_engine_on_two_folders)
   free(ref); free(same); free(moved); free(badrule);
 }
 
+/* Verdicts: each rule's thresholds, the words of the reason, bad rules. */
+NL_TEST(verdict_rules)
+{
+  nl_harness_verdict_kind v;
+  char why[256];
+  nl_error err;
+  NL_CHECK(nl_harness_verdict_decide("rel 0.05 0.25", 2.0, 2.08, NAN, &v, why, sizeof why, &err) == NL_OK);
+  NL_CHECK(v == NL_VERDICT_REPRODUCED && strstr(why, "4% above the paper") && strstr(why, "within 5%"));
+  NL_CHECK(nl_harness_verdict_decide("rel 0.05 0.25", 2.0, 1.6, NAN, &v, why, sizeof why, &err) == NL_OK);
+  NL_CHECK(v == NL_VERDICT_PARTLY && strstr(why, "20% below"));
+  NL_CHECK(nl_harness_verdict_decide("factor 1.1 1.5", 11.96, 4.08, NAN, &v, why, sizeof why, &err) == NL_OK);
+  NL_CHECK(v == NL_VERDICT_NOT && strstr(why, "x2.93 below"));
+  NL_CHECK(nl_harness_verdict_decide("sd 2 4", 0.21, 0.196, 0.004, &v, why, sizeof why, &err) == NL_OK);
+  NL_CHECK(v == NL_VERDICT_PARTLY && strstr(why, "3.5 sd below"));
+  NL_CHECK(nl_harness_verdict_decide("sd 2 4", 1, 1, 0, &v, why, sizeof why, &err) == NL_OK && v == NL_VERDICT_REPRODUCED);
+  NL_CHECK(nl_harness_verdict_decide("abs 0.01 0.1", 0.5, 0.45, NAN, &v, why, sizeof why, &err) == NL_OK);
+  NL_CHECK(v == NL_VERDICT_PARTLY && !strcmp(nl_harness_verdict_name(v), "partly"));
+  NL_CHECK(nl_harness_verdict_decide("rel 0.5 0.1", 1, 1, NAN, &v, why, sizeof why, &err) == NL_EINVAL);
+  NL_CHECK(nl_harness_verdict_decide("near 0.1 0.2", 1, 1, NAN, &v, why, sizeof why, &err) == NL_EINVAL && strstr(err.msg, "near"));
+  NL_CHECK(nl_harness_verdict_decide("sd 1 2", 1, 1, NAN, &v, why, sizeof why, &err) == NL_EINVAL);
+  NL_CHECK(nl_harness_verdict_decide("factor 1.1 2", -1, 1, NAN, &v, why, sizeof why, &err) == NL_EINVAL);
+  NL_CHECK(nl_harness_verdict_decide("rel 0.1 0.2 x", 1, 1, NAN, &v, why, sizeof why, &err) == NL_EINVAL);
+}
+
 int main(int argc, char **argv)
 {
   if (argc > 1 && !strcmp(argv[1], "--child")) return little_experiment(argc - 1, argv + 1);

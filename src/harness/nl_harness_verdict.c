@@ -1,0 +1,64 @@
+/* nl_harness_verdict.c - the decision behind a row of REPORT.md's verdict
+ * table (nl_harness.h, "verdicts"). The thresholds are the experiment's,
+ * stated in the rule; this file only measures the distance the rule names
+ * and words it. */
+#include "harness/nl_harness.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+const char *nl_harness_verdict_name(nl_harness_verdict_kind v)
+{
+  return v == NL_VERDICT_REPRODUCED ? "reproduced" : v == NL_VERDICT_PARTLY ? "partly" : "not reproduced";
+}
+
+/* "5%" for rel 0.05, "0.01" for abs, "x1.1" for factor, "2 sd" for sd. */
+static void threshold_text(char *buf, size_t len, const char *kind, double v)
+{
+  if (!strcmp(kind, "rel")) snprintf(buf, len, "%.3g%%", 100 * v);
+  else if (!strcmp(kind, "factor")) snprintf(buf, len, "x%.3g", v);
+  else if (!strcmp(kind, "sd")) snprintf(buf, len, "%.3g sd", v);
+  else snprintf(buf, len, "%.3g", v);
+}
+
+nl_status nl_harness_verdict_decide(const char *rule, double paper, double ours, double sd,
+                                    nl_harness_verdict_kind *verdict, char *reason, size_t len,
+                                    nl_error *err)
+{
+  char kind[16];
+  double a, b;
+  int used = 0;
+  if (sscanf(rule, "%15s %lf %lf %n", kind, &a, &b, &used) != 3 || rule[used] || !(a >= 0) || !(b >= a) ||
+      (strcmp(kind, "rel") && strcmp(kind, "abs") && strcmp(kind, "factor") && strcmp(kind, "sd")))
+    return nl_fail(err, NL_EINVAL, "verdict rule '%s': wanted 'rel|abs|factor|sd A B' with 0 <= A <= B", rule);
+  if (!isfinite(paper) || !isfinite(ours))
+    return nl_fail(err, NL_EINVAL, "verdict rule '%s': paper %g, ours %g: not finite", rule, paper, ours);
+  double d, diff = ours - paper;   /* d: the distance the rule measures */
+  char what[96];
+  if (!strcmp(kind, "rel")) {
+    if (paper == 0) return nl_fail(err, NL_EINVAL, "verdict rule '%s': the paper's value is 0", rule);
+    d = fabs(diff) / fabs(paper);
+    snprintf(what, sizeof what, "%.3g%% %s the paper", 100 * d, diff >= 0 ? "above" : "below");
+  } else if (!strcmp(kind, "abs")) {
+    d = fabs(diff);
+    snprintf(what, sizeof what, "%.3g %s the paper", d, diff >= 0 ? "above" : "below");
+  } else if (!strcmp(kind, "factor")) {
+    if (!(paper > 0) || !(ours > 0))
+      return nl_fail(err, NL_EINVAL, "verdict rule '%s': paper %g and ours %g must be > 0", rule, paper, ours);
+    d = ours > paper ? ours / paper : paper / ours;
+    snprintf(what, sizeof what, "x%.3g %s the paper", d, ours >= paper ? "above" : "below");
+  } else {
+    if (!(sd >= 0)) return nl_fail(err, NL_EINVAL, "verdict rule '%s': needs the spread of ours", rule);
+    d = sd > 0 ? fabs(diff) / sd : (diff == 0 ? 0 : INFINITY);
+    if (isinf(d)) snprintf(what, sizeof what, "%.4g from the paper with sd 0", diff);
+    else snprintf(what, sizeof what, "%.3g sd %s the paper", d, diff >= 0 ? "above" : "below");
+  }
+  *verdict = d <= a ? NL_VERDICT_REPRODUCED : d <= b ? NL_VERDICT_PARTLY : NL_VERDICT_NOT;
+  char ta[32], tb[32];
+  threshold_text(ta, sizeof ta, kind, a);
+  threshold_text(tb, sizeof tb, kind, b);
+  snprintf(reason, len, "%s; reproduced within %s, partly within %s", what, ta, tb);
+  return NL_OK;
+}
