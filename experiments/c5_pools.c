@@ -46,6 +46,15 @@ static void report(nl_harness *r, const nl_study_cheng_pools *T, const nl_cheng_
                    nl_table_value(T->gmm, q, "thesis_AIC"), nl_table_value(T->gmm, q, "AIC") / nl_table_value(T->gmm, q, "input_samples"),
                    nl_table_value(T->gmm, q, "thesis_AIC") / nl_table_value(T->gmm, q, "thesis_samples"), nl_table_text(T->gmm, q, "status"));
   }
+  for (size_t q = 0; q < T->gmm->nrows; q++) {   /* verdicts: the literal cutoff, level-1 split */
+    if (strcmp(nl_table_text(T->gmm, q, "cutoff_rule"), "thesis") || nl_table_value(T->gmm, q, "low_levels") != 1) continue;
+    const char *v[][3] = {{"initial K", "thesis_K_initial", "K_initial"}, {"final K", "thesis_K_final", "K_final"}, {"AIC", "thesis_AIC", "AIC"}};
+    for (int k = 0; k < 3; k++) {
+      char what[96];
+      snprintf(what, sizeof what, "%s, %s", v[k][0], nl_table_text(T->gmm, q, "texture"));
+      nl_harness_verdict(r, "gmm.tsv", T->gmm, q, what, v[k][1], v[k][2], NULL, k < 2 ? "factor 1.25 2" : "rel 0.1 0.5", "the thesis's cutoff as printed");
+    }
+  }
   double maxchord = 2 * sqrt(nl_table_value(T->orig, 0, "n_low"));
   nl_harness_text(r, "What cannot be compared: the thesis's cutoffs (15.5-19.5) and AIC values are in units of a distance "
                      "and a dimension it does not state. With %g low angles as (cos, sin) no two solutions are more than "

@@ -47,6 +47,14 @@ SOURCE_DATE_EPOCH=86400 "$nl" reproduce --quick --seed 4294967295 --out "$r" S3 
 [ "$(stat -c %a "$r/REPORT.md")" = 644 ] || fail "REPORT.md mode $(stat -c %a "$r/REPORT.md"), wanted 644"
 grep -q 'on 1970-01-02\.' "$r/REPORT.md" || fail "REPORT.md not dated by SOURCE_DATE_EPOCH"
 grep -q $'^seed\t4294967295$' "$r/s3_fbm/manifest.tsv" || fail "seed 4294967295 did not reach the experiment"
+# The verdict table: every complete folder's verdicts.tsv, read by column
+# name (a planted one here: S3 and S4 have no paper numbers), counted.
+printf 'reason\tquantity\tsource\tpaper\tours\tours_sd\trule\tverdict\nwhy\tgain\tx.tsv:g\t2\t2.08\t0.01\trel 0.05 0.25\treproduced\n' >"$r/s4_marble/verdicts.tsv"
+SOURCE_DATE_EPOCH=86400 "$nl" reproduce --quick --seed 4294967295 --out "$r" S3 2>"$out/verdict.log" || { cat "$out/verdict.log"; fail "reproduce S3 failed"; }
+grep -q '^## Did it reproduce?' "$r/REPORT.md" || fail "REPORT.md has no verdict table"
+grep -qF '1 numbers of the papers compared: 1 reproduced, 0 partly, 0 not reproduced' "$r/REPORT.md" || fail "verdict count wrong"
+grep -qF '| [S4](#s4_marble) | gain | 2 | 2.08 +- 0.01 | **reproduced** | why |' "$r/REPORT.md" || fail "verdict row: $(grep -F gain "$r/REPORT.md")"
+rm "$r/s4_marble/verdicts.tsv"
 
 # Nothing ran (the experiment cannot make its folder): no REPORT.md written.
 mkdir -p "$out/none"; : >"$out/none/s3_fbm"

@@ -524,6 +524,19 @@ void nl_harness_verdict(nl_harness *r, const char *file, const nl_table *t, size
   nl_table_set_text(r->verdicts, i, "reason", reason);
 }
 
+void nl_harness_verdict_rows(nl_harness *r, const char *file, const nl_table *t, const char *what,
+                             const char *label_col, const char *paper_col, const char *ours_col,
+                             const char *sd_col, const char *rule, const char *note)
+{
+  long lc = nl_table_column(t, label_col);
+  if (lc < 0) nl_harness_die(r, 1, "verdict '%s': %s has no column '%s'", what, file, label_col);
+  for (size_t i = 0; i < t->nrows; i++) {
+    char buf[32], q[256];
+    snprintf(q, sizeof q, "%s, %s %s", what, label_col, nl_table_cell_text(t, i, (size_t)lc, buf));
+    nl_harness_verdict(r, file, t, i, q, paper_col, ours_col, sd_col, rule, note);
+  }
+}
+
 /* ---- the end ------------------------------------------------------------ */
 
 static void write_text(nl_harness *r, const char *file, const char *text)

@@ -286,6 +286,11 @@ typedef enum { NL_VERDICT_REPRODUCED, NL_VERDICT_PARTLY, NL_VERDICT_NOT } nl_har
 void nl_harness_verdict(nl_harness *r, const char *file, const nl_table *t, size_t row,
                         const char *quantity, const char *paper_col, const char *ours_col,
                         const char *sd_col, const char *rule, const char *note);
+/* One verdict per row of t, quantity "WHAT, LABEL_COL LABEL" (the row's
+ * text or number in label_col, e.g. "E_KS, panel a"). */
+void nl_harness_verdict_rows(nl_harness *r, const char *file, const nl_table *t, const char *what,
+                             const char *label_col, const char *paper_col, const char *ours_col,
+                             const char *sd_col, const char *rule, const char *note);
 /* The decision alone: verdict and reason (at most `len` bytes) for
  * paper, ours, sd (NAN when there is none) under `rule`. */
 nl_status nl_harness_verdict_decide(const char *rule, double paper, double ours, double sd,
