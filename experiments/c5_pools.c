@@ -35,20 +35,20 @@ static void report(nl_harness *r, const nl_study_cheng_pools *T, const nl_cheng_
                  grid, grid, c->m, c->octaves, c->f1, c->a1, c->w1, c->w2, po->runs, po->keep, po->epsilon,
                  po->low_levels > 1 ? "s" : "", po->low_levels > 1 ? "..2" : "", mo->samples,
                  mo->gmm.covariance == NL_GMM_FULL ? "full" : "diagonal", mo->threshold, mo->k_extra, nseeds);
-  nl_harness_report_table(r, T->gmm, "Tables 4.2-4.4, ours beside the thesis's (thesis_* columns): one row per texture, "
+  nl_harness_report_table(r, T->gmm, "Tables 4.2-4.4, ours beside the thesis's (paper_* columns): one row per texture, "
                           "split and cutoff rule", 5);
   for (size_t q = 0; q < T->gmm->nrows; q++) {
     const char *tex = nl_table_text(T->gmm, q, "texture"), *rule = nl_table_text(T->gmm, q, "cutoff_rule");
     nl_harness_text(r, "%s (low levels %g), %s cutoff %.4g: K %.3g -> %.3g (thesis %g -> %g), AIC %.6g (thesis %.6g; "
                        "per input sample %.4g vs %.4g), status %s.\n", tex, nl_table_value(T->gmm, q, "low_levels"), rule,
                    nl_table_value(T->gmm, q, "cutoff"), nl_table_value(T->gmm, q, "K_initial"), nl_table_value(T->gmm, q, "K_final"),
-                   nl_table_value(T->gmm, q, "thesis_K_initial"), nl_table_value(T->gmm, q, "thesis_K_final"), nl_table_value(T->gmm, q, "AIC"),
-                   nl_table_value(T->gmm, q, "thesis_AIC"), nl_table_value(T->gmm, q, "AIC") / nl_table_value(T->gmm, q, "input_samples"),
-                   nl_table_value(T->gmm, q, "thesis_AIC") / nl_table_value(T->gmm, q, "thesis_samples"), nl_table_text(T->gmm, q, "status"));
+                   nl_table_value(T->gmm, q, "paper_K_initial"), nl_table_value(T->gmm, q, "paper_K_final"), nl_table_value(T->gmm, q, "AIC"),
+                   nl_table_value(T->gmm, q, "paper_AIC"), nl_table_value(T->gmm, q, "AIC") / nl_table_value(T->gmm, q, "input_samples"),
+                   nl_table_value(T->gmm, q, "paper_AIC") / nl_table_value(T->gmm, q, "paper_samples"), nl_table_text(T->gmm, q, "status"));
   }
   for (size_t q = 0; q < T->gmm->nrows; q++) {   /* verdicts: the literal cutoff, level-1 split */
     if (strcmp(nl_table_text(T->gmm, q, "cutoff_rule"), "thesis") || nl_table_value(T->gmm, q, "low_levels") != 1) continue;
-    const char *v[][3] = {{"initial K", "thesis_K_initial", "K_initial"}, {"final K", "thesis_K_final", "K_final"}, {"AIC", "thesis_AIC", "AIC"}};
+    const char *v[][3] = {{"initial K", "paper_K_initial", "K_initial"}, {"final K", "paper_K_final", "K_final"}, {"AIC", "paper_AIC", "AIC"}};
     for (int k = 0; k < 3; k++) {
       char what[96];
       snprintf(what, sizeof what, "%s, %s", v[k][0], nl_table_text(T->gmm, q, "texture"));

@@ -9,7 +9,7 @@ exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
 "$exp" --quick --out "$out" --patterns "$pat" >/dev/null
 "$expect" "$out/gmm.tsv" rows=8 'K_initial>=1' 'K_final>=K_initial' 'input_samples<=pool' 'seeds==3' \
-  'n_ok<=seeds' 'BIC>AIC' 'thesis_samples==1000'
+  'n_ok<=seeds' 'BIC>AIC' 'paper_samples==1000'
 "$expect" "$out/original.tsv" rows=4 'E_ks>0' 'E_ks<0.05' 'E_con>0' 'E_R_pool_max_gap>=0' 'E_R_pool_best<=E_R_pool_median'
 "$expect" "$out/pool_runs.tsv" rows=24 'E_best<=E_start' 'kept==20'
 "$expect" "$out/aic_path.tsv" rows\>=8 'BIC>AIC' 'iterations>=1' 'converged==1'
@@ -25,7 +25,7 @@ drop() { local f="$1"; shift
 # thesis cutoffs with level-1 entries: one cluster
 awk -F'\t' "$(named '$col["low_levels"]==1 && $col["cutoff_rule"]=="thesis" && ($col["K_initial"]!=1 || $col["status"]!="one_cluster"){print "thesis cutoff row: " $0; exit 1}')" "$out/gmm.tsv"
 # matched cutoff: exactly the thesis's initial K on every seed
-awk -F'\t' "$(named '$col["cutoff_rule"]=="matched_K0" && ($col["K_initial"]!=$col["thesis_K_initial"] || $col["K_initial_sd"]!=0){print "matched row: " $0; exit 1}')" "$out/gmm.tsv"
+awk -F'\t' "$(named '$col["cutoff_rule"]=="matched_K0" && ($col["K_initial"]!=$col["paper_K_initial"] || $col["K_initial_sd"]!=0){print "matched row: " $0; exit 1}')" "$out/gmm.tsv"
 # K never grows with the cutoff
 awk -F'\t' "$(named '{key=$col["texture"]"/"$col["low_levels"]; if (key==prev && $col["K"]>k){print "K grows: " $0; exit 1} prev=key; k=$col["K"]}')" "$out/cutoff_k.tsv"
 grep -q '^pool_bytes_erosion_low1' "$out/manifest.tsv"

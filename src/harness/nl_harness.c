@@ -391,6 +391,18 @@ void nl_harness_text(nl_harness *r, const char *fmt, ...)
   free(buf);
 }
 
+/* A number for a report table: `digits` significant digits, unless the value
+ * is exactly a number of at most digits + 2 (a paper's 0.99999, a weight
+ * 0.00001), which is printed exactly. A sweep's 9.99990000099999e-06 reads
+ * 1e-05, a measured 0.058087919778 reads 0.05809. */
+static void report_number(char *buf, size_t len, double v, int digits)
+{
+  /* snprintf's result is tested: a 64-byte buffer holds any %.19g. */
+  for (int d = digits; d <= digits + 2; d++)
+    if (snprintf(buf, len, "%.*g", d, v) < (int)len && strtod(buf, NULL) == v) return;
+  if (snprintf(buf, len, "%.*g", digits, v) >= (int)len) buf[len - 1] = 0;
+}
+
 void nl_harness_report_table(nl_harness *r, const nl_table *t, const char *caption, int digits)
 {
   char cell[64];
@@ -402,8 +414,12 @@ void nl_harness_report_table(nl_harness *r, const nl_table *t, const char *capti
   for (size_t row = 0; row < t->nrows; row++) {
     for (size_t c = 0; c < t->ncols; c++) {
       size_t k = row * t->ncols + c;
+      /* Text cells that are whole numbers (labels such as a sweep's w1) are
+       * rounded like the numbers. */
       const char *s = t->text && t->text[k] ? t->text[k] : cell;
-      if (s == cell) snprintf(cell, sizeof cell, "%.*g", digits, t->num[k]);
+      char *end;
+      double v = s == cell ? t->num[k] : strtod(s, &end);
+      if (s == cell || (*s && !*end && end != s && isfinite(v))) { report_number(cell, sizeof cell, v, digits); s = cell; }
       md_append(r, "| "); md_append(r, s); md_append(r, " ");
     }
     md_append(r, "|\n");

@@ -164,6 +164,7 @@ static const char *manifest_value(const nl_table *m, const char *key, int nth)
 
 NL_TEST(manifest_round_trip)
 {
+  nl_error err0;
   char *out = nl_path_join(dir, "run");
   const char *argv[] = {"t", "--out", out, "--seed", "7", "--seeds", "2", "--set", "z=0.25"};
   nl_harness *r = nl_harness_begin("t_exp", "T - a test", 9, (char **)argv);
@@ -181,7 +182,30 @@ NL_TEST(manifest_round_trip)
   NL_CHECK(!strcmp(nl_harness_check_rule(r, "a.tsv", "x"), "ignore"));
   NL_CHECK(!strcmp(nl_harness_check_rule(r, "a.tsv", "y"), "abs 0.5"));
   NL_CHECK(nl_harness_check_rule(r, "b.tsv", "x") == NULL);
+  /* Report numbers to their significant digits: a sweep's label
+   * 9.99990000099999e-06 (text) reads 1e-05, a paper's 0.99999 stays. */
+  const char *tc[] = {"w1", "w2", "E", "paper_E"};
+  nl_table *t = nl_table_alloc(4, tc);
+  nl_table_append(t, "sddd", "9.99990000099999e-06", 0.99999, 0.058087919778, 0.06);
+  nl_harness_report_table(r, t, NULL, 4);
+  nl_harness_verdict(r, "t.tsv", t, 0, "E", "paper_E", "E", NULL, "rel 0.05 0.25", "a reading");
+  nl_table_free(t);
   NL_CHECK(nl_harness_end(r) == 0);
+  char *rp = nl_path_join(out, "report.md"), *vp = nl_path_join(out, "verdicts.tsv");
+  char md[4096] = "";
+  FILE *fp = fopen(rp, "r");
+  NL_CHECK(fp && fread(md, 1, sizeof md - 1, fp) > 0);
+  if (fp) fclose(fp);
+  NL_CHECK(strstr(md, "| 1e-05 | 0.99999 | 0.05809 | 0.06 |"));
+  nl_table *vt = NULL;
+  NL_CHECK(nl_table_read(vp, NL_TABLE_TEXT, &vt, &err0) == NL_OK);
+  if (vt) {
+    NL_CHECK(vt->nrows == 1 && !strcmp(nl_table_text(vt, 0, "verdict"), "reproduced"));
+    NL_CHECK(strstr(nl_table_text(vt, 0, "reason"), "3.19% below the paper") && strstr(nl_table_text(vt, 0, "reason"), "; a reading"));
+    NL_CHECK(!strcmp(nl_table_text(vt, 0, "source"), "t.tsv:E"));
+  }
+  nl_table_free(vt);
+  free(rp); free(vp);
   char *mp = nl_path_join(out, "manifest.tsv"), *cp = nl_path_join(out, "checks.tsv");
   nl_table *m = NULL, *ck = NULL;
   nl_error err;
@@ -199,7 +223,9 @@ NL_TEST(manifest_round_trip)
     const char *cc = manifest_value(m, "compiler", 0);
     NL_CHECK(cc && (!strncmp(cc, "gcc ", 4) || strstr(cc, "lang")));   /* names the compiler */
     NL_CHECK(manifest_value(m, "cflags", 0) && manifest_value(m, "blas", 0) && manifest_value(m, "cpu", 0));
-    NL_CHECK(ck->nrows == 2 && !strcmp(ck->text[0 * 3 + 2], "ignore") && !strcmp(ck->text[1 * 3 + 1], "*"));
+    NL_CHECK(ck->nrows == 3 && !strcmp(ck->text[0 * 3 + 2], "ignore") && !strcmp(ck->text[1 * 3 + 1], "*"));
+    /* verdicts.tsv holds copies of compared values: not compared again */
+    NL_CHECK(!strcmp(ck->text[2 * 3], "verdicts.tsv") && !strcmp(ck->text[2 * 3 + 2], "ignore"));
   }
   nl_table_free(m); nl_table_free(ck);
   free(mp); free(cp); free(out);

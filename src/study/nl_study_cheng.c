@@ -206,7 +206,7 @@ double nl_study_column_min(const nl_table *t, const char *col)
 
 nl_table *nl_study_cheng_table41(const nl_table *runs, const double (*thesis)[NL_STUDY_TABLE41_COLS], int npair)
 {
-  const char *cc[] = {"panel", "w1", "w2", "E_ks_thesis", "E_ks", "E_ks_sd", "E_con_thesis", "E_con", "E_con_sd",
+  const char *cc[] = {"panel", "w1", "w2", "paper_E_ks", "E_ks", "E_ks_sd", "paper_E_con", "E_con", "E_con_sd",
                       "E_ks_swapped", "E_con_swapped", "p_ks_min", "p_kuiper_min"};
   nl_table *cmp = nl_table_alloc(sizeof cc / sizeof *cc, cc);
   for (int i = 0; i < npair; i++) {

@@ -143,7 +143,7 @@ double nl_study_column_min(const nl_table *t, const char *col);
 /* C4's Table 4.1, ours beside the thesis's: from the summary rows of the
  * six pairs (printed reading at rows 0, 2, 4, ..., swapped at 1, 3, 5, ...) and
  * the thesis's rows {w1, E_KS, w2, E_Con}, a table of panel, w1, w2,
- * E_ks_thesis, E_ks, E_ks_sd, E_con_thesis, E_con, E_con_sd, E_ks_swapped,
+ * paper_E_ks, E_ks, E_ks_sd, paper_E_con, E_con, E_con_sd, E_ks_swapped,
  * E_con_swapped, p_ks_min, p_kuiper_min (caller frees). */
 #define NL_STUDY_TABLE41_COLS 4
 nl_table *nl_study_cheng_table41(const nl_table *runs, const double (*thesis)[NL_STUDY_TABLE41_COLS], int npair);

@@ -83,7 +83,7 @@ static const char *const gmm_cols[] = {
   "texture", "low_levels", "cutoff_rule", "pool", "excluded", "input_samples", "dim", "epsilon", "cutoff",
   "K_initial", "K_initial_sd", "K_final", "K_final_sd", "AIC", "AIC_sd", "BIC", "BIC_sd", "loglik",
   "seeds", "n_ok", "status", "seconds_gmm",
-  "thesis_samples", "thesis_K_initial", "thesis_K_final", "thesis_cutoff", "thesis_AIC"};
+  "paper_samples", "paper_K_initial", "paper_K_final", "paper_cutoff", "paper_AIC"};
 static const char *const path_cols[] = {"texture", "low_levels", "cutoff_rule", "K", "AIC", "BIC", "loglik", "iterations", "converged"};
 static const char *const curve_cols[] = {"texture", "low_levels", "cutoff", "K"};
 static const char *const pool_cols[] = {"texture", "low_levels", "run", "E_start", "E_best", "kept", "seconds"};
