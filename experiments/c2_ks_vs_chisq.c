@@ -107,7 +107,7 @@ int main(int argc, char **argv)
     snprintf(cap, sizeof cap, "%s: pattern and the controlled value per objective (first seed)", pats[i]);
     nl_harness_figure(r, f, cap);
   }
-  nl_harness_figure(r, "cdf.png", "CDF of the optimised angles (first seed) against the ideal line, and its deviation (Fig 4.5, 4.6 left)");
+  nl_harness_figure(r, "cdf.png", "CDF of the optimised angles (first seed) as its deviation from the ideal line, per objective (Fig 4.5, 4.6 left)");
   nl_harness_figure(r, "hist.png", "Histograms of the optimised angles, 500 bins (Fig 4.5, 4.6 right)");
   nl_table_free(sum);
   nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
