@@ -61,7 +61,7 @@ int main(int argc, char **argv)
                      "value is c = (1 + V)/2, (1 + sin(pi V))/2, |V| or the octave sum of |noise| over its "
                      "bound (nl_cheng.h); images stretch each value's 1st..99th percentile to alpha 0..1.\n",
                  grid, grid, base.octaves, base.f1, base.a1, base.w1, base.w2, k);
-  nl_harness_report_table(r, sum, "Per texture and pattern: statistics of the optimised tables (mean and spread over seeds)", 4);
+  nl_harness_report_columns(r, sum, "summary.tsv", "texture,pattern,seeds," NL_STUDY_CHENG_STORY, "Per texture and pattern: statistics of the optimised tables (mean and spread over seeds)", 4);
   double wks = nl_study_column_min(sum, "uniform_ks"), wku = nl_study_column_min(sum, "uniform_kuiper");
   nl_harness_text(r, "Uniformity: the smallest fraction of runs not rejected as non-uniform at alpha = 0.05 is "
                      "%.2f (KS) and %.2f (Kuiper) over the twelve panels.\n", wks, wku);

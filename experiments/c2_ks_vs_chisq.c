@@ -68,7 +68,7 @@ int main(int argc, char **argv)
                      "so the thesis weights keep their balance (nl_cheng.h). Kuiper's V is a third "
                      "objective. Statistics are over all 512 angles.\n",
                  pats[0], pats[1], grid, grid, base.f1, base.a1, base.w1, base.w2, k);
-  nl_harness_report_table(r, sum, "Mean (sd, min p) over seeds per pattern and objective; uniform_* = fraction of "
+  nl_harness_report_columns(r, sum, "summary.tsv", "pattern,objective,seeds," NL_STUDY_CHENG_STORY, "Mean (sd, min p) over seeds per pattern and objective; uniform_* = fraction of "
                           "runs not rejected as non-uniform at alpha = 0.05", 4);
   for (int i = 0; i < NPAT; i++) {
     size_t row_ks = (size_t)i * NOBJ, row_chi = row_ks + 1;

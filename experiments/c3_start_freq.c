@@ -59,7 +59,7 @@ int main(int argc, char **argv)
                      "measured as the rms gradient of the control value (\"roughness\", per unit length).\n",
                  grid, grid, base.octaves, base.a1, base.w1, base.w2, k);
   nl_harness_figure(r, "panels.png", "Controlled value (top) and cloud texture (bottom) for f1 = 2, 4, 6, 8");
-  nl_harness_report_table(r, sum, "Statistics per f1 (mean and spread over seeds)", 4);
+  nl_harness_report_columns(r, sum, "summary.tsv", "f1,seeds," NL_STUDY_CHENG_STORY, "Statistics per f1 (mean and spread over seeds)", 4);
   int best = 0;
   for (int i = 1; i < NF; i++) if (ec[i] < ec[best]) best = i;
   nl_harness_text(r, "Roughness %.3g, %.3g, %.3g, %.3g for f1 = 2, 4, 6, 8: %s. E_Con %.4g, %.4g, %.4g, %.4g is "

@@ -142,7 +142,7 @@ int main(int argc, char **argv)
                  safe_txt);
   nl_harness_figure(r, "textures.png", "Fig 4.8: cloud textures for the six printed weight pairs (first seed)");
   nl_harness_figure(r, "tradeoff.png", "E_KS vs E_Con over the w1 sweep (mean and sd over seeds), with the printed and swapped pairs");
-  nl_harness_report_table(r, sweep, "Sweep of w1 / w2 (w1 + w2 = 1)", 4);
+  nl_harness_report_columns(r, sweep, "sweep.tsv", "w1,w2," NL_STUDY_CHENG_STORY, "Sweep of w1 / w2 (w1 + w2 = 1)", 4);
   nl_cheng_pattern_free(pat); free(rhos);
   nl_table_free(tab); nl_table_free(sweep); nl_table_free(cmp);
   nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */

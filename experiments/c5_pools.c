@@ -35,7 +35,7 @@ static void report(nl_harness *r, const nl_study_cheng_pools *T, const nl_cheng_
                  grid, grid, c->m, c->octaves, c->f1, c->a1, c->w1, c->w2, po->runs, po->keep, po->epsilon,
                  po->low_levels > 1 ? "s" : "", po->low_levels > 1 ? "..2" : "", mo->samples,
                  mo->gmm.covariance == NL_GMM_FULL ? "full" : "diagonal", mo->threshold, mo->k_extra, nseeds);
-  nl_harness_report_table(r, T->gmm, "Tables 4.2-4.4, ours beside the thesis's (paper_* columns): one row per texture, "
+  nl_harness_report_columns(r, T->gmm, "gmm.tsv", "texture,low_levels,cutoff_rule,input_samples,cutoff,K_initial,K_initial_sd,K_final,K_final_sd,AIC,AIC_sd,paper_cutoff,paper_K_initial,paper_K_final,paper_AIC,status", "Tables 4.2-4.4, ours beside the thesis's (paper_* columns): one row per texture, "
                           "split and cutoff rule", 5);
   for (size_t q = 0; q < T->gmm->nrows; q++) {
     const char *tex = nl_table_text(T->gmm, q, "texture"), *rule = nl_table_text(T->gmm, q, "cutoff_rule");

@@ -48,7 +48,7 @@ int main(int argc, char **argv)
                      "setting, %d seeds for the table; surfaces drawn by gnuplot (pm3d).\n", mesh, mesh, grid, grid, k);
   nl_harness_figure(r, "heightmaps.png", "Patterns and height maps (grey, stretched)");
   nl_harness_figure(r, "terrain.png", "Shaded terrain surfaces (first seed)");
-  nl_harness_report_table(r, sum, "Statistics of the optimised tables (mean and spread over seeds)", 4);
+  nl_harness_report_columns(r, sum, "summary.tsv", "pattern,seeds," NL_STUDY_CHENG_STORY, "Statistics of the optimised tables (mean and spread over seeds)", 4);
   nl_table_free(sum);
   free(h);
   nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */

@@ -427,6 +427,34 @@ void nl_harness_report_table(nl_harness *r, const nl_table *t, const char *capti
   md_append(r, "\n");
 }
 
+void nl_harness_report_columns(nl_harness *r, const nl_table *t, const char *file, const char *columns,
+                               const char *caption, int digits)
+{
+  char *list = nl_xstrdup(columns), *save = NULL;
+  size_t n = 0, idx[256];
+  const char *names[256];
+  for (char *c = strtok_r(list, ",", &save); c; c = strtok_r(NULL, ",", &save)) {
+    long k = nl_table_column(t, c);
+    if (k < 0) nl_harness_die(r, 1, "report of %s: no column '%s'", file, c);
+    if (n == 256) nl_harness_die(r, 1, "report of %s: more than 256 columns", file);
+    names[n] = t->names[k];
+    idx[n++] = (size_t)k;
+  }
+  nl_table *v = nl_table_alloc(n, names);
+  for (size_t row = 0; row < t->nrows; row++) {
+    size_t i = nl_table_append_empty(v);
+    for (size_t c = 0; c < n; c++) {
+      const char *tx = t->text ? t->text[row * t->ncols + idx[c]] : NULL;
+      if (tx) nl_table_set_text(v, i, names[c], tx);
+      else nl_table_set(v, i, names[c], nl_table_get(t, row, idx[c]));
+    }
+  }
+  nl_harness_report_table(r, v, caption, digits);
+  nl_harness_text(r, "Shown: %zu of the table's %zu columns; all of them in [%s](%s/%s).\n", n, t->ncols, file, r->name, file);
+  nl_table_free(v);
+  free(list);
+}
+
 void nl_harness_figure(nl_harness *r, const char *file, const char *caption)
 {
   nl_harness_text(r, "![%s](%s/%s)\n\n*%s*\n", caption, r->name, file, caption);

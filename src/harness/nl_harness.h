@@ -144,6 +144,12 @@ void nl_harness_die(nl_harness *r, int code, const char *fmt, ...)
 void nl_harness_text(nl_harness *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 void nl_harness_report_table(nl_harness *r, const nl_table *t, const char *caption, int digits);
 void nl_harness_figure(nl_harness *r, const char *file, const char *caption);
+/* A wide table told by its story: only `columns` (comma-separated names, in
+ * that order) in the report, then a link to the whole table `file` (as
+ * written by nl_harness_write_table) naming how many columns it has. A name
+ * the table lacks is a bug in the experiment: exit 1. */
+void nl_harness_report_columns(nl_harness *r, const nl_table *t, const char *file, const char *columns,
+                               const char *caption, int digits);
 
 /* ---- regression rules ------------------------------------------------
  *

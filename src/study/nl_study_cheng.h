@@ -145,6 +145,10 @@ double nl_study_column_min(const nl_table *t, const char *col);
  * the thesis's rows {w1, E_KS, w2, E_Con}, a table of panel, w1, w2,
  * paper_E_ks, E_ks, E_ks_sd, paper_E_con, E_con, E_con_sd, E_ks_swapped,
  * E_con_swapped, p_ks_min, p_kuiper_min (caller frees). */
+/* The columns of a Cheng summary table (nl_study_cheng_summary_alloc) that
+ * carry the story in a report section (nl_harness_report_columns); the TSV
+ * keeps them all. Prefix the table's label columns: "pattern,seeds," ... */
+#define NL_STUDY_CHENG_STORY "E_ks,E_ks_sd,p_ks_min,V_kuiper,p_kuiper_min,chi2,p_chi2,E_con,E_con_sd,uniform_ks,uniform_kuiper,roughness"
 #define NL_STUDY_TABLE41_COLS 4
 nl_table *nl_study_cheng_table41(const nl_table *runs, const double (*thesis)[NL_STUDY_TABLE41_COLS], int npair);
 
