@@ -81,6 +81,11 @@ int main(int argc, char **argv)
                    pats[i], ks_ks, ks_chi, ks_ks < ks_chi ? "closer to the ideal line, as in the thesis" : "NOT closer",
                    chi_ks, chi_chi, chi_chi < chi_ks ? "lower" : "NOT lower",
                    con_ks, con_chi, 100 * fabs(con_ks - con_chi) / con_chi);
+    char q[2][64];
+    snprintf(q[0], sizeof q[0], "E_KS, KS vs chi-square objective, %s", pats[i]);
+    snprintf(q[1], sizeof q[1], "chi2, chi-square vs KS objective, %s", pats[i]);
+    nl_harness_verdict_less(r, "summary.tsv", sum, row_ks, row_chi, q[0], "KS CDF closer to ideal", "E_ks", "E_ks_sd", "seeds", 0.05);
+    nl_harness_verdict_less(r, "summary.tsv", sum, row_chi, row_ks, q[1], "chi2 lower under its objective", "chi2", "chi2_sd", "seeds", 0.05);
   }
   double worst_ks = nl_study_column_min(sum, "uniform_ks"), worst_ku = nl_study_column_min(sum, "uniform_kuiper");
   nl_harness_text(r, "Uniformity preserved? The smallest fraction of runs not rejected at alpha = 0.05 "

@@ -1,6 +1,7 @@
 #define _GNU_SOURCE   /* RTLD_DEFAULT, dladdr */
 #include "harness/nl_harness.h"
 #include "harness/nl_build_info.h"
+#include "stats/nl_stats.h"
 
 #include <gsl/gsl_version.h>
 #include <dirent.h>
@@ -531,6 +532,18 @@ const char *nl_harness_check_rule(const nl_harness *r, const char *table, const 
 
 /* ---- verdicts ------------------------------------------------------------ */
 
+/* One row of verdicts.tsv, every cell as text (numbers in the table's own
+ * round-trip format; sd "-" when there is none). */
+static void verdict_row(nl_harness *r, const char *quantity, const char *source, const char *paper, const char *ours,
+                        const char *sd, const char *rule, const char *verdict, const char *reason)
+{
+  if (!r->verdicts) {
+    const char *vcols[] = {"quantity", "source", "paper", "ours", "ours_sd", "rule", "verdict", "reason"};
+    r->verdicts = nl_table_alloc(8, vcols);
+  }
+  nl_table_append(r->verdicts, "ssssssss", quantity, source, paper, ours, sd ? sd : "-", rule, verdict, reason);
+}
+
 void nl_harness_verdict(nl_harness *r, const char *file, const nl_table *t, size_t row,
                         const char *quantity, const char *paper_col, const char *ours_col,
                         const char *sd_col, const char *rule, const char *note)
@@ -547,25 +560,39 @@ void nl_harness_verdict(nl_harness *r, const char *file, const nl_table *t, size
   nl_error err;
   if (nl_harness_verdict_decide(rule, paper, ours, sd, &v, reason, sizeof reason, &err))
     nl_harness_die(r, 1, "verdict '%s': %s", quantity, err.msg);
-  if (!r->verdicts) {
-    const char *vcols[] = {"quantity", "source", "paper", "ours", "ours_sd", "rule", "verdict", "reason"};
-    r->verdicts = nl_table_alloc(8, vcols);
-  }
-  snprintf(source, sizeof source, "%s:%s", file, ours_col);
-  size_t i = nl_table_append_empty(r->verdicts);
-  nl_table_set_text(r->verdicts, i, "quantity", quantity);
-  nl_table_set_text(r->verdicts, i, "source", source);
-  nl_table_set(r->verdicts, i, "paper", paper);
-  nl_table_set(r->verdicts, i, "ours", ours);
-  if (sd_col) nl_table_set(r->verdicts, i, "ours_sd", sd);
-  else nl_table_set_text(r->verdicts, i, "ours_sd", "-");
-  nl_table_set_text(r->verdicts, i, "rule", rule);
-  nl_table_set_text(r->verdicts, i, "verdict", nl_harness_verdict_name(v));
   if (note && *note) {
     size_t n = strlen(reason);
     snprintf(reason + n, sizeof reason - n, "; %s", note);
   }
-  nl_table_set_text(r->verdicts, i, "reason", reason);
+  char pt[32], ot[32], st[32];
+  nl_table_format_double(pt, paper);
+  nl_table_format_double(ot, ours);
+  if (sd_col) nl_table_format_double(st, sd);
+  snprintf(source, sizeof source, "%s:%s", file, ours_col);
+  verdict_row(r, quantity, source, pt, ot, sd_col ? st : NULL, rule, nl_harness_verdict_name(v), reason);
+}
+
+void nl_harness_verdict_less(nl_harness *r, const char *file, const nl_table *t, size_t row_a, size_t row_b,
+                             const char *quantity, const char *claim, const char *col, const char *sd_col,
+                             const char *n_col, double alpha)
+{
+  if (row_a >= t->nrows || row_b >= t->nrows) nl_harness_die(r, 1, "verdict '%s': %s has %zu rows", quantity, file, t->nrows);
+  const char *cols[] = {col, sd_col, n_col};
+  for (int k = 0; k < 3; k++)
+    if (nl_table_column(t, cols[k]) < 0) nl_harness_die(r, 1, "verdict '%s': %s has no column '%s'", quantity, file, cols[k]);
+  double a = nl_table_value(t, row_a, col), b = nl_table_value(t, row_b, col);
+  double sa = nl_table_value(t, row_a, sd_col), sb = nl_table_value(t, row_b, sd_col);
+  double na = nl_table_value(t, row_a, n_col), nb = nl_table_value(t, row_b, n_col), p = NAN;
+  nl_error err;
+  if (nl_stats_welch_p(a, sa, (size_t)na, b, sb, (size_t)nb, &p, &err)) p = a == b ? 1 : 0;   /* both sds 0 */
+  nl_harness_verdict_kind v = !(a < b) ? NL_VERDICT_NOT : p < alpha ? NL_VERDICT_REPRODUCED : NL_VERDICT_PARTLY;
+  char ours[128], reason[256], rule[64], source[256];
+  snprintf(ours, sizeof ours, "%.4g +- %.2g vs %.4g +- %.2g", a, sa, b, sb);
+  snprintf(reason, sizeof reason, "%s; Welch p = %.2g (%g vs %g seeds); reproduced when lower with p < %g, partly when lower",
+           a < b ? "lower" : "not lower", p, na, nb, alpha);
+  snprintf(rule, sizeof rule, "less welch %g", alpha);
+  snprintf(source, sizeof source, "%s:%s", file, col);
+  verdict_row(r, quantity, source, claim, ours, NULL, rule, nl_harness_verdict_name(v), reason);
 }
 
 void nl_harness_verdict_rows(nl_harness *r, const char *file, const nl_table *t, const char *what,

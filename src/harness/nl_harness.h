@@ -297,6 +297,15 @@ void nl_harness_verdict(nl_harness *r, const char *file, const nl_table *t, size
 void nl_harness_verdict_rows(nl_harness *r, const char *file, const nl_table *t, const char *what,
                              const char *label_col, const char *paper_col, const char *ours_col,
                              const char *sd_col, const char *rule, const char *note);
+/* A claim of the paper that a value is lower in one condition than in
+ * another (rows row_a and row_b of t, column col; sd_col: the sd over the
+ * n_col seeds of each row): "reproduced" when ours is lower and Welch's
+ * two-sided test rejects equal means at level alpha, "partly" when lower but
+ * not significant, else "not reproduced". The paper column holds `claim`
+ * (text), ours the two means and sds, the reason the p-value. */
+void nl_harness_verdict_less(nl_harness *r, const char *file, const nl_table *t, size_t row_a, size_t row_b,
+                             const char *quantity, const char *claim, const char *col, const char *sd_col,
+                             const char *n_col, double alpha);
 /* The decision alone: verdict and reason (at most `len` bytes) for
  * paper, ours, sd (NAN when there is none) under `rule`. */
 nl_status nl_harness_verdict_decide(const char *rule, double paper, double ours, double sd,
