@@ -155,7 +155,7 @@ NL_TEST(smoke_render_pair_and_lines)
   double *x = nl_bounds_line_sample(&p, &o, &l3, 8.0, 4.0, &n);
   NL_CHECK(n == 32);
   free(x);
-  nl_bounds_reading rd = {16, 8, 1, 0};
+  nl_bounds_reading rd = {.length = 16, .rate = 8, .shader = 1};
   double m[NL_BOUNDS_NSIGNALS][7];
   NL_CHECK(nl_bounds_bandwidth_seeds(&rd, 1, 2, m, NULL) == NL_OK);
   NL_CHECK(m[0][2] > 0 && m[0][3] >= 0 && m[2][2] >= m[0][2]);

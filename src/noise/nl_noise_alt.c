@@ -1,0 +1,99 @@
+#include "noise/nl_noise_alt.h"
+
+#include "base/nl_base.h"
+
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <string.h>
+
+/* Perlin 2002's grad(hash, x, y, z) as vectors (as in nl_noise.c). */
+static const double edge[16][3] = {
+  {1,1,0},{-1,1,0},{1,-1,0},{-1,-1,0},{1,0,1},{-1,0,1},{1,0,-1},{-1,0,-1},
+  {0,1,1},{0,-1,1},{0,1,-1},{0,-1,-1},{1,1,0},{0,-1,1},{-1,1,0},{0,-1,-1}};
+
+static void take_perm(nl_noise_alt *t, const nl_noise_perm3 *p, int quintic)
+{
+  memcpy(t->p, p->p, sizeof t->p);
+  t->quintic = quintic;
+  t->line1 = 0;
+  t->f32 = 0;
+}
+
+void nl_noise_alt_improved(nl_noise_alt *t, const nl_noise_perm3 *p, int quintic)
+{
+  take_perm(t, p, quintic);
+  for (int h = 0; h < 256; h++) memcpy(t->g[h], edge[h & 15], sizeof t->g[h]);
+}
+
+void nl_noise_alt_classic(nl_noise_alt *t, const nl_noise_perm3 *p, unsigned long seed)
+{
+  take_perm(t, p, 0);
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, nl_seed_stream(seed, "noise.alt.classic", 0));
+  for (int h = 0; h < 256; h++) {
+    double v[3], s;
+    do {   /* Perlin 1985: a point uniform in the unit ball, normalised */
+      s = 0.0;
+      for (int a = 0; a < 3; a++) { v[a] = 2.0 * gsl_rng_uniform(r) - 1.0; s += v[a] * v[a]; }
+    } while (s > 1.0 || s < 1e-12);
+    for (int a = 0; a < 3; a++) t->g[h][a] = v[a] / sqrt(s);
+  }
+  gsl_rng_free(r);
+}
+
+void nl_noise_alt_line1(nl_noise_alt *t, const nl_noise_perm3 *p, unsigned long seed, int quintic)
+{
+  take_perm(t, p, quintic);
+  t->line1 = 1;
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, nl_seed_stream(seed, "noise.alt.line1", 0));
+  for (int h = 0; h < 256; h++) {
+    t->g[h][0] = 2.0 * gsl_rng_uniform(r) - 1.0;
+    t->g[h][1] = t->g[h][2] = 0.0;
+  }
+  gsl_rng_free(r);
+}
+
+void nl_noise_alt_gpu8(nl_noise_alt *t)
+{
+  /* An RGBA8 texel stores (g + 1)/2 in [0, 1] as the nearest of 0..255;
+   * the shader reads it back as byte / 255 * 2 - 1 (0 becomes 1/255). */
+  for (int h = 0; h < 256; h++)
+    for (int a = 0; a < 3; a++) t->g[h][a] = round((t->g[h][a] + 1.0) * 0.5 * 255.0) / 255.0 * 2.0 - 1.0;
+  t->f32 = 1;
+}
+
+/* Perlin's trilinear blend of the eight corner dot products, in type T. */
+#define ALT_EVAL(name, T, FLOOR)                                                        \
+  static double name(const nl_noise_alt *t, T x, T y, T z)                              \
+  {                                                                                     \
+    T fx = FLOOR(x), fy = FLOOR(y), fz = FLOOR(z);                                      \
+    int X = (int)((long)fx & 255), Y = (int)((long)fy & 255), Z = (int)((long)fz & 255); \
+    x -= fx; y -= fy; z -= fz;                                                          \
+    T u = t->quintic ? x * x * x * (x * (x * (T)6 - (T)15) + (T)10) : x * x * ((T)3 - (T)2 * x); \
+    if (t->line1) {                                                                     \
+      T a = (T)t->g[t->p[X]][0] * x, b = (T)t->g[t->p[X + 1]][0] * (x - (T)1);          \
+      return (double)(a + u * (b - a));                                                 \
+    }                                                                                   \
+    T v = t->quintic ? y * y * y * (y * (y * (T)6 - (T)15) + (T)10) : y * y * ((T)3 - (T)2 * y); \
+    T w = t->quintic ? z * z * z * (z * (z * (T)6 - (T)15) + (T)10) : z * z * ((T)3 - (T)2 * z); \
+    T c[2][2][2];                                                                       \
+    for (int i = 0; i < 2; i++)                                                         \
+      for (int j = 0; j < 2; j++)                                                       \
+        for (int k = 0; k < 2; k++) {                                                   \
+          const double *g = t->g[t->p[t->p[t->p[X + i] + Y + j] + Z + k]];              \
+          c[i][j][k] = (T)g[0] * (x - (T)i) + (T)g[1] * (y - (T)j) + (T)g[2] * (z - (T)k); \
+        }                                                                               \
+    T e[2][2];                                                                          \
+    for (int j = 0; j < 2; j++)                                                         \
+      for (int k = 0; k < 2; k++) e[j][k] = c[0][j][k] + u * (c[1][j][k] - c[0][j][k]); \
+    T f0 = e[0][0] + v * (e[1][0] - e[0][0]), f1 = e[0][1] + v * (e[1][1] - e[0][1]);   \
+    return (double)(f0 + w * (f1 - f0));                                                \
+  }
+ALT_EVAL(eval_f64, double, floor)
+ALT_EVAL(eval_f32, float, floorf)
+
+double nl_noise_alt_eval(const nl_noise_alt *t, double x, double y, double z)
+{
+  return t->f32 ? eval_f32(t, (float)x, (float)y, (float)z) : eval_f64(t, x, y, z);
+}
