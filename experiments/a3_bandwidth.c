@@ -113,6 +113,7 @@ int main(int argc, char **argv)
                   hv(hy, NL_BOUNDS_A3_TWO_SIDED, 0, "f_sup"), hv(hy, NL_BOUNDS_A3_BIN_EDGE, 0, "f_sup"),
                   hv(hy, NL_BOUNDS_A3_RAW, 0, "f_sup"), hv(hy, NL_BOUNDS_A3_RADIANS, 0, "f_sup"));
   nl_harness_report_table(r, hy, "Readings of the method: mean and sd over seeds, z = distance of the paper's value in sd", 5);
+  nl_harness_figure(r, "hypotheses.png", "F_sup of each reading (mean +- 2 sd over seeds) against Table 5.2");
   nl_harness_figure(r, "psd.png", "Fig. 5.5: PSD and Gamma(lambda) of the octaves and their sum (first seed)");
   nl_harness_report_table(r, sw, "Sensitivity: mean F_inf, F_sup over 3 seeds when one choice changes", 5);
   nl_harness_figure(r, "sweep.png", "F_sup of the three signals against sample length and rate");
