@@ -350,6 +350,8 @@ static void alt_noise(nl_noise_alt *t, const nl_noise_perm3 *p, int noise, unsig
   case NL_BOUNDS_NOISE_LINE1_QUINTIC: nl_noise_alt_line1(t, p, seed, 1); break;
   case NL_BOUNDS_NOISE_GPU8: nl_noise_alt_improved(t, p, 1); nl_noise_alt_gpu8(t); break;
   case NL_BOUNDS_NOISE_CLASSIC_GPU8: nl_noise_alt_classic(t, p, seed); nl_noise_alt_gpu8(t); break;
+  case NL_BOUNDS_NOISE_SIMPLEX06: nl_noise_alt_simplex(t, p, 0.6); break;
+  case NL_BOUNDS_NOISE_SIMPLEX05: nl_noise_alt_simplex(t, p, 0.5); break;
   default: nl_noise_alt_classic(t, p, seed); break;
   }
 }
@@ -413,7 +415,7 @@ int nl_bounds_a3_readings(const nl_bounds_reading *base, nl_bounds_reading *out,
   static const char *names[] = {"improved02", "improved02_cubic", "classic85", "line1d_cubic",
                                 "line1d_quintic", "gpu8_f32", "classic85_gpu8_f32", "hash24_rgb8",
                                 "hann", "two_sided", "sigma_rms", "sigma_rms_no_dc", "bin_edge",
-                                "raw_value", "radians"};
+                                "raw_value", "radians", "simplex06", "simplex05"};
   int count = NL_BOUNDS_A3_COUNT;
   _Static_assert(sizeof names / sizeof names[0] == NL_BOUNDS_A3_COUNT, "one name per reading");
   for (int k = 0; k < count && k < max; k++) {
@@ -428,6 +430,8 @@ int nl_bounds_a3_readings(const nl_bounds_reading *base, nl_bounds_reading *out,
     r.bin_edge |= k == NL_BOUNDS_A3_BIN_EDGE;
     r.shader = k == NL_BOUNDS_A3_RAW ? !base->shader : r.shader;
     r.radians |= k == NL_BOUNDS_A3_RADIANS;
+    if (k == NL_BOUNDS_A3_SIMPLEX06 || k == NL_BOUNDS_A3_SIMPLEX05)
+      r.noise = k == NL_BOUNDS_A3_SIMPLEX06 ? NL_BOUNDS_NOISE_SIMPLEX06 : NL_BOUNDS_NOISE_SIMPLEX05;
     out[k] = r;
     name[k] = names[k];
   }

@@ -207,7 +207,9 @@ typedef enum {
   NL_BOUNDS_NOISE_LINE1_CUBIC,    /* 1D gradient noise, gradients in [-1, 1] (Perlin's noise1) */
   NL_BOUNDS_NOISE_LINE1_QUINTIC,  /* the same with the quintic fade */
   NL_BOUNDS_NOISE_GPU8,           /* 2002 noise, RGBA8 gradients, float32 */
-  NL_BOUNDS_NOISE_CLASSIC_GPU8    /* 1985 noise, RGBA8 gradients, float32 */
+  NL_BOUNDS_NOISE_CLASSIC_GPU8,   /* 1985 noise, RGBA8 gradients, float32 */
+  NL_BOUNDS_NOISE_SIMPLEX06,      /* Gustavson 2005 3D simplex noise, kernel radius^2 0.6 */
+  NL_BOUNDS_NOISE_SIMPLEX05       /* the same, radius^2 0.5 (continuous) */
 } nl_bounds_noise;
 typedef struct {
   double length, rate;
@@ -226,7 +228,8 @@ enum {
   NL_BOUNDS_A3_BASE, NL_BOUNDS_A3_IMPROVED_CUBIC, NL_BOUNDS_A3_CLASSIC, NL_BOUNDS_A3_LINE1_CUBIC,
   NL_BOUNDS_A3_LINE1_QUINTIC, NL_BOUNDS_A3_GPU8, NL_BOUNDS_A3_CLASSIC_GPU8, NL_BOUNDS_A3_HASH24,
   NL_BOUNDS_A3_HANN, NL_BOUNDS_A3_TWO_SIDED, NL_BOUNDS_A3_SIGMA_RMS, NL_BOUNDS_A3_SIGMA_RMS_NO_DC,
-  NL_BOUNDS_A3_BIN_EDGE, NL_BOUNDS_A3_RAW, NL_BOUNDS_A3_RADIANS, NL_BOUNDS_A3_COUNT
+  NL_BOUNDS_A3_BIN_EDGE, NL_BOUNDS_A3_RAW, NL_BOUNDS_A3_RADIANS, NL_BOUNDS_A3_SIMPLEX06,
+  NL_BOUNDS_A3_SIMPLEX05, NL_BOUNDS_A3_COUNT
 };
 int nl_bounds_a3_readings(const nl_bounds_reading *base, nl_bounds_reading *out, const char **name, int max);
 /* One sample of signal s under a reading, line from seed (caller frees). */

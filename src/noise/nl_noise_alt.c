@@ -17,6 +17,7 @@ static void take_perm(nl_noise_alt *t, const nl_noise_perm3 *p, int quintic)
   t->quintic = quintic;
   t->line1 = 0;
   t->f32 = 0;
+  t->simplex_r2 = 0.0;
 }
 
 void nl_noise_alt_improved(nl_noise_alt *t, const nl_noise_perm3 *p, int quintic)
@@ -52,6 +53,13 @@ void nl_noise_alt_line1(nl_noise_alt *t, const nl_noise_perm3 *p, unsigned long 
     t->g[h][1] = t->g[h][2] = 0.0;
   }
   gsl_rng_free(r);
+}
+
+void nl_noise_alt_simplex(nl_noise_alt *t, const nl_noise_perm3 *p, double r2)
+{
+  take_perm(t, p, 1);
+  t->simplex_r2 = r2;
+  for (int h = 0; h < 256; h++) memcpy(t->g[h], edge[h % 12], sizeof t->g[h]);
 }
 
 void nl_noise_alt_gpu8(nl_noise_alt *t)
@@ -93,7 +101,46 @@ void nl_noise_alt_gpu8(nl_noise_alt *t)
 ALT_EVAL(eval_f64, double, floor)
 ALT_EVAL(eval_f32, float, floorf)
 
+/* Gustavson 2005, 3D: skew to the simplex lattice, find the simplex
+ * (which of the 6 orderings of the offsets), sum the 4 corner kernels. */
+static double simplex3(const nl_noise_alt *t, double x, double y, double z)
+{
+  const double F3 = 1.0 / 3.0, G3 = 1.0 / 6.0;
+  double s = (x + y + z) * F3;
+  long i = (long)floor(x + s), j = (long)floor(y + s), k = (long)floor(z + s);
+  double u = (double)(i + j + k) * G3, d[4][3];
+  d[0][0] = x - ((double)i - u); d[0][1] = y - ((double)j - u); d[0][2] = z - ((double)k - u);
+  int o1[3] = {0, 0, 0}, o2[3] = {1, 1, 1};   /* second corner: the largest offset; third: all but the smallest */
+  const double *d0 = d[0];
+  if (d0[0] >= d0[1]) {
+    if (d0[1] >= d0[2]) { o1[0] = 1; o2[2] = 0; }
+    else if (d0[0] >= d0[2]) { o1[0] = 1; o2[1] = 0; }
+    else { o1[2] = 1; o2[1] = 0; }
+  } else {
+    if (d0[1] < d0[2]) { o1[2] = 1; o2[0] = 0; }
+    else if (d0[0] < d0[2]) { o1[1] = 1; o2[0] = 0; }
+    else { o1[1] = 1; o2[2] = 0; }
+  }
+  for (int q = 0; q < 3; q++) {
+    d[1][q] = d0[q] - o1[q] + G3;
+    d[2][q] = d0[q] - o2[q] + 2.0 * G3;
+    d[3][q] = d0[q] - 1.0 + 3.0 * G3;
+  }
+  int ii = (int)(i & 255), jj = (int)(j & 255), kk = (int)(k & 255);
+  int off[4][3] = {{0, 0, 0}, {o1[0], o1[1], o1[2]}, {o2[0], o2[1], o2[2]}, {1, 1, 1}};
+  double n = 0.0;
+  for (int q = 0; q < 4; q++) {
+    double r = t->simplex_r2 - d[q][0] * d[q][0] - d[q][1] * d[q][1] - d[q][2] * d[q][2];
+    if (r <= 0.0) continue;
+    const double *g = t->g[t->p[ii + off[q][0] + t->p[jj + off[q][1] + t->p[kk + off[q][2]]]]];
+    r *= r;
+    n += r * r * (g[0] * d[q][0] + g[1] * d[q][1] + g[2] * d[q][2]);
+  }
+  return 32.0 * n;
+}
+
 double nl_noise_alt_eval(const nl_noise_alt *t, double x, double y, double z)
 {
+  if (t->simplex_r2 > 0.0) return simplex3(t, x, y, z);
   return t->f32 ? eval_f32(t, (float)x, (float)y, (float)z) : eval_f64(t, x, y, z);
 }

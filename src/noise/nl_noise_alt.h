@@ -12,7 +12,13 @@
  *     fade 3t^2 - 2t^3 of his reference code;
  *   - a genuinely 1D gradient noise (Perlin's reference noise1): gradients
  *     uniform in [-1, 1], value lerp(fade(t), g0 t, g1 (t - 1)); y, z ignored.
- * Either fade can be chosen for any of them. nl_noise_alt_gpu8() rounds the
+ *   - simplex noise in 3D as Gustavson published it for GPUs ("Simplex noise
+ *     demystified", 2005): the skewed simplex lattice, the kernel
+ *     max(0, r2 - |d|^2)^4 (g . d) around each of the 4 corners, gradient
+ *     grad3[perm[i + perm[j + perm[k]]] % 12], times 32; r2 = 0.6 as
+ *     published (its kernel reaches past the corners' cells, so the value
+ *     jumps where a corner leaves the simplex), r2 = 0.5 the continuous one.
+ * Either fade can be chosen for the lattice noises. nl_noise_alt_gpu8() rounds the
  * gradients as an RGBA8 texture stores them, (g + 1)/2 * 255 to the nearest
  * byte, and switches to float32 evaluation (a 2009 GPU's shader precision).
  *
@@ -31,6 +37,7 @@ typedef struct {
   int quintic;            /* 1: 6t^5 - 15t^4 + 10t^3 (2002); 0: 3t^2 - 2t^3 (1985) */
   int line1;              /* 1: 1D gradient noise of x alone, gradient g[h][0] */
   int f32;                /* 1: evaluate in float32 */
+  double simplex_r2;      /* > 0: simplex noise with this kernel radius^2 */
 } nl_noise_alt;
 
 /* Perlin 2002's gradients on p's permutation. */
@@ -39,6 +46,8 @@ void nl_noise_alt_improved(nl_noise_alt *t, const nl_noise_perm3 *p, int quintic
 void nl_noise_alt_classic(nl_noise_alt *t, const nl_noise_perm3 *p, unsigned long seed);
 /* 1D gradient noise: p's permutation, gradients uniform in [-1, 1] from stream ("noise.alt.line1", 0). */
 void nl_noise_alt_line1(nl_noise_alt *t, const nl_noise_perm3 *p, unsigned long seed, int quintic);
+/* Gustavson's 3D simplex noise on p's permutation, kernel radius^2 r2. */
+void nl_noise_alt_simplex(nl_noise_alt *t, const nl_noise_perm3 *p, double r2);
 /* Gradients through an RGBA8 texture, evaluation in float32. */
 void nl_noise_alt_gpu8(nl_noise_alt *t);
 double nl_noise_alt_eval(const nl_noise_alt *t, double x, double y, double z);
