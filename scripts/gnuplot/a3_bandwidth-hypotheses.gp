@@ -9,7 +9,7 @@ f = dir.'/hypotheses.tsv'
 set multiplot layout 1,3 title "F_{sup} by reading (mean +- 2 sd over seeds); dashed: the paper"
 set grid y
 set xtics rotate by 60 right noenhanced
-set xrange [-0.5:14.5]
+set offsets 0.5, 0.5, 0, 0
 set ylabel "F_{sup} (cycles per unit; radians for 'radians')"
 set logscale y
 set yrange [0.5:16]

@@ -341,6 +341,17 @@ static double hash24_round_trip(double v)
   return (double)(byte[0] * 65536 + byte[1] * 256 + byte[2]) / 16777216.0;
 }
 
+const char *nl_bounds_noise_text(int noise)
+{
+  static const char *text[] = {
+    "Perlin's 2002 improved noise (quintic fade, 12 gradients)", "2002 gradients with the 1985 cubic fade",
+    "Perlin's 1985 noise (unit gradients, cubic fade)", "1D gradient noise (cubic fade)",
+    "1D gradient noise (quintic fade)", "2002 noise with RGBA8 gradients in float32",
+    "1985 noise with RGBA8 gradients in float32", "Gustavson's 2005 3D simplex noise (kernel radius^2 0.6)",
+    "3D simplex noise with kernel radius^2 0.5", "Gustavson's 2005 2D simplex noise"};
+  return noise >= 0 && noise <= NL_BOUNDS_NOISE_SIMPLEX2 ? text[noise] : "unknown noise";
+}
+
 /* One of the nl_noise_alt noises of a reading, on p's permutation. */
 static void alt_noise(nl_noise_alt *t, const nl_noise_perm3 *p, int noise, unsigned long seed)
 {
@@ -352,6 +363,7 @@ static void alt_noise(nl_noise_alt *t, const nl_noise_perm3 *p, int noise, unsig
   case NL_BOUNDS_NOISE_CLASSIC_GPU8: nl_noise_alt_classic(t, p, seed); nl_noise_alt_gpu8(t); break;
   case NL_BOUNDS_NOISE_SIMPLEX06: nl_noise_alt_simplex(t, p, 0.6); break;
   case NL_BOUNDS_NOISE_SIMPLEX05: nl_noise_alt_simplex(t, p, 0.5); break;
+  case NL_BOUNDS_NOISE_SIMPLEX2: nl_noise_alt_simplex2(t, p); break;
   default: nl_noise_alt_classic(t, p, seed); break;
   }
 }
@@ -370,7 +382,8 @@ double *nl_bounds_reading_sample(const nl_noise_perm3 *p, int s, const nl_bounds
     x = nl_xmalloc(*n * sizeof *x);
     for (size_t k = 0; k < *n; k++) {
       double u = (double)k / rd->rate, v = 0.0, q[3];
-      for (int a = 0; a < 3; a++) q[a] = t.line1 ? (a ? 0.0 : l.origin[0] + u) : l.origin[a] + u * l.dir[a];
+      double h = t.plane ? hypot(l.dir[0], l.dir[1]) : 1.0;   /* unit speed in the plane */
+      for (int a = 0; a < 3; a++) q[a] = t.line1 ? (a ? 0.0 : l.origin[0] + u) : l.origin[a] + u * l.dir[a] / h;
       for (int j = 0; j < o.n; j++)
         v += o.amp[j] * nl_noise_alt_eval(&t, o.freq[j] * q[0], o.freq[j] * q[1], o.freq[j] * q[2]);
       x[k] = v;
@@ -415,7 +428,8 @@ int nl_bounds_a3_readings(const nl_bounds_reading *base, nl_bounds_reading *out,
   static const char *names[] = {"improved02", "improved02_cubic", "classic85", "line1d_cubic",
                                 "line1d_quintic", "gpu8_f32", "classic85_gpu8_f32", "hash24_rgb8",
                                 "hann", "two_sided", "sigma_rms", "sigma_rms_no_dc", "bin_edge",
-                                "raw_value", "radians", "simplex06", "simplex05"};
+                                "raw_value", "radians", "simplex06", "simplex05", "simplex2d",
+                                "simplex06_rms"};
   int count = NL_BOUNDS_A3_COUNT;
   _Static_assert(sizeof names / sizeof names[0] == NL_BOUNDS_A3_COUNT, "one name per reading");
   for (int k = 0; k < count && k < max; k++) {
@@ -430,10 +444,11 @@ int nl_bounds_a3_readings(const nl_bounds_reading *base, nl_bounds_reading *out,
     r.bin_edge |= k == NL_BOUNDS_A3_BIN_EDGE;
     r.shader = k == NL_BOUNDS_A3_RAW ? !base->shader : r.shader;
     r.radians |= k == NL_BOUNDS_A3_RADIANS;
-    if (k == NL_BOUNDS_A3_SIMPLEX06 || k == NL_BOUNDS_A3_SIMPLEX05)
-      r.noise = k == NL_BOUNDS_A3_SIMPLEX06 ? NL_BOUNDS_NOISE_SIMPLEX06 : NL_BOUNDS_NOISE_SIMPLEX05;
+    if (k >= NL_BOUNDS_A3_SIMPLEX06 && k <= NL_BOUNDS_A3_SIMPLEX2)
+      r.noise = k - NL_BOUNDS_A3_SIMPLEX06 + NL_BOUNDS_NOISE_SIMPLEX06;   /* same order */
+    if (k == NL_BOUNDS_A3_SIMPLEX06_RMS) { r.noise = NL_BOUNDS_NOISE_SIMPLEX06; r.sigma_rms = 1; }
     out[k] = r;
-    name[k] = names[k];
+    name[k] = k == 0 && base->noise != NL_BOUNDS_NOISE_IMPROVED ? "base" : names[k];
   }
   return count < max ? count : max;
 }

@@ -18,6 +18,7 @@ static void take_perm(nl_noise_alt *t, const nl_noise_perm3 *p, int quintic)
   t->line1 = 0;
   t->f32 = 0;
   t->simplex_r2 = 0.0;
+  t->plane = 0;
 }
 
 void nl_noise_alt_improved(nl_noise_alt *t, const nl_noise_perm3 *p, int quintic)
@@ -60,6 +61,12 @@ void nl_noise_alt_simplex(nl_noise_alt *t, const nl_noise_perm3 *p, double r2)
   take_perm(t, p, 1);
   t->simplex_r2 = r2;
   for (int h = 0; h < 256; h++) memcpy(t->g[h], edge[h % 12], sizeof t->g[h]);
+}
+
+void nl_noise_alt_simplex2(nl_noise_alt *t, const nl_noise_perm3 *p)
+{
+  nl_noise_alt_simplex(t, p, 0.5);
+  t->plane = 1;
 }
 
 void nl_noise_alt_gpu8(nl_noise_alt *t)
@@ -139,8 +146,32 @@ static double simplex3(const nl_noise_alt *t, double x, double y, double z)
   return 32.0 * n;
 }
 
+/* Gustavson 2005, 2D: skew to the triangle lattice, 3 corner kernels. */
+static double simplex2(const nl_noise_alt *t, double x, double y)
+{
+  const double F2 = 0.5 * (sqrt(3.0) - 1.0), G2 = (3.0 - sqrt(3.0)) / 6.0;
+  double s = (x + y) * F2;
+  long i = (long)floor(x + s), j = (long)floor(y + s);
+  double u = (double)(i + j) * G2, d[3][2];
+  d[0][0] = x - ((double)i - u); d[0][1] = y - ((double)j - u);
+  int i1 = d[0][0] > d[0][1], j1 = !i1;   /* lower or upper triangle */
+  d[1][0] = d[0][0] - i1 + G2; d[1][1] = d[0][1] - j1 + G2;
+  d[2][0] = d[0][0] - 1.0 + 2.0 * G2; d[2][1] = d[0][1] - 1.0 + 2.0 * G2;
+  int ii = (int)(i & 255), jj = (int)(j & 255), off[3][2] = {{0, 0}, {i1, j1}, {1, 1}};
+  double n = 0.0;
+  for (int q = 0; q < 3; q++) {
+    double r = t->simplex_r2 - d[q][0] * d[q][0] - d[q][1] * d[q][1];
+    if (r <= 0.0) continue;
+    const double *g = t->g[t->p[ii + off[q][0] + t->p[jj + off[q][1]]]];
+    r *= r;
+    n += r * r * (g[0] * d[q][0] + g[1] * d[q][1]);
+  }
+  return 70.0 * n;
+}
+
 double nl_noise_alt_eval(const nl_noise_alt *t, double x, double y, double z)
 {
+  if (t->simplex_r2 > 0.0 && t->plane) return simplex2(t, x, y);
   if (t->simplex_r2 > 0.0) return simplex3(t, x, y, z);
   return t->f32 ? eval_f32(t, (float)x, (float)y, (float)z) : eval_f64(t, x, y, z);
 }

@@ -17,7 +17,8 @@
  *     max(0, r2 - |d|^2)^4 (g . d) around each of the 4 corners, gradient
  *     grad3[perm[i + perm[j + perm[k]]] % 12], times 32; r2 = 0.6 as
  *     published (its kernel reaches past the corners' cells, so the value
- *     jumps where a corner leaves the simplex), r2 = 0.5 the continuous one.
+ *     jumps where a corner leaves the simplex), r2 = 0.5 the continuous one;
+ *     and his 2D simplex noise (triangles, kernel (0.5 - |d|^2)^4, times 70).
  * Either fade can be chosen for the lattice noises. nl_noise_alt_gpu8() rounds the
  * gradients as an RGBA8 texture stores them, (g + 1)/2 * 255 to the nearest
  * byte, and switches to float32 evaluation (a 2009 GPU's shader precision).
@@ -38,6 +39,7 @@ typedef struct {
   int line1;              /* 1: 1D gradient noise of x alone, gradient g[h][0] */
   int f32;                /* 1: evaluate in float32 */
   double simplex_r2;      /* > 0: simplex noise with this kernel radius^2 */
+  int plane;              /* 1: 2D (simplex) noise of x, y; z ignored */
 } nl_noise_alt;
 
 /* Perlin 2002's gradients on p's permutation. */
@@ -48,6 +50,8 @@ void nl_noise_alt_classic(nl_noise_alt *t, const nl_noise_perm3 *p, unsigned lon
 void nl_noise_alt_line1(nl_noise_alt *t, const nl_noise_perm3 *p, unsigned long seed, int quintic);
 /* Gustavson's 3D simplex noise on p's permutation, kernel radius^2 r2. */
 void nl_noise_alt_simplex(nl_noise_alt *t, const nl_noise_perm3 *p, double r2);
+/* Gustavson's 2D simplex noise (r2 = 0.5, scale 70) of x, y on p's permutation. */
+void nl_noise_alt_simplex2(nl_noise_alt *t, const nl_noise_perm3 *p);
 /* Gradients through an RGBA8 texture, evaluation in float32. */
 void nl_noise_alt_gpu8(nl_noise_alt *t);
 double nl_noise_alt_eval(const nl_noise_alt *t, double x, double y, double z);

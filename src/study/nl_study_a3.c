@@ -1,6 +1,7 @@
 #include "study/nl_study_a3.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -58,18 +59,18 @@ nl_table *nl_study_a3_hypotheses(const nl_bounds_reading *base, unsigned long se
   return t;
 }
 
-int nl_study_a3_summary(const nl_table *t, int max, double (*worst)[2], int *all)
+int nl_study_a3_summary(const nl_table *t, int max, double (*worst)[2], int *within)
 {
   int h = -1;
   for (size_t r = 0; r < t->nrows; r++) {
     if (r % NSIG == 0) {
       if (++h >= max) return max;
       worst[h][0] = worst[h][1] = 0.0;
-      all[h] = 1;
+      within[h] = 0;
     }
     worst[h][0] = fmax(worst[h][0], fabs(nl_table_value(t, r, "z_sup")));
     worst[h][1] = fmax(worst[h][1], fabs(nl_table_value(t, r, "z_inf")));
-    all[h] &= nl_table_value(t, r, "within") == 1.0;
+    within[h] += (int)nl_table_value(t, r, "within_inf") + (int)nl_table_value(t, r, "within_sup");
   }
   return h + 1;
 }
@@ -106,4 +107,28 @@ nl_table *nl_study_a3_sweep(const nl_bounds_reading *rd, int nvary, unsigned lon
   if (!rc) rc = sweep_row(t, "axis", &line, seed0, seeds, err);
   if (rc) { nl_table_free(t); return NULL; }
   return t;
+}
+
+void nl_study_a3_list(const nl_table *t, int s, const char *col, char *buf, size_t size)
+{
+  size_t used = 0;
+  buf[0] = '\0';
+  for (size_t r = (size_t)s; r < t->nrows && used < size; r += NSIG) {
+    int w = snprintf(buf + used, size - used, "%s%s %.4f", used ? ", " : "", nl_table_text(t, r, "hypothesis"),
+                     nl_table_value(t, r, col));
+    if (w < 0) break;
+    used += (size_t)w;
+  }
+}
+
+void nl_study_a3_range(const nl_table *sw, double min_length, const char *col, double *lo, double *hi)
+{
+  *lo = INFINITY;
+  *hi = -INFINITY;
+  for (size_t k = 0; k < sw->nrows; k++) {
+    const char *what = nl_table_text(sw, k, "vary");
+    if ((strcmp(what, "length") && strcmp(what, "rate")) || nl_table_value(sw, k, "length") < min_length) continue;
+    *lo = fmin(*lo, nl_table_value(sw, k, col));
+    *hi = fmax(*hi, nl_table_value(sw, k, col));
+  }
 }

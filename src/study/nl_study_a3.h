@@ -27,8 +27,16 @@ nl_table *nl_study_a3_hypotheses(const nl_bounds_reading *base, unsigned long se
                                  const double paper[][2], const char *const *sig, nl_error *err);
 
 /* Summary of a hypotheses table, per reading h (rows in order): worst[h] =
- * the largest |z_sup| and |z_inf| over the signals, all[h] = 1 if every
- * row is within. Returns the number of readings (at most max). */
-int nl_study_a3_summary(const nl_table *t, int max, double (*worst)[2], int *all);
+ * the largest |z_sup| and |z_inf| over the signals, within[h] = how many
+ * of the paper's bounds (F_inf and F_sup of each signal) are within.
+ * Returns the number of readings (at most max). */
+int nl_study_a3_summary(const nl_table *t, int max, double (*worst)[2], int *within);
+
+/* "reading value, ..." of column col for signal s of a hypotheses table
+ * (%.4f), truncated to size. */
+void nl_study_a3_list(const nl_table *t, int s, const char *col, char *buf, size_t size);
+/* Smallest and largest of column col over the length and rate rows of a
+ * sweep table whose length is at least min_length. */
+void nl_study_a3_range(const nl_table *sw, double min_length, const char *col, double *lo, double *hi);
 
 #endif
