@@ -37,7 +37,7 @@ typedef struct {
   double g[256][3];       /* gradient per hash value */
   int quintic;            /* 1: 6t^5 - 15t^4 + 10t^3 (2002); 0: 3t^2 - 2t^3 (1985) */
   int line1;              /* 1: 1D gradient noise of x alone, gradient g[h][0] */
-  int f32;                /* 1: evaluate in float32 */
+  int f32;                /* 1: evaluate in float32 (lattice noises; simplex stays double) */
   double simplex_r2;      /* > 0: simplex noise with this kernel radius^2 */
   int plane;              /* 1: 2D (simplex) noise of x, y; z ignored */
 } nl_noise_alt;
