@@ -1,4 +1,5 @@
 #include "bounds/nl_bounds.h"
+#include "noise/nl_noise_alt.h"
 
 #include <gsl/gsl_rng.h>
 #include <gsl/gsl_statistics_double.h>
@@ -324,14 +325,132 @@ nl_noise_octaves nl_bounds_signal_octaves(int s)
   return o;
 }
 
+/* The shader code of sec. 5.2.2 and the 8-bit framebuffer behind it, in
+ * float32 as on the GPU: val = int(v 2^24), r = (val / 65536) / 256.0,
+ * g = (val / 256 - (val / 65536) 256) / 256.0, b = (val % 256) / 256.0,
+ * each stored as the nearest of 0..255 of its value clamped to [0, 1]
+ * (so a channel of 128 or more comes back one less: k/256 * 255 rounds
+ * to k - 1); Scilab rebuilds (R 65536 + G 256 + B) / 2^24. */
+static double hash24_round_trip(double v)
+{
+  int val = (int)((float)v * 16777216.0f);
+  float ch[3] = {(float)(val / 65536) / 256.0f, (float)(val / 256 - (val / 65536) * 256) / 256.0f,
+                 (float)(val % 256) / 256.0f};
+  long byte[3];
+  for (int c = 0; c < 3; c++) byte[c] = lroundf(255.0f * fminf(fmaxf(ch[c], 0.0f), 1.0f));
+  return (double)(byte[0] * 65536 + byte[1] * 256 + byte[2]) / 16777216.0;
+}
+
+const char *nl_bounds_noise_text(int noise)
+{
+  static const char *text[] = {
+    "Perlin's 2002 improved noise (quintic fade, 12 gradients)", "2002 gradients with the 1985 cubic fade",
+    "Perlin's 1985 noise (unit gradients, cubic fade)", "1D gradient noise (cubic fade)",
+    "1D gradient noise (quintic fade)", "2002 noise with RGBA8 gradients in float32",
+    "1985 noise with RGBA8 gradients in float32", "Gustavson's 2005 3D simplex noise (kernel radius^2 0.6)",
+    "3D simplex noise with kernel radius^2 0.5", "Gustavson's 2005 2D simplex noise"};
+  return noise >= 0 && noise <= NL_BOUNDS_NOISE_SIMPLEX2 ? text[noise] : "unknown noise";
+}
+
+/* One of the nl_noise_alt noises of a reading, on p's permutation. */
+static void alt_noise(nl_noise_alt *t, const nl_noise_perm3 *p, int noise, unsigned long seed)
+{
+  switch (noise) {
+  case NL_BOUNDS_NOISE_IMPROVED_CUBIC: nl_noise_alt_improved(t, p, 0); break;
+  case NL_BOUNDS_NOISE_LINE1_CUBIC: nl_noise_alt_line1(t, p, seed, 0); break;
+  case NL_BOUNDS_NOISE_LINE1_QUINTIC: nl_noise_alt_line1(t, p, seed, 1); break;
+  case NL_BOUNDS_NOISE_GPU8: nl_noise_alt_improved(t, p, 1); nl_noise_alt_gpu8(t); break;
+  case NL_BOUNDS_NOISE_CLASSIC_GPU8: nl_noise_alt_classic(t, p, seed); nl_noise_alt_gpu8(t); break;
+  case NL_BOUNDS_NOISE_SIMPLEX06: nl_noise_alt_simplex(t, p, 0.6); break;
+  case NL_BOUNDS_NOISE_SIMPLEX05: nl_noise_alt_simplex(t, p, 0.5); break;
+  case NL_BOUNDS_NOISE_SIMPLEX2: nl_noise_alt_simplex2(t, p); break;
+  default: nl_noise_alt_classic(t, p, seed); break;
+  }
+}
+
 double *nl_bounds_reading_sample(const nl_noise_perm3 *p, int s, const nl_bounds_reading *rd,
                                  unsigned long seed, size_t *n)
 {
   nl_noise_octaves o = nl_bounds_signal_octaves(s);
   nl_bounds_line l = nl_bounds_line_a3(rd->axis, seed);
-  double *x = nl_bounds_line_sample(p, &o, &l, rd->length, rd->rate, n);
+  double *x;
+  if (rd->noise == NL_BOUNDS_NOISE_IMPROVED) x = nl_bounds_line_sample(p, &o, &l, rd->length, rd->rate, n);
+  else {
+    nl_noise_alt t;
+    alt_noise(&t, p, rd->noise, seed);
+    *n = (size_t)llround(rd->length * rd->rate);
+    x = nl_xmalloc(*n * sizeof *x);
+    for (size_t k = 0; k < *n; k++) {
+      double u = (double)k / rd->rate, v = 0.0, q[3];
+      double h = t.plane ? hypot(l.dir[0], l.dir[1]) : 1.0;   /* unit speed in the plane */
+      for (int a = 0; a < 3; a++) q[a] = t.line1 ? (a ? 0.0 : l.origin[0] + u) : l.origin[a] + u * l.dir[a] / h;
+      for (int j = 0; j < o.n; j++)
+        v += o.amp[j] * nl_noise_alt_eval(&t, o.freq[j] * q[0], o.freq[j] * q[1], o.freq[j] * q[2]);
+      x[k] = v;
+    }
+  }
   if (rd->shader) for (size_t k = 0; k < *n; k++) x[k] = 0.5 * (x[k] + 1.0);   /* the shader stored (noise + 1)/2 */
+  if (rd->hash24) for (size_t k = 0; k < *n; k++) x[k] = hash24_round_trip(x[k]);
   return x;
+}
+
+nl_status nl_bounds_bandwidth_reading(const double *x, size_t n, const nl_bounds_reading *rd, double T,
+                                      nl_bounds_bandwidth *bw, nl_error *err)
+{
+  if (!(T > 0.0)) return nl_fail(err, NL_EINVAL, "bandwidth: threshold T must be positive");
+  size_t m = n / 2 + 1;
+  double *f = nl_xmalloc(m * sizeof *f), *P = nl_xmalloc(m * sizeof *P);
+  nl_status rc = nl_spectrum_psd1_window(x, n, rd->rate, rd->window, f, P, err);
+  if (!rc) {
+    double *g = nl_xmalloc(m * sizeof *g), res = rd->rate / (double)n;
+    for (size_t k = 1; rd->two_sided && 2 * k < n; k++) P[k] *= 0.5;   /* positive half of the two-sided PSD */
+    if (rd->gamma_no_dc) P[0] = 0.0;
+    for (size_t k = 0; k < m; k++)
+      f[k] = (rd->bin_edge ? fmax(f[k] - 0.5 * res, 0.0) : f[k]) * (rd->radians ? 2.0 * M_PI : 1.0);
+    nl_bounds_psd1_tail(P, m, g);
+    mean_sigma(x, n, &bw->mean, &bw->sigma);
+    double rms = sqrt(bw->mean * bw->mean + bw->sigma * bw->sigma);
+    double lo = (rd->sigma_rms ? rms : bw->sigma) - sqrt(T);
+    bw->f_sup = nl_bounds_psd1_tail_inverse(f, g, m, T);
+    bw->f_inf = nl_bounds_psd1_tail_inverse(f, g, m, lo > 0.0 ? lo * lo : 0.0);
+    double lr = sqrt(g[0]) - sqrt(T);
+    bw->f_inf_rms = nl_bounds_psd1_tail_inverse(f, g, m, lr > 0.0 ? lr * lr : 0.0);
+    bw->resolution = res;
+    bw->nyquist = 0.5 * rd->rate;
+    free(g);
+  }
+  free(f); free(P);
+  return rc;
+}
+
+int nl_bounds_a3_readings(const nl_bounds_reading *base, nl_bounds_reading *out, const char **name, int max)
+{
+  static const char *names[] = {"improved02", "improved02_cubic", "classic85", "line1d_cubic",
+                                "line1d_quintic", "gpu8_f32", "classic85_gpu8_f32", "hash24_rgb8",
+                                "hann", "two_sided", "sigma_rms", "sigma_rms_no_dc", "bin_edge",
+                                "raw_value", "radians", "simplex06", "simplex05", "simplex2d",
+                                "simplex06_rms"};
+  int count = NL_BOUNDS_A3_COUNT;
+  _Static_assert(sizeof names / sizeof names[0] == NL_BOUNDS_A3_COUNT, "one name per reading");
+  for (int k = 0; k < count && k < max; k++) {
+    nl_bounds_reading r = *base;
+    if (k >= NL_BOUNDS_A3_IMPROVED_CUBIC && k <= NL_BOUNDS_A3_CLASSIC_GPU8)
+      r.noise = k - NL_BOUNDS_A3_IMPROVED_CUBIC + NL_BOUNDS_NOISE_IMPROVED_CUBIC;   /* same order */
+    r.hash24 |= k == NL_BOUNDS_A3_HASH24;
+    r.window = k == NL_BOUNDS_A3_HANN ? NL_SPECTRUM_HANN : r.window;
+    r.two_sided |= k == NL_BOUNDS_A3_TWO_SIDED;
+    r.sigma_rms |= k == NL_BOUNDS_A3_SIGMA_RMS || k == NL_BOUNDS_A3_SIGMA_RMS_NO_DC;
+    r.gamma_no_dc |= k == NL_BOUNDS_A3_SIGMA_RMS_NO_DC;
+    r.bin_edge |= k == NL_BOUNDS_A3_BIN_EDGE;
+    r.shader = k == NL_BOUNDS_A3_RAW ? !base->shader : r.shader;
+    r.radians |= k == NL_BOUNDS_A3_RADIANS;
+    if (k >= NL_BOUNDS_A3_SIMPLEX06 && k <= NL_BOUNDS_A3_SIMPLEX2)
+      r.noise = k - NL_BOUNDS_A3_SIMPLEX06 + NL_BOUNDS_NOISE_SIMPLEX06;   /* same order */
+    if (k == NL_BOUNDS_A3_SIMPLEX06_RMS) { r.noise = NL_BOUNDS_NOISE_SIMPLEX06; r.sigma_rms = 1; }
+    out[k] = r;
+    name[k] = k == 0 && base->noise != NL_BOUNDS_NOISE_IMPROVED ? "base" : names[k];
+  }
+  return count < max ? count : max;
 }
 
 nl_status nl_bounds_bandwidth_seeds(const nl_bounds_reading *rd, unsigned long seed0, int seeds,
@@ -348,7 +467,7 @@ nl_status nl_bounds_bandwidth_seeds(const nl_bounds_reading *rd, unsigned long s
       size_t n;
       double *x = nl_bounds_reading_sample(&p, s, rd, nl_seed_replicate(seed0, k), &n);
       nl_bounds_bandwidth bw;
-      nl_status rc = nl_bounds_bandwidth_1d(x, n, rd->rate, NL_BOUNDS_T, &bw, err);
+      nl_status rc = nl_bounds_bandwidth_reading(x, n, rd, NL_BOUNDS_T, &bw, err);
       free(x);
       if (rc) return rc;
       fi[s][k] = bw.f_inf; fs[s][k] = bw.f_sup; sg[s][k] = bw.sigma; fr[s][k] = bw.f_inf_rms;

@@ -185,10 +185,58 @@ enum { NL_BOUNDS_NSIGNALS = 3, NL_BOUNDS_MAX_SEEDS = 64 };
 /* The signals of Table 5.2 as octave lists: 0 noise(x), 1 noise(2x)/2,
  * 2 their sum Fnoise_2. */
 nl_noise_octaves nl_bounds_signal_octaves(int s);
-/* The sampling choices the paper leaves open: line length (units) and rate
+/* The choices the paper leaves open. Sampling: line length (units) and rate
  * (samples per unit), the shader's encoding (noise + 1)/2 or raw values,
- * the x axis or the oblique line. */
-typedef struct { double length, rate; int shader, axis; } nl_bounds_reading;
+ * the x axis or the oblique line. The noise (nl_bounds_noise; the
+ * nl_noise_alt ones are sampled on the same line, the 1D noise at unit
+ * speed along x from the line's origin, the 2D noise at unit speed along
+ * the line's direction in the xy plane). The paper's import (sec. 5.2.2):
+ * hash24 sends the encoded value through its shader code, val =
+ * int(v 2^24) split over three channels as (val / 65536) / 256.0 etc.,
+ * stored in an 8-bit framebuffer (nearest of 0..255 of the channel in
+ * [0, 1]) and rebuilt as (R 65536 + G 256 + B) / 2^24. The estimator:
+ * window (NL_SPECTRUM_RECT or _HANN), two_sided (Gamma integrates the
+ * positive half of the two-sided PSD: half the energy of each f > 0),
+ * sigma_rms (sigma = RMS, the DC in sigma), gamma_no_dc (the DC bin left
+ * out of Gamma), bin_edge (a bin's frequency is its lower edge, f - res/2,
+ * not its centre), radians (frequencies times 2 pi). All 0 is the reading
+ * A3 has always used (same bits). */
+typedef enum {
+  NL_BOUNDS_NOISE_IMPROVED = 0,   /* Perlin 2002, nl_noise_perm3 */
+  NL_BOUNDS_NOISE_IMPROVED_CUBIC, /* 2002 gradients, 1985's cubic fade */
+  NL_BOUNDS_NOISE_CLASSIC,        /* Perlin 1985: unit gradients, cubic fade */
+  NL_BOUNDS_NOISE_LINE1_CUBIC,    /* 1D gradient noise, gradients in [-1, 1] (Perlin's noise1) */
+  NL_BOUNDS_NOISE_LINE1_QUINTIC,  /* the same with the quintic fade */
+  NL_BOUNDS_NOISE_GPU8,           /* 2002 noise, RGBA8 gradients, float32 */
+  NL_BOUNDS_NOISE_CLASSIC_GPU8,   /* 1985 noise, RGBA8 gradients, float32 */
+  NL_BOUNDS_NOISE_SIMPLEX06,      /* Gustavson 2005 3D simplex noise, kernel radius^2 0.6 */
+  NL_BOUNDS_NOISE_SIMPLEX05,      /* the same, radius^2 0.5 (continuous) */
+  NL_BOUNDS_NOISE_SIMPLEX2        /* Gustavson 2005 2D simplex noise, on the line's xy direction */
+} nl_bounds_noise;
+/* What each nl_bounds_noise is, in a few words, for reports. */
+const char *nl_bounds_noise_text(int noise);
+typedef struct {
+  double length, rate;
+  int shader, axis;
+  int noise, hash24;
+  int window, two_sided, sigma_rms, gamma_no_dc, bin_edge, radians;
+} nl_bounds_reading;
+/* The bandwidth of x under rd's estimator (nl_bounds_bandwidth_1d when all
+ * its estimator fields are 0); f_inf_rms uses the same Gamma. */
+nl_status nl_bounds_bandwidth_reading(const double *x, size_t n, const nl_bounds_reading *rd, double T,
+                                      nl_bounds_bandwidth *bw, nl_error *err);
+/* A3's family of readings, each base with one choice changed (base itself
+ * first, in this order; the last, simplex06_rms, changes two: simplex
+ * noise with r2 0.6 and sigma = RMS): fills at most max of out and name (a short label)
+ * and returns how many there are. */
+enum {
+  NL_BOUNDS_A3_BASE, NL_BOUNDS_A3_IMPROVED_CUBIC, NL_BOUNDS_A3_CLASSIC, NL_BOUNDS_A3_LINE1_CUBIC,
+  NL_BOUNDS_A3_LINE1_QUINTIC, NL_BOUNDS_A3_GPU8, NL_BOUNDS_A3_CLASSIC_GPU8, NL_BOUNDS_A3_HASH24,
+  NL_BOUNDS_A3_HANN, NL_BOUNDS_A3_TWO_SIDED, NL_BOUNDS_A3_SIGMA_RMS, NL_BOUNDS_A3_SIGMA_RMS_NO_DC,
+  NL_BOUNDS_A3_BIN_EDGE, NL_BOUNDS_A3_RAW, NL_BOUNDS_A3_RADIANS, NL_BOUNDS_A3_SIMPLEX06,
+  NL_BOUNDS_A3_SIMPLEX05, NL_BOUNDS_A3_SIMPLEX2, NL_BOUNDS_A3_SIMPLEX06_RMS, NL_BOUNDS_A3_COUNT
+};
+int nl_bounds_a3_readings(const nl_bounds_reading *base, nl_bounds_reading *out, const char **name, int max);
 /* One sample of signal s under a reading, line from seed (caller frees). */
 double *nl_bounds_reading_sample(const nl_noise_perm3 *p, int s, const nl_bounds_reading *rd,
                                  unsigned long seed, size_t *n);

@@ -3,6 +3,7 @@
 
 #include <gsl/gsl_rng.h>
 #include <stdlib.h>
+#include <string.h>
 
 static void random_point(gsl_rng *r, double *xyz)
 {
@@ -155,7 +156,7 @@ NL_TEST(smoke_render_pair_and_lines)
   double *x = nl_bounds_line_sample(&p, &o, &l3, 8.0, 4.0, &n);
   NL_CHECK(n == 32);
   free(x);
-  nl_bounds_reading rd = {16, 8, 1, 0};
+  nl_bounds_reading rd = {.length = 16, .rate = 8, .shader = 1};
   double m[NL_BOUNDS_NSIGNALS][7];
   NL_CHECK(nl_bounds_bandwidth_seeds(&rd, 1, 2, m, NULL) == NL_OK);
   NL_CHECK(m[0][2] > 0 && m[0][3] >= 0 && m[2][2] >= m[0][2]);
@@ -192,6 +193,41 @@ NL_TEST(psd_and_bandwidth)
   NL_CHECK(nl_bounds_bandwidth_1d(x, n, rate, 0.0, &bw, NULL) == NL_EINVAL);
   gsl_rng_free(r);
   free(x);
+}
+
+/* A3's readings of the estimator on the sinusoid at bin 37, and of the
+ * sample: all 0 is nl_bounds_bandwidth_1d bit for bit; radians scale by
+ * 2 pi, bin edges shift by half a bin; the paper's RGB8 import moves a
+ * value by at most one step of its top and middle bytes (1/256 + 1/65536). */
+NL_TEST(bandwidth_readings)
+{
+  size_t n = 1024;
+  double rate = 8.0, x[1024];
+  for (size_t k = 0; k < n; k++) x[k] = 0.25 + 0.5 * sin(NL_TWO_PI * 37.0 * k / n);
+  nl_bounds_reading base = {.length = 128, .rate = rate, .shader = 1}, fam[NL_BOUNDS_A3_COUNT];
+  const char *name[NL_BOUNDS_A3_COUNT];
+  NL_CHECK(nl_bounds_a3_readings(&base, fam, name, NL_BOUNDS_A3_COUNT) == NL_BOUNDS_A3_COUNT);
+  NL_CHECK(memcmp(&fam[0], &base, sizeof base) == 0);
+  nl_bounds_bandwidth a, b;
+  NL_CHECK(nl_bounds_bandwidth_1d(x, n, rate, NL_BOUNDS_T, &a, NULL) == NL_OK);
+  NL_CHECK(nl_bounds_bandwidth_reading(x, n, &fam[0], NL_BOUNDS_T, &b, NULL) == NL_OK);
+  NL_CHECK(memcmp(&a, &b, sizeof a) == 0);
+  NL_CHECK(nl_bounds_bandwidth_reading(x, n, &fam[NL_BOUNDS_A3_RADIANS], NL_BOUNDS_T, &b, NULL) == NL_OK);
+  NL_CHECK_NEAR(b.f_sup, NL_TWO_PI * a.f_sup, 1e-12);
+  NL_CHECK(nl_bounds_bandwidth_reading(x, n, &fam[NL_BOUNDS_A3_BIN_EDGE], NL_BOUNDS_T, &b, NULL) == NL_OK);
+  NL_CHECK_NEAR(b.f_sup, a.f_sup - 0.5 * rate / n, 1e-12);
+  NL_CHECK(nl_bounds_bandwidth_reading(x, n, &fam[NL_BOUNDS_A3_SIGMA_RMS_NO_DC], NL_BOUNDS_T, &b, NULL) == NL_OK);
+  NL_CHECK(b.f_inf == 0.0 && b.f_sup == a.f_sup);
+  nl_noise_perm3 p;
+  nl_noise_perm3_seed(&p, 3);
+  size_t m1, m2;
+  double *u = nl_bounds_reading_sample(&p, 0, &base, 3, &m1);
+  double *h = nl_bounds_reading_sample(&p, 0, &fam[NL_BOUNDS_A3_HASH24], 3, &m2);
+  double worst = 0.0;
+  for (size_t k = 0; k < m1; k++) worst = fmax(worst, fabs(u[k] - h[k]));
+  NL_CHECK(m1 == m2 && worst > 0.0 && worst <= 1.0 / 256 + 1.0 / 65536 + 0x1p-23);   /* top, middle byte, truncation */
+  free(u);
+  free(h);
 }
 
 int main(void) { return nl_test_run(); }

@@ -102,3 +102,18 @@ nl_status nl_spectrum_psd1(const double *x, size_t n, double rate, double *f, do
   free(d);
   return NL_OK;
 }
+
+nl_status nl_spectrum_psd1_window(const double *x, size_t n, double rate, int window, double *f, double *P,
+                                  nl_error *err)
+{
+  if (window == NL_SPECTRUM_RECT) return nl_spectrum_psd1(x, n, rate, f, P, err);
+  if (window != NL_SPECTRUM_HANN) return nl_fail(err, NL_EINVAL, "psd1: unknown window %d", window);
+  if (n < 2) return nl_fail(err, NL_EINVAL, "psd1: need n >= 2 and rate > 0");
+  double *w = nl_xmalloc(n * sizeof *w), pi2 = 2.0 * acos(-1.0);
+  for (size_t j = 0; j < n; j++) w[j] = x[j] * 0.5 * (1.0 - cos(pi2 * (double)j / (double)n));
+  nl_status rc = nl_spectrum_psd1(w, n, rate, f, P, err);
+  free(w);
+  if (!rc)   /* the periodic Hann window's mean square is exactly 3/8 */
+    for (size_t k = 0; k < n / 2 + 1; k++) P[k] /= 0.375;
+  return rc;
+}

@@ -19,6 +19,13 @@
  *       (GSL's real mixed-radix FFT): f[k] = k rate / n cycles per unit and
  *       P[k] = |X_k|^2 / n^2, doubled for 0 < k < n/2 (folded to one side),
  *       k = 0..n/2, so that sum P = mean(x^2) (Parseval, Arnerin eq. 4.4).
+ *   nl_spectrum_psd1_window(x, n, rate, window, f, P, err)
+ *       the same with the samples multiplied by a window first:
+ *       NL_SPECTRUM_RECT (none: nl_spectrum_psd1's bits) or NL_SPECTRUM_HANN
+ *       (periodic Hann, w_j = (1 - cos(2 pi j / n)) / 2), divided by mean(w^2)
+ *       = 3/8 so that sum P is still mean(x^2) for a stationary signal; the
+ *       window trades the rectangular window's leakage (a tail ~ f^-2 from
+ *       the jump between the ends) for a main lobe three bins wide.
  */
 #ifndef NL_SPECTRUM_H
 #define NL_SPECTRUM_H
@@ -34,5 +41,9 @@ double nl_spectrum_freq(int u, int n);
 /* f and P hold n/2 + 1 values. n >= 2, rate > 0; NL_EINVAL otherwise, NL_ENUM
  * if GSL's transform fails. */
 nl_status nl_spectrum_psd1(const double *x, size_t n, double rate, double *f, double *P, nl_error *err);
+enum { NL_SPECTRUM_RECT = 0, NL_SPECTRUM_HANN = 1 };
+/* NL_EINVAL also for an unknown window. */
+nl_status nl_spectrum_psd1_window(const double *x, size_t n, double rate, int window, double *f, double *P,
+                                  nl_error *err);
 
 #endif

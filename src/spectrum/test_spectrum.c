@@ -39,3 +39,21 @@ NL_TEST(cosine_lands_in_its_bin)
 }
 
 int main(void) { return nl_test_run(); }
+
+NL_TEST(psd1_hann_window)
+{
+  /* Rectangular = psd1 bit for bit; Hann keeps the power of a sine that
+   * falls on a bin (3/8 normalisation) in its three-bin main lobe, and
+   * unknown windows are refused. */
+  enum { N = 256 };
+  double x[N], f[N / 2 + 1], P[N / 2 + 1], f2[N / 2 + 1], P2[N / 2 + 1];
+  for (int j = 0; j < N; j++) x[j] = 0.3 + sin(2 * M_PI * 10.0 * j / N) + 0.01 * ((j * 37) % 11);
+  NL_CHECK(nl_spectrum_psd1(x, N, 8.0, f, P, NULL) == NL_OK);
+  NL_CHECK(nl_spectrum_psd1_window(x, N, 8.0, NL_SPECTRUM_RECT, f2, P2, NULL) == NL_OK);
+  NL_CHECK(memcmp(P, P2, sizeof P) == 0 && memcmp(f, f2, sizeof f) == 0);
+  for (int j = 0; j < N; j++) x[j] = sin(2 * M_PI * 10.0 * j / N);
+  NL_CHECK(nl_spectrum_psd1_window(x, N, 8.0, NL_SPECTRUM_HANN, f2, P2, NULL) == NL_OK);
+  NL_CHECK_NEAR(P2[9] + P2[10] + P2[11], 0.5, 1e-12);
+  NL_CHECK_NEAR(P2[10] / (P2[9] + P2[10] + P2[11]), 2.0 / 3.0, 1e-12);
+  NL_CHECK(nl_spectrum_psd1_window(x, N, 8.0, 7, f2, P2, NULL) == NL_EINVAL);
+}
