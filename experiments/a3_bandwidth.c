@@ -105,7 +105,12 @@ int main(int argc, char **argv)
   char list[2048];
   nl_study_a3_list(hy, 0, "f_sup", list, sizeof list);
   nl_harness_text(r, "First-octave F_sup by reading (names as in hypotheses.tsv): %s.\n", list);
-  nl_harness_report_table(r, hy, "Readings of the method: mean and sd over seeds, z = distance of the paper's value in sd", 5);
+  nl_harness_report_columns(r, hy, "hypotheses.tsv", "hypothesis,signal,f_inf,f_sup,f_sup_sd,paper_f_inf,paper_f_sup,z_inf,z_sup,within",
+                            "Readings of the method: mean and sd over seeds, z = distance of the paper's value in sd", 5);
+  char rule_inf[64];   /* F_inf is a bin: within a quarter bin reproduced, within one bin partly */
+  snprintf(rule_inf, sizeof rule_inf, "abs %g %g", 0.25 / rd.length, 1.0 / rd.length);
+  nl_harness_verdict_rows(r, "bandwidth.tsv", t, "F_inf", "signal", "paper_f_inf", "f_inf", NULL, rule_inf, fname[win]);
+  nl_harness_verdict_rows(r, "bandwidth.tsv", t, "F_sup", "signal", "paper_f_sup", "f_sup", "f_sup_sd", "sd 2 4", fname[win]);
   nl_harness_figure(r, "hypotheses.png", "F_sup of each reading (mean +- 2 sd over seeds) against Table 5.2");
   nl_harness_figure(r, "psd.png", "Fig. 5.5: PSD and Gamma(lambda) of the octaves and their sum (base reading, first seed)");
   nl_harness_report_table(r, sw, "Sensitivity: mean F_inf, F_sup over 3 seeds when one choice changes", 5);
@@ -128,11 +133,7 @@ int main(int argc, char **argv)
                   paper[1][1] / paper[0][1], hv(hy, 0, 0, "f_inf"), fname[0], hv(hy, NL_BOUNDS_A3_SIGMA_RMS, 0, "f_inf"),
                   hv(hy, NL_BOUNDS_A3_SIGMA_RMS, 0, "f_inf") * rd.length, hv(hy, 0, 0, "f_sup"),
                   hv(hy, NL_BOUNDS_A3_RAW, 0, "f_sup"), pow(hv(hy, NL_BOUNDS_A3_RAW, 0, "sigma") / hv(hy, 0, 0, "sigma"), 2));
-  nl_table_free(t);
-  nl_table_free(sw);
-  nl_table_free(sh);
-  nl_table_free(pt);
-  nl_table_free(hy);
+  nl_table_free(t); nl_table_free(sw); nl_table_free(sh); nl_table_free(pt); nl_table_free(hy);
   nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);
 }
