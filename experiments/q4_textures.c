@@ -91,7 +91,7 @@ int main(int argc, char **argv)
   tex[3] = texture(&q, CLOUD, "sky", "F1F2 + F2F3", NULL, 0, 1);
   tex[4] = texture(&q, CLOUD, "sky", "F1", NULL, 0, 1);
   tex[5] = texture(&q, FLAME, "flame", "F1", &fr, 0.2, 1.0);
-  /* Wood: Ebert et al.'s solid wood (nl_texture_wood): the table a plank whose axis runs along x, tilted into
+  /* Wood: the usual solid wood shader (nl_texture_wood): the table a plank whose axis runs along x, tilted into
    * the board; the trunk cut across its axis. Dark bands counted across the rings (middle column, row). */
   nl_texture_wood wd[2] = {{.axis_p = {1.0, 1.0, 0.25}, .axis_d = {1.0, 0.08, 0.15}, .ring_freq = rings, .turb = turb},
                            {.axis_p = {0.9, 1.1, 0.0}, .axis_d = {0.0, 0.0, 1.0}, .ring_freq = rings, .turb = turb}};
@@ -106,7 +106,7 @@ int main(int argc, char **argv)
     nl_image_free(tex[1 + i]), tex[1 + i] = nl_image_convert(wim[2 * i + 1], 3);
   }
   const char *wl[4] = {"table: ramp", "table: rings", "trunk: ramp", "trunk: rings"};
-  nl_study_montage(q.r, (const nl_image *const *)wim, wl, 4, 4, "Wood: GCTBF through a ramp, and through Ebert's wood shader", "wood.png");
+  nl_study_montage(q.r, (const nl_image *const *)wim, wl, 4, 4, "Wood: GCTBF through a ramp, and through a wood shader", "wood.png");
   nl_study_montage(q.r, (const nl_image *const *)tex, tlabels, 6, 3, "Fig. 6: GCTBF textures", "textures.png");
   nl_harness_write_table(q.r, q.t, "textures.tsv");
   nl_harness_write_table(q.r, wt, "wood.tsv");
@@ -123,10 +123,10 @@ int main(int argc, char **argv)
                        "13-knot spline of sec. 4.1; the wood ramp alternative maps [0, 0.25] (the range of F - F^2 for F <= 1) "
                        "linearly from light to dark brown; flame maps the fractal sum of F1 over [0.2, 1] through a "
                        "black-red-orange-yellow-white spline.\n\n**Wood:** the paper names only the basis inside a RenderMan "
-                       "wood shader it does not print. We read it as the solid wood of Ebert et al. (Texturing & Modeling) "
-                       "that it cites: rings u = frac(%g r + %g GCTBF) of the distance r to a tree axis, light to dark wood by "
-                       "Peachey's ring profile (table: an axis along x tilted into the board; trunk: cut across its axis). The "
-                       "basis moves the rings by %.2f (table) and %.2f (trunk) rings (sd); across the middle line "
+                       "wood shader it does not print (it cites Ebert et al., Texturing & Modeling). We read it as the usual solid "
+                       "wood: rings u = frac(%g r + %g GCTBF) of the distance r to a tree axis, light to dark wood by the ring "
+                       "profile of the RenderMan Companion's wood (table: an axis along x tilted into the board; trunk: cut "
+                       "across its axis). The basis moves the rings by %.2f (table) and %.2f (trunk) rings (sd); across the middle line "
                        "the shader shows %.1f and %.1f dark bands (the axis geometry alone %g and %g), the ramp reading "
                        "%.1f and %.1f (mean over seeds; table below). Beside real wood (first seed, wood.png): the trunk "
                        "shows concentric rings with a sharp dark late-wood edge, but faceted, kinked at the cell borders "
@@ -140,7 +140,7 @@ int main(int argc, char **argv)
   nl_harness_report_table(q.r, q.t, "Value statistics before colour mapping (mean over seeds)", 4);
   nl_harness_figure(q.r, "clouds.png", "Fig. 5: eq. 7 clouds, Perlin and five GCTBF combinations");
   nl_harness_report_table(q.r, wt, "Wood: basis sd, ring displacement (rings, sd), ring-profile sd, dark bands across the middle line (mean, sd over seeds; without the basis; the ramp reading)", 3);
-  nl_harness_figure(q.r, "textures.png", "Fig. 6: marble, wood (Ebert's wood shader on the GCTBF), sky and flame");
+  nl_harness_figure(q.r, "textures.png", "Fig. 6: marble, wood (a wood shader on the GCTBF), sky and flame");
   nl_harness_figure(q.r, "wood.png", "Wood, table (F1 - F1F1) and trunk (F3 - F3F3): the ramp reading beside the wood shader");
   for (int k = 0; k < 6; k++) { nl_image_free(clouds[k]); nl_image_free(tex[k]); }
   for (int k = 0; k < 4; k++) nl_image_free(wim[k]);

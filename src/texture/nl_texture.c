@@ -144,7 +144,7 @@ double nl_texture_wood_ring(const nl_texture_wood *w, const double p[3], double 
 {
   double u = w->ring_freq * nl_texture_wood_radius(w, p) + w->turb * g;
   u -= floor(u);
-  /* Peachey's ring profile: dark wood builds up over the ring, ends sharply */
+  /* the RenderMan Companion's ring profile: dark wood builds up over the ring, ends sharply */
   return smoothstep(0.0, 0.8, u) - smoothstep(0.83, 1.0, u);
 }
 
