@@ -13,4 +13,19 @@ set -euo pipefail
 "$2" "$3/leakage.tsv" 'rows>=6' 'inside>0.15'
 awk -F'\t' 'NR <= 3' "$3/leakage.tsv" > "$3/leakage_fine.tsv"   # bands 0 and 1
 "$2" "$3/leakage_fine.tsv" 'rows=2' 'inside>0.75'
+# Readings of the 3D variance against 0.210 (12 rows). Measured at --quick
+# (period 32, seeds 1..3): the volume-like readings (ours, mean subtracted,
+# random points, transposed copy, doubled period) 0.194-0.198, all within
+# 0.005 of the volume reading (bound 0.01, ~3x their sd); the plane z = 0
+# reads 0.223 (above 0.210 and above the volume by 0.026; bound: above by
+# > 0.01), the plane z = 1/2 0.170 (below the volume by 0.027; bound 0.01).
+. "$(dirname "$0")/tsv.sh"
+"$2" "$3/variance_readings.tsv" 'rows=12' 'paper==0.21' 'var3d>0.1' 'var3d<0.3'
+tsv_awk 'FNR > 1 {val[FNR - 2] = n("var3d")}
+  END {
+    for (i = 1; i <= 11; i++) if (i == 1 || i == 2 || i == 8 || i == 11)
+      if (val[i] - val[0] > 0.01 || val[0] - val[i] > 0.01) {printf "volume-like reading %d: %.4f vs volume %.4f\n", i, val[i], val[0]; exit 1}
+    if (!(val[4] > val[0] + 0.01 && val[5] < val[0] - 0.01)) {printf "planes z=0 %.4f, z=1/2 %.4f vs volume %.4f\n", val[4], val[5], val[0]; exit 1}
+  }' "$3/variance_readings.tsv"
+grep -q 'Within 2 sd over seeds of 0.210: [0-9]' "$3/report.md"
 test -s "$3/report.md" && test -s "$3/manifest.tsv"

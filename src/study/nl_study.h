@@ -18,6 +18,7 @@
 #include "noise/nl_noise.h"
 #include "harness/nl_harness.h"
 #include "table/nl_table.h"
+#include "texture/nl_texture.h"
 
 /* ---- surveys: what a sum of octaves looks like, over seeds -------------
  *
@@ -112,5 +113,84 @@ void nl_study_mean_sd(const double *v, int n, double *m, double *sd);
  * many of those rows have pcol < alpha: "rejected on k of n seeds". */
 double nl_study_mean_where(const nl_table *t, const char *key, const char *value, const char *col,
                            const char *pcol, double alpha, int *below);
+
+/* ---- L4: frequency-based editing (Lagae et al. 2010 Fig. 10c, d) --------
+ *
+ * nl_study_edit_replicate analyses an exemplar with ([0]) and without ([1])
+ * histogram matching, synthesises (seed) the original, the edit (the nfine
+ * finest bands' weights times factor, nl_byexample_attenuate) and the removal
+ * (factor 0), and records per eq. 13 band k the luminance band power of the
+ * original, the ratios edited / original and removed / original (the floor:
+ * power of the other bands that eq. 13 counts in band k), the share of a
+ * single band k of the same 2D wavelet noise that falls in the nfine finest
+ * bands (nl_byexample_band_leakage), and the KS distances per channel of the
+ * 2D synthesis to a slice z = 0 of the solid synthesis and to the exemplar.
+ * nl_study_edit_tables summarises K replicates (mean and sd over seeds):
+ *   returned  band, power_b, ratio(_sd), ratio_nohist(_sd), floor(_nohist),
+ *             predicted(_nohist) = floor + factor^2 (1 - floor), leak_fine,
+ *             expected (factor^2 on edited bands, else 1);
+ *   solid     channel, ks_2d_vs_slice(_sd), ks_2d_vs_exemplar(_sd);
+ *   summary   one row: ranges over the edited bands of the mean
+ *             ratio and floor (both histogram settings), the largest sd of
+ *             a ratio, the largest per-seed |ratio - predicted|, the power of
+ *             the unedited bands over that of the edited ones (no histogram
+ *             matching), the aggregate floor of the edited bands, the same
+ *             estimated from the leakage shares (sum_k P_k leak_k / sum_j P_j),
+ *             and the largest band power over the finest band's. */
+typedef struct {
+  int nbands;
+  double power[2][NL_WAVELET_MAX_BANDS], ratio[2][NL_WAVELET_MAX_BANDS], floor[2][NL_WAVELET_MAX_BANDS];
+  double leak[NL_WAVELET_MAX_BANDS];
+  double ks_slice[3], ks_exemplar[3];
+} nl_study_edit;
+nl_status nl_study_edit_replicate(const nl_image *ex, int nfine, double factor, unsigned long seed,
+                                  nl_study_edit *out, nl_error *err);
+nl_table *nl_study_edit_tables(const nl_study_edit *rep, int K, int nfine, double factor, nl_table **solid,
+                               nl_table **summary);
+
+/* ---- L1: readings of the 3D band variance ------------------------------
+ *
+ * Tiles of period n (3D) seeded seed0 .. (nl_seed_replicate, K seeds); per
+ * seed, sigma_N^2 read in the ways the literature's constants could have been
+ * measured (the volume mean; mean subtracted; random points; one plane at a
+ * random, an integer and a half-integer z; the lattice and the half-integer
+ * lattice; the appendix's transposed odd-shift copy, as a volume and at
+ * z = 0; Cook & DeRose's multiband sum of 4 bands from one tile without
+ * offsets over the sum of weights squared, at z = 0; random points of a tile
+ * of period 2n, at most 256). Columns: reading,
+ * var3d (mean over seeds), var3d_sd, paper, gap (var3d / paper - 1),
+ * gap_in_sd ((var3d - paper) / var3d_sd). NULL for a bad period. */
+nl_table *nl_study_variance_readings(int n, int K, unsigned long seed0, double paper);
+/* The readings whose |gap_in_sd| <= nsd, as "reading (var +- sd); ..." in
+ * buf (size bytes, truncated at a whole reading); returns how many. */
+int nl_study_readings_within(const nl_table *t, double nsd, char *buf, size_t size);
+/* Smallest and largest 100 * gap over the given rows (percent). */
+void nl_study_readings_gap_range(const nl_table *t, const size_t *rows, int n, double *lo, double *hi);
+/* L1's leakage table from K seeds' nb x nb shares (nl_byexample_band_leakage,
+ * share[(s nb + k) nb + j]: band k's power in eq. 13 band j): band, below
+ * (mean share in coarser bands), inside (mean), inside_sd, above (finer). */
+nl_table *nl_study_leakage_table(const double *share, int K, int nb);
+
+/* ---- Q4: wood (Qin & Yang 2000 Fig. 6) -----------------------------------
+ *
+ * The GCTBF expr (one octave, scale k, on win; nl_cellular_texture_grid) for
+ * K seeds from seed0, through the wood shader wd (nl_texture_wood) and through
+ * the ramp (values lo..hi). Dark bands are counted (nl_texture_band_count)
+ * along row (vertical 0) or column `index` of each image. Images of the first
+ * seed in *rings and *ramped (caller frees); one row appended to table. */
+typedef struct {
+  double value_sd;                  /* sd of the basis over the panel (mean over seeds) */
+  double ring_sd;                   /* sd of the shader's ring profile t */
+  double rings, rings_sd;           /* dark bands of the wood shader, mean and sd over seeds */
+  double ramp_bands, ramp_bands_sd; /* dark bands of the ramp reading */
+  double rings_geometry;            /* dark bands of the shader without the basis (turb * g = 0) */
+} nl_study_wood_result;
+/* The table nl_study_wood appends to: panel, gctbf, value_sd,
+ * perturb_rings_sd (turb * value_sd: how far the basis moves the rings),
+ * ring_sd, rings, rings_sd, rings_geometry, ramp_bands, ramp_bands_sd. */
+nl_table *nl_study_wood_table(void);
+nl_status nl_study_wood(nl_table *table, const char *panel, const char *expr, double k, const nl_noise_window *win,
+                        const nl_texture_wood *wd, const nl_texture_ramp *ramp, double lo, double hi, int vertical,
+                        int index, unsigned long seed0, int K, nl_image **rings, nl_image **ramped, nl_error *err);
 
 #endif

@@ -1,6 +1,7 @@
 #include "texture/nl_texture.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 nl_texture_ramp nl_texture_ramp_linear(int n, const double *pos, const float (*rgb)[3])
@@ -118,4 +119,72 @@ nl_image *nl_texture_cloud_colour(const double *v, int w, int h)
     for (int a = 0; a < 3; a++) im->data[3 * k + a] = (1.0f - t) * sky[a] + t * cloud[a];
   }
   return im;
+}
+
+/* ---- wood ------------------------------------------------------------ */
+
+static double smoothstep(double a, double b, double x)
+{
+  double t = (x - a) / (b - a);
+  t = t < 0 ? 0 : t > 1 ? 1 : t;
+  return t * t * (3 - 2 * t);
+}
+
+double nl_texture_wood_radius(const nl_texture_wood *w, const double p[3])
+{
+  double d[3], n = 0, along = 0, r2 = 0;
+  for (int a = 0; a < 3; a++) n += w->axis_d[a] * w->axis_d[a];
+  n = sqrt(n);
+  for (int a = 0; a < 3; a++) { d[a] = p[a] - w->axis_p[a]; along += d[a] * w->axis_d[a] / n; }
+  for (int a = 0; a < 3; a++) { double e = d[a] - along * w->axis_d[a] / n; r2 += e * e; }
+  return sqrt(r2);
+}
+
+double nl_texture_wood_ring(const nl_texture_wood *w, const double p[3], double g)
+{
+  double u = w->ring_freq * nl_texture_wood_radius(w, p) + w->turb * g;
+  u -= floor(u);
+  /* the RenderMan Companion's ring profile: dark wood builds up over the ring, ends sharply */
+  return smoothstep(0.0, 0.8, u) - smoothstep(0.83, 1.0, u);
+}
+
+void nl_texture_wood_grid(const nl_texture_wood *w, const nl_noise_window *win, const double *g, double *t)
+{
+  double dx = win->size / win->w, dy = win->size / win->h;
+  for (int j = 0; j < win->h; j++)
+    for (int i = 0; i < win->w; i++) {
+      double p[3] = {win->x0 + (i + 0.5) * dx, win->y0 + (j + 0.5) * dy, win->z};
+      size_t k = (size_t)j * win->w + i;
+      t[k] = nl_texture_wood_ring(w, p, g ? g[k] : 0.0);
+    }
+}
+
+nl_image *nl_texture_wood_image(const nl_texture_wood *w, const double *t, int width, int height)
+{
+  nl_image *im = nl_image_alloc(width, height, 3);
+  for (size_t k = 0; k < (size_t)width * height; k++)
+    for (int c = 0; c < 3; c++) im->data[3 * k + c] = (float)(w->light[c] + t[k] * (w->dark[c] - w->light[c]));
+  return im;
+}
+
+int nl_texture_band_count(const nl_image *im, int vertical, int index)
+{
+  int len = vertical ? im->height : im->width;
+  double *l = nl_xmalloc((size_t)len * sizeof *l), lo = INFINITY, hi = -INFINITY, mean = 0;
+  for (int i = 0; i < len; i++) {
+    size_t k = vertical ? (size_t)i * im->width + index : (size_t)index * im->width + i;
+    const float *px = im->data + (size_t)im->channels * k;
+    l[i] = im->channels >= 3 ? 0.2126 * px[0] + 0.7152 * px[1] + 0.0722 * px[2] : px[0];
+    lo = fmin(lo, l[i]); hi = fmax(hi, l[i]); mean += l[i] / len;
+  }
+  /* dark bands: down-crossings of the line's mean, with a hysteresis of a
+   * tenth of its range so that pixel noise does not count twice */
+  double h = 0.1 * (hi - lo);
+  int state = 0, count = 0;   /* 0 unknown, 1 above, -1 below */
+  for (int i = 0; i < len; i++) {
+    if (l[i] > mean + h) state = 1;
+    else if (l[i] < mean - h) { if (state == 1) count++; state = -1; }
+  }
+  free(l);
+  return count;
 }

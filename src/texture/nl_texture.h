@@ -58,4 +58,33 @@ nl_texture_ramp nl_texture_ramp_cellular_marble(void);
 /* RGB image of eq. 7's mix(skycolor, cloudcolor, smoothstep(0, 1, v)). */
 nl_image *nl_texture_cloud_colour(const double *v, int w, int h);
 
+/* ---- wood: the solid wood shader of the literature Qin & Yang cite ------
+ * Qin & Yang (sec. 4.3, Fig. 6) name only the basis of their RenderMan wood
+ * (F1 - F1F1 on the table, F3 - F3F3 on the trunk) and refer to Ebert et al.,
+ * "Texturing & Modeling" (1998) for procedural texturing. We read it as the
+ * usual solid wood of that literature: rings around a tree axis displaced by
+ * the basis, u = frac(ring_freq r + turb g), and the RenderMan wood shader's
+ * ring profile and colour mix (Upstill, "The RenderMan Companion", 1990,
+ * listing 16.15, whose rings are r += |noise(r)|; frac(r)):
+ *   r    = distance from the point p to the tree's axis (axis_p + s axis_d)
+ *   u    = frac(ring_freq * r + turb * g)          g: the basis at p
+ *   t    = smoothstep(0, 0.8, u) - smoothstep(0.83, 1, u)
+ *   rgb  = mix(light, dark, t)
+ * t rises slowly over a ring (early to late wood) and falls sharply at its
+ * end. */
+typedef struct {
+  double axis_p[3], axis_d[3];   /* a point of the axis and its direction (any length > 0) */
+  double ring_freq, turb;        /* rings per unit of r; basis amplitude in rings */
+  float light[3], dark[3];
+} nl_texture_wood;
+double nl_texture_wood_radius(const nl_texture_wood *w, const double p[3]);
+double nl_texture_wood_ring(const nl_texture_wood *w, const double p[3], double g);
+/* t of every pixel centre of win (as nl_noise_window), g the basis there (NULL: 0). */
+void nl_texture_wood_grid(const nl_texture_wood *w, const nl_noise_window *win, const double *g, double *t);
+nl_image *nl_texture_wood_image(const nl_texture_wood *w, const double *t, int width, int height);
+/* Dark bands crossed along row `index` (vertical 0) or column `index`
+ * (vertical 1) of an image: down-crossings of the line's mean luminance
+ * (Rec. 709), with a hysteresis of a tenth of its range. */
+int nl_texture_band_count(const nl_image *im, int vertical, int index);
+
 #endif

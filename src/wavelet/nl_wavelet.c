@@ -77,7 +77,10 @@ static void coarse_axis(float *a, int n, int dim, int axis)
   free(c);
 }
 
-void nl_wavelet_tile_seed(nl_wavelet_tile *t, unsigned long seed)
+/* Steps 1-4; `transposed` copies the appendix's odd-shift loop literally
+ * (temp[ix n^2 + iy n + iz] = noise[(ix+o) + (iy+o) n + (iz+o) n^2]: the copy
+ * is the shifted tile with x and z exchanged). */
+static void tile_seed(nl_wavelet_tile *t, unsigned long seed, int transposed)
 {
   int n = t->n, d = t->dim;
   size_t total = (size_t)n * n * (d == 3 ? (size_t)n : 1);
@@ -98,6 +101,7 @@ void nl_wavelet_tile_seed(nl_wavelet_tile *t, unsigned long seed)
   float *shifted = coarse;
   for (size_t i = 0; i < total; i++) {
     long x = (long)(i % n), y = (long)((i / n) % n), z = d == 3 ? (long)(i / ((size_t)n * n)) : 0;
+    if (transposed) { long tmp = x; x = d == 3 ? z : y; if (d == 3) z = tmp; else y = tmp; }
     size_t j = (size_t)wrap(x + off, n) + (size_t)wrap(y + off, n) * n
              + (d == 3 ? (size_t)wrap(z + off, n) * n * n : 0);
     shifted[i] = t->data[j];
@@ -105,6 +109,9 @@ void nl_wavelet_tile_seed(nl_wavelet_tile *t, unsigned long seed)
   for (size_t i = 0; i < total; i++) t->data[i] += shifted[i];
   free(coarse);
 }
+
+void nl_wavelet_tile_seed(nl_wavelet_tile *t, unsigned long seed) { tile_seed(t, seed, 0); }
+void nl_wavelet_tile_seed_transposed(nl_wavelet_tile *t, unsigned long seed) { tile_seed(t, seed, 1); }
 
 /* Quadratic B-spline weights and first lattice index along one axis. */
 static long bspline(double p, double w[3])
@@ -196,6 +203,53 @@ double nl_wavelet_tile_variance(const nl_wavelet_tile *t, int per_unit)
     }
   free(row);
   return sum / ((double)m * m * planes);
+}
+
+double nl_wavelet_slice_variance(const nl_wavelet_tile *t, double z, int per_unit, double *mean)
+{
+  int m = t->n * per_unit;
+  double d = 1.0 / per_unit, sum = 0, s1 = 0;
+  double *row = nl_xmalloc((size_t)m * sizeof *row);
+  for (int iy = 0; iy < m; iy++) {
+    memset(row, 0, (size_t)m * sizeof *row);
+    nl_wavelet_row(t, 0.5 * d, d, (iy + 0.5) * d, z, (size_t)m, 1.0, row);
+    for (int ix = 0; ix < m; ix++) { sum += row[ix] * row[ix]; s1 += row[ix]; }
+  }
+  free(row);
+  if (mean) *mean = s1 / ((double)m * m);
+  return sum / ((double)m * m);
+}
+
+double nl_wavelet_point_variance(const nl_wavelet_tile *t, size_t count, unsigned long seed)
+{
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, nl_seed_stream(seed, "wavelet.points", 0));
+  double sum = 0;
+  for (size_t k = 0; k < count; k++) {
+    double x = t->n * gsl_rng_uniform(rng), y = t->n * gsl_rng_uniform(rng), z = t->n * gsl_rng_uniform(rng);
+    double v = eval_point(t, x, y, t->dim == 3 ? z : 0);
+    sum += v * v;
+  }
+  gsl_rng_free(rng);
+  return sum / (double)count;
+}
+
+double nl_wavelet_multiband_variance(const nl_wavelet_tile *t, int nbands, double z, int per_unit)
+{
+  /* Cook & DeRose's WMultibandNoise with w = 1: sum_b N(2^-b p), one tile, no offsets. */
+  int m = t->n * per_unit;
+  double d = 1.0 / per_unit, sum = 0;
+  double *row = nl_xmalloc((size_t)m * sizeof *row);
+  for (int iy = 0; iy < m; iy++) {
+    memset(row, 0, (size_t)m * sizeof *row);
+    for (int b = 0; b < nbands; b++) {
+      double s = ldexp(1.0, -b);
+      nl_wavelet_row(t, 0.5 * d * s, d * s, (iy + 0.5) * d * s, z * s, (size_t)m, 1.0, row);
+    }
+    for (int ix = 0; ix < m; ix++) sum += row[ix] * row[ix];
+  }
+  free(row);
+  return sum / ((double)m * m * nbands);
 }
 
 double nl_wavelet_lattice_variance(const nl_wavelet_tile *t, double frac)

@@ -66,6 +66,9 @@ nl_wavelet_tile *nl_wavelet_tile_alloc(int dim, int n);
 void nl_wavelet_tile_free(nl_wavelet_tile *t);
 /* Steps 1-4 above; the same seed gives the same tile bit for bit. */
 void nl_wavelet_tile_seed(nl_wavelet_tile *t, unsigned long seed);
+/* The same with the appendix's odd-shift loop taken literally: the copy added
+ * in step 4 is shifted and transposed (x and z exchanged; x and y in 2D). */
+void nl_wavelet_tile_seed_transposed(nl_wavelet_tile *t, unsigned long seed);
 
 /* Steps 2-3 on one line of n values (stride apart): the coarse part, i.e.
  * upsample(downsample(line)), written to coarse (stride 1). Exposed for tests:
@@ -90,6 +93,18 @@ nl_noise_basis nl_wavelet_basis(const nl_wavelet_tile *t);
  * at half-integers), so per_unit must sample the cell: 4 is within 0.1% of
  * the continuous mean, 1 samples only half-integers and is ~35% low. */
 double nl_wavelet_tile_variance(const nl_wavelet_tile *t, int per_unit);
+/* Readings of sigma_N^2 other than the volume mean (L1 measures which one
+ * Cook & DeRose's 0.210 is):
+ *  slice      <N^2> on the plane z (3D; 2D tiles ignore z), per_unit samples
+ *             per unit on x and y over one period; *mean (if not NULL) gets <N>;
+ *  point      <N^2> at `count` uniform random points of the period (seed);
+ *  multiband  Cook & DeRose's WMultibandNoise with w_b = 1 and no per-band
+ *             offsets: <(sum_{b < nbands} N(2^-b p))^2> / nbands on the plane
+ *             z, p on the slice grid: the cross-band covariance of one tile
+ *             included. */
+double nl_wavelet_slice_variance(const nl_wavelet_tile *t, double z, int per_unit, double *mean);
+double nl_wavelet_point_variance(const nl_wavelet_tile *t, size_t count, unsigned long seed);
+double nl_wavelet_multiband_variance(const nl_wavelet_tile *t, int nbands, double z, int per_unit);
 /* <N^2> over the lattice shifted by frac on every axis: (i + frac, j + frac). */
 double nl_wavelet_lattice_variance(const nl_wavelet_tile *t, double frac);
 
