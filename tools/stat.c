@@ -24,7 +24,9 @@ static const char *usage_text[] = {
   "  kuiper  Kuiper's test for circular data   " PROG " kuiper --help\n"
   "  chisq   Pearson chi-square on equal bins  " PROG " chisq --help\n"
   "  hclust  hierarchical clustering           " PROG " hclust --help\n"
-  "  gmm     Gaussian mixture by EM            " PROG " gmm --help\n",
+  "  gmm     Gaussian mixture by EM            " PROG " gmm --help\n"
+  "Options as --name VALUE or --name=VALUE; --format kv|tsv|json (default kv: key=value);\n"
+  "FILE may be CSV (detected from a first line with commas and no tab, or --csv).\n",
 };
 
 static const char *help_ks =
