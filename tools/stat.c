@@ -345,7 +345,6 @@ static void null_dist(const opts *o, nl_stats_dist *dist, nl_table **cdf_table, 
 
 static void run_ks(const opts *o, int kuiper)
 {
-  if (o->have_bins) die(o->sub, "--bins is for chisq");
   nl_table *t = read_table(o, o->files[0]);
   double *x = column(o, t, o->files[0]);
   nl_stats_dist dist;
