@@ -115,6 +115,8 @@ bad() {   # WANT_FRAGMENT ARGS...
 bad "manifest.tsv" "$ref" "$out/nonexistent"
 bad "wanted COMMITTED NEW" "$ref"
 bad "--frob: unknown option" --frob "$ref" "$out/same"
+bad "--all: takes no value" --all=1 "$ref" "$out/same"   # GNU-style options (nl_opt)
+bad "-x: unknown option" "$ref" "$out/same" -x
 copy badrule; printf 'dist.tsv\tcount\twelch\n' >>"$out/badrule/checks.tsv"
 bad "welch needs SDCOL ALPHA" "$out/badrule" "$ref"
 copy nocol; printf 'dist.tsv\tcount\twelch nosuch 1e-3\n' >>"$out/nocol/checks.tsv"

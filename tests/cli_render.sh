@@ -72,6 +72,18 @@ for e in png tif exr; do
   cmp "$out/same1.$e" "$out/same2.$e"
   rm -f "$out/same1.$e" "$out/same2.$e"
 done
+# GNU-style options (issue 18.5): --name=VALUE as --name VALUE, -oFILE, prefixes,
+# options after the noise or before it; unknown / missing / unwanted values refused.
+"$render" --size=16 noise2 --seed=3 -o"$out/n3.tsv"
+cmp "$out/n.tsv" "$out/n3.tsv"
+"$render" noise2 --si 16 --seed 3 --out="$out/n4.tsv"
+cmp "$out/n.tsv" "$out/n4.tsv"
+rm -f "$out/n3.tsv" "$out/n4.tsv"
+bad "--bogus: unknown option" fbm --bogus=3 -o "$out/x.png"
+bad "--size: missing value" fbm -o "$out/x.png" --size
+bad "--reference: takes no value" improved --reference=yes -o "$out/x.png"
+bad "--s: ambiguous option (--size, --seed, --stripes)" fbm --s 3 -o "$out/x.png"
+bad "--size: 'x' is not" fbm --size=x -o "$out/x.png"
 # SOURCE_DATE_EPOCH, when set, is the time written.
 SOURCE_DATE_EPOCH=0 "$render" fbm --size 8 -o "$out/epoch.tif"
 grep -aq '1970:01:01 00:00:00' "$out/epoch.tif"

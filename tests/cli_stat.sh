@@ -127,7 +127,7 @@ expect_error "outside" "$STAT" chisq "$DATA/chisq_0.tsv" --bins 10
 expect_error "cannot open" "$STAT" ks "$TMP/missing.tsv"
 expect_error "unknown option" "$STAT" ks "$DATA/ks_facts_512.tsv" --bogus
 expect_error "no column 2" "$STAT" ks "$DATA/ks_facts_512.tsv" --column 2
-expect_error "linkage" "$STAT" hclust "$DATA/hclust_X.tsv" --linkage ward --clusters 2
+expect_error "unknown linkage 'median' (single, complete, average or ward)" "$STAT" hclust "$DATA/hclust_X.tsv" --linkage median --clusters 2
 expect_error "exactly one" "$STAT" gmm "$DATA/gmm_X.tsv"
 expect_error "two files" "$STAT" ks2 "$DATA/ks2_1_a.tsv"
 expect_error "unknown subcommand" "$STAT" frobnicate x
@@ -150,6 +150,87 @@ rm -f "$TMP/big.tsv"
 awk 'BEGIN { for (i = 0; i < 20; i++) { for (j = 0; j < 100000; j++) printf "%d ", (i * j) % 7; print "" } }' >"$TMP/wide.tsv"
 expect_error "wide.tsv: 20 rows of 100000 columns with 3 components need" timeout 120 "$STAT" gmm "$TMP/wide.tsv" --k 3
 expect_error "parent $TMP/nul.tsv is not a directory" "$STAT" hclust "$DATA/hclust_X.tsv" --linkage single --clusters 2 --labels "$TMP/nul.tsv/x.tsv"
+
+# ---- issue 18.4: scipy's habits ------------------------------------------------
+# Reference: tests/reference/stat_cli (tests/reference/make_stat_cli_vectors.py,
+# scipy 1.10.1). Measured against it: D within 1.2e-15 relative (glibc's erf
+# against cephes' ndtr), p within 4e-13 relative, V within 1e-15; Ward's
+# linkage matrix bit-identical. Tolerances below: D and V 1e-13, p 1e-10.
+REF=$HERE/reference/stat_cli
+# json_value JSON KEY: the number or string after "KEY": in a one-line object
+json_value() { printf '%s\n' "$1" | sed -n "s/.*\"$2\": \"\{0,1\}\([^,\"}]*\).*/\1/p"; }
+expect_json() {
+  local got; got=$(json_value "$1" "$2")
+  if [ -n "$got" ] && awk -v a="$got" -v b="$3" -v t="$4" \
+       'BEGIN { d = a - b; if (d < 0) d = -d; m = b < 0 ? -b : b; exit !(d <= t * m + 1e-300) }'; then ok
+  else bad "json $2: got '$got', want $3 (line: $1)"; fi
+}
+rows=0
+while IFS=$'\t' read -r f dist loc scale D p V; do
+  [ "$f" = file ] && continue
+  rows=$((rows + 1))
+  case $dist in
+    *.tsv) how=(--cdf "$REF/$dist") ;;
+    *) how=(--dist "$dist" --loc "$loc" --scale "$scale") ;;
+  esac
+  js=$("$STAT" ks "$REF/$f" "${how[@]}" --format json)
+  expect_json "$js" D "$D" 1e-13
+  expect_json "$js" p "$p" 1e-10
+  line=$("$STAT" kuiper "$REF/$f" "${how[@]}")
+  expect_value "$line" V "$V" 1e-13
+done <"$REF/ks_dist.tsv"
+[ "$rows" = 10 ] && ok || bad "ks_dist.tsv: $rows cases read, want 10"
+# the issue's own command, GNU spellings, and the other formats
+js=$("$STAT" ks "$REF/norm_200.tsv" --dist norm --loc 0 --scale 1 --format json)
+case $js in '{"D": '*', "p": '*', "n": 200, "method": "'*'"}') ok ;; *) bad "json shape: $js" ;; esac
+[ "$("$STAT" ks "$REF/norm_200.tsv" --dist=norm --format=json)" = "$js" ] && ok || bad "--dist=norm (defaults loc 0, scale 1) differs"
+tsv=$("$STAT" ks "$REF/norm_200.tsv" --dist norm --format tsv)
+[ "$(printf '%s\n' "$tsv" | head -1)" = "$(printf 'D\tp\tn\tmethod')" ] && [ "$(printf '%s\n' "$tsv" | wc -l)" = 2 ] && ok \
+  || bad "--format tsv: $tsv"
+expect_value "$("$STAT" ks "$REF/unif_80.tsv" --uniform=2 5)" D \
+  "$(tsv_awk 'v("file") == "unif_80.tsv" && n("loc") == 2 { print v("D") }' "$REF/ks_dist.tsv")" 1e-13
+# CSV: detected, or forced; the same numbers as the TSV
+[ "$("$STAT" ks "$REF/norm_200.csv" --dist norm --format json)" = "$js" ] && ok || bad "CSV not read as the TSV"
+[ "$("$STAT" ks --csv - --dist norm --format json <"$REF/norm_200.csv")" = "$js" ] && ok || bad "--csv on stdin"
+expect_value "$("$STAT" ks "$REF/norm_200.csv" --column=2 --dist norm --scale 2)" D "$(json_value "$js" D)" 1e-15
+printf 'x\ty\n0.1,0.2\t0.3\n0.4\t0.5\n' >"$TMP/mixed.tsv"
+expect_error "holds '0.1,0.2', not a number (commas: a CSV file?" "$STAT" ks "$TMP/mixed.tsv"
+# Ward against scipy.cluster.hierarchy.linkage(X, 'ward') and fcluster
+line=$("$STAT" hclust "$REF/ward_X.tsv" --method=ward --clusters 4 --labels "$TMP/wl.tsv" --merges "$TMP/wz.tsv")
+expect_value "$line" clusters 4 0
+if tsv_awk 'FNR == 1 { next }
+     NR == FNR { a[FNR] = n("a"); b[FNR] = n("b"); dist[FNR] = n("dist"); size[FNR] = n("size"); next }
+     { d = n("dist") - dist[FNR]; if (d < 0) d = -d
+       if (n("a") != a[FNR] || n("b") != b[FNR] || n("size") != size[FNR] || d > 1e-12 * dist[FNR]) bad = 1 }
+     END { exit bad }' "$REF/ward_Z.tsv" "$TMP/wz.tsv"; then ok; else bad "ward merges differ from scipy's linkage"; fi
+cmp -s <(tail -n +2 "$TMP/wl.tsv") <(tsv_cut "$REF/ward_labels.tsv" maxclust_4 | tail -n +2) && ok || bad "ward maxclust 4 labels"
+"$STAT" hclust "$REF/ward_X.tsv" --linkage ward --cutoff 6 --labels "$TMP/wl6.tsv" >/dev/null
+cmp -s <(tail -n +2 "$TMP/wl6.tsv") <(tsv_cut "$REF/ward_labels.tsv" distance_6 | tail -n +2) && ok || bad "ward distance 6 labels"
+# gmm: score (sklearn's mean log-likelihood per row) beside the total
+line=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3)
+expect_value "$line" score "$(awk 'BEGIN { printf "%.17g", -5069.630131017421 / 750 }')" 1e-8
+js=$("$STAT" gmm "$DATA/gmm_X.tsv" --select-aic 1 20 --format json)
+[ "$(printf '%s\n' "$js" | grep -c '"selected": 1')" = 1 ] && case $js in '['*']') ok ;; *) bad "select json: $js" ;; esac \
+  || bad "select json: one selected row expected: $js"
+# more parameters than numbers: one warning line
+awk 'BEGIN { for (i = 0; i < 20; i++) print (i * 37 % 20) / 20, (i * 11 % 20) / 20 }' >"$TMP/g20.tsv"
+"$STAT" gmm "$TMP/g20.tsv" --k 8 >/dev/null 2>"$TMP/err"
+[ "$(wc -l <"$TMP/err")" = 1 ] && grep -q "47 free parameters, more than the 40 numbers" "$TMP/err" && ok \
+  || bad "gmm over-parameterised: $(cat "$TMP/err")"
+"$STAT" gmm "$TMP/g20.tsv" --k 2 >/dev/null 2>"$TMP/err"
+[ ! -s "$TMP/err" ] && ok || bad "gmm k=2 on 20 x 2 warned: $(cat "$TMP/err")"
+# refusals
+printf 'x\tF\n0\t0\n0.5\t0.6\n0.4\t0.7\n' >"$TMP/badcdf.tsv"
+expect_error "x = 0.4 does not increase" "$STAT" ks "$REF/u01_100.tsv" --cdf "$TMP/badcdf.tsv"
+expect_error "unknown distribution 'gamma'" "$STAT" ks "$REF/u01_100.tsv" --dist gamma
+expect_error "--scale 0 must be positive" "$STAT" ks "$REF/u01_100.tsv" --dist norm --scale 0
+expect_error "--loc and --scale go with --dist" "$STAT" ks "$REF/u01_100.tsv" --loc 1
+expect_error "give one of --uniform A B, --dist NAME and --cdf TABLE" "$STAT" ks "$REF/u01_100.tsv" --uniform 0 1 --dist norm
+expect_error "--format: 'xml' is not kv, tsv or json" "$STAT" ks "$REF/u01_100.tsv" --format xml
+expect_error "--bogus: unknown option" "$STAT" ks "$REF/u01_100.tsv" --bogus=1
+expect_error "--column: missing value" "$STAT" ks "$REF/u01_100.tsv" --column
+expect_error "--uniform: needs 2 values" "$STAT" ks "$REF/u01_100.tsv" --uniform 0
+expect_error "--csv: takes no value" "$STAT" ks "$REF/u01_100.tsv" --csv=yes
 
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]

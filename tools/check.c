@@ -44,9 +44,19 @@ int main(int argc, char **argv)
   nl_set_oom_handler(nl_harness_oom_exit);
   nl_harness_check_state s = {0};
   nl_error err;
+  /* nl_opt (GNU style); the positional words are gathered in argv[1..]. */
+  static const nl_opt_spec spec[] = {{"all", 0, 0}, {"help", 'h', 0}, {NULL, 0, 0}};
+  nl_opt_parser p;
   int w = 1;
-  for (int i = 1; i < argc; i++) {
-    if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+  nl_opt_begin(&p, argc, argv, 1, spec);
+  for (int k; (k = nl_opt_next(&p, &err)) != NL_OPT_END;) {
+    if (k == NL_OPT_ERROR) {
+      char m[NL_ERROR_LEN + 32];
+      snprintf(m, sizeof m, "%s (see --help)", err.msg);
+      nl_opt_end(&p);
+      return die(m);
+    }
+    if (k == 1) {
       printf("usage: noiselab-check [--all] COMMITTED_DIR NEW_DIR\n"
              "       noiselab-check [--all] COMMITTED_ROOT NEW_ROOT EXPERIMENT...\n\n"
              "Compares every table of the committed run with the new run by the rules of\n"
@@ -55,15 +65,13 @@ int main(int argc, char **argv)
              "an experiment (--all: every one), a line per drifted experiment naming\n"
              "the CPU and BLAS kernel of both runs, and a summary.\n"
              "Exit 0: no drift, 1: drift, 2: bad input.\n", NL_CHECK_SHOWN);
+      nl_opt_end(&p);
       return 0;
     }
-    if (!strcmp(argv[i], "--all")) { s.all = 1; continue; }
-    if (argv[i][0] == '-' && argv[i][1]) {
-      snprintf(err.msg, sizeof err.msg, "%s: unknown option (see --help)", argv[i]);
-      return die(err.msg);
-    }
-    argv[w++] = argv[i];
+    if (k == 0) s.all = 1;
+    else argv[w++] = (char *)p.value[0];   /* w never passes the word being read */
   }
+  nl_opt_end(&p);
   argc = w;
   if (argc < 3) return die("wanted COMMITTED NEW [EXPERIMENT...] (see --help)");
   if (argc == 3 && nl_harness_check_experiment(&s, argv[1], argv[2], &err)) return die(err.msg);

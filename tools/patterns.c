@@ -19,19 +19,27 @@ int main(int argc, char **argv)
   const char *dir = NULL;
   long size = 128;
   nl_error err;
-  for (int i = 1; i < argc; i++) {
-    if (!strcmp(argv[i], "--size") && i + 1 < argc) {
-      if (nl_parse_long("--size", argv[++i], 8, 4096, &size, &err)) { fprintf(stderr, "patterns: %s\n", err.msg); return 2; }
-    } else if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+  static const nl_opt_spec spec[] = {{"size", 0, 1}, {"help", 'h', 0}, {NULL, 0, 0}};
+  nl_opt_parser p;
+  nl_opt_begin(&p, argc, argv, 1, spec);
+  for (int k; (k = nl_opt_next(&p, &err)) != NL_OPT_END;) {
+    if (k == NL_OPT_ERROR) {
+      fprintf(stderr, "patterns: %s (usage: noiselab patterns DIR [--size N])\n", err.msg);
+      return 2;
+    }
+    if (k == 0) {
+      if (nl_parse_long("--size", p.value[0], 8, 4096, &size, &err)) { fprintf(stderr, "patterns: %s\n", err.msg); return 2; }
+    } else if (k == 1) {
       printf("usage: noiselab patterns DIR [--size N]\nshapes:");
-      for (int k = 0; nl_study_cheng_shape_names[k]; k++) printf(" %s", nl_study_cheng_shape_names[k]);
+      for (int j = 0; nl_study_cheng_shape_names[j]; j++) printf(" %s", nl_study_cheng_shape_names[j]);
       printf("\n");
       return 0;
-    } else if (argv[i][0] == '-' || dir) {
-      fprintf(stderr, "patterns: unexpected argument '%s' (usage: noiselab patterns DIR [--size N])\n", argv[i]);
+    } else if (dir) {
+      fprintf(stderr, "patterns: unexpected argument '%s' (usage: noiselab patterns DIR [--size N])\n", p.value[0]);
       return 2;
-    } else dir = argv[i];
+    } else dir = p.value[0];
   }
+  nl_opt_end(&p);
   if (!dir) { fprintf(stderr, "patterns: missing output folder (usage: noiselab patterns DIR [--size N])\n"); return 2; }
   if (nl_mkdir_p(dir, &err)) { fprintf(stderr, "patterns: %s\n", err.msg); return 1; }
   for (int k = 0; nl_study_cheng_shape_names[k]; k++) {

@@ -33,7 +33,7 @@ typedef struct {
 
 static void usage(void)
 {
-  printf("usage: noiselab render NOISE [options] -o FILE\n\n"
+  printf("usage: noiselab render NOISE [options] -o FILE   (options: --name VALUE or --name=VALUE)\n\n"
          "NOISE: noise2      2D gradient-table noise (Cheng 2009 eq. 3.1-3.2)\n"
          "       improved    Perlin's improved 3D noise, on the plane z\n"
          "       gctbf       Qin & Yang's generalized cellular basis sum c_i F_i + c_ij F_i F_j\n"
@@ -87,47 +87,62 @@ static void parse(int argc, char **argv, options *o)
                  .points = 50, .tile = 64, .lambda = 4, .size = 512, .octaves = 6, .seed = 1,
                  .table_size = 512, .bits = 0, .extent = 4, .z = 0.5, .gain = 0.5, .lacunarity = 2,
                  .amplitude = 0.5, .stripes = 1};
-  for (int i = 1; i < argc; i++) {
-    const char *a = argv[i];
-    if (!strcmp(a, "-h") || !strcmp(a, "--help")) { usage(); exit(0); }
-    if (!strcmp(a, "--reference")) { o->reference = 1; continue; }
-    if (a[0] != '-') {
-      if (o->noise) { char m[256]; snprintf(m, sizeof m, "%s: only one NOISE may be given", a); fail(m); }
-      o->noise = a;
-      continue;
-    }
-    if (i + 1 >= argc) { char m[256]; snprintf(m, sizeof m, "%s: missing value", a); fail(m); }
-    const char *v = argv[++i];
-    if (!strcmp(a, "-o")) o->out = v;
-    else if (!strcmp(a, "--size")) integer(a, v, 1, 65536, &o->size);
-    else if (!strcmp(a, "--octaves")) integer(a, v, 1, 30, &o->octaves);
-    else if (!strcmp(a, "--seed")) integer(a, v, 0, 4294967295L, &o->seed);
-    else if (!strcmp(a, "--table-size")) integer(a, v, 4, 1048576, &o->table_size);
-    else if (!strcmp(a, "--bits")) integer(a, v, 8, 32, &o->bits);
-    else if (!strcmp(a, "--extent")) num(a, v, 1e-9, 1e9, &o->extent);
-    else if (!strcmp(a, "--x0")) num(a, v, -1e9, 1e9, &o->x0);
-    else if (!strcmp(a, "--y0")) num(a, v, -1e9, 1e9, &o->y0);
-    else if (!strcmp(a, "--z")) num(a, v, -1e9, 1e9, &o->z);
-    else if (!strcmp(a, "--gain")) num(a, v, -1e3, 1e3, &o->gain);
-    else if (!strcmp(a, "--lacunarity")) num(a, v, 1e-6, 1e6, &o->lacunarity);
-    else if (!strcmp(a, "--amplitude")) num(a, v, -1e6, 1e6, &o->amplitude);
-    else if (!strcmp(a, "--stripes")) num(a, v, 1e-9, 1e9, &o->stripes);
-    else if (!strcmp(a, "--basis")) o->basis = v;
-    else if (!strcmp(a, "--terms")) o->terms = v;
-    else if (!strcmp(a, "--tile")) integer(a, v, 8, 256, &o->tile);
-    else if (!strcmp(a, "--count")) o->count = v;
-    else if (!strcmp(a, "--lambda")) {
+  enum { R_OUT, R_SIZE, R_OCTAVES, R_SEED, R_TABLE_SIZE, R_BITS, R_EXTENT, R_X0, R_Y0, R_Z, R_GAIN,
+         R_LACUNARITY, R_AMPLITUDE, R_STRIPES, R_BASIS, R_TERMS, R_TILE, R_COUNT, R_LAMBDA, R_POINTS,
+         R_NORMALIZE, R_REFERENCE, R_HELP };
+  static const nl_opt_spec spec[] = {
+    [R_OUT] = {"out", 'o', 1}, [R_SIZE] = {"size", 0, 1}, [R_OCTAVES] = {"octaves", 0, 1},
+    [R_SEED] = {"seed", 0, 1}, [R_TABLE_SIZE] = {"table-size", 0, 1}, [R_BITS] = {"bits", 0, 1},
+    [R_EXTENT] = {"extent", 0, 1}, [R_X0] = {"x0", 0, 1}, [R_Y0] = {"y0", 0, 1}, [R_Z] = {"z", 0, 1},
+    [R_GAIN] = {"gain", 0, 1}, [R_LACUNARITY] = {"lacunarity", 0, 1}, [R_AMPLITUDE] = {"amplitude", 0, 1},
+    [R_STRIPES] = {"stripes", 0, 1}, [R_BASIS] = {"basis", 0, 1}, [R_TERMS] = {"terms", 0, 1},
+    [R_TILE] = {"tile", 0, 1}, [R_COUNT] = {"count", 0, 1}, [R_LAMBDA] = {"lambda", 0, 1},
+    [R_POINTS] = {"points", 0, 1}, [R_NORMALIZE] = {"normalize", 0, 1}, [R_REFERENCE] = {"reference", 0, 0},
+    [R_HELP] = {"help", 'h', 0}, {NULL, 0, 0}};
+  nl_opt_parser p;
+  nl_error err;
+  nl_opt_begin(&p, argc, argv, 1, spec);
+  for (int k; (k = nl_opt_next(&p, &err)) != NL_OPT_END;) {
+    const char *a = p.name, *v = p.value[0];
+    char m[NL_ERROR_LEN + 32];
+    switch (k) {
+    case NL_OPT_ERROR: snprintf(m, sizeof m, "%s (see --help)", err.msg); fail(m); break;
+    case NL_OPT_POSITIONAL:
+      if (o->noise) { snprintf(m, sizeof m, "%s: only one NOISE may be given", v); fail(m); }
+      o->noise = v;
+      break;
+    case R_HELP: usage(); exit(0);
+    case R_REFERENCE: o->reference = 1; break;
+    case R_OUT: o->out = v; break;
+    case R_SIZE: integer(a, v, 1, 65536, &o->size); break;
+    case R_OCTAVES: integer(a, v, 1, 30, &o->octaves); break;
+    case R_SEED: integer(a, v, 0, 4294967295L, &o->seed); break;
+    case R_TABLE_SIZE: integer(a, v, 4, 1048576, &o->table_size); break;
+    case R_BITS: integer(a, v, 8, 32, &o->bits); break;
+    case R_EXTENT: num(a, v, 1e-9, 1e9, &o->extent); break;
+    case R_X0: num(a, v, -1e9, 1e9, &o->x0); break;
+    case R_Y0: num(a, v, -1e9, 1e9, &o->y0); break;
+    case R_Z: num(a, v, -1e9, 1e9, &o->z); break;
+    case R_GAIN: num(a, v, -1e3, 1e3, &o->gain); break;
+    case R_LACUNARITY: num(a, v, 1e-6, 1e6, &o->lacunarity); break;
+    case R_AMPLITUDE: num(a, v, -1e6, 1e6, &o->amplitude); break;
+    case R_STRIPES: num(a, v, 1e-9, 1e9, &o->stripes); break;
+    case R_BASIS: o->basis = v; break;
+    case R_TERMS: o->terms = v; break;
+    case R_TILE: integer(a, v, 8, 256, &o->tile); break;
+    case R_COUNT: o->count = v; break;
+    case R_LAMBDA:
       num(a, v, -1e9, 1e9, &o->lambda);
       if (!(o->lambda > 0 && o->lambda <= 1000)) {
-        char m[256];
         snprintf(m, sizeof m, "--lambda: %s must be in (0, 1000] (mean feature points per unit cube)", v);
         fail(m);
       }
+      break;
+    case R_POINTS: integer(a, v, 1, NL_CELLULAR_MAX_M, &o->points); break;
+    case R_NORMALIZE: o->normalize = v; break;
     }
-    else if (!strcmp(a, "--points")) integer(a, v, 1, NL_CELLULAR_MAX_M, &o->points);
-    else if (!strcmp(a, "--normalize")) o->normalize = v;
-    else { char m[256]; snprintf(m, sizeof m, "%s: unknown option (see --help)", a); fail(m); }
   }
+  nl_opt_end(&p);
   char m[512];
   if (!o->noise) fail("no NOISE given (see --help)");
   if (!one_of(o->noise, NOISES)) { snprintf(m, sizeof m, "%s: unknown noise (noise2, improved, gctbf, wavelet, fractal, turbulence, fbm, marble)", o->noise); fail(m); }

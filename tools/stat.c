@@ -1,7 +1,8 @@
 /* noiselab stat - statistics on tables of numbers (src/stats).
  *
- * Thin layer: parse options, read the table (TSV or whitespace, header
- * optional, '-' = stdin), call the library, print one line per result.
+ * Thin layer: parse options (nl_opt: GNU style), read the table (TSV,
+ * whitespace or CSV, header optional, '-' = stdin), call the library, print
+ * one line per result (key=value, or --format tsv|json).
  * Every error is one line on stderr naming the input, and exit status 2.
  */
 #include "harness/nl_harness.h"
@@ -10,6 +11,7 @@
 #include "stats/nl_stats.h"
 #include "table/nl_table.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -22,53 +24,75 @@ static const char *usage_text[] = {
   "  kuiper  Kuiper's test for circular data   " PROG " kuiper --help\n"
   "  chisq   Pearson chi-square on equal bins  " PROG " chisq --help\n"
   "  hclust  hierarchical clustering           " PROG " hclust --help\n"
-  "  gmm     Gaussian mixture by EM            " PROG " gmm --help\n",
+  "  gmm     Gaussian mixture by EM            " PROG " gmm --help\n"
+  "Options as --name VALUE or --name=VALUE; --format kv|tsv|json (default kv: key=value);\n"
+  "FILE may be CSV (detected from a first line with commas and no tab, or --csv).\n",
 };
 
 static const char *help_ks =
-  "usage: " PROG " ks FILE [--column N] [--uniform A B]\n"
-  "One-sample Kolmogorov-Smirnov test of column N (1-based, default 1) against the\n"
-  "uniform distribution on [A, B) (default 0 1). Prints D=... p=... n=... method=...\n"
+  "usage: " PROG " ks FILE [--column N] [--uniform A B | --dist NAME [--loc L] [--scale S] | --cdf TABLE]\n"
+  "                 [--csv] [--format kv|tsv|json]\n"
+  "One-sample Kolmogorov-Smirnov test of column N (1-based, default 1) against\n"
+  "  --uniform A B     the uniform distribution on [A, B) (end points; the default, 0 1)\n"
+  "  --dist NAME       uniform, norm or expon with scipy's --loc L (0) and --scale S (1):\n"
+  "                    F((x - L) / S), so uniform is on [L, L + S] (scipy.stats.kstest(x, NAME, (L, S)))\n"
+  "  --cdf TABLE       a tabulated CDF: columns x and F (or the first two), linear\n"
+  "                    interpolation, constant beyond the ends (numpy.interp)\n"
+  "Prints D=... p=... n=... method=... (--format tsv: a header and a row; json: an object).\n"
   "p is two-sided and exact for finite n (scipy.stats.kstest); method names the\n"
   "algorithm (durbin-mtw, pomeranz, pelz-good, smirnov, ruben-gambino).\n";
 static const char *help_ks2 =
-  "usage: " PROG " ks2 FILE1 FILE2 [--column N]\n"
+  "usage: " PROG " ks2 FILE1 FILE2 [--column N] [--csv] [--format kv|tsv|json]\n"
   "Two-sample Kolmogorov-Smirnov test of column N (default 1) of each file.\n"
   "Prints D=... p=... n=N1,N2 method=exact|asymp (scipy.stats.ks_2samp).\n";
 static const char *help_kuiper =
-  "usage: " PROG " kuiper FILE [--column N] [--uniform A B]\n"
+  "usage: " PROG " kuiper FILE [--column N] [--uniform A B | --dist NAME [--loc L] [--scale S] | --cdf TABLE]\n"
+  "                     [--csv] [--format kv|tsv|json]\n"
   "Kuiper's test (invariant to where a circle is cut) against the uniform\n"
-  "distribution on [A, B) (default 0 1). Prints V=... p=... n=...\n";
+  "distribution on [A, B) (default 0 1), or a distribution as for ks (see ks --help).\n"
+  "Prints V=... p=... n=...\n";
 static const char *help_chisq =
-  "usage: " PROG " chisq FILE --bins K [--column N] [--uniform A B]\n"
+  "usage: " PROG " chisq FILE --bins K [--column N] [--uniform A B] [--csv] [--format kv|tsv|json]\n"
   "Pearson chi-square of column N in K >= 2 equal bins of [A, B] (default 0 1)\n"
   "against equal expected counts. Prints chi2=... df=... p=... min_expected=...\n"
   "and warns on stderr when min_expected < 5 (the p-value is then unreliable).\n";
 static const char *help_hclust =
-  "usage: " PROG " hclust FILE --linkage single|complete|average (--cutoff C | --clusters K)\n"
-  "                     [--labels OUT] [--merges OUT]\n"
-  "Agglomerative clustering of the rows (Euclidean). --cutoff: points of a cluster\n"
-  "have cophenetic distance <= C (scipy fcluster 'distance'); --clusters: at most K\n"
-  "clusters ('maxclust'). Prints clusters=K. --labels writes one label (1..K) per\n"
-  "row; --merges writes scipy's linkage matrix (a, b, dist, size).\n";
+  "usage: " PROG " hclust FILE --linkage single|complete|average|ward (--cutoff C | --clusters K)\n"
+  "                     [--labels OUT] [--merges OUT] [--csv] [--format kv|tsv|json]\n"
+  "Agglomerative clustering of the rows (Euclidean; --method is another name for\n"
+  "--linkage). ward: Ward's minimum variance (scipy's Lance-Williams update).\n"
+  "--cutoff: points of a cluster have cophenetic distance <= C (scipy fcluster\n"
+  "'distance'); --clusters: at most K clusters ('maxclust'). Prints clusters=K.\n"
+  "--labels writes one label (1..K) per row; --merges writes scipy's linkage\n"
+  "matrix (a, b, dist, size).\n";
 static const char *help_gmm =
   "usage: " PROG " gmm FILE (--k K | --select-aic K0 T) [--covariance full|diag] [--seed N]\n"
   "                  [--tol X] [--max-iter N] [--reg-covar X] [--max-k N] [--params OUT]\n"
+  "                  [--csv] [--format kv|tsv|json]\n"
   "Gaussian mixture of the rows by EM (scikit-learn's GaussianMixture, k-means++\n"
   "initialisation from --seed, default 0; tol 1e-3, max-iter 100, reg-covar 1e-6).\n"
-  "Prints k=... loglik=... aic=... bic=... iterations=... converged=...\n"
+  "Prints k=... loglik=... score=... aic=... bic=... iterations=... converged=...\n"
+  "(loglik: the total log-likelihood; score: its mean per row, sklearn's score()).\n"
+  "Warns on stderr when the model has more free parameters than the data has numbers.\n"
   "--select-aic K0 T fits K0, K0+1, ... (at most --max-k, default 100) until the AIC\n"
-  "drops by less than T, prints one line per K and then selected=K.\n"
-  "--params writes component, param (weight, mean, cov), i, j, value rows.\n";
+  "drops by less than T, prints one line per K and then selected=K (tsv/json: a\n"
+  "column selected, 1 on the chosen K).\n"
+  "--params writes component, param (weight, mean, cov), i, j, value rows.\n"
+  "Every subcommand: options as --name VALUE or --name=VALUE; tables are TSV or\n"
+  "blank-separated, or CSV (found from a first line with commas and no tab, or --csv).\n";
+
+typedef enum { OUT_KV, OUT_TSV, OUT_JSON } out_format;
 
 typedef struct {
   const char *sub;
   const char *files[2];
   int nfiles;
   long column, bins, clusters, k, k0, seed, max_iter, max_k;
-  double a, b, cutoff, tol, reg, thresh;
-  int have_bins, have_cutoff, have_clusters, have_k, have_select;
-  const char *linkage, *labels_out, *merges_out, *params_out, *covariance;
+  double a, b, cutoff, tol, reg, thresh, loc, scale;
+  int have_bins, have_cutoff, have_clusters, have_k, have_select, have_uniform, have_loc, have_scale;
+  int csv;
+  out_format format;
+  const char *linkage, *labels_out, *merges_out, *params_out, *covariance, *dist, *cdf_file;
 } opts;
 
 static void die(const char *sub, const char *msg)
@@ -93,61 +117,166 @@ static long int_arg(const opts *o, const char *what, const char *s, long lo, lon
   return v;
 }
 
-/* Parses argv[2..]; every option takes its values from the following words. */
+enum {
+  O_COLUMN, O_UNIFORM, O_BINS, O_LINKAGE, O_METHOD, O_CUTOFF, O_CLUSTERS, O_LABELS, O_MERGES,
+  O_PARAMS, O_K, O_SELECT_AIC, O_COVARIANCE, O_SEED, O_TOL, O_MAX_ITER, O_MAX_K, O_REG_COVAR,
+  O_DIST, O_LOC, O_SCALE, O_CDF, O_FORMAT, O_CSV, O_HELP
+};
+static const nl_opt_spec spec[] = {
+  [O_COLUMN] = {"column", 0, 1}, [O_UNIFORM] = {"uniform", 0, 2}, [O_BINS] = {"bins", 0, 1},
+  [O_LINKAGE] = {"linkage", 0, 1}, [O_METHOD] = {"method", 0, 1}, [O_CUTOFF] = {"cutoff", 0, 1},
+  [O_CLUSTERS] = {"clusters", 0, 1}, [O_LABELS] = {"labels", 0, 1}, [O_MERGES] = {"merges", 0, 1},
+  [O_PARAMS] = {"params", 0, 1}, [O_K] = {"k", 0, 1}, [O_SELECT_AIC] = {"select-aic", 0, 2},
+  [O_COVARIANCE] = {"covariance", 0, 1}, [O_SEED] = {"seed", 0, 1}, [O_TOL] = {"tol", 0, 1},
+  [O_MAX_ITER] = {"max-iter", 0, 1}, [O_MAX_K] = {"max-k", 0, 1}, [O_REG_COVAR] = {"reg-covar", 0, 1},
+  [O_DIST] = {"dist", 0, 1}, [O_LOC] = {"loc", 0, 1}, [O_SCALE] = {"scale", 0, 1},
+  [O_CDF] = {"cdf", 0, 1}, [O_FORMAT] = {"format", 0, 1}, [O_CSV] = {"csv", 0, 0},
+  [O_HELP] = {"help", 'h', 0}, {NULL, 0, 0}};
+
+/* Parses argv[2..] (nl_opt: --name VALUE or --name=VALUE, files anywhere). */
 static void parse(int argc, char **argv, opts *o)
 {
-  for (int i = 2; i < argc; i++) {
-    const char *a = argv[i];
-    int left = argc - i - 1;
-#define NEED(k) do { if (left < (k)) { char m_[128]; \
-      snprintf(m_, sizeof m_, "%s needs %d value(s)", a, (k)); die(o->sub, m_); } } while (0)
-    if (a[0] != '-' || strcmp(a, "-") == 0) {
-      if (o->nfiles == 2) die(o->sub, "too many file arguments");
-      o->files[o->nfiles++] = a;
-    } else if (!strcmp(a, "--column")) { NEED(1); o->column = int_arg(o, a, argv[++i], 1, 1000000); }
-    else if (!strcmp(a, "--uniform")) {
-      NEED(2);
-      o->a = num_arg(o, a, argv[++i], -1e300, 1e300);
-      o->b = num_arg(o, a, argv[++i], -1e300, 1e300);
-      if (!(o->a < o->b)) die(o->sub, "--uniform A B needs A < B");
-    }
-    else if (!strcmp(a, "--bins")) { NEED(1); o->bins = int_arg(o, a, argv[++i], 2, 100000000); o->have_bins = 1; }
-    else if (!strcmp(a, "--linkage")) { NEED(1); o->linkage = argv[++i]; }
-    else if (!strcmp(a, "--cutoff")) { NEED(1); o->cutoff = num_arg(o, a, argv[++i], 0, 1e300); o->have_cutoff = 1; }
-    else if (!strcmp(a, "--clusters")) { NEED(1); o->clusters = int_arg(o, a, argv[++i], 1, 1000000000); o->have_clusters = 1; }
-    else if (!strcmp(a, "--labels")) { NEED(1); o->labels_out = argv[++i]; }
-    else if (!strcmp(a, "--merges")) { NEED(1); o->merges_out = argv[++i]; }
-    else if (!strcmp(a, "--params")) { NEED(1); o->params_out = argv[++i]; }
-    else if (!strcmp(a, "--k")) { NEED(1); o->k = int_arg(o, a, argv[++i], 1, 100000); o->have_k = 1; }
-    else if (!strcmp(a, "--select-aic")) {
-      NEED(2);
-      o->k0 = int_arg(o, a, argv[++i], 1, 100000);
-      o->thresh = num_arg(o, a, argv[++i], 0, 1e300);
-      o->have_select = 1;
-    }
-    else if (!strcmp(a, "--covariance")) { NEED(1); o->covariance = argv[++i]; }
-    else if (!strcmp(a, "--seed")) { NEED(1); o->seed = int_arg(o, a, argv[++i], 0, 4294967295L); }
-    else if (!strcmp(a, "--tol")) { NEED(1); o->tol = num_arg(o, a, argv[++i], 0, 1e300); }
-    else if (!strcmp(a, "--max-iter")) { NEED(1); o->max_iter = int_arg(o, a, argv[++i], 1, 100000000); }
-    else if (!strcmp(a, "--max-k")) { NEED(1); o->max_k = int_arg(o, a, argv[++i], 1, 100000); }
-    else if (!strcmp(a, "--reg-covar")) { NEED(1); o->reg = num_arg(o, a, argv[++i], 0, 1e300); }
-    else {
-      char m[160];
-      snprintf(m, sizeof m, "unknown option '%s' (see " PROG " %s --help)", a, o->sub);
+  nl_opt_parser p;
+  nl_error err;
+  nl_opt_begin(&p, argc, argv, 2, spec);
+  for (int k; (k = nl_opt_next(&p, &err)) != NL_OPT_END;) {
+    const char *a = p.name, *v = p.value[0];
+    if (k == NL_OPT_ERROR) {
+      char m[NL_ERROR_LEN + 64];
+      snprintf(m, sizeof m, "%s (see " PROG " %s --help)", err.msg, o->sub);
       die(o->sub, m);
     }
-#undef NEED
+    switch (k) {
+    case NL_OPT_POSITIONAL:
+      if (o->nfiles == 2) die(o->sub, "too many file arguments");
+      o->files[o->nfiles++] = v;
+      break;
+    case O_COLUMN: o->column = int_arg(o, a, v, 1, 1000000); break;
+    case O_UNIFORM:
+      o->a = num_arg(o, a, v, -1e300, 1e300);
+      o->b = num_arg(o, a, p.value[1], -1e300, 1e300);
+      if (!(o->a < o->b)) die(o->sub, "--uniform A B needs A < B");
+      o->have_uniform = 1;
+      break;
+    case O_BINS: o->bins = int_arg(o, a, v, 2, 100000000); o->have_bins = 1; break;
+    case O_LINKAGE: case O_METHOD: o->linkage = v; break;
+    case O_CUTOFF: o->cutoff = num_arg(o, a, v, 0, 1e300); o->have_cutoff = 1; break;
+    case O_CLUSTERS: o->clusters = int_arg(o, a, v, 1, 1000000000); o->have_clusters = 1; break;
+    case O_LABELS: o->labels_out = v; break;
+    case O_MERGES: o->merges_out = v; break;
+    case O_PARAMS: o->params_out = v; break;
+    case O_K: o->k = int_arg(o, a, v, 1, 100000); o->have_k = 1; break;
+    case O_SELECT_AIC:
+      o->k0 = int_arg(o, a, v, 1, 100000);
+      o->thresh = num_arg(o, a, p.value[1], 0, 1e300);
+      o->have_select = 1;
+      break;
+    case O_COVARIANCE: o->covariance = v; break;
+    case O_SEED: o->seed = int_arg(o, a, v, 0, 4294967295L); break;
+    case O_TOL: o->tol = num_arg(o, a, v, 0, 1e300); break;
+    case O_MAX_ITER: o->max_iter = int_arg(o, a, v, 1, 100000000); break;
+    case O_MAX_K: o->max_k = int_arg(o, a, v, 1, 100000); break;
+    case O_REG_COVAR: o->reg = num_arg(o, a, v, 0, 1e300); break;
+    case O_DIST: o->dist = v; break;
+    case O_LOC: o->loc = num_arg(o, a, v, -1e300, 1e300); o->have_loc = 1; break;
+    case O_SCALE: o->scale = num_arg(o, a, v, 0, 1e300); o->have_scale = 1; break;
+    case O_CDF: o->cdf_file = v; break;
+    case O_CSV: o->csv = 1; break;
+    case O_FORMAT:
+      if (!strcmp(v, "kv")) o->format = OUT_KV;
+      else if (!strcmp(v, "tsv")) o->format = OUT_TSV;
+      else if (!strcmp(v, "json")) o->format = OUT_JSON;
+      else {
+        char m[160];
+        snprintf(m, sizeof m, "--format: '%.64s' is not kv, tsv or json", v);
+        die(o->sub, m);
+      }
+      break;
+    default: break;   /* --help was answered before parsing */
+    }
+  }
+  nl_opt_end(&p);
+  if (o->have_uniform + (o->dist != NULL) + (o->cdf_file != NULL) > 1)
+    die(o->sub, "give one of --uniform A B, --dist NAME and --cdf TABLE");
+  if ((o->have_loc || o->have_scale) && !o->dist)
+    die(o->sub, "--loc and --scale go with --dist NAME (scipy's loc/scale convention)");
+}
+
+/* ---- output: key=value (default), TSV or JSON --------------------------- */
+
+#define MAX_FIELDS 12
+typedef struct {
+  const char *key[MAX_FIELDS];
+  char val[MAX_FIELDS][64];
+  int text[MAX_FIELDS];
+  int n;
+} record;
+
+static void rec_num(record *r, const char *key, double v)
+{
+  r->key[r->n] = key;
+  r->text[r->n] = 0;
+  if (isfinite(v)) nl_table_format_double(r->val[r->n], v);
+  else snprintf(r->val[r->n], sizeof r->val[0], "%s", isnan(v) ? "nan" : v > 0 ? "inf" : "-inf");
+  r->n++;
+}
+
+static void rec_size(record *r, const char *key, size_t v)
+{
+  r->key[r->n] = key;
+  r->text[r->n] = 0;
+  snprintf(r->val[r->n++], sizeof r->val[0], "%zu", v);
+}
+
+static void rec_text(record *r, const char *key, const char *v)
+{
+  r->key[r->n] = key;
+  r->text[r->n] = 1;
+  snprintf(r->val[r->n++], sizeof r->val[0], "%s", v);
+}
+
+/* key=value lines; TSV: one header (the first record's keys) and a row per
+ * record; JSON: an object, or an array of objects for several records
+ * (non-finite numbers as null). */
+static void emit(const opts *o, const record *r, size_t nr)
+{
+  for (size_t i = 0; i < nr; i++) {
+    if (o->format == OUT_TSV && i == 0)
+      for (int j = 0; j < r[0].n; j++) printf("%s%s", j ? "\t" : "", r[0].key[j]);
+    if (o->format == OUT_TSV && i == 0) putchar('\n');
+    if (o->format == OUT_JSON) fputs(nr > 1 ? (i ? ",\n " : "[") : "", stdout);
+    if (o->format == OUT_JSON) putchar('{');
+    for (int j = 0; j < r[i].n; j++) {
+      const char *v = r[i].val[j];
+      if (o->format == OUT_KV) printf("%s%s=%s", j ? " " : "", r[i].key[j], v);
+      else if (o->format == OUT_TSV) printf("%s%s", j ? "\t" : "", v);
+      else if (r[i].text[j]) printf("%s\"%s\": \"%s\"", j ? ", " : "", r[i].key[j], v);
+      else {
+        int finite = strcmp(v, "nan") && strcmp(v, "inf") && strcmp(v, "-inf");
+        printf("%s\"%s\": %s", j ? ", " : "", r[i].key[j], finite ? v : "null");
+      }
+    }
+    if (o->format == OUT_JSON) putchar('}');
+    if (o->format != OUT_JSON || i + 1 == nr) {
+      if (o->format == OUT_JSON && nr > 1) putchar(']');
+      putchar('\n');
+    }
   }
 }
 
 /* How an input is named in messages ('-' is standard input). */
 static const char *shown(const char *path) { return strcmp(path, "-") ? path : "<stdin>"; }
 
+static int table_flags(const opts *o)
+{
+  return NL_TABLE_HEADER_AUTO | NL_TABLE_WHITESPACE | (o->csv ? NL_TABLE_CSV : NL_TABLE_CSV_AUTO);
+}
+
 static nl_table *read_table(const opts *o, const char *path)
 {
   nl_table *t = NULL;
   nl_error err;
-  if (nl_table_read(path, NL_TABLE_HEADER_AUTO | NL_TABLE_WHITESPACE, &t, &err)) die(o->sub, err.msg);
+  if (nl_table_read(path, table_flags(o), &t, &err)) die(o->sub, err.msg);
   if (t->nrows < 2) {
     char m[NL_ERROR_LEN + 64];
     snprintf(m, sizeof m, "%s: %zu data row(s); at least 2 are needed", shown(path), t->nrows);
@@ -176,25 +305,76 @@ static void fail_lib(const opts *o, const char *path, const nl_error *err)
   die(o->sub, m);
 }
 
-static const char *fmt(char *buf, double v) { nl_table_format_double(buf, v); return buf; }
+/* The null distribution of ks/kuiper: --uniform A B (end points), --dist
+ * NAME with loc/scale, or --cdf TABLE (columns x and F, else the first two).
+ * *cdf_table holds the tabulated CDF's table (freed by the caller). */
+static void null_dist(const opts *o, nl_stats_dist *dist, nl_table **cdf_table, double **xF)
+{
+  nl_error err;
+  *cdf_table = NULL;
+  *xF = NULL;
+  if (o->cdf_file) {
+    nl_table *t = NULL;
+    if (nl_table_read(o->cdf_file, table_flags(o), &t, &err)) die(o->sub, err.msg);
+    long cx = nl_table_column(t, "x"), cF = nl_table_column(t, "F");
+    if (cx < 0 || cF < 0) { cx = 0; cF = 1; }
+    if (t->ncols < 2) {
+      char m[NL_ERROR_LEN];
+      snprintf(m, sizeof m, "%s: a CDF table needs columns x and F (it has %zu column)", shown(o->cdf_file), t->ncols);
+      die(o->sub, m);
+    }
+    double *x = nl_xmalloc(2 * t->nrows * sizeof *x), *F = x + t->nrows;
+    for (size_t i = 0; i < t->nrows; i++) { x[i] = nl_table_get(t, i, (size_t)cx); F[i] = nl_table_get(t, i, (size_t)cF); }
+    if (nl_stats_dist_table(dist, x, F, t->nrows, &err)) fail_lib(o, o->cdf_file, &err);
+    *cdf_table = t;
+    *xF = x;
+  } else if (o->dist) {
+    nl_stats_dist_kind kind;
+    if (nl_stats_dist_parse(o->dist, &kind, &err)) die(o->sub, err.msg);
+    double scale = o->have_scale ? o->scale : 1.0;
+    if (nl_stats_dist_init(dist, kind, o->have_loc ? o->loc : 0.0, scale, &err)) {
+      char m[NL_ERROR_LEN + 16];
+      snprintf(m, sizeof m, "--%s", err.msg);   /* "--scale 0 must be positive ..." */
+      die(o->sub, m);
+    }
+  } else {
+    /* end points: uniform on [a, b) evaluated as (x - a) / (b - a), as before */
+    dist->kind = NL_DIST_UNIFORM;
+  }
+}
 
 static void run_ks(const opts *o, int kuiper)
 {
   nl_table *t = read_table(o, o->files[0]);
   double *x = column(o, t, o->files[0]);
+  nl_stats_dist dist;
+  nl_table *ct;
+  double *xF;
+  null_dist(o, &dist, &ct, &xF);
+  int named = o->dist || o->cdf_file;
   nl_error err;
-  char b1[32], b2[32];
+  record r = {0};
   if (kuiper) {
-    nl_stats_kuiper_result r;
-    if (nl_stats_kuiper_test_uniform(x, t->nrows, o->a, o->b, &r, &err)) fail_lib(o, o->files[0], &err);
-    printf("V=%s p=%s n=%zu\n", fmt(b1, r.v), fmt(b2, r.p), r.n);
+    nl_stats_kuiper_result k;
+    nl_status s = named ? nl_stats_kuiper_test(x, t->nrows, nl_stats_dist_cdf, &dist, &k, &err)
+                        : nl_stats_kuiper_test_uniform(x, t->nrows, o->a, o->b, &k, &err);
+    if (s) fail_lib(o, o->files[0], &err);
+    rec_num(&r, "V", k.v);
+    rec_num(&r, "p", k.p);
+    rec_size(&r, "n", k.n);
   } else {
-    nl_stats_ks_result r;
-    if (nl_stats_ks_test_uniform(x, t->nrows, o->a, o->b, &r, &err)) fail_lib(o, o->files[0], &err);
-    printf("D=%s p=%s n=%zu method=%s\n", fmt(b1, r.d), fmt(b2, r.p), r.n,
-           nl_stats_ks_method_name(r.method));
+    nl_stats_ks_result k;
+    nl_status s = named ? nl_stats_ks_test(x, t->nrows, nl_stats_dist_cdf, &dist, &k, &err)
+                        : nl_stats_ks_test_uniform(x, t->nrows, o->a, o->b, &k, &err);
+    if (s) fail_lib(o, o->files[0], &err);
+    rec_num(&r, "D", k.d);
+    rec_num(&r, "p", k.p);
+    rec_size(&r, "n", k.n);
+    rec_text(&r, "method", nl_stats_ks_method_name(k.method));
   }
-  free(x);
+  emit(o, &r, 1);
+  free(x); free(xF);
+  nl_table_free(ct);
   nl_table_free(t);
 }
 
@@ -203,12 +383,18 @@ static void run_ks2(const opts *o)
   if (o->nfiles != 2) die(o->sub, "needs two files (see " PROG " ks2 --help)");
   nl_table *t1 = read_table(o, o->files[0]), *t2 = read_table(o, o->files[1]);
   double *x = column(o, t1, o->files[0]), *y = column(o, t2, o->files[1]);
-  nl_stats_ks_result r;
+  nl_stats_ks_result k;
   nl_error err;
-  char b1[32], b2[32];
-  if (nl_stats_ks2_test(x, t1->nrows, y, t2->nrows, &r, &err)) fail_lib(o, o->files[0], &err);
-  printf("D=%s p=%s n=%zu,%zu method=%s\n", fmt(b1, r.d), fmt(b2, r.p), r.n, r.n2,
-         nl_stats_ks_method_name(r.method));
+  if (nl_stats_ks2_test(x, t1->nrows, y, t2->nrows, &k, &err)) fail_lib(o, o->files[0], &err);
+  record r = {0};
+  char n12[64];
+  snprintf(n12, sizeof n12, "%zu,%zu", k.n, k.n2);
+  rec_num(&r, "D", k.d);
+  rec_num(&r, "p", k.p);
+  if (o->format == OUT_KV) rec_text(&r, "n", n12);
+  else { rec_size(&r, "n1", k.n); rec_size(&r, "n2", k.n2); }
+  rec_text(&r, "method", nl_stats_ks_method_name(k.method));
+  emit(o, &r, 1);
   free(x); free(y);
   nl_table_free(t1); nl_table_free(t2);
 }
@@ -216,18 +402,22 @@ static void run_ks2(const opts *o)
 static void run_chisq(const opts *o)
 {
   if (!o->have_bins) die(o->sub, "--bins K is required");
+  if (o->dist || o->cdf_file) die(o->sub, "--dist and --cdf are for ks and kuiper; chisq bins [A, B] (--uniform A B)");
   nl_table *t = read_table(o, o->files[0]);
   double *x = column(o, t, o->files[0]);
-  nl_stats_chisq_result r;
+  nl_stats_chisq_result c;
   nl_error err;
-  char b1[32], b2[32], b3[32];
-  if (nl_stats_chisq_test_uniform(x, t->nrows, (size_t)o->bins, o->a, o->b, &r, &err))
+  if (nl_stats_chisq_test_uniform(x, t->nrows, (size_t)o->bins, o->a, o->b, &c, &err))
     fail_lib(o, o->files[0], &err);
-  printf("chi2=%s df=%zu p=%s min_expected=%s\n", fmt(b1, r.chi2), r.df, fmt(b2, r.p),
-         fmt(b3, r.min_expected));
-  if (r.low_expected)
+  record r = {0};
+  rec_num(&r, "chi2", c.chi2);
+  rec_size(&r, "df", c.df);
+  rec_num(&r, "p", c.p);
+  rec_num(&r, "min_expected", c.min_expected);
+  emit(o, &r, 1);
+  if (c.low_expected)
     fprintf(stderr, PROG " chisq: note: expected counts %s < 5; the chi-square p-value is unreliable\n",
-            b3);
+            r.val[3]);
   free(x);
   nl_table_free(t);
 }
@@ -243,7 +433,7 @@ static void run_hclust(const opts *o)
 {
   nl_cluster_linkage_method m;
   nl_error err;
-  if (!o->linkage) die(o->sub, "--linkage single|complete|average is required");
+  if (!o->linkage) die(o->sub, "--linkage single|complete|average|ward is required");
   if (nl_cluster_linkage_method_parse(o->linkage, &m, &err)) die(o->sub, err.msg);
   if (o->have_cutoff == o->have_clusters) die(o->sub, "give exactly one of --cutoff C and --clusters K");
   nl_table *t = read_table(o, o->files[0]);
@@ -267,16 +457,22 @@ static void run_hclust(const opts *o)
     for (size_t i = 0; i + 1 < n; i++) nl_table_append_doubles(mt, Z + 4 * i);
     write_or_die(o, mt, o->merges_out);
   }
-  printf("clusters=%zu\n", k);
+  record r = {0};
+  rec_size(&r, "clusters", k);
+  emit(o, &r, 1);
   free(Z); free(lab);
   nl_table_free(t);
 }
 
-static void print_fit(size_t k, double ll, double aic, double bic, size_t it, int conv)
+static void fit_record(record *r, size_t n, size_t k, double ll, double aic, double bic, size_t it, int conv)
 {
-  char b1[32], b2[32], b3[32];
-  printf("k=%zu loglik=%s aic=%s bic=%s iterations=%zu converged=%d\n", k, fmt(b1, ll),
-         fmt(b2, aic), fmt(b3, bic), it, conv);
+  rec_size(r, "k", k);
+  rec_num(r, "loglik", ll);
+  rec_num(r, "score", ll / (double)n);   /* sklearn GaussianMixture.score: mean log-likelihood per row */
+  rec_num(r, "aic", aic);
+  rec_num(r, "bic", bic);
+  rec_size(r, "iterations", it);
+  rec_size(r, "converged", (size_t)conv);
 }
 
 static void write_params(const opts *o, const nl_gmm *g)
@@ -310,6 +506,17 @@ static void note_constant_columns(const opts *o, const nl_table *t)
   }
 }
 
+/* A model with more free parameters than the data has numbers fits
+ * anything: EM "converges" on a likelihood that means nothing. One line. */
+static void warn_overparameterised(const opts *o, const nl_table *t, size_t k, nl_gmm_covariance cov)
+{
+  size_t m = nl_gmm_nparams(k, t->ncols, cov), numbers = t->nrows * t->ncols;
+  if (m > numbers)
+    fprintf(stderr, PROG " gmm: warning: %s: k = %zu components (%s covariance) have %zu free "
+            "parameters, more than the %zu numbers of the data (%zu rows x %zu columns); the fit is not meaningful\n",
+            shown(o->files[0]), k, cov == NL_GMM_FULL ? "full" : "diag", m, numbers, t->nrows, t->ncols);
+}
+
 static void run_gmm(const opts *o)
 {
   if (o->have_k == o->have_select) die(o->sub, "give exactly one of --k K and --select-aic K0 T");
@@ -334,7 +541,10 @@ static void run_gmm(const opts *o)
     if (nl_gmm_check_size(n, d, (size_t)o->k, go.covariance, &err)) fail_lib(o, o->files[0], &err);
     g = nl_gmm_alloc((size_t)o->k, d, go.covariance);
     if (nl_gmm_fit(g, t->num, n, &go, &err)) fail_lib(o, o->files[0], &err);
-    print_fit(g->k, g->loglik, g->aic, g->bic, g->iterations, g->converged);
+    record r = {0};
+    fit_record(&r, n, g->k, g->loglik, g->aic, g->bic, g->iterations, g->converged);
+    emit(o, &r, 1);
+    warn_overparameterised(o, t, g->k, go.covariance);
   } else {
     if ((size_t)o->k0 > n) {
       char m[NL_ERROR_LEN];
@@ -345,10 +555,16 @@ static void run_gmm(const opts *o)
     nl_gmm_step *path = nl_xmalloc((kmax - (size_t)o->k0 + 1) * sizeof *path);
     if (nl_gmm_select_aic(t->num, n, d, (size_t)o->k0, o->thresh, kmax, &go, &g, path, &np, &err))
       fail_lib(o, o->files[0], &err);
-    for (size_t i = 0; i < np; i++)
-      print_fit(path[i].k, path[i].loglik, path[i].aic, path[i].bic, path[i].iterations,
-                path[i].converged);
-    printf("selected=%zu\n", g->k);
+    record *r = nl_xcalloc(np + 1, sizeof *r);
+    for (size_t i = 0; i < np; i++) {
+      fit_record(&r[i], n, path[i].k, path[i].loglik, path[i].aic, path[i].bic, path[i].iterations,
+                 path[i].converged);
+      if (o->format != OUT_KV) rec_size(&r[i], "selected", path[i].k == g->k);
+    }
+    emit(o, r, np);
+    if (o->format == OUT_KV) printf("selected=%zu\n", g->k);
+    warn_overparameterised(o, t, path[np - 1].k, go.covariance);
+    free(r);
     free(path);
   }
   note_constant_columns(o, t);
@@ -379,7 +595,7 @@ int main(int argc, char **argv)
     fprintf(stderr, PROG ": unknown subcommand '%s' (ks, ks2, kuiper, chisq, hclust, gmm)\n", o.sub);
     return 2;
   }
-  for (int i = 2; i < argc; i++)
+  for (int i = 2; i < argc && strcmp(argv[i], "--"); i++)
     if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) { fputs(help, stdout); return 0; }
   parse(argc, argv, &o);
   if (o.nfiles == 0) die(o.sub, "no input file (see --help)");

@@ -284,24 +284,36 @@ static nl_table *plan_check(const nl_sweep_plan *pl)
   return plan_definition(pl);
 }
 
+/* nl_opt with the sweep's exit: an option error is one line, exit 2. */
+static int next_opt(nl_opt_parser *p, const char *context)
+{
+  nl_error err;
+  int k = nl_opt_next(p, &err);
+  if (k == NL_OPT_ERROR) nl_sweep_die("%s%s", context, err.msg);
+  return k;
+}
+
 static int nl_sweep_plan_main(int argc, char **argv)
 {
   nl_sweep_plan pl = {.seed = 1, .seeds = 1, .task_seeds = 1};
   pl.p = nl_xcalloc((size_t)argc, sizeof *pl.p);
-  for (int i = 0; i < argc; i++) {
-    const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-    int opt = !strncmp(a, "--", 2);
-    if (opt && !v) nl_sweep_die("%s: missing value", a);
-    if (!strcmp(a, "--experiment")) pl.experiment = v;
-    else if (!strcmp(a, "--out")) pl.out = v;
-    else if (!strcmp(a, "--seed")) pl.seed = plan_long(a, v, 0, 4294967295L);
-    else if (!strcmp(a, "--seeds")) pl.seeds = plan_long(a, v, 1, 100000);
-    else if (!strcmp(a, "--task-seeds")) pl.task_seeds = plan_long(a, v, 1, 10000);
-    else if (!strcmp(a, "--quick")) pl.quick = plan_long(a, v, 0, 1);
-    else if (opt) nl_sweep_die("plan: unknown option %s", a);
-    else { nl_sweep_expand(&pl.p[pl.np++], a); continue; }
-    i++;
+  static const nl_opt_spec spec[] = {{"experiment", 0, 1}, {"out", 0, 1}, {"seed", 0, 1}, {"seeds", 0, 1},
+                                     {"task-seeds", 0, 1}, {"quick", 0, 1}, {NULL, 0, 0}};
+  nl_opt_parser op;
+  nl_opt_begin(&op, argc, argv, 0, spec);   /* first 0: argv[-1] is the subcommand word, getopt's argv[0] */
+  for (int k; (k = next_opt(&op, "plan: ")) != NL_OPT_END;) {
+    const char *a = op.name, *v = op.value[0];
+    switch (k) {
+    case NL_OPT_POSITIONAL: nl_sweep_expand(&pl.p[pl.np++], v); break;
+    case 0: pl.experiment = v; break;
+    case 1: pl.out = v; break;
+    case 2: pl.seed = plan_long(a, v, 0, 4294967295L); break;
+    case 3: pl.seeds = plan_long(a, v, 1, 100000); break;
+    case 4: pl.task_seeds = plan_long(a, v, 1, 10000); break;
+    case 5: pl.quick = plan_long(a, v, 0, 1); break;
+    }
   }
+  nl_opt_end(&op);
   if (!pl.experiment) nl_sweep_die("plan: --experiment missing");
   if (pl.np == 0) nl_sweep_die("no --param NAME=SPEC given");
   nl_table *def = plan_check(&pl), *tasks = plan_tasks(&pl);
@@ -645,13 +657,18 @@ static int nl_sweep_merge_main(int argc, char **argv)
 {
   nl_sweep_merge m = {0};
   nl_sweep_merge_opts o = {0};
-  for (int i = 0; i < argc; i++) {
-    const char **slot = !strcmp(argv[i], "--table") ? &o.table : !strcmp(argv[i], "--y") ? &o.y : !strcmp(argv[i], "--x") ? &o.x : NULL;
-    if (slot) { if (i + 1 >= argc) nl_sweep_die("%s: missing value", argv[i]); *slot = argv[++i]; }
-    else if (argv[i][0] == '-') nl_sweep_die("merge: unknown option %s", argv[i]);
-    else if (m.dir) nl_sweep_die("merge: one folder only ('%s')", argv[i]);
-    else m.dir = argv[i];
+  static const nl_opt_spec spec[] = {{"table", 0, 1}, {"y", 0, 1}, {"x", 0, 1}, {NULL, 0, 0}};
+  nl_opt_parser op;
+  nl_opt_begin(&op, argc, argv, 0, spec);   /* first 0: argv[-1] is the subcommand word, getopt's argv[0] */
+  for (int k; (k = next_opt(&op, "merge: ")) != NL_OPT_END;) {
+    const char *v = op.value[0];
+    if (k == 0) o.table = v;
+    else if (k == 1) o.y = v;
+    else if (k == 2) o.x = v;
+    else if (m.dir) nl_sweep_die("merge: one folder only ('%s')", v);
+    else m.dir = v;
   }
+  nl_opt_end(&op);
   if (!m.dir) nl_sweep_die("merge: which sweep folder?");
   merge_load(&m);
   size_t nt;
@@ -926,38 +943,48 @@ static int nl_sweep_prepare_main(int argc, char **argv)
   char **specs = nl_xcalloc((size_t)argc + 1, sizeof *specs);
   int nspec = 0;
   if (jobs < 1) jobs = 1;
-  for (int i = 0; i < argc; i++) {
-    const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-    if (!strcmp(a, "--quick")) { pl.quick = 1; continue; }
-    if (!strcmp(a, "-h") || !strcmp(a, "--help")) { usage(stdout); exit(0); }
-    if (a[0] != '-') nl_sweep_die("one experiment per sweep, first ('%s', '%s')", pl.experiment ? pl.experiment : "", a);
-    static const char *const with_value[] = {"--experiment", "--exe", "--root", "--param", "--seeds", "--seed",
-                                             "--task-seeds", "--out", "--jobs", "--emit", "--cpus", "--mem", "--time"};
-    int known = 0;
-    for (size_t k = 0; k < sizeof with_value / sizeof *with_value; k++) known |= !strcmp(a, with_value[k]);
-    if (!known) nl_sweep_die("unknown option %s (scripts/noiselab sweep --help)", a);
-    if (!v) nl_sweep_die("%s: missing value", a);
-    i++;
-    if (!strcmp(a, "--experiment")) pl.experiment = v;
-    else if (!strcmp(a, "--exe")) exe = v;
-    else if (!strcmp(a, "--root")) root = v;
-    else if (!strcmp(a, "--param")) specs[nspec++] = argv[i];
-    else if (!strcmp(a, "--seeds")) pl.seeds = plan_long(a, v, 1, 100000);
-    else if (!strcmp(a, "--seed")) pl.seed = plan_long(a, v, 0, 4294967295L);
-    else if (!strcmp(a, "--task-seeds")) pl.task_seeds = plan_long(a, v, 1, 10000);
-    else if (!strcmp(a, "--out")) out = v;
-    else if (!strcmp(a, "--emit")) emit = v;
-    else if (!strcmp(a, "--mem")) mem = v;
-    else if (!strcmp(a, "--time")) time = v;
-    else if (!strcmp(a, "--jobs") || !strcmp(a, "--cpus")) {
+  enum { P_EXPERIMENT, P_EXE, P_ROOT, P_PARAM, P_SEEDS, P_SEED, P_TASK_SEEDS, P_OUT, P_JOBS, P_EMIT,
+         P_CPUS, P_MEM, P_TIME, P_QUICK, P_HELP };
+  static const nl_opt_spec spec[] = {
+    [P_EXPERIMENT] = {"experiment", 0, 1}, [P_EXE] = {"exe", 0, 1}, [P_ROOT] = {"root", 0, 1},
+    [P_PARAM] = {"param", 0, 1}, [P_SEEDS] = {"seeds", 0, 1}, [P_SEED] = {"seed", 0, 1},
+    [P_TASK_SEEDS] = {"task-seeds", 0, 1}, [P_OUT] = {"out", 0, 1}, [P_JOBS] = {"jobs", 0, 1},
+    [P_EMIT] = {"emit", 0, 1}, [P_CPUS] = {"cpus", 0, 1}, [P_MEM] = {"mem", 0, 1}, [P_TIME] = {"time", 0, 1},
+    [P_QUICK] = {"quick", 0, 0}, [P_HELP] = {"help", 'h', 0}, {NULL, 0, 0}};
+  nl_opt_parser op;
+  nl_opt_begin(&op, argc, argv, 0, spec);   /* first 0: argv[-1] is the subcommand word, getopt's argv[0] */
+  nl_error oerr;
+  for (int k; (k = nl_opt_next(&op, &oerr)) != NL_OPT_END;) {
+    const char *a = op.name, *v = op.value[0];
+    if (k == NL_OPT_ERROR) nl_sweep_die("%s (scripts/noiselab sweep --help)", oerr.msg);
+    switch (k) {
+    case NL_OPT_POSITIONAL:
+      nl_sweep_die("one experiment per sweep, first ('%s', '%s')", pl.experiment ? pl.experiment : "", v);
+    case P_QUICK: pl.quick = 1; break;
+    case P_HELP: usage(stdout); exit(0);
+    case P_EXPERIMENT: pl.experiment = v; break;
+    case P_EXE: exe = v; break;
+    case P_ROOT: root = v; break;
+    case P_PARAM: specs[nspec++] = (char *)v; break;
+    case P_SEEDS: pl.seeds = plan_long(a, v, 1, 100000); break;
+    case P_SEED: pl.seed = plan_long(a, v, 0, 4294967295L); break;
+    case P_TASK_SEEDS: pl.task_seeds = plan_long(a, v, 1, 10000); break;
+    case P_OUT: out = v; break;
+    case P_EMIT: emit = v; break;
+    case P_MEM: mem = v; break;
+    case P_TIME: time = v; break;
+    case P_JOBS: case P_CPUS: {
       long n;
-      char what[16];
+      char what[64];
       snprintf(what, sizeof what, "%s", a);
       if (!matches(v, "0123456789", 1)) nl_sweep_die("%s: '%s' is not a positive integer", a, v);
       n = plan_long(what, v, 1, 100000);
-      if (a[2] == 'j') jobs = n; else cpus = n;
+      if (k == P_JOBS) jobs = n; else cpus = n;
+      break;
+    }
     }
   }
+  nl_opt_end(&op);
   if (!pl.experiment || !exe) nl_sweep_die("prepare: --experiment and --exe are needed");
   if (nspec == 0) nl_sweep_die("no --param NAME=SPEC given");
   size_t ml = strlen(mem);

@@ -92,6 +92,53 @@ nl_status nl_parse_double(const char *what, const char *s, double lo, double hi,
 nl_status nl_parse_long(const char *what, const char *s, long lo, long hi,
                         long *out, nl_error *err);
 
+/* ---- command-line options (GNU style, on getopt_long) -------------------
+ *
+ * One parser for the tools: `--size 64` and `--size=64`, unique prefixes
+ * (`--col 2`), `-o FILE`, `--` ends the options, positional words returned
+ * in order where they stand. An option may take 0, 1 or 2 values (the
+ * second value is the word after the first: `--uniform 0 1`). The parser
+ * never prints or exits: an error is NL_OPT_ERROR with one line in err
+ * ("--bogus: unknown option", "--size: missing value", "--all: takes no
+ * value", "--s: ambiguous option (--seed, --size)"); the tool adds its name
+ * and exits.
+ *
+ *   static const nl_opt_spec spec[] = {{"size", 0, 1}, {"out", 'o', 1}, {"help", 'h', 0}, {0}};
+ *   nl_opt_parser p;
+ *   nl_opt_begin(&p, argc, argv, 1, spec);
+ *   for (int k; (k = nl_opt_next(&p, &err)) != NL_OPT_END; ) {
+ *     if (k == NL_OPT_ERROR) die(err.msg);
+ *     if (k == NL_OPT_POSITIONAL) file = p.value[0]; else ... p.name, p.value[0] ...
+ *   }
+ *   nl_opt_end(&p);
+ *
+ * getopt_long keeps global state, so one parser runs at a time. */
+typedef struct {
+  const char *name;   /* long name without "--", or NULL to end the table */
+  char short_name;    /* 'o' for -o, or 0 */
+  int nvalues;        /* 0, 1 or 2 */
+} nl_opt_spec;
+
+enum { NL_OPT_POSITIONAL = -1, NL_OPT_END = -2, NL_OPT_ERROR = -3 };
+
+typedef struct {
+  int argc;
+  char **argv;
+  const nl_opt_spec *spec;
+  void *longopts;        /* struct option[], owned */
+  char shorts[128];
+  int rest;              /* after "--": index of the next positional word */
+  const char *value[2];  /* the values of the option or the positional word */
+  char name[64];         /* "--size" (the full name even when abbreviated) or "-o" */
+} nl_opt_parser;
+
+/* Starts at argv[first]. */
+void nl_opt_begin(nl_opt_parser *p, int argc, char **argv, int first, const nl_opt_spec *spec);
+/* Index of the option in spec, NL_OPT_POSITIONAL (p->value[0] is the word),
+ * NL_OPT_END, or NL_OPT_ERROR (err holds the message). */
+int nl_opt_next(nl_opt_parser *p, nl_error *err);
+void nl_opt_end(nl_opt_parser *p);
+
 /* ---- the seed rule -----------------------------------------------------
  *
  * Every random stream in noiselab is derived by one rule from the run seed

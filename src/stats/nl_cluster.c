@@ -1,5 +1,5 @@
 /* nl_cluster.c - hierarchical clustering: MST single linkage, NN-chain
- * complete/average linkage, flat clusters. Follows scipy 1.10's
+ * complete/average/Ward linkage, flat clusters. Follows scipy 1.10's
  * scipy/cluster/_hierarchy.pyx (mst_single_linkage, nn_chain, label,
  * cluster_monocrit) so that outputs can be compared row by row. */
 #include "stats/nl_cluster.h"
@@ -10,10 +10,10 @@
 
 nl_status nl_cluster_linkage_method_parse(const char *name, nl_cluster_linkage_method *m, nl_error *err)
 {
-  static const char *names[] = {"single", "complete", "average"};
-  for (int i = 0; i < 3; i++)
+  static const char *names[] = {"single", "complete", "average", "ward"};
+  for (int i = 0; i < 4; i++)
     if (strcmp(name, names[i]) == 0) { *m = (nl_cluster_linkage_method)i; return NL_OK; }
-  return nl_fail(err, NL_EINVAL, "unknown linkage '%s' (single, complete or average)", name);
+  return nl_fail(err, NL_EINVAL, "unknown linkage '%s' (single, complete, average or ward)", name);
 }
 
 /* 8 lanes as two 4-wide vectors; GCC emits SSE2 pairs or, in the AVX2 clone,
@@ -124,7 +124,7 @@ static void linkage_single(const double *x, size_t n, size_t d, double *Z)
   free(merged);
 }
 
-/* ---- complete / average: nearest-neighbour chain ----------------------------- */
+/* ---- complete / average / ward: nearest-neighbour chain ----------------------------- */
 
 /* Row i < j of the condensed matrix, as scipy.spatial.distance.pdist stores it. */
 static inline size_t cidx(size_t n, size_t i, size_t j)
@@ -194,8 +194,16 @@ static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method meth
     for (size_t i = 0; i < n; i++) {
       if (size[i] == 0.0 || i == y) continue;
       double dx = D[cidx(n, i, x)], dy = D[cidx(n, i, y)];
-      D[cidx(n, i, y)] = method == NL_LINKAGE_COMPLETE ? fmax(dx, dy)
-                                                      : (nx * dx + ny * dy) / (nx + ny);
+      double v;
+      if (method == NL_LINKAGE_COMPLETE) v = fmax(dx, dy);
+      else if (method == NL_LINKAGE_AVERAGE) v = (nx * dx + ny * dy) / (nx + ny);
+      else {
+        /* Ward (Lance-Williams on Euclidean distances), in scipy's
+         * _hierarchy_distance_update.pxi _ward expression and order. */
+        double ni = size[i], t = 1.0 / (nx + ny + ni);
+        v = sqrt((ni + nx) * t * dx * dx + (ni + ny) * t * dy * dy - ni * t * dmin * dmin);
+      }
+      D[cidx(n, i, y)] = v;
     }
   }
   free(size);

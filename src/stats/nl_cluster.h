@@ -23,6 +23,12 @@
  *             complete d = max(d_ax, d_bx), average (UPGMA)
  *             d = (n_a d_ax + n_b d_bx) / (n_a + n_b); both are reducible,
  *             which the chain needs.
+ *   ward:     the same chain with Ward's Lance-Williams update on Euclidean
+ *             distances (Ward 1963; Muellner eq. in table 1), written as
+ *             scipy writes it, t = 1 / (n_a + n_b + n_x):
+ *             d = sqrt((n_x + n_a) t d_ax^2 + (n_x + n_b) t d_bx^2 - n_x t d_ab^2);
+ *             the height is sqrt(2 x the increase of the within-cluster sum
+ *             of squares), scipy.cluster.hierarchy.linkage(x, 'ward').
  * Distances sum (x_j - y_j)^2 in 8 fixed lanes, then take sqrt: the order of
  * the sum is fixed by the code, so results are identical on every x86-64
  * whether or not the AVX2 clone runs.
@@ -42,10 +48,11 @@
 typedef enum {
   NL_LINKAGE_SINGLE,
   NL_LINKAGE_COMPLETE,
-  NL_LINKAGE_AVERAGE
+  NL_LINKAGE_AVERAGE,
+  NL_LINKAGE_WARD
 } nl_cluster_linkage_method;
 
-/* "single", "complete", "average" -> method; NL_EINVAL otherwise. */
+/* "single", "complete", "average", "ward" -> method; NL_EINVAL otherwise. */
 nl_status nl_cluster_linkage_method_parse(const char *name, nl_cluster_linkage_method *m, nl_error *err);
 
 /* Euclidean distance between rows a and b of length d, and sum of squares

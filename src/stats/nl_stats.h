@@ -77,6 +77,34 @@ typedef double (*nl_stats_cdf_fn)(double x, void *params);
  * clipped to [0, 1]: (x - a) / (b - a), scipy.stats.uniform(a, b - a).cdf. */
 double nl_stats_cdf_uniform(double x, void *params);
 
+/* Named distributions with scipy's loc/scale convention, F(x) = F0((x - loc) / scale):
+ *   uniform  F0(z) = z on [0, 1]   (uniform on [loc, loc + scale]: scipy.stats.uniform)
+ *   norm     F0(z) = Phi(z)       (scipy.special.ndtr's erf/erfc split: scipy.stats.norm)
+ *   expon    F0(z) = 1 - e^-z, z >= 0 (as -expm1(-z): scipy.stats.expon)
+ * and a tabulated CDF (points x_i strictly increasing, F_i non-decreasing in
+ * [0, 1]) interpolated linearly and constant beyond its ends (numpy.interp).
+ *   nl_stats_dist dist;
+ *   nl_stats_dist_init(&dist, NL_DIST_NORM, 0.0, 1.0, &err);   // or nl_stats_dist_table
+ *   nl_stats_ks_test(x, n, nl_stats_dist_cdf, &dist, &r, &err); // scipy.stats.kstest(x, 'norm')
+ * A table's arrays are not copied: they must outlive the dist. */
+typedef enum { NL_DIST_UNIFORM, NL_DIST_NORM, NL_DIST_EXPON, NL_DIST_TABLE } nl_stats_dist_kind;
+typedef struct {
+  nl_stats_dist_kind kind;
+  double loc, scale;
+  size_t m;
+  const double *x, *F;
+} nl_stats_dist;
+/* "uniform", "norm", "expon" -> kind; NL_EINVAL otherwise. */
+nl_status nl_stats_dist_parse(const char *name, nl_stats_dist_kind *kind, nl_error *err);
+const char *nl_stats_dist_name(nl_stats_dist_kind kind);
+/* scale > 0 and loc finite, else NL_EINVAL. */
+nl_status nl_stats_dist_init(nl_stats_dist *d, nl_stats_dist_kind kind, double loc, double scale,
+                             nl_error *err);
+nl_status nl_stats_dist_table(nl_stats_dist *d, const double *x, const double *F, size_t m,
+                              nl_error *err);
+/* An nl_stats_cdf_fn; params is an nl_stats_dist *. */
+double nl_stats_dist_cdf(double x, void *params);
+
 typedef enum {
   NL_KS_RUBEN_GAMBINO,   /* closed forms, D <= 1/n or D >= 1 - 1/n */
   NL_KS_SMIRNOV,         /* 2 x one-sided exact Smirnov tail */

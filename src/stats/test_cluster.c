@@ -81,7 +81,23 @@ NL_TEST(bad_input)
   NL_CHECK(nl_cluster_fcluster_distance(Z, 3, -1.0, lab, NULL, &err) == NL_EINVAL && strstr(err.msg, ">= 0"));
   NL_CHECK(nl_cluster_fcluster_maxclust(Z, 3, 0, lab, NULL, &err) == NL_EINVAL);
   nl_cluster_linkage_method m;
-  NL_CHECK(nl_cluster_linkage_method_parse("ward", &m, &err) == NL_EINVAL);
+  NL_CHECK(nl_cluster_linkage_method_parse("median", &m, &err) == NL_EINVAL);
+  NL_CHECK(nl_cluster_linkage_method_parse("ward", &m, &err) == NL_OK && m == NL_LINKAGE_WARD);
+}
+
+/* Ward on four points of a line, worked by hand: {0,1} and {10,11} merge at
+ * sqrt(2 * 0.5) = 1 each (the height is sqrt(2 x the increase in the sum
+ * of squares, 1/2)); the last merge joins two pairs whose centres are 10
+ * apart: increase 2*2/4 * 100 = 100, height sqrt(200). */
+NL_TEST(ward_by_hand)
+{
+  double x[] = {0, 1, 10, 11}, Z[12];
+  nl_error err;
+  NL_CHECK(nl_cluster_linkage(x, 4, 1, NL_LINKAGE_WARD, Z, &err) == NL_OK);
+  NL_CHECK_NEAR(Z[2], 1.0, 1e-15);
+  NL_CHECK_NEAR(Z[6], 1.0, 1e-15);
+  NL_CHECK_NEAR(Z[10], sqrt(200.0), 1e-13);
+  NL_CHECK(Z[11] == 4.0);
 }
 
 /* 3 million rows need ~36 TB of distances: refused at once with the size

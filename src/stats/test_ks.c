@@ -235,4 +235,29 @@ NL_TEST(bad_input_is_an_error)
   NL_CHECK(nl_stats_chisq_test_uniform(y, 3, 2, 0, 1, &c, &err) == NL_EINVAL && strstr(err.msg, "outside"));
 }
 
+/* Named distributions with loc/scale, and the tabulated CDF (numpy.interp
+ * semantics); values from scipy 1.10 (norm.cdf, expon.cdf, uniform.cdf). */
+NL_TEST(named_and_tabulated_cdfs)
+{
+  nl_stats_dist d;
+  nl_error err;
+  NL_CHECK(nl_stats_dist_init(&d, NL_DIST_NORM, 1.0, 2.0, &err) == NL_OK);
+  NL_CHECK(nl_stats_dist_cdf(1.0, &d) == 0.5);
+  NL_CHECK_NEAR(nl_stats_dist_cdf(-9.0, &d), 2.866515718791933e-07, 1e-13 * 2.87e-07);   /* erfc tail: relative accuracy kept */
+  NL_CHECK(nl_stats_dist_init(&d, NL_DIST_EXPON, 0.5, 2.0, &err) == NL_OK);
+  NL_CHECK(nl_stats_dist_cdf(0.4, &d) == 0.0);
+  NL_CHECK_NEAR(nl_stats_dist_cdf(2.5, &d), 0.6321205588285577, 1e-15);
+  NL_CHECK(nl_stats_dist_init(&d, NL_DIST_UNIFORM, 2.0, 3.0, &err) == NL_OK);
+  NL_CHECK(nl_stats_dist_cdf(3.5, &d) == 0.5 && nl_stats_dist_cdf(9, &d) == 1.0 && nl_stats_dist_cdf(1, &d) == 0.0);
+  NL_CHECK(nl_stats_dist_init(&d, NL_DIST_NORM, 0.0, 0.0, &err) == NL_EINVAL);
+  nl_stats_dist_kind k;
+  NL_CHECK(nl_stats_dist_parse("expon", &k, &err) == NL_OK && k == NL_DIST_EXPON);
+  NL_CHECK(nl_stats_dist_parse("gamma", &k, &err) == NL_EINVAL && strstr(err.msg, "gamma"));
+  double xs[] = {0.0, 1.0, 3.0}, F[] = {0.0, 0.5, 1.0}, bad[] = {0.0, 0.6, 0.5};
+  NL_CHECK(nl_stats_dist_table(&d, xs, F, 3, &err) == NL_OK);
+  NL_CHECK(nl_stats_dist_cdf(-1, &d) == 0.0 && nl_stats_dist_cdf(0.5, &d) == 0.25);
+  NL_CHECK(nl_stats_dist_cdf(2.0, &d) == 0.75 && nl_stats_dist_cdf(3.0, &d) == 1.0 && nl_stats_dist_cdf(7, &d) == 1.0);
+  NL_CHECK(nl_stats_dist_table(&d, xs, bad, 3, &err) == NL_EINVAL && strstr(err.msg, "decreases"));
+}
+
 int main(void) { return nl_test_run(); }

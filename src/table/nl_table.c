@@ -156,6 +156,21 @@ static size_t split(char *line, int ws, char **f, size_t max)
 {
   size_t n = 0;
   char *p = line;
+  if (ws == 2) {   /* CSV: commas; blanks and one pair of double quotes around a field dropped */
+    for (;;) {
+      char *comma = strchr(p, ',');
+      if (comma) *comma = '\0';
+      while (*p == ' ' || *p == '\t') p++;
+      char *e = p + strlen(p);
+      while (e > p && (e[-1] == ' ' || e[-1] == '\t')) *--e = '\0';
+      if (e - p >= 2 && *p == '"' && e[-1] == '"') { e[-1] = '\0'; p++; }
+      if (n < max) f[n] = p;
+      n++;
+      if (!comma) break;
+      p = comma + 1;
+    }
+    return n;
+  }
   if (ws) {
     for (;;) {
       while (*p == ' ' || *p == '\t') p++;
@@ -249,6 +264,7 @@ static nl_status read_rows(FILE *fp, const char *path, int flags, nl_table **out
   nl_table *t = NULL;
   nl_status s = NL_OK;
   int ws = (flags & NL_TABLE_WHITESPACE) != 0, got;
+  if (flags & NL_TABLE_CSV) ws = 2;
   while ((got = read_line(fp, &line, &cap, &len)) != 0) {
     lineno++;
     if (got < 0) {
@@ -264,6 +280,8 @@ static nl_status read_rows(FILE *fp, const char *path, int flags, nl_table **out
     if (line[0] == '#' || blank(line)) continue;
     size_t len = strlen(line) + 1;   /* an upper bound on the field count */
     if (len > fmax) { fmax = len; f = nl_xrealloc(f, fmax * sizeof *f); }
+    /* NL_TABLE_CSV_AUTO: the first line decides; commas and no tab is CSV. */
+    if (!t && (flags & NL_TABLE_CSV_AUTO) && strchr(line, ',') && !strchr(line, '\t')) ws = 2;
     size_t n = split(line, ws, f, fmax);
     if (!t) {
       int header = 1;
@@ -305,7 +323,8 @@ static nl_status read_rows(FILE *fp, const char *path, int flags, nl_table **out
         break;
       } else if (flags & NL_TABLE_TEXT) t->text[r * t->ncols + c] = nl_xstrdup(f[c]);
       else {
-        s = nl_fail(err, NL_EFORMAT, "%s:%zu: column '%s' holds '%s', not a number", path, lineno, t->names[c], f[c]);
+        s = nl_fail(err, NL_EFORMAT, "%s:%zu: column '%s' holds '%s', not a number%s", path, lineno, t->names[c], f[c],
+                    ws != 2 && strchr(f[c], ',') ? " (commas: a CSV file? it is read as tab/blank-separated here)" : "");
         break;
       }
     }

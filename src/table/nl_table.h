@@ -12,7 +12,10 @@
  *
  * Reading:
  *   nl_table_read(path, flags, &t, &err)
- * Rows are split on tabs (or any run of blanks with NL_TABLE_WHITESPACE).
+ * Rows are split on tabs (or any run of blanks with NL_TABLE_WHITESPACE, or
+ * commas with NL_TABLE_CSV; NL_TABLE_CSV_AUTO takes CSV when the first line
+ * has a comma and no tab). A cell holding a comma in a table not read as CSV
+ * is refused with a message that says the file looks comma-separated.
  * Rejected with "file:line: reason": an empty file, ragged rows, cells that
  * are not numbers (unless NL_TABLE_TEXT allows text columns), NaN and inf.
  * The first line is a header; with NL_TABLE_HEADER_AUTO it is a header only
@@ -39,7 +42,9 @@ typedef struct nl_table {
 enum {
   NL_TABLE_TEXT = 1,         /* reader: allow non-numeric cells */
   NL_TABLE_HEADER_AUTO = 2,  /* reader: header line optional */
-  NL_TABLE_WHITESPACE = 4    /* reader: split on runs of spaces/tabs */
+  NL_TABLE_WHITESPACE = 4,   /* reader: split on runs of spaces/tabs */
+  NL_TABLE_CSV = 8,          /* reader: split on commas (blanks and "quotes" around a field dropped) */
+  NL_TABLE_CSV_AUTO = 16     /* reader: CSV if the first line has a comma and no tab */
 };
 
 nl_table *nl_table_alloc(size_t ncols, const char *const *names);

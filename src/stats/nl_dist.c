@@ -1,0 +1,91 @@
+/* nl_dist.c - named continuous distributions with scipy's loc/scale
+ * convention, and a tabulated CDF, for the one-sample tests (nl_stats.h). */
+#include "stats/nl_stats.h"
+
+#include <math.h>
+#include <string.h>
+
+static const char *dist_names[] = {"uniform", "norm", "expon"};
+
+nl_status nl_stats_dist_parse(const char *name, nl_stats_dist_kind *kind, nl_error *err)
+{
+  for (int i = 0; i < 3; i++)
+    if (!strcmp(name, dist_names[i])) { *kind = (nl_stats_dist_kind)i; return NL_OK; }
+  return nl_fail(err, NL_EINVAL, "unknown distribution '%s' (uniform, norm or expon)", name);
+}
+
+const char *nl_stats_dist_name(nl_stats_dist_kind kind)
+{
+  return kind == NL_DIST_TABLE ? "table" : dist_names[kind];
+}
+
+nl_status nl_stats_dist_init(nl_stats_dist *d, nl_stats_dist_kind kind, double loc, double scale,
+                             nl_error *err)
+{
+  if (!isfinite(loc)) return nl_fail(err, NL_EINVAL, "loc %g is not finite", loc);
+  if (!(scale > 0) || !isfinite(scale))
+    return nl_fail(err, NL_EINVAL, "scale %g must be positive and finite", scale);
+  memset(d, 0, sizeof *d);
+  d->kind = kind;
+  d->loc = loc;
+  d->scale = scale;
+  return NL_OK;
+}
+
+nl_status nl_stats_dist_table(nl_stats_dist *d, const double *x, const double *F, size_t m,
+                              nl_error *err)
+{
+  if (m < 2) return nl_fail(err, NL_EINVAL, "a tabulated CDF needs at least 2 points, got %zu", m);
+  for (size_t i = 0; i < m; i++) {
+    if (!isfinite(x[i]) || !(F[i] >= 0.0 && F[i] <= 1.0))
+      return nl_fail(err, NL_EINVAL, "CDF point %zu: (%g, %g) is not a finite x with F in [0, 1]", i + 1, x[i], F[i]);
+    if (i && !(x[i] > x[i - 1]))
+      return nl_fail(err, NL_EINVAL, "CDF point %zu: x = %g does not increase (previous %g)", i + 1, x[i], x[i - 1]);
+    if (i && F[i] < F[i - 1])
+      return nl_fail(err, NL_EINVAL, "CDF point %zu: F = %g decreases (previous %g)", i + 1, F[i], F[i - 1]);
+  }
+  memset(d, 0, sizeof *d);
+  d->kind = NL_DIST_TABLE;
+  d->m = m;
+  d->x = x;
+  d->F = F;
+  return NL_OK;
+}
+
+/* scipy.special.ndtr (cephes ndtr.c): erf near 0, erfc in the tails, so
+ * both tails keep their relative accuracy. */
+static double ndtr(double a)
+{
+  double x = a * M_SQRT1_2, z = fabs(x);
+  if (z < M_SQRT1_2) return 0.5 + 0.5 * erf(x);
+  double y = 0.5 * erfc(z);
+  return x > 0 ? 1.0 - y : y;
+}
+
+/* numpy.interp: constant beyond the ends, slope * (t - x_j) + F_j inside. */
+static double interp(const nl_stats_dist *d, double t)
+{
+  size_t m = d->m;
+  if (t <= d->x[0]) return d->F[0];
+  if (t >= d->x[m - 1]) return d->F[m - 1];
+  size_t lo = 0, hi = m - 1;   /* x[lo] <= t < x[hi] */
+  while (hi - lo > 1) {
+    size_t mid = lo + (hi - lo) / 2;
+    if (d->x[mid] <= t) lo = mid; else hi = mid;
+  }
+  double slope = (d->F[hi] - d->F[lo]) / (d->x[hi] - d->x[lo]);
+  return slope * (t - d->x[lo]) + d->F[lo];
+}
+
+double nl_stats_dist_cdf(double x, void *params)
+{
+  const nl_stats_dist *d = params;
+  if (d->kind == NL_DIST_TABLE) return interp(d, x);
+  double z = (x - d->loc) / d->scale;   /* scipy's rv_continuous.cdf: standardise first */
+  switch (d->kind) {
+  case NL_DIST_UNIFORM: return z <= 0.0 ? 0.0 : z >= 1.0 ? 1.0 : z;
+  case NL_DIST_NORM: return ndtr(z);
+  case NL_DIST_EXPON: return z <= 0.0 ? 0.0 : -expm1(-z);
+  default: return NAN;
+  }
+}

@@ -1,0 +1,113 @@
+#!/usr/bin/python3
+"""Reference vectors for `noiselab stat` (issue 18.4): one-sample KS against
+named distributions with scipy's loc/scale convention and against a
+tabulated CDF, Kuiper's V against the same CDFs, Ward linkage.
+
+Writes TSV/CSV files to tests/reference/stat_cli/; tests/cli_stat.sh reads
+only those, so the tests need no Python. Regenerate with Debian's scipy:
+
+    /usr/bin/python3 tests/reference/make_stat_cli_vectors.py
+
+Made with scipy 1.10.1, numpy 1.24.2 (Debian 12). Samples come from
+numpy.random.default_rng with fixed seeds, so the script is deterministic.
+"""
+import os
+
+import numpy as np
+import scipy
+import scipy.cluster.hierarchy as sch
+import scipy.stats as st
+
+OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "stat_cli")
+
+
+def fmt(v):
+    if isinstance(v, (str, np.str_)):
+        return str(v)
+    if isinstance(v, (int, np.integer)):
+        return str(int(v))
+    return repr(float(v))
+
+
+def write(name, cols, rows, sep="\t"):
+    with open(os.path.join(OUT, name), "w") as f:
+        f.write(sep.join(cols) + "\n")
+        for r in rows:
+            f.write(sep.join(fmt(v) for v in r) + "\n")
+
+
+def kuiper_v(u):
+    """Kuiper's V = D+ + D- of sorted CDF values u (scipy has no Kuiper test;
+    the p-value is checked in src/stats against astropy, tests/data/stats)."""
+    u = np.sort(u)
+    n = len(u)
+    i = np.arange(1, n + 1)
+    return np.max(i / n - u) + np.max(u - (i - 1) / n)
+
+
+def make_ks():
+    rng = np.random.default_rng(20261123)
+    # (sample file, how drawn, distribution tested, loc, scale)
+    samples = {
+        "norm_200.tsv": rng.normal(0.0, 1.0, 200),
+        "norm_shift_300.tsv": rng.normal(0.25, 1.2, 300),
+        "expon_150.tsv": 0.5 + rng.exponential(2.0, 150),
+        "unif_80.tsv": rng.uniform(2.0, 5.0, 80),
+        "beta_120.tsv": rng.beta(2.0, 1.0, 120),
+        "u01_100.tsv": rng.uniform(0.0, 1.0, 100),
+    }
+    for name, x in samples.items():
+        write(name, ["x"], [[v] for v in x])
+    # the same normal sample as CSV, with a header, to check the CSV reader
+    write("norm_200.csv", ["x", "twice"], [[v, 2 * v] for v in samples["norm_200.tsv"]], sep=",")
+    # a tabulated CDF: F(x) = x^2 on [0, 1] (Beta(2, 1)) at 11 points
+    xp = np.linspace(0.0, 1.0, 11)
+    fp = xp ** 2
+    write("cdf_beta21.tsv", ["x", "F"], [[a, b] for a, b in zip(xp, fp)])
+    cases = [
+        ("norm_200.tsv", "norm", 0.0, 1.0),
+        ("norm_200.tsv", "norm", 0.1, 0.9),
+        ("norm_shift_300.tsv", "norm", 0.0, 1.0),
+        ("norm_shift_300.tsv", "norm", 0.25, 1.2),
+        ("expon_150.tsv", "expon", 0.5, 2.0),
+        ("expon_150.tsv", "expon", 0.0, 1.0),
+        ("unif_80.tsv", "uniform", 2.0, 3.0),
+        ("unif_80.tsv", "uniform", 1.9, 3.5),
+        ("beta_120.tsv", "cdf_beta21.tsv", 0.0, 1.0),
+        ("u01_100.tsv", "cdf_beta21.tsv", 0.0, 1.0),
+    ]
+    rows = []
+    for fname, dist, loc, scale in cases:
+        x = samples[fname]
+        if dist.endswith(".tsv"):
+            cdf = lambda t: np.interp(t, xp, fp)
+            r = st.kstest(x, cdf)
+            u = cdf(x)
+        else:
+            r = st.kstest(x, dist, args=(loc, scale))
+            u = getattr(st, dist).cdf(x, loc, scale)
+        rows.append([fname, dist, loc, scale, r.statistic, r.pvalue, kuiper_v(u)])
+    write("ks_dist.tsv", ["file", "dist", "loc", "scale", "D", "p", "V"], rows)
+
+
+def make_ward():
+    rng = np.random.default_rng(7)
+    centres = np.array([[0.0, 0.0, 0.0], [4.0, 0.5, 1.0], [1.0, 5.0, -1.0], [5.0, 5.0, 3.0]])
+    X = np.vstack([c + rng.normal(0, 0.8, (15, 3)) for c in centres])
+    write("ward_X.tsv", ["x0", "x1", "x2"], X.tolist())
+    Z = sch.linkage(X, "ward")
+    write("ward_Z.tsv", ["a", "b", "dist", "size"], Z.tolist())
+    write("ward_labels.tsv", ["maxclust_4", "distance_6"],
+          np.array([sch.fcluster(Z, 4, "maxclust"), sch.fcluster(Z, 6.0, "distance")]).T.tolist())
+
+
+def main():
+    os.makedirs(OUT, exist_ok=True)
+    make_ks()
+    make_ward()
+    with open(os.path.join(OUT, "VERSIONS"), "w") as f:
+        f.write(f"scipy {scipy.__version__}\nnumpy {np.__version__}\n")
+
+
+if __name__ == "__main__":
+    main()
