@@ -140,19 +140,26 @@ double nl_byexample_nnls(const double *M, int m, int n, const double *b, double 
   return residual(M, m, n, b, x, NULL);
 }
 
-void nl_byexample_estimate(const nl_byexample_transfer *T, int kind, const double *img, double *wts)
+/* The weights of estimator `kind` from the image's raw and tapered band powers. */
+static void solve(const nl_byexample_transfer *T, int kind, const double p[2][MAXB], double *wts)
 {
   int nb = T->nbands, taper = kind == NL_BYEX_EQ12_HANN || kind == NL_BYEX_CORRECTED;
-  double p[MAXB], M[MAXB * MAXB];
-  nl_byexample_band_power_taper(img, T->w, T->h, nb, taper, p);
+  double M[MAXB * MAXB] = {0};
   if (kind == NL_BYEX_EQ12 || kind == NL_BYEX_EQ12_HANN) {   /* eq. 12 */
-    for (int k = 0; k < nb; k++) wts[k] = sqrt(p[k] / T->sigma2);
+    for (int k = 0; k < nb; k++) wts[k] = sqrt(p[taper][k] / T->sigma2);
     return;
   }
   for (int i = 0; i < nb; i++)   /* p_j = sum_i A[i][j] w_i^2: M = A^T */
     for (int j = 0; j < nb; j++) M[j * nb + i] = T->A[taper][i * nb + j];
-  nl_byexample_nnls(M, nb, nb, p, wts);   /* at the limit x is still >= 0: use it */
+  nl_byexample_nnls(M, nb, nb, p[taper], wts);   /* at the iteration limit x is still >= 0: used */
   for (int k = 0; k < nb; k++) wts[k] = sqrt(wts[k]);
+}
+
+void nl_byexample_estimate(const nl_byexample_transfer *T, int kind, const double *img, double *wts)
+{
+  double p[2][MAXB];
+  powers(img, T->w, T->h, T->nbands, p[0], p[1]);
+  solve(T, kind, p, wts);
 }
 
 void nl_byexample_trial(const nl_byexample_transfer *T, nl_wavelet_tile *t, unsigned long seed, int nfine,
@@ -167,9 +174,11 @@ void nl_byexample_trial(const nl_byexample_transfer *T, nl_wavelet_tile *t, unsi
   nl_wavelet_bands b;
   nl_wavelet_bands_init(&b, nb, truth, t->n, seed, NULL);
   nl_wavelet_bands_grid(t, &b, T->w, T->h, 0, 1, img);
+  double p[2][MAXB];
+  powers(img, T->w, T->h, nb, p[0], p[1]);
   for (int e = 0; e < NL_BYEX_ESTIMATORS; e++) {
     double *w = est + e * nb, se = 0, st = 0, sef = 0, stf = 0, pe = 0;
-    nl_byexample_estimate(T, e, img, w);
+    solve(T, e, p, w);
     for (int k = 0; k < nb; k++) {
       double d2 = (w[k] - truth[k]) * (w[k] - truth[k]), t2 = truth[k] * truth[k];
       se += d2; st += t2; pe += w[k] * w[k];
@@ -179,6 +188,46 @@ void nl_byexample_trial(const nl_byexample_transfer *T, nl_wavelet_tile *t, unsi
     fine[e] = stf > 0 ? sqrt(sef / stf) : 0;
     power[e] = pe / st;
   }
+}
+
+void nl_byexample_trials(const nl_byexample_transfer *T, nl_wavelet_tile *t, const unsigned long *seeds, int n,
+                         int nfine, double *E, double *rms, double *bias)
+{
+  enum { NE = NL_BYEX_ESTIMATORS };
+  int nb = T->nbands;
+  double truth[MAXB], est[NE * MAXB], e[NE], f[NE], pw[NE], sq[NE * MAXB] = {0}, sum[NE * MAXB] = {0};
+  double *img = nl_xmalloc((size_t)T->w * T->h * sizeof *img);
+  for (int k = 0; k < n; k++) {
+    nl_byexample_trial(T, t, seeds[k], nfine, truth, est, img, e, f, pw);
+    for (int q = 0; q < NE; q++) {
+      E[(0 * NE + q) * n + k] = e[q];
+      E[(1 * NE + q) * n + k] = f[q];
+      E[(2 * NE + q) * n + k] = pw[q];
+      for (int b = 0; b < nb; b++) {
+        double d = est[q * nb + b] - truth[b];
+        sq[q * nb + b] += d * d;
+        sum[q * nb + b] += d;
+      }
+    }
+  }
+  for (int i = 0; i < NE * nb; i++) {
+    if (rms) rms[i] = sqrt(sq[i] / n);
+    if (bias) bias[i] = sum[i] / n;
+  }
+  free(img);
+}
+
+int nl_byexample_fit_all(const double *img, int w, int h, int tile, int nseeds, unsigned long tseed, int nsyn,
+                         unsigned long rseed, double resid[NL_BYEX_ESTIMATORS][2])
+{
+  nl_byexample_transfer T;
+  double wts[MAXB];
+  nl_byexample_transfer_measure(&T, tile, w, h, nl_byexample_band_count(w, h), nseeds, tseed);
+  for (int q = 0; q < NL_BYEX_ESTIMATORS; q++) {
+    nl_byexample_estimate(&T, q, img, wts);
+    nl_byexample_fit_residual(&T, wts, img, nsyn, rseed, resid[q]);
+  }
+  return T.nbands;
 }
 
 void nl_byexample_fit_residual(const nl_byexample_transfer *T, const double *wts, const double *img,

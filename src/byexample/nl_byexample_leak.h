@@ -69,6 +69,12 @@ double nl_byexample_nnls(const double *M, int m, int n, const double *b, double 
 void nl_byexample_trial(const nl_byexample_transfer *T, nl_wavelet_tile *t, unsigned long seed, int nfine,
                         double *truth, double *est, double *img, double *err, double *fine, double *power);
 
+/* n trials (nl_byexample_trial with seeds[k]) into E[(c * NL_BYEX_ESTIMATORS
+ * + kind) * n + k], c = 0 err, 1 fine, 2 power; per band (may be NULL) the
+ * RMS error rms[kind * nbands + k] and mean error bias[...] over the trials. */
+void nl_byexample_trials(const nl_byexample_transfer *T, nl_wavelet_tile *t, const unsigned long *seeds, int n,
+                         int nfine, double *E, double *rms, double *bias);
+
 /* How well weights reproduce an image's band powers: the band powers of the
  * noise of weights wts, averaged over nsyn syntheses (tile and offsets from
  * nl_seed_stream(seed, "byexample.resynth", s)), against the image's, both
@@ -76,6 +82,13 @@ void nl_byexample_trial(const nl_byexample_transfer *T, nl_wavelet_tile *t, unsi
  * RMS over bands of (p_syn - p_img) / p_img (bands with p_img = 0 skipped). */
 void nl_byexample_fit_residual(const nl_byexample_transfer *T, const double *wts, const double *img,
                                int nsyn, unsigned long seed, double resid[2]);
+
+/* An image's fit by every estimator: A measured at the image's size
+ * (nseeds noises from tseed), weights of each estimator, and their
+ * nl_byexample_fit_residual (nsyn syntheses from rseed) into
+ * resid[kind][taper]. Returns the band count. */
+int nl_byexample_fit_all(const double *img, int w, int h, int tile, int nseeds, unsigned long tseed, int nsyn,
+                         unsigned long rseed, double resid[NL_BYEX_ESTIMATORS][2]);
 
 /* Two-sided p-value of the paired t-test of a[i] - b[i], i < n (n >= 2;
  * 1 when every difference is 0). */
