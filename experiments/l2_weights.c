@@ -37,6 +37,7 @@ int main(int argc, char **argv)
                                        "exemplar photographs are cropped about their centre to at most this side (quick 128)");
   int pseeds = (int)nl_harness_param_int(r, "photo_seeds", quick ? 2 : 8, 1, 1000,
                                          "syntheses averaged per estimator for a photograph's fit residual (quick 2)");
+  double frac = nl_harness_param(r, "taper", 1, 0.01, 1, "fraction of each axis the corrected estimator's window tapers (1: Hann; less: Tukey)");
   nl_harness_params_done(r);
   nl_harness_note(r, "exemplars", "%s", exdir);
   unsigned long seed0 = nl_harness_seed(r);
@@ -48,7 +49,7 @@ int main(int argc, char **argv)
   int nb = nl_byexample_band_count(size, size);
   double truth[MB], est[NE * MB], est2[MB], e[NE], f[NE], pw[NE];
   double *b_img = malloc((size_t)size * size * sizeof *b_img), *d_img = malloc((size_t)size * size * sizeof *d_img);
-  nl_byexample_transfer_measure(&T, tile, size, size, nb, tseeds, nl_seed_stream(seed0, "l2.transfer", (unsigned long)size));
+  nl_byexample_transfer_measure(&T, tile, size, size, nb, frac, tseeds, nl_seed_stream(seed0, "l2.transfer", (unsigned long)size));
   nl_byexample_trial(&T, t, seed0, FINE, truth, est, b_img, e, f, pw);
   nl_wavelet_bands b;
   nl_wavelet_bands_init(&b, nb, est, tile, nl_seed_stream(seed0, "l2.new_offsets", 0), NULL);   /* (d): new offsets */
@@ -80,7 +81,7 @@ int main(int argc, char **argv)
   for (int k = 0; k < sweep_seeds; k++) seeds[k] = nl_seed_stream(seed0, "l2.size_trial", (unsigned long)k);
   for (int s = 64, done = 0; s <= maxsize; s *= 2, done++) {
     int n = nl_byexample_band_count(s, s);
-    nl_byexample_transfer_measure(&T, tile, s, s, n, tseeds, nl_seed_stream(seed0, "l2.transfer", (unsigned long)s));
+    nl_byexample_transfer_measure(&T, tile, s, s, n, frac, tseeds, nl_seed_stream(seed0, "l2.transfer", (unsigned long)s));
     nl_byexample_trials(&T, t, seeds, sweep_seeds, FINE, E, rms, bias);
     for (int q = 0; q < NE; q++)
       for (int k = 0; k < n; k++) nl_table_append(bt, "iisdd", s, k, nl_byexample_estimator_names[q], rms[q * n + k], bias[q * n + k]);
@@ -98,7 +99,7 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, bt, "bands.tsv");
 
   /* Photographs: true weights unknown; how well each estimator's weights re-synthesise the band powers. */
-  nl_table *pt = nl_study_exemplar_fits(r, photos, nphotos, pmax, tile, tseeds, pseeds, seed0);
+  nl_table *pt = nl_study_exemplar_fits(r, photos, nphotos, pmax, tile, frac, tseeds, pseeds, seed0);
   if (nphotos) nl_harness_write_table(r, pt, "photos.tsv");
 
   nl_harness_text(r, "Fig. 4 at %d x %d (%d bands, seed %lu): random weights uniform in [0.1, 1] "
@@ -111,16 +112,16 @@ int main(int argc, char **argv)
   nl_harness_text(r, "Beyond the paper: eq. 12 reads each band from its own power, but each wavelet band spills "
                   "into its neighbour octaves (L1) and the DFT of the non-periodic image leaks edge power into "
                   "finer bands. The corrected estimator measures the band-to-band transfer matrix on the noise "
-                  "(%d noises per size), tapers the image with a Hann window and solves non-negative least squares "
+                  "(%d noises per size), tapers the image (taper fraction %.2g; 1 = Hann) and solves non-negative least squares "
                   "for w^2; eq12_hann (taper only) and nnls_raw (matrix only) separate the two. Its mean error is "
                   "below eq. 12's at %d of %d sizes; at %d pixels, %.3f (sd %.3f) against %.3f (sd %.3f), paired t-test over "
                   "%d seeds p = %.2g (largest p over sizes %.2g).",
-                  tseeds, below, nsizes, maxsize, m[0][NL_BYEX_CORRECTED], v[0][NL_BYEX_CORRECTED], m[0][0], v[0][0],
+                  tseeds, frac, below, nsizes, maxsize, m[0][NL_BYEX_CORRECTED], v[0][NL_BYEX_CORRECTED], m[0][0], v[0][0],
                   sweep_seeds, p_last, pmax_p);
   nl_harness_text(r, "Where: over the %d finest bands the corrected error at %d pixels is %.3f (sd %.3f) against eq. 12's %.3f "
                   "(sd %.3f); per band, its RMS error is below eq. 12's in %d of %d bands (bands.tsv).", FINE, maxsize,
                   m[1][NL_BYEX_CORRECTED], v[1][NL_BYEX_CORRECTED], m[1][0], v[1][0], bbelow, nl_byexample_band_count(maxsize, maxsize));
-  nl_harness_report_table(r, wt, "Fig. 4 (a, c): true and estimated weights (band 0 finest); est_of_d re-estimates from (d) by eq. 12; corrected: NNLS + Hann", 3);
+  nl_harness_report_table(r, wt, "Fig. 4 (a, c): true and estimated weights (band 0 finest); est_of_d re-estimates from (d) by eq. 12; corrected: NNLS + taper", 3);
   nl_harness_figure(r, "weights.png", "Fig. 4 (a, c): true vs estimated weights");
   nl_harness_figure(r, "noise.png", "Fig. 4 (b, d): noise of the true and of the estimated weights");
   nl_harness_report_table(r, et, "Relative RMS weight error vs image size per estimator (mean and sd over seeds); power_ratio = mean sum w_est^2 / sum w^2; p_vs_eq12: paired t-test", 4);
@@ -129,8 +130,8 @@ int main(int argc, char **argv)
   if (nphotos) {
     nl_harness_text(r, "Exemplar photographs (%d in %s, luminance, cropped to at most %d pixels): the true weights are "
                     "unknown, so each estimator's weights are re-synthesised (%d noises) and their band powers compared "
-                    "with the photograph's, raw and Hann-tapered: RMS over bands of the relative power error. Mean over "
-                    "photographs (raw, Hann): eq12 %.3f, %.3f; corrected %.3f, %.3f.", nphotos, exdir, pmax, pseeds,
+                    "with the photograph's, raw and tapered: RMS over bands of the relative power error. Mean over "
+                    "photographs (raw, tapered): eq12 %.3f, %.3f; corrected %.3f, %.3f.", nphotos, exdir, pmax, pseeds,
                     nl_study_mean_where(pt, "estimator", "eq12", "resid_raw", NULL, 0, NULL),
                     nl_study_mean_where(pt, "estimator", "eq12", "resid_hann", NULL, 0, NULL),
                     nl_study_mean_where(pt, "estimator", "corrected", "resid_raw", NULL, 0, NULL),

@@ -1,5 +1,5 @@
 /* Leakage-corrected weights (nl_byexample_leak.h): transfer matrix measured
- * on the noise, Hann taper, non-negative least squares. */
+ * on the noise, Hann (or Tukey) taper, non-negative least squares. */
 #include "byexample/nl_byexample_leak.h"
 #include "spectrum/nl_spectrum.h"
 
@@ -14,27 +14,27 @@ enum { MAXB = NL_WAVELET_MAX_BANDS };
 
 const char *const nl_byexample_estimator_names[NL_BYEX_ESTIMATORS] = {"eq12", "eq12_hann", "nnls_raw", "corrected"};
 
-void nl_byexample_band_power_taper(const double *img, int w, int h, int nbands, int taper, double *power)
+void nl_byexample_band_power_taper(const double *img, int w, int h, int nbands, double frac, double *power)
 {
-  if (taper == NL_BYEX_RAW) { nl_byexample_band_power(img, w, h, nbands, power); return; }
+  if (frac <= 0) { nl_byexample_band_power(img, w, h, nbands, power); return; }
   double *win = nl_xmalloc((size_t)w * h * sizeof *win);
-  nl_spectrum_hann2(img, w, h, win);
+  nl_spectrum_taper2(img, w, h, frac, win);
   nl_byexample_band_power(win, w, h, nbands, power);
   free(win);
 }
 
 /* Both band powers of one image: one render serves both tapers. */
-static void powers(const double *img, int w, int h, int nbands, double *raw, double *hann)
+static void powers(const double *img, int w, int h, int nbands, double frac, double *raw, double *hann)
 {
-  nl_byexample_band_power_taper(img, w, h, nbands, NL_BYEX_RAW, raw);
-  nl_byexample_band_power_taper(img, w, h, nbands, NL_BYEX_HANN, hann);
+  nl_byexample_band_power_taper(img, w, h, nbands, 0, raw);
+  nl_byexample_band_power_taper(img, w, h, nbands, frac, hann);
 }
 
-void nl_byexample_transfer_measure(nl_byexample_transfer *T, int tile, int w, int h, int nbands,
+void nl_byexample_transfer_measure(nl_byexample_transfer *T, int tile, int w, int h, int nbands, double frac,
                                    int nseeds, unsigned long seed)
 {
   memset(T, 0, sizeof *T);
-  T->w = w; T->h = h; T->nbands = nbands; T->tile = tile;
+  T->w = w; T->h = h; T->nbands = nbands; T->tile = tile; T->frac = frac;
   T->sigma2 = nl_byexample_sigma2(tile);
   nl_wavelet_tile *t = nl_wavelet_tile_alloc(2, tile);
   double *img = nl_xmalloc((size_t)w * h * sizeof *img), unit[MAXB], p[2][MAXB];
@@ -46,7 +46,7 @@ void nl_byexample_transfer_measure(nl_byexample_transfer *T, int tile, int w, in
       for (int j = 0; j < nbands; j++) unit[j] = j == i;
       nl_wavelet_bands_init(&b, nbands, unit, tile, ss, NULL);
       nl_wavelet_bands_grid(t, &b, w, h, 0, 1, img);
-      powers(img, w, h, nbands, p[0], p[1]);
+      powers(img, w, h, nbands, frac, p[0], p[1]);
       for (int k = 0; k < 2; k++)
         for (int j = 0; j < nbands; j++) T->A[k][i * nbands + j] += p[k][j] / nseeds;
     }
@@ -158,7 +158,7 @@ static void solve(const nl_byexample_transfer *T, int kind, const double p[2][MA
 void nl_byexample_estimate(const nl_byexample_transfer *T, int kind, const double *img, double *wts)
 {
   double p[2][MAXB];
-  powers(img, T->w, T->h, T->nbands, p[0], p[1]);
+  powers(img, T->w, T->h, T->nbands, T->frac, p[0], p[1]);
   solve(T, kind, p, wts);
 }
 
@@ -175,7 +175,7 @@ void nl_byexample_trial(const nl_byexample_transfer *T, nl_wavelet_tile *t, unsi
   nl_wavelet_bands_init(&b, nb, truth, t->n, seed, NULL);
   nl_wavelet_bands_grid(t, &b, T->w, T->h, 0, 1, img);
   double p[2][MAXB];
-  powers(img, T->w, T->h, nb, p[0], p[1]);
+  powers(img, T->w, T->h, nb, T->frac, p[0], p[1]);
   for (int e = 0; e < NL_BYEX_ESTIMATORS; e++) {
     double *w = est + e * nb, se = 0, st = 0, sef = 0, stf = 0, pe = 0;
     solve(T, e, p, w);
@@ -217,12 +217,12 @@ void nl_byexample_trials(const nl_byexample_transfer *T, nl_wavelet_tile *t, con
   free(img);
 }
 
-int nl_byexample_fit_all(const double *img, int w, int h, int tile, int nseeds, unsigned long tseed, int nsyn,
-                         unsigned long rseed, double resid[NL_BYEX_ESTIMATORS][2])
+int nl_byexample_fit_all(const double *img, int w, int h, int tile, double frac, int nseeds, unsigned long tseed,
+                         int nsyn, unsigned long rseed, double resid[NL_BYEX_ESTIMATORS][2])
 {
   nl_byexample_transfer T;
   double wts[MAXB];
-  nl_byexample_transfer_measure(&T, tile, w, h, nl_byexample_band_count(w, h), nseeds, tseed);
+  nl_byexample_transfer_measure(&T, tile, w, h, nl_byexample_band_count(w, h), frac, nseeds, tseed);
   for (int q = 0; q < NL_BYEX_ESTIMATORS; q++) {
     nl_byexample_estimate(&T, q, img, wts);
     nl_byexample_fit_residual(&T, wts, img, nsyn, rseed, resid[q]);
@@ -237,14 +237,14 @@ void nl_byexample_fit_residual(const nl_byexample_transfer *T, const double *wts
   double target[2][MAXB], syn[2][MAXB] = {{0}}, p[2][MAXB];
   double *noise = nl_xmalloc((size_t)w * h * sizeof *noise);
   nl_wavelet_tile *t = nl_wavelet_tile_alloc(2, T->tile);
-  powers(img, w, h, nb, target[0], target[1]);
+  powers(img, w, h, nb, T->frac, target[0], target[1]);
   for (int s = 0; s < nsyn; s++) {
     unsigned long ss = nl_seed_stream(seed, "byexample.resynth", (unsigned long)s);
     nl_wavelet_tile_seed(t, ss);
     nl_wavelet_bands b;
     nl_wavelet_bands_init(&b, nb, wts, T->tile, ss, NULL);
     nl_wavelet_bands_grid(t, &b, w, h, 0, 1, noise);
-    powers(noise, w, h, nb, p[0], p[1]);
+    powers(noise, w, h, nb, T->frac, p[0], p[1]);
     for (int k = 0; k < 2; k++)
       for (int j = 0; j < nb; j++) syn[k][j] += p[k][j] / nsyn;
   }

@@ -13,7 +13,8 @@
  *      the exemplar's size (mean over tiles and offsets); so the expected
  *      band powers of a sum are p_j = sum_i w_i^2 A[i][j];
  *   2. band powers of the Hann-tapered exemplar (nl_spectrum_hann2), with A
- *      measured through the same taper;
+ *      measured through the same taper (or a Tukey window that tapers only a
+ *      fraction of the image, nl_spectrum_taper2: frac 1 is Hann);
  *   3. w^2 from non-negative least squares, min |A^T w2 - p|, w2 >= 0
  *      (Lawson & Hanson 1974, ch. 23), w = sqrt(w2).
  * The estimators, for comparison (nl_byexample_estimator_names):
@@ -23,7 +24,7 @@
  *   corrected  steps 1-3
  *
  *   nl_byexample_transfer T;
- *   nl_byexample_transfer_measure(&T, NL_EXAMPLE_TILE, w, h, nbands, 8, seed);
+ *   nl_byexample_transfer_measure(&T, NL_EXAMPLE_TILE, w, h, nbands, 1.0, 8, seed);
  *   nl_byexample_estimate(&T, NL_BYEX_CORRECTED, img, wts);
  */
 #ifndef NL_BYEXAMPLE_LEAK_H
@@ -38,18 +39,20 @@ enum { NL_BYEX_RAW = 0, NL_BYEX_HANN = 1 };   /* how band powers are measured */
 
 typedef struct {
   int w, h, nbands, tile;
+  double frac;     /* taper fraction of the tapered powers (1: Hann) */
   double sigma2;   /* eq. 12's sigma_N^2 (nl_byexample_sigma2(tile)) */
   /* A[taper][i * nbands + j]: power in band j from unit weight on band i */
   double A[2][NL_WAVELET_MAX_BANDS * NL_WAVELET_MAX_BANDS];
 } nl_byexample_transfer;
 
-/* Eq. 13 band powers of img, raw (nl_byexample_band_power) or tapered. */
-void nl_byexample_band_power_taper(const double *img, int w, int h, int nbands, int taper, double *power);
+/* Eq. 13 band powers of img, raw (frac 0: nl_byexample_band_power) or
+ * tapered (nl_spectrum_taper2 with frac in (0, 1]; 1 is Hann). */
+void nl_byexample_band_power_taper(const double *img, int w, int h, int nbands, double frac, double *power);
 
-/* Measures A (both tapers) on w x h noise: replicate s seeds the tile
+/* Measures A (raw and tapered by frac) on w x h noise: replicate s seeds the tile
  * (period `tile`) and the band offsets from nl_seed_stream(seed,
  * "byexample.transfer", s), s < nseeds. */
-void nl_byexample_transfer_measure(nl_byexample_transfer *T, int tile, int w, int h, int nbands,
+void nl_byexample_transfer_measure(nl_byexample_transfer *T, int tile, int w, int h, int nbands, double frac,
                                    int nseeds, unsigned long seed);
 
 /* The weights of estimator `kind` (NL_BYEX_*) from a T->w x T->h image. */
@@ -87,8 +90,8 @@ void nl_byexample_fit_residual(const nl_byexample_transfer *T, const double *wts
  * (nseeds noises from tseed), weights of each estimator, and their
  * nl_byexample_fit_residual (nsyn syntheses from rseed) into
  * resid[kind][taper]. Returns the band count. */
-int nl_byexample_fit_all(const double *img, int w, int h, int tile, int nseeds, unsigned long tseed, int nsyn,
-                         unsigned long rseed, double resid[NL_BYEX_ESTIMATORS][2]);
+int nl_byexample_fit_all(const double *img, int w, int h, int tile, double frac, int nseeds, unsigned long tseed,
+                         int nsyn, unsigned long rseed, double resid[NL_BYEX_ESTIMATORS][2]);
 
 /* Two-sided p-value of the paired t-test of a[i] - b[i], i < n (n >= 2;
  * 1 when every difference is 0). */

@@ -38,6 +38,11 @@ void nl_spectrum_radial(const double *img, int w, int h, int nbins, double *f, d
  * The mean is removed first, or the taper would spread the DC term into the
  * lowest frequencies. out may be img. */
 void nl_spectrum_hann2(const double *img, int w, int h, double *out);
+/* The same with a tapered-cosine (Tukey) window: the fraction `frac` of each
+ * axis (half at either edge) rises as sin^2, the rest is flat; frac 1 is the
+ * Hann window above, smaller fractions keep more of the image's samples
+ * (frac in (0, 1]; power normalised the same way). */
+void nl_spectrum_taper2(const double *img, int w, int h, double frac, double *out);
 /* Signed frequency of index u of an n-point DFT, in cycles per sample. */
 double nl_spectrum_freq(int u, int n);
 /* f and P hold n/2 + 1 values. n >= 2, rate > 0; NL_EINVAL otherwise, NL_ENUM

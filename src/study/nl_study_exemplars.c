@@ -93,8 +93,8 @@ char **nl_study_exemplars_option(int *argc, char **argv, const char *prog, const
   return paths;
 }
 
-nl_table *nl_study_exemplar_fits(nl_harness *r, char *const *paths, int n, int max, int tile, int nseeds,
-                                 int nsyn, unsigned long seed)
+nl_table *nl_study_exemplar_fits(nl_harness *r, char *const *paths, int n, int max, int tile, double frac,
+                                 int nseeds, int nsyn, unsigned long seed)
 {
   static const char *const cols[] = {"exemplar", "width", "height", "bands", "estimator", "resid_raw", "resid_hann"};
   nl_table *t = nl_table_alloc(7, cols);
@@ -105,7 +105,7 @@ nl_table *nl_study_exemplar_fits(nl_harness *r, char *const *paths, int n, int m
     if (nl_study_exemplar_luminance(paths[i], max, &lum, &w, &h, &err)) nl_harness_die(r, 2, "%s", err.msg);
     if (w < NL_EXAMPLE_MIN_SIZE || h < NL_EXAMPLE_MIN_SIZE)
       nl_harness_die(r, 2, "%s: %d x %d pixels, smaller than %d", paths[i], w, h, NL_EXAMPLE_MIN_SIZE);
-    int nb = nl_byexample_fit_all(lum, w, h, tile, nseeds, nl_seed_stream(seed, "l2.photo_transfer", (unsigned long)i),
+    int nb = nl_byexample_fit_all(lum, w, h, tile, frac, nseeds, nl_seed_stream(seed, "l2.photo_transfer", (unsigned long)i),
                                   nsyn, nl_seed_stream(seed, "l2.photo", (unsigned long)i), res);
     const char *name = strrchr(paths[i], '/');
     for (int q = 0; q < NL_BYEX_ESTIMATORS; q++)
