@@ -1,7 +1,7 @@
 /* L2 - Lagae et al. 2010 sec. 4.3, Fig. 4: random weights -> noise ->
  * weights estimated by eq. 12-13 -> noise; beyond the paper, the weight
  * error against image size over seeds beside a leakage-corrected estimator
- * (transfer matrix measured on the noise, Hann taper, NNLS;
+ * (transfer matrix measured on the noise, tapered DFT, NNLS;
  * byexample/nl_byexample_leak.h), and both on exemplar photographs. */
 #include "byexample/nl_byexample_leak.h"
 #include "harness/nl_harness.h"
@@ -37,7 +37,7 @@ int main(int argc, char **argv)
                                        "exemplar photographs are cropped about their centre to at most this side (quick 128)");
   int pseeds = (int)nl_harness_param_int(r, "photo_seeds", quick ? 2 : 8, 1, 1000,
                                          "syntheses averaged per estimator for a photograph's fit residual (quick 2)");
-  double frac = nl_harness_param(r, "taper", 1, 0.01, 1, "fraction of each axis the corrected estimator's window tapers (1: Hann; less: Tukey)");
+  double frac = nl_harness_param(r, "taper", 0.25, 0.01, 1, "fraction of each axis the corrected estimator's Tukey window tapers (1: Hann; 0.25 measured best)");
   nl_harness_params_done(r);
   nl_harness_note(r, "exemplars", "%s", exdir);
   unsigned long seed0 = nl_harness_seed(r);
@@ -113,7 +113,7 @@ int main(int argc, char **argv)
                   "into its neighbour octaves (L1) and the DFT of the non-periodic image leaks edge power into "
                   "finer bands. The corrected estimator measures the band-to-band transfer matrix on the noise "
                   "(%d noises per size), tapers the image (taper fraction %.2g; 1 = Hann) and solves non-negative least squares "
-                  "for w^2; eq12_hann (taper only) and nnls_raw (matrix only) separate the two. Its mean error is "
+                  "for w^2; eq12_taper (taper only) and nnls_raw (matrix only) separate the two. Its mean error is "
                   "below eq. 12's at %d of %d sizes; at %d pixels, %.3f (sd %.3f) against %.3f (sd %.3f), paired t-test over "
                   "%d seeds p = %.2g (largest p over sizes %.2g).",
                   tseeds, frac, below, nsizes, maxsize, m[0][NL_BYEX_CORRECTED], v[0][NL_BYEX_CORRECTED], m[0][0], v[0][0],
@@ -133,9 +133,9 @@ int main(int argc, char **argv)
                     "with the photograph's, raw and tapered: RMS over bands of the relative power error. Mean over "
                     "photographs (raw, tapered): eq12 %.3f, %.3f; corrected %.3f, %.3f.", nphotos, exdir, pmax, pseeds,
                     nl_study_mean_where(pt, "estimator", "eq12", "resid_raw", NULL, 0, NULL),
-                    nl_study_mean_where(pt, "estimator", "eq12", "resid_hann", NULL, 0, NULL),
+                    nl_study_mean_where(pt, "estimator", "eq12", "resid_taper", NULL, 0, NULL),
                     nl_study_mean_where(pt, "estimator", "corrected", "resid_raw", NULL, 0, NULL),
-                    nl_study_mean_where(pt, "estimator", "corrected", "resid_hann", NULL, 0, NULL));
+                    nl_study_mean_where(pt, "estimator", "corrected", "resid_taper", NULL, 0, NULL));
     nl_harness_report_table(r, pt, "Photographs: band-power fit residual of each estimator's re-synthesis", 4);
   } else nl_harness_text(r, "No exemplar photographs in %s (--exemplars DIR): the photograph comparison was not run.", exdir);
 

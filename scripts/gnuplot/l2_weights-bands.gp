@@ -12,6 +12,6 @@ set ylabel 'RMS weight error over seeds'
 set yrange [0:*]
 set key top left
 plot f using "band":(est("eq12")) with linespoints lw 2 pt 7 title 'eq. 12 (paper)', \
-     f using "band":(est("eq12_hann")) with linespoints lw 2 pt 5 title 'eq. 12, tapered (Hann unless --set taper)', \
+     f using "band":(est("eq12_taper")) with linespoints lw 2 pt 5 title 'eq. 12, tapered DFT', \
      f using "band":(est("nnls_raw")) with linespoints lw 2 pt 9 title 'transfer matrix + NNLS, raw DFT', \
      f using "band":(est("corrected")) with linespoints lw 2 pt 11 title 'corrected (matrix + taper + NNLS)'

@@ -1,5 +1,5 @@
 /* Leakage-corrected weights (nl_byexample_leak.h): transfer matrix measured
- * on the noise, Hann (or Tukey) taper, non-negative least squares. */
+ * on the noise, Tukey (or Hann) taper, non-negative least squares. */
 #include "byexample/nl_byexample_leak.h"
 #include "spectrum/nl_spectrum.h"
 
@@ -12,7 +12,7 @@
 
 enum { MAXB = NL_WAVELET_MAX_BANDS };
 
-const char *const nl_byexample_estimator_names[NL_BYEX_ESTIMATORS] = {"eq12", "eq12_hann", "nnls_raw", "corrected"};
+const char *const nl_byexample_estimator_names[NL_BYEX_ESTIMATORS] = {"eq12", "eq12_taper", "nnls_raw", "corrected"};
 
 void nl_byexample_band_power_taper(const double *img, int w, int h, int nbands, double frac, double *power)
 {
@@ -24,10 +24,10 @@ void nl_byexample_band_power_taper(const double *img, int w, int h, int nbands, 
 }
 
 /* Both band powers of one image: one render serves both tapers. */
-static void powers(const double *img, int w, int h, int nbands, double frac, double *raw, double *hann)
+static void powers(const double *img, int w, int h, int nbands, double frac, double *raw, double *tapered)
 {
   nl_byexample_band_power_taper(img, w, h, nbands, 0, raw);
-  nl_byexample_band_power_taper(img, w, h, nbands, frac, hann);
+  nl_byexample_band_power_taper(img, w, h, nbands, frac, tapered);
 }
 
 void nl_byexample_transfer_measure(nl_byexample_transfer *T, int tile, int w, int h, int nbands, double frac,
@@ -143,9 +143,9 @@ double nl_byexample_nnls(const double *M, int m, int n, const double *b, double 
 /* The weights of estimator `kind` from the image's raw and tapered band powers. */
 static void solve(const nl_byexample_transfer *T, int kind, const double p[2][MAXB], double *wts)
 {
-  int nb = T->nbands, taper = kind == NL_BYEX_EQ12_HANN || kind == NL_BYEX_CORRECTED;
+  int nb = T->nbands, taper = kind == NL_BYEX_EQ12_TAPER || kind == NL_BYEX_CORRECTED;
   double M[MAXB * MAXB] = {0};
-  if (kind == NL_BYEX_EQ12 || kind == NL_BYEX_EQ12_HANN) {   /* eq. 12 */
+  if (kind == NL_BYEX_EQ12 || kind == NL_BYEX_EQ12_TAPER) {   /* eq. 12 */
     for (int k = 0; k < nb; k++) wts[k] = sqrt(p[taper][k] / T->sigma2);
     return;
   }

@@ -12,19 +12,21 @@
  *      noise whose only non-zero weight is w_i = 1, measured on the noise at
  *      the exemplar's size (mean over tiles and offsets); so the expected
  *      band powers of a sum are p_j = sum_i w_i^2 A[i][j];
- *   2. band powers of the Hann-tapered exemplar (nl_spectrum_hann2), with A
- *      measured through the same taper (or a Tukey window that tapers only a
- *      fraction of the image, nl_spectrum_taper2: frac 1 is Hann);
+ *   2. band powers of the tapered exemplar (nl_spectrum_taper2: a Tukey
+ *      window, frac 1 is Hann), with A measured through the same taper.
+ *      Hann removes the most edge leakage but weights the image down to an
+ *      effective quarter of its samples; a taper of 1/4 of each axis keeps
+ *      most of them (L2 measures both);
  *   3. w^2 from non-negative least squares, min |A^T w2 - p|, w2 >= 0
  *      (Lawson & Hanson 1974, ch. 23), w = sqrt(w2).
  * The estimators, for comparison (nl_byexample_estimator_names):
  *   eq12       eq. 12 on the raw DFT (the paper)
- *   eq12_hann  eq. 12 on the tapered exemplar (step 2 only)
+ *   eq12_taper eq. 12 on the tapered exemplar (step 2 only)
  *   nnls_raw   steps 1 and 3 on the raw DFT
  *   corrected  steps 1-3
  *
  *   nl_byexample_transfer T;
- *   nl_byexample_transfer_measure(&T, NL_EXAMPLE_TILE, w, h, nbands, 1.0, 8, seed);
+ *   nl_byexample_transfer_measure(&T, NL_EXAMPLE_TILE, w, h, nbands, 0.25, 8, seed);
  *   nl_byexample_estimate(&T, NL_BYEX_CORRECTED, img, wts);
  */
 #ifndef NL_BYEXAMPLE_LEAK_H
@@ -32,10 +34,10 @@
 
 #include "byexample/nl_byexample.h"
 
-enum { NL_BYEX_EQ12, NL_BYEX_EQ12_HANN, NL_BYEX_NNLS_RAW, NL_BYEX_CORRECTED, NL_BYEX_ESTIMATORS };
+enum { NL_BYEX_EQ12, NL_BYEX_EQ12_TAPER, NL_BYEX_NNLS_RAW, NL_BYEX_CORRECTED, NL_BYEX_ESTIMATORS };
 extern const char *const nl_byexample_estimator_names[NL_BYEX_ESTIMATORS];
 
-enum { NL_BYEX_RAW = 0, NL_BYEX_HANN = 1 };   /* how band powers are measured */
+enum { NL_BYEX_RAW = 0, NL_BYEX_TAPER = 1 };   /* how band powers are measured */
 
 typedef struct {
   int w, h, nbands, tile;
@@ -81,7 +83,7 @@ void nl_byexample_trials(const nl_byexample_transfer *T, nl_wavelet_tile *t, con
 /* How well weights reproduce an image's band powers: the band powers of the
  * noise of weights wts, averaged over nsyn syntheses (tile and offsets from
  * nl_seed_stream(seed, "byexample.resynth", s)), against the image's, both
- * measured raw (resid[NL_BYEX_RAW]) and tapered (resid[NL_BYEX_HANN]): the
+ * measured raw (resid[NL_BYEX_RAW]) and tapered (resid[NL_BYEX_TAPER]): the
  * RMS over bands of (p_syn - p_img) / p_img (bands with p_img = 0 skipped). */
 void nl_byexample_fit_residual(const nl_byexample_transfer *T, const double *wts, const double *img,
                                int nsyn, unsigned long seed, double resid[2]);

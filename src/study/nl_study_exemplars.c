@@ -96,7 +96,7 @@ char **nl_study_exemplars_option(int *argc, char **argv, const char *prog, const
 nl_table *nl_study_exemplar_fits(nl_harness *r, char *const *paths, int n, int max, int tile, double frac,
                                  int nseeds, int nsyn, unsigned long seed)
 {
-  static const char *const cols[] = {"exemplar", "width", "height", "bands", "estimator", "resid_raw", "resid_hann"};
+  static const char *const cols[] = {"exemplar", "width", "height", "bands", "estimator", "resid_raw", "resid_taper"};
   nl_table *t = nl_table_alloc(7, cols);
   for (int i = 0; i < n; i++) {
     double *lum, res[NL_BYEX_ESTIMATORS][2];

@@ -25,7 +25,7 @@ void nl_study_paths_free(char **paths);
 char **nl_study_exemplars_option(int *argc, char **argv, const char *prog, const char **dir, int *n);
 /* Every photograph's fit by every estimator (nl_byexample_fit_all on its
  * luminance cropped to max, taper fraction frac): rows exemplar (file name), width, height,
- * bands, estimator, resid_raw, resid_hann. A/resynthesis seeds from
+ * bands, estimator, resid_raw, resid_taper. A/resynthesis seeds from
  * nl_seed_stream(seed, "l2.photo_transfer" / "l2.photo", i). An unreadable
  * or too small (< NL_EXAMPLE_MIN_SIZE) image: nl_harness_die, exit 2. */
 nl_table *nl_study_exemplar_fits(nl_harness *r, char *const *paths, int n, int max, int tile, double frac,
