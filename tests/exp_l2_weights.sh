@@ -44,7 +44,7 @@ tsv_awk 'NR == 1 || n("band") == 3' "$out/weights.tsv" > "$out/weights_b3.tsv"
 "$2" "$out/weights_b0.tsv" 'rows=1' 'est~true:0.2' 'est_of_d~est:0.17'
 "$2" "$out/weights_b12.tsv" 'rows=2' 'est~true:0.37' 'est_of_d~est:0.17'
 "$2" "$out/weights_b3.tsv" 'rows=1' 'est~true:0.37' 'est_of_d~est:0.21'
-"$2" "$out/estimators.tsv" 'rows=12' 'err_mean>0' 'err_sd>=0' 'p_vs_eq12>=0' 'p_vs_eq12<=1'
+"$2" "$out/estimators.tsv" 'rows=12' 'err_mean>0' 'err_sd>=0' 'p_vs_eq12>=0' 'p_vs_eq12<=1' 'p_fine_vs_eq12>=0' 'p_fine_vs_eq12<=1'
 tsv_awk 'NR == 1 || v("estimator") == "eq12"' "$out/estimators.tsv" > "$out/eq12.tsv"
 "$2" "$out/eq12.tsv" 'rows=3' 'err_mean<0.45' 'power_ratio~1:0.25'
 tsv_awk 'NR > 1 && n("size") == 256 && n("err_mean") >= 0.40 {print "eq12 err_mean at 256: " n("err_mean"); exit 1}
