@@ -11,4 +11,4 @@ set xlabel 'band k (0 = finest, 1/4..1/2 cycles per pixel)'
 set ylabel 'weight'
 set yrange [0:*]
 set key top left
-plot dir.'/weights.tsv' using "true":xtic(strcol("band")) title 'true (a)', '' using "est" title 'estimated from (b): (c)', '' using "est_of_d" title 're-estimated from (d)'
+plot dir.'/weights.tsv' using "true":xtic(strcol("band")) title 'true (a)', '' using "est" title 'eq. 12 from (b): (c)', '' using "est_of_d" title 'eq. 12 from (d)', '' using "corrected" title 'corrected, from (b)'

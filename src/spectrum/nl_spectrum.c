@@ -72,6 +72,36 @@ void nl_spectrum_radial(const double *img, int w, int h, int nbins, double *f, d
   free(P); free(count);
 }
 
+/* Tukey window of n samples, taper fraction frac: sin^2 over the outer frac/2 of each side. */
+static double taper(int x, int n, double frac)
+{
+  double u = (x + 0.5) / n, e = frac / 2;   /* position in (0, 1), edge width */
+  if (u > e && u < 1 - e) return 1;
+  double s = sin(NL_PI * fmin(u, 1 - u) / (2 * e));
+  return s * s;
+}
+
+void nl_spectrum_taper2(const double *img, int w, int h, double frac, double *out)
+{
+  size_t n = (size_t)w * h;
+  double *hx = nl_xmalloc((size_t)w * sizeof *hx), *hy = nl_xmalloc((size_t)h * sizeof *hy);
+  double mean = 0, sx = 0, sy = 0;
+  for (size_t k = 0; k < n; k++) mean += img[k];
+  mean /= (double)n;
+  for (int x = 0; x < w; x++) { hx[x] = taper(x, w, frac); sx += hx[x] * hx[x]; }
+  for (int y = 0; y < h; y++) { hy[y] = taper(y, h, frac); sy += hy[y] * hy[y]; }
+  double norm = 1.0 / sqrt(sx / w * sy / h);   /* the window's power, measured (not 9/64) */
+  for (int y = 0; y < h; y++)
+    for (int x = 0; x < w; x++) {
+      size_t k = (size_t)y * w + x;
+      out[k] = (img[k] - mean) * hx[x] * hy[y] * norm;
+    }
+  free(hx);
+  free(hy);
+}
+
+void nl_spectrum_hann2(const double *img, int w, int h, double *out) { nl_spectrum_taper2(img, w, h, 1.0, out); }
+
 /* ---- 1D --------------------------------------------------------------- */
 
 nl_status nl_spectrum_psd1(const double *x, size_t n, double rate, double *f, double *P, nl_error *err)

@@ -36,6 +36,20 @@ void nl_spectrum_fft2(const double *img, int w, int h, double *F);
 void nl_spectrum_fft2_inverse(const double *F, int w, int h, double *img);
 void nl_spectrum_power2(const double *img, int w, int h, double *P);
 void nl_spectrum_radial(const double *img, int w, int h, int nbins, double *f, double *p);
+/* A Hann-tapered copy of a non-periodic image, for power spectra without
+ * the edge discontinuity the DFT's periodic extension adds (its power
+ * leaks ~1/f^2 across every band): out = (img - mean) h(x) h(y) / sqrt(W),
+ * h(x) = sin^2(pi (x + 1/2) / w) (no zero samples), W the mean of
+ * (h(x) h(y))^2 (9/64 for w, h >= 3), so a stationary signal keeps its
+ * expected total power: sum of nl_spectrum_power2(out) = variance of img.
+ * The mean is removed first, or the taper would spread the DC term into the
+ * lowest frequencies. out may be img. */
+void nl_spectrum_hann2(const double *img, int w, int h, double *out);
+/* The same with a tapered-cosine (Tukey) window: the fraction `frac` of each
+ * axis (half at either edge) rises as sin^2, the rest is flat; frac 1 is the
+ * Hann window above, smaller fractions keep more of the image's samples
+ * (frac in (0, 1]; power normalised the same way). */
+void nl_spectrum_taper2(const double *img, int w, int h, double frac, double *out);
 /* Signed frequency of index u of an n-point DFT, in cycles per sample. */
 double nl_spectrum_freq(int u, int n);
 /* f and P hold n/2 + 1 values. n >= 2, rate > 0; NL_EINVAL otherwise, NL_ENUM

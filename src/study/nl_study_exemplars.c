@@ -1,0 +1,116 @@
+/* Exemplar photographs: --exemplars DIR and the folder's PNG files. */
+#include "study/nl_study_exemplars.h"
+#include "byexample/nl_byexample_leak.h"
+
+#include <dirent.h>
+#include <stdio.h>
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+
+nl_status nl_study_dir_option(int *argc, char **argv, const char *option, const char *def,
+                              const char **dir, nl_error *err)
+{
+  int w = 1;
+  *dir = def;
+  for (int i = 1; i < *argc; i++) {
+    if (!strcmp(argv[i], option)) {
+      if (i + 1 >= *argc) return nl_fail(err, NL_EINVAL, "%s: missing value", option);
+      if (!argv[i + 1][0]) return nl_fail(err, NL_EINVAL, "%s: empty folder name", option);
+      *dir = argv[++i];
+      continue;
+    }
+    argv[w++] = argv[i];
+  }
+  *argc = w;
+  argv[w] = NULL;
+  return NL_OK;
+}
+
+static int cmp_str(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
+
+nl_status nl_study_pngs(const char *dir, char ***paths, int *n, nl_error *err)
+{
+  struct stat st;
+  *n = 0;
+  *paths = nl_xcalloc(1, sizeof **paths);
+  if (stat(dir, &st)) {
+    if (errno == ENOENT) return NL_OK;   /* no photographs yet */
+    return nl_fail(err, NL_EIO, "%s: %s", dir, strerror(errno));
+  }
+  DIR *d = S_ISDIR(st.st_mode) ? opendir(dir) : NULL;
+  if (!d) return nl_fail(err, NL_EIO, "%s: not a readable folder", dir);
+  struct dirent *e;
+  while ((e = readdir(d))) {
+    size_t len = strlen(e->d_name);
+    if (len <= 4 || e->d_name[0] == '.' || strcasecmp(e->d_name + len - 4, ".png")) continue;
+    *paths = nl_xrealloc(*paths, (size_t)(*n + 2) * sizeof **paths);
+    (*paths)[(*n)++] = nl_path_join(dir, e->d_name);
+  }
+  closedir(d);
+  qsort(*paths, (size_t)*n, sizeof **paths, cmp_str);
+  (*paths)[*n] = NULL;
+  return NL_OK;
+}
+
+void nl_study_paths_free(char **paths)
+{
+  for (int k = 0; paths && paths[k]; k++) free(paths[k]);
+  free(paths);
+}
+
+nl_status nl_study_exemplar_luminance(const char *path, int max, double **out, int *w, int *h,
+                                      nl_error *err)
+{
+  nl_image *im;
+  nl_status s = nl_image_read(path, &im, err);
+  if (s) return s;
+  int W = im->width, H = im->height;
+  double *lum = nl_xmalloc((size_t)W * H * sizeof *lum);
+  nl_byexample_luminance(im, lum);
+  nl_image_free(im);
+  *w = W < max ? W : max;
+  *h = H < max ? H : max;
+  int x0 = (W - *w) / 2, y0 = (H - *h) / 2;
+  *out = nl_xmalloc((size_t)*w * *h * sizeof **out);
+  for (int y = 0; y < *h; y++) memcpy(*out + (size_t)y * *w, lum + (size_t)(y + y0) * W + x0, (size_t)*w * sizeof **out);
+  free(lum);
+  return NL_OK;
+}
+
+char **nl_study_exemplars_option(int *argc, char **argv, const char *prog, const char **dir, int *n)
+{
+  nl_error err;
+  char **paths = NULL;
+  if (nl_study_dir_option(argc, argv, "--exemplars", "data/exemplars", dir, &err) ||
+      nl_study_pngs(*dir, &paths, n, &err)) {
+    fprintf(stderr, "%s: %s\n", prog, err.msg);
+    nl_study_paths_free(paths);
+    exit(2);
+  }
+  return paths;
+}
+
+nl_table *nl_study_exemplar_fits(nl_harness *r, char *const *paths, int n, int max, int tile, double frac,
+                                 int nseeds, int nsyn, unsigned long seed)
+{
+  static const char *const cols[] = {"exemplar", "width", "height", "bands", "estimator", "resid_raw", "resid_taper"};
+  nl_table *t = nl_table_alloc(7, cols);
+  for (int i = 0; i < n; i++) {
+    double *lum, res[NL_BYEX_ESTIMATORS][2];
+    int w, h;
+    nl_error err;
+    if (nl_study_exemplar_luminance(paths[i], max, &lum, &w, &h, &err)) nl_harness_die(r, 2, "%s", err.msg);
+    if (w < NL_EXAMPLE_MIN_SIZE || h < NL_EXAMPLE_MIN_SIZE)
+      nl_harness_die(r, 2, "%s: %d x %d pixels, smaller than %d", paths[i], w, h, NL_EXAMPLE_MIN_SIZE);
+    int nb = nl_byexample_fit_all(lum, w, h, tile, frac, nseeds, nl_seed_stream(seed, "l2.photo_transfer", (unsigned long)i),
+                                  nsyn, nl_seed_stream(seed, "l2.photo", (unsigned long)i), res);
+    const char *name = strrchr(paths[i], '/');
+    for (int q = 0; q < NL_BYEX_ESTIMATORS; q++)
+      nl_table_append(t, "siiisdd", name ? name + 1 : paths[i], w, h, nb, nl_byexample_estimator_names[q], res[q][0], res[q][1]);
+    free(lum);
+  }
+  return t;
+}
