@@ -328,7 +328,7 @@ void nl_study_smoke_report_edges(nl_harness *r, const nl_study_smoke_scene *best
                                  int nvary)
 {
   for (int v = 0; v < nvary; v++) {
-    if (!vary[v].is_free || vary[v].n < 2) continue;
+    if (!vary[v].is_free || vary[v].n < 3) continue;   /* a number, not a two-way reading */
     nl_study_smoke_scene c = *best;
     double x = set_param(r, &c, vary[v].name, 0.0), lo = vary[v].v[0], hi = vary[v].v[vary[v].n - 1];
     if (x == lo || x == hi)

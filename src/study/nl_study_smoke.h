@@ -121,8 +121,9 @@ double nl_study_smoke_fit_columns(const nl_table *t, const char *ours, const cha
  * ball.png, and frees them. */
 void nl_study_smoke_panels(nl_harness *r, nl_image **panels, const int *octaves, int n);
 
-/* One sentence per free parameter of vary[] whose value in the best
- * reading is the first or last value tried: the fit may improve beyond. */
+/* One sentence per free parameter of vary[] with at least three values
+ * (a number, not a two-way reading) whose value in the best reading is the
+ * first or last value tried: the fit may improve beyond. */
 void nl_study_smoke_report_edges(nl_harness *r, const nl_study_smoke_scene *best, const nl_study_smoke_vary *vary,
                                  int nvary);
 
