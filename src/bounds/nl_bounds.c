@@ -502,18 +502,23 @@ static int max_level_diff(const double *a, const double *b, size_t n)
 nl_status nl_bounds_smoke_render_pair(const nl_noise_perm3 *p, nl_bounds_smoke s, double *img0, double *img1,
                                       nl_bounds_smoke_pair *t, nl_error *err)
 {
-  double *img[2] = {img0, img1};
-  for (int inc = 0; inc < 2; inc++) {
+  nl_status rc = smoke_check(&s, err);
+  if (rc) return rc;
+  size_t npix = (size_t)s.width * s.height;
+  double *own = img0 && img1 ? NULL : nl_xmalloc(2 * npix * sizeof *own);
+  double *img[2] = {own ? own : img0, own ? own + npix : img1};
+  for (int inc = 0; inc < 2 && !rc; inc++) {
     nl_bounds_smoke_stats st;
     s.incremental = inc;
     double t0 = nl_time_now();
-    nl_status rc = nl_bounds_smoke_render(p, &s, img[inc], &st, err);
-    if (rc) return rc;
+    rc = nl_bounds_smoke_render(p, &s, img[inc], &st, err);
+    if (rc) break;
     t->ms[inc] = 1e3 * (nl_time_now() - t0);
     t->evals[inc] = st.noise_evals;
     t->samples = st.samples;
     if (inc == 0) t->max_noise = st.max_abs_noise;
   }
-  t->diff = max_level_diff(img0, img1, (size_t)s.width * s.height);
-  return NL_OK;
+  if (!rc) t->diff = max_level_diff(img[0], img[1], npix);
+  free(own);
+  return rc;
 }

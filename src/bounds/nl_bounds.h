@@ -120,8 +120,9 @@ typedef struct {
   double max_abs_noise;  /* largest |noise| over those calls */
 } nl_bounds_smoke_stats;
 
-/* Paper values; slope -4, f0 = 4, kappa = 30, octave_bound = NL_NOISE3_BOUND,
- * 1 octave, plain evaluation. */
+/* The paper's 512 x 512, step 0.01, stop at 99 %; slope -4, f0 = 4,
+ * kappa = 30 (the paper gives none of these three: A2 fits them),
+ * octave_bound = NL_NOISE3_BOUND, 1 octave, plain evaluation. */
 nl_bounds_smoke nl_bounds_smoke_default(void);
 /* img: width * height doubles, row 0 at y = -1/2. */
 nl_status nl_bounds_smoke_render(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double *img,
@@ -251,7 +252,8 @@ nl_status nl_bounds_bandwidth_seeds(const nl_bounds_reading *rd, unsigned long s
 typedef struct { double ms[2]; long evals[2]; long samples; int diff; double max_noise; } nl_bounds_smoke_pair;
 /* Renders s plainly into img0 and incrementally into img1 (s.incremental
  * is ignored): wall times in ms, noise calls of each, the largest
- * difference in 8-bit levels and the largest |noise| of the plain march. */
+ * difference in 8-bit levels and the largest |noise| of the plain march.
+ * img0 or img1 NULL: both images are temporaries. */
 nl_status nl_bounds_smoke_render_pair(const nl_noise_perm3 *p, nl_bounds_smoke s, double *img0, double *img1,
                                       nl_bounds_smoke_pair *t, nl_error *err);
 

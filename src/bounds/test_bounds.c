@@ -142,8 +142,14 @@ NL_TEST(smoke_render_pair_and_lines)
   nl_bounds_smoke_pair t;
   NL_CHECK(nl_bounds_smoke_render_pair(&p, s, a, b, &t, NULL) == NL_OK);
   NL_CHECK(t.diff == 0 && t.evals[1] < t.evals[0] && t.samples > 0 && t.max_noise > 0);
+  /* without images (temporaries) the same counts */
+  nl_bounds_smoke_pair u;
+  NL_CHECK(nl_bounds_smoke_render_pair(&p, s, NULL, NULL, &u, NULL) == NL_OK);
+  NL_CHECK(u.evals[0] == t.evals[0] && u.evals[1] == t.evals[1] && u.samples == t.samples && u.diff == 0);
+  NL_CHECK(t.evals[0] == 4 * t.samples);   /* plain: every term at every sample (A2's untimed count) */
   s.slope = 1.0;
   NL_CHECK(nl_bounds_smoke_render_pair(&p, s, a, b, &t, NULL) == NL_EINVAL);
+  NL_CHECK(nl_bounds_smoke_render_pair(&p, s, NULL, NULL, &t, NULL) == NL_EINVAL);
   /* the oblique lines run along (1, 1/phi, 1/phi^2), unit length (A4's to 5 digits) */
   nl_bounds_line l3 = nl_bounds_line_a3(0, 7), l4 = nl_bounds_line_a4(), ax = nl_bounds_line_a3(1, 7);
   double n3 = 0, n4 = 0;
