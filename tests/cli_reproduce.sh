@@ -156,6 +156,8 @@ chmod +x "$b"/bench_*
 rc=0; err="$(bash -c 'source "$1"; run_benchmarks "$2"' _ "$nl" "$b" 2>&1 >/dev/null)" || rc=$?
 [ "$rc" = 2 ] && [[ "$err" == *"1 benchmark(s) failed: bench_c"* ]] || fail "bench: rc=$rc: $err"
 [ "$(tr '\n' ' ' <"$b/ran")" = "ran-a ran-c ran-d " ] || fail "bench: ran $(cat "$b/ran")"
+# check --quick with an unknown id: the one line of resolve, nothing after it.
+one_line_exit2 "unknown experiment 'Q9'" check --quick Q9
 # Without --out, reproduce writes into the git-tracked results/ and says so
 # before it starts. The lock on results/ is held here, so it stops right
 # after the warning ("in use", exit 1) and writes nothing; skipped when a
