@@ -9,7 +9,7 @@
 #   bash bench/blas-spread.sh [--quick] [--out DIR] [--configs A,B,...] EXPERIMENT...
 #
 # A measurement made by hand, never by tests, CI or the entry script: it is
-# the one place where OPENBLAS_CORETYPE is set (DEVELOPERS.md: some CPUs need
+# the one place where OPENBLAS_CORETYPE is set (README, "Experiments", on the measured tolerances: some CPUs need
 # the value their machine sets). The kernels tried are those this CPU can
 # run; on a CPU without AVX-512 drop SkylakeX and Zen from CONFIGS.
 #

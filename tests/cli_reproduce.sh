@@ -156,4 +156,41 @@ chmod +x "$b"/bench_*
 rc=0; err="$(bash -c 'source "$1"; run_benchmarks "$2"' _ "$nl" "$b" 2>&1 >/dev/null)" || rc=$?
 [ "$rc" = 2 ] && [[ "$err" == *"1 benchmark(s) failed: bench_c"* ]] || fail "bench: rc=$rc: $err"
 [ "$(tr '\n' ' ' <"$b/ran")" = "ran-a ran-c ran-d " ] || fail "bench: ran $(cat "$b/ran")"
+# check --quick with an unknown id: the one line of resolve, nothing after it.
+one_line_exit2 "unknown experiment 'Q9'" check --quick Q9
+# Without --out, reproduce writes into the git-tracked results/ and says so
+# before it starts. The lock on results/ is held here, so it stops right
+# after the warning ("in use", exit 1) and writes nothing; skipped when a
+# real run holds that lock.
+exec 8<>"$root/results/.noiselab.lock"
+if flock -n 8; then
+  rc=0; err="$("$nl" reproduce S3 2>&1 >/dev/null)" || rc=$?
+  [ "$rc" = 1 ] && [[ "$(printf '%s\n' "$err" | head -n 1)" == *"writing into results/, the committed (git-tracked) results"* ]] \
+    || fail "reproduce without --out: rc=$rc, no warning first: $err"
+fi
+exec 8>&-
+# --resume skips a folder whose manifest has the requested seed, seeds,
+# --quick and commit, and names it; another seed reruns it (the rerun
+# above made S3 and S4 with seed 1). An ETA line follows every experiment
+# but the last.
+rs="$r"
+grep -q '^noiselab: 1/2 done, elapsed [0-9]* s, ETA [0-9]' "$out/rerun.log" || fail "no ETA line: $(cat "$out/rerun.log")"
+"$nl" reproduce --quick --resume --out "$rs" S3 S4 2>"$out/resume2.log" || { cat "$out/resume2.log"; fail "reproduce --resume failed"; }
+grep -q '^noiselab: reproduce --resume: skipped 2 of 2 (.*): s3_fbm s4_marble$' "$out/resume2.log" \
+  && ! grep -q ' done in ' "$out/resume2.log" || fail "--resume did not skip both: $(cat "$out/resume2.log")"
+"$nl" reproduce --quick --resume --seed 2 --out "$rs" S3 2>"$out/resume3.log" || { cat "$out/resume3.log"; fail "reproduce --resume --seed 2 failed"; }
+grep -q '^noiselab: reproduce --resume: skipped 0 of 1 (manifest with seed 2, --quick, ' "$out/resume3.log" \
+  && grep -q 's3_fbm done in' "$out/resume3.log" && grep -q $'^seed\t2$' "$rs/s3_fbm/manifest.tsv" \
+  || fail "--resume with another seed did not rerun: $(cat "$out/resume3.log")"
+# The rule itself: another commit or another seeds count is not finished.
+matches() { bash -c 'source "$1"; shift; resume_matches "$@"' _ "$nl" "$@"; }
+c="$(awk -F'\t' '$1 == "commit" { print $2 }' "$rs/s4_marble/manifest.tsv")"
+matches "$rs/s4_marble/manifest.tsv" s4_marble 1 1 "$c" || fail "resume_matches: the run itself does not match"
+! matches "$rs/s4_marble/manifest.tsv" s4_marble 1 1 "0000$c" || fail "resume_matches: another commit matches"
+! matches "$rs/s4_marble/manifest.tsv" s4_marble 1 0 "$c" || fail "resume_matches: a --quick run matches a full one"
+sed $'s/^seeds\t.*/seeds\t7/' "$rs/s4_marble/manifest.tsv" >"$out/seeds7.tsv"
+! matches "$out/seeds7.tsv" s4_marble 1 1 "$c" || fail "resume_matches: another seeds count matches"
+# ETA: previous times scaled by this run's pace, the mean so far for the rest.
+[ "$(bash -c 'source "$1"; repro_eta 10 1 5 20 -' _ "$nl")" = "1/3 done, elapsed 10 s, ETA 50 s (previous times and mean so far x 2)" ] \
+  || fail "repro_eta: $(bash -c 'source "$1"; repro_eta 10 1 5 20 -' _ "$nl")"
 echo "cli_reproduce: ok"

@@ -1,3 +1,7 @@
+/* dladdr (the installed library finds its image module beside itself). */
+#ifndef NL_OIIO_STATIC
+#define _GNU_SOURCE
+#endif
 #include "image/nl_image.h"
 #include "image/nl_image_config.h"
 
@@ -28,11 +32,23 @@ static nl_oiio_write_fn oiio_write;
 static pthread_once_t oiio_once = PTHREAD_ONCE_INIT;
 static char oiio_why[NL_ERROR_LEN];
 
+/* Where the module is looked for, in order: $NL_OIIO_MODULE; noiselab/ beside
+ * the object that holds this code (an installed libnoiselab.so, wherever it
+ * was copied: `meson install --destdir`, a relocated prefix); the build tree;
+ * the configured prefix. */
 static void backend_open(void)
 {
   const char *env = getenv("NL_OIIO_MODULE");
-  const char *tries[3] = {env && *env ? env : NULL, NL_OIIO_MODULE_BUILD, NL_OIIO_MODULE_INSTALLED};
-  for (int i = 0; i < 3; i++) {
+  static char beside[4096];
+  Dl_info self;
+  const char *slash = dladdr((void *)backend_open, &self) && self.dli_fname
+                      ? strrchr(self.dli_fname, '/') : NULL;
+  if (slash)
+    snprintf(beside, sizeof beside, "%.*s/noiselab/libnl_oiio.so",
+             (int)(slash - self.dli_fname), self.dli_fname);
+  const char *tries[4] = {env && *env ? env : NULL, beside[0] ? beside : NULL,
+                          NL_OIIO_MODULE_BUILD, NL_OIIO_MODULE_INSTALLED};
+  for (int i = 0; i < 4; i++) {
     if (!tries[i]) continue;
     void *h = dlopen(tries[i], RTLD_NOW | RTLD_LOCAL);
     if (h) {
