@@ -129,52 +129,50 @@ void nl_harness_options_free(nl_harness_options *o)
   memset(o, 0, sizeof *o);
 }
 
-static nl_status option_value(int argc, char **argv, int *i, const char **v, nl_error *err)
-{
-  if (*i + 1 >= argc) return nl_fail(err, NL_EINVAL, "%s: missing value", argv[*i]);
-  *v = argv[++*i];
-  return NL_OK;
-}
-
 nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_error *err)
 {
+  /* GNU style through the tools' parser: --seed 3, --seed=3, unique prefixes. */
+  static const nl_opt_spec spec[] = {{"help", 'h', 0}, {"params", 0, 0}, {"quick", 0, 0}, {"out", 0, 1},
+                                     {"seed", 0, 1}, {"seeds", 0, 1}, {"set", 0, 1}, {0}};
   memset(o, 0, sizeof *o);
   o->seed = 1;
   o->seeds = -1;
-  for (int i = 1; i < argc; i++) {
-    const char *a = argv[i], *v = NULL;
+  nl_opt_parser p;
+  nl_status st = NL_OK;
+  nl_opt_begin(&p, argc, argv, 1, spec);
+  for (int k; !st && (k = nl_opt_next(&p, err)) != NL_OPT_END;) {
+    const char *v = p.value[0];
     long n;
-    nl_status st = NL_OK;
-    if (!strcmp(a, "--help") || !strcmp(a, "-h")) o->help = 1;
-    else if (!strcmp(a, "--params")) o->params = 1;
-    else if (!strcmp(a, "--quick")) o->quick = 1;
-    else if (!strcmp(a, "--out")) {
-      if (!(st = option_value(argc, argv, &i, &v, err))) {
-        if (!*v) st = nl_fail(err, NL_EINVAL, "--out: empty folder name");
-        else { free(o->out); o->out = nl_xstrdup(v); }
+    if (k == NL_OPT_ERROR) {
+      size_t len = strlen(err->msg);
+      snprintf(err->msg + len, sizeof err->msg - len, " (see --help)");
+      st = NL_EINVAL;
+    } else if (k == NL_OPT_POSITIONAL) st = nl_fail(err, NL_EINVAL, "%s: unexpected argument (see --help)", v);
+    else if (!strcmp(spec[k].name, "help")) o->help = 1;
+    else if (!strcmp(spec[k].name, "params")) o->params = 1;
+    else if (!strcmp(spec[k].name, "quick")) o->quick = 1;
+    else if (!strcmp(spec[k].name, "out")) {
+      if (!*v) st = nl_fail(err, NL_EINVAL, "--out: empty folder name");
+      else { free(o->out); o->out = nl_xstrdup(v); }
+    } else if (!strcmp(spec[k].name, "seed")) {
+      if (!(st = nl_parse_long("--seed", v, 0, 4294967295L, &n, err))) o->seed = (unsigned long)n;
+    } else if (!strcmp(spec[k].name, "seeds")) {
+      if (!(st = nl_parse_long("--seeds", v, 1, 10000, &n, err))) o->seeds = (int)n;
+    } else {   /* --set NAME=VALUE */
+      const char *eq = strchr(v, '=');
+      if (!eq || eq == v) st = nl_fail(err, NL_EINVAL, "--set: '%s' is not NAME=VALUE", v);
+      else {
+        o->set_key = nl_xrealloc(o->set_key, (size_t)(o->nset + 1) * sizeof *o->set_key);
+        o->set_val = nl_xrealloc(o->set_val, (size_t)(o->nset + 1) * sizeof *o->set_val);
+        o->set_key[o->nset] = nl_xstrdup(v);
+        o->set_key[o->nset][eq - v] = '\0';
+        o->set_val[o->nset++] = nl_xstrdup(eq + 1);
       }
-    } else if (!strcmp(a, "--seed")) {
-      if (!(st = option_value(argc, argv, &i, &v, err)) &&
-          !(st = nl_parse_long("--seed", v, 0, 4294967295L, &n, err))) o->seed = (unsigned long)n;
-    } else if (!strcmp(a, "--seeds")) {
-      if (!(st = option_value(argc, argv, &i, &v, err)) &&
-          !(st = nl_parse_long("--seeds", v, 1, 10000, &n, err))) o->seeds = (int)n;
-    } else if (!strcmp(a, "--set")) {
-      if (!(st = option_value(argc, argv, &i, &v, err))) {
-        const char *eq = strchr(v, '=');
-        if (!eq || eq == v) st = nl_fail(err, NL_EINVAL, "--set: '%s' is not NAME=VALUE", v);
-        else {
-          o->set_key = nl_xrealloc(o->set_key, (size_t)(o->nset + 1) * sizeof *o->set_key);
-          o->set_val = nl_xrealloc(o->set_val, (size_t)(o->nset + 1) * sizeof *o->set_val);
-          o->set_key[o->nset] = nl_xstrdup(v);
-          o->set_key[o->nset][eq - v] = '\0';
-          o->set_val[o->nset++] = nl_xstrdup(eq + 1);
-        }
-      }
-    } else st = nl_fail(err, NL_EINVAL, "%s: unknown option (see --help)", a);
-    if (st) { nl_harness_options_free(o); return st; }
+    }
   }
-  return NL_OK;
+  nl_opt_end(&p);
+  if (st) nl_harness_options_free(o);
+  return st;
 }
 
 void nl_harness_oom_exit(size_t n)

@@ -34,6 +34,13 @@ NL_TEST(options_parse)
   NL_CHECK(o.nset == 2 && !strcmp(o.set_key[0], "size") && !strcmp(o.set_val[0], "64"));
   NL_CHECK(!strcmp(o.set_key[1], "z") && !strcmp(o.set_val[1], "0.5=1"));   /* the first '=' splits */
   nl_harness_options_free(&o);
+  /* GNU style: --name=value and unique prefixes */
+  const char *gnu[] = {"x", "--seed=7", "--out=e", "--set=size=32", "--qu"};
+  NL_CHECK(parse(&o, &err, 5, gnu) == NL_OK && o.seed == 7 && !strcmp(o.out, "e") && o.quick);
+  NL_CHECK(o.nset == 1 && !strcmp(o.set_key[0], "size") && !strcmp(o.set_val[0], "32"));
+  nl_harness_options_free(&o);
+  const char *amb[] = {"x", "--see", "3"};
+  NL_CHECK(parse(&o, &err, 3, amb) == NL_EINVAL && strstr(err.msg, "ambiguous"));
   const char *none[] = {"x"};
   NL_CHECK(parse(&o, &err, 1, none) == NL_OK && o.seed == 1 && o.seeds == -1 && !o.out && !o.quick && !o.params);
   nl_harness_options_free(&o);
