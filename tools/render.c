@@ -29,6 +29,7 @@ typedef struct {
   long size, octaves, seed, table_size, bits, points, tile;
   double extent, x0, y0, z, gain, lacunarity, amplitude, stripes, lambda;
   int reference;
+  int normalize_given;   /* --normalize was given (gctbf's default is range, not bound) */
 } options;
 
 static void usage(void)
@@ -58,7 +59,13 @@ static void usage(void)
          "  --table-size M       gradient-table size for noise2/table, 4..1048576 (512)\n"
          "  --seed S             table seed (1)   --reference  Perlin's own permutation\n"
          "  --bits 8|16|32       image bit depth (8; EXR defaults to 32)\n"
-         "  --normalize bound|range   grey mapping for integer formats (bound)\n");
+         "  --normalize bound|range   grey mapping for integer formats: the analytic bound, or\n"
+         "                       the image's min..max (bound; range for gctbf, whose values\n"
+         "                       fill a small part of its bound)\n\n"
+         "Pixel (column c, row r) holds the noise at x = x0 + (c + 1/2) extent / size,\n"
+         "y = y0 + (r + 1/2) extent / size: row 0 is the top of the image, so y grows\n"
+         "downward in the picture (as the .tsv's rows). An option that does not apply to\n"
+         "the chosen noise or output format is ignored with a warning.\n");
 }
 
 static void fail(const char *msg) { fprintf(stderr, "noiselab render: %s\n", msg); exit(2); }
@@ -81,6 +88,12 @@ static int one_of(const char *s, const char *const *list)
   return 0;
 }
 
+static int ends_with(const char *s, const char *suffix)
+{
+  size_t a = strlen(s), b = strlen(suffix);
+  return a >= b && strcasecmp(s + a - b, suffix) == 0;
+}
+
 static void parse(int argc, char **argv, options *o)
 {
   *o = (options){.basis = "improved", .normalize = "bound", .terms = "F1", .count = "inverse",
@@ -101,10 +114,12 @@ static void parse(int argc, char **argv, options *o)
     [R_HELP] = {"help", 'h', 0}, {NULL, 0, 0}};
   nl_opt_parser p;
   nl_error err;
+  int given[R_HELP + 1] = {0};
   nl_opt_begin(&p, argc, argv, 1, spec);
   for (int k; (k = nl_opt_next(&p, &err)) != NL_OPT_END;) {
     const char *a = p.name, *v = p.value[0];
     char m[NL_ERROR_LEN + 32];
+    if (k >= 0) given[k] = 1;
     switch (k) {
     case NL_OPT_ERROR: snprintf(m, sizeof m, "%s (see --help)", err.msg); fail(m); break;
     case NL_OPT_POSITIONAL:
@@ -145,6 +160,37 @@ static void parse(int argc, char **argv, options *o)
   nl_opt_end(&p);
   char m[512];
   if (!o->noise) fail("no NOISE given (see --help)");
+  o->normalize_given = given[R_NORMALIZE];
+  if (!given[R_NORMALIZE] && !strcmp(o->noise, "gctbf")) o->normalize = "range";
+  /* Options the chosen noise or format does not read: say so, once each. */
+  int sums = !strcmp(o->noise, "fractal") || !strcmp(o->noise, "turbulence") || !strcmp(o->noise, "fbm")
+             || !strcmp(o->noise, "marble");
+  const char *kind = sums ? o->basis : o->noise;
+  int is_tsv = o->out && ends_with(o->out, ".tsv");
+  struct { int opt, applies; const char *why; } rules[] = {
+    {R_OCTAVES, sums, "only the sums (fractal, turbulence, fbm, marble) have octaves"},
+    {R_GAIN, !strcmp(o->noise, "fbm"), "only fbm has a gain"},
+    {R_LACUNARITY, !strcmp(o->noise, "fbm"), "only fbm has a lacunarity"},
+    {R_AMPLITUDE, !strcmp(o->noise, "marble"), "only marble has an amplitude"},
+    {R_STRIPES, !strcmp(o->noise, "marble"), "only marble has stripes"},
+    {R_BASIS, sums, "a single noise has no basis under it"},
+    {R_TERMS, !strcmp(kind, "gctbf"), "only gctbf reads terms"},
+    {R_COUNT, !strcmp(kind, "gctbf"), "only gctbf counts feature points"},
+    {R_LAMBDA, !strcmp(kind, "gctbf"), "only gctbf has feature points"},
+    {R_POINTS, !strcmp(kind, "gctbf"), "only gctbf has feature points"},
+    {R_TILE, !strcmp(kind, "wavelet"), "only wavelet noise has a tile"},
+    {R_TABLE_SIZE, !strcmp(kind, "noise2") || !strcmp(kind, "table"), "only noise2 (or basis table) has a gradient table"},
+    {R_REFERENCE, !strcmp(kind, "improved"), "only improved noise has Perlin's permutation"},
+    {R_Z, strcmp(kind, "noise2") && strcmp(kind, "table"), "2D table noise has no plane z"},
+    {R_BITS, !is_tsv, "a .tsv holds the values as text"},
+    {R_NORMALIZE, !is_tsv, "a .tsv holds the raw values"},
+  };
+  for (size_t i = 0; i < sizeof rules / sizeof *rules; i++)
+    if (given[rules[i].opt] && !rules[i].applies)
+      fprintf(stderr, "noiselab render: warning: --%s ignored for %s%s: %s\n", spec[rules[i].opt].name,
+              o->noise, is_tsv && (rules[i].opt == R_BITS || rules[i].opt == R_NORMALIZE) ? " to a .tsv" : "", rules[i].why);
+  if (given[R_BITS] && o->out && (ends_with(o->out, ".jpg") || ends_with(o->out, ".jpeg")) && o->bits != 8)
+  { fprintf(stderr, "noiselab render: warning: --bits %ld: JPEG stores 8 bits; writing 8\n", o->bits); o->bits = 8; }
   if (!one_of(o->noise, NOISES)) { snprintf(m, sizeof m, "%s: unknown noise (noise2, improved, gctbf, wavelet, fractal, turbulence, fbm, marble)", o->noise); fail(m); }
   if (!o->out) fail("-o: no output file given");
   const char *bases[] = {"improved", "table", "gctbf", "wavelet", NULL}, *norms[] = {"bound", "range", NULL};
@@ -196,11 +242,6 @@ static void check_lattice(const options *o, const nl_noise_octaves *oct, const c
   fail(m);
 }
 
-static int ends_with(const char *s, const char *suffix)
-{
-  size_t a = strlen(s), b = strlen(suffix);
-  return a >= b && strcasecmp(s + a - b, suffix) == 0;
-}
 
 /* Evaluates the chosen noise; *lo, *hi are its analytic range. */
 static double *evaluate(const options *o, double *lo, double *hi)
@@ -260,6 +301,7 @@ static void write_tsv(const options *o, const double *v)
       nl_table_append(t, "ddd", o->x0 + (c + 0.5) * d, o->y0 + (r + 0.5) * d, v[r * o->size + c]);
   nl_error err;
   if (nl_table_write(t, o->out, &err)) fail(err.msg);
+  fprintf(stderr, "noiselab render: wrote %s (%ld x %ld values of %s: x, y, value)\n", o->out, o->size, o->size, o->noise);
   nl_table_free(t);
 }
 
@@ -277,6 +319,9 @@ static void write_image(const options *o, const double *v, double lo, double hi)
   if (raw) for (size_t k = 0; k < n; k++) im->data[k] = (float)v[k];
   nl_error err;
   if (nl_image_write(im, o->out, bits, &err)) fail(err.msg);
+  if (raw) fprintf(stderr, "noiselab render: wrote %s (%ld x %ld %s, %d-bit float, raw values)\n", o->out, o->size, o->size, o->noise, bits);
+  else fprintf(stderr, "noiselab render: wrote %s (%ld x %ld %s, %d-bit, values [%.4g, %.4g] to black..white: %s)\n", o->out,
+               o->size, o->size, o->noise, bits, lo, hi, strcmp(o->normalize, "range") ? "the analytic bound" : "the image's range");
   nl_image_free(im);
 }
 
