@@ -58,7 +58,7 @@ int main(int argc, char **argv)
   luminance_band_power(syn, p.nbands, pb);
   luminance_band_power(ed, p.nbands, pc);
   nl_byexample_params pn, pne;
-  nl_byexample_options no_hist = {1, 0, 0, 0};
+  nl_byexample_options no_hist = {1, 0, 0, 0, NL_HIST_PAPER};
   if (nl_byexample_analyse(ex, &no_hist, &pn, &err)) nl_harness_die(r, 1, "%s", err.msg);
   pne = pn;
   nl_byexample_attenuate(&pne, nfine, factor);

@@ -1,6 +1,6 @@
 /* noiselab example - procedural textures by example (Lagae et al. 2010).
  *
- *   noiselab example analyse IMAGE -o PARAMS [--rgb] [--no-histogram]
+ *   noiselab example analyse IMAGE -o PARAMS [--rgb] [--no-histogram] [--paper-histogram]
  *   noiselab example synthesize PARAMS --size N [--height H] [--seed S]
  *                    [--scale S] [--solid [--z Z]] -o OUT.png|.exr|.tif
  *   noiselab example morph PARAMS1 PARAMS2 --t T -o OUT.params
@@ -17,7 +17,7 @@
 
 static void usage(FILE *fp)
 {
-  fputs("usage: noiselab example analyse IMAGE -o PARAMS [--rgb] [--no-histogram]\n"
+  fputs("usage: noiselab example analyse IMAGE -o PARAMS [--rgb] [--no-histogram] [--paper-histogram]\n"
         "       noiselab example synthesize PARAMS --size N [--height H] [--seed S] [--scale S]\n"
         "                        [--solid [--z Z]] -o OUT.png|.exr|.tif\n"
         "       noiselab example morph PARAMS1 PARAMS2 --t T -o OUT.params\n"
@@ -25,6 +25,8 @@ static void usage(FILE *fp)
         "  analyse     fit the 66-parameter procedural texture of an exemplar (grey, RGB, RGBA;\n"
         "              8/16-bit or float; at least 16 x 16 pixels)\n"
         "  --rgb       no PCA colour decorrelation;  --no-histogram  no histogram matching\n"
+        "  --paper-histogram  the paper's 10 quantiles at p = j/9 (default: 33 quantiles at\n"
+        "              p = Phi(z), z = -4..4 every 1/4 sd, which keep the tails)\n"
         "  synthesize  evaluate it on an N x H grid (pixels of the exemplar's size times --scale);\n"
         "              --solid uses 3D wavelet noise, the slice at depth --z\n"
         "  morph       interpolate two parameter files at t in [0, 1] (matrix by quaternion slerp)\n",
@@ -46,7 +48,7 @@ typedef struct {
   const char *out;
   long size, height, seed;
   double t, scale, z;
-  int rgb, nohist, solid, have_t, have_size;
+  int rgb, nohist, paperhist, solid, have_t, have_size;
 } args;
 
 static void parse(int argc, char **argv, args *a)
@@ -69,6 +71,7 @@ static void parse(int argc, char **argv, args *a)
     else if (!strcmp(s, "--z")) check(nl_parse_double("--z", v, -1e9, 1e9, &a->z, &err), &err);
     else if (!strcmp(s, "--rgb")) { a->rgb = 1; continue; }
     else if (!strcmp(s, "--no-histogram")) { a->nohist = 1; continue; }
+    else if (!strcmp(s, "--paper-histogram")) { a->paperhist = 1; continue; }
     else if (!strcmp(s, "--solid")) { a->solid = 1; continue; }
     else if (!strcmp(s, "-h") || !strcmp(s, "--help")) { usage(stdout); exit(0); }
     else if (s[0] == '-' && s[1]) { snprintf(err.msg, sizeof err.msg, "unknown option '%s' (try --help)", s); die(err.msg); }
@@ -91,7 +94,7 @@ static int analyse(const args *a)
   nl_image *im;
   if (a->npos != 1) die("analyse takes one IMAGE");
   check(nl_image_read(a->pos[0], &im, &err), &err);
-  nl_byexample_options o = {!a->rgb, !a->nohist, 0, 0};
+  nl_byexample_options o = {!a->rgb, !a->nohist, 0, 0, a->paperhist ? NL_HIST_PAPER : NL_HIST_GAUSS};
   nl_byexample_params p;
   if (nl_byexample_analyse(im, &o, &p, &err)) {
     char msg[NL_ERROR_LEN + 300];
