@@ -1,7 +1,8 @@
 # Band power ratio synthesis / photo per eq. 13 band (photos.tsv), one panel
 # per histogram representation, one line per photograph; filled points are
 # the checked bands (share of the photo's power >= min_share), dashed lines
-# the x1.3 criterion.
+# the x1.3 criterion; lines join the first replicate, points are every
+# replicate.
 set terminal pngcairo size 1000,420
 set output dir.'/photos.png'
 set datafile separator "\t"
@@ -17,7 +18,7 @@ set key top left font ',8'
 set xtics 1
 do for [rep in "gauss33 paper10"] {
   set title rep
-  plot for [i = 1:words(ex)] f using "band":((strcol("exemplar") eq word(ex, i) && strcol("representation") eq rep) ? column("ratio") : 1/0) \
+  plot for [i = 1:words(ex)] f using "band":((strcol("exemplar") eq word(ex, i) && strcol("representation") eq rep && column("replicate") == 0) ? column("ratio") : 1/0) \
          with lines lc i title word(ex, i), \
        for [i = 1:words(ex)] f using "band":((strcol("exemplar") eq word(ex, i) && strcol("representation") eq rep && column("checked") > 0) ? column("ratio") : 1/0) \
          with points pt 7 lc i notitle, \

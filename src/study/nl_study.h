@@ -130,17 +130,21 @@ void nl_study_example_gauss(size_t n, unsigned long seed, nl_byexample_hist_kind
 /* The tables nl_study_example_photo appends to (caller frees). */
 nl_table *nl_study_example_band_table(void);
 nl_table *nl_study_example_summary_table(void);
-/* Analyses a photograph with representation hk, synthesises size x size
- * (seed) and compares their luminance: one row per eq. 13 band of the photo
+/* Compares a synthesis with its photograph ex by luminance: one row per eq. 13
+ * band of the photo (bands may be NULL), tagged with `replicate`,
  * to `bands` (power of photo and synthesis, ratio synth/photo, the band's
  * share of the photo's power, checked = share >= min_share) and one row to
  * `sum` (KS of the luminance, mean KS over R, G, B, tail mass beyond 2.5 sd
  * of photo and synthesis, speckle (nl_byexample_speckle), the checked band
  * whose ratio is farthest from 1, and pass = that ratio within
- * [1/max_ratio, max_ratio] and KS < max_ks). Returns the synthesis; NULL
- * and err when analysis fails. */
+ * [1/max_ratio, max_ratio] and KS < max_ks). rep names the representation. */
+void nl_study_example_compare(const nl_image *ex, const nl_image *syn, const char *name, const char *rep,
+                              int replicate, double min_share, double max_ratio, double max_ks, nl_table *bands, nl_table *sum);
+/* Analyses a photograph with representation hk, synthesises size x size
+ * (seed) and appends nl_study_example_compare's rows. Returns the synthesis;
+ * NULL and err when analysis or synthesis fails. */
 nl_image *nl_study_example_photo(const nl_image *ex, const char *name, nl_byexample_hist_kind hk, int size,
-                                 unsigned long seed, double min_share, double max_ratio, double max_ks,
+                                 unsigned long seed, int replicate, double min_share, double max_ratio, double max_ks,
                                  nl_table *bands, nl_table *sum, nl_error *err);
 
 /* Reads the first max photographs of nl_study_example_list; -1 and err on the
@@ -151,11 +155,12 @@ int nl_study_example_load(const char *dir, char (*names)[64], nl_image **photos,
  * Gaussian's own 2 Q(2.5)). Caller frees. */
 nl_table *nl_study_example_gauss_table(size_t n, int K, unsigned long seed0);
 /* Every photograph through nl_study_example_photo with both representations
- * (same seed): writes photos.tsv (bands), photos_summary.tsv and the montage
+ * and K replicates (nl_seed_replicate(seed, s), the same for both; rows carry
+ * the replicate): writes photos.tsv (bands), photos_summary.tsv and the montage
  * photos_montage.png (photo | gauss33 | paper10 per row); returns the summary
  * table (caller frees). */
 nl_table *nl_study_example_photos(nl_harness *r, char (*names)[64], nl_image **photos, int np, int size,
-                                  unsigned long seed, double min_share, double max_ratio, double max_ks);
+                                  int K, unsigned long seed, double min_share, double max_ratio, double max_ks);
 
 /* L3's report paragraphs, tables and figures for the Gaussian self-match
  * (gt, K seeds) and the photographs (pt, nl_study_example_photos). */
