@@ -12,10 +12,11 @@
 #include <math.h>
 #include <stdlib.h>
 
-enum { NKIND = 4, NVAR = 4 };
+enum { NKIND = 4, NVAR = 5 };
 static const char *kinds[NKIND] = {"wavelet", "clouds", "granite", "marble"};
-static const char *variants[NVAR] = {"pca_hist", "pca_nohist", "rgb_hist", "pca_hist_fc"};
-static const nl_byexample_options var_opt[NVAR] = {{1, 1, 0, 0, NL_HIST_PAPER}, {1, 0, 0, 0, NL_HIST_PAPER}, {0, 1, 0, 0, NL_HIST_PAPER}, {1, 1, 0, 0, NL_HIST_PAPER}};
+static const char *variants[NVAR] = {"pca_hist", "pca_nohist", "rgb_hist", "pca_hist_fc", "pca_hist_gauss33"};
+static const nl_byexample_options var_opt[NVAR] = {{1, 1, 0, 0, NL_HIST_PAPER}, {1, 0, 0, 0, NL_HIST_PAPER}, {0, 1, 0, 0, NL_HIST_PAPER},
+                                                   {1, 1, 0, 0, NL_HIST_PAPER}, {1, 1, 0, 0, NL_HIST_GAUSS}};
 
 int main(int argc, char **argv)
 {
@@ -87,12 +88,12 @@ int main(int argc, char **argv)
     nl_harness_write_table(r, rt, name);
     nl_table_free(rt);
 
-    const nl_image *panels[5] = {ex, first[0], first[1], first[2], first[3]};
-    const char *labels[5] = {"(a) exemplar", "(b) paper", "(c) no hist.", "(d) RGB", "(e) FC"};
+    const nl_image *panels[6] = {ex, first[0], first[1], first[2], first[3], first[4]};
+    const char *labels[6] = {"(a) exemplar", "(b) paper", "(c) no hist.", "(d) RGB", "(e) FC", "(f) gauss33"};
     char title[96];
     snprintf(title, sizeof title, "%s exemplar, %d x %d, seed %lu", kinds[k], size, size, seed0);
     snprintf(name, sizeof name, "synthesis_%s.png", kinds[k]);
-    nl_study_montage(r, panels, labels, 5, 5, title, name);
+    nl_study_montage(r, panels, labels, 6, 6, title, name);
     for (int v = 0; v < NVAR; v++) nl_image_free(first[v]);
     nl_image_free(ex);
   }
@@ -124,14 +125,15 @@ int main(int argc, char **argv)
   nl_harness_report_table(r, kt, "KS distance and colour-correlation error per exemplar and variant", 3);
   nl_harness_report_table(r, ft, "steffen vs Fritsch-Carlson: largest pixel difference (intensity units)", 4);
   for (int k = 0; k < NKIND; k++) {
-    char file[64], cap[320];
+    char file[64], cap[400];
     snprintf(file, sizeof file, "synthesis_%s.png", kinds[k]);
     snprintf(cap, sizeof cap, "Fig. 5-8 analogue, %s: (a) exemplar, (b) PCA + histogram matching (the paper's method), "
-             "(c) without histogram matching (Fig. 6b), (d) independent RGB channels (Fig. 5b), (e) Fritsch-Carlson spline", kinds[k]);
+             "(c) without histogram matching (Fig. 6b), (d) independent RGB channels (Fig. 5b), (e) Fritsch-Carlson spline, "
+             "(f) 33 quantiles at Gaussian knots (gauss33, not the paper's)", kinds[k]);
     nl_harness_figure(r, file, cap);
   }
   nl_harness_figure(r, "spectra.png", "Radially averaged power spectra (luminance) of exemplar and synthesis, per exemplar");
-  nl_study_example_report(r, gt, pt, K, psize, seed0, min_share, max_ratio, max_ks);
+  nl_study_example_report(r, kt, gt, pt, K, psize, seed0, min_share, max_ratio, max_ks);
   for (int i = 0; i < np; i++) nl_image_free(photos[i]);
   nl_table_free(gt);
   nl_table_free(pt);

@@ -163,8 +163,10 @@ nl_table *nl_study_example_photos(nl_harness *r, char (*names)[64], nl_image **p
                                   int K, unsigned long seed, double min_share, double max_ratio, double max_ks);
 
 /* L3's report paragraphs, tables and figures for the Gaussian self-match
- * (gt, K seeds) and the photographs (pt, nl_study_example_photos). */
-void nl_study_example_report(nl_harness *r, const nl_table *gt, const nl_table *pt, int K, int size,
+ * (gt, K seeds), the procedural `wavelet` exemplar's KS per variant (kt,
+ * columns kind, variant, ks_mean) and the photographs (pt,
+ * nl_study_example_photos). */
+void nl_study_example_report(nl_harness *r, const nl_table *kt, const nl_table *gt, const nl_table *pt, int K, int size,
                              unsigned long seed, double min_share, double max_ratio, double max_ks);
 
 #endif
