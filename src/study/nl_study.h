@@ -156,9 +156,11 @@ int nl_study_example_load(const char *dir, char (*names)[64], nl_image **photos,
 nl_table *nl_study_example_gauss_table(size_t n, int K, unsigned long seed0);
 /* Every photograph through nl_study_example_photo with both representations
  * and K replicates (nl_seed_replicate(seed, s), the same for both; rows carry
- * the replicate): writes photos.tsv (bands), photos_summary.tsv and the montage
- * photos_montage.png (photo | gauss33 | paper10 per row); returns the summary
- * table (caller frees). */
+ * the replicate): writes photos.tsv (bands), photos_summary.tsv (one row per
+ * replicate), photos_mean.tsv (over replicates: mean KS, tails, speckle, the
+ * checked band whose mean power is farthest from the photo's, passes of K)
+ * and the montage photos_montage.png (photo | gauss33 | paper10 per row,
+ * top-left 256^2 crops); returns the photos_mean table (caller frees). */
 nl_table *nl_study_example_photos(nl_harness *r, char (*names)[64], nl_image **photos, int np, int size,
                                   int K, unsigned long seed, double min_share, double max_ratio, double max_ks);
 
