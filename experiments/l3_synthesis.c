@@ -1,8 +1,10 @@
 /* L3 - Lagae et al. 2010 sec. 5, Fig. 5-8: texture synthesis by analysis.
- * Procedural exemplars (the repo ships no photographs), each analysed and
- * synthesised four ways: the paper's method (PCA + histogram matching,
- * steffen spline), without histogram matching (Fig. 6b), in RGB without
- * PCA (Fig. 5b), and with a Fritsch-Carlson spline instead of steffen. */
+ * Procedural exemplars, each analysed and synthesised four ways: the paper's
+ * method (PCA + histogram matching, steffen spline), without histogram
+ * matching (Fig. 6b), in RGB without PCA (Fig. 5b), and with a
+ * Fritsch-Carlson spline instead of steffen. Then the photographs of
+ * data/exemplars (--exemplars DIR) with the paper's 10-quantile histogram and
+ * with 33 quantiles at Gaussian knots, per eq. 13 band against the photo. */
 #include "byexample/nl_byexample.h"
 #include "harness/nl_harness.h"
 #include "study/nl_study.h"
@@ -10,20 +12,33 @@
 #include <math.h>
 #include <stdlib.h>
 
-enum { NKIND = 4, NVAR = 4 };
+enum { NKIND = 4, NVAR = 5 };
 static const char *kinds[NKIND] = {"wavelet", "clouds", "granite", "marble"};
-static const char *variants[NVAR] = {"pca_hist", "pca_nohist", "rgb_hist", "pca_hist_fc"};
-static const nl_byexample_options var_opt[NVAR] = {{1, 1, 0, 0}, {1, 0, 0, 0}, {0, 1, 0, 0}, {1, 1, 0, 0}};
+static const char *variants[NVAR] = {"pca_hist", "pca_nohist", "rgb_hist", "pca_hist_fc", "pca_hist_gauss33"};
+static const nl_byexample_options var_opt[NVAR] = {{1, 1, 0, 0, NL_HIST_PAPER}, {1, 0, 0, 0, NL_HIST_PAPER}, {0, 1, 0, 0, NL_HIST_PAPER},
+                                                   {1, 1, 0, 0, NL_HIST_PAPER}, {1, 1, 0, 0, NL_HIST_GAUSS}};
 
 int main(int argc, char **argv)
 {
+  const char *exdir;
+  nl_error err;
+  if (nl_study_example_dir_parse(&argc, argv, &exdir, &err)) { fprintf(stderr, "l3_synthesis: %s\n", err.msg); return 2; }
   nl_harness *r = nl_harness_begin("l3_synthesis", "L3 - Texture synthesis by example: PCA colour and histogram matching", argc, argv);
   int quick = nl_harness_quick(r);
   int size = (int)nl_harness_param_int(r, "size", quick ? 128 : 512, 16, 4096,
                                        "side in pixels of the exemplar analysed and of the synthesised textures (quick 128)");
+  int nphoto = (int)nl_harness_param_int(r, "photos", quick ? 2 : 16, 1, 16, "photographs of --exemplars DIR used, in name order (quick 2)");
+  int psize = (int)nl_harness_param_int(r, "photo_size", quick ? 128 : 512, 16, 4096, "side of the syntheses of photographs (quick 128)");
+  double min_share = nl_harness_param(r, "min_share", 0.02, 0, 1, "bands holding at least this share of the photo's power are checked");
+  double max_ratio = nl_harness_param(r, "max_ratio", 1.3, 1, 100, "a checked band's synthesis/photo power ratio must lie in [1/max_ratio, max_ratio]");
+  double max_ks = nl_harness_param(r, "max_ks", 0.03, 0, 1, "the KS distance of the luminance must be below this");
   nl_harness_params_done(r);
   int K = nl_harness_seeds(r);
   unsigned long seed0 = nl_harness_seed(r);
+  char names[16][64];
+  nl_image *photos[16];
+  int np = nl_study_example_load(exdir, names, photos, nphoto, &err);   /* before any output */
+  if (np <= 0) nl_harness_die(r, 2, "%s", err.msg);
 
   const char *kcols[] = {"kind", "variant", "ks_mean", "ks_sd", "ks_r", "ks_g", "ks_b", "corr_err", "params"};
   nl_table *kt = nl_table_alloc(9, kcols);
@@ -38,7 +53,6 @@ int main(int argc, char **argv)
     int nparams = 0;
     for (int v = 0; v < NVAR; v++) {
       nl_byexample_params p;
-      nl_error err;
       if (nl_byexample_analyse(ex, &var_opt[v], &p, &err)) nl_harness_die(r, 1, "%s: %s", kinds[k], err.msg);
       nl_byexample_synth_options so = {1, 0, 0, v == 3 ? NL_SPLINE_FRITSCH_CARLSON : NL_SPLINE_STEFFEN};
       double *ks = malloc((size_t)K * sizeof *ks), per[3], acc[3] = {0}, m = 0, ss = 0, ce = 0;
@@ -74,19 +88,22 @@ int main(int argc, char **argv)
     nl_harness_write_table(r, rt, name);
     nl_table_free(rt);
 
-    const nl_image *panels[5] = {ex, first[0], first[1], first[2], first[3]};
-    const char *labels[5] = {"(a) exemplar", "(b) paper", "(c) no hist.", "(d) RGB", "(e) FC"};
+    const nl_image *panels[6] = {ex, first[0], first[1], first[2], first[3], first[4]};
+    const char *labels[6] = {"(a) exemplar", "(b) paper", "(c) no hist.", "(d) RGB", "(e) FC", "(f) gauss33"};
     char title[96];
     snprintf(title, sizeof title, "%s exemplar, %d x %d, seed %lu", kinds[k], size, size, seed0);
     snprintf(name, sizeof name, "synthesis_%s.png", kinds[k]);
-    nl_study_montage(r, panels, labels, 5, 5, title, name);
+    nl_study_montage(r, panels, labels, 6, 6, title, name);
     for (int v = 0; v < NVAR; v++) nl_image_free(first[v]);
     nl_image_free(ex);
   }
   nl_harness_write_table(r, kt, "ks.tsv");
   nl_harness_write_table(r, ft, "spline.tsv");
+  nl_table *gt = nl_study_example_gauss_table((size_t)size * size, K, seed0);
+  nl_harness_write_table(r, gt, "gauss.tsv");
+  nl_table *pt = nl_study_example_photos(r, names, photos, np, psize, K, seed0, min_share, max_ratio, max_ks);
 
-  nl_harness_text(r, "Exemplars are made procedurally at %d x %d (no photographs ship with the repo): "
+  nl_harness_text(r, "Procedural exemplars are made at %d x %d: "
                   "`wavelet` (three multiresolution wavelet noises mixed by a correlated colour matrix: "
                   "the class the method models exactly), `clouds` (fBm of improved noise through a "
                   "sky ramp, clipped at both ends: a skewed histogram with spikes), `granite` "
@@ -108,13 +125,18 @@ int main(int argc, char **argv)
   nl_harness_report_table(r, kt, "KS distance and colour-correlation error per exemplar and variant", 3);
   nl_harness_report_table(r, ft, "steffen vs Fritsch-Carlson: largest pixel difference (intensity units)", 4);
   for (int k = 0; k < NKIND; k++) {
-    char file[64], cap[320];
+    char file[64], cap[400];
     snprintf(file, sizeof file, "synthesis_%s.png", kinds[k]);
     snprintf(cap, sizeof cap, "Fig. 5-8 analogue, %s: (a) exemplar, (b) PCA + histogram matching (the paper's method), "
-             "(c) without histogram matching (Fig. 6b), (d) independent RGB channels (Fig. 5b), (e) Fritsch-Carlson spline", kinds[k]);
+             "(c) without histogram matching (Fig. 6b), (d) independent RGB channels (Fig. 5b), (e) Fritsch-Carlson spline, "
+             "(f) 33 quantiles at Gaussian knots (gauss33, not the paper's)", kinds[k]);
     nl_harness_figure(r, file, cap);
   }
   nl_harness_figure(r, "spectra.png", "Radially averaged power spectra (luminance) of exemplar and synthesis, per exemplar");
+  nl_study_example_report(r, kt, gt, pt, K, psize, seed0, min_share, max_ratio, max_ks);
+  for (int i = 0; i < np; i++) nl_image_free(photos[i]);
+  nl_table_free(gt);
+  nl_table_free(pt);
 
   nl_table_free(kt);
   nl_table_free(ft);

@@ -198,6 +198,49 @@ void nl_byexample_quantiles(const double *v, size_t n, double *q)
   free(s);
 }
 
+const char *nl_byexample_hist_name(nl_byexample_hist_kind kind)
+{
+  return kind == NL_HIST_GAUSS ? "gauss33" : kind == NL_HIST_PAPER ? "paper10" : "unknown";
+}
+
+int nl_byexample_hist_knots(nl_byexample_hist_kind kind, double *x, double *p)
+{
+  if (kind == NL_HIST_PAPER) {
+    for (int j = 0; j < NL_EXAMPLE_HIST; j++) {
+      if (x) x[j] = (double)j / (NL_EXAMPLE_HIST - 1);
+      if (p) p[j] = (double)j / (NL_EXAMPLE_HIST - 1);
+    }
+    return NL_EXAMPLE_HIST;
+  }
+  if (kind != NL_HIST_GAUSS) return 0;
+  for (int j = 0; j < NL_EXAMPLE_HIST_MAX; j++) {
+    double z = -4.0 + 0.25 * j;
+    if (x) x[j] = z;
+    if (p) p[j] = gsl_cdf_ugaussian_P(z);
+  }
+  return NL_EXAMPLE_HIST_MAX;
+}
+
+void nl_byexample_hist(const double *v, size_t n, nl_byexample_hist_kind kind, double *q)
+{
+  if (kind == NL_HIST_PAPER) { nl_byexample_quantiles(v, n, q); return; }
+  double p[NL_EXAMPLE_HIST_MAX], *s = nl_xmalloc(n * sizeof *s);
+  int m = nl_byexample_hist_knots(kind, NULL, p);
+  memcpy(s, v, n * sizeof *s);
+  qsort(s, n, sizeof *s, cmp_double);
+  /* Order statistic r sits at p = (r + 1/2) / n, the same plotting position
+   * as nl_byexample_gaussianize, so a Gaussian channel's knots lie on the
+   * line its gaussianized values do; beyond the first and last order
+   * statistics the min and max. */
+  for (int j = 0; j < m; j++) {
+    double pos = fmin(fmax(p[j] * (double)n - 0.5, 0.0), (double)(n - 1));
+    size_t i = (size_t)pos;
+    double f = pos - (double)i;
+    q[j] = i + 1 < n ? s[i] + f * (s[i + 1] - s[i]) : s[n - 1];
+  }
+  free(s);
+}
+
 typedef struct { double v; size_t i; } ranked;
 
 static int cmp_ranked(const void *a, const void *b)
@@ -285,12 +328,29 @@ void nl_byexample_match(double *v, size_t n, double sigma, const double *q, nl_b
   nl_byexample_spline(p, q, NL_EXAMPLE_HIST, kind, v, v, n);
 }
 
+void nl_byexample_match_kind(double *v, size_t n, double sigma, nl_byexample_hist_kind hk, const double *q,
+                             nl_byexample_spline_kind kind)
+{
+  if (hk == NL_HIST_PAPER) { nl_byexample_match(v, n, sigma, q, kind); return; }
+  double z[NL_EXAMPLE_HIST_MAX];
+  int m = nl_byexample_hist_knots(hk, z, NULL);
+  if (q[m - 1] == q[0]) {   /* constant channel */
+    for (size_t i = 0; i < n; i++) v[i] = q[0];
+    return;
+  }
+  /* The noise in sd units is z itself: the cubic through (z_j, q_j) is the
+   * exemplar's quantile function in Gaussian coordinates, clamped to the
+   * outer knots (+-4 sd, 6e-5 of a Gaussian lies beyond). */
+  for (size_t i = 0; i < n; i++) v[i] /= sigma;
+  nl_byexample_spline(z, q, m, kind, v, v, n);
+}
+
 /* ---- analysis and synthesis (sec. 5.3) ----------------------------------- */
 
 nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *opt,
                                nl_byexample_params *p, nl_error *err)
 {
-  nl_byexample_options o = {1, 1, 0, 0};
+  nl_byexample_options o = {1, 1, 0, 0, NL_HIST_PAPER};
   if (opt) o = *opt;
   if (o.tile == 0) o.tile = NL_EXAMPLE_TILE;
   if (im->width < NL_EXAMPLE_MIN_SIZE || im->height < NL_EXAMPLE_MIN_SIZE)
@@ -302,6 +362,9 @@ nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *o
   p->nbands = nl_byexample_band_count(im->width, im->height);
   p->tile = o.tile;
   p->histogram = o.histogram;
+  p->hist_kind = o.hist_kind;
+  p->nhist = nl_byexample_hist_knots(o.hist_kind, NULL, NULL);
+  if (!p->nhist) return nl_fail(err, NL_EINVAL, "unknown histogram representation %d", (int)o.hist_kind);
   p->sigma2 = o.sigma2 > 0 ? o.sigma2 : nl_byexample_sigma2(o.tile);
   nl_status st = nl_byexample_pca(im, p->mean, p->matrix, err);
   if (st) return st;
@@ -314,8 +377,12 @@ nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *o
   for (int c = 0; c < p->channels; c++) plane[c] = nl_xmalloc(n * sizeof(double));
   nl_byexample_decorrelate(im, p->channels, p->mean, p->matrix, plane);
   for (int c = 0; c < p->channels; c++) {
-    nl_byexample_quantiles(plane[c], n, p->hist[c]);
-    int flat = p->hist[c][0] == p->hist[c][NL_EXAMPLE_HIST - 1];
+    /* The flat test needs the true extremes (the gauss reading's outer
+     * knots are order statistics next to them). */
+    double ext[NL_EXAMPLE_HIST];
+    nl_byexample_quantiles(plane[c], n, ext);
+    nl_byexample_hist(plane[c], n, p->hist_kind, p->hist[c]);
+    int flat = ext[0] == ext[NL_EXAMPLE_HIST - 1];
     if (p->histogram && !flat) nl_byexample_gaussianize(plane[c], n);
     if (!flat) nl_byexample_weights(plane[c], im->width, im->height, p->nbands, p->sigma2, p->w[c]);
     free(plane[c]);
@@ -325,7 +392,7 @@ nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *o
   for (int c = 0; c < p->channels; c++) {
     int bad = !isfinite(p->mean[c]);
     for (int k = 0; k < p->channels; k++) bad |= !isfinite(p->matrix[c][k]);
-    for (int k = 0; k < NL_EXAMPLE_HIST; k++) bad |= !isfinite(p->hist[c][k]);
+    for (int k = 0; k < p->nhist; k++) bad |= !isfinite(p->hist[c][k]);
     for (int k = 0; k < p->nbands; k++) bad |= !isfinite(p->w[c][k]);
     if (bad)
       return nl_fail(err, NL_ENUM, "the fitted parameters of channel %d are not finite (pixel values too large?)", c + 1);
@@ -375,8 +442,8 @@ nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, un
       double ss = 0;
       for (int k = 0; k < p->nbands; k++) ss += p->w[c][k] * p->w[c][k];
       double sigma_m = sqrt(p->sigma2 * ss);
-      if (sigma_m > 0) nl_byexample_match(plane[c], n, sigma_m, p->hist[c], opt ? opt->spline : 0);
-      else for (size_t i = 0; i < n; i++) plane[c][i] = p->hist[c][NL_EXAMPLE_HIST / 2];
+      if (sigma_m > 0) nl_byexample_match_kind(plane[c], n, sigma_m, p->hist_kind, p->hist[c], opt ? opt->spline : 0);
+      else for (size_t i = 0; i < n; i++) plane[c][i] = p->hist[c][p->nhist / 2];
     }
   }
   nl_wavelet_tile_free(t);
@@ -388,7 +455,7 @@ nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, un
 
 int nl_byexample_param_count(const nl_byexample_params *p)
 {
-  return p->channels * p->channels + p->channels * (NL_EXAMPLE_HIST + p->nbands);
+  return p->channels * p->channels + p->channels * (p->nhist + p->nbands);
 }
 
 void nl_byexample_attenuate(nl_byexample_params *p, int nfine, double factor)
@@ -462,4 +529,43 @@ void nl_byexample_correlation(const nl_image *im, double corr[3][3])
       double d = a < nch && b < nch ? sqrt(cov[a][a] * cov[b][b]) : 0;
       corr[a][b] = a == b ? 1 : d > 0 ? cov[a][b] / d : 0;
     }
+}
+
+/* ---- measures of a synthesis against its exemplar ------------------------- */
+
+double nl_byexample_tail_mass(const double *x, size_t n, const double *ref, size_t nref, double k)
+{
+  double m = 0, ss = 0;
+  for (size_t i = 0; i < nref; i++) m += ref[i];
+  m /= (double)nref;
+  for (size_t i = 0; i < nref; i++) ss += (ref[i] - m) * (ref[i] - m);
+  double lim = k * sqrt(ss / (double)nref);
+  size_t c = 0;
+  for (size_t i = 0; i < n; i++) c += fabs(x[i] - m) > lim;
+  return (double)c / (double)n;
+}
+
+double nl_byexample_saturation(const float *px, int channels)
+{
+  if (channels < 3) return 0;
+  /* On the displayed values (clamped to [0, 1]): what the eye sees as speckle. */
+  double lo = 1, hi = 0;
+  for (int c = 0; c < 3; c++) {
+    double v = fmin(fmax(px[c], 0.0), 1.0);
+    lo = fmin(lo, v);
+    hi = fmax(hi, v);
+  }
+  return hi > 0 ? (hi - lo) / hi : 0;
+}
+
+double nl_byexample_speckle(const nl_image *ex, const nl_image *syn)
+{
+  size_t n = (size_t)ex->width * ex->height, m = (size_t)syn->width * syn->height, c = 0;
+  double *s = nl_xmalloc(n * sizeof *s);
+  for (size_t i = 0; i < n; i++) s[i] = nl_byexample_saturation(ex->data + i * ex->channels, ex->channels);
+  qsort(s, n, sizeof *s, cmp_double);
+  double p99 = s[(size_t)(0.99 * (double)(n - 1))];
+  for (size_t i = 0; i < m; i++) c += nl_byexample_saturation(syn->data + i * syn->channels, syn->channels) > p99;
+  free(s);
+  return (double)c / (double)m;
 }

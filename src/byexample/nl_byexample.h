@@ -37,6 +37,18 @@
  * when histogram matching is off), sigma_N^2, the tile period and flags.
  * Grey images have 1 channel, M = [1]. Alpha is dropped.
  *
+ * Histogram representations (nl_byexample_hist_kind). NL_HIST_PAPER is the
+ * paper's reading above: 10 quantiles at p = j/9 and a cubic in p. Its knots
+ * p = 1/9 and 8/9 are z = -/+1.22 sd from the median and the next ones are the
+ * sample min and max, so the spline spreads the tails linearly in p out to the
+ * extremes: a Gaussian channel matched to itself gets ~10x its tail mass
+ * beyond 2.5 sd (L3's photos table measures it). NL_HIST_GAUSS stores 33
+ * quantiles at p = Phi(z_j), z_j = -4 + j/4 (every quarter sd; p below
+ * 0.5/n or above 1 - 0.5/n reads the min or max), and matches by a monotone
+ * cubic in z: c = Q(M_c / sigma_M), no Phi step. A Gaussian channel is then a
+ * straight line through the knots and comes back as itself, and the tails are
+ * sampled where they are rather than between the 8/9 quantile and the max.
+ *
  * Monotone splines: GSL's steffen (Steffen 1990) sets the slope at a knot
  * to (sign s_l + sign s_r) min(|s_l|, |s_r|, |p|/2), p the slope of the
  * parabola through the 3 knots: monotone, no overshoot, slope 0 at local
@@ -57,10 +69,13 @@
 #include "image/nl_image.h"
 #include "wavelet/nl_wavelet.h"
 
-#define NL_EXAMPLE_HIST 10
+#define NL_EXAMPLE_HIST 10       /* the paper's reading: quantiles at p = j/9 */
+#define NL_EXAMPLE_HIST_MAX 33   /* knots of the widest representation */
 #define NL_EXAMPLE_TILE 256      /* default 2D tile period */
 #define NL_EXAMPLE_TILE3 64      /* 3D tile period for solid synthesis */
 #define NL_EXAMPLE_MIN_SIZE 16   /* smaller exemplars are rejected */
+
+typedef enum { NL_HIST_PAPER = 0, NL_HIST_GAUSS = 1 } nl_byexample_hist_kind;
 
 typedef struct {
   int channels;                          /* 1 or 3 */
@@ -70,7 +85,9 @@ typedef struct {
   double sigma2;                         /* sigma_N^2 used by eq. 12 and 14 */
   double mean[3];
   double matrix[3][3];                   /* c = M (rgb - mean) */
-  double hist[3][NL_EXAMPLE_HIST];       /* channel quantiles at p = j/9 */
+  nl_byexample_hist_kind hist_kind;      /* which quantiles hist holds */
+  int nhist;                             /* their count (nl_byexample_hist_knots) */
+  double hist[3][NL_EXAMPLE_HIST_MAX];   /* channel quantiles at the kind's knots */
   double w[3][NL_WAVELET_MAX_BANDS];     /* w[c][0]: finest band */
 } nl_byexample_params;
 
@@ -79,6 +96,7 @@ typedef struct {
   int histogram;      /* histogram matching (1) or Gaussian noise as is (0) */
   double sigma2;      /* 0: nl_byexample_sigma2(tile) */
   int tile;           /* 0: NL_EXAMPLE_TILE */
+  nl_byexample_hist_kind hist_kind;   /* 0: the paper's 10 quantiles */
 } nl_byexample_options;
 
 typedef enum { NL_SPLINE_STEFFEN = 0, NL_SPLINE_FRITSCH_CARLSON = 1 } nl_byexample_spline_kind;
@@ -122,6 +140,17 @@ void nl_byexample_quantiles(const double *v, size_t n, double *q);
 void nl_byexample_gaussianize(double *v, size_t n);
 /* v <- Q(Phi(v / sigma)), Q the monotone cubic through (j/9, q[j]). */
 void nl_byexample_match(double *v, size_t n, double sigma, const double *q, nl_byexample_spline_kind kind);
+/* The knots of a representation: x[j] (p = j/9 for NL_HIST_PAPER, z = -4 + j/4
+ * for NL_HIST_GAUSS) and the probability p[j] of each (either may be NULL);
+ * returns the count (10 or 33), 0 for an unknown kind. */
+int nl_byexample_hist_knots(nl_byexample_hist_kind kind, double *x, double *p);
+/* q[j] = quantile of v at the kind's probabilities p[j] (as nl_byexample_quantiles). */
+void nl_byexample_hist(const double *v, size_t n, nl_byexample_hist_kind kind, double *q);
+/* Histogram matching by the kind's reading: NL_HIST_PAPER is nl_byexample_match;
+ * NL_HIST_GAUSS is v <- Q(v / sigma), Q the monotone cubic through (z_j, q[j]). */
+void nl_byexample_match_kind(double *v, size_t n, double sigma, nl_byexample_hist_kind hk, const double *q,
+                             nl_byexample_spline_kind kind);
+const char *nl_byexample_hist_name(nl_byexample_hist_kind kind);   /* "paper10", "gauss33" */
 /* The monotone cubic through (x[j], y[j]), j < n, x increasing, at xs[i]. */
 void nl_byexample_spline(const double *x, const double *y, int n, nl_byexample_spline_kind kind,
                          const double *xs, double *ys, size_t m);
@@ -138,7 +167,7 @@ nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, un
 void nl_byexample_channel_noise(const nl_byexample_params *p, int c, const nl_wavelet_tile *t,
                                 double gain, int w, int h, unsigned long seed,
                                 const nl_byexample_synth_options *opt, double *out);
-/* The number of parameters the paper counts: channels^2 + channels * (10 + bands). */
+/* The number of parameters the paper counts: channels^2 + channels * (nhist + bands). */
 int nl_byexample_param_count(const nl_byexample_params *p);
 
 nl_status nl_byexample_params_save(const nl_byexample_params *p, const char *path, nl_error *err);
@@ -172,7 +201,20 @@ void nl_byexample_rotation_error(const double M[3][3], double *det, double *orth
  * [max - decades, max] to [0, 1]: a grey picture of a spectrum. */
 nl_image *nl_byexample_spectrum_image(const double *img, int w, int h, double decades);
 
-/* Procedural exemplars for experiments and tests (no images are shipped):
+/* ---- measures of a synthesis against its exemplar (L3's photos table) --- */
+
+/* The fraction of x's values farther than k sd of ref from ref's mean (ref =
+ * x for x's own tails; ref = the exemplar for a synthesis, so a widened
+ * spread counts as tail mass). */
+double nl_byexample_tail_mass(const double *x, size_t n, const double *ref, size_t nref, double k);
+/* Saturation of a pixel: (max - min) / max of its R, G, B (0 for black or grey). */
+double nl_byexample_saturation(const float *px, int channels);
+/* Colour speckle: the fraction of syn's pixels more saturated than the
+ * exemplar's 99th percentile of saturation (1% for a faithful synthesis). */
+double nl_byexample_speckle(const nl_image *ex, const nl_image *syn);
+
+/* Procedural exemplars for experiments and tests (photographs are in
+ * data/exemplars; these are made on the fly with known statistics):
  * "wavelet" (coloured multiresolution noise, Gaussian histogram), "clouds"
  * (fBm through a sky ramp, clipped: skewed histogram), "granite"
  * (turbulence, 3 colours), "marble" (stripes: anisotropic, a failure case).

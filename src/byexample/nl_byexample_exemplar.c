@@ -1,5 +1,5 @@
 /* Procedural exemplars (nl_byexample_exemplar): textures the harness can make
- * itself, since it ships no photographs. Features are sized in pixels (one
+ * itself, with known statistics (the photographs are in data/exemplars). Features are sized in pixels (one
  * noise unit = 128 pixels), so a larger exemplar shows more of the texture,
  * not a magnified one. */
 #include "byexample/nl_byexample.h"

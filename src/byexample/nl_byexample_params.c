@@ -1,15 +1,19 @@
 /* Parameter files and morphing for nl_byexample (see nl_byexample.h).
  *
  * File format: one "key value..." line per field, '#' comments:
- *   noiselab-example 1
+ *   noiselab-example 2
  *   channels 3            bands 9 (one per line)
  *   tile 256
  *   histogram 1
+ *   hist_kind 1           0: the paper's 10 quantiles at p = j/9;
+ *                         1: 33 quantiles at p = Phi(-4 + j/4) (nl_byexample.h)
  *   sigma2 0.28...
  *   mean m0 m1 m2
  *   matrix (channels^2 values, row-major)
- *   hist0 .. hist{channels-1}        10 values each, non-decreasing
+ *   hist0 .. hist{channels-1}        10 or 33 values each (hist_kind), non-decreasing
  *   weights0 .. weights{channels-1}  `bands` values each, >= 0
+ * Version 1 files (no hist_kind line) hold the paper's 10 quantiles and
+ * still load; version 2 files must say hist_kind.
  * Numbers use the shortest form that reads back to the same bits, so
  * save -> load -> synthesize equals synthesize.
  */
@@ -39,7 +43,7 @@ static const char *non_finite(const nl_byexample_params *p, char *buf, size_t le
     if (!isfinite(p->mean[c])) { snprintf(buf, len, "mean %d", c + 1); return buf; }
     for (int k = 0; k < C; k++)
       if (!isfinite(p->matrix[c][k])) { snprintf(buf, len, "matrix %d,%d", c + 1, k + 1); return buf; }
-    for (int k = 0; k < NL_EXAMPLE_HIST; k++)
+    for (int k = 0; k < p->nhist && k < NL_EXAMPLE_HIST_MAX; k++)
       if (!isfinite(p->hist[c][k])) { snprintf(buf, len, "hist%d %d", c, k + 1); return buf; }
     for (int k = 0; k < p->nbands && k < NL_WAVELET_MAX_BANDS; k++)
       if (!isfinite(p->w[c][k])) { snprintf(buf, len, "weights%d %d", c, k + 1); return buf; }
@@ -53,6 +57,9 @@ nl_status nl_byexample_params_save(const nl_byexample_params *p, const char *pat
   char what[64];
   if (p->channels < 1 || p->channels > 3)
     return nl_fail(err, NL_EINVAL, "%s: %d channels; parameters have 1 or 3", path, p->channels);
+  if (p->nhist != nl_byexample_hist_knots(p->hist_kind, NULL, NULL) || !p->nhist)
+    return nl_fail(err, NL_EINVAL, "%s: histogram representation %d with %d values; nothing written", path,
+                   (int)p->hist_kind, p->nhist);
   if (non_finite(p, what, sizeof what))
     return nl_fail(err, NL_EINVAL, "%s: parameter %s is not finite; nothing written", path, what);
   nl_atomic_file af;
@@ -61,8 +68,11 @@ nl_status nl_byexample_params_save(const nl_byexample_params *p, const char *pat
   int C = p->channels;
   fprintf(af.fp, "# procedural texture by example (Lagae et al. 2010), %d parameters in the paper's count\n",
           nl_byexample_param_count(p));
-  fprintf(af.fp, "noiselab-example 1\nchannels %d\nbands %d\ntile %d\nhistogram %d\n", C,
-          p->nbands, p->tile, p->histogram);
+  fprintf(af.fp, "# hist_kind %d = %s: %s\n", (int)p->hist_kind, nl_byexample_hist_name(p->hist_kind),
+          p->hist_kind == NL_HIST_PAPER ? "the paper's 10 quantiles at p = j/9, spline in p"
+                                        : "33 quantiles at p = Phi(z), z = -4 + j/4, spline in z");
+  fprintf(af.fp, "noiselab-example 2\nchannels %d\nbands %d\ntile %d\nhistogram %d\nhist_kind %d\n", C,
+          p->nbands, p->tile, p->histogram, (int)p->hist_kind);
   put_values(af.fp, "sigma2", &p->sigma2, 1);
   put_values(af.fp, "mean", p->mean, C);
   double m[9];
@@ -72,7 +82,7 @@ nl_status nl_byexample_params_save(const nl_byexample_params *p, const char *pat
   char key[32];
   for (int c = 0; c < C; c++) {
     snprintf(key, sizeof key, "hist%d", c);
-    put_values(af.fp, key, p->hist[c], NL_EXAMPLE_HIST);
+    put_values(af.fp, key, p->hist[c], p->nhist);
   }
   for (int c = 0; c < C; c++) {
     snprintf(key, sizeof key, "weights%d", c);
@@ -84,7 +94,7 @@ nl_status nl_byexample_params_save(const nl_byexample_params *p, const char *pat
 /* ---- loading ------------------------------------------------------------- */
 
 #define MAX_FIELDS 32
-#define MAX_VALUES 32
+#define MAX_VALUES 64
 typedef struct {
   char key[32];
   int line, n;
@@ -197,7 +207,7 @@ static nl_status check_arrays(const char *path, const nl_byexample_params *p, nl
   if (p->tile % 2) return nl_fail(err, NL_EFORMAT, "%s: 'tile' must be even", path);
   if (p->channels == 2) return nl_fail(err, NL_EFORMAT, "%s: 'channels' must be 1 or 3", path);
   for (int c = 0; c < p->channels; c++) {
-    for (int j = 1; j < NL_EXAMPLE_HIST; j++)
+    for (int j = 1; j < p->nhist; j++)
       if (p->hist[c][j] < p->hist[c][j - 1])
         return nl_fail(err, NL_EFORMAT, "%s: 'hist%d' is not non-decreasing", path, c);
     for (int k = 0; k < p->nbands; k++)
@@ -214,7 +224,7 @@ nl_status nl_byexample_params_load(const char *path, nl_byexample_params *p, nl_
   nl_status st = read_fields(path, f, &nf, err);
   if (st) return st;
   memset(p, 0, sizeof *p);
-  if ((st = need_int(path, f, nf, "noiselab-example", 1, 1, &version, err)) ||
+  if ((st = need_int(path, f, nf, "noiselab-example", 1, 2, &version, err)) ||
       (st = need_int(path, f, nf, "channels", 1, 3, &p->channels, err)) ||
       (st = need_int(path, f, nf, "bands", 1, NL_WAVELET_MAX_BANDS, &p->nbands, err)) ||
       (st = need_int(path, f, nf, "tile", 8, 8192, &p->tile, err)) ||
@@ -222,6 +232,10 @@ nl_status nl_byexample_params_load(const char *path, nl_byexample_params *p, nl_
       (st = need(path, f, nf, "sigma2", 1, &v, err)))
     return st;
   p->sigma2 = v[0];
+  int hk = NL_HIST_PAPER;   /* version 1: the paper's reading, the only one then */
+  if (version >= 2 && (st = need_int(path, f, nf, "hist_kind", 0, 1, &hk, err))) return st;
+  p->hist_kind = (nl_byexample_hist_kind)hk;
+  p->nhist = nl_byexample_hist_knots(p->hist_kind, NULL, NULL);
   int C = p->channels;
   if (C != 2) {
     if ((st = need(path, f, nf, "mean", C, &v, err))) return st;
@@ -232,8 +246,8 @@ nl_status nl_byexample_params_load(const char *path, nl_byexample_params *p, nl_
     char key[32];
     for (int c = 0; c < C; c++) {
       snprintf(key, sizeof key, "hist%d", c);
-      if ((st = need(path, f, nf, key, NL_EXAMPLE_HIST, &v, err))) return st;
-      memcpy(p->hist[c], v, NL_EXAMPLE_HIST * sizeof *v);
+      if ((st = need(path, f, nf, key, p->nhist, &v, err))) return st;
+      memcpy(p->hist[c], v, (size_t)p->nhist * sizeof *v);
       snprintf(key, sizeof key, "weights%d", c);
       if ((st = need(path, f, nf, key, p->nbands, &v, err))) return st;
       memcpy(p->w[c], v, (size_t)p->nbands * sizeof *v);
@@ -300,11 +314,14 @@ nl_status nl_byexample_morph(const nl_byexample_params *a, const nl_byexample_pa
                    a->nbands, b->nbands);
   if (a->histogram != b->histogram)
     return nl_fail(err, NL_EINVAL, "cannot morph with and without histogram matching");
+  if (a->hist_kind != b->hist_kind)
+    return nl_fail(err, NL_EINVAL, "cannot morph histogram representation %s into %s",
+                   nl_byexample_hist_name(a->hist_kind), nl_byexample_hist_name(b->hist_kind));
   nl_byexample_params r = *a;
   r.sigma2 = (1 - t) * a->sigma2 + t * b->sigma2;
   for (int c = 0; c < 3; c++) {
     r.mean[c] = (1 - t) * a->mean[c] + t * b->mean[c];
-    for (int j = 0; j < NL_EXAMPLE_HIST; j++) r.hist[c][j] = (1 - t) * a->hist[c][j] + t * b->hist[c][j];
+    for (int j = 0; j < a->nhist; j++) r.hist[c][j] = (1 - t) * a->hist[c][j] + t * b->hist[c][j];
     for (int k = 0; k < a->nbands; k++) r.w[c][k] = (1 - t) * a->w[c][k] + t * b->w[c][k];
   }
   if (a->channels == 3) {

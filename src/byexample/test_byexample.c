@@ -162,6 +162,47 @@ NL_TEST(analyse_save_load_synthesize_is_deterministic)
   nl_image_free(a); nl_image_free(b); nl_image_free(c); nl_image_free(ex);
 }
 
+NL_TEST(gauss33_round_trip_and_version_1)
+{
+  /* gauss33 parameters save, load and synthesise as themselves; a version 2
+   * file needs hist_kind, a version 1 file (no hist_kind) holds the paper's
+   * 10 quantiles; the two representations do not morph into each other. */
+  nl_image *ex = nl_byexample_exemplar("granite", 64, 3), *a, *b;
+  nl_byexample_options o = {1, 1, 0, 0, NL_HIST_GAUSS};
+  nl_byexample_params p, q, m;
+  NL_CHECK(nl_byexample_analyse(ex, &o, &p, NULL) == NL_OK);
+  NL_CHECK(p.hist_kind == NL_HIST_GAUSS && p.nhist == 33);
+  NL_CHECK(nl_byexample_param_count(&p) == 9 + 3 * 33 + 3 * 6);
+  for (int j = 1; j < p.nhist; j++) NL_CHECK(p.hist[0][j] >= p.hist[0][j - 1]);
+  char path[] = "/tmp/nl_byexample_testXXXXXX";
+  int fd = mkstemp(path);
+  close(fd);
+  NL_CHECK(nl_byexample_params_save(&p, path, NULL) == NL_OK);
+  NL_CHECK(nl_byexample_params_load(path, &q, NULL) == NL_OK);
+  NL_CHECK(q.hist_kind == NL_HIST_GAUSS && q.nhist == 33 && memcmp(p.hist, q.hist, sizeof p.hist) == 0);
+  nl_byexample_synthesize(&p, 40, 40, 5, NULL, &a, NULL);
+  nl_byexample_synthesize(&q, 40, 40, 5, NULL, &b, NULL);
+  NL_CHECK(memcmp(a->data, b->data, 40 * 40 * 3 * sizeof(float)) == 0);
+  nl_error err;
+  FILE *fp = fopen(path, "w");
+  fputs("noiselab-example 2\nchannels 1\nbands 2\ntile 64\nhistogram 1\nsigma2 0.3\nmean 0\nmatrix 1\n"
+        "hist0 0 1 2 3 4 5 6 7 8 9\nweights0 1 1\n", fp);
+  fclose(fp);
+  NL_CHECK(nl_byexample_params_load(path, &q, &err) == NL_EFORMAT);
+  NL_CHECK(strstr(err.msg, "hist_kind") != NULL);
+  fp = fopen(path, "w");
+  fputs("noiselab-example 1\nchannels 1\nbands 2\ntile 64\nhistogram 1\nsigma2 0.3\nmean 0\nmatrix 1\n"
+        "hist0 0 1 2 3 4 5 6 7 8 9\nweights0 1 1\n", fp);
+  fclose(fp);
+  NL_CHECK(nl_byexample_params_load(path, &q, NULL) == NL_OK);
+  NL_CHECK(q.hist_kind == NL_HIST_PAPER && q.nhist == 10 && q.hist[0][9] == 9);
+  unlink(path);
+  NL_CHECK(nl_byexample_analyse(ex, NULL, &q, NULL) == NL_OK);
+  NL_CHECK(nl_byexample_morph(&p, &q, 0.5, &m, &err) == NL_EINVAL);
+  NL_CHECK(strstr(err.msg, "gauss33") != NULL);
+  nl_image_free(a); nl_image_free(b); nl_image_free(ex);
+}
+
 NL_TEST(morph_ends_are_the_inputs)
 {
   nl_image *e1 = nl_byexample_exemplar("clouds", 32, 1), *e2 = nl_byexample_exemplar("granite", 32, 1);

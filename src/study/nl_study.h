@@ -192,5 +192,62 @@ nl_table *nl_study_wood_table(void);
 nl_status nl_study_wood(nl_table *table, const char *panel, const char *expr, double k, const nl_noise_window *win,
                         const nl_texture_wood *wd, const nl_texture_ramp *ramp, double lo, double hi, int vertical,
                         int index, unsigned long seed0, int K, nl_image **rings, nl_image **ramped, nl_error *err);
+/* ---- L3 on photographs (nl_study_example.c) ------------------------------ */
+
+/* Removes "--exemplars DIR" from argv (before nl_harness_begin sees it) and
+ * sets *dir to DIR, or "data/exemplars" (experiments run from the repository
+ * root, as with --patterns). */
+nl_status nl_study_example_dir_parse(int *argc, char **argv, const char **dir, nl_error *err);
+/* The names (without ".png") of dir's PNG files, sorted, at most max; -1 and
+ * err when the folder cannot be read, 0 and err when it holds none. */
+int nl_study_example_list(const char *dir, char (*names)[64], int max, nl_error *err);
+/* The Gaussian self-match of a histogram representation: n N(0, 1) values as
+ * the exemplar channel, n fresh N(0, 1) values matched to its histogram
+ * (sigma 1, steffen); KS distance between the two samples and the matched
+ * values' fraction beyond 2.5 sd of the exemplar (1.24% for a Gaussian). */
+void nl_study_example_gauss(size_t n, unsigned long seed, nl_byexample_hist_kind hk, double *ks, double *tail);
+/* The tables nl_study_example_photo appends to (caller frees). */
+nl_table *nl_study_example_band_table(void);
+nl_table *nl_study_example_summary_table(void);
+/* Compares a synthesis with its photograph ex by luminance: one row per eq. 13
+ * band of the photo (bands may be NULL), tagged with `replicate`,
+ * to `bands` (power of photo and synthesis, ratio synth/photo, the band's
+ * share of the photo's power, checked = share >= min_share) and one row to
+ * `sum` (KS of the luminance, mean KS over R, G, B, tail mass beyond 2.5 sd
+ * of photo and synthesis, speckle (nl_byexample_speckle), the checked band
+ * whose ratio is farthest from 1, and pass = that ratio within
+ * [1/max_ratio, max_ratio] and KS < max_ks). rep names the representation. */
+void nl_study_example_compare(const nl_image *ex, const nl_image *syn, const char *name, const char *rep,
+                              int replicate, double min_share, double max_ratio, double max_ks, nl_table *bands, nl_table *sum);
+/* Analyses a photograph with representation hk, synthesises size x size
+ * (seed) and appends nl_study_example_compare's rows. Returns the synthesis;
+ * NULL and err when analysis or synthesis fails. */
+nl_image *nl_study_example_photo(const nl_image *ex, const char *name, nl_byexample_hist_kind hk, int size,
+                                 unsigned long seed, int replicate, double min_share, double max_ratio, double max_ks,
+                                 nl_table *bands, nl_table *sum, nl_error *err);
+
+/* Reads the first max photographs of nl_study_example_list; -1 and err on the
+ * first that does not read (the others freed). */
+int nl_study_example_load(const char *dir, char (*names)[64], nl_image **photos, int max, nl_error *err);
+/* nl_study_example_gauss for the paper's and the Gaussian-knot representation
+ * over K seeds: representation, n, ks_mean/sd, tail_mean/sd, tail_gauss (the
+ * Gaussian's own 2 Q(2.5)). Caller frees. */
+nl_table *nl_study_example_gauss_table(size_t n, int K, unsigned long seed0);
+/* Every photograph through nl_study_example_photo with both representations
+ * and K replicates (nl_seed_replicate(seed, s), the same for both; rows carry
+ * the replicate): writes photos.tsv (bands), photos_summary.tsv (one row per
+ * replicate), photos_mean.tsv (over replicates: mean KS, tails, speckle, the
+ * checked band whose mean power is farthest from the photo's, passes of K)
+ * and the montage photos_montage.png (photo | gauss33 | paper10 per row,
+ * top-left 256^2 crops); returns the photos_mean table (caller frees). */
+nl_table *nl_study_example_photos(nl_harness *r, char (*names)[64], nl_image **photos, int np, int size,
+                                  int K, unsigned long seed, double min_share, double max_ratio, double max_ks);
+
+/* L3's report paragraphs, tables and figures for the Gaussian self-match
+ * (gt, K seeds), the procedural `wavelet` exemplar's KS per variant (kt,
+ * columns kind, variant, ks_mean) and the photographs (pt,
+ * nl_study_example_photos). */
+void nl_study_example_report(nl_harness *r, const nl_table *kt, const nl_table *gt, const nl_table *pt, int K, int size,
+                             unsigned long seed, double min_share, double max_ratio, double max_ks);
 
 #endif

@@ -26,7 +26,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   if (p.tile < 8 || p.tile % 2) fail("tile not even or too small");
   if (!(p.sigma2 > 0) || !isfinite(p.sigma2)) fail("sigma2 not positive and finite");
   for (int c = 0; c < p.channels; c++) {
-    for (int j = 0; j < NL_EXAMPLE_HIST; j++)
+    for (int j = 0; j < p.nhist; j++)
       if (!isfinite(p.hist[c][j])) fail("histogram value not finite");
     for (int k = 0; k < p.nbands; k++)
       if (!(p.w[c][k] >= 0) || !isfinite(p.w[c][k])) fail("weight negative or not finite");
