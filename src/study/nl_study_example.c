@@ -5,10 +5,10 @@
 #include "study/nl_study.h"
 #include "byexample/nl_byexample.h"
 #include "stats/nl_stats.h"
+#include "study/nl_study_exemplars.h"
 
 #include <stdio.h>
 
-#include <dirent.h>
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
@@ -18,46 +18,26 @@
 
 nl_status nl_study_example_dir_parse(int *argc, char **argv, const char **dir, nl_error *err)
 {
-  int w = 1;
-  *dir = "data/exemplars";
-  for (int i = 1; i < *argc; i++) {
-    if (!strcmp(argv[i], "--exemplars")) {
-      if (i + 1 >= *argc) return nl_fail(err, NL_EINVAL, "--exemplars: missing value");
-      if (!argv[i + 1][0]) return nl_fail(err, NL_EINVAL, "--exemplars: empty folder name");
-      *dir = argv[++i];
-      continue;
-    }
-    argv[w++] = argv[i];
-  }
-  *argc = w;
-  argv[w] = NULL;
-  return NL_OK;
+  return nl_study_dir_option(argc, argv, "--exemplars", "data/exemplars", dir, err);
 }
 
-static int cmp_name(const void *a, const void *b) { return strcmp((const char *)a, (const char *)b); }
-
+/* The folder's PNGs by nl_study_pngs (one listing for L2 and L3), as names. */
 int nl_study_example_list(const char *dir, char (*names)[64], int max, nl_error *err)
 {
-  DIR *d = opendir(dir);
-  if (!d) { nl_fail(err, NL_EIO, "--exemplars %s: cannot open the folder", dir); return -1; }
-  int n = 0, cap = 64;
-  char (*all)[64] = nl_xmalloc((size_t)cap * sizeof *all);
-  struct dirent *e;
-  while ((e = readdir(d))) {
-    size_t len = strlen(e->d_name);
-    if (len < 5 || len >= 64 || strcmp(e->d_name + len - 4, ".png")) continue;
-    if (n == cap) all = nl_xrealloc(all, (size_t)(cap *= 2) * sizeof *all);
-    memcpy(all[n], e->d_name, len - 4);
-    all[n++][len - 4] = '\0';
+  char **paths;
+  int n;
+  if (nl_study_pngs(dir, &paths, &n, err)) { nl_fail(err, NL_EIO, "--exemplars %s: cannot open the folder", dir); return -1; }
+  int k = 0;
+  for (int i = 0; i < n && k < max; i++) {
+    const char *base = strrchr(paths[i], '/') ? strrchr(paths[i], '/') + 1 : paths[i];
+    size_t len = strlen(base) - 4;   /* ".png" */
+    if (len >= 64) continue;
+    memcpy(names[k], base, len);
+    names[k++][len] = '\0';
   }
-  closedir(d);
-  /* The first max in name order (readdir's order is the file system's). */
-  qsort(all, (size_t)n, sizeof *all, cmp_name);
-  if (n > max) n = max;
-  memcpy(names, all, (size_t)n * sizeof *all);
-  free(all);
-  if (!n) nl_fail(err, NL_EIO, "--exemplars %s: no .png photographs", dir);
-  return n;
+  nl_study_paths_free(paths);
+  if (!k) nl_fail(err, NL_EIO, "--exemplars %s: no .png photographs", dir);
+  return k;
 }
 
 static double ks2(const double *x, size_t n, const double *y, size_t m)
