@@ -25,8 +25,11 @@ static void usage(FILE *fp)
         "       noiselab example morph PARAMS1 PARAMS2 --t T -o OUT.params\n"
         "                        [--size N [--seed S]  (then OUT is an image)]\n"
         "       noiselab example compare PHOTO SYNTH -o SUMMARY.tsv [--bands BANDS.tsv]\n"
-        "  analyse     fit the 66-parameter procedural texture of an exemplar (grey, RGB, RGBA;\n"
-        "              8/16-bit or float; at least 16 x 16 pixels)\n"
+        "  analyse     fit the procedural texture of an exemplar (grey, RGB, RGBA; 8/16-bit or\n"
+        "              float; at least 16 x 16 pixels): C^2 + C (Q + B) parameters for C channels,\n"
+        "              Q histogram quantiles and B = floor(log2 of the larger side) bands (the\n"
+        "              paper's 66 for a 512 x 512 RGB exemplar and its 10 quantiles); analyse\n"
+        "              prints the count\n"
         "  --rgb       no PCA colour decorrelation;  --no-histogram  no histogram matching\n"
         "  --paper-histogram  the paper's 10 quantiles at p = j/9 (default: 33 quantiles at\n"
         "              p = Phi(z), z = -4..4 every 1/4 sd, which keep the tails)\n"
@@ -110,6 +113,8 @@ static int analyse(const args *a)
     die(msg);
   }
   check(nl_byexample_params_save(&p, a->out, &err), &err);
+  fprintf(stderr, "noiselab example: wrote %s (%d parameters: %d channel%s, %d quantiles, %d bands)\n", a->out,
+          nl_byexample_param_count(&p), p.channels, p.channels > 1 ? "s" : "", p.nhist, p.nbands);
   nl_image_free(im);
   return 0;
 }
