@@ -8,6 +8,7 @@
  *
  *   build/bench/bench_cellular [--size N]
  */
+#define _GNU_SOURCE   /* sched_getaffinity in nl_bench.h */
 #include "cellular/nl_cellular.h"
 #include "noise/nl_noise.h"
 
@@ -78,6 +79,7 @@ int main(int argc, char **argv)
   nl_cellular_gctbf_basis gb = {ci, {0}};
   nl_cellular_gctbf_parse("F2 - F1 - F1F1", &gb.g, NULL);
 
+  nl_bench_report(stdout, "start");
   double n3 = nl_bench_rate(g_noise3, &p, out, (size_t)N * N), n3r = nl_bench_rate(g_noise3_random, &p, out, (size_t)N * N);
   double ri = nl_bench_rate(g_cell_rows, ci, out, (size_t)N * N), rc = nl_bench_rate(g_cell_rows, cc, out, (size_t)N * N);
   double pr = nl_bench_rate(g_cell_random, ci, out, (size_t)N * N), gr = nl_bench_rate(g_gctbf, &gb, out, (size_t)N * N);
@@ -91,6 +93,7 @@ int main(int argc, char **argv)
   printf("%-40s %10.2f %10.3f\n", "nl_cellular_gctbf_row F2 - F1 - F1F1", gr, gr / n3);
   printf("%-40s %10.2f %10s\n", "nl_noise_perm3_eval random points", n3r, "1.000");
   printf("%-40s %10.2f %10.3f\n", "nl_cellular_eval F1..F4 random points", pr, pr / n3r);
+  nl_bench_report(stdout, "end");
   nl_cellular_free(ci); nl_cellular_free(cc);
   free(out); free(rx); free(ry); free(rz);
   return 0;

@@ -27,6 +27,7 @@
  * second), cpu_ms and wall_ms (of one 1024^2 grid), vs_stb.
  */
 #define _GNU_SOURCE
+#include "nl_bench.h"
 #include "noise/nl_noise.h"
 #include "wavelet/nl_wavelet.h"
 #include "base/nl_base.h"
@@ -106,12 +107,6 @@ static void g_wavelet(const void *ctx, double *out)
   for (int r = 0; r < N; r++) nl_wavelet_row(ctx, 0.5 * dx, dx, (r + 0.5) * dx, 0, (size_t)N, 1.0, out + (size_t)r * N);
 }
 
-static double thread_cpu_now(void)
-{
-  struct timespec ts;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 typedef struct { double rate, cpu_ms, wall_ms; } timing;
 static volatile double sink;
@@ -121,40 +116,14 @@ static volatile double sink;
 static void round_of(void (*f)(const void *, double *), const void *ctx, double *out, timing *best)
 {
   size_t npoints = (size_t)N * N, iters = 0;
-  double c0 = thread_cpu_now(), w0 = nl_time_now(), c, w;
-  do { f(ctx, out); sink = out[iters % npoints]; iters++; c = thread_cpu_now() - c0; } while (c < 0.1);
+  double c0 = nl_bench_cpu_now(), w0 = nl_time_now(), c, w;
+  do { f(ctx, out); sink = out[iters % npoints]; iters++; c = nl_bench_cpu_now() - c0; } while (c < 0.1);
   w = nl_time_now() - w0;
   double rate = (double)iters * (double)npoints / c / 1e6;
   if (rate > best->rate) { best->rate = rate; best->cpu_ms = 1e3 * c / (double)iters; best->wall_ms = 1e3 * w / (double)iters; }
 }
 
-/* One processor, if the process may run on several: the one it is on. */
-static const char *pin(char *buf, size_t len)
-{
-  cpu_set_t set;
-  if (sched_getaffinity(0, sizeof set, &set) != 0) { snprintf(buf, len, "not pinned (sched_getaffinity failed)"); return buf; }
-  int cpu = sched_getcpu();
-  if (CPU_COUNT(&set) == 1) {
-    for (int c = 0; c < CPU_SETSIZE; c++) if (CPU_ISSET(c, &set)) cpu = c;
-    snprintf(buf, len, "cpu %d (given)", cpu);
-    return buf;
-  }
-  if (cpu < 0) { snprintf(buf, len, "not pinned (sched_getcpu failed)"); return buf; }
-  CPU_ZERO(&set);
-  CPU_SET(cpu, &set);
-  if (sched_setaffinity(0, sizeof set, &set) != 0) snprintf(buf, len, "not pinned (sched_setaffinity failed)");
-  else snprintf(buf, len, "cpu %d (pinned)", cpu);
-  return buf;
-}
 
-static void loadavg(char *buf, size_t len)
-{
-  FILE *f = fopen("/proc/loadavg", "r");
-  buf[0] = 0;
-  if (!f || !fgets(buf, (int)len, f)) snprintf(buf, len, "unknown\n");
-  if (f) fclose(f);
-  buf[strcspn(buf, "\n")] = 0;
-}
 
 int main(int argc, char **argv)
 {
@@ -166,8 +135,8 @@ int main(int argc, char **argv)
   }
   if (N < 16 || N > 8192) { fprintf(stderr, "bench_noise: --size must be in [16, 8192]\n"); return 2; }
   char where[64], load0[128], load1[128];
-  pin(where, sizeof where);
-  loadavg(load0, sizeof load0);
+  nl_bench_pin(where, sizeof where);
+  nl_bench_loadavg(load0, sizeof load0);
   double *out = nl_xmalloc((size_t)N * N * sizeof *out);
   rx = nl_xmalloc((size_t)N * N * sizeof *rx);
   ry = nl_xmalloc((size_t)N * N * sizeof *ry);
@@ -203,7 +172,7 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof k / sizeof *k; i++) round_of(k[i].f, k[i].ctx, out, &k[i].tm);
   }
   int nk = (int)(sizeof k / sizeof *k);
-  loadavg(load1, sizeof load1);
+  nl_bench_loadavg(load1, sizeof load1);
   const char *level = nl_noise_simd_name(nl_noise_simd_get());
   if (tsv) {
     printf("# bench_noise: %d x %d grid over [0,%g)^2, single thread, %s, best of %d rounds, noise kernels: %s\n",
