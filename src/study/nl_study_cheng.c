@@ -60,7 +60,8 @@ void nl_study_cheng_params_done(nl_harness *r, const nl_cheng_config *c, const c
 static const char *const summary_cols[] = {
   "seeds", "E_ks", "E_ks_sd", "p_ks", "p_ks_min", "V_kuiper", "V_kuiper_sd", "p_kuiper",
   "p_kuiper_min", "chi2", "chi2_sd", "p_chi2", "E_con", "E_con_sd", "rms_con", "E",
-  "uniform_ks", "uniform_kuiper", "roughness", "roughness_sd"};
+  "uniform_ks", "uniform_kuiper", "roughness", "roughness_sd", "r_pattern", "r_pattern_sd", "contrast",
+  "contrast_sd", "E_con_random", "E_con_random_sd", "E_con_const", "con_vs_const"};
 #define NSUM (sizeof summary_cols / sizeof *summary_cols)
 
 nl_table *nl_study_cheng_summary_alloc(int nlabels, const char *const *labels)
@@ -103,6 +104,11 @@ void nl_study_cheng_summary_add(nl_table *t, int nlabels, const char *const *lab
   row[c++] = uks;
   row[c++] = uku;
   FIELD(evs, k, roughness, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, r_pattern, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, contrast, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, e_con_random, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  row[c++] = evs[0].e_con_const;   /* the pattern's alone: the same for every seed */
+  FIELD(evs, k, e_con, x); row[c++] = nl_study_mean(x, k) / evs[0].e_con_const;   /* > 1: worse than flat */
   size_t r = nl_table_append_empty(t);
   for (size_t i = 0; i < NSUM; i++) nl_table_set(t, r, summary_cols[i], row[i]);
   for (int i = 0; i < nlabels; i++) nl_table_set_text(t, r, t->names[i], labels[i]);
@@ -219,4 +225,40 @@ nl_table *nl_study_cheng_table41(const nl_table *runs, const double (*thesis)[NL
                     nl_table_value(runs, p, "p_ks_min"), nl_table_value(runs, p, "p_kuiper_min"));
   }
   return cmp;
+}
+
+int nl_study_cheng_control_text(nl_harness *r, const nl_table *sum, int nlabels)
+{
+  double rlo = INFINITY, rhi = -INFINITY, clo = INFINITY, chi = -INFINITY;
+  int worse = 0, better_random = 0;
+  for (size_t q = 0; q < sum->nrows; q++) {
+    double rp = nl_table_value(sum, q, "r_pattern"), ct = nl_table_value(sum, q, "contrast");
+    rlo = fmin(rlo, rp); rhi = fmax(rhi, rp); clo = fmin(clo, ct); chi = fmax(chi, ct);
+    better_random += nl_table_value(sum, q, "E_con") < nl_table_value(sum, q, "E_con_random");
+  }
+  nl_harness_text(r, "Controllability: Pearson r between the control value and the pattern %.2f..%.2f, "
+                     "contrast (sd of the control value) %.3f..%.3f; the optimised E_Con is below the "
+                     "unoptimised start table's in %d of %zu rows.\n", rlo, rhi, clo, chi, better_random, sum->nrows);
+  size_t cap = 256 + 160 * sum->nrows, len = 0;
+  char *list = nl_xmalloc(cap);
+  list[0] = 0;
+  for (size_t q = 0; q < sum->nrows; q++) {
+    double e = nl_table_value(sum, q, "E_con"), e0 = nl_table_value(sum, q, "E_con_const");
+    if (!(e > e0)) continue;
+    char lab[160] = "";
+    for (int i = 0; i < nlabels; i++) {
+      char buf[32];
+      snprintf(lab + strlen(lab), sizeof lab - strlen(lab), "%s%s", i ? "/" : "", nl_table_cell_text(sum, q, (size_t)i, buf));
+    }
+    len += (size_t)snprintf(list + len, cap - len, "%s%s (E_Con %.4g +- %.3g vs %.4g, r %.2f)", worse ? "; " : "", lab, e,
+                            nl_table_value(sum, q, "E_con_sd"), e0, nl_table_value(sum, q, "r_pattern"));
+    worse++;
+  }
+  if (worse)
+    nl_harness_text(r, "**Not controlled in the E_Con sense** (%d of %zu rows): the optimised E_Con is worse than "
+                       "that of the best constant image (a flat image at the pattern's mean): %s.\n", worse, sum->nrows, list);
+  else
+    nl_harness_text(r, "Every row's optimised E_Con is below the best constant image's (con_vs_const < 1).\n");
+  free(list);
+  return worse;
 }

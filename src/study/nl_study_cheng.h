@@ -74,6 +74,9 @@ nl_image *nl_study_cheng_grey_image(const double *v, int w, int h);
 /* size x size images: the control value (grey), the config's texture, and
  * the pattern (nearest-neighbour upscaled). */
 nl_image *nl_study_cheng_value_image(const nl_noise_grad2 *g, const nl_cheng_config *c, int size);
+/* The value without the display stretch: grey 0..1 = c 0..1 (literal V and
+ * sin V: -1..1), so the contrast the eye sees is the value's own. */
+nl_image *nl_study_cheng_value_image_raw(const nl_noise_grad2 *g, const nl_cheng_config *c, int size);
 nl_image *nl_study_cheng_texture_image(const nl_noise_grad2 *g, const nl_cheng_config *c, int size);
 nl_image *nl_study_cheng_pattern_panel(const nl_cheng_pattern *p, int size);
 
@@ -95,7 +98,12 @@ void nl_study_cheng_params_done(nl_harness *r, const nl_cheng_config *c, const c
 /* Summary table: nlabels label columns, then seeds, E_ks (mean), E_ks_sd, p_ks
  * (mean), p_ks_min, V_kuiper, V_kuiper_sd, p_kuiper, p_kuiper_min, chi2, chi2_sd,
  * p_chi2, E_con, E_con_sd, rms_con, E, uniform_ks, uniform_kuiper (fractions of
- * runs not rejected as non-uniform at alpha = 0.05), roughness, roughness_sd. */
+ * runs not rejected as non-uniform at alpha = 0.05), roughness, roughness_sd, and
+ * controllability: r_pattern, r_pattern_sd (Pearson r of the control value with
+ * the pattern), contrast, contrast_sd (sd of the control value), E_con_random,
+ * E_con_random_sd (the unoptimised start table's E_Con), E_con_const (the best
+ * constant image's E_Con) and con_vs_const = E_con / E_con_const (> 1: the
+ * optimised table follows the pattern worse than a flat image). */
 nl_table *nl_study_cheng_summary_alloc(int nlabels, const char *const *labels);
 void nl_study_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
                                 const nl_cheng_eval *evs, int k);
@@ -148,7 +156,15 @@ double nl_study_column_min(const nl_table *t, const char *col);
 /* The columns of a Cheng summary table (nl_study_cheng_summary_alloc) that
  * carry the story in a report section (nl_harness_report_columns); the TSV
  * keeps them all. Prefix the table's label columns: "pattern,seeds," ... */
-#define NL_STUDY_CHENG_STORY "E_ks,E_ks_sd,p_ks_min,V_kuiper,p_kuiper_min,chi2,p_chi2,E_con,E_con_sd,uniform_ks,uniform_kuiper,roughness"
+#define NL_STUDY_CHENG_STORY "E_ks,E_ks_sd,p_ks_min,V_kuiper,p_kuiper_min,chi2,p_chi2,E_con,E_con_sd,uniform_ks,uniform_kuiper,roughness," \
+  NL_STUDY_CHENG_CONTROL
+/* The controllability columns alone (a report table of their own). */
+#define NL_STUDY_CHENG_CONTROL "r_pattern,r_pattern_sd,contrast,contrast_sd,E_con_random,E_con_const,con_vs_const"
+/* Controllability in prose, formatted from a summary table's rows (labels =
+ * its first nlabels columns joined by "/"): the range of r and contrast, and
+ * every row whose optimised E_Con is worse than the best constant image's,
+ * named as not controlled in that sense. Returns the number of such rows. */
+int nl_study_cheng_control_text(nl_harness *r, const nl_table *sum, int nlabels);
 #define NL_STUDY_TABLE41_COLS 4
 nl_table *nl_study_cheng_table41(const nl_table *runs, const double (*thesis)[NL_STUDY_TABLE41_COLS], int npair);
 

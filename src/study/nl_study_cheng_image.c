@@ -229,6 +229,18 @@ nl_image *nl_study_cheng_value_image(const nl_noise_grad2 *g, const nl_cheng_con
   return im;
 }
 
+nl_image *nl_study_cheng_value_image_raw(const nl_noise_grad2 *g, const nl_cheng_config *c, int size)
+{
+  double *v = nl_xmalloc((size_t)size * size * sizeof *v);
+  nl_cheng_value_grid(g, c, size, size, v);
+  /* The value's own scale: [0, 1] for the rescaled control values and the
+   * literal |V|, sum |Noise| / a; [-1, 1] for the literal signed V and sin V. */
+  int signed_v = c->literal && (c->con == NL_CHENG_CON_PLAIN || c->con == NL_CHENG_CON_SIN);
+  nl_image *im = nl_image_from_values(v, size, size, signed_v ? -1 : 0, 1);
+  free(v);
+  return im;
+}
+
 nl_image *nl_study_cheng_texture_image(const nl_noise_grad2 *g, const nl_cheng_config *c, int size)
 {
   double *v = nl_xmalloc((size_t)size * size * sizeof *v);
