@@ -171,6 +171,7 @@ nl_table *nl_study_cheng_matrix_table(const double *v, int w, int h)
 void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title, int *argc, char **argv)
 {
   s->r = nl_study_cheng_begin(name, title, argc, argv, &s->c, &s->grid, &s->patterns);
+  s->role = NULL;
 }
 
 void nl_study_cheng_ready(nl_study_cheng *s) { nl_study_cheng_params_done(s->r, &s->c, s->patterns); }
@@ -188,7 +189,8 @@ nl_noise_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_con
   nl_cheng_eval *evs = nl_xmalloc((size_t)k * sizeof *evs);
   nl_noise_grad2 *first;
   nl_error err;
-  if (nl_cheng_run_seeds(c, pat, nl_harness_seed(s->r), k, evs, &first, &err)) nl_harness_die(s->r, 1, "%s", err.msg);
+  unsigned long seed0 = s->role ? nl_seed_stream(nl_harness_seed(s->r), s->role, 0) : nl_harness_seed(s->r);
+  if (nl_cheng_run_seeds(c, pat, seed0, k, evs, &first, &err)) nl_harness_die(s->r, 1, "%s", err.msg);
   nl_study_cheng_summary_add(sum, nlabels, labels, evs, k);
   free(evs);
   return first;
@@ -261,4 +263,15 @@ int nl_study_cheng_control_text(nl_harness *r, const nl_table *sum, int nlabels)
     nl_harness_text(r, "Every row's optimised E_Con is below the best constant image's (con_vs_const < 1).\n");
   free(list);
   return worse;
+}
+
+nl_table *nl_study_cheng_pattern_table(const nl_cheng_pattern *p)
+{
+  size_t n = (size_t)p->grid * (size_t)p->grid;
+  double *v = nl_xmalloc(n * sizeof *v);
+  for (size_t i = 0; i < n; i++) v[i] = -1;
+  for (size_t i = 0; i < p->n; i++) v[p->cell[i]] = p->d[i];
+  nl_table *t = nl_study_cheng_matrix_table(v, p->grid, p->grid);
+  free(v);
+  return t;
 }

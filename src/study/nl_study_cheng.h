@@ -79,6 +79,12 @@ nl_image *nl_study_cheng_value_image(const nl_noise_grad2 *g, const nl_cheng_con
 nl_image *nl_study_cheng_value_image_raw(const nl_noise_grad2 *g, const nl_cheng_config *c, int size);
 nl_image *nl_study_cheng_texture_image(const nl_noise_grad2 *g, const nl_cheng_config *c, int size);
 nl_image *nl_study_cheng_pattern_panel(const nl_cheng_pattern *p, int size);
+/* Shaded relief of a w x h height field on the unit square: Lambertian
+ * light from the north-west, 45 degrees up, heights exaggerated by zscale. */
+nl_image *nl_study_cheng_relief_image(const double *height, int w, int h, double zscale);
+/* The pattern's targets D as a grid x grid matrix table (gnuplot's matrix
+ * layout; cells without control hold -1). */
+nl_table *nl_study_cheng_pattern_table(const nl_cheng_pattern *p);
 
 /* ---- what C1-C7 share (nl_study_cheng.c) -------------------------------- */
 
@@ -128,6 +134,8 @@ typedef struct {
   nl_cheng_config c;      /* the standard parameters (nl_study_cheng_begin) */
   int grid;               /* control grid */
   const char *patterns;   /* the --patterns folder */
+  const char *role;       /* NULL: runs from the run's seed; else from nl_seed_stream(seed, role, 0),
+                             so an experiment repeating another's setting gets runs of its own */
 } nl_study_cheng;
 /* nl_study_cheng_begin into s (same checks, same exits). */
 void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title, int *argc, char **argv);
