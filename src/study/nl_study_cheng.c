@@ -275,3 +275,23 @@ nl_table *nl_study_cheng_pattern_table(const nl_cheng_pattern *p)
   free(v);
   return t;
 }
+
+nl_table *nl_study_cheng_welch_alloc(void)
+{
+  const char *cc[] = {"group", "quantity", "a", "b", "mean_a", "sd_a", "mean_b", "sd_b", "seeds", "diff_pct", "p_welch"};
+  return nl_table_alloc(sizeof cc / sizeof *cc, cc);
+}
+
+double nl_study_cheng_welch_add(nl_table *t, const nl_table *sum, size_t ra, size_t rb, const char *col,
+                                const char *group, const char *a, const char *b)
+{
+  char sdcol[64];
+  snprintf(sdcol, sizeof sdcol, "%s_sd", col);
+  double ma = nl_table_value(sum, ra, col), sa = nl_table_value(sum, ra, sdcol);
+  double mb = nl_table_value(sum, rb, col), sb = nl_table_value(sum, rb, sdcol), p;
+  size_t na = (size_t)nl_table_value(sum, ra, "seeds"), nb = (size_t)nl_table_value(sum, rb, "seeds");
+  nl_error err;
+  if (nl_stats_welch_p(ma, sa, na, mb, sb, nb, &p, &err)) p = ma == mb ? 1 : 0;   /* nothing to test */
+  nl_table_append(t, "ssssddddddd", group, col, a, b, ma, sa, mb, sb, (double)na, 100 * (ma - mb) / mb, p);
+  return p;
+}

@@ -161,6 +161,14 @@ double nl_study_column_min(const nl_table *t, const char *col);
  * the thesis's rows {w1, E_KS, w2, E_Con}, a table of panel, w1, w2,
  * paper_E_ks, E_ks, E_ks_sd, paper_E_con, E_con, E_con_sd, E_ks_swapped,
  * E_con_swapped, p_ks_min, p_kuiper_min (caller frees). */
+/* Between-condition tests: a table of group, quantity, a, b, mean_a, sd_a,
+ * mean_b, sd_b, seeds, diff_pct (100 (mean_a - mean_b) / mean_b) and p_welch
+ * (Welch's t-test on the two rows' means and sds over their seeds; both sds 0:
+ * p = 1 if the means are equal, else 0). _add appends the test of column col
+ * (sd in col_sd) between summary rows ra and rb and returns p. */
+nl_table *nl_study_cheng_welch_alloc(void);
+double nl_study_cheng_welch_add(nl_table *t, const nl_table *sum, size_t ra, size_t rb, const char *col,
+                                const char *group, const char *a, const char *b);
 /* The columns of a Cheng summary table (nl_study_cheng_summary_alloc) that
  * carry the story in a report section (nl_harness_report_columns); the TSV
  * keeps them all. Prefix the table's label columns: "pattern,seeds," ... */
