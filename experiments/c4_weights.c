@@ -60,18 +60,24 @@ int main(int argc, char **argv)
   nl_table_free(one);
   if (!table) { nl_cheng_pattern_free(pat); return nl_harness_end(r); }
   nl_table *tab = nl_study_cheng_summary_alloc(4, labels), *sweep = nl_study_cheng_summary_alloc(4, labels);
-  nl_image *panels[NPAIR + 1];
-  char plab[NPAIR + 1][64];
-  const char *plabp[NPAIR + 1] = {"pattern"};
-  panels[0] = nl_study_cheng_pattern_panel(pat, 160);
+  nl_image *panels[2 * (NPAIR + 1)];   /* row 1 printed, row 2 swapped: the value on its own 0..1 scale */
+  char plab[2 * (NPAIR + 1)][32];
+  const char *plabp[2 * (NPAIR + 1)];
+  for (int i = 0; i < 2 * (NPAIR + 1); i++) plabp[i] = plab[i];
+  for (int q = 0; q < 2; q++) {
+    panels[q * (NPAIR + 1)] = nl_study_cheng_pattern_panel(pat, 160);
+    snprintf(plab[q * (NPAIR + 1)], sizeof plab[0], "pattern");
+  }
   for (int i = 0; i < NPAIR; i++) {   /* printed reading rows are 0, 2, 4, ...; swapped 1, 3, 5, ... */
     char panel[4] = {(char)('a' + i), 0};
-    nl_noise_grad2 *first = run_pair(&s, pat, "printed", panel, thesis[i][0], thesis[i][2], tab);
-    panels[i + 1] = nl_study_cheng_texture_image(first, &base, 160);
-    snprintf(plab[i + 1], sizeof plab[i + 1], "(%s) w1=%g w2=%g", panel, thesis[i][0], thesis[i][2]);
-    plabp[i + 1] = plab[i + 1];
-    nl_noise_grad2_free(first);
-    nl_noise_grad2_free(run_pair(&s, pat, "swapped", panel, thesis[i][2], thesis[i][0], tab));
+    nl_noise_grad2 *pr = run_pair(&s, pat, "printed", panel, thesis[i][0], thesis[i][2], tab);
+    nl_noise_grad2 *sw = run_pair(&s, pat, "swapped", panel, thesis[i][2], thesis[i][0], tab);
+    panels[i + 1] = nl_study_cheng_value_image_raw(pr, &base, 160);
+    panels[NPAIR + 2 + i] = nl_study_cheng_value_image_raw(sw, &base, 160);
+    snprintf(plab[i + 1], sizeof plab[0], "(%s) printed", panel);
+    snprintf(plab[NPAIR + 2 + i], sizeof plab[0], "(%s) swapped", panel);
+    nl_noise_grad2_free(pr);
+    nl_noise_grad2_free(sw);
     nl_harness_progress(r, (i + 1.0) / (NPAIR + nsweep), "Table 4.1");
   }
   double *rhos = nl_xmalloc((size_t)nsweep * sizeof *rhos);
@@ -80,7 +86,7 @@ int main(int argc, char **argv)
     nl_noise_grad2_free(run_pair(&s, pat, "sweep", "-", rho / (1 + rho), 1 / (1 + rho), sweep));
     nl_harness_progress(r, (NPAIR + i + 1.0) / (NPAIR + nsweep), "sweep");
   }
-  nl_study_cheng_montage(r, panels, plabp, NPAIR + 1, 4, "Fig 4.8: cloud texture per weight pair (first seed)", "textures.png");
+  nl_study_cheng_montage(r, panels, plabp, 2 * (NPAIR + 1), NPAIR + 1, "Fig 4.8: controlled value, printed (top) and swapped (bottom) weights", "textures.png");
   nl_table *cmp = nl_study_cheng_table41(tab, thesis, NPAIR);
   nl_harness_write_table(r, tab, "table41_runs.tsv");
   nl_harness_write_table(r, cmp, "table41.tsv");
@@ -119,7 +125,11 @@ int main(int argc, char **argv)
                           NULL, "factor 1.25 2", sw_best ? "swapped reading (row a: see readings.tsv)" : "printed reading");
   nl_harness_verdict_rows(r, "table41.tsv", cmp, "E_Con", "panel", "paper_E_con", "E_con", NULL, "factor 1.25 2", "ours sums over our control grid");
   nl_study_cheng_weights_uniformity_text(r, tab, sweep, rhos, NPAIR);
-  nl_harness_figure(r, "textures.png", "Fig 4.8: cloud textures for the six printed weight pairs (first seed)");
+  char cap[512];
+  int len = snprintf(cap, sizeof cap, "Fig 4.8: the controlled value on its 0..1 scale (no display stretch, first seed); top: printed (w1, w2) =");
+  for (int i = 0; i < NPAIR; i++) len += snprintf(cap + len, sizeof cap - (size_t)len, " (%c) (%g, %g)", 'a' + i, thesis[i][0], thesis[i][2]);
+  snprintf(cap + len, sizeof cap - (size_t)len, "; bottom: the same pairs swapped");
+  nl_harness_figure(r, "textures.png", cap);
   nl_harness_figure(r, "tradeoff.png", "E_KS vs E_Con over the w1 sweep (mean and sd over seeds), with the printed and swapped pairs");
   nl_harness_report_columns(r, sweep, "sweep.tsv", "w1,w2," NL_STUDY_CHENG_STORY, "Sweep of w1 / w2 (w1 + w2 = 1)", 4);
   nl_cheng_pattern_free(pat); free(rhos);
