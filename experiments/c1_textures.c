@@ -49,7 +49,7 @@ int main(int argc, char **argv)
       p[2] = nl_study_cheng_value_image(first, &c, size);
       p[3] = nl_study_cheng_texture_image(first, &c, size);
       p[4] = nl_study_cheng_value_image(lit, &cl, size);
-      const char *pl[NCOL] = {patterns[t][j], "value, no stretch", "value, stretched", nl_cheng_con_name(c.con), "literal, stretched"};
+      const char *pl[NCOL] = {patterns[t][j], "c, raw 0..1", "c, stretched", nl_cheng_con_name(c.con), "literal c"};
       for (int q = 0; q < NCOL; q++) plab[NCOL * j + q] = pl[q];
       nl_noise_grad2_free(first);
       nl_noise_grad2_free(lit);
@@ -61,7 +61,7 @@ int main(int argc, char **argv)
     snprintf(file, sizeof file, "%s.png", nl_cheng_con_name(c.con));
     nl_study_cheng_montage(r, panels, plab, NCOL * NPAT, NCOL, title, file);
     snprintf(cap, sizeof cap, "Fig 4.%d: %s textures, control term %s; pattern | controlled value on its own 0..1 scale "
-             "| the same stretched to its 1st..99th percentile | texture | literal formula's value, stretched (first seed)",
+             "| the same stretched to its 1st..99th percentile | texture | the literal formula's value, stretched (first seed)",
              t + 1, nl_cheng_con_name(c.con), equation[t]);
     nl_harness_figure(r, file, cap);
   }
