@@ -105,6 +105,15 @@ int main(int argc, char **argv)
   nl_table *rd = nl_study_cheng_table41_readings(cmp, thesis, NPAIR);
   nl_harness_write_table(r, rd, "readings.tsv");
   size_t best = nl_study_cheng_table41_readings_text(r, rd);
+  nl_table *wt = nl_study_cheng_welch_alloc();   /* per row: printed vs swapped runs, Welch over seeds */
+  for (int i = 0; i < NPAIR; i++) {
+    char panel[4] = {(char)('a' + i), 0};
+    nl_study_cheng_welch_add(wt, tab, 2 * (size_t)i, 2 * (size_t)i + 1, "E_ks", panel, "printed", "swapped");
+    nl_study_cheng_welch_add(wt, tab, 2 * (size_t)i, 2 * (size_t)i + 1, "E_con", panel, "printed", "swapped");
+  }
+  nl_harness_write_table(r, wt, "reading_tests.tsv");
+  nl_harness_report_table(r, wt, "Printed vs swapped weights per row of Table 4.1 (group = panel): Welch's t-test over seeds", 4);
+  nl_table_free(wt);
   int sw_best = best > 0;   /* the verdict's E_KS column: swapped for rows (b)-(f) under both swapped readings */
   /* The thesis's E_Con scale: the same runs at control grids gmin..gmax (default weights). */
   double paper_con = 0;

@@ -31,3 +31,4 @@ tsv_awk 'NR > 1 {a[v("reading")] = n("E_ks_a")} END {if (a["mixed_a_printed"] !=
 # measured 0.189 and 0.215 (seeds 1-3): bounds 0.1..0.3, and E_Con grows with the grid.
 "$expect" "$out/grid_sweep.tsv" rows=2 'E_con_per_point>0.1' 'E_con_per_point<0.3' 'paper_E_con>49' 'paper_E_con<51'
 tsv_awk 'NR > 2 && !(n("E_con") > prev) {print "E_con not growing with the grid"; exit 1} NR > 1 {prev = n("E_con")}' "$out/grid_sweep.tsv"
+"$expect" "$out/reading_tests.tsv" rows=12 'p_welch>=0' 'p_welch<=1' 'seeds==3'
