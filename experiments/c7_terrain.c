@@ -16,7 +16,7 @@ int main(int argc, char **argv)
   nl_study_cheng_open(&s, "c7_terrain", "C7 - terrain height maps (Fig 4.15-4.17)", &argc, argv);
   nl_harness *r = s.r;
   int mesh = (int)nl_harness_param_int(r, "mesh", nl_harness_quick(r) ? 48 : 96, 8, 512, "height-map mesh side: mesh x mesh heights per terrain (quick 48)");
-  double zscale = nl_harness_param(r, "relief_z", 0.5, 1e-3, 100, "vertical exaggeration of the shaded relief (heights 0..1 over the unit square)");
+  double zscale = nl_harness_param(r, "relief_z", 0.08, 1e-3, 100, "vertical exaggeration of the shaded relief (heights 0..1 over the unit square)");
   nl_study_cheng_ready(&s);
   s.role = "cheng.terrain";   /* C1 runs the same cloud setting on these patterns: C7 gets its own runs */
   const char *names[NPAT] = {"flower", "x", "star"};
@@ -50,7 +50,7 @@ int main(int argc, char **argv)
     nl_cheng_pattern_free(pat);
     nl_harness_progress(r, (i + 1.0) / NPAT, names[i]);
   }
-  nl_study_cheng_montage(r, panels, plab, NCOL * NPAT, NCOL, "Fig 4.15-4.17: pattern | height map | shaded relief (first seed)", "heightmaps.png");
+  nl_study_cheng_montage(r, panels, plab, NCOL * NPAT, NCOL, "Fig 4.15-4.17: pattern | height | relief", "heightmaps.png");
   nl_harness_write_table(r, sum, "summary.tsv");
   nl_harness_text(r, "**Thesis:** terrain from the flower, \"X\" and star patterns, height = controlled noise "
                      "(Fig 4.15-4.17, images only). **Ours:** height = the controlled value c = (1 + V)/2 of the "
