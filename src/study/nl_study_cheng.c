@@ -25,6 +25,8 @@ static void run_params(nl_harness *r, nl_cheng_config *c, int *grid)
                            "first octave's amplitude divisor a1, a_l = a1 2^(l-1) (Cheng eq. 3.10; thesis 4)");
   c->octaves = (int)nl_harness_param_int(r, "octaves", c->octaves, 1, NL_CHENG_MAX_OCTAVES,
                                          "octaves F of the fractal sum, one annealing level each (thesis 4)");
+  c->literal = (int)nl_harness_param_int(r, "literal", 0, 0, 1,
+                                         "1: the thesis's control formulas literally (V unscaled: c = V, sin V, |V|); 0: V over its bound, c in [0, 1] (nl_cheng.h)");
   c->sched.n_temps = (int)nl_harness_param_int(r, "temps", q ? 8 : c->sched.n_temps, 1, 100000,
                                                "annealing temperature steps per level (n_temps; quick 8)");
   c->sched.moves_per_var = nl_harness_param(r, "moves_per_var", q ? 5 : c->sched.moves_per_var, 1e-3, 1e6,

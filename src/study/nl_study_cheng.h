@@ -91,7 +91,7 @@ nl_table *nl_study_cheng_pattern_table(const nl_cheng_pattern *p);
 /* The opening every Cheng experiment shares: strips "--patterns DIR"
  * (nl_study_cheng_patterns_parse; "NAME: message", exit 2) into *patterns, starts
  * the run, reads the standard --set parameters into *c and *grid: grid (64),
- * w1, w2, f1, a1, octaves, temps (n_temps; quick 8), moves_per_var (quick 5),
+ * w1, w2, f1, a1, octaves, literal (0/1), temps (n_temps; quick 8), moves_per_var (quick 5),
  * defaults otherwise, and checks the patterns folder (nl_study_cheng_patterns_check;
  * "NAME: control patterns: ...", exit 2), all before the output folder is
  * touched. The experiment then reads its own parameters and calls
