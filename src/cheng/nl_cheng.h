@@ -49,6 +49,9 @@
  *     NL_CHENG_CON_FIRE    c = s sum_l |Noise_l| / a_l       (fire, eq. 4.3)
  *   where V = s F_sum, s = 1 / (sqrt(2)/2 sum_l 1/a_l): the sum over its analytic
  *   bound, so V is in [-1, 1] and every c in [0, 1] like D (see READINGS).
+ *   config.literal = 1 takes the formulas as printed instead: V = F_sum (s = 1),
+ *   c = V, sin V, |V|, sum_l |Noise_l| / a_l (the measured alternative reading;
+ *   marble's rescaled sine has pi s ~ 9.5 times the literal sine's gain).
  *
  * MULTI-LEVEL RULE (sec. 3.4.2, eq. 3.13-3.15). Level l = 1..F, low to high
  *   frequency. The lattice of octave l is the (ceil(f_l) + 1)^2 points that the
