@@ -30,7 +30,7 @@ do for [i=1:3] {
   set title p.": height map"
   splot dir.'/height_'.p.'.tsv' matrix skip 1 using (($1 + 0.5) / n):(($2 + 0.5) / n):3 with image
   unset colorbox
-  set view 55, 30, 1, 1.6
+  set view 35, 30, 1, 1.3
   set size noratio
   set yrange [1:0]
   set ztics auto format "%.2f"
