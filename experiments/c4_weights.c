@@ -125,10 +125,11 @@ int main(int argc, char **argv)
     if (fabs(log(nl_table_value(gs, q, "E_con") / paper_con)) < fabs(log(nl_table_value(gs, gb, "E_con") / paper_con))) gb = q;
   nl_harness_report_table(r, gs, "Control grid sweep at the default weights: E_Con against the thesis's mean over Table 4.1", 4);
   nl_harness_text(r, "Control grid: the thesis's E_Con (mean %.4g over the six rows) is closest at a %g x %g grid (%g points, "
-                     "E_Con %.4g +- %.3g, %.3g per point); our headline 64 x 64 grid is the measured alternative. Grids "
-                     "whose cell centres fall on a higher octave's lattice points see that octave as 0 (nl_cheng.h).\n",
+                     "E_Con %.4g +- %.3g, %.3g per point); r with the pattern there %.2f, E_Con / best constant %.3g. "
+                     "64 x 64 is the measured alternative. Grids whose cell centres fall on a higher octave's lattice points see that octave as 0 (nl_cheng.h).\n",
                  paper_con, nl_table_value(gs, gb, "grid"), nl_table_value(gs, gb, "grid"), nl_table_value(gs, gb, "points"),
-                 nl_table_value(gs, gb, "E_con"), nl_table_value(gs, gb, "E_con_sd"), nl_table_value(gs, gb, "E_con_per_point"));
+                 nl_table_value(gs, gb, "E_con"), nl_table_value(gs, gb, "E_con_sd"), nl_table_value(gs, gb, "E_con_per_point"),
+                 nl_table_value(gs, gb, "r_pattern"), nl_table_value(gs, gb, "con_vs_const"));
   nl_harness_verdict(r, "grid_sweep.tsv", gs, gb, "E_Con, Table 4.1 mean, best control grid", "paper_E_con", "E_con", "E_con_sd", "factor 1.25 2", "grid chosen by the sweep");
   nl_harness_verdict_rows(r, "table41.tsv", cmp, "E_KS", "panel", "paper_E_ks", sw_best ? "E_ks_swapped" : "E_ks",
                           NULL, "factor 1.25 2", sw_best ? "swapped reading (row a: see readings.tsv)" : "printed reading");

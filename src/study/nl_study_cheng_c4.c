@@ -106,18 +106,28 @@ nl_table *nl_study_cheng_grid_sweep(const nl_study_cheng *s, const nl_cheng_conf
 
 size_t nl_study_cheng_table41_readings_text(nl_harness *r, const nl_table *rd)
 {
-  size_t best = 0;
-  for (size_t q = 1; q < rd->nrows; q++) if (nl_table_value(rd, q, "rms_log_ks") < nl_table_value(rd, best, "rms_log_ks")) best = q;
+  size_t best = 0, bc = 0;
+  int sig = 0;
+  for (size_t q = 0; q < rd->nrows; q++) {
+    if (nl_table_value(rd, q, "rms_log_ks") < nl_table_value(rd, best, "rms_log_ks")) best = q;
+    if (nl_table_value(rd, q, "rms_log_con") < nl_table_value(rd, bc, "rms_log_con")) bc = q;
+    sig += nl_table_value(rd, q, "p_perm_ks") < 0.05;
+  }
   nl_harness_report_table(r, rd, "Readings of Table 4.1's weights over all six rows: Pearson r of log E_KS and log E_Con (ours vs thesis), exact one-sided permutation p over all orderings of the rows, rms of the centred log ratio", 4);
-  nl_harness_text(r, "Over all six rows, the reading \"%s\" fits the thesis's E_KS best: rms centred log ratio %.3g "
-                     "(printed %.3g, swapped %.3g, mixed_a_printed = (a) as printed and (b)-(f) swapped %.3g), r of log E_KS %.2f with permutation p = %.3g "
-                     "(%s at alpha = 0.05). Row (a): thesis E_KS %.4g, ours %.4g under this reading. E_Con: r of log E_Con %.2f, "
-                     "p = %.3g, rms %.3g.\n", nl_table_text(rd, best, "reading"), nl_table_value(rd, best, "rms_log_ks"),
-                 nl_table_value(rd, 0, "rms_log_ks"), nl_table_value(rd, 1, "rms_log_ks"), nl_table_value(rd, 2, "rms_log_ks"),
-                 nl_table_value(rd, best, "r_log_ks"), nl_table_value(rd, best, "p_perm_ks"),
-                 nl_table_value(rd, best, "p_perm_ks") < 0.05 ? "significant" : "not significant",
-                 nl_table_value(rd, best, "paper_E_ks_a"), nl_table_value(rd, best, "E_ks_a"), nl_table_value(rd, best, "r_log_con"),
-                 nl_table_value(rd, best, "p_perm_con"), nl_table_value(rd, best, "rms_log_con"));
+  nl_harness_text(r, "Over all six rows, E_KS fits the thesis best under the reading \"%s\": rms centred log ratio %.3g "
+                     "(printed %.3g, swapped %.3g, mixed_a_printed = (a) as printed and (b)-(f) swapped %.3g), r of log E_KS "
+                     "%.2f, permutation p = %.3g; %d of %zu readings order the rows' E_KS like the thesis at alpha = 0.05%s. "
+                     "Row (a): thesis E_KS %.4g, ours %.4g under it. E_Con's shape fits best under \"%s\" (rms %.3g; "
+                     "printed %.3g, swapped %.3g, mixed %.3g).\n", nl_table_text(rd, best, "reading"),
+                 nl_table_value(rd, best, "rms_log_ks"), nl_table_value(rd, 0, "rms_log_ks"), nl_table_value(rd, 1, "rms_log_ks"),
+                 nl_table_value(rd, 2, "rms_log_ks"), nl_table_value(rd, best, "r_log_ks"), nl_table_value(rd, best, "p_perm_ks"),
+                 sig, rd->nrows, sig ? "" : " (no reading reproduces the E_KS column's order; the E_KS choice is the least bad, not a fit)",
+                 nl_table_value(rd, best, "paper_E_ks_a"), nl_table_value(rd, best, "E_ks_a"), nl_table_text(rd, bc, "reading"),
+                 nl_table_value(rd, bc, "rms_log_con"), nl_table_value(rd, 0, "rms_log_con"), nl_table_value(rd, 1, "rms_log_con"),
+                 nl_table_value(rd, 2, "rms_log_con"));
+  if (bc != best)
+    nl_harness_text(r, "The two columns disagree on the reading: E_KS prefers \"%s\", E_Con \"%s\"; the verdicts below use "
+                       "E_KS's choice.\n", nl_table_text(rd, best, "reading"), nl_table_text(rd, bc, "reading"));
   return best;
 }
 
