@@ -1,7 +1,9 @@
 /* C1 - Cheng 2009 Fig 4.1-4.4 (sec. 4.1): cloud, marble, erosion and fire
  * textures, each from three control patterns with its own control term
  * (eq. 3.8, 4.1, 4.2, 4.3); one montage per texture: pattern | controlled
- * value | texture. */
+ * value without and with the display stretch | texture | the literal
+ * formula's value. Each panel also runs with the thesis's formulas taken
+ * literally (V unscaled: c = V, sin V, |V|), the reading beside ours. */
 #include "study/nl_study_cheng.h"
 #include "harness/nl_harness.h"
 
@@ -10,10 +12,12 @@
 
 #define NTEX 4
 #define NPAT 3
+#define NCOL 5
 
 static const char *const patterns[NTEX][NPAT] = {
   {"flower", "x", "star"}, {"rings", "spiral", "letter"}, {"disc", "star", "x"}, {"flower", "gradient", "letter"}};
 static const char *const equation[NTEX] = {"eq. 3.8", "eq. 4.1", "eq. 4.2", "eq. 4.3"};
+static const char *const formula[2] = {"rescaled", "literal"};
 
 int main(int argc, char **argv)
 {
@@ -24,32 +28,40 @@ int main(int argc, char **argv)
   nl_study_cheng_ready(&s);
   const nl_cheng_config base = s.c;
   int grid = s.grid, k = nl_harness_seeds(r);
-  const char *labels[] = {"texture", "pattern"};
-  nl_table *sum = nl_study_cheng_summary_alloc(2, labels);
+  const char *labels[] = {"texture", "pattern", "formula"};
+  nl_table *sum = nl_study_cheng_summary_alloc(3, labels);
   for (int t = 0; t < NTEX; t++) {
-    nl_cheng_config c = base;
+    nl_cheng_config c = base, cl;
     c.con = (nl_cheng_con)t;   /* eq. 3.8, 4.1, 4.2, 4.3 in nl_cheng_con's order */
-    nl_image *panels[3 * NPAT];
-    const char *plab[3 * NPAT];
+    cl = c;
+    cl.literal = 1;
+    nl_image *panels[NCOL * NPAT];
+    const char *plab[NCOL * NPAT];
     for (int j = 0; j < NPAT; j++) {
       nl_cheng_pattern *pat = nl_study_cheng_pattern(&s, patterns[t][j]);
-      const char *lab[2] = {nl_cheng_con_name(c.con), patterns[t][j]};
-      nl_noise_grad2 *first = nl_study_cheng_seeds(&s, &c, pat, sum, 2, lab);
-      panels[3 * j] = nl_study_cheng_pattern_panel(pat, size);
-      panels[3 * j + 1] = nl_study_cheng_value_image(first, &c, size);
-      panels[3 * j + 2] = nl_study_cheng_texture_image(first, &c, size);
-      plab[3 * j] = patterns[t][j];
-      plab[3 * j + 1] = "controlled value";
-      plab[3 * j + 2] = nl_cheng_con_name(c.con);
+      const char *lab[3] = {nl_cheng_con_name(c.con), patterns[t][j], formula[0]};
+      nl_noise_grad2 *first = nl_study_cheng_seeds(&s, &c, pat, sum, 3, lab);
+      lab[2] = formula[1];
+      nl_noise_grad2 *lit = nl_study_cheng_seeds(&s, &cl, pat, sum, 3, lab);
+      nl_image **p = panels + NCOL * j;
+      p[0] = nl_study_cheng_pattern_panel(pat, size);
+      p[1] = nl_study_cheng_value_image_raw(first, &c, size);
+      p[2] = nl_study_cheng_value_image(first, &c, size);
+      p[3] = nl_study_cheng_texture_image(first, &c, size);
+      p[4] = nl_study_cheng_value_image(lit, &cl, size);
+      const char *pl[NCOL] = {patterns[t][j], "c, raw 0..1", "c, stretched", nl_cheng_con_name(c.con), "literal c"};
+      for (int q = 0; q < NCOL; q++) plab[NCOL * j + q] = pl[q];
       nl_noise_grad2_free(first);
+      nl_noise_grad2_free(lit);
       nl_cheng_pattern_free(pat);
       nl_harness_progress(r, (t * NPAT + j + 1.0) / (NTEX * NPAT), nl_cheng_con_name(c.con));
     }
-    char title[96], file[64], cap[160];
+    char title[96], file[64], cap[256];
     snprintf(title, sizeof title, "Fig 4.%d: %s (%s)", t + 1, nl_cheng_con_name(c.con), equation[t]);
     snprintf(file, sizeof file, "%s.png", nl_cheng_con_name(c.con));
-    nl_study_cheng_montage(r, panels, plab, 3 * NPAT, 3, title, file);
-    snprintf(cap, sizeof cap, "Fig 4.%d: %s textures, control term %s; pattern | controlled value | texture (first seed)",
+    nl_study_cheng_montage(r, panels, plab, NCOL * NPAT, NCOL, title, file);
+    snprintf(cap, sizeof cap, "Fig 4.%d: %s textures, control term %s; pattern | controlled value on its own 0..1 scale "
+             "| the same stretched to its 1st..99th percentile | texture | the literal formula's value, stretched (first seed)",
              t + 1, nl_cheng_con_name(c.con), equation[t]);
     nl_harness_figure(r, file, cap);
   }
@@ -57,14 +69,27 @@ int main(int argc, char **argv)
   nl_harness_text(r, "**Thesis:** three patterns per texture (images only); cloud, erosion and fire blend two "
                      "colours with the noise value as alpha, marble goes through a sine; the control term "
                      "follows the texture (eq. 3.8, 4.1, 4.2, 4.3). **Ours:** %d x %d control grid, thesis "
-                     "setting (F = %d, f1 = %g, a1 = %g, w1 = %g, w2 = %g), %d seeds per panel; the control "
-                     "value is c = (1 + V)/2, (1 + sin(pi V))/2, |V| or the octave sum of |noise| over its "
-                     "bound (nl_cheng.h); images stretch each value's 1st..99th percentile to alpha 0..1.\n",
+                     "setting (F = %d, f1 = %g, a1 = %g, w1 = %g, w2 = %g), %d seeds per row. Formula "
+                     "\"rescaled\" (our headline reading): c = (1 + V)/2, (1 + sin(pi V))/2, |V| or the octave "
+                     "sum of |noise| over its bound, V = the fractal sum over its analytic bound (nl_cheng.h); "
+                     "\"literal\": the thesis's formulas as printed, c = V, sin V, |V|, sum |noise| / a with V "
+                     "unscaled (E_Con = sum (c - D)^2 either way). Images stretch each value's 1st..99th "
+                     "percentile to 0..1 except the \"no stretch\" panel.\n",
                  grid, grid, base.octaves, base.f1, base.a1, base.w1, base.w2, k);
-  nl_harness_report_columns(r, sum, "summary.tsv", "texture,pattern,seeds," NL_STUDY_CHENG_STORY, "Per texture and pattern: statistics of the optimised tables (mean and spread over seeds)", 4);
+  nl_harness_report_columns(r, sum, "summary.tsv", "texture,pattern,formula,seeds," NL_STUDY_CHENG_STORY, "Per texture, pattern and formula: statistics and controllability of the optimised tables (mean and spread over seeds)", 4);
+  nl_study_cheng_control_text(r, sum, 3);
+  /* Marble's gain: the sine's argument is pi s F_sum rescaled, F_sum literally (eq. 4.1's sin V). */
+  nl_noise_octaves o = nl_noise_octaves_cheng(base.octaves, base.f1, base.a1);
+  double asum = 0;
+  for (int l = 0; l < o.n; l++) asum += o.amp[l];
+  double gain = NL_PI / (NL_NOISE2_BOUND * asum);
+  nl_harness_text(r, "Marble's control term: the rescaled sine's argument is pi V = %.3g F_sum (V = F_sum over its bound), "
+                     "%.2fx eq. 4.1's literal sin(F_sum); after (1 + sin)/2 the slope of c at F_sum = 0 is %.3g, "
+                     "against 1 for the literal sin and %.3g for the rescaled cloud term (1 + V)/2. Much of marble's "
+                     "r rests on this gain: compare its literal rows.\n", gain, gain, gain / 2, gain / (2 * NL_PI));
   double wks = nl_study_column_min(sum, "uniform_ks"), wku = nl_study_column_min(sum, "uniform_kuiper");
   nl_harness_text(r, "Uniformity: the smallest fraction of runs not rejected as non-uniform at alpha = 0.05 is "
-                     "%.2f (KS) and %.2f (Kuiper) over the twelve panels.\n", wks, wku);
+                     "%.2f (KS) and %.2f (Kuiper) over the %zu rows.\n", wks, wku, sum->nrows);
   nl_table_free(sum);
   nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);

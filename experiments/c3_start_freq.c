@@ -69,6 +69,7 @@ int main(int argc, char **argv)
                           : "NOT monotone in f1",
                  ec[0], ec[1], ec[2], ec[3],
                  f1s[best]);
+  nl_study_cheng_control_text(r, sum, 1);
   nl_table_free(sum);
   nl_cheng_pattern_free(pat);
   nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */

@@ -48,3 +48,8 @@ cmp "$out/summary.tsv" "$out/again/summary.tsv"
 # at --quick, 3 seeds), so that claim is reproduced for both patterns.
 tsv_awk 'NR > 1 && v("quantity") ~ /^chi2/ && v("verdict") != "reproduced" {print "verdict: " $0; exit 1}
          END {if (NR != 5) {print "verdicts: " NR - 1 " rows, wanted 4"; exit 1}}' "$out/verdicts.tsv"
+# Between-objective Welch tests: 5 per pattern (E_con three pairs, E_ks, chi2);
+# p in [0, 1]; chi2 chi-square vs KS objective differs (measured p <= 0.001 at
+# --quick, as the verdicts above).
+"$expect" "$out/tests.tsv" rows=10 'p_welch>=0' 'p_welch<=1' 'seeds==3'
+tsv_awk 'NR > 1 && v("quantity") == "chi2" && !(n("p_welch") < 0.05) {print "chi2 test: " $0; exit 1}' "$out/tests.tsv"

@@ -22,3 +22,13 @@ bad --patterns "$pat" --set w1=0 --set w2=0
 bad --patterns "$pat" --set w1=-1
 bad --patterns "$pat" --set f1=0
 [ ! -e "$out/bad/table41.tsv" ]
+# Readings of Table 4.1 over all six rows (printed, swapped, mixed_a_printed):
+# permutation p in (0, 1]; the mixed reading's row (a) is the printed one's.
+. "$(dirname "$0")/tsv.sh"
+"$expect" "$out/readings.tsv" rows=3 'p_perm_ks>0' 'p_perm_ks<=1' 'rms_log_ks>0' 'r_log_ks>=-1' 'r_log_ks<=1'
+tsv_awk 'NR > 1 {a[v("reading")] = n("E_ks_a")} END {if (a["mixed_a_printed"] != a["printed"] || a["swapped"] == a["printed"]) {print "row (a) per reading"; exit 1}}' "$out/readings.tsv"
+# Grid sweep at --quick: grids 8 and 16 (64 and 256 points); E_Con per point
+# measured 0.189 and 0.215 (seeds 1-3): bounds 0.1..0.3, and E_Con grows with the grid.
+"$expect" "$out/grid_sweep.tsv" rows=2 'E_con_per_point>0.1' 'E_con_per_point<0.3' 'paper_E_con>49' 'paper_E_con<51'
+tsv_awk 'NR > 2 && !(n("E_con") > prev) {print "E_con not growing with the grid"; exit 1} NR > 1 {prev = n("E_con")}' "$out/grid_sweep.tsv"
+"$expect" "$out/reading_tests.tsv" rows=12 'p_welch>=0' 'p_welch<=1' 'seeds==3'

@@ -49,6 +49,9 @@
  *     NL_CHENG_CON_FIRE    c = s sum_l |Noise_l| / a_l       (fire, eq. 4.3)
  *   where V = s F_sum, s = 1 / (sqrt(2)/2 sum_l 1/a_l): the sum over its analytic
  *   bound, so V is in [-1, 1] and every c in [0, 1] like D (see READINGS).
+ *   config.literal = 1 takes the formulas as printed instead: V = F_sum (s = 1),
+ *   c = V, sin V, |V|, sum_l |Noise_l| / a_l (the measured alternative reading;
+ *   marble's rescaled sine has pi s ~ 9.5 times the literal sine's gain).
  *
  * MULTI-LEVEL RULE (sec. 3.4.2, eq. 3.13-3.15). Level l = 1..F, low to high
  *   frequency. The lattice of octave l is the (ceil(f_l) + 1)^2 points that the
@@ -170,6 +173,8 @@ typedef struct {
   size_t chisq_bins;    /* K of eq. 3.4 */
   int propagate;        /* 1: eq. 3.13 initial guess per level (thesis); 0: keep the random start */
   nl_cheng_schedule sched;
+  int literal;          /* 0: V over its bound, c in [0, 1] (READINGS); 1: the thesis's formulas
+                           literally, V = F_sum unscaled, c = V, sin V, |V|, sum |Noise_l| / a_l */
 } nl_cheng_config;
 
 nl_cheng_config nl_cheng_config_default(void);
@@ -248,6 +253,12 @@ typedef struct {
   double rms_con;             /* sqrt(E_con / n points) */
   double roughness;           /* rms gradient of the control value on a 128^2 raster
                                  of [0,1)^2, per unit length (smoothness, Fig 4.7) */
+  /* Controllability: how well the value follows the pattern, and two baselines. */
+  double r_pattern;           /* Pearson r of c(x_i) and D_i over the control points */
+  double contrast;            /* sd of c on the 128^2 raster */
+  double e_con_const;         /* E_Con of the best constant image, sum (D_i - mean D)^2 */
+  double e_con_random;        /* E_Con of the unoptimised table (nl_cheng_run's start; NAN
+                                 from nl_cheng_evaluate alone) */
 } nl_cheng_eval;
 
 nl_status nl_cheng_evaluate(const nl_noise_grad2 *table, const nl_cheng_config *c,

@@ -28,6 +28,7 @@ nl_status nl_cheng_config_check(const nl_cheng_config *c, nl_error *err)
     return nl_fail(err, NL_EINVAL, "octaves must be in 1..%d, got %d", NL_CHENG_MAX_OCTAVES, c->octaves);
   if (c->chisq_bins < 2) return nl_fail(err, NL_EINVAL, "chi-square needs >= 2 bins");
   if ((unsigned)c->stat > NL_CHENG_STAT_KUIPER) return nl_fail(err, NL_EINVAL, "unknown objective %d", (int)c->stat);
+  if (c->literal != 0 && c->literal != 1) return nl_fail(err, NL_EINVAL, "literal must be 0 or 1, got %d", c->literal);
   if ((unsigned)c->con > NL_CHENG_CON_FIRE) return nl_fail(err, NL_EINVAL, "unknown texture type %d", (int)c->con);
   const nl_cheng_schedule *s = &c->sched;
   if (s->n_temps < 1 || !(s->moves_per_var > 0) || !(s->t_decades > 0) || !(s->p0 > 0 && s->p0 < 1) || s->stall < 1)

@@ -15,27 +15,50 @@ static double amp_scale(const nl_noise_octaves *o)
 }
 
 /* E_Con over all F octaves with the noise kernel itself (nl_noise_grad2_eval), an
- * evaluation path independent of the optimiser's stored corners. */
-static double control_error(const nl_noise_grad2 *g, const nl_cheng_config *c, const nl_cheng_pattern *pat)
+ * evaluation path independent of the optimiser's stored corners; with r != NULL
+ * also Pearson's r of the control value and the target D over the points. */
+static double control_error(const nl_noise_grad2 *g, const nl_cheng_config *c, const nl_cheng_pattern *pat,
+                            double *r)
 {
   nl_noise_octaves o = nl_noise_octaves_cheng(c->octaves, c->f1, c->a1);
   double s = amp_scale(&o), e = 0, nv[NL_CHENG_MAX_OCTAVES];
+  double sv = 0, sd = 0, svv = 0, sdd = 0, svd = 0, n = (double)pat->n;
   for (size_t i = 0; i < pat->n; i++) {
     for (int l = 0; l < o.n; l++) nv[l] = nl_noise_grad2_eval(g, o.freq[l] * pat->x[i], o.freq[l] * pat->y[i]);
-    double d = nl_cheng__control_value(c->con, nv, o.amp, o.n, s) - pat->d[i];
+    double v = nl_cheng__control_value(c->con, nv, o.amp, o.n, s, c->literal), d = v - pat->d[i];
     e += d * d;
+    sv += v; sd += pat->d[i]; svv += v * v; sdd += pat->d[i] * pat->d[i]; svd += v * pat->d[i];
   }
+  if (r) {
+    double cov = svd - sv * sd / n, vv = svv - sv * sv / n, dd = sdd - sd * sd / n;
+    *r = vv > 0 && dd > 0 ? cov / sqrt(vv * dd) : 0;   /* a flat value or pattern: no correlation */
+  }
+  return e;
+}
+
+/* The best constant image's E_Con: the constant mean D (least squares). */
+static double const_error(const nl_cheng_pattern *pat)
+{
+  double m = 0, e = 0;
+  for (size_t i = 0; i < pat->n; i++) m += pat->d[i];
+  m /= (double)pat->n;
+  for (size_t i = 0; i < pat->n; i++) e += (pat->d[i] - m) * (pat->d[i] - m);
   return e;
 }
 
 #define ROUGH_N 128
 
 /* rms of the finite-difference gradient of the control value, per unit
- * length: a number for "smoother" (Fig 4.7). */
-static double roughness(const nl_noise_grad2 *g, const nl_cheng_config *c)
+ * length: a number for "smoother" (Fig 4.7); *contrast = the value's sd on
+ * the same raster. */
+static double roughness(const nl_noise_grad2 *g, const nl_cheng_config *c, double *contrast)
 {
-  double *v = nl_xmalloc(ROUGH_N * ROUGH_N * sizeof *v), s = 0;
+  double *v = nl_xmalloc(ROUGH_N * ROUGH_N * sizeof *v), s = 0, m = 0, q = 0;
   nl_cheng_value_grid(g, c, ROUGH_N, ROUGH_N, v);
+  for (int i = 0; i < ROUGH_N * ROUGH_N; i++) m += v[i];
+  m /= ROUGH_N * ROUGH_N;
+  for (int i = 0; i < ROUGH_N * ROUGH_N; i++) q += (v[i] - m) * (v[i] - m);
+  *contrast = sqrt(q / (ROUGH_N * ROUGH_N - 1.0));
   for (int y = 0; y + 1 < ROUGH_N; y++)
     for (int x = 0; x + 1 < ROUGH_N; x++) {
       double dx = v[y * ROUGH_N + x + 1] - v[y * ROUGH_N + x], dy = v[(y + 1) * ROUGH_N + x] - v[y * ROUGH_N + x];
@@ -59,9 +82,11 @@ nl_status nl_cheng_evaluate(const nl_noise_grad2 *g, const nl_cheng_config *c,
   out->e_ks = ks.d; out->p_ks = ks.p;
   out->kuiper_v = ku.v; out->p_kuiper = ku.p;
   out->chi2 = ch.chi2; out->p_chi2 = ch.p;
-  out->e_con = control_error(g, c, pat);
+  out->e_con = control_error(g, c, pat, &out->r_pattern);
   out->rms_con = sqrt(out->e_con / (double)pat->n);
-  out->roughness = roughness(g, c);
+  out->roughness = roughness(g, c, &out->contrast);
+  out->e_con_const = const_error(pat);
+  out->e_con_random = NAN;
   double stat = nl_cheng__stat_full(c->stat, c->chisq_bins, g->angle, g->m);
   out->e = nl_cheng_objective(c, stat, out->e_con);
   return NL_OK;
@@ -78,7 +103,7 @@ void nl_cheng_value_grid(const nl_noise_grad2 *g, const nl_cheng_config *c, int 
                          rows + (size_t)l * w);
     for (int x = 0; x < w; x++) {
       for (int l = 0; l < o.n; l++) nv[l] = rows[(size_t)l * w + x];
-      out[(size_t)y * w + x] = nl_cheng__control_value(c->con, nv, o.amp, o.n, s);
+      out[(size_t)y * w + x] = nl_cheng__control_value(c->con, nv, o.amp, o.n, s, c->literal);
     }
   }
   free(rows);
@@ -92,11 +117,13 @@ nl_status nl_cheng_run(const nl_cheng_config *c, const nl_cheng_pattern *pat, un
   nl_noise_grad2_seed(g, seed);
   nl_cheng_problem *p = nl_cheng_problem_alloc(c, pat, g, err);
   if (!p) { nl_noise_grad2_free(g); return NL_EINVAL; }
+  double e_random = control_error(g, c, pat, NULL);   /* baseline: the random start, unoptimised */
   /* The table and the annealer take streams of their own roles from the one
    * seed (noise.grad2, cheng.anneal), so they are independent. */
   nl_cheng_optimise(p, seed, stats);
   nl_cheng_problem_free(p);
   nl_status s = ev ? nl_cheng_evaluate(g, c, pat, ev, err) : NL_OK;
+  if (ev && !s) ev->e_con_random = e_random;
   if (table_out && !s) *table_out = g;
   else nl_noise_grad2_free(g);
   return s;

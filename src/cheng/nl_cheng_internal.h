@@ -67,8 +67,13 @@ long nl_cheng__lattice_max(double f);
 /* The control value c of nl_cheng.h from a point's octave values (the first
  * `levels` of them); inline because every move evaluates it per point. */
 static inline double nl_cheng__control_value(nl_cheng_con con, const double *nv, const double *amp,
-                                             int levels, double s)
+                                             int levels, double s, int literal)
 {
+  if (literal) {   /* eq. 3.8, 4.1-4.3 as printed: the raw fractal sum, sin V, |V| */
+    double v = 0;
+    for (int l = 0; l < levels; l++) v += amp[l] * (con == NL_CHENG_CON_FIRE ? fabs(nv[l]) : nv[l]);
+    return con == NL_CHENG_CON_SIN ? sin(v) : con == NL_CHENG_CON_ABS ? fabs(v) : v;
+  }
   double v = 0;
   if (con == NL_CHENG_CON_FIRE) {
     for (int l = 0; l < levels; l++) v += amp[l] * fabs(nv[l]);

@@ -158,7 +158,7 @@ static inline double octave_value(const nl_cheng_problem *p, size_t i, size_t l)
 
 static inline double point_term(const nl_cheng_problem *p, const double *nv, size_t i)
 {
-  double e = nl_cheng__control_value(p->c.con, nv, p->amp, p->level, p->s) - p->pat->d[i];
+  double e = nl_cheng__control_value(p->c.con, nv, p->amp, p->level, p->s, p->c.literal) - p->pat->d[i];
   return e * e;
 }
 

@@ -25,6 +25,8 @@ static void run_params(nl_harness *r, nl_cheng_config *c, int *grid)
                            "first octave's amplitude divisor a1, a_l = a1 2^(l-1) (Cheng eq. 3.10; thesis 4)");
   c->octaves = (int)nl_harness_param_int(r, "octaves", c->octaves, 1, NL_CHENG_MAX_OCTAVES,
                                          "octaves F of the fractal sum, one annealing level each (thesis 4)");
+  c->literal = (int)nl_harness_param_int(r, "literal", 0, 0, 1,
+                                         "1: the thesis's control formulas literally (V unscaled: c = V, sin V, |V|); 0: V over its bound, c in [0, 1] (nl_cheng.h)");
   c->sched.n_temps = (int)nl_harness_param_int(r, "temps", q ? 8 : c->sched.n_temps, 1, 100000,
                                                "annealing temperature steps per level (n_temps; quick 8)");
   c->sched.moves_per_var = nl_harness_param(r, "moves_per_var", q ? 5 : c->sched.moves_per_var, 1e-3, 1e6,
@@ -60,7 +62,8 @@ void nl_study_cheng_params_done(nl_harness *r, const nl_cheng_config *c, const c
 static const char *const summary_cols[] = {
   "seeds", "E_ks", "E_ks_sd", "p_ks", "p_ks_min", "V_kuiper", "V_kuiper_sd", "p_kuiper",
   "p_kuiper_min", "chi2", "chi2_sd", "p_chi2", "E_con", "E_con_sd", "rms_con", "E",
-  "uniform_ks", "uniform_kuiper", "roughness", "roughness_sd"};
+  "uniform_ks", "uniform_kuiper", "roughness", "roughness_sd", "r_pattern", "r_pattern_sd", "contrast",
+  "contrast_sd", "E_con_random", "E_con_random_sd", "E_con_const", "con_vs_const"};
 #define NSUM (sizeof summary_cols / sizeof *summary_cols)
 
 nl_table *nl_study_cheng_summary_alloc(int nlabels, const char *const *labels)
@@ -103,6 +106,11 @@ void nl_study_cheng_summary_add(nl_table *t, int nlabels, const char *const *lab
   row[c++] = uks;
   row[c++] = uku;
   FIELD(evs, k, roughness, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, r_pattern, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, contrast, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  FIELD(evs, k, e_con_random, x); row[c++] = nl_study_mean(x, k); row[c++] = nl_study_sd(x, k);
+  row[c++] = evs[0].e_con_const;   /* the pattern's alone: the same for every seed */
+  FIELD(evs, k, e_con, x); row[c++] = nl_study_mean(x, k) / evs[0].e_con_const;   /* > 1: worse than flat */
   size_t r = nl_table_append_empty(t);
   for (size_t i = 0; i < NSUM; i++) nl_table_set(t, r, summary_cols[i], row[i]);
   for (int i = 0; i < nlabels; i++) nl_table_set_text(t, r, t->names[i], labels[i]);
@@ -165,6 +173,7 @@ nl_table *nl_study_cheng_matrix_table(const double *v, int w, int h)
 void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title, int *argc, char **argv)
 {
   s->r = nl_study_cheng_begin(name, title, argc, argv, &s->c, &s->grid, &s->patterns);
+  s->role = NULL;
 }
 
 void nl_study_cheng_ready(nl_study_cheng *s) { nl_study_cheng_params_done(s->r, &s->c, s->patterns); }
@@ -182,7 +191,8 @@ nl_noise_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_con
   nl_cheng_eval *evs = nl_xmalloc((size_t)k * sizeof *evs);
   nl_noise_grad2 *first;
   nl_error err;
-  if (nl_cheng_run_seeds(c, pat, nl_harness_seed(s->r), k, evs, &first, &err)) nl_harness_die(s->r, 1, "%s", err.msg);
+  unsigned long seed0 = s->role ? nl_seed_stream(nl_harness_seed(s->r), s->role, 0) : nl_harness_seed(s->r);
+  if (nl_cheng_run_seeds(c, pat, seed0, k, evs, &first, &err)) nl_harness_die(s->r, 1, "%s", err.msg);
   nl_study_cheng_summary_add(sum, nlabels, labels, evs, k);
   free(evs);
   return first;
@@ -219,4 +229,71 @@ nl_table *nl_study_cheng_table41(const nl_table *runs, const double (*thesis)[NL
                     nl_table_value(runs, p, "p_ks_min"), nl_table_value(runs, p, "p_kuiper_min"));
   }
   return cmp;
+}
+
+int nl_study_cheng_control_text(nl_harness *r, const nl_table *sum, int nlabels)
+{
+  double rlo = INFINITY, rhi = -INFINITY, clo = INFINITY, chi = -INFINITY;
+  int worse = 0, better_random = 0;
+  for (size_t q = 0; q < sum->nrows; q++) {
+    double rp = nl_table_value(sum, q, "r_pattern"), ct = nl_table_value(sum, q, "contrast");
+    rlo = fmin(rlo, rp); rhi = fmax(rhi, rp); clo = fmin(clo, ct); chi = fmax(chi, ct);
+    better_random += nl_table_value(sum, q, "E_con") < nl_table_value(sum, q, "E_con_random");
+  }
+  nl_harness_text(r, "Controllability: Pearson r between the control value and the pattern %.2f..%.2f, "
+                     "contrast (sd of the control value) %.3f..%.3f; the optimised E_Con is below the "
+                     "unoptimised start table's in %d of %zu rows.\n", rlo, rhi, clo, chi, better_random, sum->nrows);
+  size_t cap = 256 + 160 * sum->nrows, len = 0;
+  char *list = nl_xmalloc(cap);
+  list[0] = 0;
+  for (size_t q = 0; q < sum->nrows; q++) {
+    double e = nl_table_value(sum, q, "E_con"), e0 = nl_table_value(sum, q, "E_con_const");
+    if (!(e > e0)) continue;
+    char lab[160] = "";
+    for (int i = 0; i < nlabels; i++) {
+      char buf[32];
+      snprintf(lab + strlen(lab), sizeof lab - strlen(lab), "%s%s", i ? "/" : "", nl_table_cell_text(sum, q, (size_t)i, buf));
+    }
+    len += (size_t)snprintf(list + len, cap - len, "%s%s (E_Con %.4g +- %.3g vs %.4g, r %.2f)", worse ? "; " : "", lab, e,
+                            nl_table_value(sum, q, "E_con_sd"), e0, nl_table_value(sum, q, "r_pattern"));
+    worse++;
+  }
+  if (worse)
+    nl_harness_text(r, "**Not controlled in the E_Con sense** (%d of %zu rows): the optimised E_Con is worse than "
+                       "that of the best constant image (a flat image at the pattern's mean): %s.\n", worse, sum->nrows, list);
+  else
+    nl_harness_text(r, "Every row's optimised E_Con is below the best constant image's (con_vs_const < 1).\n");
+  free(list);
+  return worse;
+}
+
+nl_table *nl_study_cheng_pattern_table(const nl_cheng_pattern *p)
+{
+  size_t n = (size_t)p->grid * (size_t)p->grid;
+  double *v = nl_xmalloc(n * sizeof *v);
+  for (size_t i = 0; i < n; i++) v[i] = -1;
+  for (size_t i = 0; i < p->n; i++) v[p->cell[i]] = p->d[i];
+  nl_table *t = nl_study_cheng_matrix_table(v, p->grid, p->grid);
+  free(v);
+  return t;
+}
+
+nl_table *nl_study_cheng_welch_alloc(void)
+{
+  const char *cc[] = {"group", "quantity", "a", "b", "mean_a", "sd_a", "mean_b", "sd_b", "seeds", "diff_pct", "p_welch"};
+  return nl_table_alloc(sizeof cc / sizeof *cc, cc);
+}
+
+double nl_study_cheng_welch_add(nl_table *t, const nl_table *sum, size_t ra, size_t rb, const char *col,
+                                const char *group, const char *a, const char *b)
+{
+  char sdcol[64];
+  snprintf(sdcol, sizeof sdcol, "%s_sd", col);
+  double ma = nl_table_value(sum, ra, col), sa = nl_table_value(sum, ra, sdcol);
+  double mb = nl_table_value(sum, rb, col), sb = nl_table_value(sum, rb, sdcol), p;
+  size_t na = (size_t)nl_table_value(sum, ra, "seeds"), nb = (size_t)nl_table_value(sum, rb, "seeds");
+  nl_error err;
+  if (nl_stats_welch_p(ma, sa, na, mb, sb, nb, &p, &err)) p = ma == mb ? 1 : 0;   /* nothing to test */
+  nl_table_append(t, "ssssddddddd", group, col, a, b, ma, sa, mb, sb, (double)na, 100 * (ma - mb) / mb, p);
+  return p;
 }

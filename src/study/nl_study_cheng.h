@@ -74,15 +74,24 @@ nl_image *nl_study_cheng_grey_image(const double *v, int w, int h);
 /* size x size images: the control value (grey), the config's texture, and
  * the pattern (nearest-neighbour upscaled). */
 nl_image *nl_study_cheng_value_image(const nl_noise_grad2 *g, const nl_cheng_config *c, int size);
+/* The value without the display stretch: grey 0..1 = c 0..1 (literal V and
+ * sin V: -1..1), so the contrast the eye sees is the value's own. */
+nl_image *nl_study_cheng_value_image_raw(const nl_noise_grad2 *g, const nl_cheng_config *c, int size);
 nl_image *nl_study_cheng_texture_image(const nl_noise_grad2 *g, const nl_cheng_config *c, int size);
 nl_image *nl_study_cheng_pattern_panel(const nl_cheng_pattern *p, int size);
+/* Shaded relief of a w x h height field on the unit square: Lambertian
+ * light from the north-west, 45 degrees up, heights exaggerated by zscale. */
+nl_image *nl_study_cheng_relief_image(const double *height, int w, int h, double zscale);
+/* The pattern's targets D as a grid x grid matrix table (gnuplot's matrix
+ * layout; cells without control hold -1). */
+nl_table *nl_study_cheng_pattern_table(const nl_cheng_pattern *p);
 
 /* ---- what C1-C7 share (nl_study_cheng.c) -------------------------------- */
 
 /* The opening every Cheng experiment shares: strips "--patterns DIR"
  * (nl_study_cheng_patterns_parse; "NAME: message", exit 2) into *patterns, starts
  * the run, reads the standard --set parameters into *c and *grid: grid (64),
- * w1, w2, f1, a1, octaves, temps (n_temps; quick 8), moves_per_var (quick 5),
+ * w1, w2, f1, a1, octaves, literal (0/1), temps (n_temps; quick 8), moves_per_var (quick 5),
  * defaults otherwise, and checks the patterns folder (nl_study_cheng_patterns_check;
  * "NAME: control patterns: ...", exit 2), all before the output folder is
  * touched. The experiment then reads its own parameters and calls
@@ -95,7 +104,12 @@ void nl_study_cheng_params_done(nl_harness *r, const nl_cheng_config *c, const c
 /* Summary table: nlabels label columns, then seeds, E_ks (mean), E_ks_sd, p_ks
  * (mean), p_ks_min, V_kuiper, V_kuiper_sd, p_kuiper, p_kuiper_min, chi2, chi2_sd,
  * p_chi2, E_con, E_con_sd, rms_con, E, uniform_ks, uniform_kuiper (fractions of
- * runs not rejected as non-uniform at alpha = 0.05), roughness, roughness_sd. */
+ * runs not rejected as non-uniform at alpha = 0.05), roughness, roughness_sd, and
+ * controllability: r_pattern, r_pattern_sd (Pearson r of the control value with
+ * the pattern), contrast, contrast_sd (sd of the control value), E_con_random,
+ * E_con_random_sd (the unoptimised start table's E_Con), E_con_const (the best
+ * constant image's E_Con) and con_vs_const = E_con / E_con_const (> 1: the
+ * optimised table follows the pattern worse than a flat image). */
 nl_table *nl_study_cheng_summary_alloc(int nlabels, const char *const *labels);
 void nl_study_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
                                 const nl_cheng_eval *evs, int k);
@@ -120,6 +134,8 @@ typedef struct {
   nl_cheng_config c;      /* the standard parameters (nl_study_cheng_begin) */
   int grid;               /* control grid */
   const char *patterns;   /* the --patterns folder */
+  const char *role;       /* NULL: runs from the run's seed; else from nl_seed_stream(seed, role, 0),
+                             so an experiment repeating another's setting gets runs of its own */
 } nl_study_cheng;
 /* nl_study_cheng_begin into s (same checks, same exits). */
 void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title, int *argc, char **argv);
@@ -145,12 +161,49 @@ double nl_study_column_min(const nl_table *t, const char *col);
  * the thesis's rows {w1, E_KS, w2, E_Con}, a table of panel, w1, w2,
  * paper_E_ks, E_ks, E_ks_sd, paper_E_con, E_con, E_con_sd, E_ks_swapped,
  * E_con_swapped, p_ks_min, p_kuiper_min (caller frees). */
+/* Between-condition tests: a table of group, quantity, a, b, mean_a, sd_a,
+ * mean_b, sd_b, seeds, diff_pct (100 (mean_a - mean_b) / mean_b) and p_welch
+ * (Welch's t-test on the two rows' means and sds over their seeds; both sds 0:
+ * p = 1 if the means are equal, else 0). _add appends the test of column col
+ * (sd in col_sd) between summary rows ra and rb and returns p. */
+nl_table *nl_study_cheng_welch_alloc(void);
+double nl_study_cheng_welch_add(nl_table *t, const nl_table *sum, size_t ra, size_t rb, const char *col,
+                                const char *group, const char *a, const char *b);
 /* The columns of a Cheng summary table (nl_study_cheng_summary_alloc) that
  * carry the story in a report section (nl_harness_report_columns); the TSV
  * keeps them all. Prefix the table's label columns: "pattern,seeds," ... */
-#define NL_STUDY_CHENG_STORY "E_ks,E_ks_sd,p_ks_min,V_kuiper,p_kuiper_min,chi2,p_chi2,E_con,E_con_sd,uniform_ks,uniform_kuiper,roughness"
+#define NL_STUDY_CHENG_STORY "E_ks,E_ks_sd,p_ks_min,V_kuiper,p_kuiper_min,chi2,p_chi2,E_con,E_con_sd,uniform_ks,uniform_kuiper,roughness," \
+  NL_STUDY_CHENG_CONTROL
+/* The controllability columns alone (a report table of their own). */
+#define NL_STUDY_CHENG_CONTROL "r_pattern,r_pattern_sd,contrast,contrast_sd,E_con_random,E_con_const,con_vs_const"
+/* Controllability in prose, formatted from a summary table's rows (labels =
+ * its first nlabels columns joined by "/"): the range of r and contrast, and
+ * every row whose optimised E_Con is worse than the best constant image's,
+ * named as not controlled in that sense. Returns the number of such rows. */
+int nl_study_cheng_control_text(nl_harness *r, const nl_table *sum, int nlabels);
 #define NL_STUDY_TABLE41_COLS 4
 nl_table *nl_study_cheng_table41(const nl_table *runs, const double (*thesis)[NL_STUDY_TABLE41_COLS], int npair);
+
+/* C4 (nl_study_cheng_c4.c). Which reading of Table 4.1's weight columns fits
+ * all six rows: per reading (printed; swapped; (a) printed and (b)-(f)
+ * swapped) Pearson r of log E_KS (and log E_Con), ours against the thesis's
+ * over the rows, its exact one-sided permutation p (n! orderings), and the
+ * rms of the centred log ratio (0: ours = the thesis's times one factor);
+ * from nl_study_cheng_table41's table. */
+nl_table *nl_study_cheng_table41_readings(const nl_table *cmp, const double (*thesis)[NL_STUDY_TABLE41_COLS], int npair);
+/* The readings table in the report and its prose; returns the row of the
+ * best-fitting reading (smallest rms_log_ks). */
+size_t nl_study_cheng_table41_readings_text(nl_harness *r, const nl_table *rd);
+/* C4's uniformity prose: over Table 4.1's runs (printed rows 0, 2, ...) and
+ * the sweep (w1 / w2 = rhos[q]), the smallest fractions not rejected and the
+ * smallest swept ratio from which every run passes. */
+void nl_study_cheng_weights_uniformity_text(nl_harness *r, const nl_table *tab, const nl_table *sweep, const double *rhos,
+                                            int npair);
+/* Config c on `pattern` read at control grids gmin, 2 gmin, ... <= gmax over
+ * s's seeds: grid, points, E_ks, E_ks_sd, E_con, E_con_sd, E_con_per_point,
+ * paper_E_con, r_pattern, con_vs_const. */
+nl_table *nl_study_cheng_grid_sweep(const nl_study_cheng *s, const nl_cheng_config *c, const char *pattern,
+                                    int gmin, int gmax, double paper_e_con);
 
 /* ---- what C5 and C6 share (nl_study_cheng_repro.c) ----------------------- */
 
