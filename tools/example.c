@@ -62,34 +62,42 @@ typedef struct {
 
 static void parse(int argc, char **argv, args *a)
 {
+  enum { O_OUT, O_BANDS, O_SIZE, O_HEIGHT, O_SEED, O_T, O_SCALE, O_Z, O_RGB, O_NOHIST, O_PAPERHIST, O_SOLID, O_HELP };
+  static const nl_opt_spec spec[] = {
+    [O_OUT] = {"out", 'o', 1}, [O_BANDS] = {"bands", 0, 1}, [O_SIZE] = {"size", 0, 1}, [O_HEIGHT] = {"height", 0, 1},
+    [O_SEED] = {"seed", 0, 1}, [O_T] = {"t", 0, 1}, [O_SCALE] = {"scale", 0, 1}, [O_Z] = {"z", 0, 1},
+    [O_RGB] = {"rgb", 0, 0}, [O_NOHIST] = {"no-histogram", 0, 0}, [O_PAPERHIST] = {"paper-histogram", 0, 0},
+    [O_SOLID] = {"solid", 0, 0}, [O_HELP] = {"help", 'h', 0}, {NULL, 0, 0}};
   nl_error err;
   memset(a, 0, sizeof *a);
   a->seed = 1;
   a->scale = 1;
-  for (int i = 2; i < argc; i++) {
-    const char *s = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-    int takes = !strcmp(s, "-o") || !strcmp(s, "--size") || !strcmp(s, "--height") ||
-                !strcmp(s, "--seed") || !strcmp(s, "--t") || !strcmp(s, "--scale") || !strcmp(s, "--z") ||
-                !strcmp(s, "--bands");
-    if (takes && !v) { snprintf(err.msg, sizeof err.msg, "%s needs a value", s); die(err.msg); }
-    if (!strcmp(s, "-o")) a->out = v;
-    else if (!strcmp(s, "--bands")) a->bands = v;
-    else if (!strcmp(s, "--size")) { check(nl_parse_long("--size", v, 1, 32768, &a->size, &err), &err); a->have_size = 1; }
-    else if (!strcmp(s, "--height")) check(nl_parse_long("--height", v, 1, 32768, &a->height, &err), &err);
-    else if (!strcmp(s, "--seed")) check(nl_parse_long("--seed", v, 0, 4294967295L, &a->seed, &err), &err);
-    else if (!strcmp(s, "--t")) { check(nl_parse_double("--t", v, 0, 1, &a->t, &err), &err); a->have_t = 1; }
-    else if (!strcmp(s, "--scale")) check(nl_parse_double("--scale", v, 1e-6, 1e6, &a->scale, &err), &err);
-    else if (!strcmp(s, "--z")) check(nl_parse_double("--z", v, -1e9, 1e9, &a->z, &err), &err);
-    else if (!strcmp(s, "--rgb")) { a->rgb = 1; continue; }
-    else if (!strcmp(s, "--no-histogram")) { a->nohist = 1; continue; }
-    else if (!strcmp(s, "--paper-histogram")) { a->paperhist = 1; continue; }
-    else if (!strcmp(s, "--solid")) { a->solid = 1; continue; }
-    else if (!strcmp(s, "-h") || !strcmp(s, "--help")) { usage(stdout); exit(0); }
-    else if (s[0] == '-' && s[1]) { snprintf(err.msg, sizeof err.msg, "unknown option '%s' (try --help)", s); die(err.msg); }
-    else if (a->npos < 2) { a->pos[a->npos++] = s; continue; }
-    else { snprintf(err.msg, sizeof err.msg, "unexpected argument '%s'", s); die(err.msg); }
-    i++;
+  nl_opt_parser p;
+  nl_opt_begin(&p, argc, argv, 2, spec);   /* argv[1] is the subcommand */
+  for (int k; (k = nl_opt_next(&p, &err)) != NL_OPT_END;) {
+    const char *v = p.value[0];
+    switch (k) {
+    case NL_OPT_ERROR: { char m[NL_ERROR_LEN + 16]; snprintf(m, sizeof m, "%s (try --help)", err.msg); die(m); }
+    case NL_OPT_POSITIONAL:
+      if (a->npos == 2) { snprintf(err.msg, sizeof err.msg, "%s: unexpected argument", v); die(err.msg); }
+      a->pos[a->npos++] = v;
+      break;
+    case O_OUT: a->out = v; break;
+    case O_BANDS: a->bands = v; break;
+    case O_SIZE: check(nl_parse_long("--size", v, 1, 32768, &a->size, &err), &err); a->have_size = 1; break;
+    case O_HEIGHT: check(nl_parse_long("--height", v, 1, 32768, &a->height, &err), &err); break;
+    case O_SEED: check(nl_parse_long("--seed", v, 0, 4294967295L, &a->seed, &err), &err); break;
+    case O_T: check(nl_parse_double("--t", v, 0, 1, &a->t, &err), &err); a->have_t = 1; break;
+    case O_SCALE: check(nl_parse_double("--scale", v, 1e-6, 1e6, &a->scale, &err), &err); break;
+    case O_Z: check(nl_parse_double("--z", v, -1e9, 1e9, &a->z, &err), &err); break;
+    case O_RGB: a->rgb = 1; break;
+    case O_NOHIST: a->nohist = 1; break;
+    case O_PAPERHIST: a->paperhist = 1; break;
+    case O_SOLID: a->solid = 1; break;
+    case O_HELP: usage(stdout); exit(0);
+    }
   }
+  nl_opt_end(&p);
   if (!a->out) die("-o OUT is required");
 }
 
