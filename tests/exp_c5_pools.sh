@@ -23,6 +23,7 @@ pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
   'cluster_samples<=input_samples' 'headline>=0' 'headline<=1'
 "$expect" "$out/ess.tsv" rows=12 'icc>=0' 'icc<=1' 'ess_kish<=rows' 'ess_kish>=runs' 'ess_tau<=rows' 'dec_sweeps>0'
 "$expect" "$out/verdicts.tsv" rows=12
+"$expect" "$out/reproduce.tsv" rows=36 'reps_drawn==4' 'below_ks>=0' 'below_ks<=1' 'below_con>=0' 'below_con<=1' 'E_ks>0' 'K>=1'
 # K0 is an input exactly on the matched rows, and then no thesis K0 stands beside it
 tsv_awk 'FNR>1 && ((v("cutoff_rule")=="matched_K0") != (n("k0_is_input")==1) ||
   (n("k0_is_input")==1 && (v("paper_K_initial")!="n/a" || n("K0")==0)) ||

@@ -21,6 +21,9 @@ static const char *const ess_cols[] = {"texture", "rep", "pool_rule", "stride", 
 static const char *const n_names[2] = {"sub1000", "all"}, *const d_names[2] = {"cossin", "angles"},
                   *const p_names[2] = {"successive", "spaced"}, *const c_names[2] = {"thesis", "matched_K0"};
 
+static const char *const rep_cols[] = {"texture", "reading", "k0_is_input", "K", "reps_drawn", "E_ks", "E_ks_sd", "E_con",
+                                       "E_con_sd", "below_ks", "below_con", "E_ks_original", "E_con_original"};
+
 typedef struct { double cut[MAXREP], k0[MAXREP], k[MAXREP], aic[MAXREP], apn[MAXREP], dim[MAXREP], sec; int n, ok, nin, ncl; const char *status; } acc;
 
 void nl_study_cheng_readings_params(nl_harness *r, nl_study_cheng_readings_options *ro)
@@ -30,6 +33,8 @@ void nl_study_cheng_readings_params(nl_harness *r, nl_study_cheng_readings_optio
         "pool replicates: each re-runs the original optimisation, the pool and the fits from its own seed (quick 2)");
   ro->stride = (int)nl_harness_param_int(r, "stride", 2, 1, 1000,
         "sweeps between the states of the spaced pool rule (the pool collects N x stride tail states per run)");
+  ro->draws = (int)nl_harness_param_int(r, "draws", q ? 4 : 24, 0, 4096,
+        "C6's question under each reading: reproductions drawn (swap 1) from replicate 0's models (quick 4)");
   ro->all_reps = (int)nl_harness_param_int(r, "all_reps", 1, 0, MAXREP,
         "replicates whose mixtures are also fitted on all pool rows (n = all; the costly fits)");
 }
@@ -38,9 +43,10 @@ void nl_study_cheng_readings_alloc(nl_study_cheng_readings *R)
 {
   R->readings = nl_table_alloc(sizeof rd_cols / sizeof *rd_cols, rd_cols);
   R->ess = nl_table_alloc(sizeof ess_cols / sizeof *ess_cols, ess_cols);
+  R->repro = nl_table_alloc(sizeof rep_cols / sizeof *rep_cols, rep_cols);
 }
 
-void nl_study_cheng_readings_free(nl_study_cheng_readings *R) { nl_table_free(R->readings); nl_table_free(R->ess); }
+void nl_study_cheng_readings_free(nl_study_cheng_readings *R) { nl_table_free(R->readings); nl_table_free(R->ess); nl_table_free(R->repro); }
 
 static int rd_index(int cr, int n, int d, int p) { return ((cr * 2 + n) * 2 + d) * 2 + p; }
 
@@ -77,10 +83,44 @@ static double angle_cutoff_for_k(nl_harness *r, const nl_cheng_pool *pool, const
   return c;
 }
 
+/* C6's question (are reproductions close to and often below the original?)
+ * under one reading's model: `draws` reproductions with every high entry
+ * swapped, E_KS and E_Con over all entries, as C6 (stream "c5.reproduce"). */
+typedef struct { nl_harness *r; nl_table *t; const nl_study_cheng_repro *rp; const nl_cheng_config *c;
+                 const nl_cheng_pattern *pat; const char *tex; int draws; } repro_ctx;
+
+static void repro_rows(const repro_ctx *x, const nl_cheng_model *m, const char *id, int k0_input)
+{
+  if (!x || !m->gmm || x->draws < 1) return;
+  double ks[4096], con[4096], bk = 0, bc = 0;
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, nl_seed_stream(nl_harness_seed(x->r), "c5.reproduce", 0));
+  nl_noise_grad2 *out = nl_noise_grad2_alloc(x->rp->opt->m);
+  nl_error err;
+  for (int i = 0; i < x->draws; i++) {
+    nl_cheng_eval ev;
+    if (nl_cheng_reproduce(x->rp->opt, m, 1.0, rng, out, &err) || nl_cheng_evaluate(out, x->c, x->pat, &ev, &err))
+      nl_harness_die(x->r, 1, "%s", err.msg);
+    ks[i] = ev.e_ks; con[i] = ev.e_con;
+    bk += ev.e_ks < x->rp->ev.e_ks; bc += ev.e_con < x->rp->ev.e_con;
+  }
+  nl_table_append(x->t, "ssddddddddddd", x->tex, id, (double)k0_input, (double)m->k, (double)x->draws, nl_study_mean(ks, x->draws),
+                  nl_study_sd(ks, x->draws), nl_study_mean(con, x->draws), nl_study_sd(con, x->draws), bk / x->draws,
+                  bc / x->draws, x->rp->ev.e_ks, x->rp->ev.e_con);
+  nl_noise_grad2_free(out);
+  gsl_rng_free(rng);
+}
+
+static void reading_id(char *id, size_t len, int cr, int n, int d, int p)
+{
+  snprintf(id, len, "%s/%s/%s/%s", n_names[n], d_names[d], p_names[p], c_names[cr]);
+}
+
 /* Every reading's model on one replicate's two pools. */
 static void fit_readings(nl_harness *r, acc *A, const nl_cheng_pool *const *pools, const nl_study_cheng_thesis_gmm *th,
-                         const nl_cheng_model_options *mo, unsigned long seed, int with_all)
+                         const nl_cheng_model_options *mo, unsigned long seed, int with_all, const repro_ctx *x)
 {
+  char id[80];
   for (int n = 0; n < 1 + with_all; n++)
     for (int p = 0; p < 2; p++) {
       nl_cheng_model_options o = *mo;
@@ -92,12 +132,16 @@ static void fit_readings(nl_harness *r, acc *A, const nl_cheng_pool *const *pool
         o.cutoff = th->cutoff;
         nl_cheng_model *m = fit(r, pools[p], &o);
         add(&A[rd_index(0, n, d, p)], m, m->cutoff);
+        reading_id(id, sizeof id, 0, n, d, p);
+        repro_rows(x, m, id, 0);
         nl_cheng_model_free(m);
       }
       o.cluster_angles = 0; o.cutoff = -1; o.target_k = (size_t)th->k0;   /* K0 an input */
       nl_cheng_model *m = fit(r, pools[p], &o);
       add(&A[rd_index(1, n, 0, p)], m, m->cutoff);
       add(&A[rd_index(1, n, 1, p)], m, m->n_cl > (size_t)th->k0 ? angle_cutoff_for_k(r, pools[p], m, (size_t)th->k0) : NAN);
+      reading_id(id, sizeof id, 1, n, 0, p);   /* the mixture of both distances */
+      repro_rows(x, m, id, 1);
       nl_cheng_model_free(m);
     }
 }
@@ -189,7 +233,8 @@ void nl_study_cheng_readings_case(const nl_study_cheng *s, nl_study_cheng_readin
       r0.pool = pools[0];
       nl_study_cheng_pool_case_with(s, T, th, po, mo, nseeds, full, &r0);
     }
-    fit_readings(r, A, (const nl_cheng_pool *const *)pools, th, mo, seed, k < ro->all_reps);
+    repro_ctx x = {r, R->repro, &rp, &c, pat, th->texture, ro->draws};
+    fit_readings(r, A, (const nl_cheng_pool *const *)pools, th, mo, seed, k < ro->all_reps, k == 0 ? &x : NULL);
     nl_cheng_pool_free(pools[0]); nl_cheng_pool_free(pools[1]);
     nl_study_cheng_repro_clear(&rp);
   }
@@ -221,6 +266,7 @@ const char *nl_study_cheng_readings_report(nl_harness *r, nl_study_cheng_reading
   for (size_t q = 0; q < t->nrows; q++) nl_table_set(t, q, "headline", !strcmp(nl_table_text(t, q, "reading"), best));
   nl_harness_write_table(r, t, "readings.tsv");
   nl_harness_write_table(r, R->ess, "ess.tsv");
+  nl_harness_write_table(r, R->repro, "reproduce.tsv");
   nl_harness_check(r, "readings.tsv", "seconds", "ignore");
   nl_harness_text(r, "**Readings of Tables 4.2-4.4** (readings.tsv; rules in src/study/nl_study_cheng_readings.h). "
                      "Factors: the mixture's sample (sub1000: the input subsample; all: every pool row; the clustering "
@@ -270,5 +316,16 @@ const char *nl_study_cheng_readings_report(nl_harness *r, nl_study_cheng_reading
                       nl_table_value(R->ess, q, "ess_kish_per_run"), nl_table_value(R->ess, q, "ess_tau"), nl_table_value(R->ess, q, "dec_sweeps"),
                       nl_table_value(R->ess, q, "dec_sweeps") > nl_table_value(R->ess, q, "rows") / nl_table_value(R->ess, q, "runs") * nl_table_value(R->ess, q, "stride")
                         ? ", longer than the states kept per run span" : ", within the span of a run's states");
+  nl_harness_report_table(r, R->repro, "C6's question under each reading (replicate 0): reproductions drawn from the "
+                          "reading's mixture with every high entry swapped; below_*: the fraction below the original", 4);
+  for (size_t q = 0; q < R->repro->nrows; q++) {
+    const char *id = nl_table_text(R->repro, q, "reading");
+    if (strcmp(id, best) && strcmp(id, "sub1000/cossin/successive/matched_K0")) continue;
+    nl_harness_text(r, "%s, %s%s: E_KS %.4g +- %.2g against the original's %.4g (%.0f%% below), E_Con %.4g (original %.4g, "
+                       "%.0f%% below), K %g.\n", nl_table_text(R->repro, q, "texture"), id, strcmp(id, best) ? " (C6's reading)" : " (headline)",
+                    nl_table_value(R->repro, q, "E_ks"), nl_table_value(R->repro, q, "E_ks_sd"), nl_table_value(R->repro, q, "E_ks_original"),
+                    100 * nl_table_value(R->repro, q, "below_ks"), nl_table_value(R->repro, q, "E_con"),
+                    nl_table_value(R->repro, q, "E_con_original"), 100 * nl_table_value(R->repro, q, "below_con"), nl_table_value(R->repro, q, "K"));
+  }
   return best;
 }

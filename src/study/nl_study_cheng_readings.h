@@ -14,7 +14,9 @@
  *              paper_K_initial "n/a"; the mixture then does not depend on the
  *              distance, k-means start, so both distances share one fit).
  * readings.tsv: one row per (texture, reading), mean and sd over replicates;
- * ess.tsv: effective sample size per texture, replicate and pool rule.
+ * ess.tsv: effective sample size per texture, replicate and pool rule;
+ * reproduce.tsv: C6's question (reproductions below the original?) under
+ * each reading's model of replicate 0.
  * HEADLINE RULE: among the readings where K0 is a result, the one with the
  * most matches over the three textures, a match being K0 or K_final within
  * a factor 1.25 of the thesis's, AIC within 50% (rel 0.5); ties go to the
@@ -24,11 +26,12 @@
 
 #include "study/nl_study_cheng.h"
 
-typedef struct { nl_table *readings, *ess; } nl_study_cheng_readings;
+typedef struct { nl_table *readings, *ess, *repro; } nl_study_cheng_readings;
 
 /* --set parameters: reps (pool replicates; quick 2), stride (sweeps between
- * spaced states; quick 2), all_reps (replicates fitted on all rows). */
-typedef struct { int reps, stride, all_reps; } nl_study_cheng_readings_options;
+ * spaced states), all_reps (replicates fitted on all rows), draws
+ * (reproductions per model for C6's question; quick 4). */
+typedef struct { int reps, stride, all_reps, draws; } nl_study_cheng_readings_options;
 void nl_study_cheng_readings_params(nl_harness *r, nl_study_cheng_readings_options *ro);
 
 void nl_study_cheng_readings_alloc(nl_study_cheng_readings *R);
