@@ -55,11 +55,11 @@ static void report(nl_harness *r, const nl_study_cheng_pools *T, const nl_cheng_
   if (T->orig->nrows > NTEX && T->gmm->nrows > 2 * NTEX) {
     double nl2 = nl_table_value(T->orig, NTEX, "n_low");
     nl_harness_text(r, "The other split (low entries = levels 1-2, %g angles, largest chord 2 sqrt(%g) = %.4g), measured on "
-                       "erosion: the thesis's cutoff %g now gives K0 = %.3g (thesis 30) and the AIC path ends at %.3g "
-                       "(thesis 36); the cutoff for K0 = 30 is %.4g. So the thesis's cutoffs are of the size of (cos, sin) "
-                       "distances over a few hundred angles, which hints at the wider split, but does not settle it.\n",
+                       "erosion: the thesis's cutoff %g now gives K0 = %.3g (thesis %g) and the AIC path ends at %.3g "
+                       "(thesis %g); the cutoff for the thesis's K0 is %.4g.\n",
                    nl2, nl2, 2 * sqrt(nl2), nl_table_value(T->gmm, 2 * NTEX, "cutoff"), nl_table_value(T->gmm, 2 * NTEX, "K_initial"),
-                   nl_table_value(T->gmm, 2 * NTEX, "K_final"), nl_table_value(T->gmm, 2 * NTEX + 1, "cutoff"));
+                   nl_table_value(T->gmm, 2 * NTEX, "paper_K_initial"), nl_table_value(T->gmm, 2 * NTEX, "K_final"),
+                   nl_table_value(T->gmm, 2 * NTEX, "paper_K_final"), nl_table_value(T->gmm, 2 * NTEX + 1, "cutoff"));
   }
   nl_harness_report_table(r, T->orig, "The original optimised table (E_KS, E_Con over all 512 angles and 4 octaves), E_R of the "
                           "original and of the pool, and times", 5);
