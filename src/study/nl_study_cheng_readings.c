@@ -281,17 +281,19 @@ const char *nl_study_cheng_readings_report(nl_harness *r, nl_study_cheng_reading
   for (size_t q = 0; q < t->nrows; q++) {
     if (!nl_table_value(t, q, "headline")) continue;
     const char *tex = nl_table_text(t, q, "texture");
-    nl_harness_text(r, "Headline, %s: K0 %.3g (thesis %g), K_final %.3g +- %.2g (thesis %g), AIC %.4g +- %.2g (thesis %.4g; "
-                       "per sample and dimension %.3g), over %g replicates.\n", tex, nl_table_value(t, q, "K0"),
-                    nl_table_value(t, q, "paper_K_initial"), nl_table_value(t, q, "K_final"), nl_table_value(t, q, "K_final_sd"),
-                    nl_table_value(t, q, "paper_K_final"), nl_table_value(t, q, "AIC"), nl_table_value(t, q, "AIC_sd"),
-                    nl_table_value(t, q, "paper_AIC"), nl_table_value(t, q, "AIC_per_nd"), nl_table_value(t, q, "reps"));
+    int one = nl_table_value(t, q, "reps") < 2;   /* one replicate: no sd to show */
+    nl_harness_text(r, "Headline, %s: K0 %.3g (thesis %g), K_final %.3g (thesis %g), AIC %.4g (thesis %.4g; per sample and "
+                       "dimension %.3g), %s %g replicate%s.\n", tex, nl_table_value(t, q, "K0"),
+                    nl_table_value(t, q, "paper_K_initial"), nl_table_value(t, q, "K_final"),
+                    nl_table_value(t, q, "paper_K_final"), nl_table_value(t, q, "AIC"),
+                    nl_table_value(t, q, "paper_AIC"), nl_table_value(t, q, "AIC_per_nd"), one ? "from" : "mean over",
+                    nl_table_value(t, q, "reps"), one ? " (all_reps; no sd)" : "s (sd in readings.tsv)");
     char what[96];
     const char *v[][4] = {{"initial K", "paper_K_initial", "K0", "K0_sd"}, {"final K", "paper_K_final", "K_final", "K_final_sd"},
                           {"AIC", "paper_AIC", "AIC", "AIC_sd"}};
     for (int k = 0; k < 3; k++) {
       snprintf(what, sizeof what, "%s, %s", v[k][0], tex);
-      nl_harness_verdict(r, "readings.tsv", t, q, what, v[k][1], v[k][2], v[k][3], k < 2 ? "factor 1.25 2" : "rel 0.1 0.5",
+      nl_harness_verdict(r, "readings.tsv", t, q, what, v[k][1], v[k][2], one ? NULL : v[k][3], k < 2 ? "factor 1.25 2" : "rel 0.1 0.5",
                          "headline reading of readings.tsv, the thesis's cutoff as printed");
     }
     char mid[80];   /* the cutoff is a result only where K0 is the input */
@@ -299,7 +301,8 @@ const char *nl_study_cheng_readings_report(nl_harness *r, nl_study_cheng_reading
     long m = find(t, tex, mid);
     if (m >= 0) {
       snprintf(what, sizeof what, "cutoff, %s", tex);
-      nl_harness_verdict(r, "readings.tsv", t, (size_t)m, what, "paper_cutoff", "cutoff", "cutoff_sd", "factor 1.25 2",
+      nl_harness_verdict(r, "readings.tsv", t, (size_t)m, what, "paper_cutoff", "cutoff",
+                         nl_table_value(t, (size_t)m, "reps") < 2 ? NULL : "cutoff_sd", "factor 1.25 2",
                          "the cutoff giving the thesis's K0 under the headline's sample, distance and pool rule");
     }
   }
