@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Quick C5: pools, clustering and AIC selection for erosion, marble, cloud and
-# erosion with the two-level split. Checks the table's invariants, the
+# erosion with the two-level split; the readings of Tables 4.2-4.4 over pool
+# replicates (readings.tsv, ess.tsv, verdicts on the headline). Checks the table's invariants, the
 # thesis-cutoff rows (no (cos, sin) distance reaches the thesis's cutoffs, so
 # one cluster), the matched rows (the thesis's K0 exactly), the pool rule,
 # and that the pool does not depend on the number of threads.
 set -euo pipefail
+. "$(dirname "$0")/tsv.sh"
 exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
 "$exp" --quick --out "$out" --patterns "$pat" >/dev/null
@@ -16,6 +18,24 @@ pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
 "$expect" "$out/cutoff_k.tsv" rows=192 'K>=1' 'K<=100'
 "$expect" "$out/assess.tsv" rows=9 'ks_median>0' 'ks_median<1' 'ks_reject>=0' 'ks_reject<=1' 'n_held==20' \
   file:aic_path.tsv
+# readings: 3 textures x (2 samples x 2 distances x 2 pool rules x 2 cutoff rules)
+"$expect" "$out/readings.tsv" rows=48 'reps>=1' 'reps<=2' 'K0>=1' 'K_final>=K0' 'matches>=0' 'matches<=3' \
+  'cluster_samples<=input_samples' 'headline>=0' 'headline<=1'
+"$expect" "$out/ess.tsv" rows=12 'icc>=0' 'icc<=1' 'ess_kish<=rows' 'ess_kish>=runs' 'ess_tau<=rows' 'dec_sweeps>0'
+"$expect" "$out/verdicts.tsv" rows=12
+"$expect" "$out/reproduce.tsv" rows=36 'reps_drawn==4' 'below_ks>=0' 'below_ks<=1' 'below_con>=0' 'below_con<=1' 'E_ks>0' 'K>=1'
+# K0 is an input exactly on the matched rows, and then no thesis K0 stands beside it
+tsv_awk 'FNR>1 && ((v("cutoff_rule")=="matched_K0") != (n("k0_is_input")==1) ||
+  (n("k0_is_input")==1 && (v("paper_K_initial")!="n/a" || n("K0")==0)) ||
+  (n("k0_is_input")==0 && v("paper_K_initial")=="n/a")) {print "k0_is_input: " $0; bad=1} END{exit bad}' "$out/readings.tsv"
+# one headline reading, K0 a result, on every texture
+tsv_awk 'FNR>1 && n("headline")==1 {h++; r[v("reading")]=1; if (n("k0_is_input")) bad=1}
+  END{k=0; for (x in r) k++; if (h!=3 || k!=1 || bad) {print "headline rows " h ", readings " k; exit 1}}' "$out/readings.tsv"
+# all rows: the mixture fitted on every pool row; AIC per sample and dimension of the literal-cutoff fits
+# (quick, measured: -6.5 ... -1.4) on the scale the thesis's AIC needs (-2 n d x, x of order 1 to 10)
+tsv_awk 'FNR>1 && v("n_rule")=="all" && (n("input_samples")!=120 || (!n("k0_is_input") && (n("AIC_per_nd")>-0.5 || n("AIC_per_nd")<-20))) {
+  print "all-rows AIC: " $0; bad=1} END{exit bad}' "$out/readings.tsv"
+tsv_awk 'FNR>1 && v("n_rule")=="sub1000" && n("input_samples")!=100 {print "subsample: " $0; exit 1}' "$out/readings.tsv"
 # columns by name: `named` prefixes an awk program with col[NAME] = index from the header
 named() { printf 'NR==1{for(i=1;i<=NF;i++) col[$i]=i; next} %s' "$1"; }
 # drops the named columns (timings) from a table, header included
@@ -35,3 +55,5 @@ grep -q '^cluster_bytes_cloud_low1' "$out/manifest.tsv"
 cmp <(drop "$out/gmm.tsv" seconds_gmm) <(drop "$out/one/gmm.tsv" seconds_gmm)
 cmp <(drop "$out/pool_runs.tsv" seconds) <(drop "$out/one/pool_runs.tsv" seconds)
 cmp "$out/assess.tsv" "$out/one/assess.tsv"
+cmp <(drop "$out/readings.tsv" seconds) <(drop "$out/one/readings.tsv" seconds)
+cmp "$out/ess.tsv" "$out/one/ess.tsv"

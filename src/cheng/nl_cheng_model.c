@@ -123,46 +123,67 @@ static void set_status(nl_cheng_model *m, nl_cheng_model_status s, const char *w
   snprintf(m->msg, sizeof m->msg, "%.150s", what);
 }
 
-/* Input samples: n_in pool rows without replacement (ascending), encoded. */
-static double *model_inputs(nl_cheng_model *m, const nl_cheng_pool *pool, size_t samples,
-                            unsigned long seed, double **chord)
+/* k pool rows without replacement (ascending) from the stream (seed,
+ * "cheng.model.subsample", 0): equal k give equal rows; k >= n gives all. */
+static size_t *choose_rows(size_t n, size_t k, unsigned long seed)
 {
-  m->n_in = samples == 0 || samples > pool->n ? pool->n : samples;
-  m->in = nl_xmalloc((m->n_in ? m->n_in : 1) * sizeof *m->in);
-  size_t *all = nl_xmalloc((pool->n ? pool->n : 1) * sizeof *all);
-  for (size_t i = 0; i < pool->n; i++) all[i] = i;
+  size_t *in = nl_xmalloc((k ? k : 1) * sizeof *in), *all = nl_xmalloc((n ? n : 1) * sizeof *all);
+  for (size_t i = 0; i < n; i++) all[i] = i;
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, nl_seed_stream(seed, "cheng.model.subsample", 0));
-  if (m->n_in) gsl_ran_choose(rng, m->in, m->n_in, all, pool->n, sizeof *all);
+  if (k) gsl_ran_choose(rng, in, k, all, n, sizeof *all);
   gsl_rng_free(rng);
   free(all);
-  double *th = nl_xmalloc((m->n_in ? m->n_in : 1) * m->nlow * sizeof *th);
-  for (size_t i = 0; i < m->n_in; i++) memcpy(th + i * m->nlow, pool->theta + m->in[i] * m->nlow, m->nlow * sizeof *th);
-  double *x = nl_xmalloc((m->n_in ? m->n_in : 1) * m->d * sizeof *x);
-  nl_cheng_rep_encode(m->rep, th, m->n_in, m->nlow, m->mu, x);
-  *chord = nl_xmalloc((m->n_in ? m->n_in : 1) * 2 * m->nlow * sizeof **chord);
-  nl_cheng_rep_encode(NL_CHENG_REP_COSSIN, th, m->n_in, m->nlow, m->mu, *chord);
+  return in;
+}
+
+/* Rows of the pool's angles, encoded in representation rep (or raw angles
+ * when raw): n x d. */
+static double *encode_rows(const nl_cheng_model *m, const nl_cheng_pool *pool, const size_t *rows, size_t n,
+                           nl_cheng_rep rep, int raw)
+{
+  double *th = nl_xmalloc((n ? n : 1) * m->nlow * sizeof *th);
+  for (size_t i = 0; i < n; i++) memcpy(th + i * m->nlow, pool->theta + rows[i] * m->nlow, m->nlow * sizeof *th);
+  if (raw) return th;
+  double *x = nl_xmalloc((n ? n : 1) * nl_cheng_rep_dim(rep, m->nlow) * sizeof *x);
+  nl_cheng_rep_encode(rep, th, n, m->nlow, m->mu, x);
   free(th);
   return x;
 }
 
-/* Clusters the cos/sin rows at the options' cutoff (chord distances have no
- * cut, whatever the mixture's representation); sets cutoff, k0, status. */
-static nl_status model_cluster(nl_cheng_model *m, const double *chord, const nl_cheng_model_options *o,
+/* Input samples: n_in pool rows for the mixture (samples, 0 = all) and n_cl
+ * rows for the clustering (cluster_samples, 0 = the same rows), encoded. */
+static double *model_inputs(nl_cheng_model *m, const nl_cheng_pool *pool, const nl_cheng_model_options *o,
+                            unsigned long seed, double **clx)
+{
+  size_t samples = o->samples, cs = o->cluster_samples ? o->cluster_samples : samples;
+  m->n_in = samples == 0 || samples > pool->n ? pool->n : samples;
+  m->n_cl = cs == 0 || cs > pool->n ? pool->n : cs;
+  m->in = choose_rows(pool->n, m->n_in, seed);
+  m->cl = choose_rows(pool->n, m->n_cl, seed);
+  *clx = encode_rows(m, pool, m->cl, m->n_cl, NL_CHENG_REP_COSSIN, m->cluster_angles);
+  return encode_rows(m, pool, m->in, m->n_in, m->rep, 0);
+}
+
+/* Clusters the clustering rows (chords of (cos, sin), whatever the mixture's
+ * representation, or raw angles) at the options' cutoff; sets cutoff, k0,
+ * status. */
+static nl_status model_cluster(nl_cheng_model *m, const double *clx, const nl_cheng_model_options *o,
                                nl_error *err)
 {
   double t0 = nl_time_now(), *Z;
-  nl_status st = complete_linkage(chord, m->n_in, 2 * m->nlow, &Z, err);
+  size_t n = m->n_cl, dc = m->cluster_angles ? m->nlow : 2 * m->nlow;
+  nl_status st = complete_linkage(clx, n, dc, &Z, err);
   if (st) return st;
-  m->cluster_bytes = m->n_in * (m->n_in - 1) / 2 * sizeof(double) + (m->n_in - 1) * 4 * sizeof(double);
-  m->cutoff = o->cutoff >= 0 ? o->cutoff : nl_cheng_cutoff_for_k(Z, m->n_in, o->target_k);
-  int *lab = nl_xmalloc(m->n_in * sizeof *lab);
-  st = nl_cluster_fcluster_distance(Z, m->n_in, m->cutoff, lab, &m->k0, err);
+  m->cluster_bytes = n * (n - 1) / 2 * sizeof(double) + (n - 1) * 4 * sizeof(double);
+  m->cutoff = o->cutoff >= 0 ? o->cutoff : nl_cheng_cutoff_for_k(Z, n, o->target_k);
+  int *lab = nl_xmalloc(n * sizeof *lab);
+  st = nl_cluster_fcluster_distance(Z, n, m->cutoff, lab, &m->k0, err);
   free(lab);
   free(Z);
   m->seconds_cluster = nl_time_now() - t0;
   if (st) return st;
-  if (m->k0 == m->n_in) set_status(m, NL_CHENG_MODEL_ONE_PER_POINT, "the cutoff leaves one cluster per point: no mixture fitted");
+  if (m->k0 >= m->n_in) set_status(m, NL_CHENG_MODEL_ONE_PER_POINT, "the cutoff leaves one cluster per point: no mixture fitted");
   else if (m->k0 == 1) set_status(m, NL_CHENG_MODEL_ONE_CLUSTER, "the cutoff leaves one cluster: AIC path starts at K = 1");
   return NL_OK;
 }
@@ -203,6 +224,7 @@ nl_status nl_cheng_model_fit(const nl_cheng_pool *pool, const nl_cheng_model_opt
   if (check_model_options(o, err)) return NL_EINVAL;
   nl_cheng_model *m = nl_xcalloc(1, sizeof *m);
   m->rep = o->rep;
+  m->cluster_angles = o->cluster_angles;
   m->nlow = pool->nlow;
   m->d = nl_cheng_rep_dim(o->rep, pool->nlow);
   m->low = nl_xmalloc(pool->nlow * sizeof *m->low);
@@ -211,9 +233,9 @@ nl_status nl_cheng_model_fit(const nl_cheng_pool *pool, const nl_cheng_model_opt
   nl_cheng_circular_centre(pool->theta, pool->n, pool->nlow, m->mu);
   set_status(m, NL_CHENG_MODEL_OK, "ok");
   *out = m;
-  double *chord, *x = model_inputs(m, pool, o->samples, seed, &chord);
+  double *chord, *x = model_inputs(m, pool, o, seed, &chord);
   nl_status st = NL_OK;
-  if (m->n_in < 2 || (o->cutoff < 0 && o->target_k >= m->n_in)) {
+  if (m->n_in < 2 || m->n_cl < 2 || (o->cutoff < 0 && (o->target_k >= m->n_in || o->target_k >= m->n_cl))) {
     char w[128];
     snprintf(w, sizeof w, "%zu input samples: too few for a mixture (target K %zu)", m->n_in, o->target_k);
     set_status(m, NL_CHENG_MODEL_TOO_SMALL, w);
@@ -230,7 +252,7 @@ nl_status nl_cheng_model_fit(const nl_cheng_pool *pool, const nl_cheng_model_opt
 void nl_cheng_model_free(nl_cheng_model *m)
 {
   if (!m) return;
-  free(m->low); free(m->mu); free(m->in); free(m->path);
+  free(m->low); free(m->mu); free(m->in); free(m->cl); free(m->path);
   nl_gmm_free(m->gmm);
   free(m);
 }
@@ -328,15 +350,13 @@ nl_status nl_cheng_model_assess(const nl_cheng_pool *pool, const nl_cheng_model 
 nl_status nl_cheng_k_curve(const nl_cheng_pool *pool, const nl_cheng_model *m, const double *cut,
                            size_t ncut, size_t *k, nl_error *err)
 {
-  if (m->n_in < 2) return nl_fail(err, NL_EINVAL, "fewer than 2 input samples");
-  size_t n = m->n_in, nl = pool->nlow;
-  double *th = nl_xmalloc(n * nl * sizeof *th), *x = nl_xmalloc(n * 2 * nl * sizeof *x);
+  if (m->n_cl < 2) return nl_fail(err, NL_EINVAL, "fewer than 2 clustered rows");
+  size_t n = m->n_cl, dc = m->cluster_angles ? pool->nlow : 2 * pool->nlow;
+  double *x = encode_rows(m, pool, m->cl, n, NL_CHENG_REP_COSSIN, m->cluster_angles);
   double *Z = nl_xmalloc((n - 1) * 4 * sizeof *Z);
   int *lab = nl_xmalloc(n * sizeof *lab);
-  for (size_t i = 0; i < n; i++) memcpy(th + i * nl, pool->theta + m->in[i] * nl, nl * sizeof *th);
-  nl_cheng_rep_encode(NL_CHENG_REP_COSSIN, th, n, nl, m->mu, x);
-  nl_status st = nl_cluster_linkage(x, n, 2 * nl, NL_LINKAGE_COMPLETE, Z, err);
+  nl_status st = nl_cluster_linkage(x, n, dc, NL_LINKAGE_COMPLETE, Z, err);
   for (size_t q = 0; q < ncut && !st; q++) st = nl_cluster_fcluster_distance(Z, n, cut[q], lab, &k[q], err);
-  free(th); free(x); free(Z); free(lab);
+  free(x); free(Z); free(lab);
   return st;
 }

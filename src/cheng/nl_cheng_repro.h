@@ -166,6 +166,11 @@ typedef struct {
   double threshold;     /* T: AIC must fall by at least T, 0 */
   size_t k_extra;       /* path capped at K0 + k_extra, 12 */
   nl_gmm_options gmm;   /* nl_gmm_options_default, full covariance */
+  size_t cluster_samples; /* rows clustered (drawn by the same stream as the
+                             mixture's input, so equal sizes give the same rows);
+                             0: the mixture's input rows (default) */
+  int cluster_angles;   /* 0: chords of (cos, sin) (default); 1: Euclidean on the
+                           raw angles in [0, 2 pi), the thesis's own variables */
 } nl_cheng_model_options;
 
 typedef struct {
@@ -174,6 +179,9 @@ typedef struct {
   double *mu;           /* nlow reference angles */
   size_t n_in;          /* input samples used */
   size_t *in;           /* their pool rows (n_in) */
+  size_t n_cl;          /* rows clustered */
+  size_t *cl;           /* their pool rows (n_cl) */
+  int cluster_angles;   /* distance of the clustering (options) */
   double cutoff;
   size_t k0, k;         /* initial and final K */
   nl_gmm *gmm;          /* NULL if no model could be fitted */
@@ -209,9 +217,32 @@ typedef struct {
 } nl_cheng_model_check;
 nl_status nl_cheng_model_assess(const nl_cheng_pool *pool, const nl_cheng_model *m, size_t n_draw,
                                 gsl_rng *rng, nl_cheng_model_check *out, nl_error *err);
-/* Number of complete-linkage clusters of the model's input rows (cos/sin) at
- * each of ncut cutoffs: K against the cutoff. */
+/* Number of complete-linkage clusters of the model's clustered rows (in the
+ * model's clustering distance) at each of ncut cutoffs: K against the cutoff. */
 nl_status nl_cheng_k_curve(const nl_cheng_pool *pool, const nl_cheng_model *m, const double *cut,
                            size_t ncut, size_t *k, nl_error *err);
+
+/* ---- pool readings (nl_cheng_model_pool.c) ------------------------------
+ * "The last N solutions" (sec. 3.5.2) read two ways from one pool collected
+ * with keep = N x stride tail states per run: successive states (the first N
+ * after the anneal, the default pool) or states spaced `stride` sweeps apart
+ * (every stride-th state). nl_cheng_pool_thin builds that pool (a copy).
+ * nl_cheng_pool_ess, on the coordinates cos, sin of every low angle:
+ *   tau    integrated autocorrelation time (pool rows) of the within-run
+ *          series centred by the run's mean, pooled over runs and coordinates,
+ *          1 + 2 sum rho(l) up to the first lag with rho < 0.05; capped = 1
+ *          when that lag is past half the run (window-limited). Centring by
+ *          the run's mean bounds tau by the run length for a diffusing walk,
+ *          hence the two measures below;
+ *   icc    intraclass correlation: between-run variance / total variance;
+ *          ess_kish = n / (1 + (m - 1) icc) for runs of m rows (Kish's design
+ *          effect of cluster sampling);
+ *   dec    decorrelation interval in rows, diffusive extrapolation: the lag
+ *          at which the mean squared step msd(l) = l msd(1) reaches twice the
+ *          pool's total variance (where two states of one run are as far
+ *          apart as two states of different runs). */
+typedef struct { double tau, ess_tau, icc, ess_kish, msd1, var_total, dec; int capped; } nl_cheng_pool_ess_result;
+nl_cheng_pool *nl_cheng_pool_thin(const nl_cheng_pool *p, int per_run, int stride);
+void nl_cheng_pool_ess(const nl_cheng_pool *p, nl_cheng_pool_ess_result *out);
 
 #endif

@@ -2,6 +2,7 @@
  * the --set parameters, the chain original -> pool -> model, and C5's tables
  * (one texture at one low/high split per nl_study_cheng_pool_case). */
 #include "study/nl_study_cheng.h"
+#include "study/nl_study_cheng_readings.h"
 #include "stats/nl_stats.h"
 
 #include <gsl/gsl_sort.h>
@@ -261,11 +262,21 @@ void nl_study_cheng_pool_case(const nl_study_cheng *s, nl_study_cheng_pools *T, 
                               const nl_cheng_pool_options *pop, const nl_cheng_model_options *mo, int nseeds,
                               int full)
 {
-  nl_harness *r = s->r;
-  nl_cheng_pool_options po = *pop;
   nl_cheng_config c;
   nl_study_cheng_repro rp;
-  nl_cheng_pattern *pat = nl_study_cheng_repro_open(s, th, &po, &c, &rp);
+  nl_cheng_pattern *pat = nl_study_cheng_repro_open(s, th, pop, &c, &rp);
+  nl_study_cheng_pool_case_with(s, T, th, pop, mo, nseeds, full, &rp);
+  nl_study_cheng_repro_clear(&rp);
+  nl_cheng_pattern_free(pat);
+}
+
+void nl_study_cheng_pool_case_with(const nl_study_cheng *s, nl_study_cheng_pools *T, const nl_study_cheng_thesis_gmm *th,
+                                   const nl_cheng_pool_options *pop, const nl_cheng_model_options *mo, int nseeds,
+                                   int full, nl_study_cheng_repro *rpp)
+{
+  nl_harness *r = s->r;
+  nl_cheng_pool_options po = *pop;
+  nl_study_cheng_repro rp = *rpp;
   pool_rows(T, th, po.low_levels, &rp);
   char key[64];
   snprintf(key, sizeof key, "pool_bytes_%s_low%d", th->texture, po.low_levels);
@@ -280,8 +291,6 @@ void nl_study_cheng_pool_case(const nl_study_cheng *s, nl_study_cheng_pools *T, 
     nl_cheng_model_free(m);
   }
   if (full) assess_rows(r, T, th, po.low_levels, rp.pool, mo);
-  nl_study_cheng_repro_clear(&rp);
-  nl_cheng_pattern_free(pat);
 }
 
 /* ---- C6's reproductions ------------------------------------------------- */
