@@ -25,17 +25,20 @@ int main(int argc, char **argv)
   for (int k; (k = nl_opt_next(&p, &err)) != NL_OPT_END;) {
     if (k == NL_OPT_ERROR) {
       fprintf(stderr, "patterns: %s (usage: noiselab patterns DIR [--size N])\n", err.msg);
+      nl_opt_end(&p);
       return 2;
     }
     if (k == 0) {
-      if (nl_parse_long("--size", p.value[0], 8, 4096, &size, &err)) { fprintf(stderr, "patterns: %s\n", err.msg); return 2; }
+      if (nl_parse_long("--size", p.value[0], 8, 4096, &size, &err)) { fprintf(stderr, "patterns: %s\n", err.msg); nl_opt_end(&p); return 2; }
     } else if (k == 1) {
       printf("usage: noiselab patterns DIR [--size N]\nshapes:");
       for (int j = 0; nl_study_cheng_shape_names[j]; j++) printf(" %s", nl_study_cheng_shape_names[j]);
       printf("\n");
+      nl_opt_end(&p);
       return 0;
     } else if (dir) {
       fprintf(stderr, "patterns: unexpected argument '%s' (usage: noiselab patterns DIR [--size N])\n", p.value[0]);
+      nl_opt_end(&p);
       return 2;
     } else dir = p.value[0];
   }
