@@ -2,6 +2,7 @@
 # Quick C4: Table 4.1's six pairs (printed and swapped) and a weight sweep;
 # bad input gives a one-line error and exit 2.
 set -euo pipefail
+. "$(dirname "$0")/tsv.sh"   # tables by column name; refused
 exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
 "$exp" --quick --out "$out" --patterns "$pat" >/dev/null
@@ -12,11 +13,7 @@ pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
 # the KS-dominated end of the sweep has the lower E_KS and the higher E_Con
 awk -F'\t' 'NR==1{for(i=1;i<=NF;i++) col[$i]=i} NR==2{k=$col["E_ks"]; c=$col["E_con"]}
   END{if(!($col["E_ks"]<k && $col["E_con"]>c)){print "sweep ends not ordered"; exit 1}}' "$out/sweep.tsv"
-bad() {   # expect exit 2 and a single line on stderr
-  local rc=0; "$exp" --quick --out "$out/bad" "$@" 2>"$out/err.txt" >/dev/null || rc=$?
-  [ "$rc" -eq 2 ] || { echo "exit $rc for: $*"; exit 1; }
-  [ "$(wc -l <"$out/err.txt")" -eq 1 ] || { echo "not one line for: $*"; cat "$out/err.txt"; exit 1; }
-}
+bad() { refused "$exp" --quick --out "$out/bad" "$@"; }   # exit 2 and one line on stderr (tests/tsv.sh)
 bad --patterns "$out/no-such-folder"
 bad --patterns "$pat" --set w1=0 --set w2=0
 bad --patterns "$pat" --set w1=-1
@@ -24,7 +21,6 @@ bad --patterns "$pat" --set f1=0
 [ ! -e "$out/bad/table41.tsv" ]
 # Readings of Table 4.1 over all six rows (printed, swapped, mixed_a_printed):
 # permutation p in (0, 1]; the mixed reading's row (a) is the printed one's.
-. "$(dirname "$0")/tsv.sh"
 "$expect" "$out/readings.tsv" rows=3 'p_perm_ks>0' 'p_perm_ks<=1' 'rms_log_ks>0' 'r_log_ks>=-1' 'r_log_ks<=1'
 tsv_awk 'NR > 1 {a[v("reading")] = n("E_ks_a")} END {if (a["mixed_a_printed"] != a["printed"] || a["swapped"] == a["printed"]) {print "row (a) per reading"; exit 1}}' "$out/readings.tsv"
 # Grid sweep at --quick: grids 8 and 16 (64 and 256 points); E_Con per point
