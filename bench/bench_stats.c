@@ -100,18 +100,19 @@ static void bench_linkage(const double *x, nl_cluster_linkage_method m, const ch
   pid_t pid = fork();
   if (pid == 0) {
     double *Z = nl_xmalloc((N - 1) * 4 * sizeof(double));
-    double t0 = nl_time_now();
+    double t0 = nl_time_now(), c0 = nl_bench_cpu_now();
     nl_error err;
     if (nl_cluster_linkage(x, N, D, m, Z, &err)) { fprintf(stderr, "%s\n", err.msg); _exit(1); }
-    double t = nl_time_now() - t0;
-    printf("linkage  C    %-8s n=%d d=%d: %.3f s, top merge height %.10g\n", name, N, D, t, Z[4 * (N - 2) + 2]);
+    double t = nl_time_now() - t0, c = nl_bench_cpu_now() - c0;
+    printf("linkage  C     %-8s n=%d d=%d: %.3f s, %.3f s CPU, top merge height %.10g\n", name, N, D, t, c,
+           Z[4 * (N - 2) + 2]);
     fflush(stdout);
     _exit(0);
   }
   int status;
   struct rusage ru;
   wait4(pid, &status, 0, &ru);
-  printf("linkage  C    %-8s peak RSS of the process %.0f MiB\n", name, ru.ru_maxrss / 1024.0);
+  printf("linkage  C     %-8s peak RSS of the process %.0f MiB\n", name, ru.ru_maxrss / 1024.0);
 }
 
 static void bench_ks(gsl_rng *rng)

@@ -45,16 +45,35 @@ def bench_gmm(X, labels):
           f"{t / g.n_iter_:.4f} s/iteration, mean loglik {g.score(X):.10f}, converged {int(g.converged_)}")
 
 
-def linkage_child(d, method):
-    import scipy.cluster.hierarchy as sch
+def cpu_now():
+    r = resource.getrusage(resource.RUSAGE_SELF)
+    return r.ru_utime + r.ru_stime
+
+
+def linkage_child(d, method, lib):
+    """One linkage in a fresh process: wall and CPU time, peak RSS. lib is
+    scipy or fastcluster (Muellner's library, from which scipy's linkage
+    descends; Debian's python3-fastcluster, installed by scripts/noiselab setup)."""
+    if lib == "fastcluster":
+        try:
+            import fastcluster
+        except ImportError:
+            print(f"linkage  fastcluster not importable by /usr/bin/python3 (apt-get install python3-fastcluster): skipped")
+            return
+        link = fastcluster.linkage_vector if method == "single" else fastcluster.linkage
+    else:
+        import scipy.cluster.hierarchy as sch
+        link = sch.linkage
     X, _ = load(d)
     base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
-    t0 = time.perf_counter()
-    Z = sch.linkage(X, method=method)
-    t = time.perf_counter() - t0
+    t0, c0 = time.perf_counter(), cpu_now()
+    Z = link(X, method=method)
+    t, c = time.perf_counter() - t0, cpu_now() - c0
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
-    print(f"linkage  scipy {method:8s} n={X.shape[0]} d={X.shape[1]}: {t:.3f} s, top merge height {Z[-1, 2]:.10g}")
-    print(f"linkage  scipy {method:8s} peak RSS of the process {peak / 1024:.0f} MiB "
+    tag = "scipy" if lib == "scipy" else "fastc"
+    print(f"linkage  {tag} {method:8s} n={X.shape[0]} d={X.shape[1]}: {t:.3f} s, {c:.3f} s CPU, "
+          f"top merge height {Z[-1, 2]:.10g}")
+    print(f"linkage  {tag} {method:8s} peak RSS of the process {peak / 1024:.0f} MiB "
           f"({(peak - base) / 1024:.0f} MiB above the loaded data)")
 
 
@@ -90,8 +109,8 @@ def bench_fft():
 
 def main():
     if len(sys.argv) == 3 and sys.argv[1] == "--linkage-child":
-        d, method = sys.argv[2].split(":")
-        linkage_child(d, method)
+        d, method, lib = sys.argv[2].split(":")
+        linkage_child(d, method, lib)
         return
     args = sys.argv[1:]
     only = None
@@ -110,8 +129,10 @@ def main():
     if only == "gmm":
         return
     for method in ("complete", "average", "single"):
-        sys.stdout.flush()
-        subprocess.run([sys.executable, os.path.abspath(__file__), "--linkage-child", f"{d}:{method}"], check=True)
+        for lib in ("scipy", "fastcluster"):
+            sys.stdout.flush()
+            subprocess.run([sys.executable, os.path.abspath(__file__), "--linkage-child", f"{d}:{method}:{lib}"],
+                           check=True)
 
 
 if __name__ == "__main__":
