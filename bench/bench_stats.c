@@ -9,14 +9,24 @@
  * incremental statistic (moves per second). It writes the data and labels to
  * DIR, then runs bench/bench_stats.py on them when /usr/bin/python3 can import
  * sklearn, so the Python side starts EM from the same labels.
+ * FFT: the 2D transform of a 512 x 512 real image, ms of CPU time per call
+ * (best of three rounds of >= 0.3 s), the old GSL complex-strided transform,
+ * nl_spectrum_fft2 (full spectrum) and nl_spectrum_rfft2 with a plan,
+ * beside numpy's rfft2 and fft2 in the same run.
  * OpenBLAS is pinned to one thread on both sides (OPENBLAS_NUM_THREADS=1; this
  * program re-executes itself with it set).
+ *
+ *   build/bench/bench_stats [--only fft|linkage|gmm|ks] [DIR]   one part only (Python side too)
  */
+#define _GNU_SOURCE   /* sched_getaffinity in nl_bench.h */
+#include "nl_bench.h"
+#include "spectrum/nl_spectrum.h"
 #include "stats/nl_cluster.h"
 #include "stats/nl_gmm.h"
 #include "stats/nl_stats.h"
 #include "table/nl_table.h"
 
+#include <gsl/gsl_fft_complex.h>
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
 #include <math.h>
@@ -90,18 +100,19 @@ static void bench_linkage(const double *x, nl_cluster_linkage_method m, const ch
   pid_t pid = fork();
   if (pid == 0) {
     double *Z = nl_xmalloc((N - 1) * 4 * sizeof(double));
-    double t0 = nl_time_now();
+    double t0 = nl_time_now(), c0 = nl_bench_cpu_now();
     nl_error err;
     if (nl_cluster_linkage(x, N, D, m, Z, &err)) { fprintf(stderr, "%s\n", err.msg); _exit(1); }
-    double t = nl_time_now() - t0;
-    printf("linkage  C    %-8s n=%d d=%d: %.3f s, top merge height %.10g\n", name, N, D, t, Z[4 * (N - 2) + 2]);
+    double t = nl_time_now() - t0, c = nl_bench_cpu_now() - c0;
+    printf("linkage  C     %-8s n=%d d=%d: %.3f s, %.3f s CPU, top merge height %.10g\n", name, N, D, t, c,
+           Z[4 * (N - 2) + 2]);
     fflush(stdout);
     _exit(0);
   }
   int status;
   struct rusage ru;
   wait4(pid, &status, 0, &ru);
-  printf("linkage  C    %-8s peak RSS of the process %.0f MiB\n", name, ru.ru_maxrss / 1024.0);
+  printf("linkage  C     %-8s peak RSS of the process %.0f MiB\n", name, ru.ru_maxrss / 1024.0);
 }
 
 static void bench_ks(gsl_rng *rng)
@@ -154,17 +165,82 @@ static void bench_ks(gsl_rng *rng)
   nl_stats_ks_incr_free(s);
 }
 
-static void run_python(const char *dir)
+
+/* ---- FFT ---------------------------------------------------------------- */
+
+enum { FW = 512 };
+
+/* The transform nl_spectrum_fft2 was before the real-input path: GSL's
+ * complex transform of every row, then of every column in place at a
+ * stride of w complex. Kept here as the "before" of the comparison. */
+static void fft2_gsl_strided(const double *img, double *F)
 {
-  if (system("/usr/bin/python3 -c 'import sklearn' >/dev/null 2>&1") != 0) {
-    printf("python   scikit-learn not importable by /usr/bin/python3: Python side skipped\n");
+  for (size_t k = 0; k < (size_t)FW * FW; k++) { F[2 * k] = img[k]; F[2 * k + 1] = 0; }
+  gsl_fft_complex_wavetable *wt = gsl_fft_complex_wavetable_alloc(FW);
+  gsl_fft_complex_workspace *ws = gsl_fft_complex_workspace_alloc(FW);
+  for (int k = 0; k < FW; k++) gsl_fft_complex_transform(F + 2 * (size_t)FW * k, 1, FW, wt, ws, gsl_fft_forward);
+  for (int k = 0; k < FW; k++) gsl_fft_complex_transform(F + 2 * k, FW, FW, wt, ws, gsl_fft_forward);
+  gsl_fft_complex_workspace_free(ws);
+  gsl_fft_complex_wavetable_free(wt);
+}
+
+typedef struct { const double *img; double *out; nl_spectrum_fft2_plan *plan; int which; } fft_ctx;
+
+static void fft_once(fft_ctx *c)
+{
+  if (c->which == 0) fft2_gsl_strided(c->img, c->out);
+  else if (c->which == 1) nl_spectrum_fft2(c->img, FW, FW, c->out);
+  else nl_spectrum_rfft2(c->plan, c->img, c->out);
+}
+
+/* Best of three rounds of at least 0.3 s: CPU ms and wall ms per call. */
+static void fft_time(fft_ctx *c, double *cpu_ms, double *wall_ms)
+{
+  *cpu_ms = *wall_ms = INFINITY;
+  for (int rep = 0; rep < 3; rep++) {
+    int iters = 0;
+    double t0 = nl_time_now(), c0 = nl_bench_cpu_now(), t;
+    do { fft_once(c); iters++; t = nl_time_now() - t0; } while (t < 0.3);
+    double cm = (nl_bench_cpu_now() - c0) / iters * 1e3, wm = t / iters * 1e3;
+    if (cm < *cpu_ms) { *cpu_ms = cm; *wall_ms = wm; }
+  }
+}
+
+static void bench_fft(gsl_rng *rng)
+{
+  size_t n = (size_t)FW * FW;
+  double *img = nl_xmalloc(n * sizeof *img), *F = nl_xmalloc(2 * n * sizeof *F), *G = nl_xmalloc(2 * n * sizeof *G);
+  for (size_t k = 0; k < n; k++) img[k] = gsl_ran_gaussian(rng, 1.0);
+  nl_spectrum_fft2_plan *plan = nl_spectrum_fft2_plan_alloc(FW, FW);
+  const char *names[3] = {"gsl complex, strided columns (before)", "nl_spectrum_fft2 (full spectrum)",
+                          "nl_spectrum_rfft2 (half spectrum, plan)"};
+  for (int which = 0; which < 3; which++) {
+    fft_ctx c = {img, which == 0 ? F : G, plan, which};
+    double cm, wm;
+    fft_time(&c, &cm, &wm);
+    printf("fft2     C    %dx%d %-40s %7.3f ms CPU/call (%.3f ms wall)\n", FW, FW, names[which], cm, wm);
+  }
+  /* agreement: the full spectrum against GSL's, relative to the largest |F| */
+  nl_spectrum_fft2(img, FW, FW, G);
+  double worst = 0, big = 0;
+  for (size_t k = 0; k < 2 * n; k++) { worst = fmax(worst, fabs(F[k] - G[k])); big = fmax(big, fabs(F[k])); }
+  printf("fft2     C    %dx%d largest |nl_spectrum_fft2 - GSL| %.3g (%.3g of max |F|)\n", FW, FW, worst, worst / big);
+  nl_spectrum_fft2_plan_free(plan);
+  free(img); free(F); free(G);
+}
+
+static void run_python(const char *dir, const char *only)
+{
+  if (system("/usr/bin/python3 -c 'import numpy' >/dev/null 2>&1") != 0) {
+    printf("python   numpy not importable by /usr/bin/python3: Python side skipped\n");
     return;
   }
   const char *candidates[] = {"bench/bench_stats.py", "../bench/bench_stats.py", "../../bench/bench_stats.py"};
   for (int i = 0; i < 3; i++) {
     if (access(candidates[i], R_OK) != 0) continue;
     char cmd[1024];
-    snprintf(cmd, sizeof cmd, "OPENBLAS_NUM_THREADS=1 /usr/bin/python3 %s %s", candidates[i], dir);
+    snprintf(cmd, sizeof cmd, "OPENBLAS_NUM_THREADS=1 /usr/bin/python3 %s %s%s %s", candidates[i],
+             only ? "--only " : "", only ? only : "", dir);
     fflush(stdout);
     if (system(cmd) != 0) printf("python   %s failed\n", candidates[i]);
     return;
@@ -180,12 +256,25 @@ int main(int argc, char **argv)
     setenv("OPENBLAS_NUM_THREADS", "1", 1);
     execv("/proc/self/exe", argv);
   }
-  const char *dir = argc > 1 ? argv[1] : "/tmp/noiselab_bench_stats";
+  const char *only = NULL;
+  int a = 1;
+  if (argc > 2 && strcmp(argv[1], "--only") == 0) { only = argv[2]; a = 3; }
+  const char *dir = argc > a ? argv[a] : "/tmp/noiselab_bench_stats";
   mkdir(dir, 0755);
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, 2024);
-  printf("bench_stats: OPENBLAS_NUM_THREADS=%s, data in %s\n", getenv("OPENBLAS_NUM_THREADS"), dir);
-  bench_ks(rng);
+  char pin[128];
+  printf("bench_stats: OPENBLAS_NUM_THREADS=%s, data in %s, %s\n", getenv("OPENBLAS_NUM_THREADS"), dir,
+         nl_bench_pin(pin, sizeof pin));
+  nl_bench_report(stdout, "start");
+  if (!only || !strcmp(only, "ks")) bench_ks(rng);
+  if (!only || !strcmp(only, "fft")) bench_fft(rng);
+  if (only && strcmp(only, "linkage") && strcmp(only, "gmm")) {
+    run_python(dir, only);
+    nl_bench_report(stdout, "end");
+    gsl_rng_free(rng);
+    return 0;
+  }
   double *x = make_data(rng);
   /* k-means labels from our k-means++ (seed 0), shared with the Python side */
   nl_gmm_options o;
@@ -210,10 +299,14 @@ int main(int argc, char **argv)
   nl_gmm_free(g);
   save(dir, "X.tsv", N, D, x);
   save(dir, "labels.tsv", N, 1, lab);
-  bench_gmm(x, labels);
-  bench_linkage(x, NL_LINKAGE_COMPLETE, "complete");
-  bench_linkage(x, NL_LINKAGE_SINGLE, "single");
-  run_python(dir);
+  if (!only || !strcmp(only, "gmm")) bench_gmm(x, labels);
+  if (!only || !strcmp(only, "linkage")) {
+    bench_linkage(x, NL_LINKAGE_COMPLETE, "complete");
+    bench_linkage(x, NL_LINKAGE_AVERAGE, "average");
+    bench_linkage(x, NL_LINKAGE_SINGLE, "single");
+  }
+  run_python(dir, only);
+  nl_bench_report(stdout, "end");
   free(x); free(labels); free(lab);
   gsl_rng_free(rng);
   return 0;

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Python side of bench/bench_stats.c: scikit-learn and scipy on the same data.
 
-    OPENBLAS_NUM_THREADS=1 /usr/bin/python3 bench/bench_stats.py DIR
+    OPENBLAS_NUM_THREADS=1 /usr/bin/python3 bench/bench_stats.py [--only fft|linkage|gmm|ks] DIR
 
 DIR holds X.tsv (10,000 x 81) and labels.tsv written by build/bench/bench_stats.
 EM starts from those labels through sklearn's own _initialize, as the C side
@@ -25,7 +25,11 @@ def load(d):
 
 
 def bench_gmm(X, labels):
-    from sklearn.mixture import GaussianMixture
+    try:
+        from sklearn.mixture import GaussianMixture
+    except ImportError:
+        print("gmm_em   sklearn not importable by /usr/bin/python3: skipped")
+        return
 
     class FromLabels(GaussianMixture):
         def _initialize_parameters(self, X, random_state):
@@ -41,16 +45,35 @@ def bench_gmm(X, labels):
           f"{t / g.n_iter_:.4f} s/iteration, mean loglik {g.score(X):.10f}, converged {int(g.converged_)}")
 
 
-def linkage_child(d, method):
-    import scipy.cluster.hierarchy as sch
+def cpu_now():
+    r = resource.getrusage(resource.RUSAGE_SELF)
+    return r.ru_utime + r.ru_stime
+
+
+def linkage_child(d, method, lib):
+    """One linkage in a fresh process: wall and CPU time, peak RSS. lib is
+    scipy or fastcluster (Muellner's library, from which scipy's linkage
+    descends; Debian's python3-fastcluster, installed by scripts/noiselab setup)."""
+    if lib == "fastcluster":
+        try:
+            import fastcluster
+        except ImportError:
+            print(f"linkage  fastcluster not importable by /usr/bin/python3 (apt-get install python3-fastcluster): skipped")
+            return
+        link = fastcluster.linkage_vector if method == "single" else fastcluster.linkage
+    else:
+        import scipy.cluster.hierarchy as sch
+        link = sch.linkage
     X, _ = load(d)
     base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
-    t0 = time.perf_counter()
-    Z = sch.linkage(X, method=method)
-    t = time.perf_counter() - t0
+    t0, c0 = time.perf_counter(), cpu_now()
+    Z = link(X, method=method)
+    t, c = time.perf_counter() - t0, cpu_now() - c0
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
-    print(f"linkage  scipy {method:8s} n={X.shape[0]} d={X.shape[1]}: {t:.3f} s, top merge height {Z[-1, 2]:.10g}")
-    print(f"linkage  scipy {method:8s} peak RSS of the process {peak / 1024:.0f} MiB "
+    tag = "scipy" if lib == "scipy" else "fastc"
+    print(f"linkage  {tag} {method:8s} n={X.shape[0]} d={X.shape[1]}: {t:.3f} s, {c:.3f} s CPU, "
+          f"top merge height {Z[-1, 2]:.10g}")
+    print(f"linkage  {tag} {method:8s} peak RSS of the process {peak / 1024:.0f} MiB "
           f"({(peak - base) / 1024:.0f} MiB above the loaded data)")
 
 
@@ -68,18 +91,48 @@ def bench_ks():
     print(f"ks       scipy n=512 kstest exact p: {t * 1e6:.1f} us/call (last D={r.statistic:.6f} p={r.pvalue:.6f})")
 
 
+def bench_fft():
+    """numpy's rfft2 and fft2 of a 512 x 512 real image: ms of CPU time per
+    call, best of three rounds of >= 0.3 s (as the C side times nl_spectrum)."""
+    x = np.random.default_rng(0).standard_normal((512, 512))
+    for name, f in (("numpy rfft2 (half spectrum)", np.fft.rfft2), ("numpy fft2 (full spectrum)", np.fft.fft2)):
+        best = (float("inf"), 0.0)
+        for _ in range(3):
+            n, c0, w0 = 0, time.process_time(), time.perf_counter()
+            while time.perf_counter() - w0 < 0.3:
+                f(x)
+                n += 1
+            c, w = (time.process_time() - c0) / n * 1e3, (time.perf_counter() - w0) / n * 1e3
+            best = min(best, (c, w))
+        print(f"fft2     py   512x512 {name:40s} {best[0]:7.3f} ms CPU/call ({best[1]:.3f} ms wall)")
+
+
 def main():
     if len(sys.argv) == 3 and sys.argv[1] == "--linkage-child":
-        d, method = sys.argv[2].split(":")
-        linkage_child(d, method)
+        d, method, lib = sys.argv[2].split(":")
+        linkage_child(d, method, lib)
         return
-    d = sys.argv[1] if len(sys.argv) > 1 else "/tmp/noiselab_bench_stats"
-    bench_ks()
+    args = sys.argv[1:]
+    only = None
+    if len(args) >= 2 and args[0] == "--only":
+        only, args = args[1], args[2:]
+    d = args[0] if args else "/tmp/noiselab_bench_stats"
+    if only in (None, "ks"):
+        bench_ks()
+    if only in (None, "fft"):
+        bench_fft()
+    if only not in (None, "gmm", "linkage"):
+        return
     X, labels = load(d)
-    bench_gmm(X, labels)
-    for method in ("complete", "single"):
-        sys.stdout.flush()
-        subprocess.run([sys.executable, os.path.abspath(__file__), "--linkage-child", f"{d}:{method}"], check=True)
+    if only in (None, "gmm"):
+        bench_gmm(X, labels)
+    if only == "gmm":
+        return
+    for method in ("complete", "average", "single"):
+        for lib in ("scipy", "fastcluster"):
+            sys.stdout.flush()
+            subprocess.run([sys.executable, os.path.abspath(__file__), "--linkage-child", f"{d}:{method}:{lib}"],
+                           check=True)
 
 
 if __name__ == "__main__":

@@ -32,6 +32,19 @@
 
 #include "base/nl_base.h"
 
+/* A plan for w x h real images: twiddles and buffers allocated once per
+ * size, for transforming many images (GSL style: _alloc, use, _free).
+ * nl_spectrum_rfft2 writes the half spectrum, numpy's rfft2 layout:
+ * H[2*(v*(w/2+1) + u) + {0,1}] = F(u, v) for u = 0..w/2 (the rest is
+ * F(u, v) = conj F(w-u, h-v)). Power-of-two sides take a real-input
+ * radix-4 path (rows in pairs as one complex sequence, then only the
+ * w/2+1 columns, gathered a block at a time); other sizes GSL's mixed-radix
+ * complex transform, whose bits nl_spectrum_fft2 keeps for them. A plan is
+ * not shared between threads (it holds work buffers). */
+typedef struct nl_spectrum_fft2_plan nl_spectrum_fft2_plan;
+nl_spectrum_fft2_plan *nl_spectrum_fft2_plan_alloc(int w, int h);
+void nl_spectrum_fft2_plan_free(nl_spectrum_fft2_plan *p);
+void nl_spectrum_rfft2(nl_spectrum_fft2_plan *p, const double *img, double *H);
 void nl_spectrum_fft2(const double *img, int w, int h, double *F);
 void nl_spectrum_fft2_inverse(const double *F, int w, int h, double *img);
 void nl_spectrum_power2(const double *img, int w, int h, double *P);
