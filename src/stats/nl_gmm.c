@@ -94,24 +94,63 @@ static size_t cov_size(const nl_gmm *g)
   return g->covariance == NL_GMM_FULL ? g->d * g->d : g->d;
 }
 
-/* K d^2 arrays of a model fitted along an AIC path: several MB each, freed
- * (and given back to the system) when the path ends, so every path touches
- * fresh pages. On 2 MB pages (transparent huge pages, where the system has
- * them) a page fault serves 512 times as much memory; the time of a quick
- * C5 run was a third in 4 KB page faults. */
+/* K d^2 arrays (covariances, factors, inverses): several MB each, and a
+ * C5 run fits about a hundred AIC paths. Fresh memory for each path made a
+ * third of a quick C5 run 4 KB page faults and page zeroing, so the arrays
+ * are (a) advised onto 2 MB pages (transparent huge pages, where the system
+ * has them: one fault per 512 pages) and (b) kept after nl_gmm_free in a
+ * small per-thread cache (at most CACHE_SLOTS arrays, CACHE_MAX bytes) for
+ * the next model of the thread. No value is ever read before it is written,
+ * so the results do not depend on which memory a model gets. A header in
+ * front of each array keeps its size. */
 #define HUGE_PAGE ((size_t)2 << 20)
+#define HEADER 64
+#define CACHE_SLOTS 8
+#define CACHE_MAX ((size_t)1 << 30)
 
-static double *big_alloc(size_t count)
+typedef struct { void *base; size_t bytes; } cached;
+static _Thread_local cached cache[CACHE_SLOTS];
+static _Thread_local size_t cache_total;
+
+static double *big_alloc(size_t count, int zero)
 {
-  size_t bytes = count * sizeof(double);
-  if (bytes < 2 * HUGE_PAGE) return nl_xmalloc(bytes ? bytes : 1);
-  void *p = NULL;
-  bytes = (bytes + HUGE_PAGE - 1) / HUGE_PAGE * HUGE_PAGE;
-  if (posix_memalign(&p, HUGE_PAGE, bytes)) return nl_xmalloc(count * sizeof(double));
+  size_t bytes = HEADER + count * sizeof(double);
+  void *base = NULL;
+  if (bytes < 2 * HUGE_PAGE) {
+    base = zero ? nl_xcalloc(1, bytes) : nl_xmalloc(bytes);
+  } else {
+    bytes = (bytes + HUGE_PAGE - 1) / HUGE_PAGE * HUGE_PAGE;
+    int best = -1;   /* the smallest cached array that is large enough */
+    for (int q = 0; q < CACHE_SLOTS; q++)
+      if (cache[q].base && cache[q].bytes >= bytes && (best < 0 || cache[q].bytes < cache[best].bytes)) best = q;
+    if (best >= 0) {
+      base = cache[best].base;
+      bytes = cache[best].bytes;
+      cache_total -= bytes;
+      cache[best].base = NULL;
+      if (zero) memset((char *)base + HEADER, 0, count * sizeof(double));
+    } else {
+      if (posix_memalign(&base, HUGE_PAGE, bytes)) base = NULL;
+      if (!base) base = nl_xmalloc(bytes);
 #ifdef MADV_HUGEPAGE
-  madvise(p, bytes, MADV_HUGEPAGE);   /* advice only: ignored where unsupported */
+      else madvise(base, bytes, MADV_HUGEPAGE);   /* advice only: ignored where unsupported */
 #endif
-  return p;
+      if (zero) memset((char *)base + HEADER, 0, count * sizeof(double));
+    }
+  }
+  *(size_t *)base = bytes;
+  return (double *)((char *)base + HEADER);
+}
+
+static void big_free(double *p)
+{
+  if (!p) return;
+  void *base = (char *)p - HEADER;
+  size_t bytes = *(size_t *)base;
+  if (bytes >= 2 * HUGE_PAGE && cache_total + bytes <= CACHE_MAX)
+    for (int q = 0; q < CACHE_SLOTS; q++)
+      if (!cache[q].base) { cache[q] = (cached){base, bytes}; cache_total += bytes; return; }
+  free(base);
 }
 
 /* Room for kcap components; zeroed only when zero (a fit writes every
@@ -123,12 +162,12 @@ static nl_gmm *gmm_new(size_t k, size_t kcap, size_t d, nl_gmm_covariance covari
   g->d = d;
   g->covariance = covariance;
   size_t cs = cov_size(g);
-#define GET(m) (zero ? nl_xcalloc((m), sizeof(double)) : big_alloc(m))
+#define GET(m) (zero ? nl_xcalloc((m), sizeof(double)) : nl_xmalloc((m) * sizeof(double)))
   g->weights = GET(kcap);
   g->means = GET(kcap * d);
-  g->covs = GET(kcap * cs);
-  g->chol = GET(kcap * cs);
-  g->prec = covariance == NL_GMM_FULL ? GET(kcap * d * d) : NULL;
+  g->covs = big_alloc(kcap * cs, zero);
+  g->chol = big_alloc(kcap * cs, zero);
+  g->prec = covariance == NL_GMM_FULL ? big_alloc(kcap * d * d, zero) : NULL;
 #undef GET
   g->nparams = nl_gmm_nparams(k, d, covariance);
   return g;
@@ -160,7 +199,8 @@ nl_status nl_gmm_check_size(size_t n, size_t d, size_t k, nl_gmm_covariance cova
 void nl_gmm_free(nl_gmm *g)
 {
   if (!g) return;
-  free(g->weights); free(g->means); free(g->covs); free(g->chol); free(g->prec);
+  free(g->weights); free(g->means);
+  big_free(g->covs); big_free(g->chol); big_free(g->prec);
   free(g);
 }
 
