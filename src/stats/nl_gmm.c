@@ -1,8 +1,10 @@
 /* nl_gmm.c - EM for Gaussian mixtures (scikit-learn 1.2's GaussianMixture,
  * sklearn/mixture/_gaussian_mixture.py, on level-3 BLAS). */
+#define _GNU_SOURCE   /* RTLD_DEFAULT */
 #include "stats/nl_gmm.h"
 #include "stats/nl_cluster.h"
 
+#include <dlfcn.h>
 #include <float.h>
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_errno.h>
@@ -11,10 +13,65 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 
 /* Points per block in the E- and M-steps: a 1024 x d block (d = 81: 660 KB)
  * stays in L2 while dtrsm/dsyrk work on it. */
 #define BLOCK 1024
+
+/* ---- OpenBLAS threads ----------------------------------------------------- */
+
+/* EM's BLAS calls work on one component's block at a time: at most 1024
+ * rows by d columns against a d x d factor. Below 2^26 multiply-adds per
+ * call OpenBLAS's second thread mostly waits (sched_yield was a third of
+ * C5's quick run), so such fits run with one BLAS thread. OpenBLAS splits
+ * its level-3 work by rows and columns of the result, not along the sums, so
+ * the values do not depend on it (measured on C5's tables). OpenBLAS's own
+ * functions are looked up at run time: the library builds without it. */
+#define BLAS_ONE_THREAD_WORK (1.0 * (1 << 26))
+
+static int blas_threads_limit(size_t n, size_t d)
+{
+  double rows = n < BLOCK ? (double)n : BLOCK;
+  if (rows * (double)d * (double)d >= BLAS_ONE_THREAD_WORK) return 0;
+  int (*get)(void) = (int (*)(void))dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
+  void (*set)(int) = (void (*)(int))dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
+  if (!get || !set) return 0;
+  int was = get();
+  if (was > 1) set(1);
+  return was > 1 ? was : 0;
+}
+
+static void blas_threads_restore(int was)
+{
+  void (*set)(int) = (void (*)(int))dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
+  if (was > 1 && set) set(was);
+}
+
+/* Buffers of one fit (and of a whole AIC path), allocated once: rows per
+ * block nb = min(n, BLOCK), components at most kcap. */
+typedef struct {
+  size_t nb, kcap;
+  double *R;      /* n x kcap responsibilities */
+  double *y;      /* nb x d: E-step block */
+  double *z;      /* nb x d: M-step block (full covariances) */
+  double *rmax;   /* kcap */
+} workspace;
+
+static void ws_init(workspace *w, size_t n, size_t d, size_t kcap)
+{
+  w->nb = n < BLOCK ? n : BLOCK;
+  w->kcap = kcap;
+  w->R = nl_xmalloc(n * kcap * sizeof(double));
+  w->y = nl_xmalloc(w->nb * d * sizeof(double));
+  w->z = nl_xmalloc(w->nb * d * sizeof(double));
+  w->rmax = nl_xmalloc(kcap * sizeof(double));
+}
+
+static void ws_free(workspace *w)
+{
+  free(w->R); free(w->y); free(w->z); free(w->rmax);
+}
 
 void nl_gmm_options_default(nl_gmm_options *o)
 {
@@ -37,19 +94,88 @@ static size_t cov_size(const nl_gmm *g)
   return g->covariance == NL_GMM_FULL ? g->d * g->d : g->d;
 }
 
-nl_gmm *nl_gmm_alloc(size_t k, size_t d, nl_gmm_covariance covariance)
+/* K d^2 arrays (covariances, factors, inverses): several MB each, and a
+ * C5 run fits about a hundred AIC paths. Fresh memory for each path made a
+ * third of a quick C5 run 4 KB page faults and page zeroing, so the arrays
+ * are (a) advised onto 2 MB pages (transparent huge pages, where the system
+ * has them: one fault per 512 pages) and (b) kept after nl_gmm_free in a
+ * small per-thread cache (at most CACHE_SLOTS arrays, CACHE_MAX bytes) for
+ * the next model of the thread. No value is ever read before it is written,
+ * so the results do not depend on which memory a model gets. A header in
+ * front of each array keeps its size. */
+#define HUGE_PAGE ((size_t)2 << 20)
+#define HEADER 64
+#define CACHE_SLOTS 8
+#define CACHE_MAX ((size_t)1 << 30)
+
+typedef struct { void *base; size_t bytes; } cached;
+static _Thread_local cached cache[CACHE_SLOTS];
+static _Thread_local size_t cache_total;
+
+static double *big_alloc(size_t count, int zero)
+{
+  size_t bytes = HEADER + count * sizeof(double);
+  void *base = NULL;
+  if (bytes < 2 * HUGE_PAGE) {
+    base = zero ? nl_xcalloc(1, bytes) : nl_xmalloc(bytes);
+  } else {
+    bytes = (bytes + HUGE_PAGE - 1) / HUGE_PAGE * HUGE_PAGE;
+    int best = -1;   /* the smallest cached array that is large enough */
+    for (int q = 0; q < CACHE_SLOTS; q++)
+      if (cache[q].base && cache[q].bytes >= bytes && (best < 0 || cache[q].bytes < cache[best].bytes)) best = q;
+    if (best >= 0) {
+      base = cache[best].base;
+      bytes = cache[best].bytes;
+      cache_total -= bytes;
+      cache[best].base = NULL;
+      if (zero) memset((char *)base + HEADER, 0, count * sizeof(double));
+    } else {
+      if (posix_memalign(&base, HUGE_PAGE, bytes)) base = NULL;
+      if (!base) base = nl_xmalloc(bytes);
+#ifdef MADV_HUGEPAGE
+      else madvise(base, bytes, MADV_HUGEPAGE);   /* advice only: ignored where unsupported */
+#endif
+      if (zero) memset((char *)base + HEADER, 0, count * sizeof(double));
+    }
+  }
+  *(size_t *)base = bytes;
+  return (double *)((char *)base + HEADER);
+}
+
+static void big_free(double *p)
+{
+  if (!p) return;
+  void *base = (char *)p - HEADER;
+  size_t bytes = *(size_t *)base;
+  if (bytes >= 2 * HUGE_PAGE && cache_total + bytes <= CACHE_MAX)
+    for (int q = 0; q < CACHE_SLOTS; q++)
+      if (!cache[q].base) { cache[q] = (cached){base, bytes}; cache_total += bytes; return; }
+  free(base);
+}
+
+/* Room for kcap components; zeroed only when zero (a fit writes every
+ * entry, and untouched pages of unzeroed memory cost nothing). */
+static nl_gmm *gmm_new(size_t k, size_t kcap, size_t d, nl_gmm_covariance covariance, int zero)
 {
   nl_gmm *g = nl_xcalloc(1, sizeof *g);
   g->k = k;
   g->d = d;
   g->covariance = covariance;
-  g->weights = nl_xcalloc(k, sizeof(double));
-  g->means = nl_xcalloc(k * d, sizeof(double));
-  g->covs = nl_xcalloc(k * cov_size(g), sizeof(double));
-  g->chol = nl_xcalloc(k * cov_size(g), sizeof(double));
-  g->prec = covariance == NL_GMM_FULL ? nl_xcalloc(k * d * d, sizeof(double)) : NULL;
+  size_t cs = cov_size(g);
+#define GET(m) (zero ? nl_xcalloc((m), sizeof(double)) : nl_xmalloc((m) * sizeof(double)))
+  g->weights = GET(kcap);
+  g->means = GET(kcap * d);
+  g->covs = big_alloc(kcap * cs, zero);
+  g->chol = big_alloc(kcap * cs, zero);
+  g->prec = covariance == NL_GMM_FULL ? big_alloc(kcap * d * d, zero) : NULL;
+#undef GET
   g->nparams = nl_gmm_nparams(k, d, covariance);
   return g;
+}
+
+nl_gmm *nl_gmm_alloc(size_t k, size_t d, nl_gmm_covariance covariance)
+{
+  return gmm_new(k, k, d, covariance, 1);
 }
 
 double nl_gmm_bytes(size_t n, size_t d, size_t k, nl_gmm_covariance covariance)
@@ -73,7 +199,8 @@ nl_status nl_gmm_check_size(size_t n, size_t d, size_t k, nl_gmm_covariance cova
 void nl_gmm_free(nl_gmm *g)
 {
   if (!g) return;
-  free(g->weights); free(g->means); free(g->covs); free(g->chol); free(g->prec);
+  free(g->weights); free(g->means);
+  big_free(g->covs); big_free(g->chol); big_free(g->prec);
   free(g);
 }
 
@@ -128,11 +255,12 @@ static double row_lse(double *row, size_t K, int resp)
 
 /* Sum over rows of log p(x_i). R (n x K, may be NULL) gets responsibilities,
  * logp (may be NULL) each log p(x_i). */
-static double e_step(const nl_gmm *g, const double *x, size_t n, double *R, double *logp)
+static double e_step(const nl_gmm *g, const double *x, size_t n, double *R, double *logp,
+                     double *ybuf)
 {
-  size_t K = g->k, d = g->d;
-  double *y = nl_xmalloc(BLOCK * d * sizeof(double));
-  double *lpbuf = R ? NULL : nl_xmalloc(BLOCK * K * sizeof(double));
+  size_t K = g->k, d = g->d, nb0 = n < BLOCK ? n : BLOCK;
+  double *y = ybuf ? ybuf : nl_xmalloc(nb0 * d * sizeof(double));
+  double *lpbuf = R ? NULL : nl_xmalloc(nb0 * K * sizeof(double));
   double total = 0.0;
   for (size_t i0 = 0; i0 < n; i0 += BLOCK) {
     size_t nb = n - i0 < BLOCK ? n - i0 : BLOCK;
@@ -144,7 +272,7 @@ static double e_step(const nl_gmm *g, const double *x, size_t n, double *R, doub
       total += l;
     }
   }
-  free(y);
+  if (!ybuf) free(y);
   free(lpbuf);
   return total;
 }
@@ -160,12 +288,14 @@ static double e_step(const nl_gmm *g, const double *x, size_t n, double *R, doub
 #define SKIP 1e-20
 
 /* Sigma_k (lower triangle) = sum_i r_ik (x_i - mu)(x_i - mu)^T, by dsyrk on
- * blocks of sqrt(r_ik)(x_i - mu), rows with r_ik < rmin left out. */
+ * blocks of sqrt(r_ik)(x_i - mu), rows with r_ik < rmin left out. The first
+ * block's dsyrk has beta = 0 (it overwrites the triangle: 0 + s = s, the same
+ * value as zero-filling first), so S is not zero-filled; zbl = rows of z. */
 static void scatter_full(const double *x, size_t n, size_t d, const double *R, size_t K,
-                         size_t k, const double *mu, double rmin, double *z, double *S)
+                         size_t k, const double *mu, double rmin, double *z, size_t zbl, double *S)
 {
   gsl_matrix_view C = gsl_matrix_view_array(S, d, d);
-  gsl_matrix_set_zero(&C.matrix);
+  double beta = 0.0;
   size_t nb = 0;
   for (size_t i = 0; i <= n; i++) {
     if (i < n && R[i * K + k] > rmin) {
@@ -173,12 +303,15 @@ static void scatter_full(const double *x, size_t n, size_t d, const double *R, s
       for (size_t j = 0; j < d; j++) z[nb * d + j] = s * (x[i * d + j] - mu[j]);
       nb++;
     }
-    if (nb > 0 && (nb == BLOCK || i == n)) {
+    if (nb > 0 && (nb == zbl || i == n)) {
       gsl_matrix_view Z = gsl_matrix_view_array(z, nb, d);
-      gsl_blas_dsyrk(CblasLower, CblasTrans, 1.0, &Z.matrix, 1.0, &C.matrix);
+      gsl_blas_dsyrk(CblasLower, CblasTrans, 1.0, &Z.matrix, beta, &C.matrix);
+      beta = 1.0;
       nb = 0;
     }
   }
+  if (beta == 0.0)   /* no row above rmin: an empty scatter */
+    for (size_t i = 0; i < d; i++) memset(S + i * d, 0, (i + 1) * sizeof(double));
 }
 
 /* Cholesky of each covariance into g->chol; NL_ENUM on failure. GSL's
@@ -219,12 +352,12 @@ static nl_status factorize(nl_gmm *g, nl_error *err)
  * _estimate_gaussian_parameters); weights N_k/n at initialisation
  * (normalise = 0) and N_k / sum N_k afterwards, as sklearn does. */
 static nl_status m_step(nl_gmm *g, const double *x, size_t n, const double *R, double reg,
-                        int normalise, nl_error *err)
+                        int normalise, workspace *w, nl_error *err)
 {
   size_t K = g->k, d = g->d, cs = cov_size(g);
   double total = 0.0;
-  double *rmax = nl_xcalloc(K, sizeof(double));
-  for (size_t k = 0; k < K; k++) g->weights[k] = 10 * DBL_EPSILON;
+  double *rmax = w->rmax;
+  for (size_t k = 0; k < K; k++) { g->weights[k] = 10 * DBL_EPSILON; rmax[k] = 0.0; }
   for (size_t i = 0; i < n; i++)
     for (size_t k = 0; k < K; k++) {
       g->weights[k] += R[i * K + k];
@@ -234,12 +367,11 @@ static nl_status m_step(nl_gmm *g, const double *x, size_t n, const double *R, d
   gsl_matrix_const_view Xv = gsl_matrix_const_view_array(x, n, d);
   gsl_matrix_view M = gsl_matrix_view_array(g->means, K, d);
   gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, &Rv.matrix, &Xv.matrix, 0.0, &M.matrix);
-  double *z = g->covariance == NL_GMM_FULL ? nl_xmalloc(BLOCK * d * sizeof(double)) : NULL;
   for (size_t k = 0; k < K; k++) {
     double nk = g->weights[k], *mu = g->means + k * d, *S = g->covs + k * cs;
     for (size_t j = 0; j < d; j++) mu[j] /= nk;
     if (g->covariance == NL_GMM_FULL) {
-      scatter_full(x, n, d, R, K, k, mu, SKIP * rmax[k], z, S);
+      scatter_full(x, n, d, R, K, k, mu, SKIP * rmax[k], w->z, w->nb, S);
       for (size_t i = 0; i < d; i++)
         for (size_t j = 0; j <= i; j++) S[j * d + i] = S[i * d + j] /= nk;
       for (size_t j = 0; j < d; j++) S[j * d + j] += reg;
@@ -254,8 +386,6 @@ static nl_status m_step(nl_gmm *g, const double *x, size_t n, const double *R, d
     }
     total += nk;
   }
-  free(z);
-  free(rmax);
   for (size_t k = 0; k < K; k++) g->weights[k] /= normalise ? total : (double)n;
   return factorize(g, err);
 }
@@ -316,6 +446,7 @@ static void kmeans_labels(const double *x, size_t n, size_t d, size_t K, unsigne
   gsl_rng_set(rng, nl_seed_stream(seed, "gmm.kmeans", 0));
   double *c = nl_xmalloc(K * d * sizeof(double)), *D = nl_xmalloc(n * K * sizeof(double));
   double *xx = nl_xmalloc(n * sizeof(double)), *cnt = nl_xmalloc(K * sizeof(double));
+  double *old = nl_xmalloc(K * d * sizeof(double));
   for (size_t i = 0; i < n; i++) {
     xx[i] = 0.0;
     for (size_t j = 0; j < d; j++) xx[i] += x[i * d + j] * x[i * d + j];
@@ -333,7 +464,6 @@ static void kmeans_labels(const double *x, size_t n, size_t d, size_t K, unsigne
     }
     if (!changed) break;
     memset(cnt, 0, K * sizeof(double));
-    double *old = nl_xmalloc(K * d * sizeof(double));
     memcpy(old, c, K * d * sizeof(double));
     memset(c, 0, K * d * sizeof(double));
     for (size_t i = 0; i < n; i++) {
@@ -342,9 +472,8 @@ static void kmeans_labels(const double *x, size_t n, size_t d, size_t K, unsigne
     }
     for (size_t k = 0; k < K; k++)   /* an emptied cluster keeps its centre */
       for (size_t j = 0; j < d; j++) c[k * d + j] = cnt[k] > 0 ? c[k * d + j] / cnt[k] : old[k * d + j];
-    free(old);
   }
-  free(c); free(D); free(xx); free(cnt);
+  free(c); free(D); free(xx); free(cnt); free(old);
   gsl_rng_free(rng);
 }
 
@@ -373,38 +502,52 @@ static nl_status check_fit_args(const nl_gmm *g, const double *x, size_t n,
   return NL_OK;
 }
 
-nl_status nl_gmm_fit(nl_gmm *g, const double *x, size_t n, const nl_gmm_options *o,
-                     nl_error *err)
+/* EM on g (k components) with the buffers of w (kcap >= k). */
+static nl_status fit_ws(nl_gmm *g, const double *x, size_t n, const nl_gmm_options *o,
+                        workspace *w, nl_error *err)
 {
-  nl_status s = check_fit_args(g, x, n, o, err);
-  if (s) return s;
+  nl_status s;
   size_t K = g->k;
-  double *R = nl_xcalloc(n * K, sizeof(double));
+  double *R = w->R;
+  memset(R, 0, n * K * sizeof(double));
   int *lab = o->init_labels ? NULL : nl_xmalloc(n * sizeof(int));
   if (lab) kmeans_labels(x, n, g->d, K, o->seed, lab);
   const int *labels = lab ? lab : o->init_labels;
   for (size_t i = 0; i < n; i++) R[i * K + (size_t)labels[i]] = 1.0;
   free(lab);
-  s = m_step(g, x, n, R, o->reg_covar, 0, err);
+  s = m_step(g, x, n, R, o->reg_covar, 0, w, err);
   double lower = -INFINITY;
   g->converged = 0;
   g->iterations = 0;
   for (size_t it = 1; it <= o->max_iter && !s; it++) {
     double prev = lower;
-    lower = e_step(g, x, n, R, NULL) / (double)n;
-    s = m_step(g, x, n, R, o->reg_covar, 1, err);
+    lower = e_step(g, x, n, R, NULL, w->y) / (double)n;
+    s = m_step(g, x, n, R, o->reg_covar, 1, w, err);
     g->iterations = it;
     if (fabs(lower - prev) < o->tol) { g->converged = 1; break; }
   }
-  free(R);
   if (s) return s;
   g->n = n;
-  g->loglik = e_step(g, x, n, NULL, NULL);
+  g->loglik = e_step(g, x, n, NULL, NULL, w->y);
   if (!isfinite(g->loglik))
     return nl_fail(err, NL_ENUM, "the log-likelihood is not finite; increase reg_covar");
   g->aic = -2.0 * g->loglik + 2.0 * (double)g->nparams;
   g->bic = -2.0 * g->loglik + (double)g->nparams * log((double)n);
   return NL_OK;
+}
+
+nl_status nl_gmm_fit(nl_gmm *g, const double *x, size_t n, const nl_gmm_options *o,
+                     nl_error *err)
+{
+  nl_status s = check_fit_args(g, x, n, o, err);
+  if (s) return s;
+  workspace w;
+  ws_init(&w, n, g->d, g->k);
+  int threads = blas_threads_limit(n, g->d);
+  s = fit_ws(g, x, n, o, &w, err);
+  blas_threads_restore(threads);
+  ws_free(&w);
+  return s;
 }
 
 nl_status nl_gmm_loglik(const nl_gmm *g, const double *x, size_t n, double *total,
@@ -413,7 +556,9 @@ nl_status nl_gmm_loglik(const nl_gmm *g, const double *x, size_t n, double *tota
   for (size_t i = 0; i < n * g->d; i++)
     if (!isfinite(x[i]))
       return nl_fail(err, NL_EINVAL, "row %zu, column %zu is not finite", i / g->d + 1, i % g->d + 1);
-  *total = e_step(g, x, n, NULL, logp);
+  int threads = blas_threads_limit(n, g->d);
+  *total = e_step(g, x, n, NULL, logp, NULL);
+  blas_threads_restore(threads);
   return NL_OK;
 }
 
@@ -454,15 +599,34 @@ nl_status nl_gmm_select_aic(const double *x, size_t n, size_t d, size_t k0, doub
   if (sz) return sz;
   nl_gmm_options ok = *o;
   ok.init_labels = NULL;   /* labels are for one k; each fit seeds k-means */
+  /* Two models with room for the largest K take turns (the best so far and
+   * the one being fitted), and one workspace serves every K: K d^2 arrays
+   * are allocated, and their pages touched, once per path, not per K. */
+  size_t kcap = k_max < n ? k_max : n;
+  nl_gmm *spare = NULL;
+  workspace w = {0};
+  nl_status s = NL_OK;
+  int threads = 0;
   for (size_t k = k0; k <= k_max && k <= n; k++) {
-    nl_gmm *g = nl_gmm_alloc(k, d, o->covariance);
-    nl_status s = nl_gmm_fit(g, x, n, &ok, err);
-    if (s) { nl_gmm_free(g); return s; }
+    nl_gmm *g = spare ? spare : gmm_new(k, kcap, d, o->covariance, 0);
+    spare = NULL;
+    g->k = k;
+    g->nparams = nl_gmm_nparams(k, d, o->covariance);
+    if (k == k0) {
+      if ((s = check_fit_args(g, x, n, &ok, err))) { nl_gmm_free(g); return s; }
+      ws_init(&w, n, d, kcap);
+      threads = blas_threads_limit(n, d);
+    }
+    s = fit_ws(g, x, n, &ok, &w, err);
+    if (s) { nl_gmm_free(g); break; }
     path[*npath] = (nl_gmm_step){k, g->loglik, g->aic, g->bic, g->iterations, g->converged};
     (*npath)++;
     if (*best && (*best)->aic - g->aic < threshold) { nl_gmm_free(g); break; }
-    nl_gmm_free(*best);
+    spare = *best;
     *best = g;
   }
-  return NL_OK;
+  blas_threads_restore(threads);
+  ws_free(&w);
+  nl_gmm_free(spare);
+  return s;
 }
