@@ -13,7 +13,7 @@
  *   anneal    nl_cheng3_sa_ops, nl_cheng3_sa_run (the schedule loop, written
  *             against callbacks so any incremental problem can use it),
  *             nl_cheng3_optimise
- *   eval      nl_cheng3_evaluate, nl_cheng3_value_grid, nl_cheng3_run,
+ *   eval      nl_cheng3_evaluate, nl_cheng3_value, nl_cheng3_value_grid, nl_cheng3_run,
  *             nl_cheng3_level_entries
  *
  *   nl_cheng3_pattern *pat;
@@ -191,6 +191,8 @@ typedef struct {
 
 nl_status nl_cheng3_evaluate(const nl_cheng3_table *t, const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
                              nl_cheng3_eval *out, nl_error *err);
+/* The control value c = (1 + V) / 2 at one point (the noise kernel, all F octaves). */
+double nl_cheng3_value(const nl_cheng3_table *t, const nl_cheng3_config *c, double x, double y, double z);
 /* c at the centres of an n^3 raster of [0,1)^3, index (k n + j) n + i (x fastest). */
 void nl_cheng3_value_grid(const nl_cheng3_table *t, const nl_cheng3_config *c, int n, double *out);
 /* Random table from nl_seed_stream(seed, "cheng3.table", 0), its E_Con as

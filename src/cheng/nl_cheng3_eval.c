@@ -26,6 +26,11 @@ static double value_at(const nl_cheng3_table *t, const nl_cheng3_config *c, doub
   return 0.5 * (1 + s * v);
 }
 
+double nl_cheng3_value(const nl_cheng3_table *t, const nl_cheng3_config *c, double x, double y, double z)
+{
+  return value_at(t, c, scale(c), x, y, z);
+}
+
 void nl_cheng3_value_grid(const nl_cheng3_table *t, const nl_cheng3_config *c, int n, double *out)
 {
   double s = scale(c);
