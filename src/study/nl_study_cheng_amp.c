@@ -17,7 +17,7 @@ static nl_table *labelled_alloc(int nlabels, const char *const *labels, const ch
   return nl_table_alloc((size_t)nlabels + ncols, names);
 }
 
-static const char *const gain_cols[] = {"octave", "a_thesis", "a", "a_sd", "gain", "gain_sd", "log_gain_sd", "at_bound"};
+static const char *const gain_cols[] = {"octave", "a_thesis", "a", "a_sd", "gain", "gain_sd", "log_gain_sd", "R", "at_bound"};
 #define NGAIN (sizeof gain_cols / sizeof *gain_cols)
 
 nl_table *nl_study_cheng_gains_alloc(int nlabels, const char *const *labels)
@@ -63,7 +63,7 @@ nl_noise_grad2 *nl_study_cheng_amp_seeds(const nl_study_cheng *s, const nl_cheng
       bound += fabs(fabs(u[q]) - hi) < 1e-3;
     }
     double row[NGAIN] = {l + 1, 1.0 / o.amp[l], nl_study_mean(a, k), nl_study_sd(a, k), nl_study_mean(g, k),
-                         nl_study_sd(g, k), nl_study_sd(u, k), (double)bound / k};
+                         nl_study_sd(g, k), nl_study_sd(u, k), c->amp_range, (double)bound / k};
     size_t r = labelled_row(gains, nlabels, labels);
     for (size_t i = 0; i < NGAIN; i++) nl_table_set(gains, r, gain_cols[i], row[i]);
   }
