@@ -90,8 +90,8 @@ int main(int argc, char **argv)
   for (size_t k = 0; k < timing->nrows; k += 2) { tf += nl_table_value(timing, k, "seconds_per_run"); to += nl_table_value(timing, k + 1, "seconds_per_run"); }
   nl_harness_text(r, "Time per optimisation (wall, this run's load): fixed %.3g s, optimised %.3g s on average over the cases "
                      "(a gain move re-evaluates every control point).\n", tf / ncase, to / ncase);
-  nl_harness_figure(r, "control.png", "E_Con, r with the pattern and contrast, fixed vs optimised amplitudes (mean and sd over seeds; E_Con of the best constant image dashed)");
-  nl_harness_figure(r, "gains.png", "Optimised octave amplitudes 1/a_l against the thesis's (mean and sd over seeds)");
+  nl_harness_figure(r, "control.png", "E_Con, r with the pattern and contrast, fixed vs optimised amplitudes (mean and sd over seeds; +: E_Con of the best constant image)");
+  nl_harness_figure(r, "gains.png", "Optimised octave amplitudes 1/a_l = gain / a_l against the thesis's 1/a_l and the bounds (mean and sd of the gain over seeds)");
   nl_harness_figure(r, "values.png", "Per case: pattern | controlled value with fixed and optimised amplitudes on its own 0..1 scale | the same stretched to its 1st..99th percentile (first seed)");
   nl_table_free(sum); nl_table_free(gains); nl_table_free(tests); nl_table_free(timing);
   return nl_harness_end(r);

@@ -109,7 +109,8 @@
  *   same left-to-right sum as nl_cheng_resum). With amp_vary = 0 and
  *   log_gain = 0 every result is bit-identical to the fixed amplitudes
  *   (exp(0) = 1). nl_cheng_run evaluates with the optimised gains, returned
- *   in nl_cheng_eval.log_gain.
+ *   in nl_cheng_eval.log_gain. The reproduction (nl_cheng_repro.h) moves
+ *   angles only: its problem keeps the config's log_gain fixed.
  *
  * READINGS of what the thesis leaves open.
  *   - Scale of the value. The thesis says black = noise 0, red = noise 1 and uses

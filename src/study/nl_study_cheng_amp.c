@@ -100,8 +100,8 @@ void nl_study_cheng_amp_text(nl_harness *r, const nl_table *sum, const nl_table 
   range_of(sum, "contrast", 0, 2, cf, cf + 1); range_of(sum, "contrast", 1, 2, co, co + 1);
   for (size_t q = 0; q < gains->nrows; q++) bf += nl_table_value(gains, q, "at_bound") / (double)gains->nrows;
   nl_harness_text(r, "**Fixed vs optimised amplitudes** (%zu cases, %g seeds each, Welch's t-test at 0.05): the optimised "
-                     "amplitudes lower E_Con in %d cases and raise it in %d (change of the mean %+.1f%% .. %+.1f%%); E_KS "
-                     "differs in %d cases (largest change of the mean %+.1f%%). r with the pattern: fixed %.2f..%.2f, "
+                     "amplitudes lower E_Con in %d of the cases and raise it in %d (change of the mean %+.1f%% .. %+.1f%%); E_KS "
+                     "differs in %d of the cases (largest change of the mean %+.1f%%). r with the pattern: fixed %.2f..%.2f, "
                      "optimised %.2f..%.2f; contrast (sd of c): fixed %.3f..%.3f, optimised %.3f..%.3f. Gains end at a "
                      "bound (1/%g or %g) in %.0f%% of octave-seeds.\n",
                   ncase, nl_table_value(sum, 0, "seeds"), lower, higher, dlo, dhi, ks_diff, kmax, rf[0], rf[1], ro[0], ro[1],
