@@ -18,6 +18,7 @@
  *   anneal    nl_cheng_anneal, nl_cheng_propagate, nl_cheng_optimise
  *   eval      nl_cheng_evaluate, nl_cheng_value_grid, nl_cheng_run,
  *             nl_cheng_run_seeds, nl_cheng_ks_median
+ *   amplitudes nl_cheng_octaves, nl_cheng_log_gains (X6, nl_cheng_amp.c)
  *
  *   nl_cheng_pattern *pat;
  *   nl_cheng_pattern_from_pixels(rgba, w, h, 4, 64, &pat, &err);      // 64 x 64 control grid
@@ -88,6 +89,28 @@
  *   stored corners and E_Con is re-summed, so rounding from differences never
  *   outlives one temperature. Tested: incremental == full recomputation to 1e-12
  *   (relative) after every move of a random sequence.
+ *
+ * OCTAVE AMPLITUDES AS VARIABLES (X6, the thesis's ch. 5 future work: "adjust
+ *   the amplitude in the fractal sum"; config.amp_vary = 1, off by default).
+ *   Octave l's amplitude is 1/a_l = g_l / a_l^thesis with a log gain u_l =
+ *   ln g_l in [-ln R, ln R], R = config.amp_range (default 4: a_l within
+ *   [1/4, 4] x the thesis's). Rule: level l's variables are its table entries
+ *   plus u_l (variable index M + l - 1 in nl_cheng_vars), so an octave's gain
+ *   moves only at the level where the octave enters and is frozen after it,
+ *   like its entries. Propagation: u_l starts at config.log_gain[l] (0: the
+ *   thesis's a_l) - a gain has no lattice parent for eq. 3.13 to copy. Move:
+ *   u' = u + (sigma / pi) ln R U(-1, 1), reflected at the bounds (a symmetric
+ *   proposal, as for the angles). Scale: s = 1 / (sqrt(2)/2 sum_l 1/a_l) is
+ *   recomputed from the current amplitudes after every move, so V stays in
+ *   [-1, 1] and c in [0, 1] like D (the reading below); E is then invariant to
+ *   a common gain, so the optimiser changes the octaves' relative weights, not
+ *   a global contrast knob outside c's range. A gain move changes every
+ *   point's value: O(points x level) per move, E_Con re-summed exactly (the
+ *   same left-to-right sum as nl_cheng_resum). With amp_vary = 0 and
+ *   log_gain = 0 every result is bit-identical to the fixed amplitudes
+ *   (exp(0) = 1). nl_cheng_run evaluates with the optimised gains, returned
+ *   in nl_cheng_eval.log_gain. The reproduction (nl_cheng_repro.h) moves
+ *   angles only: its problem keeps the config's log_gain fixed.
  *
  * READINGS of what the thesis leaves open.
  *   - Scale of the value. The thesis says black = noise 0, red = noise 1 and uses
@@ -175,11 +198,15 @@ typedef struct {
   nl_cheng_schedule sched;
   int literal;          /* 0: V over its bound, c in [0, 1] (READINGS); 1: the thesis's formulas
                            literally, V = F_sum unscaled, c = V, sin V, |V|, sum |Noise_l| / a_l */
+  int amp_vary;         /* 1: octave l's log gain is a level-l variable (X6 above); 0: fixed */
+  double amp_range;     /* R: gains within [1/R, R] (default 4; >= 1) */
+  double log_gain[NL_CHENG_MAX_OCTAVES];   /* u_l: 1/a_l = e^u_l / a_l^thesis (0: the thesis's) */
 } nl_cheng_config;
 
 nl_cheng_config nl_cheng_config_default(void);
 /* Weights >= 0 and not both 0, f1 > 0, a1 > 0, 1 <= octaves <= 8, K >= 2, sane
- * schedule; one-line message otherwise. */
+ * schedule, amp_vary 0/1, finite log gains and, with amp_vary, amp_range >= 1
+ * and |log_gain| <= ln amp_range; one-line message otherwise. */
 nl_status nl_cheng_config_check(const nl_cheng_config *c, nl_error *err);
 /* "ks", "chisq", "kuiper" / "cloud"|"plain", "marble"|"sin", "erosion"|"abs", "fire". */
 nl_status nl_cheng_stat_parse(const char *s, nl_cheng_stat *out, nl_error *err);
@@ -259,6 +286,7 @@ typedef struct {
   double e_con_const;         /* E_Con of the best constant image, sum (D_i - mean D)^2 */
   double e_con_random;        /* E_Con of the unoptimised table (nl_cheng_run's start; NAN
                                  from nl_cheng_evaluate alone) */
+  double log_gain[NL_CHENG_MAX_OCTAVES];   /* the amplitudes evaluated (config's; nl_cheng_run's optimised) */
 } nl_cheng_eval;
 
 nl_status nl_cheng_evaluate(const nl_noise_grad2 *table, const nl_cheng_config *c,
@@ -283,5 +311,13 @@ nl_status nl_cheng_run_seeds(const nl_cheng_config *c, const nl_cheng_pattern *p
 /* Median of the one-sample KS statistic D_n under the null (bisection on
  * nl_stats_ks_cdf): the yardstick for "as uniform as a random table". */
 double nl_cheng_ks_median(size_t n);
+
+/* ---- octave amplitudes (X6, nl_cheng_amp.c) ------------------------------ */
+
+/* Eq. 3.10's octaves with the config's gains: amp[l] = e^log_gain[l] / a_l. */
+nl_noise_octaves nl_cheng_octaves(const nl_cheng_config *c);
+/* The problem's current log gains u_1..u_F into out[0..F-1] (the config's
+ * until a level with amp_vary has moved them). */
+void nl_cheng_log_gains(const nl_cheng_problem *p, double *out);
 
 #endif

@@ -17,6 +17,7 @@ static double wrap_angle(double t)
 
 static double propose(const nl_cheng_problem *p, gsl_rng *rng, size_t k, double sigma)
 {
+  if (k >= p->m) return nl_cheng__amp_propose(p, rng, k - p->m, sigma);   /* a gain (X6) */
   return wrap_angle(p->g->angle[k] + sigma * (2.0 * gsl_rng_uniform(rng) - 1.0));
 }
 
@@ -39,7 +40,7 @@ static double initial_temperature(nl_cheng_problem *p, gsl_rng *rng, const size_
 
 static void save_vars(const nl_cheng_problem *p, const size_t *vars, size_t nv, double *to)
 {
-  for (size_t q = 0; q < nv; q++) to[q] = p->g->angle[vars[q]];
+  for (size_t q = 0; q < nv; q++) to[q] = nl_cheng__var_value(p, vars[q]);
 }
 
 /* Moves the variables back to a saved state, through the incremental path
@@ -47,7 +48,7 @@ static void save_vars(const nl_cheng_problem *p, const size_t *vars, size_t nv, 
 static void restore_vars(nl_cheng_problem *p, const size_t *vars, size_t nv, const double *from)
 {
   for (size_t q = 0; q < nv; q++)
-    if (p->g->angle[vars[q]] != from[q]) nl_cheng_move(p, vars[q], from[q]);
+    if (nl_cheng__var_value(p, vars[q]) != from[q]) nl_cheng_move(p, vars[q], from[q]);
   nl_cheng_resum(p);
 }
 

@@ -13,6 +13,7 @@ nl_cheng_config nl_cheng_config_default(void)
     .m = 512, .chisq_bins = 500,           /* sec. 3.2, 4.2 */
     .propagate = 1,                        /* sec. 3.4.2 */
     .sched = {.n_temps = 60, .moves_per_var = 20, .t_decades = 4, .p0 = 0.8, .stall = 10},
+    .amp_vary = 0, .amp_range = 4,         /* X6: fixed amplitudes; gains within [1/4, 4] when varied */
   };
   return c;
 }
@@ -30,6 +31,13 @@ nl_status nl_cheng_config_check(const nl_cheng_config *c, nl_error *err)
   if ((unsigned)c->stat > NL_CHENG_STAT_KUIPER) return nl_fail(err, NL_EINVAL, "unknown objective %d", (int)c->stat);
   if (c->literal != 0 && c->literal != 1) return nl_fail(err, NL_EINVAL, "literal must be 0 or 1, got %d", c->literal);
   if ((unsigned)c->con > NL_CHENG_CON_FIRE) return nl_fail(err, NL_EINVAL, "unknown texture type %d", (int)c->con);
+  if (c->amp_vary != 0 && c->amp_vary != 1) return nl_fail(err, NL_EINVAL, "amp_vary must be 0 or 1, got %d", c->amp_vary);
+  if (c->amp_vary && !(c->amp_range >= 1 && isfinite(c->amp_range)))
+    return nl_fail(err, NL_EINVAL, "amp_range must be finite and >= 1, got %g", c->amp_range);
+  for (int l = 0; l < c->octaves; l++)
+    if (!isfinite(c->log_gain[l]) || (c->amp_vary && fabs(c->log_gain[l]) > log(c->amp_range)))
+      return nl_fail(err, NL_EINVAL, "log gain of octave %d is %g, outside [-ln R, ln R] (R = amp_range %g)", l + 1,
+                     c->log_gain[l], c->amp_range);
   const nl_cheng_schedule *s = &c->sched;
   if (s->n_temps < 1 || !(s->moves_per_var > 0) || !(s->t_decades > 0) || !(s->p0 > 0 && s->p0 < 1) || s->stall < 1)
     return nl_fail(err, NL_EINVAL, "bad annealing schedule (n_temps %d, moves/var %g, decades %g, p0 %g, stall %d)",

@@ -20,7 +20,7 @@ static double amp_scale(const nl_noise_octaves *o)
 static double control_error(const nl_noise_grad2 *g, const nl_cheng_config *c, const nl_cheng_pattern *pat,
                             double *r)
 {
-  nl_noise_octaves o = nl_noise_octaves_cheng(c->octaves, c->f1, c->a1);
+  nl_noise_octaves o = nl_cheng_octaves(c);   /* with the config's gains (X6) */
   double s = amp_scale(&o), e = 0, nv[NL_CHENG_MAX_OCTAVES];
   double sv = 0, sd = 0, svv = 0, sdd = 0, svd = 0, n = (double)pat->n;
   for (size_t i = 0; i < pat->n; i++) {
@@ -89,12 +89,13 @@ nl_status nl_cheng_evaluate(const nl_noise_grad2 *g, const nl_cheng_config *c,
   out->e_con_random = NAN;
   double stat = nl_cheng__stat_full(c->stat, c->chisq_bins, g->angle, g->m);
   out->e = nl_cheng_objective(c, stat, out->e_con);
+  memcpy(out->log_gain, c->log_gain, sizeof out->log_gain);
   return NL_OK;
 }
 
 void nl_cheng_value_grid(const nl_noise_grad2 *g, const nl_cheng_config *c, int w, int h, double *out)
 {
-  nl_noise_octaves o = nl_noise_octaves_cheng(c->octaves, c->f1, c->a1);
+  nl_noise_octaves o = nl_cheng_octaves(c);   /* with the config's gains (X6) */
   double s = amp_scale(&o), nv[NL_CHENG_MAX_OCTAVES];
   double *rows = nl_xmalloc((size_t)o.n * (size_t)w * sizeof *rows);
   for (int y = 0; y < h; y++) {
@@ -121,8 +122,10 @@ nl_status nl_cheng_run(const nl_cheng_config *c, const nl_cheng_pattern *pat, un
   /* The table and the annealer take streams of their own roles from the one
    * seed (noise.grad2, cheng.anneal), so they are independent. */
   nl_cheng_optimise(p, seed, stats);
+  nl_cheng_config ce = *c;
+  nl_cheng_log_gains(p, ce.log_gain);   /* evaluated with the optimised amplitudes (X6); c's when fixed */
   nl_cheng_problem_free(p);
-  nl_status s = ev ? nl_cheng_evaluate(g, c, pat, ev, err) : NL_OK;
+  nl_status s = ev ? nl_cheng_evaluate(g, &ce, pat, ev, err) : NL_OK;
   if (ev && !s) ev->e_con_random = e_random;
   if (table_out && !s) *table_out = g;
   else nl_noise_grad2_free(g);

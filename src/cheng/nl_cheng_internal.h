@@ -61,7 +61,26 @@ struct nl_cheng_problem {
   size_t *tp, ntouch;
   double *tnv, *tterm;
   unsigned *mark, stamp;
+  /* octave gains (X6, nl_cheng_amp.c): amp[l] = amp0[l] e^lg[l]; a gain move's
+   * undo keeps the previous gain, s and every term */
+  double amp0[NL_CHENG_MAX_OCTAVES], lg[NL_CHENG_MAX_OCTAVES];
+  double u_lg, u_amp, u_s;
+  double *uterm;         /* np terms, allocated with amp_vary */
 };
+
+/* Variable k of nl_cheng_vars: k < M a table entry's angle, k = M + l octave
+ * l's log gain (amp_vary). */
+static inline double nl_cheng__var_value(const nl_cheng_problem *p, size_t k)
+{
+  return k < p->m ? p->g->angle[k] : p->lg[k - p->m];
+}
+/* Gain moves (nl_cheng_amp.c): set octave l's log gain to u and return the new
+ * E (every term re-evaluated); undo; a proposal for the annealer. */
+double nl_cheng__amp_move(nl_cheng_problem *p, size_t l, double u);
+void nl_cheng__amp_undo(nl_cheng_problem *p);
+double nl_cheng__amp_propose(const nl_cheng_problem *p, gsl_rng *rng, size_t l, double sigma);
+/* s = 1 / (sqrt(2)/2 sum amp): V = F_sum over its analytic bound. */
+double nl_cheng__amp_scale(const double *amp, int n);
 
 long nl_cheng__lattice_max(double f);
 /* The control value c of nl_cheng.h from a point's octave values (the first

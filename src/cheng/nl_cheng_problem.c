@@ -109,10 +109,11 @@ nl_cheng_problem *nl_cheng_problem_alloc(const nl_cheng_config *c, const nl_chen
   p->m = table->m;
   p->np = pat->n;
   p->F = c->octaves;
-  nl_noise_octaves o = nl_noise_octaves_cheng(c->octaves, c->f1, c->a1);
+  nl_noise_octaves o = nl_cheng_octaves(c), o0 = nl_noise_octaves_cheng(c->octaves, c->f1, c->a1);
   double asum = 0;
   for (int l = 0; l < p->F; l++) { p->freq[l] = o.freq[l]; p->amp[l] = o.amp[l]; asum += o.amp[l]; }
   p->s = 1.0 / (NL_NOISE2_BOUND * asum);   /* V = F_sum / its analytic bound */
+  for (int l = 0; l < p->F; l++) { p->amp0[l] = o0.amp[l]; p->lg[l] = c->log_gain[l]; }   /* X6: gains */
   size_t F = (size_t)p->F;
   p->ck = nl_xmalloc(p->np * F * 4 * sizeof *p->ck);
   p->cw = nl_xmalloc(p->np * F * 8 * sizeof *p->cw);
@@ -121,7 +122,7 @@ nl_cheng_problem *nl_cheng_problem_alloc(const nl_cheng_config *c, const nl_chen
   p->used = nl_xcalloc(F * p->m, 1);
   p->first_level = nl_xcalloc(p->m, sizeof *p->first_level);
   p->in_sample = nl_xcalloc(p->m, 1);
-  p->vars = nl_xmalloc(p->m * sizeof *p->vars);
+  p->vars = nl_xmalloc((p->m + 1) * sizeof *p->vars);   /* + 1: a level's gain (amp_vary) */
   p->sample = nl_xmalloc(p->m * sizeof *p->sample);
   p->mark = nl_xcalloc(p->np, sizeof *p->mark);
   p->tp = nl_xmalloc(p->np * sizeof *p->tp);
@@ -141,7 +142,7 @@ void nl_cheng_problem_free(nl_cheng_problem *p)
   nl_cheng__stat_clear(&p->st);
   free(p->ck); free(p->cw); free(p->nv); free(p->term); free(p->used); free(p->first_level);
   free(p->in_sample); free(p->vars); free(p->sample); free(p->mark); free(p->tp);
-  free(p->tnv); free(p->tterm); free(p->lstart); free(p->litem); free(p->lw);
+  free(p->tnv); free(p->tterm); free(p->lstart); free(p->litem); free(p->lw); free(p->uterm);
   free(p);
 }
 
@@ -198,6 +199,7 @@ void nl_cheng_set_level(nl_cheng_problem *p, int level)
     p->in_sample[k] = p->used[(size_t)(p->level - 1) * p->m + k];
     if (p->in_sample[k]) p->sample[p->nsample++] = k;
   }
+  if (p->c.amp_vary) p->vars[p->nvars++] = p->m + (size_t)(p->level - 1);   /* octave l's gain (X6) */
   double *x = nl_xmalloc((p->nsample ? p->nsample : 1) * sizeof *x);
   for (size_t q = 0; q < p->nsample; q++) x[q] = p->g->angle[p->sample[q]];
   nl_cheng__stat_reset(&p->st, x, p->nsample);
@@ -252,6 +254,7 @@ static double update_points(nl_cheng_problem *p, size_t k, double dc, double ds)
 
 double nl_cheng_move(nl_cheng_problem *p, size_t k, double theta)
 {
+  if (k >= p->m) return nl_cheng__amp_move(p, k - p->m, theta);   /* a gain (nl_cheng_amp.c) */
   p->uk = k;
   p->utheta = p->g->angle[k];
   p->u_stat = p->e_stat;
@@ -272,6 +275,7 @@ double nl_cheng_move(nl_cheng_problem *p, size_t k, double theta)
 void nl_cheng_undo(nl_cheng_problem *p)
 {
   if (!p->has_undo) return;
+  if (p->uk >= p->m) { nl_cheng__amp_undo(p); return; }
   size_t k = p->uk, F = (size_t)p->F;
   if (p->in_sample[k]) nl_cheng__stat_replace(&p->st, p->g->angle[k], p->utheta);
   nl_noise_grad2_set_angle(p->g, k, p->utheta);

@@ -205,6 +205,23 @@ void nl_study_cheng_weights_uniformity_text(nl_harness *r, const nl_table *tab, 
 nl_table *nl_study_cheng_grid_sweep(const nl_study_cheng *s, const nl_cheng_config *c, const char *pattern,
                                     int gmin, int gmax, double paper_e_con);
 
+/* ---- C9, octave amplitudes as variables (nl_study_cheng_amp.c) ---------- */
+
+/* nl_study_cheng_seeds for fixed or optimised amplitudes (c->amp_vary): the
+ * summary row as there; with amp_vary, one row per octave appended to `gains`
+ * (nl_study_cheng_gains_alloc: the labels, octave, a_thesis, a, a_sd, gain,
+ * gain_sd, log_gain_sd, R = amp_range, at_bound = fraction of seeds whose
+ * |ln gain| is within 1e-3 of ln R); one row to `timing` (labels, seconds_per_run). The
+ * first seed's log gains into first_log_gain (F values). Exit 1 on error. */
+nl_table *nl_study_cheng_gains_alloc(int nlabels, const char *const *labels);
+nl_table *nl_study_cheng_timing_alloc(int nlabels, const char *const *labels);
+nl_noise_grad2 *nl_study_cheng_amp_seeds(const nl_study_cheng *s, const nl_cheng_config *c, const nl_cheng_pattern *pat,
+                                         nl_table *sum, nl_table *gains, nl_table *timing, int nlabels,
+                                         const char *const *labels, double *first_log_gain);
+/* C9's prose, formatted from the summary (fixed and optimised rows in pairs
+ * 2i, 2i + 1), the Welch table (quantity rows per case) and the gains. */
+void nl_study_cheng_amp_text(nl_harness *r, const nl_table *sum, const nl_table *tests, const nl_table *gains, double range);
+
 /* ---- what C5 and C6 share (nl_study_cheng_repro.c) ----------------------- */
 
 /* Tables 4.2-4.4 of the thesis, with the pattern and control term we use for

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Quick C9: fixed vs optimised octave amplitudes, 4 cases x 2 (3 seeds per row).
+# What can fail, bounded by measurements at --quick over seeds 1..5:
+#  - the fixed-amplitude rows are C1's rescaled rows for the same texture and
+#    pattern, bit for bit (same seeds, same setting: amp_vary = 0 changes
+#    nothing), compared with results/quick/c1_textures/summary.tsv;
+#  - the optimised gains stay within their bounds [1/4, 4] and every case
+#    moved them (some octave's mean gain differs from 1);
+#  - both conditions optimise: E_Con below the unoptimised start table's in
+#    every row, tables stay uniform (E_ks < 0.025: measured 0.0088..0.0173 optimised, 0.0096..0.0122 fixed; E_Con / E_Con_random <= 0.898);
+#  - Welch p-values in [0, 1], one row per case and quantity (5).
+set -euo pipefail
+. "$(dirname "$0")/tsv.sh"   # tables by column name
+exp="$1" expect="$2" out="$3"
+root="$(cd "$(dirname "$0")/.." && pwd)"
+pat="$root/data/patterns"
+"$exp" --quick --out "$out" --patterns "$pat" >/dev/null
+"$expect" "$out/summary.tsv" rows=8 'seeds==3' 'E_ks>0' 'E_ks<0.025' 'E_con<E_con_random' 'contrast>0' file:values.png
+"$expect" "$out/gains.tsv" rows=16 'gain>=0.25' 'gain<=4' 'a>=1' 'at_bound>=0' 'at_bound<=1'
+"$expect" "$out/tests.tsv" rows=20 'p_welch>=0' 'p_welch<=1' 'seeds==3'
+"$expect" "$out/timing.tsv" rows=8 'seconds_per_run>0'
+tsv_awk 'NR > 1 {c = v("texture") "/" v("pattern"); if (n("gain") != 1) moved[c] = 1; seen[c] = 1}
+  END {for (c in seen) if (!(c in moved)) {print "gains not moved: " c; exit 1}}' "$out/gains.tsv"
+# fixed rows == C1's rescaled rows (every summary column, as text)
+ref="$root/results/quick/c1_textures/summary.tsv"
+awk -F'\t' 'FNR == 1 {for (i = 1; i <= NF; i++) {col[FILENAME, $i] = i; if (FILENAME == ARGV[2]) hdr[i] = $i}; nf[FILENAME] = NF; next}
+  FILENAME == ARGV[1] && $col[ARGV[1], "formula"] == "rescaled" {row[$col[ARGV[1], "texture"] "/" $col[ARGV[1], "pattern"]] = $0}
+  FILENAME == ARGV[2] && $col[ARGV[2], "amplitudes"] == "fixed" {
+    k = $col[ARGV[2], "texture"] "/" $col[ARGV[2], "pattern"]
+    if (!(k in row)) {print "no C1 row for " k; bad = 1; exit 1}
+    split(row[k], a, "\t"); n++
+    for (i = col[ARGV[2], "seeds"]; i <= nf[ARGV[2]]; i++)
+      if (a[col[ARGV[1], hdr[i]]] != $i) {print "fixed " k " " hdr[i] ": " $i " vs C1 " a[col[ARGV[1], hdr[i]]]; bad = 1; exit 1}
+  }
+  END {if (!bad && n != 4) {print "fixed rows compared with C1: " n ", wanted 4"; exit 1}}' "$ref" "$out/summary.tsv"
+refused "$exp" --quick --out "$out.bad" --patterns "$pat" --set amp_range=0.5
+refused "$exp" --quick --out "$out.bad" --patterns "$pat" --set cases=7
