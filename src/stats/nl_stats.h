@@ -168,6 +168,7 @@ typedef struct {
   size_t nblocks;
   double *bplus;      /* per block of NL_KS_INCR_BLOCK ranks: max of D+ terms */
   double *bminus;     /* ... and of D- terms */
+  double *rank;       /* i / n for i = 0..n: the terms' rank fractions, divided once */
   double d_plus, d_minus, d;
 } nl_stats_ks_incr;
 #define NL_KS_INCR_BLOCK 32
