@@ -57,7 +57,8 @@ struct nl_cheng_problem {
   /* undo record of the last move */
   int has_undo;
   size_t uk;
-  double utheta, u_stat, u_con, u_e;
+  double utheta, ugx, ugy, u_stat, u_con, u_e;
+  int tlev;              /* >= 0: only octave tlev changed (tnv holds 1 value a point), -1: F values */
   size_t *tp, ntouch;
   double *tnv, *tterm;
   unsigned *mark, stamp;
@@ -65,24 +66,36 @@ struct nl_cheng_problem {
 
 long nl_cheng__lattice_max(double f);
 /* The control value c of nl_cheng.h from a point's octave values (the first
- * `levels` of them); inline because every move evaluates it per point. */
-static inline double nl_cheng__control_value(nl_cheng_con con, const double *nv, const double *amp,
-                                             int levels, double s, int literal)
+ * `levels` of them); inline because every move evaluates it per point. In two
+ * steps: the octave sum (left to right; fire sums |Noise_l|), with nv[rl]
+ * read as rv when rl >= 0 (a move's new value, kept in a register: reading
+ * it back right after storing it would stall the store forwarding), then
+ * the texture's function of the sum. */
+static inline double nl_cheng__octave_sum(nl_cheng_con con, const double *nv, const double *amp,
+                                          int levels, int rl, double rv)
 {
-  if (literal) {   /* eq. 3.8, 4.1-4.3 as printed: the raw fractal sum, sin V, |V| */
-    double v = 0;
-    for (int l = 0; l < levels; l++) v += amp[l] * (con == NL_CHENG_CON_FIRE ? fabs(nv[l]) : nv[l]);
-    return con == NL_CHENG_CON_SIN ? sin(v) : con == NL_CHENG_CON_ABS ? fabs(v) : v;
-  }
   double v = 0;
-  if (con == NL_CHENG_CON_FIRE) {
-    for (int l = 0; l < levels; l++) v += amp[l] * fabs(nv[l]);
-    return s * v;
-  }
-  for (int l = 0; l < levels; l++) v += amp[l] * nv[l];
+  if (con == NL_CHENG_CON_FIRE)
+    for (int l = 0; l < levels; l++) v += amp[l] * fabs(l == rl ? rv : nv[l]);
+  else
+    for (int l = 0; l < levels; l++) v += amp[l] * (l == rl ? rv : nv[l]);
+  return v;
+}
+
+static inline double nl_cheng__control_of_sum(nl_cheng_con con, double v, double s, int literal)
+{
+  if (literal)   /* eq. 3.8, 4.1-4.3 as printed: the raw fractal sum, sin V, |V| */
+    return con == NL_CHENG_CON_SIN ? sin(v) : con == NL_CHENG_CON_ABS ? fabs(v) : v;
+  if (con == NL_CHENG_CON_FIRE) return s * v;
   v *= s;   /* V in [-1, 1] */
   return con == NL_CHENG_CON_SIN ? 0.5 * (1.0 + sin(NL_PI * v))
        : con == NL_CHENG_CON_ABS ? fabs(v) : 0.5 * (1.0 + v);
+}
+
+static inline double nl_cheng__control_value(nl_cheng_con con, const double *nv, const double *amp,
+                                             int levels, double s, int literal)
+{
+  return nl_cheng__control_of_sum(con, nl_cheng__octave_sum(con, nv, amp, levels, -1, 0.0), s, literal);
 }
 
 #endif
