@@ -26,6 +26,7 @@ void nl_cheng__stat_init(nl_cheng_statstate *s, nl_cheng_stat kind, size_t bins)
 void nl_cheng__stat_clear(nl_cheng_statstate *s);
 void nl_cheng__stat_reset(nl_cheng_statstate *s, const double *x, size_t n);
 void nl_cheng__stat_replace(nl_cheng_statstate *s, double old_value, double new_value);
+void nl_cheng__stat_undo(nl_cheng_statstate *s, double old_value, double new_value);
 double nl_cheng__stat_value(const nl_cheng_statstate *s);
 /* The same statistic from scratch through nl_stats' tests. */
 double nl_cheng__stat_full(nl_cheng_stat kind, size_t bins, const double *x, size_t n);

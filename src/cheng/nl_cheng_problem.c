@@ -320,7 +320,7 @@ void nl_cheng_undo(nl_cheng_problem *p)
 {
   if (!p->has_undo) return;
   size_t k = p->uk, F = (size_t)p->F;
-  if (p->in_sample[k]) nl_cheng__stat_replace(&p->st, p->g->angle[k], p->utheta);
+  if (p->in_sample[k]) nl_cheng__stat_undo(&p->st, p->utheta, p->g->angle[k]);
   /* the saved cos and sin: what nl_noise_grad2_set_angle(utheta) computed */
   p->g->angle[k] = p->utheta;
   p->g->gx[k] = p->ugx;

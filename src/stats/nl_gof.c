@@ -358,6 +358,8 @@ nl_stats_ks_incr *nl_stats_ks_incr_alloc(const double *x, size_t n, nl_stats_cdf
   s->bplus = nl_xmalloc(s->nblocks * sizeof(double));
   s->bminus = nl_xmalloc(s->nblocks * sizeof(double));
   s->rank = nl_xmalloc((n + 1) * sizeof(double));
+  s->ubplus = nl_xmalloc(s->nblocks * sizeof(double));
+  s->ubminus = nl_xmalloc(s->nblocks * sizeof(double));
   for (size_t i = 0; i <= n; i++) s->rank[i] = (double)i / (double)n;
   for (size_t b = 0; b < s->nblocks; b++) incr_block(s, b);
   incr_total(s);
@@ -372,6 +374,8 @@ void nl_stats_ks_incr_free(nl_stats_ks_incr *s)
   free(s->bplus);
   free(s->bminus);
   free(s->rank);
+  free(s->ubplus);
+  free(s->ubminus);
   free(s);
 }
 
@@ -396,6 +400,7 @@ nl_status nl_stats_ks_incr_replace(nl_stats_ks_incr *s, double old_value, double
                                    nl_error *err)
 {
   size_t n = s->n, p = lower_bound(s->x, n, old_value), q;
+  s->can_undo = 0;
   if (p == n || s->x[p] != old_value)
     return nl_fail(err, NL_EINVAL, "value %.17g is not in the sample", old_value);
   double u = isfinite(new_value) ? s->cdf(new_value, s->params) : NAN;
@@ -406,6 +411,8 @@ nl_status nl_stats_ks_incr_replace(nl_stats_ks_incr *s, double old_value, double
    * between shift by one place): q = p + #{x[p+1..] < new} going up, the
    * first rank below p with x >= new going down. */
   double *x = s->x, *uu = s->u;
+  s->ux = x[p];
+  s->uu = uu[p];
   q = p;
   if (new_value > old_value) {
     size_t end = p + INCR_WALK < n ? p + INCR_WALK : n;
@@ -429,8 +436,47 @@ nl_status nl_stats_ks_incr_replace(nl_stats_ks_incr *s, double old_value, double
   x[q] = new_value;
   uu[q] = u;
   size_t lo = p < q ? p : q, hi = p < q ? q : p;
-  for (size_t b = lo / NL_KS_INCR_BLOCK; b <= hi / NL_KS_INCR_BLOCK; b++) incr_block(s, b);
+  s->from = p;
+  s->to = q;
+  s->ud_plus = s->d_plus;
+  s->ud_minus = s->d_minus;
+  s->ud = s->d;
+  for (size_t b = lo / NL_KS_INCR_BLOCK; b <= hi / NL_KS_INCR_BLOCK; b++) {
+    s->ubplus[b] = s->bplus[b];
+    s->ubminus[b] = s->bminus[b];
+    incr_block(s, b);
+  }
   incr_total(s);
+  s->can_undo = 1;
+  return NL_OK;
+}
+
+nl_status nl_stats_ks_incr_undo(nl_stats_ks_incr *s, nl_error *err)
+{
+  if (!s->can_undo) return nl_fail(err, NL_EINVAL, "no replace to undo");
+  /* The inverse shift puts every value back at its rank; a replace back
+   * would give the same arrays (equal values are interchangeable, and the
+   * old value's first rank among its equals is where it came from). */
+  size_t p = s->from, q = s->to;
+  double *x = s->x, *uu = s->u;
+  if (p < q) {
+    if (q - p < INCR_WALK) for (size_t i = q; i > p; i--) { x[i] = x[i - 1]; uu[i] = uu[i - 1]; }
+    else { memmove(x + p + 1, x + p, (q - p) * sizeof(double)); memmove(uu + p + 1, uu + p, (q - p) * sizeof(double)); }
+  } else {
+    if (p - q < INCR_WALK) for (size_t i = q; i < p; i++) { x[i] = x[i + 1]; uu[i] = uu[i + 1]; }
+    else { memmove(x + q, x + q + 1, (p - q) * sizeof(double)); memmove(uu + q, uu + q + 1, (p - q) * sizeof(double)); }
+  }
+  x[p] = s->ux;
+  uu[p] = s->uu;
+  size_t lo = p < q ? p : q, hi = p < q ? q : p;
+  for (size_t b = lo / NL_KS_INCR_BLOCK; b <= hi / NL_KS_INCR_BLOCK; b++) {
+    s->bplus[b] = s->ubplus[b];
+    s->bminus[b] = s->ubminus[b];
+  }
+  s->d_plus = s->ud_plus;
+  s->d_minus = s->ud_minus;
+  s->d = s->ud;
+  s->can_undo = 0;
   return NL_OK;
 }
 
