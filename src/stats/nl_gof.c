@@ -383,13 +383,13 @@ void nl_stats_ks_incr_free(nl_stats_ks_incr *s)
  * the CPU from mispredicting every other step. */
 static size_t lower_bound(const double *x, size_t n, double v)
 {
-  const double *base = x;
+  size_t lo = 0;
   while (n > 1) {
     size_t half = n / 2;
-    base = base[half - 1] < v ? base + half : base;
+    lo += half & (0 - (size_t)(x[lo + half - 1] < v));   /* a mask, not a branch */
     n -= half;
   }
-  return (size_t)(base - x) + (n == 1 && base[0] < v);
+  return lo + (n == 1 && x[lo] < v);
 }
 
 /* A move of an optimiser usually shifts a value by a few ranks: walk that
