@@ -26,6 +26,7 @@ void nl_cheng__stat_init(nl_cheng_statstate *s, nl_cheng_stat kind, size_t bins)
 void nl_cheng__stat_clear(nl_cheng_statstate *s);
 void nl_cheng__stat_reset(nl_cheng_statstate *s, const double *x, size_t n);
 void nl_cheng__stat_replace(nl_cheng_statstate *s, double old_value, double new_value);
+void nl_cheng__stat_undo(nl_cheng_statstate *s, double old_value, double new_value);
 double nl_cheng__stat_value(const nl_cheng_statstate *s);
 /* The same statistic from scratch through nl_stats' tests. */
 double nl_cheng__stat_full(nl_cheng_stat kind, size_t bins, const double *x, size_t n);
@@ -57,7 +58,8 @@ struct nl_cheng_problem {
   /* undo record of the last move */
   int has_undo;
   size_t uk;
-  double utheta, u_stat, u_con, u_e;
+  double utheta, ugx, ugy, u_stat, u_con, u_e;
+  int tlev;              /* >= 0: only octave tlev changed (tnv holds 1 value a point), -1: F values */
   size_t *tp, ntouch;
   double *tnv, *tterm;
   unsigned *mark, stamp;
@@ -84,24 +86,36 @@ double nl_cheng__amp_scale(const double *amp, int n);
 
 long nl_cheng__lattice_max(double f);
 /* The control value c of nl_cheng.h from a point's octave values (the first
- * `levels` of them); inline because every move evaluates it per point. */
-static inline double nl_cheng__control_value(nl_cheng_con con, const double *nv, const double *amp,
-                                             int levels, double s, int literal)
+ * `levels` of them); inline because every move evaluates it per point. In two
+ * steps: the octave sum (left to right; fire sums |Noise_l|), with nv[rl]
+ * read as rv when rl >= 0 (a move's new value, kept in a register: reading
+ * it back right after storing it would stall the store forwarding), then
+ * the texture's function of the sum. */
+static inline double nl_cheng__octave_sum(nl_cheng_con con, const double *nv, const double *amp,
+                                          int levels, int rl, double rv)
 {
-  if (literal) {   /* eq. 3.8, 4.1-4.3 as printed: the raw fractal sum, sin V, |V| */
-    double v = 0;
-    for (int l = 0; l < levels; l++) v += amp[l] * (con == NL_CHENG_CON_FIRE ? fabs(nv[l]) : nv[l]);
-    return con == NL_CHENG_CON_SIN ? sin(v) : con == NL_CHENG_CON_ABS ? fabs(v) : v;
-  }
   double v = 0;
-  if (con == NL_CHENG_CON_FIRE) {
-    for (int l = 0; l < levels; l++) v += amp[l] * fabs(nv[l]);
-    return s * v;
-  }
-  for (int l = 0; l < levels; l++) v += amp[l] * nv[l];
+  if (con == NL_CHENG_CON_FIRE)
+    for (int l = 0; l < levels; l++) v += amp[l] * fabs(l == rl ? rv : nv[l]);
+  else
+    for (int l = 0; l < levels; l++) v += amp[l] * (l == rl ? rv : nv[l]);
+  return v;
+}
+
+static inline double nl_cheng__control_of_sum(nl_cheng_con con, double v, double s, int literal)
+{
+  if (literal)   /* eq. 3.8, 4.1-4.3 as printed: the raw fractal sum, sin V, |V| */
+    return con == NL_CHENG_CON_SIN ? sin(v) : con == NL_CHENG_CON_ABS ? fabs(v) : v;
+  if (con == NL_CHENG_CON_FIRE) return s * v;
   v *= s;   /* V in [-1, 1] */
   return con == NL_CHENG_CON_SIN ? 0.5 * (1.0 + sin(NL_PI * v))
        : con == NL_CHENG_CON_ABS ? fabs(v) : 0.5 * (1.0 + v);
+}
+
+static inline double nl_cheng__control_value(nl_cheng_con con, const double *nv, const double *amp,
+                                             int levels, double s, int literal)
+{
+  return nl_cheng__control_of_sum(con, nl_cheng__octave_sum(con, nv, amp, levels, -1, 0.0), s, literal);
 }
 
 #endif

@@ -225,10 +225,11 @@ double nl_cheng_energy(const nl_cheng_problem *p, double *e_stat, double *e_con)
 
 /* Adds W . (dc, ds) to the octaves <= level of every point listed for entry
  * k, saving each point's previous values once; returns the change of E_Con. */
-static double update_points(nl_cheng_problem *p, size_t k, double dc, double ds)
+static double update_points_general(nl_cheng_problem *p, size_t k, double dc, double ds)
 {
   size_t F = (size_t)p->F, M1 = p->m + 1;
   p->ntouch = 0;
+  p->tlev = -1;
   if (++p->stamp == 0) { memset(p->mark, 0, p->np * sizeof *p->mark); p->stamp = 1; }
   for (size_t l = 0; l < (size_t)p->level; l++) {
     const size_t *st = p->lstart + l * M1;
@@ -252,6 +253,50 @@ static double update_points(nl_cheng_problem *p, size_t k, double dc, double ds)
   return d;
 }
 
+/* The annealer's case: entry k is in one octave's lists only (a level's
+ * variables are used by no lower octave), so each listed point appears once
+ * and only octave l changes. Same operations in the same order as the
+ * general path (each point's value updated, its term recomputed, the change
+ * summed in list order), one pass, one saved value a point. */
+static double update_points_one(nl_cheng_problem *p, size_t k, size_t l, double dc, double ds)
+{
+  size_t F = (size_t)p->F, M1 = p->m + 1;
+  const size_t *st = p->lstart + l * M1;
+  const uint32_t *item = p->litem;
+  const double *lw = p->lw, *amp = p->amp, *dv = p->pat->d;
+  double *nv = p->nv, *term = p->term, *tnv = p->tnv, *tterm = p->tterm, s = p->s;
+  size_t *tp = p->tp, t = 0;
+  nl_cheng_con con = p->c.con;
+  int levels = p->level, literal = p->c.literal;
+  double d = 0;
+  for (size_t q = st[k]; q < st[k + 1]; q++, t++) {
+    size_t i = item[q];
+    double *v = nv + i * F;
+    tp[t] = i;
+    tnv[t] = v[l];
+    tterm[t] = term[i];
+    double vl = v[l] + (lw[2 * q] * dc + lw[2 * q + 1] * ds);
+    v[l] = vl;
+    double e = nl_cheng__control_of_sum(con, nl_cheng__octave_sum(con, v, amp, levels, (int)l, vl), s, literal) - dv[i];
+    term[i] = e * e;
+    d += term[i] - tterm[t];
+  }
+  p->ntouch = t;
+  p->tlev = (int)l;
+  return d;
+}
+
+static double update_points(nl_cheng_problem *p, size_t k, double dc, double ds)
+{
+  size_t M1 = p->m + 1, only = 0;
+  int lists = 0;
+  for (size_t l = 0; l < (size_t)p->level; l++) {
+    const size_t *st = p->lstart + l * M1;
+    if (st[k] < st[k + 1]) { lists++; only = l; }
+  }
+  return lists <= 1 ? update_points_one(p, k, only, dc, ds) : update_points_general(p, k, dc, ds);
+}
+
 double nl_cheng_move(nl_cheng_problem *p, size_t k, double theta)
 {
   if (k >= p->m) return nl_cheng__amp_move(p, k - p->m, theta);   /* a gain (nl_cheng_amp.c) */
@@ -266,6 +311,8 @@ double nl_cheng_move(nl_cheng_problem *p, size_t k, double theta)
     p->e_stat = nl_cheng__stat_value(&p->st);
   }
   double gx = p->g->gx[k], gy = p->g->gy[k];
+  p->ugx = gx;
+  p->ugy = gy;
   nl_noise_grad2_set_angle(p->g, k, theta);
   p->e_con += update_points(p, k, p->g->gx[k] - gx, p->g->gy[k] - gy);
   p->e = nl_cheng_objective(&p->c, p->e_stat, p->e_con);
@@ -277,12 +324,24 @@ void nl_cheng_undo(nl_cheng_problem *p)
   if (!p->has_undo) return;
   if (p->uk >= p->m) { nl_cheng__amp_undo(p); return; }
   size_t k = p->uk, F = (size_t)p->F;
-  if (p->in_sample[k]) nl_cheng__stat_replace(&p->st, p->g->angle[k], p->utheta);
-  nl_noise_grad2_set_angle(p->g, k, p->utheta);
-  for (size_t t = 0; t < p->ntouch; t++) {
-    size_t i = p->tp[t];
-    memcpy(p->nv + i * F, p->tnv + t * F, F * sizeof *p->nv);
-    p->term[i] = p->tterm[t];
+  if (p->in_sample[k]) nl_cheng__stat_undo(&p->st, p->utheta, p->g->angle[k]);
+  /* the saved cos and sin: what nl_noise_grad2_set_angle(utheta) computed */
+  p->g->angle[k] = p->utheta;
+  p->g->gx[k] = p->ugx;
+  p->g->gy[k] = p->ugy;
+  if (p->tlev >= 0) {
+    size_t l = (size_t)p->tlev;
+    for (size_t t = 0; t < p->ntouch; t++) {
+      size_t i = p->tp[t];
+      p->nv[i * F + l] = p->tnv[t];
+      p->term[i] = p->tterm[t];
+    }
+  } else {
+    for (size_t t = 0; t < p->ntouch; t++) {
+      size_t i = p->tp[t];
+      memcpy(p->nv + i * F, p->tnv + t * F, F * sizeof *p->nv);
+      p->term[i] = p->tterm[t];
+    }
   }
   p->e_stat = p->u_stat;
   p->e_con = p->u_con;

@@ -60,6 +60,19 @@ void nl_cheng__stat_replace(nl_cheng_statstate *s, double old_value, double new_
   }
 }
 
+/* Takes back the last replace (old_value -> new_value): KS and Kuiper put
+ * the saved state back (nl_stats_ks_incr_undo), chi-square moves the count. */
+void nl_cheng__stat_undo(nl_cheng_statstate *s, double old_value, double new_value)
+{
+  if (s->n == 0) return;
+  if (s->kind == NL_CHENG_STAT_CHISQ) { nl_cheng__stat_replace(s, new_value, old_value); return; }
+  nl_error err;
+  if (nl_stats_ks_incr_undo(s->ks, &err)) {
+    fprintf(stderr, "nl_cheng: %s\n", err.msg);
+    abort();
+  }
+}
+
 /* Cramer's V of a chi-square statistic: chi2 on KS's scale (see nl_cheng.h). */
 static double cramer_v(double chi2, size_t n, size_t k)
 {

@@ -81,14 +81,18 @@ double nl_stats_cdf_uniform(double x, void *params)
  * incremental) uses these, which is what makes them agree bit for bit. */
 static inline double term_plus(size_t i, size_t n, double u) { return (double)(i + 1) / (double)n - u; }
 static inline double term_minus(size_t i, size_t n, double u) { return u - (double)i / (double)n; }
+/* fmax of two non-NaN doubles, inline: x86's maxsd, which is what glibc's
+ * fmax executes for ordered operands (a > b ? a : b), so every result is the
+ * same double; the terms here are never NaN (u is checked to lie in [0, 1]). */
+static inline double max2(double a, double b) { return a > b ? a : b; }
 
 static void ks_range_max(const double *u, size_t lo, size_t hi, size_t n,
                          double *dp, double *dm)
 {
   double p = -INFINITY, m = -INFINITY;
   for (size_t i = lo; i < hi; i++) {
-    p = fmax(p, term_plus(i, n, u[i]));
-    m = fmax(m, term_minus(i, n, u[i]));
+    p = max2(p, term_plus(i, n, u[i]));
+    m = max2(m, term_minus(i, n, u[i]));
   }
   *dp = p;
   *dm = m;
@@ -278,22 +282,65 @@ nl_status nl_stats_ks2_test(const double *x, size_t n1, const double *y, size_t 
 
 /* ---- incremental KS ------------------------------------------------------ */
 
+/* The hot path of the optimisers (nl_cheng). Every term is the same double
+ * as term_plus/term_minus's (rank[i] = (double)i / (double)n is that very
+ * quotient), and a maximum is a selection, so any order of taking it gives
+ * the same double as ks_range_max's left-to-right scan; the one value two
+ * orders could tell apart, the sign of a zero maximum, cannot reach d or
+ * D+ + D- (D+ + D- >= 1/n, so a zero D- sits beside a positive D+). */
+#if defined(__SSE2__)
+#include <emmintrin.h>
+static inline double hmax(__m128d v) { return max2(_mm_cvtsd_f64(v), _mm_cvtsd_f64(_mm_unpackhi_pd(v, v))); }
+#endif
+
 static void incr_block(nl_stats_ks_incr *s, size_t b)
 {
-  size_t lo = b * NL_KS_INCR_BLOCK, hi = lo + NL_KS_INCR_BLOCK;
-  ks_range_max(s->u, lo, hi < s->n ? hi : s->n, s->n, &s->bplus[b], &s->bminus[b]);
+  size_t lo = b * NL_KS_INCR_BLOCK, hi = lo + NL_KS_INCR_BLOCK, i = lo;
+  if (hi > s->n) hi = s->n;
+  const double *u = s->u, *r = s->rank;
+  double p = -INFINITY, m = -INFINITY;
+#if defined(__SSE2__)
+  if (hi - lo >= 8) {   /* four independent chains of maxpd */
+    __m128d p0 = _mm_set1_pd(-INFINITY), p1 = p0, m0 = p0, m1 = p0;
+    for (; i + 4 <= hi; i += 4) {
+      __m128d u0 = _mm_loadu_pd(u + i), u1 = _mm_loadu_pd(u + i + 2);
+      p0 = _mm_max_pd(p0, _mm_sub_pd(_mm_loadu_pd(r + i + 1), u0));
+      p1 = _mm_max_pd(p1, _mm_sub_pd(_mm_loadu_pd(r + i + 3), u1));
+      m0 = _mm_max_pd(m0, _mm_sub_pd(u0, _mm_loadu_pd(r + i)));
+      m1 = _mm_max_pd(m1, _mm_sub_pd(u1, _mm_loadu_pd(r + i + 2)));
+    }
+    p = hmax(_mm_max_pd(p0, p1));
+    m = hmax(_mm_max_pd(m0, m1));
+  }
+#endif
+  for (; i < hi; i++) {
+    p = max2(p, r[i + 1] - u[i]);
+    m = max2(m, u[i] - r[i]);
+  }
+  s->bplus[b] = p;
+  s->bminus[b] = m;
 }
 
 static void incr_total(nl_stats_ks_incr *s)
 {
   double p = -INFINITY, m = -INFINITY;
-  for (size_t b = 0; b < s->nblocks; b++) {
-    p = fmax(p, s->bplus[b]);
-    m = fmax(m, s->bminus[b]);
+  size_t b = 0;
+#if defined(__SSE2__)
+  __m128d vp = _mm_set1_pd(-INFINITY), vm = vp;
+  for (; b + 2 <= s->nblocks; b += 2) {
+    vp = _mm_max_pd(vp, _mm_loadu_pd(s->bplus + b));
+    vm = _mm_max_pd(vm, _mm_loadu_pd(s->bminus + b));
+  }
+  p = hmax(vp);
+  m = hmax(vm);
+#endif
+  for (; b < s->nblocks; b++) {
+    p = max2(p, s->bplus[b]);
+    m = max2(m, s->bminus[b]);
   }
   s->d_plus = p;
   s->d_minus = m;
-  s->d = fmax(p, m);
+  s->d = max2(p, m);
 }
 
 nl_stats_ks_incr *nl_stats_ks_incr_alloc(const double *x, size_t n, nl_stats_cdf_fn cdf, void *params,
@@ -310,6 +357,10 @@ nl_stats_ks_incr *nl_stats_ks_incr_alloc(const double *x, size_t n, nl_stats_cdf
   s->nblocks = (n + NL_KS_INCR_BLOCK - 1) / NL_KS_INCR_BLOCK;
   s->bplus = nl_xmalloc(s->nblocks * sizeof(double));
   s->bminus = nl_xmalloc(s->nblocks * sizeof(double));
+  s->rank = nl_xmalloc((n + 1) * sizeof(double));
+  s->ubplus = nl_xmalloc(s->nblocks * sizeof(double));
+  s->ubminus = nl_xmalloc(s->nblocks * sizeof(double));
+  for (size_t i = 0; i <= n; i++) s->rank[i] = (double)i / (double)n;
   for (size_t b = 0; b < s->nblocks; b++) incr_block(s, b);
   incr_total(s);
   return s;
@@ -322,46 +373,110 @@ void nl_stats_ks_incr_free(nl_stats_ks_incr *s)
   free(s->u);
   free(s->bplus);
   free(s->bminus);
+  free(s->rank);
+  free(s->ubplus);
+  free(s->ubminus);
   free(s);
 }
 
-/* First index with x[i] >= v (lower_bound). */
+/* First index with x[i] >= v (lower_bound); the branch-free halving keeps
+ * the CPU from mispredicting every other step. */
 static size_t lower_bound(const double *x, size_t n, double v)
 {
-  size_t lo = 0, hi = n;
-  while (lo < hi) {
-    size_t mid = lo + (hi - lo) / 2;
-    if (x[mid] < v) lo = mid + 1; else hi = mid;
+  size_t lo = 0;
+  while (n > 1) {
+    size_t half = n / 2;
+    lo += half & (0 - (size_t)(x[lo + half - 1] < v));   /* a mask, not a branch */
+    n -= half;
   }
-  return lo;
+  return lo + (n == 1 && x[lo] < v);
 }
+
+/* A move of an optimiser usually shifts a value by a few ranks: walk that
+ * far, then fall back to a binary search and memmove. */
+#define INCR_WALK 16
 
 nl_status nl_stats_ks_incr_replace(nl_stats_ks_incr *s, double old_value, double new_value,
                                    nl_error *err)
 {
   size_t n = s->n, p = lower_bound(s->x, n, old_value), q;
+  s->can_undo = 0;
   if (p == n || s->x[p] != old_value)
     return nl_fail(err, NL_EINVAL, "value %.17g is not in the sample", old_value);
   double u = isfinite(new_value) ? s->cdf(new_value, s->params) : NAN;
   if (!(u >= 0.0 && u <= 1.0))
     return nl_fail(err, NL_EINVAL, "new value %g (F = %g) is not finite or F not in [0, 1]",
                    new_value, u);
-  /* Remove rank p, insert at the rank that keeps the order: shift the
-   * ranks in between by one place. */
+  /* Remove rank p, insert at the rank that keeps the order (the ranks in
+   * between shift by one place): q = p + #{x[p+1..] < new} going up, the
+   * first rank below p with x >= new going down. */
+  double *x = s->x, *uu = s->u;
+  s->ux = x[p];
+  s->uu = uu[p];
+  q = p;
   if (new_value > old_value) {
-    q = lower_bound(s->x + p + 1, n - p - 1, new_value) + p;   /* final rank */
-    memmove(s->x + p, s->x + p + 1, (q - p) * sizeof(double));
-    memmove(s->u + p, s->u + p + 1, (q - p) * sizeof(double));
+    size_t end = p + INCR_WALK < n ? p + INCR_WALK : n;
+    while (q + 1 < end && x[q + 1] < new_value) { x[q] = x[q + 1]; uu[q] = uu[q + 1]; q++; }
+    if (q + 1 == end && end < n) {   /* walked the whole stretch: search the rest */
+      size_t r = lower_bound(x + q + 1, n - q - 1, new_value) + q;
+      memmove(x + q, x + q + 1, (r - q) * sizeof(double));
+      memmove(uu + q, uu + q + 1, (r - q) * sizeof(double));
+      q = r;
+    }
   } else {
-    q = lower_bound(s->x, p, new_value);
-    memmove(s->x + q + 1, s->x + q, (p - q) * sizeof(double));
-    memmove(s->u + q + 1, s->u + q, (p - q) * sizeof(double));
+    size_t end = p > INCR_WALK ? p - INCR_WALK : 0;
+    while (q > end && x[q - 1] >= new_value) { x[q] = x[q - 1]; uu[q] = uu[q - 1]; q--; }
+    if (q == end && end > 0) {
+      size_t r = lower_bound(x, q, new_value);
+      memmove(x + r + 1, x + r, (q - r) * sizeof(double));
+      memmove(uu + r + 1, uu + r, (q - r) * sizeof(double));
+      q = r;
+    }
   }
-  s->x[q] = new_value;
-  s->u[q] = u;
+  x[q] = new_value;
+  uu[q] = u;
   size_t lo = p < q ? p : q, hi = p < q ? q : p;
-  for (size_t b = lo / NL_KS_INCR_BLOCK; b <= hi / NL_KS_INCR_BLOCK; b++) incr_block(s, b);
+  s->from = p;
+  s->to = q;
+  s->ud_plus = s->d_plus;
+  s->ud_minus = s->d_minus;
+  s->ud = s->d;
+  for (size_t b = lo / NL_KS_INCR_BLOCK; b <= hi / NL_KS_INCR_BLOCK; b++) {
+    s->ubplus[b] = s->bplus[b];
+    s->ubminus[b] = s->bminus[b];
+    incr_block(s, b);
+  }
   incr_total(s);
+  s->can_undo = 1;
+  return NL_OK;
+}
+
+nl_status nl_stats_ks_incr_undo(nl_stats_ks_incr *s, nl_error *err)
+{
+  if (!s->can_undo) return nl_fail(err, NL_EINVAL, "no replace to undo");
+  /* The inverse shift puts every value back at its rank; a replace back
+   * would give the same arrays (equal values are interchangeable, and the
+   * old value's first rank among its equals is where it came from). */
+  size_t p = s->from, q = s->to;
+  double *x = s->x, *uu = s->u;
+  if (p < q) {
+    if (q - p < INCR_WALK) for (size_t i = q; i > p; i--) { x[i] = x[i - 1]; uu[i] = uu[i - 1]; }
+    else { memmove(x + p + 1, x + p, (q - p) * sizeof(double)); memmove(uu + p + 1, uu + p, (q - p) * sizeof(double)); }
+  } else {
+    if (p - q < INCR_WALK) for (size_t i = q; i < p; i++) { x[i] = x[i + 1]; uu[i] = uu[i + 1]; }
+    else { memmove(x + q, x + q + 1, (p - q) * sizeof(double)); memmove(uu + q, uu + q + 1, (p - q) * sizeof(double)); }
+  }
+  x[p] = s->ux;
+  uu[p] = s->uu;
+  size_t lo = p < q ? p : q, hi = p < q ? q : p;
+  for (size_t b = lo / NL_KS_INCR_BLOCK; b <= hi / NL_KS_INCR_BLOCK; b++) {
+    s->bplus[b] = s->ubplus[b];
+    s->bminus[b] = s->ubminus[b];
+  }
+  s->d_plus = s->ud_plus;
+  s->d_minus = s->ud_minus;
+  s->d = s->ud;
+  s->can_undo = 0;
   return NL_OK;
 }
 

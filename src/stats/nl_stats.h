@@ -168,6 +168,12 @@ typedef struct {
   size_t nblocks;
   double *bplus;      /* per block of NL_KS_INCR_BLOCK ranks: max of D+ terms */
   double *bminus;     /* ... and of D- terms */
+  double *rank;       /* i / n for i = 0..n: the terms' rank fractions, divided once */
+  /* undo record of the last replace (nl_stats_ks_incr_undo) */
+  int can_undo;
+  size_t from, to;    /* the value moved from rank `from` to rank `to` */
+  double ux, uu, ud_plus, ud_minus, ud;
+  double *ubplus, *ubminus;   /* the touched blocks' previous maxima, same indices */
   double d_plus, d_minus, d;
 } nl_stats_ks_incr;
 #define NL_KS_INCR_BLOCK 32
@@ -182,6 +188,11 @@ void nl_stats_ks_incr_free(nl_stats_ks_incr *s);
  * new_value is not finite. To undo a move, replace new_value by old_value. */
 nl_status nl_stats_ks_incr_replace(nl_stats_ks_incr *s, double old_value, double new_value,
                                    nl_error *err);
+/* Takes back the last successful replace: the state becomes exactly what
+ * replacing new_value by old_value would give, without searching or
+ * recomputing (the saved values are put back). NL_EINVAL if there is
+ * nothing to take back (no replace since the last undo, or it failed). */
+nl_status nl_stats_ks_incr_undo(nl_stats_ks_incr *s, nl_error *err);
 /* p-value of the current statistic, nl_stats_ks_sf(n, d). */
 double nl_stats_ks_incr_p(const nl_stats_ks_incr *s);
 

@@ -181,6 +181,19 @@ NL_TEST(incremental_ks_equals_full_recomputation)
     size_t i = gsl_rng_uniform_int(rng, N);
     double nv = move % 3 ? fmod(x[i] + 0.05 * (gsl_rng_uniform(rng) - 0.5) + NL_TWO_PI, NL_TWO_PI)
                          : NL_TWO_PI * gsl_rng_uniform(rng);
+    if (move % 5 == 0) {   /* replace and undo: the state comes back bit for bit */
+      double *x0 = malloc(2 * N * sizeof *x0), b0[4 * (N / NL_KS_INCR_BLOCK)], d0[3] = {s->d, s->d_plus, s->d_minus};
+      memcpy(x0, s->x, N * sizeof *x0);
+      memcpy(x0 + N, s->u, N * sizeof *x0);
+      memcpy(b0, s->bplus, s->nblocks * sizeof *b0);
+      memcpy(b0 + s->nblocks, s->bminus, s->nblocks * sizeof *b0);
+      bad += nl_stats_ks_incr_replace(s, x[i], nv, NULL) != NL_OK || nl_stats_ks_incr_undo(s, NULL) != NL_OK;
+      bad += memcmp(x0, s->x, N * sizeof *x0) || memcmp(x0 + N, s->u, N * sizeof *x0);
+      bad += memcmp(b0, s->bplus, s->nblocks * sizeof *b0) || memcmp(b0 + s->nblocks, s->bminus, s->nblocks * sizeof *b0);
+      bad += memcmp(d0, (double[3]){s->d, s->d_plus, s->d_minus}, sizeof d0) != 0;
+      bad += nl_stats_ks_incr_undo(s, NULL) != NL_EINVAL;   /* nothing left to undo */
+      free(x0);
+    }
     if (nl_stats_ks_incr_replace(s, x[i], nv, NULL) != NL_OK) { bad++; continue; }
     x[i] = nv;
     if (move % 97 == 0 || move > 19900) {
