@@ -147,6 +147,26 @@ consistent "rerun"
 [ -f "$r/s3_fbm/manifest.tsv" ] && [ -f "$r/s4_marble/manifest.tsv" ] || fail "rerun: a folder is incomplete"
 [ -z "$(find "$r" -name '.fig-*' -o -name '.manifest-pending.tsv')" ] || fail "rerun left temporaries"
 
+# --jobs (default: the number of cores; the rerun above ran S3 and S4 at
+# once): the same tables, figures' data and report sections as --jobs 1, and
+# the messages in report order; a failed experiment fails the whole run with
+# its message while the others finish.
+j1="$out/j1"
+"$nl" reproduce --quick --jobs 1 --out "$j1" S3 S4 2>"$out/j1.log" || { cat "$out/j1.log"; fail "reproduce --jobs 1 failed"; }
+for f in "$j1"/*/*.tsv "$j1"/*/report.md; do
+  case "$f" in */manifest.tsv) continue ;; esac
+  cmp -s "$f" "$r/${f#"$j1"/}" || fail "--jobs 1 and --jobs $(nproc) differ in ${f#"$j1"/}"
+done
+[ "$(grep -o '^noiselab: \[[0-9]/2\] [a-z0-9_]*\|^noiselab: [a-z0-9_]* done in' "$out/rerun.log" | sed 's/ done in//')" = \
+  "$(printf 'noiselab: [1/2] s3_fbm\nnoiselab: s3_fbm\nnoiselab: [2/2] s4_marble\nnoiselab: s4_marble')" ] \
+  || fail "--jobs: messages not in report order: $(cat "$out/rerun.log")"
+jf="$out/jfail"; mkdir -p "$jf"; : >"$jf/s3_fbm"
+rc=0; "$nl" reproduce --quick --jobs 2 --out "$jf" S3 S4 2>"$out/jfail.log" || rc=$?
+[ "$rc" = 2 ] && grep -q '^noiselab: s3_fbm failed$' "$out/jfail.log" \
+  && [ "$(tail -n 1 "$out/jfail.log")" = "noiselab: reproduce: 1 experiment(s) failed" ] \
+  && [ -f "$jf/s4_marble/manifest.tsv" ] && grep -q '<a id="s4_marble">' "$jf/REPORT.md" \
+  && [ -z "$(find "$jf" -name '.log-*')" ] || fail "--jobs 2 with a failing experiment: rc=$rc: $(cat "$out/jfail.log")"
+
 # bench: every regular executable bench_* runs; a failure is reported at the end.
 b="$out/bench"; mkdir -p "$b/bench_cellular.p"
 printf '#!/bin/sh\necho ran-a >>"%s/ran"\n' "$b" >"$b/bench_a"

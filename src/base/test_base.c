@@ -1,9 +1,10 @@
 /* Tests of base: the seed rule (splitmix64 against its published reference,
  * distinct stream ids give different and uncorrelated streams, replicates
  * are consecutive run seeds), directories, writable targets, memory sizes,
- * atomic files (a failed write leaves the old file) and range-checked
- * parsing. */
+ * atomic files (a failed write leaves the old file), range-checked
+ * parsing, and nl_parallel_for: the same bytes for 1, 2, 3 and 7 threads. */
 #include "base/nl_base.h"
+#include "base/nl_parallel.h"
 #include "nl_test.h"
 
 #include <gsl/gsl_rng.h>
@@ -14,6 +15,7 @@
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <dlfcn.h>
 #include <unistd.h>
 
 static const char *dir;
@@ -247,6 +249,58 @@ NL_TEST(range_checked_parsing)
   NL_CHECK(nl_parse_double("--x", "0.5 ", 0, 1, &v, &err) == NL_EINVAL);
   NL_CHECK(nl_parse_double("--x", "", 0, 1, &v, &err) == NL_EINVAL);
   NL_CHECK(v == 7);
+}
+
+/* nl_parallel_for: every item once, per-item streams, so the output bytes do
+ * not depend on the thread count; nested regions run serially; thread ids
+ * below nl_parallel_threads; OpenBLAS's thread count restored. */
+typedef struct {
+  double *out;
+  int *calls, *thread_seen, nested_threads;
+  unsigned long seed;
+} par_ctx;
+
+static void par_item(void *vc, size_t i, int t)
+{
+  par_ctx *c = vc;
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, nl_seed_stream(c->seed, "test.parallel", i));
+  double s = 0;   /* work that takes a while and depends on the stream only */
+  for (int k = 0; k < 2000; k++) s += sin(gsl_rng_uniform(rng) * (double)(k + 1)) / (k + 1);
+  c->out[i] = s;
+  c->calls[i]++;
+  c->thread_seen[i] = t;
+  if (i == 3) c->nested_threads = nl_parallel_threads(100, 4);
+  gsl_rng_free(rng);
+}
+
+NL_TEST(parallel_for_same_bytes_for_any_thread_count)
+{
+  enum { N = 301 };
+  double ref[N];
+  int (*blas_get)(void) = (int (*)(void))dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
+  int blas0 = blas_get ? blas_get() : 0;
+  const int counts[] = {1, 2, 3, 7};
+  for (size_t k = 0; k < sizeof counts / sizeof *counts; k++) {
+    double out[N];
+    int calls[N] = {0}, seen[N];
+    par_ctx c = {.out = out, .calls = calls, .thread_seen = seen, .nested_threads = -1, .seed = 42};
+    int nt = nl_parallel_threads(N, counts[k]);
+    NL_CHECK(nt == counts[k]);
+    nl_parallel_for(N, counts[k], par_item, &c);
+    int once = 1, ids = 1;
+    for (int i = 0; i < N; i++) { once &= calls[i] == 1; ids &= seen[i] >= 0 && seen[i] < nt; }
+    NL_CHECK(once && ids);
+    NL_CHECK(c.nested_threads == 1);   /* inside a region: serial */
+    if (k == 0) memcpy(ref, out, sizeof ref);
+    else NL_CHECK(memcmp(ref, out, sizeof ref) == 0);
+    if (blas_get) NL_CHECK(blas_get() == blas0);
+  }
+  NL_CHECK(nl_parallel_threads(N, 2) == 2);   /* the flag is cleared after a region */
+  NL_CHECK(nl_parallel_threads(1, 8) == 1 && nl_parallel_threads(5, 0) == 1);
+  NL_CHECK(nl_parallel_threads(1000, 1000) == NL_PARALLEL_MAX);
+  NL_CHECK(nl_parallel_cores() >= 1);
+  nl_parallel_for(0, 4, par_item, NULL);   /* no items: fn never called */
 }
 
 int main(void)

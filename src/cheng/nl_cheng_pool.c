@@ -1,11 +1,11 @@
 /* Solution pools of Cheng sec. 3.5.1-3.5.2: E_R of eq. 3.16-3.18 re-annealed
  * over the low-frequency entries from Q random starts, N cold-tail states
- * kept per run (rules in nl_cheng_repro.h). Runs go to POSIX
- * threads, but each run's result depends only on its stream
+ * kept per run (rules in nl_cheng_repro.h). Runs go to nl_parallel_for
+ * (base/nl_parallel.h), but each run's result depends only on its stream
  * nl_seed_stream(seed, "cheng.pool.run", q) and lands in slot q, so the pool is the same for any number of threads. */
 #include "cheng/nl_cheng_internal.h"
+#include "base/nl_parallel.h"
 
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -64,10 +64,11 @@ typedef struct {
   size_t nlow, keep;
   double *theta, *e;     /* Q x N x nlow, Q x N: slot q holds run q's tail */
   double *best, *start, *seconds;
-  pthread_mutex_t lock;
-  int next;
-  nl_status status;
-  nl_error err;
+  /* Per thread t of nl_parallel_for: a problem over its own table copy and
+   * a generator, re-seeded by every run (scratch, not state across runs). */
+  nl_cheng_problem **p;
+  nl_noise_grad2 **g;
+  gsl_rng **rng;
 } pool_job;
 
 /* The cold tail: N sweeps of n_low Metropolis moves at the final temperature
@@ -115,26 +116,10 @@ static void pool_run(pool_job *j, nl_cheng_problem *p, nl_noise_grad2 *g, gsl_rn
   j->seconds[q] = nl_time_now() - t0;
 }
 
-static void *pool_worker(void *arg)
+static void pool_item(void *ctx, size_t q, int t)
 {
-  pool_job *j = arg;
-  nl_noise_grad2 *g = nl_noise_grad2_alloc(j->opt->m);
-  nl_noise_grad2_copy(g, j->opt);
-  nl_error err;
-  nl_cheng_problem *p = nl_cheng_problem_alloc(j->c, j->pat, g, &err);
-  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-  for (;;) {
-    pthread_mutex_lock(&j->lock);
-    int q = j->next++;
-    if (!p && j->status == NL_OK) { j->status = NL_EINVAL; j->err = err; }
-    pthread_mutex_unlock(&j->lock);
-    if (!p || q >= j->o->runs) break;
-    pool_run(j, p, g, rng, q);
-  }
-  gsl_rng_free(rng);
-  nl_cheng_problem_free(p);
-  nl_noise_grad2_free(g);
-  return NULL;
+  pool_job *j = ctx;
+  pool_run(j, j->p[t], j->g[t], j->rng[t], (int)q);
 }
 
 static nl_status check_pool_options(const nl_cheng_pool_options *o, const nl_cheng_config *c,
@@ -188,14 +173,21 @@ nl_status nl_cheng_pool_collect(const nl_noise_grad2 *opt, const nl_cheng_config
   pool_job j = {.opt = opt, .c = c, .pat = pat, .o = o, .seed = seed, .nlow = nlow,
                 .keep = (size_t)o->keep, .theta = pool->theta, .e = pool->e,
                 .best = pool->run_best, .start = pool->run_start, .seconds = pool->run_seconds};
-  pthread_mutex_init(&j.lock, NULL);
-  int nt = o->threads < o->runs ? o->threads : o->runs;
-  pthread_t th[64];
-  for (int t = 1; t < nt; t++) pthread_create(&th[t], NULL, pool_worker, &j);
-  pool_worker(&j);
-  for (int t = 1; t < nt; t++) pthread_join(th[t], NULL);
-  pthread_mutex_destroy(&j.lock);
-  if (j.status) { *err = j.err; nl_cheng_pool_free(pool); return j.status; }
+  int nt = nl_parallel_threads((size_t)o->runs, o->threads);
+  nl_cheng_problem *tp[NL_PARALLEL_MAX] = {0};
+  nl_noise_grad2 *tg[NL_PARALLEL_MAX];
+  gsl_rng *tr[NL_PARALLEL_MAX];
+  nl_status st = NL_OK;
+  for (int t = 0; t < nt; t++) {
+    tg[t] = nl_noise_grad2_alloc(opt->m);
+    nl_noise_grad2_copy(tg[t], opt);
+    tr[t] = gsl_rng_alloc(gsl_rng_mt19937);
+    if (!st && !(tp[t] = nl_cheng_problem_alloc(c, pat, tg[t], err))) st = NL_EINVAL;
+  }
+  j.p = tp; j.g = tg; j.rng = tr;
+  if (!st) nl_parallel_for((size_t)o->runs, nt, pool_item, &j);
+  for (int t = 0; t < nt; t++) { nl_cheng_problem_free(tp[t]); nl_noise_grad2_free(tg[t]); gsl_rng_free(tr[t]); }
+  if (st) { nl_cheng_pool_free(pool); return st; }
   pool_compact(pool, &j);   /* in place: slot order is run order, compaction only moves left */
   nl_noise_grad2 *g = nl_noise_grad2_alloc(opt->m);
   nl_noise_grad2_copy(g, opt);

@@ -1,6 +1,7 @@
 #define _GNU_SOURCE   /* RTLD_DEFAULT, dladdr */
 #include "harness/nl_harness.h"
 #include "harness/nl_build_info.h"
+#include "base/nl_parallel.h"
 #include "stats/nl_stats.h"
 
 #include <gsl/gsl_version.h>
@@ -20,6 +21,7 @@ struct nl_harness {
   char *out;
   unsigned long seed;
   int seeds, quick;
+  int threads;            /* --threads, default nl_parallel_cores() */
   double t0;
   char started[32];
   int nset;
@@ -51,11 +53,13 @@ struct nl_harness {
 static void usage(const char *name, const char *title)
 {
   printf("%s - %s\n\n"
-         "usage: %s [--out DIR] [--seed N] [--seeds K] [--quick] [--set NAME=VALUE]...\n\n"
+         "usage: %s [--out DIR] [--seed N] [--seeds K] [--quick] [--threads N] [--set NAME=VALUE]...\n\n"
          "  --out DIR     output folder (default results/%s)\n"
          "  --seed N      base seed, 0..4294967295 (default 1)\n"
          "  --seeds K     seeds for means and spreads (default 10; 3 with --quick)\n"
          "  --quick       small sizes, for tests and CI\n"
+         "  --threads N   threads for independent work, 1..64 (default: the number of\n"
+         "                cores); the tables are the same for any N\n"
          "  --set K=V     set an experiment parameter (listed below)\n"
          "  --params      list the parameters as TSV (name, default, min, max, meaning)\n\n"
          "Nothing in the output folder changes until every option and parameter\n"
@@ -133,7 +137,8 @@ nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_erro
 {
   /* GNU style through the tools' parser: --seed 3, --seed=3, unique prefixes. */
   static const nl_opt_spec spec[] = {{"help", 'h', 0}, {"params", 0, 0}, {"quick", 0, 0}, {"out", 0, 1},
-                                     {"seed", 0, 1}, {"seeds", 0, 1}, {"set", 0, 1}, {0}};
+                                     {"seed", 0, 1}, {"seeds", 0, 1}, {"set", 0, 1}, {"threads", 0, 1},
+                                     {0}};
   memset(o, 0, sizeof *o);
   o->seed = 1;
   o->seeds = -1;
@@ -156,6 +161,8 @@ nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_erro
       else { free(o->out); o->out = nl_xstrdup(v); }
     } else if (!strcmp(spec[k].name, "seed")) {
       if (!(st = nl_parse_long("--seed", v, 0, 4294967295L, &n, err))) o->seed = (unsigned long)n;
+    } else if (!strcmp(spec[k].name, "threads")) {
+      if (!(st = nl_parse_long("--threads", v, 1, NL_PARALLEL_MAX, &n, err))) o->threads = (int)n;
     } else if (!strcmp(spec[k].name, "seeds")) {
       if (!(st = nl_parse_long("--seeds", v, 1, 10000, &n, err))) o->seeds = (int)n;
     } else {   /* --set NAME=VALUE */
@@ -199,6 +206,7 @@ nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char
   r->seed = o.seed;
   r->seeds = o.seeds < 0 ? (o.quick ? 3 : 10) : o.seeds;
   r->quick = o.quick;
+  r->threads = o.threads > 0 ? o.threads : nl_parallel_cores();
   r->t0 = nl_time_now();
   r->out = o.out ? o.out : nl_path_join("results", name);
   r->nset = o.nset;
@@ -216,6 +224,7 @@ nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char
   nl_harness_note(r, "seed", "%lu", r->seed);
   nl_harness_note(r, "seeds", "%d", r->seeds);
   note(r, "quick", r->quick ? "yes" : "no");
+  nl_harness_note(r, "threads", "%d", r->threads);   /* speed only: the tables do not depend on it */
   nl_harness_text(r, "## %s\n", title);
   r->last_progress = -1;
   return r;
@@ -255,6 +264,7 @@ static void prepare(nl_harness *r)
 unsigned long nl_harness_seed(const nl_harness *r) { return r->seed; }
 int nl_harness_seeds(const nl_harness *r) { return r->seeds; }
 int nl_harness_quick(const nl_harness *r) { return r->quick; }
+int nl_harness_threads(const nl_harness *r) { return r->threads; }
 const char *nl_harness_dir(const nl_harness *r) { prepare((nl_harness *)r); return r->out; }
 const char *nl_harness_name(const nl_harness *r) { return r->name; }
 

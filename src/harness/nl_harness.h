@@ -70,6 +70,7 @@ typedef struct {
   unsigned long seed;      /* 1 unless --seed */
   int seeds;               /* -1 unless --seeds */
   int quick, help;
+  int threads;             /* 0 unless --threads N (1..NL_PARALLEL_MAX) */
   int params;              /* --params */
   int nset;                /* --set NAME=VALUE, in order */
   char **set_key, **set_val;
@@ -92,6 +93,10 @@ nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char
 unsigned long nl_harness_seed(const nl_harness *r);   /* base seed */
 int nl_harness_seeds(const nl_harness *r);            /* K seeds: seed .. seed+K-1 */
 int nl_harness_quick(const nl_harness *r);
+/* Threads for independent work (--threads N; default nl_parallel_cores()),
+ * passed to nl_parallel_for (base/nl_parallel.h) by the experiment's glue;
+ * no table depends on it (item i writes slot i from its own stream). */
+int nl_harness_threads(const nl_harness *r);
 const char *nl_harness_dir(const nl_harness *r);      /* prepares the folder (see above) */
 const char *nl_harness_name(const nl_harness *r);     /* "s3_fbm" */
 
