@@ -30,6 +30,7 @@ int main(int argc, char **argv)
   int grid = s.grid, k = nl_harness_seeds(r);
   const char *labels[] = {"texture", "pattern", "formula"};
   nl_table *sum = nl_study_cheng_summary_alloc(3, labels);
+  s.cost = nl_study_cheng_cost_alloc();
   for (int t = 0; t < NTEX; t++) {
     nl_cheng_config c = base, cl;
     c.con = (nl_cheng_con)t;   /* eq. 3.8, 4.1, 4.2, 4.3 in nl_cheng_con's order */
@@ -90,6 +91,8 @@ int main(int argc, char **argv)
   double wks = nl_study_column_min(sum, "uniform_ks"), wku = nl_study_column_min(sum, "uniform_kuiper");
   nl_harness_text(r, "Uniformity: the smallest fraction of runs not rejected as non-uniform at alpha = 0.05 is "
                      "%.2f (KS) and %.2f (Kuiper) over the %zu rows.\n", wks, wku, sum->nrows);
+  nl_study_cheng_cost_report(r, s.cost);
+  nl_table_free(s.cost);
   nl_table_free(sum);
   nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);

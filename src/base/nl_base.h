@@ -172,6 +172,9 @@ unsigned long long nl_seed_mix(unsigned long long x);
 
 /* Wall-clock seconds from a monotonic clock. */
 double nl_time_now(void);
+/* CPU seconds of the calling thread (CLOCK_THREAD_CPUTIME_ID): a time that
+ * other threads and other programs on the machine do not inflate. */
+double nl_time_thread_cpu(void);
 
 #define NL_PI 3.14159265358979323846
 #define NL_TWO_PI 6.28318530717958647692

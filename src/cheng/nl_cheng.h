@@ -287,6 +287,11 @@ typedef struct {
   double e_con_random;        /* E_Con of the unoptimised table (nl_cheng_run's start; NAN
                                  from nl_cheng_evaluate alone) */
   double log_gain[NL_CHENG_MAX_OCTAVES];   /* the amplitudes evaluated (config's; nl_cheng_run's optimised) */
+  /* Cost of nl_cheng_run's optimisation (0 from nl_cheng_evaluate alone): moves
+   * tried over all levels, and the thread's CPU seconds from the problem's set-up
+   * to the end of the last level (set-up included, evaluation excluded). */
+  long moves;
+  double cpu_seconds;
 } nl_cheng_eval;
 
 nl_status nl_cheng_evaluate(const nl_noise_grad2 *table, const nl_cheng_config *c,

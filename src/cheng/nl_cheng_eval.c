@@ -87,6 +87,8 @@ nl_status nl_cheng_evaluate(const nl_noise_grad2 *g, const nl_cheng_config *c,
   out->roughness = roughness(g, c, &out->contrast);
   out->e_con_const = const_error(pat);
   out->e_con_random = NAN;
+  out->moves = 0;
+  out->cpu_seconds = 0;
   double stat = nl_cheng__stat_full(c->stat, c->chisq_bins, g->angle, g->m);
   out->e = nl_cheng_objective(c, stat, out->e_con);
   memcpy(out->log_gain, c->log_gain, sizeof out->log_gain);
@@ -116,17 +118,23 @@ nl_status nl_cheng_run(const nl_cheng_config *c, const nl_cheng_pattern *pat, un
 {
   nl_noise_grad2 *g = nl_noise_grad2_alloc(c->m);
   nl_noise_grad2_seed(g, seed);
+  double e_random = control_error(g, c, pat, NULL);   /* baseline: the random start, unoptimised */
+  double t0 = nl_time_thread_cpu();
   nl_cheng_problem *p = nl_cheng_problem_alloc(c, pat, g, err);
   if (!p) { nl_noise_grad2_free(g); return NL_EINVAL; }
-  double e_random = control_error(g, c, pat, NULL);   /* baseline: the random start, unoptimised */
   /* The table and the annealer take streams of their own roles from the one
    * seed (noise.grad2, cheng.anneal), so they are independent. */
+  nl_cheng_level_stats own[NL_CHENG_MAX_OCTAVES];
+  if (!stats) stats = own;
   nl_cheng_optimise(p, seed, stats);
+  double cpu = nl_time_thread_cpu() - t0;
+  long moves = 0;
+  for (int l = 0; l < c->octaves; l++) moves += stats[l].moves;
   nl_cheng_config ce = *c;
   nl_cheng_log_gains(p, ce.log_gain);   /* evaluated with the optimised amplitudes (X6); c's when fixed */
   nl_cheng_problem_free(p);
   nl_status s = ev ? nl_cheng_evaluate(g, &ce, pat, ev, err) : NL_OK;
-  if (ev && !s) ev->e_con_random = e_random;
+  if (ev && !s) { ev->e_con_random = e_random; ev->moves = moves; ev->cpu_seconds = cpu; }
   if (table_out && !s) *table_out = g;
   else nl_noise_grad2_free(g);
   return s;

@@ -174,6 +174,7 @@ void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title,
 {
   s->r = nl_study_cheng_begin(name, title, argc, argv, &s->c, &s->grid, &s->patterns);
   s->role = NULL;
+  s->cost = NULL;
 }
 
 void nl_study_cheng_ready(nl_study_cheng *s) { nl_study_cheng_params_done(s->r, &s->c, s->patterns); }
@@ -194,6 +195,18 @@ nl_noise_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_con
   unsigned long seed0 = s->role ? nl_seed_stream(nl_harness_seed(s->r), s->role, 0) : nl_harness_seed(s->r);
   if (nl_cheng_run_seeds(c, pat, seed0, k, evs, &first, &err)) nl_harness_die(s->r, 1, "%s", err.msg);
   nl_study_cheng_summary_add(sum, nlabels, labels, evs, k);
+  if (s->cost) {
+    char name[160] = "";
+    for (int i = 0; i < nlabels; i++) {
+      if (i) strncat(name, "/", sizeof name - strlen(name) - 1);
+      strncat(name, labels[i], sizeof name - strlen(name) - 1);
+    }
+    double moves = 0, cpu = 0, *t = nl_xmalloc((size_t)k * sizeof *t);
+    for (int i = 0; i < k; i++) { moves += (double)evs[i].moves; cpu += evs[i].cpu_seconds; t[i] = evs[i].cpu_seconds; }
+    nl_table_append(s->cost, "sddddd", name, (double)k, moves / k, cpu / k, k > 1 ? gsl_stats_sd(t, 1, (size_t)k) : 0.0,
+                    cpu > 0 ? moves / cpu : NAN);
+    free(t);
+  }
   free(evs);
   return first;
 }
@@ -296,4 +309,29 @@ double nl_study_cheng_welch_add(nl_table *t, const nl_table *sum, size_t ra, siz
   if (nl_stats_welch_p(ma, sa, na, mb, sb, nb, &p, &err)) p = ma == mb ? 1 : 0;   /* nothing to test */
   nl_table_append(t, "ssssddddddd", group, col, a, b, ma, sa, mb, sb, (double)na, 100 * (ma - mb) / mb, p);
   return p;
+}
+
+nl_table *nl_study_cheng_cost_alloc(void)
+{
+  const char *cols[] = {"case", "seeds", "moves", "cpu_s", "cpu_s_sd", "moves_per_s"};
+  return nl_table_alloc(6, cols);
+}
+
+void nl_study_cheng_cost_report(nl_harness *r, const nl_table *t)
+{
+  nl_harness_write_table(r, t, "timing.tsv");
+  const char *times[] = {"cpu_s", "cpu_s_sd", "moves_per_s"};   /* machine-dependent: never compared */
+  for (int i = 0; i < 3; i++) nl_harness_check(r, "timing.tsv", times[i], "ignore");
+  nl_harness_report_table(r, t, "Timing: cost of one optimisation per row (thread CPU time, so other work on the "
+                          "machine does not inflate it; the machine is in manifest.tsv)", 4);
+  double lo = INFINITY, hi = 0, rlo = INFINITY, rhi = 0;
+  for (size_t q = 0; q < t->nrows; q++) {
+    double c = nl_table_value(t, q, "cpu_s"), m = nl_table_value(t, q, "moves_per_s");
+    lo = fmin(lo, c); hi = fmax(hi, c); rlo = fmin(rlo, m); rhi = fmax(rhi, m);
+  }
+  if (t->nrows)
+    nl_harness_text(r, "Timing: one full multi-level optimisation takes %.3g..%.3g s of CPU over the %zu rows, at "
+                       "%.3g..%.3g M annealing moves per CPU second (set-up and the per-temperature re-sums included; "
+                       "`build/bench/bench_cheng` times the thesis setting alone). C6 sets a reproduction's time per "
+                       "table against one optimisation's.\n", lo, hi, t->nrows, rlo / 1e6, rhi / 1e6);
 }
