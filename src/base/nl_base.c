@@ -257,6 +257,13 @@ double nl_time_now(void)
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+double nl_time_thread_cpu(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 nl_status nl_parse_double(const char *what, const char *s, double lo, double hi,
                           double *out, nl_error *err)
 {
