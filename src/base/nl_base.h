@@ -172,8 +172,9 @@ unsigned long long nl_seed_mix(unsigned long long x);
 
 /* Wall-clock seconds from a monotonic clock. */
 double nl_time_now(void);
-/* CPU seconds of the calling thread (CLOCK_THREAD_CPUTIME_ID): a time that
- * other threads and other programs on the machine do not inflate. */
+/* CPU seconds of the calling thread (CLOCK_THREAD_CPUTIME_ID): a per-item
+ * time that other threads of an nl_parallel_for, or other processes,
+ * running at once do not add to (they still share caches and memory). */
 double nl_time_thread_cpu(void);
 
 #define NL_PI 3.14159265358979323846

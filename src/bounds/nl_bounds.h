@@ -251,7 +251,8 @@ nl_status nl_bounds_bandwidth_seeds(const nl_bounds_reading *rd, unsigned long s
 
 typedef struct { double ms[2]; long evals[2]; long samples; int diff; double max_noise; } nl_bounds_smoke_pair;
 /* Renders s plainly into img0 and incrementally into img1 (s.incremental
- * is ignored): wall times in ms, noise calls of each, the largest
+ * is ignored): the calling thread's CPU times in ms (nl_time_thread_cpu,
+ * so that renders on other threads at once do not count), noise calls of each, the largest
  * difference in 8-bit levels and the largest |noise| of the plain march.
  * img0 or img1 NULL: both images are temporaries. */
 nl_status nl_bounds_smoke_render_pair(const nl_noise_perm3 *p, nl_bounds_smoke s, double *img0, double *img1,

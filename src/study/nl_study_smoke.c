@@ -2,6 +2,9 @@
 #include "study/nl_study_smoke.h"
 #include "study/nl_study.h"
 #include "texture/nl_texture.h"
+#include "base/nl_parallel.h"
+
+#include <stdatomic.h>
 
 #include <math.h>
 #include <stdio.h>
@@ -14,53 +17,94 @@ static double eval_ratio(double plain, double bounded)
   return bounded > 0.0 ? plain / bounded : 1.0;
 }
 
+/* One render of the curve: item i = row * seeds + k, on nl_parallel_for's
+ * thread t with that thread's two image buffers; it writes slot i only. */
+typedef struct {
+  nl_harness *r;
+  const nl_study_smoke_scene *sc;
+  const int *octaves;
+  int n, seeds, timed;
+  double **img;        /* 2 per thread */
+  double *ev0, *ev1, *ms0, *ms1, *tr;   /* per item */
+  int *diff;
+  double *max_noise;
+  nl_image **panels;
+  nl_status *st;
+  nl_error *err;
+  atomic_int done;
+} curve_job;
+
+static void curve_item(void *ctx, size_t i, int t)
+{
+  curve_job *j = ctx;
+  int row = (int)(i / (size_t)j->seeds), k = (int)(i % (size_t)j->seeds);
+  nl_bounds_smoke s = j->sc->s;
+  s.octaves = j->octaves[row] + j->sc->offset;
+  double *img0 = j->img[2 * t], *img1 = j->img[2 * t + 1];
+  nl_noise_perm3 perm;
+  nl_noise_perm3_seed(&perm, nl_seed_replicate(nl_harness_seed(j->r), k));
+  if (j->timed) {
+    nl_bounds_smoke_pair pr;
+    if ((j->st[i] = nl_bounds_smoke_render_pair(&perm, s, img0, img1, &pr, &j->err[i]))) return;
+    j->ev0[i] = (double)pr.evals[0]; j->ev1[i] = (double)pr.evals[1];
+    j->ms0[i] = pr.ms[0]; j->ms1[i] = pr.ms[1];
+    j->tr[i] = pr.ms[0] / pr.ms[1];
+    j->diff[i] = pr.diff;
+    j->max_noise[i] = pr.max_noise;
+  } else {
+    nl_bounds_smoke_stats st;
+    s.incremental = 1;
+    if ((j->st[i] = nl_bounds_smoke_render(&perm, &s, img1, &st, &j->err[i]))) return;
+    j->ev0[i] = (double)st.samples * s.octaves; j->ev1[i] = (double)st.noise_evals;
+    j->ms0[i] = j->ms1[i] = j->tr[i] = 0.0;
+    j->diff[i] = 0; j->max_noise[i] = 0.0;
+  }
+  if (k == 0 && j->panels) j->panels[row] = nl_image_from_values(img1, s.width, s.height, 0.0, 1.0);
+  int done = atomic_fetch_add(&j->done, 1) + 1;
+  if (t == 0) nl_harness_progress(j->r, (double)done / (j->n * j->seeds), "renders");
+}
+
 void nl_study_smoke_curve(nl_harness *r, const nl_study_smoke_scene *sc, const int *octaves, int n, int seeds,
                           int timed, nl_study_smoke_point *out, nl_image **panels)
 {
-  nl_bounds_smoke s = sc->s;
-  size_t npix = (size_t)s.width * s.height;
-  double *img0 = nl_xmalloc(npix * sizeof *img0), *img1 = nl_xmalloc(npix * sizeof *img1);
-  double *v = nl_xmalloc(6 * (size_t)seeds * sizeof *v);   /* ev0, ev1, ms0, ms1, eval ratio, time ratio */
-  double *ev0 = v, *ev1 = v + seeds, *ms0 = v + 2 * seeds, *ms1 = v + 3 * seeds, *er = v + 4 * seeds,
-         *tr = v + 5 * seeds;
-  nl_error err;
-  for (int row = 0; row < n; row++) {
-    s.octaves = octaves[row] + sc->offset;
+  size_t npix = (size_t)sc->s.width * sc->s.height, items = (size_t)n * (size_t)seeds;
+  /* Renders are independent: (row, seed) items over the harness's threads.
+   * Each render runs on one thread and is timed by that thread's CPU clock
+   * (nl_bounds_smoke_render_pair), so the time columns stay per render. */
+  int nt = nl_parallel_threads(items, nl_harness_threads(r));
+  double *img[2 * NL_PARALLEL_MAX];
+  for (int t = 0; t < 2 * nt; t++) img[t] = nl_xmalloc(npix * sizeof **img);
+  double *v = nl_xmalloc(6 * items * sizeof *v);   /* ev0, ev1, ms0, ms1, time ratio, max noise */
+  curve_job j = {.r = r, .sc = sc, .octaves = octaves, .n = n, .seeds = seeds, .timed = timed, .img = img,
+                 .ev0 = v, .ev1 = v + items, .ms0 = v + 2 * items, .ms1 = v + 3 * items, .tr = v + 4 * items,
+                 .max_noise = v + 5 * items, .diff = nl_xmalloc(items * sizeof(int)), .panels = panels,
+                 .st = nl_xcalloc(items, sizeof(nl_status)), .err = nl_xmalloc(items * sizeof(nl_error))};
+  atomic_init(&j.done, 0);
+  nl_parallel_for(items, nt, curve_item, &j);
+  for (size_t i = 0; i < items; i++)
+    if (j.st[i]) nl_harness_die(r, 1, "%s", j.err[i].msg);
+  double *er = nl_xmalloc((size_t)seeds * sizeof *er);
+  for (int row = 0; row < n; row++) {   /* reductions in item order, after the join */
+    size_t o = (size_t)row * seeds;
     nl_study_smoke_point *p = &out[row];
     memset(p, 0, sizeof *p);
-    p->terms = s.octaves;
+    p->terms = octaves[row] + sc->offset;
     for (int k = 0; k < seeds; k++) {
-      nl_noise_perm3 perm;
-      nl_noise_perm3_seed(&perm, nl_seed_replicate(nl_harness_seed(r), k));
-      if (timed) {
-        nl_bounds_smoke_pair t;
-        if (nl_bounds_smoke_render_pair(&perm, s, img0, img1, &t, &err)) nl_harness_die(r, 1, "%s", err.msg);
-        ev0[k] = (double)t.evals[0]; ev1[k] = (double)t.evals[1];
-        ms0[k] = t.ms[0]; ms1[k] = t.ms[1];
-        tr[k] = t.ms[0] / t.ms[1];
-        p->diff = t.diff > p->diff ? t.diff : p->diff;
-        p->max_noise = fmax(p->max_noise, t.max_noise);
-      } else {
-        nl_bounds_smoke_stats st;
-        s.incremental = 1;
-        if (nl_bounds_smoke_render(&perm, &s, img1, &st, &err)) nl_harness_die(r, 1, "%s", err.msg);
-        ev0[k] = (double)st.samples * s.octaves; ev1[k] = (double)st.noise_evals;
-        ms0[k] = ms1[k] = tr[k] = 0.0;
-      }
-      er[k] = eval_ratio(ev0[k], ev1[k]);
-      if (k == 0 && panels) panels[row] = nl_image_from_values(img1, s.width, s.height, 0.0, 1.0);
-      nl_harness_progress(r, (row * seeds + k + 1.0) / (n * seeds), "renders");
+      er[k] = eval_ratio(j.ev0[o + k], j.ev1[o + k]);
+      p->diff = j.diff[o + k] > p->diff ? j.diff[o + k] : p->diff;
+      p->max_noise = fmax(p->max_noise, j.max_noise[o + k]);
     }
-    p->plain_evals = nl_study_mean(ev0, seeds);
-    p->bounded_evals = nl_study_mean(ev1, seeds);
+    p->plain_evals = nl_study_mean(j.ev0 + o, seeds);
+    p->bounded_evals = nl_study_mean(j.ev1 + o, seeds);
     p->eval_ratio = eval_ratio(p->plain_evals, p->bounded_evals);
     p->eval_ratio_sd = nl_study_sd(er, seeds);
-    p->plain_ms = nl_study_mean(ms0, seeds); p->plain_ms_sd = nl_study_sd(ms0, seeds);
-    p->bounded_ms = nl_study_mean(ms1, seeds); p->bounded_ms_sd = nl_study_sd(ms1, seeds);
+    p->plain_ms = nl_study_mean(j.ms0 + o, seeds); p->plain_ms_sd = nl_study_sd(j.ms0 + o, seeds);
+    p->bounded_ms = nl_study_mean(j.ms1 + o, seeds); p->bounded_ms_sd = nl_study_sd(j.ms1 + o, seeds);
     p->time_ratio = timed ? p->plain_ms / p->bounded_ms : 0.0;
-    p->time_ratio_sd = nl_study_sd(tr, seeds);
+    p->time_ratio_sd = nl_study_sd(j.tr + o, seeds);
   }
-  free(v); free(img0); free(img1);
+  for (int t = 0; t < 2 * nt; t++) free(img[t]);
+  free(v); free(er); free(j.diff); free(j.st); free(j.err);
 }
 
 double nl_study_smoke_fit(const double *ours, const double *paper, int n, double *rms_factor, int *worst)
