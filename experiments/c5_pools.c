@@ -85,7 +85,7 @@ static void report(nl_harness *r, const nl_study_cheng_pools *T, const nl_cheng_
                                              : "held-out rows score like the input: it generalises",
                     nl_table_value(T->assess, q, "ks_median"), 100 * nl_table_value(T->assess, q, "ks_reject"));
   }
-  nl_harness_figure(r, "aic.png", "AIC (and BIC) against K along the selection path, per texture and cutoff rule (first seed); the thesis's initial and final K as vertical lines");
+  nl_harness_figure(r, "aic.png", "AIC against K along the selection path (pool replicate 0, aic_readings.tsv): the headline reading of readings.tsv and C6's reading (1000-row subsample, (cos, sin), cutoff matched to the thesis's initial K), with the thesis's AIC and its initial and final K as lines");
   nl_harness_figure(r, "cutoff.png", "Initial K against the complete-linkage cutoff, with the thesis's K0 marked");
   nl_harness_figure(r, "pool.png", "E_R per pool run: random start and best, with the original table's E_R");
 }

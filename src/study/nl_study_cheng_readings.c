@@ -44,9 +44,11 @@ void nl_study_cheng_readings_alloc(nl_study_cheng_readings *R)
   R->readings = nl_table_alloc(sizeof rd_cols / sizeof *rd_cols, rd_cols);
   R->ess = nl_table_alloc(sizeof ess_cols / sizeof *ess_cols, ess_cols);
   R->repro = nl_table_alloc(sizeof rep_cols / sizeof *rep_cols, rep_cols);
+  const char *pc[] = {"texture", "reading", "K", "AIC", "BIC", "headline"};
+  R->paths = nl_table_alloc(6, pc);
 }
 
-void nl_study_cheng_readings_free(nl_study_cheng_readings *R) { nl_table_free(R->readings); nl_table_free(R->ess); nl_table_free(R->repro); }
+void nl_study_cheng_readings_free(nl_study_cheng_readings *R) { nl_table_free(R->readings); nl_table_free(R->ess); nl_table_free(R->repro); nl_table_free(R->paths); }
 
 static int rd_index(int cr, int n, int d, int p) { return ((cr * 2 + n) * 2 + d) * 2 + p; }
 
@@ -87,10 +89,13 @@ static double angle_cutoff_for_k(nl_harness *r, const nl_cheng_pool *pool, const
  * under one reading's model: `draws` reproductions with every high entry
  * swapped, E_KS and E_Con over all entries, as C6 (stream "c5.reproduce"). */
 typedef struct { nl_harness *r; nl_table *t; const nl_study_cheng_repro *rp; const nl_cheng_config *c;
-                 const nl_cheng_pattern *pat; const char *tex; int draws; } repro_ctx;
+                 const nl_cheng_pattern *pat; const char *tex; int draws; nl_table *paths; } repro_ctx;
 
 static void repro_rows(const repro_ctx *x, const nl_cheng_model *m, const char *id, int k0_input)
 {
+  if (x && x->paths)   /* replicate 0's AIC path of this reading (the figure) */
+    for (size_t i = 0; i < m->npath; i++)
+      nl_table_append(x->paths, "ssdddd", x->tex, id, (double)m->path[i].k, m->path[i].aic, m->path[i].bic, 0.0);
   if (!x || !m->gmm || x->draws < 1) return;
   double ks[4096], con[4096], bk = 0, bc = 0;
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
@@ -233,7 +238,7 @@ void nl_study_cheng_readings_case(const nl_study_cheng *s, nl_study_cheng_readin
       r0.pool = pools[0];
       nl_study_cheng_pool_case_with(s, T, th, po, mo, nseeds, full, &r0);
     }
-    repro_ctx x = {r, R->repro, &rp, &c, pat, th->texture, ro->draws};
+    repro_ctx x = {r, R->repro, &rp, &c, pat, th->texture, ro->draws, R->paths};
     fit_readings(r, A, (const nl_cheng_pool *const *)pools, th, mo, seed, k < ro->all_reps, k == 0 ? &x : NULL);
     nl_cheng_pool_free(pools[0]); nl_cheng_pool_free(pools[1]);
     nl_study_cheng_repro_clear(&rp);
@@ -264,6 +269,9 @@ const char *nl_study_cheng_readings_report(nl_harness *r, nl_study_cheng_reading
     if (sum > bestn) { bestn = sum; snprintf(best, sizeof best, "%s", id); }
   }
   for (size_t q = 0; q < t->nrows; q++) nl_table_set(t, q, "headline", !strcmp(nl_table_text(t, q, "reading"), best));
+  for (size_t q = 0; q < R->paths->nrows; q++)
+    nl_table_set(R->paths, q, "headline", !strcmp(nl_table_text(R->paths, q, "reading"), best));
+  nl_harness_write_table(r, R->paths, "aic_readings.tsv");
   nl_harness_write_table(r, t, "readings.tsv");
   nl_harness_write_table(r, R->ess, "ess.tsv");
   nl_harness_write_table(r, R->repro, "reproduce.tsv");

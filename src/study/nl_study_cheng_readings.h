@@ -26,7 +26,9 @@
 
 #include "study/nl_study_cheng.h"
 
-typedef struct { nl_table *readings, *ess, *repro; } nl_study_cheng_readings;
+/* paths: the AIC path of every reading's mixture on pool replicate 0 (texture,
+ * reading, K, AIC, BIC, headline = 1 on the headline reading's rows): C5's AIC figure. */
+typedef struct { nl_table *readings, *ess, *repro, *paths; } nl_study_cheng_readings;
 
 /* --set parameters: reps (pool replicates; quick 2), stride (sweeps between
  * spaced states), all_reps (replicates fitted on all rows), draws
