@@ -5,11 +5,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Small problems: the flower drawn at 96 pixels on a 16..32 grid (fast), thesis octaves. */
-#define FLOWER_PX 96
-
-static double rel(double a, double b) { return fabs(a - b) / fmax(1.0, fabs(b)); }
-
 /* After every move of a random sequence (with random undos), at every level,
  * for every statistic and control variant: incremental E == full E to 1e-12. */
 NL_TEST(incremental_objective_equals_full_recomputation)

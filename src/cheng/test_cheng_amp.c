@@ -6,10 +6,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define FLOWER_PX 96
-
-static double rel(double a, double b) { return fabs(a - b) / fmax(1.0, fabs(b)); }
-
 /* Angle and gain moves mixed (random undos), every control variant and both
  * formulas, every level: incremental E == full recomputation to 1e-12, undo
  * exact, and gains stay where they were put. */

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define FLOWER_PX 64   /* the flower drawn at 64 pixels */
+#define REPRO_PX 64   /* the flower drawn at 64 pixels */
 
 static nl_cheng_config small_config(void)
 {
@@ -23,7 +23,7 @@ NL_TEST(reproduction_mode_is_eq_3_16_to_3_18)
 {
   nl_cheng_config c = small_config();
   test_fixture f;
-  test_fixture_open(&f, FLOWER_PX, 32, &c, 3, 1);
+  test_fixture_open(&f, REPRO_PX, 32, &c, 3, 1);
   nl_cheng_problem *p = f.p;
   nl_noise_grad2 *g = f.g;
   const nl_cheng_pattern *pat = f.pat;
@@ -57,7 +57,7 @@ NL_TEST(pool_same_for_any_thread_count)
 {
   nl_cheng_config c = small_config();
   test_fixture f;
-  test_fixture_open(&f, FLOWER_PX, 16, &c, 5, 0);
+  test_fixture_open(&f, REPRO_PX, 16, &c, 5, 0);
   const nl_noise_grad2 *g = f.g;
   const nl_cheng_pattern *pat = f.pat;
   nl_cheng_pool_options o;
@@ -252,7 +252,7 @@ static int cmp_double(const void *a, const void *b)
 
 NL_TEST(reproduce_keeps_high_angles)
 {
-  nl_cheng_pattern *pat = test_flower(FLOWER_PX, 16);
+  nl_cheng_pattern *pat = test_flower(REPRO_PX, 16);
   nl_cheng_config c = small_config();
   nl_noise_grad2 *g = nl_noise_grad2_alloc(c.m), *h = nl_noise_grad2_alloc(c.m);
   nl_noise_grad2_seed(g, 8);
