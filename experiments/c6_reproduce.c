@@ -57,6 +57,7 @@ static void report(nl_harness *r, const nl_table *sum, int nrep, double swap, co
                      100 * nl_table_value(sum, w + 1, "below_con"),
                      100 * (nl_table_value(sum, w, "E_con") - nl_table_value(sum, w + 1, "E_con")) / nl_table_value(sum, w + 1, "E_con"));
   }
+  nl_study_cheng_control_text(r, sum, 2);   /* r, contrast and the two baselines, originals and reproductions */
   nl_harness_text(r, "Reading: the thesis's \"often below\" holds here for E_Con when the high entries are kept (the pool "
                      "re-optimised the low entries under E_R with the high ones fixed), not after they are permuted; E_KS "
                      "of a reproduction is higher than the original's, whose optimised angles are more regular than "

@@ -300,9 +300,10 @@ void nl_study_cheng_pool_case_with(const nl_study_cheng *s, nl_study_cheng_pools
 static const char *const c6_rep_cols[] = {"texture", "swap", "rep", "E_ks", "p_ks", "E_con", "ks2_D", "ms_reproduce", "ms_texture"};
 static const char *const c6_sum_cols[] = {
   "texture", "kind", "n", "E_ks", "E_ks_sd", "E_con", "E_con_sd", "p_ks_min", "ks2_D", "ks2_D_sd",
-  "below_ks", "below_con", "ms_reproduce", "ms_texture", "seconds_opt", "K"};
+  "below_ks", "below_con", "ms_reproduce", "ms_texture", "seconds_opt", "K",
+  "r_pattern", "contrast", "E_con_random", "E_con_const"};   /* controllability (nl_study_cheng_control_text) */
 
-typedef struct { double ks[4096], con[4096], p[4096], d[4096], ms[4096], mst[4096]; } samples;
+typedef struct { double ks[4096], con[4096], p[4096], d[4096], ms[4096], mst[4096], rp[4096], ct[4096]; } samples;
 
 /* One reproduction evaluated: E_KS, E_Con, two-sample D against the original's angles. */
 static void reproduce_one(nl_harness *r, const nl_study_cheng_repro *rp, const nl_cheng_model *m, const nl_cheng_config *c,
@@ -321,6 +322,7 @@ static void reproduce_one(nl_harness *r, const nl_study_cheng_repro *rp, const n
   if (nl_cheng_evaluate(out, c, pat, &ev, &err) ||
       nl_stats_ks2_test(out->angle, out->m, rp->opt->angle, rp->opt->m, &ks, &err)) nl_harness_die(r, 1, "%s", err.msg);
   s->ks[i] = ev.e_ks; s->con[i] = ev.e_con; s->p[i] = ev.p_ks; s->d[i] = ks.d;
+  s->rp[i] = ev.r_pattern; s->ct[i] = ev.contrast;
 }
 
 static double frac_below(const double *x, int n, double v) { int b = 0; for (int i = 0; i < n; i++) b += x[i] < v; return (double)b / n; }
@@ -328,10 +330,11 @@ static double frac_below(const double *x, int n, double v) { int b = 0; for (int
 static void summary_row(nl_table *t, const char *tex, const char *kind, const samples *s, int n,
                         const nl_study_cheng_repro *rp, size_t k)
 {
-  nl_table_append(t, "ssdddddddddddddd", tex, kind, (double)n, nl_study_mean(s->ks, n), nl_study_sd(s->ks, n),
+  nl_table_append(t, "ssdddddddddddddddddd", tex, kind, (double)n, nl_study_mean(s->ks, n), nl_study_sd(s->ks, n),
                   nl_study_mean(s->con, n), nl_study_sd(s->con, n), nl_study_min(s->p, n), nl_study_mean(s->d, n), nl_study_sd(s->d, n),
                   frac_below(s->ks, n, rp->ev.e_ks), frac_below(s->con, n, rp->ev.e_con),
-                  nl_study_mean(s->ms, n), nl_study_mean(s->mst, n), rp->seconds_opt, (double)k);
+                  nl_study_mean(s->ms, n), nl_study_mean(s->mst, n), rp->seconds_opt, (double)k,
+                  nl_study_mean(s->rp, n), nl_study_mean(s->ct, n), rp->ev.e_con_random, rp->ev.e_con_const);
 }
 
 /* Montage: the original texture and NSHOW reproductions, E_KS / E_Con under each. */
@@ -376,6 +379,7 @@ void nl_study_cheng_reproduce_case(const nl_study_cheng *st, nl_table *reps, nl_
   nl_cheng_pattern *pat = nl_study_cheng_repro_open(st, th, po, &c, &rp);
   nl_cheng_model *m = nl_study_cheng_matched_model(r, rp.pool, th, mo);
   s->ks[0] = rp.ev.e_ks; s->con[0] = rp.ev.e_con; s->p[0] = rp.ev.p_ks;
+  s->rp[0] = rp.ev.r_pattern; s->ct[0] = rp.ev.contrast;
   summary_row(sum, th->texture, "original", s, 1, &rp, m->k);
   if (!m->gmm) {   /* degenerate model: reported, nothing to reproduce */
     nl_harness_text(r, "%s: no mixture (%s), no reproductions.\n", th->texture, m->msg);
