@@ -74,6 +74,7 @@
 #define NL_EXAMPLE_TILE 256      /* default 2D tile period */
 #define NL_EXAMPLE_TILE3 64      /* 3D tile period for solid synthesis */
 #define NL_EXAMPLE_MIN_SIZE 16   /* smaller exemplars are rejected */
+#define NL_EXAMPLE_CALIBRATE 4   /* the `example` command's calibration iterations */
 
 typedef enum { NL_HIST_PAPER = 0, NL_HIST_GAUSS = 1 } nl_byexample_hist_kind;
 
@@ -89,6 +90,9 @@ typedef struct {
   int nhist;                             /* their count (nl_byexample_hist_knots) */
   double hist[3][NL_EXAMPLE_HIST_MAX];   /* channel quantiles at the kind's knots */
   double w[3][NL_WAVELET_MAX_BANDS];     /* w[c][0]: finest band */
+  int calibrate;                         /* > 0: iterations of the synthesis-time calibration */
+  double target[3][NL_WAVELET_MAX_BANDS];   /* with calibrate: eq. 13 band powers of channel c */
+  double corr[3][NL_WAVELET_MAX_BANDS];     /* with calibrate: band correlation of channels 01, 02, 12 */
 } nl_byexample_params;
 
 typedef struct {
@@ -97,6 +101,7 @@ typedef struct {
   double sigma2;      /* 0: nl_byexample_sigma2(tile) */
   int tile;           /* 0: NL_EXAMPLE_TILE */
   nl_byexample_hist_kind hist_kind;   /* 0: the paper's 10 quantiles */
+  int calibrate;      /* 0: the paper; > 0: store band targets, calibrate in synthesis (NL_EXAMPLE_CALIBRATE) */
 } nl_byexample_options;
 
 typedef enum { NL_SPLINE_STEFFEN = 0, NL_SPLINE_FRITSCH_CARLSON = 1 } nl_byexample_spline_kind;
@@ -167,6 +172,9 @@ nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, un
 void nl_byexample_channel_noise(const nl_byexample_params *p, int c, const nl_wavelet_tile *t,
                                 double gain, int w, int h, unsigned long seed,
                                 const nl_byexample_synth_options *opt, double *out);
+/* The lower Cholesky factor of band k's channel correlation matrix (corr);
+ * 1 if it is not positive definite. */
+int nl_byexample_band_cholesky(const nl_byexample_params *p, int k, double L[3][3]);
 /* The number of parameters the paper counts: channels^2 + channels * (nhist + bands). */
 int nl_byexample_param_count(const nl_byexample_params *p);
 
