@@ -15,8 +15,8 @@
 enum { NKIND = 4, NVAR = 5 };
 static const char *kinds[NKIND] = {"wavelet", "clouds", "granite", "marble"};
 static const char *variants[NVAR] = {"pca_hist", "pca_nohist", "rgb_hist", "pca_hist_fc", "pca_hist_gauss33"};
-static const nl_byexample_options var_opt[NVAR] = {{1, 1, 0, 0, NL_HIST_PAPER}, {1, 0, 0, 0, NL_HIST_PAPER}, {0, 1, 0, 0, NL_HIST_PAPER},
-                                                   {1, 1, 0, 0, NL_HIST_PAPER}, {1, 1, 0, 0, NL_HIST_GAUSS}};
+static const nl_byexample_options var_opt[NVAR] = {{1, 1, 0, 0, NL_HIST_PAPER, 0}, {1, 0, 0, 0, NL_HIST_PAPER, 0}, {0, 1, 0, 0, NL_HIST_PAPER, 0},
+                                                   {1, 1, 0, 0, NL_HIST_PAPER, 0}, {1, 1, 0, 0, NL_HIST_GAUSS, 0}};
 
 int main(int argc, char **argv)
 {

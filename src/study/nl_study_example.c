@@ -124,7 +124,7 @@ nl_image *nl_study_example_photo(const nl_image *ex, const char *name, nl_byexam
                                  unsigned long seed, int replicate, double min_share, double max_ratio, double max_ks,
                                  nl_table *bands, nl_table *sum, nl_error *err)
 {
-  nl_byexample_options o = {1, 1, 0, 0, hk};
+  nl_byexample_options o = {1, 1, 0, 0, hk, 0};
   nl_byexample_params p;
   nl_image *syn;
   if (nl_byexample_analyse(ex, &o, &p, err)) return NULL;
