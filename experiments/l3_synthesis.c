@@ -3,8 +3,9 @@
  * method (PCA + histogram matching, steffen spline), without histogram
  * matching (Fig. 6b), in RGB without PCA (Fig. 5b), and with a
  * Fritsch-Carlson spline instead of steffen. Then the photographs of
- * data/exemplars (--exemplars DIR) with the paper's 10-quantile histogram and
- * with 33 quantiles at Gaussian knots, per eq. 13 band against the photo. */
+ * data/exemplars (--exemplars DIR) with the paper's 10-quantile histogram,
+ * with 33 quantiles at Gaussian knots, and calibrated (the `example` default:
+ * gauss33 + band calibration at synthesis), per eq. 13 band against the photo. */
 #include "byexample/nl_byexample.h"
 #include "harness/nl_harness.h"
 #include "study/nl_study.h"
