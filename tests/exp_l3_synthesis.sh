@@ -30,7 +30,7 @@
 #    passes 3 of 3 (mean KS 0.0135, worst band ratio 1.056), clouds 0 of 3
 #    (KS 0.0068, band 4 at 2.25 in a 128^2 synthesis); checked: it passes in
 #    every replicate on >= 1 photo and its mean KS < 0.03 on both (gauss33's
-#    clouds KS is 0.229). Both quick photos are colour: photo_saturation > 0.
+#    clouds KS is 0.229). Both quick photos are colour: photo_sat_max > 0.
 #  - the gauss33 and paper10 rows of photos_mean are those of results/quick
 #    (made before the third representation existed) to 1e-9 relative.
 set -euo pipefail
@@ -55,7 +55,7 @@ tsv_awk 'NR > 1 { ks[v("representation")] = n("ks_mean"); t[v("representation")]
           printf "gauss.tsv: gauss33 KS %g tail %g, paper10 KS %g tail %g\n", ks["gauss33"], t["gauss33"], ks["paper10"], t["paper10"]; exit 1 } }' "$3/gauss.tsv"
 "$2" "$3/photos_summary.tsv" 'rows=18' 'ks>0' 'bands_checked>=1' 'file:photos_montage.png'
 "$2" "$3/photos.tsv" 'rows>=60' 'power_photo>=0' 'share<=1'
-"$2" "$3/photos_mean.tsv" 'rows=6' 'replicates==3' 'passes>=0' 'passes<=3' 'photo_saturation>0'
+"$2" "$3/photos_mean.tsv" 'rows=6' 'replicates==3' 'passes>=0' 'passes<=3' 'photo_sat_max>0'
 tsv_awk 'v("exemplar") == "craters" { ks[v("representation")] = n("ks_mean"); sp[v("representation")] = n("speckle_mean") }
   END { if (!(ks["gauss33"] < ks["paper10"] && sp["gauss33"] < sp["paper10"])) {
           printf "craters: gauss33 KS %g speckle %g, paper10 KS %g speckle %g\n", ks["gauss33"], sp["gauss33"], ks["paper10"], sp["paper10"]; exit 1 } }' "$3/photos_mean.tsv"
