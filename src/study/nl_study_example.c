@@ -264,7 +264,7 @@ nl_table *nl_study_example_photos(nl_harness *r, char (*names)[64], nl_image **p
         /* the montage shows the first replicate, its top-left 256^2 at most */
         if (!s) panels[NP * i + 1 + h] = crop(syn, size < 256 ? size : 256);
         nl_image_free(syn);
-        snprintf(labels[NP * i + 1 + h], 64, "%s (%dx%d crop)", rn, size < 256 ? size : 256, size < 256 ? size : 256);
+        snprintf(labels[NP * i + 1 + h], 64, "%s %dx%d", rn, size < 256 ? size : 256, size < 256 ? size : 256);
       }
       mean_row(mt, bands, sum, photos[i], names[i], rn, K, min_share, max_ratio, max_ks);
     }
