@@ -1,6 +1,7 @@
 /* noiselab example - procedural textures by example (Lagae et al. 2010).
  *
  *   noiselab example analyse IMAGE -o PARAMS [--rgb] [--no-histogram] [--paper-histogram]
+ *                    [--no-calibration]
  *   noiselab example synthesize PARAMS --size N [--height H] [--seed S]
  *                    [--scale S] [--solid [--z Z]] -o OUT.png|.exr|.tif
  *   noiselab example morph PARAMS1 PARAMS2 --t T -o OUT.params
@@ -20,6 +21,7 @@
 static void usage(FILE *fp)
 {
   fputs("usage: noiselab example analyse IMAGE -o PARAMS [--rgb] [--no-histogram] [--paper-histogram]\n"
+        "                        [--no-calibration]\n"
         "       noiselab example synthesize PARAMS --size N [--height H] [--seed S] [--scale S]\n"
         "                        [--solid [--z Z]] -o OUT.png|.exr|.tif\n"
         "       noiselab example morph PARAMS1 PARAMS2 --t T -o OUT.params\n"
@@ -33,6 +35,10 @@ static void usage(FILE *fp)
         "  --rgb       no PCA colour decorrelation;  --no-histogram  no histogram matching\n"
         "  --paper-histogram  the paper's 10 quantiles at p = j/9 (default: 33 quantiles at\n"
         "              p = Phi(z), z = -4..4 every 1/4 sd, which keep the tails)\n"
+        "  --no-calibration  the paper's synthesis: weights by eq. 12, histogram by the expected\n"
+        "              sd; default: the file keeps the exemplar's band powers and synthesis\n"
+        "              calibrates the band weights to them at its size and seed (4 rounds of\n"
+        "              synthesize, rank-match the histogram, measure, correct; nl_byexample.h)\n"
         "  synthesize  evaluate it on an N x H grid (pixels of the exemplar's size times --scale);\n"
         "              --solid uses 3D wavelet noise, the slice at depth --z\n"
         "  morph       interpolate two parameter files at t in [0, 1] (matrix by quaternion slerp)\n"
@@ -57,16 +63,17 @@ typedef struct {
   const char *out, *bands;
   long size, height, seed;
   double t, scale, z;
-  int rgb, nohist, paperhist, solid, have_t, have_size;
+  int rgb, nohist, paperhist, nocal, solid, have_t, have_size;
 } args;
 
 static void parse(int argc, char **argv, args *a)
 {
-  enum { O_OUT, O_BANDS, O_SIZE, O_HEIGHT, O_SEED, O_T, O_SCALE, O_Z, O_RGB, O_NOHIST, O_PAPERHIST, O_SOLID, O_HELP };
+  enum { O_OUT, O_BANDS, O_SIZE, O_HEIGHT, O_SEED, O_T, O_SCALE, O_Z, O_RGB, O_NOHIST, O_PAPERHIST, O_NOCAL, O_SOLID, O_HELP };
   static const nl_opt_spec spec[] = {
     [O_OUT] = {"out", 'o', 1}, [O_BANDS] = {"bands", 0, 1}, [O_SIZE] = {"size", 0, 1}, [O_HEIGHT] = {"height", 0, 1},
     [O_SEED] = {"seed", 0, 1}, [O_T] = {"t", 0, 1}, [O_SCALE] = {"scale", 0, 1}, [O_Z] = {"z", 0, 1},
     [O_RGB] = {"rgb", 0, 0}, [O_NOHIST] = {"no-histogram", 0, 0}, [O_PAPERHIST] = {"paper-histogram", 0, 0},
+    [O_NOCAL] = {"no-calibration", 0, 0},
     [O_SOLID] = {"solid", 0, 0}, [O_HELP] = {"help", 'h', 0}, {NULL, 0, 0}};
   nl_error err;
   memset(a, 0, sizeof *a);
@@ -93,6 +100,7 @@ static void parse(int argc, char **argv, args *a)
     case O_RGB: a->rgb = 1; break;
     case O_NOHIST: a->nohist = 1; break;
     case O_PAPERHIST: a->paperhist = 1; break;
+    case O_NOCAL: a->nocal = 1; break;
     case O_SOLID: a->solid = 1; break;
     case O_HELP: usage(stdout); exit(0);
     }
@@ -113,7 +121,8 @@ static int analyse(const args *a)
   nl_image *im;
   if (a->npos != 1) die("analyse takes one IMAGE");
   check(nl_image_read(a->pos[0], &im, &err), &err);
-  nl_byexample_options o = {!a->rgb, !a->nohist, 0, 0, a->paperhist ? NL_HIST_PAPER : NL_HIST_GAUSS};
+  nl_byexample_options o = {!a->rgb, !a->nohist, 0, 0, a->paperhist ? NL_HIST_PAPER : NL_HIST_GAUSS,
+                            a->nocal ? 0 : NL_EXAMPLE_CALIBRATE};
   nl_byexample_params p;
   if (nl_byexample_analyse(im, &o, &p, &err)) {
     char msg[NL_ERROR_LEN + 300];

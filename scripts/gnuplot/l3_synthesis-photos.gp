@@ -3,20 +3,20 @@
 # the checked bands (share of the photo's power >= min_share), dashed lines
 # the x1.3 criterion; lines join the first replicate, points are every
 # replicate.
-set terminal pngcairo size 1000,420
+set terminal pngcairo size 1400,420
 set output dir.'/photos.png'
 set datafile separator "\t"
 set datafile columnheaders
 f = dir.'/photos.tsv'
 ex = system("awk -F'\\t' 'NR > 1 && !seen[$1]++ { printf \"%s \", $1 }' '".f."'")
-set multiplot layout 1,2
+set multiplot layout 1,3
 set logscale y
 set yrange [0.1:10]
 set xlabel 'eq. 13 band (0 = finest, 0.25-0.5 cycles/pixel)' font ',9'
 set ylabel 'power synthesis / photo' font ',9'
 set key top left font ',8'
 set xtics 1
-do for [rep in "gauss33 paper10"] {
+do for [rep in "gauss33 paper10 calibrated"] {
   set title rep
   plot for [i = 1:words(ex)] f using "band":((strcol("exemplar") eq word(ex, i) && strcol("representation") eq rep && column("replicate") == 0) ? column("ratio") : 1/0) \
          with lines lc i title word(ex, i), \

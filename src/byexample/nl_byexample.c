@@ -1,4 +1,5 @@
 #include "byexample/nl_byexample.h"
+#include "byexample/nl_byexample_leak.h"
 #include "spectrum/nl_spectrum.h"
 
 #include <gsl/gsl_cdf.h>
@@ -7,6 +8,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <stdio.h>
 
 /* ---- noise by example (sec. 4) ------------------------------------------ */
 
@@ -347,10 +349,55 @@ void nl_byexample_match_kind(double *v, size_t n, double sigma, nl_byexample_his
 
 /* ---- analysis and synthesis (sec. 5.3) ----------------------------------- */
 
+/* Per eq. 13 band, the correlation of the decorrelated channels a, b (the
+ * PCA makes them uncorrelated over all bands, not per band): the band's
+ * cross power by polarisation, (P(a + b) - P(a) - P(b)) / 2, over
+ * sqrt(P(a) P(b)). Channels missing (flat) or bands without power get 0;
+ * each band's 3 x 3 matrix is shrunk towards the identity until it is
+ * positive definite (its Cholesky factor mixes the noise in synthesis). */
+static void band_correlation(double *const *plane, int w, int h, nl_byexample_params *p)
+{
+  static const int pair[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+  size_t n = (size_t)w * h;
+  double *s = nl_xmalloc(n * sizeof *s), sum[NL_WAVELET_MAX_BANDS];
+  for (int q = 0; q < 3; q++) {
+    const double *a = plane[pair[q][0]], *b = plane[pair[q][1]];
+    if (!a || !b) continue;
+    for (size_t i = 0; i < n; i++) s[i] = a[i] + b[i];
+    nl_byexample_band_power(s, w, h, p->nbands, sum);
+    for (int k = 0; k < p->nbands; k++) {
+      double pa = p->target[pair[q][0]][k], pb = p->target[pair[q][1]][k];
+      p->corr[q][k] = pa > 0 && pb > 0 ? fmax(-0.99, fmin(0.99, (sum[k] - pa - pb) / (2 * sqrt(pa * pb)))) : 0;
+    }
+  }
+  free(s);
+  for (int k = 0; k < p->nbands; k++) {
+    double L[3][3];
+    while (nl_byexample_band_cholesky(p, k, L)) for (int q = 0; q < 3; q++) p->corr[q][k] *= 0.9;
+  }
+}
+
+int nl_byexample_band_cholesky(const nl_byexample_params *p, int k, double L[3][3])
+{
+  double r01 = p->corr[0][k], r02 = p->corr[1][k], r12 = p->corr[2][k];
+  memset(L, 0, 9 * sizeof(double));
+  L[0][0] = 1;
+  L[1][0] = r01;
+  double d1 = 1 - r01 * r01;
+  if (!(d1 > 1e-6)) return 1;
+  L[1][1] = sqrt(d1);
+  L[2][0] = r02;
+  L[2][1] = (r12 - r02 * r01) / L[1][1];
+  double d2 = 1 - L[2][0] * L[2][0] - L[2][1] * L[2][1];
+  if (!(d2 > 1e-6)) return 1;
+  L[2][2] = sqrt(d2);
+  return 0;
+}
+
 nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *opt,
                                nl_byexample_params *p, nl_error *err)
 {
-  nl_byexample_options o = {1, 1, 0, 0, NL_HIST_PAPER};
+  nl_byexample_options o = {1, 1, 0, 0, NL_HIST_PAPER, 0};
   if (opt) o = *opt;
   if (o.tile == 0) o.tile = NL_EXAMPLE_TILE;
   if (im->width < NL_EXAMPLE_MIN_SIZE || im->height < NL_EXAMPLE_MIN_SIZE)
@@ -363,6 +410,7 @@ nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *o
   p->tile = o.tile;
   p->histogram = o.histogram;
   p->hist_kind = o.hist_kind;
+  p->calibrate = o.histogram && o.calibrate > 0 ? o.calibrate : 0;
   p->nhist = nl_byexample_hist_knots(o.hist_kind, NULL, NULL);
   if (!p->nhist) return nl_fail(err, NL_EINVAL, "unknown histogram representation %d", (int)o.hist_kind);
   p->sigma2 = o.sigma2 > 0 ? o.sigma2 : nl_byexample_sigma2(o.tile);
@@ -373,7 +421,7 @@ nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *o
     for (int c = 0; c < 3; c++) p->matrix[c][c] = 1;
   }
   size_t n = (size_t)im->width * im->height;
-  double *plane[3];
+  double *plane[3], *keep[3] = {NULL, NULL, NULL};
   for (int c = 0; c < p->channels; c++) plane[c] = nl_xmalloc(n * sizeof(double));
   nl_byexample_decorrelate(im, p->channels, p->mean, p->matrix, plane);
   for (int c = 0; c < p->channels; c++) {
@@ -383,17 +431,21 @@ nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *o
     nl_byexample_quantiles(plane[c], n, ext);
     nl_byexample_hist(plane[c], n, p->hist_kind, p->hist[c]);
     int flat = ext[0] == ext[NL_EXAMPLE_HIST - 1];
+    if (p->calibrate && !flat) nl_byexample_band_power(plane[c], im->width, im->height, p->nbands, p->target[c]);
+    if (p->calibrate && !flat) { keep[c] = nl_xmalloc(n * sizeof(double)); memcpy(keep[c], plane[c], n * sizeof(double)); }
     if (p->histogram && !flat) nl_byexample_gaussianize(plane[c], n);
     if (!flat) nl_byexample_weights(plane[c], im->width, im->height, p->nbands, p->sigma2, p->w[c]);
     free(plane[c]);
   }
+  if (p->calibrate && p->channels == 3) band_correlation(keep, im->width, im->height, p);
+  for (int c = 0; c < 3; c++) free(keep[c]);
   /* Finite pixels can still overflow (values near FLT_MAX squared in the
    * PCA): a result synthesis would reject is an error here. */
   for (int c = 0; c < p->channels; c++) {
     int bad = !isfinite(p->mean[c]);
     for (int k = 0; k < p->channels; k++) bad |= !isfinite(p->matrix[c][k]);
     for (int k = 0; k < p->nhist; k++) bad |= !isfinite(p->hist[c][k]);
-    for (int k = 0; k < p->nbands; k++) bad |= !isfinite(p->w[c][k]);
+    for (int k = 0; k < p->nbands; k++) bad |= !isfinite(p->w[c][k]) || !isfinite(p->target[c][k]);
     if (bad)
       return nl_fail(err, NL_ENUM, "the fitted parameters of channel %d are not finite (pixel values too large?)", c + 1);
   }
@@ -410,6 +462,103 @@ void nl_byexample_channel_noise(const nl_byexample_params *p, int c, const nl_wa
   nl_wavelet_bands_init(&b, p->nbands, wts, t->n, nl_seed_stream(seed, "example.channel", (unsigned long)c), NULL);
   double scale = opt && opt->scale > 0 ? opt->scale : 1.0;
   nl_wavelet_bands_grid(t, &b, w, h, opt ? opt->z : 0, scale, out);
+}
+
+/* Rank-based histogram matching (Heeger & Bergen 1995): the realised values
+ * are taken to Gaussian scores by rank, then through the representation. */
+static void match_ranked(const nl_byexample_params *p, int c, double *v, size_t n, nl_byexample_spline_kind kind)
+{
+  if (p->hist[c][p->nhist - 1] == p->hist[c][0]) {
+    for (size_t i = 0; i < n; i++) v[i] = p->hist[c][0];
+    return;
+  }
+  nl_byexample_gaussianize(v, n);
+  nl_byexample_match_kind(v, n, 1.0, p->hist_kind, p->hist[c], kind);
+}
+
+/* Removes from img the frequencies of eq. 13 bands >= nb (below the
+ * exemplar's lowest frequency) and the DC. */
+static void high_pass(double *img, int w, int h, int nb)
+{
+  size_t n = (size_t)w * h;
+  double *F = nl_xmalloc(2 * n * sizeof *F);
+  nl_spectrum_fft2(img, w, h, F);
+  for (int v = 0; v < h; v++) {
+    double fy = fabs(nl_spectrum_freq(v, h));
+    for (int u = 0; u < w; u++) {
+      double m = fmax(fabs(nl_spectrum_freq(u, w)), fy);
+      if (m == 0 || band_of(m) >= nb) F[2 * ((size_t)v * w + u)] = F[2 * ((size_t)v * w + u) + 1] = 0;
+    }
+  }
+  nl_spectrum_fft2_inverse(F, w, h, img);
+  free(F);
+}
+
+/* Synthesis-time calibration (nl_byexample.h). Every channel's noise bands
+ * B_k are drawn once, stripped of frequencies below the exemplar's lowest
+ * (when the output is larger) and mixed per band by the Cholesky factor of
+ * the band's channel correlation. Per channel, A[k][j] = eq. 13 power of B_k
+ * in band j (the leakage, measured on this realisation); then `calibrate`
+ * times: sum with gains g, predict the band powers S = A^T g^2, match the
+ * histogram by rank, measure P, and solve NNLS A^T g^2 = target * S / P
+ * (what the sum needs for the matched image to hit the target); the last
+ * sum, matched, is the output. */
+static void calibrate_channels(const nl_byexample_params *p, const nl_wavelet_tile *t, double gain, int w, int h,
+                               unsigned long seed, const nl_byexample_synth_options *opt, double **out)
+{
+  size_t n = (size_t)w * h;
+  int nb = p->nbands, C = p->channels, nbs = nl_byexample_band_count(w, h), nbo = nbs < nb ? nbs : nb;
+  double *B[3], g2[NL_WAVELET_MAX_BANDS], P[NL_WAVELET_MAX_BANDS], S[NL_WAVELET_MAX_BANDS], b[NL_WAVELET_MAX_BANDS];
+  double A[NL_WAVELET_MAX_BANDS * NL_WAVELET_MAX_BANDS], M[NL_WAVELET_MAX_BANDS * NL_WAVELET_MAX_BANDS];
+  nl_byexample_params one = *p;
+  for (int c = 0; c < C; c++) {
+    B[c] = nl_xmalloc((size_t)nb * n * sizeof *B[c]);
+    for (int k = 0; k < nb; k++) {
+      for (int j = 0; j < nb; j++) one.w[c][j] = j == k;
+      nl_byexample_channel_noise(&one, c, t, gain, w, h, seed, opt, B[c] + (size_t)k * n);
+      /* only the 3 coarsest noise bands reach below the exemplar's lowest frequency */
+      if (nbs > nb && k >= nb - 3) high_pass(B[c] + (size_t)k * n, w, h, nb);
+    }
+  }
+  for (int k = 0; k < nb && C == 3; k++) {
+    double L[3][3];
+    if (nl_byexample_band_cholesky(p, k, L)) continue;   /* analysis made it definite */
+    for (int c = 2; c > 0; c--) {   /* in place: row c uses sources j <= c */
+      double *d = B[c] + (size_t)k * n;
+      for (size_t i = 0; i < n; i++) {
+        double v = 0;
+        for (int j = 0; j <= c; j++) v += L[c][j] * B[j][(size_t)k * n + i];
+        d[i] = v;
+      }
+    }
+  }
+  for (int c = 0; c < C; c++) {
+    for (int k = 0; k < nb; k++) {
+      g2[k] = p->w[c][k] * p->w[c][k];
+      nl_byexample_band_power(B[c] + (size_t)k * n, w, h, nbo, A + (size_t)k * nbo);
+    }
+    for (int j = 0; j < nbo; j++)
+      for (int k = 0; k < nb; k++) M[j * nb + k] = A[k * nbo + j];
+    for (int it = 0; it <= p->calibrate; it++) {
+      memset(out[c], 0, n * sizeof *out[c]);
+      for (int k = 0; k < nb; k++)
+        if (g2[k] > 0) {
+          double gk = sqrt(g2[k]);
+          for (size_t i = 0; i < n; i++) out[c][i] += gk * B[c][(size_t)k * n + i];
+        }
+      match_ranked(p, c, out[c], n, opt ? opt->spline : 0);
+      if (it == p->calibrate) break;
+      nl_byexample_band_power(out[c], w, h, nbo, P);
+      for (int j = 0; j < nbo; j++) {
+        S[j] = 0;
+        for (int k = 0; k < nb; k++) S[j] += g2[k] * A[k * nbo + j];
+        b[j] = P[j] > 0 ? p->target[c][j] * S[j] / P[j] : 0;
+      }
+      double x[NL_WAVELET_MAX_BANDS];
+      if (nl_byexample_nnls(M, nbo, nb, b, x) >= 0) memcpy(g2, x, (size_t)nb * sizeof *x);
+    }
+  }
+  for (int c = 0; c < C; c++) free(B[c]);
 }
 
 nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, unsigned long seed,
@@ -435,8 +584,11 @@ nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, un
   double gain = sqrt(p->sigma2 / nl_wavelet_tile_variance(t, solid ? 2 : 4));
   size_t n = (size_t)w * h;
   double *plane[3];
-  for (int c = 0; c < p->channels; c++) {
-    plane[c] = nl_xmalloc(n * sizeof(double));
+  int cal = p->calibrate > 0 && p->histogram && !solid && !(opt && opt->scale > 0 && opt->scale != 1) &&
+            nl_mem_fits(need + (double)n * p->nbands * p->channels * sizeof(double));
+  for (int c = 0; c < p->channels; c++) plane[c] = nl_xmalloc(n * sizeof(double));
+  if (cal) calibrate_channels(p, t, gain, w, h, seed, opt, plane);
+  for (int c = 0; c < p->channels && !cal; c++) {
     nl_byexample_channel_noise(p, c, t, gain, w, h, seed, opt, plane[c]);
     if (p->histogram) {
       double ss = 0;
@@ -461,7 +613,10 @@ int nl_byexample_param_count(const nl_byexample_params *p)
 void nl_byexample_attenuate(nl_byexample_params *p, int nfine, double factor)
 {
   for (int c = 0; c < p->channels; c++)
-    for (int k = 0; k < nfine && k < p->nbands; k++) p->w[c][k] *= factor;
+    for (int k = 0; k < nfine && k < p->nbands; k++) {
+      p->w[c][k] *= factor;
+      p->target[c][k] *= factor * factor;   /* calibration aims at the edited power */
+    }
 }
 
 nl_image *nl_byexample_spectrum_image(const double *img, int w, int h, double decades)

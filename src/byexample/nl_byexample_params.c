@@ -12,8 +12,13 @@
  *   matrix (channels^2 values, row-major)
  *   hist0 .. hist{channels-1}        10 or 33 values each (hist_kind), non-decreasing
  *   weights0 .. weights{channels-1}  `bands` values each, >= 0
+ * Version 3 (written only when calibrate > 0, nl_byexample.h) adds
+ *   calibrate N                      iterations, 1..100
+ *   target0 .. target{channels-1}    `bands` eq. 13 band powers each, >= 0
+ *   corr01 corr02 corr12             (3 channels) `bands` band correlations each, in [-1, 1]
  * Version 1 files (no hist_kind line) hold the paper's 10 quantiles and
- * still load; version 2 files must say hist_kind.
+ * still load; version 2 files must say hist_kind; uncalibrated parameters
+ * are still written as version 2, so older readers read them.
  * Numbers use the shortest form that reads back to the same bits, so
  * save -> load -> synthesize equals synthesize.
  */
@@ -46,7 +51,7 @@ static const char *non_finite(const nl_byexample_params *p, char *buf, size_t le
     for (int k = 0; k < p->nhist && k < NL_EXAMPLE_HIST_MAX; k++)
       if (!isfinite(p->hist[c][k])) { snprintf(buf, len, "hist%d %d", c, k + 1); return buf; }
     for (int k = 0; k < p->nbands && k < NL_WAVELET_MAX_BANDS; k++)
-      if (!isfinite(p->w[c][k])) { snprintf(buf, len, "weights%d %d", c, k + 1); return buf; }
+      if (!isfinite(p->w[c][k]) || !isfinite(p->target[c][k]) || !isfinite(p->corr[c][k])) { snprintf(buf, len, "weights%d %d", c, k + 1); return buf; }
   }
   return NULL;
 }
@@ -71,8 +76,9 @@ nl_status nl_byexample_params_save(const nl_byexample_params *p, const char *pat
   fprintf(af.fp, "# hist_kind %d = %s: %s\n", (int)p->hist_kind, nl_byexample_hist_name(p->hist_kind),
           p->hist_kind == NL_HIST_PAPER ? "the paper's 10 quantiles at p = j/9, spline in p"
                                         : "33 quantiles at p = Phi(z), z = -4 + j/4, spline in z");
-  fprintf(af.fp, "noiselab-example 2\nchannels %d\nbands %d\ntile %d\nhistogram %d\nhist_kind %d\n", C,
-          p->nbands, p->tile, p->histogram, (int)p->hist_kind);
+  fprintf(af.fp, "noiselab-example %d\nchannels %d\nbands %d\ntile %d\nhistogram %d\nhist_kind %d\n",
+          p->calibrate > 0 ? 3 : 2, C, p->nbands, p->tile, p->histogram, (int)p->hist_kind);
+  if (p->calibrate > 0) fprintf(af.fp, "calibrate %d\n", p->calibrate);
   put_values(af.fp, "sigma2", &p->sigma2, 1);
   put_values(af.fp, "mean", p->mean, C);
   double m[9];
@@ -88,6 +94,12 @@ nl_status nl_byexample_params_save(const nl_byexample_params *p, const char *pat
     snprintf(key, sizeof key, "weights%d", c);
     put_values(af.fp, key, p->w[c], p->nbands);
   }
+  for (int c = 0; c < C && p->calibrate > 0; c++) {
+    snprintf(key, sizeof key, "target%d", c);
+    put_values(af.fp, key, p->target[c], p->nbands);
+  }
+  static const char *ckey[3] = {"corr01", "corr02", "corr12"};
+  for (int q = 0; q < 3 && C == 3 && p->calibrate > 0; q++) put_values(af.fp, ckey[q], p->corr[q], p->nbands);
   return nl_atomic_commit(&af, err);
 }
 
@@ -212,6 +224,8 @@ static nl_status check_arrays(const char *path, const nl_byexample_params *p, nl
         return nl_fail(err, NL_EFORMAT, "%s: 'hist%d' is not non-decreasing", path, c);
     for (int k = 0; k < p->nbands; k++)
       if (p->w[c][k] < 0) return nl_fail(err, NL_EFORMAT, "%s: 'weights%d' has a negative weight", path, c);
+    for (int k = 0; k < p->nbands; k++)
+      if (!(p->target[c][k] >= 0)) return nl_fail(err, NL_EFORMAT, "%s: 'target%d' has a negative power", path, c);
   }
   return NL_OK;
 }
@@ -224,7 +238,7 @@ nl_status nl_byexample_params_load(const char *path, nl_byexample_params *p, nl_
   nl_status st = read_fields(path, f, &nf, err);
   if (st) return st;
   memset(p, 0, sizeof *p);
-  if ((st = need_int(path, f, nf, "noiselab-example", 1, 2, &version, err)) ||
+  if ((st = need_int(path, f, nf, "noiselab-example", 1, 3, &version, err)) ||
       (st = need_int(path, f, nf, "channels", 1, 3, &p->channels, err)) ||
       (st = need_int(path, f, nf, "bands", 1, NL_WAVELET_MAX_BANDS, &p->nbands, err)) ||
       (st = need_int(path, f, nf, "tile", 8, 8192, &p->tile, err)) ||
@@ -235,6 +249,7 @@ nl_status nl_byexample_params_load(const char *path, nl_byexample_params *p, nl_
   int hk = NL_HIST_PAPER;   /* version 1: the paper's reading, the only one then */
   if (version >= 2 && (st = need_int(path, f, nf, "hist_kind", 0, 1, &hk, err))) return st;
   p->hist_kind = (nl_byexample_hist_kind)hk;
+  if (version >= 3 && (st = need_int(path, f, nf, "calibrate", 1, 100, &p->calibrate, err))) return st;
   p->nhist = nl_byexample_hist_knots(p->hist_kind, NULL, NULL);
   int C = p->channels;
   if (C != 2) {
@@ -251,6 +266,17 @@ nl_status nl_byexample_params_load(const char *path, nl_byexample_params *p, nl_
       snprintf(key, sizeof key, "weights%d", c);
       if ((st = need(path, f, nf, key, p->nbands, &v, err))) return st;
       memcpy(p->w[c], v, (size_t)p->nbands * sizeof *v);
+      if (!p->calibrate) continue;
+      snprintf(key, sizeof key, "target%d", c);
+      if ((st = need(path, f, nf, key, p->nbands, &v, err))) return st;
+      memcpy(p->target[c], v, (size_t)p->nbands * sizeof *v);
+    }
+    static const char *ckey[3] = {"corr01", "corr02", "corr12"};
+    for (int q = 0; q < 3 && C == 3 && p->calibrate; q++) {
+      if ((st = need(path, f, nf, ckey[q], p->nbands, &v, err))) return st;
+      for (int k = 0; k < p->nbands; k++)
+        if (!(fabs(v[k]) <= 1)) return nl_fail(err, NL_EFORMAT, "%s: '%s' has a value outside [-1, 1]", path, ckey[q]);
+      memcpy(p->corr[q], v, (size_t)p->nbands * sizeof *v);
     }
   }
   return check_arrays(path, p, err);
@@ -314,6 +340,8 @@ nl_status nl_byexample_morph(const nl_byexample_params *a, const nl_byexample_pa
                    a->nbands, b->nbands);
   if (a->histogram != b->histogram)
     return nl_fail(err, NL_EINVAL, "cannot morph with and without histogram matching");
+  if ((a->calibrate > 0) != (b->calibrate > 0))
+    return nl_fail(err, NL_EINVAL, "cannot morph calibrated into uncalibrated parameters");
   if (a->hist_kind != b->hist_kind)
     return nl_fail(err, NL_EINVAL, "cannot morph histogram representation %s into %s",
                    nl_byexample_hist_name(a->hist_kind), nl_byexample_hist_name(b->hist_kind));
@@ -323,6 +351,12 @@ nl_status nl_byexample_morph(const nl_byexample_params *a, const nl_byexample_pa
     r.mean[c] = (1 - t) * a->mean[c] + t * b->mean[c];
     for (int j = 0; j < a->nhist; j++) r.hist[c][j] = (1 - t) * a->hist[c][j] + t * b->hist[c][j];
     for (int k = 0; k < a->nbands; k++) r.w[c][k] = (1 - t) * a->w[c][k] + t * b->w[c][k];
+    /* targets are powers: interpolated as their square roots, like the weights */
+    for (int k = 0; k < a->nbands; k++) {
+      double s = (1 - t) * sqrt(a->target[c][k]) + t * sqrt(b->target[c][k]);
+      r.target[c][k] = s * s;
+      r.corr[c][k] = (1 - t) * a->corr[c][k] + t * b->corr[c][k];   /* a convex mix of definite matrices is definite */
+    }
   }
   if (a->channels == 3) {
     double qa[4], qb[4], q[4];

@@ -168,7 +168,7 @@ NL_TEST(gauss33_round_trip_and_version_1)
    * file needs hist_kind, a version 1 file (no hist_kind) holds the paper's
    * 10 quantiles; the two representations do not morph into each other. */
   nl_image *ex = nl_byexample_exemplar("granite", 64, 3), *a, *b;
-  nl_byexample_options o = {1, 1, 0, 0, NL_HIST_GAUSS};
+  nl_byexample_options o = {1, 1, 0, 0, NL_HIST_GAUSS, 0};
   nl_byexample_params p, q, m;
   NL_CHECK(nl_byexample_analyse(ex, &o, &p, NULL) == NL_OK);
   NL_CHECK(p.hist_kind == NL_HIST_GAUSS && p.nhist == 33);

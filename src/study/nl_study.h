@@ -219,12 +219,14 @@ nl_table *nl_study_example_summary_table(void);
  * [1/max_ratio, max_ratio] and KS < max_ks). rep names the representation. */
 void nl_study_example_compare(const nl_image *ex, const nl_image *syn, const char *name, const char *rep,
                               int replicate, double min_share, double max_ratio, double max_ks, nl_table *bands, nl_table *sum);
-/* Analyses a photograph with representation hk, synthesises size x size
- * (seed) and appends nl_study_example_compare's rows. Returns the synthesis;
- * NULL and err when analysis or synthesis fails. */
-nl_image *nl_study_example_photo(const nl_image *ex, const char *name, nl_byexample_hist_kind hk, int size,
-                                 unsigned long seed, int replicate, double min_share, double max_ratio, double max_ks,
-                                 nl_table *bands, nl_table *sum, nl_error *err);
+/* Analyses a photograph with representation hk (calibrate > 0: with the
+ * synthesis-time band calibration of that many rounds, nl_byexample.h; rows
+ * named "calibrated"), synthesises size x size (seed) and appends
+ * nl_study_example_compare's rows. Returns the synthesis; NULL and err when
+ * analysis or synthesis fails. */
+nl_image *nl_study_example_photo(const nl_image *ex, const char *name, nl_byexample_hist_kind hk, int calibrate,
+                                 int size, unsigned long seed, int replicate, double min_share, double max_ratio,
+                                 double max_ks, nl_table *bands, nl_table *sum, nl_error *err);
 
 /* Reads the first max photographs of nl_study_example_list; -1 and err on the
  * first that does not read (the others freed). */
@@ -233,13 +235,16 @@ int nl_study_example_load(const char *dir, char (*names)[64], nl_image **photos,
  * over K seeds: representation, n, ks_mean/sd, tail_mean/sd, tail_gauss (the
  * Gaussian's own 2 Q(2.5)). Caller frees. */
 nl_table *nl_study_example_gauss_table(size_t n, int K, unsigned long seed0);
-/* Every photograph through nl_study_example_photo with both representations
- * and K replicates (nl_seed_replicate(seed, s), the same for both; rows carry
- * the replicate): writes photos.tsv (bands), photos_summary.tsv (one row per
+/* Every photograph through nl_study_example_photo with three representations
+ * (gauss33, paper10 as the paper synthesises, and calibrated = gauss33 with
+ * NL_EXAMPLE_CALIBRATE rounds, the `example` command's default) and K
+ * replicates (nl_seed_replicate(seed, s), the same for all; rows carry the
+ * replicate): writes photos.tsv (bands), photos_summary.tsv (one row per
  * replicate), photos_mean.tsv (over replicates: mean KS, tails, speckle, the
- * checked band whose mean power is farthest from the photo's, passes of K)
- * and the montage photos_montage.png (photo | gauss33 | paper10 per row,
- * top-left 256^2 crops); returns the photos_mean table (caller frees). */
+ * checked band whose mean power is farthest from the photo's, passes of K,
+ * replicates failing by KS and by band, the photo's largest saturation) and
+ * the montage photos_montage.png (photo | gauss33 | paper10 | calibrated per
+ * row, top-left 256^2 crops); returns the photos_mean table (caller frees). */
 nl_table *nl_study_example_photos(nl_harness *r, char (*names)[64], nl_image **photos, int np, int size,
                                   int K, unsigned long seed, double min_share, double max_ratio, double max_ks);
 

@@ -25,7 +25,7 @@ nl_status nl_study_edit_replicate(const nl_image *ex, int nfine, double factor, 
                                   nl_study_edit *out, nl_error *err)
 {
   int size = ex->width;
-  nl_byexample_options opt[2] = {{1, 1, 0, 0, NL_HIST_PAPER}, {1, 0, 0, 0, NL_HIST_PAPER}};   /* [0] histogram matching, [1] without */
+  nl_byexample_options opt[2] = {{1, 1, 0, 0, NL_HIST_PAPER, 0}, {1, 0, 0, 0, NL_HIST_PAPER, 0}};   /* [0] histogram matching, [1] without */
   nl_byexample_params p[2];
   for (int h = 0; h < 2; h++) {
     nl_byexample_params pe, p0;
