@@ -11,6 +11,7 @@
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_randist.h>
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
@@ -99,8 +100,10 @@ static size_t cov_size(const nl_gmm *g)
  * third of a quick C5 run 4 KB page faults and page zeroing, so the arrays
  * are (a) advised onto 2 MB pages (transparent huge pages, where the system
  * has them: one fault per 512 pages) and (b) kept after nl_gmm_free in a
- * small per-thread cache (at most CACHE_SLOTS arrays, CACHE_MAX bytes) for
- * the next model of the thread. No value is ever read before it is written,
+ * small process-wide cache (at most CACHE_SLOTS arrays, CACHE_MAX bytes,
+ * behind a mutex) for the next model. Not per thread: arrays held only in
+ * thread-local storage would be lost when a worker thread ends, and look
+ * leaked to LeakSanitizer, which our sanitizer runs keep off TLS (use_tls=0). No value is ever read before it is written,
  * so the results do not depend on which memory a model gets. A header in
  * front of each array keeps its size. */
 #define HUGE_PAGE ((size_t)2 << 20)
@@ -109,8 +112,9 @@ static size_t cov_size(const nl_gmm *g)
 #define CACHE_MAX ((size_t)1 << 30)
 
 typedef struct { void *base; size_t bytes; } cached;
-static _Thread_local cached cache[CACHE_SLOTS];
-static _Thread_local size_t cache_total;
+static cached cache[CACHE_SLOTS];
+static size_t cache_total;
+static pthread_mutex_t cache_lock = PTHREAD_MUTEX_INITIALIZER;
 
 static double *big_alloc(size_t count, int zero)
 {
@@ -121,6 +125,7 @@ static double *big_alloc(size_t count, int zero)
   } else {
     bytes = (bytes + HUGE_PAGE - 1) / HUGE_PAGE * HUGE_PAGE;
     int best = -1;   /* the smallest cached array that is large enough */
+    pthread_mutex_lock(&cache_lock);
     for (int q = 0; q < CACHE_SLOTS; q++)
       if (cache[q].base && cache[q].bytes >= bytes && (best < 0 || cache[q].bytes < cache[best].bytes)) best = q;
     if (best >= 0) {
@@ -128,6 +133,9 @@ static double *big_alloc(size_t count, int zero)
       bytes = cache[best].bytes;
       cache_total -= bytes;
       cache[best].base = NULL;
+    }
+    pthread_mutex_unlock(&cache_lock);
+    if (best >= 0) {
       if (zero) memset((char *)base + HEADER, 0, count * sizeof(double));
     } else {
       if (posix_memalign(&base, HUGE_PAGE, bytes)) base = NULL;
@@ -147,9 +155,15 @@ static void big_free(double *p)
   if (!p) return;
   void *base = (char *)p - HEADER;
   size_t bytes = *(size_t *)base;
-  if (bytes >= 2 * HUGE_PAGE && cache_total + bytes <= CACHE_MAX)
-    for (int q = 0; q < CACHE_SLOTS; q++)
-      if (!cache[q].base) { cache[q] = (cached){base, bytes}; cache_total += bytes; return; }
+  if (bytes >= 2 * HUGE_PAGE) {
+    pthread_mutex_lock(&cache_lock);
+    int kept = 0;
+    if (cache_total + bytes <= CACHE_MAX)
+      for (int q = 0; q < CACHE_SLOTS && !kept; q++)
+        if (!cache[q].base) { cache[q] = (cached){base, bytes}; cache_total += bytes; kept = 1; }
+    pthread_mutex_unlock(&cache_lock);
+    if (kept) return;
+  }
   free(base);
 }
 
