@@ -3,7 +3,7 @@
 # u = phi / 2 pi, for the optimised table and its random start (first seed,
 # torus). The largest |deviation| of each curve is that margin's KS D.
 # Called as: gnuplot -e "dir='results/c8_sphere'" THIS
-set terminal pngcairo size 900,420 font "DejaVu Sans,10"
+set terminal pngcairo size 900,460 font "DejaVu Sans,10"
 set output dir.'/uniformity.png'
 set datafile separator "\t"
 set datafile columnheaders   # ecdf.tsv: F, z_opt, phi_opt, z_rand, phi_rand
@@ -13,7 +13,7 @@ set grid
 set xrange [0:1]
 set xlabel "u"
 set ylabel "F_{obs}(u) - u"
-set key bottom right font ",9"
+set key below horizontal maxrows 1 font ",9"   # under the plot: it covers no data
 set title "z = cos(polar), u = (z + 1)/2"
 plot 0 with lines lc rgb "#ff69b4" lw 2 title "ideal", \
      f using "z_opt":(column("F") - column("z_opt")) with steps lw 1.5 lc rgb "blue" title "optimised", \
