@@ -184,16 +184,15 @@ nl_cheng_pattern *nl_study_cheng_pattern(const nl_study_cheng *s, const char *na
   return nl_study_cheng_pattern_load_or_die(nl_harness_name(s->r), s->patterns, name, s->grid);
 }
 
-nl_noise_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_config *c,
-                                     const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
-                                     const char *const *labels)
+nl_cheng_eval *nl_study_cheng_seeds_evals(const nl_study_cheng *s, const nl_cheng_config *c,
+                                          const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
+                                          const char *const *labels, nl_noise_grad2 **first)
 {
   int k = nl_harness_seeds(s->r);
   nl_cheng_eval *evs = nl_xmalloc((size_t)k * sizeof *evs);
-  nl_noise_grad2 *first;
   nl_error err;
   unsigned long seed0 = s->role ? nl_seed_stream(nl_harness_seed(s->r), s->role, 0) : nl_harness_seed(s->r);
-  if (nl_cheng_run_seeds(c, pat, seed0, k, evs, &first, &err)) nl_harness_die(s->r, 1, "%s", err.msg);
+  if (nl_cheng_run_seeds(c, pat, seed0, k, evs, first, &err)) nl_harness_die(s->r, 1, "%s", err.msg);
   nl_study_cheng_summary_add(sum, nlabels, labels, evs, k);
   if (s->cost) {
     char name[160] = "";
@@ -207,7 +206,15 @@ nl_noise_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_con
                     cpu > 0 ? moves / cpu : NAN);
     free(t);
   }
-  free(evs);
+  return evs;
+}
+
+nl_noise_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_config *c,
+                                     const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
+                                     const char *const *labels)
+{
+  nl_noise_grad2 *first;
+  free(nl_study_cheng_seeds_evals(s, c, pat, sum, nlabels, labels, &first));
   return first;
 }
 

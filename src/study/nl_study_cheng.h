@@ -156,6 +156,11 @@ nl_cheng_pattern *nl_study_cheng_pattern(const nl_study_cheng *s, const char *na
 /* Config c on pat over the run's seeds (nl_cheng_run_seeds), its summary row
  * appended to sum under the nlabels labels (nl_study_cheng_summary_add); returns
  * the first seed's optimised table (caller frees). Exit 1 on error. */
+/* The same, returning the k evaluations (nl_harness_seeds; caller frees) and
+ * the first seed's table in *first, for callers that read more of them (C9). */
+nl_cheng_eval *nl_study_cheng_seeds_evals(const nl_study_cheng *s, const nl_cheng_config *c,
+                                          const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
+                                          const char *const *labels, nl_noise_grad2 **first);
 nl_noise_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_config *c,
                                      const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
                                      const char *const *labels);

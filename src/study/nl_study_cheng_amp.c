@@ -43,14 +43,10 @@ nl_noise_grad2 *nl_study_cheng_amp_seeds(const nl_study_cheng *s, const nl_cheng
                                          const char *const *labels, double *first_log_gain)
 {
   int k = nl_harness_seeds(s->r);
-  nl_cheng_eval *evs = nl_xmalloc((size_t)k * sizeof *evs);
   nl_noise_grad2 *first;
-  nl_error err;
-  unsigned long seed0 = s->role ? nl_seed_stream(nl_harness_seed(s->r), s->role, 0) : nl_harness_seed(s->r);
   double t0 = nl_time_now();
-  if (nl_cheng_run_seeds(c, pat, seed0, k, evs, &first, &err)) nl_harness_die(s->r, 1, "%s", err.msg);
+  nl_cheng_eval *evs = nl_study_cheng_seeds_evals(s, c, pat, sum, nlabels, labels, &first);
   nl_table_set(timing, labelled_row(timing, nlabels, labels), "seconds_per_run", (nl_time_now() - t0) / k);
-  nl_study_cheng_summary_add(sum, nlabels, labels, evs, k);
   memcpy(first_log_gain, evs[0].log_gain, (size_t)c->octaves * sizeof *first_log_gain);
   nl_noise_octaves o = nl_noise_octaves_cheng(c->octaves, c->f1, c->a1);
   double *a = nl_xmalloc((size_t)k * 3 * sizeof *a), *g = a + k, *u = g + k, hi = log(c->amp_range);
