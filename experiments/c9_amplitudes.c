@@ -94,5 +94,6 @@ int main(int argc, char **argv)
   nl_harness_figure(r, "gains.png", "Optimised octave amplitudes 1/a_l = gain / a_l against the thesis's 1/a_l and the bounds (mean and sd of the gain over seeds)");
   nl_harness_figure(r, "values.png", "Per case: pattern | controlled value with fixed and optimised amplitudes on its own 0..1 scale | the same stretched to its 1st..99th percentile (first seed)");
   nl_table_free(sum); nl_table_free(gains); nl_table_free(tests); nl_table_free(timing);
+  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h; data/blas_spread.tsv) */
   return nl_harness_end(r);
 }
