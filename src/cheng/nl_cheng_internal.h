@@ -63,6 +63,14 @@ struct nl_cheng_problem {
   size_t *tp, ntouch;
   double *tnv, *tterm;
   unsigned *mark, stamp;
+  /* pre[i]: point i's octave sum over octaves 0..level-2 (nl_cheng__octave_sum's
+   * first level-1 steps, formed at each resum). A move of the top octave
+   * adds only its own term to it, the same additions in the same order; valid
+   * while pre_ok and amp[0..level-2] still equal pre_amp (a move of a lower
+   * octave or a lower gain makes it stale until the next resum). */
+  double *pre;
+  int pre_ok;
+  double pre_amp[NL_CHENG_MAX_OCTAVES];
   /* octave gains (X6, nl_cheng_amp.c): amp[l] = amp0[l] e^lg[l]; a gain move's
    * undo keeps the previous gain, s and every term */
   double amp0[NL_CHENG_MAX_OCTAVES], lg[NL_CHENG_MAX_OCTAVES];

@@ -128,6 +128,7 @@ nl_cheng_problem *nl_cheng_problem_alloc(const nl_cheng_config *c, const nl_chen
   p->tp = nl_xmalloc(p->np * sizeof *p->tp);
   p->tnv = nl_xmalloc(p->np * F * sizeof *p->tnv);
   p->tterm = nl_xmalloc(p->np * sizeof *p->tterm);
+  p->pre = nl_xmalloc(p->np * sizeof *p->pre);
   build_corners(p);
   build_usage(p);
   build_lists(p);
@@ -143,6 +144,7 @@ void nl_cheng_problem_free(nl_cheng_problem *p)
   free(p->ck); free(p->cw); free(p->nv); free(p->term); free(p->used); free(p->first_level);
   free(p->in_sample); free(p->vars); free(p->sample); free(p->mark); free(p->tp);
   free(p->tnv); free(p->tterm); free(p->lstart); free(p->litem); free(p->lw); free(p->uterm);
+  free(p->pre);
   free(p);
 }
 
@@ -172,14 +174,19 @@ static double sum_terms(const double *t, size_t n)
   return s;
 }
 
-/* Octave values <= level and terms of every point from the stored corners. */
+/* Octave values <= level and terms of every point from the stored corners,
+ * and each point's sum of the octaves below the top one (p->pre). */
 static void evaluate_points(nl_cheng_problem *p)
 {
   size_t F = (size_t)p->F;
+  int top = p->level - 1;
   for (size_t i = 0; i < p->np; i++) {
     for (size_t l = 0; l < (size_t)p->level; l++) p->nv[i * F + l] = octave_value(p, i, l);
     p->term[i] = point_term(p, p->nv + i * F, i);
+    p->pre[i] = nl_cheng__octave_sum(p->c.con, p->nv + i * F, p->amp, top, -1, 0.0);
   }
+  memcpy(p->pre_amp, p->amp, sizeof p->amp);
+  p->pre_ok = 1;
 }
 
 void nl_cheng_resum(nl_cheng_problem *p)
@@ -230,6 +237,7 @@ static double update_points_general(nl_cheng_problem *p, size_t k, double dc, do
   size_t F = (size_t)p->F, M1 = p->m + 1;
   p->ntouch = 0;
   p->tlev = -1;
+  p->pre_ok = 0;   /* lower octaves may change */
   if (++p->stamp == 0) { memset(p->mark, 0, p->np * sizeof *p->mark); p->stamp = 1; }
   for (size_t l = 0; l < (size_t)p->level; l++) {
     const size_t *st = p->lstart + l * M1;
@@ -286,6 +294,68 @@ static double update_points_one(nl_cheng_problem *p, size_t k, size_t l, double 
   return d;
 }
 
+/* The top octave's move (l = level - 1, the annealer's every move): the
+ * octave sum is pre[i] + amp[l] Noise_l, the last step of
+ * nl_cheng__octave_sum on its first l steps, so the same double. One loop per
+ * texture and reading (con, literal constants: no branch on them per point).
+ * restrict: the arrays are distinct allocations. */
+static inline __attribute__((always_inline)) double
+top_loop(const uint32_t *restrict item, const double *restrict lw, size_t q0, size_t q1, double *restrict nv,
+         size_t F, size_t l, const double *restrict pre, const double *restrict dv, double *restrict term,
+         size_t *restrict tp, double *restrict tnv, double *restrict tterm, double al, double s, double dc,
+         double ds, nl_cheng_con con, int literal)
+{
+  double d = 0;
+  for (size_t q = q0, t = 0; q < q1; q++, t++) {
+    size_t i = item[q];
+    double *v = nv + i * F + l, old = *v, ot = term[i];
+    double vl = old + (lw[2 * q] * dc + lw[2 * q + 1] * ds);
+    *v = vl;
+    tp[t] = i;
+    tnv[t] = old;
+    tterm[t] = ot;
+    double e = nl_cheng__control_of_sum(con, pre[i] + al * (con == NL_CHENG_CON_FIRE ? fabs(vl) : vl), s, literal)
+               - dv[i];
+    double nt = e * e;
+    term[i] = nt;
+    d += nt - ot;
+  }
+  return d;
+}
+
+static double update_points_top(nl_cheng_problem *p, size_t k, size_t l, double dc, double ds)
+{
+  const size_t *st = p->lstart + l * (p->m + 1);
+  size_t q0 = st[k], q1 = st[k + 1], F = (size_t)p->F;
+  const uint32_t *item = p->litem;
+  const double *lw = p->lw, *pre = p->pre, *dv = p->pat->d;
+  double *nv = p->nv, *term = p->term, *tnv = p->tnv, *tterm = p->tterm, al = p->amp[l], s = p->s, d;
+  size_t *tp = p->tp;
+#define TOP(con, lit) top_loop(item, lw, q0, q1, nv, F, l, pre, dv, term, tp, tnv, tterm, al, s, dc, ds, con, lit)
+  switch (p->c.con * 2 + (p->c.literal != 0)) {
+  case NL_CHENG_CON_PLAIN * 2: d = TOP(NL_CHENG_CON_PLAIN, 0); break;
+  case NL_CHENG_CON_PLAIN * 2 + 1: d = TOP(NL_CHENG_CON_PLAIN, 1); break;
+  case NL_CHENG_CON_SIN * 2: d = TOP(NL_CHENG_CON_SIN, 0); break;
+  case NL_CHENG_CON_SIN * 2 + 1: d = TOP(NL_CHENG_CON_SIN, 1); break;
+  case NL_CHENG_CON_ABS * 2: d = TOP(NL_CHENG_CON_ABS, 0); break;
+  case NL_CHENG_CON_ABS * 2 + 1: d = TOP(NL_CHENG_CON_ABS, 1); break;
+  case NL_CHENG_CON_FIRE * 2: d = TOP(NL_CHENG_CON_FIRE, 0); break;
+  default: d = TOP(NL_CHENG_CON_FIRE, 1); break;
+  }
+#undef TOP
+  p->ntouch = q1 - q0;
+  p->tlev = (int)l;
+  return d;
+}
+
+static int pre_valid(const nl_cheng_problem *p, size_t l)
+{
+  if (!p->pre_ok) return 0;
+  for (size_t j = 0; j < l; j++)
+    if (p->amp[j] != p->pre_amp[j]) return 0;
+  return 1;
+}
+
 static double update_points(nl_cheng_problem *p, size_t k, double dc, double ds)
 {
   size_t M1 = p->m + 1, only = 0;
@@ -294,6 +364,9 @@ static double update_points(nl_cheng_problem *p, size_t k, double dc, double ds)
     const size_t *st = p->lstart + l * M1;
     if (st[k] < st[k + 1]) { lists++; only = l; }
   }
+  if (lists <= 1 && only + 1 == (size_t)p->level && pre_valid(p, only))
+    return update_points_top(p, k, only, dc, ds);
+  if (lists == 1 && only + 1 < (size_t)p->level) p->pre_ok = 0;   /* a lower octave changes */
   return lists <= 1 ? update_points_one(p, k, only, dc, ds) : update_points_general(p, k, dc, ds);
 }
 
