@@ -128,7 +128,8 @@ nl_cheng_problem *nl_cheng_problem_alloc(const nl_cheng_config *c, const nl_chen
   p->tp = nl_xmalloc(p->np * sizeof *p->tp);
   p->tnv = nl_xmalloc(p->np * F * sizeof *p->tnv);
   p->tterm = nl_xmalloc(p->np * sizeof *p->tterm);
-  p->pre = nl_xmalloc(p->np * sizeof *p->pre);
+  p->pd = nl_xmalloc(2 * p->np * sizeof *p->pd);
+  p->tu = nl_xmalloc(p->np * sizeof *p->tu);
   build_corners(p);
   build_usage(p);
   build_lists(p);
@@ -144,7 +145,8 @@ void nl_cheng_problem_free(nl_cheng_problem *p)
   free(p->ck); free(p->cw); free(p->nv); free(p->term); free(p->used); free(p->first_level);
   free(p->in_sample); free(p->vars); free(p->sample); free(p->mark); free(p->tp);
   free(p->tnv); free(p->tterm); free(p->lstart); free(p->litem); free(p->lw); free(p->uterm);
-  free(p->pre);
+  free(p->pd);
+  free(p->tu);
   free(p);
 }
 
@@ -183,7 +185,8 @@ static void evaluate_points(nl_cheng_problem *p)
   for (size_t i = 0; i < p->np; i++) {
     for (size_t l = 0; l < (size_t)p->level; l++) p->nv[i * F + l] = octave_value(p, i, l);
     p->term[i] = point_term(p, p->nv + i * F, i);
-    p->pre[i] = nl_cheng__octave_sum(p->c.con, p->nv + i * F, p->amp, top, -1, 0.0);
+    p->pd[2 * i] = nl_cheng__octave_sum(p->c.con, p->nv + i * F, p->amp, top, -1, 0.0);
+    p->pd[2 * i + 1] = p->pat->d[i];
   }
   memcpy(p->pre_amp, p->amp, sizeof p->amp);
   p->pre_ok = 1;
@@ -272,22 +275,23 @@ static double update_points_one(nl_cheng_problem *p, size_t k, size_t l, double 
   const size_t *st = p->lstart + l * M1;
   const uint32_t *item = p->litem;
   const double *lw = p->lw, *amp = p->amp, *dv = p->pat->d;
-  double *nv = p->nv, *term = p->term, *tnv = p->tnv, *tterm = p->tterm, s = p->s;
-  size_t *tp = p->tp, t = 0;
+  double *nv = p->nv, *term = p->term, s = p->s;
+  nl_cheng__touch *tu = p->tu;
+  size_t t = 0;
   nl_cheng_con con = p->c.con;
   int levels = p->level, literal = p->c.literal;
   double d = 0;
   for (size_t q = st[k]; q < st[k + 1]; q++, t++) {
     size_t i = item[q];
     double *v = nv + i * F;
-    tp[t] = i;
-    tnv[t] = v[l];
-    tterm[t] = term[i];
+    tu[t].i = i;
+    tu[t].v = v[l];
+    tu[t].t = term[i];
     double vl = v[l] + (lw[2 * q] * dc + lw[2 * q + 1] * ds);
     v[l] = vl;
     double e = nl_cheng__control_of_sum(con, nl_cheng__octave_sum(con, v, amp, levels, (int)l, vl), s, literal) - dv[i];
     term[i] = e * e;
-    d += term[i] - tterm[t];
+    d += term[i] - tu[t].t;
   }
   p->ntouch = t;
   p->tlev = (int)l;
@@ -300,22 +304,22 @@ static double update_points_one(nl_cheng_problem *p, size_t k, size_t l, double 
  * texture and reading (con, literal constants: no branch on them per point).
  * restrict: the arrays are distinct allocations. */
 static inline __attribute__((always_inline)) double
-top_loop(const uint32_t *restrict item, const double *restrict lw, size_t q0, size_t q1, double *restrict nv,
-         size_t F, size_t l, const double *restrict pre, const double *restrict dv, double *restrict term,
-         size_t *restrict tp, double *restrict tnv, double *restrict tterm, double al, double s, double dc,
-         double ds, nl_cheng_con con, int literal)
+top_loop(const uint32_t *restrict item, const double *restrict lw, size_t q0, size_t q1, double *restrict nvl,
+         size_t F, const double *restrict pd, double *restrict term, nl_cheng__touch *restrict tu, double al,
+         double s, double dc, double ds, nl_cheng_con con, int literal)
 {
   double d = 0;
-  for (size_t q = q0, t = 0; q < q1; q++, t++) {
+  tu -= q0;   /* record q - q0 */
+  for (size_t q = q0; q < q1; q++) {
     size_t i = item[q];
-    double *v = nv + i * F + l, old = *v, ot = term[i];
+    double *v = nvl + i * F, old = *v, ot = term[i];
     double vl = old + (lw[2 * q] * dc + lw[2 * q + 1] * ds);
     *v = vl;
-    tp[t] = i;
-    tnv[t] = old;
-    tterm[t] = ot;
-    double e = nl_cheng__control_of_sum(con, pre[i] + al * (con == NL_CHENG_CON_FIRE ? fabs(vl) : vl), s, literal)
-               - dv[i];
+    tu[q].i = i;
+    tu[q].v = old;
+    tu[q].t = ot;
+    double e = nl_cheng__control_of_sum(con, pd[2 * i] + al * (con == NL_CHENG_CON_FIRE ? fabs(vl) : vl), s, literal)
+               - pd[2 * i + 1];
     double nt = e * e;
     term[i] = nt;
     d += nt - ot;
@@ -328,10 +332,10 @@ static double update_points_top(nl_cheng_problem *p, size_t k, size_t l, double 
   const size_t *st = p->lstart + l * (p->m + 1);
   size_t q0 = st[k], q1 = st[k + 1], F = (size_t)p->F;
   const uint32_t *item = p->litem;
-  const double *lw = p->lw, *pre = p->pre, *dv = p->pat->d;
-  double *nv = p->nv, *term = p->term, *tnv = p->tnv, *tterm = p->tterm, al = p->amp[l], s = p->s, d;
-  size_t *tp = p->tp;
-#define TOP(con, lit) top_loop(item, lw, q0, q1, nv, F, l, pre, dv, term, tp, tnv, tterm, al, s, dc, ds, con, lit)
+  const double *lw = p->lw, *pd = p->pd;
+  double *nvl = p->nv + l, *term = p->term, al = p->amp[l], s = p->s, d;
+  nl_cheng__touch *tu = p->tu;
+#define TOP(con, lit) top_loop(item, lw, q0, q1, nvl, F, pd, term, tu, al, s, dc, ds, con, lit)
   switch (p->c.con * 2 + (p->c.literal != 0)) {
   case NL_CHENG_CON_PLAIN * 2: d = TOP(NL_CHENG_CON_PLAIN, 0); break;
   case NL_CHENG_CON_PLAIN * 2 + 1: d = TOP(NL_CHENG_CON_PLAIN, 1); break;
@@ -403,11 +407,11 @@ void nl_cheng_undo(nl_cheng_problem *p)
   p->g->gx[k] = p->ugx;
   p->g->gy[k] = p->ugy;
   if (p->tlev >= 0) {
-    size_t l = (size_t)p->tlev;
+    double *nvl = p->nv + p->tlev, *term = p->term;
+    const nl_cheng__touch *tu = p->tu;
     for (size_t t = 0; t < p->ntouch; t++) {
-      size_t i = p->tp[t];
-      p->nv[i * F + l] = p->tnv[t];
-      p->term[i] = p->tterm[t];
+      nvl[tu[t].i * F] = tu[t].v;
+      term[tu[t].i] = tu[t].t;
     }
   } else {
     for (size_t t = 0; t < p->ntouch; t++) {
