@@ -75,7 +75,7 @@ struct nl_cheng_problem {
    * octave or a lower gain makes it stale until the next resum); pd[2i+1]:
    * its target D_i, beside it so a move reads one line a point. */
   double *pd;
-  int pre_ok;
+  int pre_ok, pre_level;
   double pre_amp[NL_CHENG_MAX_OCTAVES];
   /* octave gains (X6, nl_cheng_amp.c): amp[l] = amp0[l] e^lg[l]; a gain move's
    * undo keeps the previous gain, s and every term */
@@ -97,6 +97,11 @@ void nl_cheng__amp_undo(nl_cheng_problem *p);
 double nl_cheng__amp_propose(const nl_cheng_problem *p, gsl_rng *rng, size_t l, double sigma);
 /* s = 1 / (sqrt(2)/2 sum amp): V = F_sum over its analytic bound. */
 double nl_cheng__amp_scale(const double *amp, int n);
+
+/* nl_cheng_resum for the annealer's temperature steps: the same result,
+ * re-evaluating only the top octave when the lower ones cannot have moved
+ * (nl_cheng_problem.c). */
+void nl_cheng__resum_top(nl_cheng_problem *p);
 
 long nl_cheng__lattice_max(double f);
 /* The control value c of nl_cheng.h from a point's octave values (the first

@@ -176,6 +176,16 @@ static double sum_terms(const double *t, size_t n)
   return s;
 }
 
+/* pre (p->pd) still the lower octaves' sums: nothing below octave l moved
+ * since the last full evaluation, and their gains are the same. */
+static int pre_valid(const nl_cheng_problem *p, size_t l)
+{
+  if (!p->pre_ok) return 0;
+  for (size_t j = 0; j < l; j++)
+    if (p->amp[j] != p->pre_amp[j]) return 0;
+  return 1;
+}
+
 /* Octave values <= level and terms of every point from the stored corners,
  * and each point's sum of the octaves below the top one (p->pre). */
 static void evaluate_points(nl_cheng_problem *p)
@@ -190,11 +200,38 @@ static void evaluate_points(nl_cheng_problem *p)
   }
   memcpy(p->pre_amp, p->amp, sizeof p->amp);
   p->pre_ok = 1;
+  p->pre_level = p->level;
 }
 
 void nl_cheng_resum(nl_cheng_problem *p)
 {
   evaluate_points(p);
+  p->e_con = sum_terms(p->term, p->np);
+  p->e = nl_cheng_objective(&p->c, p->e_stat, p->e_con);
+  p->has_undo = 0;
+}
+
+/* nl_cheng_resum when only the top octave can have moved since the last
+ * full evaluation at this level (pre valid: no lower octave and no lower
+ * gain moved): the lower octaves' values and sums are what a full
+ * evaluation would compute again (the same corners, the same entries), so
+ * only the top octave is re-evaluated, and each term from pre + amp * value
+ * (the same double as point_term's sum). Otherwise the full resum. */
+void nl_cheng__resum_top(nl_cheng_problem *p)
+{
+  size_t top = (size_t)p->level - 1;
+  if (p->pre_level != p->level || !pre_valid(p, top)) { nl_cheng_resum(p); return; }
+  size_t F = (size_t)p->F;
+  nl_cheng_con con = p->c.con;
+  int literal = p->c.literal;
+  double al = p->amp[top], s = p->s;
+  for (size_t i = 0; i < p->np; i++) {
+    double v = octave_value(p, i, top);
+    p->nv[i * F + top] = v;
+    double e = nl_cheng__control_of_sum(con, p->pd[2 * i] + al * (con == NL_CHENG_CON_FIRE ? fabs(v) : v), s, literal)
+               - p->pd[2 * i + 1];
+    p->term[i] = e * e;
+  }
   p->e_con = sum_terms(p->term, p->np);
   p->e = nl_cheng_objective(&p->c, p->e_stat, p->e_con);
   p->has_undo = 0;
@@ -350,14 +387,6 @@ static double update_points_top(nl_cheng_problem *p, size_t k, size_t l, double 
   p->ntouch = q1 - q0;
   p->tlev = (int)l;
   return d;
-}
-
-static int pre_valid(const nl_cheng_problem *p, size_t l)
-{
-  if (!p->pre_ok) return 0;
-  for (size_t j = 0; j < l; j++)
-    if (p->amp[j] != p->pre_amp[j]) return 0;
-  return 1;
 }
 
 static double update_points(nl_cheng_problem *p, size_t k, double dc, double ds)
