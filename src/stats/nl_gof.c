@@ -395,7 +395,8 @@ static size_t lower_bound(const double *x, size_t n, double v)
 /* lower_bound(x, n, v) of the sorted sample, searched first in the window
  * the statistic allows: a value v with F(v) = u at rank p has
  * (p + 1) / n - u <= D+ and u - p / n <= D-, so n (u - D-) <= p <= n (u + D+) - 1
- * (widened by two ranks for rounding). The answer is checked (the one rank
+ * (widened by two ranks for rounding); in a sorted window the count of
+ * values below v is lower_bound's answer. The answer is checked (the one rank
  * with x[p-1] < v <= x[p]) and searched over the whole sample otherwise, so
  * the window decides only the speed. */
 static size_t rank_of(const nl_stats_ks_incr *s, double v)
@@ -407,7 +408,11 @@ static size_t rank_of(const nl_stats_ks_incr *s, double v)
   size_t lo = lo_f > 0 ? (lo_f < (double)n ? (size_t)lo_f : n) : 0;
   size_t hi = hi_f < (double)n ? (hi_f > 0 ? (size_t)hi_f : 0) : n;
   if (hi < lo) hi = lo;
-  size_t p = lo + lower_bound(x + lo, hi - lo, v);
+  size_t p = lo;
+  if (hi - lo <= 64)   /* count the smaller values: independent loads, no chain of dependent ones */
+    for (size_t i = lo; i < hi; i++) p += x[i] < v;
+  else
+    p += lower_bound(x + lo, hi - lo, v);
   if ((p == 0 || x[p - 1] < v) && (p == n || x[p] >= v)) return p;
   return lower_bound(x, n, v);
 }
