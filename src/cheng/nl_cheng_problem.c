@@ -346,15 +346,15 @@ top_loop(const uint32_t *restrict item, const double *restrict lw, size_t q0, si
          double s, double dc, double ds, nl_cheng_con con, int literal)
 {
   double d = 0;
-  tu -= q0;   /* record q - q0 */
   for (size_t q = q0; q < q1; q++) {
     size_t i = item[q];
     double *v = nvl + i * F, old = *v, ot = term[i];
     double vl = old + (lw[2 * q] * dc + lw[2 * q + 1] * ds);
     *v = vl;
-    tu[q].i = i;
-    tu[q].v = old;
-    tu[q].t = ot;
+    nl_cheng__touch *r = tu + (q - q0);
+    r->i = i;
+    r->v = old;
+    r->t = ot;
     double e = nl_cheng__control_of_sum(con, pd[2 * i] + al * (con == NL_CHENG_CON_FIRE ? fabs(vl) : vl), s, literal)
                - pd[2 * i + 1];
     double nt = e * e;
