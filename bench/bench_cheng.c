@@ -16,10 +16,21 @@
  * Targets (issue 17): >= 2.5 M moves/s, a full optimisation <= 0.25 s CPU.
  *
  *   build/bench/bench_cheng [--reps N] [--grid G] [--stat ks|chisq|kuiper] [--tsv]
+ *   build/bench/bench_cheng --dump quick|full
  *
  * --tsv: '#' lines (setting, pinning, load), then a header and one line:
  * bench (cheng_<stat>), moves_per_s (per CPU second of nl_cheng_optimise),
  * cpu_s_per_opt (median CPU seconds of set-up + optimisation).
+ *
+ * --dump: the bit-identity record of the annealer (a speed change must not
+ * move it): for each configuration the moves, accepts, temperatures, T0,
+ * T_end and E of every level, the final E terms, the E returned by a random
+ * move/undo/resum sequence on every level, and the final angles (some in
+ * hex, all through a hash). quick: 144 short schedules (two patterns x three
+ * statistics x four textures x six variants: literal formulas, gains as
+ * variables, no propagation, other F/f1/a1/M/weights); full: six thesis-scale
+ * optimisations. Public API only, so this file built against another
+ * version of the library dumps that version (compare the md5 of the output).
  */
 #define _GNU_SOURCE   /* sched_getaffinity in nl_bench.h */
 #include "nl_bench.h"
@@ -57,6 +68,102 @@ static double raw_moves_per_second(nl_cheng_problem *p, int level)
   return (double)n / t;
 }
 
+static void dump_run(const char *tag, nl_cheng_config c, const nl_cheng_pattern *pat, unsigned long seed)
+{
+  nl_error err;
+  nl_noise_grad2 *g = nl_noise_grad2_alloc(c.m);
+  nl_noise_grad2_seed(g, seed);
+  nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
+  if (!p) { printf("%s: %s\n", tag, err.msg); nl_noise_grad2_free(g); return; }
+  nl_cheng_level_stats st[NL_CHENG_MAX_OCTAVES];
+  nl_cheng_optimise(p, seed, st);
+  printf("%s seed %lu\n", tag, seed);
+  for (int L = 0; L < c.octaves; L++)
+    printf("  L%d nv %zu moves %ld acc %ld temps %d t0 %a tend %a es %a eb %a\n", st[L].level, st[L].n_vars,
+           st[L].moves, st[L].accepted, st[L].temps, st[L].t0, st[L].t_end, st[L].e_start, st[L].e_best);
+  double es, ec, e = nl_cheng_energy(p, &es, &ec);
+  printf("  E %a %a %a\n", e, es, ec);
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, seed + 7);
+  for (int L = 1; L <= c.octaves; L++) {   /* moves, undos and resums on every level */
+    nl_cheng_set_level(p, L);
+    size_t nv;
+    const size_t *v = nl_cheng_vars(p, &nv);
+    double acc = 0;
+    unsigned long h = 0;
+    for (int i = 0; i < 300 && nv; i++) {
+      size_t k = v[gsl_rng_uniform_int(r, nv)];
+      double th = k < c.m ? NL_TWO_PI * gsl_rng_uniform(r) : 2.0 * gsl_rng_uniform(r) - 1.0;
+      double em = nl_cheng_move(p, k, th);
+      unsigned long b;
+      memcpy(&b, &em, sizeof b);
+      h = h * 31 + b;
+      if (gsl_rng_uniform(r) < 0.5) nl_cheng_undo(p);
+      if (i % 50 == 0) nl_cheng_resum(p);
+      acc += em;
+    }
+    e = nl_cheng_energy(p, &es, &ec);
+    printf("  seq L%d %a h=%016lx E %a %a %a\n", L, acc, h, e, es, ec);
+  }
+  gsl_rng_free(r);
+  unsigned long h = 1469598103934665603UL;   /* FNV-1a of every angle's bytes */
+  for (size_t k = 0; k < g->m; k++) {
+    unsigned char b[sizeof(double)];
+    memcpy(b, &g->angle[k], sizeof b);
+    for (size_t i = 0; i < sizeof b; i++) { h ^= b[i]; h *= 1099511628211UL; }
+    if (k < 8 || k % 61 == 0) printf(" %a", g->angle[k]);
+  }
+  printf(" fnv=%016lx\n", h);
+  nl_cheng_problem_free(p);
+  nl_noise_grad2_free(g);
+}
+
+static int dump(int full)
+{
+  nl_error err;
+  const char *shapes[] = {"flower", "x", NULL};
+  for (int sh = 0; shapes[sh] && (!full || sh == 0); sh++) {
+    nl_image *im = nl_study_cheng_shape(shapes[sh], full ? 128 : 64);
+    nl_cheng_pattern *pat;
+    if (nl_study_cheng_pattern_from_image(im, full ? 64 : sh ? 16 : 24, &pat, &err)) {
+      fprintf(stderr, "bench_cheng: %s\n", err.msg);
+      return 1;
+    }
+    nl_image_free(im);
+    if (full) {
+      for (int con = 0; con < 4; con++) {
+        nl_cheng_config c = nl_cheng_config_default();
+        c.con = (nl_cheng_con)con;
+        dump_run("full", c, pat, 1 + (unsigned long)con);
+      }
+      nl_cheng_config c = nl_cheng_config_default();
+      c.stat = NL_CHENG_STAT_CHISQ;
+      dump_run("full-chisq", c, pat, 11);
+      c = nl_cheng_config_default();
+      c.stat = NL_CHENG_STAT_KUIPER;
+      dump_run("full-kuiper", c, pat, 12);
+    }
+    for (int stat = 0; stat < 3 && !full; stat++)
+      for (int con = 0; con < 4; con++)
+        for (int var = 0; var < 6; var++) {
+          nl_cheng_config c = nl_cheng_config_default();
+          c.stat = (nl_cheng_stat)stat;
+          c.con = (nl_cheng_con)con;
+          c.sched.n_temps = 12; c.sched.moves_per_var = 3; c.sched.stall = 3;
+          if (var == 1) c.literal = 1;
+          if (var == 2) c.amp_vary = 1;
+          if (var == 3) c.propagate = 0;
+          if (var == 4) { c.octaves = 3; c.f1 = 4; c.a1 = 2; c.m = 256; c.log_gain[1] = 0.3; }
+          if (var == 5) { c.octaves = 5; c.f1 = 2; c.w1 = 0.5; c.w2 = 0.5; c.chisq_bins = 50; c.amp_vary = 1; c.literal = 1; }
+          char tag[64];
+          snprintf(tag, sizeof tag, "%s st%d con%d var%d", shapes[sh], stat, con, var);
+          dump_run(tag, c, pat, 100 + (unsigned long)(stat * 31 + con * 7 + var));
+        }
+    nl_cheng_pattern_free(pat);
+  }
+  return 0;
+}
+
 int main(int argc, char **argv)
 {
   long reps = 5, grid = 64;
@@ -70,6 +177,10 @@ int main(int argc, char **argv)
       if (nl_parse_long("--grid", argv[++i], 2, 1024, &grid, &err)) { fprintf(stderr, "bench_cheng: %s\n", err.msg); return 2; }
     } else if (!strcmp(argv[i], "--stat") && i + 1 < argc) {
       if (nl_cheng_stat_parse(argv[++i], &c.stat, &err)) { fprintf(stderr, "bench_cheng: %s\n", err.msg); return 2; }
+    } else if (!strcmp(argv[i], "--dump") && i + 1 < argc) {
+      const char *what = argv[++i];
+      if (strcmp(what, "quick") && strcmp(what, "full")) { fprintf(stderr, "bench_cheng: --dump quick|full, not '%s'\n", what); return 2; }
+      return dump(!strcmp(what, "full"));
     } else if (!strcmp(argv[i], "--tsv")) {
       tsv = 1;
     } else { fprintf(stderr, "bench_cheng: unknown argument '%s'\n", argv[i]); return 2; }

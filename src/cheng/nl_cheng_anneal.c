@@ -84,7 +84,7 @@ void nl_cheng_anneal(nl_cheng_problem *p, gsl_rng *rng, nl_cheng_level_stats *st
   for (z.temps = 0; z.temps < s->n_temps && stall < s->stall; z.temps++) {
     z.accepted += sweep(p, rng, vars, nv, per_temp, T, NL_PI * fmax(T / t0, 0.01));
     z.moves += per_temp;
-    nl_cheng_resum(p);   /* E_Con's running sum back to an exact sum */
+    nl_cheng__resum_top(p);   /* E_Con's running sum back to an exact sum (nl_cheng_resum's result) */
     if (p->e < ebest - 1e-12 * fabs(ebest)) { ebest = p->e; save_vars(p, vars, nv, best); stall = 0; }
     else if (T < 1e-2 * t0) stall++;   /* only once the walk has cooled: hot phases rarely improve */
     T *= alpha;

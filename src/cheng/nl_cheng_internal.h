@@ -10,6 +10,10 @@
 #include <math.h>
 #include <stdint.h>
 
+/* Undo record of one point of a one-octave move: its index, previous octave
+ * value and previous term (one line of memory for the three). */
+typedef struct { size_t i; double v, t; } nl_cheng__touch;
+
 /* The statistic term over a sample of angles, kept incrementally: KS and
  * Kuiper through nl_stats_ks_incr, chi-square through bin counts. */
 typedef struct {
@@ -59,10 +63,20 @@ struct nl_cheng_problem {
   int has_undo;
   size_t uk;
   double utheta, ugx, ugy, u_stat, u_con, u_e;
-  int tlev;              /* >= 0: only octave tlev changed (tnv holds 1 value a point), -1: F values */
+  int tlev;              /* >= 0: only octave tlev changed (records in tu), -1: F values (tp, tnv, tterm) */
   size_t *tp, ntouch;
   double *tnv, *tterm;
+  nl_cheng__touch *tu;
   unsigned *mark, stamp;
+  /* pd[2i]: point i's octave sum over octaves 0..level-2 (nl_cheng__octave_sum's
+   * first level-1 steps, formed at each resum). A move of the top octave
+   * adds only its own term to it, the same additions in the same order; valid
+   * while pre_ok and amp[0..level-2] still equal pre_amp (a move of a lower
+   * octave or a lower gain makes it stale until the next resum); pd[2i+1]:
+   * its target D_i, beside it so a move reads one line a point. */
+  double *pd;
+  int pre_ok, pre_level;
+  double pre_amp[NL_CHENG_MAX_OCTAVES];
   /* octave gains (X6, nl_cheng_amp.c): amp[l] = amp0[l] e^lg[l]; a gain move's
    * undo keeps the previous gain, s and every term */
   double amp0[NL_CHENG_MAX_OCTAVES], lg[NL_CHENG_MAX_OCTAVES];
@@ -83,6 +97,11 @@ void nl_cheng__amp_undo(nl_cheng_problem *p);
 double nl_cheng__amp_propose(const nl_cheng_problem *p, gsl_rng *rng, size_t l, double sigma);
 /* s = 1 / (sqrt(2)/2 sum amp): V = F_sum over its analytic bound. */
 double nl_cheng__amp_scale(const double *amp, int n);
+
+/* nl_cheng_resum for the annealer's temperature steps: the same result,
+ * re-evaluating only the top octave when the lower ones cannot have moved
+ * (nl_cheng_problem.c). */
+void nl_cheng__resum_top(nl_cheng_problem *p);
 
 long nl_cheng__lattice_max(double f);
 /* The control value c of nl_cheng.h from a point's octave values (the first

@@ -128,6 +128,8 @@ nl_cheng_problem *nl_cheng_problem_alloc(const nl_cheng_config *c, const nl_chen
   p->tp = nl_xmalloc(p->np * sizeof *p->tp);
   p->tnv = nl_xmalloc(p->np * F * sizeof *p->tnv);
   p->tterm = nl_xmalloc(p->np * sizeof *p->tterm);
+  p->pd = nl_xmalloc(2 * p->np * sizeof *p->pd);
+  p->tu = nl_xmalloc(p->np * sizeof *p->tu);
   build_corners(p);
   build_usage(p);
   build_lists(p);
@@ -143,6 +145,8 @@ void nl_cheng_problem_free(nl_cheng_problem *p)
   free(p->ck); free(p->cw); free(p->nv); free(p->term); free(p->used); free(p->first_level);
   free(p->in_sample); free(p->vars); free(p->sample); free(p->mark); free(p->tp);
   free(p->tnv); free(p->tterm); free(p->lstart); free(p->litem); free(p->lw); free(p->uterm);
+  free(p->pd);
+  free(p->tu);
   free(p);
 }
 
@@ -172,19 +176,62 @@ static double sum_terms(const double *t, size_t n)
   return s;
 }
 
-/* Octave values <= level and terms of every point from the stored corners. */
+/* pre (p->pd) still the lower octaves' sums: nothing below octave l moved
+ * since the last full evaluation, and their gains are the same. */
+static int pre_valid(const nl_cheng_problem *p, size_t l)
+{
+  if (!p->pre_ok) return 0;
+  for (size_t j = 0; j < l; j++)
+    if (p->amp[j] != p->pre_amp[j]) return 0;
+  return 1;
+}
+
+/* Octave values <= level and terms of every point from the stored corners,
+ * and each point's sum of the octaves below the top one (p->pre). */
 static void evaluate_points(nl_cheng_problem *p)
 {
   size_t F = (size_t)p->F;
+  int top = p->level - 1;
   for (size_t i = 0; i < p->np; i++) {
     for (size_t l = 0; l < (size_t)p->level; l++) p->nv[i * F + l] = octave_value(p, i, l);
     p->term[i] = point_term(p, p->nv + i * F, i);
+    p->pd[2 * i] = nl_cheng__octave_sum(p->c.con, p->nv + i * F, p->amp, top, -1, 0.0);
+    p->pd[2 * i + 1] = p->pat->d[i];
   }
+  memcpy(p->pre_amp, p->amp, sizeof p->amp);
+  p->pre_ok = 1;
+  p->pre_level = p->level;
 }
 
 void nl_cheng_resum(nl_cheng_problem *p)
 {
   evaluate_points(p);
+  p->e_con = sum_terms(p->term, p->np);
+  p->e = nl_cheng_objective(&p->c, p->e_stat, p->e_con);
+  p->has_undo = 0;
+}
+
+/* nl_cheng_resum when only the top octave can have moved since the last
+ * full evaluation at this level (pre valid: no lower octave and no lower
+ * gain moved): the lower octaves' values and sums are what a full
+ * evaluation would compute again (the same corners, the same entries), so
+ * only the top octave is re-evaluated, and each term from pre + amp * value
+ * (the same double as point_term's sum). Otherwise the full resum. */
+void nl_cheng__resum_top(nl_cheng_problem *p)
+{
+  size_t top = (size_t)p->level - 1;
+  if (p->pre_level != p->level || !pre_valid(p, top)) { nl_cheng_resum(p); return; }
+  size_t F = (size_t)p->F;
+  nl_cheng_con con = p->c.con;
+  int literal = p->c.literal;
+  double al = p->amp[top], s = p->s;
+  for (size_t i = 0; i < p->np; i++) {
+    double v = octave_value(p, i, top);
+    p->nv[i * F + top] = v;
+    double e = nl_cheng__control_of_sum(con, p->pd[2 * i] + al * (con == NL_CHENG_CON_FIRE ? fabs(v) : v), s, literal)
+               - p->pd[2 * i + 1];
+    p->term[i] = e * e;
+  }
   p->e_con = sum_terms(p->term, p->np);
   p->e = nl_cheng_objective(&p->c, p->e_stat, p->e_con);
   p->has_undo = 0;
@@ -230,6 +277,7 @@ static double update_points_general(nl_cheng_problem *p, size_t k, double dc, do
   size_t F = (size_t)p->F, M1 = p->m + 1;
   p->ntouch = 0;
   p->tlev = -1;
+  p->pre_ok = 0;   /* lower octaves may change */
   if (++p->stamp == 0) { memset(p->mark, 0, p->np * sizeof *p->mark); p->stamp = 1; }
   for (size_t l = 0; l < (size_t)p->level; l++) {
     const size_t *st = p->lstart + l * M1;
@@ -264,24 +312,79 @@ static double update_points_one(nl_cheng_problem *p, size_t k, size_t l, double 
   const size_t *st = p->lstart + l * M1;
   const uint32_t *item = p->litem;
   const double *lw = p->lw, *amp = p->amp, *dv = p->pat->d;
-  double *nv = p->nv, *term = p->term, *tnv = p->tnv, *tterm = p->tterm, s = p->s;
-  size_t *tp = p->tp, t = 0;
+  double *nv = p->nv, *term = p->term, s = p->s;
+  nl_cheng__touch *tu = p->tu;
+  size_t t = 0;
   nl_cheng_con con = p->c.con;
   int levels = p->level, literal = p->c.literal;
   double d = 0;
   for (size_t q = st[k]; q < st[k + 1]; q++, t++) {
     size_t i = item[q];
     double *v = nv + i * F;
-    tp[t] = i;
-    tnv[t] = v[l];
-    tterm[t] = term[i];
+    tu[t].i = i;
+    tu[t].v = v[l];
+    tu[t].t = term[i];
     double vl = v[l] + (lw[2 * q] * dc + lw[2 * q + 1] * ds);
     v[l] = vl;
     double e = nl_cheng__control_of_sum(con, nl_cheng__octave_sum(con, v, amp, levels, (int)l, vl), s, literal) - dv[i];
     term[i] = e * e;
-    d += term[i] - tterm[t];
+    d += term[i] - tu[t].t;
   }
   p->ntouch = t;
+  p->tlev = (int)l;
+  return d;
+}
+
+/* The top octave's move (l = level - 1, the annealer's every move): the
+ * octave sum is pre[i] + amp[l] Noise_l, the last step of
+ * nl_cheng__octave_sum on its first l steps, so the same double. One loop per
+ * texture and reading (con, literal constants: no branch on them per point).
+ * restrict: the arrays are distinct allocations. */
+static inline __attribute__((always_inline)) double
+top_loop(const uint32_t *restrict item, const double *restrict lw, size_t q0, size_t q1, double *restrict nvl,
+         size_t F, const double *restrict pd, double *restrict term, nl_cheng__touch *restrict tu, double al,
+         double s, double dc, double ds, nl_cheng_con con, int literal)
+{
+  double d = 0;
+  for (size_t q = q0; q < q1; q++) {
+    size_t i = item[q];
+    double *v = nvl + i * F, old = *v, ot = term[i];
+    double vl = old + (lw[2 * q] * dc + lw[2 * q + 1] * ds);
+    *v = vl;
+    nl_cheng__touch *r = tu + (q - q0);
+    r->i = i;
+    r->v = old;
+    r->t = ot;
+    double e = nl_cheng__control_of_sum(con, pd[2 * i] + al * (con == NL_CHENG_CON_FIRE ? fabs(vl) : vl), s, literal)
+               - pd[2 * i + 1];
+    double nt = e * e;
+    term[i] = nt;
+    d += nt - ot;
+  }
+  return d;
+}
+
+static double update_points_top(nl_cheng_problem *p, size_t k, size_t l, double dc, double ds)
+{
+  const size_t *st = p->lstart + l * (p->m + 1);
+  size_t q0 = st[k], q1 = st[k + 1], F = (size_t)p->F;
+  const uint32_t *item = p->litem;
+  const double *lw = p->lw, *pd = p->pd;
+  double *nvl = p->nv + l, *term = p->term, al = p->amp[l], s = p->s, d;
+  nl_cheng__touch *tu = p->tu;
+#define TOP(con, lit) top_loop(item, lw, q0, q1, nvl, F, pd, term, tu, al, s, dc, ds, con, lit)
+  switch (p->c.con * 2 + (p->c.literal != 0)) {
+  case NL_CHENG_CON_PLAIN * 2: d = TOP(NL_CHENG_CON_PLAIN, 0); break;
+  case NL_CHENG_CON_PLAIN * 2 + 1: d = TOP(NL_CHENG_CON_PLAIN, 1); break;
+  case NL_CHENG_CON_SIN * 2: d = TOP(NL_CHENG_CON_SIN, 0); break;
+  case NL_CHENG_CON_SIN * 2 + 1: d = TOP(NL_CHENG_CON_SIN, 1); break;
+  case NL_CHENG_CON_ABS * 2: d = TOP(NL_CHENG_CON_ABS, 0); break;
+  case NL_CHENG_CON_ABS * 2 + 1: d = TOP(NL_CHENG_CON_ABS, 1); break;
+  case NL_CHENG_CON_FIRE * 2: d = TOP(NL_CHENG_CON_FIRE, 0); break;
+  default: d = TOP(NL_CHENG_CON_FIRE, 1); break;
+  }
+#undef TOP
+  p->ntouch = q1 - q0;
   p->tlev = (int)l;
   return d;
 }
@@ -294,6 +397,9 @@ static double update_points(nl_cheng_problem *p, size_t k, double dc, double ds)
     const size_t *st = p->lstart + l * M1;
     if (st[k] < st[k + 1]) { lists++; only = l; }
   }
+  if (lists <= 1 && only + 1 == (size_t)p->level && pre_valid(p, only))
+    return update_points_top(p, k, only, dc, ds);
+  if (lists == 1 && only + 1 < (size_t)p->level) p->pre_ok = 0;   /* a lower octave changes */
   return lists <= 1 ? update_points_one(p, k, only, dc, ds) : update_points_general(p, k, dc, ds);
 }
 
@@ -330,11 +436,11 @@ void nl_cheng_undo(nl_cheng_problem *p)
   p->g->gx[k] = p->ugx;
   p->g->gy[k] = p->ugy;
   if (p->tlev >= 0) {
-    size_t l = (size_t)p->tlev;
+    double *nvl = p->nv + p->tlev, *term = p->term;
+    const nl_cheng__touch *tu = p->tu;
     for (size_t t = 0; t < p->ntouch; t++) {
-      size_t i = p->tp[t];
-      p->nv[i * F + l] = p->tnv[t];
-      p->term[i] = p->tterm[t];
+      nvl[tu[t].i * F] = tu[t].v;
+      term[tu[t].i] = tu[t].t;
     }
   } else {
     for (size_t t = 0; t < p->ntouch; t++) {

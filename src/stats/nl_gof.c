@@ -392,6 +392,31 @@ static size_t lower_bound(const double *x, size_t n, double v)
   return lo + (n == 1 && x[lo] < v);
 }
 
+/* lower_bound(x, n, v) of the sorted sample, searched first in the window
+ * the statistic allows: a value v with F(v) = u at rank p has
+ * (p + 1) / n - u <= D+ and u - p / n <= D-, so n (u - D-) <= p <= n (u + D+) - 1
+ * (widened by two ranks for rounding); in a sorted window the count of
+ * values below v is lower_bound's answer. The answer is checked (the one rank
+ * with x[p-1] < v <= x[p]) and searched over the whole sample otherwise, so
+ * the window decides only the speed. */
+static size_t rank_of(const nl_stats_ks_incr *s, double v)
+{
+  const double *x = s->x;
+  size_t n = s->n;
+  double u = s->cdf(v, s->params), lo_f = (double)n * (u - s->d_minus) - 2.0, hi_f = (double)n * (u + s->d_plus) + 2.0;
+  if (!(lo_f <= hi_f)) return lower_bound(x, n, v);   /* NaN: no window */
+  size_t lo = lo_f > 0 ? (lo_f < (double)n ? (size_t)lo_f : n) : 0;
+  size_t hi = hi_f < (double)n ? (hi_f > 0 ? (size_t)hi_f : 0) : n;
+  if (hi < lo) hi = lo;
+  size_t p = lo;
+  if (hi - lo <= 64)   /* count the smaller values: independent loads, no chain of dependent ones */
+    for (size_t i = lo; i < hi; i++) p += x[i] < v;
+  else
+    p += lower_bound(x + lo, hi - lo, v);
+  if ((p == 0 || x[p - 1] < v) && (p == n || x[p] >= v)) return p;
+  return lower_bound(x, n, v);
+}
+
 /* A move of an optimiser usually shifts a value by a few ranks: walk that
  * far, then fall back to a binary search and memmove. */
 #define INCR_WALK 16
@@ -399,7 +424,7 @@ static size_t lower_bound(const double *x, size_t n, double v)
 nl_status nl_stats_ks_incr_replace(nl_stats_ks_incr *s, double old_value, double new_value,
                                    nl_error *err)
 {
-  size_t n = s->n, p = lower_bound(s->x, n, old_value), q;
+  size_t n = s->n, p = rank_of(s, old_value), q;
   s->can_undo = 0;
   if (p == n || s->x[p] != old_value)
     return nl_fail(err, NL_EINVAL, "value %.17g is not in the sample", old_value);
