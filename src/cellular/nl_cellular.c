@@ -1,4 +1,5 @@
 #include "cellular/nl_cellular.h"
+#include "cellular/nl_cellular_simd.h"
 
 #include <ctype.h>
 #include <gsl/gsl_randist.h>
@@ -145,50 +146,135 @@ static void reset_d2(double *d2, int n)
   for (int q = 0; q < n; q++) d2[q] = INFINITY;
 }
 
+/* Visit order of the 27 neighbours (nl_cellular_simd.h): codes 9 cx + 3 cy
+ * + cz, classes 0 own, 1 near, 2 far, by increasing bound for faces at 1/4
+ * (near) and 3/4 (far). */
+const unsigned char nl_cellular_visit[27] = {
+  0,  9, 3, 1,  12, 10, 4,  13,  18, 6, 2,  21, 19, 15, 7, 11, 5,  22, 16, 14,  24, 20, 8,
+  25, 23, 17,  26};
+
+/* Along one axis at coordinate v in cell i (|v| < 2^52): the offset of
+ * class 0, 1, 2 (own, near, far) and its squared face distance. */
+static void axis_classes(double v, long i, long off[3], double b2[3])
+{
+  double lo = v - (double)i, hi = (double)(i + 1) - v;
+  int near_lo = lo <= hi;
+  off[0] = 0;
+  off[1] = near_lo ? -1 : 1;
+  off[2] = -off[1];
+  b2[0] = 0.0;
+  b2[1] = near_lo ? lo * lo : hi * hi;
+  b2[2] = near_lo ? hi * hi : lo * lo;
+}
+
 void nl_cellular_eval(const nl_cellular *c, const double *xyz, int n, double *F)
 {
   double pts[3 * NL_CELLULAR_MAX_M], d2[NL_CELLULAR_NMAX];
   long i = lfloor(xyz[0]), j = lfloor(xyz[1]), k = lfloor(xyz[2]);
   reset_d2(d2, n);
-  /* Steps 2-6: the cube around x and its 26 neighbours. */
-  for (long di = -1; di <= 1; di++)
-    for (long dj = -1; dj <= 1; dj++)
-      for (long dk = -1; dk <= 1; dk++) {
-        int m = nl_cellular_cube(c, i + di, j + dj, k + dk, pts);
-        scan_points(pts, m, xyz[0], xyz[1], xyz[2], n, d2);
-      }
+  if (!(fabs(xyz[0]) < 0x1p52 && fabs(xyz[1]) < 0x1p52 && fabs(xyz[2]) < 0x1p52)) {
+    /* Steps 2-6: the cube around x and its 26 neighbours, all of them. */
+    for (long di = -1; di <= 1; di++)
+      for (long dj = -1; dj <= 1; dj++)
+        for (long dk = -1; dk <= 1; dk++) {
+          int m = nl_cellular_cube(c, i + di, j + dj, k + dk, pts);
+          scan_points(pts, m, xyz[0], xyz[1], xyz[2], n, d2);
+        }
+    finish(d2, n, F);
+    return;
+  }
+  /* The same 27 cubes, nearest first, each generated only if one of its
+   * points could enter F1..Fn (nl_cellular_simd.h: the same bits). */
+  long off[3][3];
+  double b2[3][3];
+  axis_classes(xyz[0], i, off[0], b2[0]);
+  axis_classes(xyz[1], j, off[1], b2[1]);
+  axis_classes(xyz[2], k, off[2], b2[2]);
+  for (int t = 0; t < 27; t++) {
+    int cx = nl_cellular_visit[t] / 9, cy = nl_cellular_visit[t] / 3 % 3, cz = nl_cellular_visit[t] % 3;
+    if ((b2[0][cx] + b2[1][cy]) + b2[2][cz] >= d2[n - 1]) continue;
+    int m = nl_cellular_cube(c, i + off[0][cx], j + off[1][cy], k + off[2][cz], pts);
+    scan_points(pts, m, xyz[0], xyz[1], xyz[2], n, d2);
+  }
   finish(d2, n, F);
 }
 
 /* A row at fixed (y, z) touches the columns of cubes ifirst..ifirst+ncol-1;
- * column bucket b holds the points of its 9 cubes (j-1..j+1, k-1..k+1),
- * so each cube is generated once per row, not once per sample. */
+ * column col holds its 9 cubes (rows j-1..j+1, planes k-1..k+1) by class
+ * (nl_cellular_rowpts), so each cube is generated once per row, not once per
+ * sample. */
 typedef struct {
-  double *pts;     /* 3 * total */
-  size_t *start;   /* ncol + 1 offsets, in points */
-} buckets;
+  nl_cellular_rowpts r;
+  size_t *start;
+  double *px, *ay2, *az2;
+} rowbuf;
 
-static void buckets_fill(const nl_cellular *c, long ifirst, size_t ncol, long j, long k,
-                         buckets *b)
+static void rowbuf_fill(const nl_cellular *c, long ifirst, size_t ncol, double y, double z, rowbuf *b)
 {
+  long j = lfloor(y), k = lfloor(z), offy[3], offz[3];
+  b->r.ifirst = ifirst;
+  b->r.ncol = ncol;
+  axis_classes(y, j, offy, b->r.by2);
+  axis_classes(z, k, offz, b->r.bz2);
   size_t cap = ncol * 9 * 8, total = 0;
-  b->pts = nl_xmalloc(3 * cap * sizeof *b->pts);
-  b->start = nl_xmalloc((ncol + 1) * sizeof *b->start);
+  b->px = nl_xmalloc(cap * sizeof *b->px);
+  b->ay2 = nl_xmalloc(cap * sizeof *b->ay2);
+  b->az2 = nl_xmalloc(cap * sizeof *b->az2);
+  b->start = nl_xmalloc((9 * ncol + 1) * sizeof *b->start);
   double tmp[3 * NL_CELLULAR_MAX_M];
-  for (size_t col = 0; col < ncol; col++) {
-    b->start[col] = total;
-    for (long dj = -1; dj <= 1; dj++)
-      for (long dk = -1; dk <= 1; dk++) {
-        int m = nl_cellular_cube(c, ifirst + (long)col, j + dj, k + dk, tmp);
-        if (total + (size_t)m > cap) {
-          cap = 2 * (total + (size_t)m);
-          b->pts = nl_xrealloc(b->pts, 3 * cap * sizeof *b->pts);
-        }
-        memcpy(b->pts + 3 * total, tmp, 3 * (size_t)m * sizeof *tmp);
-        total += (size_t)m;
+  for (size_t col = 0; col < ncol; col++)
+    for (int q = 0; q < 9; q++) {
+      b->start[9 * col + (size_t)q] = total;
+      int m = nl_cellular_cube(c, ifirst + (long)col, j + offy[q / 3], k + offz[q % 3], tmp);
+      if (total + (size_t)m > cap) {
+        cap = 2 * (total + (size_t)m);
+        b->px = nl_xrealloc(b->px, cap * sizeof *b->px);
+        b->ay2 = nl_xrealloc(b->ay2, cap * sizeof *b->ay2);
+        b->az2 = nl_xrealloc(b->az2, cap * sizeof *b->az2);
       }
+      for (int p = 0; p < m; p++) {   /* scan_points' operations */
+        double ay = tmp[3 * p + 1] - y, az = tmp[3 * p + 2] - z;
+        b->px[total] = tmp[3 * p];
+        b->ay2[total] = ay * ay;
+        b->az2[total] = az * az;
+        total++;
+      }
+    }
+  b->start[9 * ncol] = total;
+  b->r.start = b->start;
+  b->r.px = b->px;
+  b->r.ay2 = b->ay2;
+  b->r.az2 = b->az2;
+}
+
+static void rowbuf_free(rowbuf *b)
+{
+  free(b->px); free(b->ay2); free(b->az2); free(b->start);
+}
+
+/* The scalar kernel (the reference level): per sample, the 27 cubes of
+ * nl_cellular_eval in its visit order, with the same rejection. */
+static void row_scalar(const nl_cellular_rowpts *R, double x0, double dx, size_t count, int n, double *F)
+{
+  double d2[NL_CELLULAR_NMAX], bx2[3];
+  long offx[3];
+  for (size_t s = 0; s < count; s++) {
+    double x = x0 + (double)s * dx;
+    long i = lfloor(x);
+    size_t col = (size_t)(i - R->ifirst);   /* >= 1: ifirst has a margin */
+    axis_classes(x, i, offx, bx2);
+    reset_d2(d2, n);
+    for (int t = 0; t < 27; t++) {
+      int cx = nl_cellular_visit[t] / 9, cy = nl_cellular_visit[t] / 3 % 3, cz = nl_cellular_visit[t] % 3;
+      if ((bx2[cx] + R->by2[cy]) + R->bz2[cz] >= d2[n - 1]) continue;
+      size_t cube = 9 * (size_t)((long)col + offx[cx]) + (size_t)(3 * cy + cz);
+      for (size_t p = R->start[cube]; p < R->start[cube + 1]; p++) {
+        double ax = R->px[p] - x;
+        insert_d2(d2, n, ax * ax + R->ay2[p] + R->az2[p]);
+      }
+    }
+    finish(d2, n, F + s * (size_t)n);
   }
-  b->start[ncol] = total;
 }
 
 void nl_cellular_row(const nl_cellular *c, double x0, double dx, double y, double z,
@@ -196,36 +282,29 @@ void nl_cellular_row(const nl_cellular *c, double x0, double dx, double y, doubl
 {
   if (count == 0) return;
   double xl = x0 + (double)(count - 1) * dx;
-  if (!(fabs(x0) < 0x1p52 && fabs(xl) < 0x1p52)) {   /* no fractional cells: point by point */
+  long ifirst = 0, ilast = 0;
+  int pointwise = !(fabs(x0) < 0x1p52 && fabs(xl) < 0x1p52 && fabs(y) < 0x1p52 && fabs(z) < 0x1p52);
+  if (!pointwise) {   /* a sparse row: buckets would cost more */
+    ifirst = lfloor(fmin(x0, xl)) - 1;
+    ilast = lfloor(fmax(x0, xl)) + 1;
+    pointwise = (size_t)(ilast - ifirst + 1) > 2 * count + 8;
+  }
+  if (pointwise) {   /* also: no fractional cells, NaN or inf (the full scan) */
     for (size_t s = 0; s < count; s++) {
       double p[3] = {x0 + (double)s * dx, y, z};
       nl_cellular_eval(c, p, n, F + s * (size_t)n);
     }
     return;
   }
-  long ifirst = lfloor(fmin(x0, xl)) - 1, ilast = lfloor(fmax(x0, xl)) + 1;
-  size_t ncol = (size_t)(ilast - ifirst + 1);
-  if (ncol > 2 * count + 8) {   /* sparse row: buckets would cost more */
-    for (size_t s = 0; s < count; s++) {
-      double p[3] = {x0 + (double)s * dx, y, z};
-      nl_cellular_eval(c, p, n, F + s * (size_t)n);
-    }
-    return;
+  rowbuf b;
+  rowbuf_fill(c, ifirst, (size_t)(ilast - ifirst + 1), y, z, &b);
+  switch (nl_noise_simd_get()) {   /* the noise module's level: NL_NOISE_SIMD, nl_noise_simd_set */
+  case NL_NOISE_SIMD_SSE2: nl_cellular_row_sse2(&b.r, x0, dx, count, n, F); break;
+  case NL_NOISE_SIMD_AVX2: nl_cellular_row_avx2(&b.r, x0, dx, count, n, F); break;
+  case NL_NOISE_SIMD_AVX512: nl_cellular_row_avx512(&b.r, x0, dx, count, n, F); break;
+  default: row_scalar(&b.r, x0, dx, count, n, F);
   }
-  buckets b;
-  buckets_fill(c, ifirst, ncol, lfloor(y), lfloor(z), &b);
-  double d2[NL_CELLULAR_NMAX];
-  for (size_t s = 0; s < count; s++) {
-    double x = x0 + (double)s * dx;
-    size_t col = (size_t)(lfloor(x) - ifirst);   /* >= 1: ifirst has a margin */
-    reset_d2(d2, n);
-    /* Same cubes as nl_cellular_eval, visited in the same i, j, k order. */
-    scan_points(b.pts + 3 * b.start[col - 1], (int)(b.start[col + 2] - b.start[col - 1]),
-                x, y, z, n, d2);
-    finish(d2, n, F + s * (size_t)n);
-  }
-  free(b.pts);
-  free(b.start);
+  rowbuf_free(&b);
 }
 
 /* ---- GCTBF ------------------------------------------------------------- */

@@ -29,7 +29,13 @@
  *   nl_cellular_row(c, x0, dx, y, z, count, 4, Frow);    // Frow[k*4 + i]
  *   nl_cellular_free(c);
  * A row reuses each cube's points for every sample of the row, so a raster
- * costs far less than point evaluations; both give the same bits.
+ * costs far less than point evaluations; both give the same bits. Both skip
+ * a neighbour cube whose nearest possible squared distance (from the faces,
+ * in the distance's own operation order) is already >= the current F_n^2:
+ * none of its points could enter, so the bits are those of the full 27-cube
+ * scan (nl_cellular_simd.h; test_cellular_simd.c). Rows run on the noise
+ * module's SIMD level (nl_noise_simd_get: scalar, SSE2, AVX2, AVX-512 chosen
+ * at run time, NL_NOISE_SIMD to force one), every level the same bits.
  *
  * GCTBF (eq. 1):  GCTBF(x) = sum_i c_i F_i(x) + sum_{i,j} c_ij F_i(x) F_j(x),
  * i, j = 1..4. nl_cellular_gctbf_parse() reads it from text, e.g.
