@@ -85,9 +85,13 @@
  *   through nl_stats_ks_incr (KS; Kuiper's V = D+ + D- of the same state: O(log n +
  *   rank shift + n/32)) or bin counts (chi-square: O(1), the sum of squared
  *   counts kept exactly in integers). nl_cheng_undo restores the saved values
- *   exactly. At every temperature step all points are re-evaluated from the
- *   stored corners and E_Con is re-summed, so rounding from differences never
- *   outlives one temperature. Tested: incremental == full recomputation to 1e-12
+ *   exactly. Since annealing moves only the top octave of its level, each point
+ *   also keeps the sum of its lower octaves (set at the re-evaluation below and
+ *   marked invalid when a lower octave or gain moves): a top-octave move adds
+ *   one term to it, the same additions in the same order as the full sum. At
+ *   every temperature step all points are re-evaluated from the stored corners
+ *   (only the top octave when nothing below it moved) and E_Con is re-summed,
+ *   so rounding from differences never outlives one temperature. Tested: incremental == full recomputation to 1e-12
  *   (relative) after every move of a random sequence.
  *
  * OCTAVE AMPLITUDES AS VARIABLES (X6, the thesis's ch. 5 future work: "adjust
