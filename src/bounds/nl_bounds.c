@@ -159,7 +159,7 @@ static nl_noise_octaves smoke_octaves(const nl_bounds_smoke *s)
  * shared: |p|^2 = (x^2 + y^2) + z^2 keeps x^2 + y^2 per ray, and the
  * Beer-Lambert factor exp(-kappa density h) is 1 at density 0 (the
  * transmittance stays the same bits) and one constant at density 1. */
-enum { SMOKE_BLOCK = 256 };
+enum { SMOKE_BLOCK = 1024 };
 
 typedef struct {
   const nl_noise_perm3 *p;
@@ -213,11 +213,18 @@ static void smoke_densities(smoke_block *b, int nact, double z, nl_bounds_smoke_
   }
   for (int k = 0; k <= n && m > 0; k++) {
     int left = 0;
-    for (int j = 0; j < m; j++) {   /* eq. 5.4 before term k: decided samples leave */
+    long decided = 0;
+    double rk = b->rem[k];
+    for (int j = 0; j < m; j++) {   /* eq. 5.4 before term k (clamp_decided), without branches: decided samples leave */
       int q = b->und[j];
-      if (clamp_decided(b->base[q], b->partial[q], b->rem[k], &b->dens[q])) st->noise_evals += k;
-      else b->und[left++] = q;
+      double sum = b->base[q] + b->partial[q];
+      int lo = sum + rk <= 0.0, hi = sum - rk >= 1.0;
+      b->dens[q] = hi ? 1.0 : 0.0;   /* overwritten later if undecided */
+      decided += lo | hi;
+      b->und[left] = q;
+      left += !(lo | hi);
     }
+    st->noise_evals += decided * k;
     m = left;
     if (k == n || m == 0) break;
     smoke_octave(b, k, z, b->und, m, &st->max_abs_noise);
