@@ -146,32 +146,130 @@ static nl_noise_octaves smoke_octaves(const nl_bounds_smoke *s)
   return o;
 }
 
-/* distNoise at p (Fig. 5.1): base = a |p| + 1. */
-static double smoke_density(const nl_noise_perm3 *p, const nl_bounds_smoke *s, const nl_noise_octaves *o,
-                            const double *rem, const double *xyz, int *terms, double *max_abs)
+/* The march, batched (issue 17, item 8). The rays of a block of pixels
+ * step together: at step i every ray still below the stop opacity gives
+ * one sample at z_i, and each octave of those samples runs through the
+ * point kernel (nl_noise_perm3_points) at once. With incremental bounding
+ * the eq. 5.4 check runs before each octave and only the samples it left
+ * undecided are gathered for the next one, so the octave count is still
+ * decided per sample. Every sample sees the same operations in the same
+ * order as one ray marched alone (the point kernel returns the bits of
+ * nl_noise_perm3_eval): images and counts do not depend on the batching.
+ * What a ray alone pays per sample (a call per octave, a loop, exp) is
+ * shared: |p|^2 = (x^2 + y^2) + z^2 keeps x^2 + y^2 per ray, and the
+ * Beer-Lambert factor exp(-kappa density h) is 1 at density 0 (the
+ * transmittance stays the same bits) and one constant at density 1. */
+enum { SMOKE_BLOCK = 1024 };
+
+typedef struct {
+  const nl_noise_perm3 *p;
+  const nl_bounds_smoke *s;
+  const nl_noise_octaves *o;
+  const double *rem;
+  double x[SMOKE_BLOCK], y[SMOKE_BLOCK], r2[SMOKE_BLOCK], trans[SMOKE_BLOCK], colour[SMOKE_BLOCK];
+  double base[SMOKE_BLOCK], partial[SMOKE_BLOCK], dens[SMOKE_BLOCK];
+  double px[SMOKE_BLOCK], py[SMOKE_BLOCK], pz[SMOKE_BLOCK], nz[SMOKE_BLOCK];
+  int act[SMOKE_BLOCK], und[SMOKE_BLOCK];
+} smoke_block;
+
+/* One octave k of the samples und[0..m-1] at height z: partial += amp_k noise(f_k p). */
+static void smoke_octave(smoke_block *b, int k, double z, const int *und, int m, double *max_abs)
 {
-  double d = sqrt(xyz[0] * xyz[0] + xyz[1] * xyz[1] + xyz[2] * xyz[2]);
-  return nl_bounds_clamped_fractal(p, o, rem, s->slope * d + 1.0, xyz, s->incremental,
-                                   terms, max_abs);
+  double f = b->o->freq[k], amp = b->o->amp[k], fz = f * z, top = *max_abs;
+  for (int j = 0; j < m; j++) {
+    b->px[j] = f * b->x[und[j]];
+    b->py[j] = f * b->y[und[j]];
+    b->pz[j] = fz;
+  }
+  nl_noise_perm3_points(b->p, b->px, b->py, b->pz, (size_t)m, b->nz);
+  for (int j = 0; j < m; j++) {
+    double a = fabs(b->nz[j]);
+    top = a > top ? a : top;
+    b->partial[und[j]] += amp * b->nz[j];
+  }
+  *max_abs = top;
 }
 
-/* One ray along +z through the unit cube; emission-absorption. */
-static double smoke_ray(const nl_noise_perm3 *p, const nl_bounds_smoke *s, const nl_noise_octaves *o,
-                        const double *rem, double x, double y, nl_bounds_smoke_stats *st)
+/* The densities of the active samples at height z (clamped_sum, batched). */
+static void smoke_densities(smoke_block *b, int nact, double z, nl_bounds_smoke_stats *st)
 {
-  double trans = 1.0, colour = 0.0, stop = 1.0 - s->stop_opacity;
-  long nsteps = (long)floor(1.0 / s->step);
-  for (long i = 0; i <= nsteps && trans > stop; i++) {
-    double xyz[3] = {x, y, -0.5 + (double)i * s->step};
-    int terms;
-    double dens = smoke_density(p, s, o, rem, xyz, &terms, &st->max_abs_noise);
-    st->samples++;
-    st->noise_evals += terms;
-    double t1 = trans * exp(-s->kappa * dens * s->step);
-    colour += trans - t1;
-    trans = t1;
+  const nl_bounds_smoke *s = b->s;
+  int n = b->o->n, m = nact;
+  for (int j = 0; j < nact; j++) {
+    int q = b->act[j];
+    b->base[q] = s->slope * sqrt(b->r2[q] + z * z) + 1.0;
+    b->partial[q] = 0.0;
+    b->und[j] = q;
   }
-  return colour;
+  st->samples += nact;
+  if (!s->incremental) {
+    for (int k = 0; k < n; k++) smoke_octave(b, k, z, b->und, m, &st->max_abs_noise);
+    st->noise_evals += (long)n * nact;
+    for (int j = 0; j < nact; j++) {
+      int q = b->act[j];
+      b->dens[q] = clamp01(b->base[q] + b->partial[q]);
+    }
+    return;
+  }
+  for (int k = 0; k <= n && m > 0; k++) {
+    int left = 0;
+    long decided = 0;
+    double rk = b->rem[k];
+    for (int j = 0; j < m; j++) {   /* eq. 5.4 before term k (clamp_decided), without branches: decided samples leave */
+      int q = b->und[j];
+      double sum = b->base[q] + b->partial[q];
+      int lo = sum + rk <= 0.0, hi = sum - rk >= 1.0;
+      b->dens[q] = hi ? 1.0 : 0.0;   /* overwritten later if undecided */
+      decided += lo | hi;
+      b->und[left] = q;
+      left += !(lo | hi);
+    }
+    st->noise_evals += decided * k;
+    m = left;
+    if (k == n || m == 0) break;
+    smoke_octave(b, k, z, b->und, m, &st->max_abs_noise);
+  }
+  for (int j = 0; j < m; j++) {   /* never decided: the whole sum */
+    int q = b->und[j];
+    b->dens[q] = clamp01(b->base[q] + b->partial[q]);
+  }
+  st->noise_evals += (long)n * m;
+}
+
+/* Rays of pixels first .. first + count - 1 (row-major) along +z through
+ * the unit cube; emission-absorption. */
+static void smoke_block_march(smoke_block *b, size_t first, int count, double *img, nl_bounds_smoke_stats *st)
+{
+  const nl_bounds_smoke *s = b->s;
+  double stop = 1.0 - s->stop_opacity, full = exp(-s->kappa * 1.0 * s->step);
+  long nsteps = (long)floor(1.0 / s->step);
+  int nact = 0;
+  for (int j = 0; j < count; j++) {
+    size_t pix = first + (size_t)j;
+    int r = (int)(pix / (size_t)s->width), c = (int)(pix % (size_t)s->width);
+    b->x[j] = -0.5 + (c + 0.5) / s->width;
+    b->y[j] = -0.5 + (r + 0.5) / s->height;
+    b->r2[j] = b->x[j] * b->x[j] + b->y[j] * b->y[j];
+    b->trans[j] = 1.0;
+    b->colour[j] = 0.0;
+    if (b->trans[j] > stop) b->act[nact++] = j;
+  }
+  for (long i = 0; i <= nsteps && nact > 0; i++) {
+    double z = -0.5 + (double)i * s->step;
+    smoke_densities(b, nact, z, st);
+    int left = 0;
+    for (int j = 0; j < nact; j++) {
+      int q = b->act[j];
+      double d = b->dens[q], trans = b->trans[q];
+      if (d == 0.0) { if (trans > stop) b->act[left++] = q; continue; }   /* exp(-0) = 1: nothing absorbed */
+      double t1 = trans * (d == 1.0 ? full : exp(-s->kappa * d * s->step));
+      b->colour[q] += trans - t1;
+      b->trans[q] = t1;
+      if (t1 > stop) b->act[left++] = q;
+    }
+    nact = left;
+  }
+  for (int j = 0; j < count; j++) img[first + (size_t)j] = b->colour[j];
 }
 
 nl_status nl_bounds_smoke_render(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double *img,
@@ -183,11 +281,12 @@ nl_status nl_bounds_smoke_render(const nl_noise_perm3 *p, const nl_bounds_smoke 
   double rem[NL_MAX_OCTAVES + 1];
   nl_bounds_remainders(&o, s->octave_bound, rem);
   memset(st, 0, sizeof *st);
-  for (int r = 0; r < s->height; r++) {
-    double y = -0.5 + (r + 0.5) / s->height;
-    for (int c = 0; c < s->width; c++)
-      img[(size_t)r * s->width + c] = smoke_ray(p, s, &o, rem, -0.5 + (c + 0.5) / s->width, y, st);
-  }
+  smoke_block *b = nl_xmalloc(sizeof *b);
+  b->p = p; b->s = s; b->o = &o; b->rem = rem;
+  size_t npix = (size_t)s->width * s->height;
+  for (size_t first = 0; first < npix; first += SMOKE_BLOCK)
+    smoke_block_march(b, first, (int)(npix - first < SMOKE_BLOCK ? npix - first : SMOKE_BLOCK), img, st);
+  free(b);
   return NL_OK;
 }
 

@@ -31,7 +31,10 @@
  * leaves the cube. nl_bounds_smoke_render() fills a w x h grey image in [0, 1] and
  * counts samples and noise evaluations; nl_bounds_smoke_decision_map() is Fig. 5.3:
  * in the plane z, how many terms were evaluated before the value was decided
- * (n + 1 = never decided: the pixel needs the whole sum).
+ * (n + 1 = never decided: the pixel needs the whole sum). The render marches
+ * blocks of rays in step and sends each octave of their samples through
+ * nl_noise_perm3_points (the eq. 5.4 check still per sample): the images,
+ * counts and max |noise| are the bits of a ray-by-ray march.
  *
  *   nl_bounds_smoke s = nl_bounds_smoke_default();          // 512 x 512, step 0.01, 99 %
  *   s.octaves = 11; s.incremental = 1;
