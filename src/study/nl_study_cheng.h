@@ -240,7 +240,8 @@ nl_table *nl_study_cheng_grid_sweep(const nl_study_cheng *s, const nl_cheng_conf
  * (nl_study_cheng_gains_alloc: the labels, octave, a_thesis, a, a_sd, gain,
  * gain_sd, log_gain_sd, R = amp_range, at_bound = fraction of seeds whose
  * |ln gain| is within 1e-3 of ln R); one row to `timing` (labels, seconds_per_run). The
- * first seed's log gains into first_log_gain (F values). Exit 1 on error. */
+ * first seed's log gains into first_log_gain (F values; seconds_per_run: mean thread CPU seconds of one
+ * optimisation, nl_cheng_eval.cpu_seconds). Exit 1 on error. */
 nl_table *nl_study_cheng_gains_alloc(int nlabels, const char *const *labels);
 nl_table *nl_study_cheng_timing_alloc(int nlabels, const char *const *labels);
 nl_noise_grad2 *nl_study_cheng_amp_seeds(const nl_study_cheng *s, const nl_cheng_config *c, const nl_cheng_pattern *pat,
