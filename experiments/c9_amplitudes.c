@@ -72,7 +72,7 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, gains, "gains.tsv");
   nl_harness_write_table(r, tests, "tests.tsv");
   nl_harness_write_table(r, timing, "timing.tsv");
-  nl_harness_check(r, "timing.tsv", "seconds_per_run", "ignore");   /* wall time, not a result */
+  nl_harness_check(r, "timing.tsv", "seconds_per_run", "ignore");   /* CPU time, not a result */
   nl_harness_text(r, "**Thesis:** ch. 5 proposes adjusting the fractal sum's amplitudes automatically to follow the "
                      "control pattern more closely; not done there. **Ours:** the amplitudes 1/a_l = g_l / a_l (a_l = %g 2^(l-1), "
                      "eq. 3.10) with gains g_l in [1/%g, %g] are variables of E = w1 E_KS + w2 E_Con (w1 = %g, w2 = %g): "
@@ -88,7 +88,7 @@ int main(int argc, char **argv)
   nl_study_cheng_control_text(r, sum, 3);
   double tf = 0, to = 0;
   for (size_t k = 0; k < timing->nrows; k += 2) { tf += nl_table_value(timing, k, "seconds_per_run"); to += nl_table_value(timing, k + 1, "seconds_per_run"); }
-  nl_harness_text(r, "Time per optimisation (wall, this run's load): fixed %.3g s, optimised %.3g s on average over the cases "
+  nl_harness_text(r, "Time per optimisation (thread CPU): fixed %.3g s, optimised %.3g s on average over the cases "
                      "(a gain move re-evaluates every control point).\n", tf / ncase, to / ncase);
   nl_harness_figure(r, "control.png", "E_Con, r with the pattern and contrast, fixed vs optimised amplitudes (mean and sd over seeds; +: E_Con of the best constant image)");
   nl_harness_figure(r, "gains.png", "Optimised octave amplitudes 1/a_l = gain / a_l against the thesis's 1/a_l and the bounds (mean and sd of the gain over seeds)");

@@ -39,7 +39,13 @@ mkdir -p "$out/exemplars"
 # The main run reads the shipped photographs, as reproduce does, so that the
 # sanitizer check can compare this very run with results/quick; the fBm
 # exemplar gets a run of its own (no size sweep: max_size 64, 2 seeds).
-"$exp" --quick --exemplars "$(cd "$(dirname "$0")/.." && pwd)/data/exemplars" --out "$out"
+"$exp" --quick --threads 2 --exemplars "$(cd "$(dirname "$0")/.." && pwd)/data/exemplars" --out "$out"
+# The photographs' fits are nl_parallel_for items (nl_study_exemplar_fits): one
+# thread gives the same photos.tsv byte for byte (the size sweep, which does
+# not enter it, cut to 64 pixels and 2 seeds).
+"$exp" --quick --threads 1 --exemplars "$(cd "$(dirname "$0")/.." && pwd)/data/exemplars" --set max_size=64 \
+  --set sweep_seeds=2 --out "$out.t1" > /dev/null
+cmp "$out/photos.tsv" "$out.t1/photos.tsv"
 "$exp" --quick --exemplars "$out/exemplars" --set max_size=64 --set sweep_seeds=2 --out "$out/fbm" > /dev/null
 "$2" "$out/weights.tsv" 'rows=7' 'file:noise.png' 'corrected>=0'
 tsv_awk 'NR == 1 || n("band") == 0' "$out/weights.tsv" > "$out/weights_b0.tsv"

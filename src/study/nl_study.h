@@ -228,6 +228,15 @@ nl_image *nl_study_example_photo(const nl_image *ex, const char *name, nl_byexam
                                  int size, unsigned long seed, int replicate, double min_share, double max_ratio,
                                  double max_ks, nl_table *bands, nl_table *sum, nl_error *err);
 
+/* K syntheses of p, size x size, seeds nl_seed_replicate(seed0, s), on up to
+ * `threads` threads (nl_parallel_for; seed s writes only its own slots, so the
+ * results do not depend on the thread count), each against the exemplar ex:
+ * ks[s] = nl_study_ks_channels (per channel in per[3 s .. 3 s + 2]), ce[s] =
+ * nl_byexample_correlation_error. Returns seed 0's synthesis (caller frees);
+ * NULL and err (the first failing seed's) if a synthesis fails. */
+nl_image *nl_study_example_synth_seeds(const nl_byexample_params *p, const nl_byexample_synth_options *so,
+                                       const nl_image *ex, int size, int K, unsigned long seed0, int threads,
+                                       double *ks, double *per, double *ce, nl_error *err);
 /* Reads the first max photographs of nl_study_example_list; -1 and err on the
  * first that does not read (the others freed). */
 int nl_study_example_load(const char *dir, char (*names)[64], nl_image **photos, int max, nl_error *err);

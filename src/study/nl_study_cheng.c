@@ -2,6 +2,7 @@
  * parameters, summary rows (mean and spread over seeds), CDF, histogram and
  * height-map tables. */
 #include "study/nl_study_cheng.h"
+#include "base/nl_parallel.h"
 #include "stats/nl_stats.h"
 
 #include <gsl/gsl_statistics_double.h>
@@ -184,15 +185,52 @@ nl_cheng_pattern *nl_study_cheng_pattern(const nl_study_cheng *s, const char *na
   return nl_study_cheng_pattern_load_or_die(nl_harness_name(s->r), s->patterns, name, s->grid);
 }
 
-nl_cheng_eval *nl_study_cheng_seeds_evals(const nl_study_cheng *s, const nl_cheng_config *c,
-                                          const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
-                                          const char *const *labels, nl_noise_grad2 **first)
+/* Item i of nl_study_cheng_runs: case i / k, seed i % k, nl_cheng_run_seeds's
+ * loop body. It writes only its own slots (evs[i], st[i], err[i], and
+ * firsts[case] for seed 0) and draws only from nl_seed_replicate(seed0, seed),
+ * so the results do not depend on the thread count (nl_parallel.h). */
+typedef struct {
+  const nl_cheng_config *cs;
+  const nl_cheng_pattern *const *pats;
+  unsigned long seed0;
+  int k;
+  nl_cheng_eval *evs;
+  nl_noise_grad2 **firsts;
+  nl_status *st;
+  nl_error *err;
+} runs_job;
+
+static void run_item(void *ctx, size_t i, int thread)
+{
+  (void)thread;
+  runs_job *j = ctx;
+  size_t q = i / (size_t)j->k, seed = i % (size_t)j->k;
+  j->st[i] = nl_cheng_run(&j->cs[q], j->pats[q], nl_seed_replicate(j->seed0, (long)seed), &j->evs[i], NULL,
+                          seed == 0 && j->firsts ? &j->firsts[q] : NULL, &j->err[i]);
+}
+
+nl_cheng_eval *nl_study_cheng_runs(const nl_study_cheng *s, int n, const nl_cheng_config *cs,
+                                   const nl_cheng_pattern *const *pats, nl_noise_grad2 **firsts)
 {
   int k = nl_harness_seeds(s->r);
-  nl_cheng_eval *evs = nl_xmalloc((size_t)k * sizeof *evs);
-  nl_error err;
+  size_t items = (size_t)n * (size_t)k;
+  nl_cheng_eval *evs = nl_xmalloc(items * sizeof *evs);
+  nl_status *st = nl_xmalloc(items * sizeof *st);
+  nl_error *err = nl_xmalloc(items * sizeof *err);
   unsigned long seed0 = s->role ? nl_seed_stream(nl_harness_seed(s->r), s->role, 0) : nl_harness_seed(s->r);
-  if (nl_cheng_run_seeds(c, pat, seed0, k, evs, first, &err)) nl_harness_die(s->r, 1, "%s", err.msg);
+  runs_job j = {cs, pats, seed0, k, evs, firsts, st, err};
+  nl_parallel_for(items, nl_harness_threads(s->r), run_item, &j);
+  for (size_t i = 0; i < items; i++)   /* the first failure in case and seed order, as a serial loop met it */
+    if (st[i]) nl_harness_die(s->r, 1, "%s", err[i].msg);
+  free(st);
+  free(err);
+  return evs;
+}
+
+void nl_study_cheng_rows_add(const nl_study_cheng *s, nl_table *sum, int nlabels, const char *const *labels,
+                             const nl_cheng_eval *evs)
+{
+  int k = nl_harness_seeds(s->r);
   nl_study_cheng_summary_add(sum, nlabels, labels, evs, k);
   if (s->cost) {
     char name[160] = "";
@@ -206,6 +244,16 @@ nl_cheng_eval *nl_study_cheng_seeds_evals(const nl_study_cheng *s, const nl_chen
                     cpu > 0 ? moves / cpu : NAN);
     free(t);
   }
+}
+
+nl_cheng_eval *nl_study_cheng_seeds_evals(const nl_study_cheng *s, const nl_cheng_config *c,
+                                          const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
+                                          const char *const *labels, nl_noise_grad2 **first)
+{
+  nl_noise_grad2 *f = NULL;
+  nl_cheng_eval *evs = nl_study_cheng_runs(s, 1, c, &pat, first ? &f : NULL);
+  if (first) *first = f;
+  nl_study_cheng_rows_add(s, sum, nlabels, labels, evs);
   return evs;
 }
 

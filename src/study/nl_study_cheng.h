@@ -153,7 +153,20 @@ void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title,
 void nl_study_cheng_ready(nl_study_cheng *s);
 /* The pattern NAME of s's folder at s's grid (nl_study_cheng_pattern_load_or_die). */
 nl_cheng_pattern *nl_study_cheng_pattern(const nl_study_cheng *s, const char *name);
-/* Config c on pat over the run's seeds (nl_cheng_run_seeds), its summary row
+/* n cases, config cs[i] on pattern pats[i], each over the run's seeds
+ * (nl_cheng_run_seeds's runs), all n x k runs as one nl_parallel_for on the
+ * run's --threads (case-major items; each run from its seed alone, so the
+ * results do not depend on the thread count). Returns the n k evaluations,
+ * case i's at [i k .. i k + k - 1] (caller frees); firsts, if not NULL, gets
+ * each case's first-seed optimised table (caller frees). Exit 1 on error (the
+ * first failing run in case and seed order). */
+nl_cheng_eval *nl_study_cheng_runs(const nl_study_cheng *s, int n, const nl_cheng_config *cs,
+                                   const nl_cheng_pattern *const *pats, nl_noise_grad2 **firsts);
+/* One case's k evaluations as a summary row of sum under the nlabels labels
+ * (nl_study_cheng_summary_add), and its cost row if s->cost. */
+void nl_study_cheng_rows_add(const nl_study_cheng *s, nl_table *sum, int nlabels, const char *const *labels,
+                             const nl_cheng_eval *evs);
+/* Config c on pat over the run's seeds (nl_study_cheng_runs, n = 1), its summary row
  * appended to sum under the nlabels labels (nl_study_cheng_summary_add); returns
  * the first seed's optimised table (caller frees). Exit 1 on error. */
 /* The same, returning the k evaluations (nl_harness_seeds; caller frees) and
@@ -227,7 +240,8 @@ nl_table *nl_study_cheng_grid_sweep(const nl_study_cheng *s, const nl_cheng_conf
  * (nl_study_cheng_gains_alloc: the labels, octave, a_thesis, a, a_sd, gain,
  * gain_sd, log_gain_sd, R = amp_range, at_bound = fraction of seeds whose
  * |ln gain| is within 1e-3 of ln R); one row to `timing` (labels, seconds_per_run). The
- * first seed's log gains into first_log_gain (F values). Exit 1 on error. */
+ * first seed's log gains into first_log_gain (F values; seconds_per_run: mean thread CPU seconds of one
+ * optimisation, nl_cheng_eval.cpu_seconds). Exit 1 on error. */
 nl_table *nl_study_cheng_gains_alloc(int nlabels, const char *const *labels);
 nl_table *nl_study_cheng_timing_alloc(int nlabels, const char *const *labels);
 nl_noise_grad2 *nl_study_cheng_amp_seeds(const nl_study_cheng *s, const nl_cheng_config *c, const nl_cheng_pattern *pat,

@@ -3,6 +3,7 @@
  * the per-band comparison of a photograph with its synthesis. See
  * nl_study.h. */
 #include "study/nl_study.h"
+#include "base/nl_parallel.h"
 #include "byexample/nl_byexample.h"
 #include "stats/nl_stats.h"
 #include "study/nl_study_exemplars.h"
@@ -150,6 +151,55 @@ nl_image *nl_study_example_photo(const nl_image *ex, const char *name, nl_byexam
   nl_study_example_compare(ex, syn, name, calibrate > 0 ? "calibrated" : nl_byexample_hist_name(hk), replicate, min_share,
                            max_ratio, max_ks, bands, sum);
   return syn;
+}
+
+typedef struct {
+  const nl_byexample_params *p;
+  const nl_byexample_synth_options *so;
+  const nl_image *ex;
+  int size;
+  unsigned long seed0;
+  double *ks, *per, *ce;
+  nl_image *first;
+  nl_status *st;
+  nl_error *err;
+} synth_job;
+
+static void synth_item(void *ctx, size_t s, int thread)
+{
+  (void)thread;
+  synth_job *j = ctx;
+  nl_image *syn;
+  if ((j->st[s] = nl_byexample_synthesize(j->p, j->size, j->size, nl_seed_replicate(j->seed0, (long)s), j->so, &syn,
+                                          &j->err[s])))
+    return;
+  j->ks[s] = nl_study_ks_channels(j->ex, syn, j->per + 3 * s);
+  j->ce[s] = nl_byexample_correlation_error(j->ex, syn);
+  if (s == 0) j->first = syn;
+  else nl_image_free(syn);
+}
+
+nl_image *nl_study_example_synth_seeds(const nl_byexample_params *p, const nl_byexample_synth_options *so,
+                                       const nl_image *ex, int size, int K, unsigned long seed0, int threads,
+                                       double *ks, double *per, double *ce, nl_error *err)
+{
+  nl_status *st = nl_xcalloc((size_t)K, sizeof *st);
+  nl_error *errs = nl_xmalloc((size_t)K * sizeof *errs);
+  /* nl_byexample_sigma2 keeps its value in plain statics: filled before the threads start, so no item writes them. */
+  nl_byexample_sigma2(p->tile);
+  synth_job j = {p, so, ex, size, seed0, ks, per, ce, NULL, st, errs};
+  nl_parallel_for((size_t)K, threads, synth_item, &j);
+  nl_image *first = j.first;
+  for (int s = 0; s < K; s++)
+    if (st[s]) {
+      *err = errs[s];
+      nl_image_free(first);
+      first = NULL;
+      break;
+    }
+  free(st);
+  free(errs);
+  return first;
 }
 
 int nl_study_example_load(const char *dir, char (*names)[64], nl_image **photos, int max, nl_error *err)
