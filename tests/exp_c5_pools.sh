@@ -4,12 +4,12 @@
 # replicates (readings.tsv, ess.tsv, verdicts on the headline). Checks the table's invariants, the
 # thesis-cutoff rows (no (cos, sin) distance reaches the thesis's cutoffs, so
 # one cluster), the matched rows (the thesis's K0 exactly), the pool rule,
-# and that the pool does not depend on the number of threads.
+# and that no table depends on the number of threads (--threads 1 and 2).
 set -euo pipefail
 . "$(dirname "$0")/tsv.sh"
 exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
-"$exp" --quick --out "$out" --patterns "$pat" >/dev/null
+"$exp" --quick --threads 2 --out "$out" --patterns "$pat" >/dev/null
 "$expect" "$out/gmm.tsv" rows=8 'K_initial>=1' 'K_final>=K_initial' 'input_samples<=pool' 'seeds==3' \
   'n_ok<=seeds' 'BIC>AIC' 'paper_samples==1000'
 "$expect" "$out/original.tsv" rows=4 'E_ks>0' 'E_ks<0.05' 'E_con>0' 'E_R_pool_max_gap>=0' 'E_R_pool_best<=E_R_pool_median'
@@ -50,10 +50,18 @@ awk -F'\t' "$(named '$col["cutoff_rule"]=="matched_K0" && ($col["K_initial"]!=$c
 awk -F'\t' "$(named '{key=$col["texture"]"/"$col["low_levels"]; if (key==prev && $col["K"]>k){print "K grows: " $0; exit 1} prev=key; k=$col["K"]}')" "$out/cutoff_k.tsv"
 grep -q '^pool_bytes_erosion_low1' "$out/manifest.tsv"
 grep -q '^cluster_bytes_cloud_low1' "$out/manifest.tsv"
-# one thread: same pool, same models (timing columns dropped)
-"$exp" --quick --out "$out/one" --patterns "$pat" --set threads=1 >/dev/null
+# one thread: same pool, same models (timing columns dropped). Two threads
+# run the pool runs, the seeds' fits, the assessment variants and EM's
+# (block, component) pairs and components as items; one thread runs them in
+# order: the same bytes, and noiselab-check (every table, the manifest's
+# parameters) finds no drift.
+"$exp" --quick --out "$out/one" --patterns "$pat" --threads 1 >/dev/null
 cmp <(drop "$out/gmm.tsv" seconds_gmm) <(drop "$out/one/gmm.tsv" seconds_gmm)
 cmp <(drop "$out/pool_runs.tsv" seconds) <(drop "$out/one/pool_runs.tsv" seconds)
 cmp "$out/assess.tsv" "$out/one/assess.tsv"
 cmp <(drop "$out/readings.tsv" seconds) <(drop "$out/one/readings.tsv" seconds)
 cmp "$out/ess.tsv" "$out/one/ess.tsv"
+cmp "$out/aic_path.tsv" "$out/one/aic_path.tsv"
+cmp "$out/aic_readings.tsv" "$out/one/aic_readings.tsv"
+cmp "$out/reproduce.tsv" "$out/one/reproduce.tsv"
+"$(dirname "$exp")/../tools/noiselab-check" "$out" "$out/one" >/dev/null

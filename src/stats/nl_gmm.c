@@ -3,6 +3,7 @@
 #define _GNU_SOURCE   /* RTLD_DEFAULT */
 #include "stats/nl_gmm.h"
 #include "stats/nl_cluster.h"
+#include "base/nl_parallel.h"
 
 #include <dlfcn.h>
 #include <float.h>
@@ -53,25 +54,33 @@ static void blas_threads_restore(int was)
  * block nb = min(n, BLOCK), components at most kcap. */
 typedef struct {
   size_t nb, kcap;
+  int threads, nt;   /* o->threads; scratch copies (threads a region can run) */
   double *R;      /* n x kcap responsibilities */
-  double *y;      /* nb x d: E-step block */
-  double *z;      /* nb x d: M-step block (full covariances) */
+  double *y[NL_PARALLEL_MAX];   /* per thread, nb x d: E-step block */
+  double *z[NL_PARALLEL_MAX];   /* per thread, nb x d: M-step block (full covariances) */
   double *rmax;   /* kcap */
+  int *bad;       /* kcap: factorisation failed */
 } workspace;
 
-static void ws_init(workspace *w, size_t n, size_t d, size_t kcap)
+static void ws_init(workspace *w, size_t n, size_t d, size_t kcap, int threads)
 {
   w->nb = n < BLOCK ? n : BLOCK;
   w->kcap = kcap;
+  w->threads = threads;
+  w->nt = nl_parallel_threads((size_t)-1, threads);
   w->R = nl_xmalloc(n * kcap * sizeof(double));
-  w->y = nl_xmalloc(w->nb * d * sizeof(double));
-  w->z = nl_xmalloc(w->nb * d * sizeof(double));
+  for (int t = 0; t < w->nt; t++) {
+    w->y[t] = nl_xmalloc(w->nb * d * sizeof(double));
+    w->z[t] = nl_xmalloc(w->nb * d * sizeof(double));
+  }
   w->rmax = nl_xmalloc(kcap * sizeof(double));
+  w->bad = nl_xmalloc(kcap * sizeof(int));
 }
 
 static void ws_free(workspace *w)
 {
-  free(w->R); free(w->y); free(w->z); free(w->rmax);
+  free(w->R); free(w->rmax); free(w->bad);
+  for (int t = 0; t < w->nt; t++) { free(w->y[t]); free(w->z[t]); }
 }
 
 void nl_gmm_options_default(nl_gmm_options *o)
@@ -82,6 +91,7 @@ void nl_gmm_options_default(nl_gmm_options *o)
   o->max_iter = 100;
   o->seed = 0;
   o->init_labels = NULL;
+  o->threads = 1;
 }
 
 size_t nl_gmm_nparams(size_t k, size_t d, nl_gmm_covariance covariance)
@@ -230,29 +240,27 @@ static double half_logdet(const nl_gmm *g, size_t k)
   return s;
 }
 
-/* lp[i*K + k] = log w_k + log N(x_i; mu_k, Sigma_k) for the rows of one block.
- * Full: Y = (X_b - 1 mu_k^T) L_k^{-T} by one dtrsm, |y_i|^2 by rows. */
-static void block_log_prob(const nl_gmm *g, const double *xb, size_t nb, double *y, double *lp)
+/* lp[i*K + k] = log w_k + log N(x_i; mu_k, Sigma_k) for the rows of one block
+ * and one component k. Full: Y = (X_b - 1 mu_k^T) L_k^{-T}, |y_i|^2 by rows. */
+static void block_log_prob(const nl_gmm *g, size_t k, const double *xb, size_t nb, double *y, double *lp)
 {
   size_t d = g->d, K = g->k;
   double c0 = -0.5 * (double)d * log(NL_TWO_PI);
-  for (size_t k = 0; k < K; k++) {
-    const double *mu = g->means + k * d, *c = g->chol + k * cov_size(g);
-    double base = c0 - half_logdet(g, k) + log(g->weights[k]);
+  const double *mu = g->means + k * d, *c = g->chol + k * cov_size(g);
+  double base = c0 - half_logdet(g, k) + log(g->weights[k]);
+  for (size_t i = 0; i < nb; i++)
+    for (size_t j = 0; j < d; j++) y[i * d + j] = xb[i * d + j] - mu[j];
+  if (g->covariance == NL_GMM_FULL) {
+    /* Y = (X_b - mu) L^{-T}: a multiplication by the stored inverse runs
+     * about 3x faster in OpenBLAS than the equivalent dtrsm */
+    gsl_matrix_view Y = gsl_matrix_view_array(y, nb, d);
+    gsl_matrix_const_view P = gsl_matrix_const_view_array(g->prec + k * d * d, d, d);
+    gsl_blas_dtrmm(CblasRight, CblasLower, CblasTrans, CblasNonUnit, 1.0, &P.matrix, &Y.matrix);
+  } else {
     for (size_t i = 0; i < nb; i++)
-      for (size_t j = 0; j < d; j++) y[i * d + j] = xb[i * d + j] - mu[j];
-    if (g->covariance == NL_GMM_FULL) {
-      /* Y = (X_b - mu) L^{-T}: a multiplication by the stored inverse runs
-       * about 3x faster in OpenBLAS than the equivalent dtrsm */
-      gsl_matrix_view Y = gsl_matrix_view_array(y, nb, d);
-      gsl_matrix_const_view P = gsl_matrix_const_view_array(g->prec + k * d * d, d, d);
-      gsl_blas_dtrmm(CblasRight, CblasLower, CblasTrans, CblasNonUnit, 1.0, &P.matrix, &Y.matrix);
-    } else {
-      for (size_t i = 0; i < nb; i++)
-        for (size_t j = 0; j < d; j++) y[i * d + j] /= c[j];
-    }
-    for (size_t i = 0; i < nb; i++) lp[i * K + k] = base - 0.5 * nl_cluster_sumsq(y + i * d, d);
+      for (size_t j = 0; j < d; j++) y[i * d + j] /= c[j];
   }
+  for (size_t i = 0; i < nb; i++) lp[i * K + k] = base - 0.5 * nl_cluster_sumsq(y + i * d, d);
 }
 
 /* Log-sum-exp of one row; turns the row into responsibilities if resp. */
@@ -267,27 +275,39 @@ static double row_lse(double *row, size_t K, int resp)
   return lse;
 }
 
-/* Sum over rows of log p(x_i). R (n x K, may be NULL) gets responsibilities,
- * logp (may be NULL) each log p(x_i). */
-static double e_step(const nl_gmm *g, const double *x, size_t n, double *R, double *logp,
-                     double *ybuf)
+/* The E-step's items: (block, component) pairs, block-major; each writes
+ * only its own column of its block's rows of lp, with its thread's y. */
+typedef struct { const nl_gmm *g; const double *x; size_t n; double *lp; double *const *y; } estep_job;
+
+static void estep_item(void *ctx, size_t item, int t)
 {
-  size_t K = g->k, d = g->d, nb0 = n < BLOCK ? n : BLOCK;
-  double *y = ybuf ? ybuf : nl_xmalloc(nb0 * d * sizeof(double));
-  double *lpbuf = R ? NULL : nl_xmalloc(nb0 * K * sizeof(double));
+  const estep_job *j = ctx;
+  size_t K = j->g->k, d = j->g->d, i0 = item / K * BLOCK, k = item % K;
+  size_t nb = j->n - i0 < BLOCK ? j->n - i0 : BLOCK;
+  block_log_prob(j->g, k, j->x + i0 * d, nb, j->y[t], j->lp + i0 * K);
+}
+
+/* Sum over rows of log p(x_i). R (n x K, may be NULL) gets responsibilities,
+ * logp (may be NULL) each log p(x_i). The log-densities come from threads
+ * threads (w's scratch; w NULL: one thread, own scratch); the sums run in
+ * row order afterwards, so the result does not depend on the threads. */
+static double e_step(const nl_gmm *g, const double *x, size_t n, double *R, double *logp,
+                     workspace *w)
+{
+  size_t K = g->k, d = g->d, nb0 = n < BLOCK ? n : BLOCK, nblk = (n + BLOCK - 1) / BLOCK;
+  double *own = NULL, *const *y = w ? w->y : &own;
+  if (!w) own = nl_xmalloc(nb0 * d * sizeof(double));
+  double *lp = R ? R : w ? w->R : nl_xmalloc(n * K * sizeof(double));   /* w->R: n x kcap >= n x K */
+  estep_job j = {g, x, n, lp, y};
+  nl_parallel_for(nblk * K, w ? w->threads : 1, estep_item, &j);
   double total = 0.0;
-  for (size_t i0 = 0; i0 < n; i0 += BLOCK) {
-    size_t nb = n - i0 < BLOCK ? n - i0 : BLOCK;
-    double *lp = R ? R + i0 * K : lpbuf;
-    block_log_prob(g, x + i0 * d, nb, y, lp);
-    for (size_t i = 0; i < nb; i++) {
-      double l = row_lse(lp + i * K, K, R != NULL);
-      if (logp) logp[i0 + i] = l;
-      total += l;
-    }
+  for (size_t i = 0; i < n; i++) {
+    double l = row_lse(lp + i * K, K, R != NULL);
+    if (logp) logp[i] = l;
+    total += l;
   }
-  if (!ybuf) free(y);
-  free(lpbuf);
+  free(own);
+  if (!R && !w) free(lp);
   return total;
 }
 
@@ -328,47 +348,94 @@ static void scatter_full(const double *x, size_t n, size_t d, const double *R, s
     for (size_t i = 0; i < d; i++) memset(S + i * d, 0, (i + 1) * sizeof(double));
 }
 
-/* Cholesky of each covariance into g->chol; NL_ENUM on failure. GSL's
- * default error handler aborts, so it is off for the call. */
-static nl_status factorize(nl_gmm *g, nl_error *err)
+/* Cholesky of covariance k into g->chol (and its inverse into g->prec);
+ * 1 on failure. GSL's default error handler aborts, so it is off for the
+ * M-step (handler_off). */
+static int factorize_one(nl_gmm *g, size_t k)
 {
   size_t d = g->d, cs = cov_size(g);
-  for (size_t k = 0; k < g->k; k++) {
-    double *c = g->chol + k * cs;
-    memcpy(c, g->covs + k * cs, cs * sizeof(double));
-    int bad = 0;
-    if (g->covariance == NL_GMM_FULL) {
-      gsl_matrix_view L = gsl_matrix_view_array(c, d, d);
-      gsl_error_handler_t *old = gsl_set_error_handler_off();
-      bad = gsl_linalg_cholesky_decomp1(&L.matrix) != GSL_SUCCESS;
-      gsl_set_error_handler(old);
-      for (size_t i = 0; i < d; i++)
-        for (size_t j = i + 1; j < d; j++) c[i * d + j] = 0.0;
-      if (!bad) {   /* prec = L^{-1}, lower triangular */
-        double *P = g->prec + k * cs;
-        memcpy(P, c, cs * sizeof(double));
-        gsl_matrix_view Pv = gsl_matrix_view_array(P, d, d);
-        gsl_linalg_tri_invert(CblasLower, CblasNonUnit, &Pv.matrix);
-      }
-    } else {
-      for (size_t j = 0; j < d; j++) { bad |= !(c[j] > 0.0); c[j] = sqrt(c[j]); }
+  double *c = g->chol + k * cs;
+  memcpy(c, g->covs + k * cs, cs * sizeof(double));
+  int bad = 0;
+  if (g->covariance == NL_GMM_FULL) {
+    gsl_matrix_view L = gsl_matrix_view_array(c, d, d);
+    bad = gsl_linalg_cholesky_decomp1(&L.matrix) != GSL_SUCCESS;
+    for (size_t i = 0; i < d; i++)
+      for (size_t j = i + 1; j < d; j++) c[i * d + j] = 0.0;
+    if (!bad) {   /* prec = L^{-1}, lower triangular */
+      double *P = g->prec + k * cs;
+      memcpy(P, c, cs * sizeof(double));
+      gsl_matrix_view Pv = gsl_matrix_view_array(P, d, d);
+      gsl_linalg_tri_invert(CblasLower, CblasNonUnit, &Pv.matrix);
     }
-    for (size_t j = 0; j < cs && !bad; j++) bad = !isfinite(c[j]);
-    if (bad)
-      return nl_fail(err, NL_ENUM, "component %zu of %zu: covariance is not positive definite "
-                     "(too few points in it?); increase reg_covar or use fewer components",
-                     k + 1, g->k);
+  } else {
+    for (size_t j = 0; j < d; j++) { bad |= !(c[j] > 0.0); c[j] = sqrt(c[j]); }
   }
-  return NL_OK;
+  for (size_t j = 0; j < cs && !bad; j++) bad = !isfinite(c[j]);
+  return bad;
+}
+
+/* GSL's error handler is one process-wide variable, and fits may run on
+ * several threads at once (a caller's nl_parallel_for over fits): the first
+ * to need it off turns it off, the last restores it. */
+static pthread_mutex_t handler_lock = PTHREAD_MUTEX_INITIALIZER;
+static int handler_users;
+static gsl_error_handler_t *handler_saved;
+
+static void handler_off(void)
+{
+  pthread_mutex_lock(&handler_lock);
+  if (handler_users++ == 0) handler_saved = gsl_set_error_handler_off();
+  pthread_mutex_unlock(&handler_lock);
+}
+
+static void handler_restore(void)
+{
+  pthread_mutex_lock(&handler_lock);
+  if (--handler_users == 0) gsl_set_error_handler(handler_saved);
+  pthread_mutex_unlock(&handler_lock);
+}
+
+/* The M-step's items: component k's covariance from its responsibilities
+ * (scatter with its thread's z) and its factor; each writes only component
+ * k's arrays and bad[k]. */
+typedef struct { nl_gmm *g; const double *x; size_t n; const double *R; double reg; workspace *w; } mstep_job;
+
+static void mstep_item(void *ctx, size_t k, int t)
+{
+  const mstep_job *j = ctx;
+  nl_gmm *g = j->g;
+  size_t K = g->k, d = g->d, n = j->n, cs = cov_size(g);
+  const double *x = j->x, *R = j->R;
+  double nk = g->weights[k], *mu = g->means + k * d, *S = g->covs + k * cs;
+  for (size_t q = 0; q < d; q++) mu[q] /= nk;
+  if (g->covariance == NL_GMM_FULL) {
+    scatter_full(x, n, d, R, K, k, mu, SKIP * j->w->rmax[k], j->w->z[t], j->w->nb, S);
+    for (size_t i = 0; i < d; i++)
+      for (size_t q = 0; q <= i; q++) S[q * d + i] = S[i * d + q] /= nk;
+    for (size_t q = 0; q < d; q++) S[q * d + q] += j->reg;
+  } else {
+    memset(S, 0, d * sizeof(double));
+    for (size_t i = 0; i < n; i++)
+      for (size_t q = 0; q < d; q++) {
+        double v = x[i * d + q] - mu[q];
+        S[q] += R[i * K + k] * v * v;
+      }
+    for (size_t q = 0; q < d; q++) S[q] = S[q] / nk + j->reg;
+  }
+  j->w->bad[k] = factorize_one(g, k);
 }
 
 /* Weights, means, covariances from responsibilities R (sklearn's
  * _estimate_gaussian_parameters); weights N_k/n at initialisation
- * (normalise = 0) and N_k / sum N_k afterwards, as sklearn does. */
+ * (normalise = 0) and N_k / sum N_k afterwards, as sklearn does. The
+ * components' covariances and factors run on w's threads; NL_ENUM names
+ * the first component (in order) whose covariance is not positive
+ * definite, as a serial loop would. */
 static nl_status m_step(nl_gmm *g, const double *x, size_t n, const double *R, double reg,
                         int normalise, workspace *w, nl_error *err)
 {
-  size_t K = g->k, d = g->d, cs = cov_size(g);
+  size_t K = g->k, d = g->d;
   double total = 0.0;
   double *rmax = w->rmax;
   for (size_t k = 0; k < K; k++) { g->weights[k] = 10 * DBL_EPSILON; rmax[k] = 0.0; }
@@ -381,27 +448,18 @@ static nl_status m_step(nl_gmm *g, const double *x, size_t n, const double *R, d
   gsl_matrix_const_view Xv = gsl_matrix_const_view_array(x, n, d);
   gsl_matrix_view M = gsl_matrix_view_array(g->means, K, d);
   gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, &Rv.matrix, &Xv.matrix, 0.0, &M.matrix);
-  for (size_t k = 0; k < K; k++) {
-    double nk = g->weights[k], *mu = g->means + k * d, *S = g->covs + k * cs;
-    for (size_t j = 0; j < d; j++) mu[j] /= nk;
-    if (g->covariance == NL_GMM_FULL) {
-      scatter_full(x, n, d, R, K, k, mu, SKIP * rmax[k], w->z, w->nb, S);
-      for (size_t i = 0; i < d; i++)
-        for (size_t j = 0; j <= i; j++) S[j * d + i] = S[i * d + j] /= nk;
-      for (size_t j = 0; j < d; j++) S[j * d + j] += reg;
-    } else {
-      memset(S, 0, d * sizeof(double));
-      for (size_t i = 0; i < n; i++)
-        for (size_t j = 0; j < d; j++) {
-          double t = x[i * d + j] - mu[j];
-          S[j] += R[i * K + k] * t * t;
-        }
-      for (size_t j = 0; j < d; j++) S[j] = S[j] / nk + reg;
-    }
-    total += nk;
-  }
+  mstep_job j = {g, x, n, R, reg, w};
+  handler_off();
+  nl_parallel_for(K, w->threads, mstep_item, &j);
+  handler_restore();
+  for (size_t k = 0; k < K; k++) total += g->weights[k];
   for (size_t k = 0; k < K; k++) g->weights[k] /= normalise ? total : (double)n;
-  return factorize(g, err);
+  for (size_t k = 0; k < K; k++)
+    if (w->bad[k])
+      return nl_fail(err, NL_ENUM, "component %zu of %zu: covariance is not positive definite "
+                     "(too few points in it?); increase reg_covar or use fewer components",
+                     k + 1, g->k);
+  return NL_OK;
 }
 
 /* ---- initialisation: k-means++ and Lloyd ------------------------------------ */
@@ -535,14 +593,14 @@ static nl_status fit_ws(nl_gmm *g, const double *x, size_t n, const nl_gmm_optio
   g->iterations = 0;
   for (size_t it = 1; it <= o->max_iter && !s; it++) {
     double prev = lower;
-    lower = e_step(g, x, n, R, NULL, w->y) / (double)n;
+    lower = e_step(g, x, n, R, NULL, w) / (double)n;
     s = m_step(g, x, n, R, o->reg_covar, 1, w, err);
     g->iterations = it;
     if (fabs(lower - prev) < o->tol) { g->converged = 1; break; }
   }
   if (s) return s;
   g->n = n;
-  g->loglik = e_step(g, x, n, NULL, NULL, w->y);
+  g->loglik = e_step(g, x, n, NULL, NULL, w);
   if (!isfinite(g->loglik))
     return nl_fail(err, NL_ENUM, "the log-likelihood is not finite; increase reg_covar");
   g->aic = -2.0 * g->loglik + 2.0 * (double)g->nparams;
@@ -556,7 +614,7 @@ nl_status nl_gmm_fit(nl_gmm *g, const double *x, size_t n, const nl_gmm_options 
   nl_status s = check_fit_args(g, x, n, o, err);
   if (s) return s;
   workspace w;
-  ws_init(&w, n, g->d, g->k);
+  ws_init(&w, n, g->d, g->k, o->threads);
   int threads = blas_threads_limit(n, g->d);
   s = fit_ws(g, x, n, o, &w, err);
   blas_threads_restore(threads);
@@ -628,7 +686,7 @@ nl_status nl_gmm_select_aic(const double *x, size_t n, size_t d, size_t k0, doub
     g->nparams = nl_gmm_nparams(k, d, o->covariance);
     if (k == k0) {
       if ((s = check_fit_args(g, x, n, &ok, err))) { nl_gmm_free(g); return s; }
-      ws_init(&w, n, d, kcap);
+      ws_init(&w, n, d, kcap, o->threads);
       threads = blas_threads_limit(n, d);
     }
     s = fit_ws(g, x, n, &ok, &w, err);

@@ -26,6 +26,11 @@
  *     Rows with r_ik < 1e-20 max_i r_ik are left out of Sigma_k: they lie
  *     so far out that they change it by < 1e-13 relative, and on clustered
  *     data they are most rows (nl_gmm.c, SKIP);
+ *   - threads (o.threads, nl_parallel_for): the E-step's (block of 1024
+ *     rows, component) pairs and the M-step's components run on threads,
+ *     each writing only its own slots; the sums over rows and components
+ *     are taken afterwards in order, so every thread count gives the same
+ *     bytes;
  *   - stop when the mean log-likelihood (computed in the E-step, i.e. for
  *     the parameters before the M-step, like sklearn's lower_bound) changes
  *     by less than tol, or after max_iter iterations (converged = 0).
@@ -61,6 +66,8 @@ typedef struct {
   size_t max_iter;          /* 100 */
   unsigned long seed;       /* k-means++ seeding; 0 */
   const int *init_labels;   /* n labels in 0..k-1, or NULL for k-means */
+  int threads;              /* E- and M-step work on this many threads
+                               (nl_parallel_for); 1. Results do not depend on it. */
 } nl_gmm_options;
 
 void nl_gmm_options_default(nl_gmm_options *o);

@@ -4,6 +4,7 @@
 #include "study/nl_study_cheng.h"
 #include "study/nl_study_cheng_readings.h"
 #include "stats/nl_stats.h"
+#include "base/nl_parallel.h"
 
 #include <gsl/gsl_sort.h>
 #include <gsl/gsl_statistics_double.h>
@@ -31,8 +32,9 @@ void nl_study_cheng_repro_params(nl_harness *r, nl_cheng_pool_options *po, nl_ch
         "error bound on E_R: pool solutions above the run's best by more than this are left out");
   po->low_levels = (int)nl_harness_param_int(r, "low_levels", po->low_levels, 1, NL_CHENG_MAX_OCTAVES - 1,
         "levels 1..low_levels hold the shared low-frequency gradients that are reproduced");
-  po->threads = (int)nl_harness_param_int(r, "threads", po->threads, 1, 64,
-        "worker threads for the pool runs (results do not depend on it)");
+  /* Threads for the pool runs, the fits and EM's steps: the run's --threads
+   * (a speed setting, not a parameter: no table depends on it). */
+  po->threads = nl_harness_threads(r);
   mo->samples = (size_t)nl_harness_param_int(r, "samples", q ? 100 : (long)mo->samples, 0, 1000000,
         "input samples drawn from the pool for clustering and the mixture, 0 = all (quick 100)");
   mo->threshold = nl_harness_param(r, "T", mo->threshold, 0, 1e300,
@@ -45,6 +47,7 @@ void nl_study_cheng_repro_params(nl_harness *r, nl_cheng_pool_options *po, nl_ch
         "1: diagonal GMM covariances; 0: full covariances") ? NL_GMM_DIAG : NL_GMM_FULL;
   mo->gmm.max_iter = (size_t)nl_harness_param_int(r, "max_iter", (long)mo->gmm.max_iter, 1, 1000000,
         "EM iterations allowed per mixture fit before it counts as not converged");
+  mo->gmm.threads = po->threads;   /* EM's steps; fits run by a threaded caller run theirs serially */
 }
 
 nl_status nl_study_cheng_repro_original(const nl_cheng_config *c, const nl_cheng_pattern *pat,
@@ -97,27 +100,53 @@ static const char *const variants[NVAR] = {"full_cossin", "diag_cossin", "full_u
 typedef struct { double k0[MAXSEEDS], k[MAXSEEDS], aic[MAXSEEDS], bic[MAXSEEDS], ll[MAXSEEDS], sec; int ok; const char *status; } fits;
 
 /* The model over the run's seeds (input subsample and k-means seed); the
- * first seed's model is returned. */
+ * first seed's model is returned. The seeds' fits are independent items on
+ * the run's threads (each from its own seed, into its own slot; summed in
+ * seed order afterwards). */
+typedef struct {
+  const nl_cheng_pool *pool;
+  const nl_cheng_model_options *mo;
+  unsigned long base;
+  nl_cheng_model *first;
+  double k0[MAXSEEDS], k[MAXSEEDS], aic[MAXSEEDS], bic[MAXSEEDS], ll[MAXSEEDS], sec[MAXSEEDS];
+  nl_cheng_model_status status[MAXSEEDS];
+  nl_status st[MAXSEEDS];
+  nl_error err[MAXSEEDS];
+} seeds_job;
+
+static void seed_item(void *ctx, size_t s, int t)
+{
+  (void)t;
+  seeds_job *j = ctx;
+  nl_cheng_model_options o = *j->mo;
+  o.gmm.seed = nl_seed_replicate(j->base, (int)s);
+  nl_cheng_model *m;
+  if ((j->st[s] = nl_cheng_model_fit(j->pool, &o, o.gmm.seed, &m, &j->err[s]))) return;
+  j->k0[s] = (double)m->k0; j->k[s] = (double)m->k;
+  j->aic[s] = m->gmm ? m->gmm->aic : NAN; j->bic[s] = m->gmm ? m->gmm->bic : NAN;
+  j->ll[s] = m->gmm ? m->gmm->loglik : NAN;
+  j->sec[s] = m->seconds_cluster + m->seconds_gmm;
+  j->status[s] = m->status;
+  if (s == 0) j->first = m; else nl_cheng_model_free(m);
+}
+
 static nl_cheng_model *fit_seeds(nl_harness *r, const nl_cheng_pool *pool, const nl_cheng_model_options *mo,
                                  int nseeds, fits *f)
 {
-  nl_cheng_model *first = NULL;
-  nl_error err;
+  seeds_job *j = nl_xcalloc(1, sizeof *j);
+  *j = (seeds_job){.pool = pool, .mo = mo, .base = nl_harness_seed(r)};
+  nl_parallel_for((size_t)nseeds, mo->gmm.threads, seed_item, j);
   memset(f, 0, sizeof *f);
   f->status = "ok";
   for (int s = 0; s < nseeds; s++) {
-    nl_cheng_model_options o = *mo;
-    o.gmm.seed = nl_seed_replicate(nl_harness_seed(r), s);
-    nl_cheng_model *m;
-    if (nl_cheng_model_fit(pool, &o, o.gmm.seed, &m, &err)) nl_harness_die(r, 1, "%s", err.msg);
-    f->k0[s] = (double)m->k0; f->k[s] = (double)m->k;
-    f->aic[s] = m->gmm ? m->gmm->aic : NAN; f->bic[s] = m->gmm ? m->gmm->bic : NAN;
-    f->ll[s] = m->gmm ? m->gmm->loglik : NAN;
-    f->sec += m->seconds_cluster + m->seconds_gmm;
-    if (m->status == NL_CHENG_MODEL_OK) f->ok++;
-    else if (!strcmp(f->status, "ok")) f->status = nl_cheng_model_status_name(m->status);
-    if (s == 0) first = m; else nl_cheng_model_free(m);
+    if (j->st[s]) nl_harness_die(r, 1, "%s", j->err[s].msg);
+    f->k0[s] = j->k0[s]; f->k[s] = j->k[s]; f->aic[s] = j->aic[s]; f->bic[s] = j->bic[s]; f->ll[s] = j->ll[s];
+    f->sec += j->sec[s];
+    if (j->status[s] == NL_CHENG_MODEL_OK) f->ok++;
+    else if (!strcmp(f->status, "ok")) f->status = nl_cheng_model_status_name(j->status[s]);
   }
+  nl_cheng_model *first = j->first;
+  free(j);
   return first;
 }
 
@@ -179,25 +208,53 @@ static void curve_rows(nl_harness *r, nl_study_cheng_pools *T, const nl_study_ch
   for (int q = 0; q < NCUT; q++) nl_table_append(T->curve, "sddd", th->texture, (double)low, cut[q], (double)kc[q]);
 }
 
-/* Beyond the paper: the matched-K0 model in three variants against the pool. */
+/* Beyond the paper: the matched-K0 model in three variants against the pool
+ * (independent items on the run's threads; rows appended in variant order). */
+typedef struct {
+  nl_harness *r;
+  const nl_study_cheng_thesis_gmm *th;
+  const nl_cheng_pool *pool;
+  const nl_cheng_model_options *mo;
+  nl_cheng_model_check ck[NVAR];
+  double k[NVAR];
+  nl_status st[NVAR];
+  nl_error err[NVAR];
+} assess_job;
+
+static void assess_item(void *ctx, size_t v, int t)
+{
+  (void)t;
+  assess_job *j = ctx;
+  nl_cheng_model_options o = *j->mo;
+  if (v == 1) o.gmm.covariance = NL_GMM_DIAG;
+  if (v == 2) o.rep = NL_CHENG_REP_UNWRAP;
+  o.cutoff = -1;   /* nl_study_cheng_matched_model's options */
+  o.target_k = (size_t)j->th->k0;
+  o.gmm.seed = nl_harness_seed(j->r);
+  nl_cheng_model *m;
+  j->ck[v] = (nl_cheng_model_check){NAN, NAN, 0, NAN, NAN};
+  if ((j->st[v] = nl_cheng_model_fit(j->pool, &o, o.gmm.seed, &m, &j->err[v]))) return;
+  j->k[v] = (double)m->k;
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, nl_seed_stream(nl_harness_seed(j->r), "c5.held_out", 0));
+  if (m->gmm) j->st[v] = nl_cheng_model_assess(j->pool, m, 1000, rng, &j->ck[v], &j->err[v]);
+  gsl_rng_free(rng);
+  nl_cheng_model_free(m);
+}
+
 static void assess_rows(nl_harness *r, nl_study_cheng_pools *T, const nl_study_cheng_thesis_gmm *th, int low, const nl_cheng_pool *pool,
                         const nl_cheng_model_options *mo)
 {
-  nl_error err;
+  assess_job *j = nl_xcalloc(1, sizeof *j);
+  *j = (assess_job){.r = r, .th = th, .pool = pool, .mo = mo};
+  nl_parallel_for(NVAR, mo->gmm.threads, assess_item, j);
   for (int v = 0; v < NVAR; v++) {
-    nl_cheng_model_options o = *mo;
-    if (v == 1) o.gmm.covariance = NL_GMM_DIAG;
-    if (v == 2) o.rep = NL_CHENG_REP_UNWRAP;
-    nl_cheng_model *m = nl_study_cheng_matched_model(r, pool, th, &o);
-    nl_cheng_model_check ck = {NAN, NAN, 0, NAN, NAN};
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    gsl_rng_set(rng, nl_seed_stream(nl_harness_seed(r), "c5.held_out", 0));
-    if (m->gmm && nl_cheng_model_assess(pool, m, 1000, rng, &ck, &err)) nl_harness_die(r, 1, "%s", err.msg);
-    nl_table_append(T->assess, "sdsdddddd", th->texture, (double)low, variants[v], (double)m->k, ck.ll_train,
-                    ck.ll_held, (double)ck.n_held, ck.ks_median, ck.ks_reject);
-    gsl_rng_free(rng);
-    nl_cheng_model_free(m);
+    if (j->st[v]) nl_harness_die(r, 1, "%s", j->err[v].msg);
+    const nl_cheng_model_check *ck = &j->ck[v];
+    nl_table_append(T->assess, "sdsdddddd", th->texture, (double)low, variants[v], j->k[v], ck->ll_train,
+                    ck->ll_held, (double)ck->n_held, ck->ks_median, ck->ks_reject);
   }
+  free(j);
 }
 
 nl_cheng_pattern *nl_study_cheng_repro_open(const nl_study_cheng *s, const nl_study_cheng_thesis_gmm *th,
