@@ -74,9 +74,11 @@ void nl_byexample_band_leakage(const nl_wavelet_tile *t, int size, int nbands, u
 
 double nl_byexample_sigma2(int n)
 {
-  /* Cached: synthesis and analysis ask for the same tile period. */
-  static int cached_n;
-  static double cached;
+  /* Cached: synthesis and analysis ask for the same tile period. Per thread,
+   * so that syntheses run in parallel (nl_parallel_for) never read a half-
+   * written cache (ThreadSanitizer found the shared one racing). */
+  static _Thread_local int cached_n;
+  static _Thread_local double cached;
   if (n == cached_n) return cached;
   nl_wavelet_tile *t = nl_wavelet_tile_alloc(2, n);
   if (!t) return 0;
