@@ -450,8 +450,8 @@ static void run_hclust(const opts *o)
   if (o->have_cutoff == o->have_clusters) die(o->sub, "give exactly one of --cutoff C and --clusters K");
   nl_table *t = read_table(o, o->files[0]);
   size_t n = t->nrows;
-  double *Z = nl_xmalloc((n - 1) * 4 * sizeof(double));
-  int *lab = nl_xmalloc(n * sizeof(int));
+  double *Z = hold(nl_xmalloc((n - 1) * 4 * sizeof(double)));
+  int *lab = hold(nl_xmalloc(n * sizeof(int)));
   size_t k;
   if (nl_cluster_linkage(t->num, n, t->ncols, m, Z, &err)) fail_lib(o, o->files[0], &err);
   nl_status s = o->have_cutoff ? nl_cluster_fcluster_distance(Z, n, o->cutoff, lab, &k, &err)
@@ -551,7 +551,7 @@ static void run_gmm(const opts *o)
       die(o->sub, m);
     }
     if (nl_gmm_check_size(n, d, (size_t)o->k, go.covariance, &err)) fail_lib(o, o->files[0], &err);
-    g = nl_gmm_alloc((size_t)o->k, d, go.covariance);
+    g = hold(nl_gmm_alloc((size_t)o->k, d, go.covariance));
     if (nl_gmm_fit(g, t->num, n, &go, &err)) fail_lib(o, o->files[0], &err);
     record r = {0};
     fit_record(&r, n, g->k, g->loglik, g->aic, g->bic, g->iterations, g->converged);
@@ -564,7 +564,7 @@ static void run_gmm(const opts *o)
       die(o->sub, m);
     }
     size_t kmax = (size_t)(o->max_k > o->k0 ? o->max_k : o->k0), np;
-    nl_gmm_step *path = nl_xmalloc((kmax - (size_t)o->k0 + 1) * sizeof *path);
+    nl_gmm_step *path = hold(nl_xmalloc((kmax - (size_t)o->k0 + 1) * sizeof *path));
     if (nl_gmm_select_aic(t->num, n, d, (size_t)o->k0, o->thresh, kmax, &go, &g, path, &np, &err))
       fail_lib(o, o->files[0], &err);
     record *r = nl_xcalloc(np + 1, sizeof *r);
