@@ -13,7 +13,7 @@
  * manifests' seed, seeds, quick and param lines must match exactly.
  *
  * The other manifest lines (commit, versions, cpu, blas*, cflags, started,
- * seconds, peak_rss_mb) are never compared.
+ * seconds, cpu_seconds, peak_rss_mb) are never compared.
  *
  * Output: one tab-separated line per drifted value on stdout
  *   experiment  table  row  column  committed  new  rule[: detail]

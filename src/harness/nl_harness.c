@@ -693,6 +693,11 @@ int nl_harness_end(nl_harness *r)
   nl_harness_note(r, "seconds", "%.3f", nl_time_now() - r->t0);
   struct rusage ru;
   getrusage(RUSAGE_SELF, &ru);
+  /* CPU time of all threads (user + sys, the process start included): with
+   * `seconds` it says how well a run used the cores (issue 17). */
+  nl_harness_note(r, "cpu_seconds", "%.3f (user %.3f + sys %.3f)",
+                  ru.ru_utime.tv_sec + ru.ru_utime.tv_usec * 1e-6 + ru.ru_stime.tv_sec + ru.ru_stime.tv_usec * 1e-6,
+                  ru.ru_utime.tv_sec + ru.ru_utime.tv_usec * 1e-6, ru.ru_stime.tv_sec + ru.ru_stime.tv_usec * 1e-6);
   nl_harness_note(r, "peak_rss_mb", "%.1f", ru.ru_maxrss / 1024.0);
   if (r->verdicts) {
     nl_harness_write_table(r, r->verdicts, "verdicts.tsv");
