@@ -44,19 +44,20 @@ nl_harness *nl_study_cheng_begin(const char *name, const char *title, int *argc,
   }
   nl_harness *r = nl_harness_begin(name, title, *argc, argv);
   run_params(r, c, grid);
-  /* Every pattern loads before the output folder is touched (nl_harness_begin
-   * does not touch it; the first write does). */
-  if (nl_study_cheng_patterns_check(*patterns, *grid, &err))
-    nl_harness_die(r, 2, "control patterns: %s (make them with build/tools/noiselab-patterns "
-                   "data/patterns, or pass --patterns DIR)", err.msg);
   return r;
 }
 
-void nl_study_cheng_params_done(nl_harness *r, const nl_cheng_config *c, const char *patterns)
+void nl_study_cheng_params_done(nl_harness *r, const nl_cheng_config *c, const char *patterns, int grid)
 {
   nl_harness_params_done(r);
   nl_error err;
   if (nl_cheng_config_check(c, &err)) nl_harness_die(r, 2, "%s", err.msg);
+  /* Every pattern loads before the output folder is touched (nl_harness_begin
+   * does not touch it; the first write does), and after --help / --params,
+   * which need no image (nl_study_cheng.h). */
+  if (nl_study_cheng_patterns_check(patterns, grid, &err))
+    nl_harness_die(r, 2, "control patterns: %s (make them with build/tools/noiselab-patterns "
+                   "data/patterns, or pass --patterns DIR)", err.msg);
   nl_harness_note(r, "patterns", "%s", patterns);
 }
 
@@ -178,7 +179,7 @@ void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title,
   s->cost = NULL;
 }
 
-void nl_study_cheng_ready(nl_study_cheng *s) { nl_study_cheng_params_done(s->r, &s->c, s->patterns); }
+void nl_study_cheng_ready(nl_study_cheng *s) { nl_study_cheng_params_done(s->r, &s->c, s->patterns, s->grid); }
 
 nl_cheng_pattern *nl_study_cheng_pattern(const nl_study_cheng *s, const char *name)
 {

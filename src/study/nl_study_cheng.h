@@ -92,15 +92,19 @@ nl_table *nl_study_cheng_pattern_table(const nl_cheng_pattern *p);
  * (nl_study_cheng_patterns_parse; "NAME: message", exit 2) into *patterns, starts
  * the run, reads the standard --set parameters into *c and *grid: grid (64),
  * w1, w2, f1, a1, octaves, literal (0/1), temps (n_temps; quick 8), moves_per_var (quick 5),
- * defaults otherwise, and checks the patterns folder (nl_study_cheng_patterns_check;
- * "NAME: control patterns: ...", exit 2), all before the output folder is
- * touched. The experiment then reads its own parameters and calls
- * nl_study_cheng_params_done. */
+ * defaults otherwise. The experiment then reads its own parameters and calls
+ * nl_study_cheng_params_done, which checks the patterns, all before the
+ * output folder is touched. */
 nl_harness *nl_study_cheng_begin(const char *name, const char *title, int *argc, char **argv,
                                  nl_cheng_config *c, int *grid, const char **patterns);
-/* nl_harness_params_done, then nl_cheng_config_check ("NAME: message", exit 2),
- * and the patterns folder into the manifest. */
-void nl_study_cheng_params_done(nl_harness *r, const nl_cheng_config *c, const char *patterns);
+/* nl_harness_params_done (--help and --params print and exit there), then
+ * nl_cheng_config_check ("NAME: message", exit 2), the patterns folder at the
+ * grid (nl_study_cheng_patterns_check; "NAME: control patterns: ...", exit 2)
+ * and the folder into the manifest. The patterns are read after the listing
+ * and the parameter checks because reading a PNG loads the image back-end
+ * (OpenImageIO, ~0.6 s of CPU per process: issue 17); `--help`, `--params`
+ * and a refused --set no longer pay it. */
+void nl_study_cheng_params_done(nl_harness *r, const nl_cheng_config *c, const char *patterns, int grid);
 /* Summary table: nlabels label columns, then seeds, E_ks (mean), E_ks_sd, p_ks
  * (mean), p_ks_min, V_kuiper, V_kuiper_sd, p_kuiper, p_kuiper_min, chi2, chi2_sd,
  * p_chi2, E_con, E_con_sd, rms_con, E, uniform_ks, uniform_kuiper (fractions of
