@@ -103,6 +103,14 @@ void nl_noise_grad2_points(const nl_noise_grad2 *t, const double *x, const doubl
                            double *out);
 void nl_noise_perm3_points(const nl_noise_perm3 *p, const double *x, const double *y, const double *z,
                            size_t n, double *out);
+/* One octave of a fractal sum over a batch of points (the bounded ray march
+ * of nl_bounds, Arnerin 2009 eq. 5.1): for k < n,
+ *   v_k = nl_noise_perm3_eval(p, f * x[k], f * y[k], f * z[k]),
+ *   sum[k] = sum[k] + amp * v_k,
+ * and the largest |v_k| is returned (0 for n = 0; NaN never counts) - the
+ * bits of that scalar loop on every level. sum must not overlap x, y, z. */
+double nl_noise_perm3_points_sum(const nl_noise_perm3 *p, double f, const double *x, const double *y,
+                                 const double *z, size_t n, double amp, double *sum);
 /* The sample loop of a quadratic B-spline row (wavelet noise, nl_wavelet_row)
  * on the dispatched level: out[k] += weight * (w0 L[i] + w1 L[i+1] + w2 L[i+2])
  * at x0 + k dx, k < count, with the weights and first tap i of nl_wavelet.c's

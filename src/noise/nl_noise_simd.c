@@ -326,3 +326,31 @@ void nl_noise_perm3_points(const nl_noise_perm3 *p, const double *x, const doubl
   K->points3(p, p32, xs, ys, zs, NL_SIMD_PAD, res);
   memcpy(out + nb, res, (n - nb) * sizeof *res);
 }
+
+double nl_noise_perm3_points_sum(const nl_noise_perm3 *p, double f, const double *x, const double *y,
+                                 const double *z, size_t n, double amp, double *sum)
+{
+  const nl_noise_simd_kernels *K = kernels();
+  const int *p32 = K ? perm3_ints(p) : NULL;
+  double top = 0.0;
+  if (!p32) {   /* the scalar level, or not a doubled table */
+    for (size_t k = 0; k < n; k++) {
+      double v = nl_noise_perm3_eval(p, f * x[k], f * y[k], f * z[k]), a = fabs(v);
+      top = a > top ? a : top;
+      sum[k] = sum[k] + amp * v;
+    }
+    return top;
+  }
+  size_t nb = n / NL_SIMD_PAD * NL_SIMD_PAD;
+  if (nb) K->points3_sum(p, p32, f, x, y, z, nb, amp, sum, &top);
+  if (nb == n) return top;
+  /* the tail through a padded block: noise(0, 0, 0) = 0 leaves top alone */
+  double xs[NL_SIMD_PAD] = {0}, ys[NL_SIMD_PAD] = {0}, zs[NL_SIMD_PAD] = {0}, ss[NL_SIMD_PAD] = {0};
+  memcpy(xs, x + nb, (n - nb) * sizeof *xs);
+  memcpy(ys, y + nb, (n - nb) * sizeof *ys);
+  memcpy(zs, z + nb, (n - nb) * sizeof *zs);
+  memcpy(ss, sum + nb, (n - nb) * sizeof *ss);
+  K->points3_sum(p, p32, f, xs, ys, zs, NL_SIMD_PAD, amp, ss, &top);
+  memcpy(sum + nb, ss, (n - nb) * sizeof *ss);
+  return top;
+}

@@ -167,22 +167,27 @@ static inline vi half(vi16 v, int h)
   return h ? (vi)_mm512_extracti64x4_epi64((__m512i)v, 1) : (vi)_mm512_castsi512_si256((__m512i)v);
 }
 
-static void points3(const nl_noise_perm3 *P, const int *p32, const double *x, const double *y,
-                    const double *z, size_t n, double *out)
+/* n points 16 at a time, stored or (sum) scaled by f and summed into out
+ * as points3_do (nl_noise_simd_body.h). */
+static inline __attribute__((always_inline)) void
+points3_16(const nl_noise_perm3 *P, const int *p32, double f, const double *x, const double *y,
+           const double *z, size_t n, double *out, double amp, double *top, int sum)
 {
   p3tab tab = p3_make(P, p32);
+  vd vt = SPLAT(0.0);
   size_t k = 0;
   for (; k + 16 <= n; k += 16) {
     vl ok = (vl){0} - 1;
     vi i[2], j[2], kk[2];
     for (int h = 0; h < 2; h++) {
       vd vx = ld(x + k + 8 * h), vy = ld(y + k + 8 * h), vz = ld(z + k + 8 * h);
+      if (sum) { vx = f * vx; vy = f * vy; vz = f * vz; }   /* f * x[k] ... */
       ok &= v_small(vx) & v_small(vy) & v_small(vz);
       i[h] = __builtin_convertvector(v_cell(vx), vi);
       j[h] = __builtin_convertvector(v_cell(vy), vi);
       kk[h] = __builtin_convertvector(v_cell(vz), vi);
     }
-    if (!v_all(ok)) { points3_lanes(P, p32, x + k, y + k, z + k, 16, out + k); continue; }
+    if (!v_all(ok)) { points3_do(P, p32, f, x + k, y + k, z + k, 16, out + k, amp, top, sum); continue; }
     /* Perlin's hashing of columns i and i + 1 (nl_noise.c column3), 16 lanes */
     vi16 I = join(i[0], i[1]), Y = join(j[0], j[1]) & 255, Z = join(kk[0], kk[1]) & 255;
     vi16 hs[2][4];
@@ -195,19 +200,33 @@ static void points3(const nl_noise_perm3 *P, const int *p32, const double *x, co
     /* the arithmetic, 8 lanes at a time; the cells again rather than kept */
     for (int h = 0; h < 2; h++) {
       vd vx = ld(x + k + 8 * h), vy = ld(y + k + 8 * h), vz = ld(z + k + 8 * h);
+      if (sum) { vx = f * vx; vy = f * vy; vz = f * vz; }
       vd ci = v_cell(vx), fy = v_frac(vy, v_cell(vy)), fz = v_frac(vz, v_cell(vz));
       vd v = v_fade(fy), w = v_fade(fz), g0, a0, g1, a1;
       v_column3_fp(&tab, half(hs[0][0], h), half(hs[0][1], h), half(hs[0][2], h), half(hs[0][3], h),
                    fy, fz, v, w, &g0, &a0);
       v_column3_fp(&tab, half(hs[1][0], h), half(hs[1][1], h), half(hs[1][2], h), half(hs[1][3], h),
                    fy, fz, v, w, &g1, &a1);
-      st(out + k + 8 * h, v_blend(v_frac(vx, ci), g0, a0, g1, a1));
+      v_points_emit(out + k + 8 * h, v_blend(v_frac(vx, ci), g0, a0, g1, a1), sum, amp, &vt);
     }
   }
-  if (k < n) points3_lanes(P, p32, x + k, y + k, z + k, n - k, out + k);
+  if (k < n) points3_do(P, p32, f, x + k, y + k, z + k, n - k, out + k, amp, top, sum);
+  if (sum) *top = v_top(vt, *top);
 }
 
-const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3, points2, points3, bspline};
+static void points3(const nl_noise_perm3 *P, const int *p32, const double *x, const double *y,
+                    const double *z, size_t n, double *out)
+{
+  points3_16(P, p32, 1.0, x, y, z, n, out, 0.0, NULL, 0);
+}
+
+static void points3_sum(const nl_noise_perm3 *P, const int *p32, double f, const double *x, const double *y,
+                        const double *z, size_t n, double amp, double *sum, double *top)
+{
+  points3_16(P, p32, f, x, y, z, n, sum, amp, top, 1);
+}
+
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3, points2, points3, bspline, points3_sum};
 
 #if defined(__clang__)
 #pragma clang attribute pop

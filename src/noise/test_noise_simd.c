@@ -13,6 +13,7 @@
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_rng.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -203,6 +204,79 @@ NL_TEST(perm3_levels_match_scalar)
   compare_perm3(&p, 5);
   nl_noise_perm3_seed(&p, 9);
   compare_perm3(&p, 6);
+}
+
+/* One octave of a sum over points (nl_noise_perm3_points_sum), as its
+ * contract states it: the scalar loop here, against every level and the
+ * scalar level's own loop, for scales that overflow (1e300), zero and -0,
+ * sums starting at -0 and elsewhere, every tail length and a table whose
+ * halves differ (the kernels leave those to the scalar code). */
+static void sum_reference(const nl_noise_perm3 *p, double f, const double *x, const double *y, const double *z,
+                          size_t n, double amp, double *sum, double *top)
+{
+  *top = 0.0;
+  for (size_t k = 0; k < n; k++) {
+    double v = nl_noise_perm3_eval(p, f * x[k], f * y[k], f * z[k]);
+    if (fabs(v) > *top) *top = fabs(v);
+    sum[k] = sum[k] + amp * v;
+  }
+}
+
+static void compare_perm3_sum(const nl_noise_perm3 *p, unsigned long seed)
+{
+  static const double fs[] = {1.0, 2.0, 2048.0, -3.5, 0.0, -0.0, 1e300, 0x1p20, 0.37};
+  static const double amps[] = {0.5, -1.0, 1e-3, 0.0};
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, seed);
+  double *x = malloc(NPOINTS * sizeof *x), *y = malloc(NPOINTS * sizeof *y), *z = malloc(NPOINTS * sizeof *z);
+  double *s0 = malloc(NPOINTS * sizeof *s0), *ref = malloc(NPOINTS * sizeof *ref), *got = malloc(NPOINTS * sizeof *got);
+  for (size_t k = 0; k < NPOINTS; k++) {
+    int smoke = gsl_rng_uniform(r) < 0.5;   /* A2's unit cube, or the awkward mixture */
+    x[k] = smoke ? gsl_rng_uniform(r) - 0.5 : coord(r);
+    y[k] = smoke ? gsl_rng_uniform(r) - 0.5 : coord(r);
+    z[k] = smoke ? gsl_rng_uniform(r) - 0.5 : coord(r);
+    s0[k] = gsl_rng_uniform(r) < 0.2 ? -0.0 : 4 * gsl_rng_uniform(r) - 2;
+  }
+  for (size_t a = 0; a < sizeof fs / sizeof *fs; a++) {
+    double f = fs[a], amp = amps[a % 4], rtop, top;
+    size_t n = a % 3 ? NPOINTS : NPOINTS - 1 - a;
+    memcpy(ref, s0, NPOINTS * sizeof *ref);
+    sum_reference(p, f, x, y, z, n, amp, ref, &rtop);
+    for (int L = -1; L < nlevels; L++) {
+      nl_noise_simd_set(L < 0 ? NL_NOISE_SIMD_SCALAR : levels[L]);
+      for (size_t m = 0; m <= 33; m++) {   /* every tail length */
+        double t0;
+        memcpy(got, s0, NPOINTS * sizeof *got);
+        sum_reference(p, f, x + 7, y + 7, z + 7, m, amp, got + 7, &t0);
+        memcpy(got + NPOINTS / 2, s0 + 7, m * sizeof *got);
+        top = nl_noise_perm3_points_sum(p, f, x + 7, y + 7, z + 7, m, amp, got + NPOINTS / 2);
+        NL_CHECK(same(got + 7, got + NPOINTS / 2, m) && memcmp(&top, &t0, sizeof top) == 0);
+      }
+      memcpy(got, s0, NPOINTS * sizeof *got);
+      top = nl_noise_perm3_points_sum(p, f, x, y, z, n, amp, got);
+      if (!same(got, ref, NPOINTS) || memcmp(&top, &rtop, sizeof top) != 0) {
+        fprintf(stderr, "  perm3 sum %s f=%g amp=%g differs (top %.17g, scalar %.17g)\n",
+                L < 0 ? "scalar" : nl_noise_simd_name(levels[L]), f, amp, top, rtop);
+        NL_CHECK(0);
+      }
+      compared += (long)n;
+    }
+  }
+  nl_noise_simd_set(nl_noise_simd_best());
+  free(x); free(y); free(z); free(s0); free(ref); free(got);
+  gsl_rng_free(r);
+}
+
+NL_TEST(perm3_sums_match_scalar)
+{
+  find_levels();
+  nl_noise_perm3 p;
+  nl_noise_perm3_reference(&p);
+  compare_perm3_sum(&p, 15);
+  nl_noise_perm3_seed(&p, 9);
+  compare_perm3_sum(&p, 16);
+  p.p[300] ^= 1;   /* halves differ */
+  compare_perm3_sum(&p, 17);
 }
 
 /* Rows at the edges of the kernels' shortcuts: x = -0 (whose cell must read
