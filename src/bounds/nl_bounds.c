@@ -148,12 +148,16 @@ static nl_noise_octaves smoke_octaves(const nl_bounds_smoke *s)
 
 /* The march, batched (issue 17, item 8). The rays of a block of pixels
  * step together: at step i every ray still below the stop opacity gives
- * one sample at z_i, and each octave of those samples runs through the
- * point kernel (nl_noise_perm3_points) at once. With incremental bounding
- * the eq. 5.4 check runs before each octave and only the samples it left
- * undecided are gathered for the next one, so the octave count is still
- * decided per sample. Every sample sees the same operations in the same
- * order as one ray marched alone (the point kernel returns the bits of
+ * one sample at z_i, and each octave of those samples is one call of
+ * nl_noise_perm3_points_sum (scale, noise and partial += amp noise in one
+ * pass). With incremental bounding the eq. 5.4 check runs before each
+ * octave and moves the samples it left undecided to the front of their
+ * arrays (branch-free stream compaction: position, base and partial sum
+ * travel together, so the next octave reads them in order, with no index
+ * list to gather through); the octave count is still decided per sample.
+ * The active rays are kept packed the same way (compacted only at a step
+ * where one stopped). Every sample sees the same operations in the same
+ * order as one ray marched alone (the kernel returns the bits of
  * nl_noise_perm3_eval): images and counts do not depend on the batching.
  * What a ray alone pays per sample (a call per octave, a loop, exp) is
  * shared: |p|^2 = (x^2 + y^2) + z^2 keeps x^2 + y^2 per ray, and the
@@ -166,74 +170,84 @@ typedef struct {
   const nl_bounds_smoke *s;
   const nl_noise_octaves *o;
   const double *rem;
+  /* Beyond |p|^2 = far2 eq. 5.4 decides density 0 before term 0: a |p| + 1
+   * + rem_0 <= 0 for |p| >= (1 + rem_0) / -a; the bound is raised by 1e-6
+   * relative so that the computed sum (a few roundings of 2^-53) is
+   * certainly <= 0 there, and the check itself runs on the rest. */
+  double far2;
+  /* the active rays, packed: position, x^2 + y^2, transmittance, colour, pixel in the block */
   double x[SMOKE_BLOCK], y[SMOKE_BLOCK], r2[SMOKE_BLOCK], trans[SMOKE_BLOCK], colour[SMOKE_BLOCK];
-  double base[SMOKE_BLOCK], partial[SMOKE_BLOCK], dens[SMOKE_BLOCK];
-  double px[SMOKE_BLOCK], py[SMOKE_BLOCK], pz[SMOKE_BLOCK], nz[SMOKE_BLOCK];
-  int act[SMOKE_BLOCK], und[SMOKE_BLOCK];
+  int pix[SMOKE_BLOCK];
+  /* a step's samples: base a|p| + 1, partial sum, density, z */
+  double base[SMOKE_BLOCK], partial[SMOKE_BLOCK], dens[SMOKE_BLOCK], z[SMOKE_BLOCK];
+  /* the undecided samples, packed: position, base, partial sum, ray */
+  double ux[SMOKE_BLOCK], uy[SMOKE_BLOCK], ub[SMOKE_BLOCK], up[SMOKE_BLOCK];
+  int ur[SMOKE_BLOCK];
 } smoke_block;
 
-/* One octave k of the samples und[0..m-1] at height z: partial += amp_k noise(f_k p). */
-static void smoke_octave(smoke_block *b, int k, double z, const int *und, int m, double *max_abs)
+/* eq. 5.4 before term k (clamp_decided) on the undecided samples j < m:
+ * a decided one writes its density (0 or 1) and leaves; the others move
+ * down, in order. Returns how many stay; *decided counts the others. */
+static int smoke_check_undecided(smoke_block *b, int m, double rk, long *decided)
 {
-  double f = b->o->freq[k], amp = b->o->amp[k], fz = f * z, top = *max_abs;
+  int left = 0;
+  long dec = 0;
   for (int j = 0; j < m; j++) {
-    b->px[j] = f * b->x[und[j]];
-    b->py[j] = f * b->y[und[j]];
-    b->pz[j] = fz;
+    double sum = b->ub[j] + b->up[j];
+    int lo = sum + rk <= 0.0, hi = sum - rk >= 1.0;
+    b->dens[b->ur[j]] = hi ? 1.0 : 0.0;   /* overwritten later if undecided */
+    dec += lo | hi;
+    b->ux[left] = b->ux[j]; b->uy[left] = b->uy[j];
+    b->ub[left] = b->ub[j]; b->up[left] = b->up[j]; b->ur[left] = b->ur[j];
+    left += !(lo | hi);
   }
-  nl_noise_perm3_points(b->p, b->px, b->py, b->pz, (size_t)m, b->nz);
-  for (int j = 0; j < m; j++) {
-    double a = fabs(b->nz[j]);
-    top = a > top ? a : top;
-    b->partial[und[j]] += amp * b->nz[j];
-  }
-  *max_abs = top;
+  *decided = dec;
+  return left;
 }
 
-/* The densities of the active samples at height z (clamped_sum, batched). */
+/* The densities of the nact active samples at height z (clamped_sum, batched). */
 static void smoke_densities(smoke_block *b, int nact, double z, nl_bounds_smoke_stats *st)
 {
   const nl_bounds_smoke *s = b->s;
-  int n = b->o->n, m = nact;
-  for (int j = 0; j < nact; j++) {
-    int q = b->act[j];
-    b->base[q] = s->slope * sqrt(b->r2[q] + z * z) + 1.0;
-    b->partial[q] = 0.0;
-    b->und[j] = q;
-  }
+  const nl_noise_octaves *o = b->o;
+  int n = o->n;
+  double top = st->max_abs_noise, z2 = z * z;
   st->samples += nact;
   if (!s->incremental) {
-    for (int k = 0; k < n; k++) smoke_octave(b, k, z, b->und, m, &st->max_abs_noise);
-    st->noise_evals += (long)n * nact;
-    for (int j = 0; j < nact; j++) {
-      int q = b->act[j];
-      b->dens[q] = clamp01(b->base[q] + b->partial[q]);
+    for (int j = 0; j < nact; j++) b->base[j] = s->slope * sqrt(b->r2[j] + z2) + 1.0;
+    for (int j = 0; j < nact; j++) { b->partial[j] = 0.0; b->z[j] = z; }
+    for (int k = 0; k < n; k++) {
+      double t = nl_noise_perm3_points_sum(b->p, o->freq[k], b->x, b->y, b->z, (size_t)nact, o->amp[k], b->partial);
+      top = t > top ? t : top;
     }
+    st->noise_evals += (long)n * nact;
+    for (int j = 0; j < nact; j++) b->dens[j] = clamp01(b->base[j] + b->partial[j]);
+    st->max_abs_noise = top;
     return;
   }
-  for (int k = 0; k <= n && m > 0; k++) {
-    int left = 0;
-    long decided = 0;
-    double rk = b->rem[k];
-    for (int j = 0; j < m; j++) {   /* eq. 5.4 before term k (clamp_decided), without branches: decided samples leave */
-      int q = b->und[j];
-      double sum = b->base[q] + b->partial[q];
-      int lo = sum + rk <= 0.0, hi = sum - rk >= 1.0;
-      b->dens[q] = hi ? 1.0 : 0.0;   /* overwritten later if undecided */
-      decided += lo | hi;
-      b->und[left] = q;
-      left += !(lo | hi);
-    }
-    st->noise_evals += decided * k;
-    m = left;
-    if (k == n || m == 0) break;
-    smoke_octave(b, k, z, b->und, m, &st->max_abs_noise);
+  int m = 0;
+  double r0 = b->rem[0];
+  for (int j = 0; j < nact; j++) {   /* the check before term 0, packing the undecided */
+    double d2 = b->r2[j] + z2;
+    b->dens[j] = 0.0;
+    if (d2 >= b->far2) continue;   /* a |p| + 1 + rem_0 <= 0 without the root */
+    double base = s->slope * sqrt(d2) + 1.0, sum = base + 0.0;
+    int lo = sum + r0 <= 0.0, hi = sum - r0 >= 1.0;
+    b->dens[j] = hi ? 1.0 : 0.0;
+    b->ux[m] = b->x[j]; b->uy[m] = b->y[j]; b->ub[m] = base; b->up[m] = 0.0; b->ur[m] = j;
+    b->z[m] = z;
+    m += !(lo | hi);
   }
-  for (int j = 0; j < m; j++) {   /* never decided: the whole sum */
-    int q = b->und[j];
-    b->dens[q] = clamp01(b->base[q] + b->partial[q]);
+  for (int k = 0; k < n && m > 0; k++) {
+    double t = nl_noise_perm3_points_sum(b->p, o->freq[k], b->ux, b->uy, b->z, (size_t)m, o->amp[k], b->up);
+    top = t > top ? t : top;
+    long decided;
+    m = smoke_check_undecided(b, m, b->rem[k + 1], &decided);
+    st->noise_evals += decided * (k + 1);
   }
+  for (int j = 0; j < m; j++) b->dens[b->ur[j]] = clamp01(b->ub[j] + b->up[j]);   /* never decided */
   st->noise_evals += (long)n * m;
+  st->max_abs_noise = top;
 }
 
 /* Rays of pixels first .. first + count - 1 (row-major) along +z through
@@ -247,29 +261,35 @@ static void smoke_block_march(smoke_block *b, size_t first, int count, double *i
   for (int j = 0; j < count; j++) {
     size_t pix = first + (size_t)j;
     int r = (int)(pix / (size_t)s->width), c = (int)(pix % (size_t)s->width);
-    b->x[j] = -0.5 + (c + 0.5) / s->width;
-    b->y[j] = -0.5 + (r + 0.5) / s->height;
-    b->r2[j] = b->x[j] * b->x[j] + b->y[j] * b->y[j];
-    b->trans[j] = 1.0;
-    b->colour[j] = 0.0;
-    if (b->trans[j] > stop) b->act[nact++] = j;
+    double x = -0.5 + (c + 0.5) / s->width, y = -0.5 + (r + 0.5) / s->height;
+    img[pix] = 0.0;
+    b->x[nact] = x; b->y[nact] = y; b->r2[nact] = x * x + y * y;
+    b->trans[nact] = 1.0; b->colour[nact] = 0.0; b->pix[nact] = j;
+    nact += 1.0 > stop;   /* trans > stop */
   }
   for (long i = 0; i <= nsteps && nact > 0; i++) {
     double z = -0.5 + (double)i * s->step;
     smoke_densities(b, nact, z, st);
-    int left = 0;
+    int stopped = 0;
     for (int j = 0; j < nact; j++) {
-      int q = b->act[j];
-      double d = b->dens[q], trans = b->trans[q];
-      if (d == 0.0) { if (trans > stop) b->act[left++] = q; continue; }   /* exp(-0) = 1: nothing absorbed */
+      double d = b->dens[j], trans = b->trans[j];
+      if (d == 0.0) continue;   /* exp(-0) = 1: nothing absorbed */
       double t1 = trans * (d == 1.0 ? full : exp(-s->kappa * d * s->step));
-      b->colour[q] += trans - t1;
-      b->trans[q] = t1;
-      if (t1 > stop) b->act[left++] = q;
+      b->colour[j] += trans - t1;
+      b->trans[j] = t1;
+      stopped += !(t1 > stop);
+    }
+    if (!stopped) continue;
+    int left = 0;   /* rays that stopped leave their colour and the pack */
+    for (int j = 0; j < nact; j++) {
+      if (!(b->trans[j] > stop)) { img[first + (size_t)b->pix[j]] = b->colour[j]; continue; }
+      b->x[left] = b->x[j]; b->y[left] = b->y[j]; b->r2[left] = b->r2[j];
+      b->trans[left] = b->trans[j]; b->colour[left] = b->colour[j]; b->pix[left] = b->pix[j];
+      left++;
     }
     nact = left;
   }
-  for (int j = 0; j < count; j++) img[first + (size_t)j] = b->colour[j];
+  for (int j = 0; j < nact; j++) img[first + (size_t)b->pix[j]] = b->colour[j];
 }
 
 nl_status nl_bounds_smoke_render(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double *img,
@@ -283,6 +303,8 @@ nl_status nl_bounds_smoke_render(const nl_noise_perm3 *p, const nl_bounds_smoke 
   memset(st, 0, sizeof *st);
   smoke_block *b = nl_xmalloc(sizeof *b);
   b->p = p; b->s = s; b->o = &o; b->rem = rem;
+  double far = (1.0 + rem[0]) / -s->slope * (1.0 + 1e-6);
+  b->far2 = far * far;
   size_t npix = (size_t)s->width * s->height;
   for (size_t first = 0; first < npix; first += SMOKE_BLOCK)
     smoke_block_march(b, first, (int)(npix - first < SMOKE_BLOCK ? npix - first : SMOKE_BLOCK), img, st);
