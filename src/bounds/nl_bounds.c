@@ -180,30 +180,12 @@ typedef struct {
   int pix[SMOKE_BLOCK];
   /* a step's samples: base a|p| + 1, partial sum, density, z */
   double base[SMOKE_BLOCK], partial[SMOKE_BLOCK], dens[SMOKE_BLOCK], z[SMOKE_BLOCK];
-  /* the undecided samples, packed: position, base, partial sum, ray */
-  double ux[SMOKE_BLOCK], uy[SMOKE_BLOCK], ub[SMOKE_BLOCK], up[SMOKE_BLOCK];
-  int ur[SMOKE_BLOCK];
+  /* the undecided samples, packed (nl_noise_pack): position, base, partial sum, ray */
+  double ux[SMOKE_BLOCK + NL_NOISE_PACK_PAD], uy[SMOKE_BLOCK + NL_NOISE_PACK_PAD];
+  double uz[SMOKE_BLOCK + NL_NOISE_PACK_PAD], ub[SMOKE_BLOCK + NL_NOISE_PACK_PAD];
+  double up[SMOKE_BLOCK + NL_NOISE_PACK_PAD];
+  int ur[SMOKE_BLOCK + NL_NOISE_PACK_PAD], hi[SMOKE_BLOCK];
 } smoke_block;
-
-/* eq. 5.4 before term k (clamp_decided) on the undecided samples j < m:
- * a decided one writes its density (0 or 1) and leaves; the others move
- * down, in order. Returns how many stay; *decided counts the others. */
-static int smoke_check_undecided(smoke_block *b, int m, double rk, long *decided)
-{
-  int left = 0;
-  long dec = 0;
-  for (int j = 0; j < m; j++) {
-    double sum = b->ub[j] + b->up[j];
-    int lo = sum + rk <= 0.0, hi = sum - rk >= 1.0;
-    b->dens[b->ur[j]] = hi ? 1.0 : 0.0;   /* overwritten later if undecided */
-    dec += lo | hi;
-    b->ux[left] = b->ux[j]; b->uy[left] = b->uy[j];
-    b->ub[left] = b->ub[j]; b->up[left] = b->up[j]; b->ur[left] = b->ur[j];
-    left += !(lo | hi);
-  }
-  *decided = dec;
-  return left;
-}
 
 /* The densities of the nact active samples at height z (clamped_sum, batched). */
 static void smoke_densities(smoke_block *b, int nact, double z, nl_bounds_smoke_stats *st)
@@ -234,19 +216,20 @@ static void smoke_densities(smoke_block *b, int nact, double z, nl_bounds_smoke_
     double base = s->slope * sqrt(d2) + 1.0, sum = base + 0.0;
     int lo = sum + r0 <= 0.0, hi = sum - r0 >= 1.0;
     b->dens[j] = hi ? 1.0 : 0.0;
-    b->ux[m] = b->x[j]; b->uy[m] = b->y[j]; b->ub[m] = base; b->up[m] = 0.0; b->ur[m] = j;
-    b->z[m] = z;
+    b->ux[m] = b->x[j]; b->uy[m] = b->y[j]; b->uz[m] = z; b->ub[m] = base; b->up[m] = 0.0; b->ur[m] = j;
     m += !(lo | hi);
   }
-  for (int k = 0; k < n && m > 0; k++) {
-    double t = nl_noise_perm3_points_sum(b->p, o->freq[k], b->ux, b->uy, b->z, (size_t)m, o->amp[k], b->up);
-    top = t > top ? t : top;
-    long decided;
-    m = smoke_check_undecided(b, m, b->rem[k + 1], &decided);
-    st->noise_evals += decided * (k + 1);
+  /* term k, then the check before term k + 1, in one pass
+   * (nl_noise_perm3_points_bounded): the decided leave the pack */
+  nl_noise_pack pk = {b->ux, b->uy, b->uz, b->ub, b->up, b->ur, (size_t)m};
+  for (int k = 0; k < n && pk.n > 0; k++) {
+    size_t before = pk.n, nhi = nl_noise_perm3_points_bounded(b->p, o->freq[k], o->amp[k], b->rem[k + 1], &pk,
+                                                              b->hi, &top);
+    for (size_t h = 0; h < nhi; h++) b->dens[b->hi[h]] = 1.0;
+    st->noise_evals += (long)(before - pk.n) * (k + 1);
   }
-  for (int j = 0; j < m; j++) b->dens[b->ur[j]] = clamp01(b->ub[j] + b->up[j]);   /* never decided */
-  st->noise_evals += (long)n * m;
+  for (size_t j = 0; j < pk.n; j++) b->dens[b->ur[j]] = clamp01(b->ub[j] + b->up[j]);   /* never decided */
+  st->noise_evals += (long)n * (long)pk.n;
   st->max_abs_noise = top;
 }
 

@@ -64,6 +64,11 @@ typedef struct {
    * range as points3. */
   void (*points3_sum)(const nl_noise_perm3 *p, const int *p32, double f, const double *x, const double *y,
                       const double *z, size_t n, double amp, double *sum, double *top);
+  /* nl_noise_perm3_points_bounded on the first n points of pk (n a
+   * multiple of NL_SIMD_PAD): the undecided go to the front from 0, their
+   * count returned; hi and *nhi, *top as there. pk->n is not touched. */
+  size_t (*points3_bounded)(const nl_noise_perm3 *p, const int *p32, double f, double amp, double r,
+                            const nl_noise_pack *pk, size_t n, int *hi, size_t *nhi, double *top);
 } nl_noise_simd_kernels;
 
 extern const nl_noise_simd_kernels nl_noise_simd_sse2, nl_noise_simd_avx2, nl_noise_simd_avx512;

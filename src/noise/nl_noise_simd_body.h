@@ -284,13 +284,17 @@ v_perm3(const p3tab *tab, const nl_noise_perm3 *P, vd vx, vd vy, vd vz)
 /* Where a vector of points goes: out = v (nl_noise_perm3_points), or one
  * octave of a sum, out = out + amp v, with the lanes' largest |v| so far in
  * *top (nl_noise_perm3_points_sum; fabs(v) > top, so NaN never counts). */
+static inline void v_top_raise(vd *top, vd v)
+{
+  vd a = (vd)((vl)v & 0x7fffffffffffffffLL);
+  vl up = (vl)(a > *top);
+  *top = (vd)((up & (vl)a) | (~up & (vl)*top));
+}
 static inline __attribute__((always_inline)) void
 v_points_emit(double *out, vd v, int sum, double amp, vd *top)
 {
   if (!sum) { st(out, v); return; }
-  vd a = (vd)((vl)v & 0x7fffffffffffffffLL);
-  vl up = (vl)(a > *top);
-  *top = (vd)((up & (vl)a) | (~up & (vl)*top));
+  v_top_raise(top, v);
   st(out, ld(out) + amp * v);
 }
 /* t raised to the largest lane of top. */
@@ -328,4 +332,54 @@ static __attribute__((unused)) void points3_sum_lanes(const nl_noise_perm3 *P, c
                                                       size_t n, double amp, double *sum, double *top)
 {
   points3_do(P, p32, f, x, y, z, n, sum, amp, top, 1);
+}
+
+/* ---- one term of a bounded sum (nl_noise_perm3_points_bounded) ----------- */
+
+/* eq. 5.4 for the vector of points k .. k + W - 1 with their new sums:
+ * decided at 1, the id to hi; undecided, moved to position left (<= k, so
+ * nothing not yet read is overwritten). Returns the new left. A level may
+ * bring its own (NL_SIMD_HAVE_COMPRESS). */
+#ifndef NL_SIMD_HAVE_COMPRESS
+static inline size_t v_pack(const nl_noise_pack *pk, size_t k, vd x, vd y, vd z, vd b, vd sum, double r,
+                            size_t left, int *hi, size_t *nh)
+{
+  vd s = b + sum;
+  vl lo = (vl)(s + r <= 0.0), up = (vl)(s - r >= 1.0);
+  int id[NL_SIMD_W];
+  memcpy(id, pk->id + k, sizeof id);
+  for (int l = 0; l < NL_SIMD_W; l++) {
+    if (up[l]) hi[(*nh)++] = id[l];
+    if (lo[l] | up[l]) continue;
+    pk->x[left] = x[l]; pk->y[left] = y[l]; pk->z[left] = z[l];
+    pk->base[left] = b[l]; pk->sum[left] = sum[l]; pk->id[left] = id[l];
+    left++;
+  }
+  return left;
+}
+#endif
+
+/* Points k0 .. k1 - 1 (whole vectors), packing from left. */
+static inline __attribute__((always_inline)) size_t
+points3_bounded_do(const p3tab *tab, const nl_noise_perm3 *P, double f, double amp, double r,
+                   const nl_noise_pack *pk, size_t k0, size_t k1, size_t left, int *hi, size_t *nh, vd *vt)
+{
+  for (size_t k = k0; k < k1; k += NL_SIMD_W) {
+    vd x = ld(pk->x + k), y = ld(pk->y + k), z = ld(pk->z + k);
+    vd v = v_perm3(tab, P, f * x, f * y, f * z);   /* noise(f x[k], ...) */
+    v_top_raise(vt, v);
+    left = v_pack(pk, k, x, y, z, ld(pk->base + k), ld(pk->sum + k) + amp * v, r, left, hi, nh);
+  }
+  return left;
+}
+
+static __attribute__((unused)) size_t
+points3_bounded_lanes(const nl_noise_perm3 *P, const int *p32, double f, double amp, double r,
+                      const nl_noise_pack *pk, size_t n, int *hi, size_t *nhi, double *top)
+{
+  p3tab tab = p3_make(P, p32);
+  vd vt = SPLAT(0.0);
+  size_t left = points3_bounded_do(&tab, P, f, amp, r, pk, 0, n, 0, hi, nhi, &vt);
+  *top = v_top(vt, *top);
+  return left;
 }
