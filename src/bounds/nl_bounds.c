@@ -6,6 +6,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 /* ---- fractal bounds ---------------------------------------------------- */
 
@@ -187,6 +190,20 @@ typedef struct {
   int ur[SMOKE_BLOCK + NL_NOISE_PACK_PAD], hi[SMOKE_BLOCK];
 } smoke_block;
 
+/* base_j = a |p_j| + 1, |p_j| = sqrt((x^2 + y^2) + z^2), for j < n, the
+ * roots two at a time where SSE2 is (correctly rounded: the bits of sqrt). */
+static void smoke_bases(const double *r2, int n, double z2, double slope, double *base)
+{
+  int j = 0;
+#ifdef __SSE2__
+  for (; j + 2 <= n; j += 2) {
+    __m128d root = _mm_sqrt_pd(_mm_add_pd(_mm_loadu_pd(r2 + j), _mm_set1_pd(z2)));
+    _mm_storeu_pd(base + j, _mm_add_pd(_mm_mul_pd(_mm_set1_pd(slope), root), _mm_set1_pd(1.0)));
+  }
+#endif
+  for (; j < n; j++) base[j] = slope * sqrt(r2[j] + z2) + 1.0;
+}
+
 /* The densities of the nact active samples at height z (clamped_sum, batched). */
 static void smoke_densities(smoke_block *b, int nact, double z, nl_bounds_smoke_stats *st)
 {
@@ -196,7 +213,7 @@ static void smoke_densities(smoke_block *b, int nact, double z, nl_bounds_smoke_
   double top = st->max_abs_noise, z2 = z * z;
   st->samples += nact;
   if (!s->incremental) {
-    for (int j = 0; j < nact; j++) b->base[j] = s->slope * sqrt(b->r2[j] + z2) + 1.0;
+    smoke_bases(b->r2, nact, z2, s->slope, b->base);
     for (int j = 0; j < nact; j++) { b->partial[j] = 0.0; b->z[j] = z; }
     for (int k = 0; k < n; k++) {
       double t = nl_noise_perm3_points_sum(b->p, o->freq[k], b->x, b->y, b->z, (size_t)nact, o->amp[k], b->partial);
@@ -209,15 +226,25 @@ static void smoke_densities(smoke_block *b, int nact, double z, nl_bounds_smoke_
   }
   int m = 0;
   double r0 = b->rem[0];
-  for (int j = 0; j < nact; j++) {   /* the check before term 0, packing the undecided */
-    double d2 = b->r2[j] + z2;
-    b->dens[j] = 0.0;
-    if (d2 >= b->far2) continue;   /* a |p| + 1 + rem_0 <= 0 without the root */
-    double base = s->slope * sqrt(d2) + 1.0, sum = base + 0.0;
-    int lo = sum + r0 <= 0.0, hi = sum - r0 >= 1.0;
-    b->dens[j] = hi ? 1.0 : 0.0;
-    b->ux[m] = b->x[j]; b->uy[m] = b->y[j]; b->uz[m] = z; b->ub[m] = base; b->up[m] = 0.0; b->ur[m] = j;
-    m += !(lo | hi);
+  for (int j0 = 0; j0 < nact; j0 += 2) {   /* the check before term 0, packing the undecided */
+    double root[2];
+    b->dens[j0] = b->dens[j0 + 1] = 0.0;
+#ifdef __SSE2__
+    __m128d d2 = _mm_add_pd(_mm_loadu_pd(b->r2 + j0), _mm_set1_pd(z2));
+    if (_mm_movemask_pd(_mm_cmpge_pd(d2, _mm_set1_pd(b->far2))) == 3) continue;
+    _mm_storeu_pd(root, _mm_sqrt_pd(d2));   /* two correctly rounded roots at once */
+#else
+    double d2[2] = {b->r2[j0] + z2, b->r2[j0 + 1] + z2};
+    if (d2[0] >= b->far2 && d2[1] >= b->far2) continue;
+    root[0] = sqrt(d2[0]); root[1] = sqrt(d2[1]);
+#endif
+    for (int j = j0; j < j0 + 2 && j < nact; j++) {
+      double base = s->slope * root[j - j0] + 1.0, sum = base + 0.0;
+      int lo = sum + r0 <= 0.0, hi = sum - r0 >= 1.0;
+      b->dens[j] = hi ? 1.0 : 0.0;
+      b->ux[m] = b->x[j]; b->uy[m] = b->y[j]; b->uz[m] = z; b->ub[m] = base; b->up[m] = 0.0; b->ur[m] = j;
+      m += !(lo | hi);
+    }
   }
   /* term k, then the check before term k + 1, in one pass
    * (nl_noise_perm3_points_bounded): the decided leave the pack */
