@@ -150,22 +150,25 @@ static nl_noise_octaves smoke_octaves(const nl_bounds_smoke *s)
 }
 
 /* The march, batched (issue 17, item 8). The rays of a block of pixels
- * step together: at step i every ray still below the stop opacity gives
- * one sample at z_i, and each octave of those samples is one call of
- * nl_noise_perm3_points_sum (scale, noise and partial += amp noise in one
- * pass). With incremental bounding the eq. 5.4 check runs before each
- * octave and moves the samples it left undecided to the front of their
- * arrays (branch-free stream compaction: position, base and partial sum
- * travel together, so the next octave reads them in order, with no index
- * list to gather through); the octave count is still decided per sample.
- * The active rays are kept packed the same way (compacted only at a step
- * where one stopped). Every sample sees the same operations in the same
- * order as one ray marched alone (the kernel returns the bits of
- * nl_noise_perm3_eval): images and counts do not depend on the batching.
- * What a ray alone pays per sample (a call per octave, a loop, exp) is
- * shared: |p|^2 = (x^2 + y^2) + z^2 keeps x^2 + y^2 per ray, and the
- * Beer-Lambert factor exp(-kappa density h) is 1 at density 0 (the
- * transmittance stays the same bits) and one constant at density 1. */
+ * step together, kept packed (compacted only at a step where one
+ * stopped): at step i every ray still below the stop opacity gives one
+ * sample at z_i. Plain evaluation: each octave of those samples is one
+ * call of nl_noise_perm3_points_sum (scale, noise and partial += amp noise
+ * in one pass). Incremental bounding: the check before term 0 packs the
+ * undecided samples (position, base, partial sum, ray), and each octave is
+ * one call of nl_noise_perm3_points_bounded, which adds the term, runs the
+ * eq. 5.4 check before the next one and packs the still undecided to the
+ * front (stream compaction, no index lists to gather through): the octave
+ * count is still decided per sample, and what a sample costs beyond its
+ * evaluations is little (issue 17, item 8: the time ratio should approach
+ * the evaluation ratio). Every sample sees the same operations in the same
+ * order as one ray marched alone (the kernels return the bits of
+ * nl_noise_perm3_eval and its sums): images and counts do not depend on the
+ * batching. What a ray alone pays per sample (a call per octave, a loop,
+ * exp) is shared: |p|^2 = (x^2 + y^2) + z^2 keeps x^2 + y^2 per ray, the
+ * roots go two at a time, and the Beer-Lambert factor exp(-kappa density
+ * h) is 1 at density 0 (the transmittance stays the same bits) and one
+ * constant at density 1. */
 enum { SMOKE_BLOCK = 1024 };
 
 typedef struct {
@@ -173,10 +176,11 @@ typedef struct {
   const nl_bounds_smoke *s;
   const nl_noise_octaves *o;
   const double *rem;
-  /* Beyond |p|^2 = far2 eq. 5.4 decides density 0 before term 0: a |p| + 1
-   * + rem_0 <= 0 for |p| >= (1 + rem_0) / -a; the bound is raised by 1e-6
-   * relative so that the computed sum (a few roundings of 2^-53) is
-   * certainly <= 0 there, and the check itself runs on the rest. */
+  /* Beyond |p|^2 = far2 eq. 5.4 decides density 0 before term 0, as the
+   * check itself would: a |p| + 1 + rem_0 <= 0 for |p| >= (1 + rem_0) / -a,
+   * and the bound is raised by 1e-6 relative so that the computed sum (a
+   * few roundings of 2^-53) is certainly <= 0 there; those samples need no
+   * root. The check runs on the rest. */
   double far2;
   /* the active rays, packed: position, x^2 + y^2, transmittance, colour, pixel in the block */
   double x[SMOKE_BLOCK], y[SMOKE_BLOCK], r2[SMOKE_BLOCK], trans[SMOKE_BLOCK], colour[SMOKE_BLOCK];
