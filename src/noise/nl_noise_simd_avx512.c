@@ -272,8 +272,10 @@ static void points3_sum(const nl_noise_perm3 *P, const int *p32, double f, const
 /* The bounded term 16 at a time: each half packed as soon as it is summed
  * (its stores reach at most the half just read). */
 static size_t points3_bounded(const nl_noise_perm3 *P, const int *p32, double f, double amp, double r,
-                              const nl_noise_pack *pk, size_t n, int *hi, size_t *nhi, double *top)
+                              const nl_noise_pack *pk0, size_t n, int *hi, size_t *nhi, double *top)
 {
+  nl_noise_pack q = *pk0;   /* a local copy: the stores into the arrays cannot change its pointers */
+  const nl_noise_pack *pk = &q;
   p3tab tab = p3_make(P, p32);
   vd vt = SPLAT(0.0);
   size_t k = 0, left = 0;

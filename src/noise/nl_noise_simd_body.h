@@ -377,9 +377,10 @@ static __attribute__((unused)) size_t
 points3_bounded_lanes(const nl_noise_perm3 *P, const int *p32, double f, double amp, double r,
                       const nl_noise_pack *pk, size_t n, int *hi, size_t *nhi, double *top)
 {
+  nl_noise_pack q = *pk;   /* a local copy: the stores into the arrays cannot change its pointers */
   p3tab tab = p3_make(P, p32);
   vd vt = SPLAT(0.0);
-  size_t left = points3_bounded_do(&tab, P, f, amp, r, pk, 0, n, 0, hi, nhi, &vt);
+  size_t left = points3_bounded_do(&tab, P, f, amp, r, &q, 0, n, 0, hi, nhi, &vt);
   *top = v_top(vt, *top);
   return left;
 }
