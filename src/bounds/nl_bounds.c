@@ -316,6 +316,7 @@ nl_status nl_bounds_smoke_render(const nl_noise_perm3 *p, const nl_bounds_smoke 
   nl_bounds_remainders(&o, s->octave_bound, rem);
   memset(st, 0, sizeof *st);
   smoke_block *b = nl_xmalloc(sizeof *b);
+  memset(b, 0, sizeof *b);   /* the pairs of roots read one ray past the last: never an unset value */
   b->p = p; b->s = s; b->o = &o; b->rem = rem;
   double far = (1.0 + rem[0]) / -s->slope * (1.0 + 1e-6);
   b->far2 = far * far;
