@@ -6,6 +6,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 /* ---- fractal bounds ---------------------------------------------------- */
 
@@ -147,18 +150,25 @@ static nl_noise_octaves smoke_octaves(const nl_bounds_smoke *s)
 }
 
 /* The march, batched (issue 17, item 8). The rays of a block of pixels
- * step together: at step i every ray still below the stop opacity gives
- * one sample at z_i, and each octave of those samples runs through the
- * point kernel (nl_noise_perm3_points) at once. With incremental bounding
- * the eq. 5.4 check runs before each octave and only the samples it left
- * undecided are gathered for the next one, so the octave count is still
- * decided per sample. Every sample sees the same operations in the same
- * order as one ray marched alone (the point kernel returns the bits of
- * nl_noise_perm3_eval): images and counts do not depend on the batching.
- * What a ray alone pays per sample (a call per octave, a loop, exp) is
- * shared: |p|^2 = (x^2 + y^2) + z^2 keeps x^2 + y^2 per ray, and the
- * Beer-Lambert factor exp(-kappa density h) is 1 at density 0 (the
- * transmittance stays the same bits) and one constant at density 1. */
+ * step together, kept packed (compacted only at a step where one
+ * stopped): at step i every ray still below the stop opacity gives one
+ * sample at z_i. Plain evaluation: each octave of those samples is one
+ * call of nl_noise_perm3_points_sum (scale, noise and partial += amp noise
+ * in one pass). Incremental bounding: the check before term 0 packs the
+ * undecided samples (position, base, partial sum, ray), and each octave is
+ * one call of nl_noise_perm3_points_bounded, which adds the term, runs the
+ * eq. 5.4 check before the next one and packs the still undecided to the
+ * front (stream compaction, no index lists to gather through): the octave
+ * count is still decided per sample, and what a sample costs beyond its
+ * evaluations is little (issue 17, item 8: the time ratio should approach
+ * the evaluation ratio). Every sample sees the same operations in the same
+ * order as one ray marched alone (the kernels return the bits of
+ * nl_noise_perm3_eval and its sums): images and counts do not depend on the
+ * batching. What a ray alone pays per sample (a call per octave, a loop,
+ * exp) is shared: |p|^2 = (x^2 + y^2) + z^2 keeps x^2 + y^2 per ray, the
+ * roots go two at a time, and the Beer-Lambert factor exp(-kappa density
+ * h) is 1 at density 0 (the transmittance stays the same bits) and one
+ * constant at density 1. */
 enum { SMOKE_BLOCK = 1024 };
 
 typedef struct {
@@ -166,74 +176,92 @@ typedef struct {
   const nl_bounds_smoke *s;
   const nl_noise_octaves *o;
   const double *rem;
+  /* Beyond |p|^2 = far2 eq. 5.4 decides density 0 before term 0, as the
+   * check itself would: a |p| + 1 + rem_0 <= 0 for |p| >= (1 + rem_0) / -a,
+   * and the bound is raised by 1e-6 relative so that the computed sum (a
+   * few roundings of 2^-53) is certainly <= 0 there; those samples need no
+   * root. The check runs on the rest. */
+  double far2;
+  /* the active rays, packed: position, x^2 + y^2, transmittance, colour, pixel in the block */
   double x[SMOKE_BLOCK], y[SMOKE_BLOCK], r2[SMOKE_BLOCK], trans[SMOKE_BLOCK], colour[SMOKE_BLOCK];
-  double base[SMOKE_BLOCK], partial[SMOKE_BLOCK], dens[SMOKE_BLOCK];
-  double px[SMOKE_BLOCK], py[SMOKE_BLOCK], pz[SMOKE_BLOCK], nz[SMOKE_BLOCK];
-  int act[SMOKE_BLOCK], und[SMOKE_BLOCK];
+  int pix[SMOKE_BLOCK];
+  /* a step's samples: base a|p| + 1, partial sum, density, z */
+  double base[SMOKE_BLOCK], partial[SMOKE_BLOCK], dens[SMOKE_BLOCK], z[SMOKE_BLOCK];
+  /* the undecided samples, packed (nl_noise_pack): position, base, partial sum, ray */
+  double ux[SMOKE_BLOCK + NL_NOISE_PACK_PAD], uy[SMOKE_BLOCK + NL_NOISE_PACK_PAD];
+  double uz[SMOKE_BLOCK + NL_NOISE_PACK_PAD], ub[SMOKE_BLOCK + NL_NOISE_PACK_PAD];
+  double up[SMOKE_BLOCK + NL_NOISE_PACK_PAD];
+  int ur[SMOKE_BLOCK + NL_NOISE_PACK_PAD], hi[SMOKE_BLOCK];
 } smoke_block;
 
-/* One octave k of the samples und[0..m-1] at height z: partial += amp_k noise(f_k p). */
-static void smoke_octave(smoke_block *b, int k, double z, const int *und, int m, double *max_abs)
+/* base_j = a |p_j| + 1, |p_j| = sqrt((x^2 + y^2) + z^2), for j < n, the
+ * roots two at a time where SSE2 is (correctly rounded: the bits of sqrt). */
+static void smoke_bases(const double *r2, int n, double z2, double slope, double *base)
 {
-  double f = b->o->freq[k], amp = b->o->amp[k], fz = f * z, top = *max_abs;
-  for (int j = 0; j < m; j++) {
-    b->px[j] = f * b->x[und[j]];
-    b->py[j] = f * b->y[und[j]];
-    b->pz[j] = fz;
+  int j = 0;
+#ifdef __SSE2__
+  for (; j + 2 <= n; j += 2) {
+    __m128d root = _mm_sqrt_pd(_mm_add_pd(_mm_loadu_pd(r2 + j), _mm_set1_pd(z2)));
+    _mm_storeu_pd(base + j, _mm_add_pd(_mm_mul_pd(_mm_set1_pd(slope), root), _mm_set1_pd(1.0)));
   }
-  nl_noise_perm3_points(b->p, b->px, b->py, b->pz, (size_t)m, b->nz);
-  for (int j = 0; j < m; j++) {
-    double a = fabs(b->nz[j]);
-    top = a > top ? a : top;
-    b->partial[und[j]] += amp * b->nz[j];
-  }
-  *max_abs = top;
+#endif
+  for (; j < n; j++) base[j] = slope * sqrt(r2[j] + z2) + 1.0;
 }
 
-/* The densities of the active samples at height z (clamped_sum, batched). */
+/* The densities of the nact active samples at height z (clamped_sum, batched). */
 static void smoke_densities(smoke_block *b, int nact, double z, nl_bounds_smoke_stats *st)
 {
   const nl_bounds_smoke *s = b->s;
-  int n = b->o->n, m = nact;
-  for (int j = 0; j < nact; j++) {
-    int q = b->act[j];
-    b->base[q] = s->slope * sqrt(b->r2[q] + z * z) + 1.0;
-    b->partial[q] = 0.0;
-    b->und[j] = q;
-  }
+  const nl_noise_octaves *o = b->o;
+  int n = o->n;
+  double top = st->max_abs_noise, z2 = z * z;
   st->samples += nact;
   if (!s->incremental) {
-    for (int k = 0; k < n; k++) smoke_octave(b, k, z, b->und, m, &st->max_abs_noise);
-    st->noise_evals += (long)n * nact;
-    for (int j = 0; j < nact; j++) {
-      int q = b->act[j];
-      b->dens[q] = clamp01(b->base[q] + b->partial[q]);
+    smoke_bases(b->r2, nact, z2, s->slope, b->base);
+    for (int j = 0; j < nact; j++) { b->partial[j] = 0.0; b->z[j] = z; }
+    for (int k = 0; k < n; k++) {
+      double t = nl_noise_perm3_points_sum(b->p, o->freq[k], b->x, b->y, b->z, (size_t)nact, o->amp[k], b->partial);
+      top = t > top ? t : top;
     }
+    st->noise_evals += (long)n * nact;
+    for (int j = 0; j < nact; j++) b->dens[j] = clamp01(b->base[j] + b->partial[j]);
+    st->max_abs_noise = top;
     return;
   }
-  for (int k = 0; k <= n && m > 0; k++) {
-    int left = 0;
-    long decided = 0;
-    double rk = b->rem[k];
-    for (int j = 0; j < m; j++) {   /* eq. 5.4 before term k (clamp_decided), without branches: decided samples leave */
-      int q = b->und[j];
-      double sum = b->base[q] + b->partial[q];
-      int lo = sum + rk <= 0.0, hi = sum - rk >= 1.0;
-      b->dens[q] = hi ? 1.0 : 0.0;   /* overwritten later if undecided */
-      decided += lo | hi;
-      b->und[left] = q;
-      left += !(lo | hi);
+  int m = 0;
+  double r0 = b->rem[0];
+  for (int j0 = 0; j0 < nact; j0 += 2) {   /* the check before term 0, packing the undecided */
+    double root[2];
+    b->dens[j0] = b->dens[j0 + 1] = 0.0;
+#ifdef __SSE2__
+    __m128d d2 = _mm_add_pd(_mm_loadu_pd(b->r2 + j0), _mm_set1_pd(z2));
+    if (_mm_movemask_pd(_mm_cmpge_pd(d2, _mm_set1_pd(b->far2))) == 3) continue;
+    _mm_storeu_pd(root, _mm_sqrt_pd(d2));   /* two correctly rounded roots at once */
+#else
+    double d2[2] = {b->r2[j0] + z2, b->r2[j0 + 1] + z2};
+    if (d2[0] >= b->far2 && d2[1] >= b->far2) continue;
+    root[0] = sqrt(d2[0]); root[1] = sqrt(d2[1]);
+#endif
+    for (int j = j0; j < j0 + 2 && j < nact; j++) {
+      double base = s->slope * root[j - j0] + 1.0, sum = base + 0.0;
+      int lo = sum + r0 <= 0.0, hi = sum - r0 >= 1.0;
+      b->dens[j] = hi ? 1.0 : 0.0;
+      b->ux[m] = b->x[j]; b->uy[m] = b->y[j]; b->uz[m] = z; b->ub[m] = base; b->up[m] = 0.0; b->ur[m] = j;
+      m += !(lo | hi);
     }
-    st->noise_evals += decided * k;
-    m = left;
-    if (k == n || m == 0) break;
-    smoke_octave(b, k, z, b->und, m, &st->max_abs_noise);
   }
-  for (int j = 0; j < m; j++) {   /* never decided: the whole sum */
-    int q = b->und[j];
-    b->dens[q] = clamp01(b->base[q] + b->partial[q]);
+  /* term k, then the check before term k + 1, in one pass
+   * (nl_noise_perm3_points_bounded): the decided leave the pack */
+  nl_noise_pack pk = {b->ux, b->uy, b->uz, b->ub, b->up, b->ur, (size_t)m};
+  for (int k = 0; k < n && pk.n > 0; k++) {
+    size_t before = pk.n, nhi = nl_noise_perm3_points_bounded(b->p, o->freq[k], o->amp[k], b->rem[k + 1], &pk,
+                                                              b->hi, &top);
+    for (size_t h = 0; h < nhi; h++) b->dens[b->hi[h]] = 1.0;
+    st->noise_evals += (long)(before - pk.n) * (k + 1);
   }
-  st->noise_evals += (long)n * m;
+  for (size_t j = 0; j < pk.n; j++) b->dens[b->ur[j]] = clamp01(b->ub[j] + b->up[j]);   /* never decided */
+  st->noise_evals += (long)n * (long)pk.n;
+  st->max_abs_noise = top;
 }
 
 /* Rays of pixels first .. first + count - 1 (row-major) along +z through
@@ -247,29 +275,35 @@ static void smoke_block_march(smoke_block *b, size_t first, int count, double *i
   for (int j = 0; j < count; j++) {
     size_t pix = first + (size_t)j;
     int r = (int)(pix / (size_t)s->width), c = (int)(pix % (size_t)s->width);
-    b->x[j] = -0.5 + (c + 0.5) / s->width;
-    b->y[j] = -0.5 + (r + 0.5) / s->height;
-    b->r2[j] = b->x[j] * b->x[j] + b->y[j] * b->y[j];
-    b->trans[j] = 1.0;
-    b->colour[j] = 0.0;
-    if (b->trans[j] > stop) b->act[nact++] = j;
+    double x = -0.5 + (c + 0.5) / s->width, y = -0.5 + (r + 0.5) / s->height;
+    img[pix] = 0.0;
+    b->x[nact] = x; b->y[nact] = y; b->r2[nact] = x * x + y * y;
+    b->trans[nact] = 1.0; b->colour[nact] = 0.0; b->pix[nact] = j;
+    nact += 1.0 > stop;   /* trans > stop */
   }
   for (long i = 0; i <= nsteps && nact > 0; i++) {
     double z = -0.5 + (double)i * s->step;
     smoke_densities(b, nact, z, st);
-    int left = 0;
+    int stopped = 0;
     for (int j = 0; j < nact; j++) {
-      int q = b->act[j];
-      double d = b->dens[q], trans = b->trans[q];
-      if (d == 0.0) { if (trans > stop) b->act[left++] = q; continue; }   /* exp(-0) = 1: nothing absorbed */
+      double d = b->dens[j], trans = b->trans[j];
+      if (d == 0.0) continue;   /* exp(-0) = 1: nothing absorbed */
       double t1 = trans * (d == 1.0 ? full : exp(-s->kappa * d * s->step));
-      b->colour[q] += trans - t1;
-      b->trans[q] = t1;
-      if (t1 > stop) b->act[left++] = q;
+      b->colour[j] += trans - t1;
+      b->trans[j] = t1;
+      stopped += !(t1 > stop);
+    }
+    if (!stopped) continue;
+    int left = 0;   /* rays that stopped leave their colour and the pack */
+    for (int j = 0; j < nact; j++) {
+      if (!(b->trans[j] > stop)) { img[first + (size_t)b->pix[j]] = b->colour[j]; continue; }
+      b->x[left] = b->x[j]; b->y[left] = b->y[j]; b->r2[left] = b->r2[j];
+      b->trans[left] = b->trans[j]; b->colour[left] = b->colour[j]; b->pix[left] = b->pix[j];
+      left++;
     }
     nact = left;
   }
-  for (int j = 0; j < count; j++) img[first + (size_t)j] = b->colour[j];
+  for (int j = 0; j < nact; j++) img[first + (size_t)b->pix[j]] = b->colour[j];
 }
 
 nl_status nl_bounds_smoke_render(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double *img,
@@ -282,7 +316,10 @@ nl_status nl_bounds_smoke_render(const nl_noise_perm3 *p, const nl_bounds_smoke 
   nl_bounds_remainders(&o, s->octave_bound, rem);
   memset(st, 0, sizeof *st);
   smoke_block *b = nl_xmalloc(sizeof *b);
+  memset(b, 0, sizeof *b);   /* the pairs of roots read one ray past the last: never an unset value */
   b->p = p; b->s = s; b->o = &o; b->rem = rem;
+  double far = (1.0 + rem[0]) / -s->slope * (1.0 + 1e-6);
+  b->far2 = far * far;
   size_t npix = (size_t)s->width * s->height;
   for (size_t first = 0; first < npix; first += SMOKE_BLOCK)
     smoke_block_march(b, first, (int)(npix - first < SMOKE_BLOCK ? npix - first : SMOKE_BLOCK), img, st);

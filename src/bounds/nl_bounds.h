@@ -33,8 +33,10 @@
  * in the plane z, how many terms were evaluated before the value was decided
  * (n + 1 = never decided: the pixel needs the whole sum). The render marches
  * blocks of rays in step and sends each octave of their samples through
- * nl_noise_perm3_points (the eq. 5.4 check still per sample): the images,
- * counts and max |noise| are the bits of a ray-by-ray march.
+ * nl_noise_perm3_points_sum, or with incremental bounding through
+ * nl_noise_perm3_points_bounded (term, eq. 5.4 check and packing of the
+ * undecided in one pass, still per sample): the images, counts and max
+ * |noise| are the bits of a ray-by-ray march.
  *
  *   nl_bounds_smoke s = nl_bounds_smoke_default();          // 512 x 512, step 0.01, 99 %
  *   s.octaves = 11; s.incremental = 1;

@@ -103,6 +103,31 @@ void nl_noise_grad2_points(const nl_noise_grad2 *t, const double *x, const doubl
                            double *out);
 void nl_noise_perm3_points(const nl_noise_perm3 *p, const double *x, const double *y, const double *z,
                            size_t n, double *out);
+/* One octave of a fractal sum over a batch of points (the bounded ray march
+ * of nl_bounds, Arnerin 2009 eq. 5.1): for k < n,
+ *   v_k = nl_noise_perm3_eval(p, f * x[k], f * y[k], f * z[k]),
+ *   sum[k] = sum[k] + amp * v_k,
+ * and the largest |v_k| is returned (0 for n = 0; NaN never counts) - the
+ * bits of that scalar loop on every level. sum must not overlap x, y, z. */
+double nl_noise_perm3_points_sum(const nl_noise_perm3 *p, double f, const double *x, const double *y,
+                                 const double *z, size_t n, double amp, double *sum);
+/* Points packed for nl_noise_perm3_points_bounded: coordinates, the base a
+ * sum is added to, the partial sum, and the caller's id of each point, n
+ * of them; every array has room for n + NL_NOISE_PACK_PAD entries (the
+ * kernels store whole vectors past the last point). */
+typedef struct { double *x, *y, *z, *base, *sum; int *id; size_t n; } nl_noise_pack;
+enum { NL_NOISE_PACK_PAD = 16 };
+/* One term of CLAMP(base + sum_l amp_l noise(f_l p)) under incremental
+ * bounding (Arnerin 2009 eq. 5.4) over the packed points: for k < n,
+ *   sum[k] = sum[k] + amp * noise(f x[k], f y[k], f z[k])
+ * (the bits of nl_noise_perm3_points_sum), then with s = base[k] + sum[k]
+ * and r the bound of the terms after this one, the point is decided at 0
+ * when s + r <= 0 and at 1 when s - r >= 1, and leaves the pack: the
+ * undecided ones move to the front in their order (pk->n becomes their
+ * count). The ids of the points decided at 1 go to hi[0 ..) in order
+ * (room for n); returns their count. *top is raised to the largest |noise|. */
+size_t nl_noise_perm3_points_bounded(const nl_noise_perm3 *p, double f, double amp, double r, nl_noise_pack *pk,
+                                     int *hi, double *top);
 /* The sample loop of a quadratic B-spline row (wavelet noise, nl_wavelet_row)
  * on the dispatched level: out[k] += weight * (w0 L[i] + w1 L[i+1] + w2 L[i+2])
  * at x0 + k dx, k < count, with the weights and first tap i of nl_wavelet.c's

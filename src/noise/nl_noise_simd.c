@@ -326,3 +326,81 @@ void nl_noise_perm3_points(const nl_noise_perm3 *p, const double *x, const doubl
   K->points3(p, p32, xs, ys, zs, NL_SIMD_PAD, res);
   memcpy(out + nb, res, (n - nb) * sizeof *res);
 }
+
+double nl_noise_perm3_points_sum(const nl_noise_perm3 *p, double f, const double *x, const double *y,
+                                 const double *z, size_t n, double amp, double *sum)
+{
+  const nl_noise_simd_kernels *K = kernels();
+  const int *p32 = K ? perm3_ints(p) : NULL;
+  double top = 0.0;
+  if (!p32) {   /* the scalar level, or not a doubled table */
+    for (size_t k = 0; k < n; k++) {
+      double v = nl_noise_perm3_eval(p, f * x[k], f * y[k], f * z[k]), a = fabs(v);
+      top = a > top ? a : top;
+      sum[k] = sum[k] + amp * v;
+    }
+    return top;
+  }
+  size_t nb = n / NL_SIMD_PAD * NL_SIMD_PAD;
+  if (nb) K->points3_sum(p, p32, f, x, y, z, nb, amp, sum, &top);
+  if (nb == n) return top;
+  /* the tail through a padded block: noise(0, 0, 0) = 0 leaves top alone */
+  double xs[NL_SIMD_PAD] = {0}, ys[NL_SIMD_PAD] = {0}, zs[NL_SIMD_PAD] = {0}, ss[NL_SIMD_PAD] = {0};
+  memcpy(xs, x + nb, (n - nb) * sizeof *xs);
+  memcpy(ys, y + nb, (n - nb) * sizeof *ys);
+  memcpy(zs, z + nb, (n - nb) * sizeof *zs);
+  memcpy(ss, sum + nb, (n - nb) * sizeof *ss);
+  K->points3_sum(p, p32, f, xs, ys, zs, NL_SIMD_PAD, amp, ss, &top);
+  memcpy(sum + nb, ss, (n - nb) * sizeof *ss);
+  return top;
+}
+
+/* eq. 5.4 after the term, for one point with its new sum: 0 undecided, 1
+ * decided at 0, 2 at 1 (the kernels' lane test, in the same operations). */
+static int bounded_decided(double base, double sum, double r)
+{
+  double s = base + sum;
+  return s + r <= 0.0 ? 1 : s - r >= 1.0 ? 2 : 0;
+}
+
+size_t nl_noise_perm3_points_bounded(const nl_noise_perm3 *p, double f, double amp, double r, nl_noise_pack *pk,
+                                     int *hi, double *top)
+{
+  const nl_noise_simd_kernels *K = kernels();
+  const int *p32 = K ? perm3_ints(p) : NULL;
+  size_t n = pk->n, nhi = 0, left = 0, k0 = 0;
+  double t = *top;
+  if (p32) {
+    k0 = n / NL_SIMD_PAD * NL_SIMD_PAD;
+    if (k0) left = K->points3_bounded(p, p32, f, amp, r, pk, k0, hi, &nhi, &t);
+  }
+  /* the rest (all of it on the scalar level) point by point; a kernel's
+   * tail summed through a padded block, as nl_noise_perm3_points_sum */
+  double ss[NL_SIMD_PAD] = {0};
+  if (p32 && k0 < n) {
+    double xs[NL_SIMD_PAD] = {0}, ys[NL_SIMD_PAD] = {0}, zs[NL_SIMD_PAD] = {0};
+    memcpy(xs, pk->x + k0, (n - k0) * sizeof *xs);
+    memcpy(ys, pk->y + k0, (n - k0) * sizeof *ys);
+    memcpy(zs, pk->z + k0, (n - k0) * sizeof *zs);
+    memcpy(ss, pk->sum + k0, (n - k0) * sizeof *ss);
+    K->points3_sum(p, p32, f, xs, ys, zs, NL_SIMD_PAD, amp, ss, &t);
+  }
+  for (size_t k = k0; k < n; k++) {
+    double sum;
+    if (p32) sum = ss[k - k0];
+    else {
+      double nz = nl_noise_perm3_eval(p, f * pk->x[k], f * pk->y[k], f * pk->z[k]);
+      t = fabs(nz) > t ? fabs(nz) : t;
+      sum = pk->sum[k] + amp * nz;
+    }
+    int d = bounded_decided(pk->base[k], sum, r);
+    if (d == 2) hi[nhi++] = pk->id[k];
+    if (d) continue;
+    pk->x[left] = pk->x[k]; pk->y[left] = pk->y[k]; pk->z[left] = pk->z[k];
+    pk->base[left] = pk->base[k]; pk->sum[left] = sum; pk->id[left] = pk->id[k];
+    left++;
+  }
+  pk->n = left;
+  *top = t;
+  return nhi;
+}

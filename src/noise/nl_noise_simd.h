@@ -58,6 +58,17 @@ typedef struct {
    * Precondition: every x_k has |x_k| < 2^51 and its taps lie in L. */
   void (*bspline)(const double *L, long a, double x0, double dx, size_t n, double weight,
                   double *out);
+  /* One octave of a sum over points, as nl_noise_perm3_points_sum: sum[k] =
+   * sum[k] + amp v_k, v_k the noise at (f x[k], f y[k], f z[k]), and *top
+   * raised to the largest |v_k|; n a multiple of NL_SIMD_PAD, lanes out of
+   * range as points3. */
+  void (*points3_sum)(const nl_noise_perm3 *p, const int *p32, double f, const double *x, const double *y,
+                      const double *z, size_t n, double amp, double *sum, double *top);
+  /* nl_noise_perm3_points_bounded on the first n points of pk (n a
+   * multiple of NL_SIMD_PAD): the undecided go to the front from 0, their
+   * count returned; hi and *nhi, *top as there. pk->n is not touched. */
+  size_t (*points3_bounded)(const nl_noise_perm3 *p, const int *p32, double f, double amp, double r,
+                            const nl_noise_pack *pk, size_t n, int *hi, size_t *nhi, double *top);
 } nl_noise_simd_kernels;
 
 extern const nl_noise_simd_kernels nl_noise_simd_sse2, nl_noise_simd_avx2, nl_noise_simd_avx512;

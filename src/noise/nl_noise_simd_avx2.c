@@ -27,7 +27,8 @@ static inline int v_all(vl m) { return _mm256_movemask_pd((__m256d)m) == 15; }
 
 #include "noise/nl_noise_simd_body.h"
 
-const nl_noise_simd_kernels NL_SIMD_TABLE = {samples_lanes, columns3, points2, points3_lanes, bspline_lanes};
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples_lanes, columns3, points2, points3_lanes, bspline_lanes,
+                                           points3_sum_lanes, points3_bounded_lanes};
 
 #if defined(__clang__)
 #pragma clang attribute pop

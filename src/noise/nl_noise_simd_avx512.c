@@ -69,6 +69,28 @@ static inline vd g3(const p3tab *t, int comp, vi h)
   return (vd)_mm512_permutex2var_pd(t->g[comp][0], _mm512_cvtepi32_epi64((__m256i)h), t->g[comp][1]);
 }
 
+/* eq. 5.4's packing (nl_noise_simd_body.h) by compress: the undecided
+ * lanes of each array, compressed in a register, stored as a whole vector
+ * at left (the lanes past the kept ones land on points already read). */
+#define NL_SIMD_HAVE_COMPRESS
+static inline size_t v_pack(const nl_noise_pack *pk, size_t k, vd x, vd y, vd z, vd b, vd sum, double r,
+                            size_t left, int *hi, size_t *nh)
+{
+  vd s = b + sum;
+  __mmask8 lo = _mm512_cmp_pd_mask((__m512d)(s + r), _mm512_setzero_pd(), _CMP_LE_OQ);
+  __mmask8 up = _mm512_cmp_pd_mask((__m512d)(s - r), _mm512_set1_pd(1.0), _CMP_GE_OQ);
+  __mmask8 keep = (__mmask8)~(lo | up);
+  __m256i id = _mm256_loadu_si256((const __m256i *)(pk->id + k));
+  for (unsigned m = up; m; m &= m - 1) hi[(*nh)++] = pk->id[k + (size_t)__builtin_ctz(m)];
+  _mm512_storeu_pd(pk->x + left, _mm512_maskz_compress_pd(keep, (__m512d)x));
+  _mm512_storeu_pd(pk->y + left, _mm512_maskz_compress_pd(keep, (__m512d)y));
+  _mm512_storeu_pd(pk->z + left, _mm512_maskz_compress_pd(keep, (__m512d)z));
+  _mm512_storeu_pd(pk->base + left, _mm512_maskz_compress_pd(keep, (__m512d)b));
+  _mm512_storeu_pd(pk->sum + left, _mm512_maskz_compress_pd(keep, (__m512d)sum));
+  _mm256_storeu_si256((__m256i *)(pk->id + left), _mm256_maskz_compress_epi32(keep, id));
+  return left + (size_t)__builtin_popcount(keep);
+}
+
 #include "noise/nl_noise_simd_body.h"
 
 /* The row's sample loop with a window: while 8 consecutive samples span at
@@ -167,47 +189,121 @@ static inline vi half(vi16 v, int h)
   return h ? (vi)_mm512_extracti64x4_epi64((__m512i)v, 1) : (vi)_mm512_castsi512_si256((__m512i)v);
 }
 
+/* Perlin's hashing of 16 points (nl_noise.c column3 for columns i and
+ * i + 1), lanes of (x[h], y[h], z[h]) for h = 0, 1; 0 if a lane leaves
+ * |.| < 2^31 (then nothing is hashed). */
+static inline __attribute__((always_inline)) int
+hash16(const p3tab *tab, const vd *x, const vd *y, const vd *z, vi16 hs[2][4])
+{
+  vl ok = (vl){0} - 1;
+  vi i[2], j[2], kk[2];
+  for (int h = 0; h < 2; h++) {
+    ok &= v_small(x[h]) & v_small(y[h]) & v_small(z[h]);
+    i[h] = __builtin_convertvector(v_cell(x[h]), vi);
+    j[h] = __builtin_convertvector(v_cell(y[h]), vi);
+    kk[h] = __builtin_convertvector(v_cell(z[h]), vi);
+  }
+  if (!v_all(ok)) return 0;
+  vi16 I = join(i[0], i[1]), Y = join(j[0], j[1]) & 255, Z = join(kk[0], kk[1]) & 255;
+  for (int c = 0; c < 2; c++) {
+    vi16 X = (vi16)(((unsigned)c + (__attribute__((vector_size(64))) unsigned)I) & 255u);
+    vi16 A = p3_get16(tab, X) + Y, AA = p3_get16(tab, A) + Z, AB = p3_get16(tab, A + 1) + Z;
+    hs[c][0] = p3_get16(tab, AA) & 15; hs[c][1] = p3_get16(tab, AB) & 15;
+    hs[c][2] = p3_get16(tab, AA + 1) & 15; hs[c][3] = p3_get16(tab, AB + 1) & 15;
+  }
+  return 1;
+}
+
+/* The arithmetic of half h of a hashed 16 (the cells again rather than kept). */
+static inline __attribute__((always_inline)) vd
+arith8(const p3tab *tab, vi16 hs[2][4], int h, vd vx, vd vy, vd vz)
+{
+  vd ci = v_cell(vx), fy = v_frac(vy, v_cell(vy)), fz = v_frac(vz, v_cell(vz));
+  vd v = v_fade(fy), w = v_fade(fz), g0, a0, g1, a1;
+  v_column3_fp(tab, half(hs[0][0], h), half(hs[0][1], h), half(hs[0][2], h), half(hs[0][3], h),
+               fy, fz, v, w, &g0, &a0);
+  v_column3_fp(tab, half(hs[1][0], h), half(hs[1][1], h), half(hs[1][2], h), half(hs[1][3], h),
+               fy, fz, v, w, &g1, &a1);
+  return v_blend(v_frac(vx, ci), g0, a0, g1, a1);
+}
+
+/* n points 16 at a time, stored or (sum) scaled by f and summed into out
+ * as points3_do (nl_noise_simd_body.h). */
+static inline __attribute__((always_inline)) void
+points3_16(const nl_noise_perm3 *P, const int *p32, double f, const double *x, const double *y,
+           const double *z, size_t n, double *out, double amp, double *top, int sum)
+{
+  p3tab tab = p3_make(P, p32);
+  vd vt = SPLAT(0.0);
+  size_t k = 0;
+  for (; k + 16 <= n; k += 16) {
+    vd sx[2], sy[2], sz[2];
+    vi16 hs[2][4];
+    for (int h = 0; h < 2; h++) {
+      sx[h] = ld(x + k + 8 * h); sy[h] = ld(y + k + 8 * h); sz[h] = ld(z + k + 8 * h);
+      if (sum) { sx[h] = f * sx[h]; sy[h] = f * sy[h]; sz[h] = f * sz[h]; }   /* f * x[k] ... */
+    }
+    if (!hash16(&tab, sx, sy, sz, hs)) {
+      points3_do(P, p32, f, x + k, y + k, z + k, 16, out + k, amp, top, sum);
+      continue;
+    }
+    for (int h = 0; h < 2; h++) {
+      vd vx = ld(x + k + 8 * h), vy = ld(y + k + 8 * h), vz = ld(z + k + 8 * h);
+      if (sum) { vx = f * vx; vy = f * vy; vz = f * vz; }
+      v_points_emit(out + k + 8 * h, arith8(&tab, hs, h, vx, vy, vz), sum, amp, &vt);
+    }
+  }
+  if (k < n) points3_do(P, p32, f, x + k, y + k, z + k, n - k, out + k, amp, top, sum);
+  if (sum) *top = v_top(vt, *top);
+}
+
 static void points3(const nl_noise_perm3 *P, const int *p32, const double *x, const double *y,
                     const double *z, size_t n, double *out)
 {
-  p3tab tab = p3_make(P, p32);
-  size_t k = 0;
-  for (; k + 16 <= n; k += 16) {
-    vl ok = (vl){0} - 1;
-    vi i[2], j[2], kk[2];
-    for (int h = 0; h < 2; h++) {
-      vd vx = ld(x + k + 8 * h), vy = ld(y + k + 8 * h), vz = ld(z + k + 8 * h);
-      ok &= v_small(vx) & v_small(vy) & v_small(vz);
-      i[h] = __builtin_convertvector(v_cell(vx), vi);
-      j[h] = __builtin_convertvector(v_cell(vy), vi);
-      kk[h] = __builtin_convertvector(v_cell(vz), vi);
-    }
-    if (!v_all(ok)) { points3_lanes(P, p32, x + k, y + k, z + k, 16, out + k); continue; }
-    /* Perlin's hashing of columns i and i + 1 (nl_noise.c column3), 16 lanes */
-    vi16 I = join(i[0], i[1]), Y = join(j[0], j[1]) & 255, Z = join(kk[0], kk[1]) & 255;
-    vi16 hs[2][4];
-    for (int c = 0; c < 2; c++) {
-      vi16 X = (vi16)(((unsigned)c + (__attribute__((vector_size(64))) unsigned)I) & 255u);
-      vi16 A = p3_get16(&tab, X) + Y, AA = p3_get16(&tab, A) + Z, AB = p3_get16(&tab, A + 1) + Z;
-      hs[c][0] = p3_get16(&tab, AA) & 15; hs[c][1] = p3_get16(&tab, AB) & 15;
-      hs[c][2] = p3_get16(&tab, AA + 1) & 15; hs[c][3] = p3_get16(&tab, AB + 1) & 15;
-    }
-    /* the arithmetic, 8 lanes at a time; the cells again rather than kept */
-    for (int h = 0; h < 2; h++) {
-      vd vx = ld(x + k + 8 * h), vy = ld(y + k + 8 * h), vz = ld(z + k + 8 * h);
-      vd ci = v_cell(vx), fy = v_frac(vy, v_cell(vy)), fz = v_frac(vz, v_cell(vz));
-      vd v = v_fade(fy), w = v_fade(fz), g0, a0, g1, a1;
-      v_column3_fp(&tab, half(hs[0][0], h), half(hs[0][1], h), half(hs[0][2], h), half(hs[0][3], h),
-                   fy, fz, v, w, &g0, &a0);
-      v_column3_fp(&tab, half(hs[1][0], h), half(hs[1][1], h), half(hs[1][2], h), half(hs[1][3], h),
-                   fy, fz, v, w, &g1, &a1);
-      st(out + k + 8 * h, v_blend(v_frac(vx, ci), g0, a0, g1, a1));
-    }
-  }
-  if (k < n) points3_lanes(P, p32, x + k, y + k, z + k, n - k, out + k);
+  points3_16(P, p32, 1.0, x, y, z, n, out, 0.0, NULL, 0);
 }
 
-const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3, points2, points3, bspline};
+static void points3_sum(const nl_noise_perm3 *P, const int *p32, double f, const double *x, const double *y,
+                        const double *z, size_t n, double amp, double *sum, double *top)
+{
+  points3_16(P, p32, f, x, y, z, n, sum, amp, top, 1);
+}
+
+/* The bounded term 16 at a time: each half packed as soon as it is summed
+ * (its stores reach at most the half just read). */
+static size_t points3_bounded(const nl_noise_perm3 *P, const int *p32, double f, double amp, double r,
+                              const nl_noise_pack *pk0, size_t n, int *hi, size_t *nhi, double *top)
+{
+  nl_noise_pack q = *pk0;   /* a local copy: the stores into the arrays cannot change its pointers */
+  const nl_noise_pack *pk = &q;
+  p3tab tab = p3_make(P, p32);
+  vd vt = SPLAT(0.0);
+  size_t k = 0, left = 0;
+  for (; k + 16 <= n; k += 16) {
+    vd sx[2], sy[2], sz[2];
+    vi16 hs[2][4];
+    for (int h = 0; h < 2; h++) {
+      sx[h] = f * ld(pk->x + k + 8 * h); sy[h] = f * ld(pk->y + k + 8 * h); sz[h] = f * ld(pk->z + k + 8 * h);
+    }
+    if (!hash16(&tab, sx, sy, sz, hs)) {
+      left = points3_bounded_do(&tab, P, f, amp, r, pk, k, k + 16, left, hi, nhi, &vt);
+      continue;
+    }
+    for (int h = 0; h < 2; h++) {
+      size_t q = k + 8 * (size_t)h;
+      vd x = ld(pk->x + q), y = ld(pk->y + q), z = ld(pk->z + q);
+      vd v = arith8(&tab, hs, h, f * x, f * y, f * z);
+      v_top_raise(&vt, v);
+      left = v_pack(pk, q, x, y, z, ld(pk->base + q), ld(pk->sum + q) + amp * v, r, left, hi, nhi);
+    }
+  }
+  if (k < n) left = points3_bounded_do(&tab, P, f, amp, r, pk, k, n, left, hi, nhi, &vt);
+  *top = v_top(vt, *top);
+  return left;
+}
+
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3, points2, points3, bspline, points3_sum,
+                                           points3_bounded};
 
 #if defined(__clang__)
 #pragma clang attribute pop

@@ -241,43 +241,146 @@ static void points2(const nl_noise_grad2 *t, const double *x, const double *y, s
   }
 }
 
-static void points3_lanes(const nl_noise_perm3 *P, const int *p32, const double *x, const double *y,
-                          const double *z, size_t n, double *out)
+/* One vector of points of nl_noise_perm3_eval. Lanes whose coordinates
+ * leave |.| < 2^31 (or are not finite) go through the scalar code. */
+static inline __attribute__((always_inline)) vd
+v_perm3(const p3tab *tab, const nl_noise_perm3 *P, vd vx, vd vy, vd vz)
+{
+  if (!v_all(v_small(vx) & v_small(vy) & v_small(vz))) {
+    double r[NL_SIMD_W];
+    for (int l = 0; l < NL_SIMD_W; l++) r[l] = nl_noise_perm3_eval(P, vx[l], vy[l], vz[l]);
+    return ld(r);
+  }
+  /* nl_noise_perm3_eval: cells, fy = lfrac(y, j), fz, v = fade(fy), w = fade(fz) */
+  vd ci = v_cell(vx), cj = v_cell(vy), ck = v_cell(vz);
+  vd fy = v_frac(vy, cj), fz = v_frac(vz, ck), v = v_fade(fy), w = v_fade(fz);
+  vi i = __builtin_convertvector(ci, vi), j = __builtin_convertvector(cj, vi),
+     kk = __builtin_convertvector(ck, vi);
+  vd g0, a0, g1, a1;
+#ifdef NL_SIMD_HAVE_TABLES
+  vi Y = j & 255, Z = kk & 255;
+  v_column3(tab, i & 255, Y, Z, fy, fz, v, w, &g0, &a0);
+  v_column3(tab, (vi)(((vu)i + 1u) & 255u), Y, Z, fy, fz, v, w, &g1, &a1);
+#else
+  /* Without register tables the hashing is scalar, lane by lane, in one
+   * pass (a vector round trip per lookup costs more than the lookups). */
+  const unsigned char *pp = P->p;
+  vi h[2][4];
+  for (int l = 0; l < NL_SIMD_W; l++) {
+    int Y = j[l] & 255, Z = kk[l] & 255;
+    for (int c = 0; c < 2; c++) {
+      int X = (int)(((unsigned)i[l] + (unsigned)c) & 255u);
+      int A = pp[X] + Y, AA = pp[A] + Z, AB = pp[A + 1] + Z;
+      h[c][0][l] = pp[AA] & 15; h[c][1][l] = pp[AB] & 15;
+      h[c][2][l] = pp[AA + 1] & 15; h[c][3][l] = pp[AB + 1] & 15;
+    }
+  }
+  v_column3_fp(tab, h[0][0], h[0][1], h[0][2], h[0][3], fy, fz, v, w, &g0, &a0);
+  v_column3_fp(tab, h[1][0], h[1][1], h[1][2], h[1][3], fy, fz, v, w, &g1, &a1);
+#endif
+  return v_blend(v_frac(vx, ci), g0, a0, g1, a1);
+}
+
+/* Where a vector of points goes: out = v (nl_noise_perm3_points), or one
+ * octave of a sum, out = out + amp v, with the lanes' largest |v| so far in
+ * *top (nl_noise_perm3_points_sum; fabs(v) > top, so NaN never counts). */
+static inline void v_top_raise(vd *top, vd v)
+{
+  vd a = (vd)((vl)v & 0x7fffffffffffffffLL);
+  vl up = (vl)(a > *top);
+  *top = (vd)((up & (vl)a) | (~up & (vl)*top));
+}
+static inline __attribute__((always_inline)) void
+v_points_emit(double *out, vd v, int sum, double amp, vd *top)
+{
+  if (!sum) { st(out, v); return; }
+  v_top_raise(top, v);
+  st(out, ld(out) + amp * v);
+}
+/* t raised to the largest lane of top. */
+static inline double v_top(vd top, double t)
+{
+  for (int l = 0; l < NL_SIMD_W; l++) t = top[l] > t ? top[l] : t;
+  return t;
+}
+
+/* n points (a multiple of NL_SIMD_W): stored, or (sum) scaled by f and
+ * summed into out, *top raised to the largest |noise|. */
+static inline __attribute__((always_inline)) void
+points3_do(const nl_noise_perm3 *P, const int *p32, double f, const double *x, const double *y,
+           const double *z, size_t n, double *out, double amp, double *top, int sum)
 {
   p3tab tab = p3_make(P, p32);
+  vd vt = SPLAT(0.0);
   for (size_t k = 0; k < n; k += NL_SIMD_W) {
     vd vx = ld(x + k), vy = ld(y + k), vz = ld(z + k);
-    if (!v_all(v_small(vx) & v_small(vy) & v_small(vz))) {
-      for (size_t l = 0; l < NL_SIMD_W; l++) out[k + l] = nl_noise_perm3_eval(P, x[k + l], y[k + l], z[k + l]);
-      continue;
-    }
-    /* nl_noise_perm3_eval: cells, fy = lfrac(y, j), fz, v = fade(fy), w = fade(fz) */
-    vd ci = v_cell(vx), cj = v_cell(vy), ck = v_cell(vz);
-    vd fy = v_frac(vy, cj), fz = v_frac(vz, ck), v = v_fade(fy), w = v_fade(fz);
-    vi i = __builtin_convertvector(ci, vi), j = __builtin_convertvector(cj, vi),
-       kk = __builtin_convertvector(ck, vi);
-    vd g0, a0, g1, a1;
-#ifdef NL_SIMD_HAVE_TABLES
-    vi Y = j & 255, Z = kk & 255;
-    v_column3(&tab, i & 255, Y, Z, fy, fz, v, w, &g0, &a0);
-    v_column3(&tab, (vi)(((vu)i + 1u) & 255u), Y, Z, fy, fz, v, w, &g1, &a1);
-#else
-    /* Without register tables the hashing is scalar, lane by lane, in one
-     * pass (a vector round trip per lookup costs more than the lookups). */
-    const unsigned char *pp = P->p;
-    vi h[2][4];
-    for (int l = 0; l < NL_SIMD_W; l++) {
-      int Y = j[l] & 255, Z = kk[l] & 255;
-      for (int c = 0; c < 2; c++) {
-        int X = (int)(((unsigned)i[l] + (unsigned)c) & 255u);
-        int A = pp[X] + Y, AA = pp[A] + Z, AB = pp[A + 1] + Z;
-        h[c][0][l] = pp[AA] & 15; h[c][1][l] = pp[AB] & 15;
-        h[c][2][l] = pp[AA + 1] & 15; h[c][3][l] = pp[AB + 1] & 15;
-      }
-    }
-    v_column3_fp(&tab, h[0][0], h[0][1], h[0][2], h[0][3], fy, fz, v, w, &g0, &a0);
-    v_column3_fp(&tab, h[1][0], h[1][1], h[1][2], h[1][3], fy, fz, v, w, &g1, &a1);
-#endif
-    st(out + k, v_blend(v_frac(vx, ci), g0, a0, g1, a1));
+    if (sum) { vx = f * vx; vy = f * vy; vz = f * vz; }   /* f * x[k] ... */
+    v_points_emit(out + k, v_perm3(&tab, P, vx, vy, vz), sum, amp, &vt);
   }
+  if (sum) *top = v_top(vt, *top);
+}
+
+/* (unused where a level brings its own) */
+static __attribute__((unused)) void points3_lanes(const nl_noise_perm3 *P, const int *p32, const double *x,
+                                                  const double *y, const double *z, size_t n, double *out)
+{
+  points3_do(P, p32, 1.0, x, y, z, n, out, 0.0, NULL, 0);
+}
+
+static __attribute__((unused)) void points3_sum_lanes(const nl_noise_perm3 *P, const int *p32, double f,
+                                                      const double *x, const double *y, const double *z,
+                                                      size_t n, double amp, double *sum, double *top)
+{
+  points3_do(P, p32, f, x, y, z, n, sum, amp, top, 1);
+}
+
+/* ---- one term of a bounded sum (nl_noise_perm3_points_bounded) ----------- */
+
+/* eq. 5.4 for the vector of points k .. k + W - 1 with their new sums:
+ * decided at 1, the id to hi; undecided, moved to position left (<= k, so
+ * nothing not yet read is overwritten). Returns the new left. A level may
+ * bring its own (NL_SIMD_HAVE_COMPRESS). */
+#ifndef NL_SIMD_HAVE_COMPRESS
+static inline size_t v_pack(const nl_noise_pack *pk, size_t k, vd x, vd y, vd z, vd b, vd sum, double r,
+                            size_t left, int *hi, size_t *nh)
+{
+  vd s = b + sum;
+  vl lo = (vl)(s + r <= 0.0), up = (vl)(s - r >= 1.0);
+  int id[NL_SIMD_W];
+  memcpy(id, pk->id + k, sizeof id);
+  for (int l = 0; l < NL_SIMD_W; l++) {
+    if (up[l]) hi[(*nh)++] = id[l];
+    if (lo[l] | up[l]) continue;
+    pk->x[left] = x[l]; pk->y[left] = y[l]; pk->z[left] = z[l];
+    pk->base[left] = b[l]; pk->sum[left] = sum[l]; pk->id[left] = id[l];
+    left++;
+  }
+  return left;
+}
+#endif
+
+/* Points k0 .. k1 - 1 (whole vectors), packing from left. */
+static inline __attribute__((always_inline)) size_t
+points3_bounded_do(const p3tab *tab, const nl_noise_perm3 *P, double f, double amp, double r,
+                   const nl_noise_pack *pk, size_t k0, size_t k1, size_t left, int *hi, size_t *nh, vd *vt)
+{
+  for (size_t k = k0; k < k1; k += NL_SIMD_W) {
+    vd x = ld(pk->x + k), y = ld(pk->y + k), z = ld(pk->z + k);
+    vd v = v_perm3(tab, P, f * x, f * y, f * z);   /* noise(f x[k], ...) */
+    v_top_raise(vt, v);
+    left = v_pack(pk, k, x, y, z, ld(pk->base + k), ld(pk->sum + k) + amp * v, r, left, hi, nh);
+  }
+  return left;
+}
+
+static __attribute__((unused)) size_t
+points3_bounded_lanes(const nl_noise_perm3 *P, const int *p32, double f, double amp, double r,
+                      const nl_noise_pack *pk, size_t n, int *hi, size_t *nhi, double *top)
+{
+  nl_noise_pack q = *pk;   /* a local copy: the stores into the arrays cannot change its pointers */
+  p3tab tab = p3_make(P, p32);
+  vd vt = SPLAT(0.0);
+  size_t left = points3_bounded_do(&tab, P, f, amp, r, &q, 0, n, 0, hi, nhi, &vt);
+  *top = v_top(vt, *top);
+  return left;
 }

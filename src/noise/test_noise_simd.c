@@ -13,6 +13,7 @@
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_rng.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -203,6 +204,162 @@ NL_TEST(perm3_levels_match_scalar)
   compare_perm3(&p, 5);
   nl_noise_perm3_seed(&p, 9);
   compare_perm3(&p, 6);
+}
+
+/* One octave of a sum over points (nl_noise_perm3_points_sum), as its
+ * contract states it: the scalar loop here, against every level and the
+ * scalar level's own loop, for scales that overflow (1e300), zero and -0,
+ * sums starting at -0 and elsewhere, every tail length and a table whose
+ * halves differ (the kernels leave those to the scalar code). */
+static void sum_reference(const nl_noise_perm3 *p, double f, const double *x, const double *y, const double *z,
+                          size_t n, double amp, double *sum, double *top)
+{
+  *top = 0.0;
+  for (size_t k = 0; k < n; k++) {
+    double v = nl_noise_perm3_eval(p, f * x[k], f * y[k], f * z[k]);
+    if (fabs(v) > *top) *top = fabs(v);
+    sum[k] = sum[k] + amp * v;
+  }
+}
+
+static void compare_perm3_sum(const nl_noise_perm3 *p, unsigned long seed)
+{
+  static const double fs[] = {1.0, 2.0, 2048.0, -3.5, 0.0, -0.0, 1e300, 0x1p20, 0.37};
+  static const double amps[] = {0.5, -1.0, 1e-3, 0.0};
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, seed);
+  double *x = malloc(NPOINTS * sizeof *x), *y = malloc(NPOINTS * sizeof *y), *z = malloc(NPOINTS * sizeof *z);
+  double *s0 = malloc(NPOINTS * sizeof *s0), *ref = malloc(NPOINTS * sizeof *ref), *got = malloc(NPOINTS * sizeof *got);
+  for (size_t k = 0; k < NPOINTS; k++) {
+    int smoke = gsl_rng_uniform(r) < 0.5;   /* A2's unit cube, or the awkward mixture */
+    x[k] = smoke ? gsl_rng_uniform(r) - 0.5 : coord(r);
+    y[k] = smoke ? gsl_rng_uniform(r) - 0.5 : coord(r);
+    z[k] = smoke ? gsl_rng_uniform(r) - 0.5 : coord(r);
+    s0[k] = gsl_rng_uniform(r) < 0.2 ? -0.0 : 4 * gsl_rng_uniform(r) - 2;
+  }
+  for (size_t a = 0; a < sizeof fs / sizeof *fs; a++) {
+    double f = fs[a], amp = amps[a % 4], rtop, top;
+    size_t n = a % 3 ? NPOINTS : NPOINTS - 1 - a;
+    memcpy(ref, s0, NPOINTS * sizeof *ref);
+    sum_reference(p, f, x, y, z, n, amp, ref, &rtop);
+    for (int L = -1; L < nlevels; L++) {
+      nl_noise_simd_set(L < 0 ? NL_NOISE_SIMD_SCALAR : levels[L]);
+      for (size_t m = 0; m <= 33; m++) {   /* every tail length */
+        double t0;
+        memcpy(got, s0, NPOINTS * sizeof *got);
+        sum_reference(p, f, x + 7, y + 7, z + 7, m, amp, got + 7, &t0);
+        memcpy(got + NPOINTS / 2, s0 + 7, m * sizeof *got);
+        top = nl_noise_perm3_points_sum(p, f, x + 7, y + 7, z + 7, m, amp, got + NPOINTS / 2);
+        NL_CHECK(same(got + 7, got + NPOINTS / 2, m) && memcmp(&top, &t0, sizeof top) == 0);
+      }
+      memcpy(got, s0, NPOINTS * sizeof *got);
+      top = nl_noise_perm3_points_sum(p, f, x, y, z, n, amp, got);
+      if (!same(got, ref, NPOINTS) || memcmp(&top, &rtop, sizeof top) != 0) {
+        fprintf(stderr, "  perm3 sum %s f=%g amp=%g differs (top %.17g, scalar %.17g)\n",
+                L < 0 ? "scalar" : nl_noise_simd_name(levels[L]), f, amp, top, rtop);
+        NL_CHECK(0);
+      }
+      compared += (long)n;
+    }
+  }
+  nl_noise_simd_set(nl_noise_simd_best());
+  free(x); free(y); free(z); free(s0); free(ref); free(got);
+  gsl_rng_free(r);
+}
+
+NL_TEST(perm3_sums_match_scalar)
+{
+  find_levels();
+  nl_noise_perm3 p;
+  nl_noise_perm3_reference(&p);
+  compare_perm3_sum(&p, 15);
+  nl_noise_perm3_seed(&p, 9);
+  compare_perm3_sum(&p, 16);
+  p.p[300] ^= 1;   /* halves differ */
+  compare_perm3_sum(&p, 17);
+}
+
+/* One bounded term (nl_noise_perm3_points_bounded) against its contract
+ * written out here: sums, the eq. 5.4 decisions, the packed arrays in
+ * order, the ids decided at 1 and the largest |noise|, at every level and
+ * every length up to 40 and a long one; bases spread so that points are
+ * decided either way and left open. */
+enum { BOUNDED_N = 3000 };
+typedef struct { double x[BOUNDED_N + 16], y[BOUNDED_N + 16], z[BOUNDED_N + 16], b[BOUNDED_N + 16],
+                 s[BOUNDED_N + 16]; int id[BOUNDED_N + 16], hi[BOUNDED_N]; } bounded_arrays;
+
+static size_t bounded_reference(const nl_noise_perm3 *p, double f, double amp, double r, bounded_arrays *a,
+                                size_t *n, double *top)
+{
+  size_t left = 0, nhi = 0;
+  for (size_t k = 0; k < *n; k++) {
+    double v = nl_noise_perm3_eval(p, f * a->x[k], f * a->y[k], f * a->z[k]);
+    if (fabs(v) > *top) *top = fabs(v);
+    double sum = a->s[k] + amp * v, t = a->b[k] + sum;
+    int lo = t + r <= 0.0, hi = t - r >= 1.0;
+    if (hi) a->hi[nhi++] = a->id[k];
+    if (lo || hi) continue;
+    a->x[left] = a->x[k]; a->y[left] = a->y[k]; a->z[left] = a->z[k];
+    a->b[left] = a->b[k]; a->s[left] = sum; a->id[left] = a->id[k];
+    left++;
+  }
+  *n = left;
+  return nhi;
+}
+
+static int bounded_same(const bounded_arrays *a, const bounded_arrays *b, size_t n, size_t nhi)
+{
+  return same(a->x, b->x, n) && same(a->y, b->y, n) && same(a->z, b->z, n) && same(a->b, b->b, n) &&
+         same(a->s, b->s, n) && memcmp(a->id, b->id, n * sizeof *a->id) == 0 &&
+         memcmp(a->hi, b->hi, nhi * sizeof *a->hi) == 0;
+}
+
+NL_TEST(perm3_bounded_match_scalar)
+{
+  find_levels();
+  static bounded_arrays init, ref, got;
+  static const double fs[] = {2.0, 64.0, 2048.0, -1.5, 1e300};
+  static const double rs[] = {1.2, 0.3, 0.0, 0.05, 2.5};
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, 21);
+  nl_noise_perm3 p;
+  nl_noise_perm3_seed(&p, 4);
+  for (size_t k = 0; k < BOUNDED_N; k++) {
+    int smoke = gsl_rng_uniform(r) < 0.7;
+    init.x[k] = smoke ? gsl_rng_uniform(r) - 0.5 : coord(r);
+    init.y[k] = smoke ? gsl_rng_uniform(r) - 0.5 : coord(r);
+    init.z[k] = smoke ? gsl_rng_uniform(r) - 0.5 : coord(r);
+    init.b[k] = 4 * gsl_rng_uniform(r) - 2;
+    init.s[k] = gsl_rng_uniform(r) < 0.1 ? 0.0 : gsl_rng_uniform(r) - 0.5;
+    init.id[k] = (int)k * 3 + 1;
+  }
+  long cases = 0, decided[3] = {0};
+  for (size_t c = 0; c < sizeof fs / sizeof *fs; c++)
+    for (size_t n0 = 0; n0 <= 41; n0++) {
+      size_t n = n0 == 41 ? BOUNDED_N - c : n0, nref = n;
+      double tref = 0.25 * (double)(c == 1), amp = c == 3 ? -0.5 : 0.5;
+      ref = init;
+      size_t hr = bounded_reference(&p, fs[c], amp, rs[c], &ref, &nref, &tref);
+      decided[0] += (long)nref; decided[1] += (long)hr; decided[2] += (long)(n - nref - hr);
+      for (int L = -1; L < nlevels; L++) {
+        nl_noise_simd_set(L < 0 ? NL_NOISE_SIMD_SCALAR : levels[L]);
+        got = init;
+        nl_noise_pack pk = {got.x, got.y, got.z, got.b, got.s, got.id, n};
+        double top = 0.25 * (double)(c == 1);
+        size_t hg = nl_noise_perm3_points_bounded(&p, fs[c], amp, rs[c], &pk, got.hi, &top);
+        int ok = pk.n == nref && hg == hr && memcmp(&top, &tref, sizeof top) == 0 &&
+                 bounded_same(&ref, &got, nref, hr);
+        if (!ok) fprintf(stderr, "  bounded %s f=%g n=%zu differs\n", L < 0 ? "scalar" : nl_noise_simd_name(levels[L]),
+                         fs[c], n);
+        NL_CHECK(ok);
+        cases++;
+      }
+    }
+  /* the points went every way: left open, decided at 1, decided at 0 */
+  NL_CHECK(decided[0] > 1000 && decided[1] > 1000 && decided[2] > 1000);
+  NL_CHECK(cases >= 42 * 5);
+  nl_noise_simd_set(nl_noise_simd_best());
+  gsl_rng_free(r);
 }
 
 /* Rows at the edges of the kernels' shortcuts: x = -0 (whose cell must read
