@@ -75,6 +75,14 @@ def linkage_child(d, method, lib):
           f"top merge height {Z[-1, 2]:.10g}")
     print(f"linkage  {tag} {method:8s} peak RSS of the process {peak / 1024:.0f} MiB "
           f"({(peak - base) / 1024:.0f} MiB above the loaded data)")
+    zc = os.path.join(d, f"Z_{method}.tsv")
+    if os.path.exists(zc):   # the C side's merges (bench_stats.c), same data
+        Zc = np.loadtxt(zc, skiprows=1)
+        ids = int(np.sum(np.any(Zc[:, [0, 1, 3]] != Z[:, [0, 1, 3]], axis=1)))
+        rel = float(np.max(np.abs(Zc[:, 2] - Z[:, 2]) / np.maximum(np.abs(Z[:, 2]), 1e-300)))
+        same = int(np.sum(Zc[:, 2] == Z[:, 2]))
+        print(f"linkage  {tag} {method:8s} against C: {ids} rows with other ids or sizes, heights equal in "
+              f"{same} of {Z.shape[0]} rows, largest relative difference {rel:.3g}")
 
 
 def bench_ks():
@@ -128,7 +136,7 @@ def main():
         bench_gmm(X, labels)
     if only == "gmm":
         return
-    for method in ("complete", "average", "single"):
+    for method in ("complete", "average", "ward", "single"):
         for lib in ("scipy", "fastcluster"):
             sys.stdout.flush()
             subprocess.run([sys.executable, os.path.abspath(__file__), "--linkage-child", f"{d}:{method}:{lib}"],
