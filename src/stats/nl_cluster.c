@@ -194,11 +194,16 @@ static double *condensed_alloc(size_t m)
   return p;
 }
 
-static double *condensed_distances(const double *x, size_t n, size_t d)
+/* The column minima of the strict upper triangle (see col_min below) are
+ * gathered while D is filled: for a fixed column j the rows i arrive in
+ * increasing order (i tiles outermost, i increasing inside a tile), so the
+ * strict < keeps the first row holding the minimum, as a scan would. */
+static double *condensed_distances(const double *x, size_t n, size_t d, double *cv, size_t *ci)
 {
   size_t m = n * (n - 1) / 2;
   double *D = condensed_alloc(m);
   if (!D) return NULL;
+  for (size_t j = 0; j < n; j++) { cv[j] = INFINITY; ci[j] = n; }
   for (size_t i0 = 0; i0 + 1 < n; i0 += CD_TILE_I) {
     size_t i1 = i0 + CD_TILE_I < n ? i0 + CD_TILE_I : n;
     for (size_t j0 = i0 + 1; j0 < n; j0 += CD_TILE_J) {
@@ -209,9 +214,15 @@ static double *condensed_distances(const double *x, size_t n, size_t d)
         for (; j + 4 <= j1; j += 4, out += 4) {
           const double *b[4] = {x + j * d, x + (j + 1) * d, x + (j + 2) * d, x + (j + 3) * d};
           sq_diff_sum4(x + i * d, b, d, out);
-          for (int q = 0; q < 4; q++) out[q] = sqrt(out[q]);
+          for (int q = 0; q < 4; q++) {
+            out[q] = sqrt(out[q]);
+            if (out[q] < cv[j + q]) { cv[j + q] = out[q]; ci[j + q] = i; }
+          }
         }
-        for (; j < j1; j++) *out++ = nl_cluster_euclidean(x + i * d, x + j * d, d);
+        for (; j < j1; j++, out++) {
+          *out = nl_cluster_euclidean(x + i * d, x + j * d, d);
+          if (*out < cv[j]) { cv[j] = *out; ci[j] = i; }
+        }
       }
     }
   }
@@ -242,19 +253,42 @@ static inline size_t advance(const size_t *succ, size_t n, size_t i, int k)
   return i;
 }
 
-/* The nearest active neighbour of x; prefers prev (the element before x on
- * the chain) on ties, which is what keeps the chain from cycling. */
-static size_t nearest(const double *D, size_t n, const active_list *a, size_t x, size_t prev, double *dmin)
+/* The minimum of each column's strided part, {D(i, x): i < x active}, as
+ * (value, first row holding it), so that the chain's nearest-neighbour
+ * search reads only row x (contiguous) and one cached pair instead of a
+ * strided column: a column changes only where a merge touches it (see the
+ * update in linkage_nn_chain), and one whose minimum a merge may have
+ * moved is marked stale and rescanned when next asked for. */
+typedef struct { double *v; size_t *i; unsigned char *stale; } col_min;
+
+static void col_rescan(const double *D, size_t n, const active_list *a, col_min *c, size_t x)
 {
   const size_t *succ = a->succ;
-  double best = prev < n ? D[cidx(n, x, prev)] : INFINITY;
-  size_t y = prev, i = succ[n], ahead = advance(succ, n, i, NN_AHEAD);
-  for (; i < x; i = succ[i]) {       /* column x above the diagonal: strided */
+  double best = INFINITY;
+  size_t y = n, i = succ[n], ahead = advance(succ, n, i, NN_AHEAD);
+  for (; i < x; i = succ[i]) {
     if (ahead < x) { __builtin_prefetch(D + cidx(n, ahead, x)); ahead = succ[ahead]; }
     double v = D[cidx(n, i, x)];
     if (v < best) { best = v; y = i; }
   }
-  if (i == x) i = succ[x];
+  c->v[x] = best;
+  c->i[x] = y;
+  c->stale[x] = 0;
+}
+
+/* The nearest active neighbour of x; prefers prev (the element before x on
+ * the chain) on ties, which is what keeps the chain from cycling. The scan
+ * order is increasing index with strict <: prev, else the first index at
+ * the minimum; the column's cached (value, first row) gives the same. */
+static size_t nearest(const double *D, size_t n, const active_list *a, col_min *c, size_t x, size_t prev,
+                      double *dmin)
+{
+  const size_t *succ = a->succ;
+  double best = prev < n ? D[cidx(n, x, prev)] : INFINITY;
+  size_t y = prev;
+  if (c->stale[x]) col_rescan(D, n, a, c, x);
+  if (c->v[x] < best) { best = c->v[x]; y = c->i[x]; }
+  size_t i = succ[x];
   const double *row = D + (x + 1 < n ? cidx(n, x, x + 1) : 0) - (x + 1);   /* row[i], i > x */
   for (; i < n; i = succ[i])         /* row x: contiguous */
     if (row[i] < best) { best = row[i]; y = i; }
@@ -262,7 +296,7 @@ static size_t nearest(const double *D, size_t n, const active_list *a, size_t x,
   return y;
 }
 
-static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method method, double *Z)
+static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method method, col_min *cm, double *Z)
 {
   double *size = nl_xmalloc(n * sizeof(double));
   size_t *chain = nl_xmalloc(n * sizeof(size_t)), len = 0;
@@ -276,7 +310,7 @@ static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method meth
     for (;;) {
       x = chain[len - 1];
       size_t prev = len > 1 ? chain[len - 2] : n;
-      y = nearest(D, n, &act, x, prev, &dmin);
+      y = nearest(D, n, &act, cm, x, prev, &dmin);
       if (len > 1 && y == prev) break;
       chain[len++] = y;
     }
@@ -289,6 +323,12 @@ static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method meth
     size[x] = 0.0;            /* x is dropped, y becomes the merged cluster */
     size[y] = nx + ny;
     active_remove(&act, n, x);
+    /* Columns after the update: y's is rewritten below (its minimum taken on
+     * the way, rows in increasing order); column i in (x, y) lost row x;
+     * column i > y lost row x and has a new row y. A cached minimum that
+     * may have moved is marked stale; the others stay exact. */
+    double ymin = INFINITY;
+    size_t yarg = n;
     size_t ahead = advance(act.succ, n, act.succ[n], NN_AHEAD);
     for (size_t i = act.succ[n]; i < n; i = act.succ[i]) {
       if (ahead < y) {         /* (ahead, y) and, below x, (ahead, x): strided */
@@ -309,7 +349,17 @@ static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method meth
         v = sqrt((ni + nx) * t * dx * dx + (ni + ny) * t * dy * dy - ni * t * dmin * dmin);
       }
       D[cidx(n, i, y)] = v;
+      if (i < y) {
+        if (v < ymin) { ymin = v; yarg = i; }
+        if (i > x && cm->i[i] == x) cm->stale[i] = 1;
+      } else if (!cm->stale[i]) {
+        if (v < cm->v[i] || (v == cm->v[i] && y < cm->i[i])) { cm->v[i] = v; cm->i[i] = y; }
+        else if (cm->i[i] == x || cm->i[i] == y) cm->stale[i] = 1;
+      }
     }
+    cm->v[y] = ymin;
+    cm->i[y] = yarg;
+    cm->stale[y] = 0;
   }
   free(size);
   free(chain);
@@ -335,12 +385,16 @@ nl_status nl_cluster_linkage(const double *x, size_t n, size_t d, nl_cluster_lin
     if (!nl_mem_fits(need))
       return nl_fail(err, NL_ENOMEM, "%zu rows need %s for the distance matrix; this machine has %s",
                      n, nl_format_bytes(b1, need), nl_format_bytes(b2, nl_mem_physical()));
-    double *D = condensed_distances(x, n, d);
-    if (!D)
+    col_min cm = {nl_xmalloc(n * sizeof(double)), nl_xmalloc(n * sizeof(size_t)), nl_xcalloc(n, 1)};
+    double *D = condensed_distances(x, n, d, cm.v, cm.i);
+    if (!D) {
+      free(cm.v); free(cm.i); free(cm.stale);
       return nl_fail(err, NL_ENOMEM, "%zu rows need %s for the distance matrix; allocating it failed",
                      n, nl_format_bytes(b1, need));
-    linkage_nn_chain(D, n, method, Z);
+    }
+    linkage_nn_chain(D, n, method, &cm, Z);
     free(D);
+    free(cm.v); free(cm.i); free(cm.stale);
   }
   sort_and_label(Z, n);
   return NL_OK;
