@@ -5,6 +5,7 @@
 #include "stats/nl_cluster.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
@@ -194,16 +195,63 @@ static double *condensed_alloc(size_t m)
   return p;
 }
 
-/* The column minima of the strict upper triangle (see col_min below) are
- * gathered while D is filled: for a fixed column j the rows i arrive in
- * increasing order (i tiles outermost, i increasing inside a tile), so the
- * strict < keeps the first row holding the minimum, as a scan would. */
-static double *condensed_distances(const double *x, size_t n, size_t d, double *cv, size_t *ci)
+/* The few smallest entries of each column's strided part {D(i, x): i < x
+ * active}, in increasing (value, row) order, so that the chain's
+ * nearest-neighbour search reads row x (contiguous) and the head of a short
+ * list instead of a strided column. Invariant: the cnt listed entries are
+ * the column's cnt smallest, every unlisted active entry is above the last
+ * listed, and full says nothing is unlisted. A merge drops rows from a
+ * column and offers it the merged cluster's new entry (linkage_nn_chain);
+ * only a list emptied while not full has lost its minimum and is rescanned
+ * when next asked for. Rows are stored as uint32_t: n is far below 2^32
+ * wherever n(n-1)/2 doubles fit in memory. */
+enum { COL_K = 4 };
+
+typedef struct { double v[COL_K]; uint32_t i[COL_K]; uint8_t cnt, full; } col_top;
+
+static inline int lex_less(double a, size_t ia, double b, size_t ib)
+{
+  return a < b || (a == b && ia < ib);
+}
+
+/* Column c gains the entry (v, row id). */
+static inline void col_offer(col_top *c, double v, size_t id)
+{
+  int k = c->cnt;
+  if (k == 0 && !c->full) return;                  /* stale: nothing known to compare with */
+  if (k > 0 && !lex_less(v, id, c->v[k - 1], c->i[k - 1])) {
+    if (!c->full) return;                          /* stays unlisted, above the list */
+    if (k == COL_K) { c->full = 0; return; }       /* the list is full up: it drops off */
+    c->v[k] = v; c->i[k] = (uint32_t)id; c->cnt++;
+    return;
+  }
+  if (k == COL_K) { k--; c->full = 0; }            /* the last listed drops off */
+  else c->cnt++;
+  for (; k > 0 && lex_less(v, id, c->v[k - 1], c->i[k - 1]); k--) { c->v[k] = c->v[k - 1]; c->i[k] = c->i[k - 1]; }
+  c->v[k] = v;
+  c->i[k] = (uint32_t)id;
+}
+
+/* Column c loses row id (no-op if it is not listed). */
+static inline void col_drop(col_top *c, size_t id)
+{
+  for (int k = 0; k < c->cnt; k++)
+    if (c->i[k] == id) {
+      for (; k + 1 < c->cnt; k++) { c->v[k] = c->v[k + 1]; c->i[k] = c->i[k + 1]; }
+      c->cnt--;
+      return;
+    }
+}
+
+/* The column lists are filled while D is: for a fixed column j the rows i
+ * arrive in increasing order (i tiles outermost, i increasing inside a
+ * tile), as a scan would offer them. */
+static double *condensed_distances(const double *x, size_t n, size_t d, col_top *cm)
 {
   size_t m = n * (n - 1) / 2;
   double *D = condensed_alloc(m);
   if (!D) return NULL;
-  for (size_t j = 0; j < n; j++) { cv[j] = INFINITY; ci[j] = n; }
+  for (size_t j = 0; j < n; j++) { cm[j].cnt = 0; cm[j].full = 1; }
   for (size_t i0 = 0; i0 + 1 < n; i0 += CD_TILE_I) {
     size_t i1 = i0 + CD_TILE_I < n ? i0 + CD_TILE_I : n;
     for (size_t j0 = i0 + 1; j0 < n; j0 += CD_TILE_J) {
@@ -216,12 +264,12 @@ static double *condensed_distances(const double *x, size_t n, size_t d, double *
           sq_diff_sum4(x + i * d, b, d, out);
           for (int q = 0; q < 4; q++) {
             out[q] = sqrt(out[q]);
-            if (out[q] < cv[j + q]) { cv[j + q] = out[q]; ci[j + q] = i; }
+            col_offer(&cm[j + q], out[q], i);
           }
         }
         for (; j < j1; j++, out++) {
           *out = nl_cluster_euclidean(x + i * d, x + j * d, d);
-          if (*out < cv[j]) { cv[j] = *out; ci[j] = i; }
+          col_offer(&cm[j], *out, i);
         }
       }
     }
@@ -253,41 +301,31 @@ static inline size_t advance(const size_t *succ, size_t n, size_t i, int k)
   return i;
 }
 
-/* The minimum of each column's strided part, {D(i, x): i < x active}, as
- * (value, first row holding it), so that the chain's nearest-neighbour
- * search reads only row x (contiguous) and one cached pair instead of a
- * strided column: a column changes only where a merge touches it (see the
- * update in linkage_nn_chain), and one whose minimum a merge may have
- * moved is marked stale and rescanned when next asked for. */
-typedef struct { double *v; size_t *i; unsigned char *stale; } col_min;
-
-static void col_rescan(const double *D, size_t n, const active_list *a, col_min *c, size_t x)
+static void col_rescan(const double *D, size_t n, const active_list *a, col_top *c, size_t x)
 {
   const size_t *succ = a->succ;
-  double best = INFINITY;
-  size_t y = n, i = succ[n], ahead = advance(succ, n, i, NN_AHEAD);
+  size_t i = succ[n], ahead = advance(succ, n, i, NN_AHEAD);
+  c->cnt = 0;
+  c->full = 1;
   for (; i < x; i = succ[i]) {
     if (ahead < x) { __builtin_prefetch(D + cidx(n, ahead, x)); ahead = succ[ahead]; }
-    double v = D[cidx(n, i, x)];
-    if (v < best) { best = v; y = i; }
+    col_offer(c, D[cidx(n, i, x)], i);
   }
-  c->v[x] = best;
-  c->i[x] = y;
-  c->stale[x] = 0;
 }
 
 /* The nearest active neighbour of x; prefers prev (the element before x on
  * the chain) on ties, which is what keeps the chain from cycling. The scan
  * order is increasing index with strict <: prev, else the first index at
  * the minimum; the column's cached (value, first row) gives the same. */
-static size_t nearest(const double *D, size_t n, const active_list *a, col_min *c, size_t x, size_t prev,
+static size_t nearest(const double *D, size_t n, const active_list *a, col_top *cm, size_t x, size_t prev,
                       double *dmin)
 {
   const size_t *succ = a->succ;
   double best = prev < n ? D[cidx(n, x, prev)] : INFINITY;
   size_t y = prev;
-  if (c->stale[x]) col_rescan(D, n, a, c, x);
-  if (c->v[x] < best) { best = c->v[x]; y = c->i[x]; }
+  col_top *c = &cm[x];
+  if (c->cnt == 0 && !c->full) col_rescan(D, n, a, c, x);
+  if (c->cnt > 0 && c->v[0] < best) { best = c->v[0]; y = c->i[0]; }
   size_t i = succ[x];
   const double *row = D + (x + 1 < n ? cidx(n, x, x + 1) : 0) - (x + 1);   /* row[i], i > x */
   for (; i < n; i = succ[i])         /* row x: contiguous */
@@ -296,7 +334,7 @@ static size_t nearest(const double *D, size_t n, const active_list *a, col_min *
   return y;
 }
 
-static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method method, col_min *cm, double *Z)
+static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method method, col_top *cm, double *Z)
 {
   double *size = nl_xmalloc(n * sizeof(double));
   size_t *chain = nl_xmalloc(n * sizeof(size_t)), len = 0;
@@ -323,12 +361,10 @@ static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method meth
     size[x] = 0.0;            /* x is dropped, y becomes the merged cluster */
     size[y] = nx + ny;
     active_remove(&act, n, x);
-    /* Columns after the update: y's is rewritten below (its minimum taken on
-     * the way, rows in increasing order); column i in (x, y) lost row x;
-     * column i > y lost row x and has a new row y. A cached minimum that
-     * may have moved is marked stale; the others stay exact. */
-    double ymin = INFINITY;
-    size_t yarg = n;
+    /* The column lists after the merge: y's column is rewritten below (its
+     * list made on the way, rows in increasing order); column i in (x, y)
+     * lost row x; column i > y lost row x and has a new entry in row y. */
+    col_top ycol = {.cnt = 0, .full = 1};
     size_t ahead = advance(act.succ, n, act.succ[n], NN_AHEAD);
     for (size_t i = act.succ[n]; i < n; i = act.succ[i]) {
       if (ahead < y) {         /* (ahead, y) and, below x, (ahead, x): strided */
@@ -350,16 +386,15 @@ static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method meth
       }
       D[cidx(n, i, y)] = v;
       if (i < y) {
-        if (v < ymin) { ymin = v; yarg = i; }
-        if (i > x && cm->i[i] == x) cm->stale[i] = 1;
-      } else if (!cm->stale[i]) {
-        if (v < cm->v[i] || (v == cm->v[i] && y < cm->i[i])) { cm->v[i] = v; cm->i[i] = y; }
-        else if (cm->i[i] == x || cm->i[i] == y) cm->stale[i] = 1;
+        col_offer(&ycol, v, i);
+        if (i > x) col_drop(&cm[i], x);
+      } else {
+        col_drop(&cm[i], x);
+        col_drop(&cm[i], y);
+        col_offer(&cm[i], v, y);
       }
     }
-    cm->v[y] = ymin;
-    cm->i[y] = yarg;
-    cm->stale[y] = 0;
+    cm[y] = ycol;
   }
   free(size);
   free(chain);
@@ -385,16 +420,16 @@ nl_status nl_cluster_linkage(const double *x, size_t n, size_t d, nl_cluster_lin
     if (!nl_mem_fits(need))
       return nl_fail(err, NL_ENOMEM, "%zu rows need %s for the distance matrix; this machine has %s",
                      n, nl_format_bytes(b1, need), nl_format_bytes(b2, nl_mem_physical()));
-    col_min cm = {nl_xmalloc(n * sizeof(double)), nl_xmalloc(n * sizeof(size_t)), nl_xcalloc(n, 1)};
-    double *D = condensed_distances(x, n, d, cm.v, cm.i);
+    col_top *cm = nl_xmalloc(n * sizeof *cm);
+    double *D = condensed_distances(x, n, d, cm);
     if (!D) {
-      free(cm.v); free(cm.i); free(cm.stale);
+      free(cm);
       return nl_fail(err, NL_ENOMEM, "%zu rows need %s for the distance matrix; allocating it failed",
                      n, nl_format_bytes(b1, need));
     }
-    linkage_nn_chain(D, n, method, &cm, Z);
+    linkage_nn_chain(D, n, method, cm, Z);
     free(D);
-    free(cm.v); free(cm.i); free(cm.stale);
+    free(cm);
   }
   sort_and_label(Z, n);
   return NL_OK;
