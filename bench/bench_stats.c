@@ -4,8 +4,10 @@
  *
  * C side (always): GMM EM on 10,000 x 81, K = 30 full covariance, from k-means
  * labels (time per EM iteration, log-likelihood at convergence); complete,
- * average, Ward and single linkage on the same 10,000 x 81 (time, peak memory of a child
- * process); KS with exact p at n = 512 (microseconds per call) and the
+ * average, Ward and single linkage on the same 10,000 x 81 (time, peak
+ * memory of a child process; the merges go to DIR/Z_<method>.tsv, and the
+ * Python side counts the rows where scipy's and fastcluster's differ from
+ * them); KS with exact p at n = 512 (microseconds per call) and the
  * incremental statistic (moves per second). It writes the data and labels to
  * DIR, then runs bench/bench_stats.py on them when /usr/bin/python3 can import
  * sklearn, so the Python side starts EM from the same labels.

@@ -5,7 +5,9 @@
 
 DIR holds X.tsv (10,000 x 81) and labels.tsv written by build/bench/bench_stats.
 EM starts from those labels through sklearn's own _initialize, as the C side
-does. Each linkage runs in a fresh process so its peak RSS is its own.
+does. Each linkage runs in a fresh process so its peak RSS is its own, and its
+merges are compared with the C side's (DIR/Z_<method>.tsv) when present:
+rows whose ids or sizes differ, and the largest relative height difference.
 """
 import os
 import resource
