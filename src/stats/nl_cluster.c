@@ -301,6 +301,9 @@ static inline size_t advance(const size_t *succ, size_t n, size_t i, int k)
   return i;
 }
 
+/* Column x's list made anew from its strided entries, rows in increasing
+ * order, prefetched NN_AHEAD list nodes ahead (the hardware prefetcher does
+ * not follow a stride of n - i doubles). */
 static void col_rescan(const double *D, size_t n, const active_list *a, col_top *c, size_t x)
 {
   const size_t *succ = a->succ;
