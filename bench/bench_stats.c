@@ -3,9 +3,11 @@
  *   build/bench/bench_stats [DIR]      (DIR for the shared data, default /tmp/noiselab_bench_stats)
  *
  * C side (always): GMM EM on 10,000 x 81, K = 30 full covariance, from k-means
- * labels (time per EM iteration, log-likelihood at convergence); complete and
- * single linkage on the same 10,000 x 81 (time, peak memory of a child
- * process); KS with exact p at n = 512 (microseconds per call) and the
+ * labels (time per EM iteration, log-likelihood at convergence); complete,
+ * average, Ward and single linkage on the same 10,000 x 81 (time, peak
+ * memory of a child process; the merges go to DIR/Z_<method>.tsv, and the
+ * Python side counts the rows where scipy's and fastcluster's differ from
+ * them); KS with exact p at n = 512 (microseconds per call) and the
  * incremental statistic (moves per second). It writes the data and labels to
  * DIR, then runs bench/bench_stats.py on them when /usr/bin/python3 can import
  * sklearn, so the Python side starts EM from the same labels.
@@ -93,8 +95,9 @@ static void bench_gmm(const double *x, const int *labels)
   nl_gmm_free(g);
 }
 
-/* Runs linkage in a child so that its peak RSS is its own. */
-static void bench_linkage(const double *x, nl_cluster_linkage_method m, const char *name)
+/* Runs linkage in a child so that its peak RSS is its own; the merges go to
+ * DIR/Z_<method>.tsv (digits that read back to the same doubles), which bench_stats.py compares with scipy's. */
+static void bench_linkage(const char *dir, const double *x, nl_cluster_linkage_method m, const char *name)
 {
   fflush(stdout);
   pid_t pid = fork();
@@ -107,6 +110,9 @@ static void bench_linkage(const double *x, nl_cluster_linkage_method m, const ch
     printf("linkage  C     %-8s n=%d d=%d: %.3f s, %.3f s CPU, top merge height %.10g\n", name, N, D, t, c,
            Z[4 * (N - 2) + 2]);
     fflush(stdout);
+    char zname[64];
+    snprintf(zname, sizeof zname, "Z_%s.tsv", name);
+    save(dir, zname, N - 1, 4, Z);
     _exit(0);
   }
   int status;
@@ -301,9 +307,10 @@ int main(int argc, char **argv)
   save(dir, "labels.tsv", N, 1, lab);
   if (!only || !strcmp(only, "gmm")) bench_gmm(x, labels);
   if (!only || !strcmp(only, "linkage")) {
-    bench_linkage(x, NL_LINKAGE_COMPLETE, "complete");
-    bench_linkage(x, NL_LINKAGE_AVERAGE, "average");
-    bench_linkage(x, NL_LINKAGE_SINGLE, "single");
+    bench_linkage(dir, x, NL_LINKAGE_COMPLETE, "complete");
+    bench_linkage(dir, x, NL_LINKAGE_AVERAGE, "average");
+    bench_linkage(dir, x, NL_LINKAGE_WARD, "ward");
+    bench_linkage(dir, x, NL_LINKAGE_SINGLE, "single");
   }
   run_python(dir, only);
   nl_bench_report(stdout, "end");

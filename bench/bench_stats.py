@@ -5,7 +5,9 @@
 
 DIR holds X.tsv (10,000 x 81) and labels.tsv written by build/bench/bench_stats.
 EM starts from those labels through sklearn's own _initialize, as the C side
-does. Each linkage runs in a fresh process so its peak RSS is its own.
+does. Each linkage runs in a fresh process so its peak RSS is its own, and its
+merges are compared with the C side's (DIR/Z_<method>.tsv) when present:
+rows whose ids or sizes differ, and the largest relative height difference.
 """
 import os
 import resource
@@ -75,6 +77,14 @@ def linkage_child(d, method, lib):
           f"top merge height {Z[-1, 2]:.10g}")
     print(f"linkage  {tag} {method:8s} peak RSS of the process {peak / 1024:.0f} MiB "
           f"({(peak - base) / 1024:.0f} MiB above the loaded data)")
+    zc = os.path.join(d, f"Z_{method}.tsv")
+    if os.path.exists(zc):   # the C side's merges (bench_stats.c), same data
+        Zc = np.loadtxt(zc, skiprows=1)
+        ids = int(np.sum(np.any(Zc[:, [0, 1, 3]] != Z[:, [0, 1, 3]], axis=1)))
+        rel = float(np.max(np.abs(Zc[:, 2] - Z[:, 2]) / np.maximum(np.abs(Z[:, 2]), 1e-300)))
+        same = int(np.sum(Zc[:, 2] == Z[:, 2]))
+        print(f"linkage  {tag} {method:8s} against C: {ids} rows with other ids or sizes, heights equal in "
+              f"{same} of {Z.shape[0]} rows, largest relative difference {rel:.3g}")
 
 
 def bench_ks():
@@ -128,7 +138,7 @@ def main():
         bench_gmm(X, labels)
     if only == "gmm":
         return
-    for method in ("complete", "average", "single"):
+    for method in ("complete", "average", "ward", "single"):
         for lib in ("scipy", "fastcluster"):
             sys.stdout.flush()
             subprocess.run([sys.executable, os.path.abspath(__file__), "--linkage-child", f"{d}:{method}:{lib}"],

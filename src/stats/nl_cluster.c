@@ -5,8 +5,10 @@
 #include "stats/nl_cluster.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 
 nl_status nl_cluster_linkage_method_parse(const char *name, nl_cluster_linkage_method *m, nl_error *err)
 {
@@ -173,11 +175,83 @@ static inline size_t cidx(size_t n, size_t i, size_t j)
  * row by row. */
 enum { CD_TILE_I = 64, CD_TILE_J = 256 };
 
-static double *condensed_distances(const double *x, size_t n, size_t d)
+/* The condensed matrix on 2 MB pages where the kernel grants them
+ * (transparent huge pages in "madvise" mode): the column scans below touch
+ * one 4 KB page per element (rows are up to n doubles apart), so with small
+ * pages nearly every strided read is a TLB miss, and filling 400 MB takes
+ * 100,000 page faults instead of 200. Without THP this is plain memory. */
+enum { HUGE_PAGE = 2u << 20 };
+
+static double *condensed_alloc(size_t m)
+{
+  size_t bytes = m * sizeof(double);
+  void *p = NULL;
+  if (bytes < HUGE_PAGE) return malloc(bytes);
+  bytes = (bytes + HUGE_PAGE - 1) / HUGE_PAGE * HUGE_PAGE;
+  if (posix_memalign(&p, HUGE_PAGE, bytes) != 0) return NULL;
+#ifdef MADV_HUGEPAGE
+  madvise(p, bytes, MADV_HUGEPAGE);   /* advice only: failure leaves small pages */
+#endif
+  return p;
+}
+
+/* The few smallest entries of each column's strided part {D(i, x): i < x
+ * active}, in increasing (value, row) order, so that the chain's
+ * nearest-neighbour search reads row x (contiguous) and the head of a short
+ * list instead of a strided column. Invariant: the cnt listed entries are
+ * the column's cnt smallest, every unlisted active entry is above the last
+ * listed, and full says nothing is unlisted. A merge drops rows from a
+ * column and offers it the merged cluster's new entry (linkage_nn_chain);
+ * only a list emptied while not full has lost its minimum and is rescanned
+ * when next asked for. Rows are stored as uint32_t: n is far below 2^32
+ * wherever n(n-1)/2 doubles fit in memory. */
+enum { COL_K = 4 };
+
+typedef struct { double v[COL_K]; uint32_t i[COL_K]; uint8_t cnt, full; } col_top;
+
+static inline int lex_less(double a, size_t ia, double b, size_t ib)
+{
+  return a < b || (a == b && ia < ib);
+}
+
+/* Column c gains the entry (v, row id). */
+static inline void col_offer(col_top *c, double v, size_t id)
+{
+  int k = c->cnt;
+  if (k == 0 && !c->full) return;                  /* stale: nothing known to compare with */
+  if (k > 0 && !lex_less(v, id, c->v[k - 1], c->i[k - 1])) {
+    if (!c->full) return;                          /* stays unlisted, above the list */
+    if (k == COL_K) { c->full = 0; return; }       /* the list is full up: it drops off */
+    c->v[k] = v; c->i[k] = (uint32_t)id; c->cnt++;
+    return;
+  }
+  if (k == COL_K) { k--; c->full = 0; }            /* the last listed drops off */
+  else c->cnt++;
+  for (; k > 0 && lex_less(v, id, c->v[k - 1], c->i[k - 1]); k--) { c->v[k] = c->v[k - 1]; c->i[k] = c->i[k - 1]; }
+  c->v[k] = v;
+  c->i[k] = (uint32_t)id;
+}
+
+/* Column c loses row id (no-op if it is not listed). */
+static inline void col_drop(col_top *c, size_t id)
+{
+  for (int k = 0; k < c->cnt; k++)
+    if (c->i[k] == id) {
+      for (; k + 1 < c->cnt; k++) { c->v[k] = c->v[k + 1]; c->i[k] = c->i[k + 1]; }
+      c->cnt--;
+      return;
+    }
+}
+
+/* The column lists are filled while D is: for a fixed column j the rows i
+ * arrive in increasing order (i tiles outermost, i increasing inside a
+ * tile), as a scan would offer them. */
+static double *condensed_distances(const double *x, size_t n, size_t d, col_top *cm)
 {
   size_t m = n * (n - 1) / 2;
-  double *D = malloc(m * sizeof(double));
+  double *D = condensed_alloc(m);
   if (!D) return NULL;
+  for (size_t j = 0; j < n; j++) { cm[j].cnt = 0; cm[j].full = 1; }
   for (size_t i0 = 0; i0 + 1 < n; i0 += CD_TILE_I) {
     size_t i1 = i0 + CD_TILE_I < n ? i0 + CD_TILE_I : n;
     for (size_t j0 = i0 + 1; j0 < n; j0 += CD_TILE_J) {
@@ -188,9 +262,15 @@ static double *condensed_distances(const double *x, size_t n, size_t d)
         for (; j + 4 <= j1; j += 4, out += 4) {
           const double *b[4] = {x + j * d, x + (j + 1) * d, x + (j + 2) * d, x + (j + 3) * d};
           sq_diff_sum4(x + i * d, b, d, out);
-          for (int q = 0; q < 4; q++) out[q] = sqrt(out[q]);
+          for (int q = 0; q < 4; q++) {
+            out[q] = sqrt(out[q]);
+            col_offer(&cm[j + q], out[q], i);
+          }
         }
-        for (; j < j1; j++) *out++ = nl_cluster_euclidean(x + i * d, x + j * d, d);
+        for (; j < j1; j++, out++) {
+          *out = nl_cluster_euclidean(x + i * d, x + j * d, d);
+          col_offer(&cm[j], *out, i);
+        }
       }
     }
   }
@@ -221,19 +301,35 @@ static inline size_t advance(const size_t *succ, size_t n, size_t i, int k)
   return i;
 }
 
+/* Column x's list made anew from its strided entries, rows in increasing
+ * order, prefetched NN_AHEAD list nodes ahead (the hardware prefetcher does
+ * not follow a stride of n - i doubles). */
+static void col_rescan(const double *D, size_t n, const active_list *a, col_top *c, size_t x)
+{
+  const size_t *succ = a->succ;
+  size_t i = succ[n], ahead = advance(succ, n, i, NN_AHEAD);
+  c->cnt = 0;
+  c->full = 1;
+  for (; i < x; i = succ[i]) {
+    if (ahead < x) { __builtin_prefetch(D + cidx(n, ahead, x)); ahead = succ[ahead]; }
+    col_offer(c, D[cidx(n, i, x)], i);
+  }
+}
+
 /* The nearest active neighbour of x; prefers prev (the element before x on
- * the chain) on ties, which is what keeps the chain from cycling. */
-static size_t nearest(const double *D, size_t n, const active_list *a, size_t x, size_t prev, double *dmin)
+ * the chain) on ties, which is what keeps the chain from cycling. The scan
+ * order is increasing index with strict <: prev, else the first index at
+ * the minimum; the column's cached (value, first row) gives the same. */
+static size_t nearest(const double *D, size_t n, const active_list *a, col_top *cm, size_t x, size_t prev,
+                      double *dmin)
 {
   const size_t *succ = a->succ;
   double best = prev < n ? D[cidx(n, x, prev)] : INFINITY;
-  size_t y = prev, i = succ[n], ahead = advance(succ, n, i, NN_AHEAD);
-  for (; i < x; i = succ[i]) {       /* column x above the diagonal: strided */
-    if (ahead < x) { __builtin_prefetch(D + cidx(n, ahead, x)); ahead = succ[ahead]; }
-    double v = D[cidx(n, i, x)];
-    if (v < best) { best = v; y = i; }
-  }
-  if (i == x) i = succ[x];
+  size_t y = prev;
+  col_top *c = &cm[x];
+  if (c->cnt == 0 && !c->full) col_rescan(D, n, a, c, x);
+  if (c->cnt > 0 && c->v[0] < best) { best = c->v[0]; y = c->i[0]; }
+  size_t i = succ[x];
   const double *row = D + (x + 1 < n ? cidx(n, x, x + 1) : 0) - (x + 1);   /* row[i], i > x */
   for (; i < n; i = succ[i])         /* row x: contiguous */
     if (row[i] < best) { best = row[i]; y = i; }
@@ -241,7 +337,7 @@ static size_t nearest(const double *D, size_t n, const active_list *a, size_t x,
   return y;
 }
 
-static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method method, double *Z)
+static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method method, col_top *cm, double *Z)
 {
   double *size = nl_xmalloc(n * sizeof(double));
   size_t *chain = nl_xmalloc(n * sizeof(size_t)), len = 0;
@@ -255,7 +351,7 @@ static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method meth
     for (;;) {
       x = chain[len - 1];
       size_t prev = len > 1 ? chain[len - 2] : n;
-      y = nearest(D, n, &act, x, prev, &dmin);
+      y = nearest(D, n, &act, cm, x, prev, &dmin);
       if (len > 1 && y == prev) break;
       chain[len++] = y;
     }
@@ -268,6 +364,10 @@ static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method meth
     size[x] = 0.0;            /* x is dropped, y becomes the merged cluster */
     size[y] = nx + ny;
     active_remove(&act, n, x);
+    /* The column lists after the merge: y's column is rewritten below (its
+     * list made on the way, rows in increasing order); column i in (x, y)
+     * lost row x; column i > y lost row x and has a new entry in row y. */
+    col_top ycol = {.cnt = 0, .full = 1};
     size_t ahead = advance(act.succ, n, act.succ[n], NN_AHEAD);
     for (size_t i = act.succ[n]; i < n; i = act.succ[i]) {
       if (ahead < y) {         /* (ahead, y) and, below x, (ahead, x): strided */
@@ -288,7 +388,16 @@ static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method meth
         v = sqrt((ni + nx) * t * dx * dx + (ni + ny) * t * dy * dy - ni * t * dmin * dmin);
       }
       D[cidx(n, i, y)] = v;
+      if (i < y) {
+        col_offer(&ycol, v, i);
+        if (i > x) col_drop(&cm[i], x);
+      } else {
+        col_drop(&cm[i], x);
+        col_drop(&cm[i], y);
+        col_offer(&cm[i], v, y);
+      }
     }
+    cm[y] = ycol;
   }
   free(size);
   free(chain);
@@ -314,12 +423,16 @@ nl_status nl_cluster_linkage(const double *x, size_t n, size_t d, nl_cluster_lin
     if (!nl_mem_fits(need))
       return nl_fail(err, NL_ENOMEM, "%zu rows need %s for the distance matrix; this machine has %s",
                      n, nl_format_bytes(b1, need), nl_format_bytes(b2, nl_mem_physical()));
-    double *D = condensed_distances(x, n, d);
-    if (!D)
+    col_top *cm = nl_xmalloc(n * sizeof *cm);
+    double *D = condensed_distances(x, n, d, cm);
+    if (!D) {
+      free(cm);
       return nl_fail(err, NL_ENOMEM, "%zu rows need %s for the distance matrix; allocating it failed",
                      n, nl_format_bytes(b1, need));
-    linkage_nn_chain(D, n, method, Z);
+    }
+    linkage_nn_chain(D, n, method, cm, Z);
     free(D);
+    free(cm);
   }
   sort_and_label(Z, n);
   return NL_OK;

@@ -9,6 +9,8 @@
 #include "nl_test.h"
 #include "test_vectors.h"
 
+#include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 static const char *methods[] = {"single", "complete", "average"};
@@ -98,6 +100,133 @@ NL_TEST(ward_by_hand)
   NL_CHECK_NEAR(Z[6], 1.0, 1e-15);
   NL_CHECK_NEAR(Z[10], sqrt(200.0), 1e-13);
   NL_CHECK(Z[11] == 4.0);
+}
+
+/* ---- the column lists against a plain NN-chain ----------------------------
+ * nl_cluster.c caches each column's smallest entries so that the chain's
+ * nearest-neighbour search does not scan columns; the merges must be the
+ * ones the plain chain makes, bit for bit, ties included. The reference
+ * below is that plain chain (full scans, the same tie rule: prev first,
+ * else the lowest index at the minimum) with scipy's stable sort and
+ * relabelling. Points on a small integer grid give many equal distances
+ * and duplicate points, so ties decide most merges. */
+
+static int ref_cmp(const void *pa, const void *pb)
+{
+  const double *a = pa, *b = pb;   /* {height, order} */
+  if (a[0] != b[0]) return a[0] < b[0] ? -1 : 1;
+  return (a[1] > b[1]) - (a[1] < b[1]);
+}
+
+static void ref_linkage(const double *x, size_t n, size_t d, nl_cluster_linkage_method m, double *Z)
+{
+  double *D = nl_xmalloc(n * n * sizeof *D), *size = nl_xmalloc(n * sizeof *size);
+  double *raw = nl_xmalloc(4 * n * sizeof *raw), *key = nl_xmalloc(2 * n * sizeof *key);
+  size_t *chain = nl_xmalloc(n * sizeof *chain), len = 0, *parent = nl_xmalloc(2 * n * sizeof *parent);
+  unsigned char *on = nl_xmalloc(n);
+  for (size_t i = 0; i < n; i++) {
+    size[i] = 1.0; on[i] = 1;
+    for (size_t j = 0; j < n; j++) D[i * n + j] = nl_cluster_euclidean(x + i * d, x + j * d, d);
+  }
+  for (size_t k = 0; k + 1 < n; k++) {
+    size_t a = 0, b, prev;
+    while (!on[a]) a++;
+    if (len == 0) chain[len++] = a;
+    double dmin;
+    for (;;) {
+      a = chain[len - 1];
+      prev = len > 1 ? chain[len - 2] : n;
+      dmin = prev < n ? D[a * n + prev] : INFINITY;
+      b = prev;
+      for (size_t i = 0; i < n; i++)
+        if (on[i] && i != a && D[a * n + i] < dmin) { dmin = D[a * n + i]; b = i; }
+      if (len > 1 && b == prev) break;
+      chain[len++] = b;
+    }
+    len -= 2;
+    size_t lo = a < b ? a : b, hi = a < b ? b : a;
+    double nx = size[lo], ny = size[hi];
+    raw[4 * k] = (double)lo; raw[4 * k + 1] = (double)hi; raw[4 * k + 2] = dmin;
+    on[lo] = 0; size[lo] = 0.0; size[hi] = nx + ny;
+    for (size_t i = 0; i < n; i++) {
+      if (!on[i] || i == hi) continue;
+      double dx = D[i * n + lo], dy = D[i * n + hi], v, ni = size[i], t = 1.0 / (nx + ny + ni);
+      if (m == NL_LINKAGE_COMPLETE) v = dx > dy ? dx : dy;
+      else if (m == NL_LINKAGE_AVERAGE) v = (nx * dx + ny * dy) / (nx + ny);
+      else v = sqrt((ni + nx) * t * dx * dx + (ni + ny) * t * dy * dy - ni * t * dmin * dmin);
+      D[i * n + hi] = D[hi * n + i] = v;
+    }
+  }
+  for (size_t k = 0; k + 1 < n; k++) { key[2 * k] = raw[4 * k + 2]; key[2 * k + 1] = (double)k; }
+  qsort(key, n - 1, 2 * sizeof *key, ref_cmp);
+  double *csize = nl_xmalloc(2 * n * sizeof *csize);
+  for (size_t i = 0; i < 2 * n; i++) { parent[i] = i; csize[i] = 1.0; }
+  for (size_t k = 0; k + 1 < n; k++) {
+    const double *r = raw + 4 * (size_t)key[2 * k + 1];
+    size_t root[2];
+    for (int s = 0; s < 2; s++) {
+      size_t c = (size_t)r[s];
+      while (parent[c] != c) c = parent[c];
+      root[s] = c;
+    }
+    size_t a = root[0] < root[1] ? root[0] : root[1], b = root[0] < root[1] ? root[1] : root[0];
+    parent[a] = parent[b] = n + k;
+    csize[n + k] = csize[a] + csize[b];
+    Z[4 * k] = (double)a; Z[4 * k + 1] = (double)b; Z[4 * k + 2] = r[2]; Z[4 * k + 3] = csize[n + k];
+  }
+  free(D); free(size); free(raw); free(key); free(chain); free(parent); free(on); free(csize);
+}
+
+/* The number of values of Z (complete, average, Ward) that differ from the
+ * plain chain's. */
+static size_t differ_from_plain_chain(const double *x, size_t n, size_t d, const char *what)
+{
+  double *Z = nl_xmalloc(4 * n * sizeof *Z), *R = nl_xmalloc(4 * n * sizeof *R);
+  size_t total = 0;
+  for (int m = NL_LINKAGE_COMPLETE; m <= NL_LINKAGE_WARD; m++) {
+    if (nl_cluster_linkage(x, n, d, (nl_cluster_linkage_method)m, Z, NULL) != NL_OK) return SIZE_MAX;
+    ref_linkage(x, n, d, (nl_cluster_linkage_method)m, R);
+    size_t bad = 0;
+    for (size_t i = 0; i < 4 * (n - 1); i++) bad += memcmp(&Z[i], &R[i], sizeof *Z) != 0;
+    if (bad) fprintf(stderr, "  %s, method %d: %zu values differ from the plain chain\n", what, m, bad);
+    total += bad;
+  }
+  free(Z); free(R);
+  return total;
+}
+
+NL_TEST(linkage_column_lists_match_plain_chain)
+{
+  /* n, d, grid size: duplicates (400 points on 4^3 cells), ties in 2-D,
+   * and a finer grid. */
+  const size_t cases[][3] = {{400, 3, 4}, {300, 2, 6}, {500, 4, 9}};
+  for (size_t c = 0; c < 3; c++) {
+    size_t n = cases[c][0], d = cases[c][1];
+    double *x = nl_xmalloc(n * d * sizeof *x);
+    for (size_t i = 0; i < n * d; i++) x[i] = (double)(nl_seed_stream(17, "test.cluster.grid", c * 100000 + i) % cases[c][2]);
+    char what[64];
+    snprintf(what, sizeof what, "%zu points on a %zu^%zu grid", n, cases[c][2], d);
+    NL_CHECK(differ_from_plain_chain(x, n, d, what) == 0);
+    free(x);
+  }
+  /* A column whose list overflows and is then emptied: P (row 6) has four
+   * points j at 1 on the y and z axes, Q (1.2) and L (1.05) above it in the
+   * matrix; each j has a twin t (rows 7..10) 0.5 further out, which it
+   * merges with first, so P's column loses every listed entry while L
+   * stays unlisted. The chain then stands at Q -> P, and P's nearest is L
+   * (1.05), not Q (1.2) nor a pair (1.5 complete): a list that forgot it
+   * had dropped L would merge P with Q. Two row orders: L and Q offered
+   * after the four j (they fall off the end of a full list), or before
+   * them (pushed off by the j). */
+  const double Q[3] = {1.2, 0, 0}, L[3] = {-1.05, 0, 0}, J[4][3] = {{0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  const double *order[2][7] = {{J[0], J[1], J[2], J[3], Q, L, NULL}, {Q, L, J[0], J[1], J[2], J[3], NULL}};
+  for (int o = 0; o < 2; o++) {
+    double pts[11 * 3] = {0};   /* P = origin at row 6 */
+    for (int r = 0; r < 6; r++) memcpy(pts + 3 * r, order[o][r], 3 * sizeof(double));
+    for (int k = 0; k < 4; k++)
+      for (int c = 0; c < 3; c++) pts[3 * (7 + k) + c] = 1.5 * J[k][c];
+    NL_CHECK(differ_from_plain_chain(pts, 11, 3, o ? "overflow by insertion" : "overflow at the end") == 0);
+  }
 }
 
 /* 3 million rows need ~36 TB of distances: refused at once with the size
