@@ -38,13 +38,12 @@ static size_t labelled_row(nl_table *t, int nlabels, const char *const *labels)
   return r;
 }
 
-nl_noise_grad2 *nl_study_cheng_amp_seeds(const nl_study_cheng *s, const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                                         nl_table *sum, nl_table *gains, nl_table *timing, int nlabels,
-                                         const char *const *labels, double *first_log_gain)
+void nl_study_cheng_amp_rows(const nl_study_cheng *s, const nl_cheng_config *c, const nl_cheng_eval *evs,
+                             nl_table *sum, nl_table *gains, nl_table *timing, int nlabels,
+                             const char *const *labels, double *first_log_gain)
 {
   int k = nl_harness_seeds(s->r);
-  nl_noise_grad2 *first;
-  nl_cheng_eval *evs = nl_study_cheng_seeds_evals(s, c, pat, sum, nlabels, labels, &first);
+  nl_study_cheng_rows_add(s, sum, nlabels, labels, evs);
   /* Per run, the thread CPU of its optimisation (nl_cheng_eval.cpu_seconds):
    * the runs share the cores (--threads), so wall time would not be per run. */
   double cpu = 0;
@@ -67,8 +66,6 @@ nl_noise_grad2 *nl_study_cheng_amp_seeds(const nl_study_cheng *s, const nl_cheng
     for (size_t i = 0; i < NGAIN; i++) nl_table_set(gains, r, gain_cols[i], row[i]);
   }
   free(a);
-  free(evs);
-  return first;
 }
 
 static void range_of(const nl_table *t, const char *col, size_t r0, size_t step, double *lo, double *hi)
