@@ -304,6 +304,70 @@ static void mean_row(nl_table *mt, const nl_table *bands, const nl_table *sum, c
                   w, wk, nb - 1, w <= max_ratio && w >= 1 / max_ratio, passes, K, fail_ks, fail_band, sat, sat99, kg);
 }
 
+/* The rows of src appended to dst (same columns), in order. */
+static void append_rows(nl_table *dst, const nl_table *src)
+{
+  for (size_t q = 0; q < src->nrows; q++) {
+    size_t row = nl_table_append_empty(dst);
+    for (size_t c = 0; c < src->ncols; c++) {
+      const char *tx = src->text ? src->text[q * src->ncols + c] : NULL;
+      if (tx) nl_table_set_text(dst, row, dst->names[c], tx);
+      else nl_table_set(dst, row, dst->names[c], src->num[q * src->ncols + c]);
+    }
+  }
+}
+
+enum { NREP = 3, NP = NREP + 1 };
+
+/* The photographs' work on the run's threads (nl_parallel.h): first one
+ * analysis per (photo, representation) item (it does not depend on the seed),
+ * then one synthesis per (photo, representation, replicate) item into its own
+ * row tables and montage slot; the rows go to the shared tables in item order
+ * afterwards, so the tables are the same for any thread count. */
+typedef struct {
+  nl_image **photos;
+  char (*names)[64];
+  const nl_byexample_hist_kind *kinds;
+  const int *cal;
+  int K, size;
+  unsigned long seed;
+  double min_share, max_ratio, max_ks;
+  nl_byexample_params *par;   /* per (photo, rep) */
+  nl_table **bands, **sum;    /* per (photo, rep, replicate) */
+  nl_image **crops;           /* per (photo, rep): the first replicate's crop */
+  nl_status *st, *sst;        /* per (photo, rep): analysis; per item: synthesis */
+  nl_error *err, *serr;
+} photos_job;
+
+static void analyse_item(void *ctx, size_t q, int thread)
+{
+  (void)thread;
+  photos_job *j = ctx;
+  int i = (int)q / NREP, h = (int)q % NREP;
+  nl_byexample_options o = {1, 1, 0, 0, j->kinds[h], j->cal[h]};
+  j->st[q] = nl_byexample_analyse(j->photos[i], &o, &j->par[q], &j->err[q]);
+}
+
+static void photo_item(void *ctx, size_t q, int thread)
+{
+  (void)thread;
+  photos_job *j = ctx;
+  size_t ih = q / (size_t)j->K;
+  int i = (int)ih / NREP, h = (int)ih % NREP, s = (int)(q % (size_t)j->K);
+  if (j->st[ih]) return;   /* its analysis failed: reported in item order */
+  nl_image *syn;
+  if ((j->sst[q] = nl_byexample_synthesize(&j->par[ih], j->size, j->size, nl_seed_replicate(j->seed, s), NULL, &syn,
+                                           &j->serr[q])))
+    return;
+  j->bands[q] = nl_study_example_band_table();
+  j->sum[q] = nl_study_example_summary_table();
+  nl_study_example_compare(j->photos[i], syn, j->names[i], j->cal[h] > 0 ? "calibrated" : nl_byexample_hist_name(j->kinds[h]),
+                           s, j->min_share, j->max_ratio, j->max_ks, j->bands[q], j->sum[q]);
+  /* the montage shows the first replicate, its top-left 256^2 at most */
+  if (!s) j->crops[ih] = crop(syn, j->size < 256 ? j->size : 256);
+  nl_image_free(syn);
+}
+
 nl_table *nl_study_example_photos(nl_harness *r, char (*names)[64], nl_image **photos, int np, int size,
                                   int K, unsigned long seed, double min_share, double max_ratio, double max_ks)
 {
@@ -314,31 +378,40 @@ nl_table *nl_study_example_photos(nl_harness *r, char (*names)[64], nl_image **p
   nl_table *mt = nl_table_alloc(19, mcols);
   /* gauss33 and paper10 as the paper synthesises; calibrated = the `example` command's default (gauss33 with
    * the synthesis-time band calibration, nl_byexample.h) */
-  enum { NREP = 3, NP = NREP + 1 };
   const nl_byexample_hist_kind kinds[NREP] = {NL_HIST_GAUSS, NL_HIST_PAPER, NL_HIST_GAUSS};
   const int cal[NREP] = {0, 0, NL_EXAMPLE_CALIBRATE};
   const nl_image **panels = nl_xmalloc((size_t)(NP * np + 1) * sizeof *panels);
   char (*labels)[64] = nl_xmalloc((size_t)(NP * np + 1) * sizeof *labels);
   const char **lab = nl_xmalloc((size_t)(NP * np + 1) * sizeof *lab);
+  size_t nih = (size_t)np * NREP, nitem = nih * (size_t)K;
+  photos_job j = {photos, names, kinds, cal, K, size, seed, min_share, max_ratio, max_ks,
+                  nl_xmalloc(nih * sizeof *j.par), nl_xcalloc(nitem, sizeof *j.bands), nl_xcalloc(nitem, sizeof *j.sum),
+                  nl_xcalloc(nih, sizeof *j.crops), nl_xcalloc(nih, sizeof *j.st), nl_xcalloc(nitem, sizeof *j.sst),
+                  nl_xmalloc(nih * sizeof *j.err), nl_xmalloc(nitem * sizeof *j.serr)};
+  nl_parallel_for(nih, nl_harness_threads(r), analyse_item, &j);
+  nl_parallel_for(nitem, nl_harness_threads(r), photo_item, &j);
   for (int i = 0; i < np; i++) {
     panels[NP * i] = photos[i];
     snprintf(labels[NP * i], 64, "%s %dx%d", names[i], photos[i]->width, photos[i]->height);
     for (int h = 0; h < NREP; h++) {
+      size_t ih = (size_t)i * NREP + (size_t)h;
       const char *rn = cal[h] ? "calibrated" : nl_byexample_hist_name(kinds[h]);
+      if (j.st[ih]) nl_harness_die(r, 1, "%s: %s", names[i], j.err[ih].msg);
       for (int s = 0; s < K; s++) {
-        nl_error err;
-        nl_image *syn = nl_study_example_photo(photos[i], names[i], kinds[h], cal[h], size, nl_seed_replicate(seed, s), s,
-                                               min_share, max_ratio, max_ks, bands, sum, &err);
-        if (!syn) nl_harness_die(r, 1, "%s: %s", names[i], err.msg);
-        /* the montage shows the first replicate, its top-left 256^2 at most */
-        if (!s) panels[NP * i + 1 + h] = crop(syn, size < 256 ? size : 256);
-        nl_image_free(syn);
-        snprintf(labels[NP * i + 1 + h], 64, "%s %dx%d", rn, size < 256 ? size : 256, size < 256 ? size : 256);
+        size_t q = ih * (size_t)K + (size_t)s;
+        if (j.sst[q]) nl_harness_die(r, 1, "%s: %s", names[i], j.serr[q].msg);
+        append_rows(bands, j.bands[q]);
+        append_rows(sum, j.sum[q]);
+        nl_table_free(j.bands[q]);
+        nl_table_free(j.sum[q]);
       }
+      panels[NP * i + 1 + h] = j.crops[ih];
+      snprintf(labels[NP * i + 1 + h], 64, "%s %dx%d", rn, size < 256 ? size : 256, size < 256 ? size : 256);
       mean_row(mt, bands, sum, photos[i], names[i], rn, K, min_share, max_ratio, max_ks);
     }
     nl_harness_progress(r, (i + 1.0) / np, names[i]);
   }
+  free(j.par); free(j.bands); free(j.sum); free(j.crops); free(j.st); free(j.sst); free(j.err); free(j.serr);
   for (int i = 0; i < NP * np; i++) lab[i] = labels[i];
   nl_harness_write_table(r, bands, "photos.tsv");
   nl_harness_write_table(r, sum, "photos_summary.tsv");
