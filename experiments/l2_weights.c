@@ -49,7 +49,7 @@ int main(int argc, char **argv)
   int nb = nl_byexample_band_count(size, size);
   double truth[MB], est[NE * MB], est2[MB], e[NE], f[NE], pw[NE];
   double *b_img = malloc((size_t)size * size * sizeof *b_img), *d_img = malloc((size_t)size * size * sizeof *d_img);
-  nl_byexample_transfer_measure(&T, tile, size, size, nb, frac, tseeds, nl_seed_stream(seed0, "l2.transfer", (unsigned long)size));
+  nl_byexample_transfer_measure(&T, tile, size, size, nb, frac, tseeds, nl_seed_stream(seed0, "l2.transfer", (unsigned long)size), nl_harness_threads(r));
   nl_byexample_trial(&T, t, seed0, FINE, truth, est, b_img, e, f, pw);
   nl_wavelet_bands b;
   nl_wavelet_bands_init(&b, nb, est, tile, nl_seed_stream(seed0, "l2.new_offsets", 0), NULL);   /* (d): new offsets */
@@ -81,8 +81,8 @@ int main(int argc, char **argv)
   for (int k = 0; k < sweep_seeds; k++) seeds[k] = nl_seed_stream(seed0, "l2.size_trial", (unsigned long)k);
   for (int s = 64, done = 0; s <= maxsize; s *= 2, done++) {
     int n = nl_byexample_band_count(s, s);
-    nl_byexample_transfer_measure(&T, tile, s, s, n, frac, tseeds, nl_seed_stream(seed0, "l2.transfer", (unsigned long)s));
-    nl_byexample_trials(&T, t, seeds, sweep_seeds, FINE, E, rms, bias);
+    nl_byexample_transfer_measure(&T, tile, s, s, n, frac, tseeds, nl_seed_stream(seed0, "l2.transfer", (unsigned long)s), nl_harness_threads(r));
+    nl_byexample_trials(&T, seeds, sweep_seeds, FINE, E, rms, bias, nl_harness_threads(r));   /* on the run's threads */
     for (int q = 0; q < NE; q++)
       for (int k = 0; k < n; k++) nl_table_append(bt, "iisdd", s, k, nl_byexample_estimator_names[q], rms[q * n + k], bias[q * n + k]);
     for (int k = 0; k < n && s == maxsize; k++) bbelow += rms[NL_BYEX_CORRECTED * n + k] < rms[k];

@@ -46,7 +46,13 @@ mkdir -p "$out/exemplars"
 "$exp" --quick --threads 1 --exemplars "$(cd "$(dirname "$0")/.." && pwd)/data/exemplars" --set max_size=64 \
   --set sweep_seeds=2 --out "$out.t1" > /dev/null
 cmp "$out/photos.tsv" "$out.t1/photos.tsv"
-"$exp" --quick --exemplars "$out/exemplars" --set max_size=64 --set sweep_seeds=2 --out "$out/fbm" > /dev/null
+# The transfer measurement's (replicate, band) renders and the size sweep's
+# trials are nl_parallel_for items too (nl_byexample_leak.h): Fig. 4's
+# weights as on two threads, and the fBm run's sweep (same sizes and seeds,
+# two threads; the sweep does not read the exemplars) as the one-thread run's.
+cmp "$out/weights.tsv" "$out.t1/weights.tsv"
+"$exp" --quick --threads 2 --exemplars "$out/exemplars" --set max_size=64 --set sweep_seeds=2 --out "$out/fbm" > /dev/null
+for t in estimators bands; do cmp "$out.t1/$t.tsv" "$out/fbm/$t.tsv"; done
 "$2" "$out/weights.tsv" 'rows=7' 'file:noise.png' 'corrected>=0'
 tsv_awk 'NR == 1 || n("band") == 0' "$out/weights.tsv" > "$out/weights_b0.tsv"
 tsv_awk 'NR == 1 || (n("band") >= 1 && n("band") <= 2)' "$out/weights.tsv" > "$out/weights_b12.tsv"

@@ -2,6 +2,7 @@
  * on the noise, Tukey (or Hann) taper, non-negative least squares. */
 #include "byexample/nl_byexample_leak.h"
 #include "spectrum/nl_spectrum.h"
+#include "base/nl_parallel.h"
 
 #include <float.h>
 #include <gsl/gsl_cdf.h>
@@ -30,29 +31,60 @@ static void powers(const double *img, int w, int h, int nbands, double frac, dou
   nl_byexample_band_power_taper(img, w, h, nbands, frac, tapered);
 }
 
+/* The transfer measurement's items (s, i): replicate s's noise of unit
+ * weight in band i, its powers into its own slot P[s nbands + i]; per-thread
+ * tile (reseeded when its replicate changes) and image. */
+typedef struct {
+  int tile, w, h, nbands;
+  double frac;
+  unsigned long seed;
+  double (*P)[2][MAXB];
+  nl_wavelet_tile *t[NL_PARALLEL_MAX];
+  long seeded[NL_PARALLEL_MAX];
+  double *img[NL_PARALLEL_MAX];
+} transfer_job;
+
+static void transfer_item(void *ctx, size_t item, int th)
+{
+  transfer_job *j = ctx;
+  int s = (int)(item / (size_t)j->nbands), i = (int)(item % (size_t)j->nbands);
+  unsigned long ss = nl_seed_stream(j->seed, "byexample.transfer", (unsigned long)s);
+  if (!j->t[th]) {
+    j->t[th] = nl_wavelet_tile_alloc(2, j->tile);
+    j->img[th] = nl_xmalloc((size_t)j->w * j->h * sizeof *j->img[th]);
+    j->seeded[th] = -1;
+  }
+  if (j->seeded[th] != s) { nl_wavelet_tile_seed(j->t[th], ss); j->seeded[th] = s; }
+  double unit[MAXB];
+  nl_wavelet_bands b;
+  for (int k = 0; k < j->nbands; k++) unit[k] = k == i;
+  nl_wavelet_bands_init(&b, j->nbands, unit, j->tile, ss, NULL);
+  nl_wavelet_bands_grid(j->t[th], &b, j->w, j->h, 0, 1, j->img[th]);
+  powers(j->img[th], j->w, j->h, j->nbands, j->frac, j->P[item][0], j->P[item][1]);
+}
+
 void nl_byexample_transfer_measure(nl_byexample_transfer *T, int tile, int w, int h, int nbands, double frac,
-                                   int nseeds, unsigned long seed)
+                                   int nseeds, unsigned long seed, int threads)
 {
   memset(T, 0, sizeof *T);
   T->w = w; T->h = h; T->nbands = nbands; T->tile = tile; T->frac = frac;
   T->sigma2 = nl_byexample_sigma2(tile);
-  nl_wavelet_tile *t = nl_wavelet_tile_alloc(2, tile);
-  double *img = nl_xmalloc((size_t)w * h * sizeof *img), unit[MAXB], p[2][MAXB];
-  for (int s = 0; s < nseeds; s++) {
-    unsigned long ss = nl_seed_stream(seed, "byexample.transfer", (unsigned long)s);
-    nl_wavelet_tile_seed(t, ss);
-    for (int i = 0; i < nbands; i++) {
-      nl_wavelet_bands b;
-      for (int j = 0; j < nbands; j++) unit[j] = j == i;
-      nl_wavelet_bands_init(&b, nbands, unit, tile, ss, NULL);
-      nl_wavelet_bands_grid(t, &b, w, h, 0, 1, img);
-      powers(img, w, h, nbands, frac, p[0], p[1]);
-      for (int k = 0; k < 2; k++)
-        for (int j = 0; j < nbands; j++) T->A[k][i * nbands + j] += p[k][j] / nseeds;
-    }
+  size_t n = (size_t)nseeds * (size_t)nbands;
+  transfer_job *j = nl_xcalloc(1, sizeof *j);
+  j->tile = tile; j->w = w; j->h = h; j->nbands = nbands; j->frac = frac; j->seed = seed;
+  j->P = nl_xmalloc((n ? n : 1) * sizeof *j->P);
+  nl_parallel_for(n, threads, transfer_item, j);
+  for (size_t q = 0; q < n; q++) {   /* summed in replicate and band order, as a serial loop sums */
+    int i = (int)(q % (size_t)nbands);
+    for (int k = 0; k < 2; k++)
+      for (int c = 0; c < nbands; c++) T->A[k][i * nbands + c] += j->P[q][k][c] / nseeds;
   }
-  free(img);
-  nl_wavelet_tile_free(t);
+  for (int t = 0; t < NL_PARALLEL_MAX; t++) {
+    if (j->t[t]) nl_wavelet_tile_free(j->t[t]);
+    free(j->img[t]);
+  }
+  free(j->P);
+  free(j);
 }
 
 /* Least squares on the columns cols[0..np-1] of M (m x n, m >= np) by
@@ -190,31 +222,63 @@ void nl_byexample_trial(const nl_byexample_transfer *T, nl_wavelet_tile *t, unsi
   }
 }
 
-void nl_byexample_trials(const nl_byexample_transfer *T, nl_wavelet_tile *t, const unsigned long *seeds, int n,
-                         int nfine, double *E, double *rms, double *bias)
+/* Trial k of nl_byexample_trials into its own slots (truth, est, E); a
+ * per-thread tile (each trial reseeds it) and image. */
+typedef struct {
+  const nl_byexample_transfer *T;
+  const unsigned long *seeds;
+  int n, nfine;
+  double *E, (*truth)[MAXB], (*est)[NL_BYEX_ESTIMATORS * MAXB];
+  nl_wavelet_tile *t[NL_PARALLEL_MAX];
+  double *img[NL_PARALLEL_MAX];
+} trials_job;
+
+static void trial_item(void *ctx, size_t k, int th)
+{
+  enum { NE = NL_BYEX_ESTIMATORS };
+  trials_job *j = ctx;
+  if (!j->t[th]) {
+    j->t[th] = nl_wavelet_tile_alloc(2, j->T->tile);
+    j->img[th] = nl_xmalloc((size_t)j->T->w * j->T->h * sizeof *j->img[th]);
+  }
+  double e[NE], f[NE], pw[NE];
+  nl_byexample_trial(j->T, j->t[th], j->seeds[k], j->nfine, j->truth[k], j->est[k], j->img[th], e, f, pw);
+  for (int q = 0; q < NE; q++) {
+    j->E[(0 * NE + q) * j->n + (int)k] = e[q];
+    j->E[(1 * NE + q) * j->n + (int)k] = f[q];
+    j->E[(2 * NE + q) * j->n + (int)k] = pw[q];
+  }
+}
+
+void nl_byexample_trials(const nl_byexample_transfer *T, const unsigned long *seeds, int n,
+                         int nfine, double *E, double *rms, double *bias, int threads)
 {
   enum { NE = NL_BYEX_ESTIMATORS };
   int nb = T->nbands;
-  double truth[MAXB], est[NE * MAXB], e[NE], f[NE], pw[NE], sq[NE * MAXB] = {0}, sum[NE * MAXB] = {0};
-  double *img = nl_xmalloc((size_t)T->w * T->h * sizeof *img);
-  for (int k = 0; k < n; k++) {
-    nl_byexample_trial(T, t, seeds[k], nfine, truth, est, img, e, f, pw);
-    for (int q = 0; q < NE; q++) {
-      E[(0 * NE + q) * n + k] = e[q];
-      E[(1 * NE + q) * n + k] = f[q];
-      E[(2 * NE + q) * n + k] = pw[q];
+  double sq[NE * MAXB] = {0}, sum[NE * MAXB] = {0};
+  trials_job *j = nl_xcalloc(1, sizeof *j);
+  j->T = T; j->seeds = seeds; j->n = n; j->nfine = nfine; j->E = E;
+  j->truth = nl_xmalloc((size_t)(n > 0 ? n : 1) * sizeof *j->truth);
+  j->est = nl_xmalloc((size_t)(n > 0 ? n : 1) * sizeof *j->est);
+  nl_parallel_for((size_t)(n > 0 ? n : 0), threads, trial_item, j);
+  for (int k = 0; k < n; k++)   /* sums in trial order */
+    for (int q = 0; q < NE; q++)
       for (int b = 0; b < nb; b++) {
-        double d = est[q * nb + b] - truth[b];
+        double d = j->est[k][q * nb + b] - j->truth[k][b];
         sq[q * nb + b] += d * d;
         sum[q * nb + b] += d;
       }
-    }
-  }
   for (int i = 0; i < NE * nb; i++) {
     if (rms) rms[i] = sqrt(sq[i] / n);
     if (bias) bias[i] = sum[i] / n;
   }
-  free(img);
+  for (int t = 0; t < NL_PARALLEL_MAX; t++) {
+    if (j->t[t]) nl_wavelet_tile_free(j->t[t]);
+    free(j->img[t]);
+  }
+  free(j->truth);
+  free(j->est);
+  free(j);
 }
 
 int nl_byexample_fit_all(const double *img, int w, int h, int tile, double frac, int nseeds, unsigned long tseed,
@@ -222,7 +286,7 @@ int nl_byexample_fit_all(const double *img, int w, int h, int tile, double frac,
 {
   nl_byexample_transfer T;
   double wts[MAXB];
-  nl_byexample_transfer_measure(&T, tile, w, h, nl_byexample_band_count(w, h), frac, nseeds, tseed);
+  nl_byexample_transfer_measure(&T, tile, w, h, nl_byexample_band_count(w, h), frac, nseeds, tseed, 1);   /* callers thread over images */
   for (int q = 0; q < NL_BYEX_ESTIMATORS; q++) {
     nl_byexample_estimate(&T, q, img, wts);
     nl_byexample_fit_residual(&T, wts, img, nsyn, rseed, resid[q]);

@@ -26,7 +26,7 @@
  *   corrected  steps 1-3
  *
  *   nl_byexample_transfer T;
- *   nl_byexample_transfer_measure(&T, NL_EXAMPLE_TILE, w, h, nbands, 0.25, 8, seed);
+ *   nl_byexample_transfer_measure(&T, NL_EXAMPLE_TILE, w, h, nbands, 0.25, 8, seed, threads);
  *   nl_byexample_estimate(&T, NL_BYEX_CORRECTED, img, wts);
  */
 #ifndef NL_BYEXAMPLE_LEAK_H
@@ -53,9 +53,11 @@ void nl_byexample_band_power_taper(const double *img, int w, int h, int nbands, 
 
 /* Measures A (raw and tapered by frac) on w x h noise: replicate s seeds the tile
  * (period `tile`) and the band offsets from nl_seed_stream(seed,
- * "byexample.transfer", s), s < nseeds. */
+ * "byexample.transfer", s), s < nseeds. The (replicate, band) renders run
+ * on `threads` threads (nl_parallel_for; summed in order afterwards, so A
+ * does not depend on the thread count). */
 void nl_byexample_transfer_measure(nl_byexample_transfer *T, int tile, int w, int h, int nbands, double frac,
-                                   int nseeds, unsigned long seed);
+                                   int nseeds, unsigned long seed, int threads);
 
 /* The weights of estimator `kind` (NL_BYEX_*) from a T->w x T->h image. */
 void nl_byexample_estimate(const nl_byexample_transfer *T, int kind, const double *img, double *wts);
@@ -74,11 +76,14 @@ double nl_byexample_nnls(const double *M, int m, int n, const double *b, double 
 void nl_byexample_trial(const nl_byexample_transfer *T, nl_wavelet_tile *t, unsigned long seed, int nfine,
                         double *truth, double *est, double *img, double *err, double *fine, double *power);
 
-/* n trials (nl_byexample_trial with seeds[k]) into E[(c * NL_BYEX_ESTIMATORS
- * + kind) * n + k], c = 0 err, 1 fine, 2 power; per band (may be NULL) the
- * RMS error rms[kind * nbands + k] and mean error bias[...] over the trials. */
-void nl_byexample_trials(const nl_byexample_transfer *T, nl_wavelet_tile *t, const unsigned long *seeds, int n,
-                         int nfine, double *E, double *rms, double *bias);
+/* n trials (nl_byexample_trial with seeds[k], each on its own tile of period
+ * T->tile) into E[(c * NL_BYEX_ESTIMATORS + kind) * n + k], c = 0 err, 1
+ * fine, 2 power; per band (may be NULL) the RMS error rms[kind * nbands + k]
+ * and mean error bias[...] over the trials. The trials run on `threads`
+ * threads (nl_parallel_for; sums in trial order, so the results do not
+ * depend on the thread count). */
+void nl_byexample_trials(const nl_byexample_transfer *T, const unsigned long *seeds, int n,
+                         int nfine, double *E, double *rms, double *bias, int threads);
 
 /* How well weights reproduce an image's band powers: the band powers of the
  * noise of weights wts, averaged over nsyn syntheses (tile and offsets from

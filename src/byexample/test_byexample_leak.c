@@ -39,7 +39,7 @@ NL_TEST(transfer_matrix)
 {
   nl_byexample_transfer T;
   int nb = nl_byexample_band_count(128, 128);
-  nl_byexample_transfer_measure(&T, NL_EXAMPLE_TILE, 128, 128, nb, 1.0, 2, 7);
+  nl_byexample_transfer_measure(&T, NL_EXAMPLE_TILE, 128, 128, nb, 1.0, 2, 7, 1);
   double far[2] = {0, 0};
   for (int i = 0; i < nb; i++) {
     double tot = 0;
