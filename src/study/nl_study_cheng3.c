@@ -1,6 +1,7 @@
 /* C8's harness side: seeds into a summary, ECDF and voxel tables, slices
  * (nl_study_cheng3.h). */
 #include "study/nl_study_cheng3.h"
+#include "base/nl_parallel.h"
 #include "study/nl_study.h"
 #include "study/nl_study_cheng.h"
 #include "stats/nl_stats.h"
@@ -43,27 +44,50 @@ static void summary_add(nl_table *t, const char *pattern, const char *table, con
   free(x);
 }
 
+/* Seed i of nl_study_cheng3_seeds: its own slots (ev[i], ev0[i], st[i],
+ * err[i], and the table for seed 0), its own seed nl_seed_replicate(seed, i),
+ * so the results do not depend on the thread count (nl_parallel.h). */
+typedef struct {
+  const nl_cheng3_config *c;
+  const nl_cheng3_pattern *pat;
+  unsigned long seed;
+  nl_cheng3_eval *ev, *ev0;
+  nl_cheng3_table *first;
+  nl_status *st;
+  nl_error *err;
+} seeds_job;
+
+static void seed_item(void *ctx, size_t i, int thread)
+{
+  (void)thread;
+  seeds_job *j = ctx;
+  j->st[i] = nl_cheng3_run(j->c, j->pat, nl_seed_replicate(j->seed, (long)i), &j->ev[i], &j->ev0[i], NULL,
+                           i ? NULL : &j->first, &j->err[i]);
+}
+
 nl_cheng3_table *nl_study_cheng3_seeds(nl_harness *r, const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
                                        nl_table *sum, const char *name, nl_cheng3_table **start, double *seconds)
 {
   int k = nl_harness_seeds(r);
   nl_cheng3_eval *ev = nl_xmalloc(2 * (size_t)k * sizeof *ev), *ev0 = ev + k;
-  nl_cheng3_table *first = NULL;
+  nl_status *st = nl_xcalloc((size_t)k, sizeof *st);
+  nl_error *err = nl_xmalloc((size_t)k * sizeof *err);
   double t0 = nl_time_now();
-  for (int i = 0; i < k; i++) {
-    nl_error err;
-    unsigned long seed = nl_seed_replicate(nl_harness_seed(r), i);
-    if (nl_cheng3_run(c, pat, seed, &ev[i], &ev0[i], NULL, i ? NULL : &first, &err) != NL_OK)
-      nl_harness_die(r, 1, "%s", err.msg);
-    nl_harness_progress(r, (i + 1.0) / k, name);
-  }
+  /* The k seed runs on the run's threads; rows from them in seed order. */
+  seeds_job j = {c, pat, nl_harness_seed(r), ev, ev0, NULL, st, err};
+  nl_parallel_for((size_t)k, nl_harness_threads(r), seed_item, &j);
+  for (int i = 0; i < k; i++)   /* the first failure in seed order, as a serial loop met it */
+    if (st[i] != NL_OK) nl_harness_die(r, 1, "%s", err[i].msg);
+  nl_harness_progress(r, 1.0, name);
   if (seconds) *seconds = nl_time_now() - t0;
   summary_add(sum, name, "optimised", ev, k);
   summary_add(sum, name, "random", ev0, k);
   *start = nl_cheng3_table_alloc(c->m);
   nl_cheng3_table_seed(*start, nl_seed_replicate(nl_harness_seed(r), 0));   /* the first run's start */
   free(ev);
-  return first;
+  free(st);
+  free(err);
+  return j.first;
 }
 
 static void sorted_u(const double *x, size_t m, double a, double b, double *out)
