@@ -86,10 +86,7 @@ int main(int argc, char **argv)
   double swap = nl_harness_param(r, "swap", 1.0, 0, 1, "fraction of the high-frequency entries permuted in a reproduction (1: all, the thesis; 0: none)");
   nl_study_cheng_ready(&s);
   nl_table *reps = nl_study_cheng_reps_alloc(), *sum = nl_study_cheng_reps_summary_alloc();
-  for (int t = 0; t < NTEX; t++) {
-    nl_study_cheng_reproduce_case(&s, reps, sum, &nl_study_cheng_thesis_gmm_tables[t], &po, &mo, nrep, swap);
-    nl_harness_progress(r, (t + 1.0) / NTEX, nl_study_cheng_thesis_gmm_tables[t].texture);
-  }
+  nl_study_cheng_reproduce_cases(&s, reps, sum, nl_study_cheng_thesis_gmm_tables, NTEX, &po, &mo, nrep, swap);
   nl_harness_write_table(r, reps, "reproductions.tsv");
   nl_harness_write_table(r, sum, "summary.tsv");
   const char *tcols[] = {"ms_reproduce", "ms_texture", "seconds_opt"};   /* times: never compared */

@@ -331,5 +331,12 @@ nl_table *nl_study_cheng_reps_summary_alloc(void);
 void nl_study_cheng_reproduce_case(const nl_study_cheng *s, nl_table *reps, nl_table *sum, const nl_study_cheng_thesis_gmm *th,
                                    const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nrep,
                                    double swap);
+/* The same for n textures ths[0..n-1], rows in texture order: their originals
+ * as one nl_parallel_for on the run's threads, then per texture its pool
+ * (threaded inside), mixture and reproductions (drawn in order, evaluated on
+ * the run's threads). The tables do not depend on the thread count. */
+void nl_study_cheng_reproduce_cases(const nl_study_cheng *s, nl_table *reps, nl_table *sum, const nl_study_cheng_thesis_gmm *ths,
+                                    int n, const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nrep,
+                                    double swap);
 
 #endif

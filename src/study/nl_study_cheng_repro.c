@@ -362,24 +362,60 @@ static const char *const c6_sum_cols[] = {
 
 typedef struct { double ks[4096], con[4096], p[4096], d[4096], ms[4096], mst[4096], rp[4096], ct[4096]; } samples;
 
-/* One reproduction evaluated: E_KS, E_Con, two-sample D against the original's angles. */
-static void reproduce_one(nl_harness *r, const nl_study_cheng_repro *rp, const nl_cheng_model *m, const nl_cheng_config *c,
-                          const nl_cheng_pattern *pat, double swap, gsl_rng *rng, nl_noise_grad2 *out, samples *s, int i)
+/* One reproduction's evaluation, item i of a nl_parallel_for: the texture a
+ * user waits for (its time added to the draw's), E_KS, E_Con and the
+ * two-sample D against the original's angles, into slot i of s. The draws
+ * themselves stay on the calling thread, in order, from the one generator
+ * (nl_cheng_reproduce), so the tables are those of the serial loop. */
+typedef struct {
+  const nl_study_cheng_repro *rp;
+  const nl_cheng_config *c;
+  const nl_cheng_pattern *pat;
+  nl_noise_grad2 **out;
+  samples *s;
+  nl_status *st;
+  nl_error *err;
+} reps_job;
+
+static void evaluate_item(void *ctx, size_t i, int thread)
 {
-  nl_error err;
+  (void)thread;
+  reps_job *j = ctx;
+  samples *s = j->s;
   double t0 = nl_time_now();
-  if (nl_cheng_reproduce(rp->opt, m, swap, rng, out, &err)) nl_harness_die(r, 1, "%s", err.msg);
-  double t1 = nl_time_now();
-  nl_image *tex = nl_study_cheng_texture_image(out, c, 256);   /* what a user waits for: table + texture */
-  s->mst[i] = 1e3 * (nl_time_now() - t0);
-  s->ms[i] = 1e3 * (t1 - t0);
+  nl_image *tex = nl_study_cheng_texture_image(j->out[i], j->c, 256);   /* what a user waits for: table + texture */
+  s->mst[i] = s->ms[i] + 1e3 * (nl_time_now() - t0);
   nl_image_free(tex);
   nl_cheng_eval ev;
   nl_stats_ks_result ks;
-  if (nl_cheng_evaluate(out, c, pat, &ev, &err) ||
-      nl_stats_ks2_test(out->angle, out->m, rp->opt->angle, rp->opt->m, &ks, &err)) nl_harness_die(r, 1, "%s", err.msg);
+  if ((j->st[i] = nl_cheng_evaluate(j->out[i], j->c, j->pat, &ev, &j->err[i])) ||
+      (j->st[i] = nl_stats_ks2_test(j->out[i]->angle, j->out[i]->m, j->rp->opt->angle, j->rp->opt->m, &ks, &j->err[i])))
+    return;
   s->ks[i] = ev.e_ks; s->con[i] = ev.e_con; s->p[i] = ev.p_ks; s->d[i] = ks.d;
   s->rp[i] = ev.r_pattern; s->ct[i] = ev.contrast;
+}
+
+/* nrep reproductions of rp's model m with the given swap into out[0..nrep-1]
+ * and slots 0..nrep-1 of s: drawn in order on this thread, evaluated on the
+ * run's threads. */
+static void reproduce_all(nl_harness *r, const nl_study_cheng_repro *rp, const nl_cheng_model *m, const nl_cheng_config *c,
+                          const nl_cheng_pattern *pat, double swap, gsl_rng *rng, nl_noise_grad2 **out, samples *s, int nrep)
+{
+  nl_error err;
+  for (int i = 0; i < nrep; i++) {
+    out[i] = nl_noise_grad2_alloc(rp->opt->m);
+    double t0 = nl_time_now();
+    if (nl_cheng_reproduce(rp->opt, m, swap, rng, out[i], &err)) nl_harness_die(r, 1, "%s", err.msg);
+    s->ms[i] = 1e3 * (nl_time_now() - t0);
+  }
+  nl_status *st = nl_xcalloc((size_t)nrep, sizeof *st);
+  nl_error *errs = nl_xmalloc((size_t)nrep * sizeof *errs);
+  reps_job j = {rp, c, pat, out, s, st, errs};
+  nl_parallel_for((size_t)nrep, nl_harness_threads(r), evaluate_item, &j);
+  for (int i = 0; i < nrep; i++)   /* the first failure in order, as a serial loop met it */
+    if (st[i]) nl_harness_die(r, 1, "%s", errs[i].msg);
+  free(st);
+  free(errs);
 }
 
 static double frac_below(const double *x, int n, double v) { int b = 0; for (int i = 0; i < n; i++) b += x[i] < v; return (double)b / n; }
@@ -425,39 +461,36 @@ nl_table *nl_study_cheng_reps_summary_alloc(void)
   return nl_table_alloc(sizeof c6_sum_cols / sizeof *c6_sum_cols, c6_sum_cols);
 }
 
-void nl_study_cheng_reproduce_case(const nl_study_cheng *st, nl_table *reps, nl_table *sum, const nl_study_cheng_thesis_gmm *th,
-                                   const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nrep,
-                                   double swap)
+/* Texture th from its original and pool (rp) on: mixture, reproductions,
+ * rows, montage and CDF table. */
+static void reproduce_from(const nl_study_cheng *st, nl_table *reps, nl_table *sum, const nl_study_cheng_thesis_gmm *th,
+                           const nl_cheng_config *cp, const nl_cheng_pattern *pat, nl_study_cheng_repro *rp,
+                           const nl_cheng_model_options *mo, int nrep, double swap)
 {
   nl_harness *r = st->r;
+  const nl_cheng_config c = *cp;
   samples *s = nl_xcalloc(1, sizeof *s);
-  nl_cheng_config c;
-  nl_study_cheng_repro rp;
-  nl_cheng_pattern *pat = nl_study_cheng_repro_open(st, th, po, &c, &rp);
-  nl_cheng_model *m = nl_study_cheng_matched_model(r, rp.pool, th, mo);
-  s->ks[0] = rp.ev.e_ks; s->con[0] = rp.ev.e_con; s->p[0] = rp.ev.p_ks;
-  s->rp[0] = rp.ev.r_pattern; s->ct[0] = rp.ev.contrast;
-  summary_row(sum, th->texture, "original", s, 1, &rp, m->k);
+  nl_cheng_model *m = nl_study_cheng_matched_model(r, rp->pool, th, mo);
+  s->ks[0] = rp->ev.e_ks; s->con[0] = rp->ev.e_con; s->p[0] = rp->ev.p_ks;
+  s->rp[0] = rp->ev.r_pattern; s->ct[0] = rp->ev.contrast;
+  summary_row(sum, th->texture, "original", s, 1, rp, m->k);
   if (!m->gmm) {   /* degenerate model: reported, nothing to reproduce */
     nl_harness_text(r, "%s: no mixture (%s), no reproductions.\n", th->texture, m->msg);
   } else {
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     gsl_rng_set(rng, nl_seed_stream(nl_harness_seed(r), "c6.reproduce", 0));
-    nl_noise_grad2 *g[NSHOW];
+    nl_noise_grad2 **g = nl_xmalloc((size_t)nrep * sizeof *g);
     const double swaps[2] = {swap, 0.0};   /* and without the swap, to separate the two effects */
     for (int w = 0; w < 2; w++) {
-      for (int i = 0; i < nrep; i++) {
-        nl_noise_grad2 *out = nl_noise_grad2_alloc(rp.opt->m);
-        reproduce_one(r, &rp, m, &c, pat, swaps[w], rng, out, s, i);
+      reproduce_all(r, rp, m, &c, pat, swaps[w], rng, g, s, nrep);
+      for (int i = 0; i < nrep; i++)
         nl_table_append(reps, "sdddddddd", th->texture, swaps[w], (double)i, s->ks[i], s->p[i], s->con[i], s->d[i], s->ms[i], s->mst[i]);
-        if (w == 0 && i < NSHOW) g[i] = out; else nl_noise_grad2_free(out);
-      }
       char kind[48];
       snprintf(kind, sizeof kind, "reproduced_swap_%g", swaps[w]);
-      summary_row(sum, th->texture, kind, s, nrep, &rp, m->k);
+      summary_row(sum, th->texture, kind, s, nrep, rp, m->k);
       if (w == 0) {
-        montage(r, th->texture, &c, g, s, &rp);
-        const nl_noise_grad2 *tabs[NSHOW + 1] = {rp.opt};
+        montage(r, th->texture, &c, g, s, rp);
+        const nl_noise_grad2 *tabs[NSHOW + 1] = {rp->opt};
         const char *names[NSHOW + 1] = {"original", "r1", "r2", "r3", "r4", "r5", "r6", "r7", "r8"};
         for (int i = 0; i < NSHOW; i++) tabs[i + 1] = g[i];
         nl_table *cdf = nl_study_cheng_cdf_table(tabs, names, NSHOW + 1);
@@ -465,13 +498,72 @@ void nl_study_cheng_reproduce_case(const nl_study_cheng *st, nl_table *reps, nl_
         snprintf(file, sizeof file, "cdf_%s.tsv", th->texture);
         nl_harness_write_table(r, cdf, file);
         nl_table_free(cdf);
-        for (int i = 0; i < NSHOW; i++) nl_noise_grad2_free(g[i]);
       }
+      for (int i = 0; i < nrep; i++) nl_noise_grad2_free(g[i]);
     }
+    free(g);
     gsl_rng_free(rng);
   }
   nl_cheng_model_free(m);
+  free(s);
+}
+
+void nl_study_cheng_reproduce_case(const nl_study_cheng *st, nl_table *reps, nl_table *sum, const nl_study_cheng_thesis_gmm *th,
+                                   const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nrep,
+                                   double swap)
+{
+  nl_cheng_config c;
+  nl_study_cheng_repro rp;
+  nl_cheng_pattern *pat = nl_study_cheng_repro_open(st, th, po, &c, &rp);
+  reproduce_from(st, reps, sum, th, &c, pat, &rp, mo, nrep, swap);
   nl_study_cheng_repro_clear(&rp);
   nl_cheng_pattern_free(pat);
-  free(s);
+}
+
+/* The n textures' originals (one multi-level run each, serial inside) as
+ * items of one nl_parallel_for: each writes its own rp[i], st[i], err[i]. */
+typedef struct {
+  const nl_cheng_config *c;
+  nl_cheng_pattern **pat;
+  unsigned long seed;
+  nl_study_cheng_repro *rp;
+  nl_status *st;
+  nl_error *err;
+} originals_job;
+
+static void original_item(void *ctx, size_t i, int thread)
+{
+  (void)thread;
+  originals_job *j = ctx;
+  j->st[i] = nl_study_cheng_repro_original(&j->c[i], j->pat[i], j->seed, &j->rp[i], &j->err[i]);
+}
+
+void nl_study_cheng_reproduce_cases(const nl_study_cheng *st, nl_table *reps, nl_table *sum, const nl_study_cheng_thesis_gmm *ths,
+                                    int n, const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nrep,
+                                    double swap)
+{
+  nl_harness *r = st->r;
+  nl_cheng_config *c = nl_xmalloc((size_t)n * sizeof *c);
+  nl_cheng_pattern **pat = nl_xmalloc((size_t)n * sizeof *pat);
+  nl_study_cheng_repro *rp = nl_xcalloc((size_t)n, sizeof *rp);
+  nl_status *sts = nl_xcalloc((size_t)n, sizeof *sts);
+  nl_error *errs = nl_xmalloc((size_t)n * sizeof *errs);
+  for (int i = 0; i < n; i++) {   /* as nl_study_cheng_repro_open */
+    pat[i] = nl_study_cheng_pattern(st, ths[i].pattern);
+    c[i] = st->c;
+    c[i].con = ths[i].con;
+  }
+  originals_job j = {c, pat, nl_harness_seed(r), rp, sts, errs};
+  nl_parallel_for((size_t)n, nl_harness_threads(r), original_item, &j);
+  for (int i = 0; i < n; i++) {
+    nl_error err;
+    if (sts[i]) nl_harness_die(r, 1, "%s: %s", ths[i].texture, errs[i].msg);
+    if (nl_study_cheng_repro_pool(&rp[i], &c[i], pat[i], po, nl_harness_seed(r), &err))   /* Q runs on the run's threads */
+      nl_harness_die(r, 1, "%s: %s", ths[i].texture, err.msg);
+    reproduce_from(st, reps, sum, &ths[i], &c[i], pat[i], &rp[i], mo, nrep, swap);
+    nl_study_cheng_repro_clear(&rp[i]);
+    nl_cheng_pattern_free(pat[i]);
+    nl_harness_progress(r, (i + 1.0) / n, ths[i].texture);
+  }
+  free(c); free(pat); free(rp); free(sts); free(errs);
 }
