@@ -21,7 +21,8 @@ nl_status nl_study_pngs(const char *dir, char ***paths, int *n, nl_error *err);
 void nl_study_paths_free(char **paths);
 /* Both for a program: "--exemplars DIR" (default data/exemplars) removed
  * from argv and the PNG files of DIR; on error prints "PROG: message" and
- * exits 2 (before the harness touches anything). */
+ * exits 2 (before the harness touches anything). With glibc it also keeps
+ * freed large buffers in the process (mallopt; speed only, see the .c). */
 char **nl_study_exemplars_option(int *argc, char **argv, const char *prog, const char **dir, int *n);
 /* Every photograph's fit by every estimator (nl_byexample_fit_all on its
  * luminance cropped to max, taper fraction frac): rows exemplar (file name), width, height,
