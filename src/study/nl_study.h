@@ -253,7 +253,10 @@ nl_table *nl_study_example_gauss_table(size_t n, int K, unsigned long seed0);
  * checked band whose mean power is farthest from the photo's, passes of K,
  * replicates failing by KS and by band, the photo's largest saturation) and
  * the montage photos_montage.png (photo | gauss33 | paper10 | calibrated per
- * row, top-left 256^2 crops); returns the photos_mean table (caller frees). */
+ * row, top-left 256^2 crops); returns the photos_mean table (caller frees).
+ * The analyses (one per photo and representation) and the syntheses (one per
+ * replicate) run on the harness's threads, rows added in order afterwards:
+ * the tables do not depend on the thread count. */
 nl_table *nl_study_example_photos(nl_harness *r, char (*names)[64], nl_image **photos, int np, int size,
                                   int K, unsigned long seed, double min_share, double max_ratio, double max_ks);
 
