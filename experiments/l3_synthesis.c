@@ -99,7 +99,7 @@ int main(int argc, char **argv)
   }
   nl_harness_write_table(r, kt, "ks.tsv");
   nl_harness_write_table(r, ft, "spline.tsv");
-  nl_table *gt = nl_study_example_gauss_table((size_t)size * size, K, seed0);
+  nl_table *gt = nl_study_example_gauss_table((size_t)size * size, K, seed0, nl_harness_threads(r));
   nl_harness_write_table(r, gt, "gauss.tsv");
   nl_table *pt = nl_study_example_photos(r, names, photos, np, psize, K, seed0, min_share, max_ratio, max_ks);
 

@@ -243,7 +243,7 @@ int nl_study_example_load(const char *dir, char (*names)[64], nl_image **photos,
 /* nl_study_example_gauss for the paper's and the Gaussian-knot representation
  * over K seeds: representation, n, ks_mean/sd, tail_mean/sd, tail_gauss (the
  * Gaussian's own 2 Q(2.5)). Caller frees. */
-nl_table *nl_study_example_gauss_table(size_t n, int K, unsigned long seed0);
+nl_table *nl_study_example_gauss_table(size_t n, int K, unsigned long seed0, int threads);   /* replicates on `threads` threads */
 /* Every photograph through nl_study_example_photo with three representations
  * (gauss33, paper10 as the paper synthesises, and calibrated = gauss33 with
  * NL_EXAMPLE_CALIBRATE rounds, the `example` command's default) and K
