@@ -92,6 +92,7 @@ void nl_gmm_options_default(nl_gmm_options *o)
   o->seed = 0;
   o->init_labels = NULL;
   o->threads = 1;
+  o->memo = NULL;
 }
 
 size_t nl_gmm_nparams(size_t k, size_t d, nl_gmm_covariance covariance)
@@ -113,7 +114,10 @@ static size_t cov_size(const nl_gmm *g)
  * small process-wide cache (at most CACHE_SLOTS arrays, CACHE_MAX bytes,
  * behind a mutex) for the next model. Not per thread: arrays held only in
  * thread-local storage would be lost when a worker thread ends, and look
- * leaked to LeakSanitizer, which our sanitizer runs keep off TLS (use_tls=0). No value is ever read before it is written,
+ * leaked to LeakSanitizer, which our sanitizer runs keep off TLS (use_tls=0). A freed array
+ * that finds the cache full pushes out smaller ones (a larger array serves
+ * their requests too): C5's quick run alternates 34 MB and 79 MB arrays, and
+ * keeping the small ones re-zeroed the large ones' pages for every path. No value is ever read before it is written,
  * so the results do not depend on which memory a model gets. A header in
  * front of each array keeps its size. */
 #define HUGE_PAGE ((size_t)2 << 20)
@@ -168,9 +172,23 @@ static void big_free(double *p)
   if (bytes >= 2 * HUGE_PAGE) {
     pthread_mutex_lock(&cache_lock);
     int kept = 0;
-    if (cache_total + bytes <= CACHE_MAX)
-      for (int q = 0; q < CACHE_SLOTS && !kept; q++)
-        if (!cache[q].base) { cache[q] = (cached){base, bytes}; cache_total += bytes; kept = 1; }
+    for (;;) {   /* room for it: smaller arrays make way (a larger one serves their requests too) */
+      int freeslot = -1, small = -1;
+      for (int q = 0; q < CACHE_SLOTS; q++) {
+        if (!cache[q].base) freeslot = q;
+        else if (cache[q].bytes < bytes && (small < 0 || cache[q].bytes < cache[small].bytes)) small = q;
+      }
+      if (freeslot >= 0 && cache_total + bytes <= CACHE_MAX) {
+        cache[freeslot] = (cached){base, bytes};
+        cache_total += bytes;
+        kept = 1;
+        break;
+      }
+      if (small < 0) break;
+      free(cache[small].base);
+      cache_total -= cache[small].bytes;
+      cache[small].base = NULL;
+    }
     pthread_mutex_unlock(&cache_lock);
     if (kept) return;
   }
@@ -657,6 +675,175 @@ void nl_gmm_sample(const nl_gmm *g, gsl_rng *rng, size_t n, double *out, int *la
   gsl_ran_discrete_free(pick);
 }
 
+/* ---- the memo of fits ------------------------------------------------------ */
+
+/* Models kept at most, their bytes, and the largest kept: a copy costs its
+ * pages' first touch, so only models cheaper to copy than to fit are kept
+ * (C5's 152-column mixtures, 23 MB at K = 42, not its 484-column ones). */
+#define MEMO_MODELS 8
+#define MEMO_MODEL_BYTES ((size_t)192 << 20)
+#define MEMO_ONE_MODEL ((size_t)32 << 20)
+#define MEMO_MIN_ROWS 1000   /* fewer rows: a fit is about as cheap as the copy */
+
+typedef struct { double *x; size_t n, d; unsigned long long hash; } memo_rows;
+typedef struct { size_t rows, k; unsigned long seed; nl_gmm_covariance cov; double tol, reg; size_t max_iter; } memo_key;
+typedef struct { memo_key key; nl_gmm_step step; } memo_step;
+typedef struct { memo_key key; nl_gmm *g; size_t bytes; } memo_model;
+
+struct nl_gmm_memo {
+  pthread_mutex_t lock;
+  memo_rows *rows;
+  size_t nrows, caprows;
+  memo_step *steps;
+  size_t nsteps, capsteps;
+  memo_model models[MEMO_MODELS];   /* oldest first */
+  size_t nmodels, model_bytes;
+  size_t fitted, reused;
+};
+
+nl_gmm_memo *nl_gmm_memo_alloc(void)
+{
+  nl_gmm_memo *m = nl_xcalloc(1, sizeof *m);
+  pthread_mutex_init(&m->lock, NULL);
+  return m;
+}
+
+void nl_gmm_memo_free(nl_gmm_memo *m)
+{
+  if (!m) return;
+  for (size_t i = 0; i < m->nrows; i++) free(m->rows[i].x);
+  for (size_t i = 0; i < m->nmodels; i++) nl_gmm_free(m->models[i].g);
+  free(m->rows); free(m->steps);
+  pthread_mutex_destroy(&m->lock);
+  free(m);
+}
+
+void nl_gmm_memo_counts(const nl_gmm_memo *m, size_t *fitted, size_t *reused)
+{
+  *fitted = m ? m->fitted : 0;
+  *reused = m ? m->reused : 0;
+}
+
+/* FNV-1a over the bytes: only to skip most comparisons; equality is memcmp. */
+static unsigned long long rows_hash(const double *x, size_t count)
+{
+  const unsigned char *b = (const unsigned char *)x;
+  unsigned long long h = 1469598103934665603ULL;
+  for (size_t i = 0; i < count * sizeof(double); i += 8) {   /* 8 bytes a step */
+    unsigned long long v;
+    memcpy(&v, b + i, 8);
+    h = (h ^ v) * 1099511628211ULL;
+  }
+  return h;
+}
+
+/* Index of the rows x (n x d) in the memo, added (copied) if new. */
+static size_t memo_rows_index(nl_gmm_memo *m, const double *x, size_t n, size_t d)
+{
+  unsigned long long h = rows_hash(x, n * d);
+  pthread_mutex_lock(&m->lock);
+  size_t i;
+  for (i = 0; i < m->nrows; i++)
+    if (m->rows[i].n == n && m->rows[i].d == d && m->rows[i].hash == h && !memcmp(m->rows[i].x, x, n * d * sizeof(double))) break;
+  if (i == m->nrows) {
+    if (m->nrows == m->caprows) {
+      m->caprows = m->caprows ? 2 * m->caprows : 16;
+      m->rows = nl_xrealloc(m->rows, m->caprows * sizeof *m->rows);
+    }
+    double *copy = nl_xmalloc(n * d * sizeof(double));
+    memcpy(copy, x, n * d * sizeof(double));
+    m->rows[m->nrows++] = (memo_rows){copy, n, d, h};
+  }
+  pthread_mutex_unlock(&m->lock);
+  return i;
+}
+
+static int key_eq(const memo_key *a, const memo_key *b)
+{
+  return a->rows == b->rows && a->k == b->k && a->seed == b->seed && a->cov == b->cov &&
+         a->tol == b->tol && a->reg == b->reg && a->max_iter == b->max_iter;
+}
+
+static int memo_get_step(nl_gmm_memo *m, const memo_key *key, nl_gmm_step *step)
+{
+  int found = 0;
+  pthread_mutex_lock(&m->lock);
+  for (size_t i = 0; i < m->nsteps && !found; i++)
+    if (key_eq(&m->steps[i].key, key)) { *step = m->steps[i].step; found = 1; }
+  if (found) m->reused++;
+  pthread_mutex_unlock(&m->lock);
+  return found;
+}
+
+static void memo_put_step(nl_gmm_memo *m, const memo_key *key, const nl_gmm_step *step)
+{
+  pthread_mutex_lock(&m->lock);
+  m->fitted++;
+  int found = 0;
+  for (size_t i = 0; i < m->nsteps && !found; i++) found = key_eq(&m->steps[i].key, key);
+  if (!found) {
+    if (m->nsteps == m->capsteps) {
+      m->capsteps = m->capsteps ? 2 * m->capsteps : 64;
+      m->steps = nl_xrealloc(m->steps, m->capsteps * sizeof *m->steps);
+    }
+    m->steps[m->nsteps++] = (memo_step){*key, *step};
+  }
+  pthread_mutex_unlock(&m->lock);
+}
+
+static size_t model_bytes(const nl_gmm *g)
+{
+  size_t cs = cov_size(g);
+  return sizeof(double) * (g->k * (1 + g->d) + g->k * cs * (g->covariance == NL_GMM_FULL ? 3 : 2));
+}
+
+/* A copy of g with exactly g->k components. */
+static nl_gmm *gmm_clone(const nl_gmm *g)
+{
+  nl_gmm *c = gmm_new(g->k, g->k, g->d, g->covariance, 0);
+  size_t k = g->k, d = g->d, cs = cov_size(g);
+  memcpy(c->weights, g->weights, k * sizeof(double));
+  memcpy(c->means, g->means, k * d * sizeof(double));
+  memcpy(c->covs, g->covs, k * cs * sizeof(double));
+  memcpy(c->chol, g->chol, k * cs * sizeof(double));
+  if (g->prec) memcpy(c->prec, g->prec, k * d * d * sizeof(double));
+  c->n = g->n; c->loglik = g->loglik; c->aic = g->aic; c->bic = g->bic;
+  c->nparams = g->nparams; c->iterations = g->iterations; c->converged = g->converged;
+  return c;
+}
+
+/* A copy of the kept model of key, or NULL. */
+static nl_gmm *memo_get_model(nl_gmm_memo *m, const memo_key *key)
+{
+  nl_gmm *c = NULL;
+  pthread_mutex_lock(&m->lock);
+  for (size_t i = 0; i < m->nmodels && !c; i++)
+    if (key_eq(&m->models[i].key, key)) c = gmm_clone(m->models[i].g);
+  pthread_mutex_unlock(&m->lock);
+  return c;
+}
+
+/* Keeps a copy of g (unless kept already), dropping the oldest beyond the budget. */
+static void memo_put_model(nl_gmm_memo *m, const memo_key *key, const nl_gmm *g)
+{
+  size_t bytes = model_bytes(g);
+  if (bytes > MEMO_ONE_MODEL) return;
+  pthread_mutex_lock(&m->lock);
+  int found = 0;
+  for (size_t i = 0; i < m->nmodels && !found; i++) found = key_eq(&m->models[i].key, key);
+  if (!found) {
+    while (m->nmodels == MEMO_MODELS || m->model_bytes + bytes > MEMO_MODEL_BYTES) {
+      nl_gmm_free(m->models[0].g);
+      m->model_bytes -= m->models[0].bytes;
+      memmove(m->models, m->models + 1, (m->nmodels - 1) * sizeof *m->models);
+      m->nmodels--;
+    }
+    m->models[m->nmodels++] = (memo_model){*key, gmm_clone(g), bytes};
+    m->model_bytes += bytes;
+  }
+  pthread_mutex_unlock(&m->lock);
+}
+
 nl_status nl_gmm_select_aic(const double *x, size_t n, size_t d, size_t k0, double threshold,
                             size_t k_max, const nl_gmm_options *o, nl_gmm **best,
                             nl_gmm_step *path, size_t *npath, nl_error *err)
@@ -671,34 +858,58 @@ nl_status nl_gmm_select_aic(const double *x, size_t n, size_t d, size_t k0, doub
   if (sz) return sz;
   nl_gmm_options ok = *o;
   ok.init_labels = NULL;   /* labels are for one k; each fit seeds k-means */
+  nl_gmm shape = {.k = k0, .d = d, .covariance = o->covariance};
+  nl_status s = check_fit_args(&shape, x, n, &ok, err);
+  if (s) return s;
+  nl_gmm_memo *memo = o->memo;
+  memo_key key = {0, 0, o->seed, o->covariance, o->tol, o->reg_covar, o->max_iter};
+  if (memo) key.rows = memo_rows_index(memo, x, n, d);
   /* Two models with room for the largest K take turns (the best so far and
    * the one being fitted), and one workspace serves every K: K d^2 arrays
-   * are allocated, and their pages touched, once per path, not per K. */
-  size_t kcap = k_max < n ? k_max : n;
-  nl_gmm *spare = NULL;
+   * are allocated, and their pages touched, once per path, not per K. A K
+   * the memo knows gives its path entry without a fit; its model is only
+   * needed if the path selects it (bestk without bestg). */
+  size_t kcap = k_max < n ? k_max : n, bestk = 0;
+  nl_gmm *spare = NULL, *bestg = NULL;
+  double bestaic = 0;
   workspace w = {0};
-  nl_status s = NL_OK;
-  int threads = 0;
+  int threads = 0, ready = 0;
   for (size_t k = k0; k <= k_max && k <= n; k++) {
-    nl_gmm *g = spare ? spare : gmm_new(k, kcap, d, o->covariance, 0);
-    spare = NULL;
-    g->k = k;
-    g->nparams = nl_gmm_nparams(k, d, o->covariance);
-    if (k == k0) {
-      if ((s = check_fit_args(g, x, n, &ok, err))) { nl_gmm_free(g); return s; }
-      ws_init(&w, n, d, kcap, o->threads);
-      threads = blas_threads_limit(n, d);
+    nl_gmm_step step;
+    nl_gmm *g = NULL;
+    key.k = k;
+    if (!memo || !memo_get_step(memo, &key, &step)) {
+      g = spare ? spare : gmm_new(k, kcap, d, o->covariance, 0);
+      spare = NULL;
+      g->k = k;
+      g->nparams = nl_gmm_nparams(k, d, o->covariance);
+      if (!ready) { ws_init(&w, n, d, kcap, o->threads); threads = blas_threads_limit(n, d); ready = 1; }
+      s = fit_ws(g, x, n, &ok, &w, err);
+      if (s) { nl_gmm_free(g); break; }
+      step = (nl_gmm_step){k, g->loglik, g->aic, g->bic, g->iterations, g->converged};
+      if (memo) memo_put_step(memo, &key, &step);
     }
-    s = fit_ws(g, x, n, &ok, &w, err);
-    if (s) { nl_gmm_free(g); break; }
-    path[*npath] = (nl_gmm_step){k, g->loglik, g->aic, g->bic, g->iterations, g->converged};
-    (*npath)++;
-    if (*best && (*best)->aic - g->aic < threshold) { nl_gmm_free(g); break; }
-    spare = *best;
-    *best = g;
+    path[(*npath)++] = step;
+    if (bestk && bestaic - step.aic < threshold) { if (g) { nl_gmm_free(spare); spare = g; } break; }
+    if (bestg) { nl_gmm_free(spare); spare = bestg; }
+    bestg = g; bestk = k; bestaic = step.aic;
   }
-  blas_threads_restore(threads);
-  ws_free(&w);
+  if (!s && bestk && !bestg) {   /* the selected K came from the memo */
+    key.k = bestk;
+    if (!(bestg = memo_get_model(memo, &key))) {
+      bestg = spare ? spare : gmm_new(bestk, kcap, d, o->covariance, 0);
+      spare = NULL;
+      bestg->k = bestk;
+      bestg->nparams = nl_gmm_nparams(bestk, d, o->covariance);
+      if (!ready) { ws_init(&w, n, d, kcap, o->threads); threads = blas_threads_limit(n, d); ready = 1; }
+      s = fit_ws(bestg, x, n, &ok, &w, err);
+      if (s) { nl_gmm_free(bestg); bestg = NULL; }
+    }
+  }
+  if (!s && memo && bestg && n >= MEMO_MIN_ROWS) { key.k = bestk; memo_put_model(memo, &key, bestg); }
+  if (s) { nl_gmm_free(bestg); bestg = NULL; }   /* a failed path returns no model */
+  *best = bestg;
+  if (ready) { blas_threads_restore(threads); ws_free(&w); }
   nl_gmm_free(spare);
   return s;
 }

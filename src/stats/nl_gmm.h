@@ -68,6 +68,7 @@ typedef struct {
   const int *init_labels;   /* n labels in 0..k-1, or NULL for k-means */
   int threads;              /* E- and M-step work on this many threads
                                (nl_parallel_for); 1. Results do not depend on it. */
+  struct nl_gmm_memo *memo; /* fits shared between AIC paths (below); NULL */
 } nl_gmm_options;
 
 void nl_gmm_options_default(nl_gmm_options *o);
@@ -129,5 +130,22 @@ typedef struct {
 nl_status nl_gmm_select_aic(const double *x, size_t n, size_t d, size_t k0, double threshold,
                             size_t k_max, const nl_gmm_options *o, nl_gmm **best,
                             nl_gmm_step *path, size_t *npath, nl_error *err);
+
+/* A memo of fits for nl_gmm_select_aic (o->memo): several AIC paths on the
+ * same rows (C5's readings: K0 from different cutoffs, paths K 28-40 and
+ * 30-42) fit the same K again. A fit is a function of the rows (compared
+ * byte for byte with a copy the memo keeps), n, d, K, o->seed, covariance,
+ * tol, reg_covar and max_iter: EM is deterministic and its values do not
+ * depend on the threads, so a remembered fit is the fit. The memo keeps
+ * every fit's path entry (nl_gmm_step) and copies of the models paths
+ * returned (a few, the oldest dropped beyond a byte budget); a path that
+ * selects a K whose model is not kept fits it again. So a path gives the
+ * same bytes with or without a memo, only sooner. Thread-safe (a mutex):
+ * paths on several threads may share one memo. */
+typedef struct nl_gmm_memo nl_gmm_memo;
+nl_gmm_memo *nl_gmm_memo_alloc(void);
+void nl_gmm_memo_free(nl_gmm_memo *m);
+/* Fits done and fits taken from the memo (path entries), for reports. */
+void nl_gmm_memo_counts(const nl_gmm_memo *m, size_t *fitted, size_t *reused);
 
 #endif

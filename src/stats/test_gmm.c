@@ -153,4 +153,41 @@ NL_TEST(gmm_size_checked_against_memory)
   NL_CHECK(strstr(err.msg, "this machine has") != NULL);
 }
 
+/* The memo of fits (o.memo): paths from K0 = 1 and K0 = 2 on the same rows
+ * give the same path entries and selected model, bytes for bytes, as
+ * without it, and the second path takes its overlap from the memo. */
+NL_TEST(memo_gives_the_same_paths)
+{
+  size_t n, d;
+  double *x = vec_matrix("gmm_X.tsv", &n, &d);
+  nl_gmm_options o;
+  nl_gmm_options_default(&o);
+  o.seed = 3;
+  nl_gmm_memo *memo = nl_gmm_memo_alloc();
+  for (size_t k0 = 1; k0 <= 2; k0++) {
+    nl_gmm *a, *b;
+    nl_gmm_step pa[6], pb[6];
+    size_t na, nb;
+    o.memo = NULL;
+    NL_CHECK(nl_gmm_select_aic(x, n, d, k0, 0.0, 5, &o, &a, pa, &na, NULL) == NL_OK);
+    o.memo = memo;
+    NL_CHECK(nl_gmm_select_aic(x, n, d, k0, 0.0, 5, &o, &b, pb, &nb, NULL) == NL_OK);
+    NL_CHECK(na == nb);
+    for (size_t i = 0; i < na && i < nb; i++)   /* field by field: the struct has padding */
+      NL_CHECK(pa[i].k == pb[i].k && pa[i].loglik == pb[i].loglik && pa[i].aic == pb[i].aic &&
+               pa[i].bic == pb[i].bic && pa[i].iterations == pb[i].iterations && pa[i].converged == pb[i].converged);
+    NL_CHECK(a && b && a->k == b->k && a->loglik == b->loglik);
+    NL_CHECK(a && b && !memcmp(a->means, b->means, a->k * d * sizeof(double)) &&
+             !memcmp(a->covs, b->covs, a->k * d * d * sizeof(double)) &&
+             !memcmp(a->prec, b->prec, a->k * d * d * sizeof(double)));
+    nl_gmm_free(a);
+    nl_gmm_free(b);
+  }
+  size_t fitted, reused;
+  nl_gmm_memo_counts(memo, &fitted, &reused);
+  NL_CHECK(reused >= 1 && fitted >= 1);
+  nl_gmm_memo_free(memo);
+  free(x);
+}
+
 int main(void) { return nl_test_run(); }

@@ -2,6 +2,7 @@
  * rule x cutoff rule, over pool replicates (rules in nl_study_cheng_readings.h). */
 #include "study/nl_study_cheng_readings.h"
 #include "stats/nl_cluster.h"
+#include "base/nl_parallel.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -52,68 +53,75 @@ void nl_study_cheng_readings_free(nl_study_cheng_readings *R) { nl_table_free(R-
 
 static int rd_index(int cr, int n, int d, int p) { return ((cr * 2 + n) * 2 + d) * 2 + p; }
 
-static void add(acc *a, const nl_cheng_model *m, double cutoff)
+/* What the tables need of one reading's fit (the model itself is freed in
+ * the item that fitted it). */
+typedef struct {
+  double cutoff, acut, k0, k, aic, sec;   /* acut: the matched fit's cutoff on raw angles */
+  size_t n_in, n_cl, d;
+  nl_cheng_model_status status;
+  nl_gmm_step *path;   /* replicate 0: the AIC path (the figure) */
+  size_t npath;
+  int drawn;           /* replicate 0: C6's question answered (rep) */
+  double rep[10];      /* K, draws, E_ks, E_ks_sd, E_con, E_con_sd, below_ks, below_con, E_ks_orig, E_con_orig */
+} fit_out;
+
+static void add(acc *a, const fit_out *f, double cutoff)
 {
   int i = a->n++;
-  a->cut[i] = cutoff; a->k0[i] = (double)m->k0; a->k[i] = (double)m->k;
-  a->aic[i] = m->gmm ? m->gmm->aic : NAN;
-  a->sec += m->seconds_cluster + m->seconds_gmm;
-  a->nin = (int)m->n_in; a->ncl = (int)m->n_cl; a->dim[i] = (double)m->d;
-  a->apn[i] = a->aic[i] / ((double)m->n_in * (double)m->d);   /* the dimension varies by replicate */
-  if (m->status == NL_CHENG_MODEL_OK) a->ok++;
-  else if (!a->status) a->status = nl_cheng_model_status_name(m->status);
-}
-
-static nl_cheng_model *fit(nl_harness *r, const nl_cheng_pool *pool, const nl_cheng_model_options *o)
-{
-  nl_cheng_model *m;
-  nl_error err;
-  if (nl_cheng_model_fit(pool, o, o->gmm.seed, &m, &err)) nl_harness_die(r, 1, "%s", err.msg);
-  return m;
+  a->cut[i] = cutoff; a->k0[i] = f->k0; a->k[i] = f->k;
+  a->aic[i] = f->aic;
+  a->sec += f->sec;
+  a->nin = (int)f->n_in; a->ncl = (int)f->n_cl; a->dim[i] = (double)f->d;
+  a->apn[i] = a->aic[i] / ((double)f->n_in * (double)f->d);   /* the dimension varies by replicate */
+  if (f->status == NL_CHENG_MODEL_OK) a->ok++;
+  else if (!a->status) a->status = nl_cheng_model_status_name(f->status);
 }
 
 /* The cutoff that gives k clusters of the model's clustered rows on raw angles. */
-static double angle_cutoff_for_k(nl_harness *r, const nl_cheng_pool *pool, const nl_cheng_model *m, size_t k)
+static nl_status angle_cutoff_for_k(const nl_cheng_pool *pool, const nl_cheng_model *m, size_t k, double *c,
+                                    nl_error *err)
 {
   size_t n = m->n_cl, nl = pool->nlow;
   double *x = nl_xmalloc(n * nl * sizeof *x), *Z = nl_xmalloc((n - 1) * 4 * sizeof *Z);
   for (size_t i = 0; i < n; i++) memcpy(x + i * nl, pool->theta + m->cl[i] * nl, nl * sizeof *x);
-  nl_error err;
-  if (nl_cluster_linkage(x, n, nl, NL_LINKAGE_COMPLETE, Z, &err)) nl_harness_die(r, 1, "%s", err.msg);
-  double c = nl_cheng_cutoff_for_k(Z, n, k);
+  nl_status st = nl_cluster_linkage(x, n, nl, NL_LINKAGE_COMPLETE, Z, err);
+  if (!st) *c = nl_cheng_cutoff_for_k(Z, n, k);
   free(x); free(Z);
-  return c;
+  return st;
 }
 
 /* C6's question (are reproductions close to and often below the original?)
  * under one reading's model: `draws` reproductions with every high entry
  * swapped, E_KS and E_Con over all entries, as C6 (stream "c5.reproduce"). */
-typedef struct { nl_harness *r; nl_table *t; const nl_study_cheng_repro *rp; const nl_cheng_config *c;
-                 const nl_cheng_pattern *pat; const char *tex; int draws; nl_table *paths; } repro_ctx;
+typedef struct { nl_harness *r; const nl_study_cheng_repro *rp; const nl_cheng_config *c;
+                 const nl_cheng_pattern *pat; int draws; } repro_ctx;
 
-static void repro_rows(const repro_ctx *x, const nl_cheng_model *m, const char *id, int k0_input)
+static nl_status repro_draws(const repro_ctx *x, const nl_cheng_model *m, fit_out *f, nl_error *err)
 {
-  if (x && x->paths)   /* replicate 0's AIC path of this reading (the figure) */
-    for (size_t i = 0; i < m->npath; i++)
-      nl_table_append(x->paths, "ssdddd", x->tex, id, (double)m->path[i].k, m->path[i].aic, m->path[i].bic, 0.0);
-  if (!x || !m->gmm || x->draws < 1) return;
+  f->npath = m->npath;   /* replicate 0's AIC path of this reading (the figure) */
+  f->path = nl_xmalloc((m->npath ? m->npath : 1) * sizeof *f->path);
+  memcpy(f->path, m->path, m->npath * sizeof *f->path);
+  if (!m->gmm || x->draws < 1) return NL_OK;
   double ks[4096], con[4096], bk = 0, bc = 0;
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, nl_seed_stream(nl_harness_seed(x->r), "c5.reproduce", 0));
   nl_noise_grad2 *out = nl_noise_grad2_alloc(x->rp->opt->m);
-  nl_error err;
-  for (int i = 0; i < x->draws; i++) {
+  nl_status st = NL_OK;
+  for (int i = 0; i < x->draws && !st; i++) {
     nl_cheng_eval ev;
-    if (nl_cheng_reproduce(x->rp->opt, m, 1.0, rng, out, &err) || nl_cheng_evaluate(out, x->c, x->pat, &ev, &err))
-      nl_harness_die(x->r, 1, "%s", err.msg);
+    if ((st = nl_cheng_reproduce(x->rp->opt, m, 1.0, rng, out, err)) || (st = nl_cheng_evaluate(out, x->c, x->pat, &ev, err))) break;
     ks[i] = ev.e_ks; con[i] = ev.e_con;
     bk += ev.e_ks < x->rp->ev.e_ks; bc += ev.e_con < x->rp->ev.e_con;
   }
-  nl_table_append(x->t, "ssddddddddddd", x->tex, id, (double)k0_input, (double)m->k, (double)x->draws, nl_study_mean(ks, x->draws),
-                  nl_study_sd(ks, x->draws), nl_study_mean(con, x->draws), nl_study_sd(con, x->draws), bk / x->draws,
-                  bc / x->draws, x->rp->ev.e_ks, x->rp->ev.e_con);
+  if (!st) {
+    double v[10] = {(double)m->k, (double)x->draws, nl_study_mean(ks, x->draws), nl_study_sd(ks, x->draws), nl_study_mean(con, x->draws),
+                   nl_study_sd(con, x->draws), bk / x->draws, bc / x->draws, x->rp->ev.e_ks, x->rp->ev.e_con};
+    memcpy(f->rep, v, sizeof v);
+    f->drawn = 1;
+  }
   nl_noise_grad2_free(out);
   gsl_rng_free(rng);
+  return st;
 }
 
 static void reading_id(char *id, size_t len, int cr, int n, int d, int p)
@@ -121,34 +129,67 @@ static void reading_id(char *id, size_t len, int cr, int n, int d, int p)
   snprintf(id, len, "%s/%s/%s/%s", n_names[n], d_names[d], p_names[p], c_names[cr]);
 }
 
-/* Every reading's model on one replicate's two pools. */
-static void fit_readings(nl_harness *r, acc *A, const nl_cheng_pool *const *pools, const nl_study_cheng_thesis_gmm *th,
-                         const nl_cheng_model_options *mo, unsigned long seed, int with_all, const repro_ctx *x)
+/* One replicate's fits on one pool (p) and one sample rule (n): the thesis's
+ * cutoff on both distances (K0 a result), then the matched K0 (one fit for
+ * both distances). The three share the mixture's rows and seed, so their AIC
+ * paths share fits through the options' memo (nl_gmm.h). */
+typedef struct {
+  const nl_cheng_pool *pool;
+  const nl_study_cheng_thesis_gmm *th;
+  const nl_cheng_model_options *mo;
+  unsigned long seed;
+  int n;
+  const repro_ctx *x;   /* replicate 0 only */
+  fit_out f[3];         /* d = 0, d = 1, matched */
+  nl_status st;
+  nl_error err;
+} group;
+
+static nl_status group_fits(group *g)
 {
+  nl_cheng_model_options o = *g->mo;
+  o.gmm.seed = g->seed;
+  o.cluster_samples = g->mo->samples;   /* the clustering always on the subsample */
+  o.samples = g->n ? 0 : g->mo->samples;
+  for (int v = 0; v < 3; v++) {
+    if (v < 2) { o.cluster_angles = v; o.cutoff = g->th->cutoff; }   /* the thesis's cutoff: K0 a result */
+    else { o.cluster_angles = 0; o.cutoff = -1; o.target_k = (size_t)g->th->k0; }   /* K0 an input */
+    nl_cheng_model *m;
+    nl_status st = nl_cheng_model_fit(g->pool, &o, o.gmm.seed, &m, &g->err);
+    if (st) return st;
+    fit_out *f = &g->f[v];
+    *f = (fit_out){.cutoff = m->cutoff, .acut = NAN, .k0 = (double)m->k0, .k = (double)m->k,
+                   .aic = m->gmm ? m->gmm->aic : NAN, .sec = m->seconds_cluster + m->seconds_gmm,
+                   .n_in = m->n_in, .n_cl = m->n_cl, .d = m->d, .status = m->status};
+    if (v == 2 && m->n_cl > (size_t)g->th->k0) st = angle_cutoff_for_k(g->pool, m, (size_t)g->th->k0, &f->acut, &g->err);
+    if (!st && g->x) st = repro_draws(g->x, m, f, &g->err);
+    nl_cheng_model_free(m);
+    if (st) return st;
+  }
+  return NL_OK;
+}
+
+static void group_item(void *ctx, size_t i, int t)
+{
+  (void)t;
+  group **gs = ctx;
+  gs[i]->st = group_fits(gs[i]);
+}
+
+/* The rows of one fit: its reading's accumulator, and on replicate 0 its
+ * AIC path and C6's question. */
+static void fit_rows(nl_study_cheng_readings *R, acc *a, const fit_out *f, double cutoff, const char *tex,
+                     int cr, int n, int d, int p)
+{
+  add(a, f, cutoff);
+  if (!f->path || (cr && d)) return;   /* the matched fit's path and draws: once, under the cossin id */
   char id[80];
-  for (int n = 0; n < 1 + with_all; n++)
-    for (int p = 0; p < 2; p++) {
-      nl_cheng_model_options o = *mo;
-      o.gmm.seed = seed;
-      o.cluster_samples = mo->samples;   /* the clustering always on the subsample */
-      o.samples = n ? 0 : mo->samples;
-      for (int d = 0; d < 2; d++) {      /* the thesis's cutoff: K0 a result */
-        o.cluster_angles = d;
-        o.cutoff = th->cutoff;
-        nl_cheng_model *m = fit(r, pools[p], &o);
-        add(&A[rd_index(0, n, d, p)], m, m->cutoff);
-        reading_id(id, sizeof id, 0, n, d, p);
-        repro_rows(x, m, id, 0);
-        nl_cheng_model_free(m);
-      }
-      o.cluster_angles = 0; o.cutoff = -1; o.target_k = (size_t)th->k0;   /* K0 an input */
-      nl_cheng_model *m = fit(r, pools[p], &o);
-      add(&A[rd_index(1, n, 0, p)], m, m->cutoff);
-      add(&A[rd_index(1, n, 1, p)], m, m->n_cl > (size_t)th->k0 ? angle_cutoff_for_k(r, pools[p], m, (size_t)th->k0) : NAN);
-      reading_id(id, sizeof id, 1, n, 0, p);   /* the mixture of both distances */
-      repro_rows(x, m, id, 1);
-      nl_cheng_model_free(m);
-    }
+  reading_id(id, sizeof id, cr, n, d, p);
+  for (size_t i = 0; i < f->npath; i++)
+    nl_table_append(R->paths, "ssdddd", tex, id, (double)f->path[i].k, f->path[i].aic, f->path[i].bic, 0.0);
+  const double *v = f->rep;
+  if (f->drawn)
+    nl_table_append(R->repro, "ssddddddddddd", tex, id, (double)cr, v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9]);
 }
 
 static void ess_row(nl_table *t, const char *tex, int k, int p, int stride, const nl_cheng_pool *pool)
@@ -213,6 +254,18 @@ static void rows(nl_study_cheng_readings *R, const acc *A, const nl_study_cheng_
         }
 }
 
+/* The original optimisation of every replicate: independent items (each from
+ * its replicate's seed, into its own slot). */
+typedef struct { const nl_cheng_config *c; const nl_cheng_pattern *pat; unsigned long base; nl_study_cheng_repro *rp;
+                 nl_status *st; nl_error *err; } orig_job;
+
+static void orig_item(void *ctx, size_t k, int t)
+{
+  (void)t;
+  orig_job *j = ctx;
+  j->st[k] = nl_study_cheng_repro_original(j->c, j->pat, nl_seed_replicate(j->base, (long)k), &j->rp[k], &j->err[k]);
+}
+
 void nl_study_cheng_readings_case(const nl_study_cheng *s, nl_study_cheng_readings *R, nl_study_cheng_pools *T,
                                   const nl_study_cheng_thesis_gmm *th, const nl_cheng_pool_options *po,
                                   const nl_cheng_model_options *mo, const nl_study_cheng_readings_options *ro,
@@ -225,24 +278,57 @@ void nl_study_cheng_readings_case(const nl_study_cheng *s, nl_study_cheng_readin
   c.con = th->con;
   nl_cheng_pool_options pl = *po;
   pl.keep = po->keep * ro->stride;   /* N x stride tail states per run */
-  for (int k = 0; k < ro->reps; k++) {
-    unsigned long seed = nl_seed_replicate(nl_harness_seed(r), k);
-    nl_study_cheng_repro rp;
-    nl_error err;
-    if (nl_study_cheng_repro_original(&c, pat, seed, &rp, &err) || nl_study_cheng_repro_pool(&rp, &c, pat, &pl, seed, &err))
-      nl_harness_die(r, 1, "%s: %s", th->texture, err.msg);
-    nl_cheng_pool *pools[2] = {nl_cheng_pool_thin(rp.pool, po->keep, 1), nl_cheng_pool_thin(rp.pool, po->keep, ro->stride)};
-    for (int p = 0; p < 2; p++) ess_row(R->ess, th->texture, k, p, ro->stride, pools[p]);
-    if (k == 0 && T) {   /* the older tables: replicate 0, successive states (the default pool) */
-      nl_study_cheng_repro r0 = rp;
-      r0.pool = pools[0];
-      nl_study_cheng_pool_case_with(s, T, th, po, mo, nseeds, full, &r0);
-    }
-    repro_ctx x = {r, R->repro, &rp, &c, pat, th->texture, ro->draws, R->paths};
-    fit_readings(r, A, (const nl_cheng_pool *const *)pools, th, mo, seed, k < ro->all_reps, k == 0 ? &x : NULL);
-    nl_cheng_pool_free(pools[0]); nl_cheng_pool_free(pools[1]);
-    nl_study_cheng_repro_clear(&rp);
+  nl_cheng_model_options mm = *mo;   /* every fit of this texture shares one memo of EM fits */
+  mm.gmm.memo = nl_gmm_memo_alloc();
+  int reps = ro->reps, ng = 0;
+  nl_study_cheng_repro rp[MAXREP];
+  nl_cheng_pool *pools[MAXREP][2];
+  nl_status st[MAXREP];
+  nl_error err[MAXREP];
+  orig_job oj = {&c, pat, nl_harness_seed(r), rp, st, err};
+  nl_parallel_for((size_t)reps, po->threads, orig_item, &oj);
+  for (int k = 0; k < reps; k++) {   /* pools: their runs are the items */
+    if (st[k] || nl_study_cheng_repro_pool(&rp[k], &c, pat, &pl, nl_seed_replicate(nl_harness_seed(r), k), &err[k]))
+      nl_harness_die(r, 1, "%s: %s", th->texture, err[k].msg);
+    pools[k][0] = nl_cheng_pool_thin(rp[k].pool, po->keep, 1);
+    pools[k][1] = nl_cheng_pool_thin(rp[k].pool, po->keep, ro->stride);
+    for (int p = 0; p < 2; p++) ess_row(R->ess, th->texture, k, p, ro->stride, pools[k][p]);
   }
+  if (T) {   /* the older tables: replicate 0, successive states (the default pool) */
+    nl_study_cheng_repro r0 = rp[0];
+    r0.pool = pools[0][0];
+    nl_study_cheng_pool_case_with(s, T, th, po, &mm, nseeds, full, &r0);
+  }
+  /* Every (replicate, sample rule, pool rule) group is an item; the costly
+   * all-rows groups first so the two threads end together. Rows are added
+   * in the serial order afterwards. */
+  repro_ctx x = {r, &rp[0], &c, pat, ro->draws};
+  group *gs = nl_xcalloc((size_t)reps * 4, sizeof *gs), *order[MAXREP * 4];
+  for (int n = 1; n >= 0; n--)
+    for (int k = 0; k < reps; k++)
+      for (int p = 0; p < 2 && (n == 0 || k < ro->all_reps); p++) {
+        group *g = &gs[(k * 2 + n) * 2 + p];
+        *g = (group){.pool = pools[k][p], .th = th, .mo = &mm, .seed = nl_seed_replicate(nl_harness_seed(r), k), .n = n,
+                     .x = k == 0 ? &x : NULL};
+        order[ng++] = g;
+      }
+  nl_parallel_for((size_t)ng, po->threads, group_item, order);
+  for (int k = 0; k < reps; k++)
+    for (int n = 0; n < 1 + (k < ro->all_reps); n++)
+      for (int p = 0; p < 2; p++) {
+        group *g = &gs[(k * 2 + n) * 2 + p];
+        if (g->st) nl_harness_die(r, 1, "%s", g->err.msg);
+        for (int d = 0; d < 2; d++) fit_rows(R, &A[rd_index(0, n, d, p)], &g->f[d], g->f[d].cutoff, th->texture, 0, n, d, p);
+        fit_rows(R, &A[rd_index(1, n, 0, p)], &g->f[2], g->f[2].cutoff, th->texture, 1, n, 0, p);
+        fit_rows(R, &A[rd_index(1, n, 1, p)], &g->f[2], g->f[2].acut, th->texture, 1, n, 1, p);
+        for (int v = 0; v < 3; v++) free(g->f[v].path);
+      }
+  nl_gmm_memo_free(mm.gmm.memo);
+  for (int k = 0; k < reps; k++) {
+    nl_cheng_pool_free(pools[k][0]); nl_cheng_pool_free(pools[k][1]);
+    nl_study_cheng_repro_clear(&rp[k]);
+  }
+  free(gs);
   rows(R, A, th, ro->stride);
   nl_cheng_pattern_free(pat);
   free(A);

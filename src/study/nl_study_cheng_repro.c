@@ -130,12 +130,9 @@ static void seed_item(void *ctx, size_t s, int t)
   if (s == 0) j->first = m; else nl_cheng_model_free(m);
 }
 
-static nl_cheng_model *fit_seeds(nl_harness *r, const nl_cheng_pool *pool, const nl_cheng_model_options *mo,
-                                 int nseeds, fits *f)
+/* The seeds' results summed in seed order; the first seed's model returned. */
+static nl_cheng_model *seeds_collect(nl_harness *r, seeds_job *j, int nseeds, fits *f)
 {
-  seeds_job *j = nl_xcalloc(1, sizeof *j);
-  *j = (seeds_job){.pool = pool, .mo = mo, .base = nl_harness_seed(r)};
-  nl_parallel_for((size_t)nseeds, mo->gmm.threads, seed_item, j);
   memset(f, 0, sizeof *f);
   f->status = "ok";
   for (int s = 0; s < nseeds; s++) {
@@ -145,9 +142,7 @@ static nl_cheng_model *fit_seeds(nl_harness *r, const nl_cheng_pool *pool, const
     if (j->status[s] == NL_CHENG_MODEL_OK) f->ok++;
     else if (!strcmp(f->status, "ok")) f->status = nl_cheng_model_status_name(j->status[s]);
   }
-  nl_cheng_model *first = j->first;
-  free(j);
-  return first;
+  return j->first;
 }
 
 /* Pool rows: per run, and the original against the pool. */
@@ -176,13 +171,10 @@ static void pool_rows(nl_study_cheng_pools *T, const nl_study_cheng_thesis_gmm *
 
 /* One cutoff rule: the row of Tables 4.2-4.4, its AIC path (first seed). */
 static nl_cheng_model *rule_rows(nl_harness *r, nl_study_cheng_pools *T, const nl_study_cheng_thesis_gmm *th, int low, int ru,
-                                 const nl_cheng_pool *pool, const nl_cheng_model_options *mo, double eps, int nseeds)
+                                 const nl_cheng_pool *pool, seeds_job *j, double eps, int nseeds)
 {
-  nl_cheng_model_options o = *mo;
-  if (ru == 0) o.cutoff = th->cutoff;
-  else { o.cutoff = -1; o.target_k = (size_t)th->k0; }
   fits f;
-  nl_cheng_model *m = fit_seeds(r, pool, &o, nseeds, &f);
+  nl_cheng_model *m = seeds_collect(r, j, nseeds, &f);
   nl_table_append(T->gmm, "sdsdddddddddddddddddsdddddd", th->texture, (double)low, rules[ru], (double)pool->n,
                   (double)pool->excluded, (double)m->n_in, (double)m->d, eps, m->cutoff, nl_study_mean(f.k0, nseeds),
                   nl_study_sd(f.k0, nseeds), nl_study_mean(f.k, nseeds), nl_study_sd(f.k, nseeds), nl_study_mean(f.aic, nseeds),
@@ -242,19 +234,25 @@ static void assess_item(void *ctx, size_t v, int t)
   nl_cheng_model_free(m);
 }
 
-static void assess_rows(nl_harness *r, nl_study_cheng_pools *T, const nl_study_cheng_thesis_gmm *th, int low, const nl_cheng_pool *pool,
-                        const nl_cheng_model_options *mo)
+static void assess_rows(nl_harness *r, nl_study_cheng_pools *T, const nl_study_cheng_thesis_gmm *th, int low, const assess_job *j)
 {
-  assess_job *j = nl_xcalloc(1, sizeof *j);
-  *j = (assess_job){.r = r, .th = th, .pool = pool, .mo = mo};
-  nl_parallel_for(NVAR, mo->gmm.threads, assess_item, j);
   for (int v = 0; v < NVAR; v++) {
     if (j->st[v]) nl_harness_die(r, 1, "%s", j->err[v].msg);
     const nl_cheng_model_check *ck = &j->ck[v];
     nl_table_append(T->assess, "sdsdddddd", th->texture, (double)low, variants[v], j->k[v], ck->ll_train,
                     ck->ll_held, (double)ck->n_held, ck->ks_median, ck->ks_reject);
   }
-  free(j);
+}
+
+/* Both rules' seeds and the assessment's variants: one region of
+ * independent items (the variants first: their paths are the longest). */
+typedef struct { seeds_job *sj[NRULE]; assess_job *aj; size_t nseeds, nassess; } case_job;
+
+static void case_item(void *ctx, size_t i, int t)
+{
+  case_job *c = ctx;
+  if (i < c->nassess) assess_item(c->aj, i, t);
+  else seed_item(c->sj[(i - c->nassess) / c->nseeds], (i - c->nassess) % c->nseeds, t);
 }
 
 nl_cheng_pattern *nl_study_cheng_repro_open(const nl_study_cheng *s, const nl_study_cheng_thesis_gmm *th,
@@ -338,16 +336,32 @@ void nl_study_cheng_pool_case_with(const nl_study_cheng *s, nl_study_cheng_pools
   char key[64];
   snprintf(key, sizeof key, "pool_bytes_%s_low%d", th->texture, po.low_levels);
   nl_harness_note(r, key, "%zu (%zu solutions x %zu angles)", nl_cheng_pool_bytes(rp.pool), rp.pool->n, rp.pool->nlow);
+  nl_cheng_model_options o[NRULE];
+  case_job cj = {.nseeds = (size_t)nseeds, .nassess = full ? NVAR : 0};
   for (int ru = 0; ru < NRULE; ru++) {
-    nl_cheng_model *m = rule_rows(r, T, th, po.low_levels, ru, rp.pool, mo, po.epsilon, nseeds);
+    o[ru] = *mo;
+    if (ru == 0) o[ru].cutoff = th->cutoff;
+    else { o[ru].cutoff = -1; o[ru].target_k = (size_t)th->k0; }
+    cj.sj[ru] = nl_xcalloc(1, sizeof *cj.sj[ru]);
+    *cj.sj[ru] = (seeds_job){.pool = rp.pool, .mo = &o[ru], .base = nl_harness_seed(r)};
+  }
+  if (full) {
+    cj.aj = nl_xcalloc(1, sizeof *cj.aj);
+    *cj.aj = (assess_job){.r = r, .th = th, .pool = rp.pool, .mo = mo};
+  }
+  nl_parallel_for(cj.nassess + NRULE * cj.nseeds, mo->gmm.threads, case_item, &cj);
+  for (int ru = 0; ru < NRULE; ru++) {
+    nl_cheng_model *m = rule_rows(r, T, th, po.low_levels, ru, rp.pool, cj.sj[ru], po.epsilon, nseeds);
     if (ru == 1) {
       curve_rows(r, T, th, po.low_levels, rp.pool, m);
       snprintf(key, sizeof key, "cluster_bytes_%s_low%d", th->texture, po.low_levels);
       nl_harness_note(r, key, "%zu (condensed distances of %zu samples + linkage)", m->cluster_bytes, m->n_in);
     }
     nl_cheng_model_free(m);
+    free(cj.sj[ru]);
   }
-  if (full) assess_rows(r, T, th, po.low_levels, rp.pool, mo);
+  if (full) assess_rows(r, T, th, po.low_levels, cj.aj);
+  free(cj.aj);
 }
 
 /* ---- C6's reproductions ------------------------------------------------- */
