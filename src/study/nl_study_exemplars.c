@@ -5,7 +5,6 @@
 
 #include <dirent.h>
 #ifdef __GLIBC__
-#include <malloc.h>
 #endif
 #include <stdio.h>
 #include <errno.h>
@@ -88,14 +87,6 @@ char **nl_study_exemplars_option(int *argc, char **argv, const char *prog, const
 {
   nl_error err;
   char **paths = NULL;
-#ifdef __GLIBC__
-  /* Speed only: the band-power renders allocate and free several w x h
-   * buffers each (nl_spectrum); by default glibc hands them back to the
-   * kernel every time, and the page faults that follow were 60% of a
-   * one-thread L2 run's CPU (13.9 s -> 5.7 s at max_size 512 with these). */
-  mallopt(M_MMAP_THRESHOLD, 64 << 20);
-  mallopt(M_TRIM_THRESHOLD, 256 << 20);
-#endif
   if (nl_study_dir_option(argc, argv, "--exemplars", "data/exemplars", dir, &err) ||
       nl_study_pngs(*dir, &paths, n, &err)) {
     fprintf(stderr, "%s: %s\n", prog, err.msg);
