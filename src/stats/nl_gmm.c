@@ -844,6 +844,36 @@ static void memo_put_model(nl_gmm_memo *m, const memo_key *key, const nl_gmm *g)
   pthread_mutex_unlock(&m->lock);
 }
 
+/* The state one AIC path's fits share: the spare model (room for kcap
+ * components) and the workspace, set up at the first fit the memo cannot
+ * answer. */
+typedef struct {
+  const double *x;
+  size_t n, d, kcap;
+  const nl_gmm_options *o;
+  nl_gmm *spare;
+  workspace w;
+  int threads, ready;
+} path_fits;
+
+/* Fits K components into the spare model (or a new one) -> *out. */
+static nl_status path_fit(path_fits *p, size_t k, nl_gmm **out, nl_error *err)
+{
+  nl_gmm *g = p->spare ? p->spare : gmm_new(k, p->kcap, p->d, p->o->covariance, 0);
+  p->spare = NULL;
+  g->k = k;
+  g->nparams = nl_gmm_nparams(k, p->d, p->o->covariance);
+  if (!p->ready) {
+    ws_init(&p->w, p->n, p->d, p->kcap, p->o->threads);
+    p->threads = blas_threads_limit(p->n, p->d);
+    p->ready = 1;
+  }
+  nl_status s = fit_ws(g, p->x, p->n, p->o, &p->w, err);
+  if (s) { nl_gmm_free(g); g = NULL; }
+  *out = g;
+  return s;
+}
+
 nl_status nl_gmm_select_aic(const double *x, size_t n, size_t d, size_t k0, double threshold,
                             size_t k_max, const nl_gmm_options *o, nl_gmm **best,
                             nl_gmm_step *path, size_t *npath, nl_error *err)
@@ -869,47 +899,32 @@ nl_status nl_gmm_select_aic(const double *x, size_t n, size_t d, size_t k0, doub
    * are allocated, and their pages touched, once per path, not per K. A K
    * the memo knows gives its path entry without a fit; its model is only
    * needed if the path selects it (bestk without bestg). */
-  size_t kcap = k_max < n ? k_max : n, bestk = 0;
-  nl_gmm *spare = NULL, *bestg = NULL;
+  path_fits p = {x, n, d, k_max < n ? k_max : n, &ok, NULL, {0}, 0, 0};
+  size_t bestk = 0;
+  nl_gmm *bestg = NULL;
   double bestaic = 0;
-  workspace w = {0};
-  int threads = 0, ready = 0;
   for (size_t k = k0; k <= k_max && k <= n; k++) {
     nl_gmm_step step;
     nl_gmm *g = NULL;
     key.k = k;
     if (!memo || !memo_get_step(memo, &key, &step)) {
-      g = spare ? spare : gmm_new(k, kcap, d, o->covariance, 0);
-      spare = NULL;
-      g->k = k;
-      g->nparams = nl_gmm_nparams(k, d, o->covariance);
-      if (!ready) { ws_init(&w, n, d, kcap, o->threads); threads = blas_threads_limit(n, d); ready = 1; }
-      s = fit_ws(g, x, n, &ok, &w, err);
-      if (s) { nl_gmm_free(g); break; }
+      if ((s = path_fit(&p, k, &g, err))) break;
       step = (nl_gmm_step){k, g->loglik, g->aic, g->bic, g->iterations, g->converged};
       if (memo) memo_put_step(memo, &key, &step);
     }
     path[(*npath)++] = step;
-    if (bestk && bestaic - step.aic < threshold) { if (g) { nl_gmm_free(spare); spare = g; } break; }
-    if (bestg) { nl_gmm_free(spare); spare = bestg; }
+    if (bestk && bestaic - step.aic < threshold) { if (g) { nl_gmm_free(p.spare); p.spare = g; } break; }
+    if (bestg) { nl_gmm_free(p.spare); p.spare = bestg; }
     bestg = g; bestk = k; bestaic = step.aic;
   }
   if (!s && bestk && !bestg) {   /* the selected K came from the memo */
     key.k = bestk;
-    if (!(bestg = memo_get_model(memo, &key))) {
-      bestg = spare ? spare : gmm_new(bestk, kcap, d, o->covariance, 0);
-      spare = NULL;
-      bestg->k = bestk;
-      bestg->nparams = nl_gmm_nparams(bestk, d, o->covariance);
-      if (!ready) { ws_init(&w, n, d, kcap, o->threads); threads = blas_threads_limit(n, d); ready = 1; }
-      s = fit_ws(bestg, x, n, &ok, &w, err);
-      if (s) { nl_gmm_free(bestg); bestg = NULL; }
-    }
+    if (!(bestg = memo_get_model(memo, &key))) s = path_fit(&p, bestk, &bestg, err);
   }
   if (!s && memo && bestg && n >= MEMO_MIN_ROWS) { key.k = bestk; memo_put_model(memo, &key, bestg); }
   if (s) { nl_gmm_free(bestg); bestg = NULL; }   /* a failed path returns no model */
   *best = bestg;
-  if (ready) { blas_threads_restore(threads); ws_free(&w); }
-  nl_gmm_free(spare);
+  if (p.ready) { blas_threads_restore(p.threads); ws_free(&p.w); }
+  nl_gmm_free(p.spare);
   return s;
 }
