@@ -8,22 +8,17 @@
 #pragma GCC target("avx2")
 #endif
 #include "noise/nl_noise_simd.h"
-#include <immintrin.h>
+#include "noise/nl_simd_avx2.h"   /* vd, vl, v_floor, v_ceil, v_all */
 #include <string.h>
 
 #define NL_SIMD_W 4
 #define NL_SIMD_TABLE nl_noise_simd_avx2
-typedef double vd __attribute__((vector_size(32)));
-typedef long long vl __attribute__((vector_size(32)));
 typedef int vi __attribute__((vector_size(16)));
 typedef unsigned vu __attribute__((vector_size(16)));
 
-static inline vd v_floor(vd x) { return (vd)_mm256_floor_pd((__m256d)x); }
-static inline vd v_ceil(vd x) { return (vd)_mm256_ceil_pd((__m256d)x); }
 /* Lookups lane by lane: on the machines measured (AMD Zen 5) a gather
  * instruction costs more than its loads one by one. */
 #include "noise/nl_noise_simd_lanes.h"
-static inline int v_all(vl m) { return _mm256_movemask_pd((__m256d)m) == 15; }
 
 #include "noise/nl_noise_simd_body.h"
 

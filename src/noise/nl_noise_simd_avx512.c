@@ -17,28 +17,17 @@
 #pragma GCC target("avx512f,avx512dq,avx512bw,avx512vl,avx512vbmi,avx2")
 #endif
 #include "noise/nl_noise_simd.h"
-#include <immintrin.h>
+#include "noise/nl_simd_avx512.h"   /* vd, vl, v_floor, v_ceil, v_all */
 #include <math.h>
 #include <string.h>
 
 #define NL_SIMD_W 8
 #define NL_SIMD_TABLE nl_noise_simd_avx512
-typedef double vd __attribute__((vector_size(64)));
-typedef long long vl __attribute__((vector_size(64)));
 typedef int vi __attribute__((vector_size(32)));
 typedef unsigned vu __attribute__((vector_size(32)));
 
-static inline vd v_floor(vd x)
-{
-  return (vd)_mm512_roundscale_pd((__m512d)x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
-}
-static inline vd v_ceil(vd x)
-{
-  return (vd)_mm512_roundscale_pd((__m512d)x, _MM_FROUND_TO_POS_INF | _MM_FROUND_NO_EXC);
-}
 /* Lookups lane by lane (the 2D tables are too big for registers). */
 #include "noise/nl_noise_simd_lanes.h"
-static inline int v_all(vl m) { return _mm512_movepi64_mask((__m512i)m) == 0xff; }
 
 #define NL_SIMD_HAVE_TABLES
 typedef struct { __m512i p[4]; __m512d g[3][2]; } p3tab;

@@ -1,0 +1,27 @@
+/* nl_simd_avx512.h - the vector types and primitives every AVX-512 kernel
+ * shares (noise: nl_noise_simd_avx512.c, cellular: nl_cellular_simd_avx512.c),
+ * 8 doubles a vector. Private: included by a kernel file after its target
+ * pragma (F, DQ, BW, VL, VBMI), never installed. */
+#ifndef NL_SIMD_AVX512_H
+#define NL_SIMD_AVX512_H
+#include <immintrin.h>
+
+typedef double vd __attribute__((vector_size(64)));
+typedef long long vl __attribute__((vector_size(64)));
+
+static inline vd v_floor(vd x)
+{
+  return (vd)_mm512_roundscale_pd((__m512d)x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+}
+static inline vd v_ceil(vd x)
+{
+  return (vd)_mm512_roundscale_pd((__m512d)x, _MM_FROUND_TO_POS_INF | _MM_FROUND_NO_EXC);
+}
+static inline vd v_min(vd a, vd b) { return (vd)_mm512_min_pd((__m512d)a, (__m512d)b); }
+static inline vd v_max(vd a, vd b) { return (vd)_mm512_max_pd((__m512d)a, (__m512d)b); }
+static inline vd v_sqrt(vd x) { return (vd)_mm512_sqrt_pd((__m512d)x); }
+/* Masks (all bits set or clear per lane): any lane set, every lane set. */
+static inline int v_any(vl m) { return _mm512_movepi64_mask((__m512i)m) != 0; }
+static inline int v_all(vl m) { return _mm512_movepi64_mask((__m512i)m) == 0xff; }
+
+#endif
