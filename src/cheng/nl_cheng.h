@@ -17,7 +17,7 @@
  *             nl_cheng_energy_full, nl_cheng_resum
  *   anneal    nl_cheng_anneal, nl_cheng_propagate, nl_cheng_optimise
  *   eval      nl_cheng_evaluate, nl_cheng_value_grid, nl_cheng_run,
- *             nl_cheng_run_seeds, nl_cheng_ks_median
+ *             nl_cheng_ks_median
  *   amplitudes nl_cheng_octaves, nl_cheng_log_gains (X6, nl_cheng_amp.c)
  *
  *   nl_cheng_pattern *pat;
@@ -312,11 +312,6 @@ void nl_cheng_value_grid(const nl_noise_grad2 *table, const nl_cheng_config *c, 
 nl_status nl_cheng_run(const nl_cheng_config *c, const nl_cheng_pattern *pat, unsigned long seed,
                        nl_cheng_eval *ev, nl_cheng_level_stats *stats, nl_noise_grad2 **table_out,
                        nl_error *err);
-/* nl_cheng_run for seeds nl_seed_replicate(seed0, 0 .. k-1) into evs[k]; the
- * first seed's table in *first if not NULL. */
-nl_status nl_cheng_run_seeds(const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                             unsigned long seed0, int k, nl_cheng_eval *evs, nl_noise_grad2 **first,
-                             nl_error *err);
 /* Median of the one-sample KS statistic D_n under the null (bisection on
  * nl_stats_ks_cdf): the yardstick for "as uniform as a random table". */
 double nl_cheng_ks_median(size_t n);

@@ -139,15 +139,3 @@ nl_status nl_cheng_run(const nl_cheng_config *c, const nl_cheng_pattern *pat, un
   else nl_noise_grad2_free(g);
   return s;
 }
-
-nl_status nl_cheng_run_seeds(const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                             unsigned long seed0, int k, nl_cheng_eval *evs, nl_noise_grad2 **first,
-                             nl_error *err)
-{
-  for (int s = 0; s < k; s++) {
-    nl_status st = nl_cheng_run(c, pat, nl_seed_replicate(seed0, s), &evs[s], NULL,
-                                s == 0 ? first : NULL, err);
-    if (st) return st;
-  }
-  return NL_OK;
-}

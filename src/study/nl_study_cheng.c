@@ -186,8 +186,8 @@ nl_cheng_pattern *nl_study_cheng_pattern(const nl_study_cheng *s, const char *na
   return nl_study_cheng_pattern_load_or_die(nl_harness_name(s->r), s->patterns, name, s->grid);
 }
 
-/* Item i of nl_study_cheng_runs: case i / k, seed i % k, nl_cheng_run_seeds's
- * loop body. It writes only its own slots (evs[i], st[i], err[i], and
+/* Item i of nl_study_cheng_runs: case i / k, seed i % k: nl_cheng_run at
+ * seed nl_seed_replicate(seed0, seed). It writes only its own slots (evs[i], st[i], err[i], and
  * firsts[case] for seed 0) and draws only from nl_seed_replicate(seed0, seed),
  * so the results do not depend on the thread count (nl_parallel.h). */
 typedef struct {

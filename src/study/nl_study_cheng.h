@@ -158,7 +158,7 @@ void nl_study_cheng_ready(nl_study_cheng *s);
 /* The pattern NAME of s's folder at s's grid (nl_study_cheng_pattern_load_or_die). */
 nl_cheng_pattern *nl_study_cheng_pattern(const nl_study_cheng *s, const char *name);
 /* n cases, config cs[i] on pattern pats[i], each over the run's seeds
- * (nl_cheng_run_seeds's runs), all n x k runs as one nl_parallel_for on the
+ * (nl_cheng_run at nl_seed_replicate(seed, 0 .. k-1)), all n x k runs as one nl_parallel_for on the
  * run's --threads (case-major items; each run from its seed alone, so the
  * results do not depend on the thread count). Returns the n k evaluations,
  * case i's at [i k .. i k + k - 1] (caller frees); firsts, if not NULL, gets
