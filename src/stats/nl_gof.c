@@ -132,8 +132,9 @@ static nl_status sorted_cdf(const double *x, size_t n, nl_stats_cdf_fn cdf, void
   for (size_t i = 0; i < n; i++) {
     u[i] = cdf(a[i], params);
     if (!(u[i] >= 0.0 && u[i] <= 1.0)) {
+      s = nl_fail(err, NL_EINVAL, "CDF returned %g at x = %g, outside [0, 1]", u[i], a[i]);
       free(a); free(u);
-      return nl_fail(err, NL_EINVAL, "CDF returned %g at x = %g, outside [0, 1]", u[i], a[i]);
+      return s;
     }
   }
   *xs = a;

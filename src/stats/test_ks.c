@@ -234,6 +234,12 @@ NL_TEST(ecdf_histogram_and_sort)
   gsl_rng_free(rng);
 }
 
+static double bad_cdf(double x, void *params)
+{
+  (void)params;
+  return x > 0.15 ? 2.0 : x;
+}
+
 NL_TEST(bad_input_is_an_error)
 {
   nl_error err;
@@ -246,6 +252,10 @@ NL_TEST(bad_input_is_an_error)
   double y[] = {0.1, 0.2, 1.5};
   NL_CHECK(nl_stats_chisq_test_uniform(y, 3, 1, 0, 1, &c, &err) == NL_EINVAL);
   NL_CHECK(nl_stats_chisq_test_uniform(y, 3, 2, 0, 1, &c, &err) == NL_EINVAL && strstr(err.msg, "outside"));
+  /* A CDF outside [0, 1]: the message names the value and where (it once
+   * read both after freeing them; the sanitizer build checks that). */
+  NL_CHECK(nl_stats_ks_test(y, 3, bad_cdf, NULL, &r, &err) == NL_EINVAL &&
+           strstr(err.msg, "CDF returned 2 at x = 0.2, outside [0, 1]"));
 }
 
 /* Named distributions with loc/scale, and the tabulated CDF (numpy.interp
