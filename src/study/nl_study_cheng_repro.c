@@ -245,14 +245,17 @@ static void assess_rows(nl_harness *r, nl_study_cheng_pools *T, const nl_study_c
 }
 
 /* Both rules' seeds and the assessment's variants: one region of
- * independent items (the variants first: their paths are the longest). */
+ * independent items, the longest paths first (the variants, then the
+ * matched-K0 rule's seeds, then the thesis cutoff's smaller K): the threads
+ * end together, and arrays allocated for a large K serve the smaller ones
+ * from nl_gmm's cache. C5 quick, four runs each, idle: 5.10 -> 4.78 s wall. */
 typedef struct { seeds_job *sj[NRULE]; assess_job *aj; size_t nseeds, nassess; } case_job;
 
 static void case_item(void *ctx, size_t i, int t)
 {
   case_job *c = ctx;
   if (i < c->nassess) assess_item(c->aj, i, t);
-  else seed_item(c->sj[(i - c->nassess) / c->nseeds], (i - c->nassess) % c->nseeds, t);
+  else seed_item(c->sj[NRULE - 1 - (i - c->nassess) / c->nseeds], (i - c->nassess) % c->nseeds, t);
 }
 
 nl_cheng_pattern *nl_study_cheng_repro_open(const nl_study_cheng *s, const nl_study_cheng_thesis_gmm *th,
