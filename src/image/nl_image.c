@@ -22,7 +22,9 @@
  * tests/meson.build), and matching them against suppressions made
  * LeakSanitizer symbolize libasan's DWARF in every image-touching process:
  * 1.64 -> 1.20 s of CPU for one analyse (issue 17). Memory we allocate is
- * allocated outside these regions, so its leaks are still found. */
+ * allocated outside these regions, so its leaks are still found. GCC defines
+ * __SANITIZE_ADDRESS__; clang 14 (the fuzz targets) does not, and those keep
+ * tests/fuzz/lsan.supp. */
 #if defined(__SANITIZE_ADDRESS__)
 #include <sanitizer/lsan_interface.h>
 #define QUIET_BEGIN() __lsan_disable()
