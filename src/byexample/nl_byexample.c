@@ -202,29 +202,6 @@ void nl_byexample_quantiles(const double *v, size_t n, double *q)
   free(s);
 }
 
-const char *nl_byexample_hist_name(nl_byexample_hist_kind kind)
-{
-  return kind == NL_HIST_GAUSS ? "gauss33" : kind == NL_HIST_PAPER ? "paper10" : "unknown";
-}
-
-int nl_byexample_hist_knots(nl_byexample_hist_kind kind, double *x, double *p)
-{
-  if (kind == NL_HIST_PAPER) {
-    for (int j = 0; j < NL_EXAMPLE_HIST; j++) {
-      if (x) x[j] = (double)j / (NL_EXAMPLE_HIST - 1);
-      if (p) p[j] = (double)j / (NL_EXAMPLE_HIST - 1);
-    }
-    return NL_EXAMPLE_HIST;
-  }
-  if (kind != NL_HIST_GAUSS) return 0;
-  for (int j = 0; j < NL_EXAMPLE_HIST_MAX; j++) {
-    double z = -4.0 + 0.25 * j;
-    if (x) x[j] = z;
-    if (p) p[j] = gsl_cdf_ugaussian_P(z);
-  }
-  return NL_EXAMPLE_HIST_MAX;
-}
-
 void nl_byexample_hist(const double *v, size_t n, nl_byexample_hist_kind kind, double *q)
 {
   if (kind == NL_HIST_PAPER) { nl_byexample_quantiles(v, n, q); return; }
@@ -605,11 +582,6 @@ nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, un
   nl_byexample_recorrelate(plane, p->channels, p->mean, p->matrix, *out);
   for (int c = 0; c < p->channels; c++) free(plane[c]);
   return NL_OK;
-}
-
-int nl_byexample_param_count(const nl_byexample_params *p)
-{
-  return p->channels * p->channels + p->channels * (p->nhist + p->nbands);
 }
 
 void nl_byexample_attenuate(nl_byexample_params *p, int nfine, double factor)

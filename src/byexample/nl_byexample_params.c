@@ -25,11 +25,44 @@
 #include "byexample/nl_byexample.h"
 #include "table/nl_table.h"
 
+#include <gsl/gsl_cdf.h>
+
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* The histogram's knots and the parameter count belong to the file format
+ * (nl_byexample.h); kept here so that a reader of parameter files (the
+ * fuzz target fuzz_params) links without the synthesizer. */
+const char *nl_byexample_hist_name(nl_byexample_hist_kind kind)
+{
+  return kind == NL_HIST_GAUSS ? "gauss33" : kind == NL_HIST_PAPER ? "paper10" : "unknown";
+}
+
+int nl_byexample_hist_knots(nl_byexample_hist_kind kind, double *x, double *p)
+{
+  if (kind == NL_HIST_PAPER) {
+    for (int j = 0; j < NL_EXAMPLE_HIST; j++) {
+      if (x) x[j] = (double)j / (NL_EXAMPLE_HIST - 1);
+      if (p) p[j] = (double)j / (NL_EXAMPLE_HIST - 1);
+    }
+    return NL_EXAMPLE_HIST;
+  }
+  if (kind != NL_HIST_GAUSS) return 0;
+  for (int j = 0; j < NL_EXAMPLE_HIST_MAX; j++) {
+    double z = -4.0 + 0.25 * j;
+    if (x) x[j] = z;
+    if (p) p[j] = gsl_cdf_ugaussian_P(z);
+  }
+  return NL_EXAMPLE_HIST_MAX;
+}
+
+int nl_byexample_param_count(const nl_byexample_params *p)
+{
+  return p->channels * p->channels + p->channels * (p->nhist + p->nbands);
+}
 
 static void put_values(FILE *fp, const char *key, const double *v, int n)
 {
