@@ -5,6 +5,7 @@
 set -euo pipefail
 tool=$1; out=$3
 rm -rf "$out"; mkdir -p "$out"
+. "$(dirname "$0")/tsv.sh"   # tsv_awk, byte_reruns
 
 # Inputs are made by the tool itself from hand-written parameter files (no
 # image ships with the repo): grey and RGB, as 16-bit PNG, float EXR, TIFF.
@@ -63,14 +64,16 @@ grep -q '^channels 3' "$out/rgb.tif.params"
 grep -q '^channels 1' "$out/grey.exr.params"
 grep -q '^bands 6' "$out/rgb.tif.params"          # max(80, 64) -> floor(log2 80) = 6
 
-# analyse -> synthesize twice with one seed: identical files; another seed differs.
+# analyse -> synthesize twice with one seed: identical files; another seed
+# differs (byte reruns, tests/tsv.sh: release build only).
 "$tool" synthesize "$out/rgb.tif.params" --size 96 --seed 11 -o "$out/a.png"
-"$tool" synthesize "$out/rgb.tif.params" --size 96 --seed 11 -o "$out/b.png"
-"$tool" synthesize "$out/rgb.tif.params" --size 96 --seed 12 -o "$out/c.png"
-cmp -s "$out/a.png" "$out/b.png"
-! cmp -s "$out/a.png" "$out/c.png"
+if byte_reruns; then
+  "$tool" synthesize "$out/rgb.tif.params" --size 96 --seed 11 -o "$out/b.png"
+  "$tool" synthesize "$out/rgb.tif.params" --size 96 --seed 12 -o "$out/c.png"
+  cmp -s "$out/a.png" "$out/b.png"
+  if cmp -s "$out/a.png" "$out/c.png"; then echo "seeds 11 and 12 gave the same texture"; exit 1; fi
+fi
 # morph at t = 0 reproduces the first texture exactly (same seed).
-"$tool" analyse "$out/rgb16.png" -o "$out/rgb16.params"
 "$tool" morph "$out/rgb.tif.params" "$out/rgb.tif.params" --t 0.3 -o "$out/m.params"
 "$tool" morph "$out/rgb.tif.params" "$out/rgb16.png.params" --t 0 --size 96 --seed 11 -o "$out/m0.png"
 cmp -s "$out/a.png" "$out/m0.png"
@@ -93,9 +96,11 @@ photo="$(cd "$(dirname "$0")/../data/exemplars" && pwd)/crinklepaper.png"
 "$tool" analyse "$photo" -o "$out/photo.params"
 "$tool" analyse "$photo" --paper-histogram -o "$out/photo10.params"
 "$tool" analyse "$photo" --no-calibration -o "$out/photo2.params"
-grep -q '^noiselab-example 3$' "$out/photo.params" && grep -q '^calibrate 4$' "$out/photo.params"
+grep -q '^noiselab-example 3$' "$out/photo.params"
+grep -q '^calibrate 4$' "$out/photo.params"
 grep -q '^noiselab-example 2$' "$out/photo2.params"
-grep -q '^hist_kind 1$' "$out/photo.params" && grep -q '^hist_kind 0$' "$out/photo10.params"
+grep -q '^hist_kind 1$' "$out/photo.params"
+grep -q '^hist_kind 0$' "$out/photo10.params"
 [ "$(awk '$1 == "hist0" { print NF - 1 }' "$out/photo.params")" -eq 33 ]
 [ "$(awk '$1 == "hist0" { print NF - 1 }' "$out/photo10.params")" -eq 10 ]
 [ "$(awk '$1 ~ /^(target|corr)/' "$out/photo.params" | wc -l)" -eq 6 ]
@@ -104,7 +109,6 @@ for p in photo photo10 photo2; do
   "$tool" synthesize "$out/$p.params" --size 512 --seed 1 -o "$out/$p.png"
   "$tool" compare "$photo" "$out/$p.png" -o "$out/$p.tsv" --bands "$out/$p.bands.tsv"
 done
-. "$(dirname "$0")/tsv.sh"
 "$2" "$out/photo.tsv" 'rows=1' 'pass==1' 'ks<0.03' 'bands_checked==6'
 tsv_awk 'NR > 1 && n("checked") == 1 && (n("ratio") > 1.1 || n("ratio") < 1 / 1.1) { printf "band %d ratio %g outside x1.1\n", n("band"), n("ratio"); bad = 1 }
   END { exit bad }' "$out/photo.bands.tsv"
@@ -201,7 +205,8 @@ bad synthesize /dev/zero --size 8 -o "$out/x.png"
 bad synthesize "$out" --size 8 -o "$out/x.png"
 grep -q 'Is a directory' "$out/err.txt"
 rc=0; yes '#' | timeout 120 "$tool" synthesize /dev/stdin --size 8 -o "$out/x.png" 2> "$out/err.txt" || rc=$?
-[ "$rc" -eq 2 ] && grep -q 'longer than 1 MiB' "$out/err.txt"
+[ "$rc" -eq 2 ]
+grep -q 'longer than 1 MiB' "$out/err.txt"
 # Outputs: an empty name, a parent that is a file, sizes beyond memory.
 bad analyse "$out/half.exr" -o ""
 grep -q "'': empty file name" "$out/err.txt"
@@ -211,6 +216,7 @@ if [ "$(awk '/^MemTotal:/ { print $2 }' /proc/meminfo)" -lt 30000000 ]; then   #
   bad synthesize "$out/rgb.params" --size 30000 --height 30000 -o "$out/x.png"
   grep -q 'output 30000 x 30000 with 3 channels needs' "$out/err.txt"
 fi
-test ! -e "$out/x.png" && test ! -e "$out/x.params"
+test ! -e "$out/x.png"
+test ! -e "$out/x.params"
 [ -z "$(ls -A "$out" | grep '^\.' || true)" ]   # no temporary files left
 echo "cli_example: ok"
