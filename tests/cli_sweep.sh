@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# noiselab sweep: a small S3 sweep (quick, 2 values x 2 seeds) runs with GNU
+# noiselab sweep: a small A1 sweep (quick, 2 values x 2 seeds) runs with GNU
 # parallel and merges; it resumes without rerunning finished tasks; a failed
 # task is reported with its log while the others finish; bad input and a
 # folder holding another sweep are refused (exit 2, nothing overwritten);
@@ -12,16 +12,20 @@ src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export NL_BUILD="$(cd "$(dirname "$tool")/.." && pwd)"
 sweep=(bash "$src/scripts/sweep.sh")
 rm -rf "$out"; mkdir -p "$out"
-def=(s3_fbm --quick --param z=0.5,1.5 --param size=32 --seeds 2)
+# A1: tables and a figure, no image (no OpenImageIO start-up per task: S3's
+# tasks made this test 2.5 times dearer, issue 17). The bad input and the
+# emitted job files below use S3's parameters; they run no task.
+def=(a1_bounds --quick --param points=500,1000 --seeds 2)
 dir="$out/local sweep"   # a space in the path on purpose
 
 "${sweep[@]}" "${def[@]}" --jobs 2 --out "$dir" 2>"$out/run1.err"
 grep -q 'sweep: 4/4 done, 0 failed' "$out/run1.err"
-"$expect" "$dir/tasks.tsv" rows=4 'size==32'
-"${sweep[@]}" merge "$dir" --table gain_distribution.tsv --y sd 2>/dev/null
-"$expect" "$dir/merged/gain_distribution.tsv" rows=20 'size==32' 'seed>=1' 'seed<=2' 'max_abs<=bound'
-"$expect" "$dir/merged/gain_distribution_summary.tsv" rows=10 'n==2' 'sd_spread>=0' file:plot.png
-"$expect" "$dir/merged/gain_spectrum_summary.tsv" 'n==2'
+"$expect" "$dir/tasks.tsv" rows=4 'points>=500' 'points<=1000'
+"${sweep[@]}" merge "$dir" --table bounds.tsv --y max_abs 2>/dev/null
+# 2 points x 2 seeds x 8 octave counts (quick); the table's own points column
+# is renamed task_points beside the parameter's.
+"$expect" "$dir/merged/bounds.tsv" rows=32 'points>=500' 'seed>=1' 'seed<=2' 'max_abs<=bound' 'task_points==points'
+"$expect" "$dir/merged/bounds_summary.tsv" rows=16 'n==2' 'max_abs_spread>=0' file:plot.png
 
 # Resumable: nothing reruns; a task without a manifest (interrupted) does.
 jl="$(wc -l <"$dir/joblog")"
@@ -61,7 +65,7 @@ bad "a log range needs positive ends" s3_fbm --param z=0:1:log5 --out "$out/x"
 bad "a log range needs positive ends" s3_fbm --param z=1:-2:log5 --out "$out/x"
 bad "no --param" s3_fbm --out "$out/x"
 bad "holds a different sweep" "${def[@]}" --seeds 3 --out "$dir"
-bad "holds a different sweep" s3_fbm --quick --param z=0.5,2 --param size=32 --seeds 2 --out "$dir"
+bad "holds a different sweep" a1_bounds --quick --param points=500,2000 --seeds 2 --out "$dir"
 [ ! -e "$out/x" ]
 cmp "$dir/sweep.tsv" "$out/sweep.before"
 "${sweep[@]}" merge "$out/nonexistent" 2>/dev/null && exit 1
@@ -84,7 +88,7 @@ else
   sdir="$out/slurm sweep"
   "${sweep[@]}" "${def[@]}" --out "$sdir" --emit slurm --mem 500M --time 00:10:00 2>/dev/null
   timeout 300 sbatch --wait --quiet "$sdir/sweep.slurm" || { cat "$sdir"/logs/* >&2; echo "sbatch failed"; exit 1; }
-  "${sweep[@]}" merge "$sdir" --table gain_distribution.tsv --y sd 2>/dev/null
+  "${sweep[@]}" merge "$sdir" --table bounds.tsv --y max_abs 2>/dev/null
   for f in "$dir"/merged/*.tsv; do cmp "$f" "$sdir/merged/$(basename "$f")"; done
   echo "cli_sweep: Slurm sweep identical to the local one ($(ls "$dir"/merged/*.tsv | wc -l) tables)"
 fi
