@@ -105,18 +105,25 @@ grep -q '^hist_kind 0$' "$out/photo10.params"
 [ "$(awk '$1 == "hist0" { print NF - 1 }' "$out/photo10.params")" -eq 10 ]
 [ "$(awk '$1 ~ /^(target|corr)/' "$out/photo.params" | wc -l)" -eq 6 ]
 awk '$1 == "noiselab-example" { $2 = 2 } $1 !~ /^(calibrate|target[0-2]|corr[0-2][0-2])$/' "$out/photo.params" | cmp -s - "$out/photo2.params"
+# At 512 in the release build; the sanitizer build synthesises and compares
+# at 128 and leaves the numbers to it (full_scale, tests/tsv.sh).
+size=128; if full_scale; then size=512; fi
 for p in photo photo10 photo2; do
-  "$tool" synthesize "$out/$p.params" --size 512 --seed 1 -o "$out/$p.png"
+  "$tool" synthesize "$out/$p.params" --size "$size" --seed 1 -o "$out/$p.png"
   "$tool" compare "$photo" "$out/$p.png" -o "$out/$p.tsv" --bands "$out/$p.bands.tsv"
 done
-"$2" "$out/photo.tsv" 'rows=1' 'pass==1' 'ks<0.03' 'bands_checked==6'
-tsv_awk 'NR > 1 && n("checked") == 1 && (n("ratio") > 1.1 || n("ratio") < 1 / 1.1) { printf "band %d ratio %g outside x1.1\n", n("band"), n("ratio"); bad = 1 }
-  END { exit bad }' "$out/photo.bands.tsv"
-tsv_awk 'NR > 1 && n("band") == 6 { r = n("ratio") } END { if (!(r > 1.3435 && r < 1.3445)) { printf "uncalibrated band 6 ratio %g, was 1.344\n", r; exit 1 } }' "$out/photo2.bands.tsv"
-"$2" "$out/photo2.tsv" 'rows=1' 'pass==0' 'ks>0.0247' 'ks<0.0249'
-ks1=$(tsv_cut "$out/photo.tsv" ks | tail -1); ks0=$(tsv_cut "$out/photo10.tsv" ks | tail -1)
-sp1=$(tsv_cut "$out/photo.tsv" speckle | tail -1); sp0=$(tsv_cut "$out/photo10.tsv" speckle | tail -1)
-awk -v a="$ks1" -v b="$ks0" -v c="$sp1" -v d="$sp0" 'BEGIN { if (!(a < b && c < d)) { printf "gauss33 KS %g speckle %g vs paper10 %g %g\n", a, c, b, d; exit 1 } }'
+if full_scale; then
+  "$2" "$out/photo.tsv" 'rows=1' 'pass==1' 'ks<0.03' 'bands_checked==6'
+  tsv_awk 'NR > 1 && n("checked") == 1 && (n("ratio") > 1.1 || n("ratio") < 1 / 1.1) { printf "band %d ratio %g outside x1.1\n", n("band"), n("ratio"); bad = 1 }
+    END { exit bad }' "$out/photo.bands.tsv"
+  tsv_awk 'NR > 1 && n("band") == 6 { r = n("ratio") } END { if (!(r > 1.3435 && r < 1.3445)) { printf "uncalibrated band 6 ratio %g, was 1.344\n", r; exit 1 } }' "$out/photo2.bands.tsv"
+  "$2" "$out/photo2.tsv" 'rows=1' 'pass==0' 'ks>0.0247' 'ks<0.0249'
+  ks1=$(tsv_cut "$out/photo.tsv" ks | tail -1); ks0=$(tsv_cut "$out/photo10.tsv" ks | tail -1)
+  sp1=$(tsv_cut "$out/photo.tsv" speckle | tail -1); sp0=$(tsv_cut "$out/photo10.tsv" speckle | tail -1)
+  awk -v a="$ks1" -v b="$ks0" -v c="$sp1" -v d="$sp0" 'BEGIN { if (!(a < b && c < d)) { printf "gauss33 KS %g speckle %g vs paper10 %g %g\n", a, c, b, d; exit 1 } }'
+else
+  "$2" "$out/photo.tsv" 'rows=1' 'bands_checked>=1'
+fi
 
 # Bad inputs: exit 2, one line on stderr.
 bad() {

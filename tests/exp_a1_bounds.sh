@@ -8,8 +8,10 @@ exp="$1" expect="$2" out="$3"
 "$expect" "$out/bounds.tsv" rows=8 'over_bound==0' 'over_bound_incremental==0' \
   'max_abs<=bound' 'max_abs>0.5' 'max_noise<=1.2247448713915890' 'S<2' 'S>=1' \
   file:manifest.tsv file:report.md
-"$exp" --quick --out "$out/again" >/dev/null
-cmp "$out/bounds.tsv" "$out/again/bounds.tsv"
+if byte_reruns; then   # same seed, same tables (tsv.sh: release build only)
+  "$exp" --quick --out "$out/again" >/dev/null
+  cmp "$out/bounds.tsv" "$out/again/bounds.tsv"
+fi
 set +e
 refused "$exp" --quick --out "$out/bad" --set octaves=31
 [ ! -e "$out/bad/manifest.tsv" ]

@@ -10,8 +10,10 @@ exp="$1" expect="$2" out="$3"
 tsv_awk 'FNR > 1 {r = n("rings"); g = n("rings_geometry"); b = n("ramp_bands")
   if (r - g > 3 || g - r > 3 || b > r - 4) {printf "%s: rings %.2f, geometry %g, ramp bands %.2f\n", v("panel"), r, g, b; exit 1}}' "$out/wood.tsv"
 grep -q 'RenderMan Companion' "$out/report.md"
-"$exp" --quick --out "$out/again" >/dev/null
-cmp "$out/textures.tsv" "$out/again/textures.tsv"
-cmp "$out/wood.tsv" "$out/again/wood.tsv"
+if byte_reruns; then   # same seed, same tables (tsv.sh: release build only)
+  "$exp" --quick --out "$out/again" >/dev/null
+  cmp "$out/textures.tsv" "$out/again/textures.tsv"
+  cmp "$out/wood.tsv" "$out/again/wood.tsv"
+fi
 set +e
 refused "$exp" --quick --out "$out/bad" --set octaves=31
