@@ -47,16 +47,14 @@ mkdir -p "$out/exemplars"
 # trials are nl_parallel_for items too (nl_byexample_leak.h): Fig. 4's
 # weights as on two threads, and the fBm run's sweep (same sizes and seeds,
 # two threads; the sweep does not read the exemplars) as the one-thread run's.
-# The one-thread run is a thread-identity rerun (tsv.sh): release build only;
-# the fBm run, another exemplar, runs in both.
+# The fBm run, another exemplar, runs in both builds; the one-thread run is a
+# thread-identity rerun (tsv.sh): release build only.
+"$exp" --quick --threads 2 --exemplars "$out/exemplars" --set max_size=64 --set sweep_seeds=2 --out "$out/fbm" > /dev/null
 if thread_identity; then
   "$exp" --quick --threads 1 --exemplars "$(cd "$(dirname "$0")/.." && pwd)/data/exemplars" --set max_size=64 \
     --set sweep_seeds=2 --out "$out.t1" > /dev/null
   cmp "$out/photos.tsv" "$out.t1/photos.tsv"
   cmp "$out/weights.tsv" "$out.t1/weights.tsv"
-fi
-"$exp" --quick --threads 2 --exemplars "$out/exemplars" --set max_size=64 --set sweep_seeds=2 --out "$out/fbm" > /dev/null
-if thread_identity; then
   for t in estimators bands; do cmp "$out.t1/$t.tsv" "$out/fbm/$t.tsv"; done
 fi
 "$2" "$out/weights.tsv" 'rows=7' 'file:noise.png' 'corrected>=0'

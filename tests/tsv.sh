@@ -33,29 +33,24 @@ tsv_cut() {
   tsv_awk -v name="$2" '{ print v(name) }' "$1"
 }
 
-# thread_identity: true where the thread-identity reruns run (an experiment
-# again with --threads 1, compared with its --threads 2 run). They test the
-# order of the arithmetic, which the sanitizers do not change, so the
-# release build runs them; the sanitizer build (NL_TEST_SANITIZE, set by
-# tests/meson.build) runs every experiment's two-thread run, not the rerun
-# (issue 17: the test suite's CPU time).
-thread_identity() { [ "${NL_TEST_SANITIZE:-none}" = none ]; }
-
-# byte_reruns: true where a test runs a command a second time only to compare
-# the output's bytes with the first run's (same seed later, another seed,
-# another format of the same image). Like the thread-identity reruns they
-# test the bytes, which the sanitizers do not change, while the first run of
-# each command stays in the sanitizer build: release build only (issue 17;
-# every image-writing run starts OpenImageIO, about 0.8 s of CPU under the
-# sanitizers).
-byte_reruns() { [ "${NL_TEST_SANITIZE:-none}" = none ]; }
-
-# full_scale: true where a test runs a command at the size its checked numbers
-# were measured at. The sanitizer build runs the same commands smaller and
-# checks that they run cleanly, not those numbers, which the release build
-# checks (issue 17: cli_example's three 512^2 syntheses of the photograph, 9 s
-# of CPU under the sanitizers).
-full_scale() { [ "${NL_TEST_SANITIZE:-none}" = none ]; }
+# What the release build runs and the sanitizer build (NL_TEST_SANITIZE, set
+# by tests/meson.build) leaves out: work that tests the bytes or the numbers
+# of a result, which the sanitizers do not change, once the first run of the
+# command has run under them (issue 17: the test suite's CPU time). One test
+# of the build, three names for the three kinds of such work:
+unsanitized() { [ "${NL_TEST_SANITIZE:-none}" = none ]; }
+# thread_identity: an experiment run again with --threads 1 and compared with
+# its --threads 2 run (the order of the arithmetic).
+thread_identity() { unsanitized; }
+# byte_reruns: a command run a second time only to compare the output's bytes
+# with the first run's (same seed later, another seed, another format of the
+# same image; every image-writing run starts OpenImageIO, about 0.8 s of CPU
+# under the sanitizers).
+byte_reruns() { unsanitized; }
+# full_scale: a command run at the size its checked numbers were measured at;
+# the sanitizer build runs it smaller and checks only that it runs cleanly
+# (cli_example's three 512^2 syntheses of the photograph, 9 s of CPU there).
+full_scale() { unsanitized; }
 
 # refused CMD...: CMD must refuse its input as the guide says bad input is
 # refused: exit 2 with a one-line message on stderr. On anything else it
