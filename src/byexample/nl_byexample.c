@@ -1,6 +1,7 @@
 #include "byexample/nl_byexample.h"
 #include "byexample/nl_byexample_leak.h"
 #include "spectrum/nl_spectrum.h"
+#include "stats/nl_stats.h"
 
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_eigen.h>
@@ -182,17 +183,11 @@ void nl_byexample_recorrelate(double *const *plane, int nch, const double mean[3
 
 /* ---- histograms (sec. 5.2) ----------------------------------------------- */
 
-static int cmp_double(const void *a, const void *b)
-{
-  double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
 void nl_byexample_quantiles(const double *v, size_t n, double *q)
 {
   double *s = nl_xmalloc(n * sizeof *s);
   memcpy(s, v, n * sizeof *s);
-  qsort(s, n, sizeof *s, cmp_double);
+  nl_stats_sort(s, n);
   for (int j = 0; j < NL_EXAMPLE_HIST; j++) {
     double pos = (double)j / (NL_EXAMPLE_HIST - 1) * (double)(n - 1);
     size_t i = (size_t)pos;
@@ -208,7 +203,7 @@ void nl_byexample_hist(const double *v, size_t n, nl_byexample_hist_kind kind, d
   double p[NL_EXAMPLE_HIST_MAX], *s = nl_xmalloc(n * sizeof *s);
   int m = nl_byexample_hist_knots(kind, NULL, p);
   memcpy(s, v, n * sizeof *s);
-  qsort(s, n, sizeof *s, cmp_double);
+  nl_stats_sort(s, n);
   /* Order statistic r sits at p = (r + 1/2) / n, the same plotting position
    * as nl_byexample_gaussianize, so a Gaussian channel's knots lie on the
    * line its gaussianized values do; beyond the first and last order
@@ -222,22 +217,12 @@ void nl_byexample_hist(const double *v, size_t n, nl_byexample_hist_kind kind, d
   free(s);
 }
 
-typedef struct { double v; size_t i; } ranked;
-
-static int cmp_ranked(const void *a, const void *b)
-{
-  const ranked *x = a, *y = b;
-  if (x->v != y->v) return (x->v > y->v) - (x->v < y->v);
-  return (x->i > y->i) - (x->i < y->i);
-}
-
 void nl_byexample_gaussianize(double *v, size_t n)
 {
-  ranked *r = nl_xmalloc(n * sizeof *r);
-  for (size_t i = 0; i < n; i++) { r[i].v = v[i]; r[i].i = i; }
-  qsort(r, n, sizeof *r, cmp_ranked);
-  for (size_t k = 0; k < n; k++) v[r[k].i] = gsl_cdf_ugaussian_Pinv(((double)k + 0.5) / (double)n);
-  free(r);
+  size_t *order = nl_xmalloc((n ? n : 1) * sizeof *order);
+  nl_stats_argsort(v, n, order);   /* ties by index */
+  for (size_t k = 0; k < n; k++) v[order[k]] = gsl_cdf_ugaussian_Pinv(((double)k + 0.5) / (double)n);
+  free(order);
 }
 
 /* Fritsch-Carlson slopes: PCHIP's harmonic mean inside (Fritsch & Butland),
@@ -692,7 +677,7 @@ double nl_byexample_speckle(const nl_image *ex, const nl_image *syn)
   size_t n = (size_t)ex->width * ex->height, m = (size_t)syn->width * syn->height, c = 0;
   double *s = nl_xmalloc(n * sizeof *s);
   for (size_t i = 0; i < n; i++) s[i] = nl_byexample_saturation(ex->data + i * ex->channels, ex->channels);
-  qsort(s, n, sizeof *s, cmp_double);
+  nl_stats_sort(s, n);
   double p99 = s[(size_t)(0.99 * (double)(n - 1))];
   for (size_t i = 0; i < m; i++) c += nl_byexample_saturation(syn->data + i * syn->channels, syn->channels) > p99;
   free(s);

@@ -11,6 +11,7 @@ static inline double nl__lgamma(double x)
   int sign;
   return lgamma_r(x, &sign);
 }
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -68,11 +69,106 @@ static void intro_sort(double *x, size_t n, int depth)
   insertion_sort(x, n);
 }
 
+/* LSD radix sort on keys that order as the doubles do: the sign bit
+ * flipped for positives, every bit for negatives (IEEE's total order;
+ * -0 before +0, which compare equal: any order of equal values is a
+ * sorted order). Six passes of 11 bits from one histogram read; a pass
+ * whose digit is the same in every key moves nothing and is skipped (the
+ * high digits of data in a narrow range). Stable, so with an index payload
+ * it orders ties by index. Sorting a 256^2 image's pixels: introsort 5.0 ms,
+ * qsort with a callback 12 ms, this 1.5 ms (issue 17: L3 and the
+ * by-example tools spent 40% of their time sorting). */
+#define RADIX_BITS 11
+#define RADIX_SIZE (1u << RADIX_BITS)
+#define RADIX_PASSES 6
+#define RADIX_MIN 1024   /* below this introsort is as fast */
+
+static inline uint64_t sort_key(double v)
+{
+  uint64_t u;
+  memcpy(&u, &v, sizeof u);
+  return (u >> 63) ? ~u : u | 0x8000000000000000u;
+}
+
+static inline double key_double(uint64_t k)
+{
+  uint64_t u = (k >> 63) ? k & 0x7fffffffffffffffu : ~k;
+  double v;
+  memcpy(&v, &u, sizeof v);
+  return v;
+}
+
+/* Sorts k[0..n) (with idx[0..n) alongside when idx is not NULL) using tk,
+ * ti as the other buffers; returns 1 when the result ended in tk/ti. */
+static int radix_pass_all(uint64_t *k, uint64_t *tk, uint32_t *idx, uint32_t *ti, size_t n)
+{
+  uint32_t (*cnt)[RADIX_SIZE] = nl_xcalloc(RADIX_PASSES, sizeof *cnt);
+  for (size_t i = 0; i < n; i++)
+    for (int p = 0; p < RADIX_PASSES; p++) cnt[p][(k[i] >> (p * RADIX_BITS)) & (RADIX_SIZE - 1)]++;
+  int swapped = 0;
+  for (int p = 0; p < RADIX_PASSES; p++) {
+    uint32_t *c = cnt[p];
+    if (c[(k[0] >> (p * RADIX_BITS)) & (RADIX_SIZE - 1)] == n) continue;   /* one digit value: nothing moves */
+    uint32_t sum = 0;
+    for (unsigned d = 0; d < RADIX_SIZE; d++) { uint32_t t = c[d]; c[d] = sum; sum += t; }
+    for (size_t i = 0; i < n; i++) {
+      uint32_t at = c[(k[i] >> (p * RADIX_BITS)) & (RADIX_SIZE - 1)]++;
+      tk[at] = k[i];
+      if (idx) ti[at] = idx[i];
+    }
+    uint64_t *t = k; k = tk; tk = t;
+    uint32_t *u = idx; idx = ti; ti = u;
+    swapped ^= 1;
+  }
+  free(cnt);
+  return swapped;
+}
+
 void nl_stats_sort(double *x, size_t n)
 {
-  int depth = 0;
-  for (size_t m = n; m > 1; m >>= 1) depth += 2;
-  intro_sort(x, n, depth);
+  if (n < RADIX_MIN || n > UINT32_MAX) {
+    int depth = 0;
+    for (size_t m = n; m > 1; m >>= 1) depth += 2;
+    intro_sort(x, n, depth);
+    return;
+  }
+  uint64_t *k = nl_xmalloc(2 * n * sizeof *k);
+  for (size_t i = 0; i < n; i++) k[i] = sort_key(x[i]);
+  const uint64_t *r = radix_pass_all(k, k + n, NULL, NULL, n) ? k + n : k;
+  for (size_t i = 0; i < n; i++) x[i] = key_double(r[i]);
+  free(k);
+}
+
+typedef struct { double v; size_t i; } ranked;
+
+static int cmp_ranked(const void *a, const void *b)
+{
+  const ranked *x = a, *y = b;
+  if (x->v != y->v) return (x->v > y->v) - (x->v < y->v);
+  return (x->i > y->i) - (x->i < y->i);
+}
+
+void nl_stats_argsort(const double *x, size_t n, size_t *order)
+{
+  if (n == 0) return;
+  if (n > UINT32_MAX) {   /* beyond the radix sort's 32-bit counts: the same order by (value, index) */
+    ranked *r = nl_xmalloc(n * sizeof *r);
+    for (size_t i = 0; i < n; i++) { r[i].v = x[i]; r[i].i = i; }
+    qsort(r, n, sizeof *r, cmp_ranked);
+    for (size_t i = 0; i < n; i++) order[i] = r[i].i;
+    free(r);
+    return;
+  }
+  uint64_t *k = nl_xmalloc(2 * n * sizeof *k);
+  uint32_t *ix = nl_xmalloc(2 * n * sizeof *ix);
+  for (size_t i = 0; i < n; i++) {
+    k[i] = sort_key(x[i] == 0 ? 0.0 : x[i]);   /* -0 and +0 tie: ordered by index */
+    ix[i] = (uint32_t)i;
+  }
+  const uint32_t *r = radix_pass_all(k, k + n, ix, ix + n, n) ? ix + n : ix;
+  for (size_t i = 0; i < n; i++) order[i] = r[i];
+  free(k);
+  free(ix);
 }
 
 /* ---- one-sample KS and Kuiper ------------------------------------------- */

@@ -267,12 +267,6 @@ static nl_image *crop(const nl_image *im, int c)
   return o;
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-  double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
 /* One row of photos_mean.tsv: photo i, representation rep over the K
  * replicates just appended to bands and sum (their last rows). */
 static void mean_row(nl_table *mt, const nl_table *bands, const nl_table *sum, const nl_image *photo, const char *name,
@@ -305,7 +299,7 @@ static void mean_row(nl_table *mt, const nl_table *bands, const nl_table *sum, c
   size_t np = (size_t)photo->width * photo->height;
   double *sv = nl_xmalloc(np * sizeof *sv);
   for (size_t i = 0; i < np; i++) sv[i] = nl_byexample_saturation(photo->data + i * photo->channels, photo->channels);
-  qsort(sv, np, sizeof *sv, cmp_double);
+  nl_stats_sort(sv, np);
   double sat = sv[np - 1], sat99 = sv[(size_t)(0.99 * (double)(np - 1))];
   free(sv);
   int wk = -1;
