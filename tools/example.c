@@ -107,6 +107,10 @@ static void parse(int argc, char **argv, args *a)
   }
   nl_opt_end(&p);
   if (!a->out) die("-o OUT is required");
+  /* a bad output is named before any input is read (an image read starts
+   * OpenImageIO: 0.5 s) */
+  check(nl_path_check_writable(a->out, &err), &err);
+  if (a->bands) check(nl_path_check_writable(a->bands, &err), &err);
 }
 
 static void write_image(const nl_image *im, const char *path)
