@@ -104,8 +104,8 @@ int nl_image_backend_loaded(void) { return oiio_read != NULL; }
 
 /* What the file system says about an input (missing, a directory, not
  * readable) is said before the image library is loaded: its start-up is
- * 0.5 s of CPU, 1 s under the sanitizers (issue 17). The module checks the
- * same again, with the same messages, for what it opens itself. */
+ * 0.5 s of CPU, 1 s under the sanitizers (issue 17). The module then checks
+ * only the EXR header. */
 static nl_status readable(const char *path, nl_error *err)
 {
   struct stat st;

@@ -78,7 +78,7 @@ static void intro_sort(double *x, size_t n, int depth)
  * it orders ties by index. Sorting a 256^2 image's pixels (best of 50, one
  * core): introsort 4.4 ms, qsort with a callback 10.1 ms, this 0.50 ms; at
  * 2000 values introsort is faster (0.020 against 0.040 ms), at 4096 this
- * (0.035 against 0.19 ms). Issue 17: L3 and the by-example tools spent 40%
+ * (0.070 against 0.19 ms). Issue 17: L3 and the by-example tools spent 40%
  * of their time sorting. */
 #define RADIX_BITS 11
 #define RADIX_SIZE (1u << RADIX_BITS)
@@ -102,33 +102,34 @@ static inline double key_double(uint64_t k)
 
 /* Sorts k[0..n) (with idx[0..n) alongside when idx is not NULL) using tk,
  * ti as the other buffers; returns 1 when the result ended in tk/ti. */
-static int radix_pass_all(uint64_t *k, uint64_t *tk, uint32_t *idx, uint32_t *ti, size_t n)
+static int radix_pass_all(uint64_t *k, uint64_t *tk, size_t *idx, size_t *ti, size_t n)
 {
-  uint32_t (*cnt)[RADIX_SIZE] = nl_xcalloc(RADIX_PASSES, sizeof *cnt);
+  /* on the stack (96 KB): a fresh heap block each call cost page faults */
+  size_t cnt[RADIX_PASSES][RADIX_SIZE];
+  memset(cnt, 0, sizeof cnt);
   for (size_t i = 0; i < n; i++)
     for (int p = 0; p < RADIX_PASSES; p++) cnt[p][(k[i] >> (p * RADIX_BITS)) & (RADIX_SIZE - 1)]++;
   int swapped = 0;
   for (int p = 0; p < RADIX_PASSES; p++) {
-    uint32_t *c = cnt[p];
+    size_t *c = cnt[p];
     if (c[(k[0] >> (p * RADIX_BITS)) & (RADIX_SIZE - 1)] == n) continue;   /* one digit value: nothing moves */
-    uint32_t sum = 0;
-    for (unsigned d = 0; d < RADIX_SIZE; d++) { uint32_t t = c[d]; c[d] = sum; sum += t; }
+    size_t sum = 0;
+    for (unsigned d = 0; d < RADIX_SIZE; d++) { size_t t = c[d]; c[d] = sum; sum += t; }
     for (size_t i = 0; i < n; i++) {
-      uint32_t at = c[(k[i] >> (p * RADIX_BITS)) & (RADIX_SIZE - 1)]++;
+      size_t at = c[(k[i] >> (p * RADIX_BITS)) & (RADIX_SIZE - 1)]++;
       tk[at] = k[i];
       if (idx) ti[at] = idx[i];
     }
     uint64_t *t = k; k = tk; tk = t;
-    uint32_t *u = idx; idx = ti; ti = u;
+    size_t *u = idx; idx = ti; ti = u;
     swapped ^= 1;
   }
-  free(cnt);
   return swapped;
 }
 
 void nl_stats_sort(double *x, size_t n)
 {
-  if (n < RADIX_MIN || n > UINT32_MAX) {
+  if (n < RADIX_MIN) {
     int depth = 0;
     for (size_t m = n; m > 1; m >>= 1) depth += 2;
     intro_sort(x, n, depth);
@@ -141,36 +142,18 @@ void nl_stats_sort(double *x, size_t n)
   free(k);
 }
 
-typedef struct { double v; size_t i; } ranked;
-
-static int cmp_ranked(const void *a, const void *b)
-{
-  const ranked *x = a, *y = b;
-  if (x->v != y->v) return (x->v > y->v) - (x->v < y->v);
-  return (x->i > y->i) - (x->i < y->i);
-}
-
 void nl_stats_argsort(const double *x, size_t n, size_t *order)
 {
   if (n == 0) return;
-  if (n > UINT32_MAX) {   /* beyond the radix sort's 32-bit counts: the same order by (value, index) */
-    ranked *r = nl_xmalloc(n * sizeof *r);
-    for (size_t i = 0; i < n; i++) { r[i].v = x[i]; r[i].i = i; }
-    qsort(r, n, sizeof *r, cmp_ranked);
-    for (size_t i = 0; i < n; i++) order[i] = r[i].i;
-    free(r);
-    return;
-  }
   uint64_t *k = nl_xmalloc(2 * n * sizeof *k);
-  uint32_t *ix = nl_xmalloc(2 * n * sizeof *ix);
+  size_t *tmp = nl_xmalloc(n * sizeof *tmp);
   for (size_t i = 0; i < n; i++) {
     k[i] = sort_key(x[i] == 0 ? 0.0 : x[i]);   /* -0 and +0 tie: ordered by index */
-    ix[i] = (uint32_t)i;
+    order[i] = i;
   }
-  const uint32_t *r = radix_pass_all(k, k + n, ix, ix + n, n) ? ix + n : ix;
-  for (size_t i = 0; i < n; i++) order[i] = r[i];
+  if (radix_pass_all(k, k + n, order, tmp, n)) memcpy(order, tmp, n * sizeof *order);
   free(k);
-  free(ix);
+  free(tmp);
 }
 
 /* ---- one-sample KS and Kuiper ------------------------------------------- */

@@ -278,8 +278,8 @@ size_t nl_stats_chisq_bin(double v, size_t k, double a, double b);
  * not allowed. */
 void nl_stats_sort(double *x, size_t n);
 /* order[k] = the index of the k-th smallest x (numpy's argsort with
- * kind='stable'): equal values, -0 and +0 included, in index order. n below
- * 2^32; NaN not allowed. */
+ * kind='stable'): equal values, -0 and +0 included, in index order (the
+ * radix sort at every n). NaN not allowed. */
 void nl_stats_argsort(const double *x, size_t n, size_t *order);
 
 #endif
