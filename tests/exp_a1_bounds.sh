@@ -4,7 +4,7 @@
 set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # tables by column name; refused
 exp="$1" expect="$2" out="$3"
-"$exp" --quick --out "$out" >/dev/null
+"$exp" --quick $NOIMG --out "$out" >/dev/null
 "$expect" "$out/bounds.tsv" rows=8 'over_bound==0' 'over_bound_incremental==0' \
   'max_abs<=bound' 'max_abs>0.5' 'max_noise<=1.2247448713915890' 'S<2' 'S>=1' \
   file:manifest.tsv file:report.md
@@ -15,7 +15,7 @@ if [ "${NL_TEST_OPENBLAS:-0}" = 1 ] && ! grep -q $'^blas\tOpenBLAS' "$out/manife
   echo "the build links OpenBLAS, but the manifest says: $(grep $'^blas\t' "$out/manifest.tsv")"; exit 1
 fi
 if byte_reruns; then   # same seed, same tables (tsv.sh: release build only)
-  "$exp" --quick --out "$out/again" >/dev/null
+  "$exp" --quick --no-images --out "$out/again" >/dev/null
   cmp "$out/bounds.tsv" "$out/again/bounds.tsv"
 fi
 set +e

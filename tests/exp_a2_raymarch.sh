@@ -12,10 +12,10 @@
 set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 exp="$1" expect="$2" out="$3"
-"$exp" --quick --threads 2 --out "$out" >/dev/null
+"$exp" --quick $NOIMG --threads 2 --out "$out" >/dev/null
 "$expect" "$out/timing.tsv" rows=6 'max_diff_levels==0' 'bounded_evals<plain_evals' \
   'eval_ratio>1' 'terms>octaves' 'max_noise<=1.2247448713915890' 'plain_ms>0' 'alt_eval_ratio>1' \
-  'alt_slope==-4' file:balls.png file:ball.png file:bounds.png file:report.md
+  'alt_slope==-4' $(images balls.png) $(images ball.png) $(images bounds.png) file:report.md
 # The gain grows with the number of octaves (N = 10 against N = 1).
 tsv_awk 'n("octaves")==1{a=n("eval_ratio")} n("octaves")==10{b=n("eval_ratio")} END{exit !(b > a && b > 1.3)}' "$out/timing.tsv"
 # The sweep's columns, and at N = 0 a steeper slope, a larger ratio.
@@ -34,7 +34,7 @@ grep -q "Best reading: \*\*slope=" "$out/report.md"
 # The renders run as (row, seed) items on the run's threads: one thread gives
 # the same tables, times aside (the check ignores the timing columns).
 if thread_identity; then
-  "$exp" --quick --threads 1 --out "$out.t1" >/dev/null
+  "$exp" --quick --no-images --threads 1 --out "$out.t1" >/dev/null
   "$(dirname "$exp")/../tools/noiselab-check" "$out" "$out.t1" >/dev/null
 fi
 set +e

@@ -7,7 +7,7 @@
 set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # tables by column name; refused
 exp="$1" expect="$2" out="$3"
-"$exp" --quick --out "$out" >/dev/null
+"$exp" --quick $NOIMG --out "$out" >/dev/null
 "$expect" "$out/bandwidth.tsv" rows=3 'f_inf<f_sup' 'f_inf>=0' 'f_sup<8' 'sigma>0' 'f_sup_bins>100'
 "$expect" "$out/sweep.tsv" rows=8 'oct1_f_sup<oct2_f_sup' 'oct1_f_inf<oct1_f_sup' 'sum_f_sup>=oct1_f_sup'
 "$expect" "$out/psd.tsv" 'rows>=500' 'gamma_oct1>=0' file:manifest.tsv
@@ -49,7 +49,7 @@ tsv_awk -v bw="$out/bandwidth.tsv" 'NR > 1 { h = v("hypothesis"); if (!(h in c))
       if (s[w, x[at["signal"]]] != x[at["f_sup"]] + 0) { print "bandwidth.tsv " x[at["signal"]] " is not " w; exit 1 } } }' \
   "$out/hypotheses.tsv"
 if byte_reruns; then   # same seed, same tables (tsv.sh: release build only)
-  "$exp" --quick --out "$out/again" >/dev/null
+  "$exp" --quick --no-images --out "$out/again" >/dev/null
   cmp "$out/bandwidth.tsv" "$out/again/bandwidth.tsv"
   cmp "$out/hypotheses.tsv" "$out/again/hypotheses.tsv"
 fi

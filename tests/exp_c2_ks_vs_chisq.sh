@@ -20,9 +20,9 @@ set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
-"$exp" --quick --threads 2 --out "$out" --patterns "$pat" >/dev/null
+"$exp" --quick $NOIMG --threads 2 --out "$out" --patterns "$pat" >/dev/null
 "$expect" "$out/summary.tsv" rows=6 'E_ks<0.06' 'chi2>0' 'E_con>0' 'p_kuiper_min>0.05' \
-  file:noise_flower.png file:noise_x.png
+  $(images noise_flower.png) $(images noise_x.png)
 awk -F'\t' 'NR == 1 {for (i = 1; i <= NF; i++) col[$i] = i} NR == 1 || $col["objective"] != "chisq"' \
   "$out/summary.tsv" > "$out/summary_ks_kuiper.tsv"
 "$expect" "$out/summary_ks_kuiper.tsv" rows=4 'E_ks<0.02' 'V_kuiper<0.03'
@@ -43,7 +43,7 @@ awk -F'\t' 'NR==1{for(i=1;i<=NF;i++) col[$i]=i}
 # same seed, same table, on one thread as on two (the seed runs are
 # nl_parallel_for items, nl_study_cheng_runs)
 if thread_identity; then
-  "$exp" --quick --threads 1 --out "$out/again" --patterns "$pat" >/dev/null
+  "$exp" --quick --no-images --threads 1 --out "$out/again" --patterns "$pat" >/dev/null
   cmp "$out/summary.tsv" "$out/again/summary.tsv"
   "$(dirname "$exp")/../tools/noiselab-check" "$out/again" "$out" >/dev/null
 fi

@@ -9,7 +9,7 @@ set -euo pipefail
 . "$(dirname "$0")/tsv.sh"
 exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
-"$exp" --quick --threads 2 --out "$out" --patterns "$pat" >/dev/null
+"$exp" --quick $NOIMG --threads 2 --out "$out" --patterns "$pat" >/dev/null
 "$expect" "$out/gmm.tsv" rows=8 'K_initial>=1' 'K_final>=K_initial' 'input_samples<=pool' 'seeds==3' \
   'n_ok<=seeds' 'BIC>AIC' 'paper_samples==1000'
 "$expect" "$out/original.tsv" rows=4 'E_ks>0' 'E_ks<0.05' 'E_con>0' 'E_R_pool_max_gap>=0' 'E_R_pool_best<=E_R_pool_median'
@@ -56,7 +56,7 @@ grep -q '^cluster_bytes_cloud_low1' "$out/manifest.tsv"
 # order: the same bytes, and noiselab-check (every table, the manifest's
 # parameters) finds no drift.
 if thread_identity; then
-  "$exp" --quick --out "$out/one" --patterns "$pat" --threads 1 >/dev/null
+  "$exp" --quick --no-images --out "$out/one" --patterns "$pat" --threads 1 >/dev/null
   cmp <(drop "$out/gmm.tsv" seconds_gmm) <(drop "$out/one/gmm.tsv" seconds_gmm)
   cmp <(drop "$out/pool_runs.tsv" seconds) <(drop "$out/one/pool_runs.tsv" seconds)
   cmp "$out/assess.tsv" "$out/one/assess.tsv"

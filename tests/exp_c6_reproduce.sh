@@ -10,9 +10,9 @@ set -euo pipefail
 . "$(dirname "$0")/tsv.sh"
 exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
-"$exp" --quick --threads 2 --out "$out" --patterns "$pat" >/dev/null
+"$exp" --quick $NOIMG --threads 2 --out "$out" --patterns "$pat" >/dev/null
 "$expect" "$out/summary.tsv" rows=9 'E_ks>0' 'E_ks<0.05' 'p_ks_min>0.05' 'E_con>0' 'below_ks<=1' 'below_con<=1' \
-  'ms_texture<=seconds_opt*1000' 'K>=20' file:textures_erosion.png file:textures_marble.png file:textures_cloud.png
+  'ms_texture<=seconds_opt*1000' 'K>=20' $(images textures_erosion.png) $(images textures_marble.png) $(images textures_cloud.png)
 "$expect" "$out/reproductions.tsv" rows=48 'E_ks>0' 'p_ks>0.05' 'ks2_D>0' 'ks2_D<0.035'
 for t in erosion marble cloud; do
   "$expect" "$out/cdf_$t.tsv" rows=512 'F>0' 'F<=1' 'u_original>=0' 'u_original<1' 'u_r8<1'
@@ -24,7 +24,7 @@ awk -F'\t' 'NR==1{for(i=1;i<=NF;i++) col[$i]=i; next} $col["kind"]=="original"{o
 # pool runs and the reproductions' evaluations are nl_parallel_for items
 # (nl_study_cheng_reproduce_cases; the draws stay in order on one thread).
 if thread_identity; then
-  "$exp" --quick --threads 1 --out "$out/again" --patterns "$pat" >/dev/null
+  "$exp" --quick --no-images --threads 1 --out "$out/again" --patterns "$pat" >/dev/null
   # timing columns dropped by name
   drop() { awk -F'\t' -v OFS='\t' 'NR==1{for(i=1;i<=NF;i++) if($i!="ms_reproduce" && $i!="ms_texture" && $i!="seconds_opt") k[++n]=i}
     {s=$k[1]; for(j=2;j<=n;j++) s=s OFS $k[j]; print s}' "$1"; }

@@ -4,8 +4,9 @@
 # than 3D, the two finest bands keeping > 75% of their power in-octave
 # (measured 0.81-0.90), and every output present.
 set -euo pipefail
-"$1" --quick --out "$3"
-"$2" "$3/summary.tsv" 'rows=3' 'ours>0.1' 'ours<1.0' 'file:noise.png'
+. "$(dirname "$0")/tsv.sh"   # NOIMG, images
+"$1" --quick $NOIMG --out "$3"
+"$2" "$3/summary.tsv" 'rows=3' 'ours>0.1' 'ours<1.0' $(images noise.png)
 "$2" "$3/variance.tsv" 'rows=3' 'var2d~0.275:0.02' 'var3d~0.195:0.02'
 "$2" "$3/lattice.tsv" 'rows=9' 'var2d>var3d'
 # every band keeps a share of its power in-octave: measured 0.21 (band 5, few

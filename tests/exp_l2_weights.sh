@@ -39,7 +39,7 @@ mkdir -p "$out/exemplars"
 # The main run reads the shipped photographs, as reproduce does, so that the
 # sanitizer check can compare this very run with results/quick; the fBm
 # exemplar gets a run of its own (no size sweep: max_size 64, 2 seeds).
-"$exp" --quick --threads 2 --exemplars "$(cd "$(dirname "$0")/.." && pwd)/data/exemplars" --out "$out"
+"$exp" --quick $NOIMG --threads 2 --exemplars "$(cd "$(dirname "$0")/.." && pwd)/data/exemplars" --out "$out"
 # The photographs' fits are nl_parallel_for items (nl_study_exemplar_fits): one
 # thread gives the same photos.tsv byte for byte (the size sweep, which does
 # not enter it, cut to 64 pixels and 2 seeds).
@@ -49,15 +49,15 @@ mkdir -p "$out/exemplars"
 # two threads; the sweep does not read the exemplars) as the one-thread run's.
 # The fBm run, another exemplar, runs in both builds; the one-thread run is a
 # thread-identity rerun (tsv.sh): release build only.
-"$exp" --quick --threads 2 --exemplars "$out/exemplars" --set max_size=64 --set sweep_seeds=2 --out "$out/fbm" > /dev/null
+"$exp" --quick --no-images --threads 2 --exemplars "$out/exemplars" --set max_size=64 --set sweep_seeds=2 --out "$out/fbm" > /dev/null
 if thread_identity; then
-  "$exp" --quick --threads 1 --exemplars "$(cd "$(dirname "$0")/.." && pwd)/data/exemplars" --set max_size=64 \
+  "$exp" --quick --no-images --threads 1 --exemplars "$(cd "$(dirname "$0")/.." && pwd)/data/exemplars" --set max_size=64 \
     --set sweep_seeds=2 --out "$out.t1" > /dev/null
   cmp "$out/photos.tsv" "$out.t1/photos.tsv"
   cmp "$out/weights.tsv" "$out.t1/weights.tsv"
   for t in estimators bands; do cmp "$out.t1/$t.tsv" "$out/fbm/$t.tsv"; done
 fi
-"$2" "$out/weights.tsv" 'rows=7' 'file:noise.png' 'corrected>=0'
+"$2" "$out/weights.tsv" 'rows=7' $(images noise.png) 'corrected>=0'
 tsv_awk 'NR == 1 || n("band") == 0' "$out/weights.tsv" > "$out/weights_b0.tsv"
 tsv_awk 'NR == 1 || (n("band") >= 1 && n("band") <= 2)' "$out/weights.tsv" > "$out/weights_b12.tsv"
 tsv_awk 'NR == 1 || n("band") == 3' "$out/weights.tsv" > "$out/weights_b3.tsv"

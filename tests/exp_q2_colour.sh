@@ -4,10 +4,10 @@
 set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # byte_reruns
 exp="$1" expect="$2" out="$3"
-"$exp" --quick --out "$out" >/dev/null
+"$exp" --quick $NOIMG --out "$out" >/dev/null
 "$expect" "$out/values.tsv" rows=6 'sd>0.01' 'max>min' 'max<=24.8' 'min>=-12' \
-  file:colour.png file:report.md
+  $(images colour.png) file:report.md
 if byte_reruns; then   # same seed, same tables (tsv.sh: release build only)
-  "$exp" --quick --out "$out/again" >/dev/null
+  "$exp" --quick --no-images --out "$out/again" >/dev/null
   cmp "$out/values.tsv" "$out/again/values.tsv"
 fi

@@ -3,13 +3,13 @@
 set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # tables by column name; refused
 exp="$1" expect="$2" out="$3"
-"$exp" --quick --out "$out" >/dev/null
+"$exp" --quick $NOIMG --out "$out" >/dev/null
 "$expect" "$out/fractal_distribution.tsv" rows=4 'max_abs<=bound' 'sd>0' 'octaves>=1' \
-  'max_abs_over_bound<1' file:fractal_panels.png file:manifest.tsv file:report.md
+  'max_abs_over_bound<1' $(images fractal_panels.png) file:manifest.tsv file:report.md
 "$expect" "$out/fractal_spectrum.tsv" rows=64 'freq>0'
 # A second run with the same seed gives the same table, byte for byte.
 if byte_reruns; then   # same seed, same tables (tsv.sh: release build only)
-  "$exp" --quick --out "$out/again" >/dev/null
+  "$exp" --quick --no-images --out "$out/again" >/dev/null
   cmp "$out/fractal_distribution.tsv" "$out/again/fractal_distribution.tsv"
 fi
 # Unknown parameters and bad values are refused with exit 2.

@@ -51,6 +51,15 @@ byte_reruns() { unsanitized; }
 # the sanitizer build runs it smaller and checks only that it runs cleanly
 # (cli_example's three 512^2 syntheses of the photograph, 9 s of CPU there).
 full_scale() { unsanitized; }
+# NOIMG: the option of an experiment's first run. The sanitizer build's runs
+# make every image (under the sanitizers) but write none (--no-images; the
+# image writer runs under them in test_image, cli_render and cli_example):
+# the first image write starts OpenImageIO, about 0.85 s of CPU there, more
+# than most quick runs (issue 17). Reruns that compare tables pass
+# --no-images in both builds. `images NAME...` gives expect's file: checks
+# of the images a run wrote: none under NOIMG.
+NOIMG=""; unsanitized || NOIMG="--no-images"
+images() { if unsanitized; then printf 'file:%s ' "$@"; fi; }
 
 # refused CMD...: CMD must refuse its input as the guide says bad input is
 # refused: exit 2 with a one-line message on stderr. On anything else it

@@ -24,6 +24,7 @@ struct nl_harness {
   char *out;
   unsigned long seed;
   int seeds, quick;
+  int images;             /* 0: --no-images (nl_harness_write_image writes nothing) */
   int threads;            /* --threads, default nl_parallel_cores() */
   double t0;
   char started[32];
@@ -56,13 +57,16 @@ struct nl_harness {
 static void usage(const char *name, const char *title)
 {
   printf("%s - %s\n\n"
-         "usage: %s [--out DIR] [--seed N] [--seeds K] [--quick] [--threads N] [--set NAME=VALUE]...\n\n"
+         "usage: %s [--out DIR] [--seed N] [--seeds K] [--quick] [--threads N] [--no-images]\n"
+         "       [--set NAME=VALUE]...\n\n"
          "  --out DIR     output folder (default results/%s)\n"
          "  --seed N      base seed, 0..4294967295 (default 1)\n"
          "  --seeds K     seeds for means and spreads (default 10; 3 with --quick)\n"
          "  --quick       small sizes, for tests and CI\n"
          "  --threads N   threads for independent work, 1..64 (default: the number of\n"
          "                cores); the tables are the same for any N\n"
+         "  --no-images   tables, manifest and report text only, no image files (for\n"
+         "                sweeps and reruns that compare tables; manifest: images no)\n"
          "  --set K=V     set an experiment parameter (listed below)\n"
          "  --params      list the parameters as TSV (name, default, min, max, meaning)\n\n"
          "Nothing in the output folder changes until every option and parameter\n"
@@ -141,7 +145,7 @@ nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_erro
   /* GNU style through the tools' parser: --seed 3, --seed=3, unique prefixes. */
   static const nl_opt_spec spec[] = {{"help", 'h', 0}, {"params", 0, 0}, {"quick", 0, 0}, {"out", 0, 1},
                                      {"seed", 0, 1}, {"seeds", 0, 1}, {"set", 0, 1}, {"threads", 0, 1},
-                                     {0}};
+                                     {"no-images", 0, 0}, {0}};
   memset(o, 0, sizeof *o);
   o->seed = 1;
   o->seeds = -1;
@@ -159,6 +163,7 @@ nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_erro
     else if (!strcmp(spec[k].name, "help")) o->help = 1;
     else if (!strcmp(spec[k].name, "params")) o->params = 1;
     else if (!strcmp(spec[k].name, "quick")) o->quick = 1;
+    else if (!strcmp(spec[k].name, "no-images")) o->no_images = 1;
     else if (!strcmp(spec[k].name, "out")) {
       if (!*v) st = nl_fail(err, NL_EINVAL, "--out: empty folder name");
       else { free(o->out); o->out = nl_xstrdup(v); }
@@ -219,6 +224,7 @@ nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char
   r->seed = o.seed;
   r->seeds = o.seeds < 0 ? (o.quick ? 3 : 10) : o.seeds;
   r->quick = o.quick;
+  r->images = !o.no_images;
   r->threads = o.threads > 0 ? o.threads : nl_parallel_cores();
   r->t0 = nl_time_now();
   r->out = o.out ? o.out : nl_path_join("results", name);
@@ -238,6 +244,7 @@ nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char
   nl_harness_note(r, "seeds", "%d", r->seeds);
   note(r, "quick", r->quick ? "yes" : "no");
   nl_harness_note(r, "threads", "%d", r->threads);   /* speed only: the tables do not depend on it */
+  note(r, "images", r->images ? "yes" : "no");        /* --no-images: tables only */
   nl_harness_text(r, "## %s\n", title);
   r->last_progress = -1;
   return r;
@@ -278,6 +285,7 @@ unsigned long nl_harness_seed(const nl_harness *r) { return r->seed; }
 int nl_harness_seeds(const nl_harness *r) { return r->seeds; }
 int nl_harness_quick(const nl_harness *r) { return r->quick; }
 int nl_harness_threads(const nl_harness *r) { return r->threads; }
+int nl_harness_images(const nl_harness *r) { return r->images; }
 const char *nl_harness_dir(const nl_harness *r) { prepare((nl_harness *)r); return r->out; }
 const char *nl_harness_name(const nl_harness *r) { return r->name; }
 
@@ -367,6 +375,7 @@ void nl_harness_write_table(nl_harness *r, const nl_table *t, const char *file)
 
 void nl_harness_write_image(nl_harness *r, const nl_image *im, const char *file)
 {
+  if (!r->images) return;
   char *p = nl_harness_path(r, file);
   nl_error err;
   if (nl_image_write(im, p, 8, &err)) nl_harness_die(r, 1, "%s", err.msg);
