@@ -214,6 +214,9 @@ matches "$rs/s4_marble/manifest.tsv" s4_marble 1 1 "$c" || fail "resume_matches:
 ! matches "$rs/s4_marble/manifest.tsv" s4_marble 1 0 "$c" || fail "resume_matches: a --quick run matches a full one"
 sed $'s/^seeds\t.*/seeds\t7/' "$rs/s4_marble/manifest.tsv" >"$out/seeds7.tsv"
 ! matches "$out/seeds7.tsv" s4_marble 1 1 "$c" || fail "resume_matches: another seeds count matches"
+sed $'s/^images\t.*/images\tno/' "$rs/s4_marble/manifest.tsv" >"$out/noimages.tsv"
+grep -q $'^images\tno$' "$out/noimages.tsv" && ! matches "$out/noimages.tsv" s4_marble 1 1 "$c" \
+  || fail "resume_matches: a --no-images run matches"
 # ETA: previous times scaled by this run's pace, the mean so far for the rest.
 [ "$(bash -c 'source "$1"; repro_eta 10 1 5 20 -' _ "$nl")" = "1/3 done, elapsed 10 s, ETA 50 s (previous times and mean so far x 2)" ] \
   || fail "repro_eta: $(bash -c 'source "$1"; repro_eta 10 1 5 20 -' _ "$nl")"
