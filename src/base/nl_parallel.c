@@ -81,3 +81,9 @@ void nl_parallel_for(size_t n, int nthreads, nl_parallel_fn fn, void *ctx)
   for (int t = 1; t < started; t++) pthread_join(th[t], NULL);
   if (blas > 1) set(blas);
 }
+
+void nl_parallel_blas_idle(void)
+{
+  int (*shutdown)(void) = (int (*)(void))dlsym(RTLD_DEFAULT, "blas_thread_shutdown_");
+  if (shutdown) shutdown();
+}

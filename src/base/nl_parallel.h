@@ -48,6 +48,20 @@ int nl_parallel_threads(size_t n, int nthreads);
 /* The processors online (sysconf), at least 1: the harness's default. */
 int nl_parallel_cores(void);
 
+/* Stops OpenBLAS's idle worker threads, if OpenBLAS is loaded (found at
+ * run time with dlsym; a no-op otherwise). OpenBLAS starts its workers when
+ * it is loaded, and a new worker spins (sched_yield) for its timeout, about
+ * 0.1 s of another core's CPU, before it sleeps: in every process that
+ * links it, whether or not it calls a threaded BLAS routine (issue 17: 0.11 s
+ * of a 0.3 s process, /proc/PID/task; 0.05 s against 0.19 s of CPU for a
+ * process that sleeps 0.3 s). blas_thread_shutdown_ is OpenBLAS's own (its
+ * fork handler calls it): it joins the workers, and the next threaded call
+ * starts them again with the same count, so no result changes (a 1500^2
+ * dgemm after it: the same bytes, two threads again). The programs call it
+ * first thing (nl_harness_begin, the tools' main); only from one thread,
+ * before any BLAS call is running. */
+void nl_parallel_blas_idle(void);
+
 /* The most threads nl_parallel_for starts. */
 #define NL_PARALLEL_MAX 64
 

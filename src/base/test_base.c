@@ -7,6 +7,8 @@
 #include "base/nl_parallel.h"
 #include "nl_test.h"
 
+#include <dirent.h>
+#include <gsl/gsl_blas.h>
 #include <gsl/gsl_rng.h>
 #include <gsl/gsl_statistics_double.h>
 #include <stdlib.h>
@@ -301,6 +303,46 @@ NL_TEST(parallel_for_same_bytes_for_any_thread_count)
   NL_CHECK(nl_parallel_threads(1000, 1000) == NL_PARALLEL_MAX);
   NL_CHECK(nl_parallel_cores() >= 1);
   nl_parallel_for(0, 4, par_item, NULL);   /* no items: fn never called */
+}
+
+static int task_count(void)
+{
+  DIR *d = opendir("/proc/self/task");
+  int n = 0;
+  if (!d) return -1;
+  for (struct dirent *e; (e = readdir(d));) n += e->d_name[0] != '.';
+  closedir(d);
+  return n;
+}
+
+static void product(const double *a, const double *b, double *c, size_t n)
+{
+  gsl_matrix_const_view A = gsl_matrix_const_view_array(a, n, n), B = gsl_matrix_const_view_array(b, n, n);
+  gsl_matrix_view C = gsl_matrix_view_array(c, n, n);
+  gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, &A.matrix, &B.matrix, 0.0, &C.matrix);
+}
+
+/* nl_parallel_blas_idle stops OpenBLAS's idle workers (the process has
+ * fewer threads), and a threaded product afterwards, which starts them
+ * again, gives the bytes of one before. */
+NL_TEST(blas_idle_stops_workers_same_bytes)
+{
+  int (*blas_get)(void) = (int (*)(void))dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
+  if (!blas_get || blas_get() < 2) return;   /* no OpenBLAS, or one thread: nothing to stop */
+  enum { N = 400 };   /* 400^3: OpenBLAS runs it on its threads */
+  double *a = malloc(N * N * sizeof *a), *b = malloc(N * N * sizeof *b);
+  double *c1 = malloc(N * N * sizeof *c1), *c2 = malloc(N * N * sizeof *c2);
+  for (int i = 0; i < N * N; i++) { a[i] = sin(0.37 * i) + 1e-3 * (i % 13); b[i] = cos(0.11 * i) - 0.3 * (i % 3); }
+  product(a, b, c1, N);
+  int before = task_count();
+  nl_parallel_blas_idle();
+  NL_CHECK(task_count() < before);
+  product(a, b, c2, N);
+  NL_CHECK(memcmp(c1, c2, N * N * sizeof *c1) == 0);
+  NL_CHECK(task_count() == before);
+  nl_parallel_blas_idle();   /* twice in a row: nothing left to stop */
+  nl_parallel_blas_idle();
+  free(a); free(b); free(c1); free(c2);
 }
 
 int main(void)

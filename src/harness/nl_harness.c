@@ -209,6 +209,7 @@ nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char
   mallopt(M_MMAP_THRESHOLD, 64 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
 #endif
+  nl_parallel_blas_idle();   /* OpenBLAS's spinning idle workers (base/nl_parallel.h) */
   nl_harness_options o;
   nl_error err;
   if (nl_harness_parse(&o, argc, argv, &err)) {
