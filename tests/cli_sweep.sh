@@ -75,6 +75,10 @@ edir="$out/emit"
 "${sweep[@]}" s3_fbm --quick --param 'z=1e-2:1:log3' --param size=32 --seeds 2 --out "$edir" --emit slurm --cpus 1 --mem 500M --time 00:10:00 2>/dev/null
 [ "$(wc -l <"$edir/jobs.txt")" = 6 ]
 grep -q -- '--set '"'"'z=0.1'"'"'' "$edir/jobs.txt"
+# Tasks write tables only (--no-images) unless --images is given.
+[ "$(grep -c -- ' --no-images ' "$edir/jobs.txt")" = 6 ] && grep -q $'^images\tno$' "$edir/sweep.tsv"
+"${sweep[@]}" s3_fbm --quick --images --param size=32,48 --out "$out/emit_images" --emit parallel 2>/dev/null
+! grep -q -- '--no-images' "$out/emit_images/jobs.txt" && grep -q $'^images\tyes$' "$out/emit_images/sweep.tsv"
 grep -q '^#SBATCH --array=0-5$' "$edir/sweep.slurm"
 grep -q '^#SBATCH --mem=500M$' "$edir/sweep.slurm"
 [ ! -e "$edir/tasks/0000/manifest.tsv" ]   # emitting runs nothing
