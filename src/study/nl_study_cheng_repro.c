@@ -127,6 +127,11 @@ static void seed_item(void *ctx, size_t s, int t)
   j->ll[s] = m->gmm ? m->gmm->loglik : NAN;
   j->sec[s] = m->seconds_cluster + m->seconds_gmm;
   j->status[s] = m->status;
+  /* The rows need the first seed's path and cutoff, not its mixture: its K
+   * d^2 arrays go back to nl_gmm's cache now, for the next fit, instead of
+   * fresh pages (C5 quick: 1.87 -> 1.50 GB first-touched). */
+  nl_gmm_free(m->gmm);
+  m->gmm = NULL;
   if (s == 0) j->first = m; else nl_cheng_model_free(m);
 }
 
