@@ -28,7 +28,6 @@
  * The engine is the harness's (nl_harness_check_experiment in
  * src/harness/nl_harness.h); this is its command line.
  */
-#include "base/nl_parallel.h"
 #include "harness/nl_harness.h"
 
 #include <stdlib.h>
@@ -42,8 +41,7 @@ static int die(const char *msg)
 
 int main(int argc, char **argv)
 {
-  nl_set_oom_handler(nl_harness_oom_exit);
-  nl_parallel_blas_idle();   /* OpenBLAS's spinning idle workers (base/nl_parallel.h) */
+  nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
   nl_harness_check_state s = {0};
   nl_error err;
   /* nl_opt (GNU style); the positional words are gathered in argv[1..]. */

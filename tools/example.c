@@ -10,7 +10,6 @@
  * Errors: one line on stderr naming the input and the problem, exit 2.
  * Outputs are written atomically (temporary file, then rename).
  */
-#include "base/nl_parallel.h"
 #include "harness/nl_harness.h"
 #include "byexample/nl_byexample.h"
 #include "study/nl_study.h"
@@ -205,8 +204,7 @@ static int compare(const args *a)
 
 int main(int argc, char **argv)
 {
-  nl_set_oom_handler(nl_harness_oom_exit);
-  nl_parallel_blas_idle();   /* OpenBLAS's spinning idle workers (base/nl_parallel.h) */
+  nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
   if (argc < 2) { usage(stderr); return 2; }
   const char *cmd = argv[1];
   if (!strcmp(cmd, "-h") || !strcmp(cmd, "--help")) { usage(stdout); return 0; }

@@ -6,7 +6,6 @@
  *
  * Errors: one line, exit 2 (bad arguments) or 1 (a file could not be written).
  */
-#include "base/nl_parallel.h"
 #include "harness/nl_harness.h"
 #include "study/nl_study_cheng.h"
 
@@ -16,8 +15,7 @@
 
 int main(int argc, char **argv)
 {
-  nl_set_oom_handler(nl_harness_oom_exit);
-  nl_parallel_blas_idle();   /* OpenBLAS's spinning idle workers (base/nl_parallel.h) */
+  nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
   const char *dir = NULL;
   long size = 128;
   nl_error err;

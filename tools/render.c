@@ -9,7 +9,6 @@
  * min..max instead). Float formats (EXR, or --bits 32) store raw values.
  * A .tsv output holds the raw values as columns x, y, value.
  */
-#include "base/nl_parallel.h"
 #include "harness/nl_harness.h"
 #include "cellular/nl_cellular.h"
 #include "noise/nl_noise.h"
@@ -341,8 +340,7 @@ static void check_finite(const options *o, const double *v)
 
 int main(int argc, char **argv)
 {
-  nl_set_oom_handler(nl_harness_oom_exit);
-  nl_parallel_blas_idle();   /* OpenBLAS's spinning idle workers (base/nl_parallel.h) */
+  nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
   options o;
   parse(argc, argv, &o);
   check_writable(o.out);

@@ -5,7 +5,6 @@
  * one line per result (key=value, or --format tsv|json).
  * Every error is one line on stderr naming the input, and exit status 2.
  */
-#include "base/nl_parallel.h"
 #include "harness/nl_harness.h"
 #include "stats/nl_cluster.h"
 #include "stats/nl_gmm.h"
@@ -596,8 +595,7 @@ static const char *sub_help(const char *sub)
 
 int main(int argc, char **argv)
 {
-  nl_set_oom_handler(nl_harness_oom_exit);
-  nl_parallel_blas_idle();   /* OpenBLAS's spinning idle workers (base/nl_parallel.h) */
+  nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
     fputs(usage_text[0], argc < 2 ? stderr : stdout);
     return argc < 2 ? 2 : 0;

@@ -35,7 +35,6 @@
  * Errors: one line on stderr, exit 2.
  */
 #define _GNU_SOURCE   /* open_memstream, popen, realpath */
-#include "base/nl_parallel.h"
 #include "harness/nl_harness.h"
 #include "table/nl_table.h"
 
@@ -1069,8 +1068,7 @@ static int nl_sweep_status_main(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
-  nl_set_oom_handler(nl_harness_oom_exit);
-  nl_parallel_blas_idle();   /* OpenBLAS's spinning idle workers (base/nl_parallel.h) */
+  nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
     printf("usage: noiselab-sweep expand NAME=SPEC\n"
            "       noiselab-sweep plan --experiment E [--seed S] [--seeds N] [--task-seeds K]\n"

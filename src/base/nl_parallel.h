@@ -58,7 +58,7 @@ int nl_parallel_cores(void);
  * fork handler calls it): it joins the workers, and the next threaded call
  * starts them again with the same count, so no result changes (a 1500^2
  * dgemm after it: the same bytes, two threads again). The programs call it
- * first thing (nl_harness_begin, the tools' main); only from one thread,
+ * first thing (nl_harness_program_start, harness/nl_harness.h); only from one thread,
  * before any BLAS call is running. */
 void nl_parallel_blas_idle(void);
 

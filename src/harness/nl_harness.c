@@ -196,9 +196,15 @@ void nl_harness_oom_exit(size_t n)
   exit(3);
 }
 
-nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char **argv)
+void nl_harness_program_start(void)
 {
   nl_set_oom_handler(nl_harness_oom_exit);
+  nl_parallel_blas_idle();
+}
+
+nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char **argv)
+{
+  nl_harness_program_start();
 #ifdef __GLIBC__
   /* Speed only (issue 17): glibc returns every freed block above 128 KB to
    * the kernel (mmap'ed or trimmed), so a loop that allocates and frees
@@ -209,7 +215,6 @@ nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char
   mallopt(M_MMAP_THRESHOLD, 64 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
 #endif
-  nl_parallel_blas_idle();   /* OpenBLAS's spinning idle workers (base/nl_parallel.h) */
   nl_harness_options o;
   nl_error err;
   if (nl_harness_parse(&o, argc, argv, &err)) {
@@ -286,7 +291,6 @@ unsigned long nl_harness_seed(const nl_harness *r) { return r->seed; }
 int nl_harness_seeds(const nl_harness *r) { return r->seeds; }
 int nl_harness_quick(const nl_harness *r) { return r->quick; }
 int nl_harness_threads(const nl_harness *r) { return r->threads; }
-int nl_harness_images(const nl_harness *r) { return r->images; }
 const char *nl_harness_dir(const nl_harness *r) { prepare((nl_harness *)r); return r->out; }
 const char *nl_harness_name(const nl_harness *r) { return r->name; }
 

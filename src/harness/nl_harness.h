@@ -84,8 +84,13 @@ void nl_harness_options_free(nl_harness_options *o);
 
 /* The out-of-memory handler of programs (nl_set_oom_handler, nl_base.h):
  * after base's "noiselab: out of memory allocating N bytes", exit 3. nl_harness_begin
- * installs it; the command-line tools install it first thing in main. */
+ * and the command-line tools install it (nl_harness_program_start, below). */
 void nl_harness_oom_exit(size_t n);
+
+/* What every program does first (nl_harness_begin calls it; the tools call
+ * it first thing in main): installs nl_harness_oom_exit and stops OpenBLAS's
+ * spinning idle workers (nl_parallel_blas_idle, base/nl_parallel.h). */
+void nl_harness_program_start(void);
 
 /* nl_harness_parse; on error prints "NAME: message" and exits 2. --help and
  * --params are remembered and answered by nl_harness_params_done. Touches no file. */
@@ -142,7 +147,6 @@ char *nl_harness_path(const nl_harness *r, const char *file);
  * CPU (1 s under the sanitizers), often more than a quick run's work. */
 void nl_harness_write_table(nl_harness *r, const nl_table *t, const char *file);
 void nl_harness_write_image(nl_harness *r, const nl_image *im, const char *file);
-int nl_harness_images(const nl_harness *r);           /* 0 under --no-images */
 
 /* Progress for long runs: "[name] 40% what (3.2 s)" on stderr, one
  * rewritten line on a terminal, at most one plain line a second otherwise. */
