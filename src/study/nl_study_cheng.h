@@ -216,46 +216,6 @@ int nl_study_cheng_control_text(nl_harness *r, const nl_table *sum, int nlabels)
 #define NL_STUDY_TABLE41_COLS 4
 nl_table *nl_study_cheng_table41(const nl_table *runs, const double (*thesis)[NL_STUDY_TABLE41_COLS], int npair);
 
-/* C4 (nl_study_cheng_c4.c). Which reading of Table 4.1's weight columns fits
- * all six rows: per reading (printed; swapped; (a) printed and (b)-(f)
- * swapped) Pearson r of log E_KS (and log E_Con), ours against the thesis's
- * over the rows, its exact one-sided permutation p (n! orderings), and the
- * rms of the centred log ratio (0: ours = the thesis's times one factor);
- * from nl_study_cheng_table41's table. */
-nl_table *nl_study_cheng_table41_readings(const nl_table *cmp, const double (*thesis)[NL_STUDY_TABLE41_COLS], int npair);
-/* The readings table in the report and its prose; returns the row of the
- * best-fitting reading (smallest rms_log_ks). */
-size_t nl_study_cheng_table41_readings_text(nl_harness *r, const nl_table *rd);
-/* C4's uniformity prose: over Table 4.1's runs (printed rows 0, 2, ...) and
- * the sweep (w1 / w2 = rhos[q]), the smallest fractions not rejected and the
- * smallest swept ratio from which every run passes. */
-void nl_study_cheng_weights_uniformity_text(nl_harness *r, const nl_table *tab, const nl_table *sweep, const double *rhos,
-                                            int npair);
-/* Config c on `pattern` read at control grids gmin, 2 gmin, ... <= gmax over
- * s's seeds: grid, points, E_ks, E_ks_sd, E_con, E_con_sd, E_con_per_point,
- * paper_E_con, r_pattern, con_vs_const. */
-nl_table *nl_study_cheng_grid_sweep(const nl_study_cheng *s, const nl_cheng_config *c, const char *pattern,
-                                    int gmin, int gmax, double paper_e_con);
-
-/* ---- C9, octave amplitudes as variables (nl_study_cheng_amp.c) ---------- */
-
-/* One case's k evaluations (nl_study_cheng_runs, config c: fixed or optimised
- * amplitudes, c->amp_vary): the summary row as nl_study_cheng_rows_add; with
- * amp_vary, one row per octave appended to `gains`
- * (nl_study_cheng_gains_alloc: the labels, octave, a_thesis, a, a_sd, gain,
- * gain_sd, log_gain_sd, R = amp_range, at_bound = fraction of seeds whose
- * |ln gain| is within 1e-3 of ln R); one row to `timing` (labels, seconds_per_run). The
- * first seed's log gains into first_log_gain (F values; seconds_per_run: mean thread CPU seconds of one
- * optimisation, nl_cheng_eval.cpu_seconds). */
-nl_table *nl_study_cheng_gains_alloc(int nlabels, const char *const *labels);
-nl_table *nl_study_cheng_timing_alloc(int nlabels, const char *const *labels);
-void nl_study_cheng_amp_rows(const nl_study_cheng *s, const nl_cheng_config *c, const nl_cheng_eval *evs,
-                             nl_table *sum, nl_table *gains, nl_table *timing, int nlabels,
-                             const char *const *labels, double *first_log_gain);
-/* C9's prose, formatted from the summary (fixed and optimised rows in pairs
- * 2i, 2i + 1), the Welch table (quantity rows per case) and the gains. */
-void nl_study_cheng_amp_text(nl_harness *r, const nl_table *sum, const nl_table *tests, const nl_table *gains, double range);
-
 /* ---- what C5 and C6 share (nl_study_cheng_repro.c) ----------------------- */
 
 /* Tables 4.2-4.4 of the thesis, with the pattern and control term we use for
@@ -338,5 +298,12 @@ void nl_study_cheng_reproduce_case(const nl_study_cheng *s, nl_table *reps, nl_t
 void nl_study_cheng_reproduce_cases(const nl_study_cheng *s, nl_table *reps, nl_table *sum, const nl_study_cheng_thesis_gmm *ths,
                                     int n, const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nrep,
                                     double swap);
+
+/* C5's older tables for one texture from an already collected original and
+ * pool (nl_study_cheng_repro.c). */
+void nl_study_cheng_pool_case_with(const nl_study_cheng *s, nl_study_cheng_pools *T, const nl_study_cheng_thesis_gmm *th,
+                                   const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nseeds,
+                                   int full, nl_study_cheng_repro *rp);
+
 
 #endif

@@ -2,7 +2,6 @@
  * the --set parameters, the chain original -> pool -> model, and C5's tables
  * (one texture at one low/high split per nl_study_cheng_pool_case). */
 #include "study/nl_study_cheng.h"
-#include "study/nl_study_cheng_readings.h"
 #include "stats/nl_stats.h"
 #include "base/nl_parallel.h"
 

@@ -1,0 +1,55 @@
+/* C5's readings of Tables 4.2-4.4 (readings.c): the thesis's
+ * GMM/AIC numbers under the factors the text leaves open, each over pool
+ * replicates (a replicate re-runs the original optimisation, its pool and
+ * the model fit from nl_seed_replicate(seed, k)):
+ *   n          sub1000 (the mixture fitted on 1000 input samples) or all (on
+ *              every pool row, sec. 3.5.2 "merge the NQ input data"); the
+ *              clustering always takes the 1000-row subsample (same rows);
+ *   distance   cossin (chords of (cos, sin)) or angles (Euclidean on the raw
+ *              angles, the thesis's variables), for the clustering;
+ *   pool_rule  successive (N cold-tail states in a row) or spaced (N states
+ *              `stride` sweeps apart);
+ *   cutoff     thesis (its printed cutoff: K0 is a result) or matched_K0 (the
+ *              cutoff giving the thesis's K0: K0 is an input, k0_is_input = 1,
+ *              paper_K_initial "n/a"; the mixture then does not depend on the
+ *              distance, k-means start, so both distances share one fit).
+ * readings.tsv: one row per (texture, reading), mean and sd over replicates;
+ * ess.tsv: effective sample size per texture, replicate and pool rule;
+ * reproduce.tsv: C6's question (reproductions below the original?) under
+ * each reading's model of replicate 0.
+ * HEADLINE RULE: among the readings where K0 is a result, the one with the
+ * most matches over the three textures, a match being K0 or K_final within
+ * a factor 1.25 of the thesis's, AIC within 50% (rel 0.5); ties go to the
+ * first in table order. Its rows carry headline = 1. */
+#ifndef C5_READINGS_H
+#define C5_READINGS_H
+
+#include "study/nl_study_cheng.h"
+
+/* paths: the AIC path of every reading's mixture on pool replicate 0 (texture,
+ * reading, K, AIC, BIC, headline = 1 on the headline reading's rows): C5's AIC figure. */
+typedef struct { nl_table *readings, *ess, *repro, *paths; } nl_study_cheng_readings;
+
+/* --set parameters: reps (pool replicates; quick 2), stride (sweeps between
+ * spaced states), all_reps (replicates fitted on all rows), draws
+ * (reproductions per model for C6's question; quick 4). */
+typedef struct { int reps, stride, all_reps, draws; } nl_study_cheng_readings_options;
+void nl_study_cheng_readings_params(nl_harness *r, nl_study_cheng_readings_options *ro);
+
+void nl_study_cheng_readings_alloc(nl_study_cheng_readings *R);
+void nl_study_cheng_readings_free(nl_study_cheng_readings *R);
+/* One texture: for each replicate, the original, a pool with N x stride tail
+ * states per run, its successive and spaced pools, their ESS, and every
+ * reading's model. Replicate 0's successive pool also feeds C5's older
+ * tables (T; gmm.tsv ... over nseeds fit seeds, as nl_study_cheng_pool_case). */
+void nl_study_cheng_readings_case(const nl_study_cheng *s, nl_study_cheng_readings *R, nl_study_cheng_pools *T,
+                                  const nl_study_cheng_thesis_gmm *th, const nl_cheng_pool_options *po,
+                                  const nl_cheng_model_options *mo, const nl_study_cheng_readings_options *ro,
+                                  int nseeds, int full);
+/* Marks the headline, writes readings.tsv and ess.tsv, reports them with
+ * prose formatted from the tables and declares the verdicts (K0, K_final,
+ * AIC from the headline rows; the cutoff from the matched_K0 row of the
+ * headline's n, distance and pool rule). Returns the headline's reading id. */
+const char *nl_study_cheng_readings_report(nl_harness *r, nl_study_cheng_readings *R);
+
+#endif

@@ -1,0 +1,30 @@
+/* variance.h - L1's readings of the 3D band variance (variance.c). */
+#ifndef L1_VARIANCE_H
+#define L1_VARIANCE_H
+
+#include "study/nl_study.h"
+
+/* ---- L1: readings of the 3D band variance ------------------------------
+ *
+ * Tiles of period n (3D) seeded seed0 .. (nl_seed_replicate, K seeds); per
+ * seed, sigma_N^2 read in the ways the literature's constants could have been
+ * measured (the volume mean; mean subtracted; random points; one plane at a
+ * random, an integer and a half-integer z; the lattice and the half-integer
+ * lattice; the appendix's transposed odd-shift copy, as a volume and at
+ * z = 0; Cook & DeRose's multiband sum of 4 bands from one tile without
+ * offsets over the sum of weights squared, at z = 0; random points of a tile
+ * of period 2n, at most 256). Columns: reading,
+ * var3d (mean over seeds), var3d_sd, paper, gap (var3d / paper - 1),
+ * gap_in_sd ((var3d - paper) / var3d_sd). NULL for a bad period. */
+nl_table *nl_study_variance_readings(int n, int K, unsigned long seed0, double paper);
+/* The readings whose |gap_in_sd| <= nsd, as "reading (var +- sd); ..." in
+ * buf (size bytes, truncated at a whole reading); returns how many. */
+int nl_study_readings_within(const nl_table *t, double nsd, char *buf, size_t size);
+/* Smallest and largest 100 * gap over the given rows (percent). */
+void nl_study_readings_gap_range(const nl_table *t, const size_t *rows, int n, double *lo, double *hi);
+/* L1's leakage table from K seeds' nb x nb shares (nl_byexample_band_leakage,
+ * share[(s nb + k) nb + j]: band k's power in eq. 13 band j): band, below
+ * (mean share in coarser bands), inside (mean), inside_sd, above (finer). */
+nl_table *nl_study_leakage_table(const double *share, int K, int nb);
+
+#endif
