@@ -24,7 +24,7 @@
  * sanitizer runs do not scan thread-local storage (use_tls=0,
  * tests/meson.build), and matching them against suppressions made
  * LeakSanitizer symbolize libasan's DWARF in every image-touching process:
- * 1.64 -> 1.20 s of CPU for one analyse (issue 17). Memory we allocate is
+ * 1.64 -> 1.20 s of CPU for one analyse. Memory we allocate is
  * allocated outside these regions, so its leaks are still found. GCC defines
  * __SANITIZE_ADDRESS__; clang 14 (the fuzz targets) does not, and those keep
  * tests/fuzz/lsan.supp. */
@@ -104,7 +104,7 @@ int nl_image_backend_loaded(void) { return oiio_read != NULL; }
 
 /* What the file system says about an input (missing, a directory, not
  * readable) is said before the image library is loaded: its start-up is
- * 0.5 s of CPU, 1 s under the sanitizers (issue 17). The module then checks
+ * 0.5 s of CPU, 1 s under the sanitizers. The module then checks
  * only the EXR header. */
 static nl_status readable(const char *path, nl_error *err)
 {

@@ -39,7 +39,7 @@ static void round_trip(const char *name, int bits, int channels, double tol)
 }
 
 /* First test: OpenImageIO is a module opened on the first image, so that
- * programs writing only tables start in milliseconds (issue 17.5). */
+ * programs writing only tables start in milliseconds. */
 NL_TEST(backend_loads_on_first_use)
 {
   NL_CHECK(!nl_image_backend_loaded());
@@ -155,7 +155,7 @@ static long file_bytes(const char *path, unsigned char *buf, size_t cap)
   return (long)n;
 }
 
-/* Same image, same bytes: no timestamp in TIFF or EXR (issue 12.4). */
+/* Same image, same bytes: no timestamp in TIFF or EXR. */
 NL_TEST(same_image_same_bytes)
 {
   const char *names[][2] = {{"s1.png", "s2.png"}, {"s1.tif", "s2.tif"}, {"s1.exr", "s2.exr"}};
