@@ -18,7 +18,7 @@ static const double paper_ms[NROWS][2] = {{54.1, 19.1}, {71.9, 40.4}, {117.5, 49
  * for their sensitivity. The defaults are the reading no single change of
  * this sweep improves (fit.tsv). The image size is checked at two slopes. */
 static const double slopes[] = {-3, -4, -4.5, -5, -5.25, -5.5, -6, -7, -8}, quick_slopes[] = {-3, -4, -6};
-static const nl_study_smoke_vary vary[] = {{"freq", 1, 4, {1, 2, 4, 8}}, {"kappa", 1, 4, {15, 30, 60, 120}},
+static const a2_smoke_vary vary[] = {{"freq", 1, 4, {1, 2, 4, 8}}, {"kappa", 1, 4, {15, 30, 60, 120}},
                                            {"offset", 1, 2, {0, 1}}, {"step", 0, 3, {0.005, 0.01, 0.02}},
                                            {"stop_opacity", 0, 3, {0.95, 0.99, 0.999}},
                                            {"octave_bound", 0, 2, {1, NL_NOISE3_BOUND}}};
@@ -28,7 +28,7 @@ int main(int argc, char **argv)
 {
   nl_harness *r = nl_harness_begin("a2_raymarch", "A2 - Incremental bounding on a ray-marched smoke ball", argc, argv);
   int quick = nl_harness_quick(r);
-  nl_study_smoke_scene sc = {nl_bounds_smoke_default(), 1};
+  a2_smoke_scene sc = {nl_bounds_smoke_default(), 1};
   nl_bounds_smoke *s = &sc.s;
   s->width = s->height = (int)nl_harness_param_int(r, "size", quick ? 32 : 512, 8, 4096, "image width and height in pixels of the ray-marched smoke ball (quick 32)");
   s->step = nl_harness_param(r, "step", 0.01, 1e-4, 0.5, "ray-march step length in unit-cube units (Arnerin 0.01)");
@@ -49,15 +49,15 @@ int main(int argc, char **argv)
   for (int d = 16; d >= 1; d /= 2)
     if (d != 2 && s->width / d >= 8 && (nsizes == 0 || s->width / d > sizes[nsizes - 1])) sizes[nsizes++] = s->width / d;
   nl_table *sizet;
-  int sweep_size = nl_study_smoke_size_check(r, &sc, check_slope, NCHECK, sizes, nsizes, label, NROWS, sweep_seeds, &sizet);
+  int sweep_size = a2_smoke_size_check(r, &sc, check_slope, NCHECK, sizes, nsizes, label, NROWS, sweep_seeds, &sizet);
   nl_harness_write_table(r, sizet, "size_check.tsv");
 
   /* The sweep and the fit of the evaluation ratio to the paper's times. */
-  nl_study_smoke_scene center = sc;
+  a2_smoke_scene center = sc;
   center.s.width = center.s.height = sweep_size;
   nl_table *sweep, *fit;
   int nvary = quick ? 0 : 6;
-  nl_study_smoke_scene best = nl_study_smoke_sweep(r, &center, quick ? quick_slopes : slopes, quick ? 3 : 9, vary,
+  a2_smoke_scene best = a2_smoke_sweep(r, &center, quick ? quick_slopes : slopes, quick ? 3 : 9, vary,
                                                    nvary, label, paper, NROWS, sweep_seeds, &sweep, &fit);
   nl_harness_write_table(r, sweep, "slope_sweep.tsv");
   nl_harness_write_table(r, fit, "fit.tsv");
@@ -66,16 +66,16 @@ int main(int argc, char **argv)
   nl_harness_check(r, "fit.tsv", timed[2], "ignore");
 
   /* The headline: the scene of the parameters (defaults: the fitted reading) at full size, over seeds. */
-  nl_study_smoke_point pt[NROWS];
+  a2_smoke_point pt[NROWS];
   nl_image *panels[NROWS];
-  nl_study_smoke_curve(r, &sc, label, NROWS, seeds, 1, pt, panels);
-  nl_table *t = nl_study_smoke_timing(pt, label, paper_ms, NROWS, sizet, check_slope[0]);
+  a2_smoke_curve(r, &sc, label, NROWS, seeds, 1, pt, panels);
+  nl_table *t = a2_smoke_timing(pt, label, paper_ms, NROWS, sizet, check_slope[0]);
   nl_harness_write_table(r, t, "timing.tsv");
   /* Wall-clock times depend on the machine and its load: the regression
    * check skips them and holds the noise-call counts and images exact. */
   const char *ms[] = {"plain_ms", "plain_ms_sd", "bounded_ms", "bounded_ms_sd", "ratio"};
   for (int k = 0; k < 5; k++) nl_harness_check(r, "timing.tsv", ms[k], "ignore");
-  nl_study_smoke_panels(r, panels, label, NROWS);
+  a2_smoke_panels(r, panels, label, NROWS);
   int worst_diff = 0;
   for (int i = 0; i < NROWS; i++) worst_diff = pt[i].diff > worst_diff ? pt[i].diff : worst_diff;
 
@@ -83,20 +83,20 @@ int main(int argc, char **argv)
   nl_noise_perm3 p;
   nl_noise_perm3_seed(&p, nl_harness_seed(r));
   s->octaves = label[NROWS - 1] + sc.offset;
-  nl_image *dm = nl_study_smoke_decision_image(r, &p, s);
+  nl_image *dm = a2_smoke_decision_image(r, &p, s);
   nl_harness_write_image(r, dm, "bounds.png");
-  nl_bounds_smoke_pair unit;
+  a2_smoke_pair unit;
   nl_bounds_smoke su = *s;
   su.octave_bound = 1.0;
   nl_error err;
-  if (nl_bounds_smoke_render_pair(&p, su, NULL, NULL, &unit, &err)) nl_harness_die(r, 1, "%s", err.msg);
+  if (a2_smoke_render_pair(&p, su, NULL, NULL, &unit, &err)) nl_harness_die(r, 1, "%s", err.msg);
 
   /* The report: numbers from the tables. */
   size_t fb = 0;
   while (nl_table_value(fit, fb, "best") != 1.0) fb++;
   double rms, rms_alt, size_dev = 0, er2 = nl_table_value(t, 2, "eval_ratio");
-  nl_study_smoke_fit_columns(t, "eval_ratio", "paper_ratio", &rms);
-  nl_study_smoke_fit_columns(t, "alt_eval_ratio", "paper_ratio", &rms_alt);
+  a2_smoke_fit_columns(t, "eval_ratio", "paper_ratio", &rms);
+  a2_smoke_fit_columns(t, "alt_eval_ratio", "paper_ratio", &rms_alt);
   for (size_t k = 0; k < sizet->nrows; k++)
     if (nl_table_value(sizet, k, "size") == sweep_size) size_dev = fmax(size_dev, nl_table_value(sizet, k, "rel_diff"));
   nl_harness_text(r, "**Paper (Table 5.1, GPU):** 512 x 512, step 0.01, stop at 99%% opacity; plain / "
@@ -118,8 +118,8 @@ int main(int argc, char **argv)
                   nl_table_text(fit, fb, "reading"), nl_table_value(fit, fb, "rss_log"),
                   nl_table_value(fit, fb, "rms_factor"), nl_table_value(fit, fb, "worst_factor"),
                   (int)nl_table_value(fit, fb, "worst_octaves"));
-  nl_study_smoke_report_shape(r, sweep, label, NROWS);
-  nl_study_smoke_report_edges(r, &best, vary, nvary);
+  a2_smoke_report_shape(r, sweep, label, NROWS);
+  a2_smoke_report_edges(r, &best, vary, nvary);
   nl_harness_text(r, "From N = %d to %d the paper's ratio grows %.1fx, this run's evaluation ratio %.1fx.\n",
                   label[2], label[NROWS - 1], paper[NROWS - 1] / paper[2], pt[NROWS - 1].eval_ratio / er2);
   nl_harness_text(r, "**This run** (Table below, %d x %d, %d seeds): a = %g, f0 = %g, kappa = %g, step %g, "

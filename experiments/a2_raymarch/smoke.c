@@ -11,6 +11,42 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Largest difference of two renders in 8-bit levels. */
+static int max_level_diff(const double *a, const double *b, size_t n)
+{
+  int worst = 0;
+  for (size_t k = 0; k < n; k++) {
+    int d = abs((int)lround(255.0 * a[k]) - (int)lround(255.0 * b[k]));
+    if (d > worst) worst = d;
+  }
+  return worst;
+}
+
+nl_status a2_smoke_render_pair(const nl_noise_perm3 *p, nl_bounds_smoke s, double *img0,
+                               double *img1, a2_smoke_pair *t, nl_error *err)
+{
+  size_t npix = (size_t)s.width * s.height;
+  if (s.width < 1 || s.height < 1)   /* the size of the temporaries; the renderer checks the rest */
+    return nl_fail(err, NL_EINVAL, "smoke: image size must be positive");
+  double *own = img0 && img1 ? NULL : nl_xmalloc(2 * npix * sizeof *own);
+  double *img[2] = { own ? own : img0, own ? own + npix : img1 };
+  nl_status rc = NL_OK;
+  for (int inc = 0; inc < 2 && !rc; inc++) {
+    nl_bounds_smoke_stats st;
+    s.incremental = inc;
+    double t0 = nl_time_thread_cpu();
+    rc = nl_bounds_smoke_render(p, &s, img[inc], &st, err);
+    if (rc) break;
+    t->ms[inc] = 1e3 * (nl_time_thread_cpu() - t0);
+    t->evals[inc] = st.noise_evals;
+    t->samples = st.samples;
+    if (inc == 0) t->max_noise = st.max_abs_noise;
+  }
+  if (!rc) t->diff = max_level_diff(img[0], img[1], npix);
+  free(own);
+  return rc;
+}
+
 /* Plain / bounded; no noise term at all is the same work. */
 static double eval_ratio(double plain, double bounded)
 {
@@ -21,7 +57,7 @@ static double eval_ratio(double plain, double bounded)
  * thread t with that thread's two image buffers; it writes slot i only. */
 typedef struct {
   nl_harness *r;
-  const nl_study_smoke_scene *sc;
+  const a2_smoke_scene *sc;
   const int *octaves;
   int n, seeds, timed;
   double **img;        /* 2 per thread */
@@ -44,8 +80,8 @@ static void curve_item(void *ctx, size_t i, int t)
   nl_noise_perm3 perm;
   nl_noise_perm3_seed(&perm, nl_seed_replicate(nl_harness_seed(j->r), k));
   if (j->timed) {
-    nl_bounds_smoke_pair pr;
-    if ((j->st[i] = nl_bounds_smoke_render_pair(&perm, s, img0, img1, &pr, &j->err[i]))) return;
+    a2_smoke_pair pr;
+    if ((j->st[i] = a2_smoke_render_pair(&perm, s, img0, img1, &pr, &j->err[i]))) return;
     j->ev0[i] = (double)pr.evals[0]; j->ev1[i] = (double)pr.evals[1];
     j->ms0[i] = pr.ms[0]; j->ms1[i] = pr.ms[1];
     j->tr[i] = pr.ms[0] / pr.ms[1];
@@ -64,13 +100,13 @@ static void curve_item(void *ctx, size_t i, int t)
   if (t == 0) nl_harness_progress(j->r, (double)done / (j->n * j->seeds), "renders");
 }
 
-void nl_study_smoke_curve(nl_harness *r, const nl_study_smoke_scene *sc, const int *octaves, int n, int seeds,
-                          int timed, nl_study_smoke_point *out, nl_image **panels)
+void a2_smoke_curve(nl_harness *r, const a2_smoke_scene *sc, const int *octaves, int n, int seeds,
+                          int timed, a2_smoke_point *out, nl_image **panels)
 {
   size_t npix = (size_t)sc->s.width * sc->s.height, items = (size_t)n * (size_t)seeds;
   /* Renders are independent: (row, seed) items over the harness's threads.
    * Each render runs on one thread and is timed by that thread's CPU clock
-   * (nl_bounds_smoke_render_pair), so the time columns stay per render. */
+   * (a2_smoke_render_pair), so the time columns stay per render. */
   int nt = nl_parallel_threads(items, nl_harness_threads(r));
   double *img[2 * NL_PARALLEL_MAX];
   for (int t = 0; t < 2 * nt; t++) img[t] = nl_xmalloc(npix * sizeof **img);
@@ -86,7 +122,7 @@ void nl_study_smoke_curve(nl_harness *r, const nl_study_smoke_scene *sc, const i
   double *er = nl_xmalloc((size_t)seeds * sizeof *er);
   for (int row = 0; row < n; row++) {   /* reductions in item order, after the join */
     size_t o = (size_t)row * seeds;
-    nl_study_smoke_point *p = &out[row];
+    a2_smoke_point *p = &out[row];
     memset(p, 0, sizeof *p);
     p->terms = octaves[row] + sc->offset;
     for (int k = 0; k < seeds; k++) {
@@ -107,7 +143,7 @@ void nl_study_smoke_curve(nl_harness *r, const nl_study_smoke_scene *sc, const i
   free(v); free(er); free(j.diff); free(j.st); free(j.err);
 }
 
-double nl_study_smoke_fit(const double *ours, const double *paper, int n, double *rms_factor, int *worst)
+double a2_smoke_fit(const double *ours, const double *paper, int n, double *rms_factor, int *worst)
 {
   double rss = 0.0, big = -1.0;
   for (int i = 0; i < n; i++) {
@@ -119,27 +155,27 @@ double nl_study_smoke_fit(const double *ours, const double *paper, int n, double
   return rss;
 }
 
-int nl_study_smoke_size_check(nl_harness *r, const nl_study_smoke_scene *sc, const double *slopes, int nslopes,
+int a2_smoke_size_check(nl_harness *r, const a2_smoke_scene *sc, const double *slopes, int nslopes,
                               const int *sizes, int nsizes, const int *octaves, int n, int seeds, nl_table **out)
 {
   const char *cols[] = {"slope", "size", "octaves", "eval_ratio", "eval_ratio_sd", "ref_eval_ratio",
                         "ref_eval_ratio_sd", "rel_diff", "within"};
   nl_table *t = nl_table_alloc(9, cols);
-  nl_study_smoke_point *pt = nl_xmalloc((size_t)nsizes * n * sizeof *pt);
+  a2_smoke_point *pt = nl_xmalloc((size_t)nsizes * n * sizeof *pt);
   int *ok = nl_xmalloc((size_t)nsizes * sizeof *ok);
   for (int z = 0; z < nsizes; z++) ok[z] = 1;
   for (int a = 0; a < nslopes; a++) {
     /* The reference (largest, last) first, so each row can name its distance. */
     for (int z = nsizes - 1; z >= 0; z--) {
-      nl_study_smoke_scene c = *sc;
+      a2_smoke_scene c = *sc;
       c.s.slope = slopes[a];
       c.s.width = c.s.height = sizes[z];
-      nl_study_smoke_curve(r, &c, octaves, n, seeds, 0, pt + (size_t)z * n, NULL);
+      a2_smoke_curve(r, &c, octaves, n, seeds, 0, pt + (size_t)z * n, NULL);
     }
-    const nl_study_smoke_point *ref = pt + (size_t)(nsizes - 1) * n;
+    const a2_smoke_point *ref = pt + (size_t)(nsizes - 1) * n;
     for (int z = 0; z < nsizes; z++)
       for (int i = 0; i < n; i++) {
-        const nl_study_smoke_point *p = pt + (size_t)z * n + i;
+        const a2_smoke_point *p = pt + (size_t)z * n + i;
         double d = fabs(p->eval_ratio - ref[i].eval_ratio);
         int within = d <= ref[i].eval_ratio_sd;
         ok[z] &= within;
@@ -156,7 +192,7 @@ int nl_study_smoke_size_check(nl_harness *r, const nl_study_smoke_scene *sc, con
 }
 
 /* Sets parameter `name` of the scene to v; returns its old value. */
-static double set_param(nl_harness *r, nl_study_smoke_scene *sc, const char *name, double v)
+static double set_param(nl_harness *r, a2_smoke_scene *sc, const char *name, double v)
 {
   double old = 0.0, o = sc->offset;
   double *x = !strcmp(name, "slope") ? &sc->s.slope : !strcmp(name, "freq") ? &sc->s.freq
@@ -172,13 +208,13 @@ static double set_param(nl_harness *r, nl_study_smoke_scene *sc, const char *nam
 
 /* One reading: its curve into the sweep table, its fit into the fit table;
  * returns rss_log. */
-static double sweep_reading(nl_harness *r, const nl_study_smoke_scene *sc, const char *vary, double value, int is_free,
+static double sweep_reading(nl_harness *r, const a2_smoke_scene *sc, const char *vary, double value, int is_free,
                             const int *octaves, const double *paper, int n, int seeds, nl_table *sweep,
                             nl_table *fit)
 {
-  nl_study_smoke_point *pt = nl_xmalloc((size_t)n * sizeof *pt);
+  a2_smoke_point *pt = nl_xmalloc((size_t)n * sizeof *pt);
   double *er = nl_xmalloc(2 * (size_t)n * sizeof *er), *tr = er + n;
-  nl_study_smoke_curve(r, sc, octaves, n, seeds, 1, pt, NULL);
+  a2_smoke_curve(r, sc, octaves, n, seeds, 1, pt, NULL);
   const nl_bounds_smoke *s = &sc->s;
   for (int i = 0; i < n; i++) {
     er[i] = pt[i].eval_ratio; tr[i] = pt[i].time_ratio;
@@ -188,8 +224,8 @@ static double sweep_reading(nl_harness *r, const nl_study_smoke_scene *sc, const
   }
   double rms, trms;
   int worst = 0;
-  double rss = nl_study_smoke_fit(er, paper, n, &rms, &worst);
-  nl_study_smoke_fit(tr, paper, n, &trms, NULL);
+  double rss = a2_smoke_fit(er, paper, n, &rms, &worst);
+  a2_smoke_fit(tr, paper, n, &trms, NULL);
   char label[64];
   snprintf(label, sizeof label, "%s=%g", vary, value);
   nl_table_append(fit, "ssddddddddddidii", vary, label, s->slope, s->freq, s->kappa, s->step, s->stop_opacity,
@@ -199,8 +235,8 @@ static double sweep_reading(nl_harness *r, const nl_study_smoke_scene *sc, const
   return rss;
 }
 
-nl_study_smoke_scene nl_study_smoke_sweep(nl_harness *r, const nl_study_smoke_scene *center, const double *slopes,
-                                          int nslopes, const nl_study_smoke_vary *vary, int nvary,
+a2_smoke_scene a2_smoke_sweep(nl_harness *r, const a2_smoke_scene *center, const double *slopes,
+                                          int nslopes, const a2_smoke_vary *vary, int nvary,
                                           const int *octaves, const double *paper, int n, int seeds,
                                           nl_table **sweep, nl_table **fit)
 {
@@ -214,7 +250,7 @@ nl_study_smoke_scene nl_study_smoke_sweep(nl_harness *r, const nl_study_smoke_sc
   *fit = nl_table_alloc(16, fcols);
   int total = nslopes;
   for (int v = 0; v < nvary; v++) total += vary[v].n;
-  nl_study_smoke_scene *sc = nl_xmalloc((size_t)total * sizeof *sc);
+  a2_smoke_scene *sc = nl_xmalloc((size_t)total * sizeof *sc);
   double best_rss = INFINITY;
   int best = 0, k = 0;
   /* The slope first (the parameter the ratio at N = 0 hangs on), ... */
@@ -225,7 +261,7 @@ nl_study_smoke_scene nl_study_smoke_sweep(nl_harness *r, const nl_study_smoke_sc
     if (rss < best_rss) { best_rss = rss; best = k; }
   }
   /* ... then every other parameter one at a time around the best slope. */
-  nl_study_smoke_scene around = sc[best];
+  a2_smoke_scene around = sc[best];
   for (int v = 0; v < nvary; v++)
     for (int j = 0; j < vary[v].n; j++) {
       sc[k] = around;
@@ -236,12 +272,12 @@ nl_study_smoke_scene nl_study_smoke_sweep(nl_harness *r, const nl_study_smoke_sc
       k++;
     }
   nl_table_set(*fit, (size_t)best, "best", 1.0);
-  nl_study_smoke_scene out = sc[best];
+  a2_smoke_scene out = sc[best];
   free(sc);
   return out;
 }
 
-size_t nl_study_smoke_nearest(const nl_table *sweep, int octaves)
+size_t a2_smoke_nearest(const nl_table *sweep, int octaves)
 {
   size_t best = 0;
   double d = INFINITY;
@@ -254,7 +290,7 @@ size_t nl_study_smoke_nearest(const nl_table *sweep, int octaves)
   return best;
 }
 
-double nl_study_smoke_ratio_at(const nl_table *sweep, const char *vary, double slope, int octaves)
+double a2_smoke_ratio_at(const nl_table *sweep, const char *vary, double slope, int octaves)
 {
   for (size_t i = 0; i < sweep->nrows; i++)
     if (!strcmp(nl_table_text(sweep, i, "vary"), vary) && nl_table_value(sweep, i, "slope") == slope &&
@@ -263,7 +299,7 @@ double nl_study_smoke_ratio_at(const nl_table *sweep, const char *vary, double s
   return NAN;
 }
 
-nl_image *nl_study_smoke_decision_image(nl_harness *r, const nl_noise_perm3 *p, const nl_bounds_smoke *s)
+nl_image *a2_smoke_decision_image(nl_harness *r, const nl_noise_perm3 *p, const nl_bounds_smoke *s)
 {
   nl_error err;
   size_t n = (size_t)s->width * s->height;
@@ -283,7 +319,7 @@ nl_image *nl_study_smoke_decision_image(nl_harness *r, const nl_noise_perm3 *p, 
   return im;
 }
 
-nl_table *nl_study_smoke_timing(const nl_study_smoke_point *pt, const int *octaves, const double (*paper_ms)[2],
+nl_table *a2_smoke_timing(const a2_smoke_point *pt, const int *octaves, const double (*paper_ms)[2],
                                 int n, const nl_table *size_check, double alt_slope)
 {
   const char *cols[] = {"octaves", "terms", "plain_ms", "plain_ms_sd", "bounded_ms", "bounded_ms_sd",
@@ -309,19 +345,19 @@ nl_table *nl_study_smoke_timing(const nl_study_smoke_point *pt, const int *octav
   return t;
 }
 
-double nl_study_smoke_fit_columns(const nl_table *t, const char *ours, const char *paper, double *rms_factor)
+double a2_smoke_fit_columns(const nl_table *t, const char *ours, const char *paper, double *rms_factor)
 {
   double *v = nl_xmalloc(2 * t->nrows * sizeof *v);
   for (size_t k = 0; k < t->nrows; k++) {
     v[k] = nl_table_value(t, k, ours);
     v[t->nrows + k] = nl_table_value(t, k, paper);
   }
-  double rss = nl_study_smoke_fit(v, v + t->nrows, (int)t->nrows, rms_factor, NULL);
+  double rss = a2_smoke_fit(v, v + t->nrows, (int)t->nrows, rms_factor, NULL);
   free(v);
   return rss;
 }
 
-void nl_study_smoke_panels(nl_harness *r, nl_image **panels, const int *octaves, int n)
+void a2_smoke_panels(nl_harness *r, nl_image **panels, const int *octaves, int n)
 {
   char (*labels)[32] = nl_xmalloc((size_t)n * sizeof *labels);
   const char **lp = nl_xmalloc((size_t)n * sizeof *lp);
@@ -335,21 +371,21 @@ void nl_study_smoke_panels(nl_harness *r, nl_image **panels, const int *octaves,
   free(labels); free(lp);
 }
 
-void nl_study_smoke_report_shape(nl_harness *r, const nl_table *sweep, const int *octaves, int n)
+void a2_smoke_report_shape(nl_harness *r, const nl_table *sweep, const int *octaves, int n)
 {
   int last = octaves[n - 1];
-  size_t n0 = nl_study_smoke_nearest(sweep, octaves[0]), nl = nl_study_smoke_nearest(sweep, last);
+  size_t n0 = a2_smoke_nearest(sweep, octaves[0]), nl = a2_smoke_nearest(sweep, last);
   double a0 = nl_table_value(sweep, n0, "slope"), al = nl_table_value(sweep, nl, "slope");
   double p0 = nl_table_value(sweep, n0, "paper_ratio"), pl = nl_table_value(sweep, nl, "paper_ratio");
   double r0 = nl_table_value(sweep, n0, "eval_ratio"), rl = nl_table_value(sweep, nl, "eval_ratio");
-  double r0l = nl_study_smoke_ratio_at(sweep, "slope", a0, last), rl0 = nl_study_smoke_ratio_at(sweep, "slope", al, octaves[0]);
+  double r0l = a2_smoke_ratio_at(sweep, "slope", a0, last), rl0 = a2_smoke_ratio_at(sweep, "slope", al, octaves[0]);
   /* The dip: ratio(N = octaves[1]) below both neighbours, as in the paper. */
   double dip_lo = INFINITY, dip_hi = -INFINITY, steep = INFINITY, flat = -INFINITY;
   for (size_t i = 0; i < sweep->nrows; i++) {
     if (strcmp(nl_table_text(sweep, i, "vary"), "slope") || nl_table_value(sweep, i, "octaves") != octaves[0]) continue;
     double a = nl_table_value(sweep, i, "slope");
-    double x0 = nl_table_value(sweep, i, "eval_ratio"), x1 = nl_study_smoke_ratio_at(sweep, "slope", a, octaves[1]),
-           x2 = nl_study_smoke_ratio_at(sweep, "slope", a, octaves[2]);
+    double x0 = nl_table_value(sweep, i, "eval_ratio"), x1 = a2_smoke_ratio_at(sweep, "slope", a, octaves[1]),
+           x2 = a2_smoke_ratio_at(sweep, "slope", a, octaves[2]);
     steep = fmin(steep, a); flat = fmax(flat, a);
     if (x1 < x0 && x1 < x2) { dip_lo = fmin(dip_lo, a); dip_hi = fmax(dip_hi, a); }
   }
@@ -368,12 +404,12 @@ void nl_study_smoke_report_shape(nl_harness *r, const nl_table *sweep, const int
                   dip);
 }
 
-void nl_study_smoke_report_edges(nl_harness *r, const nl_study_smoke_scene *best, const nl_study_smoke_vary *vary,
+void a2_smoke_report_edges(nl_harness *r, const a2_smoke_scene *best, const a2_smoke_vary *vary,
                                  int nvary)
 {
   for (int v = 0; v < nvary; v++) {
     if (!vary[v].is_free || vary[v].n < 3) continue;   /* a number, not a two-way reading */
-    nl_study_smoke_scene c = *best;
+    a2_smoke_scene c = *best;
     double x = set_param(r, &c, vary[v].name, 0.0), lo = vary[v].v[0], hi = vary[v].v[vary[v].n - 1];
     if (x == lo || x == hi)
       nl_harness_text(r, "The best %s = %g is at the edge of the values tried (%g ... %g): the fit may "

@@ -8,20 +8,20 @@
  * headline beside the paper, the base reading a measured alternative. */
 #include "bounds/nl_bounds.h"
 #include "harness/nl_harness.h"
-#include "readings.h"
+#include "tables.h"
 
 #include <math.h>
 #include <stdlib.h>
 
-enum { NSIG = NL_BOUNDS_NSIGNALS, NH = NL_BOUNDS_A3_COUNT };
+enum { NSIG = A3_NSIGNALS, NH = A3_COUNT };
 static const char *sig_name[NSIG] = {"1st octave", "2nd octave", "Fnoise_2"};
 static const double paper[NSIG][2] = {{0.0019531, 1.7460938}, {0.0292969, 2.765625},
                                       {0.0019531, 3.1738281}};
 
-static void measure(nl_harness *r, const nl_bounds_reading *rd, int seeds, double m[NSIG][7])
+static void measure(nl_harness *r, const a3_reading *rd, int seeds, double m[NSIG][7])
 {
   nl_error err;
-  if (nl_bounds_bandwidth_seeds(rd, nl_harness_seed(r), seeds, m, &err)) nl_harness_die(r, 1, "%s", err.msg);
+  if (a3_bandwidth_seeds(rd, nl_harness_seed(r), seeds, m, &err)) nl_harness_die(r, 1, "%s", err.msg);
 }
 
 /* Column col of reading h for signal s in hypotheses.tsv. */
@@ -31,12 +31,12 @@ int main(int argc, char **argv)
 {
   nl_harness *r = nl_harness_begin("a3_bandwidth", "A3 - Spectral bandwidth of 1D Perlin noise", argc, argv);
   int quick = nl_harness_quick(r);
-  nl_bounds_reading rd = {0};
+  a3_reading rd = {0};
   rd.length = nl_harness_param(r, "length", quick ? 128 : 512, 8, 1e6, "length of the sampled 1D line in noise units (quick 128)");
   rd.rate = nl_harness_param(r, "rate", quick ? 16 : 64, 1, 4096, "samples per noise unit along the line (quick 16)");
   rd.shader = (int)nl_harness_param_int(r, "shader", 1, 0, 1, "1: the shader's stored (noise + 1) / 2; 0: raw noise");
   rd.axis = (int)nl_harness_param_int(r, "axis", 0, 0, 1, "0: an oblique line; 1: the x axis through the origin");
-  rd.noise = (int)nl_harness_param_int(r, "noise", 0, 0, NL_BOUNDS_NOISE_SIMPLEX2, "nl_bounds_noise of the base reading (0: improved 2002)");
+  rd.noise = (int)nl_harness_param_int(r, "noise", 0, 0, A3_NOISE_SIMPLEX2, "a3_noise of the base reading, readings.h (0: improved 2002)");
   nl_harness_params_done(r);
   int seeds = nl_harness_seeds(r) > 64 ? 64 : nl_harness_seeds(r);
   unsigned long seed0 = nl_harness_seed(r);
@@ -45,19 +45,19 @@ int main(int argc, char **argv)
    * one that puts the most of the paper's six bounds within (ties: the
    * earlier, the current reading first) is the headline. */
   nl_error err;
-  nl_table *hy = nl_study_a3_hypotheses(&rd, seed0, seeds, paper, sig_name, &err);
+  nl_table *hy = a3_hypotheses(&rd, seed0, seeds, paper, sig_name, &err);
   if (!hy) nl_harness_die(r, 1, "%s", err.msg);
   nl_harness_write_table(r, hy, "hypotheses.tsv");
-  nl_bounds_reading fam[NH];
+  a3_reading fam[NH];
   const char *fname[NH];
   double worst[NH][2];
-  int nin[NH], win = 0, close = 0, nh = nl_bounds_a3_readings(&rd, fam, fname, NH);
-  nl_study_a3_summary(hy, NH, worst, nin);
+  int nin[NH], win = 0, close = 0, nh = a3_readings(&rd, fam, fname, NH);
+  a3_summary(hy, NH, worst, nin);
   for (int h = 1; h < nh; h++) {
     if (nin[h] > nin[win]) win = h;
     if (worst[h][0] < worst[close][0]) close = h;
   }
-  nl_bounds_reading head = fam[win];
+  a3_reading head = fam[win];
 
   /* Table 5.2 beside ours under the headline reading. */
   double m[NSIG][7];
@@ -73,13 +73,13 @@ int main(int argc, char **argv)
 
   /* How the band moves with the unstated sample length, rate, encoding and line (3 seeds). */
   int sweep_seeds = seeds < 3 ? seeds : 3;   /* the sensitivity sweep's seeds */
-  nl_table *sw = nl_study_a3_sweep(&rd, quick ? 3 : 6, seed0, sweep_seeds, &err);
+  nl_table *sw = a3_sweep(&rd, quick ? 3 : 6, seed0, sweep_seeds, &err);
   if (!sw) nl_harness_die(r, 1, "%s", err.msg);
   nl_harness_write_table(r, sw, "sweep.tsv");
-  nl_table *sh = win ? nl_study_a3_sweep(&head, quick ? 3 : 6, seed0, sweep_seeds, &err) : NULL;
+  nl_table *sh = win ? a3_sweep(&head, quick ? 3 : 6, seed0, sweep_seeds, &err) : NULL;
   if (win && !sh) nl_harness_die(r, 1, "%s", err.msg);
   if (sh) nl_harness_write_table(r, sh, "sweep_headline.tsv");
-  nl_table *pt = nl_study_a3_psd(&rd, seed0, &err);
+  nl_table *pt = a3_psd(&rd, seed0, &err);
   if (!pt) nl_harness_die(r, 1, "%s", err.msg);
   nl_harness_write_table(r, pt, "psd.tsv");
 
@@ -89,7 +89,7 @@ int main(int argc, char **argv)
                   "the paper's F_inf %.7f is 1/%.0f), %g samples per unit, %s, %s; Gamma(lambda) includes "
                   "lambda's own bin and Gamma^-1(E) is the lowest frequency whose Gamma is <= E. %d seeds "
                   "(permutation tables).\n", paper[0][0], paper[0][1], paper[1][0], paper[1][1], paper[2][0],
-                  paper[2][1], fname[win], nl_bounds_noise_text(head.noise),
+                  paper[2][1], fname[win], a3_noise_text(head.noise),
                   head.sigma_rms ? "sigma = RMS" : "sigma = sd", head.length, head.length, res, paper[0][0],
                   1.0 / paper[0][0], head.rate, head.shader ? "the shader's encoded value (noise + 1)/2" : "raw noise values",
                   head.axis ? "along the x axis through the origin" : "along an oblique line (not 256-periodic)", seeds);
@@ -104,7 +104,7 @@ int main(int argc, char **argv)
                   worst[close][0], nin[win] == 2 * NSIG ? "" : "No reading puts all of them within: the paper's "
                   "full set of numbers appears nowhere in the family tried.");
   char list[2048];
-  nl_study_a3_list(hy, 0, "f_sup", list, sizeof list);
+  a3_list(hy, 0, "f_sup", list, sizeof list);
   nl_harness_text(r, "First-octave F_sup by reading (names as in hypotheses.tsv): %s.\n", list);
   nl_harness_report_columns(r, hy, "hypotheses.tsv", "hypothesis,signal,f_inf,f_sup,f_sup_sd,paper_f_inf,paper_f_sup,z_inf,z_sup,within",
                             "Readings of the method: mean and sd over seeds, z = distance of the paper's value in sd", 5);
@@ -119,8 +119,8 @@ int main(int argc, char **argv)
   nl_harness_report_table(r, sw, cap, 5);
   nl_harness_figure(r, "sweep.png", "F_sup of the three signals against sample length and rate");
   double lo, hi, hlo, hhi, g_at = NAN, from = 256;   /* lengths from which F_sup has settled */
-  nl_study_a3_range(sw, from, "oct1_f_sup", &lo, &hi);
-  if (sh) nl_study_a3_range(sh, from, "oct1_f_sup", &hlo, &hhi);
+  a3_range(sw, from, "oct1_f_sup", &lo, &hi);
+  if (sh) a3_range(sh, from, "oct1_f_sup", &hlo, &hhi);
   if (sh) nl_harness_text(r, "Under the headline reading the first octave's F_sup stays within [%.4f, %.4f] over the "
                           "sweep's lengths of %g units and more and all its rates (sweep_headline.tsv).\n", hlo, hhi, from);
   for (size_t k = 0; k < pt->nrows && isnan(g_at); k++)
@@ -133,9 +133,9 @@ int main(int argc, char **argv)
                   "%.3g bins of 1/length. Raw values instead of (noise + 1)/2 move the first octave's F_sup from %.4f "
                   "to %.4f (%.3g times the variance against the same T).\n", fname[0], lo, hi, from, paper[0][1], g_at,
                   hv(hy, 0, 1, "f_sup") / hv(hy, 0, 0, "f_sup"), fname[0], m[1][2] / m[0][2], fname[win],
-                  paper[1][1] / paper[0][1], hv(hy, 0, 0, "f_inf"), fname[0], hv(hy, NL_BOUNDS_A3_SIGMA_RMS, 0, "f_inf"),
-                  hv(hy, NL_BOUNDS_A3_SIGMA_RMS, 0, "f_inf") * rd.length, hv(hy, 0, 0, "f_sup"),
-                  hv(hy, NL_BOUNDS_A3_RAW, 0, "f_sup"), pow(hv(hy, NL_BOUNDS_A3_RAW, 0, "sigma") / hv(hy, 0, 0, "sigma"), 2));
+                  paper[1][1] / paper[0][1], hv(hy, 0, 0, "f_inf"), fname[0], hv(hy, A3_SIGMA_RMS, 0, "f_inf"),
+                  hv(hy, A3_SIGMA_RMS, 0, "f_inf") * rd.length, hv(hy, 0, 0, "f_sup"),
+                  hv(hy, A3_RAW, 0, "f_sup"), pow(hv(hy, A3_RAW, 0, "sigma") / hv(hy, 0, 0, "sigma"), 2));
   nl_table_free(t); nl_table_free(sw); nl_table_free(sh); nl_table_free(pt); nl_table_free(hy);
   nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);

@@ -4,18 +4,10 @@
 #include "bounds/nl_bounds.h"
 #include "harness/nl_harness.h"
 #include "study/nl_study.h"
+#include "line.h"
 
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>
-
-/* Samples of noise(f p) along A4's oblique line, rate per unit. */
-static double *line_sample(const nl_noise_perm3 *p, double f, double length, double rate, size_t *n)
-{
-  nl_noise_octaves o = nl_noise_octaves_fbm(1, 1.0, 1.0);
-  o.freq[0] = f;
-  nl_bounds_line l = nl_bounds_line_a4();
-  return nl_bounds_line_sample(p, &o, &l, length, rate, n);
-}
 
 static nl_image *plane_image(const nl_noise_perm3 *p, double f, int size, double extent)
 {
@@ -49,14 +41,14 @@ int main(int argc, char **argv)
     nl_noise_perm3_seed(&p, nl_seed_replicate(nl_harness_seed(r), k));
     size_t n;
     /* F_sup of the first octave from a fine sample (64 per unit). */
-    double *x = line_sample(&p, 1.0, length, 64.0, &n);
+    double *x = a4_line_sample(&p, 1.0, length, 64.0, &n);
     nl_bounds_bandwidth bw;
     if (nl_bounds_bandwidth_1d(x, n, 64.0, NL_BOUNDS_T, &bw, &err)) nl_harness_die(r, 1, "%s", err.msg);
     fs[k] = bw.f_sup;
     /* Energy that folds back when sampled at rate2d: above rate2d / 2. */
     if (nl_bounds_psd1_fraction_above(x, n, 64.0, 0.5 * rate2d, &a0[k], &err)) nl_harness_die(r, 1, "%s", err.msg);
     free(x);
-    x = line_sample(&p, 1.0 / fs[k], length, 64.0, &n);
+    x = a4_line_sample(&p, 1.0 / fs[k], length, 64.0, &n);
     if (nl_bounds_psd1_fraction_above(x, n, 64.0, 0.5 * rate2d, &a1[k], &err)) nl_harness_die(r, 1, "%s", err.msg);
     free(x);
   }
