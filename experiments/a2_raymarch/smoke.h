@@ -33,11 +33,11 @@
 /* ---- plain against bounded -------------------------------------------- */
 
 typedef struct {
-  double ms[2];       /* thread-CPU ms of the plain [0] and the bounded [1] render */
-  long evals[2];      /* noise calls of each */
-  long samples;       /* density samples (the same in both) */
-  int diff;           /* largest difference of the two images in 8-bit levels */
-  double max_noise;   /* largest |noise| of the plain march */
+  double ms[2];     /* thread-CPU ms of the plain [0] and the bounded [1] render */
+  long evals[2];    /* noise calls of each */
+  long samples;     /* density samples (the same in both) */
+  int diff;         /* largest difference of the two images in 8-bit levels */
+  double max_noise; /* largest |noise| of the plain march */
 } a2_smoke_pair;
 /* Renders s plainly into img0 and incrementally into img1 (s.incremental
  * is ignored), each timed by the calling thread's CPU clock
@@ -49,8 +49,8 @@ nl_status a2_smoke_render_pair(const nl_noise_perm3 *p, nl_bounds_smoke s, doubl
 /* ---- curves, fits and the sweep --------------------------------------- */
 
 typedef struct {
-  nl_bounds_smoke s;   /* scene; s.octaves and s.incremental are set per row */
-  int offset;          /* terms = N + offset */
+  nl_bounds_smoke s; /* scene; s.octaves and s.incremental are set per row */
+  int offset;        /* terms = N + offset */
 } a2_smoke_scene;
 
 /* One row of Table 5.1 over seeds: ratios are of the seed means (the
@@ -59,8 +59,8 @@ typedef struct {
   int terms;
   double plain_evals, bounded_evals, eval_ratio, eval_ratio_sd;
   double plain_ms, plain_ms_sd, bounded_ms, bounded_ms_sd, time_ratio, time_ratio_sd;
-  int diff;            /* largest plain/bounded difference, 8-bit levels */
-  double max_noise;    /* largest |noise| of the plain march */
+  int diff;         /* largest plain/bounded difference, 8-bit levels */
+  double max_noise; /* largest |noise| of the plain march */
 } a2_smoke_point;
 
 /* Renders the scene at octave counts N = octaves[0..n-1] for seeds
@@ -72,7 +72,7 @@ typedef struct {
  * panels (may be NULL): the first seed's bounded image per row (caller
  * frees). A renderer error is fatal (nl_harness_die). */
 void a2_smoke_curve(nl_harness *r, const a2_smoke_scene *sc, const int *octaves, int n, int seeds,
-                          int timed, a2_smoke_point *out, nl_image **panels);
+                    int timed, a2_smoke_point *out, nl_image **panels);
 
 /* rss_log and, if not NULL, the rms factor and the row with the largest
  * |ln ours - ln paper|. */
@@ -85,14 +85,22 @@ double a2_smoke_fit(const double *ours, const double *paper, int n, double *rms_
  * within (1 if |ours - ref| <= the reference's sd). Returns the smallest
  * size whose rows are all within at every slope (the reference if none). */
 int a2_smoke_size_check(nl_harness *r, const a2_smoke_scene *sc, const double *slopes, int nslopes,
-                              const int *sizes, int nsizes, const int *octaves, int n, int seeds, nl_table **out);
+                        const int *sizes, int nsizes, const int *octaves, int n, int seeds,
+                        nl_table **out);
 
 /* A scene parameter varied one at a time: "freq", "kappa", "step",
  * "stop_opacity", "octave_bound", or "offset" (the reading of N); a value
  * equal to the center's is skipped (it is the best slope's row). is_free: the
  * paper does not state it, so the fit may choose it; else (a number the
  * paper gives) the rows measure the sensitivity only. */
-typedef struct { const char *name; int is_free, n; double v[4]; } a2_smoke_vary;
+typedef struct {
+  const char *name;
+  int is_free, n;
+  double v[4];
+} a2_smoke_vary;
+
+/* The value of scene parameter `name` (as vary[] names them, or "slope"). */
+double a2_smoke_param(nl_harness *r, const a2_smoke_scene *sc, const char *name);
 
 /* The sweep: first the slope over slopes[] with the other parameters of
  * center, then each vary[] one at a time around the slope that fitted
@@ -108,22 +116,15 @@ typedef struct { const char *name; int is_free, n; double v[4]; } a2_smoke_vary;
  *     rows and the free parameters' rows).
  * Returns the best reading's scene (image size of center). */
 a2_smoke_scene a2_smoke_sweep(nl_harness *r, const a2_smoke_scene *center, const double *slopes,
-                                          int nslopes, const a2_smoke_vary *vary, int nvary,
-                                          const int *octaves, const double *paper, int n, int seeds,
-                                          nl_table **sweep, nl_table **fit);
+                              int nslopes, const a2_smoke_vary *vary, int nvary, const int *octaves,
+                              const double *paper, int n, int seeds, nl_table **sweep,
+                              nl_table **fit);
 
 /* Among the slope rows of a sweep table at octave count N: the row whose
  * eval_ratio is nearest the paper's in log. */
 size_t a2_smoke_nearest(const nl_table *sweep, int octaves);
 /* eval_ratio of the sweep row with vary, slope and N (NaN if none). */
 double a2_smoke_ratio_at(const nl_table *sweep, const char *vary, double slope, int octaves);
-/* The report's paragraph on where the paper's ratios appear among the
- * slope rows of a sweep over octave counts octaves[0..n-1] (0 first, the
- * largest last, the dip looked for at rows 0..2): the slope nearest the
- * paper at N = 0 and what it gives at the largest N, and the reverse; the
- * slopes whose rows 0..2 dip at row 1 as the paper's do. */
-void a2_smoke_report_shape(nl_harness *r, const nl_table *sweep, const int *octaves, int n);
-
 /* timing.tsv, Table 5.1 beside ours: octaves, terms, plain_ms, plain_ms_sd,
  * bounded_ms, bounded_ms_sd, ratio (time), paper_plain_ms,
  * paper_bounded_ms, paper_ratio, plain_evals, bounded_evals, eval_ratio,
@@ -132,18 +133,13 @@ void a2_smoke_report_shape(nl_harness *r, const nl_table *sweep, const int *octa
  * alt_eval_ratio_sd (the size check's rows at alt_slope and its largest
  * size). */
 nl_table *a2_smoke_timing(const a2_smoke_point *pt, const int *octaves, const double (*paper_ms)[2],
-                                int n, const nl_table *size_check, double alt_slope);
+                          int n, const nl_table *size_check, double alt_slope);
 /* rss_log (and rms factor) of two columns of a table, ours against paper's. */
-double a2_smoke_fit_columns(const nl_table *t, const char *ours, const char *paper, double *rms_factor);
+double a2_smoke_fit_columns(const nl_table *t, const char *ours, const char *paper,
+                            double *rms_factor);
 /* Fig. 5.2: writes the panels (one per N) as balls.png and the last as
  * ball.png, and frees them. */
 void a2_smoke_panels(nl_harness *r, nl_image **panels, const int *octaves, int n);
-
-/* One sentence per free parameter of vary[] with at least three values
- * (a number, not a two-way reading) whose value in the best reading is the
- * first or last value tried: the fit may improve beyond. */
-void a2_smoke_report_edges(nl_harness *r, const a2_smoke_scene *best, const a2_smoke_vary *vary,
-                                 int nvary);
 
 /* Fig. 5.3: the decision map of s in the plane z = 0 as colours by the
  * number of terms that decided each pixel (blue few ... red all, black
