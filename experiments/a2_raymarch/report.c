@@ -91,14 +91,15 @@ void a2_report_fit(nl_harness *r, const a2_run *run)
       "at N = %d ... %d octaves: %.1f/%.1f ... %.1f/%.1f (ratio %.2f to %.2f). It gives the "
       "density CLAMP(a d + 1 + Fnoise(p)) but not the slope a, the base frequency or the "
       "absorption. **Ours:** one CPU thread, orthographic along +z through [-1/2, 1/2]^3, "
-      "Beer-Lambert absorption, seeds = permutation tables.\n\n**Fit:** the fitted quantity is the "
-      "ratio of noise evaluations plain / bounded (a deterministic count); our times are CPU "
-      "clocks on a shared machine and are only reported. Least squares on the log ratio, rss = sum "
-      "over the %d rows of (ln ours - ln paper)^2, rms factor exp(sqrt(rss / %d)) (fit.tsv). Image "
-      "size: at slopes %g and %g (%d seeds) the smallest size checked whose ratios all lie within "
-      "one seed sd of the %d px ratios is %d px (largest relative difference %.2g, "
-      "size_check.tsv); the sweep ran there with %d seeds (slope_sweep.tsv). Best reading: **%s** "
-      "(rss %.3f, rms factor %.3f, worst factor %.2f at N = %d).\n",
+      "Beer-Lambert absorption, seeds = permutation tables.\n\n"
+      "**Fit:** the fitted quantity is the ratio of noise evaluations plain / bounded (a "
+      "deterministic count); our times are CPU clocks on a shared machine and are only reported. "
+      "Least squares on the log ratio, rss = sum over the %d rows of (ln ours - ln paper)^2, rms "
+      "factor exp(sqrt(rss / %d)) (fit.tsv). Image size: at slopes %g and %g (%d seeds) the "
+      "smallest size checked whose ratios all lie within one seed sd of the %d px ratios is %d px "
+      "(largest relative difference %.2g, size_check.tsv); the sweep ran there with %d seeds "
+      "(slope_sweep.tsv). Best reading: **%s** (rss %.3f, rms factor %.3f, worst factor %.2f at "
+      "N = %d).\n",
       label[0], label[last], run->paper_ms[0][0], run->paper_ms[0][1], run->paper_ms[last][0],
       run->paper_ms[last][1], run->paper[0], run->paper[last], n, n, run->check_slope[0],
       run->check_slope[1], run->sweep_seeds, s->width, run->sweep_size, size_dev, run->sweep_seeds,
