@@ -70,8 +70,8 @@ typedef struct {
 
 /* One sample of signal s under a reading, on the line of seed (caller
  * frees). */
-double *a3_reading_sample(const nl_noise_perm3 *p, int s, const a3_reading *rd,
-                          unsigned long seed, size_t *n);
+double *a3_reading_sample(const nl_noise_perm3 *p, int s, const a3_reading *rd, unsigned long seed,
+                          size_t *n);
 /* The bandwidth of x under rd's estimator (nl_bounds_bandwidth_1d when all
  * its estimator fields are 0); f_inf_rms uses the same Gamma. */
 nl_status a3_bandwidth_reading(const double *x, size_t n, const a3_reading *rd, double T,

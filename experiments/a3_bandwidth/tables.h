@@ -24,7 +24,7 @@ nl_table *a3_psd(const a3_reading *rd, unsigned long seed, nl_error *err);
 nl_table *a3_sweep(const a3_reading *rd, int nvary, unsigned long seed0, int seeds, nl_error *err);
 /* paper[s] = {F_inf, F_sup} of signal s, named sig[s]; NULL on error. */
 nl_table *a3_hypotheses(const a3_reading *base, unsigned long seed0, int seeds,
-                                 const double paper[][2], const char *const *sig, nl_error *err);
+                        const double paper[][2], const char *const *sig, nl_error *err);
 
 /* Summary of a hypotheses table, per reading h (rows in order): worst[h] =
  * the largest |z_sup| and |z_inf| over the signals, within[h] = how many
