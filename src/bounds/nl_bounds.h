@@ -32,8 +32,8 @@
  * [0, 1] and counts samples and noise evaluations;
  * nl_bounds_smoke_decision_map() is Fig. 5.3: in the plane z, how many
  * terms were evaluated before the value was decided (n + 1 = never
- * decided: the pixel needs the whole sum). The render marches
- * blocks of rays in step and sends each octave of their samples through
+ * decided: the pixel needs the whole sum). The render marches blocks of
+ * rays in step and sends each octave of their samples through
  * nl_noise_perm3_points_sum, or with incremental bounding through
  * nl_noise_perm3_points_bounded (term, eq. 5.4 check and packing of the
  * undecided in one pass, still per sample): the images, counts and max
@@ -64,7 +64,7 @@
  * nl_bounds_sample_line() gives such a sample of a fractal sum of improved
  * noise along a line, point by point (any direction, so the 256-periodicity
  * of the noise along an axis can be avoided). The paper says neither which
- * line nor how long; the experiments choose (study/nl_study_lines.h).
+ * line nor how long: the caller chooses both.
  */
 #ifndef NL_BOUNDS_H
 #define NL_BOUNDS_H
