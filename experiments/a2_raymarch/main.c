@@ -3,42 +3,59 @@
  * bounding, at 0, 1, 2, 5, 7 and 10 octaves. The paper gives neither the
  * slope a nor f0, kappa: they are swept and fitted (smoke.h). */
 #include "harness/nl_harness.h"
+#include "report.h"
 #include "smoke.h"
 
-#include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
-
 enum { NROWS = 6, NCHECK = 2 };
-static const int label[NROWS] = {0, 1, 2, 5, 7, 10};
-static const double paper_ms[NROWS][2] = {{54.1, 19.1}, {71.9, 40.4}, {117.5, 49.8},
-                                          {298.8, 64.6}, {460.0, 69.5}, {1069.1, 89.4}};
+static const int label[NROWS] = { 0, 1, 2, 5, 7, 10 };
+static const double paper_ms[NROWS][2] = { { 54.1, 19.1 },  { 71.9, 40.4 },  { 117.5, 49.8 },
+                                           { 298.8, 64.6 }, { 460.0, 69.5 }, { 1069.1, 89.4 } };
 /* The numbers the paper does not state (free 1): the slope over a grid, then
  * the others one at a time around the best slope; the stated ones (free 0)
  * for their sensitivity. The defaults are the reading no single change of
  * this sweep improves (fit.tsv). The image size is checked at two slopes. */
-static const double slopes[] = {-3, -4, -4.5, -5, -5.25, -5.5, -6, -7, -8}, quick_slopes[] = {-3, -4, -6};
-static const nl_study_smoke_vary vary[] = {{"freq", 1, 4, {1, 2, 4, 8}}, {"kappa", 1, 4, {15, 30, 60, 120}},
-                                           {"offset", 1, 2, {0, 1}}, {"step", 0, 3, {0.005, 0.01, 0.02}},
-                                           {"stop_opacity", 0, 3, {0.95, 0.99, 0.999}},
-                                           {"octave_bound", 0, 2, {1, NL_NOISE3_BOUND}}};
-static const double check_slope[NCHECK] = {-4, -6};
+static const double slopes[] = { -3, -4, -4.5, -5, -5.25, -5.5, -6, -7, -8 };
+static const double quick_slopes[] = { -3, -4, -6 };
+static const a2_smoke_vary vary[] = { { "freq", 1, 4, { 1, 2, 4, 8 } },
+                                      { "kappa", 1, 4, { 15, 30, 60, 120 } },
+                                      { "offset", 1, 2, { 0, 1 } },
+                                      { "step", 0, 3, { 0.005, 0.01, 0.02 } },
+                                      { "stop_opacity", 0, 3, { 0.95, 0.99, 0.999 } },
+                                      { "octave_bound", 0, 2, { 1, NL_NOISE3_BOUND } } };
+static const double check_slope[NCHECK] = { -4, -6 };
 
 int main(int argc, char **argv)
 {
-  nl_harness *r = nl_harness_begin("a2_raymarch", "A2 - Incremental bounding on a ray-marched smoke ball", argc, argv);
+  nl_harness *r = nl_harness_begin(
+      "a2_raymarch", "A2 - Incremental bounding on a ray-marched smoke ball", argc, argv);
   int quick = nl_harness_quick(r);
-  nl_study_smoke_scene sc = {nl_bounds_smoke_default(), 1};
+  a2_smoke_scene sc = { nl_bounds_smoke_default(), 1 };
   nl_bounds_smoke *s = &sc.s;
-  s->width = s->height = (int)nl_harness_param_int(r, "size", quick ? 32 : 512, 8, 4096, "image width and height in pixels of the ray-marched smoke ball (quick 32)");
-  s->step = nl_harness_param(r, "step", 0.01, 1e-4, 0.5, "ray-march step length in unit-cube units (Arnerin 0.01)");
-  s->stop_opacity = nl_harness_param(r, "stop_opacity", 0.99, 0.0, 1.0, "a ray stops when its opacity 1 - T reaches this (Arnerin: 0.99)");
-  s->slope = nl_harness_param(r, "slope", -5.0, -1e3, -1e-3, "slope a < 0 of the density CLAMP(a d + 1 + Fnoise(p)) (not in the paper; fitted, fit.tsv)");
-  s->freq = nl_harness_param(r, "freq", 2.0, 1e-3, 1e3, "frequency f0 of the first noise octave (not in the paper; fitted, fit.tsv)");
-  s->kappa = nl_harness_param(r, "kappa", 120.0, 0.0, 1e6, "extinction per unit density and length, T <- T exp(-kappa density h) (not in the paper; fitted, fit.tsv)");
-  s->octave_bound = nl_harness_param(r, "octave_bound", NL_NOISE3_BOUND, 0.0, 10.0, "assumed sup |noise| of one octave in the incremental bound (Arnerin: 1; default measured bound)");
-  sc.offset = (int)nl_harness_param_int(r, "offset", 1, 0, 1, "reading of \"N octaves\": terms = N + offset (1: octaves 0..N; 0: N terms)");
-  int sweep_seeds = (int)nl_harness_param_int(r, "sweep_seeds", quick ? 2 : 3, 1, 64, "seeds of the size check and the sweep (quick 2)");
+  s->width = s->height = (int)nl_harness_param_int(
+      r, "size", quick ? 32 : 512, 8, 4096,
+      "image width and height in pixels of the ray-marched smoke ball (quick 32)");
+  s->step = nl_harness_param(r, "step", 0.01, 1e-4, 0.5,
+                             "ray-march step length in unit-cube units (Arnerin 0.01)");
+  s->stop_opacity =
+      nl_harness_param(r, "stop_opacity", 0.99, 0.0, 1.0,
+                       "a ray stops when its opacity 1 - T reaches this (Arnerin: 0.99)");
+  s->slope = nl_harness_param(
+      r, "slope", -5.0, -1e3, -1e-3,
+      "slope a < 0 of the density CLAMP(a d + 1 + Fnoise(p)) (not in the paper; fitted, fit.tsv)");
+  s->freq = nl_harness_param(
+      r, "freq", 2.0, 1e-3, 1e3,
+      "frequency f0 of the first noise octave (not in the paper; fitted, fit.tsv)");
+  s->kappa = nl_harness_param(r, "kappa", 120.0, 0.0, 1e6,
+                              "extinction per unit density and length, T <- T exp(-kappa density "
+                              "h) (not in the paper; fitted, fit.tsv)");
+  s->octave_bound = nl_harness_param(r, "octave_bound", NL_NOISE3_BOUND, 0.0, 10.0,
+                                     "assumed sup |noise| of one octave in the incremental bound "
+                                     "(Arnerin: 1; default measured bound)");
+  sc.offset = (int)nl_harness_param_int(
+      r, "offset", 1, 0, 1,
+      "reading of \"N octaves\": terms = N + offset (1: octaves 0..N; 0: N terms)");
+  int sweep_seeds = (int)nl_harness_param_int(r, "sweep_seeds", quick ? 2 : 3, 1, 64,
+                                              "seeds of the size check and the sweep (quick 2)");
   nl_harness_params_done(r);
   int seeds = nl_harness_seeds(r);
   double paper[NROWS];
@@ -46,104 +63,81 @@ int main(int argc, char **argv)
 
   /* Does the evaluation ratio depend on the image size? Sizes size/16 ... size. */
   int sizes[4], nsizes = 0;
-  for (int d = 16; d >= 1; d /= 2)
-    if (d != 2 && s->width / d >= 8 && (nsizes == 0 || s->width / d > sizes[nsizes - 1])) sizes[nsizes++] = s->width / d;
+  for (int d = 16; d >= 1; d /= 2) {
+    int z = s->width / d;
+    if (d != 2 && z >= 8 && (nsizes == 0 || z > sizes[nsizes - 1])) sizes[nsizes++] = z;
+  }
   nl_table *sizet;
-  int sweep_size = nl_study_smoke_size_check(r, &sc, check_slope, NCHECK, sizes, nsizes, label, NROWS, sweep_seeds, &sizet);
+  int sweep_size = a2_smoke_size_check(r, &sc, check_slope, NCHECK, sizes, nsizes, label, NROWS,
+                                       sweep_seeds, &sizet);
   nl_harness_write_table(r, sizet, "size_check.tsv");
 
   /* The sweep and the fit of the evaluation ratio to the paper's times. */
-  nl_study_smoke_scene center = sc;
+  a2_smoke_scene center = sc;
   center.s.width = center.s.height = sweep_size;
   nl_table *sweep, *fit;
   int nvary = quick ? 0 : 6;
-  nl_study_smoke_scene best = nl_study_smoke_sweep(r, &center, quick ? quick_slopes : slopes, quick ? 3 : 9, vary,
-                                                   nvary, label, paper, NROWS, sweep_seeds, &sweep, &fit);
+  a2_smoke_scene best = a2_smoke_sweep(r, &center, quick ? quick_slopes : slopes, quick ? 3 : 9,
+                                       vary, nvary, label, paper, NROWS, sweep_seeds, &sweep, &fit);
   nl_harness_write_table(r, sweep, "slope_sweep.tsv");
   nl_harness_write_table(r, fit, "fit.tsv");
-  const char *timed[] = {"time_ratio", "time_ratio_sd", "time_rms_factor"};
-  for (int k = 0; k < 2; k++) nl_harness_check(r, "slope_sweep.tsv", timed[k], "ignore");
-  nl_harness_check(r, "fit.tsv", timed[2], "ignore");
+  nl_harness_check(r, "slope_sweep.tsv", "time_ratio", "ignore");
+  nl_harness_check(r, "slope_sweep.tsv", "time_ratio_sd", "ignore");
+  nl_harness_check(r, "fit.tsv", "time_rms_factor", "ignore");
 
-  /* The headline: the scene of the parameters (defaults: the fitted reading) at full size, over seeds. */
-  nl_study_smoke_point pt[NROWS];
+  /* The headline: the scene of the parameters (defaults: the fitted
+   * reading) at full size, over seeds. */
+  a2_smoke_point pt[NROWS];
   nl_image *panels[NROWS];
-  nl_study_smoke_curve(r, &sc, label, NROWS, seeds, 1, pt, panels);
-  nl_table *t = nl_study_smoke_timing(pt, label, paper_ms, NROWS, sizet, check_slope[0]);
+  a2_smoke_curve(r, &sc, label, NROWS, seeds, 1, pt, panels);
+  nl_table *t = a2_smoke_timing(pt, label, paper_ms, NROWS, sizet, check_slope[0]);
   nl_harness_write_table(r, t, "timing.tsv");
   /* Wall-clock times depend on the machine and its load: the regression
    * check skips them and holds the noise-call counts and images exact. */
-  const char *ms[] = {"plain_ms", "plain_ms_sd", "bounded_ms", "bounded_ms_sd", "ratio"};
+  const char *ms[] = { "plain_ms", "plain_ms_sd", "bounded_ms", "bounded_ms_sd", "ratio" };
   for (int k = 0; k < 5; k++) nl_harness_check(r, "timing.tsv", ms[k], "ignore");
-  nl_study_smoke_panels(r, panels, label, NROWS);
-  int worst_diff = 0;
-  for (int i = 0; i < NROWS; i++) worst_diff = pt[i].diff > worst_diff ? pt[i].diff : worst_diff;
+  a2_smoke_panels(r, panels, label, NROWS);
 
-  /* Fig. 5.3 at N = 10 in the plane z = 0, and the paper's |noise| <= 1. */
+  /* Fig. 5.3 at the largest N in the plane z = 0, and the paper's |noise| <= 1. */
   nl_noise_perm3 p;
   nl_noise_perm3_seed(&p, nl_harness_seed(r));
   s->octaves = label[NROWS - 1] + sc.offset;
-  nl_image *dm = nl_study_smoke_decision_image(r, &p, s);
+  nl_image *dm = a2_smoke_decision_image(r, &p, s);
   nl_harness_write_image(r, dm, "bounds.png");
-  nl_bounds_smoke_pair unit;
+  a2_smoke_pair unit;
   nl_bounds_smoke su = *s;
   su.octave_bound = 1.0;
   nl_error err;
-  if (nl_bounds_smoke_render_pair(&p, su, NULL, NULL, &unit, &err)) nl_harness_die(r, 1, "%s", err.msg);
+  if (a2_smoke_render_pair(&p, su, NULL, NULL, &unit, &err)) nl_harness_die(r, 1, "%s", err.msg);
 
-  /* The report: numbers from the tables. */
-  size_t fb = 0;
-  while (nl_table_value(fit, fb, "best") != 1.0) fb++;
-  double rms, rms_alt, size_dev = 0, er2 = nl_table_value(t, 2, "eval_ratio");
-  nl_study_smoke_fit_columns(t, "eval_ratio", "paper_ratio", &rms);
-  nl_study_smoke_fit_columns(t, "alt_eval_ratio", "paper_ratio", &rms_alt);
-  for (size_t k = 0; k < sizet->nrows; k++)
-    if (nl_table_value(sizet, k, "size") == sweep_size) size_dev = fmax(size_dev, nl_table_value(sizet, k, "rel_diff"));
-  nl_harness_text(r, "**Paper (Table 5.1, GPU):** 512 x 512, step 0.01, stop at 99%% opacity; plain / "
-                     "bounded ms at N = %d ... %d octaves: %.1f/%.1f ... %.1f/%.1f (ratio %.2f to %.2f). It "
-                     "gives the density CLAMP(a d + 1 + Fnoise(p)) but not the slope a, the base frequency "
-                     "or the absorption. **Ours:** one CPU thread, orthographic along +z through "
-                     "[-1/2, 1/2]^3, Beer-Lambert absorption, seeds = permutation tables.\n\n"
-                     "**Fit:** the fitted quantity is the ratio of noise evaluations plain / bounded (a "
-                     "deterministic count); our times are CPU clocks on a shared machine and are only "
-                     "reported. Least squares on the log ratio, rss = sum over the %d rows of (ln ours - "
-                     "ln paper)^2, rms factor exp(sqrt(rss / %d)) (fit.tsv). Image size: at slopes %g and "
-                     "%g (%d seeds) the smallest size checked whose ratios all lie within one seed sd of "
-                     "the %d px ratios is %d px (largest relative difference %.2g, size_check.tsv); the "
-                     "sweep ran there with %d seeds (slope_sweep.tsv). Best reading: **%s** (rss %.3f, "
-                     "rms factor %.3f, worst factor %.2f at N = %d).\n",
-                  label[0], label[NROWS - 1], paper_ms[0][0], paper_ms[0][1], paper_ms[NROWS - 1][0],
-                  paper_ms[NROWS - 1][1], paper[0], paper[NROWS - 1], NROWS, NROWS, check_slope[0],
-                  check_slope[1], sweep_seeds, s->width, sweep_size, size_dev, sweep_seeds,
-                  nl_table_text(fit, fb, "reading"), nl_table_value(fit, fb, "rss_log"),
-                  nl_table_value(fit, fb, "rms_factor"), nl_table_value(fit, fb, "worst_factor"),
-                  (int)nl_table_value(fit, fb, "worst_octaves"));
-  nl_study_smoke_report_shape(r, sweep, label, NROWS);
-  nl_study_smoke_report_edges(r, &best, vary, nvary);
-  nl_harness_text(r, "From N = %d to %d the paper's ratio grows %.1fx, this run's evaluation ratio %.1fx.\n",
-                  label[2], label[NROWS - 1], paper[NROWS - 1] / paper[2], pt[NROWS - 1].eval_ratio / er2);
-  nl_harness_text(r, "**This run** (Table below, %d x %d, %d seeds): a = %g, f0 = %g, kappa = %g, step %g, "
-                     "stop at %g, terms = N + %d (the best reading: a = %g, terms = N + %d); rms factor %.3f "
-                     "against the paper. The measured alternative a = %g (columns alt_*, %d seeds) has rms factor %.3f. The per-octave bound is %.4f "
-                     "(analytic bound of improved noise; the paper assumes |noise| <= 1); the largest |noise| "
-                     "met was %.4f.\n",
-                  s->width, s->height, seeds, s->slope, s->freq, s->kappa, s->step, s->stop_opacity, sc.offset,
-                  best.s.slope, best.offset, rms, check_slope[0], sweep_seeds, rms_alt, s->octave_bound,
-                  pt[NROWS - 1].max_noise);
-  nl_harness_report_table(r, t, "Plain against incrementally bounded march; paper beside ours", 4);
-  nl_harness_report_table(r, fit, "Fit of the evaluation ratio to the paper's time ratios, per reading", 4);
-  nl_harness_verdict_rows(r, "timing.tsv", t, "plain / bounded ratio", "octaves", "paper_ratio", "eval_ratio", "eval_ratio_sd", "factor 1.25 2", "evaluations, fitted scene");
-  nl_harness_text(r, "Bounded and plain images differ by at most %d 8-bit levels at any octave count "
-                     "(they are the same sums in the same order). With the paper's unit bound at N = %d "
-                     "the images differ by %d levels and the march evaluates %.1fx fewer octaves "
-                     "than plain (against %.1fx with the analytic bound).\n",
-                  worst_diff, label[NROWS - 1], unit.diff, (double)unit.evals[0] / (double)unit.evals[1],
-                  pt[NROWS - 1].eval_ratio);
-  nl_harness_figure(r, "balls.png", "Fig. 5.2: the smoke ball at N = 0, 1, 2, 5, 7, 10 (bounded march)");
-  nl_harness_figure(r, "bounds.png", "Fig. 5.3: octaves needed to decide each pixel of the slice z = 0 at N = 10 (blue few ... red all; black: inside the band, never decided)");
-  nl_harness_figure(r, "timing.png", "Table 5.1 as ratios: the paper's times, our fitted reading and a = -4");
+  a2_run run = { .sc = &sc,
+                 .best = &best,
+                 .label = label,
+                 .n = NROWS,
+                 .paper_ms = paper_ms,
+                 .paper = paper,
+                 .check_slope = check_slope,
+                 .seeds = seeds,
+                 .sweep_seeds = sweep_seeds,
+                 .sweep_size = sweep_size,
+                 .vary = vary,
+                 .nvary = nvary,
+                 .pt = pt,
+                 .timing = t,
+                 .fit = fit,
+                 .sweep = sweep,
+                 .size_check = sizet,
+                 .unit = &unit };
+  a2_report_fit(r, &run);
+  nl_harness_verdict_rows(r, "timing.tsv", t, "plain / bounded ratio", "octaves", "paper_ratio",
+                          "eval_ratio", "eval_ratio_sd", "factor 1.25 2",
+                          "evaluations, fitted scene");
+  a2_report_images(r, &run);
   nl_image_free(dm);
-  nl_table_free(t); nl_table_free(sizet); nl_table_free(sweep); nl_table_free(fit);
-  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  nl_table_free(t);
+  nl_table_free(sizet);
+  nl_table_free(sweep);
+  nl_table_free(fit);
+  nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);
 }

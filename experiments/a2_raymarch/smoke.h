@@ -13,9 +13,9 @@
  * ratio is measured beside it but is a CPU wall-clock on a shared machine
  * (and the paper's is a GPU's): it is reported, never fitted.
  *
- *   nl_study_smoke_scene sc = {nl_bounds_smoke_default(), 1};
- *   nl_study_smoke_point pt[6];
- *   nl_study_smoke_curve(r, &sc, octaves, 6, seeds, 1, pt, panels);
+ *   a2_smoke_scene sc = {nl_bounds_smoke_default(), 1};
+ *   a2_smoke_point pt[6];
+ *   a2_smoke_curve(r, &sc, octaves, 6, seeds, 1, pt, panels);
  *
  * Fit of a curve to the paper's six time ratios: least squares on the log
  * ratio, rss_log = sum_i (ln ours_i - ln paper_i)^2, and the rms factor
@@ -30,10 +30,28 @@
 #include "image/nl_image.h"
 #include "table/nl_table.h"
 
+/* ---- plain against bounded -------------------------------------------- */
+
 typedef struct {
-  nl_bounds_smoke s;   /* scene; s.octaves and s.incremental are set per row */
-  int offset;          /* terms = N + offset */
-} nl_study_smoke_scene;
+  double ms[2];     /* thread-CPU ms of the plain [0] and the bounded [1] render */
+  long evals[2];    /* noise calls of each */
+  long samples;     /* density samples (the same in both) */
+  int diff;         /* largest difference of the two images in 8-bit levels */
+  double max_noise; /* largest |noise| of the plain march */
+} a2_smoke_pair;
+/* Renders s plainly into img0 and incrementally into img1 (s.incremental
+ * is ignored), each timed by the calling thread's CPU clock
+ * (nl_time_thread_cpu, so that renders on other threads at once do not
+ * count). img0 or img1 NULL: both images are temporaries. */
+nl_status a2_smoke_render_pair(const nl_noise_perm3 *p, nl_bounds_smoke s, double *img0,
+                               double *img1, a2_smoke_pair *t, nl_error *err);
+
+/* ---- curves, fits and the sweep --------------------------------------- */
+
+typedef struct {
+  nl_bounds_smoke s; /* scene; s.octaves and s.incremental are set per row */
+  int offset;        /* terms = N + offset */
+} a2_smoke_scene;
 
 /* One row of Table 5.1 over seeds: ratios are of the seed means (the
  * paper's times are totals), their sd the sd of the per-seed ratios. */
@@ -41,9 +59,9 @@ typedef struct {
   int terms;
   double plain_evals, bounded_evals, eval_ratio, eval_ratio_sd;
   double plain_ms, plain_ms_sd, bounded_ms, bounded_ms_sd, time_ratio, time_ratio_sd;
-  int diff;            /* largest plain/bounded difference, 8-bit levels */
-  double max_noise;    /* largest |noise| of the plain march */
-} nl_study_smoke_point;
+  int diff;         /* largest plain/bounded difference, 8-bit levels */
+  double max_noise; /* largest |noise| of the plain march */
+} a2_smoke_point;
 
 /* Renders the scene at octave counts N = octaves[0..n-1] for seeds
  * nl_seed_replicate(run seed, k), k < seeds. timed: plain and bounded
@@ -53,12 +71,12 @@ typedef struct {
  * noise term both counts are 0 and the ratio is 1 (the same work).
  * panels (may be NULL): the first seed's bounded image per row (caller
  * frees). A renderer error is fatal (nl_harness_die). */
-void nl_study_smoke_curve(nl_harness *r, const nl_study_smoke_scene *sc, const int *octaves, int n, int seeds,
-                          int timed, nl_study_smoke_point *out, nl_image **panels);
+void a2_smoke_curve(nl_harness *r, const a2_smoke_scene *sc, const int *octaves, int n, int seeds,
+                    int timed, a2_smoke_point *out, nl_image **panels);
 
 /* rss_log and, if not NULL, the rms factor and the row with the largest
  * |ln ours - ln paper|. */
-double nl_study_smoke_fit(const double *ours, const double *paper, int n, double *rms_factor, int *worst);
+double a2_smoke_fit(const double *ours, const double *paper, int n, double *rms_factor, int *worst);
 
 /* size_check.tsv: does the evaluation ratio depend on the image size? For
  * each slope and size (the last size is the reference), the untimed curve
@@ -66,15 +84,23 @@ double nl_study_smoke_fit(const double *ours, const double *paper, int n, double
  * ref_eval_ratio, ref_eval_ratio_sd, rel_diff (|ours - ref| / ref),
  * within (1 if |ours - ref| <= the reference's sd). Returns the smallest
  * size whose rows are all within at every slope (the reference if none). */
-int nl_study_smoke_size_check(nl_harness *r, const nl_study_smoke_scene *sc, const double *slopes, int nslopes,
-                              const int *sizes, int nsizes, const int *octaves, int n, int seeds, nl_table **out);
+int a2_smoke_size_check(nl_harness *r, const a2_smoke_scene *sc, const double *slopes, int nslopes,
+                        const int *sizes, int nsizes, const int *octaves, int n, int seeds,
+                        nl_table **out);
 
 /* A scene parameter varied one at a time: "freq", "kappa", "step",
  * "stop_opacity", "octave_bound", or "offset" (the reading of N); a value
  * equal to the center's is skipped (it is the best slope's row). is_free: the
  * paper does not state it, so the fit may choose it; else (a number the
  * paper gives) the rows measure the sensitivity only. */
-typedef struct { const char *name; int is_free, n; double v[4]; } nl_study_smoke_vary;
+typedef struct {
+  const char *name;
+  int is_free, n;
+  double v[4];
+} a2_smoke_vary;
+
+/* The value of scene parameter `name` (as vary[] names them, or "slope"). */
+double a2_smoke_param(nl_harness *r, const a2_smoke_scene *sc, const char *name);
 
 /* The sweep: first the slope over slopes[] with the other parameters of
  * center, then each vary[] one at a time around the slope that fitted
@@ -89,23 +115,16 @@ typedef struct { const char *name; int is_free, n; double v[4]; } nl_study_smoke
  *     the smallest rss_log among the free readings), free (1: the slope
  *     rows and the free parameters' rows).
  * Returns the best reading's scene (image size of center). */
-nl_study_smoke_scene nl_study_smoke_sweep(nl_harness *r, const nl_study_smoke_scene *center, const double *slopes,
-                                          int nslopes, const nl_study_smoke_vary *vary, int nvary,
-                                          const int *octaves, const double *paper, int n, int seeds,
-                                          nl_table **sweep, nl_table **fit);
+a2_smoke_scene a2_smoke_sweep(nl_harness *r, const a2_smoke_scene *center, const double *slopes,
+                              int nslopes, const a2_smoke_vary *vary, int nvary, const int *octaves,
+                              const double *paper, int n, int seeds, nl_table **sweep,
+                              nl_table **fit);
 
 /* Among the slope rows of a sweep table at octave count N: the row whose
  * eval_ratio is nearest the paper's in log. */
-size_t nl_study_smoke_nearest(const nl_table *sweep, int octaves);
+size_t a2_smoke_nearest(const nl_table *sweep, int octaves);
 /* eval_ratio of the sweep row with vary, slope and N (NaN if none). */
-double nl_study_smoke_ratio_at(const nl_table *sweep, const char *vary, double slope, int octaves);
-/* The report's paragraph on where the paper's ratios appear among the
- * slope rows of a sweep over octave counts octaves[0..n-1] (0 first, the
- * largest last, the dip looked for at rows 0..2): the slope nearest the
- * paper at N = 0 and what it gives at the largest N, and the reverse; the
- * slopes whose rows 0..2 dip at row 1 as the paper's do. */
-void nl_study_smoke_report_shape(nl_harness *r, const nl_table *sweep, const int *octaves, int n);
-
+double a2_smoke_ratio_at(const nl_table *sweep, const char *vary, double slope, int octaves);
 /* timing.tsv, Table 5.1 beside ours: octaves, terms, plain_ms, plain_ms_sd,
  * bounded_ms, bounded_ms_sd, ratio (time), paper_plain_ms,
  * paper_bounded_ms, paper_ratio, plain_evals, bounded_evals, eval_ratio,
@@ -113,23 +132,18 @@ void nl_study_smoke_report_shape(nl_harness *r, const nl_table *sweep, const int
  * from the size check's reference size: alt_slope, alt_eval_ratio,
  * alt_eval_ratio_sd (the size check's rows at alt_slope and its largest
  * size). */
-nl_table *nl_study_smoke_timing(const nl_study_smoke_point *pt, const int *octaves, const double (*paper_ms)[2],
-                                int n, const nl_table *size_check, double alt_slope);
+nl_table *a2_smoke_timing(const a2_smoke_point *pt, const int *octaves, const double (*paper_ms)[2],
+                          int n, const nl_table *size_check, double alt_slope);
 /* rss_log (and rms factor) of two columns of a table, ours against paper's. */
-double nl_study_smoke_fit_columns(const nl_table *t, const char *ours, const char *paper, double *rms_factor);
+double a2_smoke_fit_columns(const nl_table *t, const char *ours, const char *paper,
+                            double *rms_factor);
 /* Fig. 5.2: writes the panels (one per N) as balls.png and the last as
  * ball.png, and frees them. */
-void nl_study_smoke_panels(nl_harness *r, nl_image **panels, const int *octaves, int n);
-
-/* One sentence per free parameter of vary[] with at least three values
- * (a number, not a two-way reading) whose value in the best reading is the
- * first or last value tried: the fit may improve beyond. */
-void nl_study_smoke_report_edges(nl_harness *r, const nl_study_smoke_scene *best, const nl_study_smoke_vary *vary,
-                                 int nvary);
+void a2_smoke_panels(nl_harness *r, nl_image **panels, const int *octaves, int n);
 
 /* Fig. 5.3: the decision map of s in the plane z = 0 as colours by the
  * number of terms that decided each pixel (blue few ... red all, black
  * never decided). */
-nl_image *nl_study_smoke_decision_image(nl_harness *r, const nl_noise_perm3 *p, const nl_bounds_smoke *s);
+nl_image *a2_smoke_decision_image(nl_harness *r, const nl_noise_perm3 *p, const nl_bounds_smoke *s);
 
 #endif

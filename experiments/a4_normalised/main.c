@@ -3,26 +3,24 @@
  * fraction of their energy above the Nyquist frequency (what aliases). */
 #include "bounds/nl_bounds.h"
 #include "harness/nl_harness.h"
+#include "line.h"
+#include "report.h"
 #include "study/nl_study.h"
 
-#include <gsl/gsl_statistics_double.h>
 #include <math.h>
+#include <stdlib.h>
 
-/* Samples of noise(f p) along A4's oblique line, rate per unit. */
-static double *line_sample(const nl_noise_perm3 *p, double f, double length, double rate, size_t *n)
-{
-  nl_noise_octaves o = nl_noise_octaves_fbm(1, 1.0, 1.0);
-  o.freq[0] = f;
-  nl_bounds_line l = nl_bounds_line_a4();
-  return nl_bounds_line_sample(p, &o, &l, length, rate, n);
-}
+/* F_sup is measured on a finely sampled line: 64 samples per unit, far
+ * above the band of one octave. */
+#define FINE_RATE 64.0
 
+/* The plane z = 0.5 of noise(f p), size x size pixels over extent units. */
 static nl_image *plane_image(const nl_noise_perm3 *p, double f, int size, double extent)
 {
   nl_noise_basis b = nl_noise_basis_perm3(p);
   nl_noise_octaves o = nl_noise_octaves_fbm(1, 1.0, 1.0);
   o.freq[0] = f;
-  nl_noise_window w = {0, 0, 0.5, extent, size, size};
+  nl_noise_window w = { 0, 0, 0.5, extent, size, size };
   double *v = nl_xmalloc((size_t)size * size * sizeof *v);
   nl_noise_fractal_grid(&b, &o, &w, v);
   nl_image *im = nl_image_from_values(v, size, size, -1.0, 1.0);
@@ -36,8 +34,9 @@ int main(int argc, char **argv)
   int quick = nl_harness_quick(r);
   int size = (int)nl_harness_param_int(r, "size", quick ? 96 : 256, 8, 4096,
                                        "side in pixels of the 2D noise images (quick 96)");
-  double rate2d = nl_harness_param(r, "rate", 2.0, 0.1, 1024,
-                                   "samples per unit of the 2D images and the 1D line (Arnerin Fig. 5.7: 2)");
+  double rate2d =
+      nl_harness_param(r, "rate", 2.0, 0.1, 1024,
+                       "samples per unit of the 2D images and the 1D line (Arnerin Fig. 5.7: 2)");
   double length = nl_harness_param(r, "length", quick ? 128 : 512, 8, 1e6,
                                    "length of the sampled 1D line in noise units (quick 128)");
   nl_harness_params_done(r);
@@ -48,47 +47,45 @@ int main(int argc, char **argv)
     nl_noise_perm3 p;
     nl_noise_perm3_seed(&p, nl_seed_replicate(nl_harness_seed(r), k));
     size_t n;
-    /* F_sup of the first octave from a fine sample (64 per unit). */
-    double *x = line_sample(&p, 1.0, length, 64.0, &n);
+    /* F_sup of the first octave from the fine sample. */
+    double *x = a4_line_sample(&p, 1.0, length, FINE_RATE, &n);
     nl_bounds_bandwidth bw;
-    if (nl_bounds_bandwidth_1d(x, n, 64.0, NL_BOUNDS_T, &bw, &err)) nl_harness_die(r, 1, "%s", err.msg);
+    if (nl_bounds_bandwidth_1d(x, n, FINE_RATE, NL_BOUNDS_T, &bw, &err))
+      nl_harness_die(r, 1, "%s", err.msg);
     fs[k] = bw.f_sup;
-    /* Energy that folds back when sampled at rate2d: above rate2d / 2. */
-    if (nl_bounds_psd1_fraction_above(x, n, 64.0, 0.5 * rate2d, &a0[k], &err)) nl_harness_die(r, 1, "%s", err.msg);
+    /* Energy that folds back when sampled at rate2d: above rate2d / 2,
+     * before and after the normalisation. */
+    if (nl_bounds_psd1_fraction_above(x, n, FINE_RATE, 0.5 * rate2d, &a0[k], &err))
+      nl_harness_die(r, 1, "%s", err.msg);
     free(x);
-    x = line_sample(&p, 1.0 / fs[k], length, 64.0, &n);
-    if (nl_bounds_psd1_fraction_above(x, n, 64.0, 0.5 * rate2d, &a1[k], &err)) nl_harness_die(r, 1, "%s", err.msg);
+    x = a4_line_sample(&p, 1.0 / fs[k], length, FINE_RATE, &n);
+    if (nl_bounds_psd1_fraction_above(x, n, FINE_RATE, 0.5 * rate2d, &a1[k], &err))
+      nl_harness_die(r, 1, "%s", err.msg);
     free(x);
   }
-  const char *cols[] = {"signal", "f_sup", "aliased_fraction", "aliased_fraction_sd"};
+  const char *cols[] = { "signal", "f_sup", "aliased_fraction", "aliased_fraction_sd" };
   nl_table *t = nl_table_alloc(4, cols);
-  double mf = gsl_stats_mean(fs, 1, (size_t)seeds);
-  nl_table_append(t, "sddd", "noise(x)", mf, gsl_stats_mean(a0, 1, (size_t)seeds),
-                  seeds > 1 ? gsl_stats_sd(a0, 1, (size_t)seeds) : 0.0);
-  nl_table_append(t, "sddd", "noise(x / F_sup)", 1.0, gsl_stats_mean(a1, 1, (size_t)seeds),
-                  seeds > 1 ? gsl_stats_sd(a1, 1, (size_t)seeds) : 0.0);
+  double mf = nl_study_mean(fs, seeds);
+  nl_table_append(t, "sddd", "noise(x)", mf, nl_study_mean(a0, seeds), nl_study_sd(a0, seeds));
+  nl_table_append(t, "sddd", "noise(x / F_sup)", 1.0, nl_study_mean(a1, seeds),
+                  nl_study_sd(a1, seeds));
   nl_harness_write_table(r, t, "aliasing.tsv");
 
+  /* Fig. 5.7: the first seed's plane before and after the normalisation. */
+  a4_run run = { rate2d, length, FINE_RATE, mf, seeds, t };
   nl_noise_perm3 p;
   nl_noise_perm3_seed(&p, nl_harness_seed(r));
-  nl_image *pan[2] = {plane_image(&p, 1.0, size, size / rate2d), plane_image(&p, 1.0 / fs[0], size, size / rate2d)};
-  const char *labels[2] = {"(a) noise(x)", "(b) noise(x / F_sup)"};
-  nl_study_montage(r, (const nl_image *const *)pan, labels, 2, 2, "Fig. 5.7: 2 samples per unit", "normalised.png");
+  nl_image *pan[2] = { plane_image(&p, 1.0, size, size / rate2d),
+                       plane_image(&p, 1.0 / fs[0], size, size / rate2d) };
+  const char *labels[2] = { "(a) noise(x)", "(b) noise(x / F_sup)" };
+  char title[96];
+  a4_figure_title(&run, title, sizeof title);
+  nl_study_montage(r, (const nl_image *const *)pan, labels, 2, 2, title, "normalised.png");
 
-  nl_harness_text(r, "**Paper (Fig. 5.7):** the original and the spectrally normalised Perlin noise "
-                     "Nnoise(x) = noise(x / F_sup), sampled at 2 x 2 pixels per unit^2: aliasing "
-                     "patterns in (a), none in (b) (images only). **Ours:** the plane z = 0.5 of improved "
-                     "noise at %g samples per unit, F_sup measured per seed as in A3 (raw values, an "
-                     "oblique line of %g units at 64 samples per unit, T = (2/255)^2): mean %.4f over %d "
-                     "seeds. The table gives the fraction of the variance above the Nyquist frequency "
-                     "%g of that sampling, i.e. what aliases.\n", rate2d, length, mf, seeds, 0.5 * rate2d);
-  nl_harness_report_table(r, t, "Energy above Nyquist before and after normalisation (mean and sd over seeds)", 5);
-  nl_harness_figure(r, "normalised.png", "Fig. 5.7: (a) noise, (b) noise(x / F_sup), 2 samples per unit");
-  nl_harness_text(r, "Normalising by F_sup stretches the noise by %.2f so that the energy above Nyquist "
-                     "is at most T by construction; it also makes the features larger, which is the "
-                     "price of the normalisation.\n", mf);
-  nl_image_free(pan[0]); nl_image_free(pan[1]);
+  a4_report(r, &run);
+  nl_image_free(pan[0]);
+  nl_image_free(pan[1]);
   nl_table_free(t);
-  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);
 }

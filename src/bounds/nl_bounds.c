@@ -1,8 +1,6 @@
 #include "bounds/nl_bounds.h"
-#include "noise/nl_noise_alt.h"
 
 #include <gsl/gsl_rng.h>
-#include <gsl/gsl_statistics_double.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -72,8 +70,8 @@ static double clamped_sum(const nl_noise_perm3 *p, const nl_noise_octaves *o, co
   return clamp01(base + partial);
 }
 
-double nl_bounds_clamped_fractal(const nl_noise_perm3 *p, const nl_noise_octaves *o, const double *rem,
-                                 double base, const double *xyz, int incremental,
+double nl_bounds_clamped_fractal(const nl_noise_perm3 *p, const nl_noise_octaves *o,
+                                 const double *rem, double base, const double *xyz, int incremental,
                                  int *terms, double *max_abs)
 {
   int t, d;
@@ -132,7 +130,8 @@ nl_bounds_smoke nl_bounds_smoke_default(void)
 
 static nl_status smoke_check(const nl_bounds_smoke *s, nl_error *err)
 {
-  if (s->width < 1 || s->height < 1) return nl_fail(err, NL_EINVAL, "smoke: image size must be positive");
+  if (s->width < 1 || s->height < 1)
+    return nl_fail(err, NL_EINVAL, "smoke: image size must be positive");
   if (!(s->step > 0.0)) return nl_fail(err, NL_EINVAL, "smoke: step must be positive");
   if (!(s->slope < 0.0)) return nl_fail(err, NL_EINVAL, "smoke: slope a must be negative");
   if (s->octaves < 0 || s->octaves > NL_MAX_OCTAVES)
@@ -149,7 +148,7 @@ static nl_noise_octaves smoke_octaves(const nl_bounds_smoke *s)
   return o;
 }
 
-/* The march, batched (issue 17, item 8). The rays of a block of pixels
+/* The march, batched. The rays of a block of pixels
  * step together, kept packed (compacted only at a step where one
  * stopped): at step i every ray still below the stop opacity gives one
  * sample at z_i. Plain evaluation: each octave of those samples is one
@@ -160,8 +159,8 @@ static nl_noise_octaves smoke_octaves(const nl_bounds_smoke *s)
  * eq. 5.4 check before the next one and packs the still undecided to the
  * front (stream compaction, no index lists to gather through): the octave
  * count is still decided per sample, and what a sample costs beyond its
- * evaluations is little (issue 17, item 8: the time ratio should approach
- * the evaluation ratio). Every sample sees the same operations in the same
+ * evaluations is little (so the time ratio can approach the evaluation
+ * ratio). Every sample sees the same operations in the same
  * order as one ray marched alone (the kernels return the bits of
  * nl_noise_perm3_eval and its sums): images and counts do not depend on the
  * batching. What a ray alone pays per sample (a call per octave, a loop,
@@ -220,7 +219,8 @@ static void smoke_densities(smoke_block *b, int nact, double z, nl_bounds_smoke_
     smoke_bases(b->r2, nact, z2, s->slope, b->base);
     for (int j = 0; j < nact; j++) { b->partial[j] = 0.0; b->z[j] = z; }
     for (int k = 0; k < n; k++) {
-      double t = nl_noise_perm3_points_sum(b->p, o->freq[k], b->x, b->y, b->z, (size_t)nact, o->amp[k], b->partial);
+      double t = nl_noise_perm3_points_sum(b->p, o->freq[k], b->x, b->y, b->z, (size_t)nact,
+                                           o->amp[k], b->partial);
       top = t > top ? t : top;
     }
     st->noise_evals += (long)n * nact;
@@ -246,7 +246,12 @@ static void smoke_densities(smoke_block *b, int nact, double z, nl_bounds_smoke_
       double base = s->slope * root[j - j0] + 1.0, sum = base + 0.0;
       int lo = sum + r0 <= 0.0, hi = sum - r0 >= 1.0;
       b->dens[j] = hi ? 1.0 : 0.0;
-      b->ux[m] = b->x[j]; b->uy[m] = b->y[j]; b->uz[m] = z; b->ub[m] = base; b->up[m] = 0.0; b->ur[m] = j;
+      b->ux[m] = b->x[j];
+      b->uy[m] = b->y[j];
+      b->uz[m] = z;
+      b->ub[m] = base;
+      b->up[m] = 0.0;
+      b->ur[m] = j;
       m += !(lo | hi);
     }
   }
@@ -254,19 +259,22 @@ static void smoke_densities(smoke_block *b, int nact, double z, nl_bounds_smoke_
    * (nl_noise_perm3_points_bounded): the decided leave the pack */
   nl_noise_pack pk = {b->ux, b->uy, b->uz, b->ub, b->up, b->ur, (size_t)m};
   for (int k = 0; k < n && pk.n > 0; k++) {
-    size_t before = pk.n, nhi = nl_noise_perm3_points_bounded(b->p, o->freq[k], o->amp[k], b->rem[k + 1], &pk,
-                                                              b->hi, &top);
+    size_t before = pk.n;
+    size_t nhi = nl_noise_perm3_points_bounded(b->p, o->freq[k], o->amp[k], b->rem[k + 1], &pk,
+                                               b->hi, &top);
     for (size_t h = 0; h < nhi; h++) b->dens[b->hi[h]] = 1.0;
     st->noise_evals += (long)(before - pk.n) * (k + 1);
   }
-  for (size_t j = 0; j < pk.n; j++) b->dens[b->ur[j]] = clamp01(b->ub[j] + b->up[j]);   /* never decided */
+  for (size_t j = 0; j < pk.n; j++)   /* never decided */
+    b->dens[b->ur[j]] = clamp01(b->ub[j] + b->up[j]);
   st->noise_evals += (long)n * (long)pk.n;
   st->max_abs_noise = top;
 }
 
 /* Rays of pixels first .. first + count - 1 (row-major) along +z through
  * the unit cube; emission-absorption. */
-static void smoke_block_march(smoke_block *b, size_t first, int count, double *img, nl_bounds_smoke_stats *st)
+static void smoke_block_march(smoke_block *b, size_t first, int count, double *img,
+                              nl_bounds_smoke_stats *st)
 {
   const nl_bounds_smoke *s = b->s;
   double stop = 1.0 - s->stop_opacity, full = exp(-s->kappa * 1.0 * s->step);
@@ -316,19 +324,22 @@ nl_status nl_bounds_smoke_render(const nl_noise_perm3 *p, const nl_bounds_smoke 
   nl_bounds_remainders(&o, s->octave_bound, rem);
   memset(st, 0, sizeof *st);
   smoke_block *b = nl_xmalloc(sizeof *b);
-  memset(b, 0, sizeof *b);   /* the pairs of roots read one ray past the last: never an unset value */
+  /* the pairs of roots read one ray past the last: never an unset value */
+  memset(b, 0, sizeof *b);
   b->p = p; b->s = s; b->o = &o; b->rem = rem;
   double far = (1.0 + rem[0]) / -s->slope * (1.0 + 1e-6);
   b->far2 = far * far;
   size_t npix = (size_t)s->width * s->height;
-  for (size_t first = 0; first < npix; first += SMOKE_BLOCK)
-    smoke_block_march(b, first, (int)(npix - first < SMOKE_BLOCK ? npix - first : SMOKE_BLOCK), img, st);
+  for (size_t first = 0; first < npix; first += SMOKE_BLOCK) {
+    int count = (int)(npix - first < SMOKE_BLOCK ? npix - first : SMOKE_BLOCK);
+    smoke_block_march(b, first, count, img, st);
+  }
   free(b);
   return NL_OK;
 }
 
-nl_status nl_bounds_smoke_decision_map(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double z, int *terms,
-                                       nl_error *err)
+nl_status nl_bounds_smoke_decision_map(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double z,
+                                       int *terms, nl_error *err)
 {
   nl_status rc = smoke_check(s, err);
   if (rc) return rc;
@@ -340,7 +351,8 @@ nl_status nl_bounds_smoke_decision_map(const nl_noise_perm3 *p, const nl_bounds_
       double xyz[3] = {-0.5 + (c + 0.5) / s->width, -0.5 + (r + 0.5) / s->height, z};
       double d = sqrt(xyz[0] * xyz[0] + xyz[1] * xyz[1] + xyz[2] * xyz[2]);
       int t;
-      clamped_sum(p, &o, rem, s->slope * d + 1.0, xyz, 1, &t, &terms[(size_t)r * s->width + c], NULL);
+      int *decided = &terms[(size_t)r * s->width + c];
+      clamped_sum(p, &o, rem, s->slope * d + 1.0, xyz, 1, &t, decided, NULL);
     }
   return NL_OK;
 }
@@ -360,7 +372,7 @@ double nl_bounds_psd1_tail_inverse(const double *f, const double *gamma, size_t 
   return f[m - 1];
 }
 
-static void mean_sigma(const double *x, size_t n, double *mean, double *sigma)
+void nl_bounds_moments(const double *x, size_t n, double *mean, double *sigma)
 {
   double s = 0.0, ss = 0.0;
   for (size_t k = 0; k < n; k++) s += x[k];
@@ -369,8 +381,8 @@ static void mean_sigma(const double *x, size_t n, double *mean, double *sigma)
   *sigma = sqrt(ss / (double)n);
 }
 
-nl_status nl_bounds_bandwidth_1d(const double *x, size_t n, double rate, double T, nl_bounds_bandwidth *bw,
-                                 nl_error *err)
+nl_status nl_bounds_bandwidth_1d(const double *x, size_t n, double rate, double T,
+                                 nl_bounds_bandwidth *bw, nl_error *err)
 {
   if (!(T > 0.0)) return nl_fail(err, NL_EINVAL, "bandwidth: threshold T must be positive");
   size_t m = n / 2 + 1;
@@ -379,7 +391,7 @@ nl_status nl_bounds_bandwidth_1d(const double *x, size_t n, double rate, double 
   if (!rc) {
     double *g = nl_xmalloc(m * sizeof *g);
     nl_bounds_psd1_tail(P, m, g);
-    mean_sigma(x, n, &bw->mean, &bw->sigma);
+    nl_bounds_moments(x, n, &bw->mean, &bw->sigma);
     double lo = bw->sigma - sqrt(T);
     bw->f_sup = nl_bounds_psd1_tail_inverse(f, g, m, T);
     bw->f_inf = nl_bounds_psd1_tail_inverse(f, g, m, lo > 0.0 ? lo * lo : 0.0);
@@ -408,253 +420,17 @@ nl_status nl_bounds_psd1_fraction_above(const double *x, size_t n, double rate, 
   return rc;
 }
 
-void nl_bounds_sample_line(const nl_noise_perm3 *p, const nl_noise_octaves *o, const double *origin,
-                           const double *dir, double rate, size_t n, double *out)
+void nl_bounds_sample_line(const nl_noise_perm3 *p, const nl_noise_octaves *o,
+                           const double *origin, const double *dir, double rate, size_t n,
+                           double *out)
 {
   for (size_t k = 0; k < n; k++) {
     double t = (double)k / rate, s = 0.0;
     for (int l = 0; l < o->n; l++) {
       double f = o->freq[l];
-      s += o->amp[l] * nl_noise_perm3_eval(p, f * (origin[0] + t * dir[0]), f * (origin[1] + t * dir[1]),
-                                           f * (origin[2] + t * dir[2]));
+      double x = origin[0] + t * dir[0], y = origin[1] + t * dir[1], z = origin[2] + t * dir[2];
+      s += o->amp[l] * nl_noise_perm3_eval(p, f * x, f * y, f * z);
     }
     out[k] = s;
   }
-}
-
-/* ---- sampling lines (A3, A4) ------------------------------------------- */
-
-nl_bounds_line nl_bounds_line_a3(int axis, unsigned long seed)
-{
-  nl_bounds_line l = {{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}};
-  if (axis) return l;
-  double phi = 0.5 * (1.0 + sqrt(5.0)), d[3] = {1.0, 1.0 / phi, 1.0 / (phi * phi)};
-  double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  for (int a = 0; a < 3; a++) {
-    l.dir[a] = d[a] / len;
-    l.origin[a] = 17.0 * a + 0.37 * (double)(nl_seed_stream(seed, "a3.line_origin", 0) % 97);
-  }
-  return l;
-}
-
-nl_bounds_line nl_bounds_line_a4(void)
-{
-  nl_bounds_line l = {{0.31, 17.7, 34.2}, {0.80902, 0.5, 0.30902}};
-  return l;
-}
-
-double *nl_bounds_line_sample(const nl_noise_perm3 *p, const nl_noise_octaves *o, const nl_bounds_line *l,
-                              double length, double rate, size_t *n)
-{
-  *n = (size_t)llround(length * rate);
-  double *x = nl_xmalloc(*n * sizeof *x);
-  nl_bounds_sample_line(p, o, l->origin, l->dir, rate, *n, x);
-  return x;
-}
-
-/* ---- Table 5.2 under a reading (A3) ------------------------------------ */
-
-nl_noise_octaves nl_bounds_signal_octaves(int s)
-{
-  nl_noise_octaves o = nl_noise_octaves_fractal(s == 2 ? 2 : 1);
-  if (s == 1) { o.freq[0] = 2.0; o.amp[0] = 0.5; }
-  return o;
-}
-
-/* The shader code of sec. 5.2.2 and the 8-bit framebuffer behind it, in
- * float32 as on the GPU: val = int(v 2^24), r = (val / 65536) / 256.0,
- * g = (val / 256 - (val / 65536) 256) / 256.0, b = (val % 256) / 256.0,
- * each stored as the nearest of 0..255 of its value clamped to [0, 1]
- * (so a channel of 128 or more comes back one less: k/256 * 255 rounds
- * to k - 1); Scilab rebuilds (R 65536 + G 256 + B) / 2^24. */
-static double hash24_round_trip(double v)
-{
-  int val = (int)((float)v * 16777216.0f);
-  float ch[3] = {(float)(val / 65536) / 256.0f, (float)(val / 256 - (val / 65536) * 256) / 256.0f,
-                 (float)(val % 256) / 256.0f};
-  long byte[3];
-  for (int c = 0; c < 3; c++) byte[c] = lroundf(255.0f * fminf(fmaxf(ch[c], 0.0f), 1.0f));
-  return (double)(byte[0] * 65536 + byte[1] * 256 + byte[2]) / 16777216.0;
-}
-
-const char *nl_bounds_noise_text(int noise)
-{
-  static const char *text[] = {
-    "Perlin's 2002 improved noise (quintic fade, 12 gradients)", "2002 gradients with the 1985 cubic fade",
-    "Perlin's 1985 noise (unit gradients, cubic fade)", "1D gradient noise (cubic fade)",
-    "1D gradient noise (quintic fade)", "2002 noise with RGBA8 gradients in float32",
-    "1985 noise with RGBA8 gradients in float32", "Gustavson's 2005 3D simplex noise (kernel radius^2 0.6)",
-    "3D simplex noise with kernel radius^2 0.5", "Gustavson's 2005 2D simplex noise"};
-  return noise >= 0 && noise <= NL_BOUNDS_NOISE_SIMPLEX2 ? text[noise] : "unknown noise";
-}
-
-/* One of the nl_noise_alt noises of a reading, on p's permutation. */
-static void alt_noise(nl_noise_alt *t, const nl_noise_perm3 *p, int noise, unsigned long seed)
-{
-  switch (noise) {
-  case NL_BOUNDS_NOISE_IMPROVED_CUBIC: nl_noise_alt_improved(t, p, 0); break;
-  case NL_BOUNDS_NOISE_LINE1_CUBIC: nl_noise_alt_line1(t, p, seed, 0); break;
-  case NL_BOUNDS_NOISE_LINE1_QUINTIC: nl_noise_alt_line1(t, p, seed, 1); break;
-  case NL_BOUNDS_NOISE_GPU8: nl_noise_alt_improved(t, p, 1); nl_noise_alt_gpu8(t); break;
-  case NL_BOUNDS_NOISE_CLASSIC_GPU8: nl_noise_alt_classic(t, p, seed); nl_noise_alt_gpu8(t); break;
-  case NL_BOUNDS_NOISE_SIMPLEX06: nl_noise_alt_simplex(t, p, 0.6); break;
-  case NL_BOUNDS_NOISE_SIMPLEX05: nl_noise_alt_simplex(t, p, 0.5); break;
-  case NL_BOUNDS_NOISE_SIMPLEX2: nl_noise_alt_simplex2(t, p); break;
-  default: nl_noise_alt_classic(t, p, seed); break;
-  }
-}
-
-double *nl_bounds_reading_sample(const nl_noise_perm3 *p, int s, const nl_bounds_reading *rd,
-                                 unsigned long seed, size_t *n)
-{
-  nl_noise_octaves o = nl_bounds_signal_octaves(s);
-  nl_bounds_line l = nl_bounds_line_a3(rd->axis, seed);
-  double *x;
-  if (rd->noise == NL_BOUNDS_NOISE_IMPROVED) x = nl_bounds_line_sample(p, &o, &l, rd->length, rd->rate, n);
-  else {
-    nl_noise_alt t;
-    alt_noise(&t, p, rd->noise, seed);
-    *n = (size_t)llround(rd->length * rd->rate);
-    x = nl_xmalloc(*n * sizeof *x);
-    for (size_t k = 0; k < *n; k++) {
-      double u = (double)k / rd->rate, v = 0.0, q[3];
-      double h = t.plane ? hypot(l.dir[0], l.dir[1]) : 1.0;   /* unit speed in the plane */
-      for (int a = 0; a < 3; a++) q[a] = t.line1 ? (a ? 0.0 : l.origin[0] + u) : l.origin[a] + u * l.dir[a] / h;
-      for (int j = 0; j < o.n; j++)
-        v += o.amp[j] * nl_noise_alt_eval(&t, o.freq[j] * q[0], o.freq[j] * q[1], o.freq[j] * q[2]);
-      x[k] = v;
-    }
-  }
-  if (rd->shader) for (size_t k = 0; k < *n; k++) x[k] = 0.5 * (x[k] + 1.0);   /* the shader stored (noise + 1)/2 */
-  if (rd->hash24) for (size_t k = 0; k < *n; k++) x[k] = hash24_round_trip(x[k]);
-  return x;
-}
-
-nl_status nl_bounds_bandwidth_reading(const double *x, size_t n, const nl_bounds_reading *rd, double T,
-                                      nl_bounds_bandwidth *bw, nl_error *err)
-{
-  if (!(T > 0.0)) return nl_fail(err, NL_EINVAL, "bandwidth: threshold T must be positive");
-  size_t m = n / 2 + 1;
-  double *f = nl_xmalloc(m * sizeof *f), *P = nl_xmalloc(m * sizeof *P);
-  nl_status rc = nl_spectrum_psd1_window(x, n, rd->rate, rd->window, f, P, err);
-  if (!rc) {
-    double *g = nl_xmalloc(m * sizeof *g), res = rd->rate / (double)n;
-    for (size_t k = 1; rd->two_sided && 2 * k < n; k++) P[k] *= 0.5;   /* positive half of the two-sided PSD */
-    if (rd->gamma_no_dc) P[0] = 0.0;
-    for (size_t k = 0; k < m; k++)
-      f[k] = (rd->bin_edge ? fmax(f[k] - 0.5 * res, 0.0) : f[k]) * (rd->radians ? 2.0 * M_PI : 1.0);
-    nl_bounds_psd1_tail(P, m, g);
-    mean_sigma(x, n, &bw->mean, &bw->sigma);
-    double rms = sqrt(bw->mean * bw->mean + bw->sigma * bw->sigma);
-    double lo = (rd->sigma_rms ? rms : bw->sigma) - sqrt(T);
-    bw->f_sup = nl_bounds_psd1_tail_inverse(f, g, m, T);
-    bw->f_inf = nl_bounds_psd1_tail_inverse(f, g, m, lo > 0.0 ? lo * lo : 0.0);
-    double lr = sqrt(g[0]) - sqrt(T);
-    bw->f_inf_rms = nl_bounds_psd1_tail_inverse(f, g, m, lr > 0.0 ? lr * lr : 0.0);
-    bw->resolution = res;
-    bw->nyquist = 0.5 * rd->rate;
-    free(g);
-  }
-  free(f); free(P);
-  return rc;
-}
-
-int nl_bounds_a3_readings(const nl_bounds_reading *base, nl_bounds_reading *out, const char **name, int max)
-{
-  static const char *names[] = {"improved02", "improved02_cubic", "classic85", "line1d_cubic",
-                                "line1d_quintic", "gpu8_f32", "classic85_gpu8_f32", "hash24_rgb8",
-                                "hann", "two_sided", "sigma_rms", "sigma_rms_no_dc", "bin_edge",
-                                "raw_value", "radians", "simplex06", "simplex05", "simplex2d",
-                                "simplex06_rms"};
-  int count = NL_BOUNDS_A3_COUNT;
-  _Static_assert(sizeof names / sizeof names[0] == NL_BOUNDS_A3_COUNT, "one name per reading");
-  for (int k = 0; k < count && k < max; k++) {
-    nl_bounds_reading r = *base;
-    if (k >= NL_BOUNDS_A3_IMPROVED_CUBIC && k <= NL_BOUNDS_A3_CLASSIC_GPU8)
-      r.noise = k - NL_BOUNDS_A3_IMPROVED_CUBIC + NL_BOUNDS_NOISE_IMPROVED_CUBIC;   /* same order */
-    r.hash24 |= k == NL_BOUNDS_A3_HASH24;
-    r.window = k == NL_BOUNDS_A3_HANN ? NL_SPECTRUM_HANN : r.window;
-    r.two_sided |= k == NL_BOUNDS_A3_TWO_SIDED;
-    r.sigma_rms |= k == NL_BOUNDS_A3_SIGMA_RMS || k == NL_BOUNDS_A3_SIGMA_RMS_NO_DC;
-    r.gamma_no_dc |= k == NL_BOUNDS_A3_SIGMA_RMS_NO_DC;
-    r.bin_edge |= k == NL_BOUNDS_A3_BIN_EDGE;
-    r.shader = k == NL_BOUNDS_A3_RAW ? !base->shader : r.shader;
-    r.radians |= k == NL_BOUNDS_A3_RADIANS;
-    if (k >= NL_BOUNDS_A3_SIMPLEX06 && k <= NL_BOUNDS_A3_SIMPLEX2)
-      r.noise = k - NL_BOUNDS_A3_SIMPLEX06 + NL_BOUNDS_NOISE_SIMPLEX06;   /* same order */
-    if (k == NL_BOUNDS_A3_SIMPLEX06_RMS) { r.noise = NL_BOUNDS_NOISE_SIMPLEX06; r.sigma_rms = 1; }
-    out[k] = r;
-    name[k] = k == 0 && base->noise != NL_BOUNDS_NOISE_IMPROVED ? "base" : names[k];
-  }
-  return count < max ? count : max;
-}
-
-nl_status nl_bounds_bandwidth_seeds(const nl_bounds_reading *rd, unsigned long seed0, int seeds,
-                                    double out[NL_BOUNDS_NSIGNALS][7], nl_error *err)
-{
-  if (seeds < 1 || seeds > NL_BOUNDS_MAX_SEEDS)
-    return nl_fail(err, NL_EINVAL, "bandwidth: seeds must be in 1..%d", NL_BOUNDS_MAX_SEEDS);
-  double fi[NL_BOUNDS_NSIGNALS][NL_BOUNDS_MAX_SEEDS], fs[NL_BOUNDS_NSIGNALS][NL_BOUNDS_MAX_SEEDS];
-  double sg[NL_BOUNDS_NSIGNALS][NL_BOUNDS_MAX_SEEDS], fr[NL_BOUNDS_NSIGNALS][NL_BOUNDS_MAX_SEEDS];
-  for (int k = 0; k < seeds; k++) {
-    nl_noise_perm3 p;
-    nl_noise_perm3_seed(&p, nl_seed_replicate(seed0, k));
-    for (int s = 0; s < NL_BOUNDS_NSIGNALS; s++) {
-      size_t n;
-      double *x = nl_bounds_reading_sample(&p, s, rd, nl_seed_replicate(seed0, k), &n);
-      nl_bounds_bandwidth bw;
-      nl_status rc = nl_bounds_bandwidth_reading(x, n, rd, NL_BOUNDS_T, &bw, err);
-      free(x);
-      if (rc) return rc;
-      fi[s][k] = bw.f_inf; fs[s][k] = bw.f_sup; sg[s][k] = bw.sigma; fr[s][k] = bw.f_inf_rms;
-    }
-  }
-  size_t n = (size_t)seeds;
-  for (int s = 0; s < NL_BOUNDS_NSIGNALS; s++) {
-    out[s][0] = gsl_stats_mean(fi[s], 1, n);
-    out[s][1] = seeds > 1 ? gsl_stats_sd(fi[s], 1, n) : 0.0;
-    out[s][2] = gsl_stats_mean(fs[s], 1, n);
-    out[s][3] = seeds > 1 ? gsl_stats_sd(fs[s], 1, n) : 0.0;
-    out[s][4] = gsl_stats_mean(sg[s], 1, n);
-    out[s][5] = seeds > 1 ? gsl_stats_sd(sg[s], 1, n) : 0.0;
-    out[s][6] = gsl_stats_mean(fr[s], 1, n);
-  }
-  return NL_OK;
-}
-
-/* ---- plain against bounded (A2) ---------------------------------------- */
-
-/* Largest difference of two renders in 8-bit levels. */
-static int max_level_diff(const double *a, const double *b, size_t n)
-{
-  int worst = 0;
-  for (size_t k = 0; k < n; k++) {
-    int d = abs((int)lround(255.0 * a[k]) - (int)lround(255.0 * b[k]));
-    if (d > worst) worst = d;
-  }
-  return worst;
-}
-
-nl_status nl_bounds_smoke_render_pair(const nl_noise_perm3 *p, nl_bounds_smoke s, double *img0, double *img1,
-                                      nl_bounds_smoke_pair *t, nl_error *err)
-{
-  nl_status rc = smoke_check(&s, err);
-  if (rc) return rc;
-  size_t npix = (size_t)s.width * s.height;
-  double *own = img0 && img1 ? NULL : nl_xmalloc(2 * npix * sizeof *own);
-  double *img[2] = {own ? own : img0, own ? own + npix : img1};
-  for (int inc = 0; inc < 2 && !rc; inc++) {
-    nl_bounds_smoke_stats st;
-    s.incremental = inc;
-    double t0 = nl_time_thread_cpu();
-    rc = nl_bounds_smoke_render(p, &s, img[inc], &st, err);
-    if (rc) break;
-    t->ms[inc] = 1e3 * (nl_time_thread_cpu() - t0);
-    t->evals[inc] = st.noise_evals;
-    t->samples = st.samples;
-    if (inc == 0) t->max_noise = st.max_abs_noise;
-  }
-  if (!rc) t->diff = max_level_diff(img[0], img[1], npix);
-  free(own);
-  return rc;
 }

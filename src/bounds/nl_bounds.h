@@ -28,17 +28,18 @@
  * pixel marches from z = -1/2 with step h and absorbs by Beer-Lambert,
  *   T <- T exp(-kappa density h),  colour += (T_before - T_after) (white smoke),
  * and stops when the opacity 1 - T reaches stop_opacity (0.99) or the ray
- * leaves the cube. nl_bounds_smoke_render() fills a w x h grey image in [0, 1] and
- * counts samples and noise evaluations; nl_bounds_smoke_decision_map() is Fig. 5.3:
- * in the plane z, how many terms were evaluated before the value was decided
- * (n + 1 = never decided: the pixel needs the whole sum). The render marches
- * blocks of rays in step and sends each octave of their samples through
+ * leaves the cube. nl_bounds_smoke_render() fills a w x h grey image in
+ * [0, 1] and counts samples and noise evaluations;
+ * nl_bounds_smoke_decision_map() is Fig. 5.3: in the plane z, how many
+ * terms were evaluated before the value was decided (n + 1 = never
+ * decided: the pixel needs the whole sum). The render marches blocks of
+ * rays in step and sends each octave of their samples through
  * nl_noise_perm3_points_sum, or with incremental bounding through
  * nl_noise_perm3_points_bounded (term, eq. 5.4 check and packing of the
  * undecided in one pass, still per sample): the images, counts and max
  * |noise| are the bits of a ray-by-ray march.
  *
- *   nl_bounds_smoke s = nl_bounds_smoke_default();          // 512 x 512, step 0.01, 99 %
+ *   nl_bounds_smoke s = nl_bounds_smoke_default();   // 512 x 512, step 0.01, 99 %
  *   s.octaves = 11; s.incremental = 1;
  *   nl_bounds_smoke_stats st;
  *   nl_bounds_smoke_render(&perm, &s, img, &st, &err);
@@ -62,7 +63,8 @@
  *
  * nl_bounds_sample_line() gives such a sample of a fractal sum of improved
  * noise along a line, point by point (any direction, so the 256-periodicity
- * of the noise along an axis can be avoided).
+ * of the noise along an axis can be avoided). The paper says neither which
+ * line nor how long: the caller chooses both.
  */
 #ifndef NL_BOUNDS_H
 #define NL_BOUNDS_H
@@ -89,8 +91,8 @@ nl_bounds_interval nl_bounds_incremental(double partial, double remainder);
  * nl_bounds_remainders. incremental: stop once eq. 5.4 decides the clamp.
  * *terms (may be NULL) receives the number of noise evaluations; *max_abs
  * (may be NULL) is raised to the largest |noise| seen. */
-double nl_bounds_clamped_fractal(const nl_noise_perm3 *p, const nl_noise_octaves *o, const double *rem,
-                                 double base, const double *xyz, int incremental,
+double nl_bounds_clamped_fractal(const nl_noise_perm3 *p, const nl_noise_octaves *o,
+                                 const double *rem, double base, const double *xyz, int incremental,
                                  int *terms, double *max_abs);
 
 /* Checks eq. 4.2 and 5.4 on npoints points uniform in [-100, 100)^3 (MT19937
@@ -135,8 +137,8 @@ nl_status nl_bounds_smoke_render(const nl_noise_perm3 *p, const nl_bounds_smoke 
 /* Fig. 5.3: terms[y * width + x] = number of terms evaluated before the
  * incremental bound decided the density in the plane z; octaves + 1 when
  * it never did. */
-nl_status nl_bounds_smoke_decision_map(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double z, int *terms,
-                                       nl_error *err);
+nl_status nl_bounds_smoke_decision_map(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double z,
+                                       int *terms, nl_error *err);
 
 /* ---- spectral bandwidth (sec. 4.2.2, 5.2) ---------------------------- */
 
@@ -156,111 +158,21 @@ typedef struct {
   double resolution;     /* rate / n */
   double nyquist;        /* rate / 2 */
 } nl_bounds_bandwidth;
-nl_status nl_bounds_bandwidth_1d(const double *x, size_t n, double rate, double T, nl_bounds_bandwidth *bw,
-                                 nl_error *err);
+nl_status nl_bounds_bandwidth_1d(const double *x, size_t n, double rate, double T,
+                                 nl_bounds_bandwidth *bw, nl_error *err);
+/* The mean and the sigma of F_inf: sigma^2 = sum_k (x[k] - mean)^2 / n (over
+ * n, not n - 1), both summed in index order (the bits of
+ * nl_bounds_bandwidth_1d's bw->mean and bw->sigma). For an estimator that
+ * builds its own PSD and Gamma from nl_bounds_psd1_tail. */
+void nl_bounds_moments(const double *x, size_t n, double *mean, double *sigma);
 /* Energy above frequency f as a fraction of the variance: what aliases
  * when the signal is sampled with Nyquist frequency f. */
 nl_status nl_bounds_psd1_fraction_above(const double *x, size_t n, double rate, double f,
                                         double *fraction, nl_error *err);
 
 /* out[k] = sum_l amp_l noise(freq_l (origin + (k / rate) dir)), k < n. */
-void nl_bounds_sample_line(const nl_noise_perm3 *p, const nl_noise_octaves *o, const double *origin,
-                           const double *dir, double rate, size_t n, double *out);
-
-/* ---- sampling lines for the bandwidth (A3, A4) ------------------------
- *
- * The paper samples a line but says neither which nor how long. The
- * oblique lines run along (1, 1/phi, 1/phi^2), phi the golden ratio, which
- * is parallel to no lattice axis or diagonal, so the sample is not
- * 256-periodic as noise(x, 0, 0) is. */
-typedef struct { double origin[3], dir[3]; } nl_bounds_line;
-/* A3: the x axis through the origin (a GPU shader's noise(x, 0, 0)) when
- * axis, else the oblique line from an origin drawn from stream
- * ("a3.line_origin", 0) of seed. */
-nl_bounds_line nl_bounds_line_a3(int axis, unsigned long seed);
-/* A4: the oblique direction to 5 digits, from a fixed origin. */
-nl_bounds_line nl_bounds_line_a4(void);
-/* n = llround(length rate) samples of the octaves along the line (caller
- * frees). */
-double *nl_bounds_line_sample(const nl_noise_perm3 *p, const nl_noise_octaves *o, const nl_bounds_line *l,
-                              double length, double rate, size_t *n);
-
-/* ---- Table 5.2 under a reading (A3) ----------------------------------- */
-
-enum { NL_BOUNDS_NSIGNALS = 3, NL_BOUNDS_MAX_SEEDS = 64 };
-/* The signals of Table 5.2 as octave lists: 0 noise(x), 1 noise(2x)/2,
- * 2 their sum Fnoise_2. */
-nl_noise_octaves nl_bounds_signal_octaves(int s);
-/* The choices the paper leaves open. Sampling: line length (units) and rate
- * (samples per unit), the shader's encoding (noise + 1)/2 or raw values,
- * the x axis or the oblique line. The noise (nl_bounds_noise; the
- * nl_noise_alt ones are sampled on the same line, the 1D noise at unit
- * speed along x from the line's origin, the 2D noise at unit speed along
- * the line's direction in the xy plane). The paper's import (sec. 5.2.2):
- * hash24 sends the encoded value through its shader code, val =
- * int(v 2^24) split over three channels as (val / 65536) / 256.0 etc.,
- * stored in an 8-bit framebuffer (nearest of 0..255 of the channel in
- * [0, 1]) and rebuilt as (R 65536 + G 256 + B) / 2^24. The estimator:
- * window (NL_SPECTRUM_RECT or _HANN), two_sided (Gamma integrates the
- * positive half of the two-sided PSD: half the energy of each f > 0),
- * sigma_rms (sigma = RMS, the DC in sigma), gamma_no_dc (the DC bin left
- * out of Gamma), bin_edge (a bin's frequency is its lower edge, f - res/2,
- * not its centre), radians (frequencies times 2 pi). All 0 is the reading
- * A3 has always used (same bits). */
-typedef enum {
-  NL_BOUNDS_NOISE_IMPROVED = 0,   /* Perlin 2002, nl_noise_perm3 */
-  NL_BOUNDS_NOISE_IMPROVED_CUBIC, /* 2002 gradients, 1985's cubic fade */
-  NL_BOUNDS_NOISE_CLASSIC,        /* Perlin 1985: unit gradients, cubic fade */
-  NL_BOUNDS_NOISE_LINE1_CUBIC,    /* 1D gradient noise, gradients in [-1, 1] (Perlin's noise1) */
-  NL_BOUNDS_NOISE_LINE1_QUINTIC,  /* the same with the quintic fade */
-  NL_BOUNDS_NOISE_GPU8,           /* 2002 noise, RGBA8 gradients, float32 */
-  NL_BOUNDS_NOISE_CLASSIC_GPU8,   /* 1985 noise, RGBA8 gradients, float32 */
-  NL_BOUNDS_NOISE_SIMPLEX06,      /* Gustavson 2005 3D simplex noise, kernel radius^2 0.6 */
-  NL_BOUNDS_NOISE_SIMPLEX05,      /* the same, radius^2 0.5 (continuous) */
-  NL_BOUNDS_NOISE_SIMPLEX2        /* Gustavson 2005 2D simplex noise, on the line's xy direction */
-} nl_bounds_noise;
-/* What each nl_bounds_noise is, in a few words, for reports. */
-const char *nl_bounds_noise_text(int noise);
-typedef struct {
-  double length, rate;
-  int shader, axis;
-  int noise, hash24;
-  int window, two_sided, sigma_rms, gamma_no_dc, bin_edge, radians;
-} nl_bounds_reading;
-/* The bandwidth of x under rd's estimator (nl_bounds_bandwidth_1d when all
- * its estimator fields are 0); f_inf_rms uses the same Gamma. */
-nl_status nl_bounds_bandwidth_reading(const double *x, size_t n, const nl_bounds_reading *rd, double T,
-                                      nl_bounds_bandwidth *bw, nl_error *err);
-/* A3's family of readings, each base with one choice changed (base itself
- * first, in this order; the last, simplex06_rms, changes two: simplex
- * noise with r2 0.6 and sigma = RMS): fills at most max of out and name (a short label)
- * and returns how many there are. */
-enum {
-  NL_BOUNDS_A3_BASE, NL_BOUNDS_A3_IMPROVED_CUBIC, NL_BOUNDS_A3_CLASSIC, NL_BOUNDS_A3_LINE1_CUBIC,
-  NL_BOUNDS_A3_LINE1_QUINTIC, NL_BOUNDS_A3_GPU8, NL_BOUNDS_A3_CLASSIC_GPU8, NL_BOUNDS_A3_HASH24,
-  NL_BOUNDS_A3_HANN, NL_BOUNDS_A3_TWO_SIDED, NL_BOUNDS_A3_SIGMA_RMS, NL_BOUNDS_A3_SIGMA_RMS_NO_DC,
-  NL_BOUNDS_A3_BIN_EDGE, NL_BOUNDS_A3_RAW, NL_BOUNDS_A3_RADIANS, NL_BOUNDS_A3_SIMPLEX06,
-  NL_BOUNDS_A3_SIMPLEX05, NL_BOUNDS_A3_SIMPLEX2, NL_BOUNDS_A3_SIMPLEX06_RMS, NL_BOUNDS_A3_COUNT
-};
-int nl_bounds_a3_readings(const nl_bounds_reading *base, nl_bounds_reading *out, const char **name, int max);
-/* One sample of signal s under a reading, line from seed (caller frees). */
-double *nl_bounds_reading_sample(const nl_noise_perm3 *p, int s, const nl_bounds_reading *rd,
-                                 unsigned long seed, size_t *n);
-/* Per signal, over seeds replicates of seed0 (at most NL_BOUNDS_MAX_SEEDS):
- * out[s] = {mean F_inf, sd, mean F_sup, sd, mean sigma, sd, mean F_inf_rms}
- * (nl_bounds_bandwidth_1d with T = NL_BOUNDS_T; sd 0 for one seed). */
-nl_status nl_bounds_bandwidth_seeds(const nl_bounds_reading *rd, unsigned long seed0, int seeds,
-                                    double out[NL_BOUNDS_NSIGNALS][7], nl_error *err);
-
-/* ---- plain against bounded (A2) --------------------------------------- */
-
-typedef struct { double ms[2]; long evals[2]; long samples; int diff; double max_noise; } nl_bounds_smoke_pair;
-/* Renders s plainly into img0 and incrementally into img1 (s.incremental
- * is ignored): the calling thread's CPU times in ms (nl_time_thread_cpu,
- * so that renders on other threads at once do not count), noise calls of each, the largest
- * difference in 8-bit levels and the largest |noise| of the plain march.
- * img0 or img1 NULL: both images are temporaries. */
-nl_status nl_bounds_smoke_render_pair(const nl_noise_perm3 *p, nl_bounds_smoke s, double *img0, double *img1,
-                                      nl_bounds_smoke_pair *t, nl_error *err);
+void nl_bounds_sample_line(const nl_noise_perm3 *p, const nl_noise_octaves *o,
+                           const double *origin, const double *dir, double rate, size_t n,
+                           double *out);
 
 #endif

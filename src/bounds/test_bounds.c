@@ -14,15 +14,18 @@ static void random_point(gsl_rng *r, double *xyz)
 NL_TEST(series_values)
 {
   NL_CHECK(nl_bounds_octave(0) == 1.0 && nl_bounds_octave(3) == 0.125);
-  NL_CHECK(nl_bounds_series(0) == 1.0 && nl_bounds_series(1) == 1.5 && nl_bounds_series(3) == 1.875);
-  NL_CHECK(nl_bounds_fractal(0) == 0.0 && nl_bounds_fractal(1) == 1.0 && nl_bounds_fractal(4) == 1.875);
+  NL_CHECK(nl_bounds_series(0) == 1.0 && nl_bounds_series(1) == 1.5);
+  NL_CHECK(nl_bounds_series(3) == 1.875);
+  NL_CHECK(nl_bounds_fractal(0) == 0.0 && nl_bounds_fractal(1) == 1.0);
+  NL_CHECK(nl_bounds_fractal(4) == 1.875);
   /* S_n equals the sum of the octave bounds 2^-i, i = 0..n (eq. 4.2). */
   double s = 0;
   for (int i = 0; i <= 20; i++) { s += nl_bounds_octave(i); NL_CHECK(s == nl_bounds_series(i)); }
   nl_noise_octaves o = nl_noise_octaves_fractal(5);
   double rem[6];
   nl_bounds_remainders(&o, 1.0, rem);
-  for (int k = 0; k <= 5; k++) NL_CHECK_NEAR(rem[k], nl_bounds_fractal(5) - nl_bounds_fractal(k), 1e-15);
+  for (int k = 0; k <= 5; k++)
+    NL_CHECK_NEAR(rem[k], nl_bounds_fractal(5) - nl_bounds_fractal(k), 1e-15);
   NL_CHECK_NEAR(rem[0], nl_noise_octaves_bound(&o, 1.0), 1e-15);
 }
 
@@ -121,7 +124,7 @@ NL_TEST(smoke_bounded_equals_plain)
   free(a); free(b);
 }
 
-/* The march before batching (issue 17): one ray at a time through
+/* The march ray by ray: one sample at a time through
  * nl_bounds_clamped_fractal, for the bit-identity check below. */
 static void reference_render(const nl_noise_perm3 *p, const nl_bounds_smoke *s, double *img,
                              nl_bounds_smoke_stats *st)
@@ -136,11 +139,12 @@ static void reference_render(const nl_noise_perm3 *p, const nl_bounds_smoke *s, 
     for (int c = 0; c < s->width; c++) {
       double trans = 1.0, colour = 0.0, stop = 1.0 - s->stop_opacity;
       for (long i = 0; i <= nsteps && trans > stop; i++) {
-        double xyz[3] = {-0.5 + (c + 0.5) / s->width, -0.5 + (r + 0.5) / s->height, -0.5 + (double)i * s->step};
+        double xyz[3] = {-0.5 + (c + 0.5) / s->width, -0.5 + (r + 0.5) / s->height,
+                         -0.5 + (double)i * s->step};
         double d = sqrt(xyz[0] * xyz[0] + xyz[1] * xyz[1] + xyz[2] * xyz[2]);
         int terms;
-        double dens = nl_bounds_clamped_fractal(p, &o, rem, s->slope * d + 1.0, xyz, s->incremental, &terms,
-                                                &st->max_abs_noise);
+        double dens = nl_bounds_clamped_fractal(p, &o, rem, s->slope * d + 1.0, xyz, s->incremental,
+                                                &terms, &st->max_abs_noise);
         st->samples++;
         st->noise_evals += terms;
         double t1 = trans * exp(-s->kappa * dens * s->step);
@@ -173,7 +177,10 @@ NL_TEST(smoke_batched_equals_ray_by_ray)
     for (size_t k = 0; k < sizeof v / sizeof v[0]; k++)
       for (int inc = 0; inc < 2; inc++) {
         nl_bounds_smoke c = s;
-        c.octaves = v[k].octaves; c.octave_bound = v[k].bound; c.stop_opacity = v[k].stop; c.kappa = v[k].kappa;
+        c.octaves = v[k].octaves;
+        c.octave_bound = v[k].bound;
+        c.stop_opacity = v[k].stop;
+        c.kappa = v[k].kappa;
         c.incremental = inc;
         nl_bounds_smoke_stats sa, sb;
         reference_render(&p, &c, a, &sa);
@@ -201,41 +208,6 @@ NL_TEST(decision_map_range)
   }
   /* the rim is never decided; far from it a few octaves decide */
   NL_CHECK(seen[6] && (seen[1] || seen[2] || seen[3]));
-}
-
-NL_TEST(smoke_render_pair_and_lines)
-{
-  nl_noise_perm3 p;
-  nl_bounds_smoke s = small_smoke(&p, 16, 4);
-  double a[16 * 16], b[16 * 16];
-  nl_bounds_smoke_pair t;
-  NL_CHECK(nl_bounds_smoke_render_pair(&p, s, a, b, &t, NULL) == NL_OK);
-  NL_CHECK(t.diff == 0 && t.evals[1] < t.evals[0] && t.samples > 0 && t.max_noise > 0);
-  /* without images (temporaries) the same counts */
-  nl_bounds_smoke_pair u;
-  NL_CHECK(nl_bounds_smoke_render_pair(&p, s, NULL, NULL, &u, NULL) == NL_OK);
-  NL_CHECK(u.evals[0] == t.evals[0] && u.evals[1] == t.evals[1] && u.samples == t.samples && u.diff == 0);
-  NL_CHECK(t.evals[0] == 4 * t.samples);   /* plain: every term at every sample (A2's untimed count) */
-  s.slope = 1.0;
-  NL_CHECK(nl_bounds_smoke_render_pair(&p, s, a, b, &t, NULL) == NL_EINVAL);
-  NL_CHECK(nl_bounds_smoke_render_pair(&p, s, NULL, NULL, &t, NULL) == NL_EINVAL);
-  /* the oblique lines run along (1, 1/phi, 1/phi^2), unit length (A4's to 5 digits) */
-  nl_bounds_line l3 = nl_bounds_line_a3(0, 7), l4 = nl_bounds_line_a4(), ax = nl_bounds_line_a3(1, 7);
-  double n3 = 0, n4 = 0;
-  for (int k = 0; k < 3; k++) { n3 += l3.dir[k] * l3.dir[k]; n4 += l4.dir[k] * l4.dir[k]; }
-  NL_CHECK(fabs(n3 - 1) < 1e-15 && fabs(n4 - 1) < 1e-5 && fabs(l3.dir[0] - l4.dir[0]) < 1e-5);
-  NL_CHECK(ax.dir[0] == 1 && ax.origin[0] == 0);
-  nl_noise_octaves o = nl_bounds_signal_octaves(1);
-  NL_CHECK(o.n == 1 && o.freq[0] == 2.0 && o.amp[0] == 0.5);
-  size_t n;
-  double *x = nl_bounds_line_sample(&p, &o, &l3, 8.0, 4.0, &n);
-  NL_CHECK(n == 32);
-  free(x);
-  nl_bounds_reading rd = {.length = 16, .rate = 8, .shader = 1};
-  double m[NL_BOUNDS_NSIGNALS][7];
-  NL_CHECK(nl_bounds_bandwidth_seeds(&rd, 1, 2, m, NULL) == NL_OK);
-  NL_CHECK(m[0][2] > 0 && m[0][3] >= 0 && m[2][2] >= m[0][2]);
-  NL_CHECK(nl_bounds_bandwidth_seeds(&rd, 1, 0, m, NULL) == NL_EINVAL);
 }
 
 /* Parseval (eq. 4.4) and the bandwidth of a pure sinusoid at bin 37. */
@@ -266,43 +238,12 @@ NL_TEST(psd_and_bandwidth)
   NL_CHECK(nl_bounds_psd1_fraction_above(x, n, rate, 0.3, &frac, NULL) == NL_OK);
   NL_CHECK_NEAR(frac, 0.0, 1e-12);
   NL_CHECK(nl_bounds_bandwidth_1d(x, n, rate, 0.0, &bw, NULL) == NL_EINVAL);
+  /* the moments are the bandwidth's own bits */
+  double mean, sigma;
+  nl_bounds_moments(x, n, &mean, &sigma);
+  NL_CHECK(mean == bw.mean && sigma == bw.sigma);
   gsl_rng_free(r);
   free(x);
-}
-
-/* A3's readings of the estimator on the sinusoid at bin 37, and of the
- * sample: all 0 is nl_bounds_bandwidth_1d bit for bit; radians scale by
- * 2 pi, bin edges shift by half a bin; the paper's RGB8 import moves a
- * value by at most one step of its top and middle bytes (1/256 + 1/65536). */
-NL_TEST(bandwidth_readings)
-{
-  size_t n = 1024;
-  double rate = 8.0, x[1024];
-  for (size_t k = 0; k < n; k++) x[k] = 0.25 + 0.5 * sin(NL_TWO_PI * 37.0 * k / n);
-  nl_bounds_reading base = {.length = 128, .rate = rate, .shader = 1}, fam[NL_BOUNDS_A3_COUNT];
-  const char *name[NL_BOUNDS_A3_COUNT];
-  NL_CHECK(nl_bounds_a3_readings(&base, fam, name, NL_BOUNDS_A3_COUNT) == NL_BOUNDS_A3_COUNT);
-  NL_CHECK(memcmp(&fam[0], &base, sizeof base) == 0);
-  nl_bounds_bandwidth a, b;
-  NL_CHECK(nl_bounds_bandwidth_1d(x, n, rate, NL_BOUNDS_T, &a, NULL) == NL_OK);
-  NL_CHECK(nl_bounds_bandwidth_reading(x, n, &fam[0], NL_BOUNDS_T, &b, NULL) == NL_OK);
-  NL_CHECK(memcmp(&a, &b, sizeof a) == 0);
-  NL_CHECK(nl_bounds_bandwidth_reading(x, n, &fam[NL_BOUNDS_A3_RADIANS], NL_BOUNDS_T, &b, NULL) == NL_OK);
-  NL_CHECK_NEAR(b.f_sup, NL_TWO_PI * a.f_sup, 1e-12);
-  NL_CHECK(nl_bounds_bandwidth_reading(x, n, &fam[NL_BOUNDS_A3_BIN_EDGE], NL_BOUNDS_T, &b, NULL) == NL_OK);
-  NL_CHECK_NEAR(b.f_sup, a.f_sup - 0.5 * rate / n, 1e-12);
-  NL_CHECK(nl_bounds_bandwidth_reading(x, n, &fam[NL_BOUNDS_A3_SIGMA_RMS_NO_DC], NL_BOUNDS_T, &b, NULL) == NL_OK);
-  NL_CHECK(b.f_inf == 0.0 && b.f_sup == a.f_sup);
-  nl_noise_perm3 p;
-  nl_noise_perm3_seed(&p, 3);
-  size_t m1, m2;
-  double *u = nl_bounds_reading_sample(&p, 0, &base, 3, &m1);
-  double *h = nl_bounds_reading_sample(&p, 0, &fam[NL_BOUNDS_A3_HASH24], 3, &m2);
-  double worst = 0.0;
-  for (size_t k = 0; k < m1; k++) worst = fmax(worst, fabs(u[k] - h[k]));
-  NL_CHECK(m1 == m2 && worst > 0.0 && worst <= 1.0 / 256 + 1.0 / 65536 + 0x1p-23);   /* top, middle byte, truncation */
-  free(u);
-  free(h);
 }
 
 int main(void) { return nl_test_run(); }

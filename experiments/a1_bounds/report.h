@@ -1,0 +1,24 @@
+/* report.h - A1's report prose (report.c): every number in it is formatted
+ * from the run's table and parameters.
+ *
+ *   a1_run run = {nmax, points, seeds, bounds};
+ *   a1_report(r, &run);
+ */
+#ifndef A1_REPORT_H
+#define A1_REPORT_H
+
+#include "harness/nl_harness.h"
+
+/* What the report reads of one run of A1. */
+typedef struct {
+  int nmax;    /* octave counts 1..nmax */
+  long points; /* random points per octave count and seed */
+  int seeds;
+  const nl_table *bounds; /* bounds.tsv */
+} a1_run;
+
+/* The paper's bounds and our check, the table, its figure, and how many
+ * points left the paper's bounds and the analytic ones. */
+void a1_report(nl_harness *r, const a1_run *run);
+
+#endif

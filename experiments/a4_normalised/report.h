@@ -1,0 +1,27 @@
+/* report.h - A4's report prose (report.c): every number in it is formatted
+ * from the run's table and parameters.
+ *
+ *   a4_run run = {rate2d, length, 64.0, mean_f_sup, seeds, aliasing};
+ *   a4_report(r, &run);
+ */
+#ifndef A4_REPORT_H
+#define A4_REPORT_H
+
+#include "harness/nl_harness.h"
+
+/* What the report reads of one run of A4. */
+typedef struct {
+  double rate;      /* samples per unit of the images (the paper's 2) */
+  double length;    /* units of the line F_sup is measured on */
+  double fine_rate; /* samples per unit of that line */
+  double f_sup;     /* mean F_sup over the seeds */
+  int seeds;
+  const nl_table *aliasing;
+} a4_run;
+
+/* The paper and our reading, the aliasing table, Fig. 5.7 and its price. */
+void a4_report(nl_harness *r, const a4_run *run);
+/* The title of Fig. 5.7's montage at the run's rate, into buf. */
+void a4_figure_title(const a4_run *run, char *buf, size_t size);
+
+#endif
