@@ -5,6 +5,7 @@
 set -euo pipefail
 tool=$1; out=$3
 rm -rf "$out"; mkdir -p "$out"
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tsv_awk, byte_reruns
 
 # Inputs are made by the tool itself from hand-written parameter files (no
@@ -157,7 +158,7 @@ bad compare "$photo" "$out/missing.png" -o "$out/x.tsv"
 le32() {
   local b
   printf -v b '\\x%02x\\x%02x\\x%02x\\x%02x' $(($1 & 255)) $((($1 >> 8) & 255)) $((($1 >> 16) & 255)) $((($1 >> 24) & 255))
-  printf "$b"
+  printf '%b' "$b"
 }
 # exr_1ch FILE W H PIXEL: an uncompressed one-channel float EXR made by hand,
 # every pixel PIXEL (4 bytes as printf escapes, little-endian).
@@ -180,7 +181,7 @@ exr_1ch() {
     for ((y = 0; y < h; y++)); do le32 $((start + y * (8 + 4 * w))); le32 0; done
     for ((y = 0; y < h; y++)); do
       le32 $y; le32 $((4 * w))
-      for ((x = 0; x < w; x++)); do printf "$px"; done
+      for ((x = 0; x < w; x++)); do printf '%b' "$px"; done
     done
   } >> "$f"
 }
@@ -231,5 +232,5 @@ if [ "$(awk '/^MemTotal:/ { print $2 }' /proc/meminfo)" -lt 30000000 ]; then   #
 fi
 test ! -e "$out/x.png"
 test ! -e "$out/x.params"
-[ -z "$(ls -A "$out" | grep '^\.' || true)" ]   # no temporary files left
+[ -z "$(find "$out" -mindepth 1 -maxdepth 1 -name '.*')" ]   # no temporary files left
 echo "cli_example: ok"

@@ -4,6 +4,7 @@
 set -euo pipefail
 render="$1" expect="$2" out="$3"
 mkdir -p "$out"
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # byte_reruns
 "$render" fbm --octaves 6 --gain 0.5 --lacunarity 2 --size 64 --seed 7 -o "$out/fbm.png"
 "$render" turbulence --size 32 -o "$out/t.exr"
@@ -94,4 +95,4 @@ grep -aq '1970:01:01 00:00:00' "$out/m.tif"
 [ ! -e "$out/x.png" ]
 [ ! -e "$out/x.tsv" ]
 [ ! -e "$out/x.tif" ]
-[ -z "$(ls -A "$out" | grep '^\.' || true)" ]   # no temporary files left
+[ -z "$(find "$out" -mindepth 1 -maxdepth 1 -name '.*')" ]   # no temporary files left

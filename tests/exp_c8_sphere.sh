@@ -17,9 +17,10 @@
 #    (5^3 points) touches at most 125;
 #  - bad input is refused.
 set -euo pipefail
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 exp="$1" expect="$2" out="$3"
-"$exp" --quick $NOIMG --threads 2 --out "$out" >/dev/null 2>&1
+"$exp" --quick "${NOIMG[@]}" --threads 2 --out "$out" >/dev/null 2>&1
 # The seed runs are nl_parallel_for items (nl_study_cheng3_seeds): one thread
 # gives the same tables byte for byte (slices and voxels cut small: they do
 # not enter summary, ecdf and levels).
@@ -28,7 +29,7 @@ if thread_identity; then
   for t in summary ecdf levels; do cmp "$out/$t.tsv" "$out.t1/$t.tsv"; done
 fi
 "$expect" "$out/summary.tsv" rows=6 'seeds==3' 'E_stat>0' 'E_con>0' 'E_con_const>0' 'contrast>0' \
-  $(images slices_torus.png) $(images slices_ball.png) $(images slices_slab.png)
+  image:slices_torus.png image:slices_ball.png image:slices_slab.png
 "$expect" "$out/ecdf.tsv" rows=512 'F>0' 'F<=1' 'z_opt>=0' 'z_opt<=1' 'phi_opt>=0' 'phi_opt<1'
 "$expect" "$out/voxels.tsv" rows=4096 'c>=0' 'c<=1'
 tsv_awk 'NR > 1 && v("table") == "optimised" {

@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # tests/tsv.sh - tables by column name for the shell tests (sourced:
 #   . "$(dirname "$0")/tsv.sh").
 # Tests address a column by its header, never by its position, so that a
@@ -12,6 +13,7 @@
 #         n("name")    the same as a number
 #       A name the file does not have stops awk with exit 2 and a message.
 #   tsv_cut FILE NAME      the column NAME of FILE (header included), as cut -f
+# shellcheck disable=SC2016  # awk's $ fields, for awk, not for the shell
 TSV_AWK_LIB='
 FNR == 1 { split("", TSV_COL); for (TSV_I = 1; TSV_I <= NF; TSV_I++) TSV_COL[$TSV_I] = TSV_I }
 function col(name) {
@@ -51,15 +53,15 @@ byte_reruns() { unsanitized; }
 # the sanitizer build runs it smaller and checks only that it runs cleanly
 # (cli_example's three 512^2 syntheses of the photograph, 9 s of CPU there).
 full_scale() { unsanitized; }
-# NOIMG: the option of an experiment's first run. The sanitizer build's runs
-# make every image (under the sanitizers) but write none (--no-images; the
-# image writer runs under them in test_image, cli_render and cli_example):
-# the first image write starts OpenImageIO, about 0.85 s of CPU there, more
-# than most quick runs (issue 17). Reruns that compare tables pass
-# --no-images in both builds. `images NAME...` gives expect's file: checks
-# of the images a run wrote: none under NOIMG.
-NOIMG=""; unsanitized || NOIMG="--no-images"
-images() { if unsanitized; then printf 'file:%s ' "$@"; fi; }
+# NOIMG: the options of an experiment's first run, an array ("${NOIMG[@]}").
+# The sanitizer build's runs make every image (under the sanitizers) but
+# write none (--no-images; the image writer runs under them in test_image,
+# cli_render and cli_example): the first image write starts OpenImageIO,
+# about 0.85 s of CPU there, more than most quick runs. Reruns that compare
+# tables pass --no-images in both builds. expect's image:NAME checks an image
+# only when the run's manifest says it wrote images.
+# shellcheck disable=SC2034  # read by the scripts that source this file
+if unsanitized; then NOIMG=(); else NOIMG=(--no-images); fi
 
 # refused CMD...: CMD must refuse its input as the guide says bad input is
 # refused: exit 2 with a one-line message on stderr. On anything else it
