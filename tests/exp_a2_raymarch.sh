@@ -34,10 +34,7 @@ grep -q "differ by at most 0 8-bit levels" "$out/report.md"
 grep -q "Best reading: \*\*slope=" "$out/report.md"
 # The renders run as (row, seed) items on the run's threads: one thread gives
 # the same tables, times aside (the check ignores the timing columns).
-if thread_identity; then
-  "$exp" --quick --no-images --threads 1 --out "$out.t1" >/dev/null
-  "$(dirname "$exp")/../tools/noiselab-check" "$out" "$out.t1" >/dev/null
-fi
+same_on_one_thread "$exp" "$out"
 set +e
 refused "$exp" --quick --out "$out/bad" --set slope=1
 refused "$exp" --quick --out "$out/bad" --set offset=2

@@ -11,10 +11,7 @@ pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
 "$exp" --quick "${NOIMG[@]}" --threads 2 --out "$out" --patterns "$pat" >/dev/null
 # The seed runs are nl_parallel_for items (nl_study_cheng_runs): one thread
 # gives the same tables, timing columns aside (the check ignores them).
-if thread_identity; then
-  "$exp" --quick --no-images --threads 1 --out "$out.t1" --patterns "$pat" >/dev/null
-  "$(dirname "$exp")/../tools/noiselab-check" "$out" "$out.t1" >/dev/null
-fi
+same_on_one_thread "$exp" "$out" --patterns "$pat"
 "$expect" "$out/summary.tsv" rows=4 'E_ks<0.05' 'E_con>0' 'roughness>0' 'roughness>f1*0.3' \
   image:panels.png
 awk -F'\t' 'NR==1{for(i=1;i<=NF;i++) col[$i]=i; next}

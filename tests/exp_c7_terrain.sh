@@ -13,10 +13,7 @@ pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
 "$exp" --quick "${NOIMG[@]}" --threads 2 --out "$out" --patterns "$pat" >/dev/null
 # The seed runs are nl_parallel_for items (nl_study_cheng_runs): one thread
 # gives the same tables, timing columns aside (the check ignores them).
-if thread_identity; then
-  "$exp" --quick --no-images --threads 1 --out "$out.t1" --patterns "$pat" >/dev/null
-  "$(dirname "$exp")/../tools/noiselab-check" "$out" "$out.t1" >/dev/null
-fi
+same_on_one_thread "$exp" "$out" --patterns "$pat"
 "$expect" "$out/summary.tsv" rows=3 'E_ks<0.02' 'E_con>0' 'E_con<E_con_random' 'r_pattern>0' \
   'contrast>0' 'contrast<0.5' 'E_con_const>0' image:heightmaps.png
 # the target patterns beside the height maps (64 x 64 control grid, D in [0, 1])

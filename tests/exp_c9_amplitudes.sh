@@ -18,10 +18,7 @@ pat="$root/data/patterns"
 "$exp" --quick "${NOIMG[@]}" --threads 2 --out "$out" --patterns "$pat" >/dev/null
 # The seed runs are nl_parallel_for items (nl_study_cheng_runs): one thread
 # gives the same tables, timing columns aside (the check ignores them).
-if thread_identity; then
-  "$exp" --quick --no-images --threads 1 --out "$out.t1" --patterns "$pat" >/dev/null
-  "$(dirname "$exp")/../tools/noiselab-check" "$out" "$out.t1" >/dev/null
-fi
+same_on_one_thread "$exp" "$out" --patterns "$pat"
 "$expect" "$out/summary.tsv" rows=8 'seeds==3' 'E_ks>0' 'E_ks<0.025' 'E_con<E_con_random' \
   'contrast>0' image:values.png
 "$expect" "$out/gains.tsv" rows=16 'gain>=0.25' 'gain<=4' 'a>=1' 'at_bound>=0' 'at_bound<=1'

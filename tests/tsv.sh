@@ -53,6 +53,19 @@ byte_reruns() { unsanitized; }
 # the sanitizer build runs it smaller and checks only that it runs cleanly
 # (cli_example's three 512^2 syntheses of the photograph, 9 s of CPU there).
 full_scale() { unsanitized; }
+# same_on_one_thread EXP OUT ARGS...: EXP's quick run in OUT (made with
+# --threads 2 and ARGS) repeated on one thread into OUT.t1, tables only;
+# noiselab-check then compares every table and the manifest's parameters
+# under the experiment's own rules (timing columns ignored). Work spread
+# over threads must not change the arithmetic. A thread-identity rerun:
+# release build only.
+same_on_one_thread() {
+  local exp="$1" out="$2"
+  shift 2
+  thread_identity || return 0
+  "$exp" --quick --no-images --threads 1 --out "$out.t1" "$@" >/dev/null \
+    && "$(dirname "$exp")/../tools/noiselab-check" "$out" "$out.t1" >/dev/null
+}
 # NOIMG: the options of an experiment's first run, an array ("${NOIMG[@]}").
 # The sanitizer build's runs make every image (under the sanitizers) but
 # write none (--no-images; the image writer runs under them in test_image,
