@@ -13,6 +13,7 @@
 #         n("name")    the same as a number
 #       A name the file does not have stops awk with exit 2 and a message.
 #   tsv_cut FILE NAME      the column NAME of FILE (header included), as cut -f
+#   tsv_slopes FILE LO HI  a spectrum's log-log slopes per column (below)
 # shellcheck disable=SC2016  # awk's $ fields, for awk, not for the shell
 TSV_AWK_LIB='
 FNR == 1 { split("", TSV_COL); for (TSV_I = 1; TSV_I <= NF; TSV_I++) TSV_COL[$TSV_I] = TSV_I }
@@ -33,6 +34,24 @@ tsv_awk() {
 
 tsv_cut() {
   tsv_awk -v name="$2" '{ print v(name) }' "$1"
+}
+
+# tsv_slopes FILE LO HI: for a spectrum table (a column freq and one power
+# column per setting), the least-squares slope of log(power) on log(freq)
+# over LO <= freq <= HI, per setting: a table with the settings' names as
+# its header and one row of slopes, for expect.
+tsv_slopes() {
+  tsv_awk -v lo="$2" -v hi="$3" '
+    FNR == 1 { k = col("freq"); nf = NF; head = ""
+      for (i = 1; i <= NF; i++) if (i != k) head = head (head == "" ? "" : "\t") $i
+      next }
+    $k >= lo && $k <= hi { x = log($k); m++; sx += x; sxx += x * x
+      for (i = 1; i <= nf; i++) if (i != k) { sy[i] += log($i); sxy[i] += x * log($i) } }
+    END { if (m < 3) { print "tsv_slopes: " m " rows in [" lo ", " hi "]" > "/dev/stderr"; exit 2 }
+      print head; row = ""
+      for (i = 1; i <= nf; i++) if (i != k)
+        row = row (row == "" ? "" : "\t") (m * sxy[i] - sx * sy[i]) / (m * sxx - sx * sx)
+      print row }' "$1"
 }
 
 # What the release build runs and the sanitizer build (NL_TEST_SANITIZE, set
