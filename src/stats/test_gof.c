@@ -1,4 +1,6 @@
-/* Tests of nl_stats.h against scipy 1.10 / astropy 5.2 vectors
+/* Tests of nl_gof.c, the goodness-of-fit tests of nl_stats.h (with the KS
+ * distributions of nl_ks_dist.c and the named laws of nl_dist.c they use),
+ * against scipy 1.10 / astropy 5.2 vectors
  * (tests/reference/make_stats_vectors.py). Tolerances:
  *   KS, Kuiper statistics D, D+, D-, V: 1e-15 absolute (same expressions as
  *     scipy, so bit-equal is expected; the slack only absorbs libm).
