@@ -3,7 +3,7 @@
  * bounded thread-CPU ms per render (best of `reps`), the time ratio beside
  * the evaluation ratio, and ns per sample with evaluations per sample, so
  * that the fixed per-sample cost and the cost of one evaluation can be
- * read off (issue 17, item 8): a closing '#' line fits ns/sample =
+ * read off: a closing '#' line fits ns/sample =
  * fixed + per_eval * evals/sample over the rows, for each march (least
  * squares). Usage: bench_raymarch [size=128] [reps=3]. */
 #define _GNU_SOURCE   /* sched_getaffinity in nl_bench.h */

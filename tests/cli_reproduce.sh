@@ -11,8 +11,8 @@
 #  - bench runs every benchmark, skips meson's bench_*.p/ folders, and fails
 #    at the end naming the failed ones.
 # The runs use A1 (0.05 s: tables and one figure, no image, so no
-# OpenImageIO start-up) and S4 (a texture image): issue 17, the test's CPU
-# time; which experiments run does not matter to what is tested here.
+# OpenImageIO start-up) and S4 (a texture image), for the test's CPU time;
+# which experiments run does not matter to what is tested here.
 # Args: NOISELAB_SCRIPT EXPECT OUTDIR. A fake gnuplot on PATH writes half a
 # PNG where gnuplot would, then sleeps, so the signal lands mid-figure.
 set -euo pipefail

@@ -136,7 +136,7 @@ expect_error "exactly one" "$STAT" gmm "$DATA/gmm_X.tsv"
 expect_error "two files" "$STAT" ks2 "$DATA/ks2_1_a.tsv"
 expect_error "unknown subcommand" "$STAT" frobnicate x
 
-# Issue 13.6-13.7: NUL bytes, endless lines, endless non-regular files,
+# NUL bytes, endless lines, endless non-regular files,
 # requests beyond the machine's memory: refused at once, input named.
 printf 'a\tb\n1\t2\n3\t4\0005\n' >"$TMP/nul.tsv"
 expect_error "nul.tsv:3: NUL byte in column 2" "$STAT" ks "$TMP/nul.tsv"
@@ -155,7 +155,7 @@ awk 'BEGIN { for (i = 0; i < 20; i++) { for (j = 0; j < 100000; j++) printf "%d 
 expect_error "wide.tsv: 20 rows of 100000 columns with 3 components need" timeout 120 "$STAT" gmm "$TMP/wide.tsv" --k 3
 expect_error "parent $TMP/nul.tsv is not a directory" "$STAT" hclust "$DATA/hclust_X.tsv" --linkage single --clusters 2 --labels "$TMP/nul.tsv/x.tsv"
 
-# ---- issue 18.4: scipy's habits ------------------------------------------------
+# ---- scipy's habits -----------------------------------------------------------
 # Reference: tests/reference/stat_cli (tests/reference/make_stat_cli_vectors.py,
 # scipy 1.10.1). Measured against it: D within 1.2e-15 relative (glibc's erf
 # against cephes' ndtr), p within 4e-13 relative, V within 1e-15; Ward's

@@ -14,7 +14,7 @@ export NL_BUILD
 sweep=(bash "$src/scripts/sweep.sh")
 rm -rf "$out"; mkdir -p "$out"
 # A1: tables and a figure, no image (no OpenImageIO start-up per task: S3's
-# tasks made this test 2.5 times dearer, issue 17). The bad input and the
+# tasks would make this test 2.5 times dearer). The bad input and the
 # emitted job files below use S3's parameters; they run no task.
 def=(a1_bounds --quick --param 'points=500,1000' --seeds 2)
 dir="$out/local sweep"   # a space in the path on purpose

@@ -10,8 +10,8 @@ exp="$1" expect="$2" out="$3"
   'max_abs<=bound' 'max_abs>0.5' 'max_noise<=1.2247448713915890' 'S<2' 'S>=1' \
   file:manifest.tsv file:report.md
 # GSL runs on OpenBLAS when the build found it: with gold as the linker,
-# --as-needed dropped libopenblas (wanted by libgsl.so, not by the program) and
-# GSL fell back to libgslcblas unnoticed but for C5's and C6's drift (issue 17).
+# --as-needed can drop libopenblas (wanted by libgsl.so, not by the program)
+# and GSL falls back to libgslcblas, unnoticed but for C5's and C6's drift.
 if [ "${NL_TEST_OPENBLAS:-0}" = 1 ] && ! grep -q $'^blas\tOpenBLAS' "$out/manifest.tsv"; then
   echo "the build links OpenBLAS, but the manifest says: $(grep $'^blas\t' "$out/manifest.tsv")"; exit 1
 fi

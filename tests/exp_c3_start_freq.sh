@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
 # Quick C3: f1 = 2, 4, 6, 8; lower f1 is smoother (roughness grows with f1).
 # Tables stay uniform: E_ks measured 0.0082..0.030 at --quick over seeds 1..5
-# (3-seed means); bound 0.05, under the KS 5% critical D 1.358/sqrt(512) = 0.060
-# (was E_ks>=0, true of any D).
+# (3-seed means); bound 0.05, under the KS 5% critical D 1.358/sqrt(512) = 0.060.
 set -euo pipefail
 # shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"

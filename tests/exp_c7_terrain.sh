@@ -2,7 +2,7 @@
 # Quick C7: three height maps (mesh x mesh) with heights in [0, 1] (c = (1 + V)/2
 # with V over its analytic bound: a bound check of the kernel). Tables stay
 # uniform: E_ks measured 0.0092..0.0115 at --quick over seeds 1..5; bound 0.02
-# (a random table's mean D is 0.87/sqrt(512) = 0.038; was E_ks>=0, always true).
+# (a random table's mean D is 0.87/sqrt(512) = 0.038).
 # Controllability: the optimised E_Con is below the unoptimised start's and r
 # with the pattern is positive (measured 0.25..0.41 at --quick, seed 1).
 set -euo pipefail

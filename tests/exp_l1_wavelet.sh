@@ -11,7 +11,7 @@ set -euo pipefail
 "$2" "$3/variance.tsv" 'rows=3' 'var2d~0.275:0.02' 'var3d~0.195:0.02'
 "$2" "$3/lattice.tsv" 'rows=9' 'var2d>var3d'
 # every band keeps a share of its power in-octave: measured 0.21 (band 5, few
-# coefficients) .. 0.90 over seeds 1..5 (was inside in [0, 1], a fraction)
+# coefficients) .. 0.90 over seeds 1..5
 "$2" "$3/leakage.tsv" 'rows>=6' 'inside>0.15'
 awk -F'\t' 'NR <= 3' "$3/leakage.tsv" > "$3/leakage_fine.tsv"   # bands 0 and 1
 "$2" "$3/leakage_fine.tsv" 'rows=2' 'inside>0.75'

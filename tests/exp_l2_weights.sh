@@ -2,8 +2,8 @@
 # L2 quick run (128^2, 7 bands, band 0 finest; size sweep 64..256, 3 seeds per
 # size, transfer matrix from 4 noises; one exemplar, a 96^2 fBm rendered here
 # by noiselab-render). Bounds are from the quick run over seeds 1..20, not
-# one seed's draw (the per-band eq. 12 bounds from before the estimator
-# comparison, when the true weights had another stream; unchanged in kind):
+# one seed's draw (the per-band eq. 12 bounds were measured with another
+# random stream of true weights; the same kind of spread):
 #  - per band, eq. 12's est - true: band 0 mean +0.012 sd 0.061 (bound 0.2);
 #    bands 1-3 sd 0.084, 0.095, 0.120 (bound 0.37). Leakage between octaves
 #    (L1) moves power between neighbours; bands 4-6 have too few coefficients

@@ -32,7 +32,7 @@
 #    every replicate on >= 1 photo and its mean KS < 0.03 on both (gauss33's
 #    clouds KS is 0.229). Both quick photos are colour: photo_sat_max > 0.
 #  - the gauss33 and paper10 rows of photos_mean are those of results/quick
-#    (made before the third representation existed) to 1e-9 relative.
+#    to 1e-9 relative (a third representation leaves theirs unchanged).
 set -euo pipefail
 # shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
@@ -45,7 +45,7 @@ ex="$(cd "$(dirname "$0")/../data/exemplars" && pwd)"
 # (nl_study_example_photos; rows added in item order): two threads give the
 # same photo tables as one (procedural exemplars cut to 16 pixels here).
 # Both are thread-identity reruns (tsv.sh): release build only (the
-# one-thread rerun was 12.7 s of CPU under the sanitizers, issue 17).
+# one-thread rerun costs 12.7 s of CPU under the sanitizers).
 if thread_identity; then
   "$1" --quick --no-images --threads 1 --set photos=2 --set photo_size=32 --out "$3.t1" --exemplars "$ex" >/dev/null
   for t in ks spline gauss spectrum_wavelet spectrum_clouds spectrum_granite spectrum_marble; do cmp "$3/$t.tsv" "$3.t1/$t.tsv"; done

@@ -17,7 +17,7 @@
 # ratio is 0.993-1.003 (bound 1 +- 0.02); histogram matching of the edited
 # image raises them to 1.044-1.083 (bound 1.07 +- 0.08).
 # Solid slices keep the 2D channel distributions: mean KS 2D vs slice
-# 0.086-0.237 (bound 0.43, as for single seeds before). The morph's matrix
+# 0.086-0.237 (bound 0.43, a single seed's bound). The morph's matrix
 # stays a rotation (det 1, orthogonal to rounding: measured |det - 1| and
 # orth_err <= 9e-16; 1e-9 leaves room for any BLAS kernel).
 set -euo pipefail

@@ -57,7 +57,7 @@ tsv_slopes() {
 # What the release build runs and the sanitizer build (NL_TEST_SANITIZE, set
 # by tests/meson.build) leaves out: work that tests the bytes or the numbers
 # of a result, which the sanitizers do not change, once the first run of the
-# command has run under them (issue 17: the test suite's CPU time). One test
+# command has run under them (the test suite's CPU time). One test
 # of the build, three names for the three kinds of such work:
 unsanitized() { [ "${NL_TEST_SANITIZE:-none}" = none ]; }
 # thread_identity: an experiment run again with --threads 1 and compared with
