@@ -117,7 +117,9 @@ if full_scale; then
   "$2" "$out/photo.tsv" 'rows=1' 'pass==1' 'ks<0.03' 'bands_checked==6'
   tsv_awk 'NR > 1 && n("checked") == 1 && (n("ratio") > 1.1 || n("ratio") < 1 / 1.1) { printf "band %d ratio %g outside x1.1\n", n("band"), n("ratio"); bad = 1 }
     END { exit bad }' "$out/photo.bands.tsv"
-  tsv_awk 'NR > 1 && n("band") == 6 { r = n("ratio") } END { if (!(r > 1.3435 && r < 1.3445)) { printf "uncalibrated band 6 ratio %g, want 1.344\n", r; exit 1 } }' "$out/photo2.bands.tsv"
+  tsv_awk 'NR > 1 && n("band") == 6 { r = n("ratio") }
+    END { if (!(r > 1.3435 && r < 1.3445)) {
+      printf "uncalibrated band 6 ratio %g, want 1.344\n", r; exit 1 } }' "$out/photo2.bands.tsv"
   "$2" "$out/photo2.tsv" 'rows=1' 'pass==0' 'ks>0.0247' 'ks<0.0249'
   ks1=$(tsv_cut "$out/photo.tsv" ks | tail -1); ks0=$(tsv_cut "$out/photo10.tsv" ks | tail -1)
   sp1=$(tsv_cut "$out/photo.tsv" speckle | tail -1); sp0=$(tsv_cut "$out/photo10.tsv" speckle | tail -1)

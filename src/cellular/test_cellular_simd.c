@@ -4,8 +4,9 @@
  * passing would claim that level's kernels.
  *
  * The reference below is the full scan without the rejection (every cube,
- * in i, j, k order, insertion into the n smallest). Points (ordinary, lattice, negative, large, beyond 2^52 and
- * 2^62, signed zeros, NaN, infinities) through nl_cellular_eval, and rows
+ * in i, j, k order, insertion into the n smallest). Points (ordinary,
+ * lattice, negative, large, beyond 2^52 and 2^62, signed zeros, NaN,
+ * infinities) through nl_cellular_eval, and rows
  * (dense and sparse, either direction, zero and tiny steps, lanes across
  * cube columns, odd lengths for the vector tails) through nl_cellular_row at
  * every level, for n = 1..4 and the three count rules: compared with memcmp.
