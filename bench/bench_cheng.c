@@ -13,7 +13,7 @@
  *     best and median of `reps` runs on seeds 1..reps, and its wall time;
  *   - moves per level, with per-level rates from the levels' wall times;
  *   - raw incremental move + undo pairs per CPU second at level 1 and 4.
- * Targets (issue 17): >= 2.5 M moves/s, a full optimisation <= 0.25 s CPU.
+ * Targets: >= 2.5 M moves/s, a full optimisation <= 0.25 s CPU.
  *
  *   build/bench/bench_cheng [--reps N] [--grid G] [--stat ks|chisq|kuiper] [--tsv]
  *   build/bench/bench_cheng --dump quick|full

@@ -12,7 +12,7 @@
  * DIR, then runs bench/bench_stats.py on them when /usr/bin/python3 can import
  * sklearn, so the Python side starts EM from the same labels.
  * FFT: the 2D transform of a 512 x 512 real image, ms of CPU time per call
- * (best of three rounds of >= 0.3 s), the old GSL complex-strided transform,
+ * (best of three rounds of >= 0.3 s), GSL's complex strided transform (the baseline),
  * nl_spectrum_fft2 (full spectrum) and nl_spectrum_rfft2 with a plan,
  * beside numpy's rfft2 and fft2 in the same run.
  * OpenBLAS is pinned to one thread on both sides (OPENBLAS_NUM_THREADS=1; this
@@ -176,9 +176,9 @@ static void bench_ks(gsl_rng *rng)
 
 enum { FW = 512 };
 
-/* The transform nl_spectrum_fft2 was before the real-input path: GSL's
- * complex transform of every row, then of every column in place at a
- * stride of w complex. Kept here as the "before" of the comparison. */
+/* The baseline the real-input path is measured against: GSL's complex
+ * transform of every row, then of every column in place at a stride of w
+ * complex (printed as "before"). */
 static void fft2_gsl_strided(const double *img, double *F)
 {
   for (size_t k = 0; k < (size_t)FW * FW; k++) { F[2 * k] = img[k]; F[2 * k + 1] = 0; }

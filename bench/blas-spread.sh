@@ -39,8 +39,8 @@ scale=full ref="$ROOT/results"
 [ "$quick" = 1 ] && { scale=quick; ref="$ROOT/results/quick"; }
 
 # name|environment (env -u/-i words). "default" is what the machine picks
-# with neither variable set (on the machine this was first run on:
-# Cooperlake, which cannot be chosen by name in OpenBLAS 0.3.21).
+# with neither variable set (on a Cooper Lake CPU: Cooperlake, which
+# cannot be chosen by name in OpenBLAS 0.3.21).
 CONFIGS=(
   "Prescott|OPENBLAS_CORETYPE=Prescott"
   "Core2|OPENBLAS_CORETYPE=Core2"

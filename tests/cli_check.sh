@@ -5,8 +5,9 @@
 # noise-level differences under the statistical rules, and refuses bad
 # input with one line and exit 2.
 set -euo pipefail
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
-check="$1" expect="$2" out="$3"
+check="$1" out="$3"   # $2, expect, is not needed: the tests read check's messages
 rm -rf "$out"; mkdir -p "$out"
 ref="$out/ref"; mkdir -p "$ref"
 
@@ -18,7 +19,7 @@ tsv "$ref/checks.tsv" 'table|column|rule' 'dist.tsv|mean|welch mean_sd 1e-3' 'di
 tsv "$ref/dist.tsv" 'label|mean|mean_sd|secs|count' '(a) one|0.5|0.1|3.2|17' '(b) two|1.5|0|1.1|4'
 tsv "$ref/spec.tsv" 'freq|power' '0.125|0.0077449593835423221' '0.375|0.0033590302577136471'
 
-copy() { rm -rf "$out/$1"; cp -r "$ref" "$out/$1"; }
+copy() { rm -rf "${out:?}/${1:?}"; cp -r "$ref" "$out/$1"; }
 edit() {   # DIR FILE ROW COLUMN VALUE (row 1 = first data row; COLUMN by name)
   tsv_awk -v r="$3" -v c="$4" -v x="$5" 'BEGIN {OFS = "\t"} NR == r + 1 {$col(c) = x} {print}' "$out/$1/$2" >"$out/$1/.x"
   mv "$out/$1/.x" "$out/$1/$2"
@@ -88,7 +89,8 @@ grep -q '^check: t1: 12 drifted (first 10 shown; --all for every one); reference
   || { echo "many: summary line"; cat "$out/many.out"; exit 1; }
 grep -q 'check: 1 experiment, 2 tables, .* 12 drifted' "$out/many.out" || { echo "many: total"; cat "$out/many.out"; exit 1; }
 rc=0; "$check" --all "$ref" "$out/many12" >"$out/all.out" || rc=$?
-[ "$rc" = 1 ] && [ "$(grep -c $'^t1\tspec.tsv\t' "$out/all.out")" = 12 ] && grep -q '^check: t1: 12 drifted; ' "$out/all.out" \
+{ [ "$rc" = 1 ] && [ "$(grep -c $'^t1\tspec.tsv\t' "$out/all.out")" = 12 ] \
+  && grep -q '^check: t1: 12 drifted; ' "$out/all.out"; } \
   || { echo "--all: rc=$rc"; cat "$out/all.out"; exit 1; }
 printf 'cpu\tAMD EPYC\nblas_core\tSkylakeX\n' >>"$ref/manifest.tsv"
 printf 'cpu\tAMD EPYC\nblas_core\tHaswell\nstarted\t2030-01-01T00:00:00Z\nseconds\t99\npeak_rss_mb\t1\nblas_threads\t7\n' >>"$out/many12/manifest.tsv"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The installed library as another project uses it (issue 18.6):
+# The installed library as another project uses it:
 #  - `meson install --destdir` puts libnoiselab (shared and static), the
 #    headers under include/noiselab/ and noiselab.pc in the destdir;
 #  - every installed header compiles on its own with pkg-config's --cflags

@@ -4,6 +4,7 @@
 set -euo pipefail
 render="$1" expect="$2" out="$3"
 mkdir -p "$out"
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # byte_reruns
 "$render" fbm --octaves 6 --gain 0.5 --lacunarity 2 --size 64 --seed 7 -o "$out/fbm.png"
 "$render" turbulence --size 32 -o "$out/t.exr"
@@ -38,8 +39,8 @@ bad "must be even" wavelet --tile 9 -o "$out/x.png"
 bad "--lambda: -1 must be in (0, 1000]" gctbf --lambda -1 -o "$out/x.png"
 bad "F index must be in 1..4" gctbf --terms F5 -o "$out/x.png"
 bad "expected a number" gctbf --terms "abc*F1" -o "$out/x.png"
-# Issue 13.4: lattice coordinates beyond 2^52 (once NaN with exit 0 and
-# signed overflow in the floor) are refused naming the options.
+# Lattice coordinates beyond 2^52 (NaN with exit 0 and signed overflow in
+# the floor if let through) are refused naming the options.
 bad "--lacunarity 10 with --octaves 30: the finest octave's frequency 1e+29" fbm --octaves 30 --lacunarity 10 --size 4 -o "$out/x.tsv"
 bad "--lacunarity 10 with --octaves 30" fbm --octaves 30 --lacunarity 10 --size 4 -o "$out/x.png"
 bad "--lacunarity 10 with --octaves 30" fbm --basis gctbf --octaves 30 --lacunarity 10 --size 4 -o "$out/x.tsv"
@@ -52,7 +53,7 @@ if grep -qi 'nan\|inf' "$out/big.tsv"; then echo "big.tsv holds nan or inf"; exi
 "$render" fbm --basis table --octaves 30 --lacunarity 0.001 --size 8 -o "$out/small.tsv"
 if grep -qi 'nan\|inf' "$out/small.tsv"; then echo "small.tsv holds nan or inf"; exit 1; fi
 rm -f "$out/big.tsv" "$out/small.tsv"
-# Issue 13.9: a parent that is a file, option names and ranges.
+# A parent that is a file, option names and ranges.
 : > "$out/afile"
 bad "$out/afile/x.png: parent $out/afile is not a directory" fbm --size 8 -o "$out/afile/x.png"
 bad "$out/afile/x.tsv: parent $out/afile is not a directory" fbm --size 8 -o "$out/afile/x.tsv"
@@ -65,7 +66,7 @@ bad "names a directory" fbm --size 8 -o "$out/"
 bad "--size 65536 as a .tsv needs" fbm --size 65536 -o "$out/x.tsv"   # 463 GB
 SOURCE_DATE_EPOCH=yesterday bad "SOURCE_DATE_EPOCH 'yesterday' is not a number" fbm --size 8 -o "$out/x.tif"
 rm -f "$out/afile"
-# Issue 12.4: same seed, same bytes, for every image format (no timestamp).
+# Same seed, same bytes, for every image format (no timestamp).
 # Byte reruns (tests/tsv.sh): release build only; the sanitizer build wrote
 # each format above.
 if byte_reruns; then
@@ -77,7 +78,7 @@ if byte_reruns; then
     rm -f "$out/same1.$e" "$out/same2.$e"
   done
 fi
-# GNU-style options (issue 18.5): --name=VALUE as --name VALUE, -oFILE, prefixes,
+# GNU-style options: --name=VALUE as --name VALUE, -oFILE, prefixes,
 # options after the noise or before it; unknown / missing / unwanted values refused.
 "$render" --size=16 noise2 --seed=3 -o"$out/n3.tsv"
 cmp "$out/n.tsv" "$out/n3.tsv"
@@ -94,4 +95,4 @@ grep -aq '1970:01:01 00:00:00' "$out/m.tif"
 [ ! -e "$out/x.png" ]
 [ ! -e "$out/x.tsv" ]
 [ ! -e "$out/x.tif" ]
-[ -z "$(ls -A "$out" | grep '^\.' || true)" ]   # no temporary files left
+[ -z "$(find "$out" -mindepth 1 -maxdepth 1 -name '.*')" ]   # no temporary files left

@@ -11,8 +11,8 @@
 #  - bench runs every benchmark, skips meson's bench_*.p/ folders, and fails
 #    at the end naming the failed ones.
 # The runs use A1 (0.05 s: tables and one figure, no image, so no
-# OpenImageIO start-up) and S4 (a texture image): issue 17, the test's CPU
-# time; which experiments run does not matter to what is tested here.
+# OpenImageIO start-up) and S4 (a texture image), for the test's CPU time;
+# which experiments run does not matter to what is tested here.
 # Args: NOISELAB_SCRIPT EXPECT OUTDIR. A fake gnuplot on PATH writes half a
 # PNG where gnuplot would, then sleeps, so the signal lands mid-figure.
 set -euo pipefail
@@ -27,12 +27,13 @@ one_line_exit2() {   # WANT_FRAGMENT ARGS...
   local want="$1"; shift
   local err rc=0
   err="$("$nl" "$@" 2>&1 >/dev/null)" || rc=$?
-  [ "$rc" = 2 ] && [ "$(printf '%s\n' "$err" | wc -l)" = 1 ] && [[ "$err" == *"$want"* ]] \
+  { [ "$rc" = 2 ] && [ "$(printf '%s\n' "$err" | wc -l)" = 1 ] && [[ "$err" == *"$want"* ]]; } \
     || fail "noiselab $*: rc=$rc, wanted exit 2 and one line with '$want'; got: $err"
 }
 one_line_exit2 "unknown experiment 'Z9'" check Z9
 one_line_exit2 "unknown experiment 'Z9'" params Z9
 # list and params: TSV with a header, read by column name
+# shellcheck source=tests/tsv.sh
 . "$root/tests/tsv.sh"
 "$nl" list > "$out/list.tsv" || fail "list failed"
 [ "$(tsv_awk 'FNR > 1 && v("title") != "" { k++ } END { print k }' "$out/list.tsv")" = "$(($(wc -l < "$out/list.tsv") - 1))" ] \
@@ -80,9 +81,9 @@ consistent() {   # LABEL: every final PNG whole; a manifest only with all figure
     done
   done
   if [ -f "$r/REPORT.md" ]; then
-    for e in $(sed -n 's/^<a id="\(.*\)"><\/a>$/\1/p' "$r/REPORT.md"); do
+    while IFS= read -r e; do
       [ -f "$r/$e/manifest.tsv" ] || fail "$label: REPORT.md names $e, which has no manifest"
-    done
+    done < <(sed -n 's/^<a id="\(.*\)"><\/a>$/\1/p' "$r/REPORT.md")
   fi
 }
 consistent "complete run"
@@ -110,7 +111,11 @@ start_slow() {   # EXPERIMENT: reproduce in the background with the fake gnuplot
   FAKE_GNUPLOT_MARK="$out/mark" PATH="$out/bin:$PATH" "$nl" reproduce --quick --out "$r" "$1" 2>"$out/slow.log" &
   PID=$!
   local k
-  for k in $(seq 600); do [ -s "$out/mark" ] && { set +m; return 0; }; kill -0 "$PID" 2>/dev/null || break; sleep 0.1; done
+  for ((k = 0; k < 600; k++)); do   # 60 s
+    [ -s "$out/mark" ] && { set +m; return 0; }
+    kill -0 "$PID" 2>/dev/null || break
+    sleep 0.1
+  done
   set +m
   cat "$out/slow.log"; fail "the fake gnuplot never ran"
 }
@@ -125,11 +130,14 @@ stop_slow() {   # SIGNAL WANT_RC
 start_slow A1
 # Meanwhile a second run into the same folder names the first and exits 1.
 rc=0; err="$("$nl" reproduce --quick --out "$r" S4 2>&1 >/dev/null)" || rc=$?
-[ "$rc" = 1 ] && [[ "$err" == *"in use"*"pid $PID"*"reproduce"* ]] || fail "second reproduce: rc=$rc: $err"
+{ [ "$rc" = 1 ] && [[ "$err" == *"in use"*"pid $PID"*"reproduce"* ]]; } \
+  || fail "second reproduce: rc=$rc: $err"
 stop_slow INT 130
 consistent "SIGINT"
 [ ! -f "$r/a1_bounds/manifest.tsv" ] || fail "SIGINT: a1_bounds kept a manifest"
-grep -q '<a id="s4_marble">' "$r/REPORT.md" && ! grep -q '<a id="a1_bounds">' "$r/REPORT.md" || fail "SIGINT: REPORT.md not rewritten from the complete folders"
+{ grep -q '<a id="s4_marble">' "$r/REPORT.md" \
+  && ! grep -q '<a id="a1_bounds">' "$r/REPORT.md"; } \
+  || fail "SIGINT: REPORT.md not rewritten from the complete folders"
 [ -z "$(find "$r" -name '.fig-*')" ] || fail "SIGINT left temporary figure folders"
 
 # SIGTERM: exit 143; no complete folder is left, so no REPORT.md either.
@@ -147,7 +155,8 @@ consistent "SIGKILL"
 # A rerun recovers: both complete, no leftovers.
 "$nl" reproduce --quick --out "$r" S4 A1 2>"$out/rerun.log" || { cat "$out/rerun.log"; fail "rerun failed"; }
 consistent "rerun"
-[ -f "$r/a1_bounds/manifest.tsv" ] && [ -f "$r/s4_marble/manifest.tsv" ] || fail "rerun: a folder is incomplete"
+{ [ -f "$r/a1_bounds/manifest.tsv" ] && [ -f "$r/s4_marble/manifest.tsv" ]; } \
+  || fail "rerun: a folder is incomplete"
 [ -z "$(find "$r" -name '.fig-*' -o -name '.manifest-pending.tsv')" ] || fail "rerun left temporaries"
 
 # --jobs (default: the number of cores; the rerun above ran S4 and A1 at
@@ -166,10 +175,11 @@ done
   || fail "--jobs: messages not in report order: $(cat "$out/rerun.log")"
 jf="$out/jfail"; mkdir -p "$jf"; : >"$jf/a1_bounds"
 rc=0; "$nl" reproduce --quick --jobs 2 --out "$jf" A1 S4 2>"$out/jfail.log" || rc=$?
-[ "$rc" = 2 ] && grep -q '^noiselab: a1_bounds failed$' "$out/jfail.log" \
+{ [ "$rc" = 2 ] && grep -q '^noiselab: a1_bounds failed$' "$out/jfail.log" \
   && [ "$(tail -n 1 "$out/jfail.log")" = "noiselab: reproduce: 1 experiment(s) failed" ] \
   && [ -f "$jf/s4_marble/manifest.tsv" ] && grep -q '<a id="s4_marble">' "$jf/REPORT.md" \
-  && [ -z "$(find "$jf" -name '.log-*')" ] || fail "--jobs 2 with a failing experiment: rc=$rc: $(cat "$out/jfail.log")"
+  && [ -z "$(find "$jf" -name '.log-*')" ]; } \
+    || fail "--jobs 2 with a failing experiment: rc=$rc: $(cat "$out/jfail.log")"
 
 # bench: every regular executable bench_* runs; a failure is reported at the end.
 b="$out/bench"; mkdir -p "$b/bench_cellular.p"
@@ -178,7 +188,8 @@ printf '#!/bin/sh\necho ran-c >>"%s/ran"\nexit 3\n' "$b" >"$b/bench_c"
 printf '#!/bin/sh\necho ran-d >>"%s/ran"\n' "$b" >"$b/bench_d"
 chmod +x "$b"/bench_*
 rc=0; err="$(bash -c 'source "$1"; run_benchmarks "$2"' _ "$nl" "$b" 2>&1 >/dev/null)" || rc=$?
-[ "$rc" = 2 ] && [[ "$err" == *"1 benchmark(s) failed: bench_c"* ]] || fail "bench: rc=$rc: $err"
+{ [ "$rc" = 2 ] && [[ "$err" == *"1 benchmark(s) failed: bench_c"* ]]; } \
+  || fail "bench: rc=$rc: $err"
 [ "$(tr '\n' ' ' <"$b/ran")" = "ran-a ran-c ran-d " ] || fail "bench: ran $(cat "$b/ran")"
 # check --quick with an unknown id: the one line of resolve, nothing after it.
 one_line_exit2 "unknown experiment 'Q9'" check --quick Q9
@@ -189,7 +200,9 @@ one_line_exit2 "unknown experiment 'Q9'" check --quick Q9
 exec 8<>"$root/results/.noiselab.lock"
 if flock -n 8; then
   rc=0; err="$("$nl" reproduce A1 2>&1 >/dev/null)" || rc=$?
-  [ "$rc" = 1 ] && [[ "$(printf '%s\n' "$err" | head -n 1)" == *"writing into results/, the committed (git-tracked) results"* ]] \
+  { [ "$rc" = 1 ] \
+    && [[ "$(printf '%s\n' "$err" | head -n 1)" == \
+    *"writing into results/, the committed (git-tracked) results"* ]]; } \
     || fail "reproduce without --out: rc=$rc, no warning first: $err"
 fi
 exec 8>&-
@@ -200,11 +213,15 @@ exec 8>&-
 rs="$r"
 grep -q '^noiselab: 1/2 done, elapsed [0-9]* s, ETA [0-9]' "$out/rerun.log" || fail "no ETA line: $(cat "$out/rerun.log")"
 "$nl" reproduce --quick --resume --out "$rs" A1 S4 2>"$out/resume2.log" || { cat "$out/resume2.log"; fail "reproduce --resume failed"; }
-grep -q '^noiselab: reproduce --resume: skipped 2 of 2 (.*): a1_bounds s4_marble$' "$out/resume2.log" \
-  && ! grep -q ' done in ' "$out/resume2.log" || fail "--resume did not skip both: $(cat "$out/resume2.log")"
+{ grep -q '^noiselab: reproduce --resume: skipped 2 of 2 (.*): a1_bounds s4_marble$' \
+  "$out/resume2.log" \
+  && ! grep -q ' done in ' "$out/resume2.log"; } \
+    || fail "--resume did not skip both: $(cat "$out/resume2.log")"
 "$nl" reproduce --quick --resume --seed 2 --out "$rs" A1 2>"$out/resume3.log" || { cat "$out/resume3.log"; fail "reproduce --resume --seed 2 failed"; }
-grep -q '^noiselab: reproduce --resume: skipped 0 of 1 (manifest with seed 2, --quick, ' "$out/resume3.log" \
-  && grep -q 'a1_bounds done in' "$out/resume3.log" && grep -q $'^seed\t2$' "$rs/a1_bounds/manifest.tsv" \
+{ grep -q '^noiselab: reproduce --resume: skipped 0 of 1 (manifest with seed 2, --quick, ' \
+  "$out/resume3.log" \
+  && grep -q 'a1_bounds done in' "$out/resume3.log" \
+    && grep -q $'^seed\t2$' "$rs/a1_bounds/manifest.tsv"; } \
   || fail "--resume with another seed did not rerun: $(cat "$out/resume3.log")"
 # The rule itself: another commit or another seeds count is not finished.
 matches() { bash -c 'source "$1"; shift; resume_matches "$@"' _ "$nl" "$@"; }
@@ -215,7 +232,8 @@ matches "$rs/s4_marble/manifest.tsv" s4_marble 1 1 "$c" || fail "resume_matches:
 sed $'s/^seeds\t.*/seeds\t7/' "$rs/s4_marble/manifest.tsv" >"$out/seeds7.tsv"
 ! matches "$out/seeds7.tsv" s4_marble 1 1 "$c" || fail "resume_matches: another seeds count matches"
 sed $'s/^images\t.*/images\tno/' "$rs/s4_marble/manifest.tsv" >"$out/noimages.tsv"
-grep -q $'^images\tno$' "$out/noimages.tsv" && ! matches "$out/noimages.tsv" s4_marble 1 1 "$c" \
+{ grep -q $'^images\tno$' "$out/noimages.tsv" \
+  && ! matches "$out/noimages.tsv" s4_marble 1 1 "$c"; } \
   || fail "resume_matches: a --no-images run matches"
 # ETA: previous times scaled by this run's pace, the mean so far for the rest.
 [ "$(bash -c 'source "$1"; repro_eta 10 1 5 20 -' _ "$nl")" = "1/3 done, elapsed 10 s, ETA 50 s (previous times and mean so far x 2)" ] \

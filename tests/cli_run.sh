@@ -8,6 +8,7 @@ set -euo pipefail
 s3="$1" c2="$2" out="$3"
 rm -rf "$out"; mkdir -p "$out"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"
 
 # A finished run of each: a real quick S3, and a C2 folder that looks finished.

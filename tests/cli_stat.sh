@@ -7,6 +7,7 @@ set -u
 STAT=${1:?usage: cli_stat.sh PATH/TO/noiselab-stat}
 HERE=$(cd "$(dirname "$0")" && pwd)
 DATA=$HERE/data/stats
+# shellcheck source=tests/tsv.sh
 . "$HERE/tsv.sh"   # tables by column name
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
@@ -68,7 +69,8 @@ expect_value "$line" chi2 "$(tsv_awk 'v("file") == "chisq_0.tsv" { print v("chi2
 expect_value "$line" p "$(tsv_awk 'v("file") == "chisq_0.tsv" { print v("p") }' "$DATA/chisq.tsv")" 1e-10
 expect_value "$line" df 499 0
 expect_value "$line" min_expected 1.024 1e-15
-grep -q "unreliable" "$TMP/err" && ok || bad "chisq: no warning for expected counts < 5"
+if grep -q "unreliable" "$TMP/err"; then ok
+else bad "chisq: no warning for expected counts < 5"; fi
 
 # hclust: labels and merges against scipy
 line=$("$STAT" hclust "$DATA/hclust_X.tsv" --linkage average --clusters 5 \
@@ -90,10 +92,12 @@ expect_value "$line" loglik -5069.630131017421 1e-8
 expect_value "$line" aic 10227.260262034843 1e-8
 expect_value "$line" bic 10430.543483122177 1e-8
 expect_value "$line" converged 1 0
-[ "$(grep -c weight "$TMP/params.tsv")" = 3 ] && ok || bad "gmm --params: expected 3 weights"
+if [ "$(grep -c weight "$TMP/params.tsv")" = 3 ]; then ok
+else bad "gmm --params: expected 3 weights"; fi
 out=$("$STAT" gmm "$DATA/gmm_X.tsv" --select-aic 1 20 --covariance full)
 case $out in *selected=3*) ok ;; *) bad "gmm --select-aic 1 20: $out" ;; esac
-[ "$(printf '%s\n' "$out" | grep -c '^k=')" = 4 ] && ok || bad "gmm selection path should list k = 1..4: $out"
+if [ "$(printf '%s\n' "$out" | grep -c '^k=')" = 4 ]; then ok
+else bad "gmm selection path should list k = 1..4: $out"; fi
 
 # constant column: finite result, exit 0, a note on stderr
 printf '1 5\n2 5\n3 5\n4 5\n10 5\n11 5\n12 5\n' >"$TMP/const.txt"
@@ -103,8 +107,8 @@ if [ $rc = 0 ] && ! printf '%s' "$line" | grep -qi nan && grep -q "column 2 is c
 else bad "constant column: rc=$rc line=$line err=$(cat "$TMP/err")"; fi
 
 # help
-"$STAT" gmm --help | grep -q "usage: noiselab stat gmm" && ok || bad "gmm --help"
-"$STAT" --help | grep -q "hclust" && ok || bad "--help"
+if "$STAT" gmm --help | grep -q "usage: noiselab stat gmm"; then ok; else bad "gmm --help"; fi
+if "$STAT" --help | grep -q "hclust"; then ok; else bad "--help"; fi
 
 # ---- bad input: exit 2, one line ---------------------------------------------
 : >"$TMP/empty.tsv"
@@ -132,7 +136,7 @@ expect_error "exactly one" "$STAT" gmm "$DATA/gmm_X.tsv"
 expect_error "two files" "$STAT" ks2 "$DATA/ks2_1_a.tsv"
 expect_error "unknown subcommand" "$STAT" frobnicate x
 
-# Issue 13.6-13.7: NUL bytes, endless lines, endless non-regular files,
+# NUL bytes, endless lines, endless non-regular files,
 # requests beyond the machine's memory: refused at once, input named.
 printf 'a\tb\n1\t2\n3\t4\0005\n' >"$TMP/nul.tsv"
 expect_error "nul.tsv:3: NUL byte in column 2" "$STAT" ks "$TMP/nul.tsv"
@@ -151,7 +155,7 @@ awk 'BEGIN { for (i = 0; i < 20; i++) { for (j = 0; j < 100000; j++) printf "%d 
 expect_error "wide.tsv: 20 rows of 100000 columns with 3 components need" timeout 120 "$STAT" gmm "$TMP/wide.tsv" --k 3
 expect_error "parent $TMP/nul.tsv is not a directory" "$STAT" hclust "$DATA/hclust_X.tsv" --linkage single --clusters 2 --labels "$TMP/nul.tsv/x.tsv"
 
-# ---- issue 18.4: scipy's habits ------------------------------------------------
+# ---- scipy's habits -----------------------------------------------------------
 # Reference: tests/reference/stat_cli (tests/reference/make_stat_cli_vectors.py,
 # scipy 1.10.1). Measured against it: D within 1.2e-15 relative (glibc's erf
 # against cephes' ndtr), p within 4e-13 relative, V within 1e-15; Ward's
@@ -179,19 +183,23 @@ while IFS=$'\t' read -r f dist loc scale D p V; do
   line=$("$STAT" kuiper "$REF/$f" "${how[@]}")
   expect_value "$line" V "$V" 1e-13
 done <"$REF/ks_dist.tsv"
-[ "$rows" = 10 ] && ok || bad "ks_dist.tsv: $rows cases read, want 10"
+if [ "$rows" = 10 ]; then ok; else bad "ks_dist.tsv: $rows cases read, want 10"; fi
 # the issue's own command, GNU spellings, and the other formats
 js=$("$STAT" ks "$REF/norm_200.tsv" --dist norm --loc 0 --scale 1 --format json)
 case $js in '{"D": '*', "p": '*', "n": 200, "method": "'*'"}') ok ;; *) bad "json shape: $js" ;; esac
-[ "$("$STAT" ks "$REF/norm_200.tsv" --dist=norm --format=json)" = "$js" ] && ok || bad "--dist=norm (defaults loc 0, scale 1) differs"
+if [ "$("$STAT" ks "$REF/norm_200.tsv" --dist=norm --format=json)" = "$js" ]; then ok
+else bad "--dist=norm (defaults loc 0, scale 1) differs"; fi
 tsv=$("$STAT" ks "$REF/norm_200.tsv" --dist norm --format tsv)
-[ "$(printf '%s\n' "$tsv" | head -1)" = "$(printf 'D\tp\tn\tmethod')" ] && [ "$(printf '%s\n' "$tsv" | wc -l)" = 2 ] && ok \
-  || bad "--format tsv: $tsv"
+if [ "$(printf '%s\n' "$tsv" | head -1)" = "$(printf 'D\tp\tn\tmethod')" ] \
+  && [ "$(printf '%s\n' "$tsv" | wc -l)" = 2 ]; then ok
+else bad "--format tsv: $tsv"; fi
 expect_value "$("$STAT" ks "$REF/unif_80.tsv" --uniform=2 5)" D \
   "$(tsv_awk 'v("file") == "unif_80.tsv" && n("loc") == 2 { print v("D") }' "$REF/ks_dist.tsv")" 1e-13
 # CSV: detected, or forced; the same numbers as the TSV
-[ "$("$STAT" ks "$REF/norm_200.csv" --dist norm --format json)" = "$js" ] && ok || bad "CSV not read as the TSV"
-[ "$("$STAT" ks --csv - --dist norm --format json <"$REF/norm_200.csv")" = "$js" ] && ok || bad "--csv on stdin"
+if [ "$("$STAT" ks "$REF/norm_200.csv" --dist norm --format json)" = "$js" ]; then ok
+else bad "CSV not read as the TSV"; fi
+if [ "$("$STAT" ks --csv - --dist norm --format json <"$REF/norm_200.csv")" = "$js" ]; then ok
+else bad "--csv on stdin"; fi
 expect_value "$("$STAT" ks "$REF/norm_200.csv" --column=2 --dist norm --scale 2)" D "$(json_value "$js" D)" 1e-15
 printf 'x\ty\n0.1,0.2\t0.3\n0.4\t0.5\n' >"$TMP/mixed.tsv"
 expect_error "holds '0.1,0.2', not a number (commas: a CSV file?" "$STAT" ks "$TMP/mixed.tsv"
@@ -203,22 +211,30 @@ if tsv_awk 'FNR == 1 { next }
      { d = n("dist") - dist[FNR]; if (d < 0) d = -d
        if (n("a") != a[FNR] || n("b") != b[FNR] || n("size") != size[FNR] || d > 1e-12 * dist[FNR]) bad = 1 }
      END { exit bad }' "$REF/ward_Z.tsv" "$TMP/wz.tsv"; then ok; else bad "ward merges differ from scipy's linkage"; fi
-cmp -s <(tail -n +2 "$TMP/wl.tsv") <(tsv_cut "$REF/ward_labels.tsv" maxclust_4 | tail -n +2) && ok || bad "ward maxclust 4 labels"
+if cmp -s <(tail -n +2 "$TMP/wl.tsv") \
+  <(tsv_cut "$REF/ward_labels.tsv" maxclust_4 | tail -n +2); then ok
+else bad "ward maxclust 4 labels"; fi
 "$STAT" hclust "$REF/ward_X.tsv" --linkage ward --cutoff 6 --labels "$TMP/wl6.tsv" >/dev/null
-cmp -s <(tail -n +2 "$TMP/wl6.tsv") <(tsv_cut "$REF/ward_labels.tsv" distance_6 | tail -n +2) && ok || bad "ward distance 6 labels"
+if cmp -s <(tail -n +2 "$TMP/wl6.tsv") \
+  <(tsv_cut "$REF/ward_labels.tsv" distance_6 | tail -n +2); then ok
+else bad "ward distance 6 labels"; fi
 # gmm: score (sklearn's mean log-likelihood per row) beside the total
 line=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3)
 expect_value "$line" score "$(awk 'BEGIN { printf "%.17g", -5069.630131017421 / 750 }')" 1e-8
 js=$("$STAT" gmm "$DATA/gmm_X.tsv" --select-aic 1 20 --format json)
-[ "$(printf '%s\n' "$js" | grep -c '"selected": 1')" = 1 ] && case $js in '['*']') ok ;; *) bad "select json: $js" ;; esac \
-  || bad "select json: one selected row expected: $js"
+if [ "$(printf '%s\n' "$js" | grep -c '"selected": 1')" != 1 ]; then
+  bad "select json: one selected row expected: $js"
+else
+  case $js in '['*']') ok ;; *) bad "select json: $js" ;; esac
+fi
 # more parameters than numbers: one warning line
 awk 'BEGIN { for (i = 0; i < 20; i++) print (i * 37 % 20) / 20, (i * 11 % 20) / 20 }' >"$TMP/g20.tsv"
 "$STAT" gmm "$TMP/g20.tsv" --k 8 >/dev/null 2>"$TMP/err"
-[ "$(wc -l <"$TMP/err")" = 1 ] && grep -q "47 free parameters, more than the 40 numbers" "$TMP/err" && ok \
-  || bad "gmm over-parameterised: $(cat "$TMP/err")"
+if [ "$(wc -l <"$TMP/err")" = 1 ] \
+  && grep -q "47 free parameters, more than the 40 numbers" "$TMP/err"; then ok
+else bad "gmm over-parameterised: $(cat "$TMP/err")"; fi
 "$STAT" gmm "$TMP/g20.tsv" --k 2 >/dev/null 2>"$TMP/err"
-[ ! -s "$TMP/err" ] && ok || bad "gmm k=2 on 20 x 2 warned: $(cat "$TMP/err")"
+if [ ! -s "$TMP/err" ]; then ok; else bad "gmm k=2 on 20 x 2 warned: $(cat "$TMP/err")"; fi
 # refusals
 printf 'x\tF\n0\t0\n0.5\t0.6\n0.4\t0.7\n' >"$TMP/badcdf.tsv"
 expect_error "x = 0.4 does not increase" "$STAT" ks "$REF/u01_100.tsv" --cdf "$TMP/badcdf.tsv"

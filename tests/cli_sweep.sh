@@ -9,13 +9,14 @@
 set -euo pipefail
 tool="$1" expect="$2" out="$3"
 src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-export NL_BUILD="$(cd "$(dirname "$tool")/.." && pwd)"
+NL_BUILD="$(cd "$(dirname "$tool")/.." && pwd)"
+export NL_BUILD
 sweep=(bash "$src/scripts/sweep.sh")
 rm -rf "$out"; mkdir -p "$out"
 # A1: tables and a figure, no image (no OpenImageIO start-up per task: S3's
-# tasks made this test 2.5 times dearer, issue 17). The bad input and the
+# tasks would make this test 2.5 times dearer). The bad input and the
 # emitted job files below use S3's parameters; they run no task.
-def=(a1_bounds --quick --param points=500,1000 --seeds 2)
+def=(a1_bounds --quick --param 'points=500,1000' --seeds 2)
 dir="$out/local sweep"   # a space in the path on purpose
 
 "${sweep[@]}" "${def[@]}" --jobs 2 --out "$dir" 2>"$out/run1.err"
@@ -94,6 +95,7 @@ else
   timeout 300 sbatch --wait --quiet "$sdir/sweep.slurm" || { cat "$sdir"/logs/* >&2; echo "sbatch failed"; exit 1; }
   "${sweep[@]}" merge "$sdir" --table bounds.tsv --y max_abs 2>/dev/null
   for f in "$dir"/merged/*.tsv; do cmp "$f" "$sdir/merged/$(basename "$f")"; done
-  echo "cli_sweep: Slurm sweep identical to the local one ($(ls "$dir"/merged/*.tsv | wc -l) tables)"
+  merged=("$dir"/merged/*.tsv)
+  echo "cli_sweep: Slurm sweep identical to the local one (${#merged[@]} tables)"
 fi
 echo "cli_sweep: ok"

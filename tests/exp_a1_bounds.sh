@@ -2,15 +2,16 @@
 # Quick A1: the analytic bound and every incremental interval hold on every
 # random point; observed extremes are positive and below the bound.
 set -euo pipefail
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name; refused
 exp="$1" expect="$2" out="$3"
-"$exp" --quick $NOIMG --out "$out" >/dev/null
+"$exp" --quick "${NOIMG[@]}" --out "$out" >/dev/null
 "$expect" "$out/bounds.tsv" rows=8 'over_bound==0' 'over_bound_incremental==0' \
   'max_abs<=bound' 'max_abs>0.5' 'max_noise<=1.2247448713915890' 'S<2' 'S>=1' \
   file:manifest.tsv file:report.md
 # GSL runs on OpenBLAS when the build found it: with gold as the linker,
-# --as-needed dropped libopenblas (wanted by libgsl.so, not by the program) and
-# GSL fell back to libgslcblas unnoticed but for C5's and C6's drift (issue 17).
+# --as-needed can drop libopenblas (wanted by libgsl.so, not by the program)
+# and GSL falls back to libgslcblas, unnoticed but for C5's and C6's drift.
 if [ "${NL_TEST_OPENBLAS:-0}" = 1 ] && ! grep -q $'^blas\tOpenBLAS' "$out/manifest.tsv"; then
   echo "the build links OpenBLAS, but the manifest says: $(grep $'^blas\t' "$out/manifest.tsv")"; exit 1
 fi

@@ -10,12 +10,13 @@
 # reference. Timings are written but not checked. Two threads and one give
 # the same tables.
 set -euo pipefail
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 exp="$1" expect="$2" out="$3"
-"$exp" --quick $NOIMG --threads 2 --out "$out" >/dev/null
+"$exp" --quick "${NOIMG[@]}" --threads 2 --out "$out" >/dev/null
 "$expect" "$out/timing.tsv" rows=6 'max_diff_levels==0' 'bounded_evals<plain_evals' \
   'eval_ratio>1' 'terms>octaves' 'max_noise<=1.2247448713915890' 'plain_ms>0' 'alt_eval_ratio>1' \
-  'alt_slope==-4' $(images balls.png) $(images ball.png) $(images bounds.png) file:report.md
+  'alt_slope==-4' image:balls.png image:ball.png image:bounds.png file:report.md
 # The gain grows with the number of octaves (N = 10 against N = 1).
 tsv_awk 'n("octaves")==1{a=n("eval_ratio")} n("octaves")==10{b=n("eval_ratio")} END{exit !(b > a && b > 1.3)}' "$out/timing.tsv"
 # The sweep's columns, and at N = 0 a steeper slope, a larger ratio.
@@ -33,10 +34,7 @@ grep -q "differ by at most 0 8-bit levels" "$out/report.md"
 grep -q "Best reading: \*\*slope=" "$out/report.md"
 # The renders run as (row, seed) items on the run's threads: one thread gives
 # the same tables, times aside (the check ignores the timing columns).
-if thread_identity; then
-  "$exp" --quick --no-images --threads 1 --out "$out.t1" >/dev/null
-  "$(dirname "$exp")/../tools/noiselab-check" "$out" "$out.t1" >/dev/null
-fi
+same_on_one_thread "$exp" "$out"
 set +e
 refused "$exp" --quick --out "$out/bad" --set slope=1
 refused "$exp" --quick --out "$out/bad" --set offset=2

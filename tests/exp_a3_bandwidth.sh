@@ -5,9 +5,10 @@
 # reading for every signal and the properties measured on it (margins from
 # the quick run: 3 seeds, sd of F_sup <= 0.06, 0.22 in radians).
 set -euo pipefail
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name; refused
 exp="$1" expect="$2" out="$3"
-"$exp" --quick $NOIMG --out "$out" >/dev/null
+"$exp" --quick "${NOIMG[@]}" --out "$out" >/dev/null
 "$expect" "$out/bandwidth.tsv" rows=3 'f_inf<f_sup' 'f_inf>=0' 'f_sup<8' 'sigma>0' 'f_sup_bins>100'
 "$expect" "$out/sweep.tsv" rows=8 'oct1_f_sup<oct2_f_sup' 'oct1_f_inf<oct1_f_sup' 'sum_f_sup>=oct1_f_sup'
 "$expect" "$out/psd.tsv" 'rows>=500' 'gamma_oct1>=0' file:manifest.tsv

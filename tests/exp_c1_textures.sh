@@ -17,10 +17,11 @@
 #    rows (measured 0.18..0.44), and marble's rescaled sine has over twice the
 #    contrast of the literal sin V (measured 0.251..0.255 vs 0.062..0.065).
 set -euo pipefail
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
-"$exp" --quick $NOIMG --threads 2 --out "$out" --patterns "$pat" >/dev/null
+"$exp" --quick "${NOIMG[@]}" --threads 2 --out "$out" --patterns "$pat" >/dev/null
 # The seed runs are nl_parallel_for items (nl_study_cheng_runs): one thread
 # gives the same summary, byte for byte (images at 16 pixels: they do not
 # enter summary.tsv, and the extra run costs only the optimisations).
@@ -29,7 +30,7 @@ if thread_identity; then
   cmp "$out/summary.tsv" "$out.t1/summary.tsv"
 fi
 "$expect" "$out/summary.tsv" rows=24 'seeds==3' 'E_ks>0' 'E_ks<0.02' 'E_con>0' 'p_ks_min>0.9' \
-  'roughness>0' $(images cloud.png) $(images marble.png) $(images erosion.png) $(images fire.png)
+  'roughness>0' image:cloud.png image:marble.png image:erosion.png image:fire.png
 awk -F'\t' 'BEGIN{
     ceil["cloud/flower"]=0.494; ceil["cloud/x"]=0.492; ceil["cloud/star"]=0.489
     ceil["marble/rings"]=0.525; ceil["marble/spiral"]=0.531; ceil["marble/letter"]=0.544

@@ -17,12 +17,13 @@
 #    below the chi-square objective's (ratio 0.39..0.59). A margin of 0.9 on
 #    each ratio keeps the check away from the noise of 3-seed means.
 set -euo pipefail
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
-"$exp" --quick $NOIMG --threads 2 --out "$out" --patterns "$pat" >/dev/null
+"$exp" --quick "${NOIMG[@]}" --threads 2 --out "$out" --patterns "$pat" >/dev/null
 "$expect" "$out/summary.tsv" rows=6 'E_ks<0.06' 'chi2>0' 'E_con>0' 'p_kuiper_min>0.05' \
-  $(images noise_flower.png) $(images noise_x.png)
+  image:noise_flower.png image:noise_x.png
 awk -F'\t' 'NR == 1 {for (i = 1; i <= NF; i++) col[$i] = i} NR == 1 || $col["objective"] != "chisq"' \
   "$out/summary.tsv" > "$out/summary_ks_kuiper.tsv"
 "$expect" "$out/summary_ks_kuiper.tsv" rows=4 'E_ks<0.02' 'V_kuiper<0.03'

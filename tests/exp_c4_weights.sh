@@ -2,18 +2,16 @@
 # Quick C4: Table 4.1's six pairs (printed and swapped) and a weight sweep;
 # bad input gives a one-line error and exit 2.
 set -euo pipefail
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name; refused
 exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
-"$exp" --quick $NOIMG --threads 2 --out "$out" --patterns "$pat" >/dev/null
+"$exp" --quick "${NOIMG[@]}" --threads 2 --out "$out" --patterns "$pat" >/dev/null
 # The seed runs are nl_parallel_for items (nl_study_cheng_runs): one thread
 # gives the same tables, timing columns aside (the check ignores them).
-if thread_identity; then
-  "$exp" --quick --no-images --threads 1 --out "$out.t1" --patterns "$pat" >/dev/null
-  "$(dirname "$exp")/../tools/noiselab-check" "$out" "$out.t1" >/dev/null
-fi
+same_on_one_thread "$exp" "$out" --patterns "$pat"
 "$expect" "$out/table41.tsv" rows=6 'E_ks>0' 'E_ks<0.1' 'E_con>0' 'E_ks_swapped>0' 'E_ks_swapped<=E_ks' \
-  'E_con_swapped>=E_con*0.95' $(images textures.png)
+  'E_con_swapped>=E_con*0.95' image:textures.png
 "$expect" "$out/table41_runs.tsv" rows=12 'seeds==3'
 "$expect" "$out/sweep.tsv" rows=6 'E_ks>0' 'E_con>0' 'w1>0'
 # the KS-dominated end of the sweep has the lower E_KS and the higher E_Con

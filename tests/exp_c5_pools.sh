@@ -6,10 +6,11 @@
 # one cluster), the matched rows (the thesis's K0 exactly), the pool rule,
 # and that no table depends on the number of threads (--threads 1 and 2).
 set -euo pipefail
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"
 exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
-"$exp" --quick $NOIMG --threads 2 --out "$out" --patterns "$pat" >/dev/null
+"$exp" --quick "${NOIMG[@]}" --threads 2 --out "$out" --patterns "$pat" >/dev/null
 "$expect" "$out/gmm.tsv" rows=8 'K_initial>=1' 'K_final>=K_initial' 'input_samples<=pool' 'seeds==3' \
   'n_ok<=seeds' 'BIC>AIC' 'paper_samples==1000'
 "$expect" "$out/original.tsv" rows=4 'E_ks>0' 'E_ks<0.05' 'E_con>0' 'E_R_pool_max_gap>=0' 'E_R_pool_best<=E_R_pool_median'
@@ -36,18 +37,22 @@ tsv_awk 'FNR>1 && n("headline")==1 {h++; r[v("reading")]=1; if (n("k0_is_input")
 tsv_awk 'FNR>1 && v("n_rule")=="all" && (n("input_samples")!=120 || (!n("k0_is_input") && (n("AIC_per_nd")>-0.5 || n("AIC_per_nd")<-20))) {
   print "all-rows AIC: " $0; bad=1} END{exit bad}' "$out/readings.tsv"
 tsv_awk 'FNR>1 && v("n_rule")=="sub1000" && n("input_samples")!=100 {print "subsample: " $0; exit 1}' "$out/readings.tsv"
-# columns by name: `named` prefixes an awk program with col[NAME] = index from the header
-named() { printf 'NR==1{for(i=1;i<=NF;i++) col[$i]=i; next} %s' "$1"; }
 # drops the named columns (timings) from a table, header included
 drop() { local f="$1"; shift
   awk -F'\t' -v OFS='\t' -v drop="$*" 'NR==1{split(drop, d, " "); for(j in d) x[d[j]]=1; for(i=1;i<=NF;i++) if(!($i in x)) k[++n]=i}
     {s=$k[1]; for(j=2;j<=n;j++) s=s OFS $k[j]; print s}' "$f"; }
 # thesis cutoffs with level-1 entries: one cluster
-awk -F'\t' "$(named '$col["low_levels"]==1 && $col["cutoff_rule"]=="thesis" && ($col["K_initial"]!=1 || $col["status"]!="one_cluster"){print "thesis cutoff row: " $0; exit 1}')" "$out/gmm.tsv"
+tsv_awk 'FNR > 1 && n("low_levels") == 1 && v("cutoff_rule") == "thesis" \
+  && (n("K_initial") != 1 || v("status") != "one_cluster") {
+  print "thesis cutoff row: " $0; exit 1 }' "$out/gmm.tsv"
 # matched cutoff: exactly the thesis's initial K on every seed
-awk -F'\t' "$(named '$col["cutoff_rule"]=="matched_K0" && ($col["K_initial"]!=$col["paper_K_initial"] || $col["K_initial_sd"]!=0){print "matched row: " $0; exit 1}')" "$out/gmm.tsv"
+tsv_awk 'FNR > 1 && v("cutoff_rule") == "matched_K0" \
+  && (n("K_initial") != n("paper_K_initial") || n("K_initial_sd") != 0) {
+  print "matched row: " $0; exit 1 }' "$out/gmm.tsv"
 # K never grows with the cutoff
-awk -F'\t' "$(named '{key=$col["texture"]"/"$col["low_levels"]; if (key==prev && $col["K"]>k){print "K grows: " $0; exit 1} prev=key; k=$col["K"]}')" "$out/cutoff_k.tsv"
+tsv_awk 'FNR > 1 { key = v("texture") "/" v("low_levels")
+  if (key == prev && n("K") > k) { print "K grows: " $0; exit 1 }
+  prev = key; k = n("K") }' "$out/cutoff_k.tsv"
 grep -q '^pool_bytes_erosion_low1' "$out/manifest.tsv"
 grep -q '^cluster_bytes_cloud_low1' "$out/manifest.tsv"
 # one thread: same pool, same models (timing columns dropped). Two threads

@@ -10,18 +10,17 @@
 #    every row, tables stay uniform (E_ks < 0.025: measured 0.0088..0.0173 optimised, 0.0096..0.0122 fixed; E_Con / E_Con_random <= 0.898);
 #  - Welch p-values in [0, 1], one row per case and quantity (5).
 set -euo pipefail
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 exp="$1" expect="$2" out="$3"
 root="$(cd "$(dirname "$0")/.." && pwd)"
 pat="$root/data/patterns"
-"$exp" --quick $NOIMG --threads 2 --out "$out" --patterns "$pat" >/dev/null
+"$exp" --quick "${NOIMG[@]}" --threads 2 --out "$out" --patterns "$pat" >/dev/null
 # The seed runs are nl_parallel_for items (nl_study_cheng_runs): one thread
 # gives the same tables, timing columns aside (the check ignores them).
-if thread_identity; then
-  "$exp" --quick --no-images --threads 1 --out "$out.t1" --patterns "$pat" >/dev/null
-  "$(dirname "$exp")/../tools/noiselab-check" "$out" "$out.t1" >/dev/null
-fi
-"$expect" "$out/summary.tsv" rows=8 'seeds==3' 'E_ks>0' 'E_ks<0.025' 'E_con<E_con_random' 'contrast>0' $(images values.png)
+same_on_one_thread "$exp" "$out" --patterns "$pat"
+"$expect" "$out/summary.tsv" rows=8 'seeds==3' 'E_ks>0' 'E_ks<0.025' 'E_con<E_con_random' \
+  'contrast>0' image:values.png
 "$expect" "$out/gains.tsv" rows=16 'gain>=0.25' 'gain<=4' 'a>=1' 'at_bound>=0' 'at_bound<=1'
 "$expect" "$out/tests.tsv" rows=20 'p_welch>=0' 'p_welch<=1' 'seeds==3'
 "$expect" "$out/timing.tsv" rows=8 'seconds_per_run>0'

@@ -4,13 +4,14 @@
 # than 3D, the two finest bands keeping > 75% of their power in-octave
 # (measured 0.81-0.90), and every output present.
 set -euo pipefail
-. "$(dirname "$0")/tsv.sh"   # NOIMG, images
-"$1" --quick $NOIMG --out "$3"
-"$2" "$3/summary.tsv" 'rows=3' 'ours>0.1' 'ours<1.0' $(images noise.png)
+# shellcheck source=tests/tsv.sh
+. "$(dirname "$0")/tsv.sh"   # NOIMG
+"$1" --quick "${NOIMG[@]}" --out "$3"
+"$2" "$3/summary.tsv" 'rows=3' 'ours>0.1' 'ours<1.0' image:noise.png
 "$2" "$3/variance.tsv" 'rows=3' 'var2d~0.275:0.02' 'var3d~0.195:0.02'
 "$2" "$3/lattice.tsv" 'rows=9' 'var2d>var3d'
 # every band keeps a share of its power in-octave: measured 0.21 (band 5, few
-# coefficients) .. 0.90 over seeds 1..5 (was inside in [0, 1], a fraction)
+# coefficients) .. 0.90 over seeds 1..5
 "$2" "$3/leakage.tsv" 'rows>=6' 'inside>0.15'
 awk -F'\t' 'NR <= 3' "$3/leakage.tsv" > "$3/leakage_fine.tsv"   # bands 0 and 1
 "$2" "$3/leakage_fine.tsv" 'rows=2' 'inside>0.75'
@@ -20,7 +21,6 @@ awk -F'\t' 'NR <= 3' "$3/leakage.tsv" > "$3/leakage_fine.tsv"   # bands 0 and 1
 # 0.005 of the volume reading (bound 0.01, ~3x their sd); the plane z = 0
 # reads 0.223 (above 0.210 and above the volume by 0.026; bound: above by
 # > 0.01), the plane z = 1/2 0.170 (below the volume by 0.027; bound 0.01).
-. "$(dirname "$0")/tsv.sh"
 "$2" "$3/variance_readings.tsv" 'rows=12' 'paper==0.21' 'var3d>0.1' 'var3d<0.3'
 tsv_awk 'FNR > 1 {val[FNR - 2] = n("var3d")}
   END {

@@ -2,8 +2,8 @@
 # L2 quick run (128^2, 7 bands, band 0 finest; size sweep 64..256, 3 seeds per
 # size, transfer matrix from 4 noises; one exemplar, a 96^2 fBm rendered here
 # by noiselab-render). Bounds are from the quick run over seeds 1..20, not
-# one seed's draw (the per-band eq. 12 bounds from before the estimator
-# comparison, when the true weights had another stream; unchanged in kind):
+# one seed's draw (the per-band eq. 12 bounds were measured with another
+# random stream of true weights; the same kind of spread):
 #  - per band, eq. 12's est - true: band 0 mean +0.012 sd 0.061 (bound 0.2);
 #    bands 1-3 sd 0.084, 0.095, 0.120 (bound 0.37). Leakage between octaves
 #    (L1) moves power between neighbours; bands 4-6 have too few coefficients
@@ -32,6 +32,7 @@
 #    re-synthesise the tapered band powers better: resid_taper below 0.75x
 #    eq. 12's (ratio 0.05..0.51 over the seeds and two fBm exemplars).
 set -euo pipefail
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name; refused
 exp="$1" out="$3"
 mkdir -p "$out/exemplars"
@@ -39,7 +40,8 @@ mkdir -p "$out/exemplars"
 # The main run reads the shipped photographs, as reproduce does, so that the
 # sanitizer check can compare this very run with results/quick; the fBm
 # exemplar gets a run of its own (no size sweep: max_size 64, 2 seeds).
-"$exp" --quick $NOIMG --threads 2 --exemplars "$(cd "$(dirname "$0")/.." && pwd)/data/exemplars" --out "$out"
+exemplars="$(cd "$(dirname "$0")/.." && pwd)/data/exemplars"
+"$exp" --quick "${NOIMG[@]}" --threads 2 --exemplars "$exemplars" --out "$out"
 # The photographs' fits are nl_parallel_for items (nl_study_exemplar_fits): one
 # thread gives the same photos.tsv byte for byte (the size sweep, which does
 # not enter it, cut to 64 pixels and 2 seeds).
@@ -51,13 +53,13 @@ mkdir -p "$out/exemplars"
 # thread-identity rerun (tsv.sh): release build only.
 "$exp" --quick --no-images --threads 2 --exemplars "$out/exemplars" --set max_size=64 --set sweep_seeds=2 --out "$out/fbm" > /dev/null
 if thread_identity; then
-  "$exp" --quick --no-images --threads 1 --exemplars "$(cd "$(dirname "$0")/.." && pwd)/data/exemplars" --set max_size=64 \
+  "$exp" --quick --no-images --threads 1 --exemplars "$exemplars" --set max_size=64 \
     --set sweep_seeds=2 --out "$out.t1" > /dev/null
   cmp "$out/photos.tsv" "$out.t1/photos.tsv"
   cmp "$out/weights.tsv" "$out.t1/weights.tsv"
   for t in estimators bands; do cmp "$out.t1/$t.tsv" "$out/fbm/$t.tsv"; done
 fi
-"$2" "$out/weights.tsv" 'rows=7' $(images noise.png) 'corrected>=0'
+"$2" "$out/weights.tsv" 'rows=7' image:noise.png 'corrected>=0'
 tsv_awk 'NR == 1 || n("band") == 0' "$out/weights.tsv" > "$out/weights_b0.tsv"
 tsv_awk 'NR == 1 || (n("band") >= 1 && n("band") <= 2)' "$out/weights.tsv" > "$out/weights_b12.tsv"
 tsv_awk 'NR == 1 || n("band") == 3' "$out/weights.tsv" > "$out/weights_b3.tsv"

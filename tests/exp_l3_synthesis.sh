@@ -32,11 +32,12 @@
 #    every replicate on >= 1 photo and its mean KS < 0.03 on both (gauss33's
 #    clouds KS is 0.229). Both quick photos are colour: photo_sat_max > 0.
 #  - the gauss33 and paper10 rows of photos_mean are those of results/quick
-#    (made before the third representation existed) to 1e-9 relative.
+#    to 1e-9 relative (a third representation leaves theirs unchanged).
 set -euo pipefail
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 ex="$(cd "$(dirname "$0")/../data/exemplars" && pwd)"
-"$1" --quick $NOIMG --threads 2 --out "$3" --exemplars "$ex"
+"$1" --quick "${NOIMG[@]}" --threads 2 --out "$3" --exemplars "$ex"
 # The procedural exemplars' K syntheses are nl_parallel_for items
 # (nl_study_example_synth_seeds): one thread gives the same tables byte for
 # byte (the photographs cut to one at 16 pixels: they do not enter these).
@@ -44,7 +45,7 @@ ex="$(cd "$(dirname "$0")/../data/exemplars" && pwd)"
 # (nl_study_example_photos; rows added in item order): two threads give the
 # same photo tables as one (procedural exemplars cut to 16 pixels here).
 # Both are thread-identity reruns (tsv.sh): release build only (the
-# one-thread rerun was 12.7 s of CPU under the sanitizers, issue 17).
+# one-thread rerun costs 12.7 s of CPU under the sanitizers).
 if thread_identity; then
   "$1" --quick --no-images --threads 1 --set photos=2 --set photo_size=32 --out "$3.t1" --exemplars "$ex" >/dev/null
   for t in ks spline gauss spectrum_wavelet spectrum_clouds spectrum_granite spectrum_marble; do cmp "$3/$t.tsv" "$3.t1/$t.tsv"; done
@@ -62,12 +63,12 @@ tsv_awk 'NR == 1 || v("variant") == "rgb_hist"' "$3/ks.tsv" > "$3/ks_rgb.tsv"
 
 "$2" "$3/ks_rgb.tsv" 'rows=4' 'corr_err>0.5'
 "$2" "$3/spline.tsv" 'rows=4' 'max_abs_diff_fc_vs_steffen>1e-5' 'max_abs_diff_fc_vs_steffen<0.1'
-"$2" "$3/spectrum_granite.tsv" 'rows>=60' 'exemplar>0' 'synthesis>0' $(images synthesis_clouds.png)
+"$2" "$3/spectrum_granite.tsv" 'rows>=60' 'exemplar>0' 'synthesis>0' image:synthesis_clouds.png
 "$2" "$3/gauss.tsv" 'rows=2' 'n==16384'
 tsv_awk 'NR > 1 { ks[v("representation")] = n("ks_mean"); t[v("representation")] = n("tail_mean") }
   END { if (!(ks["gauss33"] < 0.015 && ks["gauss33"] < ks["paper10"] && t["gauss33"] > 0.009 && t["gauss33"] < 0.014 && t["paper10"] > 0.05)) {
           printf "gauss.tsv: gauss33 KS %g tail %g, paper10 KS %g tail %g\n", ks["gauss33"], t["gauss33"], ks["paper10"], t["paper10"]; exit 1 } }' "$3/gauss.tsv"
-"$2" "$3/photos_summary.tsv" 'rows=18' 'ks>0' 'bands_checked>=1' $(images photos_montage.png)
+"$2" "$3/photos_summary.tsv" 'rows=18' 'ks>0' 'bands_checked>=1' image:photos_montage.png
 "$2" "$3/photos.tsv" 'rows>=60' 'power_photo>=0' 'share<=1'
 "$2" "$3/photos_mean.tsv" 'rows=6' 'replicates==3' 'passes>=0' 'passes<=3' 'photo_sat_max>0'
 tsv_awk 'v("exemplar") == "craters" { ks[v("representation")] = n("ks_mean"); sp[v("representation")] = n("speckle_mean") }

@@ -17,12 +17,13 @@
 # ratio is 0.993-1.003 (bound 1 +- 0.02); histogram matching of the edited
 # image raises them to 1.044-1.083 (bound 1.07 +- 0.08).
 # Solid slices keep the 2D channel distributions: mean KS 2D vs slice
-# 0.086-0.237 (bound 0.43, as for single seeds before). The morph's matrix
+# 0.086-0.237 (bound 0.43, a single seed's bound). The morph's matrix
 # stays a rotation (det 1, orthogonal to rounding: measured |det - 1| and
 # orth_err <= 9e-16; 1e-9 leaves room for any BLAS kernel).
 set -euo pipefail
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
-"$1" --quick $NOIMG --out "$3"
+"$1" --quick "${NOIMG[@]}" --out "$3"
 tsv_awk 'NR == 1 || n("band") < 3' "$3/editing.tsv" > "$3/editing_fine.tsv"
 tsv_awk 'NR == 1 || n("band") >= 4' "$3/editing.tsv" > "$3/editing_coarse.tsv"
 "$2" "$3/editing_fine.tsv" 'rows=3' 'ratio<0.7' 'ratio_nohist<0.7' 'expected==0.0625' 'floor>0' 'ratio_sd>0'
@@ -36,6 +37,6 @@ tsv_awk 'FNR > 1 {q = n("floor_from_leakage") / n("floor_fine_nohist");
   if (q < 0.5 || q > 2.5) {printf "floor from leakage / measured floor %.3f outside 0.5-2.5\n", q; exit 1}}' "$3/editing_summary.tsv"
 "$2" "$3/editing_coarse.tsv" 'rows>=2' 'ratio~1.07:0.08' 'ratio_nohist~1:0.02'
 "$2" "$3/solid.tsv" 'rows=3' 'ks_2d_vs_slice<0.43'
-"$2" "$3/morph.tsv" 'rows=5' 'det~1:1e-9' 'orth_err<1e-9' $(images morph.png) $(images editing.png)
+"$2" "$3/morph.tsv" 'rows=5' 'det~1:1e-9' 'orth_err<1e-9' image:morph.png image:editing.png
 grep -q 'ratio = floor' "$3/report.md" && ! grep -q '~0.4-0.6' "$3/report.md"
 test -s "$3/report.md" && test -s "$3/manifest.tsv"

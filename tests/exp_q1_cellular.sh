@@ -5,10 +5,11 @@
 # larger m on ties its mean count is near 4.2 and chi-square still rejects it;
 # bad lambda / M refused.
 set -euo pipefail
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 exp="$1" expect="$2" out="$3"
-"$exp" --quick $NOIMG --out "$out" >/dev/null
-"$expect" "$out/summary.tsv" rows=3 'mean_f1_theory>0.34' 'mean_f1_theory<0.36' $(images planes.png)
+"$exp" --quick "${NOIMG[@]}" --out "$out" >/dev/null
+"$expect" "$out/summary.tsv" rows=3 'mean_f1_theory>0.34' 'mean_f1_theory<0.36' image:planes.png
 tsv_awk 'v("rule")=="inverse-cdf" && (n("chi2_rejects")!=0 || n("ks_rejects")!=0 || n("mean_count")<3.8 || n("mean_count")>4.2) {print "row " NR " (" v("rule") ") out of range: " $0; exit 1}
             v("rule")=="closest" && (n("chi2_rejects")!=n("seeds") || n("ks_rejects")!=n("seeds")) {print "row " NR " (" v("rule") ") out of range: " $0; exit 1}
             v("rule")=="closest-last" && (n("chi2_rejects")!=n("seeds") || n("mean_count")<4.1 || n("mean_count")>4.3) {print "row " NR " (" v("rule") ") out of range: " $0; exit 1}' "$out/summary.tsv"

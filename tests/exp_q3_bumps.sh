@@ -8,10 +8,11 @@
 # step); bump_mean step ratios 0.80, 0.61, 0.55 (spread 0.01; checked < 0.9).
 # shade = 1/sqrt2 to 1e-12: one dot product with the flat normal (0, 0, 1).
 set -euo pipefail
+# shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 exp="$1" expect="$2" out="$3"
-"$exp" --quick $NOIMG --out "$out" >/dev/null
-"$expect" "$out/bumps.tsv" rows=6 $(images bumps.png) file:report.md
+"$exp" --quick "${NOIMG[@]}" --out "$out" >/dev/null
+"$expect" "$out/bumps.tsv" rows=6 image:bumps.png file:report.md
 tsv_awk 'NR==2 && (n("bump_mean")!=0 || n("bump_max")!=0 || n("shade_sd")!=0) {print "original plane not flat"; exit 1}
             NR==2 && (n("shade_mean") - 0.70710678118654752 > 1e-12 || 0.70710678118654752 - n("shade_mean") > 1e-12) {print "flat shade " n("shade_mean"); exit 1}
             NR>2 && (n("shade_sd")<=0.01) {print "no shading variation at row " NR; exit 1}

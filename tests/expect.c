@@ -7,6 +7,10 @@
  *                             number, optionally scaled: B*1.5
  *     A~B:TOL                 |A - B| <= TOL on every row
  *     file:NAME               NAME exists beside the table and is not empty
+ *     image:NAME              as file:NAME when the run wrote images: the
+ *                             manifest.tsv beside the table says "images yes";
+ *                             a run with --no-images ("images no") writes none,
+ *                             and the condition holds
  * Prints the first failing row and exits 1; exits 2 on a malformed call.
  */
 #include "table/nl_table.h"
@@ -37,18 +41,65 @@ static double operand(const char *s, size_t row)
   return scale * v;
 }
 
+/* NAME beside the table, as a path (the caller frees it). */
+static char *beside(const char *name)
+{
+  char *dir = nl_xstrdup(path);
+  char *slash = strrchr(dir, '/');
+  if (slash)
+    *slash = '\0';
+  else
+    strcpy(dir, ".");
+  char *f = nl_path_join(dir, name);
+  free(dir);
+  return f;
+}
+
+static int file_ok(const char *name)
+{
+  char *f = beside(name);
+  struct stat st;
+  int ok = stat(f, &st) == 0 && st.st_size > 0;
+  if (!ok)
+    fprintf(stderr, "expect: %s missing or empty\n", f);
+  free(f);
+  return ok;
+}
+
+/* Whether the run that wrote the table wrote images: the "images" row of the
+ * manifest beside it (the harness writes "yes", or "no" under --no-images).
+ * A manifest without that row is a malformed call: exit 2. */
+static int run_wrote_images(void)
+{
+  char *m = beside("manifest.tsv");
+  nl_table *man;
+  nl_error err;
+  if (nl_table_read(m, NL_TABLE_TEXT, &man, &err)) {
+    fprintf(stderr, "expect: image: needs the run's manifest: %s\n", err.msg);
+    exit(2);
+  }
+  int wrote = -1;
+  for (size_t r = 0; r < man->nrows; r++) {
+    const char *key = nl_table_text(man, r, "key");
+    const char *value = nl_table_text(man, r, "value");
+    if (key && value && !strcmp(key, "images"))
+      wrote = !strcmp(value, "yes");
+  }
+  nl_table_free(man);
+  if (wrote < 0) {
+    fprintf(stderr, "expect: %s has no 'images' row\n", m);
+    exit(2);
+  }
+  free(m);
+  return wrote;
+}
+
 static int check(const char *cond)
 {
-  if (!strncmp(cond, "file:", 5)) {
-    char *dir = nl_xstrdup(path), *slash = strrchr(dir, '/');
-    if (slash) *slash = '\0'; else strcpy(dir, ".");
-    char *f = nl_path_join(dir, cond + 5);
-    struct stat st;
-    int ok = stat(f, &st) == 0 && st.st_size > 0;
-    if (!ok) fprintf(stderr, "expect: %s missing or empty\n", f);
-    free(dir); free(f);
-    return ok;
-  }
+  if (!strncmp(cond, "file:", 5))
+    return file_ok(cond + 5);
+  if (!strncmp(cond, "image:", 6))
+    return !run_wrote_images() || file_ok(cond + 6);
   if (!strncmp(cond, "rows", 4)) {
     int ge = cond[4] == '>';
     long n = atol(cond + (ge ? 6 : 5));

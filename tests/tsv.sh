@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # tests/tsv.sh - tables by column name for the shell tests (sourced:
 #   . "$(dirname "$0")/tsv.sh").
 # Tests address a column by its header, never by its position, so that a
@@ -12,6 +13,8 @@
 #         n("name")    the same as a number
 #       A name the file does not have stops awk with exit 2 and a message.
 #   tsv_cut FILE NAME      the column NAME of FILE (header included), as cut -f
+#   tsv_slopes FILE LO HI  a spectrum's log-log slopes per column (below)
+# shellcheck disable=SC2016  # awk's $ fields, for awk, not for the shell
 TSV_AWK_LIB='
 FNR == 1 { split("", TSV_COL); for (TSV_I = 1; TSV_I <= NF; TSV_I++) TSV_COL[$TSV_I] = TSV_I }
 function col(name) {
@@ -33,10 +36,28 @@ tsv_cut() {
   tsv_awk -v name="$2" '{ print v(name) }' "$1"
 }
 
+# tsv_slopes FILE LO HI: for a spectrum table (a column freq and one power
+# column per setting), the least-squares slope of log(power) on log(freq)
+# over LO <= freq <= HI, per setting: a table with the settings' names as
+# its header and one row of slopes, for expect.
+tsv_slopes() {
+  tsv_awk -v lo="$2" -v hi="$3" '
+    FNR == 1 { k = col("freq"); nf = NF; head = ""
+      for (i = 1; i <= NF; i++) if (i != k) head = head (head == "" ? "" : "\t") $i
+      next }
+    $k >= lo && $k <= hi { x = log($k); m++; sx += x; sxx += x * x
+      for (i = 1; i <= nf; i++) if (i != k) { sy[i] += log($i); sxy[i] += x * log($i) } }
+    END { if (m < 3) { print "tsv_slopes: " m " rows in [" lo ", " hi "]" > "/dev/stderr"; exit 2 }
+      print head; row = ""
+      for (i = 1; i <= nf; i++) if (i != k)
+        row = row (row == "" ? "" : "\t") (m * sxy[i] - sx * sy[i]) / (m * sxx - sx * sx)
+      print row }' "$1"
+}
+
 # What the release build runs and the sanitizer build (NL_TEST_SANITIZE, set
 # by tests/meson.build) leaves out: work that tests the bytes or the numbers
 # of a result, which the sanitizers do not change, once the first run of the
-# command has run under them (issue 17: the test suite's CPU time). One test
+# command has run under them (the test suite's CPU time). One test
 # of the build, three names for the three kinds of such work:
 unsanitized() { [ "${NL_TEST_SANITIZE:-none}" = none ]; }
 # thread_identity: an experiment run again with --threads 1 and compared with
@@ -51,15 +72,28 @@ byte_reruns() { unsanitized; }
 # the sanitizer build runs it smaller and checks only that it runs cleanly
 # (cli_example's three 512^2 syntheses of the photograph, 9 s of CPU there).
 full_scale() { unsanitized; }
-# NOIMG: the option of an experiment's first run. The sanitizer build's runs
-# make every image (under the sanitizers) but write none (--no-images; the
-# image writer runs under them in test_image, cli_render and cli_example):
-# the first image write starts OpenImageIO, about 0.85 s of CPU there, more
-# than most quick runs (issue 17). Reruns that compare tables pass
-# --no-images in both builds. `images NAME...` gives expect's file: checks
-# of the images a run wrote: none under NOIMG.
-NOIMG=""; unsanitized || NOIMG="--no-images"
-images() { if unsanitized; then printf 'file:%s ' "$@"; fi; }
+# same_on_one_thread EXP OUT ARGS...: EXP's quick run in OUT (made with
+# --threads 2 and ARGS) repeated on one thread into OUT.t1, tables only;
+# noiselab-check then compares every table and the manifest's parameters
+# under the experiment's own rules (timing columns ignored). Work spread
+# over threads must not change the arithmetic. A thread-identity rerun:
+# release build only.
+same_on_one_thread() {
+  local exp="$1" out="$2"
+  shift 2
+  thread_identity || return 0
+  "$exp" --quick --no-images --threads 1 --out "$out.t1" "$@" >/dev/null \
+    && "$(dirname "$exp")/../tools/noiselab-check" "$out" "$out.t1" >/dev/null
+}
+# NOIMG: the options of an experiment's first run, an array ("${NOIMG[@]}").
+# The sanitizer build's runs make every image (under the sanitizers) but
+# write none (--no-images; the image writer runs under them in test_image,
+# cli_render and cli_example): the first image write starts OpenImageIO,
+# about 0.85 s of CPU there, more than most quick runs. Reruns that compare
+# tables pass --no-images in both builds. expect's image:NAME checks an image
+# only when the run's manifest says it wrote images.
+# shellcheck disable=SC2034  # read by the scripts that source this file
+if unsanitized; then NOIMG=(); else NOIMG=(--no-images); fi
 
 # refused CMD...: CMD must refuse its input as the guide says bad input is
 # refused: exit 2 with a one-line message on stderr. On anything else it

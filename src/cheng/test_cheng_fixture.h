@@ -1,4 +1,4 @@
-/* test_cheng_fixture.h - what test_cheng.c and test_reproduce.c share: a
+/* test_cheng_fixture.h - what test_cheng.c and test_cheng_repro.c share: a
  * control pattern made from a built-in shape, and a problem on a seeded
  * table (opened and closed in one call each, so a test states only what it
  * varies: grid, config, seed). */

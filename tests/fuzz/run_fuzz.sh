@@ -17,7 +17,10 @@ if [ -z "$fuzzer" ]; then
   echo "fuzz: clang with libFuzzer not found at configure time (Debian: clang libclang-rt-14-dev)"
   exit 77
 fi
-[ -d "$corpus" ] && [ -n "$(ls -A "$corpus")" ] || { echo "fuzz: no seed corpus in $corpus"; exit 1; }
+if [ ! -d "$corpus" ] || [ -z "$(ls -A "$corpus")" ]; then
+  echo "fuzz: no seed corpus in $corpus"
+  exit 1
+fi
 rm -rf "$work"; mkdir -p "$work/corpus"
 log="$work/fuzz.log"
 # The targets write each input to a file in $TMPDIR: in memory when possible
@@ -29,7 +32,8 @@ TMPDIR="$tmp" "$fuzzer" -runs="$runs" -seed=1 -max_len=8192 -timeout=20 -rss_lim
   -artifact_prefix="$work/" -print_final_stats=1 "$@" "$work/corpus" "$corpus" >"$log" 2>&1 || rc=$?
 if [ "$rc" != 0 ]; then
   tail -n 60 "$log"
-  crash="$(ls "$work"/crash-* "$work"/leak-* "$work"/timeout-* "$work"/oom-* 2>/dev/null | head -n 1 || true)"
+  crash="$(find "$work" -maxdepth 1 \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' \
+    -o -name 'oom-*' \) -print -quit)"
   echo "fuzz: $(basename "$fuzzer") failed (exit $rc); reproduce: $fuzzer ${crash:-<input>}"
   exit 1
 fi

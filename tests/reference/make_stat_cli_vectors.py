@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Reference vectors for `noiselab stat` (issue 18.4): one-sample KS against
+"""Reference vectors for `noiselab stat`: one-sample KS against
 named distributions with scipy's loc/scale convention and against a
 tabulated CDF, Kuiper's V against the same CDFs, Ward linkage.
 

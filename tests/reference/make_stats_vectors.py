@@ -66,7 +66,8 @@ def ks_samples():
             elif kind == "pow0.9":
                 u = u ** 0.9
             cases.append((f"ks_{kind}_{n}_s{seed}", TWO_PI * u))
-    # FACTS.md's reference: default_rng(0), 512 uniforms on [0, 2pi)
+    # As many angles as a 2D gradient table of Cheng's (cheng2009: 512 gradient
+    # vectors): default_rng(0), 512 uniforms on [0, 2pi)
     cases.append(("ks_facts_512", np.random.default_rng(0).uniform(0, TWO_PI, 512)))
     # p near 1: a stratified (jittered-grid) sample is far more even than chance
     rng = np.random.default_rng(7)

@@ -1,7 +1,7 @@
-/* Tests of noise reproduction (nl_cheng_pool.c, nl_cheng_model.c): E_R's
- * incremental state, pools independent of threads, the circular
- * representation, recovery of a known mixture's K, sampling, degenerate
- * cases. */
+/* Tests of nl_cheng_repro.h, noise reproduction (nl_cheng_pool.c,
+ * nl_cheng_model.c): E_R's incremental state, pools independent of
+ * threads, the circular representation, recovery of a known mixture's K,
+ * sampling, degenerate cases. */
 #include "cheng/test_cheng_fixture.h"
 
 #include <gsl/gsl_randist.h>

@@ -1,4 +1,6 @@
-/* Tests of nl_stats.h against scipy 1.10 / astropy 5.2 vectors
+/* Tests of nl_gof.c, the goodness-of-fit tests of nl_stats.h (with the KS
+ * distributions of nl_ks_dist.c and the named laws of nl_dist.c they use),
+ * against scipy 1.10 / astropy 5.2 vectors
  * (tests/reference/make_stats_vectors.py). Tolerances:
  *   KS, Kuiper statistics D, D+, D-, V: 1e-15 absolute (same expressions as
  *     scipy, so bit-equal is expected; the slack only absorbs libm).
@@ -81,9 +83,13 @@ static void ks_case(const nl_table *t, size_t r, const double *x, size_t n)
 
 NL_TEST(ks_test_matches_scipy_kstest) { each_sample("ks_one.tsv", ks_case); }
 
-NL_TEST(facts_reference_numbers)
+NL_TEST(reference_sample_of_512_angles)
 {
-  /* FACTS.md: default_rng(0), 512 uniforms on [0, 2pi) */
+  /* numpy's default_rng(0), 512 uniforms on [0, 2pi): as many angles as a
+   * 2D gradient table of Cheng's holds (cheng2009, 512 gradient vectors).
+   * The values are scipy 1.10's kstest, the ks_facts_512.tsv row of
+   * ks_one.tsv (tests/reference/make_stats_vectors.py), written out here so
+   * that a regenerated vector file cannot move them. */
   size_t n;
   double *x = read_column("ks_facts_512.tsv", &n);
   nl_stats_ks_result res;
@@ -255,7 +261,8 @@ static int cmp_vi(const void *a, const void *b)
  * order (bit for bit; -0 and +0 are equal, so only their multiset within a
  * run of zeros is compared), on wide, narrow (skipped passes), negative,
  * tied, signed-zero and infinite data; argsort against qsort by (value,
- * index), the by-example gaussianization's old order. */
+ * index), the order the by-example gaussianization's committed tables were
+ * made with. */
 NL_TEST(radix_sort_matches_qsort)
 {
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
@@ -314,8 +321,8 @@ NL_TEST(bad_input_is_an_error)
   double y[] = {0.1, 0.2, 1.5};
   NL_CHECK(nl_stats_chisq_test_uniform(y, 3, 1, 0, 1, &c, &err) == NL_EINVAL);
   NL_CHECK(nl_stats_chisq_test_uniform(y, 3, 2, 0, 1, &c, &err) == NL_EINVAL && strstr(err.msg, "outside"));
-  /* A CDF outside [0, 1]: the message names the value and where (it once
-   * read both after freeing them; the sanitizer build checks that). */
+  /* A CDF outside [0, 1]: the message names the value and where, read
+   * before anything is freed (the sanitizer build checks that). */
   NL_CHECK(nl_stats_ks_test(y, 3, bad_cdf, NULL, &r, &err) == NL_EINVAL &&
            strstr(err.msg, "CDF returned 2 at x = 0.2, outside [0, 1]"));
 }
