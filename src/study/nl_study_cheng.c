@@ -283,23 +283,6 @@ double nl_study_column_min(const nl_table *t, const char *col)
   return m;
 }
 
-nl_table *nl_study_cheng_table41(const nl_table *runs, const double (*thesis)[NL_STUDY_TABLE41_COLS], int npair)
-{
-  const char *cc[] = {"panel", "w1", "w2", "paper_E_ks", "E_ks", "E_ks_sd", "paper_E_con", "E_con", "E_con_sd",
-                      "E_ks_swapped", "E_con_swapped", "p_ks_min", "p_kuiper_min"};
-  nl_table *cmp = nl_table_alloc(sizeof cc / sizeof *cc, cc);
-  for (int i = 0; i < npair; i++) {
-    size_t p = 2 * (size_t)i, s = p + 1;   /* printed, swapped */
-    char panel[4] = {(char)('a' + i), 0};
-    nl_table_append(cmp, "sdddddddddddd", panel, thesis[i][0], thesis[i][2], thesis[i][1],
-                    nl_table_value(runs, p, "E_ks"), nl_table_value(runs, p, "E_ks_sd"), thesis[i][3],
-                    nl_table_value(runs, p, "E_con"), nl_table_value(runs, p, "E_con_sd"),
-                    nl_table_value(runs, s, "E_ks"), nl_table_value(runs, s, "E_con"),
-                    nl_table_value(runs, p, "p_ks_min"), nl_table_value(runs, p, "p_kuiper_min"));
-  }
-  return cmp;
-}
-
 int nl_study_cheng_control_text(nl_harness *r, const nl_table *sum, int nlabels)
 {
   double rlo = INFINITY, rhi = -INFINITY, clo = INFINITY, chi = -INFINITY;

@@ -188,11 +188,6 @@ void nl_study_cheng_montage(nl_harness *r, nl_image **panels, const char *const 
 /* The smallest value of column `col` over the table's rows (+inf if none). */
 double nl_study_column_min(const nl_table *t, const char *col);
 
-/* C4's Table 4.1, ours beside the thesis's: from the summary rows of the
- * six pairs (printed reading at rows 0, 2, 4, ..., swapped at 1, 3, 5, ...) and
- * the thesis's rows {w1, E_KS, w2, E_Con}, a table of panel, w1, w2,
- * paper_E_ks, E_ks, E_ks_sd, paper_E_con, E_con, E_con_sd, E_ks_swapped,
- * E_con_swapped, p_ks_min, p_kuiper_min (caller frees). */
 /* Between-condition tests: a table of group, quantity, a, b, mean_a, sd_a,
  * mean_b, sd_b, seeds, diff_pct (100 (mean_a - mean_b) / mean_b) and p_welch
  * (Welch's t-test on the two rows' means and sds over their seeds; both sds 0:
@@ -213,8 +208,6 @@ double nl_study_cheng_welch_add(nl_table *t, const nl_table *sum, size_t ra, siz
  * every row whose optimised E_Con is worse than the best constant image's,
  * named as not controlled in that sense. Returns the number of such rows. */
 int nl_study_cheng_control_text(nl_harness *r, const nl_table *sum, int nlabels);
-#define NL_STUDY_TABLE41_COLS 4
-nl_table *nl_study_cheng_table41(const nl_table *runs, const double (*thesis)[NL_STUDY_TABLE41_COLS], int npair);
 
 /* ---- what C5 and C6 share (nl_study_cheng_repro.c) ----------------------- */
 
