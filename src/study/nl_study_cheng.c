@@ -141,25 +141,6 @@ nl_table *nl_study_cheng_cdf_table(const nl_noise_grad2 *const *tables, const ch
   return t;
 }
 
-nl_table *nl_study_cheng_hist_table(const nl_noise_grad2 *const *tables, const char *const *names, int n,
-                                    size_t bins)
-{
-  const char *cols[16];
-  cols[0] = "theta";
-  for (int i = 0; i < n; i++) cols[i + 1] = names[i];
-  nl_table *t = nl_table_alloc((size_t)n + 1, cols);
-  gsl_histogram *h[16];
-  for (int i = 0; i < n; i++) h[i] = nl_stats_histogram_uniform(tables[i]->angle, tables[i]->m, bins, 0, NL_TWO_PI, NULL, NULL);
-  double row[16];
-  for (size_t b = 0; b < bins; b++) {
-    row[0] = (b + 0.5) * NL_TWO_PI / (double)bins;
-    for (int i = 0; i < n; i++) row[i + 1] = h[i]->bin[b];
-    nl_table_append_doubles(t, row);
-  }
-  for (int i = 0; i < n; i++) gsl_histogram_free(h[i]);
-  return t;
-}
-
 nl_table *nl_study_cheng_matrix_table(const double *v, int w, int h)
 {
   char (*names)[16] = nl_xmalloc((size_t)w * sizeof *names);

@@ -119,9 +119,6 @@ void nl_study_cheng_summary_add(nl_table *t, int nlabels, const char *const *lab
                                 const nl_cheng_eval *evs, int k);
 /* ECDF of each table's angles: F = i/M and u_NAME = sorted angle / 2 pi. */
 nl_table *nl_study_cheng_cdf_table(const nl_noise_grad2 *const *tables, const char *const *names, int n);
-/* Histogram of each table's angles in `bins` bins: theta (bin centre), NAME counts. */
-nl_table *nl_study_cheng_hist_table(const nl_noise_grad2 *const *tables, const char *const *names,
-                                    int n, size_t bins);
 /* A w x h raster as a table of h rows and w columns c0..c{w-1} (gnuplot's
  * "matrix columnheaders" layout, for height maps). */
 nl_table *nl_study_cheng_matrix_table(const double *v, int w, int h);
