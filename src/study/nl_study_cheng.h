@@ -137,17 +137,10 @@ typedef struct {
   const char *patterns;   /* the --patterns folder */
   const char *role;       /* NULL: runs from the run's seed; else from nl_seed_stream(seed, role, 0),
                              so an experiment repeating another's setting gets runs of its own */
-  nl_table *cost;         /* NULL, or nl_study_cheng_cost_alloc's table: nl_study_cheng_seeds
-                             appends each row's cost (moves, CPU seconds per optimisation) */
+  nl_table *cost;         /* NULL, or a table of columns case, seeds, moves, cpu_s, cpu_s_sd,
+                             moves_per_s: nl_study_cheng_rows_add appends each row's cost
+                             (labels joined by "/"; means per optimisation over the seeds) */
 } nl_study_cheng;
-/* The cost of the optimisations behind a summary: case (the row's labels joined
- * by "/"), seeds, moves (mean per optimisation), cpu_s (mean thread CPU seconds
- * per full multi-level optimisation, set-up included), cpu_s_sd, moves_per_s
- * (moves over CPU seconds, summed over seeds). Times are never regression-checked
- * (nl_study_cheng_cost_report declares them "ignore"). */
-nl_table *nl_study_cheng_cost_alloc(void);
-/* Writes timing.tsv, its table and a sentence formatted from it into the report. */
-void nl_study_cheng_cost_report(nl_harness *r, const nl_table *t);
 /* nl_study_cheng_begin into s (same checks, same exits). */
 void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title, int *argc, char **argv);
 /* nl_study_cheng_params_done on s's run and config. */
