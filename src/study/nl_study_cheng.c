@@ -141,18 +141,6 @@ nl_table *nl_study_cheng_cdf_table(const nl_noise_grad2 *const *tables, const ch
   return t;
 }
 
-nl_table *nl_study_cheng_matrix_table(const double *v, int w, int h)
-{
-  char (*names)[16] = nl_xmalloc((size_t)w * sizeof *names);
-  const char **cols = nl_xmalloc((size_t)w * sizeof *cols);
-  for (int x = 0; x < w; x++) { snprintf(names[x], sizeof names[x], "c%d", x); cols[x] = names[x]; }
-  nl_table *t = nl_table_alloc((size_t)w, cols);
-  for (int y = 0; y < h; y++) nl_table_append_doubles(t, v + (size_t)y * w);
-  free(cols);
-  free(names);
-  return t;
-}
-
 void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title, int *argc, char **argv)
 {
   s->r = nl_study_cheng_begin(name, title, argc, argv, &s->c, &s->grid, &s->patterns);
@@ -298,17 +286,6 @@ int nl_study_cheng_control_text(nl_harness *r, const nl_table *sum, int nlabels)
     nl_harness_text(r, "Every row's optimised E_Con is below the best constant image's (con_vs_const < 1).\n");
   free(list);
   return worse;
-}
-
-nl_table *nl_study_cheng_pattern_table(const nl_cheng_pattern *p)
-{
-  size_t n = (size_t)p->grid * (size_t)p->grid;
-  double *v = nl_xmalloc(n * sizeof *v);
-  for (size_t i = 0; i < n; i++) v[i] = -1;
-  for (size_t i = 0; i < p->n; i++) v[p->cell[i]] = p->d[i];
-  nl_table *t = nl_study_cheng_matrix_table(v, p->grid, p->grid);
-  free(v);
-  return t;
 }
 
 nl_table *nl_study_cheng_welch_alloc(void)

@@ -79,12 +79,6 @@ nl_image *nl_study_cheng_value_image(const nl_noise_grad2 *g, const nl_cheng_con
 nl_image *nl_study_cheng_value_image_raw(const nl_noise_grad2 *g, const nl_cheng_config *c, int size);
 nl_image *nl_study_cheng_texture_image(const nl_noise_grad2 *g, const nl_cheng_config *c, int size);
 nl_image *nl_study_cheng_pattern_panel(const nl_cheng_pattern *p, int size);
-/* Shaded relief of a w x h height field on the unit square: Lambertian
- * light from the north-west, 45 degrees up, heights exaggerated by zscale. */
-nl_image *nl_study_cheng_relief_image(const double *height, int w, int h, double zscale);
-/* The pattern's targets D as a grid x grid matrix table (gnuplot's matrix
- * layout; cells without control hold -1). */
-nl_table *nl_study_cheng_pattern_table(const nl_cheng_pattern *p);
 
 /* ---- what C1-C7 share (nl_study_cheng.c) -------------------------------- */
 
@@ -119,9 +113,6 @@ void nl_study_cheng_summary_add(nl_table *t, int nlabels, const char *const *lab
                                 const nl_cheng_eval *evs, int k);
 /* ECDF of each table's angles: F = i/M and u_NAME = sorted angle / 2 pi. */
 nl_table *nl_study_cheng_cdf_table(const nl_noise_grad2 *const *tables, const char *const *names, int n);
-/* A w x h raster as a table of h rows and w columns c0..c{w-1} (gnuplot's
- * "matrix columnheaders" layout, for height maps). */
-nl_table *nl_study_cheng_matrix_table(const double *v, int w, int h);
 /* One Cheng experiment's run and its standard setting, so that an
  * experiment opens in two lines:
  *   nl_study_cheng s;

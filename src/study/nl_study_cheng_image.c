@@ -260,27 +260,3 @@ nl_image *nl_study_cheng_pattern_panel(const nl_cheng_pattern *p, int size)
   nl_image_free(small);
   return im;
 }
-
-nl_image *nl_study_cheng_relief_image(const double *z, int w, int h, double zscale)
-{
-  /* Light direction (towards the light): from the north-west (x -1, y -1 in
-   * image rows growing down), 45 degrees above the horizon. */
-  const double lx = -0.5, ly = -0.5, lz = sqrt(0.5);
-  nl_image *im = nl_image_alloc(w, h, 3);
-  for (int y = 0; y < h; y++)
-    for (int x = 0; x < w; x++) {
-      int x0 = x > 0 ? x - 1 : x, x1 = x + 1 < w ? x + 1 : x, y0 = y > 0 ? y - 1 : y, y1 = y + 1 < h ? y + 1 : y;
-      /* slopes per unit length of the unit square */
-      double dzdx = zscale * (z[(size_t)y * w + x1] - z[(size_t)y * w + x0]) * w / (x1 - x0);
-      double dzdy = zscale * (z[(size_t)y1 * w + x] - z[(size_t)y0 * w + x]) * h / (y1 - y0);
-      double nn = sqrt(dzdx * dzdx + dzdy * dzdy + 1), shade = (-dzdx * lx - dzdy * ly + lz) / nn;
-      shade = shade < 0 ? 0 : shade;
-      /* hypsometric tint by height (0..1), times the shade */
-      double t = z[(size_t)y * w + x], r = 0.25 + 0.6 * t, g = 0.45 + 0.3 * t, b = 0.25 + 0.5 * t;
-      float *px = nl_image_pixel(im, x, y);
-      px[0] = (float)fmin(1, r * (0.25 + 0.85 * shade));
-      px[1] = (float)fmin(1, g * (0.25 + 0.85 * shade));
-      px[2] = (float)fmin(1, b * (0.25 + 0.85 * shade));
-    }
-  return im;
-}
