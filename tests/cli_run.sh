@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The run harness (src/harness/nl_harness.c, nl_study_cheng_begin): a rejected run
+# The run harness (src/harness/nl_harness.c, nl_study_cheng_open): a rejected run
 # touches nothing. Bad options, bad or unknown --set values and a missing or
 # broken patterns folder give one line and exit 2, leave a finished run's
 # manifest and tables as they were, and make no folder.

@@ -7,7 +7,7 @@
  * the two rows C1 finds worse than a flat image (cloud/star, fire/gradient):
  * fixed against optimised amplitudes, over the run's seeds, on E_KS, E_Con
  * and controllability, with Welch's t-test between the two. */
-#include "amplitudes.h"
+#include "c9.h"
 #include "study/nl_study_cheng.h"
 #include "harness/nl_harness.h"
 
@@ -15,28 +15,39 @@
 #include <stdlib.h>
 
 #define NCASE 6
-#define NCOL 5
+#define NCOL  5
 
-static const struct { nl_cheng_con con; const char *pattern; } cases[NCASE] = {
-  {NL_CHENG_CON_PLAIN, "flower"}, {NL_CHENG_CON_SIN, "rings"}, {NL_CHENG_CON_ABS, "disc"},
-  {NL_CHENG_CON_FIRE, "flower"}, {NL_CHENG_CON_PLAIN, "star"}, {NL_CHENG_CON_FIRE, "gradient"}};
-static const char *const quantities[] = {"E_ks", "E_con", "r_pattern", "contrast", "roughness"};
+static const struct {
+  nl_cheng_con con;
+  const char *pattern;
+} cases[NCASE] = { { NL_CHENG_CON_PLAIN, "flower" }, { NL_CHENG_CON_SIN, "rings" },
+                   { NL_CHENG_CON_ABS, "disc" },     { NL_CHENG_CON_FIRE, "flower" },
+                   { NL_CHENG_CON_PLAIN, "star" },   { NL_CHENG_CON_FIRE, "gradient" } };
+static const char *const quantities[] = { "E_ks", "E_con", "r_pattern", "contrast", "roughness" };
 
 int main(int argc, char **argv)
 {
   nl_study_cheng s;
-  nl_study_cheng_open(&s, "c9_amplitudes", "C9 - octave amplitudes optimised with the gradients (thesis ch. 5)", &argc, argv);
+  nl_study_cheng_open(&s, "c9_amplitudes",
+                      "C9 - octave amplitudes optimised with the gradients (thesis ch. 5)", &argc,
+                      argv);
   nl_harness *r = s.r;
   int q = nl_harness_quick(r);
   int ncase = (int)nl_harness_param_int(r, "cases", q ? 4 : NCASE, 1, NCASE,
-                                        "cases run, in order: cloud/flower, marble/rings, erosion/disc, fire/flower, "
-                                        "cloud/star, fire/gradient (quick 4)");
-  double range = nl_harness_param(r, "amp_range", 4, 1, 64, "R: each optimised amplitude 1/a_l within [1/R, R] x the thesis's");
-  int size = (int)nl_harness_param_int(r, "size", q ? 96 : 192, 16, 2048, "side in pixels of the value images (quick 96)");
+                                        "cases run, in order: cloud/flower, marble/rings, "
+                                        "erosion/disc, fire/flower, cloud/star, fire/gradient "
+                                        "(quick 4)");
+  double range = nl_harness_param(r, "amp_range", 4, 1, 64,
+                                  "R: each optimised amplitude 1/a_l within [1/R, R] x the "
+                                  "thesis's");
+  int size = (int)nl_harness_param_int(r, "size", q ? 96 : 192, 16, 2048,
+                                       "side in pixels of the value images (quick 96)");
   nl_study_cheng_ready(&s);
-  const char *labels[] = {"texture", "pattern", "amplitudes"};
-  nl_table *sum = nl_study_cheng_summary_alloc(3, labels), *gains = nl_study_cheng_gains_alloc(3, labels);
-  nl_table *timing = nl_study_cheng_timing_alloc(3, labels), *tests = nl_study_cheng_welch_alloc();
+  const char *labels[] = { "texture", "pattern", "amplitudes" };
+  nl_table *sum = nl_study_cheng_summary_alloc(3, labels);
+  nl_table *gains = c9_gains_alloc(3, labels);
+  nl_table *timing = c9_timing_alloc(3, labels);
+  nl_table *tests = nl_study_cheng_welch_alloc();
   nl_image *panels[NCOL * NCASE];
   const char *plab[NCOL * NCASE];
   char group[NCASE][48];
@@ -55,26 +66,31 @@ int main(int argc, char **argv)
     pp[2 * i] = pp[2 * i + 1] = pats[i] = nl_study_cheng_pattern(&s, cases[i].pattern);
   }
   nl_cheng_eval *evs = nl_study_cheng_runs(&s, 2 * ncase, cs, pp, firsts);
+  size_t k = (size_t)nl_harness_seeds(r);
   for (int i = 0; i < ncase; i++) {
-    nl_cheng_config cf = cs[2 * i], co = cs[2 * i + 1];
+    size_t f = 2 * (size_t)i, o = f + 1;   /* fixed and optimised rows */
+    nl_cheng_config cf = cs[f];
+    nl_cheng_config co = cs[o];
     nl_cheng_pattern *pat = pats[i];
-    const char *lab[3] = {nl_cheng_con_name(cf.con), cases[i].pattern, "fixed"};
-    double ug[NL_CHENG_MAX_OCTAVES];
-    size_t k = (size_t)nl_harness_seeds(r);
-    nl_study_cheng_amp_rows(&s, &cf, evs + 2 * i * k, sum, gains, timing, 3, lab, ug);
+    const char *lab[3] = { nl_cheng_con_name(cf.con), cases[i].pattern, "fixed" };
+    double fixed_gain[NL_CHENG_MAX_OCTAVES];   /* not used: the amplitudes stay fixed */
+    c9_rows(&s, &cf, evs + f * k, sum, gains, timing, 3, lab, fixed_gain);
     lab[2] = "optimised";
-    nl_study_cheng_amp_rows(&s, &co, evs + (2 * i + 1) * k, sum, gains, timing, 3, lab, co.log_gain);
-    nl_noise_grad2 *gf = firsts[2 * i], *go = firsts[2 * i + 1];
+    c9_rows(&s, &co, evs + o * k, sum, gains, timing, 3, lab, co.log_gain);
+    nl_noise_grad2 *gf = firsts[f];
+    nl_noise_grad2 *go = firsts[o];
     snprintf(group[i], sizeof group[i], "%s/%s", lab[0], lab[1]);
-    for (size_t k = 0; k < sizeof quantities / sizeof *quantities; k++)   /* optimised (a) vs fixed (b) */
-      nl_study_cheng_welch_add(tests, sum, 2 * (size_t)i + 1, 2 * (size_t)i, quantities[k], group[i], "optimised", "fixed");
+    /* optimised (a) vs fixed (b) */
+    for (size_t j = 0; j < sizeof quantities / sizeof *quantities; j++)
+      nl_study_cheng_welch_add(tests, sum, o, f, quantities[j], group[i], "optimised", "fixed");
     nl_image **p = panels + NCOL * i;   /* first seed; co carries its optimised gains */
     p[0] = nl_study_cheng_pattern_panel(pat, size);
     p[1] = nl_study_cheng_value_image_raw(gf, &cf, size);
     p[2] = nl_study_cheng_value_image_raw(go, &co, size);
     p[3] = nl_study_cheng_value_image(gf, &cf, size);
     p[4] = nl_study_cheng_value_image(go, &co, size);
-    const char *pl[NCOL] = {group[i], "fixed, raw 0..1", "optimised, raw 0..1", "fixed, stretched", "optimised, stretched"};
+    const char *pl[NCOL] = { group[i], "fixed, raw 0..1", "optimised, raw 0..1",
+                             "fixed, stretched", "optimised, stretched" };
     for (int c = 0; c < NCOL; c++) plab[NCOL * i + c] = pl[c];
     nl_noise_grad2_free(gf);
     nl_noise_grad2_free(go);
@@ -82,33 +98,22 @@ int main(int argc, char **argv)
     nl_harness_progress(r, (i + 1.0) / ncase, group[i]);
   }
   free(evs);
-  nl_study_cheng_montage(r, panels, plab, NCOL * ncase, NCOL, "C9: fixed vs optimised octave amplitudes (first seed)", "values.png");
+  nl_study_cheng_montage(r, panels, plab, NCOL * ncase, NCOL,
+                         "C9: fixed vs optimised octave amplitudes (first seed)", "values.png");
   nl_harness_write_table(r, sum, "summary.tsv");
   nl_harness_write_table(r, gains, "gains.tsv");
   nl_harness_write_table(r, tests, "tests.tsv");
   nl_harness_write_table(r, timing, "timing.tsv");
   nl_harness_check(r, "timing.tsv", "seconds_per_run", "ignore");   /* CPU time, not a result */
-  nl_harness_text(r, "**Thesis:** ch. 5 proposes adjusting the fractal sum's amplitudes automatically to follow the "
-                     "control pattern more closely; not done there. **Ours:** the amplitudes 1/a_l = g_l / a_l (a_l = %g 2^(l-1), "
-                     "eq. 3.10) with gains g_l in [1/%g, %g] are variables of E = w1 E_KS + w2 E_Con (w1 = %g, w2 = %g): "
-                     "level l anneals its table entries and g_l (starting at 1, the thesis's a_l; frozen after level l), "
-                     "V = F_sum over its bound recomputed from the current amplitudes (so c stays in [0, 1] and only the "
-                     "octaves' relative weights matter). %d x %d control grid, %d seeds per row, the same seeds (start "
-                     "tables) for fixed and optimised.\n", s.c.a1, range, range, s.c.w1, s.c.w2, s.grid, s.grid, nl_harness_seeds(r));
-  nl_harness_report_columns(r, sum, "summary.tsv", "texture,pattern,amplitudes,seeds,E_ks,E_ks_sd,p_ks_min,E_con,E_con_sd,"
-                            NL_STUDY_CHENG_CONTROL ",roughness", "Fixed vs optimised amplitudes: statistics and controllability (mean and sd over seeds)", 4);
-  nl_harness_report_table(r, tests, "Optimised (a) vs fixed (b) amplitudes per case: Welch's t-test over seeds", 4);
-  nl_harness_report_table(r, gains, "Optimised amplitudes per octave: a_l (thesis's and optimised, mean and sd over seeds), gain = a_thesis / a", 4);
-  nl_study_cheng_amp_text(r, sum, tests, gains, range);
+  c9_intro_text(r, &s, range);
+  c9_results_text(r, sum, tests, gains, range);
   nl_study_cheng_control_text(r, sum, 3);
-  double tf = 0, to = 0;
-  for (size_t k = 0; k < timing->nrows; k += 2) { tf += nl_table_value(timing, k, "seconds_per_run"); to += nl_table_value(timing, k + 1, "seconds_per_run"); }
-  nl_harness_text(r, "Time per optimisation (thread CPU): fixed %.3g s, optimised %.3g s on average over the cases "
-                     "(a gain move re-evaluates every control point).\n", tf / ncase, to / ncase);
-  nl_harness_figure(r, "control.png", "E_Con, r with the pattern and contrast, fixed vs optimised amplitudes (mean and sd over seeds; +: E_Con of the best constant image)");
-  nl_harness_figure(r, "gains.png", "Optimised octave amplitudes 1/a_l = gain / a_l against the thesis's 1/a_l and the bounds (mean and sd of the gain over seeds)");
-  nl_harness_figure(r, "values.png", "Per case: pattern | controlled value with fixed and optimised amplitudes on its own 0..1 scale | the same stretched to its 1st..99th percentile (first seed)");
-  nl_table_free(sum); nl_table_free(gains); nl_table_free(tests); nl_table_free(timing);
-  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h; data/blas_spread.tsv) */
+  c9_timing_text(r, timing, ncase);
+  nl_table_free(sum);
+  nl_table_free(gains);
+  nl_table_free(tests);
+  nl_table_free(timing);
+  /* measured tolerances (nl_harness.h; data/blas_spread.tsv) */
+  nl_harness_check_measured(r, "*", 100);
   return nl_harness_end(r);
 }

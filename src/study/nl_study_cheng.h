@@ -1,20 +1,26 @@
-/* nl_study_cheng.h - the harness side of the Cheng experiments C1-C7: what
- * the optimiser (cheng/nl_cheng.h) and the reproduction (cheng/nl_cheng_repro.h)
- * deliberately do not know about: control patterns read from PNG files and the
- * built-in shapes that make them, textures and panels as images, the opening
- * every Cheng experiment shares (--patterns, the standard --set parameters, exit 2
- * on bad input), the summary, CDF and histogram tables, and the thesis's Tables
- * 4.2-4.4 with the chain original -> pool that C5 and C6 share.
+/* nl_study_cheng.h - the harness side of the Cheng experiments (C1-C9): what
+ * the optimiser (cheng/nl_cheng.h) and the reproduction
+ * (cheng/nl_cheng_repro.h) deliberately do not know about: control patterns
+ * read from PNG files and the built-in shapes that make them, values and
+ * textures as images, the opening every Cheng experiment shares (--patterns,
+ * the standard --set parameters, exit 2 on bad input), the runs over seeds,
+ * the summary and CDF tables, Welch tests between rows, and the thesis's
+ * Tables 4.2-4.4 with the chain original -> pool that C5 and C6 share. What
+ * one experiment alone needs lives in its folder under experiments/.
  *
  * API
- *   patterns  nl_study_cheng_pattern_from_image, nl_study_cheng_pattern_read,
- *             nl_study_cheng_pattern_image, nl_study_cheng_shape, nl_study_cheng_shape_names,
- *             nl_study_cheng_patterns_parse, nl_study_cheng_patterns_check,
- *             nl_study_cheng_pattern_load_or_die                  (nl_study_cheng_image.c)
- *   images    nl_study_cheng_texture, nl_study_cheng_grey_image, nl_study_cheng_value_image,
- *             nl_study_cheng_texture_image, nl_study_cheng_pattern_panel (nl_study_cheng_image.c)
- *   runs      nl_study_cheng_begin, nl_study_cheng_params_done, nl_study_cheng_summary_alloc / _add,
- *             nl_study_cheng_cdf_table, nl_study_cheng_hist_table, nl_study_cheng_matrix_table,
+ *   patterns  nl_study_cheng_pattern_from_image, nl_study_cheng_shape,
+ *             nl_study_cheng_shape_names, nl_study_cheng_patterns_parse,
+ *             nl_study_cheng_patterns_check, nl_study_cheng_pattern_load_or_die
+ *                                                          (nl_study_cheng_image.c)
+ *   images    nl_study_cheng_grey_image, nl_study_cheng_value_image / _raw,
+ *             nl_study_cheng_texture_image, nl_study_cheng_pattern_panel
+ *                                                          (nl_study_cheng_image.c)
+ *   runs      nl_study_cheng_open / _ready / _pattern, nl_study_cheng_runs,
+ *             nl_study_cheng_rows_add, nl_study_cheng_seeds, nl_study_cheng_montage,
+ *             nl_study_cheng_summary_alloc, nl_study_cheng_cdf_table,
+ *             nl_study_cheng_welch_alloc / _add, nl_study_cheng_control_text,
+ *             nl_study_column_min                          (nl_study_cheng.c)
  *   C5, C6    nl_study_cheng_thesis_gmm_tables, nl_study_cheng_repro_params,
  *             nl_study_cheng_repro_original / _pool / _clear  (nl_study_cheng_repro.c)
  *
@@ -37,94 +43,50 @@
  * NL_EINVAL if no cell carries control or grid < 1. */
 nl_status nl_study_cheng_pattern_from_image(const nl_image *im, int grid, nl_cheng_pattern **out,
                                             nl_error *err);
-nl_status nl_study_cheng_pattern_read(const char *path, int grid, nl_cheng_pattern **out,
-                                      nl_error *err);
-/* The pattern as an RGB image (grid x grid): red = D, no-control cells grey. */
-nl_image *nl_study_cheng_pattern_image(const nl_cheng_pattern *p);
 
 /* Built-in shapes for the shipped patterns (tools/patterns.c): "flower", "x",
- * "star", "rings", "disc", "letter" (an "N"), "gradient", "spiral". RGBA size x
- * size, red = 1 inside, black outside, alpha 1 everywhere except "disc", whose
- * outer corners are transparent (no control) to exercise alpha. NULL if unknown. */
+ * "star", "rings", "disc", "letter" (an "N"), "gradient", "spiral". RGBA size
+ * x size, red = 1 inside, black outside, alpha 1 everywhere except "disc",
+ * whose outer corners are transparent (no control) to exercise alpha. NULL if
+ * unknown. */
 nl_image *nl_study_cheng_shape(const char *name, int size);
 extern const char *const nl_study_cheng_shape_names[];   /* NULL-terminated */
 
-/* Removes "--patterns DIR" from argv (before nl_harness_begin sees it) and sets
- * *dir to DIR, or "data/patterns" (experiments run from the repository root);
- * "--patterns: missing value" on error. */
+/* Removes "--patterns DIR" from argv (before nl_harness_begin sees it) and
+ * sets *dir to DIR, or "data/patterns" (experiments run from the repository
+ * root); "--patterns: missing value" on error. */
 nl_status nl_study_cheng_patterns_parse(int *argc, char **argv, const char **dir, nl_error *err);
 /* A pattern folder is what tools/patterns.c writes: the folder exists and
- * every shape of nl_study_cheng_shape_names is there as NAME.png and reads as a
- * pattern at `grid`. Checked before an experiment touches its output. */
+ * every shape of nl_study_cheng_shape_names is there as NAME.png and reads as
+ * a pattern at `grid`. Checked before an experiment touches its output. */
 nl_status nl_study_cheng_patterns_check(const char *dir, int grid, nl_error *err);
 /* DIR/NAME.png read at `grid`; on failure prints "PROG: reason" and exits 2. */
 nl_cheng_pattern *nl_study_cheng_pattern_load_or_die(const char *prog, const char *dir,
                                                      const char *name, int grid);
 
-/* ---- textures as images (sec. 4.1) -------------------------------------- */
+/* ---- values and textures as images (sec. 4.1) --------------------------- */
 
-/* Sec. 4.1: cloud / erosion / fire alpha-blend two colours with the value as
- * alpha; marble maps the value through the marble ramp. The optimised value
- * spans only part of [0, 1] (see READINGS), so alpha 0..1 is the value's own
- * 1st..99th percentile: a display stretch, not part of the optimisation. */
-nl_image *nl_study_cheng_texture(nl_cheng_con kind, const double *v, int w, int h);
-
-/* The value as grey with the same display stretch. */
+/* The value as grey with a display stretch: grey 0..1 is the value's own
+ * 1st..99th percentile, since the optimised value spans only part of [0, 1]
+ * (nl_cheng.h, READINGS). */
 nl_image *nl_study_cheng_grey_image(const double *v, int w, int h);
-/* size x size images: the control value (grey), the config's texture, and
- * the pattern (nearest-neighbour upscaled). */
+/* size x size images of an optimised table under config c: the control value
+ * (grey, stretched) and the config's texture (sec. 4.1: cloud / erosion /
+ * fire alpha-blend two colours with the value as alpha, marble maps it
+ * through the marble ramp; alpha 0..1 is the same display stretch). */
 nl_image *nl_study_cheng_value_image(const nl_noise_grad2 *g, const nl_cheng_config *c, int size);
+nl_image *nl_study_cheng_texture_image(const nl_noise_grad2 *g, const nl_cheng_config *c,
+                                       int size);
 /* The value without the display stretch: grey 0..1 = c 0..1 (literal V and
  * sin V: -1..1), so the contrast the eye sees is the value's own. */
-nl_image *nl_study_cheng_value_image_raw(const nl_noise_grad2 *g, const nl_cheng_config *c, int size);
-nl_image *nl_study_cheng_texture_image(const nl_noise_grad2 *g, const nl_cheng_config *c, int size);
+nl_image *nl_study_cheng_value_image_raw(const nl_noise_grad2 *g, const nl_cheng_config *c,
+                                         int size);
+/* The pattern, nearest-neighbour upscaled to size x size: red = D, cells
+ * without control grey. */
 nl_image *nl_study_cheng_pattern_panel(const nl_cheng_pattern *p, int size);
-/* Shaded relief of a w x h height field on the unit square: Lambertian
- * light from the north-west, 45 degrees up, heights exaggerated by zscale. */
-nl_image *nl_study_cheng_relief_image(const double *height, int w, int h, double zscale);
-/* The pattern's targets D as a grid x grid matrix table (gnuplot's matrix
- * layout; cells without control hold -1). */
-nl_table *nl_study_cheng_pattern_table(const nl_cheng_pattern *p);
 
-/* ---- what C1-C7 share (nl_study_cheng.c) -------------------------------- */
+/* ---- what the Cheng experiments share (nl_study_cheng.c) ---------------- */
 
-/* The opening every Cheng experiment shares: strips "--patterns DIR"
- * (nl_study_cheng_patterns_parse; "NAME: message", exit 2) into *patterns, starts
- * the run, reads the standard --set parameters into *c and *grid: grid (64),
- * w1, w2, f1, a1, octaves, literal (0/1), temps (n_temps; quick 8), moves_per_var (quick 5),
- * defaults otherwise. The experiment then reads its own parameters and calls
- * nl_study_cheng_params_done, which checks the patterns, all before the
- * output folder is touched. */
-nl_harness *nl_study_cheng_begin(const char *name, const char *title, int *argc, char **argv,
-                                 nl_cheng_config *c, int *grid, const char **patterns);
-/* nl_harness_params_done (--help and --params print and exit there), then
- * nl_cheng_config_check ("NAME: message", exit 2), the patterns folder at the
- * grid (nl_study_cheng_patterns_check; "NAME: control patterns: ...", exit 2)
- * and the folder into the manifest. The patterns are read after the listing
- * and the parameter checks because reading a PNG loads the image back-end
- * (OpenImageIO, ~0.6 s of CPU per process: issue 17); `--help`, `--params`
- * and a refused --set no longer pay it. */
-void nl_study_cheng_params_done(nl_harness *r, const nl_cheng_config *c, const char *patterns, int grid);
-/* Summary table: nlabels label columns, then seeds, E_ks (mean), E_ks_sd, p_ks
- * (mean), p_ks_min, V_kuiper, V_kuiper_sd, p_kuiper, p_kuiper_min, chi2, chi2_sd,
- * p_chi2, E_con, E_con_sd, rms_con, E, uniform_ks, uniform_kuiper (fractions of
- * runs not rejected as non-uniform at alpha = 0.05), roughness, roughness_sd, and
- * controllability: r_pattern, r_pattern_sd (Pearson r of the control value with
- * the pattern), contrast, contrast_sd (sd of the control value), E_con_random,
- * E_con_random_sd (the unoptimised start table's E_Con), E_con_const (the best
- * constant image's E_Con) and con_vs_const = E_con / E_con_const (> 1: the
- * optimised table follows the pattern worse than a flat image). */
-nl_table *nl_study_cheng_summary_alloc(int nlabels, const char *const *labels);
-void nl_study_cheng_summary_add(nl_table *t, int nlabels, const char *const *labels,
-                                const nl_cheng_eval *evs, int k);
-/* ECDF of each table's angles: F = i/M and u_NAME = sorted angle / 2 pi. */
-nl_table *nl_study_cheng_cdf_table(const nl_noise_grad2 *const *tables, const char *const *names, int n);
-/* Histogram of each table's angles in `bins` bins: theta (bin centre), NAME counts. */
-nl_table *nl_study_cheng_hist_table(const nl_noise_grad2 *const *tables, const char *const *names,
-                                    int n, size_t bins);
-/* A w x h raster as a table of h rows and w columns c0..c{w-1} (gnuplot's
- * "matrix columnheaders" layout, for height maps). */
-nl_table *nl_study_cheng_matrix_table(const double *v, int w, int h);
 /* One Cheng experiment's run and its standard setting, so that an
  * experiment opens in two lines:
  *   nl_study_cheng s;
@@ -135,86 +97,100 @@ nl_table *nl_study_cheng_matrix_table(const double *v, int w, int h);
  *   nl_noise_grad2 *first = nl_study_cheng_seeds(&s, &s.c, pat, sum, 1, labels);  */
 typedef struct {
   nl_harness *r;
-  nl_cheng_config c;      /* the standard parameters (nl_study_cheng_begin) */
+  nl_cheng_config c;      /* the standard parameters (nl_study_cheng_open) */
   int grid;               /* control grid */
   const char *patterns;   /* the --patterns folder */
-  const char *role;       /* NULL: runs from the run's seed; else from nl_seed_stream(seed, role, 0),
-                             so an experiment repeating another's setting gets runs of its own */
-  nl_table *cost;         /* NULL, or nl_study_cheng_cost_alloc's table: nl_study_cheng_seeds
-                             appends each row's cost (moves, CPU seconds per optimisation) */
+  const char *role;       /* NULL: runs from the run's seed; else from
+                             nl_seed_stream(seed, role, 0), so an experiment
+                             repeating another's setting gets runs of its own */
+  nl_table *cost;         /* NULL, or a table of columns case, seeds, moves, cpu_s, cpu_s_sd,
+                             moves_per_s: nl_study_cheng_rows_add appends each row's cost
+                             (labels joined by "/"; means per optimisation over the seeds) */
 } nl_study_cheng;
-/* The cost of the optimisations behind a summary: case (the row's labels joined
- * by "/"), seeds, moves (mean per optimisation), cpu_s (mean thread CPU seconds
- * per full multi-level optimisation, set-up included), cpu_s_sd, moves_per_s
- * (moves over CPU seconds, summed over seeds). Times are never regression-checked
- * (nl_study_cheng_cost_report declares them "ignore"). */
-nl_table *nl_study_cheng_cost_alloc(void);
-/* Writes timing.tsv, its table and a sentence formatted from it into the report. */
-void nl_study_cheng_cost_report(nl_harness *r, const nl_table *t);
-/* nl_study_cheng_begin into s (same checks, same exits). */
-void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title, int *argc, char **argv);
-/* nl_study_cheng_params_done on s's run and config. */
+/* The opening every Cheng experiment shares: strips "--patterns DIR"
+ * (nl_study_cheng_patterns_parse; "NAME: message", exit 2) into s->patterns,
+ * starts the run, reads the standard --set parameters into s->c and s->grid:
+ * grid (64), w1, w2, f1, a1, octaves, literal (0/1), temps (n_temps; quick
+ * 8), moves_per_var (quick 5), defaults otherwise. role and cost start NULL.
+ * The experiment then reads its own parameters and calls
+ * nl_study_cheng_ready, all before the output folder is touched. */
+void nl_study_cheng_open(nl_study_cheng *s, const char *name, const char *title, int *argc,
+                         char **argv);
+/* nl_harness_params_done (--help and --params print and exit there), then
+ * nl_cheng_config_check ("NAME: message", exit 2), the patterns folder at the
+ * grid (nl_study_cheng_patterns_check; "NAME: control patterns: ...", exit 2)
+ * and the folder into the manifest. The patterns are read after the listing
+ * and the parameter checks because reading a PNG loads the image back-end
+ * (OpenImageIO, ~0.6 s of CPU per process), which `--help`, `--params` and a
+ * refused --set do not need. */
 void nl_study_cheng_ready(nl_study_cheng *s);
 /* The pattern NAME of s's folder at s's grid (nl_study_cheng_pattern_load_or_die). */
 nl_cheng_pattern *nl_study_cheng_pattern(const nl_study_cheng *s, const char *name);
+
+/* Summary table: nlabels label columns, then seeds, E_ks (mean), E_ks_sd,
+ * p_ks (mean), p_ks_min, V_kuiper, V_kuiper_sd, p_kuiper, p_kuiper_min, chi2,
+ * chi2_sd, p_chi2, E_con, E_con_sd, rms_con, E, uniform_ks, uniform_kuiper
+ * (fractions of runs not rejected as non-uniform at alpha = 0.05), roughness,
+ * roughness_sd, and controllability: r_pattern, r_pattern_sd (Pearson r of the
+ * control value with the pattern), contrast, contrast_sd (sd of the control
+ * value), E_con_random, E_con_random_sd (the unoptimised start table's E_Con),
+ * E_con_const (the best constant image's E_Con) and con_vs_const = E_con /
+ * E_con_const (> 1: the optimised table follows the pattern worse than a flat
+ * image). Rows come from nl_study_cheng_rows_add. */
+nl_table *nl_study_cheng_summary_alloc(int nlabels, const char *const *labels);
+/* ECDF of each table's angles: F = i/M and u_NAME = sorted angle / 2 pi. */
+nl_table *nl_study_cheng_cdf_table(const nl_noise_grad2 *const *tables, const char *const *names,
+                                   int n);
 /* n cases, config cs[i] on pattern pats[i], each over the run's seeds
- * (nl_cheng_run at nl_seed_replicate(seed, 0 .. k-1)), all n x k runs as one nl_parallel_for on the
- * run's --threads (case-major items; each run from its seed alone, so the
- * results do not depend on the thread count). Returns the n k evaluations,
- * case i's at [i k .. i k + k - 1] (caller frees); firsts, if not NULL, gets
- * each case's first-seed optimised table (caller frees). Exit 1 on error (the
- * first failing run in case and seed order). */
+ * (nl_cheng_run at nl_seed_replicate(seed, 0 .. k-1)), all n x k runs as one
+ * nl_parallel_for on the run's --threads (case-major items; each run from its
+ * seed alone, so the results do not depend on the thread count). Returns the
+ * n k evaluations, case i's at [i k .. i k + k - 1] (caller frees); firsts, if
+ * not NULL, gets each case's first-seed optimised table (caller frees). Exit
+ * 1 on error (the first failing run in case and seed order). */
 nl_cheng_eval *nl_study_cheng_runs(const nl_study_cheng *s, int n, const nl_cheng_config *cs,
                                    const nl_cheng_pattern *const *pats, nl_noise_grad2 **firsts);
 /* One case's k evaluations as a summary row of sum under the nlabels labels
- * (nl_study_cheng_summary_add), and its cost row if s->cost. */
-void nl_study_cheng_rows_add(const nl_study_cheng *s, nl_table *sum, int nlabels, const char *const *labels,
-                             const nl_cheng_eval *evs);
-/* Config c on pat over the run's seeds (nl_study_cheng_runs, n = 1), its summary row
- * appended to sum under the nlabels labels (nl_study_cheng_summary_add); returns
- * the first seed's optimised table (caller frees). Exit 1 on error. */
-/* The same, returning the k evaluations (nl_harness_seeds; caller frees) and
- * the first seed's table in *first, for callers that read more of them (C9). */
-nl_cheng_eval *nl_study_cheng_seeds_evals(const nl_study_cheng *s, const nl_cheng_config *c,
-                                          const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
-                                          const char *const *labels, nl_noise_grad2 **first);
+ * (label cells as text, then the mean, sd and min over the runs), and its
+ * cost row if s->cost. */
+void nl_study_cheng_rows_add(const nl_study_cheng *s, nl_table *sum, int nlabels,
+                             const char *const *labels, const nl_cheng_eval *evs);
+/* Config c on pat over the run's seeds (nl_study_cheng_runs, n = 1), its
+ * summary row appended to sum under the nlabels labels
+ * (nl_study_cheng_rows_add); returns the first seed's optimised table
+ * (caller frees). Exit 1 on error. */
 nl_noise_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_config *c,
                                      const nl_cheng_pattern *pat, nl_table *sum, int nlabels,
                                      const char *const *labels);
 /* The n panels as a labelled montage of `cols` columns written to the run's
  * FILE; frees the panels. */
-void nl_study_cheng_montage(nl_harness *r, nl_image **panels, const char *const *labels, int n, int cols,
-                            const char *title, const char *file);
+void nl_study_cheng_montage(nl_harness *r, nl_image **panels, const char *const *labels, int n,
+                            int cols, const char *title, const char *file);
 /* The smallest value of column `col` over the table's rows (+inf if none). */
 double nl_study_column_min(const nl_table *t, const char *col);
 
-/* C4's Table 4.1, ours beside the thesis's: from the summary rows of the
- * six pairs (printed reading at rows 0, 2, 4, ..., swapped at 1, 3, 5, ...) and
- * the thesis's rows {w1, E_KS, w2, E_Con}, a table of panel, w1, w2,
- * paper_E_ks, E_ks, E_ks_sd, paper_E_con, E_con, E_con_sd, E_ks_swapped,
- * E_con_swapped, p_ks_min, p_kuiper_min (caller frees). */
 /* Between-condition tests: a table of group, quantity, a, b, mean_a, sd_a,
  * mean_b, sd_b, seeds, diff_pct (100 (mean_a - mean_b) / mean_b) and p_welch
  * (Welch's t-test on the two rows' means and sds over their seeds; both sds 0:
  * p = 1 if the means are equal, else 0). _add appends the test of column col
  * (sd in col_sd) between summary rows ra and rb and returns p. */
 nl_table *nl_study_cheng_welch_alloc(void);
-double nl_study_cheng_welch_add(nl_table *t, const nl_table *sum, size_t ra, size_t rb, const char *col,
-                                const char *group, const char *a, const char *b);
+double nl_study_cheng_welch_add(nl_table *t, const nl_table *sum, size_t ra, size_t rb,
+                                const char *col, const char *group, const char *a, const char *b);
 /* The columns of a Cheng summary table (nl_study_cheng_summary_alloc) that
  * carry the story in a report section (nl_harness_report_columns); the TSV
  * keeps them all. Prefix the table's label columns: "pattern,seeds," ... */
-#define NL_STUDY_CHENG_STORY "E_ks,E_ks_sd,p_ks_min,V_kuiper,p_kuiper_min,chi2,p_chi2,E_con,E_con_sd,uniform_ks,uniform_kuiper,roughness," \
-  NL_STUDY_CHENG_CONTROL
+#define NL_STUDY_CHENG_STORY                                                                       \
+  "E_ks,E_ks_sd,p_ks_min,V_kuiper,p_kuiper_min,chi2,p_chi2,E_con,E_con_sd,uniform_ks,"             \
+  "uniform_kuiper,roughness," NL_STUDY_CHENG_CONTROL
 /* The controllability columns alone (a report table of their own). */
-#define NL_STUDY_CHENG_CONTROL "r_pattern,r_pattern_sd,contrast,contrast_sd,E_con_random,E_con_const,con_vs_const"
+#define NL_STUDY_CHENG_CONTROL                                                                     \
+  "r_pattern,r_pattern_sd,contrast,contrast_sd,E_con_random,E_con_const,con_vs_const"
 /* Controllability in prose, formatted from a summary table's rows (labels =
  * its first nlabels columns joined by "/"): the range of r and contrast, and
  * every row whose optimised E_Con is worse than the best constant image's,
  * named as not controlled in that sense. Returns the number of such rows. */
 int nl_study_cheng_control_text(nl_harness *r, const nl_table *sum, int nlabels);
-#define NL_STUDY_TABLE41_COLS 4
-nl_table *nl_study_cheng_table41(const nl_table *runs, const double (*thesis)[NL_STUDY_TABLE41_COLS], int npair);
 
 /* ---- what C5 and C6 share (nl_study_cheng_repro.c) ----------------------- */
 

@@ -18,10 +18,13 @@
 nl_status nl_study_cheng_pattern_from_image(const nl_image *im, int grid, nl_cheng_pattern **out,
                                             nl_error *err)
 {
-  return nl_cheng_pattern_from_pixels(im->data, im->width, im->height, im->channels, grid, out, err);
+  return nl_cheng_pattern_from_pixels(im->data, im->width, im->height, im->channels, grid, out,
+                                      err);
 }
 
-nl_status nl_study_cheng_pattern_read(const char *path, int grid, nl_cheng_pattern **out, nl_error *err)
+/* PATH read as a pattern at `grid` (nl_study_cheng_pattern_from_image); the
+ * error names the file. */
+static nl_status pattern_read(const char *path, int grid, nl_cheng_pattern **out, nl_error *err)
 {
   nl_image *im;
   *out = NULL;
@@ -37,13 +40,16 @@ nl_status nl_study_cheng_pattern_read(const char *path, int grid, nl_cheng_patte
   return NL_OK;
 }
 
-nl_image *nl_study_cheng_pattern_image(const nl_cheng_pattern *p)
+/* The pattern as an RGB image (grid x grid): red = D, no-control cells grey. */
+static nl_image *pattern_image(const nl_cheng_pattern *p)
 {
   nl_image *im = nl_image_alloc(p->grid, p->grid, 3);
   for (size_t q = 0; q < (size_t)p->grid * p->grid * 3; q++) im->data[q] = 0.5f;
   for (size_t i = 0; i < p->n; i++) {
     float *px = im->data + (size_t)p->cell[i] * 3;
-    px[0] = (float)p->d[i]; px[1] = 0; px[2] = 0;
+    px[0] = (float)p->d[i];
+    px[1] = 0;
+    px[2] = 0;
   }
   return im;
 }
@@ -81,7 +87,8 @@ static double shape_disc(double u, double v) { return hypot(u, v) < 0.6; }
 static double shape_letter(double u, double v)   /* "N" */
 {
   if (fabs(v) > 0.8) return 0;
-  return fabs(u + 0.55) < 0.14 || fabs(u - 0.55) < 0.14 || (fabs(u - 0.6875 * v) < 0.17 && fabs(u) < 0.6);
+  return fabs(u + 0.55) < 0.14 || fabs(u - 0.55) < 0.14 ||
+         (fabs(u - 0.6875 * v) < 0.17 && fabs(u) < 0.6);
 }
 
 static double shape_gradient(double u, double v) { (void)v; return 0.5 * (u + 1); }
@@ -95,19 +102,22 @@ static double shape_spiral(double u, double v)
 const char *const nl_study_cheng_shape_names[] = {"flower", "x", "star", "rings", "disc", "letter",
                                             "gradient", "spiral", NULL};
 static double (*const shape_fns[])(double, double) = {
-  shape_flower, shape_x, shape_star, shape_rings, shape_disc, shape_letter, shape_gradient, shape_spiral};
+  shape_flower, shape_x,      shape_star,     shape_rings,
+  shape_disc,   shape_letter, shape_gradient, shape_spiral};
 
 nl_image *nl_study_cheng_shape(const char *name, int size)
 {
   int idx = -1;
-  for (int k = 0; nl_study_cheng_shape_names[k]; k++) if (!strcmp(name, nl_study_cheng_shape_names[k])) idx = k;
+  for (int k = 0; nl_study_cheng_shape_names[k]; k++)
+    if (!strcmp(name, nl_study_cheng_shape_names[k])) idx = k;
   if (idx < 0 || size < 1) return NULL;
   nl_image *im = nl_image_alloc(size, size, 4);
   for (int y = 0; y < size; y++)
     for (int x = 0; x < size; x++) {
       double red = 0;   /* 2 x 2 supersampling for smooth edges */
       for (int s = 0; s < 4; s++) {
-        double u = 2 * (x + 0.25 + 0.5 * (s & 1)) / size - 1, v = 2 * (y + 0.25 + 0.5 * (s >> 1)) / size - 1;
+        double u = 2 * (x + 0.25 + 0.5 * (s & 1)) / size - 1;
+        double v = 2 * (y + 0.25 + 0.5 * (s >> 1)) / size - 1;
         red += 0.25 * shape_fns[idx](u, v);
       }
       double u = 2 * (x + 0.5) / size - 1, v = 2 * (y + 0.5) / size - 1;
@@ -148,7 +158,7 @@ nl_status nl_study_cheng_patterns_check(const char *dir, int grid, nl_error *err
     snprintf(file, sizeof file, "%s.png", nl_study_cheng_shape_names[k]);
     char *path = nl_path_join(dir, file);
     nl_cheng_pattern *p;
-    nl_status s = nl_study_cheng_pattern_read(path, grid, &p, err);
+    nl_status s = pattern_read(path, grid, &p, err);
     free(path);
     if (s) return s;
     nl_cheng_pattern_free(p);
@@ -164,7 +174,7 @@ nl_cheng_pattern *nl_study_cheng_pattern_load_or_die(const char *prog, const cha
   char *path = nl_path_join(dir, file);
   nl_cheng_pattern *p;
   nl_error err;
-  if (nl_study_cheng_pattern_read(path, grid, &p, &err)) {
+  if (pattern_read(path, grid, &p, &err)) {
     fprintf(stderr, "%s: control pattern: %s (make them with build/tools/noiselab-patterns "
                     "data/patterns, or pass --patterns DIR)\n", prog, err.msg);
     exit(2);
@@ -187,7 +197,12 @@ static void display_range(const double *v, size_t n, double *lo, double *hi)
   free(c);
 }
 
-nl_image *nl_study_cheng_texture(nl_cheng_con kind, const double *v, int w, int h)
+/* Sec. 4.1: cloud / erosion / fire alpha-blend two colours with the value as
+ * alpha; marble maps the value through the marble ramp. The optimised value
+ * spans only part of [0, 1] (nl_cheng.h, READINGS), so alpha 0..1 is the
+ * value's own 1st..99th percentile: a display stretch, not part of the
+ * optimisation. */
+static nl_image *texture(nl_cheng_con kind, const double *v, int w, int h)
 {
   /* Two colours per texture, blended with the value as alpha (sec. 4.1). */
   static const float pair[4][2][3] = {
@@ -229,7 +244,8 @@ nl_image *nl_study_cheng_value_image(const nl_noise_grad2 *g, const nl_cheng_con
   return im;
 }
 
-nl_image *nl_study_cheng_value_image_raw(const nl_noise_grad2 *g, const nl_cheng_config *c, int size)
+nl_image *nl_study_cheng_value_image_raw(const nl_noise_grad2 *g, const nl_cheng_config *c,
+                                         int size)
 {
   double *v = nl_xmalloc((size_t)size * size * sizeof *v);
   nl_cheng_value_grid(g, c, size, size, v);
@@ -245,42 +261,20 @@ nl_image *nl_study_cheng_texture_image(const nl_noise_grad2 *g, const nl_cheng_c
 {
   double *v = nl_xmalloc((size_t)size * size * sizeof *v);
   nl_cheng_value_grid(g, c, size, size, v);
-  nl_image *im = nl_study_cheng_texture(c->con, v, size, size);
+  nl_image *im = texture(c->con, v, size, size);
   free(v);
   return im;
 }
 
 nl_image *nl_study_cheng_pattern_panel(const nl_cheng_pattern *p, int size)
 {
-  nl_image *small = nl_study_cheng_pattern_image(p), *im = nl_image_alloc(size, size, 3);
+  nl_image *small = pattern_image(p);
+  nl_image *im = nl_image_alloc(size, size, 3);
   for (int y = 0; y < size; y++)
-    for (int x = 0; x < size; x++)
-      memcpy(nl_image_pixel(im, x, y), nl_image_pixel(small, x * p->grid / size, y * p->grid / size),
-             3 * sizeof(float));
-  nl_image_free(small);
-  return im;
-}
-
-nl_image *nl_study_cheng_relief_image(const double *z, int w, int h, double zscale)
-{
-  /* Light direction (towards the light): from the north-west (x -1, y -1 in
-   * image rows growing down), 45 degrees above the horizon. */
-  const double lx = -0.5, ly = -0.5, lz = sqrt(0.5);
-  nl_image *im = nl_image_alloc(w, h, 3);
-  for (int y = 0; y < h; y++)
-    for (int x = 0; x < w; x++) {
-      int x0 = x > 0 ? x - 1 : x, x1 = x + 1 < w ? x + 1 : x, y0 = y > 0 ? y - 1 : y, y1 = y + 1 < h ? y + 1 : y;
-      /* slopes per unit length of the unit square */
-      double dzdx = zscale * (z[(size_t)y * w + x1] - z[(size_t)y * w + x0]) * w / (x1 - x0);
-      double dzdy = zscale * (z[(size_t)y1 * w + x] - z[(size_t)y0 * w + x]) * h / (y1 - y0);
-      double nn = sqrt(dzdx * dzdx + dzdy * dzdy + 1), shade = (-dzdx * lx - dzdy * ly + lz) / nn;
-      shade = shade < 0 ? 0 : shade;
-      /* hypsometric tint by height (0..1), times the shade */
-      double t = z[(size_t)y * w + x], r = 0.25 + 0.6 * t, g = 0.45 + 0.3 * t, b = 0.25 + 0.5 * t;
-      float *px = nl_image_pixel(im, x, y);
-      px[0] = (float)fmin(1, r * (0.25 + 0.85 * shade));
-      px[1] = (float)fmin(1, g * (0.25 + 0.85 * shade));
-      px[2] = (float)fmin(1, b * (0.25 + 0.85 * shade));
+    for (int x = 0; x < size; x++) {
+      const float *src = nl_image_pixel(small, x * p->grid / size, y * p->grid / size);
+      memcpy(nl_image_pixel(im, x, y), src, 3 * sizeof(float));
     }
+  nl_image_free(small);
   return im;
 }

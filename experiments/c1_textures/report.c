@@ -1,0 +1,64 @@
+/* C1's report prose (Cheng 2009 sec. 4.1, Fig 4.1-4.4): every number
+ * formatted from the summary table or the run's setting. */
+#include "c1.h"
+#include "harness/nl_harness.h"
+
+#include <stdio.h>
+
+void c1_figure_text(nl_harness *r, int t, nl_cheng_con con, const char *equation,
+                    const char *file)
+{
+  char cap[256];
+  snprintf(cap, sizeof cap,
+           "Fig 4.%d: %s textures, control term %s; pattern | controlled value on its own 0..1 "
+           "scale | the same stretched to its 1st..99th percentile | texture | the literal "
+           "formula's value, stretched (first seed)",
+           t + 1, nl_cheng_con_name(con), equation);
+  nl_harness_figure(r, file, cap);
+}
+
+/* Marble's gain: the rescaled sine's argument is pi V = pi F_sum / bound,
+ * the literal one F_sum itself (eq. 4.1's sin V). */
+static void marble_text(nl_harness *r, const nl_cheng_config *c)
+{
+  nl_noise_octaves o = nl_noise_octaves_cheng(c->octaves, c->f1, c->a1);
+  double asum = 0;
+  for (int l = 0; l < o.n; l++) asum += o.amp[l];
+  double gain = NL_PI / (NL_NOISE2_BOUND * asum);
+  nl_harness_text(r,
+                  "Marble's control term: the rescaled sine's argument is pi V = %.3g F_sum (V = "
+                  "F_sum over its bound), %.2fx eq. 4.1's literal sin(F_sum); after (1 + sin)/2 "
+                  "the slope of c at F_sum = 0 is %.3g, against 1 for the literal sin and %.3g for "
+                  "the rescaled cloud term (1 + V)/2. Much of marble's r rests on this gain: "
+                  "compare its literal rows.\n",
+                  gain, gain, gain / 2, gain / (2 * NL_PI));
+}
+
+void c1_text(nl_harness *r, const nl_table *sum, const nl_cheng_config *c, int grid)
+{
+  nl_harness_text(r,
+                  "**Thesis:** three patterns per texture (images only); cloud, erosion and fire "
+                  "blend two colours with the noise value as alpha, marble goes through a sine; "
+                  "the control term follows the texture (eq. 3.8, 4.1, 4.2, 4.3). **Ours:** %d x "
+                  "%d control grid, thesis setting (F = %d, f1 = %g, a1 = %g, w1 = %g, w2 = %g), "
+                  "%d seeds per row. Formula \"rescaled\" (our headline reading): c = (1 + V)/2, "
+                  "(1 + sin(pi V))/2, |V| or the octave sum of |noise| over its bound, V = the "
+                  "fractal sum over its analytic bound (nl_cheng.h); \"literal\": the thesis's "
+                  "formulas as printed, c = V, sin V, |V|, sum |noise| / a with V unscaled (E_Con "
+                  "= sum (c - D)^2 either way). Images stretch each value's 1st..99th percentile "
+                  "to 0..1 except the \"no stretch\" panel.\n",
+                  grid, grid, c->octaves, c->f1, c->a1, c->w1, c->w2, nl_harness_seeds(r));
+  nl_harness_report_columns(r, sum, "summary.tsv",
+                            "texture,pattern,formula,seeds," NL_STUDY_CHENG_STORY,
+                            "Per texture, pattern and formula: statistics and controllability of "
+                            "the optimised tables (mean and spread over seeds)",
+                            4);
+  nl_study_cheng_control_text(r, sum, 3);
+  marble_text(r, c);
+  double wks = nl_study_column_min(sum, "uniform_ks");
+  double wku = nl_study_column_min(sum, "uniform_kuiper");
+  nl_harness_text(r,
+                  "Uniformity: the smallest fraction of runs not rejected as non-uniform at alpha "
+                  "= 0.05 is %.2f (KS) and %.2f (Kuiper) over the %zu rows.\n",
+                  wks, wku, sum->nrows);
+}

@@ -1,0 +1,38 @@
+/* c2.h - C2's angle histograms (hist.c) and report prose (report.c).
+ *
+ * Cheng 2009 sec. 4.2 (Fig 4.5, 4.6) optimises the same patterns with the KS
+ * term (eq. 3.7) and the chi-square term (eq. 3.4); C2 adds Kuiper's V. The
+ * summary table holds one row per (pattern, objective), objectives in the
+ * order ks, chisq, kuiper, so a pattern's rows are i NOBJ + 0, 1, 2.
+ */
+#ifndef C2_H
+#define C2_H
+
+#include "study/nl_study_cheng.h"
+
+/* Histogram of each table's angles in `bins` equal bins over [0, 2 pi):
+ * columns theta (bin centre) and NAME (counts) per table, n <= 15. */
+nl_table *c2_hist_table(const nl_noise_grad2 *const *tables, const char *const *names, int n,
+                        size_t bins);
+
+/* The thesis's claim, our setting and the summary table. */
+void c2_intro_text(nl_harness *r, const nl_table *sum, const char *const *pats,
+                   const nl_cheng_config *c, int grid);
+/* One pattern's comparison: rows row_ks (KS objective) and row_chi
+ * (chi-square objective) of sum, with the Welch p of E_KS (pk), chi2 (px)
+ * and E_Con (pc) between them. */
+void c2_pattern_text(nl_harness *r, const nl_table *sum, const char *pat, size_t row_ks,
+                     size_t row_chi, double pk, double px, double pc);
+/* The Welch table's caption. */
+void c2_tests_text(nl_harness *r, const nl_table *wt);
+/* Whether uniformity is preserved, then how regular the optimised tables
+ * are: P(D <= E_KS) for a random table per objective (rows 0..nobj-1: the
+ * first pattern), and the chi-square objective's bins holding exactly one
+ * angle (`single`, first pattern, first seed) against a random table's. */
+void c2_regularity_text(nl_harness *r, const nl_table *sum, const char *const *onames,
+                        int nobj, const nl_cheng_config *c, const char *pat, int single);
+/* The figures: noise_PAT.png per pattern, cdf.png, hist.png. */
+void c2_figures_text(nl_harness *r, const char *const *pats, int npat,
+                     const nl_cheng_config *c);
+
+#endif
