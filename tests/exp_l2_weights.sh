@@ -40,7 +40,7 @@ mkdir -p "$out/exemplars"
 # sanitizer check can compare this very run with results/quick; the fBm
 # exemplar gets a run of its own (no size sweep: max_size 64, 2 seeds).
 "$exp" --quick $NOIMG --threads 2 --exemplars "$(cd "$(dirname "$0")/.." && pwd)/data/exemplars" --out "$out"
-# The photographs' fits are nl_parallel_for items (nl_study_exemplar_fits): one
+# The photographs' fits are nl_parallel_for items (l2_exemplar_fits): one
 # thread gives the same photos.tsv byte for byte (the size sweep, which does
 # not enter it, cut to 64 pixels and 2 seeds).
 # The transfer measurement's (replicate, band) renders and the size sweep's
