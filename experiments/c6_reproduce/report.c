@@ -38,7 +38,7 @@ void c6_report(nl_harness *r, const nl_table *sum, int nrep, double swap,
         "%s: E_KS %.4g (original) vs %.4g +- %.2g (reproduced; %.0f%% below the original); E_Con "
         "%.4g vs %.4g +- %.3g (%.0f%% below). Smallest uniformity p-value of a reproduction %.3g: "
         "%s. Angles differ from the original's by D = %.3g on average. One reproduction takes %.3g "
-        "ms (table) or %.3g ms with a 256^2 texture, one optimisation %.3g s: %.0f times faster.\n",
+        "ms (table) or %.3g ms with a %d^2 texture, one optimisation %.3g s: %.0f times faster.\n",
         tex, nl_table_value(sum, q, "E_ks"), nl_table_value(sum, w, "E_ks"),
         nl_table_value(sum, w, "E_ks_sd"), 100 * nl_table_value(sum, w, "below_ks"),
         nl_table_value(sum, q, "E_con"), nl_table_value(sum, w, "E_con"),
@@ -47,7 +47,8 @@ void c6_report(nl_harness *r, const nl_table *sum, int nrep, double swap,
         nl_table_value(sum, w, "p_ks_min") > 0.05 ? "none is rejected as non-uniform at 0.05"
                                                   : "some are rejected as non-uniform at 0.05",
         nl_table_value(sum, w, "ks2_D"), nl_table_value(sum, w, "ms_reproduce"),
-        nl_table_value(sum, w, "ms_texture"), nl_table_value(sum, w, "seconds_opt"),
+        nl_table_value(sum, w, "ms_texture"), C6_TEXTURE_SIDE,
+        nl_table_value(sum, w, "seconds_opt"),
         1e3 * nl_table_value(sum, w, "seconds_opt") / nl_table_value(sum, w, "ms_texture"));
     if (w + 1 < sum->nrows && nl_table_value(sum, w + 1, "n") != 1)
       nl_harness_text(

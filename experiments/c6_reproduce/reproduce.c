@@ -43,8 +43,8 @@ static void evaluate_item(void *ctx, size_t i, int thread)
   reps_job *j = ctx;
   samples *s = j->s;
   double t0 = nl_time_now();
-  nl_image *tex = nl_study_cheng_texture_image(j->out[i], j->c,
-                                               256); /* what a user waits for: table + texture */
+  /* what a user waits for: table + texture */
+  nl_image *tex = nl_study_cheng_texture_image(j->out[i], j->c, C6_TEXTURE_SIDE);
   s->mst[i] = s->ms[i] + 1e3 * (nl_time_now() - t0);
   nl_image_free(tex);
   nl_cheng_eval ev;

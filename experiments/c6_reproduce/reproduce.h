@@ -8,7 +8,8 @@
 
 #include "study/nl_study_cheng.h"
 
-#define C6_NSHOW 8 /* reproductions shown (montage, CDF) */
+#define C6_NSHOW        8   /* reproductions shown (montage, CDF) */
+#define C6_TEXTURE_SIDE 256 /* the texture timed with a reproduction (ms_texture) */
 
 nl_table *c6_reps_alloc(void);
 nl_table *c6_reps_summary_alloc(void);
