@@ -18,25 +18,28 @@
 #define NCUT     48
 #define MAXSEEDS C5_MAXSEEDS
 
+/* clang-format off */
 static const char *const gmm_cols[] = {
-  "texture",       "low_levels",   "cutoff_rule", "pool",        "excluded",      "input_samples",
-  "dim",           "epsilon",      "cutoff",      "K_initial",   "K_initial_sd",  "K_final",
-  "K_final_sd",    "AIC",          "AIC_sd",      "BIC",         "BIC_sd",        "loglik",
-  "seeds",         "n_ok",         "status",      "seconds_gmm", "paper_samples", "paper_K_initial",
+  "texture", "low_levels", "cutoff_rule", "pool", "excluded", "input_samples", "dim", "epsilon",
+  "cutoff", "K_initial", "K_initial_sd", "K_final", "K_final_sd", "AIC", "AIC_sd", "BIC", "BIC_sd",
+  "loglik", "seeds", "n_ok", "status", "seconds_gmm", "paper_samples", "paper_K_initial",
   "paper_K_final", "paper_cutoff", "paper_AIC"
 };
-static const char *const path_cols[] = { "texture", "low_levels", "cutoff_rule", "K",        "AIC",
-                                         "BIC",     "loglik",     "iterations",  "converged" };
+static const char *const path_cols[] = {
+  "texture", "low_levels", "cutoff_rule", "K", "AIC", "BIC", "loglik", "iterations", "converged"
+};
 static const char *const curve_cols[] = { "texture", "low_levels", "cutoff", "K" };
-static const char *const pool_cols[] = { "texture", "low_levels", "run",    "E_start",
-                                         "E_best",  "kept",       "seconds" };
-static const char *const assess_cols[] = { "texture", "low_levels", "model",
-                                           "K",       "ll_train",   "ll_held",
-                                           "n_held",  "ks_median",  "ks_reject" };
-static const char *const orig_cols[] = { "texture",       "pattern",         "low_levels",
-                                         "E_ks",          "E_con",           "E_R_original",
-                                         "E_R_pool_best", "E_R_pool_median", "E_R_pool_max_gap",
-                                         "n_low",         "seconds_opt",     "seconds_pool" };
+static const char *const pool_cols[] = {
+  "texture", "low_levels", "run", "E_start", "E_best", "kept", "seconds"
+};
+static const char *const assess_cols[] = {
+  "texture", "low_levels", "model", "K", "ll_train", "ll_held", "n_held", "ks_median", "ks_reject"
+};
+static const char *const orig_cols[] = {
+  "texture", "pattern", "low_levels", "E_ks", "E_con", "E_R_original", "E_R_pool_best",
+  "E_R_pool_median", "E_R_pool_max_gap", "n_low", "seconds_opt", "seconds_pool"
+};
+/* clang-format on */
 static const char *const rules[NRULE] = { "thesis", "matched_K0" };
 static const char *const variants[NVAR] = { "full_cossin", "diag_cossin", "full_unwrap" };
 

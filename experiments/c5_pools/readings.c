@@ -12,50 +12,29 @@
 #define MAXREP 16
 #define NRD    16 /* cutoff rule x n x distance x pool rule, table order */
 
-static const char *const rd_cols[] = { "texture",
-                                       "reading",
-                                       "n_rule",
-                                       "distance",
-                                       "pool_rule",
-                                       "cutoff_rule",
-                                       "k0_is_input",
-                                       "reps",
-                                       "input_samples",
-                                       "cluster_samples",
-                                       "dim",
-                                       "stride",
-                                       "cutoff",
-                                       "cutoff_sd",
-                                       "K0",
-                                       "K0_sd",
-                                       "K_final",
-                                       "K_final_sd",
-                                       "AIC",
-                                       "AIC_sd",
-                                       "AIC_per_nd",
-                                       "n_ok",
-                                       "status",
-                                       "matches",
-                                       "headline",
-                                       "seconds",
-                                       "paper_K_initial",
-                                       "paper_K_final",
-                                       "paper_cutoff",
-                                       "paper_AIC" };
-static const char *const ess_cols[] = { "texture",          "rep",        "pool_rule",
-                                        "stride",           "rows",       "runs",
-                                        "tau_rows",         "tau_sweeps", "ess_tau",
-                                        "tau_capped",       "icc",        "ess_kish",
-                                        "ess_kish_per_run", "dec_sweeps" };
-static const char *const n_names[2] = { "sub1000", "all" },
-                         *const d_names[2] = { "cossin", "angles" },
-                         *const p_names[2] = { "successive", "spaced" },
-                         *const c_names[2] = { "thesis", "matched_K0" };
+/* clang-format off */
+static const char *const rd_cols[] = {
+  "texture", "reading", "n_rule", "distance", "pool_rule", "cutoff_rule", "k0_is_input", "reps",
+  "input_samples", "cluster_samples", "dim", "stride", "cutoff", "cutoff_sd", "K0", "K0_sd",
+  "K_final", "K_final_sd", "AIC", "AIC_sd", "AIC_per_nd", "n_ok", "status", "matches", "headline",
+  "seconds", "paper_K_initial", "paper_K_final", "paper_cutoff", "paper_AIC"
+};
+static const char *const ess_cols[] = {
+  "texture", "rep", "pool_rule", "stride", "rows", "runs", "tau_rows", "tau_sweeps", "ess_tau",
+  "tau_capped", "icc", "ess_kish", "ess_kish_per_run", "dec_sweeps"
+};
+/* clang-format on */
+static const char *const n_names[2] = { "sub1000", "all" };
+static const char *const d_names[2] = { "cossin", "angles" };
+static const char *const p_names[2] = { "successive", "spaced" };
+static const char *const c_names[2] = { "thesis", "matched_K0" };
 
-static const char *const rep_cols[] = { "texture",       "reading",  "k0_is_input", "K",
-                                        "reps_drawn",    "E_ks",     "E_ks_sd",     "E_con",
-                                        "E_con_sd",      "below_ks", "below_con",   "E_ks_original",
-                                        "E_con_original" };
+/* clang-format off */
+static const char *const rep_cols[] = {
+  "texture", "reading", "k0_is_input", "K", "reps_drawn", "E_ks", "E_ks_sd", "E_con", "E_con_sd",
+  "below_ks", "below_con", "E_ks_original", "E_con_original"
+};
+/* clang-format on */
 
 typedef struct {
   double cut[MAXREP], k0[MAXREP], k[MAXREP], aic[MAXREP], apn[MAXREP], dim[MAXREP], sec;

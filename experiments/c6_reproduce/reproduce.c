@@ -10,13 +10,17 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *const c6_rep_cols[] = { "texture", "swap",  "rep",          "E_ks",      "p_ks",
-                                           "E_con",   "ks2_D", "ms_reproduce", "ms_texture" };
+/* clang-format off */
+static const char *const c6_rep_cols[] = {
+  "texture", "swap", "rep", "E_ks", "p_ks", "E_con", "ks2_D", "ms_reproduce", "ms_texture"
+};
+/* the last four: controllability (nl_study_cheng_control_text) */
 static const char *const c6_sum_cols[] = {
-  "texture",     "kind",  "n",         "E_ks",     "E_ks_sd",      "E_con",        "E_con_sd",
-  "p_ks_min",    "ks2_D", "ks2_D_sd",  "below_ks", "below_con",    "ms_reproduce", "ms_texture",
-  "seconds_opt", "K",     "r_pattern", "contrast", "E_con_random", "E_con_const"
-}; /* controllability (nl_study_cheng_control_text) */
+  "texture", "kind", "n", "E_ks", "E_ks_sd", "E_con", "E_con_sd", "p_ks_min", "ks2_D", "ks2_D_sd",
+  "below_ks", "below_con", "ms_reproduce", "ms_texture", "seconds_opt", "K", "r_pattern",
+  "contrast", "E_con_random", "E_con_const"
+};
+/* clang-format on */
 
 typedef struct {
   double ks[4096], con[4096], p[4096], d[4096], ms[4096], mst[4096], rp[4096], ct[4096];

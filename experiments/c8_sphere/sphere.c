@@ -10,14 +10,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* clang-format off */
 static const char *const sum_cols[] = {
-  "pattern",     "table",          "seeds",    "E_stat",      "E_stat_sd",    "D_z",
-  "p_z",         "p_z_min",        "D_phi",    "p_phi",       "p_phi_min",    "p_stat",
-  "p_stat_min",  "uniform",        "V_kuiper", "p_kuiper",    "p_kuiper_min", "R_rayleigh",
-  "p_rayleigh",  "p_rayleigh_min", "E_con",    "E_con_sd",    "rms_con",      "E",
-  "r_pattern",   "r_pattern_sd",   "contrast", "contrast_sd", "E_con_random", "E_con_random_sd",
-  "E_con_const", "con_vs_const"
+  "pattern", "table", "seeds", "E_stat", "E_stat_sd", "D_z", "p_z", "p_z_min", "D_phi", "p_phi",
+  "p_phi_min", "p_stat", "p_stat_min", "uniform", "V_kuiper", "p_kuiper", "p_kuiper_min",
+  "R_rayleigh", "p_rayleigh", "p_rayleigh_min", "E_con", "E_con_sd", "rms_con", "E", "r_pattern",
+  "r_pattern_sd", "contrast", "contrast_sd", "E_con_random", "E_con_random_sd", "E_con_const",
+  "con_vs_const"
 };
+/* clang-format on */
 #define NSUM (sizeof sum_cols / sizeof *sum_cols)
 
 nl_table *c8_summary_alloc(void) { return nl_table_alloc(NSUM, sum_cols); }
