@@ -304,7 +304,7 @@ static void rows(c5_readings *R, const acc *A, const nl_study_cheng_thesis_gmm *
           mean_sd(a->k, a->n, &v[2][0], &v[2][1]);
           mean_sd(a->aic, a->n, &v[3][0], &v[3][1]);
           char id[80];
-          snprintf(id, sizeof id, "%s/%s/%s/%s", n_names[n], d_names[d], p_names[p], c_names[cr]);
+          reading_id(id, sizeof id, cr, n, d, p);
           int match = (cr ? within(v[0][0], th->cutoff, 1) : within(v[1][0], th->k0, 1)) +
                       within(v[2][0], th->k, 1) + within(v[3][0], th->aic, 0);
           size_t q = nl_table_append_empty(t);
@@ -337,9 +337,8 @@ static void rows(c5_readings *R, const acc *A, const nl_study_cheng_thesis_gmm *
           nl_table_set(t, q, "matches", match);
           nl_table_set(t, q, "headline", 0);
           nl_table_set(t, q, "seconds", a->sec);
-          if (cr)
-            nl_table_set_text(t, q, "paper_K_initial",
-                              "n/a"); /* K0 was the input: nothing to compare */
+          if (cr) /* K0 was the input: nothing to compare */
+            nl_table_set_text(t, q, "paper_K_initial", "n/a");
           else
             nl_table_set(t, q, "paper_K_initial", th->k0);
           nl_table_set(t, q, "paper_K_final", th->k);

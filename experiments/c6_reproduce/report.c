@@ -62,8 +62,8 @@ void c6_report(nl_harness *r, const nl_table *sum, int nrep, double swap,
           100 * (nl_table_value(sum, w, "E_con") - nl_table_value(sum, w + 1, "E_con")) /
               nl_table_value(sum, w + 1, "E_con"));
   }
-  nl_study_cheng_control_text(
-      r, sum, 2); /* r, contrast and the two baselines, originals and reproductions */
+  /* r, contrast and the two baselines, originals and reproductions */
+  nl_study_cheng_control_text(r, sum, 2);
   nl_harness_text(
       r,
       "Reading: the thesis's \"often below\" holds here for E_Con when the high entries are kept "

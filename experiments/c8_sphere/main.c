@@ -84,7 +84,7 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, sum, "summary.tsv");
   c8_report(r, sum, &c, grid, k);
   nl_table_free(sum);
-  nl_harness_check_measured(r, "*",
-                            100); /* measured tolerances (nl_harness.h; data/blas_spread.tsv) */
+  /* measured tolerances (nl_harness.h; data/blas_spread.tsv) */
+  nl_harness_check_measured(r, "*", 100);
   return nl_harness_end(r);
 }
