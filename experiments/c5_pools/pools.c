@@ -116,8 +116,8 @@ static void pool_rows(c5_pools *T, const nl_study_cheng_thesis_gmm *th, int low,
                       const nl_study_cheng_repro *rp)
 {
   const nl_cheng_pool *pool = rp->pool;
-  double *be = nl_xmalloc((size_t)pool->runs * sizeof *be),
-         *es = nl_xmalloc((pool->n ? pool->n : 1) * sizeof *es);
+  double *be = nl_xmalloc((size_t)pool->runs * sizeof *be);      /* each run's best */
+  double *es = nl_xmalloc((pool->n ? pool->n : 1) * sizeof *es); /* kept rows' E_R, sorted */
   size_t *kept = nl_xcalloc((size_t)pool->runs, sizeof *kept);
   double gap = 0;
   for (size_t i = 0; i < pool->n; i++) {
@@ -205,7 +205,8 @@ static void assess_item(void *ctx, size_t v, int t)
   j->k[v] = (double)m->k;
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, nl_seed_stream(nl_harness_seed(j->r), "c5.held_out", 0));
-  if (m->gmm) j->st[v] = nl_cheng_model_assess(j->pool, m, 1000, rng, &j->ck[v], &j->err[v]);
+  if (m->gmm)
+    j->st[v] = nl_cheng_model_assess(j->pool, m, C5_ASSESS_DRAWS, rng, &j->ck[v], &j->err[v]);
   gsl_rng_free(rng);
   nl_cheng_model_free(m);
 }

@@ -12,7 +12,8 @@ typedef struct {
   nl_table *gmm, *path, *curve, *runs, *assess, *orig;
 } c5_pools;
 
-#define C5_MAXSEEDS 64 /* seeds of the model fits averaged per row */
+#define C5_MAXSEEDS     64   /* seeds of the model fits averaged per row */
+#define C5_ASSESS_DRAWS 1000 /* mixture draws (and pool rows) per held-out KS check */
 
 void c5_pools_alloc(c5_pools *T);
 /* Writes the six tables (original.tsv, gmm.tsv, aic_path.tsv, cutoff_k.tsv,

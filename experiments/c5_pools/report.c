@@ -152,8 +152,8 @@ void c5_report(nl_harness *r, const c5_pools *T, const nl_cheng_pool_options *po
       "cutoff rule",
       5);
   for (size_t q = 0; q < T->gmm->nrows; q++) {
-    const char *tex = nl_table_text(T->gmm, q, "texture"),
-               *rule = nl_table_text(T->gmm, q, "cutoff_rule");
+    const char *tex = nl_table_text(T->gmm, q, "texture");
+    const char *rule = nl_table_text(T->gmm, q, "cutoff_rule");
     nl_harness_text(
         r,
         "%s (low levels %g), %s cutoff %.4g: K %.3g -> %.3g (thesis %g -> %g), AIC %.6g (thesis "
@@ -206,17 +206,19 @@ void c5_report(nl_harness *r, const c5_pools *T, const nl_cheng_pool_options *po
         nl_table_value(T->orig, q, "E_R_pool_max_gap"), po->epsilon,
         nl_table_value(T->gmm, 2 * q, "excluded"),
         nl_table_value(T->gmm, 2 * q, "pool") + nl_table_value(T->gmm, 2 * q, "excluded"));
-  nl_harness_text(r, "**Beyond the paper: does the mixture describe the pool?** The model with the "
-                     "matched cutoff, fitted on the input samples, scored on the pool rows it did "
-                     "not see (mean log-likelihood per row, ll_held, against ll_train), and 1000 "
-                     "draws against 1000 pool rows, angle by angle (two-sample KS: median D and "
-                     "the fraction of the angles where p < 0.05), for full covariances on (cos, "
-                     "sin) (the default), diagonal ones, and full ones on unwrapped angles.\n");
+  nl_harness_text(r,
+                  "**Beyond the paper: does the mixture describe the pool?** The model with the "
+                  "matched cutoff, fitted on the input samples, scored on the pool rows it did not "
+                  "see (mean log-likelihood per row, ll_held, against ll_train), and %d draws "
+                  "against %d pool rows, angle by angle (two-sample KS: median D and the fraction "
+                  "of the angles where p < 0.05), for full covariances on (cos, sin) (the "
+                  "default), diagonal ones, and full ones on unwrapped angles.\n",
+                  C5_ASSESS_DRAWS, C5_ASSESS_DRAWS);
   nl_harness_report_table(
       r, T->assess, "Held-out likelihood and per-angle KS of the mixture against the pool", 4);
   for (size_t q = 0; q < T->assess->nrows; q++) {
-    double tr = nl_table_value(T->assess, q, "ll_train"),
-           he = nl_table_value(T->assess, q, "ll_held");
+    double tr = nl_table_value(T->assess, q, "ll_train");
+    double he = nl_table_value(T->assess, q, "ll_held");
     nl_harness_text(
         r,
         "%s, %s: ll_train %.4g, ll_held %.4g (%s); per-angle KS median D %.3g, rejected on %.0f%% "
@@ -227,11 +229,14 @@ void c5_report(nl_harness *r, const c5_pools *T, const nl_cheng_pool_options *po
             : "held-out rows score like the input: it generalises",
         nl_table_value(T->assess, q, "ks_median"), 100 * nl_table_value(T->assess, q, "ks_reject"));
   }
-  nl_harness_figure(
-      r, "aic.png",
+  char aic_cap[320];
+  snprintf(
+      aic_cap, sizeof aic_cap,
       "AIC against K along the selection path (pool replicate 0, aic_readings.tsv): the headline "
-      "reading of readings.tsv and C6's reading (1000-row subsample, (cos, sin), cutoff matched to "
-      "the thesis's initial K), with the thesis's AIC and its initial and final K as lines");
+      "reading of readings.tsv and C6's reading (%zu-row subsample, (cos, sin), cutoff matched to "
+      "the thesis's initial K), with the thesis's AIC and its initial and final K as lines",
+      mo->samples);
+  nl_harness_figure(r, "aic.png", aic_cap);
   nl_harness_figure(r, "cutoff.png",
                     "Initial K against the complete-linkage cutoff, with the thesis's K0 marked");
   nl_harness_figure(r, "pool.png",

@@ -197,8 +197,9 @@ void c8_slices(const nl_cheng3_table *t, const nl_cheng3_table *t0, const nl_che
                                                "D xz", "c xz", "c xz str", "rand xz" };
   for (int row = 0; row < 2; row++) {
     int axis = row ? 1 : 2;
-    double *d = slice(NULL, c, pat, axis, size), *v = slice(t, c, pat, axis, size),
-           *v0 = slice(t0, c, pat, axis, size);
+    double *d = slice(NULL, c, pat, axis, size); /* the pattern */
+    double *v = slice(t, c, pat, axis, size);    /* the optimised table's c */
+    double *v0 = slice(t0, c, pat, axis, size);  /* the random start's c */
     nl_image **p = panels + 4 * row;
     p[0] = nl_image_from_values(d, size, size, 0, 1);
     p[1] = nl_image_from_values(v, size, size, 0, 1);
