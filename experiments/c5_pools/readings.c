@@ -114,7 +114,8 @@ static nl_status angle_cutoff_for_k(const nl_cheng_pool *pool, const nl_cheng_mo
                                     double *c, nl_error *err)
 {
   size_t n = m->n_cl, nl = pool->nlow;
-  double *x = nl_xmalloc(n * nl * sizeof *x), *Z = nl_xmalloc((n - 1) * 4 * sizeof *Z);
+  double *x = nl_xmalloc(n * nl * sizeof *x);      /* the rows' raw angles */
+  double *Z = nl_xmalloc((n - 1) * 4 * sizeof *Z); /* the linkage */
   for (size_t i = 0; i < n; i++) memcpy(x + i * nl, pool->theta + m->cl[i] * nl, nl * sizeof *x);
   nl_status st = nl_cluster_linkage(x, n, nl, NL_LINKAGE_COMPLETE, Z, err);
   if (!st) *c = nl_cheng_cutoff_for_k(Z, n, k);

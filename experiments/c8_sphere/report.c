@@ -53,7 +53,8 @@ void c8_report(nl_harness *r, const nl_table *sum, const nl_cheng3_config *c, in
       "seeds)",
       4);
   for (size_t i = 0; i + 1 < sum->nrows; i += 2) { /* rows: optimised, random per pattern */
-    double e = nl_table_value(sum, i, "E_con"), e0 = nl_table_value(sum, i, "E_con_const");
+    double e = nl_table_value(sum, i, "E_con");
+    double e0 = nl_table_value(sum, i, "E_con_const");
     double er = nl_table_value(sum, i + 1, "E_con");
     nl_harness_text(r,
                     "%s: E_stat %.4f (random tables %.4f), smallest p_stat %.3f, smallest Rayleigh "

@@ -26,8 +26,9 @@ static const char *const READINGS[NREAD] = {
 
 nl_table *l1_variance_readings(int n, int K, unsigned long seed0, double paper)
 {
-  nl_wavelet_tile *t = nl_wavelet_tile_alloc(3, n), *tt = nl_wavelet_tile_alloc(3, n),
-                  *t2 = nl_wavelet_tile_alloc(3, 2 * n > 256 ? 256 : 2 * n);
+  nl_wavelet_tile *t = nl_wavelet_tile_alloc(3, n);
+  nl_wavelet_tile *tt = nl_wavelet_tile_alloc(3, n); /* the appendix's transposed copy */
+  nl_wavelet_tile *t2 = nl_wavelet_tile_alloc(3, 2 * n > 256 ? 256 : 2 * n);
   if (!t || !tt || !t2) {
     nl_wavelet_tile_free(t);
     nl_wavelet_tile_free(tt);
