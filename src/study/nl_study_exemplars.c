@@ -28,7 +28,10 @@ nl_status nl_study_dir_option(int *argc, char **argv, const char *option, const 
   return NL_OK;
 }
 
-static int cmp_str(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
+static int cmp_str(const void *a, const void *b)
+{
+  return strcmp(*(char *const *)a, *(char *const *)b);
+}
 
 nl_status nl_study_pngs(const char *dir, char ***paths, int *n, nl_error *err)
 {
