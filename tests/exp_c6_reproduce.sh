@@ -24,7 +24,7 @@ awk -F'\t' 'NR==1{for(i=1;i<=NF;i++) col[$i]=i; next} $col["kind"]=="original"{o
   $col["kind"]!="original" && ($col["E_con"]>1.2*o || $col["E_con"]<0.8*o){print "E_Con far from original: " $0; exit 1}' "$out/summary.tsv"
 # Same seed, same numbers - and on one thread as on two: the originals, the
 # pool runs and the reproductions' evaluations are nl_parallel_for items
-# (nl_study_cheng_reproduce_cases; the draws stay in order on one thread).
+# (c6_reproduce_cases; the draws stay in order on one thread).
 if thread_identity; then
   "$exp" --quick --no-images --threads 1 --out "$out/again" --patterns "$pat" >/dev/null
   # timing columns dropped by name

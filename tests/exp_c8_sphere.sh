@@ -26,7 +26,7 @@ set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 exp="$1" expect="$2" out="$3"
 "$exp" --quick "${NOIMG[@]}" --threads 2 --out "$out" >/dev/null 2>&1
-# The seed runs are nl_parallel_for items (nl_study_cheng3_seeds): one thread
+# The seed runs are nl_parallel_for items (c8_seeds): one thread
 # gives the same tables byte for byte (slices and voxels cut small: they do
 # not enter summary, ecdf and levels).
 if thread_identity; then

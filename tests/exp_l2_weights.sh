@@ -42,7 +42,7 @@ mkdir -p "$out/exemplars"
 # exemplar gets a run of its own (no size sweep: max_size 64, 2 seeds).
 exemplars="$(cd "$(dirname "$0")/.." && pwd)/data/exemplars"
 "$exp" --quick "${NOIMG[@]}" --threads 2 --exemplars "$exemplars" --out "$out"
-# The photographs' fits are nl_parallel_for items (nl_study_exemplar_fits): one
+# The photographs' fits are nl_parallel_for items (l2_exemplar_fits): one
 # thread gives the same photos.tsv byte for byte (the size sweep, which does
 # not enter it, cut to 64 pixels and 2 seeds).
 # The transfer measurement's (replicate, band) renders and the size sweep's

@@ -10,95 +10,134 @@
 #include <string.h>
 
 #define MAXREP 16
-#define NRD 16   /* cutoff rule x n x distance x pool rule, table order */
+#define NRD    16 /* cutoff rule x n x distance x pool rule, table order */
 
+/* clang-format off */
 static const char *const rd_cols[] = {
-  "texture", "reading", "n_rule", "distance", "pool_rule", "cutoff_rule", "k0_is_input", "reps", "input_samples",
-  "cluster_samples", "dim", "stride", "cutoff", "cutoff_sd", "K0", "K0_sd", "K_final", "K_final_sd", "AIC", "AIC_sd",
-  "AIC_per_nd", "n_ok", "status", "matches", "headline", "seconds",
-  "paper_K_initial", "paper_K_final", "paper_cutoff", "paper_AIC"};
-static const char *const ess_cols[] = {"texture", "rep", "pool_rule", "stride", "rows", "runs", "tau_rows", "tau_sweeps",
-                                       "ess_tau", "tau_capped", "icc", "ess_kish", "ess_kish_per_run", "dec_sweeps"};
-static const char *const n_names[2] = {"sub1000", "all"}, *const d_names[2] = {"cossin", "angles"},
-                  *const p_names[2] = {"successive", "spaced"}, *const c_names[2] = {"thesis", "matched_K0"};
+  "texture", "reading", "n_rule", "distance", "pool_rule", "cutoff_rule", "k0_is_input", "reps",
+  "input_samples", "cluster_samples", "dim", "stride", "cutoff", "cutoff_sd", "K0", "K0_sd",
+  "K_final", "K_final_sd", "AIC", "AIC_sd", "AIC_per_nd", "n_ok", "status", "matches", "headline",
+  "seconds", "paper_K_initial", "paper_K_final", "paper_cutoff", "paper_AIC"
+};
+static const char *const ess_cols[] = {
+  "texture", "rep", "pool_rule", "stride", "rows", "runs", "tau_rows", "tau_sweeps", "ess_tau",
+  "tau_capped", "icc", "ess_kish", "ess_kish_per_run", "dec_sweeps"
+};
+/* clang-format on */
+static const char *const n_names[2] = { "sub1000", "all" };
+static const char *const d_names[2] = { "cossin", "angles" };
+static const char *const p_names[2] = { "successive", "spaced" };
+static const char *const c_names[2] = { "thesis", "matched_K0" };
 
-static const char *const rep_cols[] = {"texture", "reading", "k0_is_input", "K", "reps_drawn", "E_ks", "E_ks_sd", "E_con",
-                                       "E_con_sd", "below_ks", "below_con", "E_ks_original", "E_con_original"};
+/* clang-format off */
+static const char *const rep_cols[] = {
+  "texture", "reading", "k0_is_input", "K", "reps_drawn", "E_ks", "E_ks_sd", "E_con", "E_con_sd",
+  "below_ks", "below_con", "E_ks_original", "E_con_original"
+};
+/* clang-format on */
 
-typedef struct { double cut[MAXREP], k0[MAXREP], k[MAXREP], aic[MAXREP], apn[MAXREP], dim[MAXREP], sec; int n, ok, nin, ncl; const char *status; } acc;
+typedef struct {
+  double cut[MAXREP], k0[MAXREP], k[MAXREP], aic[MAXREP], apn[MAXREP], dim[MAXREP], sec;
+  int n, ok, nin, ncl;
+  const char *status;
+} acc;
 
-void nl_study_cheng_readings_params(nl_harness *r, nl_study_cheng_readings_options *ro)
+void c5_readings_params(nl_harness *r, c5_readings_options *ro)
 {
   int q = nl_harness_quick(r);
   ro->reps = (int)nl_harness_param_int(r, "reps", q ? 2 : 3, 1, MAXREP,
-        "pool replicates: each re-runs the original optimisation, the pool and the fits from its own seed (quick 2)");
+                                       "pool replicates: each re-runs the original optimisation, "
+                                       "the pool and the fits from its own seed (quick 2)");
   ro->stride = (int)nl_harness_param_int(r, "stride", 2, 1, 1000,
-        "sweeps between the states of the spaced pool rule (the pool collects N x stride tail states per run)");
+                                         "sweeps between the states of the spaced pool rule (the "
+                                         "pool collects N x stride tail states per run)");
   ro->draws = (int)nl_harness_param_int(r, "draws", q ? 4 : 24, 0, 4096,
-        "C6's question under each reading: reproductions drawn (swap 1) from replicate 0's models (quick 4)");
-  ro->all_reps = (int)nl_harness_param_int(r, "all_reps", 1, 0, MAXREP,
-        "replicates whose mixtures are also fitted on all pool rows (n = all; the costly fits)");
+                                        "C6's question under each reading: reproductions drawn "
+                                        "(swap 1) from replicate 0's models (quick 4)");
+  ro->all_reps = (int)nl_harness_param_int(
+      r, "all_reps", 1, 0, MAXREP,
+      "replicates whose mixtures are also fitted on all pool rows (n = all; the costly fits)");
 }
 
-void nl_study_cheng_readings_alloc(nl_study_cheng_readings *R)
+void c5_readings_alloc(c5_readings *R)
 {
   R->readings = nl_table_alloc(sizeof rd_cols / sizeof *rd_cols, rd_cols);
   R->ess = nl_table_alloc(sizeof ess_cols / sizeof *ess_cols, ess_cols);
   R->repro = nl_table_alloc(sizeof rep_cols / sizeof *rep_cols, rep_cols);
-  const char *pc[] = {"texture", "reading", "K", "AIC", "BIC", "headline"};
+  const char *pc[] = { "texture", "reading", "K", "AIC", "BIC", "headline" };
   R->paths = nl_table_alloc(6, pc);
 }
 
-void nl_study_cheng_readings_free(nl_study_cheng_readings *R) { nl_table_free(R->readings); nl_table_free(R->ess); nl_table_free(R->repro); nl_table_free(R->paths); }
+void c5_readings_free(c5_readings *R)
+{
+  nl_table_free(R->readings);
+  nl_table_free(R->ess);
+  nl_table_free(R->repro);
+  nl_table_free(R->paths);
+}
 
 static int rd_index(int cr, int n, int d, int p) { return ((cr * 2 + n) * 2 + d) * 2 + p; }
 
 /* What the tables need of one reading's fit (the model itself is freed in
  * the item that fitted it). */
 typedef struct {
-  double cutoff, acut, k0, k, aic, sec;   /* acut: the matched fit's cutoff on raw angles */
+  double cutoff, acut, k0, k, aic, sec; /* acut: the matched fit's cutoff on raw angles */
   size_t n_in, n_cl, d;
   nl_cheng_model_status status;
-  nl_gmm_step *path;   /* replicate 0: the AIC path (the figure) */
+  nl_gmm_step *path; /* replicate 0: the AIC path (the figure) */
   size_t npath;
-  int drawn;           /* replicate 0: C6's question answered (rep) */
-  double rep[10];      /* K, draws, E_ks, E_ks_sd, E_con, E_con_sd, below_ks, below_con, E_ks_orig, E_con_orig */
+  int drawn;      /* replicate 0: C6's question answered (rep) */
+  double rep[10]; /* K, draws, E_ks, E_ks_sd, E_con, E_con_sd, below_ks, below_con, E_ks_orig,
+                     E_con_orig */
 } fit_out;
 
 static void add(acc *a, const fit_out *f, double cutoff)
 {
   int i = a->n++;
-  a->cut[i] = cutoff; a->k0[i] = f->k0; a->k[i] = f->k;
+  a->cut[i] = cutoff;
+  a->k0[i] = f->k0;
+  a->k[i] = f->k;
   a->aic[i] = f->aic;
   a->sec += f->sec;
-  a->nin = (int)f->n_in; a->ncl = (int)f->n_cl; a->dim[i] = (double)f->d;
-  a->apn[i] = a->aic[i] / ((double)f->n_in * (double)f->d);   /* the dimension varies by replicate */
-  if (f->status == NL_CHENG_MODEL_OK) a->ok++;
-  else if (!a->status) a->status = nl_cheng_model_status_name(f->status);
+  a->nin = (int)f->n_in;
+  a->ncl = (int)f->n_cl;
+  a->dim[i] = (double)f->d;
+  a->apn[i] = a->aic[i] / ((double)f->n_in * (double)f->d); /* the dimension varies by replicate */
+  if (f->status == NL_CHENG_MODEL_OK)
+    a->ok++;
+  else if (!a->status)
+    a->status = nl_cheng_model_status_name(f->status);
 }
 
 /* The cutoff that gives k clusters of the model's clustered rows on raw angles. */
-static nl_status angle_cutoff_for_k(const nl_cheng_pool *pool, const nl_cheng_model *m, size_t k, double *c,
-                                    nl_error *err)
+static nl_status angle_cutoff_for_k(const nl_cheng_pool *pool, const nl_cheng_model *m, size_t k,
+                                    double *c, nl_error *err)
 {
   size_t n = m->n_cl, nl = pool->nlow;
-  double *x = nl_xmalloc(n * nl * sizeof *x), *Z = nl_xmalloc((n - 1) * 4 * sizeof *Z);
+  double *x = nl_xmalloc(n * nl * sizeof *x);      /* the rows' raw angles */
+  double *Z = nl_xmalloc((n - 1) * 4 * sizeof *Z); /* the linkage */
   for (size_t i = 0; i < n; i++) memcpy(x + i * nl, pool->theta + m->cl[i] * nl, nl * sizeof *x);
   nl_status st = nl_cluster_linkage(x, n, nl, NL_LINKAGE_COMPLETE, Z, err);
   if (!st) *c = nl_cheng_cutoff_for_k(Z, n, k);
-  free(x); free(Z);
+  free(x);
+  free(Z);
   return st;
 }
 
 /* C6's question (are reproductions close to and often below the original?)
  * under one reading's model: `draws` reproductions with every high entry
  * swapped, E_KS and E_Con over all entries, as C6 (stream "c5.reproduce"). */
-typedef struct { nl_harness *r; const nl_study_cheng_repro *rp; const nl_cheng_config *c;
-                 const nl_cheng_pattern *pat; int draws; } repro_ctx;
+typedef struct {
+  nl_harness *r;
+  const nl_study_cheng_repro *rp;
+  const nl_cheng_config *c;
+  const nl_cheng_pattern *pat;
+  int draws;
+} repro_ctx;
 
 static nl_status repro_draws(const repro_ctx *x, const nl_cheng_model *m, fit_out *f, nl_error *err)
 {
-  f->npath = m->npath;   /* replicate 0's AIC path of this reading (the figure) */
+  f->npath = m->npath; /* replicate 0's AIC path of this reading (the figure) */
   f->path = nl_xmalloc((m->npath ? m->npath : 1) * sizeof *f->path);
   memcpy(f->path, m->path, m->npath * sizeof *f->path);
   if (!m->gmm || x->draws < 1) return NL_OK;
@@ -109,13 +148,25 @@ static nl_status repro_draws(const repro_ctx *x, const nl_cheng_model *m, fit_ou
   nl_status st = NL_OK;
   for (int i = 0; i < x->draws && !st; i++) {
     nl_cheng_eval ev;
-    if ((st = nl_cheng_reproduce(x->rp->opt, m, 1.0, rng, out, err)) || (st = nl_cheng_evaluate(out, x->c, x->pat, &ev, err))) break;
-    ks[i] = ev.e_ks; con[i] = ev.e_con;
-    bk += ev.e_ks < x->rp->ev.e_ks; bc += ev.e_con < x->rp->ev.e_con;
+    if ((st = nl_cheng_reproduce(x->rp->opt, m, 1.0, rng, out, err)) ||
+        (st = nl_cheng_evaluate(out, x->c, x->pat, &ev, err)))
+      break;
+    ks[i] = ev.e_ks;
+    con[i] = ev.e_con;
+    bk += ev.e_ks < x->rp->ev.e_ks;
+    bc += ev.e_con < x->rp->ev.e_con;
   }
   if (!st) {
-    double v[10] = {(double)m->k, (double)x->draws, nl_study_mean(ks, x->draws), nl_study_sd(ks, x->draws), nl_study_mean(con, x->draws),
-                   nl_study_sd(con, x->draws), bk / x->draws, bc / x->draws, x->rp->ev.e_ks, x->rp->ev.e_con};
+    double v[10] = { (double)m->k,
+                     (double)x->draws,
+                     nl_study_mean(ks, x->draws),
+                     nl_study_sd(ks, x->draws),
+                     nl_study_mean(con, x->draws),
+                     nl_study_sd(con, x->draws),
+                     bk / x->draws,
+                     bc / x->draws,
+                     x->rp->ev.e_ks,
+                     x->rp->ev.e_con };
     memcpy(f->rep, v, sizeof v);
     f->drawn = 1;
   }
@@ -139,8 +190,8 @@ typedef struct {
   const nl_cheng_model_options *mo;
   unsigned long seed;
   int n;
-  const repro_ctx *x;   /* replicate 0 only */
-  fit_out f[3];         /* d = 0, d = 1, matched */
+  const repro_ctx *x; /* replicate 0 only */
+  fit_out f[3];       /* d = 0, d = 1, matched */
   nl_status st;
   nl_error err;
 } group;
@@ -149,19 +200,34 @@ static nl_status group_fits(group *g)
 {
   nl_cheng_model_options o = *g->mo;
   o.gmm.seed = g->seed;
-  o.cluster_samples = g->mo->samples;   /* the clustering always on the subsample */
+  o.cluster_samples = g->mo->samples; /* the clustering always on the subsample */
   o.samples = g->n ? 0 : g->mo->samples;
   for (int v = 0; v < 3; v++) {
-    if (v < 2) { o.cluster_angles = v; o.cutoff = g->th->cutoff; }   /* the thesis's cutoff: K0 a result */
-    else { o.cluster_angles = 0; o.cutoff = -1; o.target_k = (size_t)g->th->k0; }   /* K0 an input */
+    if (v < 2) {
+      o.cluster_angles = v;
+      o.cutoff = g->th->cutoff;
+    } /* the thesis's cutoff: K0 a result */
+    else {
+      o.cluster_angles = 0;
+      o.cutoff = -1;
+      o.target_k = (size_t)g->th->k0;
+    } /* K0 an input */
     nl_cheng_model *m;
     nl_status st = nl_cheng_model_fit(g->pool, &o, o.gmm.seed, &m, &g->err);
     if (st) return st;
     fit_out *f = &g->f[v];
-    *f = (fit_out){.cutoff = m->cutoff, .acut = NAN, .k0 = (double)m->k0, .k = (double)m->k,
-                   .aic = m->gmm ? m->gmm->aic : NAN, .sec = m->seconds_cluster + m->seconds_gmm,
-                   .n_in = m->n_in, .n_cl = m->n_cl, .d = m->d, .status = m->status};
-    if (v == 2 && m->n_cl > (size_t)g->th->k0) st = angle_cutoff_for_k(g->pool, m, (size_t)g->th->k0, &f->acut, &g->err);
+    *f = (fit_out){ .cutoff = m->cutoff,
+                    .acut = NAN,
+                    .k0 = (double)m->k0,
+                    .k = (double)m->k,
+                    .aic = m->gmm ? m->gmm->aic : NAN,
+                    .sec = m->seconds_cluster + m->seconds_gmm,
+                    .n_in = m->n_in,
+                    .n_cl = m->n_cl,
+                    .d = m->d,
+                    .status = m->status };
+    if (v == 2 && m->n_cl > (size_t)g->th->k0)
+      st = angle_cutoff_for_k(g->pool, m, (size_t)g->th->k0, &f->acut, &g->err);
     if (!st && g->x) st = repro_draws(g->x, m, f, &g->err);
     nl_cheng_model_free(m);
     if (st) return st;
@@ -178,27 +244,32 @@ static void group_item(void *ctx, size_t i, int t)
 
 /* The rows of one fit: its reading's accumulator, and on replicate 0 its
  * AIC path and C6's question. */
-static void fit_rows(nl_study_cheng_readings *R, acc *a, const fit_out *f, double cutoff, const char *tex,
+static void fit_rows(c5_readings *R, acc *a, const fit_out *f, double cutoff, const char *tex,
                      int cr, int n, int d, int p)
 {
   add(a, f, cutoff);
-  if (!f->path || (cr && d)) return;   /* the matched fit's path and draws: once, under the cossin id */
+  if (!f->path || (cr && d))
+    return; /* the matched fit's path and draws: once, under the cossin id */
   char id[80];
   reading_id(id, sizeof id, cr, n, d, p);
   for (size_t i = 0; i < f->npath; i++)
-    nl_table_append(R->paths, "ssdddd", tex, id, (double)f->path[i].k, f->path[i].aic, f->path[i].bic, 0.0);
+    nl_table_append(R->paths, "ssdddd", tex, id, (double)f->path[i].k, f->path[i].aic,
+                    f->path[i].bic, 0.0);
   const double *v = f->rep;
   if (f->drawn)
-    nl_table_append(R->repro, "ssddddddddddd", tex, id, (double)cr, v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9]);
+    nl_table_append(R->repro, "ssddddddddddd", tex, id, (double)cr, v[0], v[1], v[2], v[3], v[4],
+                    v[5], v[6], v[7], v[8], v[9]);
 }
 
-static void ess_row(nl_table *t, const char *tex, int k, int p, int stride, const nl_cheng_pool *pool)
+static void ess_row(nl_table *t, const char *tex, int k, int p, int stride,
+                    const nl_cheng_pool *pool)
 {
   nl_cheng_pool_ess_result e;
   nl_cheng_pool_ess(pool, &e);
   int st = p ? stride : 1;
-  nl_table_append(t, "sdsddddddddddd", tex, (double)k, p_names[p], (double)st, (double)pool->n, (double)pool->runs, e.tau,
-                  e.tau * st, e.ess_tau, (double)e.capped, e.icc, e.ess_kish, e.ess_kish / pool->runs, e.dec * st);
+  nl_table_append(t, "sdsddddddddddd", tex, (double)k, p_names[p], (double)st, (double)pool->n,
+                  (double)pool->runs, e.tau, e.tau * st, e.ess_tau, (double)e.capped, e.icc,
+                  e.ess_kish, e.ess_kish / pool->runs, e.dec * st);
 }
 
 /* Mean over the finite values; sd over them (0 for fewer than 2). */
@@ -206,7 +277,8 @@ static void mean_sd(const double *x, int n, double *m, double *sd)
 {
   double v[MAXREP];
   int k = 0;
-  for (int i = 0; i < n; i++) if (isfinite(x[i])) v[k++] = x[i];
+  for (int i = 0; i < n; i++)
+    if (isfinite(x[i])) v[k++] = x[i];
   *m = k ? nl_study_mean(v, k) : 0;
   *sd = k ? nl_study_sd(v, k) : 0;
 }
@@ -214,10 +286,11 @@ static void mean_sd(const double *x, int n, double *m, double *sd)
 static int within(double ours, double paper, int factor)
 {
   if (!(ours > 0 || ours < 0)) return 0;
-  return factor ? fmax(ours / paper, paper / ours) <= 1.25 : fabs(ours - paper) <= 0.5 * fabs(paper);
+  return factor ? fmax(ours / paper, paper / ours) <= C5_MATCH_FACTOR
+                : fabs(ours - paper) <= C5_MATCH_REL * fabs(paper);
 }
 
-static void rows(nl_study_cheng_readings *R, const acc *A, const nl_study_cheng_thesis_gmm *th, int stride)
+static void rows(c5_readings *R, const acc *A, const nl_study_cheng_thesis_gmm *th, int stride)
 {
   nl_table *t = R->readings;
   for (int cr = 0; cr < 2; cr++)
@@ -227,49 +300,77 @@ static void rows(nl_study_cheng_readings *R, const acc *A, const nl_study_cheng_
           const acc *a = &A[rd_index(cr, n, d, p)];
           if (!a->n) continue;
           double v[4][2];
-          mean_sd(a->cut, a->n, &v[0][0], &v[0][1]); mean_sd(a->k0, a->n, &v[1][0], &v[1][1]);
-          mean_sd(a->k, a->n, &v[2][0], &v[2][1]); mean_sd(a->aic, a->n, &v[3][0], &v[3][1]);
+          mean_sd(a->cut, a->n, &v[0][0], &v[0][1]);
+          mean_sd(a->k0, a->n, &v[1][0], &v[1][1]);
+          mean_sd(a->k, a->n, &v[2][0], &v[2][1]);
+          mean_sd(a->aic, a->n, &v[3][0], &v[3][1]);
           char id[80];
-          snprintf(id, sizeof id, "%s/%s/%s/%s", n_names[n], d_names[d], p_names[p], c_names[cr]);
-          int match = (cr ? within(v[0][0], th->cutoff, 1) : within(v[1][0], th->k0, 1)) + within(v[2][0], th->k, 1) +
-                      within(v[3][0], th->aic, 0);
+          reading_id(id, sizeof id, cr, n, d, p);
+          int match = (cr ? within(v[0][0], th->cutoff, 1) : within(v[1][0], th->k0, 1)) +
+                      within(v[2][0], th->k, 1) + within(v[3][0], th->aic, 0);
           size_t q = nl_table_append_empty(t);
-          nl_table_set_text(t, q, "texture", th->texture); nl_table_set_text(t, q, "reading", id);
-          nl_table_set_text(t, q, "n_rule", n_names[n]); nl_table_set_text(t, q, "distance", d_names[d]);
-          nl_table_set_text(t, q, "pool_rule", p_names[p]); nl_table_set_text(t, q, "cutoff_rule", c_names[cr]);
-          nl_table_set(t, q, "k0_is_input", cr); nl_table_set(t, q, "reps", a->n);
-          nl_table_set(t, q, "input_samples", a->nin); nl_table_set(t, q, "cluster_samples", a->ncl);
+          nl_table_set_text(t, q, "texture", th->texture);
+          nl_table_set_text(t, q, "reading", id);
+          nl_table_set_text(t, q, "n_rule", n_names[n]);
+          nl_table_set_text(t, q, "distance", d_names[d]);
+          nl_table_set_text(t, q, "pool_rule", p_names[p]);
+          nl_table_set_text(t, q, "cutoff_rule", c_names[cr]);
+          nl_table_set(t, q, "k0_is_input", cr);
+          nl_table_set(t, q, "reps", a->n);
+          nl_table_set(t, q, "input_samples", a->nin);
+          nl_table_set(t, q, "cluster_samples", a->ncl);
           double apn, apn_sd, dm, dm_sd;
-          mean_sd(a->apn, a->n, &apn, &apn_sd); mean_sd(a->dim, a->n, &dm, &dm_sd);
-          nl_table_set(t, q, "dim", dm); nl_table_set(t, q, "stride", p ? stride : 1);
-          const char *vc[4][2] = {{"cutoff", "cutoff_sd"}, {"K0", "K0_sd"}, {"K_final", "K_final_sd"}, {"AIC", "AIC_sd"}};
-          for (int k = 0; k < 4; k++) { nl_table_set(t, q, vc[k][0], v[k][0]); nl_table_set(t, q, vc[k][1], v[k][1]); }
+          mean_sd(a->apn, a->n, &apn, &apn_sd);
+          mean_sd(a->dim, a->n, &dm, &dm_sd);
+          nl_table_set(t, q, "dim", dm);
+          nl_table_set(t, q, "stride", p ? stride : 1);
+          const char *vc[4][2] = { { "cutoff", "cutoff_sd" },
+                                   { "K0", "K0_sd" },
+                                   { "K_final", "K_final_sd" },
+                                   { "AIC", "AIC_sd" } };
+          for (int k = 0; k < 4; k++) {
+            nl_table_set(t, q, vc[k][0], v[k][0]);
+            nl_table_set(t, q, vc[k][1], v[k][1]);
+          }
           nl_table_set(t, q, "AIC_per_nd", apn);
-          nl_table_set(t, q, "n_ok", a->ok); nl_table_set_text(t, q, "status", a->status ? a->status : "ok");
-          nl_table_set(t, q, "matches", match); nl_table_set(t, q, "headline", 0); nl_table_set(t, q, "seconds", a->sec);
-          if (cr) nl_table_set_text(t, q, "paper_K_initial", "n/a");   /* K0 was the input: nothing to compare */
-          else nl_table_set(t, q, "paper_K_initial", th->k0);
-          nl_table_set(t, q, "paper_K_final", th->k); nl_table_set(t, q, "paper_cutoff", th->cutoff);
+          nl_table_set(t, q, "n_ok", a->ok);
+          nl_table_set_text(t, q, "status", a->status ? a->status : "ok");
+          nl_table_set(t, q, "matches", match);
+          nl_table_set(t, q, "headline", 0);
+          nl_table_set(t, q, "seconds", a->sec);
+          if (cr) /* K0 was the input: nothing to compare */
+            nl_table_set_text(t, q, "paper_K_initial", "n/a");
+          else
+            nl_table_set(t, q, "paper_K_initial", th->k0);
+          nl_table_set(t, q, "paper_K_final", th->k);
+          nl_table_set(t, q, "paper_cutoff", th->cutoff);
           nl_table_set(t, q, "paper_AIC", th->aic);
         }
 }
 
 /* The original optimisation of every replicate: independent items (each from
  * its replicate's seed, into its own slot). */
-typedef struct { const nl_cheng_config *c; const nl_cheng_pattern *pat; unsigned long base; nl_study_cheng_repro *rp;
-                 nl_status *st; nl_error *err; } orig_job;
+typedef struct {
+  const nl_cheng_config *c;
+  const nl_cheng_pattern *pat;
+  unsigned long base;
+  nl_study_cheng_repro *rp;
+  nl_status *st;
+  nl_error *err;
+} orig_job;
 
 static void orig_item(void *ctx, size_t k, int t)
 {
   (void)t;
   orig_job *j = ctx;
-  j->st[k] = nl_study_cheng_repro_original(j->c, j->pat, nl_seed_replicate(j->base, (long)k), &j->rp[k], &j->err[k]);
+  j->st[k] = nl_study_cheng_repro_original(j->c, j->pat, nl_seed_replicate(j->base, (long)k),
+                                           &j->rp[k], &j->err[k]);
 }
 
-void nl_study_cheng_readings_case(const nl_study_cheng *s, nl_study_cheng_readings *R, nl_study_cheng_pools *T,
-                                  const nl_study_cheng_thesis_gmm *th, const nl_cheng_pool_options *po,
-                                  const nl_cheng_model_options *mo, const nl_study_cheng_readings_options *ro,
-                                  int nseeds, int full)
+void c5_readings_case(const nl_study_cheng *s, c5_readings *R, c5_pools *T,
+                      const nl_study_cheng_thesis_gmm *th, const nl_cheng_pool_options *po,
+                      const nl_cheng_model_options *mo, const c5_readings_options *ro, int nseeds,
+                      int full)
 {
   nl_harness *r = s->r;
   acc *A = nl_xcalloc(NRD, sizeof *A);
@@ -277,39 +378,44 @@ void nl_study_cheng_readings_case(const nl_study_cheng *s, nl_study_cheng_readin
   nl_cheng_config c = s->c;
   c.con = th->con;
   nl_cheng_pool_options pl = *po;
-  pl.keep = po->keep * ro->stride;   /* N x stride tail states per run */
-  nl_cheng_model_options mm = *mo;   /* every fit of this texture shares one memo of EM fits */
+  pl.keep = po->keep * ro->stride; /* N x stride tail states per run */
+  nl_cheng_model_options mm = *mo; /* every fit of this texture shares one memo of EM fits */
   mm.gmm.memo = nl_gmm_memo_alloc();
   int reps = ro->reps, ng = 0;
   nl_study_cheng_repro rp[MAXREP];
   nl_cheng_pool *pools[MAXREP][2];
   nl_status st[MAXREP];
   nl_error err[MAXREP];
-  orig_job oj = {&c, pat, nl_harness_seed(r), rp, st, err};
+  orig_job oj = { &c, pat, nl_harness_seed(r), rp, st, err };
   nl_parallel_for((size_t)reps, po->threads, orig_item, &oj);
-  for (int k = 0; k < reps; k++) {   /* pools: their runs are the items */
-    if (st[k] || nl_study_cheng_repro_pool(&rp[k], &c, pat, &pl, nl_seed_replicate(nl_harness_seed(r), k), &err[k]))
+  for (int k = 0; k < reps; k++) { /* pools: their runs are the items */
+    if (st[k] || nl_study_cheng_repro_pool(&rp[k], &c, pat, &pl,
+                                           nl_seed_replicate(nl_harness_seed(r), k), &err[k]))
       nl_harness_die(r, 1, "%s: %s", th->texture, err[k].msg);
     pools[k][0] = nl_cheng_pool_thin(rp[k].pool, po->keep, 1);
     pools[k][1] = nl_cheng_pool_thin(rp[k].pool, po->keep, ro->stride);
     for (int p = 0; p < 2; p++) ess_row(R->ess, th->texture, k, p, ro->stride, pools[k][p]);
   }
-  if (T) {   /* the older tables: replicate 0, successive states (the default pool) */
+  if (T) { /* the older tables: replicate 0, successive states (the default pool) */
     nl_study_cheng_repro r0 = rp[0];
     r0.pool = pools[0][0];
-    nl_study_cheng_pool_case_with(s, T, th, po, &mm, nseeds, full, &r0);
+    c5_pool_case_with(s, T, th, po, &mm, nseeds, full, &r0);
   }
   /* Every (replicate, sample rule, pool rule) group is an item; the costly
    * all-rows groups first so the two threads end together. Rows are added
    * in the serial order afterwards. */
-  repro_ctx x = {r, &rp[0], &c, pat, ro->draws};
+  repro_ctx x = { r, &rp[0], &c, pat, ro->draws };
   group *gs = nl_xcalloc((size_t)reps * 4, sizeof *gs), *order[MAXREP * 4];
   for (int n = 1; n >= 0; n--)
     for (int k = 0; k < reps; k++)
       for (int p = 0; p < 2 && (n == 0 || k < ro->all_reps); p++) {
         group *g = &gs[(k * 2 + n) * 2 + p];
-        *g = (group){.pool = pools[k][p], .th = th, .mo = &mm, .seed = nl_seed_replicate(nl_harness_seed(r), k), .n = n,
-                     .x = k == 0 ? &x : NULL};
+        *g = (group){ .pool = pools[k][p],
+                      .th = th,
+                      .mo = &mm,
+                      .seed = nl_seed_replicate(nl_harness_seed(r), k),
+                      .n = n,
+                      .x = k == 0 ? &x : NULL };
         order[ng++] = g;
       }
   nl_parallel_for((size_t)ng, po->threads, group_item, order);
@@ -318,14 +424,16 @@ void nl_study_cheng_readings_case(const nl_study_cheng *s, nl_study_cheng_readin
       for (int p = 0; p < 2; p++) {
         group *g = &gs[(k * 2 + n) * 2 + p];
         if (g->st) nl_harness_die(r, 1, "%s", g->err.msg);
-        for (int d = 0; d < 2; d++) fit_rows(R, &A[rd_index(0, n, d, p)], &g->f[d], g->f[d].cutoff, th->texture, 0, n, d, p);
+        for (int d = 0; d < 2; d++)
+          fit_rows(R, &A[rd_index(0, n, d, p)], &g->f[d], g->f[d].cutoff, th->texture, 0, n, d, p);
         fit_rows(R, &A[rd_index(1, n, 0, p)], &g->f[2], g->f[2].cutoff, th->texture, 1, n, 0, p);
         fit_rows(R, &A[rd_index(1, n, 1, p)], &g->f[2], g->f[2].acut, th->texture, 1, n, 1, p);
         for (int v = 0; v < 3; v++) free(g->f[v].path);
       }
   nl_gmm_memo_free(mm.gmm.memo);
   for (int k = 0; k < reps; k++) {
-    nl_cheng_pool_free(pools[k][0]); nl_cheng_pool_free(pools[k][1]);
+    nl_cheng_pool_free(pools[k][0]);
+    nl_cheng_pool_free(pools[k][1]);
     nl_study_cheng_repro_clear(&rp[k]);
   }
   free(gs);
@@ -334,27 +442,24 @@ void nl_study_cheng_readings_case(const nl_study_cheng *s, nl_study_cheng_readin
   free(A);
 }
 
-/* Row of texture tex and reading id, or -1. */
-static long find(const nl_table *t, const char *tex, const char *id)
-{
-  for (size_t q = 0; q < t->nrows; q++)
-    if (!strcmp(nl_table_text(t, q, "texture"), tex) && !strcmp(nl_table_text(t, q, "reading"), id)) return (long)q;
-  return -1;
-}
-
-const char *nl_study_cheng_readings_report(nl_harness *r, nl_study_cheng_readings *R)
+const char *c5_readings_write(nl_harness *r, c5_readings *R)
 {
   nl_table *t = R->readings;
   static char best[80];
   int bestn = -1;
-  for (size_t q = 0; q < t->nrows; q++) {   /* HEADLINE RULE: matches summed over the textures */
+  for (size_t q = 0; q < t->nrows; q++) { /* HEADLINE RULE: matches summed over the textures */
     if (nl_table_value(t, q, "k0_is_input") != 0) continue;
     const char *id = nl_table_text(t, q, "reading");
     int sum = 0;
-    for (size_t u = 0; u < t->nrows; u++) if (!strcmp(nl_table_text(t, u, "reading"), id)) sum += (int)nl_table_value(t, u, "matches");
-    if (sum > bestn) { bestn = sum; snprintf(best, sizeof best, "%s", id); }
+    for (size_t u = 0; u < t->nrows; u++)
+      if (!strcmp(nl_table_text(t, u, "reading"), id)) sum += (int)nl_table_value(t, u, "matches");
+    if (sum > bestn) {
+      bestn = sum;
+      snprintf(best, sizeof best, "%s", id);
+    }
   }
-  for (size_t q = 0; q < t->nrows; q++) nl_table_set(t, q, "headline", !strcmp(nl_table_text(t, q, "reading"), best));
+  for (size_t q = 0; q < t->nrows; q++)
+    nl_table_set(t, q, "headline", !strcmp(nl_table_text(t, q, "reading"), best));
   for (size_t q = 0; q < R->paths->nrows; q++)
     nl_table_set(R->paths, q, "headline", !strcmp(nl_table_text(R->paths, q, "reading"), best));
   nl_harness_write_table(r, R->paths, "aic_readings.tsv");
@@ -362,67 +467,5 @@ const char *nl_study_cheng_readings_report(nl_harness *r, nl_study_cheng_reading
   nl_harness_write_table(r, R->ess, "ess.tsv");
   nl_harness_write_table(r, R->repro, "reproduce.tsv");
   nl_harness_check(r, "readings.tsv", "seconds", "ignore");
-  nl_harness_text(r, "**Readings of Tables 4.2-4.4** (readings.tsv; rules in experiments/c5_pools/readings.h). "
-                     "Factors: the mixture's sample (sub1000: the input subsample; all: every pool row; the clustering "
-                     "always on the subsample), the clustering distance (cossin chords or Euclidean on raw angles), the "
-                     "pool rule (successive cold-tail states or states spaced by a stride) and the cutoff (the thesis's, "
-                     "K0 a result; matched_K0, K0 an input: k0_is_input = 1, no thesis K0 beside it). Mean and sd over "
-                     "pool replicates (column reps). A match: K0 or K_final within a factor 1.25, the cutoff (matched "
-                     "rows) within a factor 1.25, AIC within 50%%. Headline: the reading with K0 a result and the most "
-                     "matches over the three textures: %s (%d matches of %d).\n", best, bestn, 9);
-  nl_harness_report_columns(r, t, "readings.tsv", "texture,reading,k0_is_input,reps,input_samples,dim,cutoff,K0,K0_sd,K_final,K_final_sd,AIC,AIC_sd,AIC_per_nd,matches,headline,paper_K_initial,paper_K_final,paper_cutoff,paper_AIC",
-                            "Every reading beside the thesis's numbers (paper_*; n/a: K0 was the input)", 4);
-  for (size_t q = 0; q < t->nrows; q++) {
-    if (!nl_table_value(t, q, "headline")) continue;
-    const char *tex = nl_table_text(t, q, "texture");
-    int one = nl_table_value(t, q, "reps") < 2;   /* one replicate: no sd to show */
-    nl_harness_text(r, "Headline, %s: K0 %.3g (thesis %g), K_final %.3g (thesis %g), AIC %.4g (thesis %.4g; per sample and "
-                       "dimension %.3g), %s %g replicate%s.\n", tex, nl_table_value(t, q, "K0"),
-                    nl_table_value(t, q, "paper_K_initial"), nl_table_value(t, q, "K_final"),
-                    nl_table_value(t, q, "paper_K_final"), nl_table_value(t, q, "AIC"),
-                    nl_table_value(t, q, "paper_AIC"), nl_table_value(t, q, "AIC_per_nd"), one ? "from" : "mean over",
-                    nl_table_value(t, q, "reps"), one ? " (all_reps; no sd)" : "s (sd in readings.tsv)");
-    char what[96];
-    const char *v[][4] = {{"initial K", "paper_K_initial", "K0", "K0_sd"}, {"final K", "paper_K_final", "K_final", "K_final_sd"},
-                          {"AIC", "paper_AIC", "AIC", "AIC_sd"}};
-    for (int k = 0; k < 3; k++) {
-      snprintf(what, sizeof what, "%s, %s", v[k][0], tex);
-      nl_harness_verdict(r, "readings.tsv", t, q, what, v[k][1], v[k][2], one ? NULL : v[k][3], k < 2 ? "factor 1.25 2" : "rel 0.1 0.5",
-                         "headline reading of readings.tsv, the thesis's cutoff as printed");
-    }
-    char mid[80];   /* the cutoff is a result only where K0 is the input */
-    snprintf(mid, sizeof mid, "%.*s/matched_K0", (int)(strrchr(best, '/') - best), best);
-    long m = find(t, tex, mid);
-    if (m >= 0) {
-      snprintf(what, sizeof what, "cutoff, %s", tex);
-      nl_harness_verdict(r, "readings.tsv", t, (size_t)m, what, "paper_cutoff", "cutoff",
-                         nl_table_value(t, (size_t)m, "reps") < 2 ? NULL : "cutoff_sd", "factor 1.25 2",
-                         "the cutoff giving the thesis's K0 under the headline's sample, distance and pool rule");
-    }
-  }
-  nl_harness_report_table(r, R->ess, "Effective sample size of the pools (cos, sin of the low angles): tau, the "
-                          "integrated autocorrelation time within runs (tau_capped = 1: window-limited); icc, the between-run "
-                          "share of the variance, and Kish's ess_kish = rows / (1 + (m - 1) icc); dec_sweeps, the sweeps a "
-                          "diffusing state needs to move as far as two states of different runs (2 var_total / msd(1 sweep))", 4);
-  for (size_t q = 0; q < R->ess->nrows; q++)
-    if (nl_table_value(R->ess, q, "rep") == 0)
-      nl_harness_text(r, "%s, %s states (stride %g): %.3g of the variance lies between runs (icc), effective sample size "
-                         "%.4g of %g rows (%.3g per run; from tau: %.4g); decorrelation interval %.3g sweeps%s.\n",
-                      nl_table_text(R->ess, q, "texture"), nl_table_text(R->ess, q, "pool_rule"), nl_table_value(R->ess, q, "stride"),
-                      nl_table_value(R->ess, q, "icc"), nl_table_value(R->ess, q, "ess_kish"), nl_table_value(R->ess, q, "rows"),
-                      nl_table_value(R->ess, q, "ess_kish_per_run"), nl_table_value(R->ess, q, "ess_tau"), nl_table_value(R->ess, q, "dec_sweeps"),
-                      nl_table_value(R->ess, q, "dec_sweeps") > nl_table_value(R->ess, q, "rows") / nl_table_value(R->ess, q, "runs") * nl_table_value(R->ess, q, "stride")
-                        ? ", longer than the states kept per run span" : ", within the span of a run's states");
-  nl_harness_report_table(r, R->repro, "C6's question under each reading (replicate 0): reproductions drawn from the "
-                          "reading's mixture with every high entry swapped; below_*: the fraction below the original", 4);
-  for (size_t q = 0; q < R->repro->nrows; q++) {
-    const char *id = nl_table_text(R->repro, q, "reading");
-    if (strcmp(id, best) && strcmp(id, "sub1000/cossin/successive/matched_K0")) continue;
-    nl_harness_text(r, "%s, %s%s: E_KS %.4g +- %.2g against the original's %.4g (%.0f%% below), E_Con %.4g (original %.4g, "
-                       "%.0f%% below), K %g.\n", nl_table_text(R->repro, q, "texture"), id, strcmp(id, best) ? " (C6's reading)" : " (headline)",
-                    nl_table_value(R->repro, q, "E_ks"), nl_table_value(R->repro, q, "E_ks_sd"), nl_table_value(R->repro, q, "E_ks_original"),
-                    100 * nl_table_value(R->repro, q, "below_ks"), nl_table_value(R->repro, q, "E_con"),
-                    nl_table_value(R->repro, q, "E_con_original"), 100 * nl_table_value(R->repro, q, "below_con"), nl_table_value(R->repro, q, "K"));
-  }
   return best;
 }

@@ -24,32 +24,39 @@
 #ifndef C5_READINGS_H
 #define C5_READINGS_H
 
-#include "study/nl_study_cheng.h"
+#include "pools.h"
+
+#define C5_MATCH_FACTOR 1.25 /* a match: K0, K_final or the cutoff within this factor */
+#define C5_MATCH_REL    0.5  /* a match: AIC within this fraction of the thesis's */
 
 /* paths: the AIC path of every reading's mixture on pool replicate 0 (texture,
  * reading, K, AIC, BIC, headline = 1 on the headline reading's rows): C5's AIC figure. */
-typedef struct { nl_table *readings, *ess, *repro, *paths; } nl_study_cheng_readings;
+typedef struct {
+  nl_table *readings, *ess, *repro, *paths;
+} c5_readings;
 
 /* --set parameters: reps (pool replicates; quick 2), stride (sweeps between
  * spaced states), all_reps (replicates fitted on all rows), draws
  * (reproductions per model for C6's question; quick 4). */
-typedef struct { int reps, stride, all_reps, draws; } nl_study_cheng_readings_options;
-void nl_study_cheng_readings_params(nl_harness *r, nl_study_cheng_readings_options *ro);
+typedef struct {
+  int reps, stride, all_reps, draws;
+} c5_readings_options;
+void c5_readings_params(nl_harness *r, c5_readings_options *ro);
 
-void nl_study_cheng_readings_alloc(nl_study_cheng_readings *R);
-void nl_study_cheng_readings_free(nl_study_cheng_readings *R);
+void c5_readings_alloc(c5_readings *R);
+void c5_readings_free(c5_readings *R);
 /* One texture: for each replicate, the original, a pool with N x stride tail
  * states per run, its successive and spaced pools, their ESS, and every
  * reading's model. Replicate 0's successive pool also feeds C5's older
- * tables (T; gmm.tsv ... over nseeds fit seeds, as nl_study_cheng_pool_case). */
-void nl_study_cheng_readings_case(const nl_study_cheng *s, nl_study_cheng_readings *R, nl_study_cheng_pools *T,
-                                  const nl_study_cheng_thesis_gmm *th, const nl_cheng_pool_options *po,
-                                  const nl_cheng_model_options *mo, const nl_study_cheng_readings_options *ro,
-                                  int nseeds, int full);
-/* Marks the headline, writes readings.tsv and ess.tsv, reports them with
- * prose formatted from the tables and declares the verdicts (K0, K_final,
- * AIC from the headline rows; the cutoff from the matched_K0 row of the
- * headline's n, distance and pool rule). Returns the headline's reading id. */
-const char *nl_study_cheng_readings_report(nl_harness *r, nl_study_cheng_readings *R);
+ * tables (T; gmm.tsv ... over nseeds fit seeds, as c5_pool_case). */
+void c5_readings_case(const nl_study_cheng *s, c5_readings *R, c5_pools *T,
+                      const nl_study_cheng_thesis_gmm *th, const nl_cheng_pool_options *po,
+                      const nl_cheng_model_options *mo, const c5_readings_options *ro, int nseeds,
+                      int full);
+/* Marks the headline (HEADLINE RULE above) in readings.tsv and
+ * aic_readings.tsv, writes them with ess.tsv and reproduce.tsv, and returns
+ * the headline's reading id (static storage). Its prose and verdicts:
+ * c5_readings_report (report.h). */
+const char *c5_readings_write(nl_harness *r, c5_readings *R);
 
 #endif

@@ -10,22 +10,36 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* clang-format off */
 static const char *const sum_cols[] = {
-  "pattern", "table", "seeds", "E_stat", "E_stat_sd", "D_z", "p_z", "p_z_min", "D_phi", "p_phi", "p_phi_min",
-  "p_stat", "p_stat_min", "uniform", "V_kuiper", "p_kuiper", "p_kuiper_min", "R_rayleigh", "p_rayleigh",
-  "p_rayleigh_min", "E_con", "E_con_sd", "rms_con", "E", "r_pattern", "r_pattern_sd", "contrast", "contrast_sd",
-  "E_con_random", "E_con_random_sd", "E_con_const", "con_vs_const"};
+  "pattern", "table", "seeds", "E_stat", "E_stat_sd", "D_z", "p_z", "p_z_min", "D_phi", "p_phi",
+  "p_phi_min", "p_stat", "p_stat_min", "uniform", "V_kuiper", "p_kuiper", "p_kuiper_min",
+  "R_rayleigh", "p_rayleigh", "p_rayleigh_min", "E_con", "E_con_sd", "rms_con", "E", "r_pattern",
+  "r_pattern_sd", "contrast", "contrast_sd", "E_con_random", "E_con_random_sd", "E_con_const",
+  "con_vs_const"
+};
+/* clang-format on */
 #define NSUM (sizeof sum_cols / sizeof *sum_cols)
 
-nl_table *nl_study_cheng3_summary_alloc(void) { return nl_table_alloc(NSUM, sum_cols); }
+nl_table *c8_summary_alloc(void) { return nl_table_alloc(NSUM, sum_cols); }
 
-#define FIELD(f) for (int i = 0; i < k; i++) x[i] = ev[i].f
+#define FIELD(f)                                                                                   \
+  for (int i = 0; i < k; i++) x[i] = ev[i].f
 /* mean, then sd (kind 0) or min (kind 1) of field f into the next columns */
-#define PUT(f, kind) do { FIELD(f); nl_table_set(t, row, sum_cols[c++], nl_study_mean(x, k)); \
-    nl_table_set(t, row, sum_cols[c++], (kind) ? nl_study_min(x, k) : nl_study_sd(x, k)); } while (0)
-#define PUT1(f) do { FIELD(f); nl_table_set(t, row, sum_cols[c++], nl_study_mean(x, k)); } while (0)
+#define PUT(f, kind)                                                                               \
+  do {                                                                                             \
+    FIELD(f);                                                                                      \
+    nl_table_set(t, row, sum_cols[c++], nl_study_mean(x, k));                                      \
+    nl_table_set(t, row, sum_cols[c++], (kind) ? nl_study_min(x, k) : nl_study_sd(x, k));          \
+  } while (0)
+#define PUT1(f)                                                                                    \
+  do {                                                                                             \
+    FIELD(f);                                                                                      \
+    nl_table_set(t, row, sum_cols[c++], nl_study_mean(x, k));                                      \
+  } while (0)
 
-static void summary_add(nl_table *t, const char *pattern, const char *table, const nl_cheng3_eval *ev, int k)
+static void summary_add(nl_table *t, const char *pattern, const char *table,
+                        const nl_cheng3_eval *ev, int k)
 {
   double *x = nl_xmalloc((size_t)k * sizeof *x);
   size_t row = nl_table_append_empty(t);
@@ -33,18 +47,31 @@ static void summary_add(nl_table *t, const char *pattern, const char *table, con
   nl_table_set_text(t, row, sum_cols[c++], pattern);
   nl_table_set_text(t, row, sum_cols[c++], table);
   nl_table_set(t, row, sum_cols[c++], k);
-  PUT(e_stat, 0); PUT1(d_z); PUT(p_z, 1); PUT1(d_phi); PUT(p_phi, 1); PUT(p_stat, 1);
+  PUT(e_stat, 0);
+  PUT1(d_z);
+  PUT(p_z, 1);
+  PUT1(d_phi);
+  PUT(p_phi, 1);
+  PUT(p_stat, 1);
   for (int i = 0; i < k; i++) pass += ev[i].p_stat >= 0.05;
   nl_table_set(t, row, sum_cols[c++], pass / (double)k);
-  PUT1(kuiper_v); PUT(p_kuiper, 1); PUT1(rayleigh_r); PUT(p_rayleigh, 1);
-  PUT(e_con, 0); PUT1(rms_con); PUT1(e); PUT(r_pattern, 0); PUT(contrast, 0); PUT(e_con_random, 0);
-  nl_table_set(t, row, sum_cols[c++], ev[0].e_con_const);   /* the pattern's alone */
+  PUT1(kuiper_v);
+  PUT(p_kuiper, 1);
+  PUT1(rayleigh_r);
+  PUT(p_rayleigh, 1);
+  PUT(e_con, 0);
+  PUT1(rms_con);
+  PUT1(e);
+  PUT(r_pattern, 0);
+  PUT(contrast, 0);
+  PUT(e_con_random, 0);
+  nl_table_set(t, row, sum_cols[c++], ev[0].e_con_const); /* the pattern's alone */
   FIELD(e_con);
   nl_table_set(t, row, sum_cols[c++], nl_study_mean(x, k) / ev[0].e_con_const);
   free(x);
 }
 
-/* Seed i of nl_study_cheng3_seeds: its own slots (ev[i], ev0[i], st[i],
+/* Seed i of c8_seeds: its own slots (ev[i], ev0[i], st[i],
  * err[i], and the table for seed 0), its own seed nl_seed_replicate(seed, i),
  * so the results do not depend on the thread count (nl_parallel.h). */
 typedef struct {
@@ -61,12 +88,12 @@ static void seed_item(void *ctx, size_t i, int thread)
 {
   (void)thread;
   seeds_job *j = ctx;
-  j->st[i] = nl_cheng3_run(j->c, j->pat, nl_seed_replicate(j->seed, (long)i), &j->ev[i], &j->ev0[i], NULL,
-                           i ? NULL : &j->first, &j->err[i]);
+  j->st[i] = nl_cheng3_run(j->c, j->pat, nl_seed_replicate(j->seed, (long)i), &j->ev[i], &j->ev0[i],
+                           NULL, i ? NULL : &j->first, &j->err[i]);
 }
 
-nl_cheng3_table *nl_study_cheng3_seeds(nl_harness *r, const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
-                                       nl_table *sum, const char *name, nl_cheng3_table **start, double *seconds)
+nl_cheng3_table *c8_seeds(nl_harness *r, const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
+                          nl_table *sum, const char *name, nl_cheng3_table **start, double *seconds)
 {
   int k = nl_harness_seeds(r);
   nl_cheng3_eval *ev = nl_xmalloc(2 * (size_t)k * sizeof *ev), *ev0 = ev + k;
@@ -74,16 +101,17 @@ nl_cheng3_table *nl_study_cheng3_seeds(nl_harness *r, const nl_cheng3_config *c,
   nl_error *err = nl_xmalloc((size_t)k * sizeof *err);
   double t0 = nl_time_now();
   /* The k seed runs on the run's threads; rows from them in seed order. */
-  seeds_job j = {c, pat, nl_harness_seed(r), ev, ev0, NULL, st, err};
+  seeds_job j = { c, pat, nl_harness_seed(r), ev, ev0, NULL, st, err };
   nl_parallel_for((size_t)k, nl_harness_threads(r), seed_item, &j);
-  for (int i = 0; i < k; i++)   /* the first failure in seed order, as a serial loop met it */
+  for (int i = 0; i < k; i++) /* the first failure in seed order, as a serial loop met it */
     if (st[i] != NL_OK) nl_harness_die(r, 1, "%s", err[i].msg);
   nl_harness_progress(r, 1.0, name);
   if (seconds) *seconds = nl_time_now() - t0;
   summary_add(sum, name, "optimised", ev, k);
   summary_add(sum, name, "random", ev0, k);
   *start = nl_cheng3_table_alloc(c->m);
-  nl_cheng3_table_seed(*start, nl_seed_replicate(nl_harness_seed(r), 0));   /* the first run's start */
+  nl_cheng3_table_seed(*start,
+                       nl_seed_replicate(nl_harness_seed(r), 0)); /* the first run's start */
   free(ev);
   free(st);
   free(err);
@@ -96,9 +124,9 @@ static void sorted_u(const double *x, size_t m, double a, double b, double *out)
   nl_stats_sort(out, m);
 }
 
-nl_table *nl_study_cheng3_ecdf_table(const nl_cheng3_table *opt, const nl_cheng3_table *rnd)
+nl_table *c8_ecdf_table(const nl_cheng3_table *opt, const nl_cheng3_table *rnd)
 {
-  const char *cols[] = {"F", "z_opt", "phi_opt", "z_rand", "phi_rand"};
+  const char *cols[] = { "F", "z_opt", "phi_opt", "z_rand", "phi_rand" };
   nl_table *t = nl_table_alloc(5, cols);
   size_t m = opt->m;
   double *u = nl_xmalloc(4 * m * sizeof *u);
@@ -115,12 +143,14 @@ nl_table *nl_study_cheng3_ecdf_table(const nl_cheng3_table *opt, const nl_cheng3
 static double pattern_at(const nl_cheng3_pattern *p, double x, double y, double z)
 {
   int g = p->grid, i = (int)(x * g), j = (int)(y * g), k = (int)(z * g);
-  i = i < g ? i : g - 1; j = j < g ? j : g - 1; k = k < g ? k : g - 1;
+  i = i < g ? i : g - 1;
+  j = j < g ? j : g - 1;
+  k = k < g ? k : g - 1;
   return p->d[((size_t)k * g + j) * g + i];
 }
 
-nl_table *nl_study_cheng3_voxel_table(const nl_cheng3_table *t, const nl_cheng3_config *c,
-                                      const nl_cheng3_pattern *pat, int n)
+nl_table *c8_voxel_table(const nl_cheng3_table *t, const nl_cheng3_config *c,
+                         const nl_cheng3_pattern *pat, int n)
 {
   size_t nn = (size_t)n * n * n, inside = 0;
   double *v = nl_xmalloc(2 * nn * sizeof *v), *s = v + nn;
@@ -129,13 +159,14 @@ nl_table *nl_study_cheng3_voxel_table(const nl_cheng3_table *t, const nl_cheng3_
   nl_stats_sort(s, nn);
   for (size_t q = 0; q < pat->n; q++) inside += pat->d[q] >= 0.5;
   size_t ntop = (size_t)llround((double)inside / (double)pat->n * (double)nn);
-  double level = ntop ? s[nn - ntop] : INFINITY;   /* c >= level: the top ntop voxels */
-  const char *cols[] = {"x", "y", "z", "D", "c", "in_pattern", "top_c"};
+  double level = ntop ? s[nn - ntop] : INFINITY; /* c >= level: the top ntop voxels */
+  const char *cols[] = { "x", "y", "z", "D", "c", "in_pattern", "top_c" };
   nl_table *tab = nl_table_alloc(7, cols);
   for (int k = 0; k < n; k++)
     for (int j = 0; j < n; j++)
       for (int i = 0; i < n; i++) {
-        double x = (i + 0.5) / n, y = (j + 0.5) / n, z = (k + 0.5) / n, d = pattern_at(pat, x, y, z);
+        double x = (i + 0.5) / n, y = (j + 0.5) / n, z = (k + 0.5) / n,
+               d = pattern_at(pat, x, y, z);
         double cv = v[((size_t)k * n + j) * n + i];
         nl_table_append(tab, "dddddii", x, y, z, d, cv, d >= 0.5, cv >= level);
       }
@@ -145,39 +176,45 @@ nl_table *nl_study_cheng3_voxel_table(const nl_cheng3_table *t, const nl_cheng3_
 
 /* One slice (axis 2: z = 1/2, the xy plane; axis 1: y = 1/2, the xz plane)
  * of the pattern (t NULL) or of c. */
-static double *slice(const nl_cheng3_table *t, const nl_cheng3_config *c, const nl_cheng3_pattern *pat, int axis,
-                     int size)
+static double *slice(const nl_cheng3_table *t, const nl_cheng3_config *c,
+                     const nl_cheng3_pattern *pat, int axis, int size)
 {
   double *v = nl_xmalloc((size_t)size * size * sizeof *v);
   for (int b = 0; b < size; b++)
     for (int a = 0; a < size; a++) {
-      double u = (a + 0.5) / size, w = (b + 0.5) / size, x = u, y = axis == 2 ? w : 0.5, z = axis == 2 ? 0.5 : w;
+      double u = (a + 0.5) / size, w = (b + 0.5) / size, x = u, y = axis == 2 ? w : 0.5,
+             z = axis == 2 ? 0.5 : w;
       v[(size_t)b * size + a] = t ? nl_cheng3_value(t, c, x, y, z) : pattern_at(pat, x, y, z);
     }
   return v;
 }
 
-void nl_study_cheng3_slices(const nl_cheng3_table *t, const nl_cheng3_table *t0, const nl_cheng3_config *c,
-                            const nl_cheng3_pattern *pat, int size, nl_image **panels, const char **labels)
+void c8_slices(const nl_cheng3_table *t, const nl_cheng3_table *t0, const nl_cheng3_config *c,
+               const nl_cheng3_pattern *pat, int size, nl_image **panels, const char **labels)
 {
   /* short: the labels must fit under a 64-pixel panel (the caption says the rest) */
-  static const char *const lab[8] = {"D xy", "c xy", "c xy str", "rand xy", "D xz", "c xz", "c xz str", "rand xz"};
+  static const char *const lab[C8_NPANELS] = { "D xy", "c xy", "c xy str", "rand xy",
+                                               "D xz", "c xz", "c xz str", "rand xz" };
   for (int row = 0; row < 2; row++) {
     int axis = row ? 1 : 2;
-    double *d = slice(NULL, c, pat, axis, size), *v = slice(t, c, pat, axis, size), *v0 = slice(t0, c, pat, axis, size);
+    double *d = slice(NULL, c, pat, axis, size); /* the pattern */
+    double *v = slice(t, c, pat, axis, size);    /* the optimised table's c */
+    double *v0 = slice(t0, c, pat, axis, size);  /* the random start's c */
     nl_image **p = panels + 4 * row;
     p[0] = nl_image_from_values(d, size, size, 0, 1);
     p[1] = nl_image_from_values(v, size, size, 0, 1);
     p[2] = nl_study_cheng_grey_image(v, size, size);
     p[3] = nl_study_cheng_grey_image(v0, size, size);
-    free(d); free(v); free(v0);
+    free(d);
+    free(v);
+    free(v0);
   }
-  for (int q = 0; q < 8; q++) labels[q] = lab[q];
+  for (int q = 0; q < C8_NPANELS; q++) labels[q] = lab[q];
 }
 
-nl_table *nl_study_cheng3_levels_table(const nl_cheng3_table *t, const nl_cheng3_config *c, size_t *cnt)
+nl_table *c8_levels_table(const nl_cheng3_table *t, const nl_cheng3_config *c, size_t *cnt)
 {
-  const char *lc[] = {"octave", "frequency", "lattice_points", "new_entries", "fraction_of_M"};
+  const char *lc[] = { "octave", "frequency", "lattice_points", "new_entries", "fraction_of_M" };
   nl_table *lv = nl_table_alloc(5, lc);
   nl_cheng3_level_entries(t, c, cnt);
   for (int l = 0; l < c->octaves; l++) {

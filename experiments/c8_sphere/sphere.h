@@ -2,11 +2,14 @@
  * nl_cheng3.h): runs over seeds into a summary table, the uniformity and
  * volume tables the gnuplot scripts read, and slice images.
  *
- *   nl_table *sum = nl_study_cheng3_summary_alloc();
- *   nl_cheng3_table *t = nl_study_cheng3_seeds(r, &c, pat, sum, "torus", &t0);  // rows optimised, random
- *   nl_table *u = nl_study_cheng3_ecdf_table(t, t0);    // ECDFs of z and phi
- *   nl_table *v = nl_study_cheng3_voxel_table(t, &c, pat, 24);
- *   nl_image *im = nl_study_cheng3_slices(t, t0, &c, pat, 128, labels);
+ *   nl_table *sum = c8_summary_alloc();
+ *   nl_cheng3_table *t0;   // rows: optimised, random
+ *   nl_cheng3_table *t = c8_seeds(r, &c, pat, sum, "torus", &t0, NULL);
+ *   nl_table *u = c8_ecdf_table(t, t0);   // ECDFs of z and phi
+ *   nl_table *v = c8_voxel_table(t, &c, pat, 24);
+ *   nl_image *panels[C8_NPANELS];
+ *   const char *labels[C8_NPANELS];
+ *   c8_slices(t, t0, &c, pat, 128, panels, labels);
  */
 #ifndef C8_SPHERE_H
 #define C8_SPHERE_H
@@ -22,32 +25,34 @@
  * E_con_random, E_con_const, con_vs_const (E_con / E_con_const: > 1 is
  * worse than the best constant volume), uniform (fraction of seeds with
  * p_stat >= 0.05). */
-nl_table *nl_study_cheng3_summary_alloc(void);
+nl_table *c8_summary_alloc(void);
 /* The run's seeds (nl_seed_replicate of the base seed, nl_harness_seeds of
  * them) on pat: one row for the optimised tables and one for their random
  * start tables. Returns the first seed's optimised table and (in *start)
  * its start table (caller frees both). Exit 1 on error. *cpu_s: the
  * optimisations' summed wall time (not written in any table). */
-nl_cheng3_table *nl_study_cheng3_seeds(nl_harness *r, const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
-                                       nl_table *sum, const char *name, nl_cheng3_table **start, double *seconds);
+nl_cheng3_table *c8_seeds(nl_harness *r, const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
+                          nl_table *sum, const char *name, nl_cheng3_table **start,
+                          double *seconds);
 /* ECDFs: F = i/M, then sorted u = (z + 1)/2 and phi / 2 pi of each table:
  * columns F, z_opt, phi_opt, z_rand, phi_rand. */
-nl_table *nl_study_cheng3_ecdf_table(const nl_cheng3_table *opt, const nl_cheng3_table *rnd);
+nl_table *c8_ecdf_table(const nl_cheng3_table *opt, const nl_cheng3_table *rnd);
 /* n^3 raster of the unit cube: x, y, z, D (the pattern's cell), c, in_pattern
  * (D >= 1/2) and top_c (c among the highest fraction of the raster equal
  * to the pattern's fraction with D >= 1/2: the iso-surface of c that
  * encloses the pattern's volume). */
-nl_table *nl_study_cheng3_voxel_table(const nl_cheng3_table *t, const nl_cheng3_config *c,
-                                      const nl_cheng3_pattern *pat, int n);
-/* 8 panels of size x size: for the slice z = 1/2 (xy) and y = 1/2 (xz): the
+nl_table *c8_voxel_table(const nl_cheng3_table *t, const nl_cheng3_config *c,
+                         const nl_cheng3_pattern *pat, int n);
+#define C8_NPANELS 8 /* slice panels: D, c, c stretched, random c; xy and xz */
+/* C8_NPANELS panels of size x size: for the slice z = 1/2 (xy) and y = 1/2 (xz): the
  * pattern D, c on its own 0..1 scale, c stretched to its 1st..99th
  * percentile, and the random start table's c stretched. labels[8] filled
  * with short static strings ("D xy", "c xy", "c xy str", "rand xy", ... xz). */
-void nl_study_cheng3_slices(const nl_cheng3_table *t, const nl_cheng3_table *t0, const nl_cheng3_config *c,
-                            const nl_cheng3_pattern *pat, int size, nl_image **panels, const char **labels);
+void c8_slices(const nl_cheng3_table *t, const nl_cheng3_table *t0, const nl_cheng3_config *c,
+               const nl_cheng3_pattern *pat, int size, nl_image **panels, const char **labels);
 /* Under the thesis's multi-level rule: octave, frequency, lattice_points,
  * new_entries (entries first used by that octave's lattice) and
  * fraction_of_M; the counts also in cnt[octaves]. */
-nl_table *nl_study_cheng3_levels_table(const nl_cheng3_table *t, const nl_cheng3_config *c, size_t *cnt);
+nl_table *c8_levels_table(const nl_cheng3_table *t, const nl_cheng3_config *c, size_t *cnt);
 
 #endif

@@ -8,7 +8,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#define NREAD 12
+#define NREAD L1_NREADINGS
 static const char *const READINGS[NREAD] = {
   "volume, 4 samples per unit and axis (ours)",
   "volume, mean subtracted",
@@ -21,14 +21,21 @@ static const char *const READINGS[NREAD] = {
   "appendix odd-shift copy (transposed), volume",
   "appendix odd-shift copy (transposed), plane z = 0",
   "multiband sum of 4 bands (one tile, no offsets) / 4, plane z = 0",
-  "tile of twice the period (at most 256), random points"};
+  "tile of twice the period (at most 256), random points"
+};
 
-nl_table *nl_study_variance_readings(int n, int K, unsigned long seed0, double paper)
+nl_table *l1_variance_readings(int n, int K, unsigned long seed0, double paper)
 {
-  nl_wavelet_tile *t = nl_wavelet_tile_alloc(3, n), *tt = nl_wavelet_tile_alloc(3, n),
-                  *t2 = nl_wavelet_tile_alloc(3, 2 * n > 256 ? 256 : 2 * n);
-  if (!t || !tt || !t2) { nl_wavelet_tile_free(t); nl_wavelet_tile_free(tt); nl_wavelet_tile_free(t2); return NULL; }
-  double *v = nl_xcalloc((size_t)NREAD * K, sizeof *v);   /* v[i * K + s] */
+  nl_wavelet_tile *t = nl_wavelet_tile_alloc(3, n);
+  nl_wavelet_tile *tt = nl_wavelet_tile_alloc(3, n); /* the appendix's transposed copy */
+  nl_wavelet_tile *t2 = nl_wavelet_tile_alloc(3, 2 * n > 256 ? 256 : 2 * n);
+  if (!t || !tt || !t2) {
+    nl_wavelet_tile_free(t);
+    nl_wavelet_tile_free(tt);
+    nl_wavelet_tile_free(t2);
+    return NULL;
+  }
+  double *v = nl_xcalloc((size_t)NREAD * K, sizeof *v); /* v[i * K + s] */
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
   for (int s = 0; s < K; s++) {
     unsigned long sk = nl_seed_replicate(seed0, s);
@@ -36,27 +43,34 @@ nl_table *nl_study_variance_readings(int n, int K, unsigned long seed0, double p
     nl_wavelet_tile_seed_transposed(tt, sk);
     nl_wavelet_tile_seed(t2, sk);
     double vol = 0, mu = 0;
-    int planes = 4 * n;   /* the volume as planes: the same grid as nl_wavelet_tile_variance(t, 4) */
+    int planes = 4 * n; /* the volume as planes: the same grid as nl_wavelet_tile_variance(t, 4) */
     for (int iz = 0; iz < planes; iz++) {
       double m;
       vol += nl_wavelet_slice_variance(t, (iz + 0.5) / 4, 4, &m) / planes;
       mu += m / planes;
     }
     gsl_rng_set(rng, nl_seed_stream(sk, "l1.readings", 0));
-    double r[NREAD] = {vol, vol - mu * mu, nl_wavelet_point_variance(t, 65536, sk),
-                       nl_wavelet_slice_variance(t, n * gsl_rng_uniform(rng), 4, NULL),
-                       nl_wavelet_slice_variance(t, 0.0, 4, NULL), nl_wavelet_slice_variance(t, 0.5, 4, NULL),
-                       nl_wavelet_lattice_variance(t, 0.0), nl_wavelet_lattice_variance(t, 0.5),
-                       nl_wavelet_tile_variance(tt, 4), nl_wavelet_slice_variance(tt, 0.0, 4, NULL),
-                       nl_wavelet_multiband_variance(t, 4, 0.0, 4), nl_wavelet_point_variance(t2, 65536, sk)};
+    double r[NREAD] = { vol,
+                        vol - mu * mu,
+                        nl_wavelet_point_variance(t, 65536, sk),
+                        nl_wavelet_slice_variance(t, n * gsl_rng_uniform(rng), 4, NULL),
+                        nl_wavelet_slice_variance(t, 0.0, 4, NULL),
+                        nl_wavelet_slice_variance(t, 0.5, 4, NULL),
+                        nl_wavelet_lattice_variance(t, 0.0),
+                        nl_wavelet_lattice_variance(t, 0.5),
+                        nl_wavelet_tile_variance(tt, 4),
+                        nl_wavelet_slice_variance(tt, 0.0, 4, NULL),
+                        nl_wavelet_multiband_variance(t, 4, 0.0, 4),
+                        nl_wavelet_point_variance(t2, 65536, sk) };
     for (int i = 0; i < NREAD; i++) v[(size_t)i * K + s] = r[i];
   }
-  const char *cols[] = {"reading", "var3d", "var3d_sd", "paper", "gap", "gap_in_sd"};
+  const char *cols[] = { "reading", "var3d", "var3d_sd", "paper", "gap", "gap_in_sd" };
   nl_table *tab = nl_table_alloc(6, cols);
   for (int i = 0; i < NREAD; i++) {
     double m, sd;
     nl_study_mean_sd(v + (size_t)i * K, K, &m, &sd);
-    /* gap: relative to the paper; gap_in_sd: in sd over seeds (0 sd: +-inf written as a large number) */
+    /* gap: relative to the paper; gap_in_sd: in sd over seeds (0 sd: +-inf written as a large
+     * number) */
     nl_table_append(tab, "sddddd", READINGS[i], m, sd, paper, m / paper - 1,
                     sd > 0 ? (m - paper) / sd : copysign(1e9, m - paper));
   }
@@ -68,7 +82,7 @@ nl_table *nl_study_variance_readings(int n, int K, unsigned long seed0, double p
   return tab;
 }
 
-int nl_study_readings_within(const nl_table *t, double nsd, char *buf, size_t size)
+int l1_readings_within(const nl_table *t, double nsd, char *buf, size_t size)
 {
   int count = 0;
   size_t used = 0;
@@ -76,8 +90,9 @@ int nl_study_readings_within(const nl_table *t, double nsd, char *buf, size_t si
   for (size_t i = 0; i < t->nrows; i++) {
     double g = nl_table_value(t, i, "gap_in_sd");
     if (fabs(g) > nsd) continue;
-    int w = snprintf(buf + used, size - used, "%s%s (%.4f +- %.4f)", count ? "; " : "", nl_table_text(t, i, "reading"),
-                     nl_table_value(t, i, "var3d"), nl_table_value(t, i, "var3d_sd"));
+    int w = snprintf(buf + used, size - used, "%s%s (%.4f +- %.4f)", count ? "; " : "",
+                     nl_table_text(t, i, "reading"), nl_table_value(t, i, "var3d"),
+                     nl_table_value(t, i, "var3d_sd"));
     if (w < 0 || (size_t)w >= size - used) break;
     used += (size_t)w;
     count++;
@@ -85,9 +100,9 @@ int nl_study_readings_within(const nl_table *t, double nsd, char *buf, size_t si
   return count;
 }
 
-nl_table *nl_study_leakage_table(const double *share, int K, int nb)
+nl_table *l1_leakage_table(const double *share, int K, int nb)
 {
-  const char *lcols[] = {"band", "below", "inside", "inside_sd", "above"};
+  const char *lcols[] = { "band", "below", "inside", "inside_sd", "above" };
   nl_table *lt = nl_table_alloc(5, lcols);
   double *col = nl_xcalloc((size_t)K, sizeof *col);
   for (int k = 0; k < nb; k++) {
@@ -96,7 +111,10 @@ nl_table *nl_study_leakage_table(const double *share, int K, int nb)
       const double *row = share + ((size_t)s * nb + k) * nb;
       col[s] = row[k];
       /* band index grows toward low frequencies: j > k is below in frequency */
-      for (int j = 0; j < nb; j++) { if (j > k) lo += row[j] / K; if (j < k) hi += row[j] / K; }
+      for (int j = 0; j < nb; j++) {
+        if (j > k) lo += row[j] / K;
+        if (j < k) hi += row[j] / K;
+      }
     }
     nl_study_mean_sd(col, K, &in, &in_sd);
     nl_table_append(lt, "idddd", k, lo, in, in_sd, hi);
@@ -105,7 +123,7 @@ nl_table *nl_study_leakage_table(const double *share, int K, int nb)
   return lt;
 }
 
-void nl_study_readings_gap_range(const nl_table *t, const size_t *rows, int n, double *lo, double *hi)
+void l1_readings_gap_range(const nl_table *t, const size_t *rows, int n, double *lo, double *hi)
 {
   *lo = INFINITY;
   *hi = -INFINITY;

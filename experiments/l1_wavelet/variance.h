@@ -4,9 +4,24 @@
 
 #include "study/nl_study.h"
 
-/* ---- L1: readings of the 3D band variance ------------------------------
- *
- * Tiles of period n (3D) seeded seed0 .. (nl_seed_replicate, K seeds); per
+/* The rows of l1_variance_readings, in table order. */
+enum {
+  L1_VOLUME,          /* volume, 4 samples per unit and axis (ours) */
+  L1_MEAN_SUBTRACTED, /* volume, mean subtracted */
+  L1_POINTS,          /* random points */
+  L1_PLANE_RANDOM,    /* one plane at random z */
+  L1_PLANE_Z0,        /* plane z = 0 */
+  L1_PLANE_HALF,      /* plane z = 1/2 */
+  L1_LATTICE,         /* lattice points (frac 0) */
+  L1_LATTICE_HALF,    /* half-integer lattice (frac 1/2) */
+  L1_TRANSPOSED,      /* the appendix's transposed odd-shift copy, volume */
+  L1_TRANSPOSED_Z0,   /* the same, plane z = 0 */
+  L1_MULTIBAND,       /* Cook & DeRose's multiband sum, plane z = 0 */
+  L1_DOUBLE_PERIOD,   /* tile of twice the period, random points */
+  L1_NREADINGS
+};
+
+/* Tiles of period n (3D) seeded seed0 .. (nl_seed_replicate, K seeds); per
  * seed, sigma_N^2 read in the ways the literature's constants could have been
  * measured (the volume mean; mean subtracted; random points; one plane at a
  * random, an integer and a half-integer z; the lattice and the half-integer
@@ -16,15 +31,15 @@
  * of period 2n, at most 256). Columns: reading,
  * var3d (mean over seeds), var3d_sd, paper, gap (var3d / paper - 1),
  * gap_in_sd ((var3d - paper) / var3d_sd). NULL for a bad period. */
-nl_table *nl_study_variance_readings(int n, int K, unsigned long seed0, double paper);
+nl_table *l1_variance_readings(int n, int K, unsigned long seed0, double paper);
 /* The readings whose |gap_in_sd| <= nsd, as "reading (var +- sd); ..." in
  * buf (size bytes, truncated at a whole reading); returns how many. */
-int nl_study_readings_within(const nl_table *t, double nsd, char *buf, size_t size);
+int l1_readings_within(const nl_table *t, double nsd, char *buf, size_t size);
 /* Smallest and largest 100 * gap over the given rows (percent). */
-void nl_study_readings_gap_range(const nl_table *t, const size_t *rows, int n, double *lo, double *hi);
+void l1_readings_gap_range(const nl_table *t, const size_t *rows, int n, double *lo, double *hi);
 /* L1's leakage table from K seeds' nb x nb shares (nl_byexample_band_leakage,
  * share[(s nb + k) nb + j]: band k's power in eq. 13 band j): band, below
  * (mean share in coarser bands), inside (mean), inside_sd, above (finer). */
-nl_table *nl_study_leakage_table(const double *share, int K, int nb);
+nl_table *l1_leakage_table(const double *share, int K, int nb);
 
 #endif

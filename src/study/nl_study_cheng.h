@@ -205,12 +205,14 @@ typedef struct {
   int k0, k;
   double cutoff, aic;
 } nl_study_cheng_thesis_gmm;
-extern const nl_study_cheng_thesis_gmm nl_study_cheng_thesis_gmm_tables[3];   /* erosion, marble, cloud */
+/* erosion, marble, cloud */
+extern const nl_study_cheng_thesis_gmm nl_study_cheng_thesis_gmm_tables[3];
 
 /* --set parameters: runs (Q; quick 6), keep (N; quick 20), epsilon,
  * low_levels, threads, samples (quick 100), T, k_extra, unwrap (0/1), diag
  * (0/1: diagonal covariances), max_iter. */
-void nl_study_cheng_repro_params(nl_harness *r, nl_cheng_pool_options *po, nl_cheng_model_options *mo);
+void nl_study_cheng_repro_params(nl_harness *r, nl_cheng_pool_options *po,
+                                 nl_cheng_model_options *mo);
 
 /* Original optimised table (nl_cheng_run, timed) and its pool (timed). */
 typedef struct {
@@ -220,66 +222,11 @@ typedef struct {
   nl_cheng_pool *pool;
 } nl_study_cheng_repro;
 nl_status nl_study_cheng_repro_original(const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                                        unsigned long seed, nl_study_cheng_repro *out, nl_error *err);
-nl_status nl_study_cheng_repro_pool(nl_study_cheng_repro *rp, const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                                    const nl_cheng_pool_options *po, unsigned long seed, nl_error *err);
+                                        unsigned long seed, nl_study_cheng_repro *out,
+                                        nl_error *err);
+nl_status nl_study_cheng_repro_pool(nl_study_cheng_repro *rp, const nl_cheng_config *c,
+                                    const nl_cheng_pattern *pat, const nl_cheng_pool_options *po,
+                                    unsigned long seed, nl_error *err);
 void nl_study_cheng_repro_clear(nl_study_cheng_repro *rp);
-/* The texture th on s's setting: its pattern (returned; caller frees), *c =
- * s's config with th's control term, the original and its pool in *rp.
- * Exit 1 on error. */
-nl_cheng_pattern *nl_study_cheng_repro_open(const nl_study_cheng *s, const nl_study_cheng_thesis_gmm *th,
-                                            const nl_cheng_pool_options *po, nl_cheng_config *c,
-                                            nl_study_cheng_repro *rp);
-/* The mixture of the pool with the cutoff matched to the thesis's initial K
- * (cutoff < 0, target_k = th->k0) and the run's seed; exit 1 on error. */
-nl_cheng_model *nl_study_cheng_matched_model(nl_harness *r, const nl_cheng_pool *pool, const nl_study_cheng_thesis_gmm *th,
-                                             const nl_cheng_model_options *mo);
-
-/* C5's tables: gmm (Tables 4.2-4.4 per texture, split and cutoff rule, the
- * thesis's numbers beside ours), path (AIC/BIC along K, first seed), curve (K
- * against the cutoff), runs (E_R per pool run), assess (held-out checks of
- * three model variants), orig (the original table against its pool). */
-typedef struct { nl_table *gmm, *path, *curve, *runs, *assess, *orig; } nl_study_cheng_pools;
-#define NL_STUDY_CHENG_MAXSEEDS 64   /* seeds of the model fits averaged per row */
-void nl_study_cheng_pools_alloc(nl_study_cheng_pools *T);
-/* Writes the six tables (original.tsv, gmm.tsv, aic_path.tsv, cutoff_k.tsv,
- * pool_runs.tsv, assess.tsv) and marks their timing columns "ignore". */
-void nl_study_cheng_pools_write(nl_harness *r, const nl_study_cheng_pools *T);
-void nl_study_cheng_pools_free(nl_study_cheng_pools *T);
-/* One texture at one low/high split: the original and its pool, a gmm and
- * path row per cutoff rule (the thesis's cutoff; the one matching its K0)
- * over nseeds seeds of the fit, K against the cutoff, and with `full` the
- * held-out checks. */
-void nl_study_cheng_pool_case(const nl_study_cheng *s, nl_study_cheng_pools *T, const nl_study_cheng_thesis_gmm *th,
-                              const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nseeds,
-                              int full);
-
-/* C6's tables: reps (one row per reproduction: texture, swap, rep, E_ks, p_ks,
- * E_con, ks2_D against the original's angles, ms_reproduce, ms_texture) and
- * its summary (per texture: the original, then the reproductions with and
- * without the swap: means, sd, fractions below the original, times, K). */
-nl_table *nl_study_cheng_reps_alloc(void);
-nl_table *nl_study_cheng_reps_summary_alloc(void);
-/* One texture: original, pool, matched-K0 mixture, then nrep reproductions
- * with the high entries swapped (fraction `swap`) and nrep without; writes
- * textures_TEX.png (original and 8 reproductions) and cdf_TEX.tsv. A
- * degenerate model is reported in the text, with no reproductions. */
-void nl_study_cheng_reproduce_case(const nl_study_cheng *s, nl_table *reps, nl_table *sum, const nl_study_cheng_thesis_gmm *th,
-                                   const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nrep,
-                                   double swap);
-/* The same for n textures ths[0..n-1], rows in texture order: their originals
- * as one nl_parallel_for on the run's threads, then per texture its pool
- * (threaded inside), mixture and reproductions (drawn in order, evaluated on
- * the run's threads). The tables do not depend on the thread count. */
-void nl_study_cheng_reproduce_cases(const nl_study_cheng *s, nl_table *reps, nl_table *sum, const nl_study_cheng_thesis_gmm *ths,
-                                    int n, const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nrep,
-                                    double swap);
-
-/* C5's older tables for one texture from an already collected original and
- * pool (nl_study_cheng_repro.c). */
-void nl_study_cheng_pool_case_with(const nl_study_cheng *s, nl_study_cheng_pools *T, const nl_study_cheng_thesis_gmm *th,
-                                   const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nseeds,
-                                   int full, nl_study_cheng_repro *rp);
-
 
 #endif

@@ -1,11 +1,7 @@
 /* Exemplar photographs: --exemplars DIR and the folder's PNG files. */
 #include "study/nl_study_exemplars.h"
-#include "byexample/nl_byexample_leak.h"
-#include "base/nl_parallel.h"
 
 #include <dirent.h>
-#ifdef __GLIBC__
-#endif
 #include <stdio.h>
 #include <errno.h>
 #include <stdlib.h>
@@ -32,7 +28,10 @@ nl_status nl_study_dir_option(int *argc, char **argv, const char *option, const 
   return NL_OK;
 }
 
-static int cmp_str(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
+static int cmp_str(const void *a, const void *b)
+{
+  return strcmp(*(char *const *)a, *(char *const *)b);
+}
 
 nl_status nl_study_pngs(const char *dir, char ***paths, int *n, nl_error *err)
 {
@@ -62,83 +61,4 @@ void nl_study_paths_free(char **paths)
 {
   for (int k = 0; paths && paths[k]; k++) free(paths[k]);
   free(paths);
-}
-
-nl_status nl_study_exemplar_luminance(const char *path, int max, double **out, int *w, int *h,
-                                      nl_error *err)
-{
-  nl_image *im;
-  nl_status s = nl_image_read(path, &im, err);
-  if (s) return s;
-  int W = im->width, H = im->height;
-  double *lum = nl_xmalloc((size_t)W * H * sizeof *lum);
-  nl_byexample_luminance(im, lum);
-  nl_image_free(im);
-  *w = W < max ? W : max;
-  *h = H < max ? H : max;
-  int x0 = (W - *w) / 2, y0 = (H - *h) / 2;
-  *out = nl_xmalloc((size_t)*w * *h * sizeof **out);
-  for (int y = 0; y < *h; y++) memcpy(*out + (size_t)y * *w, lum + (size_t)(y + y0) * W + x0, (size_t)*w * sizeof **out);
-  free(lum);
-  return NL_OK;
-}
-
-char **nl_study_exemplars_option(int *argc, char **argv, const char *prog, const char **dir, int *n)
-{
-  nl_error err;
-  char **paths = NULL;
-  if (nl_study_dir_option(argc, argv, "--exemplars", "data/exemplars", dir, &err) ||
-      nl_study_pngs(*dir, &paths, n, &err)) {
-    fprintf(stderr, "%s: %s\n", prog, err.msg);
-    nl_study_paths_free(paths);
-    exit(2);
-  }
-  return paths;
-}
-
-/* Photograph i of nl_study_exemplar_fits: its fit from its own streams
- * (seeded by i), written to its own slots only. */
-typedef struct {
-  double **lum;
-  int *w, *h, *nb, tile, nseeds, nsyn;
-  double frac;
-  unsigned long seed;
-  double (*res)[NL_BYEX_ESTIMATORS][2];
-} fits_job;
-
-static void fit_item(void *ctx, size_t i, int thread)
-{
-  (void)thread;
-  fits_job *j = ctx;
-  j->nb[i] = nl_byexample_fit_all(j->lum[i], j->w[i], j->h[i], j->tile, j->frac, j->nseeds,
-                                  nl_seed_stream(j->seed, "l2.photo_transfer", (unsigned long)i), j->nsyn,
-                                  nl_seed_stream(j->seed, "l2.photo", (unsigned long)i), j->res[i]);
-}
-
-nl_table *nl_study_exemplar_fits(nl_harness *r, char *const *paths, int n, int max, int tile, double frac,
-                                 int nseeds, int nsyn, unsigned long seed)
-{
-  static const char *const cols[] = {"exemplar", "width", "height", "bands", "estimator", "resid_raw", "resid_taper"};
-  nl_table *t = nl_table_alloc(7, cols);
-  size_t m = n > 0 ? (size_t)n : 1;
-  fits_job j = {nl_xmalloc(m * sizeof *j.lum), nl_xmalloc(m * sizeof(int)), nl_xmalloc(m * sizeof(int)),
-                nl_xmalloc(m * sizeof(int)), tile, nseeds, nsyn, frac, seed, nl_xmalloc(m * sizeof *j.res)};
-  for (int i = 0; i < n; i++) {   /* read on this thread, in order: errors exit before any fit */
-    nl_error err;
-    if (nl_study_exemplar_luminance(paths[i], max, &j.lum[i], &j.w[i], &j.h[i], &err)) nl_harness_die(r, 2, "%s", err.msg);
-    if (j.w[i] < NL_EXAMPLE_MIN_SIZE || j.h[i] < NL_EXAMPLE_MIN_SIZE)
-      nl_harness_die(r, 2, "%s: %d x %d pixels, smaller than %d", paths[i], j.w[i], j.h[i], NL_EXAMPLE_MIN_SIZE);
-  }
-  /* nl_byexample_sigma2 keeps its value in plain statics: filled before the threads start, so no item writes them. */
-  nl_byexample_sigma2(tile);
-  nl_parallel_for((size_t)n, nl_harness_threads(r), fit_item, &j);
-  for (int i = 0; i < n; i++) {
-    const char *name = strrchr(paths[i], '/');
-    for (int q = 0; q < NL_BYEX_ESTIMATORS; q++)
-      nl_table_append(t, "siiisdd", name ? name + 1 : paths[i], j.w[i], j.h[i], j.nb[i], nl_byexample_estimator_names[q],
-                      j.res[i][q][0], j.res[i][q][1]);
-    free(j.lum[i]);
-  }
-  free(j.lum); free(j.w); free(j.h); free(j.nb); free(j.res);
-  return t;
 }

@@ -1,0 +1,80 @@
+/* C8's report (report.h): the prose beside the tables and the figures'
+ * captions, every number formatted from the run's tables or parameters. */
+#include "report.h"
+
+#include <math.h>
+#include <stdio.h>
+
+void c8_slices_figure(nl_harness *r, const char *pattern, const char *file)
+{
+  char cap[320];
+  snprintf(cap, sizeof cap,
+           "%s: slices xy at z = 1/2 (top) and xz at y = 1/2 (bottom): pattern D | optimised c on "
+           "0..1 | the same stretched to its 1st..99th percentile (str) | the random start table's "
+           "c, stretched (first seed)",
+           pattern);
+  nl_harness_figure(r, file, cap);
+}
+
+void c8_levels_report(nl_harness *r, const nl_table *lv, const nl_cheng3_config *c,
+                      const size_t *cnt)
+{
+  nl_harness_text(
+      r,
+      "**Levels.** Multi-level annealing (sec. 3.4.2) gives level l the table entries first used "
+      "by octave l's lattice. In 3D with M = %zu: octave 1 (f = %g) uses %d entries, octave 2 adds "
+      "%d, so %.0f%% of the table belongs to the first two levels and the last level owns %d. We "
+      "anneal all entries against all octaves in one level (levels.tsv).\n",
+      c->m, c->f1, (int)cnt[0], c->octaves > 1 ? (int)cnt[1] : 0,
+      100.0 * (cnt[0] + (c->octaves > 1 ? cnt[1] : 0)) / c->m, (int)cnt[c->octaves - 1]);
+  nl_harness_report_table(
+      r, lv,
+      "Entries per annealing level under the thesis's multi-level rule (first seed's permutation)",
+      3);
+}
+
+void c8_report(nl_harness *r, const nl_table *sum, const nl_cheng3_config *c, int grid, int k)
+{
+  nl_harness_text(
+      r,
+      "**Setting (beyond the thesis).** %d^3 control cells, M = %zu unit gradients, F = %d octaves "
+      "from f1 = %g (a1 = %g), w1 = %g, w2 = %g, %d temperatures x %g moves per entry, %d seeds "
+      "per row. E_stat = max(D_z, D_phi): KS of z = cos(polar) against U(-1, 1) and of phi against "
+      "U(0, 2 pi), uniform on the sphere iff both hold independently; p_stat = min(1, 2 min(p_z, "
+      "p_phi)) (Bonferroni). Kuiper on phi and Rayleigh's test (3 M R^2 ~ chi2_3, R the mean "
+      "resultant) are checks the objective does not optimise.\n",
+      grid, c->m, c->octaves, c->f1, c->a1, c->w1, c->w2, c->sched.n_temps, c->sched.moves_per_var,
+      k);
+  nl_harness_report_columns(
+      r, sum, "summary.tsv",
+      "pattern,table,seeds,E_stat,E_stat_sd,p_stat_min,uniform,p_kuiper_min,p_rayleigh_min,E_con,E_"
+      "con_sd,r_pattern,r_pattern_sd,contrast,E_con_random,E_con_const,con_vs_const",
+      "Per pattern: optimised tables against their random start tables (mean and spread over "
+      "seeds)",
+      4);
+  for (size_t i = 0; i + 1 < sum->nrows; i += 2) { /* rows: optimised, random per pattern */
+    double e = nl_table_value(sum, i, "E_con");
+    double e0 = nl_table_value(sum, i, "E_con_const");
+    double er = nl_table_value(sum, i + 1, "E_con");
+    nl_harness_text(r,
+                    "%s: E_stat %.4f (random tables %.4f), smallest p_stat %.3f, smallest Rayleigh "
+                    "p %.3f; E_Con %.4g +- %.3g, %.0f%% below the random tables' %.4g, r with the "
+                    "pattern %.2f (random %.2f), contrast %.3f. %s (best constant volume: E_Con "
+                    "%.4g, ratio %.2f; the pattern's own sd is %.3f).\n",
+                    nl_table_cell_text(sum, i, 0, (char[64]){ 0 }),
+                    nl_table_value(sum, i, "E_stat"), nl_table_value(sum, i + 1, "E_stat"),
+                    nl_table_value(sum, i, "p_stat_min"), nl_table_value(sum, i, "p_rayleigh_min"),
+                    e, nl_table_value(sum, i, "E_con_sd"), 100 * (1 - e / er), er,
+                    nl_table_value(sum, i, "r_pattern"), nl_table_value(sum, i + 1, "r_pattern"),
+                    nl_table_value(sum, i, "contrast"),
+                    e > e0 ? "**Worse than the best constant volume** in the E_Con sense"
+                           : "Better than the best constant volume",
+                    e0, e / e0, sqrt(e0 / (double)grid / grid / grid));
+  }
+  nl_harness_figure(r, "uniformity.png",
+                    "Uniformity on the sphere (torus, first seed): ECDF minus the uniform CDF of "
+                    "(z + 1)/2 and phi / 2 pi, optimised and random start table");
+  nl_harness_figure(r, "volume.png",
+                    "Torus (first seed): the voxels inside the pattern (left) and the voxels of "
+                    "the optimised c above the level that encloses the same volume (right)");
+}

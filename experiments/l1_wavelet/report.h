@@ -1,0 +1,25 @@
+/* L1's report (report.c): the prose beside summary.tsv, variance_readings.tsv,
+ * lattice.tsv and leakage.tsv and the figures' captions. */
+#ifndef L1_REPORT_H
+#define L1_REPORT_H
+
+#include "harness/nl_harness.h"
+#include "table/nl_table.h"
+
+#define L1_PAPER_SIGMA2_2D 0.265 /* sigma_N^2 in 2D (Lagae et al. eq. 11, citing Cook & DeRose) */
+#define L1_CD_SIGMA2_3D    0.210 /* Cook & DeRose's code: plain 3D noise */
+#define L1_CD_SIGMA2_PROJ  0.296 /* Cook & DeRose's code: projected noise */
+
+/* The run's setting: tile periods, seeds from seed0, image side, samples per
+ * unit and axis of the variance, decades of the spectrum images. */
+typedef struct {
+  int tile, tile3, seeds, size, samples, decades;
+  unsigned long seed0;
+} l1_setting;
+
+/* st: summary.tsv (2D, 3D, in-band share of band 0); vr: the 3D readings;
+ * ft: variance on the shifted lattice (frac 0, 1/8, ..., 1); lt: leakage. */
+void l1_report(nl_harness *r, const l1_setting *c, const nl_table *st, const nl_table *vr,
+               const nl_table *ft, const nl_table *lt);
+
+#endif
