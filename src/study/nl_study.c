@@ -56,8 +56,11 @@ nl_table *nl_study_series(nl_harness *r, const char *prefix, const char *title, 
   return dist;
 }
 
-void nl_study_octave_settings(const int *oct, int n, int turbulence, nl_study_setting *settings,
-                              char (*labels)[32])
+/* Fills settings[i] for octave counts oct[i] of Shaffer's fractal sum (gain
+ * 1/2, lacunarity 2), optionally turbulent; labels "(a) 1 octave" are
+ * written into labels[i] (32 bytes each). */
+static void octave_settings(const int *oct, int n, int turbulence, nl_study_setting *settings,
+                            char (*labels)[32])
 {
   for (int i = 0; i < n; i++) {
     snprintf(labels[i], 32, "(%c) %d octave%s", 'a' + i, oct[i], oct[i] > 1 ? "s" : "");
@@ -89,7 +92,7 @@ nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int 
   const int oct[] = {1, 2, 3, 8};   /* the slides' panels (a)-(d) */
   nl_study_setting st[4];
   char labels[4][32];
-  nl_study_octave_settings(oct, 4, turbulence, st, labels);
+  octave_settings(oct, 4, turbulence, st, labels);
   return nl_study_series(r, prefix, title, NL_BASIS_IMPROVED3, st, 4, win);
 }
 
