@@ -194,7 +194,8 @@ static void photo_item(void *ctx, size_t q, int thread)
 nl_table *l3_photos(nl_harness *r, char (*names)[64], nl_image **photos, int np, int size, int K,
                     unsigned long seed, double min_share, double max_ratio, double max_ks)
 {
-  nl_table *bands = nl_study_example_band_table(), *sum = nl_study_example_summary_table();
+  nl_table *bands = nl_study_example_band_table();
+  nl_table *sum = nl_study_example_summary_table();
   static const char *mcols[] = { "exemplar",     "representation", "ks_mean",
                                  "ks_sd",        "tail_photo",     "tail_synth",
                                  "speckle_mean", "speckle_sd",     "worst_ratio_of_means",
@@ -210,25 +211,26 @@ nl_table *l3_photos(nl_harness *r, char (*names)[64], nl_image **photos, int np,
   const nl_image **panels = nl_xmalloc((size_t)(NP * np + 1) * sizeof *panels);
   char(*labels)[64] = nl_xmalloc((size_t)(NP * np + 1) * sizeof *labels);
   const char **lab = nl_xmalloc((size_t)(NP * np + 1) * sizeof *lab);
-  size_t nih = (size_t)np * NREP, nitem = nih * (size_t)K;
-  photos_job j = { photos,
-                   names,
-                   kinds,
-                   cal,
-                   K,
-                   size,
-                   seed,
-                   min_share,
-                   max_ratio,
-                   max_ks,
-                   nl_xmalloc(nih * sizeof *j.par),
-                   nl_xcalloc(nitem, sizeof *j.bands),
-                   nl_xcalloc(nitem, sizeof *j.sum),
-                   nl_xcalloc(nih, sizeof *j.crops),
-                   nl_xcalloc(nih, sizeof *j.st),
-                   nl_xcalloc(nitem, sizeof *j.sst),
-                   nl_xmalloc(nih * sizeof *j.err),
-                   nl_xmalloc(nitem * sizeof *j.serr) };
+  size_t nih = (size_t)np * NREP; /* (photo, representation) items */
+  size_t nitem = nih * (size_t)K; /* (photo, representation, replicate) items */
+  photos_job j = { .photos = photos,
+                   .names = names,
+                   .kinds = kinds,
+                   .cal = cal,
+                   .K = K,
+                   .size = size,
+                   .seed = seed,
+                   .min_share = min_share,
+                   .max_ratio = max_ratio,
+                   .max_ks = max_ks };
+  j.par = nl_xmalloc(nih * sizeof *j.par);
+  j.bands = nl_xcalloc(nitem, sizeof *j.bands);
+  j.sum = nl_xcalloc(nitem, sizeof *j.sum);
+  j.crops = nl_xcalloc(nih, sizeof *j.crops);
+  j.st = nl_xcalloc(nih, sizeof *j.st);
+  j.sst = nl_xcalloc(nitem, sizeof *j.sst);
+  j.err = nl_xmalloc(nih * sizeof *j.err);
+  j.serr = nl_xmalloc(nitem * sizeof *j.serr);
   nl_parallel_for(nih, nl_harness_threads(r), analyse_item, &j);
   nl_parallel_for(nitem, nl_harness_threads(r), photo_item, &j);
   for (int i = 0; i < np; i++) {

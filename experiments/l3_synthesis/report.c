@@ -4,6 +4,7 @@
 #include "l3.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 void l3_report_exemplars(nl_harness *r, const nl_table *kt, const nl_table *ft,
@@ -49,6 +50,102 @@ void l3_report_exemplars(nl_harness *r, const nl_table *kt, const nl_table *ft,
   nl_harness_figure(
       r, "spectra.png",
       "Radially averaged power spectra (luminance) of exemplar and synthesis, per exemplar");
+}
+
+/* Per representation: passes per replicate, and for the rows that fail, by what. */
+static void report_failures(nl_harness *r, const nl_table *pt, double max_ratio, double max_ks)
+{
+  static const char *reps[3] = { "gauss33", "paper10", "calibrated" };
+  for (int h = 0; h < 3; h++) {
+    int nrow = 0, nall = 0, nsyn = 0, npas = 0;
+    char fails[1024] = "";
+    size_t fl = 0;
+    for (size_t i = 0; i < pt->nrows; i++) {
+      if (strcmp(nl_table_text(pt, i, "representation"), reps[h])) continue;
+      int ps = (int)nl_table_value(pt, i, "passes"), k = (int)nl_table_value(pt, i, "replicates");
+      nrow++;
+      nall += ps == k;
+      nsyn += k;
+      npas += ps;
+      if (ps < k && fl < sizeof fails - 200)
+        fl += (size_t)snprintf(fails + fl, sizeof fails - fl,
+                               "%s%s fails %d of %d (KS >= %.3f in %d, a band outside x%.2f in %d; "
+                               "worst band of the means %d)",
+                               fl ? "; " : "", nl_table_text(pt, i, "exemplar"), k - ps, k, max_ks,
+                               (int)nl_table_value(pt, i, "fail_ks"), max_ratio,
+                               (int)nl_table_value(pt, i, "fail_band"),
+                               (int)nl_table_value(pt, i, "worst_band"));
+    }
+    if (nrow)
+      nl_harness_text(r,
+                      "%s: %d of %d photos pass in every replicate; %d of %d syntheses pass%s%s.",
+                      reps[h], nall, nrow, npas, nsyn, fl ? ". Failures: " : "", fails);
+  }
+}
+
+/* Structure: what band power and histogram leave out (ks_grad_mean). */
+static void report_structure(nl_harness *r, const nl_table *pt)
+{
+  /* Structure: what band power and histogram leave out. The calibrated rows' KS distance of |grad
+   * L| between photo and synthesis, largest and smallest photo. */
+  char list[1024] = "";
+  size_t ll = 0;
+  int hi = -1, lo = -1;
+  for (size_t i = 0; i < pt->nrows; i++) {
+    if (strcmp(nl_table_text(pt, i, "representation"), "calibrated")) continue;
+    double g = nl_table_value(pt, i, "ks_grad_mean");
+    if (hi < 0 || g > nl_table_value(pt, (size_t)hi, "ks_grad_mean")) hi = (int)i;
+    if (lo < 0 || g < nl_table_value(pt, (size_t)lo, "ks_grad_mean")) lo = (int)i;
+    if (ll < sizeof list - 80)
+      ll += (size_t)snprintf(list + ll, sizeof list - ll, "%s%s %.3f", ll ? ", " : "",
+                             nl_table_text(pt, i, "exemplar"), g);
+  }
+  if (hi >= 0)
+    nl_harness_text(
+        r,
+        "Structure is outside the model: the method matches per-band power and the histogram, "
+        "not edges or joints. The KS distance of the luminance gradient magnitude |grad L| "
+        "(forward differences) between photo and calibrated synthesis, mean over replicates "
+        "(ks_grad_mean): %s; largest for `%s` (%.3f; it passes the criteria above in %g of %g "
+        "replicates), smallest for `%s` (%.3f; %g of %g). The montage shows what the number "
+        "measures.",
+        list, nl_table_text(pt, (size_t)hi, "exemplar"),
+        nl_table_value(pt, (size_t)hi, "ks_grad_mean"), nl_table_value(pt, (size_t)hi, "passes"),
+        nl_table_value(pt, (size_t)hi, "replicates"), nl_table_text(pt, (size_t)lo, "exemplar"),
+        nl_table_value(pt, (size_t)lo, "ks_grad_mean"), nl_table_value(pt, (size_t)lo, "passes"),
+        nl_table_value(pt, (size_t)lo, "replicates"));
+}
+
+/* Photos whose speckle is 0 in every representation: grey (largest saturation
+ * 0) or not. */
+static void report_grey(nl_harness *r, const nl_table *pt)
+{
+  for (size_t i = 0; i < pt->nrows; i++) {
+    if (strcmp(nl_table_text(pt, i, "representation"), "gauss33")) continue;
+    const char *name = nl_table_text(pt, i, "exemplar");
+    double smax = nl_table_value(pt, i, "photo_sat_max"),
+           s99 = nl_table_value(pt, i, "photo_sat_p99"), spk = 0;
+    for (size_t j = 0; j < pt->nrows; j++)
+      if (!strcmp(nl_table_text(pt, j, "exemplar"), name))
+        spk = fmax(spk, nl_table_value(pt, j, "speckle_mean"));
+    if (spk > 0) continue;
+    if (smax == 0)
+      nl_harness_text(r,
+                      "`%s` is grey: its largest pixel saturation (max - min) / max of RGB is %.3g "
+                      "(photo_sat_max), its syntheses are grey and its speckle is %.3g in every "
+                      "representation.",
+                      name, smax, spk);
+    else
+      nl_harness_text(
+          r,
+          "`%s` is not grey (largest saturation %.3g), but its 99th percentile of saturation, "
+          "speckle's threshold, is %.3f (photo_sat_p99)%s: speckle %.3g in every representation.",
+          name, smax, s99,
+          s99 >= 1 ? ", the largest possible (1% of its pixels or more have a channel at 0): no "
+                     "pixel can exceed it"
+                   : "",
+          spk);
+  }
 }
 
 void l3_report_photos(nl_harness *r, const nl_table *kt, const nl_table *gt, const nl_table *pt,
@@ -113,90 +210,9 @@ void l3_report_photos(nl_harness *r, const nl_table *kt, const nl_table *gt, con
         wb, ldexp(1.0, -(wb + 2)), ldexp(1.0, -(wb + 1)), w, ok ? "within" : "outside", max_ratio,
         nl_table_value(pt, i, "speckle_mean"));
   }
-  /* per representation: passes per replicate, and for the rows that fail, by what */
-  static const char *reps[3] = { "gauss33", "paper10", "calibrated" };
-  for (int h = 0; h < 3; h++) {
-    int nrow = 0, nall = 0, nsyn = 0, npas = 0;
-    char fails[1024] = "";
-    size_t fl = 0;
-    for (size_t i = 0; i < pt->nrows; i++) {
-      if (strcmp(nl_table_text(pt, i, "representation"), reps[h])) continue;
-      int ps = (int)nl_table_value(pt, i, "passes"), k = (int)nl_table_value(pt, i, "replicates");
-      nrow++;
-      nall += ps == k;
-      nsyn += k;
-      npas += ps;
-      if (ps < k && fl < sizeof fails - 200)
-        fl += (size_t)snprintf(fails + fl, sizeof fails - fl,
-                               "%s%s fails %d of %d (KS >= %.3f in %d, a band outside x%.2f in %d; "
-                               "worst band of the means %d)",
-                               fl ? "; " : "", nl_table_text(pt, i, "exemplar"), k - ps, k, max_ks,
-                               (int)nl_table_value(pt, i, "fail_ks"), max_ratio,
-                               (int)nl_table_value(pt, i, "fail_band"),
-                               (int)nl_table_value(pt, i, "worst_band"));
-    }
-    if (nrow)
-      nl_harness_text(r,
-                      "%s: %d of %d photos pass in every replicate; %d of %d syntheses pass%s%s.",
-                      reps[h], nall, nrow, npas, nsyn, fl ? ". Failures: " : "", fails);
-  }
-  /* Structure: what band power and histogram leave out. The calibrated rows' KS distance of |grad
-   * L| between photo and synthesis, largest and smallest photo. */
-  {
-    char list[1024] = "";
-    size_t ll = 0;
-    int hi = -1, lo = -1;
-    for (size_t i = 0; i < pt->nrows; i++) {
-      if (strcmp(nl_table_text(pt, i, "representation"), "calibrated")) continue;
-      double g = nl_table_value(pt, i, "ks_grad_mean");
-      if (hi < 0 || g > nl_table_value(pt, (size_t)hi, "ks_grad_mean")) hi = (int)i;
-      if (lo < 0 || g < nl_table_value(pt, (size_t)lo, "ks_grad_mean")) lo = (int)i;
-      if (ll < sizeof list - 80)
-        ll += (size_t)snprintf(list + ll, sizeof list - ll, "%s%s %.3f", ll ? ", " : "",
-                               nl_table_text(pt, i, "exemplar"), g);
-    }
-    if (hi >= 0)
-      nl_harness_text(
-          r,
-          "Structure is outside the model: the method matches per-band power and the histogram, "
-          "not edges or joints. The KS distance of the luminance gradient magnitude |grad L| "
-          "(forward differences) between photo and calibrated synthesis, mean over replicates "
-          "(ks_grad_mean): %s; largest for `%s` (%.3f; it passes the criteria above in %g of %g "
-          "replicates), smallest for `%s` (%.3f; %g of %g). The montage shows what the number "
-          "measures.",
-          list, nl_table_text(pt, (size_t)hi, "exemplar"),
-          nl_table_value(pt, (size_t)hi, "ks_grad_mean"), nl_table_value(pt, (size_t)hi, "passes"),
-          nl_table_value(pt, (size_t)hi, "replicates"), nl_table_text(pt, (size_t)lo, "exemplar"),
-          nl_table_value(pt, (size_t)lo, "ks_grad_mean"), nl_table_value(pt, (size_t)lo, "passes"),
-          nl_table_value(pt, (size_t)lo, "replicates"));
-  }
-  /* photos whose speckle is 0 in every representation: grey (largest saturation 0) or not */
-  for (size_t i = 0; i < pt->nrows; i++) {
-    if (strcmp(nl_table_text(pt, i, "representation"), "gauss33")) continue;
-    const char *name = nl_table_text(pt, i, "exemplar");
-    double smax = nl_table_value(pt, i, "photo_sat_max"),
-           s99 = nl_table_value(pt, i, "photo_sat_p99"), spk = 0;
-    for (size_t j = 0; j < pt->nrows; j++)
-      if (!strcmp(nl_table_text(pt, j, "exemplar"), name))
-        spk = fmax(spk, nl_table_value(pt, j, "speckle_mean"));
-    if (spk > 0) continue;
-    if (smax == 0)
-      nl_harness_text(r,
-                      "`%s` is grey: its largest pixel saturation (max - min) / max of RGB is %.3g "
-                      "(photo_sat_max), its syntheses are grey and its speckle is %.3g in every "
-                      "representation.",
-                      name, smax, spk);
-    else
-      nl_harness_text(
-          r,
-          "`%s` is not grey (largest saturation %.3g), but its 99th percentile of saturation, "
-          "speckle's threshold, is %.3f (photo_sat_p99)%s: speckle %.3g in every representation.",
-          name, smax, s99,
-          s99 >= 1 ? ", the largest possible (1% of its pixels or more have a channel at 0): no "
-                     "pixel can exceed it"
-                   : "",
-          spk);
-  }
+  report_failures(r, pt, max_ratio, max_ks);
+  report_structure(r, pt);
+  report_grey(r, pt);
   nl_harness_report_table(r, pt, "Photographs: mean over replicates per representation", 4);
   nl_harness_figure(r, "photos_montage.png",
                     "Photographs (left, their own size) and the top-left 256 x 256 of their "

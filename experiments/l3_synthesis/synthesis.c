@@ -28,9 +28,9 @@ static void synth_item(void *ctx, size_t s, int thread)
   (void)thread;
   synth_job *j = ctx;
   nl_image *syn;
-  if ((j->st[s] = nl_byexample_synthesize(
-           j->p, j->size, j->size, nl_seed_replicate(j->seed0, (long)s), j->so, &syn, &j->err[s])))
-    return;
+  unsigned long seed = nl_seed_replicate(j->seed0, (long)s);
+  j->st[s] = nl_byexample_synthesize(j->p, j->size, j->size, seed, j->so, &syn, &j->err[s]);
+  if (j->st[s]) return;
   j->ks[s] = nl_study_ks_channels(j->ex, syn, j->per + 3 * s);
   j->ce[s] = nl_byexample_correlation_error(j->ex, syn);
   if (s == 0)
@@ -69,7 +69,9 @@ static void gauss_self_match(size_t n, unsigned long seed, nl_byexample_hist_kin
   /* An exemplar channel of n N(0, 1) values and a fresh N(0, 1) noise of n
    * values matched to its histogram (sigma 1): what the representation does
    * to a channel that needs no change at all. */
-  double *x = nl_xmalloc(n * sizeof *x), *y = nl_xmalloc(n * sizeof *y), q[NL_EXAMPLE_HIST_MAX];
+  double *x = nl_xmalloc(n * sizeof *x);
+  double *y = nl_xmalloc(n * sizeof *y);
+  double q[NL_EXAMPLE_HIST_MAX];
   gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(g, nl_seed_stream(seed, "l3.gauss_exemplar", 0));
   for (size_t i = 0; i < n; i++) x[i] = gsl_ran_gaussian_ziggurat(g, 1.0);
@@ -109,11 +111,11 @@ nl_table *l3_gauss_table(size_t n, int K, unsigned long seed0, int threads)
                                 "tail_mean",      "tail_sd", "tail_gauss" };
   nl_table *t = nl_table_alloc(7, cols);
   const nl_byexample_hist_kind kinds[2] = { NL_HIST_PAPER, NL_HIST_GAUSS };
-  double *ks = nl_xmalloc(2 * (size_t)K * sizeof *ks),
-         *tail = nl_xmalloc(2 * (size_t)K * sizeof *tail);
+  double *ks = nl_xmalloc(2 * (size_t)K * sizeof *ks);
+  double *tail = nl_xmalloc(2 * (size_t)K * sizeof *tail);
   gauss_job j = { n, K, seed0, kinds, ks, tail };
-  nl_parallel_for(2 * (size_t)K, threads, gauss_item,
-                  &j); /* both kinds' replicates; rows in kind order */
+  /* both kinds' replicates; rows in kind order */
+  nl_parallel_for(2 * (size_t)K, threads, gauss_item, &j);
   for (int h = 0; h < 2; h++) {
     double km, ksd, tm, tsd;
     nl_study_mean_sd(ks + (size_t)h * K, K, &km, &ksd);
