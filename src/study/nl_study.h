@@ -61,8 +61,9 @@ void nl_study_survey_series(nl_study_basis_kind kind, const nl_study_setting *se
                             const nl_noise_window *win, unsigned long seed0, int nseeds,
                             nl_table **dist, nl_table **spectrum, nl_image **panels);
 
-nl_table *nl_study_series(nl_harness *r, const char *prefix, const char *title, nl_study_basis_kind kind,
-                          const nl_study_setting *settings, int n, const nl_noise_window *win);
+nl_table *nl_study_series(nl_harness *r, const char *prefix, const char *title,
+                          nl_study_basis_kind kind, const nl_study_setting *settings, int n,
+                          const nl_noise_window *win);
 
 /* The square window of the S experiments from the run's parameters:
  * size (pixels; 512, or 128 with --quick), extent (4 units) and z (0.5). */
@@ -72,14 +73,14 @@ nl_noise_window nl_study_window(nl_harness *r);
  * turbulence when `turbulence`), introduced by one paragraph ("**Slides:**
  * SLIDES **Ours:** the slice z = ... over [0, size)^2, K seeds ...") and
  * surveyed by nl_study_series. Returns the distribution table (caller frees). */
-nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int turbulence, const char *slides,
-                                 const char *prefix, const char *title);
+nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int turbulence,
+                                 const char *slides, const char *prefix, const char *title);
 
 /* Lays panels out in a montage of `cols` columns (nl_image_montage), writes it as
  * FILE in the run's folder (nl_harness_write_image) and frees it: the figure step that
  * most experiments end a loop with. */
-void nl_study_montage(nl_harness *r, const nl_image *const *panels, const char *const *labels, int n,
-                      int cols, const char *title, const char *file);
+void nl_study_montage(nl_harness *r, const nl_image *const *panels, const char *const *labels,
+                      int n, int cols, const char *title, const char *file);
 
 /* Radially averaged power (nl_spectrum_radial, size / 2 bins, cycles per
  * pixel) of n square size x size rasters: column "freq" then one column per
