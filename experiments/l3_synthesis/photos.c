@@ -73,10 +73,17 @@ static void mean_row(nl_table *mt, const nl_table *bands, const nl_table *sum,
                      const nl_image *photo, const char *name, const char *rep, int K,
                      double min_share, double max_ratio, double max_ks)
 {
-  double pe[NL_WAVELET_MAX_BANDS] = { 0 }, ps[NL_WAVELET_MAX_BANDS] = { 0 },
-         share[NL_WAVELET_MAX_BANDS] = { 0 };
-  double ks[64], sp[64], ts = 0, kg = 0;
-  int nb = 0, passes = 0, fail_ks = 0, fail_band = 0;
+  /* per band: the photo's power and share, the synthesis' power (mean over replicates) */
+  double pe[NL_WAVELET_MAX_BANDS] = { 0 };
+  double share[NL_WAVELET_MAX_BANDS] = { 0 };
+  double ps[NL_WAVELET_MAX_BANDS] = { 0 };
+  int nb = 0;
+  /* per replicate: KS and speckle; means of the gradient KS and the synthesis' tail */
+  double ks[64];
+  double sp[64];
+  double kg = 0;
+  double ts = 0;
+  int passes = 0, fail_ks = 0, fail_band = 0;
   for (size_t i = bands->nrows; i-- > 0 && !strcmp(nl_table_text(bands, i, "exemplar"), name) &&
                                 !strcmp(nl_table_text(bands, i, "representation"), rep);) {
     int k = (int)nl_table_value(bands, i, "band");

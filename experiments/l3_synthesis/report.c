@@ -37,7 +37,8 @@ void l3_report_exemplars(nl_harness *r, const nl_table *kt, const nl_table *ft,
   nl_harness_report_table(
       r, ft, "steffen vs Fritsch-Carlson: largest pixel difference (intensity units)", 4);
   for (int k = 0; k < nkinds; k++) {
-    char file[64], cap[400];
+    char file[64];
+    char cap[400];
     snprintf(file, sizeof file, "synthesis_%s.png", kinds[k]);
     snprintf(
         cap, sizeof cap,
@@ -180,7 +181,8 @@ void l3_report_photos(nl_harness *r, const nl_table *kt, const nl_table *gt, con
                   "%.4f without histogram matching, %.4f with the paper's 10 quantiles, %.4f with "
                   "gauss33 (variant pca_hist_gauss33).",
                   wk[0], wk[1], wk[2]);
-  int npass = 0, nrep = (int)nl_table_value(pt, 0, "replicates");
+  int npass = 0; /* rows passing in at least one replicate */
+  int nrep = (int)nl_table_value(pt, 0, "replicates");
   for (size_t i = 0; i < pt->nrows; i++) npass += nl_table_value(pt, i, "passes") > 0;
   nl_harness_text(
       r,
