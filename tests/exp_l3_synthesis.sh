@@ -39,10 +39,10 @@ set -euo pipefail
 ex="$(cd "$(dirname "$0")/../data/exemplars" && pwd)"
 "$1" --quick "${NOIMG[@]}" --threads 2 --out "$3" --exemplars "$ex"
 # The procedural exemplars' K syntheses are nl_parallel_for items
-# (nl_study_example_synth_seeds): one thread gives the same tables byte for
+# (l3_synth_seeds): one thread gives the same tables byte for
 # byte (the photographs cut to one at 16 pixels: they do not enter these).
 # The photographs' analyses and syntheses are nl_parallel_for items too
-# (nl_study_example_photos; rows added in item order): two threads give the
+# (l3_photos; rows added in item order): two threads give the
 # same photo tables as one (procedural exemplars cut to 16 pixels here).
 # Both are thread-identity reruns (tsv.sh): release build only (the
 # one-thread rerun costs 12.7 s of CPU under the sanitizers).

@@ -7,7 +7,7 @@
 
 /* ---- L4: frequency-based editing (Lagae et al. 2010 Fig. 10c, d) --------
  *
- * nl_study_edit_replicate analyses an exemplar with ([0]) and without ([1])
+ * l4_edit_replicate analyses an exemplar with ([0]) and without ([1])
  * histogram matching, synthesises (seed) the original, the edit (the nfine
  * finest bands' weights times factor, nl_byexample_attenuate) and the removal
  * (factor 0), and records per eq. 13 band k the luminance band power of the
@@ -16,7 +16,7 @@
  * single band k of the same 2D wavelet noise that falls in the nfine finest
  * bands (nl_byexample_band_leakage), and the KS distances per channel of the
  * 2D synthesis to a slice z = 0 of the solid synthesis and to the exemplar.
- * nl_study_edit_tables summarises K replicates (mean and sd over seeds):
+ * l4_edit_tables summarises K replicates (mean and sd over seeds):
  *   returned  band, power_b, ratio(_sd), ratio_nohist(_sd), floor(_nohist),
  *             predicted(_nohist) = floor + factor^2 (1 - floor), leak_fine,
  *             expected (factor^2 on edited bands, else 1);
@@ -30,13 +30,16 @@
  *             and the largest band power over the finest band's. */
 typedef struct {
   int nbands;
-  double power[2][NL_WAVELET_MAX_BANDS], ratio[2][NL_WAVELET_MAX_BANDS], floor[2][NL_WAVELET_MAX_BANDS];
-  double leak[NL_WAVELET_MAX_BANDS];
-  double ks_slice[3], ks_exemplar[3];
-} nl_study_edit;
-nl_status nl_study_edit_replicate(const nl_image *ex, int nfine, double factor, unsigned long seed,
-                                  nl_study_edit *out, nl_error *err);
-nl_table *nl_study_edit_tables(const nl_study_edit *rep, int K, int nfine, double factor, nl_table **solid,
-                               nl_table **summary);
+  double power[2][NL_WAVELET_MAX_BANDS]; /* luminance band power of the original */
+  double ratio[2][NL_WAVELET_MAX_BANDS]; /* edited / original */
+  double floor[2][NL_WAVELET_MAX_BANDS]; /* removed / original */
+  double leak[NL_WAVELET_MAX_BANDS];     /* share of band k in the nfine finest */
+  double ks_slice[3];                    /* KS per channel, 2D synthesis vs solid slice */
+  double ks_exemplar[3];                 /* KS per channel, 2D synthesis vs exemplar */
+} l4_edit;
+nl_status l4_edit_replicate(const nl_image *ex, int nfine, double factor, unsigned long seed,
+                            l4_edit *out, nl_error *err);
+nl_table *l4_edit_tables(const l4_edit *rep, int K, int nfine, double factor, nl_table **solid,
+                         nl_table **summary);
 
 #endif

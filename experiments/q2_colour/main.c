@@ -3,6 +3,7 @@
  * knots of sec. 4.1, for Perlin noise and five GCTBF combinations. */
 #include "cellular/nl_cellular.h"
 #include "harness/nl_harness.h"
+#include "q2.h"
 #include "study/nl_study.h"
 #include "texture/nl_texture.h"
 
@@ -15,11 +16,13 @@ static const char *combos[5] = {"F1", "F2 - F1", "F1F2", "F2 - F1 - F1F1", "F1F2
 
 int main(int argc, char **argv)
 {
-  nl_harness *r = nl_harness_begin("q2_colour", "Q2 - GCTBF colour mapping with the 13-knot spline", argc, argv);
+  nl_harness *r = nl_harness_begin("q2_colour", "Q2 - GCTBF colour mapping with the 13-knot spline",
+                                   argc, argv);
   int size = (int)nl_harness_param_int(r, "size", nl_harness_quick(r) ? 96 : 256, 8, 4096,
                                        "side in pixels of the colour-mapped images (quick 96)");
   double extent = nl_harness_param(r, "extent", 4.0, 1e-3, 1e4,
-                                   "side of the square [0, extent)^2 the images cover, in feature-cube units");
+                                   "side of the square [0, extent)^2 the images cover, in "
+                                   "feature-cube units");
   double perlin_freq = nl_harness_param(r, "perlin_freq", 2.0, 1e-3, 1e3,
                                         "frequency of the Perlin noise panel");
   nl_harness_params_done(r);
@@ -50,13 +53,16 @@ int main(int argc, char **argv)
         nl_cellular *c;
         nl_cellular_gctbf g;
         nl_error err;
-        if (nl_cellular_alloc(4.0, 50, NL_COUNT_INVERSE_CDF, seed, &c, &err)) nl_harness_die(r, 1, "%s", err.msg);
-        if (nl_cellular_gctbf_parse(combos[pat - 1], &g, &err)) nl_harness_die(r, 2, "%s", err.msg);
+        if (nl_cellular_alloc(4.0, 50, NL_COUNT_INVERSE_CDF, seed, &c, &err))
+          nl_harness_die(r, 1, "%s", err.msg);
+        if (nl_cellular_gctbf_parse(combos[pat - 1], &g, &err))
+          nl_harness_die(r, 2, "%s", err.msg);
         nl_cellular_gctbf_grid(c, &g, &win, v);
         nl_cellular_free(c);
         labels[pat] = combos[pat - 1];
       }
-      double mn, mx;
+      double mn;
+      double mx;
       gsl_stats_minmax(&mn, &mx, v, 1, npix);
       st[0] += gsl_stats_mean(v, 1, npix) / seeds;
       st[1] += gsl_stats_sd(v, 1, npix) / seeds;
@@ -67,21 +73,13 @@ int main(int argc, char **argv)
     nl_table_append(t, "sdddd", labels[pat], st[0], st[1], st[2], st[3]);
   }
   nl_harness_write_table(r, t, "values.tsv");
-  nl_study_montage(r, (const nl_image *const *)panels, labels, 6, 3, "Fig. 2: spline colour map", "colour.png");
+  nl_study_montage(r, (const nl_image *const *)panels, labels, 6, 3, "Fig. 2: spline colour map",
+                   "colour.png");
 
-  nl_harness_text(r, "**Paper (Fig. 2):** eq. 4 with the 13 blue-marble knots of sec. 4.1, Perlin noise "
-                     "and five GCTBF combinations (images only; the combinations are drawn in the "
-                     "figure, not named in the text). **Ours:** the plane z = 0.5 over [0, %g)^2, "
-                     "lambda = 4 with inverse-CDF counts, Ebert's Catmull-Rom spline (knots 1 and 13 "
-                     "only steer the ends), Perlin as RenderMan's 0.5 + 0.5 noise at frequency %g. "
-                     "Combinations chosen: F1, F2 - F1 (Worley's linear ones), F1F2, F2 - F1 - F1F1, "
-                     "F1F2 + F2F3. The table gives the value range that the clamp to [0, 1] sees "
-                     "(mean over %d seeds).\n", extent, perlin_freq, seeds);
-  nl_harness_report_table(r, t, "GCTBF values before the clamp", 4);
-  nl_harness_figure(r, "colour.png", "Fig. 2: Perlin noise and five GCTBF combinations through the 13-knot spline");
+  q2_report(r, extent, perlin_freq, t);
   for (int k = 0; k < 6; k++) nl_image_free(panels[k]);
   free(v);
   nl_table_free(t);
-  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);
 }

@@ -3,30 +3,37 @@
  * bump = fractal^3 along its normal and shaded under one light. */
 #include "cellular/nl_cellular.h"
 #include "harness/nl_harness.h"
+#include "q3.h"
 
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>
 
 int main(int argc, char **argv)
 {
-  nl_harness *r = nl_harness_begin("q3_bumps", "Q3 - Fractal bump wrinkles with F2 - F1 - F1F1", argc, argv);
+  nl_harness *r =
+      nl_harness_begin("q3_bumps", "Q3 - Fractal bump wrinkles with F2 - F1 - F1F1", argc, argv);
   int size = (int)nl_harness_param_int(r, "size", nl_harness_quick(r) ? 96 : 256, 8, 4096,
                                        "side in pixels of the shaded bump images (quick 96)");
   double extent = nl_harness_param(r, "extent", 2.0, 1e-3, 1e4,
-                                   "side of the square of the plane the images cover, in feature-cube units");
+                                   "side of the square of the plane the images cover, in "
+                                   "feature-cube units");
   double k = nl_harness_param(r, "k", 3.0, 1e-3, 1e3,
-                              "scale k of the fractal bump's octaves (Qin & Yang eq. 5's example: 3)");
+                              "scale k of the fractal bump's octaves (Qin & Yang eq. 5's example: "
+                              "3)");
   int max_oct = (int)nl_harness_param_int(r, "octaves", 4, 0, 30,
-                                          "highest octave of the fractal bump; panels show octaves 0..this");
+                                          "highest octave of the fractal bump; panels show octaves "
+                                          "0..this");
   double amp = nl_harness_param(r, "amp", 0.05, 1e-6, 1e3,
-                                "displacement amplitude: the plane moves by amp x bump along its normal");
+                                "displacement amplitude: the plane moves by amp x bump along its "
+                                "normal");
   nl_harness_params_done(r);
   int seeds = nl_harness_seeds(r);
   size_t npix = (size_t)size * size;
   nl_noise_window win = {0, 0, 0.5, extent, size, size};
   /* One light from the upper left, 45 degrees high. */
   const double light[3] = {-0.5, 0.5, 0.70710678118654752};
-  double *h = nl_xmalloc(npix * sizeof *h), *sh = nl_xmalloc(npix * sizeof *sh);
+  double *h = nl_xmalloc(npix * sizeof *h);  /* bump height */
+  double *sh = nl_xmalloc(npix * sizeof *sh); /* its shading */
   int npan = max_oct + 2;
   nl_image **panels = nl_xmalloc((size_t)npan * sizeof *panels);
   char **labels = nl_xmalloc((size_t)npan * sizeof *labels);
@@ -40,12 +47,16 @@ int main(int argc, char **argv)
     for (int s = 0; s < seeds; s++) {
       nl_cellular *c;
       nl_error err;
-      if (nl_cellular_alloc(4.0, 50, NL_COUNT_INVERSE_CDF, nl_seed_replicate(nl_harness_seed(r), s), &c, &err))
+      unsigned long seed = nl_seed_replicate(nl_harness_seed(r), s);
+      if (nl_cellular_alloc(4.0, 50, NL_COUNT_INVERSE_CDF, seed, &c, &err))
         nl_harness_die(r, 1, "%s", err.msg);
       nl_cellular_gctbf_basis gb = {c, {0}};
       nl_cellular_gctbf_parse("F2 - F1 - F1F1", &gb.g, NULL);
-      if (pan == 0) for (size_t q = 0; q < npix; q++) h[q] = 0.0;   /* the flat plane */
-      else nl_cellular_gctbf_fractal_bump_grid(&gb, pan - 1, k, &win, h);
+      if (pan == 0) {
+        for (size_t q = 0; q < npix; q++) h[q] = 0.0; /* the flat plane */
+      } else {
+        nl_cellular_gctbf_fractal_bump_grid(&gb, pan - 1, k, &win, h);
+      }
       /* displacement amp * bump: the same as spacing / amp */
       nl_cellular_heightfield_shade(h, size, size, extent / size / amp, light, sh);
       st[0] += gsl_stats_mean(h, 1, npix) / seeds;
@@ -58,25 +69,21 @@ int main(int argc, char **argv)
     nl_table_append(t, "idddd", pan - 1, st[0], st[1], st[2], st[3]);
   }
   nl_harness_write_table(r, t, "bumps.tsv");
-  nl_image *m = nl_image_montage((const nl_image *const *)panels, (const char *const *)labels, npan, 3,
-                                 "Fig. 4: F2 - F1 - F1F1 wrinkles");
+  nl_image *m = nl_image_montage((const nl_image *const *)panels, (const char *const *)labels,
+                                 npan, 3, "Fig. 4: F2 - F1 - F1F1 wrinkles");
   nl_harness_write_image(r, m, "bumps.png");
 
-  nl_harness_text(r, "**Paper (Fig. 4, eq. 6):** fractal(x) = sum_{i=0}^{octaves} |0.5 - GCTBF(2^i x)| / 2^i, "
-                     "bump = fractal^3, x <- x - bump N, GCTBF = F2 - F1 - F1F1, octaves 0..4 after the "
-                     "original (images only). **Ours:** the plane z = 0.5 over [0, %g)^2 with the pattern "
-                     "scaled by k = %g (eq. 5's example), lambda = 4, inverse-CDF counts; the displacement "
-                     "is amp = %g times bump (the paper's object size is unknown; with amp = 1 on this "
-                     "window the slopes reach ~10 and the shading saturates), and the height field is shaded by Lambert's law under one light (-0.5, 0.5, 0.707), normals "
-                     "by central differences. The first row of the table (octaves = -1) is the flat "
-                     "original. %d seeds.\n", extent, k, amp, seeds);
-  nl_harness_report_table(r, t, "Bump height and shading (mean over seeds; bump_max the largest)", 4);
-  nl_harness_figure(r, "bumps.png", "Fig. 4: original plane, then octaves 0..4");
-  for (int i = 0; i < npan; i++) { nl_image_free(panels[i]); free(labels[i]); }
-  free(panels); free(labels);
+  q3_report(r, extent, k, amp, light, max_oct, t);
+  for (int i = 0; i < npan; i++) {
+    nl_image_free(panels[i]);
+    free(labels[i]);
+  }
+  free(panels);
+  free(labels);
   nl_image_free(m);
-  free(h); free(sh);
+  free(h);
+  free(sh);
   nl_table_free(t);
-  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);
 }

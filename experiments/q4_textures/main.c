@@ -4,6 +4,7 @@
  * F3 - F3F3, sky F1F2 + F2F3 and F1, flame F1. */
 #include "cellular/nl_cellular.h"
 #include "harness/nl_harness.h"
+#include "q4.h"
 #include "wood.h"
 #include "study/nl_study.h"
 #include "texture/nl_texture.h"
@@ -17,37 +18,38 @@
  * sign there); small ones such as F1F1 or F2 - F1 saturate to cloud. */
 static const char *cloud_combos[5] = {"F1", "F2", "F1 + F1F1", "F1 + F1F2", "F1F2 + F2F3"};
 static const char *marble =
-  "-F1 + F2 - F3 + F4 + F1F1 - F1F2 + F1F3 - F1F4 - F2F1 + F2F2 - F2F3 + F2F4"
-  " + F3F1 - F3F2 + F3F3 - F3F4 - F4F1 + F4F2 - F4F3 + F4F4";
-
-typedef struct {
-  nl_harness *r;
-  int size, octaves, seeds;
-  double k;
-  nl_noise_window win;
-  nl_table *t;
-} q4;
+    "-F1 + F2 - F3 + F4 + F1F1 - F1F2 + F1F3 - F1F4 - F2F1 + F2F2 - F2F3 + F2F4"
+    " + F3F1 - F3F2 + F3F3 - F3F4 - F4F1 + F4F2 - F4F3 + F4F4";
 
 enum { CLOUD = NL_GCTBF_CLOUD, FLAME = NL_GCTBF_FLAME, PLAIN = NL_GCTBF_PLAIN };
 
 /* Values of one texture over seeds (table row), image of the first seed. */
-static nl_image *texture(q4 *q, int kind, const char *label, const char *expr, const nl_texture_ramp *ramp,
-                         double lo, double hi)
+static nl_image *texture(q4 *q, int kind, const char *label, const char *expr,
+                         const nl_texture_ramp *ramp, double lo, double hi)
 {
   size_t n = (size_t)q->size * q->size;
-  double *v = nl_xmalloc(n * sizeof *v), mean = 0, sd = 0;
+  double *v = nl_xmalloc(n * sizeof *v);
+  double mean = 0;
+  double sd = 0;
   nl_image *im = NULL;
   for (int s = 0; s < q->seeds; s++) {
     unsigned long seed = nl_seed_replicate(nl_harness_seed(q->r), s);
     nl_error err;
-    if (nl_cellular_texture_grid((nl_cellular_gctbf_texture)kind, expr, q->octaves, q->k, &q->win, seed, v, &err))
+    if (nl_cellular_texture_grid((nl_cellular_gctbf_texture)kind, expr, q->octaves, q->k, &q->win,
+                                 seed, v, &err))
       nl_harness_die(q->r, 1, "%s", err.msg);
     mean += gsl_stats_mean(v, 1, n) / q->seeds;
     sd += gsl_stats_sd(v, 1, n) / q->seeds;
-    if (s == 0) im = ramp ? nl_texture_ramp_image(ramp, v, q->size, q->size, lo, hi) : nl_texture_cloud_colour(v, q->size, q->size);
+    if (s > 0) continue;
+    if (ramp)
+      im = nl_texture_ramp_image(ramp, v, q->size, q->size, lo, hi);
+    else
+      im = nl_texture_cloud_colour(v, q->size, q->size);
   }
-  nl_table_append(q->t, "sssdd", label, kind == CLOUD ? "eq. 7 cloud" : kind == FLAME ? "fractal + spline" : "spline / ramp",
-                  expr ? expr : "Perlin", mean, sd);
+  const char *method = kind == CLOUD   ? "eq. 7 cloud"
+                       : kind == FLAME ? "fractal + spline"
+                                       : "spline / ramp";
+  nl_table_append(q->t, "sssdd", label, method, expr ? expr : "Perlin", mean, sd);
   free(v);
   return im;
 }
@@ -55,21 +57,27 @@ static nl_image *texture(q4 *q, int kind, const char *label, const char *expr, c
 int main(int argc, char **argv)
 {
   q4 q = {0};
-  q.r = nl_harness_begin("q4_textures", "Q4 - GCTBF cloud, marble, wood and flame textures", argc, argv);
+  q.r = nl_harness_begin("q4_textures", "Q4 - GCTBF cloud, marble, wood and flame textures", argc,
+                         argv);
   q.size = (int)nl_harness_param_int(q.r, "size", nl_harness_quick(q.r) ? 96 : 256, 8, 4096,
                                      "side in pixels of the texture images (quick 96)");
-  q.octaves = (int)nl_harness_param_int(q.r, "octaves", 4, 0, 30,
-                                        "octaves added above the first in the cloud and texture sums (0 = one octave)");
+  q.octaves = (int)nl_harness_param_int(
+      q.r, "octaves", 4, 0, 30,
+      "octaves added above the first in the cloud and texture sums (0 = one octave)");
   q.k = nl_harness_param(q.r, "k", 2.0, 1e-3, 1e3,
-                         "scale k between successive octaves of the GCTBF cloud (Qin & Yang eq. 7)");
-  double rings = nl_harness_param(q.r, "wood_rings", 6.0, 0.1, 100, "wood: rings per unit of distance to the tree's axis");
-  double turb = nl_harness_param(q.r, "wood_turb", 8.0, 0, 1000, "wood: rings added per unit of the basis (its amplitude)");
+                         "scale k between successive octaves of the GCTBF cloud "
+                         "(Qin & Yang eq. 7)");
+  q.rings = nl_harness_param(q.r, "wood_rings", 6.0, 0.1, 100,
+                             "wood: rings per unit of distance to the tree's axis");
+  q.turb = nl_harness_param(q.r, "wood_turb", 8.0, 0, 1000,
+                            "wood: rings added per unit of the basis (its amplitude)");
   nl_harness_params_done(q.r);
   q.seeds = nl_harness_seeds(q.r);
   q.win = (nl_noise_window){0, 0, 0.5, 2.0, q.size, q.size};
   const char *cols[] = {"texture", "method", "gctbf", "mean", "sd"};
   q.t = nl_table_alloc(5, cols);
 
+  /* Fig. 5: eq. 7 over Perlin noise and the five combinations. */
   nl_image *clouds[6];
   const char *clabels[6] = {"Perlin"};
   clouds[0] = texture(&q, CLOUD, "cloud Perlin", NULL, NULL, 0, 1);
@@ -77,75 +85,64 @@ int main(int argc, char **argv)
     clabels[k + 1] = cloud_combos[k];
     clouds[k + 1] = texture(&q, CLOUD, "cloud", cloud_combos[k], NULL, 0, 1);
   }
-  nl_study_montage(q.r, (const nl_image *const *)clouds, clabels, 6, 3, "Fig. 5: eq. 7 clouds", "clouds.png");
+  nl_study_montage(q.r, (const nl_image *const *)clouds, clabels, 6, 3, "Fig. 5: eq. 7 clouds",
+                   "clouds.png");
 
+  /* Fig. 6: marble, wood (ramp reading, replaced below), sky and flame. */
   const float woodc[2][3] = {{0.80f, 0.58f, 0.34f}, {0.38f, 0.20f, 0.08f}};
   const double wpos[2] = {0.0, 1.0};
-  const float firec[6][3] = {{0, 0, 0}, {0, 0, 0}, {0.8f, 0.1f, 0.0f}, {1.0f, 0.55f, 0.0f},
-                             {1.0f, 0.95f, 0.5f}, {1.0f, 1.0f, 1.0f}};
-  nl_texture_ramp mr = nl_texture_ramp_cellular_marble(), wr = nl_texture_ramp_linear(2, wpos, woodc), fr = nl_texture_ramp_spline(6, firec);
+  const float firec[6][3] = {{0, 0, 0},          {0, 0, 0},          {0.8f, 0.1f, 0.0f},
+                             {1.0f, 0.55f, 0.0f}, {1.0f, 0.95f, 0.5f}, {1.0f, 1.0f, 1.0f}};
+  nl_texture_ramp mr = nl_texture_ramp_cellular_marble();
+  nl_texture_ramp wr = nl_texture_ramp_linear(2, wpos, woodc);
+  nl_texture_ramp fr = nl_texture_ramp_spline(6, firec);
   nl_image *tex[6];
-  const char *tlabels[6] = {"marble", "wood F1 - F1F1", "wood F3 - F3F3", "sky F1F2 + F2F3", "sky F1", "flame F1"};
+  const char *tlabels[6] = {"marble",          "wood F1 - F1F1", "wood F3 - F3F3",
+                            "sky F1F2 + F2F3", "sky F1",         "flame F1"};
   tex[0] = texture(&q, PLAIN, "marble", marble, &mr, 0.0, 1.0);
   tex[1] = texture(&q, PLAIN, "wood", "F1 - F1F1", &wr, 0.0, 0.25);
   tex[2] = texture(&q, PLAIN, "wood", "F3 - F3F3", &wr, 0.0, 0.25);
   tex[3] = texture(&q, CLOUD, "sky", "F1F2 + F2F3", NULL, 0, 1);
   tex[4] = texture(&q, CLOUD, "sky", "F1", NULL, 0, 1);
   tex[5] = texture(&q, FLAME, "flame", "F1", &fr, 0.2, 1.0);
-  /* Wood: the usual solid wood shader (nl_texture_wood): the table a plank whose axis runs along x, tilted into
-   * the board; the trunk cut across its axis. Dark bands counted across the rings (middle column, row). */
-  nl_texture_wood wd[2] = {{.axis_p = {1.0, 1.0, 0.25}, .axis_d = {1.0, 0.08, 0.15}, .ring_freq = rings, .turb = turb},
-                           {.axis_p = {0.9, 1.1, 0.0}, .axis_d = {0.0, 0.0, 1.0}, .ring_freq = rings, .turb = turb}};
-  nl_table *wt = nl_study_wood_table();
+
+  /* Wood: the usual solid wood shader (nl_texture_wood): the table a plank
+   * whose axis runs along x, tilted into the board; the trunk cut across its
+   * axis. Dark bands counted across the rings (middle column, row). */
+  nl_texture_wood wd[2] = {
+      {.axis_p = {1.0, 1.0, 0.25}, .axis_d = {1.0, 0.08, 0.15}, .ring_freq = q.rings,
+       .turb = q.turb},
+      {.axis_p = {0.9, 1.1, 0.0}, .axis_d = {0.0, 0.0, 1.0}, .ring_freq = q.rings,
+       .turb = q.turb}};
+  q.wood = q4_wood_table();
   nl_image *wim[4];
   for (int i = 0; i < 2; i++) {
     nl_error err;
-    memcpy(wd[i].light, woodc[0], sizeof woodc[0]), memcpy(wd[i].dark, woodc[1], sizeof woodc[1]);
-    if (nl_study_wood(wt, i ? "trunk" : "table", i ? "F3 - F3F3" : "F1 - F1F1", q.k, &q.win, &wd[i], &wr, 0.0, 0.25, i == 0,
-                      q.size / 2, nl_harness_seed(q.r), q.seeds, &wim[2 * i + 1], &wim[2 * i], &err))
+    memcpy(wd[i].light, woodc[0], sizeof woodc[0]);
+    memcpy(wd[i].dark, woodc[1], sizeof woodc[1]);
+    if (q4_wood(q.wood, i ? "trunk" : "table", i ? "F3 - F3F3" : "F1 - F1F1", q.k, &q.win, &wd[i],
+                &wr, 0.0, 0.25, i == 0, q.size / 2, nl_harness_seed(q.r), q.seeds,
+                &wim[2 * i + 1], &wim[2 * i], &err))
       nl_harness_die(q.r, 1, "%s", err.msg);
-    nl_image_free(tex[1 + i]), tex[1 + i] = nl_image_convert(wim[2 * i + 1], 3);
+    nl_image_free(tex[1 + i]);
+    tex[1 + i] = nl_image_convert(wim[2 * i + 1], 3);
   }
   const char *wl[4] = {"table: ramp", "table: rings", "trunk: ramp", "trunk: rings"};
-  nl_study_montage(q.r, (const nl_image *const *)wim, wl, 4, 4, "Wood: GCTBF through a ramp, and through a wood shader", "wood.png");
-  nl_study_montage(q.r, (const nl_image *const *)tex, tlabels, 6, 3, "Fig. 6: GCTBF textures", "textures.png");
+  nl_study_montage(q.r, (const nl_image *const *)wim, wl, 4, 4,
+                   "Wood: GCTBF through a ramp, and through a wood shader", "wood.png");
+  nl_study_montage(q.r, (const nl_image *const *)tex, tlabels, 6, 3, "Fig. 6: GCTBF textures",
+                   "textures.png");
   nl_harness_write_table(q.r, q.t, "textures.tsv");
-  nl_harness_write_table(q.r, wt, "wood.tsv");
+  nl_harness_write_table(q.r, q.wood, "wood.tsv");
 
-  nl_harness_text(q.r, "**Paper (Fig. 5, 6):** cloud pattern eq. 7 for Perlin and five GCTBF; marble sum (-1)^i F_i + "
-                       "sum (-1)^(i+j) F_i F_j, wood F1 - F1F1 and F3 - F3F3, sky F1F2 + F2F3 and F1, flame F1 (images only; "
-                       "colours other than the sky/cloud of eq. 7 and the marble knots of sec. 4.1 are not given). **Ours:** plane z = 0.5, "
-                       "[0, 2)^2 scaled by k = %g, %d octaves after the first in eq. 7 and the flame, "
-                       "lambda = 4 with inverse-CDF counts, %d seeds for the numbers.\n\n"
-                       "**Readings:** smoothscale() of eq. 7 (an antialiasing fade tied to the RenderMan footprint) is 1; "
-                       "Fig. 5's five combinations are drawn, not named: we use F1, F2, F1 + F1F1, F1 + F1F2, F1F2 + F2F3, "
-                       "whose values lie around 1/2 where 1 - 2 GCTBF changes sign (combinations with small values such as F1F1 or F2 - F1 "
-                       "make every octave positive and the sky saturates to cloud); marble maps clamp(GCTBF, 0, 1) through the "
-                       "13-knot spline of sec. 4.1; the wood ramp alternative maps [0, 0.25] (the range of F - F^2 for F <= 1) "
-                       "linearly from light to dark brown; flame maps the fractal sum of F1 over [0.2, 1] through a "
-                       "black-red-orange-yellow-white spline.\n\n**Wood:** the paper names only the basis inside a RenderMan "
-                       "wood shader it does not print (it cites Ebert et al., Texturing & Modeling). We read it as the usual solid "
-                       "wood: rings u = frac(%g r + %g GCTBF) of the distance r to a tree axis, light to dark wood by the ring "
-                       "profile of the RenderMan Companion's wood (table: an axis along x tilted into the board; trunk: cut "
-                       "across its axis). The basis moves the rings by %.2f (table) and %.2f (trunk) rings (sd); across the middle line "
-                       "the shader shows %.1f and %.1f dark bands (the axis geometry alone %g and %g), the ramp reading "
-                       "%.1f and %.1f (mean over seeds; table below). Beside real wood (first seed, wood.png): the trunk "
-                       "shows concentric rings with a sharp dark late-wood edge, but faceted, kinked at the cell borders "
-                       "of F3; the table shows bands along the axis that wander and close into small rings around F1's "
-                       "feature points, like knots; neither has the fine fibre grain of wood (the basis is isotropic, "
-                       "not stretched along the axis). The ramp reading shows cells and creases, no rings.\n",
-                  q.k, q.octaves, q.seeds, rings, turb, nl_table_value(wt, 0, "perturb_rings_sd"),
-                  nl_table_value(wt, 1, "perturb_rings_sd"), nl_table_value(wt, 0, "rings"), nl_table_value(wt, 1, "rings"),
-                  nl_table_value(wt, 0, "rings_geometry"), nl_table_value(wt, 1, "rings_geometry"),
-                  nl_table_value(wt, 0, "ramp_bands"), nl_table_value(wt, 1, "ramp_bands"));
-  nl_harness_report_table(q.r, q.t, "Value statistics before colour mapping (mean over seeds)", 4);
-  nl_harness_figure(q.r, "clouds.png", "Fig. 5: eq. 7 clouds, Perlin and five GCTBF combinations");
-  nl_harness_report_table(q.r, wt, "Wood: basis sd, ring displacement (rings, sd), ring-profile sd, dark bands across the middle line (mean, sd over seeds; without the basis; the ramp reading)", 3);
-  nl_harness_figure(q.r, "textures.png", "Fig. 6: marble, wood (a wood shader on the GCTBF), sky and flame");
-  nl_harness_figure(q.r, "wood.png", "Wood, table (F1 - F1F1) and trunk (F3 - F3F3): the ramp reading beside the wood shader");
-  for (int k = 0; k < 6; k++) { nl_image_free(clouds[k]); nl_image_free(tex[k]); }
+  q4_report(&q);
+  for (int k = 0; k < 6; k++) {
+    nl_image_free(clouds[k]);
+    nl_image_free(tex[k]);
+  }
   for (int k = 0; k < 4; k++) nl_image_free(wim[k]);
-  nl_table_free(q.t); nl_table_free(wt);
-  nl_harness_check_measured(q.r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  nl_table_free(q.t);
+  nl_table_free(q.wood);
+  nl_harness_check_measured(q.r, "*", 100); /* measured tolerances (nl_harness.h) */
   return nl_harness_end(q.r);
 }

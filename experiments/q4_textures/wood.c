@@ -9,47 +9,65 @@
 #include <gsl/gsl_statistics_double.h>
 #include <stdlib.h>
 
-nl_table *nl_study_wood_table(void)
+nl_table *q4_wood_table(void)
 {
-  const char *cols[] = {"panel", "gctbf", "value_sd", "perturb_rings_sd", "ring_sd", "rings", "rings_sd",
-                        "rings_geometry", "ramp_bands", "ramp_bands_sd"};
+  const char *cols[] = {"panel",    "gctbf",          "value_sd",   "perturb_rings_sd",
+                        "ring_sd",  "rings",          "rings_sd",   "rings_geometry",
+                        "ramp_bands", "ramp_bands_sd"};
   return nl_table_alloc(10, cols);
 }
 
-nl_status nl_study_wood(nl_table *table, const char *panel, const char *expr, double k, const nl_noise_window *win,
-                        const nl_texture_wood *wd, const nl_texture_ramp *ramp, double lo, double hi, int vertical,
-                        int index, unsigned long seed0, int K, nl_image **rings, nl_image **ramped, nl_error *err)
+nl_status q4_wood(nl_table *table, const char *panel, const char *expr, double k,
+                  const nl_noise_window *win, const nl_texture_wood *wd,
+                  const nl_texture_ramp *ramp, double lo, double hi, int vertical, int index,
+                  unsigned long seed0, int K, nl_image **rings, nl_image **ramped, nl_error *err)
 {
-  nl_study_wood_result r, *res = &r;
+  q4_wood_result r, *res = &r;
   size_t n = (size_t)win->w * win->h;
-  double *g = nl_xmalloc(n * sizeof *g), *t = nl_xmalloc(n * sizeof *t);
-  double *cr = nl_xcalloc((size_t)K, sizeof *cr), *cb = nl_xcalloc((size_t)K, sizeof *cb);
+  double *g = nl_xmalloc(n * sizeof *g);
+  double *t = nl_xmalloc(n * sizeof *t);
+  double *cr = nl_xcalloc((size_t)K, sizeof *cr);
+  double *cb = nl_xcalloc((size_t)K, sizeof *cb);
   nl_status st = NL_OK;
   res->value_sd = res->ring_sd = 0;
   *rings = *ramped = NULL;
   for (int s = 0; s < K && !st; s++) {
-    if ((st = nl_cellular_texture_grid(NL_GCTBF_PLAIN, expr, 0, k, win, nl_seed_replicate(seed0, s), g, err))) break;
+    unsigned long seed = nl_seed_replicate(seed0, s);
+    st = nl_cellular_texture_grid(NL_GCTBF_PLAIN, expr, 0, k, win, seed, g, err);
+    if (st) break;
     nl_texture_wood_grid(wd, win, g, t);
-    nl_image *a = nl_texture_wood_image(wd, t, win->w, win->h), *b = nl_texture_ramp_image(ramp, g, win->w, win->h, lo, hi);
+    nl_image *a = nl_texture_wood_image(wd, t, win->w, win->h);
+    nl_image *b = nl_texture_ramp_image(ramp, g, win->w, win->h, lo, hi);
     cr[s] = nl_texture_band_count(a, vertical, index);
     cb[s] = nl_texture_band_count(b, vertical, index);
     res->value_sd += gsl_stats_sd(g, 1, n) / K;
     res->ring_sd += gsl_stats_sd(t, 1, n) / K;
-    if (s == 0) { *rings = a; *ramped = b; } else { nl_image_free(a); nl_image_free(b); }
+    if (s == 0) {
+      *rings = a;
+      *ramped = b;
+    } else {
+      nl_image_free(a);
+      nl_image_free(b);
+    }
   }
   if (!st) {
     nl_study_mean_sd(cr, K, &res->rings, &res->rings_sd);
     nl_study_mean_sd(cb, K, &res->ramp_bands, &res->ramp_bands_sd);
-    nl_texture_wood_grid(wd, win, NULL, t);   /* the rings without the basis: the geometry's count */
+    nl_texture_wood_grid(wd, win, NULL, t); /* the rings without the basis: the geometry's count */
     nl_image *a = nl_texture_wood_image(wd, t, win->w, win->h);
     res->rings_geometry = nl_texture_band_count(a, vertical, index);
     nl_image_free(a);
-    nl_table_append(table, "ssdddddddd", panel, expr, res->value_sd, wd->turb * res->value_sd, res->ring_sd, res->rings,
-                    res->rings_sd, res->rings_geometry, res->ramp_bands, res->ramp_bands_sd);
+    nl_table_append(table, "ssdddddddd", panel, expr, res->value_sd, wd->turb * res->value_sd,
+                    res->ring_sd, res->rings, res->rings_sd, res->rings_geometry, res->ramp_bands,
+                    res->ramp_bands_sd);
   } else {
-    nl_image_free(*rings); nl_image_free(*ramped);
+    nl_image_free(*rings);
+    nl_image_free(*ramped);
     *rings = *ramped = NULL;
   }
-  free(g); free(t); free(cr); free(cb);
+  free(g);
+  free(t);
+  free(cr);
+  free(cb);
   return st;
 }

@@ -2,6 +2,7 @@
  * mapped through a colour ramp (slides "Marble", panels (a)-(c)). */
 #include "noise/nl_noise.h"
 #include "harness/nl_harness.h"
+#include "s4.h"
 #include "texture/nl_texture.h"
 
 #include <gsl/gsl_histogram.h>
@@ -20,7 +21,8 @@ int main(int argc, char **argv)
   int octaves = (int)nl_harness_param_int(r, "octaves", 6, 1, 30,
                                           "octaves of the turbulence that perturbs the stripes");
   double stripes = nl_harness_param(r, "stripes", 1.0, 1e-3, 1e3,
-                                    "stripes per unit along y: u = (1 + sin(2 pi stripes p.y)) / 2, p.y displaced by turbulence");
+                                    "stripes per unit along y: u = (1 + sin(2 pi stripes p.y)) / "
+                                    "2, p.y displaced by turbulence");
   double extent = nl_harness_param(r, "extent", 4.0, 1e-3, 1e4,
                                    "side of the noise-space square [0, extent)^2 the images cover");
   nl_harness_params_done(r);
@@ -33,14 +35,18 @@ int main(int argc, char **argv)
   double *u = nl_xmalloc(npix * sizeof *u);
   const char *hcols[NA + 1] = {"u", "a=0", "a=0.25", "a=0.5", "a=1"};
   nl_table *hist = nl_table_alloc(NA + 1, hcols);
-  for (int b = 0; b < NBINS; b++) nl_table_set(hist, nl_table_append_empty(hist), "u", (b + 0.5) / NBINS);
+  for (int b = 0; b < NBINS; b++) {
+    size_t row = nl_table_append_empty(hist);
+    nl_table_set(hist, row, "u", (b + 0.5) / NBINS);
+  }
   const char *dcols[] = {"a", "u_mean", "u_mean_sd", "u_sd", "u_sd_sd"};
   nl_table *dist = nl_table_alloc(5, dcols);
   nl_image *panels[NA];
   char labels[NA][32];
   const char *lab[NA];
   int nseeds = nl_harness_seeds(r);
-  double *m = nl_xmalloc((size_t)nseeds * sizeof *m), *sd = nl_xmalloc((size_t)nseeds * sizeof *sd);
+  double *m = nl_xmalloc((size_t)nseeds * sizeof *m);
+  double *sd = nl_xmalloc((size_t)nseeds * sizeof *sd);
   gsl_histogram *h = gsl_histogram_alloc(NBINS);
   gsl_histogram_set_ranges_uniform(h, 0.0, 1.0 + 1e-12);
   for (int i = 0; i < NA; i++) {
@@ -55,14 +61,20 @@ int main(int argc, char **argv)
       for (size_t q = 0; q < npix; q++) gsl_histogram_increment(h, u[q]);
       if (k == 0) panels[i] = nl_texture_ramp_image(&ramp, u, size, size, 0, 1);
     }
-    for (int bin = 0; bin < NBINS; bin++)
-      nl_table_set(hist, (size_t)bin, hcols[i + 1], gsl_histogram_get(h, bin) / ((double)npix * nseeds) * NBINS);
-    nl_table_append(dist, "ddddd", amps[i], gsl_stats_mean(m, 1, nseeds), nseeds > 1 ? gsl_stats_sd(m, 1, nseeds) : 0,
-                    gsl_stats_mean(sd, 1, nseeds), nseeds > 1 ? gsl_stats_sd(sd, 1, nseeds) : 0);
+    /* density: samples per bin over all seeds, per unit of u */
+    for (int bin = 0; bin < NBINS; bin++) {
+      double density = gsl_histogram_get(h, bin) / ((double)npix * nseeds) * NBINS;
+      nl_table_set(hist, (size_t)bin, hcols[i + 1], density);
+    }
+    double m_sd = nseeds > 1 ? gsl_stats_sd(m, 1, nseeds) : 0;
+    double sd_sd = nseeds > 1 ? gsl_stats_sd(sd, 1, nseeds) : 0;
+    nl_table_append(dist, "ddddd", amps[i], gsl_stats_mean(m, 1, nseeds), m_sd,
+                    gsl_stats_mean(sd, 1, nseeds), sd_sd);
     snprintf(labels[i], sizeof labels[i], "(%c) a = %g", 'a' + i, amps[i]);
     lab[i] = labels[i];
   }
-  nl_image *mont = nl_image_montage((const nl_image *const *)panels, lab, NA, NA, "marble: u = (1 + sin(2 pi (y + a fractal_sum(p)))) / 2");
+  nl_image *mont = nl_image_montage((const nl_image *const *)panels, lab, NA, NA,
+                                    "marble: u = (1 + sin(2 pi (y + a fractal_sum(p)))) / 2");
   nl_harness_write_image(r, mont, "panels.png");
   nl_harness_write_table(r, hist, "u_density.tsv");
   nl_harness_write_table(r, dist, "distribution.tsv");
@@ -74,24 +86,15 @@ int main(int argc, char **argv)
   nl_harness_check(r, "distribution.tsv", "u_mean_sd", "ftest 1e-3");
   nl_harness_check(r, "distribution.tsv", "u_sd_sd", "ftest 1e-3");
 
-  nl_harness_text(r, "**Slides:** u = (1 + sin(y)) / 2 through a marble colour ramp, after p.y = p.y + "
-                     "a fractal_sum(p) (images only, a not given). **Ours:** %g stripe%s per unit "
-                     "(u = (1 + sin(2 pi %g (y + a F(p)))) / 2), F the %d-octave fractal sum of "
-                     "Perlin's improved noise on z = 0.5, over [0, %g)^2; a = 0 is the unperturbed "
-                     "ramp of the slide's first panel. A white-grey-blue ramp of 5 knots.\n",
-                 stripes, stripes == 1 ? "" : "s", stripes, octaves, extent);
-  nl_harness_figure(r, "panels.png", "Marble for growing turbulence amplitude a");
-  nl_harness_report_table(r, dist, "Mean and sd of u over seeds", 4);
-  nl_harness_figure(r, "density.png", "Density of u (mean over seeds) against the arcsine law of pure stripes");
-  nl_harness_text(r, "Pure stripes give u the arcsine density 1 / (pi sqrt(u (1 - u))), piling up at "
-                     "0 and 1. The fractal displacement changes where the stripes run, not how u is "
-                     "distributed: the density stays close to the arcsine law for every a, which is "
-                     "why marble keeps the ramp's end colours dominant however turbulent it gets.\n");
+  s4_report(r, stripes, octaves, extent, dist);
   gsl_histogram_free(h);
   for (int i = 0; i < NA; i++) nl_image_free(panels[i]);
   nl_image_free(mont);
-  nl_table_free(hist); nl_table_free(dist);
-  free(u); free(m); free(sd);
-  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  nl_table_free(hist);
+  nl_table_free(dist);
+  free(u);
+  free(m);
+  free(sd);
+  nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);
 }

@@ -14,24 +14,29 @@ static void put(const char *prefix, const char *what, char *buf, size_t n)
   snprintf(buf, n, "%s_%s", prefix, what);
 }
 
-nl_table *nl_study_series(nl_harness *r, const char *prefix, const char *title, nl_study_basis_kind kind,
-                          const nl_study_setting *settings, int n, const nl_noise_window *win)
+nl_table *nl_study_series(nl_harness *r, const char *prefix, const char *title,
+                          nl_study_basis_kind kind, const nl_study_setting *settings, int n,
+                          const nl_noise_window *win)
 {
   nl_table *dist, *spec;
   nl_image **panels = nl_xcalloc((size_t)n, sizeof *panels);
   const char **labels = nl_xcalloc((size_t)n, sizeof *labels);
   for (int i = 0; i < n; i++) labels[i] = settings[i].label;
-  nl_study_survey_series(kind, settings, n, win, nl_harness_seed(r), nl_harness_seeds(r), &dist, &spec, panels);
+  nl_study_survey_series(kind, settings, n, win, nl_harness_seed(r), nl_harness_seeds(r), &dist,
+                         &spec, panels);
   nl_image *m = nl_image_montage((const nl_image *const *)panels, labels, n, n, title);
   char f[256], cap[512];
   put(prefix, "panels.png", f, sizeof f);
   nl_harness_write_image(r, m, f);
-  snprintf(cap, sizeof cap, "%s (%d x %d, each panel from mean - 3 sd to mean + 3 sd)", title, win->w, win->h);
+  snprintf(cap, sizeof cap, "%s (%d x %d, each panel from mean - 3 sd to mean + 3 sd)", title,
+           win->w, win->h);
   nl_harness_figure(r, f, cap);
   put(prefix, "distribution.tsv", f, sizeof f);
   nl_harness_write_table(r, dist, f);
-  snprintf(cap, sizeof cap, "Values over %d seeds (%s): mean and sd of the per-seed mean and sd, "
-           "mean min and max, largest |value| seen against the analytic bound", nl_harness_seeds(r), f);
+  snprintf(cap, sizeof cap,
+           "Values over %d seeds (%s): mean and sd of the per-seed mean and sd, "
+           "mean min and max, largest |value| seen against the analytic bound",
+           nl_harness_seeds(r), f);
   nl_harness_report_table(r, dist, cap, 4);
   put(prefix, "spectrum.tsv", f, sizeof f);
   nl_harness_write_table(r, spec, f);
@@ -56,8 +61,11 @@ nl_table *nl_study_series(nl_harness *r, const char *prefix, const char *title, 
   return dist;
 }
 
-void nl_study_octave_settings(const int *oct, int n, int turbulence, nl_study_setting *settings,
-                              char (*labels)[32])
+/* Fills settings[i] for octave counts oct[i] of Shaffer's fractal sum (gain
+ * 1/2, lacunarity 2), optionally turbulent; labels "(a) 1 octave" are
+ * written into labels[i] (32 bytes each). */
+static void octave_settings(const int *oct, int n, int turbulence, nl_study_setting *settings,
+                            char (*labels)[32])
 {
   for (int i = 0; i < n; i++) {
     snprintf(labels[i], 32, "(%c) %d octave%s", 'a' + i, oct[i], oct[i] > 1 ? "s" : "");
@@ -81,20 +89,21 @@ nl_noise_window nl_study_window(nl_harness *r)
   return w;
 }
 
-nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int turbulence, const char *slides,
-                                 const char *prefix, const char *title)
+nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int turbulence,
+                                 const char *slides, const char *prefix, const char *title)
 {
   nl_harness_text(r, "**Slides:** %s **Ours:** the slice z = %g of Perlin's improved 3D noise over "
-                     "[0, %g)^2, %d seeds for the numbers.\n", slides, win->z, win->size, nl_harness_seeds(r));
+                     "[0, %g)^2, %d seeds for the numbers.\n",
+                  slides, win->z, win->size, nl_harness_seeds(r));
   const int oct[] = {1, 2, 3, 8};   /* the slides' panels (a)-(d) */
   nl_study_setting st[4];
   char labels[4][32];
-  nl_study_octave_settings(oct, 4, turbulence, st, labels);
+  octave_settings(oct, 4, turbulence, st, labels);
   return nl_study_series(r, prefix, title, NL_BASIS_IMPROVED3, st, 4, win);
 }
 
-void nl_study_montage(nl_harness *r, const nl_image *const *panels, const char *const *labels, int n,
-                      int cols, const char *title, const char *file)
+void nl_study_montage(nl_harness *r, const nl_image *const *panels, const char *const *labels,
+                      int n, int cols, const char *title, const char *file)
 {
   nl_image *m = nl_image_montage(panels, labels, n, cols, title);
   nl_harness_write_image(r, m, file);
@@ -110,7 +119,8 @@ nl_table *nl_study_radial_table(const double *const *img, const char *const *col
   for (int i = 0; i < n; i++) names[i + 1] = cols[i];
   nl_table *t = nl_table_alloc((size_t)n + 1, names);
   double *f = nl_xmalloc((size_t)nbins * sizeof *f), *p = nl_xmalloc((size_t)n * nbins * sizeof *p);
-  for (int i = 0; i < n; i++) nl_spectrum_radial(img[i], size, size, nbins, f, p + (size_t)i * nbins);
+  for (int i = 0; i < n; i++)
+    nl_spectrum_radial(img[i], size, size, nbins, f, p + (size_t)i * nbins);
   for (int b = first; b < nbins; b++) {
     size_t row = nl_table_append_empty(t);
     nl_table_set(t, row, "freq", f[b]);
