@@ -79,6 +79,7 @@ NL_TEST(plan_is_odometer_order_with_seeds_inner)
   nl_table_free(def);
   nl_table_free(tasks);
   nl_sweep_param_free(&p[0]);
+  nl_sweep_param_free(&p[1]);
   nl_sweep_expand("a=3", &p[0], &err);
   nl_sweep_expand("a=4", &p[1], &err);
   NL_CHECK(nl_sweep_plan_make(&pl, &def, &tasks, &err) != NL_OK);
