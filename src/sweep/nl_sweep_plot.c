@@ -13,28 +13,40 @@ static int by_x(const void *a, const void *b)
   return (u > v) - (u < v);
 }
 
+/* What every legend shares: whether the table has several rows per point,
+ * and which parameters vary (one held at a single value says nothing). */
+typedef struct {
+  int several;
+  char *varies;   /* np flags */
+} nl_sweep_legend;
+
+static nl_sweep_legend legend_of(const nl_sweep_merge *m, const nl_table *s)
+{
+  nl_sweep_legend l = {0, nl_xcalloc((size_t)m->np + 1, 1)};
+  for (size_t q = 0; q < s->nrows; q++) {
+    l.several |= nl_table_get(s, q, (size_t)m->np) > 1;
+    for (int k = 0; k < m->np; k++)
+      l.varies[k] |= nl_table_get(s, q, (size_t)k) != nl_table_get(s, 0, (size_t)k);
+  }
+  return l;
+}
+
 /* The legend of a summary row: its label (first text column, or "row N" when
- * the table has several rows) and the parameters other than x. */
-static void group_title(const nl_sweep_merge *m, const nl_table *s, size_t r, int xi, const char *y,
-                        int ny, char *buf, size_t n)
+ * the table has several rows) and the parameters other than x that vary. */
+static void group_title(const nl_sweep_merge *m, const nl_sweep_legend *l, const nl_table *s,
+                        size_t r, int xi, const char *y, int ny, char *buf, size_t n)
 {
   size_t len = 0, lab = (size_t)m->np + 1;
-  int several = 0;
-  for (size_t q = 0; q < s->nrows; q++)
-    several |= nl_table_get(s, q, (size_t)m->np) > 1;
   buf[0] = '\0';
   if (ny > 1)
     len += (size_t)snprintf(buf + len, n - len, "%s ", y);
   if (s->text[r * s->ncols + lab])
     len += (size_t)snprintf(buf + len, n - len, "%s ", s->text[r * s->ncols + lab]);
-  else if (several)
+  else if (l->several)
     len += (size_t)snprintf(buf + len, n - len, "row %g ", nl_table_get(s, r, (size_t)m->np));
   for (int k = 0; k < m->np && len < n; k++) {
     char v[32];
-    int varies = 0;   /* a parameter held at one value says nothing here */
-    for (size_t q = 0; q < s->nrows; q++)
-      varies |= nl_table_get(s, q, (size_t)k) != nl_table_get(s, 0, (size_t)k);
-    if (k == xi || !varies)
+    if (k == xi || !l->varies[k])
       continue;
     nl_table_format_double(v, nl_table_get(s, r, (size_t)k));
     len += (size_t)snprintf(buf + len, n - len, "%s=%s ", m->pname[k], v);
@@ -46,8 +58,28 @@ static void group_title(const nl_sweep_merge *m, const nl_table *s, size_t r, in
       *c = '\'';   /* the block header is a quoted field */
 }
 
-/* Writes one block per legend entry of y (x, mean, spread), sorted by x;
- * *blocks gets their number. */
+#define TITLE_LEN 512
+
+/* Rows ordered by legend, then by row number: each legend's rows together,
+ * in table order, so a summary of n rows plots in n log n. */
+typedef struct { const char *title; size_t r; } nl_sweep_titled;
+static int by_title(const void *a, const void *b)
+{
+  const nl_sweep_titled *u = a, *v = b;
+  int c = strcmp(u->title, v->title);
+  return c ? c : (u->r > v->r) - (u->r < v->r);
+}
+
+/* Legends (first row, start and end in the order) by their first rows. */
+static int by_first(const void *a, const void *b)
+{
+  size_t u = ((const size_t *)a)[0], v = ((const size_t *)b)[0];
+  return (u > v) - (u < v);
+}
+
+/* Writes one block per legend entry of y (x, mean, spread), sorted by x, the
+ * blocks in the order of their legends' first rows; *blocks gets their
+ * number. */
 static nl_status plot_blocks(FILE *fp, const nl_sweep_merge *m, const nl_table *s, int xi,
                              const char *y, int ny, int *blocks, nl_error *err)
 {
@@ -57,26 +89,39 @@ static nl_status plot_blocks(FILE *fp, const nl_sweep_merge *m, const nl_table *
   long cm = nl_table_column(s, mean), cs = nl_table_column(s, spread);
   if (cm < 0 || cs < 0)
     return nl_fail(err, NL_EINVAL, "--y %s: not a numeric column of the table", y);
+  size_t n = s->nrows, ng = 0;
+  nl_sweep_legend l = legend_of(m, s);
+  char *titles = nl_xmalloc((n + 1) * TITLE_LEN);
+  nl_sweep_titled *order = nl_xmalloc((n + 1) * sizeof *order);
+  size_t *span = nl_xmalloc(3 * (n + 1) * sizeof *span);
+  for (size_t r = 0; r < n; r++) {
+    group_title(m, &l, s, r, xi, y, ny, titles + r * TITLE_LEN, TITLE_LEN);
+    order[r] = (nl_sweep_titled){titles + r * TITLE_LEN, r};
+  }
+  qsort(order, n, sizeof *order, by_title);
+  for (size_t i = 0; i < n; i++)
+    if (i == 0 || strcmp(order[i].title, order[i - 1].title)) {
+      if (ng)
+        span[3 * ng - 1] = i;
+      span[3 * ng] = order[i].r;
+      span[3 * ng + 1] = i;
+      ng++;
+    }
+  if (ng)
+    span[3 * ng - 1] = n;
+  qsort(span, ng, 3 * sizeof *span, by_first);
+  nl_sweep_point *pt = nl_xmalloc((n + 1) * sizeof *pt);
   *blocks = 0;
-  char *done = nl_xcalloc(s->nrows + 1, 1);
-  nl_sweep_point *pt = nl_xmalloc((s->nrows + 1) * sizeof *pt);
-  for (size_t r0 = 0; r0 < s->nrows; r0++) {
-    if (done[r0])
-      continue;
-    char title[512], t2[512];
-    size_t n = 0;
-    group_title(m, s, r0, xi, y, ny, title, sizeof title);
-    for (size_t r = r0; r < s->nrows; r++) {
-      group_title(m, s, r, xi, y, ny, t2, sizeof t2);
-      if (done[r] || strcmp(title, t2))
-        continue;
-      done[r] = 1;
-      pt[n++] = (nl_sweep_point){nl_table_get(s, r, (size_t)xi), nl_table_get(s, r, (size_t)cm),
+  for (size_t g = 0; g < ng; g++) {
+    size_t k = 0, first = span[3 * g];
+    for (size_t i = span[3 * g + 1]; i < span[3 * g + 2]; i++) {
+      size_t r = order[i].r;
+      pt[k++] = (nl_sweep_point){nl_table_get(s, r, (size_t)xi), nl_table_get(s, r, (size_t)cm),
                                  nl_table_get(s, r, (size_t)cs)};
     }
-    qsort(pt, n, sizeof *pt, by_x);
-    fprintf(fp, "%sx\t\"%s\"\tspread\n", *blocks ? "\n\n" : "", title);
-    for (size_t i = 0; i < n; i++) {
+    qsort(pt, k, sizeof *pt, by_x);
+    fprintf(fp, "%sx\t\"%s\"\tspread\n", *blocks ? "\n\n" : "", titles + first * TITLE_LEN);
+    for (size_t i = 0; i < k; i++) {
       char a[32], b[32], c[32];
       nl_table_format_double(a, pt[i].x);
       nl_table_format_double(b, pt[i].y);
@@ -85,7 +130,10 @@ static nl_status plot_blocks(FILE *fp, const nl_sweep_merge *m, const nl_table *
     }
     ++*blocks;
   }
-  free(done);
+  free(l.varies);
+  free(titles);
+  free(order);
+  free(span);
   free(pt);
   return NL_OK;
 }
