@@ -39,9 +39,9 @@ static void names(char *buf, size_t n, int under, const char *sep, const char *l
   const char *list[16];
   total = 0;
   if (under)
-    list[total++] = "improved";
+    list[total++] = nl_basis_default()->under;
   for (size_t i = 0; i < nk; i++)
-    if (!under || strcmp(k[i].under, "improved"))
+    if (!under || &k[i] != nl_basis_default())
       list[total++] = under ? k[i].under : k[i].name;
   for (size_t i = 0; !under && i < ns; i++)
     list[total++] = s[i].name;
@@ -69,7 +69,7 @@ static void usage(void)
          "  --x0 X --y0 Y --z Z  window origin and plane (0 0 0.5)\n"
          "  --octaves N          1..30 (6)          --gain G (0.5)   --lacunarity L (2)\n"
          "  --amplitude A        marble displacement a (0.5)   --stripes K per unit (1)\n"
-         "  --basis %s   noise under the sums (improved)\n"
+         "  --basis %s   noise under the sums (%s)\n"
          "  --tile N             wavelet tile period, even, 8..256 (64)\n"
          "  --terms EXPR         GCTBF, e.g. \"F2 - F1 - F1F1\" or \"0.5*F1 + 2 F1*F2\" (F1)\n"
          "  --lambda L           mean feature points per unit cube, (0, 1000] (4)\n"
@@ -86,7 +86,7 @@ static void usage(void)
          "y = y0 + (r + 1/2) extent / size: row 0 is the top of the image, so y grows\n"
          "downward in the picture (as the .tsv's rows). An option that does not apply to\n"
          "the chosen noise or output format is ignored with a warning.\n",
-         bases);
+         bases, nl_basis_default()->under);
 }
 
 static void fail(const char *msg) { fprintf(stderr, "noiselab render: %s\n", msg); exit(2); }
@@ -117,7 +117,7 @@ static int ends_with(const char *s, const char *suffix)
 
 static void parse(int argc, char **argv, options *o)
 {
-  *o = (options){.basis = "improved", .normalize = "bound", .count = "inverse",
+  *o = (options){.basis = nl_basis_default()->under, .normalize = "bound", .count = "inverse",
                  .bo = nl_basis_defaults(), .so = nl_basis_sum_defaults(), .size = 512, .seed = 1,
                  .bits = 0, .extent = 4, .z = 0.5};
   enum { R_OUT, R_SIZE, R_OCTAVES, R_SEED, R_TABLE_SIZE, R_BITS, R_EXTENT, R_X0, R_Y0, R_Z, R_GAIN,

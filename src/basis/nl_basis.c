@@ -85,6 +85,11 @@ const nl_basis_kind *nl_basis_kinds(size_t *n)
   return kinds;
 }
 
+const nl_basis_kind *nl_basis_default(void)
+{
+  return &kinds[1];
+}
+
 const nl_basis_kind *nl_basis_find(const char *name)
 {
   for (size_t i = 0; i < sizeof kinds / sizeof *kinds; i++)

@@ -80,6 +80,8 @@ typedef struct nl_basis {
 
 /* The entries in their order; *n gets their number. */
 const nl_basis_kind *nl_basis_kinds(size_t *n);
+/* The basis under a sum when none is named: Perlin's improved noise. */
+const nl_basis_kind *nl_basis_default(void);
 /* The entry named name (either of its names), or NULL. */
 const nl_basis_kind *nl_basis_find(const char *name);
 /* Builds the basis name (o NULL: nl_basis_defaults()) for seed. An unknown
