@@ -1,12 +1,13 @@
 /* nl_basis.h - every noise of the library by name, built from (name,
- * options, seed): the one list that the render command, the surveys and
- * sweeps share.
+ * options, seed): the one list that the render command and the surveys
+ * behind S1-S3 share.
  *
  *   nl_basis_options o = nl_basis_defaults();
  *   o.terms = "F2 - F1";
  *   nl_basis *b;
  *   if (nl_basis_make("gctbf", &o, seed, &b, &err)) ... err.msg names the bad input
  *   const nl_basis_sum *s = nl_basis_sum_find("fbm");       // NULL: not a sum
+ *   nl_basis_sum_options so = nl_basis_sum_defaults();
  *   nl_noise_octaves oct = s->octaves(&so);
  *   s->grid(&b->noise, &oct, &so, &win, v, &lo, &hi);       // w * h values, range [lo, hi]
  *   nl_basis_free(b);
