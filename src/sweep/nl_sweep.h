@@ -109,6 +109,9 @@ nl_status nl_sweep_prepare(nl_sweep_plan *pl, const char *const *specs, int nspe
  * and *failed the number of them. */
 nl_status nl_sweep_status(const char *dir, const char *what, FILE *out, FILE *log, size_t *failed,
                           nl_error *err);
+/* Is the task in dir/folder finished? Its run wrote folder/manifest.tsv,
+ * which an experiment writes last. */
+int nl_sweep_task_finished(const char *dir, const char *folder);
 /* The last non-empty line of text (text is modified in place). */
 const char *nl_sweep_last_line(char *text);
 

@@ -2,6 +2,7 @@
  * the swept values, jobs.txt, sweep.slurm, and which tasks have finished. */
 #define _GNU_SOURCE   /* open_memstream, popen, realpath */
 #include "sweep/nl_sweep.h"
+#include "sweep/nl_sweep_internal.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -262,7 +263,7 @@ nl_status nl_sweep_write_slurm(const nl_sweep_plan *pl, size_t ntasks, long cpus
   return s;
 }
 
-static int task_finished(const char *dir, const char *folder)
+int nl_sweep_task_finished(const char *dir, const char *folder)
 {
   char *d = nl_path_join(dir, folder), *p = nl_path_join(d, "manifest.tsv");
   struct stat st;
@@ -272,31 +273,13 @@ static int task_finished(const char *dir, const char *folder)
   return ok;
 }
 
-static char *slurp(const char *path)
-{
-  FILE *fp = fopen(path, "rb");
-  if (!fp)
-    return NULL;
-  char *buf = NULL;
-  size_t n = 0, cap = 0, got;
-  do {
-    if (n + 4096 + 1 > cap)
-      buf = nl_xrealloc(buf, cap = 2 * cap + 4096 + 1);
-    got = fread(buf + n, 1, cap - n - 1, fp);
-    n += got;
-  } while (got > 0);
-  fclose(fp);
-  buf[n] = '\0';
-  return buf;
-}
-
 /* The failed task's line on log: its seed and parameters, its log's end. */
 static void say_failure(FILE *log, const char *dir, const nl_table *tasks, size_t r, const char *id)
 {
   char *logs = nl_path_join(dir, "logs"), *path = nl_xmalloc(strlen(logs) + strlen(id) + 6), *text;
   char buf[32];
   sprintf(path, "%s/%s.log", logs, id);
-  text = slurp(path);
+  text = nl_sweep_slurp(path);
   fprintf(log, "sweep: task %s (seed, params:", id);
   for (size_t c = 2; c < tasks->ncols; c++)
     fprintf(log, " %s", nl_table_cell_text(tasks, r, c, buf));
@@ -318,7 +301,8 @@ nl_status nl_sweep_status(const char *dir, const char *what, FILE *out, FILE *lo
   free(tpath);
   if (s)
     return s;
-  char *jpath = nl_path_join(dir, "jobs.txt"), *jobs = pending ? slurp(jpath) : NULL, *save = NULL;
+  char *jpath = nl_path_join(dir, "jobs.txt"), *save = NULL;
+  char *jobs = pending ? nl_sweep_slurp(jpath) : NULL;
   if (pending && !jobs) {
     s = nl_fail(err, NL_EIO, "%s: cannot read", jpath);
     free(jpath);
@@ -331,7 +315,7 @@ nl_status nl_sweep_status(const char *dir, const char *what, FILE *out, FILE *lo
   for (size_t r = 0; r < tasks->nrows; r++, line = jobs ? strtok_r(NULL, "\n", &save) : NULL) {
     char buf[32];
     const char *folder = nl_table_cell_text(tasks, r, 1, buf), *slash = strrchr(folder, '/');
-    if (task_finished(dir, folder)) {
+    if (nl_sweep_task_finished(dir, folder)) {
       done++;
       continue;
     }

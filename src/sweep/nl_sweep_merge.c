@@ -8,7 +8,6 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 static nl_status read_in(const char *dir, const char *file, nl_table **t, nl_error *err)
 {
@@ -16,16 +15,6 @@ static nl_status read_in(const char *dir, const char *file, nl_table **t, nl_err
   nl_status s = nl_table_read(p, NL_TABLE_TEXT, t, err);
   free(p);
   return s;
-}
-
-static int task_finished(const char *dir, const char *folder)
-{
-  char *d = nl_path_join(dir, folder), *p = nl_path_join(d, "manifest.tsv");
-  struct stat st;
-  int ok = stat(p, &st) == 0;
-  free(d);
-  free(p);
-  return ok;
 }
 
 /* The param rows of the definition name the parameters (scale "list" until
@@ -74,7 +63,7 @@ nl_status nl_sweep_merge_open(const char *dir, nl_sweep_merge *m, FILE *log, nl_
   m->done = nl_xcalloc(m->tasks->nrows + 1, sizeof *m->done);
   for (size_t r = 0; r < m->tasks->nrows; r++) {
     char buf[32];
-    if (task_finished(dir, nl_table_cell_text(m->tasks, r, 1, buf)))
+    if (nl_sweep_task_finished(dir, nl_table_cell_text(m->tasks, r, 1, buf)))
       m->done[m->ndone++] = r;
   }
   if (m->ndone == 0)

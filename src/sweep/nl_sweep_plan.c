@@ -1,6 +1,7 @@
 /* A sweep's values and plan (nl_sweep.h): NAME=SPEC to values, the
  * definition and the task list, and the folder that holds them. */
 #include "sweep/nl_sweep.h"
+#include "sweep/nl_sweep_internal.h"
 
 #include <ctype.h>
 #include <dirent.h>
@@ -197,7 +198,7 @@ nl_status nl_sweep_plan_make(const nl_sweep_plan *pl, nl_table **def, nl_table *
   return NL_OK;
 }
 
-static char *slurp(const char *path)
+char *nl_sweep_slurp(const char *path)
 {
   FILE *fp = fopen(path, "rb");
   if (!fp)
@@ -234,7 +235,7 @@ static nl_status same_sweep(const char *out, const nl_table *def, const char *ol
 {
   char *tmp = nl_path_join(out, ".sweep.new.tsv");
   nl_status s = nl_table_write(def, tmp, err);
-  char *now = s ? NULL : slurp(tmp);
+  char *now = s ? NULL : nl_sweep_slurp(tmp);
   remove(tmp);
   *same = now && !strcmp(now, old);
   free(tmp);
@@ -246,7 +247,7 @@ nl_status nl_sweep_plan_write(const nl_sweep_plan *pl, const nl_table *def, cons
                               nl_error *err)
 {
   char *sweep = nl_path_join(pl->out, "sweep.tsv"), *tpath = nl_path_join(pl->out, "tasks.tsv");
-  char *old = slurp(sweep);
+  char *old = nl_sweep_slurp(sweep);
   nl_status s = NL_OK;
   int same = 0;
   if (!old && !folder_empty(pl->out))
