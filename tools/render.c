@@ -10,11 +10,8 @@
  * A .tsv output holds the raw values as columns x, y, value.
  */
 #include "harness/nl_harness.h"
-#include "cellular/nl_cellular.h"
-#include "noise/nl_noise.h"
+#include "basis/nl_basis.h"
 #include "table/nl_table.h"
-#include "texture/nl_texture.h"
-#include "wavelet/nl_wavelet.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -22,34 +19,57 @@
 #include <string.h>
 #include <unistd.h>
 
-static const char *NOISES[] = {"noise2", "improved", "gctbf", "wavelet", "fractal", "turbulence", "fbm", "marble", NULL};
-
+/* The render's options: the noise's own (nl_basis.h) and the picture's. */
 typedef struct {
-  const char *noise, *out, *basis, *normalize, *terms, *count;
-  long size, octaves, seed, table_size, bits, points, tile;
-  double extent, x0, y0, z, gain, lacunarity, amplitude, stripes, lambda;
-  int reference;
-  int normalize_given;   /* --normalize was given (gctbf's default is range, not bound) */
+  const char *noise, *out, *basis, *normalize, *count;
+  const nl_basis_sum *sum;   /* the chosen sum, or nl_basis_single */
+  nl_basis_options bo;
+  nl_basis_sum_options so;
+  long size, seed, bits;
+  double extent, x0, y0, z;
 } options;
+
+/* The registry's names joined by sep (the last by `last`): as noises of
+ * their own, with the sums, or as --basis spells them, the default first. */
+static void names(char *buf, size_t n, int under, const char *sep, const char *last)
+{
+  size_t nk, ns, len = 0, total;
+  const nl_basis_kind *k = nl_basis_kinds(&nk);
+  const nl_basis_sum *s = nl_basis_sums(&ns);
+  const char *list[16];
+  total = 0;
+  if (under)
+    list[total++] = nl_basis_default()->under;
+  for (size_t i = 0; i < nk; i++)
+    if (!under || &k[i] != nl_basis_default())
+      list[total++] = under ? k[i].under : k[i].name;
+  for (size_t i = 0; !under && i < ns; i++)
+    list[total++] = s[i].name;
+  buf[0] = '\0';
+  for (size_t i = 0; i < total && len < n; i++)
+    len += (size_t)snprintf(buf + len, n - len, "%s%s", i == 0 ? "" : i + 1 < total ? sep : last,
+                            list[i]);
+}
 
 static void usage(void)
 {
-  printf("usage: noiselab render NOISE [options] -o FILE   (options: --name VALUE or --name=VALUE)\n\n"
-         "NOISE: noise2      2D gradient-table noise (Cheng 2009 eq. 3.1-3.2)\n"
-         "       improved    Perlin's improved 3D noise, on the plane z\n"
-         "       gctbf       Qin & Yang's generalized cellular basis sum c_i F_i + c_ij F_i F_j\n"
-         "       wavelet     Cook & DeRose's wavelet noise (3D tile, plane z)\n"
-         "       fractal     sum_j noise(2^j p) / 2^j            (Shaffer)\n"
-         "       turbulence  sum_j |noise(2^j p)| / 2^j\n"
-         "       fbm         sum_j gain^j noise(lacunarity^j p)\n"
-         "       marble      (1 + sin(2 pi stripes (y + amplitude fractal(p)))) / 2\n\n"
-         "  -o FILE              .png .exr .tif ... (OpenImageIO) or .tsv (x, y, value)\n"
+  size_t nk, ns;
+  const nl_basis_kind *k = nl_basis_kinds(&nk);
+  const nl_basis_sum *s = nl_basis_sums(&ns);
+  char bases[128];
+  names(bases, sizeof bases, 1, "|", "|");
+  printf("usage: noiselab render NOISE [options] -o FILE   "
+         "(options: --name VALUE or --name=VALUE)\n\n");
+  for (size_t i = 0; i < nk + ns; i++)
+    printf("%s%-12s%s\n", i ? "       " : "NOISE: ", i < nk ? k[i].name : s[i - nk].name,
+           i < nk ? k[i].summary : s[i - nk].summary);
+  printf("\n  -o FILE              .png .exr .tif ... (OpenImageIO) or .tsv (x, y, value)\n"
          "  --size N             pixels per side, 1..65536 (512)\n"
          "  --extent X           side of the square in noise units (4)\n"
          "  --x0 X --y0 Y --z Z  window origin and plane (0 0 0.5)\n"
          "  --octaves N          1..30 (6)          --gain G (0.5)   --lacunarity L (2)\n"
          "  --amplitude A        marble displacement a (0.5)   --stripes K per unit (1)\n"
-         "  --basis improved|table|gctbf|wavelet   noise under the sums (improved)\n"
+         "  --basis %s   noise under the sums (%s)\n"
          "  --tile N             wavelet tile period, even, 8..256 (64)\n"
          "  --terms EXPR         GCTBF, e.g. \"F2 - F1 - F1F1\" or \"0.5*F1 + 2 F1*F2\" (F1)\n"
          "  --lambda L           mean feature points per unit cube, (0, 1000] (4)\n"
@@ -65,7 +85,8 @@ static void usage(void)
          "Pixel (column c, row r) holds the noise at x = x0 + (c + 1/2) extent / size,\n"
          "y = y0 + (r + 1/2) extent / size: row 0 is the top of the image, so y grows\n"
          "downward in the picture (as the .tsv's rows). An option that does not apply to\n"
-         "the chosen noise or output format is ignored with a warning.\n");
+         "the chosen noise or output format is ignored with a warning.\n",
+         bases, nl_basis_default()->under);
 }
 
 static void fail(const char *msg) { fprintf(stderr, "noiselab render: %s\n", msg); exit(2); }
@@ -96,10 +117,9 @@ static int ends_with(const char *s, const char *suffix)
 
 static void parse(int argc, char **argv, options *o)
 {
-  *o = (options){.basis = "improved", .normalize = "bound", .terms = "F1", .count = "inverse",
-                 .points = 50, .tile = 64, .lambda = 4, .size = 512, .octaves = 6, .seed = 1,
-                 .table_size = 512, .bits = 0, .extent = 4, .z = 0.5, .gain = 0.5, .lacunarity = 2,
-                 .amplitude = 0.5, .stripes = 1};
+  *o = (options){.basis = nl_basis_default()->under, .normalize = "bound", .count = "inverse",
+                 .bo = nl_basis_defaults(), .so = nl_basis_sum_defaults(), .size = 512, .seed = 1,
+                 .bits = 0, .extent = 4, .z = 0.5};
   enum { R_OUT, R_SIZE, R_OCTAVES, R_SEED, R_TABLE_SIZE, R_BITS, R_EXTENT, R_X0, R_Y0, R_Z, R_GAIN,
          R_LACUNARITY, R_AMPLITUDE, R_STRIPES, R_BASIS, R_TERMS, R_TILE, R_COUNT, R_LAMBDA, R_POINTS,
          R_NORMALIZE, R_REFERENCE, R_HELP };
@@ -127,61 +147,67 @@ static void parse(int argc, char **argv, options *o)
       o->noise = v;
       break;
     case R_HELP: usage(); exit(0);
-    case R_REFERENCE: o->reference = 1; break;
+    case R_REFERENCE: o->bo.reference = 1; break;
     case R_OUT: o->out = v; break;
     case R_SIZE: integer(a, v, 1, 65536, &o->size); break;
-    case R_OCTAVES: integer(a, v, 1, 30, &o->octaves); break;
+    case R_OCTAVES: integer(a, v, 1, 30, &o->so.octaves); break;
     case R_SEED: integer(a, v, 0, 4294967295L, &o->seed); break;
-    case R_TABLE_SIZE: integer(a, v, 4, 1048576, &o->table_size); break;
+    case R_TABLE_SIZE: integer(a, v, 4, 1048576, &o->bo.table_size); break;
     case R_BITS: integer(a, v, 8, 32, &o->bits); break;
     case R_EXTENT: num(a, v, 1e-9, 1e9, &o->extent); break;
     case R_X0: num(a, v, -1e9, 1e9, &o->x0); break;
     case R_Y0: num(a, v, -1e9, 1e9, &o->y0); break;
     case R_Z: num(a, v, -1e9, 1e9, &o->z); break;
-    case R_GAIN: num(a, v, -1e3, 1e3, &o->gain); break;
-    case R_LACUNARITY: num(a, v, 1e-6, 1e6, &o->lacunarity); break;
-    case R_AMPLITUDE: num(a, v, -1e6, 1e6, &o->amplitude); break;
-    case R_STRIPES: num(a, v, 1e-9, 1e9, &o->stripes); break;
+    case R_GAIN: num(a, v, -1e3, 1e3, &o->so.gain); break;
+    case R_LACUNARITY: num(a, v, 1e-6, 1e6, &o->so.lacunarity); break;
+    case R_AMPLITUDE: num(a, v, -1e6, 1e6, &o->so.amplitude); break;
+    case R_STRIPES: num(a, v, 1e-9, 1e9, &o->so.stripes); break;
     case R_BASIS: o->basis = v; break;
-    case R_TERMS: o->terms = v; break;
-    case R_TILE: integer(a, v, 8, 256, &o->tile); break;
+    case R_TERMS: o->bo.terms = v; break;
+    case R_TILE: integer(a, v, 8, 256, &o->bo.tile); break;
     case R_COUNT: o->count = v; break;
     case R_LAMBDA:
-      num(a, v, -1e9, 1e9, &o->lambda);
-      if (!(o->lambda > 0 && o->lambda <= 1000)) {
+      num(a, v, -1e9, 1e9, &o->bo.lambda);
+      if (!(o->bo.lambda > 0 && o->bo.lambda <= 1000)) {
         snprintf(m, sizeof m, "--lambda: %s must be in (0, 1000] (mean feature points per unit cube)", v);
         fail(m);
       }
       break;
-    case R_POINTS: integer(a, v, 1, NL_CELLULAR_MAX_M, &o->points); break;
+    case R_POINTS: integer(a, v, 1, NL_CELLULAR_MAX_M, &o->bo.points); break;
     case R_NORMALIZE: o->normalize = v; break;
     }
   }
   nl_opt_end(&p);
-  char m[512];
+  char m[512], list[256];
   if (!o->noise) fail("no NOISE given (see --help)");
-  o->normalize_given = given[R_NORMALIZE];
-  if (!given[R_NORMALIZE] && !strcmp(o->noise, "gctbf")) o->normalize = "range";
+  /* The chosen sum (a single noise is the sum of one octave) and basis, as
+   * the registry knows them; reads: what each of them takes from options. */
+  const nl_basis_sum *sum = nl_basis_sum_find(o->noise);
+  const nl_basis_kind *basis = nl_basis_find(sum ? o->basis : o->noise);
+  unsigned sr = sum ? sum->reads : 0, br = basis ? basis->reads : 0;
+  int known = sum || (basis && !strcmp(o->noise, basis->name));   /* "table": under a sum only */
+  o->sum = sum ? sum : &nl_basis_single;
+  if (!given[R_NORMALIZE] && !sum && known && (br & NL_BASIS_LOOSE_BOUND))
+    o->normalize = "range";
   /* Options the chosen noise or format does not read: say so, once each. */
-  int sums = !strcmp(o->noise, "fractal") || !strcmp(o->noise, "turbulence") || !strcmp(o->noise, "fbm")
-             || !strcmp(o->noise, "marble");
-  const char *kind = sums ? o->basis : o->noise;
   int is_tsv = o->out && ends_with(o->out, ".tsv");
   struct { int opt, applies; const char *why; } rules[] = {
-    {R_OCTAVES, sums, "only the sums (fractal, turbulence, fbm, marble) have octaves"},
-    {R_GAIN, !strcmp(o->noise, "fbm"), "only fbm has a gain"},
-    {R_LACUNARITY, !strcmp(o->noise, "fbm"), "only fbm has a lacunarity"},
-    {R_AMPLITUDE, !strcmp(o->noise, "marble"), "only marble has an amplitude"},
-    {R_STRIPES, !strcmp(o->noise, "marble"), "only marble has stripes"},
-    {R_BASIS, sums, "a single noise has no basis under it"},
-    {R_TERMS, !strcmp(kind, "gctbf"), "only gctbf reads terms"},
-    {R_COUNT, !strcmp(kind, "gctbf"), "only gctbf counts feature points"},
-    {R_LAMBDA, !strcmp(kind, "gctbf"), "only gctbf has feature points"},
-    {R_POINTS, !strcmp(kind, "gctbf"), "only gctbf has feature points"},
-    {R_TILE, !strcmp(kind, "wavelet"), "only wavelet noise has a tile"},
-    {R_TABLE_SIZE, !strcmp(kind, "noise2") || !strcmp(kind, "table"), "only noise2 (or basis table) has a gradient table"},
-    {R_REFERENCE, !strcmp(kind, "improved"), "only improved noise has Perlin's permutation"},
-    {R_Z, strcmp(kind, "noise2") && strcmp(kind, "table"), "2D table noise has no plane z"},
+    {R_OCTAVES, sr & NL_BASIS_SUM_OCTAVES,
+     "only the sums (fractal, turbulence, fbm, marble) have octaves"},
+    {R_GAIN, sr & NL_BASIS_SUM_FBM, "only fbm has a gain"},
+    {R_LACUNARITY, sr & NL_BASIS_SUM_FBM, "only fbm has a lacunarity"},
+    {R_AMPLITUDE, sr & NL_BASIS_SUM_MARBLE, "only marble has an amplitude"},
+    {R_STRIPES, sr & NL_BASIS_SUM_MARBLE, "only marble has stripes"},
+    {R_BASIS, sr & NL_BASIS_SUM_OCTAVES, "a single noise has no basis under it"},
+    {R_TERMS, br & NL_BASIS_READS_CELLS, "only gctbf reads terms"},
+    {R_COUNT, br & NL_BASIS_READS_CELLS, "only gctbf counts feature points"},
+    {R_LAMBDA, br & NL_BASIS_READS_CELLS, "only gctbf has feature points"},
+    {R_POINTS, br & NL_BASIS_READS_CELLS, "only gctbf has feature points"},
+    {R_TILE, br & NL_BASIS_READS_TILE, "only wavelet noise has a tile"},
+    {R_TABLE_SIZE, br & NL_BASIS_READS_TABLE,
+     "only noise2 (or basis table) has a gradient table"},
+    {R_REFERENCE, br & NL_BASIS_READS_REFERENCE, "only improved noise has Perlin's permutation"},
+    {R_Z, !(br & NL_BASIS_PLANAR), "2D table noise has no plane z"},
     {R_BITS, !is_tsv, "a .tsv holds the values as text"},
     {R_NORMALIZE, !is_tsv, "a .tsv holds the raw values"},
   };
@@ -191,12 +217,24 @@ static void parse(int argc, char **argv, options *o)
               o->noise, is_tsv && (rules[i].opt == R_BITS || rules[i].opt == R_NORMALIZE) ? " to a .tsv" : "", rules[i].why);
   if (given[R_BITS] && o->out && (ends_with(o->out, ".jpg") || ends_with(o->out, ".jpeg")) && o->bits != 8)
   { fprintf(stderr, "noiselab render: warning: --bits %ld: JPEG stores 8 bits; writing 8\n", o->bits); o->bits = 8; }
-  if (!one_of(o->noise, NOISES)) { snprintf(m, sizeof m, "%s: unknown noise (noise2, improved, gctbf, wavelet, fractal, turbulence, fbm, marble)", o->noise); fail(m); }
+  if (!known) {
+    names(list, sizeof list, 0, ", ", ", ");
+    snprintf(m, sizeof m, "%s: unknown noise (%s)", o->noise, list);
+    fail(m);
+  }
   if (!o->out) fail("-o: no output file given");
-  const char *bases[] = {"improved", "table", "gctbf", "wavelet", NULL}, *norms[] = {"bound", "range", NULL};
-  const char *counts[] = {"inverse", "closest", NULL};
-  if (!one_of(o->basis, bases)) { snprintf(m, sizeof m, "--basis: '%s' is not improved, table, gctbf or wavelet", o->basis); fail(m); }
-  if (!one_of(o->count, counts)) { snprintf(m, sizeof m, "--count: '%s' is not inverse or closest", o->count); fail(m); }
+  const char *norms[] = {"bound", "range", NULL}, *counts[] = {"inverse", "closest", NULL};
+  const nl_basis_kind *under = nl_basis_find(o->basis);
+  if (!under || strcmp(o->basis, under->under)) {
+    names(list, sizeof list, 1, ", ", " or ");
+    snprintf(m, sizeof m, "--basis: '%s' is not %s", o->basis, list);
+    fail(m);
+  }
+  if (!one_of(o->count, counts)) {
+    snprintf(m, sizeof m, "--count: '%s' is not inverse or closest", o->count);
+    fail(m);
+  }
+  o->bo.count = !strcmp(o->count, "closest") ? NL_COUNT_CLOSEST : NL_COUNT_INVERSE_CDF;
   if (!one_of(o->normalize, norms)) { snprintf(m, sizeof m, "--normalize: '%s' is not bound or range", o->normalize); fail(m); }
   if (o->bits && o->bits != 8 && o->bits != 16 && o->bits != 32) { snprintf(m, sizeof m, "--bits: %ld is not 8, 16 or 32", o->bits); fail(m); }
   /* values (double) and the image (float); a .tsv holds 3 columns of a
@@ -219,75 +257,48 @@ static void check_writable(const char *path)
 }
 
 /* The lattice coordinate of the finest octave must stay below 2^52: beyond
- * it doubles have no fractional bits, the noise is 0 or meaningless, and
- * (before the floors were made safe) the cell index overflowed a long. */
-static void check_lattice(const options *o, const nl_noise_octaves *oct, const char *kind)
+ * it doubles have no fractional bits, the noise is 0 or meaningless, and a
+ * cell index would overflow a long. */
+static void check_lattice(const options *o, const nl_noise_octaves *oct, const nl_basis *b)
 {
-  double c = fmax(fmax(fabs(o->x0), fabs(o->x0 + o->extent)), fmax(fabs(o->y0), fabs(o->y0 + o->extent)));
-  if (strcmp(kind, "noise2") && strcmp(kind, "table")) c = fmax(c, fabs(o->z));   /* 3D bases */
+  double c = fmax(fmax(fabs(o->x0), fabs(o->x0 + o->extent)),
+                  fmax(fabs(o->y0), fabs(o->y0 + o->extent)));
+  if (!(b->kind->reads & NL_BASIS_PLANAR))
+    c = fmax(c, fabs(o->z));   /* 3D bases */
   double f = 0;
-  for (int l = 0; l < oct->n; l++) f = fmax(f, fabs(oct->freq[l]));
-  if (f * c < 0x1p52) return;
+  for (int l = 0; l < oct->n; l++)
+    f = fmax(f, fabs(oct->freq[l]));
+  if (f * c < 0x1p52)
+    return;
   char m[600];
-  if (!strcmp(o->noise, "fbm"))
+  if (o->sum->reads & NL_BASIS_SUM_FBM)
     snprintf(m, sizeof m, "--lacunarity %g with --octaves %ld: the finest octave's frequency %g "
              "times the window's largest coordinate %g is %g, beyond 2^52 = 4.5e15 where the "
              "noise lattice has no fractional positions; use fewer octaves or a smaller lacunarity",
-             o->lacunarity, o->octaves, f, c, f * c);
+             o->so.lacunarity, o->so.octaves, f, c, f * c);
   else
     snprintf(m, sizeof m, "--octaves %ld: the finest octave's frequency %g times the window's "
              "largest coordinate %g is %g, beyond 2^52 = 4.5e15 where the noise lattice has no "
              "fractional positions; use fewer octaves or a window nearer the origin",
-             o->octaves, f, c, f * c);
+             o->so.octaves, f, c, f * c);
   fail(m);
 }
 
-
-/* Evaluates the chosen noise; *lo, *hi are its analytic range. */
+/* Evaluates the chosen noise (nl_basis.h builds it); *lo, *hi are its
+ * analytic range. */
 static double *evaluate(const options *o, double *lo, double *hi)
 {
   nl_noise_window win = {o->x0, o->y0, o->z, o->extent, (int)o->size, (int)o->size};
-  nl_noise_grad2 *t = NULL;
-  nl_cellular *cell = NULL;
-  nl_cellular_gctbf_basis gb;
-  nl_noise_perm3 p;
-  nl_noise_basis b;
-  nl_wavelet_tile *tile = NULL;
-  int single = !strcmp(o->noise, "noise2") || !strcmp(o->noise, "improved") || !strcmp(o->noise, "gctbf")
-               || !strcmp(o->noise, "wavelet");
-  const char *kind = single ? o->noise : o->basis;
-  if (!strcmp(kind, "noise2") || !strcmp(kind, "table")) {
-    t = nl_noise_grad2_alloc((size_t)o->table_size);
-    nl_noise_grad2_seed(t, (unsigned long)o->seed);
-    b = nl_noise_basis_grad2(t);
-  } else if (!strcmp(kind, "gctbf")) {
-    nl_error err;
-    nl_cellular_count_rule rule = !strcmp(o->count, "closest") ? NL_COUNT_CLOSEST : NL_COUNT_INVERSE_CDF;
-    if (nl_cellular_alloc(o->lambda, (int)o->points, rule, (unsigned long)o->seed, &cell, &err)) fail(err.msg);
-    gb.cell = cell;
-    if (nl_cellular_gctbf_parse(o->terms, &gb.g, &err)) { char m[600]; snprintf(m, sizeof m, "--terms: %s", err.msg); fail(m); }
-    b = nl_cellular_basis_gctbf(&gb);
-  } else if (!strcmp(kind, "wavelet")) {
-    if (o->tile % 2) fail("--tile: the wavelet tile period must be even");
-    tile = nl_wavelet_tile_alloc(3, (int)o->tile);
-    nl_wavelet_tile_seed(tile, (unsigned long)o->seed);
-    b = nl_wavelet_basis(tile);
-  } else {
-    if (o->reference) nl_noise_perm3_reference(&p); else nl_noise_perm3_seed(&p, (unsigned long)o->seed);
-    b = nl_noise_basis_perm3(&p);
-  }
-  nl_noise_octaves oct = nl_noise_octaves_fbm(1, 1, 1);
-  if (!strcmp(o->noise, "fractal") || !strcmp(o->noise, "marble")) oct = nl_noise_octaves_fractal((int)o->octaves);
-  if (!strcmp(o->noise, "turbulence")) { oct = nl_noise_octaves_fractal((int)o->octaves); oct.turbulence = 1; }
-  if (!strcmp(o->noise, "fbm")) oct = nl_noise_octaves_fbm((int)o->octaves, o->gain, o->lacunarity);
-  check_lattice(o, &oct, kind);
+  const char *kind = o->sum == &nl_basis_single ? o->noise : o->basis;
+  nl_basis *b;
+  nl_error err;
+  if (nl_basis_make(kind, &o->bo, (unsigned long)o->seed, &b, &err))
+    fail(err.msg);
+  nl_noise_octaves oct = o->sum->octaves(&o->so);
+  check_lattice(o, &oct, b);
   double *v = nl_xmalloc((size_t)o->size * o->size * sizeof *v);
-  double B = nl_noise_octaves_bound(&oct, b.bound);
-  if (!strcmp(o->noise, "marble")) { nl_texture_marble_grid(&b, &oct, &win, NL_TWO_PI * o->stripes, o->amplitude, v); *lo = 0; *hi = 1; }
-  else { nl_noise_fractal_grid(&b, &oct, &win, v); *lo = oct.turbulence ? 0 : -B; *hi = B; }
-  nl_noise_grad2_free(t);
-  nl_cellular_free(cell);
-  nl_wavelet_tile_free(tile);
+  o->sum->grid(&b->noise, &oct, &o->so, &win, v, lo, hi);
+  nl_basis_free(b);
   return v;
 }
 

@@ -23,13 +23,17 @@
 /* ---- surveys: what a sum of octaves looks like, over seeds -------------
  *
  * nl_study_survey_run evaluates a sum of octaves of the chosen basis (a fresh
- * table per seed: seed0, seed0+1, ...) on a window and records, per seed, the
+ * one per seed: seed0, seed0+1, ...) on a window and records, per seed, the
  * value distribution (mean, sd, min, max) and the radially averaged power
  * spectrum (frequency in cycles per unit of the window, power normalised as
  * nl_spectrum_radial), plus the first seed's raster for pictures. Experiments
  * S1-S4 and sweeps use it so the numbers and the picture come from one pass.
  */
-typedef enum { NL_BASIS_GRAD2 = 0, NL_BASIS_IMPROVED3 = 1 } nl_study_basis_kind;
+/* The basis under the sums: a name of the noise registry (nl_basis.h), such
+ * as "improved" or "noise2", built with its default options for each seed. */
+typedef const char *nl_study_basis_kind;
+/* Perlin's improved noise, the basis of S1-S3. */
+#define NL_BASIS_IMPROVED3 "improved"
 
 typedef struct {
   int nseeds, nbins, w, h;

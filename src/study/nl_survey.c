@@ -1,21 +1,24 @@
 /* The surveys behind S1-S3 (nl_study.h): harness-side, since they write
  * tables and images; the noise module itself depends on base only. */
 #include "study/nl_study.h"
+#include "basis/nl_basis.h"
 #include "spectrum/nl_spectrum.h"
 
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 static void one_seed(nl_study_survey *s, nl_study_basis_kind kind, const nl_noise_octaves *o, const nl_noise_window *win,
                      unsigned long seed, int k, double *v)
 {
-  nl_noise_grad2 *t = NULL;
-  nl_noise_perm3 p;
-  nl_noise_basis b;
-  if (kind == NL_BASIS_GRAD2) { t = nl_noise_grad2_alloc(512); nl_noise_grad2_seed(t, seed); b = nl_noise_basis_grad2(t); }
-  else { nl_noise_perm3_seed(&p, seed); b = nl_noise_basis_perm3(&p); }
-  nl_noise_fractal_grid(&b, o, win, v);
+  nl_basis *b;
+  nl_error err;
+  if (nl_basis_make(kind, NULL, seed, &b, &err)) {   /* kind is a name in the code, not input */
+    fprintf(stderr, "noiselab: survey: %s\n", err.msg);
+    abort();
+  }
+  nl_noise_fractal_grid(&b->noise, o, win, v);
   size_t n = (size_t)win->w * win->h;
   s->mean[k] = gsl_stats_mean(v, 1, n);
   s->sd[k] = gsl_stats_sd_m(v, 1, n, s->mean[k]);
@@ -23,8 +26,8 @@ static void one_seed(nl_study_survey *s, nl_study_basis_kind kind, const nl_nois
   double *f = nl_xmalloc((size_t)s->nbins * sizeof *f);
   nl_spectrum_radial(v, win->w, win->h, s->nbins, f, s->power + (size_t)k * s->nbins);
   free(f);
-  s->bound = nl_noise_octaves_bound(o, b.bound);
-  nl_noise_grad2_free(t);
+  s->bound = nl_noise_octaves_bound(o, b->noise.bound);
+  nl_basis_free(b);
 }
 
 nl_study_survey *nl_study_survey_run(nl_study_basis_kind kind, const nl_noise_octaves *o, const nl_noise_window *win,
