@@ -29,11 +29,11 @@ int main(int argc, char **argv)
   }
   nl_harness_text(r, "### Varying the gain\n");
   nl_table *gt = nl_study_series(r, "gain", "fBm, lacunarity 2: gain 0, 0.25, 0.5, 0.75, 1",
-                                 NL_BASIS_IMPROVED3, g, 5, &win);
+                                 "improved", g, 5, &win);
   s3_report_gain(r, octaves);
   nl_harness_text(r, "### Varying the lacunarity\n");
   nl_table *lt = nl_study_series(r, "lacunarity", "fBm, gain 0.5: lacunarity 0.5, 1, 2, 4, 8",
-                                 NL_BASIS_IMPROVED3, l, 5, &win);
+                                 "improved", l, 5, &win);
   s3_report_lacunarity(r, octaves, gt, lt);
   nl_table_free(gt);
   nl_table_free(lt);

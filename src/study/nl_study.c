@@ -99,7 +99,7 @@ nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int 
   nl_study_setting st[4];
   char labels[4][32];
   octave_settings(oct, 4, turbulence, st, labels);
-  return nl_study_series(r, prefix, title, NL_BASIS_IMPROVED3, st, 4, win);
+  return nl_study_series(r, prefix, title, "improved", st, 4, win);
 }
 
 void nl_study_montage(nl_harness *r, const nl_image *const *panels, const char *const *labels,

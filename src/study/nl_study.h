@@ -32,8 +32,6 @@
 /* The basis under the sums: a name of the noise registry (nl_basis.h), such
  * as "improved" or "noise2", built with its default options for each seed. */
 typedef const char *nl_study_basis_kind;
-/* Perlin's improved noise, the basis of S1-S3. */
-#define NL_BASIS_IMPROVED3 "improved"
 
 typedef struct {
   int nseeds, nbins, w, h;
