@@ -4,8 +4,8 @@
  * points on a G^3 grid and the same annealing schedule (nl_cheng_schedule).
  *
  * API (sections below in this order)
- *   table     nl_cheng3_table_alloc / _free / _seed / _set / _copy / _index,
- *             nl_cheng3_noise
+ *   table     nl_noise_grad3 (nl_noise.h): the noise, its table and its corners;
+ *             nl_cheng3_table and nl_cheng3_table_alloc / _seed / _free name it here
  *   pattern   nl_cheng3_pattern_shape, nl_cheng3_pattern_free
  *   config    nl_cheng3_config_default (nl_cheng_config, checked by nl_cheng_config_check)
  *   problem   nl_cheng3_problem_alloc / _free, nl_cheng3_energy, nl_cheng3_move /
@@ -20,7 +20,7 @@
  *   nl_cheng3_pattern_shape("torus", 16, &pat, &err);   // 16^3 control points
  *   nl_cheng3_config c = nl_cheng3_config_default();
  *   nl_cheng3_eval ev;
- *   nl_cheng3_table *t;
+ *   nl_noise_grad3 *t;
  *   nl_cheng3_run(&c, pat, seed, &ev, NULL, &t, &err);  // random start, anneal, evaluate
  *
  * THE MODEL. Noise(x, y, z) = sum over the 8 cell corners (i, j, k) of
@@ -81,35 +81,28 @@
  *   nl_cheng3_resum re-evaluates every point from its corners (each
  *   temperature), so rounding from differences never outlives one temperature.
  *   Tested (test_cheng3.c): incremental == full recomputation to 1e-12 after
- *   every move of a random sequence, and the stored corners == nl_cheng3_noise.
+ *   every move of a random sequence, and the stored corners == nl_noise_grad3_eval.
  */
 #ifndef NL_CHENG3_H
 #define NL_CHENG3_H
 
 #include "base/nl_base.h"
 #include "cheng/nl_cheng.h"
+#include "noise/nl_noise.h"
 
 #include <gsl/gsl_rng.h>
 
 /* ---- gradient table on the sphere -------------------------------------- */
 
-typedef struct {
-  size_t m;
-  double *v;         /* 3 m: unit vectors */
-  double *z, *phi;   /* cos(polar) in [-1, 1], azimuth in [0, 2 pi) */
-  unsigned *perm;    /* permutation of 0..m-1 */
-} nl_cheng3_table;
-
-nl_cheng3_table *nl_cheng3_table_alloc(size_t m);
-void nl_cheng3_table_free(nl_cheng3_table *t);
-/* Uniform directions (z ~ U(-1, 1), phi ~ U(0, 2 pi)) and a uniform permutation. */
-void nl_cheng3_table_seed(nl_cheng3_table *t, unsigned long seed);
-/* Entry k := the direction of u (normalised; u != 0). */
-void nl_cheng3_table_set(nl_cheng3_table *t, size_t k, const double u[3]);
-void nl_cheng3_table_copy(nl_cheng3_table *dst, const nl_cheng3_table *src);   /* same m */
-size_t nl_cheng3_table_index(const nl_cheng3_table *t, long i, long j, long k);
-double nl_cheng3_noise(const nl_cheng3_table *t, double x, double y, double z);
-#define NL_CHENG3_BOUND 0.86602540378443864676   /* sqrt(3)/2 */
+/* The table is nl_noise_grad3 (seeded from stream ("cheng3.table", 0)); the
+ * C8 experiment names it by these aliases. */
+typedef nl_noise_grad3 nl_cheng3_table;
+static inline nl_cheng3_table *nl_cheng3_table_alloc(size_t m) { return nl_noise_grad3_alloc(m); }
+static inline void nl_cheng3_table_free(nl_cheng3_table *t) { nl_noise_grad3_free(t); }
+static inline void nl_cheng3_table_seed(nl_cheng3_table *t, unsigned long seed)
+{
+  nl_noise_grad3_seed(t, seed);
+}
 
 /* ---- control pattern: a volume ------------------------------------------ */
 
@@ -141,7 +134,7 @@ typedef struct nl_cheng3_problem nl_cheng3_problem;
 
 /* Borrows the pattern and the table (edited by moves). */
 nl_cheng3_problem *nl_cheng3_problem_alloc(const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
-                                           nl_cheng3_table *t, nl_error *err);
+                                           nl_noise_grad3 *t, nl_error *err);
 void nl_cheng3_problem_free(nl_cheng3_problem *p);
 double nl_cheng3_energy(const nl_cheng3_problem *p, double *e_stat, double *e_con);
 /* Entry k := direction u (unit); returns the new E. _undo reverts the last move. */
@@ -189,20 +182,21 @@ typedef struct {
   double e_con_random;             /* E_Con of the start table (NAN from _evaluate alone) */
 } nl_cheng3_eval;
 
-nl_status nl_cheng3_evaluate(const nl_cheng3_table *t, const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
-                             nl_cheng3_eval *out, nl_error *err);
+nl_status nl_cheng3_evaluate(const nl_noise_grad3 *t, const nl_cheng3_config *c,
+                             const nl_cheng3_pattern *pat, nl_cheng3_eval *out, nl_error *err);
 /* The control value c = (1 + V) / 2 at one point (the noise kernel, all F octaves). */
-double nl_cheng3_value(const nl_cheng3_table *t, const nl_cheng3_config *c, double x, double y, double z);
+double nl_cheng3_value(const nl_noise_grad3 *t, const nl_cheng3_config *c, double x, double y,
+                       double z);
 /* c at the centres of an n^3 raster of [0,1)^3, index (k n + j) n + i (x fastest). */
-void nl_cheng3_value_grid(const nl_cheng3_table *t, const nl_cheng3_config *c, int n, double *out);
+void nl_cheng3_value_grid(const nl_noise_grad3 *t, const nl_cheng3_config *c, int n, double *out);
 /* Random table from nl_seed_stream(seed, "cheng3.table", 0), its E_Con as
  * e_con_random (its full evaluation in *start if not NULL), optimisation,
  * evaluation; the optimised table in *table_out if not NULL (caller frees). */
 nl_status nl_cheng3_run(const nl_cheng3_config *c, const nl_cheng3_pattern *pat, unsigned long seed,
                         nl_cheng3_eval *ev, nl_cheng3_eval *start, nl_cheng_level_stats *st,
-                        nl_cheng3_table **table_out, nl_error *err);
+                        nl_noise_grad3 **table_out, nl_error *err);
 /* counts[l] = entries first used by octave l+1's lattice ((ceil(f_l) + 1)^3
  * points), for l < octaves: what multi-level annealing would give each level. */
-void nl_cheng3_level_entries(const nl_cheng3_table *t, const nl_cheng3_config *c, size_t *counts);
+void nl_cheng3_level_entries(const nl_noise_grad3 *t, const nl_cheng3_config *c, size_t *counts);
 
 #endif

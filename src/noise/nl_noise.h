@@ -1,6 +1,7 @@
 /* nl_noise.h - gradient noise with explicit tables, and sums of octaves.
  *
- * Two gradient noises, both evaluated a row of samples at a time:
+ * Three gradient noises, the first two also evaluated a row of samples at a
+ * time:
  *
  *  - nl_noise_grad2: 2D gradient noise as in Cheng 2009 eq. 3.1-3.2. A table of m
  *    unit gradients stored as angles (the optimiser edits them one at a time)
@@ -8,6 +9,13 @@
  *    G[P[(P[i mod m] + j) mod m]]. Quintic fade 6t^5 - 15t^4 + 10t^3.
  *    |noise| <= sqrt(2)/2 (the value at a cell centre with all four
  *    gradients pointing at it); noise is 0 at every lattice point.
+ *
+ *  - nl_noise_grad3: the same construction in 3D (Cheng 2009 ch. 5's future
+ *    work, TARGETS C8): m unit gradient vectors, stored also as the two
+ *    angles z = cos(polar) and phi = azimuth that the optimiser tests for
+ *    uniformity on the sphere, and a permutation P; lattice point (i, j, k)
+ *    uses G[P[(P[(P[i mod m] + j) mod m] + k) mod m]]. Same fade.
+ *    |noise| <= sqrt(3)/2; 0 at every lattice point.
  *
  *  - nl_noise_perm3: Perlin's 2002 improved noise in 3D (12 edge gradients chosen
  *    by hash & 15, same fade), with his reference permutation or one
@@ -40,6 +48,7 @@
 #define NL_NOISE_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 /* ---- 2D gradient-table noise ---------------------------------------- */
 
@@ -63,6 +72,48 @@ double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, double y);
 /* out[k] = noise(x0 + k dx, y), k < n. */
 void nl_noise_grad2_row(const nl_noise_grad2 *t, double x0, double dx, double y, size_t n, double *out);
 #define NL_NOISE2_BOUND 0.70710678118654752440
+
+/* ---- 3D gradient-table noise ---------------------------------------
+ *
+ * Noise(x, y, z) = sum over the 8 corners c = (i, j, k) of the cell holding
+ * p of w(x - i) w(y - j) w(z - k) (Delta_c . G_c), Delta_c = p - c, w the
+ * quintic fade (Cheng 2009 eq. 3.1-3.2 in 3D). The noise is linear in the
+ * gradients: nl_noise_grad3_corners gives, for one point, the 8 table
+ * entries its corners use and the weight vectors W_c = amp w w w Delta_c,
+ * so that amp * noise = sum_c W_c . G[entry_c]. An optimiser that stores
+ * them updates a point's value in O(1) when one gradient moves.
+ *
+ *   nl_noise_grad3 *t = nl_noise_grad3_alloc(512);
+ *   nl_noise_grad3_seed(t, seed);               // uniform on the sphere
+ *   double n = nl_noise_grad3_eval(t, x, y, z);  // |n| <= NL_NOISE_GRAD3_BOUND
+ *   nl_noise_grad3_free(t);
+ */
+typedef struct {
+  size_t m;          /* table size; C8 uses 512 */
+  double *v;         /* 3 m: unit gradients (x, y, z), entry k at v + 3 k */
+  double *z, *phi;   /* cos(polar) in [-1, 1], azimuth in [0, 2 pi); kept in step by _set */
+  unsigned *perm;    /* permutation of 0..m-1 */
+} nl_noise_grad3;
+
+/* Every gradient (0, 0, 1), the identity permutation. */
+nl_noise_grad3 *nl_noise_grad3_alloc(size_t m);
+void nl_noise_grad3_free(nl_noise_grad3 *t);
+/* Directions uniform on the sphere (Archimedes' hat-box: z ~ U(-1, 1),
+ * phi ~ U(0, 2 pi)) and a uniform permutation, from MT19937 on stream
+ * ("cheng3.table", 0) of seed: the stream C8's optimiser starts from. */
+void nl_noise_grad3_seed(nl_noise_grad3 *t, unsigned long seed);
+/* Entry k := the direction of u (normalised; u != 0), its z and phi with it. */
+void nl_noise_grad3_set(nl_noise_grad3 *t, size_t k, const double u[3]);
+void nl_noise_grad3_copy(nl_noise_grad3 *dst, const nl_noise_grad3 *src);   /* same m */
+/* Table entry used by lattice point (i, j, k). */
+size_t nl_noise_grad3_index(const nl_noise_grad3 *t, long i, long j, long k);
+/* The point's 8 corners, in the order q = di + 2 dj + 4 dk: entry[q] and
+ * the weight vector w[3q .. 3q+2] = amp w w w Delta (amp folded in first,
+ * so a sum of octaves is a sum of such terms). */
+void nl_noise_grad3_corners(const nl_noise_grad3 *t, double x, double y, double z, double amp,
+                            uint32_t entry[8], double w[24]);
+double nl_noise_grad3_eval(const nl_noise_grad3 *t, double x, double y, double z);
+#define NL_NOISE_GRAD3_BOUND 0.86602540378443864676   /* sqrt(3)/2 */
 
 /* ---- Perlin's improved 3D noise ------------------------------------- */
 

@@ -8,9 +8,9 @@
  * CPU lacks falls back to the best it has, with a warning) or a program calls
  * nl_noise_simd_set. Every level gives the scalar bits (nl_noise_simd.h).
  *
- * The scalar lattice helpers (lfloor, lfrac, fade, row_columns) are
- * nl_noise.c's, from nl_noise_lattice.h; test_noise_simd.c holds the two
- * files to the same bits.
+ * The scalar lattice helpers (nl_noise_lattice.h) and row_columns
+ * (nl_noise_simd.h) are nl_noise.c's; test_noise_simd.c holds the two files
+ * to the same bits.
  */
 #include "noise/nl_noise_simd.h"
 #include "noise/nl_noise_lattice.h"
@@ -149,8 +149,8 @@ static double *column_arrays(size_t ncol, double *sgx, double *sa, double **a)
  * registers, and loads one by one beat gathers; a row has few columns. */
 static void columns2(const nl_noise_grad2 *t, long ifirst, size_t ncol, double y, double *gx, double *a)
 {
-  long j = lfloor(y);
-  double fy = lfrac(y, j), v = fade(fy);
+  long j = nl_noise_lfloor(y);
+  double fy = nl_noise_lfrac(y, j), v = nl_noise_fade(fy);
   if (grad2_pow2(t)) {   /* i mod m as a mask */
     unsigned long mask = t->m - 1, j0 = (unsigned long)j & mask, j1 = (unsigned long)(j + 1) & mask;
     const unsigned *perm = t->perm;
@@ -177,8 +177,9 @@ static void columns2(const nl_noise_grad2 *t, long ifirst, size_t ncol, double y
 static void columns3(const nl_noise_simd_kernels *K, const nl_noise_perm3 *p, const int *p32, long ifirst,
                      size_t ncol, double y, double z, double *gx, double *a)
 {
-  long j = lfloor(y), k = lfloor(z);
-  double fy = lfrac(y, j), fz = lfrac(z, k), v = fade(fy), w = fade(fz);
+  long j = nl_noise_lfloor(y), k = nl_noise_lfloor(z);
+  double fy = nl_noise_lfrac(y, j), fz = nl_noise_lfrac(z, k);
+  double v = nl_noise_fade(fy), w = nl_noise_fade(fz);
   K->columns3(p, p32, (unsigned)(ifirst & 255), (unsigned)(j & 255), (unsigned)(k & 255), fy, fz,
               v, w, (ncol + NL_SIMD_PAD - 1) / NL_SIMD_PAD * NL_SIMD_PAD, gx, a);
 }

@@ -21,7 +21,22 @@
 #define NL_NOISE_SIMD_H
 
 #include "noise/nl_noise.h"
+#include "noise/nl_noise_lattice.h"
 #include <stddef.h>
+
+/* Columns spanned by a row; 0 when sampling is so sparse (more than two
+ * columns per sample) that collapsing columns costs more than it saves.
+ * The scalar row (nl_noise.c) and the SIMD row drivers share it, so both
+ * collapse the same rows. */
+static inline size_t row_columns(double x0, double dx, size_t n, long *ifirst)
+{
+  double xl = x0 + (double)(n - 1) * dx;
+  if (!(fabs(x0) < NL_LATTICE_EXACT && fabs(xl) < NL_LATTICE_EXACT)) return 0;
+  long a = nl_noise_lfloor(dx >= 0 ? x0 : xl), b = nl_noise_lfloor(dx >= 0 ? xl : x0);
+  *ifirst = a;
+  size_t ncol = (size_t)(b - a) + 2;
+  return ncol > 2 * n + 8 ? 0 : ncol;
+}
 
 /* Columns and points are padded to a multiple of this (the widest level). */
 #define NL_SIMD_PAD 8
