@@ -322,6 +322,21 @@ static void product(const double *a, const double *b, double *c, size_t n)
   gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, &A.matrix, &B.matrix, 0.0, &C.matrix);
 }
 
+/* The limit/restore pair: OpenBLAS at one thread in between, its count
+ * given back after; nothing changes without OpenBLAS or at one thread. */
+NL_TEST(blas_limit_and_restore)
+{
+  int (*blas_get)(void) = (int (*)(void))dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
+  int before = nl_parallel_blas_threads();
+  NL_CHECK(before == (blas_get ? blas_get() : -1));
+  int was = nl_parallel_blas_limit();
+  NL_CHECK(was == (before > 1 ? before : 0));
+  if (blas_get) NL_CHECK(nl_parallel_blas_threads() == 1 || before < 1);
+  nl_parallel_blas_restore(was);
+  NL_CHECK(nl_parallel_blas_threads() == before);
+  printf("  OpenBLAS threads: %d (-1: not loaded)\n", before);
+}
+
 /* nl_parallel_blas_idle stops OpenBLAS's idle workers (the process has
  * fewer threads), and a threaded product afterwards, which starts them
  * again, gives the bytes of one before. */
