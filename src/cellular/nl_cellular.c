@@ -30,7 +30,7 @@ nl_status nl_cellular_alloc(double lambda, int M, nl_cellular_count_rule rule, u
   /* eq. 3 in log form: lambda^m / m! overflows long before M = 64 would. */
   double acc = 0.0;
   for (int m = 0; m <= M; m++) {
-    c->pmf[m] = exp(m * log(lambda) - lambda - lgamma(m + 1.0));
+    c->pmf[m] = exp(m * log(lambda) - lambda - nl_lgamma(m + 1.0));
     acc += c->pmf[m];
     c->cdf[m] = acc;
   }

@@ -8,17 +8,10 @@
 
 #define TRIAL_MOVES 200
 
-static double wrap_angle(double t)
-{
-  t = fmod(t, NL_TWO_PI);
-  if (t < 0) t += NL_TWO_PI;
-  return t >= NL_TWO_PI ? 0.0 : t;   /* t + 2pi can round up to 2pi */
-}
-
 static double propose(const nl_cheng_problem *p, gsl_rng *rng, size_t k, double sigma)
 {
   if (k >= p->m) return nl_cheng__amp_propose(p, rng, k - p->m, sigma);   /* a gain (X6) */
-  return wrap_angle(p->g->angle[k] + sigma * (2.0 * gsl_rng_uniform(rng) - 1.0));
+  return nl_wrap_angle(p->g->angle[k] + sigma * (2.0 * gsl_rng_uniform(rng) - 1.0));
 }
 
 /* T0 so that an average uphill move of the widest step is accepted with

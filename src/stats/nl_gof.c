@@ -3,14 +3,6 @@
 
 #include <gsl/gsl_cdf.h>
 #include <math.h>
-
-/* lgamma without the global signgam (lgamma writes it: a data race when
- * p-values are computed in threads); the same value. */
-static inline double nl__lgamma(double x)
-{
-  int sign;
-  return lgamma_r(x, &sign);
-}
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -274,11 +266,11 @@ double nl_stats_kuiper_sf(size_t n, double v)
   double p;
   if (v < 2.0 / N) {
     /* Stephens (1965): 1 - n! (v - 1/n)^(n-1) */
-    p = 1.0 - exp(nl__lgamma(N + 1.0) + (N - 1.0) * log(v - 1.0 / N));
+    p = 1.0 - exp(nl_lgamma(N + 1.0) + (N - 1.0) * log(v - 1.0 / N));
   } else if (v < 3.0 / N) {
     double k = -(N * v - 1.0) / 2.0, r = sqrt(k * k - (N * v - 2.0) * (N * v - 2.0) / 2.0);
     double a = -k + r, b = -k - r;
-    double lc = nl__lgamma(N) - (N - 2.0) * log(N);
+    double lc = nl_lgamma(N) - (N - 2.0) * log(N);
     double t1 = exp(lc + (N - 1.0) * log(b)) * (1.0 - a);
     double t2 = exp(lc + (N - 1.0) * log(a)) * (1.0 - b);
     p = 1.0 - (t1 - t2) / (b - a);
@@ -289,7 +281,7 @@ double nl_stats_kuiper_sf(size_t n, double v)
       double y = v + t / N, c = 1.0 - v - t / N;
       double br = y * y * y * N - y * y * t * (3 - 2 / N) + y * t * (t - 1) * (3 - 2 / N) / N
                   - t * (t - 1) * (t - 2) / (N * N);
-      double lt = nl__lgamma(N + 1) - nl__lgamma(t + 1) - nl__lgamma(N - t + 1) + (t - 3) * log(y);
+      double lt = nl_lgamma(N + 1) - nl_lgamma(t + 1) - nl_lgamma(N - t + 1) + (t - 3) * log(y);
       if (c > 0.0) lt += (N - t - 1) * log(c);
       else if (N - t - 1 > 0) continue;
       p += br * exp(lt);
