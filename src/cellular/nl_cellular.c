@@ -1,5 +1,6 @@
 #include "cellular/nl_cellular.h"
 #include "cellular/nl_cellular_simd.h"
+#include "simd/nl_simd.h"
 #include "noise/nl_noise_lattice.h"   /* nl_noise_lfloor: the cube of a point, for every double */
 
 #include <ctype.h>
@@ -292,10 +293,10 @@ void nl_cellular_row(const nl_cellular *c, double x0, double dx, double y, doubl
   }
   rowbuf b;
   rowbuf_fill(c, ifirst, (size_t)(ilast - ifirst + 1), y, z, &b);
-  switch (nl_noise_simd_get()) {   /* the noise module's level: NL_NOISE_SIMD, nl_noise_simd_set */
-  case NL_NOISE_SIMD_SSE2: nl_cellular_row_sse2(&b.r, x0, dx, count, n, F); break;
-  case NL_NOISE_SIMD_AVX2: nl_cellular_row_avx2(&b.r, x0, dx, count, n, F); break;
-  case NL_NOISE_SIMD_AVX512: nl_cellular_row_avx512(&b.r, x0, dx, count, n, F); break;
+  switch (nl_simd_get()) {   /* the library's level: NL_NOISE_SIMD, nl_simd_set */
+  case NL_SIMD_SSE2: nl_cellular_row_sse2(&b.r, x0, dx, count, n, F); break;
+  case NL_SIMD_AVX2: nl_cellular_row_avx2(&b.r, x0, dx, count, n, F); break;
+  case NL_SIMD_AVX512: nl_cellular_row_avx512(&b.r, x0, dx, count, n, F); break;
   default: row_scalar(&b.r, x0, dx, count, n, F);
   }
   rowbuf_free(&b);

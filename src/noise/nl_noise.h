@@ -47,6 +47,8 @@
 #ifndef NL_NOISE_H
 #define NL_NOISE_H
 
+#include "simd/nl_simd.h"
+
 #include <stddef.h>
 #include <stdint.h>
 
@@ -126,27 +128,27 @@ void nl_noise_perm3_row(const nl_noise_perm3 *p, double x0, double dx, double y,
                         size_t n, double *out);
 #define NL_NOISE3_BOUND 1.22474487139158904910
 
-/* ---- SIMD kernels, run-time dispatch, batches of points (issue 17) -----
+/* ---- SIMD kernels, run-time dispatch, batches of points ---------------
  *
- * Rows of both noises (and so the sums of octaves over nl_noise_basis_grad2 and
- * nl_noise_basis_perm3) and the batches below run on the best vector unit the CPU
- * has: SSE2 (the x86-64 baseline), AVX2 or AVX-512 (F, DQ, BW, VL, VBMI),
- * chosen at run time (no -march in the build; nl_noise_simd.c). Every level returns the scalar code's bits (same IEEE
- * operations in the same order, no FMA); power-of-two tables index by mask.
- * NL_NOISE_SIMD=scalar|sse2|avx2|avx512 in the environment, or
- * nl_noise_simd_set, forces a level (tests and benchmarks compare them).
- */
-typedef enum {
-  NL_NOISE_SIMD_SCALAR = 0, NL_NOISE_SIMD_SSE2 = 1, NL_NOISE_SIMD_AVX2 = 2, NL_NOISE_SIMD_AVX512 = 3
-} nl_noise_simd_level;
-
-int nl_noise_simd_get(void);               /* the level in use */
-int nl_noise_simd_best(void);              /* the best this CPU runs */
-int nl_noise_simd_supported(int level);    /* 1 if this CPU runs it */
-/* GSL_SUCCESS, GSL_EINVAL (no such level) or GSL_EUNSUP (not on this CPU). */
-int nl_noise_simd_set(int level);
-const char *nl_noise_simd_name(int level);          /* "scalar", ..., "avx512" */
-int nl_noise_simd_from_name(const char *name);      /* -1 if none */
+ * Rows of both noises (and so the sums of octaves over nl_noise_basis_grad2
+ * and nl_noise_basis_perm3) and the batches below run on the library's
+ * vector level (simd/nl_simd.h: SSE2, AVX2 or AVX-512, chosen at run time,
+ * NL_NOISE_SIMD in the environment or nl_simd_set to force one). Every
+ * level returns the scalar code's bits (same IEEE operations in the same
+ * order, no FMA); power-of-two tables index by mask.
+ * The nl_noise_simd_* names below are the level's, for the programs that
+ * call them so (bench_noise, the SIMD tests). */
+typedef nl_simd_level nl_noise_simd_level;
+#define NL_NOISE_SIMD_SCALAR NL_SIMD_SCALAR
+#define NL_NOISE_SIMD_SSE2 NL_SIMD_SSE2
+#define NL_NOISE_SIMD_AVX2 NL_SIMD_AVX2
+#define NL_NOISE_SIMD_AVX512 NL_SIMD_AVX512
+static inline int nl_noise_simd_get(void) { return nl_simd_get(); }
+static inline int nl_noise_simd_best(void) { return nl_simd_best(); }
+static inline int nl_noise_simd_supported(int level) { return nl_simd_supported(level); }
+static inline int nl_noise_simd_set(int level) { return nl_simd_set(level); }
+static inline const char *nl_noise_simd_name(int level) { return nl_simd_name(level); }
+static inline int nl_noise_simd_from_name(const char *name) { return nl_simd_from_name(name); }
 
 /* out[k] = nl_noise_grad2_eval(t, x[k], y[k]) and nl_noise_perm3_eval(p, x[k], y[k], z[k]),
  * k < n. out may be one of the inputs (the same array), not overlap one. */

@@ -1,12 +1,8 @@
-/* nl_noise_simd.c - run-time dispatch of the noise kernels (issue 17), the
- * row drivers nl_noise.c hands its rows to, and the batch point API.
- *
- * Levels: scalar (nl_noise.c's own code, the reference), SSE2 (the x86-64
- * baseline), AVX2, AVX-512 (F+DQ+BW+VL+VBMI). The level is the best the CPU and
- * OS support (__builtin_cpu_supports, which checks the XSAVE state too),
- * unless NL_NOISE_SIMD=scalar|sse2|avx2|avx512 asks for another (a level the
- * CPU lacks falls back to the best it has, with a warning) or a program calls
- * nl_noise_simd_set. Every level gives the scalar bits (nl_noise_simd.h).
+/* nl_noise_simd.c - the noise kernel table of the library's vector level
+ * (simd/nl_simd.h: scalar, SSE2, AVX2 or AVX-512), the row drivers
+ * nl_noise.c hands its rows to, and the batch point API. The scalar level
+ * is nl_noise.c's own code, the reference; every level gives its bits
+ * (nl_noise_simd.h).
  *
  * The scalar lattice helpers (nl_noise_lattice.h) and row_columns
  * (nl_noise_simd.h) are nl_noise.c's; test_noise_simd.c holds the two files
@@ -28,81 +24,12 @@ const double nl_noise_simd_g3[3][16] = {
   {1, 1, -1, -1, 0, 0, 0, 0, 1, -1, 1, -1, 1, -1, 1, -1},
   {0, 0, 0, 0, 1, 1, -1, -1, 1, 1, -1, -1, 0, 1, 0, -1}};
 
-/* ---- the level ------------------------------------------------------------ */
-
-static const char *const level_names[] = {"scalar", "sse2", "avx2", "avx512"};
-
-const char *nl_noise_simd_name(int level)
-{
-  return level >= 0 && level <= NL_NOISE_SIMD_AVX512 ? level_names[level] : "unknown";
-}
-
-int nl_noise_simd_from_name(const char *name)
-{
-  for (int l = 0; l <= NL_NOISE_SIMD_AVX512; l++)
-    if (name && strcmp(name, level_names[l]) == 0) return l;
-  return -1;
-}
-
-int nl_noise_simd_supported(int level)
-{
-  switch (level) {
-  case NL_NOISE_SIMD_SCALAR: case NL_NOISE_SIMD_SSE2: return 1;
-  case NL_NOISE_SIMD_AVX2:
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2");
-  case NL_NOISE_SIMD_AVX512:
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
-           __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl") &&
-           __builtin_cpu_supports("avx512vbmi") && __builtin_cpu_supports("avx2");
-  default: return 0;
-  }
-}
-
-int nl_noise_simd_best(void)
-{
-  int l = NL_NOISE_SIMD_AVX512;
-  while (!nl_noise_simd_supported(l)) l--;
-  return l;
-}
-
-static int simd_level = -1;   /* -1: not yet resolved */
-
-int nl_noise_simd_get(void)
-{
-  int l = __atomic_load_n(&simd_level, __ATOMIC_ACQUIRE);
-  if (l >= 0) return l;
-  l = nl_noise_simd_best();
-  const char *env = getenv("NL_NOISE_SIMD");
-  if (env && *env && strcmp(env, "auto") != 0) {
-    int want = nl_noise_simd_from_name(env);
-    if (want < 0)
-      fprintf(stderr, "noiselab: NL_NOISE_SIMD=%s is not scalar|sse2|avx2|avx512|auto; using %s\n",
-              env, nl_noise_simd_name(l));
-    else if (!nl_noise_simd_supported(want))
-      fprintf(stderr, "noiselab: this CPU cannot run NL_NOISE_SIMD=%s; using %s\n", env,
-              nl_noise_simd_name(l));
-    else l = want;
-  }
-  __atomic_store_n(&simd_level, l, __ATOMIC_RELEASE);   /* racing first calls agree */
-  return l;
-}
-
-int nl_noise_simd_set(int level)
-{
-  if (level < 0 || level > NL_NOISE_SIMD_AVX512) return GSL_EINVAL;
-  if (!nl_noise_simd_supported(level)) return GSL_EUNSUP;
-  __atomic_store_n(&simd_level, level, __ATOMIC_RELEASE);
-  return GSL_SUCCESS;
-}
-
 static const nl_noise_simd_kernels *kernels(void)
 {
-  switch (nl_noise_simd_get()) {
-  case NL_NOISE_SIMD_SSE2: return &nl_noise_simd_sse2;
-  case NL_NOISE_SIMD_AVX2: return &nl_noise_simd_avx2;
-  case NL_NOISE_SIMD_AVX512: return &nl_noise_simd_avx512;
+  switch (nl_simd_get()) {
+  case NL_SIMD_SSE2: return &nl_noise_simd_sse2;
+  case NL_SIMD_AVX2: return &nl_noise_simd_avx2;
+  case NL_SIMD_AVX512: return &nl_noise_simd_avx512;
   default: return NULL;
   }
 }

@@ -8,7 +8,7 @@
 #pragma GCC target("avx2")
 #endif
 #include "noise/nl_noise_simd.h"
-#include "noise/nl_simd_avx2.h"   /* vd, vl, v_floor, v_ceil, v_all */
+#include "simd/nl_simd_avx2.h"   /* vd, vl, v_floor, v_ceil, v_all */
 #include <string.h>
 
 #define NL_SIMD_W 4
@@ -18,7 +18,7 @@ typedef unsigned vu __attribute__((vector_size(16)));
 
 /* Lookups lane by lane: on the machines measured (AMD Zen 5) a gather
  * instruction costs more than its loads one by one. */
-#include "noise/nl_noise_simd_lanes.h"
+#include "simd/nl_simd_lanes.h"
 
 #include "noise/nl_noise_simd_body.h"
 

@@ -17,7 +17,7 @@
 #pragma GCC target("avx512f,avx512dq,avx512bw,avx512vl,avx512vbmi,avx2")
 #endif
 #include "noise/nl_noise_simd.h"
-#include "noise/nl_simd_avx512.h"   /* vd, vl, v_floor, v_ceil, v_all */
+#include "simd/nl_simd_avx512.h"   /* vd, vl, v_floor, v_ceil, v_all */
 #include <math.h>
 #include <string.h>
 
@@ -27,7 +27,7 @@ typedef int vi __attribute__((vector_size(32)));
 typedef unsigned vu __attribute__((vector_size(32)));
 
 /* Lookups lane by lane (the 2D tables are too big for registers). */
-#include "noise/nl_noise_simd_lanes.h"
+#include "simd/nl_simd_lanes.h"
 
 #define NL_SIMD_HAVE_TABLES
 typedef struct { __m512i p[4]; __m512d g[3][2]; } p3tab;

@@ -3,7 +3,7 @@
  * (SSE4.1's roundpd) nor gathers: floor goes through the 2^52 rounding
  * trick, lookups lane by lane. */
 #include "noise/nl_noise_simd.h"
-#include "noise/nl_simd_sse2.h"   /* vd, vl, v_floor, v_ceil, v_all */
+#include "simd/nl_simd_sse2.h"   /* vd, vl, v_floor, v_ceil, v_all */
 
 #define NL_SIMD_W 2
 #define NL_SIMD_TABLE nl_noise_simd_sse2

@@ -1,6 +1,6 @@
 /* nl_simd_avx512.h - the vector types and primitives every AVX-512 kernel
  * shares (noise: nl_noise_simd_avx512.c, cellular: nl_cellular_simd_avx512.c),
- * 8 doubles a vector. Private: included by a kernel file after its target
+ * 8 doubles a vector. Library-internal: included by a kernel file after its target
  * pragma (F, DQ, BW, VL, VBMI), never installed. */
 #ifndef NL_SIMD_AVX512_H
 #define NL_SIMD_AVX512_H

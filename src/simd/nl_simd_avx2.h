@@ -1,6 +1,6 @@
 /* nl_simd_avx2.h - the vector types and primitives every AVX2 kernel shares
  * (noise: nl_noise_simd_avx2.c, cellular: nl_cellular_simd_avx2.c), 4 doubles
- * a vector. Private: included by a kernel file after its target pragma
+ * a vector. Library-internal: included by a kernel file after its target pragma
  * ("avx2"), never installed. */
 #ifndef NL_SIMD_AVX2_H
 #define NL_SIMD_AVX2_H
