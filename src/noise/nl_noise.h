@@ -181,14 +181,6 @@ enum { NL_NOISE_PACK_PAD = 16 };
  * (room for n); returns their count. *top is raised to the largest |noise|. */
 size_t nl_noise_perm3_points_bounded(const nl_noise_perm3 *p, double f, double amp, double r, nl_noise_pack *pk,
                                      int *hi, double *top);
-/* The sample loop of a quadratic B-spline row (wavelet noise, nl_wavelet_row)
- * on the dispatched level: out[k] += weight * (w0 L[i] + w1 L[i+1] + w2 L[i+2])
- * at x0 + k dx, k < count, with the weights and first tap i of nl_wavelet.c's
- * bspline() and L the period line[0 .. n-1] repeated. GSL_SUCCESS, or
- * GSL_CONTINUE (nothing done) on the scalar level, for sparse rows and
- * beyond |x| < 2^51: then the caller's own loop runs. */
-int nl_noise_bspline_row(const double *line, long n, double x0, double dx, size_t count,
-                         double weight, double *out);
 
 /* ---- a noise as a basis for sums ------------------------------------ */
 

@@ -187,30 +187,6 @@ int nl_noise_simd_fractal_row(const nl_noise_basis *b, const nl_noise_octaves *o
   return GSL_SUCCESS;
 }
 
-/* ---- quadratic B-spline rows (wavelet noise) --------------------------------- */
-
-static long wrapl(long i, long n) { long r = i % n; return r < 0 ? r + n : r; }
-
-int nl_noise_bspline_row(const double *line, long n, double x0, double dx, size_t count,
-                         double weight, double *out)
-{
-  const nl_noise_simd_kernels *K = kernels();
-  if (!K || count == 0 || count > NL_SIMD_MAX_N || n < 1) return GSL_CONTINUE;
-  double xl = x0 + (double)(count - 1) * dx;
-  if (!(fabs(x0) < 0x1p51 && fabs(xl) < 0x1p51)) return GSL_CONTINUE;
-  /* the first taps (bspline's mid - 1) of the lowest and the highest sample */
-  double lo = dx >= 0 ? x0 : xl, hi = dx >= 0 ? xl : x0;
-  long a = (long)ceil(lo - 0.5) - 1, b = (long)ceil(hi - 0.5) - 1;
-  size_t ncol = (size_t)(b - a) + 3;
-  if (ncol > 2 * count + 8) return GSL_CONTINUE;   /* sparse: the caller's loop */
-  double sL[NL_SIMD_STACK_COLS], sU[NL_SIMD_STACK_COLS], *U;
-  double *L = column_arrays(ncol, sL, sU, &U);
-  for (size_t c = 0; c < ncol; c++) L[c] = line[wrapl(a + (long)c, n)];
-  K->bspline(L, a, x0, dx, count, weight, out);
-  if (L != sL) { free(L); free(U); }
-  return GSL_SUCCESS;
-}
-
 /* ---- points ---------------------------------------------------------------- */
 
 void nl_noise_grad2_points(const nl_noise_grad2 *t, const double *x, const double *y, size_t n,

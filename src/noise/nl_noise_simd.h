@@ -68,11 +68,6 @@ typedef struct {
   void (*points2)(const nl_noise_grad2 *t, const double *x, const double *y, size_t n, double *out);
   void (*points3)(const nl_noise_perm3 *p, const int *p32, const double *x, const double *y,
                   const double *z, size_t n, double *out);
-  /* nl_wavelet_row's sample loop over the unwrapped line L (columns
-   * a, a + 1, ..., padded by NL_SIMD_COL_PAD): see nl_noise_bspline_row.
-   * Precondition: every x_k has |x_k| < 2^51 and its taps lie in L. */
-  void (*bspline)(const double *L, long a, double x0, double dx, size_t n, double weight,
-                  double *out);
   /* One octave of a sum over points, as nl_noise_perm3_points_sum: sum[k] =
    * sum[k] + amp v_k, v_k the noise at (f x[k], f y[k], f z[k]), and *top
    * raised to the largest |v_k|; n a multiple of NL_SIMD_PAD, lanes out of

@@ -419,7 +419,7 @@ NL_TEST(edge_rows_match_scalar)
   nl_noise_grad2_free(t);
 }
 
-/* Wavelet noise rows (nl_wavelet_row's sample loop, nl_noise_bspline_row):
+/* Wavelet noise rows (nl_wavelet_row's sample loop, wavelet/nl_wavelet_simd.h):
  * 2D tiles of power-of-two and other periods and a 3D tile, rows dense and
  * sparse, either direction, added into values already there. */
 NL_TEST(wavelet_rows_match_scalar)

@@ -1,4 +1,6 @@
 #include "wavelet/nl_wavelet.h"
+#include "simd/nl_simd.h"
+#include "wavelet/nl_wavelet_simd.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_randist.h>
@@ -167,6 +169,40 @@ static double eval_point(const nl_wavelet_tile *t, double x, double y, double z)
 double nl_wavelet_eval2(const nl_wavelet_tile *t, double x, double y) { return eval_point(t, x, y, 0); }
 double nl_wavelet_eval3(const nl_wavelet_tile *t, double x, double y, double z) { return eval_point(t, x, y, z); }
 
+/* nl_wavelet_row's sample loop on the dispatched level (nl_wavelet_simd.h)
+ * over the period line[0 .. n - 1] repeated: GSL_SUCCESS, or GSL_CONTINUE
+ * (nothing done) on the scalar level, for sparse rows (more than two
+ * columns a sample) and beyond |x| < 2^51: then the caller's loop runs. */
+#define SIMD_STACK_COLS 1056   /* doubles; a multiple of 8 */
+#define SIMD_MAX_N ((size_t)1 << 29)   /* column indices stay ints */
+static int simd_row(const double *line, long n, double x0, double dx, size_t count, double weight,
+                    double *out)
+{
+  nl_wavelet_simd_row_fn row;
+  switch (nl_simd_get()) {
+  case NL_SIMD_SSE2: row = nl_wavelet_simd_sse2; break;
+  case NL_SIMD_AVX2: row = nl_wavelet_simd_avx2; break;
+  case NL_SIMD_AVX512: row = nl_wavelet_simd_avx512; break;
+  default: return GSL_CONTINUE;
+  }
+  if (count == 0 || count > SIMD_MAX_N || n < 1) return GSL_CONTINUE;
+  double xl = x0 + (double)(count - 1) * dx;
+  if (!(fabs(x0) < 0x1p51 && fabs(xl) < 0x1p51)) return GSL_CONTINUE;
+  /* the first taps (bspline's mid - 1) of the lowest and the highest sample */
+  double lo = dx >= 0 ? x0 : xl, hi = dx >= 0 ? xl : x0;
+  long a = (long)ceil(lo - 0.5) - 1, b = (long)ceil(hi - 0.5) - 1;
+  size_t ncol = (size_t)(b - a) + 3;
+  if (ncol > 2 * count + 8) return GSL_CONTINUE;   /* sparse: the caller's loop */
+  size_t len = (ncol + 7) / 8 * 8 + NL_WAVELET_SIMD_PAD;
+  double sL[SIMD_STACK_COLS];
+  double *L = len <= SIMD_STACK_COLS ? sL : nl_xmalloc(len * sizeof *L);
+  memset(L + ncol, 0, (len - ncol) * sizeof *L);
+  for (size_t c = 0; c < ncol; c++) L[c] = line[wrap(a + (long)c, n)];
+  row(L, a, x0, dx, count, weight, out);
+  if (L != sL) free(L);
+  return GSL_SUCCESS;
+}
+
 void nl_wavelet_row(const nl_wavelet_tile *t, double x0, double dx, double y, double z,
                     size_t count, double weight, double *out)
 {
@@ -179,8 +215,11 @@ void nl_wavelet_row(const nl_wavelet_tile *t, double x0, double dx, double y, do
   for (int i = 0; i < n; i++) line[i] = collapse_column(&c, i);
   line[n] = line[0];
   line[n + 1] = line[1];
-  /* The sample loop on the SIMD level (nl_noise.h), same bits; else below. */
-  if (nl_noise_bspline_row(line, n, x0, dx, count, weight, out) == GSL_SUCCESS) { free(line); return; }
+  /* The sample loop on the library's vector level, same bits; else below. */
+  if (simd_row(line, n, x0, dx, count, weight, out) == GSL_SUCCESS) {
+    free(line);
+    return;
+  }
   for (size_t k = 0; k < count; k++) {
     double wx[3];
     long i = wrap(bspline(x0 + (double)k * dx, wx), n);
