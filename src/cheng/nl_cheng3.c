@@ -305,8 +305,9 @@ void nl_cheng3_optimise(nl_cheng3_problem *p, unsigned long seed, nl_cheng_level
 {
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, nl_seed_stream(seed, "cheng3.anneal", 0));
-  nl_cheng3_sa_ops ops = {p, p->m, 3 * p->m, op_energy, op_move, op_undo, op_save, op_restore, op_resum};
-  nl_cheng3_sa_run(&ops, &p->c.sched, rng, st);
+  nl_cheng_sa_ops ops = {p, p->m, 3 * p->m, op_energy, op_move, op_undo, op_save, op_restore,
+                         op_resum};
+  nl_cheng_sa_run(&ops, &p->c.sched, rng, st);
   if (st) st->level = 1;
   gsl_rng_free(rng);
 }

@@ -10,9 +10,8 @@
  *   config    nl_cheng3_config_default (nl_cheng_config, checked by nl_cheng_config_check)
  *   problem   nl_cheng3_problem_alloc / _free, nl_cheng3_energy, nl_cheng3_move /
  *             _undo, nl_cheng3_energy_full, nl_cheng3_resum, nl_cheng3_propose
- *   anneal    nl_cheng3_sa_ops, nl_cheng3_sa_run (the schedule loop, written
- *             against callbacks so any incremental problem can use it),
- *             nl_cheng3_optimise
+ *   anneal    nl_cheng3_optimise (on nl_cheng.h's nl_cheng_sa_run, the schedule
+ *             loop written against callbacks)
  *   eval      nl_cheng3_evaluate, nl_cheng3_value, nl_cheng3_value_grid, nl_cheng3_run,
  *             nl_cheng3_level_entries
  *
@@ -67,7 +66,7 @@
  *   Metropolis acceptance keeps the uniform measure on the sphere invariant
  *   when E is flat. sigma = pi max(T / T0, 0.01) as in 2D.
  *
- * ANNEALING (nl_cheng3_sa_run): nl_cheng.h's schedule exactly (T0 from 200
+ * ANNEALING (nl_cheng_sa_run): nl_cheng.h's schedule exactly (T0 from 200
  *   trial moves and p0, geometric cooling over t_decades in n_temps steps,
  *   moves_per_var * n_vars moves per temperature, stall rule, best state
  *   restored), from gsl_rng MT19937 seeded by nl_seed_stream(seed, "cheng3.anneal", 0).
@@ -147,24 +146,6 @@ void nl_cheng3_propose(const double v[3], double sigma, gsl_rng *rng, double out
 
 /* ---- annealing ------------------------------------------------------------ */
 
-/* One incremental problem as the annealer sees it: `move` proposes a step of
- * width sigma on variable var, applies it and returns the new E; `undo`
- * reverts it; save/restore copy the variables (state_size doubles); resum
- * clears rounding. */
-typedef struct {
-  void *ctx;
-  size_t n_vars, state_size;
-  double (*energy)(void *ctx);
-  double (*move)(void *ctx, size_t var, double sigma, gsl_rng *rng);
-  void (*undo)(void *ctx);
-  void (*save)(void *ctx, double *state);
-  void (*restore)(void *ctx, const double *state);
-  void (*resum)(void *ctx);
-} nl_cheng3_sa_ops;
-
-/* nl_cheng.h's ANNEALING schedule on any such problem. */
-void nl_cheng3_sa_run(const nl_cheng3_sa_ops *ops, const nl_cheng_schedule *s, gsl_rng *rng,
-                      nl_cheng_level_stats *st);
 /* All M entries, all octaves (see LEVELS). st may be NULL. */
 void nl_cheng3_optimise(nl_cheng3_problem *p, unsigned long seed, nl_cheng_level_stats *st);
 
