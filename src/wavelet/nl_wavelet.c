@@ -1,4 +1,5 @@
 #include "wavelet/nl_wavelet.h"
+#include "noise/nl_noise_lattice.h"   /* nl_noise_lmod: tile indices wrap into [0, n) */
 #include "simd/nl_simd.h"
 #include "wavelet/nl_wavelet_simd.h"
 
@@ -21,8 +22,6 @@ static double afilter(int j)   /* j in [-ARAD, ARAD) */
   int k = j + ARAD;
   return k < ARAD ? A_HALF[k] : A_HALF[2 * ARAD - 1 - k];
 }
-
-static long wrap(long i, long n) { long r = i % n; return r < 0 ? r + n : r; }
 
 nl_wavelet_tile *nl_wavelet_tile_alloc(int dim, int n)
 {
@@ -51,14 +50,14 @@ void nl_wavelet_coarse_line(const float *line, size_t stride, int n, double *coa
   for (int i = 0; i < h; i++) {
     double s = 0;
     for (int k = 2 * i - ARAD; k < 2 * i + ARAD; k++)
-      s += afilter(k - 2 * i) * line[(size_t)wrap(k, n) * stride];
+      s += afilter(k - 2 * i) * line[(size_t)nl_noise_lmod(k, n) * stride];
     down[i] = s;
   }
   /* Upsample with {1/4, 3/4, 3/4, 1/4} centred at 2: p[i - 2k]. */
   static const double P[4] = {0.25, 0.75, 0.75, 0.25};
   for (int i = 0; i < n; i++) {
     double s = 0;
-    for (int k = i / 2; k <= i / 2 + 1; k++) s += P[i - 2 * k + 2] * down[wrap(k, h)];
+    for (int k = i / 2; k <= i / 2 + 1; k++) s += P[i - 2 * k + 2] * down[nl_noise_lmod(k, h)];
     coarse[i] = s;
   }
 }
@@ -104,8 +103,8 @@ static void tile_seed(nl_wavelet_tile *t, unsigned long seed, int transposed)
   for (size_t i = 0; i < total; i++) {
     long x = (long)(i % n), y = (long)((i / n) % n), z = d == 3 ? (long)(i / ((size_t)n * n)) : 0;
     if (transposed) { long tmp = x; x = d == 3 ? z : y; if (d == 3) z = tmp; else y = tmp; }
-    size_t j = (size_t)wrap(x + off, n) + (size_t)wrap(y + off, n) * n
-             + (d == 3 ? (size_t)wrap(z + off, n) * n * n : 0);
+    size_t j = (size_t)nl_noise_lmod(x + off, n) + (size_t)nl_noise_lmod(y + off, n) * n
+             + (d == 3 ? (size_t)nl_noise_lmod(z + off, n) * n * n : 0);
     shifted[i] = t->data[j];
   }
   for (size_t i = 0; i < total; i++) t->data[i] += shifted[i];
@@ -141,8 +140,8 @@ static void collapse_init(const nl_wavelet_tile *t, double y, double z, collapse
   c->nrows = 0;
   for (int jz = 0; jz < (t->dim == 3 ? 3 : 1); jz++)
     for (int jy = 0; jy < 3; jy++) {
-      size_t base = (size_t)wrap(y0 + jy, n) * n
-                  + (t->dim == 3 ? (size_t)wrap(z0 + jz, n) * n * n : 0);
+      size_t base = (size_t)nl_noise_lmod(y0 + jy, n) * n
+                  + (t->dim == 3 ? (size_t)nl_noise_lmod(z0 + jz, n) * n * n : 0);
       c->rows[c->nrows] = t->data + base;
       c->wt[c->nrows++] = t->dim == 3 ? wz[jz] * wy[jy] : wy[jy];
     }
@@ -162,7 +161,7 @@ static double eval_point(const nl_wavelet_tile *t, double x, double y, double z)
   double wx[3];
   long x0 = bspline(x, wx);
   double s = 0;
-  for (int j = 0; j < 3; j++) s += wx[j] * collapse_column(&c, wrap(x0 + j, t->n));
+  for (int j = 0; j < 3; j++) s += wx[j] * collapse_column(&c, nl_noise_lmod(x0 + j, t->n));
   return s;
 }
 
@@ -197,7 +196,7 @@ static int simd_row(const double *line, long n, double x0, double dx, size_t cou
   double sL[SIMD_STACK_COLS];
   double *L = len <= SIMD_STACK_COLS ? sL : nl_xmalloc(len * sizeof *L);
   memset(L + ncol, 0, (len - ncol) * sizeof *L);
-  for (size_t c = 0; c < ncol; c++) L[c] = line[wrap(a + (long)c, n)];
+  for (size_t c = 0; c < ncol; c++) L[c] = line[nl_noise_lmod(a + (long)c, n)];
   row(L, a, x0, dx, count, weight, out);
   if (L != sL) free(L);
   return GSL_SUCCESS;
@@ -222,7 +221,7 @@ void nl_wavelet_row(const nl_wavelet_tile *t, double x0, double dx, double y, do
   }
   for (size_t k = 0; k < count; k++) {
     double wx[3];
-    long i = wrap(bspline(x0 + (double)k * dx, wx), n);
+    long i = nl_noise_lmod(bspline(x0 + (double)k * dx, wx), n);
     out[k] += weight * (wx[0] * line[i] + wx[1] * line[i + 1] + wx[2] * line[i + 2]);
   }
   free(line);
