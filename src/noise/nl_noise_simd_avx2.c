@@ -2,13 +2,8 @@
  * doubles a vector. Compiled with a target pragma, never -march: called only
  * when the dispatcher has seen the CPU support it. No FMA: see
  * nl_noise_simd.h. */
-#if defined(__clang__)   /* clang has no GCC target pragma; popped at the end */
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC target("avx2")
-#endif
-#include "noise/nl_noise_simd.h"
 #include "simd/nl_simd_avx2.h"   /* vd, vl, v_floor, v_ceil, v_all */
+#include "noise/nl_noise_simd.h"
 #include <string.h>
 
 #define NL_SIMD_W 4

@@ -11,13 +11,8 @@
  * (vpermt2pd), and the sample loop of a row reads its columns through a
  * window of 8 loaded once per 8 samples (vpermpd).
  */
-#if defined(__clang__)   /* clang has no GCC target pragma; popped at the end */
-#pragma clang attribute push(__attribute__((target("avx512f,avx512dq,avx512bw,avx512vl,avx512vbmi,avx2"))), apply_to = function)
-#else
-#pragma GCC target("avx512f,avx512dq,avx512bw,avx512vl,avx512vbmi,avx2")
-#endif
-#include "noise/nl_noise_simd.h"
 #include "simd/nl_simd_avx512.h"   /* vd, vl, v_floor, v_ceil, v_all */
+#include "noise/nl_noise_simd.h"
 #include <math.h>
 #include <string.h>
 

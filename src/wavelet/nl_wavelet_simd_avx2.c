@@ -1,13 +1,8 @@
 /* nl_wavelet_simd_avx2.c - nl_wavelet_simd_body.h for AVX2, 4 doubles a
  * vector. Compiled with a target pragma, never -march: called only when
  * the library's level (nl_simd_get) says the CPU runs it. No FMA. */
-#if defined(__clang__)   /* clang has no GCC target pragma; popped at the end */
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC target("avx2")
-#endif
-#include "wavelet/nl_wavelet_simd.h"
 #include "simd/nl_simd_avx2.h"   /* vd, vl, v_ceil */
+#include "wavelet/nl_wavelet_simd.h"
 
 #define NL_SIMD_W 4
 typedef int vi __attribute__((vector_size(16)));

@@ -2,13 +2,8 @@
  * BW, VL, VBMI), 8 doubles a vector, with a windowed loop for dense rows.
  * Compiled with a target pragma, never -march: called only when the
  * library's level (nl_simd_get) says the CPU runs it. No FMA. */
-#if defined(__clang__)   /* clang has no GCC target pragma; popped at the end */
-#pragma clang attribute push(__attribute__((target("avx512f,avx512dq,avx512bw,avx512vl,avx512vbmi,avx2"))), apply_to = function)
-#else
-#pragma GCC target("avx512f,avx512dq,avx512bw,avx512vl,avx512vbmi,avx2")
-#endif
-#include "wavelet/nl_wavelet_simd.h"
 #include "simd/nl_simd_avx512.h"   /* vd, vl, v_ceil */
+#include "wavelet/nl_wavelet_simd.h"
 #include <math.h>
 
 #define NL_SIMD_W 8
