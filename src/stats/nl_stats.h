@@ -59,6 +59,10 @@
  * right-continuous step function F_n(t) = #{x_i <= t} / n
  * (scipy.stats.ecdf); nl_stats_histogram_uniform fills a gsl_histogram.
  *
+ * Also here: the mean, sd and min of a sample in two named roundings
+ * (nl_stats_mean_sd, nl_summary.c) and the sorts under all of the above
+ * (nl_stats_sort, nl_stats_argsort, nl_sort.c).
+ *
  * Conventions: inputs are const and never reordered (a sorted copy is made);
  * n >= 1 for the one-sample tests; NaN or infinite data give NL_EINVAL; a CDF
  * callback must return values in [0, 1] (others are an error).
