@@ -1,6 +1,7 @@
 #include "base/nl_base.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -324,4 +325,17 @@ unsigned long nl_seed_stream(unsigned long seed, const char *role, unsigned long
 unsigned long nl_seed_replicate(unsigned long base, long k)
 {
   return base + (unsigned long)k;
+}
+
+double nl_wrap_angle(double t)
+{
+  t = fmod(t, NL_TWO_PI);
+  if (t < 0) t += NL_TWO_PI;
+  return t >= NL_TWO_PI ? 0.0 : t;
+}
+
+double nl_lgamma(double x)
+{
+  int sign;
+  return lgamma_r(x, &sign);
 }

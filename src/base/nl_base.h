@@ -180,4 +180,13 @@ double nl_time_thread_cpu(void);
 #define NL_PI 3.14159265358979323846
 #define NL_TWO_PI 6.28318530717958647692
 
+/* An angle reduced to [0, 2 pi): fmod, then + 2 pi for negatives, and 0 for
+ * a t just below 0, whose t + 2 pi rounds up to 2 pi itself (so that a
+ * gradient table's angles, and KS statistics over them, stay in range). */
+double nl_wrap_angle(double t);
+
+/* log |Gamma(x)|, the value of lgamma, without writing lgamma's global
+ * signgam (a data race when p-values are computed in threads). */
+double nl_lgamma(double x);
+
 #endif

@@ -63,10 +63,7 @@ void nl_parallel_for(size_t n, int nthreads, nl_parallel_fn fn, void *ctx)
     return;
   }
   /* OpenBLAS's own threads off while ours run (see the header). */
-  int (*get)(void) = (int (*)(void))dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
-  void (*set)(int) = (void (*)(int))dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
-  int blas = get && set ? get() : 0;
-  if (blas > 1) set(1);
+  int blas = nl_parallel_blas_limit();
   region r = {.n = n, .fn = fn, .ctx = ctx};
   atomic_init(&r.next, 0);
   worker w[NL_PARALLEL_MAX];
@@ -79,7 +76,33 @@ void nl_parallel_for(size_t n, int nthreads, nl_parallel_fn fn, void *ctx)
   }
   run_items(&r, 0);
   for (int t = 1; t < started; t++) pthread_join(th[t], NULL);
-  if (blas > 1) set(blas);
+  nl_parallel_blas_restore(blas);
+}
+
+typedef int (*blas_get_fn)(void);
+typedef void (*blas_set_fn)(int);
+
+int nl_parallel_blas_threads(void)
+{
+  blas_get_fn get = (blas_get_fn)dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
+  return get ? get() : -1;
+}
+
+int nl_parallel_blas_limit(void)
+{
+  blas_get_fn get = (blas_get_fn)dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
+  blas_set_fn set = (blas_set_fn)dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
+  if (!get || !set) return 0;
+  int was = get();
+  if (was <= 1) return 0;
+  set(1);
+  return was;
+}
+
+void nl_parallel_blas_restore(int was)
+{
+  blas_set_fn set = (blas_set_fn)dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
+  if (was > 1 && set) set(was);
 }
 
 void nl_parallel_blas_idle(void)

@@ -62,6 +62,20 @@ int nl_parallel_cores(void);
  * before any BLAS call is running. */
 void nl_parallel_blas_idle(void);
 
+/* OpenBLAS's thread count, one home for its run-time look-up (dlsym of
+ * openblas_get_num_threads / openblas_set_num_threads: the library builds
+ * and runs without OpenBLAS).
+ *   nl_parallel_blas_threads: the count, -1 when OpenBLAS is not loaded.
+ *   nl_parallel_blas_limit: sets OpenBLAS to one thread when it runs more,
+ *     and returns the count to hand back (0: nothing changed).
+ *   nl_parallel_blas_restore: gives it back (a no-op for 0).
+ *   int was = nl_parallel_blas_limit();
+ *   ...   // our own threads, or BLAS calls too small to split
+ *   nl_parallel_blas_restore(was); */
+int nl_parallel_blas_threads(void);
+int nl_parallel_blas_limit(void);
+void nl_parallel_blas_restore(int was);
+
 /* The most threads nl_parallel_for starts. */
 #define NL_PARALLEL_MAX 64
 

@@ -322,6 +322,38 @@ static void product(const double *a, const double *b, double *c, size_t n)
   gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, &A.matrix, &B.matrix, 0.0, &C.matrix);
 }
 
+/* nl_wrap_angle lands in [0, 2 pi) from either side, 0 for the angles
+ * just below 0 whose sum with 2 pi rounds to 2 pi; nl_lgamma is lgamma. */
+NL_TEST(wrap_angle_and_lgamma)
+{
+  NL_CHECK(nl_wrap_angle(0) == 0 && nl_wrap_angle(NL_TWO_PI) == 0);
+  NL_CHECK_NEAR(nl_wrap_angle(-1.0), NL_TWO_PI - 1.0, 0);
+  NL_CHECK_NEAR(nl_wrap_angle(3 * NL_TWO_PI + 0.5), fmod(3 * NL_TWO_PI + 0.5, NL_TWO_PI), 0);
+  NL_CHECK(nl_wrap_angle(-1e-300) == 0);   /* -1e-300 + 2 pi rounds to 2 pi */
+  for (double t = -50; t < 50; t += 0.37) {
+    double w = nl_wrap_angle(t);
+    NL_CHECK(w >= 0 && w < NL_TWO_PI);
+  }
+  const double xs[] = {0.5, 1, 2, 10.5, 171.3, 1e5, -2.5};
+  for (size_t k = 0; k < sizeof xs / sizeof *xs; k++) NL_CHECK(nl_lgamma(xs[k]) == lgamma(xs[k]));
+  NL_CHECK_NEAR(nl_lgamma(5), log(24.0), 1e-15);
+}
+
+/* The limit/restore pair: OpenBLAS at one thread in between, its count
+ * given back after; nothing changes without OpenBLAS or at one thread. */
+NL_TEST(blas_limit_and_restore)
+{
+  int (*blas_get)(void) = (int (*)(void))dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
+  int before = nl_parallel_blas_threads();
+  NL_CHECK(before == (blas_get ? blas_get() : -1));
+  int was = nl_parallel_blas_limit();
+  NL_CHECK(was == (before > 1 ? before : 0));
+  if (blas_get) NL_CHECK(nl_parallel_blas_threads() == 1 || before < 1);
+  nl_parallel_blas_restore(was);
+  NL_CHECK(nl_parallel_blas_threads() == before);
+  printf("  OpenBLAS threads: %d (-1: not loaded)\n", before);
+}
+
 /* nl_parallel_blas_idle stops OpenBLAS's idle workers (the process has
  * fewer threads), and a threaded product afterwards, which starts them
  * again, gives the bytes of one before. */

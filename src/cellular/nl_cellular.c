@@ -1,5 +1,7 @@
 #include "cellular/nl_cellular.h"
 #include "cellular/nl_cellular_simd.h"
+#include "simd/nl_simd.h"
+#include "noise/nl_noise_lattice.h"   /* nl_noise_lfloor: the cube of a point, for every double */
 
 #include <ctype.h>
 #include <gsl/gsl_randist.h>
@@ -9,13 +11,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* floor as a long, defined for every double (see lfloor in nl_noise.c):
- * beyond 2^62 the cube index wraps modulo 2^62, NaN and inf map to 0. */
-static inline long lfloor(double x)
-{
-  if (x > -0x1p62 && x < 0x1p62) { long i = (long)x; return i - (x < (double)i); }
-  return isfinite(x) ? (long)fmod(x, 0x1p62) : 0;
-}
 
 /* ---- tables ------------------------------------------------------------ */
 
@@ -36,7 +31,7 @@ nl_status nl_cellular_alloc(double lambda, int M, nl_cellular_count_rule rule, u
   /* eq. 3 in log form: lambda^m / m! overflows long before M = 64 would. */
   double acc = 0.0;
   for (int m = 0; m <= M; m++) {
-    c->pmf[m] = exp(m * log(lambda) - lambda - lgamma(m + 1.0));
+    c->pmf[m] = exp(m * log(lambda) - lambda - nl_lgamma(m + 1.0));
     acc += c->pmf[m];
     c->cdf[m] = acc;
   }
@@ -170,7 +165,7 @@ static void axis_classes(double v, long i, long off[3], double b2[3])
 void nl_cellular_eval(const nl_cellular *c, const double *xyz, int n, double *F)
 {
   double pts[3 * NL_CELLULAR_MAX_M], d2[NL_CELLULAR_NMAX];
-  long i = lfloor(xyz[0]), j = lfloor(xyz[1]), k = lfloor(xyz[2]);
+  long i = nl_noise_lfloor(xyz[0]), j = nl_noise_lfloor(xyz[1]), k = nl_noise_lfloor(xyz[2]);
   reset_d2(d2, n);
   if (!(fabs(xyz[0]) < 0x1p52 && fabs(xyz[1]) < 0x1p52 && fabs(xyz[2]) < 0x1p52)) {
     /* Steps 2-6: the cube around x and its 26 neighbours, all of them. */
@@ -211,7 +206,7 @@ typedef struct {
 
 static void rowbuf_fill(const nl_cellular *c, long ifirst, size_t ncol, double y, double z, rowbuf *b)
 {
-  long j = lfloor(y), k = lfloor(z), offy[3], offz[3];
+  long j = nl_noise_lfloor(y), k = nl_noise_lfloor(z), offy[3], offz[3];
   b->r.ifirst = ifirst;
   b->r.ncol = ncol;
   axis_classes(y, j, offy, b->r.by2);
@@ -260,7 +255,7 @@ static void row_scalar(const nl_cellular_rowpts *R, double x0, double dx, size_t
   long offx[3];
   for (size_t s = 0; s < count; s++) {
     double x = x0 + (double)s * dx;
-    long i = lfloor(x);
+    long i = nl_noise_lfloor(x);
     size_t col = (size_t)(i - R->ifirst);   /* >= 1: ifirst has a margin */
     axis_classes(x, i, offx, bx2);
     reset_d2(d2, n);
@@ -285,8 +280,8 @@ void nl_cellular_row(const nl_cellular *c, double x0, double dx, double y, doubl
   long ifirst = 0, ilast = 0;
   int pointwise = !(fabs(x0) < 0x1p52 && fabs(xl) < 0x1p52 && fabs(y) < 0x1p52 && fabs(z) < 0x1p52);
   if (!pointwise) {   /* a sparse row: buckets would cost more */
-    ifirst = lfloor(fmin(x0, xl)) - 1;
-    ilast = lfloor(fmax(x0, xl)) + 1;
+    ifirst = nl_noise_lfloor(fmin(x0, xl)) - 1;
+    ilast = nl_noise_lfloor(fmax(x0, xl)) + 1;
     pointwise = (size_t)(ilast - ifirst + 1) > 2 * count + 8;
   }
   if (pointwise) {   /* also: no fractional cells, NaN or inf (the full scan) */
@@ -298,10 +293,10 @@ void nl_cellular_row(const nl_cellular *c, double x0, double dx, double y, doubl
   }
   rowbuf b;
   rowbuf_fill(c, ifirst, (size_t)(ilast - ifirst + 1), y, z, &b);
-  switch (nl_noise_simd_get()) {   /* the noise module's level: NL_NOISE_SIMD, nl_noise_simd_set */
-  case NL_NOISE_SIMD_SSE2: nl_cellular_row_sse2(&b.r, x0, dx, count, n, F); break;
-  case NL_NOISE_SIMD_AVX2: nl_cellular_row_avx2(&b.r, x0, dx, count, n, F); break;
-  case NL_NOISE_SIMD_AVX512: nl_cellular_row_avx512(&b.r, x0, dx, count, n, F); break;
+  switch (nl_simd_get()) {   /* the library's level: NL_NOISE_SIMD, nl_simd_set */
+  case NL_SIMD_SSE2: nl_cellular_row_sse2(&b.r, x0, dx, count, n, F); break;
+  case NL_SIMD_AVX2: nl_cellular_row_avx2(&b.r, x0, dx, count, n, F); break;
+  case NL_SIMD_AVX512: nl_cellular_row_avx512(&b.r, x0, dx, count, n, F); break;
   default: row_scalar(&b.r, x0, dx, count, n, F);
   }
   rowbuf_free(&b);

@@ -34,7 +34,7 @@
  * in the distance's own operation order) is already >= the current F_n^2:
  * none of its points could enter, so the bits are those of the full 27-cube
  * scan (nl_cellular_simd.h; test_cellular_simd.c). Rows run on the noise
- * module's SIMD level (nl_noise_simd_get: scalar, SSE2, AVX2, AVX-512 chosen
+ * library's SIMD level (nl_simd_get: scalar, SSE2, AVX2, AVX-512 chosen
  * at run time, NL_NOISE_SIMD to force one), every level the same bits.
  *
  * GCTBF (eq. 1):  GCTBF(x) = sum_i c_i F_i(x) + sum_{i,j} c_ij F_i(x) F_j(x),

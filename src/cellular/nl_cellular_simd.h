@@ -1,7 +1,7 @@
 /* nl_cellular_simd.h - private to src/cellular: the points of a row of
  * cellular F1..F4 (nl_cellular_row) as the sample kernels read them, and the
  * kernels of each SIMD level (issue 17), chosen at run time by the noise
- * module's level (nl_noise_simd_get: NL_NOISE_SIMD, nl_noise_simd_set).
+ * library's level (nl_simd_get: NL_NOISE_SIMD, nl_simd_set).
  *
  * Per-cube distance rejection. A sample x in cube (i, j, k) looks at the
  * 27 cubes around it (nl_cellular.h). Every feature point of the neighbour

@@ -22,12 +22,8 @@
 #include <math.h>
 #include <string.h>
 
-static inline vd splat(double x)
-{
-  vd v;
-  for (int l = 0; l < NL_CELL_W; l++) v[l] = x;
-  return v;
-}
+#define NL_SIMD_W NL_CELL_W
+#include "simd/nl_simd_vec.h"   /* splat */
 static inline vd sel(vl m, vd a, vd b) { return (vd)((m & (vl)a) | (~m & (vl)b)); }
 
 typedef struct { vd d[4]; } dset;

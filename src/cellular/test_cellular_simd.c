@@ -110,18 +110,18 @@ static void compare(nl_cellular_count_rule rule, unsigned long seed)
       ref_eval(c, p, n, ref + s * (size_t)n);
     }
     for (int L = 0; L < nlevels; L++) {
-      nl_noise_simd_set(levels[L]);
+      nl_simd_set(levels[L]);
       memset(got, 0xa5, 4 * MAXROW * sizeof *got);
       nl_cellular_row(c, x0, dx, y, z, cnt, n, got);
       if (memcmp(ref, got, cnt * (size_t)n * sizeof *ref)) {
         if (!bad++)
           fprintf(stderr, "  row %s x0=%.17g dx=%.17g y=%.17g z=%.17g count=%zu n=%d differs\n",
-                  nl_noise_simd_name(levels[L]), x0, dx, y, z, cnt, n);
+                  nl_simd_name(levels[L]), x0, dx, y, z, cnt, n);
       }
       compared += (long)cnt;
     }
   }
-  nl_noise_simd_set(nl_noise_simd_best());
+  nl_simd_set(nl_simd_best());
   NL_CHECK(bad == 0);
   free(ref); free(got);
   gsl_rng_free(r);
@@ -130,14 +130,14 @@ static void compare(nl_cellular_count_rule rule, unsigned long seed)
 
 NL_TEST(every_level_gives_the_full_scan_bits)
 {
-  for (int l = NL_NOISE_SIMD_SCALAR; l <= NL_NOISE_SIMD_AVX512; l++) {
-    if (nl_noise_simd_supported(l))
+  for (int l = NL_SIMD_SCALAR; l <= NL_SIMD_AVX512; l++) {
+    if (nl_simd_supported(l))
       levels[nlevels++] = l;
     else
-      nl_test_skip("the %s level: not compared, this CPU cannot run it", nl_noise_simd_name(l));
+      nl_test_skip("the %s level: not compared, this CPU cannot run it", nl_simd_name(l));
   }
   printf("  levels:");
-  for (int k = 0; k < nlevels; k++) printf(" %s", nl_noise_simd_name(levels[k]));
+  for (int k = 0; k < nlevels; k++) printf(" %s", nl_simd_name(levels[k]));
   printf("\n");
   NL_CHECK(nlevels >= 2);
   compare(NL_COUNT_INVERSE_CDF, 1);

@@ -264,7 +264,30 @@ typedef struct {
   double seconds;
 } nl_cheng_level_stats;
 
-/* Anneals the current level's variables (schedule from the config). */
+/* One incremental problem as the annealer sees it: `move` proposes a step of
+ * width sigma on variable var (0 <= var < n_vars), applies it and returns
+ * the new E; `undo` reverts it exactly; save/restore copy the variables
+ * (state_size doubles); resum clears the rounding of running sums. */
+typedef struct {
+  void *ctx;
+  size_t n_vars, state_size;
+  double (*energy)(void *ctx);
+  double (*move)(void *ctx, size_t var, double sigma, gsl_rng *rng);
+  void (*undo)(void *ctx);
+  void (*save)(void *ctx, double *state);
+  void (*restore)(void *ctx, const double *state);
+  void (*resum)(void *ctx);
+} nl_cheng_sa_ops;
+
+/* The ANNEALING schedule above on any such problem (the 2D levels and the
+ * 3D model both run it): T0 from 200 trial moves of width pi, Metropolis
+ * sweeps, geometric cooling, the stall rule, the best end-of-temperature
+ * state restored. st (may be NULL) gets level 1; a caller running several
+ * levels sets its own. */
+void nl_cheng_sa_run(const nl_cheng_sa_ops *ops, const nl_cheng_schedule *s, gsl_rng *rng,
+                     nl_cheng_level_stats *st);
+/* Anneals the current level's variables (schedule from the config) with
+ * nl_cheng_sa_run. */
 void nl_cheng_anneal(nl_cheng_problem *p, gsl_rng *rng, nl_cheng_level_stats *st);
 /* Eq. 3.13: the current level's variables take their parents' angles. No-op at
  * level 1. */

@@ -1,5 +1,6 @@
-/* Controllable gradient noise in 3D: table, noise, patterns, the incremental
- * problem and the proposal (the model is documented in nl_cheng3.h). */
+/* Controllable gradient noise in 3D: patterns, the incremental problem and
+ * the proposal over an nl_noise_grad3 table (the model is documented in
+ * nl_cheng3.h). */
 #include "cheng/nl_cheng3.h"
 #include "stats/nl_stats.h"
 
@@ -8,100 +9,6 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* ---- table and noise ---------------------------------------------------- */
-
-nl_cheng3_table *nl_cheng3_table_alloc(size_t m)
-{
-  nl_cheng3_table *t = nl_xcalloc(1, sizeof *t);
-  t->m = m;
-  t->v = nl_xcalloc(3 * m, sizeof *t->v);
-  t->z = nl_xcalloc(m, sizeof *t->z);
-  t->phi = nl_xcalloc(m, sizeof *t->phi);
-  t->perm = nl_xcalloc(m, sizeof *t->perm);
-  for (size_t k = 0; k < m; k++) { t->perm[k] = (unsigned)k; t->v[3 * k + 2] = t->z[k] = 1; }
-  return t;
-}
-
-void nl_cheng3_table_free(nl_cheng3_table *t)
-{
-  if (!t) return;
-  free(t->v); free(t->z); free(t->phi); free(t->perm); free(t);
-}
-
-void nl_cheng3_table_set(nl_cheng3_table *t, size_t k, const double u[3])
-{
-  double n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]), *v = t->v + 3 * k;
-  for (int a = 0; a < 3; a++) v[a] = u[a] / n;
-  t->z[k] = fmax(-1.0, fmin(1.0, v[2]));
-  double ph = atan2(v[1], v[0]);
-  if (ph < 0) ph += NL_TWO_PI;
-  t->phi[k] = ph >= NL_TWO_PI ? 0.0 : ph;   /* -tiny + 2 pi rounds to 2 pi */
-}
-
-void nl_cheng3_table_seed(nl_cheng3_table *t, unsigned long seed)
-{
-  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(r, nl_seed_stream(seed, "cheng3.table", 0));
-  for (size_t k = 0; k < t->m; k++) {   /* hat-box: z ~ U(-1, 1), phi ~ U(0, 2 pi) */
-    double z = 2 * gsl_rng_uniform(r) - 1, ph = NL_TWO_PI * gsl_rng_uniform(r), s = sqrt(1 - z * z);
-    double u[3] = {s * cos(ph), s * sin(ph), z};
-    nl_cheng3_table_set(t, k, u);
-  }
-  for (size_t k = 0; k < t->m; k++) t->perm[k] = (unsigned)k;
-  gsl_ran_shuffle(r, t->perm, t->m, sizeof *t->perm);
-  gsl_rng_free(r);
-}
-
-void nl_cheng3_table_copy(nl_cheng3_table *dst, const nl_cheng3_table *src)
-{
-  memcpy(dst->v, src->v, 3 * src->m * sizeof *dst->v);
-  memcpy(dst->z, src->z, src->m * sizeof *dst->z);
-  memcpy(dst->phi, src->phi, src->m * sizeof *dst->phi);
-  memcpy(dst->perm, src->perm, src->m * sizeof *dst->perm);
-}
-
-static long lmod(long a, long m) { long r = a % m; return r < 0 ? r + m : r; }
-
-size_t nl_cheng3_table_index(const nl_cheng3_table *t, long i, long j, long k)
-{
-  long m = (long)t->m;
-  return t->perm[lmod((long)t->perm[lmod((long)t->perm[lmod(i, m)] + lmod(j, m), m)] + lmod(k, m), m)];
-}
-
-static double fade(double t) { return t * t * t * (t * (t * 6 - 15) + 10); }
-
-/* The 8 corners of the cell holding p: entries and weight vectors
- * w(u) w(v) w(w) Delta (Delta = p - corner), times amp. */
-static void corners(const nl_cheng3_table *t, const double p[3], double amp, uint32_t *ck, double *cw)
-{
-  long c0[3];
-  double f[3], w[3][2];
-  for (int a = 0; a < 3; a++) {
-    c0[a] = (long)floor(p[a]);
-    f[a] = p[a] - (double)c0[a];
-    w[a][1] = fade(f[a]);
-    w[a][0] = 1 - w[a][1];
-  }
-  for (int q = 0; q < 8; q++) {
-    int b[3] = {q & 1, (q >> 1) & 1, (q >> 2) & 1};
-    ck[q] = (uint32_t)nl_cheng3_table_index(t, c0[0] + b[0], c0[1] + b[1], c0[2] + b[2]);
-    double ww = amp * w[0][b[0]] * w[1][b[1]] * w[2][b[2]];
-    for (int a = 0; a < 3; a++) cw[3 * q + a] = ww * (f[a] - b[a]);
-  }
-}
-
-double nl_cheng3_noise(const nl_cheng3_table *t, double x, double y, double z)
-{
-  uint32_t ck[8];
-  double cw[24], p[3] = {x, y, z}, s = 0;
-  corners(t, p, 1.0, ck, cw);
-  for (int q = 0; q < 8; q++) {
-    const double *g = t->v + 3 * ck[q];
-    s += cw[3 * q] * g[0] + cw[3 * q + 1] * g[1] + cw[3 * q + 2] * g[2];
-  }
-  return s;
-}
 
 /* ---- patterns ----------------------------------------------------------- */
 
@@ -162,7 +69,7 @@ nl_cheng3_config nl_cheng3_config_default(void)
 struct nl_cheng3_problem {
   nl_cheng3_config c;
   const nl_cheng3_pattern *pat;
-  nl_cheng3_table *t;
+  nl_noise_grad3 *t;
   size_t m, np, nc;      /* nc = F * 8 corners per point */
   double s;              /* 1 / (B3 sum 1/a_l) */
   uint32_t *ck;          /* np * nc entries */
@@ -203,10 +110,11 @@ static void build(nl_cheng3_problem *p)
     asum += 1 / a;
     for (size_t i = 0; i < p->np; i++) {
       double q[3] = {f * pat->x[i], f * pat->y[i], f * pat->z[i]};
-      corners(p->t, q, 1 / a, p->ck + i * p->nc + 8 * l, p->cw + 3 * (i * p->nc + 8 * l));
+      nl_noise_grad3_corners(p->t, q[0], q[1], q[2], 1 / a, p->ck + i * p->nc + 8 * l,
+                             p->cw + 3 * (i * p->nc + 8 * l));
     }
   }
-  p->s = 1 / (NL_CHENG3_BOUND * asum);
+  p->s = 1 / (NL_NOISE_GRAD3_BOUND * asum);
   /* Inverted lists: (entry, point) pairs sorted, duplicates merged. */
   size_t nt = p->np * p->nc, nu = 0;
   triple *tr = nl_xmalloc(nt * sizeof *tr);
@@ -257,7 +165,7 @@ void nl_cheng3_resum(nl_cheng3_problem *p)
 }
 
 nl_cheng3_problem *nl_cheng3_problem_alloc(const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
-                                           nl_cheng3_table *t, nl_error *err)
+                                           nl_noise_grad3 *t, nl_error *err)
 {
   if (nl_cheng_config_check(c, err) != NL_OK) return NULL;
   if (c->m != t->m) { nl_fail(err, NL_EINVAL, "config M = %zu but table has %zu entries", c->m, t->m); return NULL; }
@@ -296,12 +204,12 @@ double nl_cheng3_energy(const nl_cheng3_problem *p, double *e_stat, double *e_co
 
 double nl_cheng3_move(nl_cheng3_problem *p, size_t k, const double u[3])
 {
-  nl_cheng3_table *t = p->t;
+  nl_noise_grad3 *t = p->t;
   double *g = t->v + 3 * k, oz = t->z[k], oph = t->phi[k];
   p->has_undo = 1; p->uk = k; p->u_stat = p->e_stat; p->u_con = p->e_con; p->u_e = p->e;
   memcpy(p->uv, g, sizeof p->uv);
   p->uz = oz; p->uphi = oph;
-  nl_cheng3_table_set(t, k, u);
+  nl_noise_grad3_set(t, k, u);
   double dg[3] = {g[0] - p->uv[0], g[1] - p->uv[1], g[2] - p->uv[2]};
   for (size_t q = p->lstart[k]; q < p->lstart[k + 1]; q++) {
     size_t i = p->litem[q];
@@ -324,7 +232,7 @@ void nl_cheng3_undo(nl_cheng3_problem *p)
 {
   if (!p->has_undo) return;
   size_t k = p->uk;
-  nl_cheng3_table *t = p->t;
+  nl_noise_grad3 *t = p->t;
   double nz = t->z[k], nph = t->phi[k];
   memcpy(t->v + 3 * k, p->uv, sizeof p->uv);   /* exactly the saved entry, not renormalised */
   t->z[k] = p->uz; t->phi[k] = p->uphi;
@@ -397,8 +305,9 @@ void nl_cheng3_optimise(nl_cheng3_problem *p, unsigned long seed, nl_cheng_level
 {
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, nl_seed_stream(seed, "cheng3.anneal", 0));
-  nl_cheng3_sa_ops ops = {p, p->m, 3 * p->m, op_energy, op_move, op_undo, op_save, op_restore, op_resum};
-  nl_cheng3_sa_run(&ops, &p->c.sched, rng, st);
+  nl_cheng_sa_ops ops = {p, p->m, 3 * p->m, op_energy, op_move, op_undo, op_save, op_restore,
+                         op_resum};
+  nl_cheng_sa_run(&ops, &p->c.sched, rng, st);
   if (st) st->level = 1;
   gsl_rng_free(rng);
 }

@@ -4,15 +4,14 @@
  * points on a G^3 grid and the same annealing schedule (nl_cheng_schedule).
  *
  * API (sections below in this order)
- *   table     nl_cheng3_table_alloc / _free / _seed / _set / _copy / _index,
- *             nl_cheng3_noise
+ *   table     nl_noise_grad3 (nl_noise.h): the noise, its table and its corners;
+ *             nl_cheng3_table and nl_cheng3_table_alloc / _seed / _free name it here
  *   pattern   nl_cheng3_pattern_shape, nl_cheng3_pattern_free
  *   config    nl_cheng3_config_default (nl_cheng_config, checked by nl_cheng_config_check)
  *   problem   nl_cheng3_problem_alloc / _free, nl_cheng3_energy, nl_cheng3_move /
  *             _undo, nl_cheng3_energy_full, nl_cheng3_resum, nl_cheng3_propose
- *   anneal    nl_cheng3_sa_ops, nl_cheng3_sa_run (the schedule loop, written
- *             against callbacks so any incremental problem can use it),
- *             nl_cheng3_optimise
+ *   anneal    nl_cheng3_optimise (on nl_cheng.h's nl_cheng_sa_run, the schedule
+ *             loop written against callbacks)
  *   eval      nl_cheng3_evaluate, nl_cheng3_value, nl_cheng3_value_grid, nl_cheng3_run,
  *             nl_cheng3_level_entries
  *
@@ -20,7 +19,7 @@
  *   nl_cheng3_pattern_shape("torus", 16, &pat, &err);   // 16^3 control points
  *   nl_cheng3_config c = nl_cheng3_config_default();
  *   nl_cheng3_eval ev;
- *   nl_cheng3_table *t;
+ *   nl_noise_grad3 *t;
  *   nl_cheng3_run(&c, pat, seed, &ev, NULL, &t, &err);  // random start, anneal, evaluate
  *
  * THE MODEL. Noise(x, y, z) = sum over the 8 cell corners (i, j, k) of
@@ -67,7 +66,7 @@
  *   Metropolis acceptance keeps the uniform measure on the sphere invariant
  *   when E is flat. sigma = pi max(T / T0, 0.01) as in 2D.
  *
- * ANNEALING (nl_cheng3_sa_run): nl_cheng.h's schedule exactly (T0 from 200
+ * ANNEALING (nl_cheng_sa_run): nl_cheng.h's schedule exactly (T0 from 200
  *   trial moves and p0, geometric cooling over t_decades in n_temps steps,
  *   moves_per_var * n_vars moves per temperature, stall rule, best state
  *   restored), from gsl_rng MT19937 seeded by nl_seed_stream(seed, "cheng3.anneal", 0).
@@ -81,35 +80,28 @@
  *   nl_cheng3_resum re-evaluates every point from its corners (each
  *   temperature), so rounding from differences never outlives one temperature.
  *   Tested (test_cheng3.c): incremental == full recomputation to 1e-12 after
- *   every move of a random sequence, and the stored corners == nl_cheng3_noise.
+ *   every move of a random sequence, and the stored corners == nl_noise_grad3_eval.
  */
 #ifndef NL_CHENG3_H
 #define NL_CHENG3_H
 
 #include "base/nl_base.h"
 #include "cheng/nl_cheng.h"
+#include "noise/nl_noise.h"
 
 #include <gsl/gsl_rng.h>
 
 /* ---- gradient table on the sphere -------------------------------------- */
 
-typedef struct {
-  size_t m;
-  double *v;         /* 3 m: unit vectors */
-  double *z, *phi;   /* cos(polar) in [-1, 1], azimuth in [0, 2 pi) */
-  unsigned *perm;    /* permutation of 0..m-1 */
-} nl_cheng3_table;
-
-nl_cheng3_table *nl_cheng3_table_alloc(size_t m);
-void nl_cheng3_table_free(nl_cheng3_table *t);
-/* Uniform directions (z ~ U(-1, 1), phi ~ U(0, 2 pi)) and a uniform permutation. */
-void nl_cheng3_table_seed(nl_cheng3_table *t, unsigned long seed);
-/* Entry k := the direction of u (normalised; u != 0). */
-void nl_cheng3_table_set(nl_cheng3_table *t, size_t k, const double u[3]);
-void nl_cheng3_table_copy(nl_cheng3_table *dst, const nl_cheng3_table *src);   /* same m */
-size_t nl_cheng3_table_index(const nl_cheng3_table *t, long i, long j, long k);
-double nl_cheng3_noise(const nl_cheng3_table *t, double x, double y, double z);
-#define NL_CHENG3_BOUND 0.86602540378443864676   /* sqrt(3)/2 */
+/* The table is nl_noise_grad3 (seeded from stream ("cheng3.table", 0)); the
+ * C8 experiment names it by these aliases. */
+typedef nl_noise_grad3 nl_cheng3_table;
+static inline nl_cheng3_table *nl_cheng3_table_alloc(size_t m) { return nl_noise_grad3_alloc(m); }
+static inline void nl_cheng3_table_free(nl_cheng3_table *t) { nl_noise_grad3_free(t); }
+static inline void nl_cheng3_table_seed(nl_cheng3_table *t, unsigned long seed)
+{
+  nl_noise_grad3_seed(t, seed);
+}
 
 /* ---- control pattern: a volume ------------------------------------------ */
 
@@ -141,7 +133,7 @@ typedef struct nl_cheng3_problem nl_cheng3_problem;
 
 /* Borrows the pattern and the table (edited by moves). */
 nl_cheng3_problem *nl_cheng3_problem_alloc(const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
-                                           nl_cheng3_table *t, nl_error *err);
+                                           nl_noise_grad3 *t, nl_error *err);
 void nl_cheng3_problem_free(nl_cheng3_problem *p);
 double nl_cheng3_energy(const nl_cheng3_problem *p, double *e_stat, double *e_con);
 /* Entry k := direction u (unit); returns the new E. _undo reverts the last move. */
@@ -154,24 +146,6 @@ void nl_cheng3_propose(const double v[3], double sigma, gsl_rng *rng, double out
 
 /* ---- annealing ------------------------------------------------------------ */
 
-/* One incremental problem as the annealer sees it: `move` proposes a step of
- * width sigma on variable var, applies it and returns the new E; `undo`
- * reverts it; save/restore copy the variables (state_size doubles); resum
- * clears rounding. */
-typedef struct {
-  void *ctx;
-  size_t n_vars, state_size;
-  double (*energy)(void *ctx);
-  double (*move)(void *ctx, size_t var, double sigma, gsl_rng *rng);
-  void (*undo)(void *ctx);
-  void (*save)(void *ctx, double *state);
-  void (*restore)(void *ctx, const double *state);
-  void (*resum)(void *ctx);
-} nl_cheng3_sa_ops;
-
-/* nl_cheng.h's ANNEALING schedule on any such problem. */
-void nl_cheng3_sa_run(const nl_cheng3_sa_ops *ops, const nl_cheng_schedule *s, gsl_rng *rng,
-                      nl_cheng_level_stats *st);
 /* All M entries, all octaves (see LEVELS). st may be NULL. */
 void nl_cheng3_optimise(nl_cheng3_problem *p, unsigned long seed, nl_cheng_level_stats *st);
 
@@ -189,20 +163,21 @@ typedef struct {
   double e_con_random;             /* E_Con of the start table (NAN from _evaluate alone) */
 } nl_cheng3_eval;
 
-nl_status nl_cheng3_evaluate(const nl_cheng3_table *t, const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
-                             nl_cheng3_eval *out, nl_error *err);
+nl_status nl_cheng3_evaluate(const nl_noise_grad3 *t, const nl_cheng3_config *c,
+                             const nl_cheng3_pattern *pat, nl_cheng3_eval *out, nl_error *err);
 /* The control value c = (1 + V) / 2 at one point (the noise kernel, all F octaves). */
-double nl_cheng3_value(const nl_cheng3_table *t, const nl_cheng3_config *c, double x, double y, double z);
+double nl_cheng3_value(const nl_noise_grad3 *t, const nl_cheng3_config *c, double x, double y,
+                       double z);
 /* c at the centres of an n^3 raster of [0,1)^3, index (k n + j) n + i (x fastest). */
-void nl_cheng3_value_grid(const nl_cheng3_table *t, const nl_cheng3_config *c, int n, double *out);
+void nl_cheng3_value_grid(const nl_noise_grad3 *t, const nl_cheng3_config *c, int n, double *out);
 /* Random table from nl_seed_stream(seed, "cheng3.table", 0), its E_Con as
  * e_con_random (its full evaluation in *start if not NULL), optimisation,
  * evaluation; the optimised table in *table_out if not NULL (caller frees). */
 nl_status nl_cheng3_run(const nl_cheng3_config *c, const nl_cheng3_pattern *pat, unsigned long seed,
                         nl_cheng3_eval *ev, nl_cheng3_eval *start, nl_cheng_level_stats *st,
-                        nl_cheng3_table **table_out, nl_error *err);
+                        nl_noise_grad3 **table_out, nl_error *err);
 /* counts[l] = entries first used by octave l+1's lattice ((ceil(f_l) + 1)^3
  * points), for l < octaves: what multi-level annealing would give each level. */
-void nl_cheng3_level_entries(const nl_cheng3_table *t, const nl_cheng3_config *c, size_t *counts);
+void nl_cheng3_level_entries(const nl_noise_grad3 *t, const nl_cheng3_config *c, size_t *counts);
 
 #endif

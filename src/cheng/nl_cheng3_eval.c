@@ -14,24 +14,27 @@ static double scale(const nl_cheng3_config *c)
 {
   double a = c->a1, asum = 0;
   for (int l = 0; l < c->octaves; l++, a *= 2) asum += 1 / a;
-  return 1 / (NL_CHENG3_BOUND * asum);
+  return 1 / (NL_NOISE_GRAD3_BOUND * asum);
 }
 
 /* c = (1 + V) / 2 at p with the noise kernel itself (not the optimiser's
  * stored corners: an independent path). */
-static double value_at(const nl_cheng3_table *t, const nl_cheng3_config *c, double s, double x, double y, double z)
+static double value_at(const nl_noise_grad3 *t, const nl_cheng3_config *c, double s, double x,
+                       double y, double z)
 {
   double f = c->f1, a = c->a1, v = 0;
-  for (int l = 0; l < c->octaves; l++, f *= 2, a *= 2) v += nl_cheng3_noise(t, f * x, f * y, f * z) / a;
+  for (int l = 0; l < c->octaves; l++, f *= 2, a *= 2)
+    v += nl_noise_grad3_eval(t, f * x, f * y, f * z) / a;
   return 0.5 * (1 + s * v);
 }
 
-double nl_cheng3_value(const nl_cheng3_table *t, const nl_cheng3_config *c, double x, double y, double z)
+double nl_cheng3_value(const nl_noise_grad3 *t, const nl_cheng3_config *c, double x, double y,
+                       double z)
 {
   return value_at(t, c, scale(c), x, y, z);
 }
 
-void nl_cheng3_value_grid(const nl_cheng3_table *t, const nl_cheng3_config *c, int n, double *out)
+void nl_cheng3_value_grid(const nl_noise_grad3 *t, const nl_cheng3_config *c, int n, double *out)
 {
   double s = scale(c);
   for (int k = 0; k < n; k++)
@@ -40,8 +43,8 @@ void nl_cheng3_value_grid(const nl_cheng3_table *t, const nl_cheng3_config *c, i
         out[((size_t)k * n + j) * n + i] = value_at(t, c, s, (i + 0.5) / n, (j + 0.5) / n, (k + 0.5) / n);
 }
 
-static double control_error(const nl_cheng3_table *t, const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
-                            double *r)
+static double control_error(const nl_noise_grad3 *t, const nl_cheng3_config *c,
+                            const nl_cheng3_pattern *pat, double *r)
 {
   double s = scale(c), e = 0, sv = 0, sd = 0, svv = 0, sdd = 0, svd = 0, n = (double)pat->n;
   for (size_t i = 0; i < pat->n; i++) {
@@ -56,8 +59,8 @@ static double control_error(const nl_cheng3_table *t, const nl_cheng3_config *c,
   return e;
 }
 
-nl_status nl_cheng3_evaluate(const nl_cheng3_table *t, const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
-                             nl_cheng3_eval *out, nl_error *err)
+nl_status nl_cheng3_evaluate(const nl_noise_grad3 *t, const nl_cheng3_config *c,
+                             const nl_cheng3_pattern *pat, nl_cheng3_eval *out, nl_error *err)
 {
   memset(out, 0, sizeof *out);
   nl_stats_ks_result rz, rp;
@@ -98,15 +101,15 @@ nl_status nl_cheng3_evaluate(const nl_cheng3_table *t, const nl_cheng3_config *c
 
 nl_status nl_cheng3_run(const nl_cheng3_config *c, const nl_cheng3_pattern *pat, unsigned long seed,
                         nl_cheng3_eval *ev, nl_cheng3_eval *start, nl_cheng_level_stats *st,
-                        nl_cheng3_table **table_out, nl_error *err)
+                        nl_noise_grad3 **table_out, nl_error *err)
 {
   if (nl_cheng_config_check(c, err) != NL_OK) return NL_EINVAL;
-  nl_cheng3_table *t = nl_cheng3_table_alloc(c->m);
-  nl_cheng3_table_seed(t, seed);
+  nl_noise_grad3 *t = nl_noise_grad3_alloc(c->m);
+  nl_noise_grad3_seed(t, seed);
   nl_cheng3_eval e0;
   nl_status rc = nl_cheng3_evaluate(t, c, pat, &e0, err);
   nl_cheng3_problem *p = rc == NL_OK ? nl_cheng3_problem_alloc(c, pat, t, err) : NULL;
-  if (!p) { nl_cheng3_table_free(t); return NL_EINVAL; }
+  if (!p) { nl_noise_grad3_free(t); return NL_EINVAL; }
   e0.e_con_random = e0.e_con;
   if (start) *start = e0;
   nl_cheng3_optimise(p, seed, st);
@@ -114,11 +117,11 @@ nl_status nl_cheng3_run(const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
   rc = nl_cheng3_evaluate(t, c, pat, ev, err);
   ev->e_con_random = e0.e_con;
   if (table_out && rc == NL_OK) *table_out = t;
-  else nl_cheng3_table_free(t);
+  else nl_noise_grad3_free(t);
   return rc;
 }
 
-void nl_cheng3_level_entries(const nl_cheng3_table *t, const nl_cheng3_config *c, size_t *counts)
+void nl_cheng3_level_entries(const nl_noise_grad3 *t, const nl_cheng3_config *c, size_t *counts)
 {
   unsigned char *seen = nl_xcalloc(t->m, 1);
   double f = c->f1;
@@ -128,7 +131,7 @@ void nl_cheng3_level_entries(const nl_cheng3_table *t, const nl_cheng3_config *c
     for (long k = 0; k <= L; k++)
       for (long j = 0; j <= L; j++)
         for (long i = 0; i <= L; i++) {
-          size_t e = nl_cheng3_table_index(t, i, j, k);
+          size_t e = nl_noise_grad3_index(t, i, j, k);
           if (!seen[e]) { seen[e] = 1; counts[l]++; }
         }
   }

@@ -1,4 +1,5 @@
-/* Simulated annealing of one level, propagation (eq. 3.13) and the
+/* Simulated annealing: the schedule against callbacks (nl_cheng_sa_run, which
+ * the 3D model runs too), one 2D level on it, propagation (eq. 3.13) and the
  * multi-level loop of sec. 3.4.2; the schedule is documented in nl_cheng.h. */
 #include "cheng/nl_cheng_internal.h"
 
@@ -8,93 +9,114 @@
 
 #define TRIAL_MOVES 200
 
-static double wrap_angle(double t)
+/* ---- the schedule, against callbacks ----------------------------------- */
+
+/* T0 so that an average uphill move of the widest step (sigma = pi) is
+ * accepted with probability p0; trial moves are undone. */
+static double initial_temperature(const nl_cheng_sa_ops *o, gsl_rng *rng, double p0)
 {
-  t = fmod(t, NL_TWO_PI);
-  if (t < 0) t += NL_TWO_PI;
-  return t >= NL_TWO_PI ? 0.0 : t;   /* t + 2pi can round up to 2pi */
+  double sum = 0, e = o->energy(o->ctx);
+  int up = 0;
+  for (int t = 0; t < TRIAL_MOVES; t++) {
+    double de = o->move(o->ctx, gsl_rng_uniform_int(rng, o->n_vars), NL_PI, rng) - e;
+    o->undo(o->ctx);
+    if (de > 0) { sum += de; up++; }
+  }
+  return up ? sum / up / log(1.0 / p0) : 1e-12 * (fabs(e) > 0 ? fabs(e) : 1.0);
 }
+
+void nl_cheng_sa_run(const nl_cheng_sa_ops *o, const nl_cheng_schedule *s, gsl_rng *rng,
+                     nl_cheng_level_stats *st)
+{
+  size_t nv = o->n_vars;
+  nl_cheng_level_stats z = {.level = 1, .n_vars = nv, .e_start = o->energy(o->ctx)};
+  z.e_best = z.e_start;
+  double t_start = nl_time_now();
+  if (nv == 0) { if (st) *st = z; return; }
+  double t0 = initial_temperature(o, rng, s->p0), T = t0;
+  double alpha = pow(10.0, -s->t_decades / s->n_temps);
+  long per_temp = (long)ceil(s->moves_per_var * (double)nv);
+  double *best = nl_xmalloc(o->state_size * sizeof *best), ebest = o->energy(o->ctx);
+  o->save(o->ctx, best);
+  int stall = 0;
+  z.t0 = t0;
+  for (z.temps = 0; z.temps < s->n_temps && stall < s->stall; z.temps++) {
+    double sigma = NL_PI * fmax(T / t0, 0.01);
+    for (long m = 0; m < per_temp; m++) {
+      double e0 = o->energy(o->ctx);
+      double de = o->move(o->ctx, gsl_rng_uniform_int(rng, nv), sigma, rng) - e0;
+      if (de <= 0 || gsl_rng_uniform(rng) < exp(-de / T)) z.accepted++;
+      else o->undo(o->ctx);
+    }
+    z.moves += per_temp;
+    o->resum(o->ctx);   /* E_Con's running sum back to an exact sum */
+    double e = o->energy(o->ctx);
+    if (e < ebest - 1e-12 * fabs(ebest)) { ebest = e; o->save(o->ctx, best); stall = 0; }
+    else if (T < 1e-2 * t0) stall++;   /* only once the walk has cooled */
+    T *= alpha;
+  }
+  o->restore(o->ctx, best);
+  z.t_end = T;
+  z.e_best = o->energy(o->ctx);
+  z.seconds = nl_time_now() - t_start;
+  if (st) *st = z;
+  free(best);
+}
+
+/* ---- the 2D levels as callbacks -------------------------------------------
+ * Variable q of the annealer is the level's variable vars[q] (a gradient
+ * angle, or a gain with X6): a move proposes a step of width sigma (an angle
+ * wrapped into [0, 2 pi)) and applies it incrementally. */
+typedef struct {
+  nl_cheng_problem *p;
+  const size_t *vars;
+} level_ctx;
 
 static double propose(const nl_cheng_problem *p, gsl_rng *rng, size_t k, double sigma)
 {
   if (k >= p->m) return nl_cheng__amp_propose(p, rng, k - p->m, sigma);   /* a gain (X6) */
-  return wrap_angle(p->g->angle[k] + sigma * (2.0 * gsl_rng_uniform(rng) - 1.0));
+  return nl_wrap_angle(p->g->angle[k] + sigma * (2.0 * gsl_rng_uniform(rng) - 1.0));
 }
 
-/* T0 so that an average uphill move of the widest step is accepted with
- * probability p0; trial moves are undone. */
-static double initial_temperature(nl_cheng_problem *p, gsl_rng *rng, const size_t *vars,
-                                  size_t nv, double p0)
+static double op_energy(void *ctx) { return ((level_ctx *)ctx)->p->e; }
+static double op_move(void *ctx, size_t var, double sigma, gsl_rng *rng)
 {
-  double sum = 0;
-  int up = 0;
-  for (int t = 0; t < TRIAL_MOVES; t++) {
-    size_t k = vars[gsl_rng_uniform_int(rng, nv)];
-    double e0 = p->e, de = nl_cheng_move(p, k, propose(p, rng, k, NL_PI)) - e0;
-    nl_cheng_undo(p);
-    if (de > 0) { sum += de; up++; }
+  level_ctx *c = ctx;
+  size_t k = c->vars[var];
+  return nl_cheng_move(c->p, k, propose(c->p, rng, k, sigma));
+}
+static void op_undo(void *ctx) { nl_cheng_undo(((level_ctx *)ctx)->p); }
+static void op_save(void *ctx, double *state)
+{
+  level_ctx *c = ctx;
+  size_t nv;
+  nl_cheng_vars(c->p, &nv);
+  for (size_t q = 0; q < nv; q++) state[q] = nl_cheng__var_value(c->p, c->vars[q]);
+}
+/* Moves the variables back to a saved state through the incremental path,
+ * so every structure follows, then an exact resum. */
+static void op_restore(void *ctx, const double *state)
+{
+  level_ctx *c = ctx;
+  size_t nv;
+  nl_cheng_vars(c->p, &nv);
+  for (size_t q = 0; q < nv; q++) {
+    size_t k = c->vars[q];
+    if (nl_cheng__var_value(c->p, k) != state[q]) nl_cheng_move(c->p, k, state[q]);
   }
-  double scale = fabs(p->e) > 0 ? fabs(p->e) : 1.0;
-  return up ? sum / up / log(1.0 / p0) : 1e-12 * scale;
+  nl_cheng_resum(c->p);
 }
-
-static void save_vars(const nl_cheng_problem *p, const size_t *vars, size_t nv, double *to)
-{
-  for (size_t q = 0; q < nv; q++) to[q] = nl_cheng__var_value(p, vars[q]);
-}
-
-/* Moves the variables back to a saved state, through the incremental path
- * so every structure follows. */
-static void restore_vars(nl_cheng_problem *p, const size_t *vars, size_t nv, const double *from)
-{
-  for (size_t q = 0; q < nv; q++)
-    if (nl_cheng__var_value(p, vars[q]) != from[q]) nl_cheng_move(p, vars[q], from[q]);
-  nl_cheng_resum(p);
-}
-
-/* One temperature: moves_per_temp Metropolis moves; returns accepted moves. */
-static long sweep(nl_cheng_problem *p, gsl_rng *rng, const size_t *vars, size_t nv, long moves,
-                  double T, double sigma)
-{
-  long acc = 0;
-  for (long m = 0; m < moves; m++) {
-    size_t k = vars[gsl_rng_uniform_int(rng, nv)];
-    double e0 = p->e, de = nl_cheng_move(p, k, propose(p, rng, k, sigma)) - e0;
-    if (de <= 0 || gsl_rng_uniform(rng) < exp(-de / T)) acc++;
-    else nl_cheng_undo(p);
-  }
-  return acc;
-}
+/* Only the top octave can have moved within a level: nl_cheng_resum's
+ * result at a fraction of its cost. */
+static void op_resum(void *ctx) { nl_cheng__resum_top(((level_ctx *)ctx)->p); }
 
 void nl_cheng_anneal(nl_cheng_problem *p, gsl_rng *rng, nl_cheng_level_stats *st)
 {
-  const nl_cheng_schedule *s = &p->c.sched;
   size_t nv;
-  const size_t *vars = nl_cheng_vars(p, &nv);
-  nl_cheng_level_stats z = {.level = p->level, .n_vars = nv, .e_start = p->e, .e_best = p->e};
-  double t_start = nl_time_now();
-  if (nv == 0) { if (st) *st = z; return; }
-  double t0 = initial_temperature(p, rng, vars, nv, s->p0), T = t0;
-  double alpha = pow(10.0, -s->t_decades / s->n_temps);
-  long per_temp = (long)ceil(s->moves_per_var * (double)nv);
-  double *best = nl_xmalloc(nv * sizeof *best), ebest = p->e;
-  save_vars(p, vars, nv, best);
-  int stall = 0;
-  z.t0 = t0;
-  for (z.temps = 0; z.temps < s->n_temps && stall < s->stall; z.temps++) {
-    z.accepted += sweep(p, rng, vars, nv, per_temp, T, NL_PI * fmax(T / t0, 0.01));
-    z.moves += per_temp;
-    nl_cheng__resum_top(p);   /* E_Con's running sum back to an exact sum (nl_cheng_resum's result) */
-    if (p->e < ebest - 1e-12 * fabs(ebest)) { ebest = p->e; save_vars(p, vars, nv, best); stall = 0; }
-    else if (T < 1e-2 * t0) stall++;   /* only once the walk has cooled: hot phases rarely improve */
-    T *= alpha;
-  }
-  restore_vars(p, vars, nv, best);
-  z.t_end = T;
-  z.e_best = p->e;
-  z.seconds = nl_time_now() - t_start;
-  if (st) *st = z;
-  free(best);
+  level_ctx c = {p, nl_cheng_vars(p, &nv)};
+  nl_cheng_sa_ops ops = {&c, nv, nv, op_energy, op_move, op_undo, op_save, op_restore, op_resum};
+  nl_cheng_sa_run(&ops, &p->c.sched, rng, st);
+  if (st) st->level = p->level;
 }
 
 void nl_cheng_propagate(nl_cheng_problem *p)

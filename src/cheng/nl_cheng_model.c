@@ -12,13 +12,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static double wrap_angle(double t)
-{
-  t = fmod(t, NL_TWO_PI);
-  if (t < 0) t += NL_TWO_PI;
-  return t >= NL_TWO_PI ? 0.0 : t;
-}
-
 /* ---- representation ----------------------------------------------------- */
 
 size_t nl_cheng_rep_dim(nl_cheng_rep rep, size_t nlow) { return rep == NL_CHENG_REP_COSSIN ? 2 * nlow : nlow; }
@@ -35,7 +28,7 @@ void nl_cheng_circular_centre(const double *theta, size_t n, size_t nlow, double
     double gap = n ? a[0] + NL_TWO_PI - a[n - 1] : NL_TWO_PI, cut = n ? a[n - 1] + 0.5 * gap : 0;
     for (size_t i = 1; i < n; i++)
       if (a[i] - a[i - 1] > gap) { gap = a[i] - a[i - 1]; cut = a[i - 1] + 0.5 * gap; }
-    mu[j] = wrap_angle(cut + NL_PI);
+    mu[j] = nl_wrap_angle(cut + NL_PI);
   }
   free(a);
 }
@@ -47,7 +40,8 @@ void nl_cheng_rep_encode(nl_cheng_rep rep, const double *theta, size_t n, size_t
     for (size_t j = 0; j < nlow; j++) {
       double t = theta[i * nlow + j];
       if (rep == NL_CHENG_REP_COSSIN) { x[i * 2 * nlow + 2 * j] = cos(t); x[i * 2 * nlow + 2 * j + 1] = sin(t); }
-      else x[i * nlow + j] = mu[j] + (wrap_angle(t - mu[j] + NL_PI) - NL_PI);   /* (mu - pi, mu + pi] */
+      else   /* (mu - pi, mu + pi] */
+        x[i * nlow + j] = mu[j] + (nl_wrap_angle(t - mu[j] + NL_PI) - NL_PI);
     }
 }
 
@@ -57,9 +51,9 @@ void nl_cheng_rep_decode(nl_cheng_rep rep, const double *x, size_t n, size_t nlo
   (void)mu;
   for (size_t i = 0; i < n; i++)
     for (size_t j = 0; j < nlow; j++)
-      theta[i * nlow + j] = rep == NL_CHENG_REP_COSSIN
-        ? wrap_angle(atan2(x[i * 2 * nlow + 2 * j + 1], x[i * 2 * nlow + 2 * j]))   /* onto the circle */
-        : wrap_angle(x[i * nlow + j]);
+      theta[i * nlow + j] = rep == NL_CHENG_REP_COSSIN   /* cos, sin onto the circle */
+        ? nl_wrap_angle(atan2(x[i * 2 * nlow + 2 * j + 1], x[i * 2 * nlow + 2 * j]))
+        : nl_wrap_angle(x[i * nlow + j]);
 }
 
 nl_status nl_cheng_rep_parse(const char *s, nl_cheng_rep *out, nl_error *err)
@@ -313,8 +307,11 @@ static void ks_per_dim(const nl_cheng_model *m, const nl_cheng_pool *pool, const
   double *dv = nl_xmalloc(m->nlow * sizeof *dv);
   size_t rej = 0;
   for (size_t j = 0; j < m->nlow && !*st; j++) {
-    for (size_t i = 0; i < np; i++) a[i] = wrap_angle(pool->theta[(i * pool->n / np) * m->nlow + j] - m->mu[j] + NL_PI);
-    for (size_t i = 0; i < nd; i++) b[i] = wrap_angle(draw[i * m->nlow + j] - m->mu[j] + NL_PI);
+    for (size_t i = 0; i < np; i++) {
+      double t = pool->theta[(i * pool->n / np) * m->nlow + j];
+      a[i] = nl_wrap_angle(t - m->mu[j] + NL_PI);
+    }
+    for (size_t i = 0; i < nd; i++) b[i] = nl_wrap_angle(draw[i * m->nlow + j] - m->mu[j] + NL_PI);
     nl_stats_ks_result r;
     *st = nl_stats_ks2_test(a, np, b, nd, &r, err);
     dv[j] = r.d;

@@ -48,13 +48,6 @@ size_t *nl_cheng_low_entries(const nl_noise_grad2 *table, const nl_cheng_config 
   return low;
 }
 
-static double wrap_angle(double t)
-{
-  t = fmod(t, NL_TWO_PI);
-  if (t < 0) t += NL_TWO_PI;
-  return t >= NL_TWO_PI ? 0.0 : t;
-}
-
 typedef struct {
   const nl_noise_grad2 *opt;
   const nl_cheng_config *c;
@@ -83,7 +76,8 @@ static double cold_tail(nl_cheng_problem *p, gsl_rng *rng, double T, size_t keep
   for (size_t s = 0; s < keep; s++) {
     for (size_t m = 0; m < nv; m++) {
       size_t k = vars[gsl_rng_uniform_int(rng, nv)];
-      double e0 = p->e, th = wrap_angle(p->g->angle[k] + 0.01 * NL_PI * (2 * gsl_rng_uniform(rng) - 1));
+      double e0 = p->e;
+      double th = nl_wrap_angle(p->g->angle[k] + 0.01 * NL_PI * (2 * gsl_rng_uniform(rng) - 1));
       double de = nl_cheng_move(p, k, th) - e0;
       if (!(de <= 0 || gsl_rng_uniform(rng) < exp(-de / T))) nl_cheng_undo(p);
     }
@@ -105,7 +99,8 @@ static void pool_run(pool_job *j, nl_cheng_problem *p, nl_noise_grad2 *g, gsl_rn
   nl_cheng_set_reproduction(p, j->o->low_levels);
   size_t nv;
   const size_t *vars = nl_cheng_vars(p, &nv);
-  for (size_t v = 0; v < nv; v++) nl_noise_grad2_set_angle(g, vars[v], wrap_angle(NL_TWO_PI * gsl_rng_uniform(rng)));
+  for (size_t v = 0; v < nv; v++)
+    nl_noise_grad2_set_angle(g, vars[v], nl_wrap_angle(NL_TWO_PI * gsl_rng_uniform(rng)));
   nl_cheng_set_reproduction(p, j->o->low_levels);   /* recompute from the new start */
   j->start[q] = p->e;
   nl_cheng_level_stats st;

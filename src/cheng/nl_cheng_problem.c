@@ -1,18 +1,17 @@
 /* The incremental objective of eq. 3.9 at one level (see nl_cheng.h). */
 #include "cheng/nl_cheng_internal.h"
+#include "noise/nl_noise_lattice.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
-static inline double fade(double t) { return t * t * t * (t * (t * 6 - 15) + 10); }
-
 /* Corner weight vectors W = w(u) w(v) Delta of eq. 3.2 for a point with
  * fractional offsets (tx, ty) in its cell; corner order (0,0) (1,0) (0,1) (1,1). */
 static void corner_weights(double tx, double ty, double *w)
 {
-  double fx = fade(tx), fy = fade(ty);
+  double fx = nl_noise_fade(tx), fy = nl_noise_fade(ty);
   double sx[2] = {1 - fx, fx}, sy[2] = {1 - fy, fy};
   for (int c = 0; c < 4; c++) {
     int di = c & 1, dj = c >> 1;

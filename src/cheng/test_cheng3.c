@@ -18,8 +18,8 @@ NL_TEST(incremental_equals_full_3d)
   NL_CHECK(nl_cheng3_pattern_shape("torus", 8, &pat, &err) == NL_OK);
   nl_cheng3_config c = nl_cheng3_config_default();
   c.w1 = 0.6; c.w2 = 0.4;   /* both terms visible in E */
-  nl_cheng3_table *t = nl_cheng3_table_alloc(c.m);
-  nl_cheng3_table_seed(t, 7);
+  nl_noise_grad3 *t = nl_noise_grad3_alloc(c.m);
+  nl_noise_grad3_seed(t, 7);
   nl_cheng3_problem *p = nl_cheng3_problem_alloc(&c, pat, t, &err);
   NL_CHECK(p != NULL);
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
@@ -40,7 +40,7 @@ NL_TEST(incremental_equals_full_3d)
   }
   NL_CHECK(worst < 1e-12);
   /* The stored corners agree with the noise kernel: E_Con of nl_cheng3_evaluate
-   * (nl_cheng3_noise per point) == the problem's. */
+   * (nl_noise_grad3_eval per point) == the problem's. */
   nl_cheng3_eval ev;
   NL_CHECK(nl_cheng3_evaluate(t, &c, pat, &ev, &err) == NL_OK);
   double ec;
@@ -48,7 +48,7 @@ NL_TEST(incremental_equals_full_3d)
   NL_CHECK(rel(ev.e_con, ec) < 1e-12);
   gsl_rng_free(r);
   nl_cheng3_problem_free(p);
-  nl_cheng3_table_free(t);
+  nl_noise_grad3_free(t);
   nl_cheng3_pattern_free(pat);
 }
 
@@ -96,11 +96,11 @@ NL_TEST(evaluate_and_refusals)
   NL_CHECK(nl_cheng3_pattern_shape("ball", 4, &pat, &err) == NL_OK);
   NL_CHECK(nl_cheng3_pattern_shape("cube", 4, &pat, &err) == NL_EINVAL);
   nl_cheng3_config c = nl_cheng3_config_default();
-  nl_cheng3_table *t = nl_cheng3_table_alloc(c.m);
+  nl_noise_grad3 *t = nl_noise_grad3_alloc(c.m);
   nl_cheng3_eval ev;
   NL_CHECK(nl_cheng3_evaluate(t, &c, pat, &ev, &err) == NL_OK);   /* all (0, 0, 1) */
   NL_CHECK(fabs(ev.rayleigh_r - 1) < 1e-15 && ev.p_rayleigh < 1e-100);
-  nl_cheng3_table_seed(t, 11);
+  nl_noise_grad3_seed(t, 11);
   NL_CHECK(nl_cheng3_evaluate(t, &c, pat, &ev, &err) == NL_OK);
   NL_CHECK(ev.p_rayleigh > 0.001 && ev.p_z > 0.001 && ev.p_phi > 0.001);
   c.m = 256;
@@ -109,7 +109,7 @@ NL_TEST(evaluate_and_refusals)
   c = nl_cheng3_config_default();
   nl_cheng3_level_entries(t, &c, counts);
   NL_CHECK(counts[0] + counts[1] + counts[2] <= c.m && counts[0] > 0);
-  nl_cheng3_table_free(t);
+  nl_noise_grad3_free(t);
   nl_cheng3_pattern_free(pat);
 }
 

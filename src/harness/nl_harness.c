@@ -690,13 +690,13 @@ static void note_platform(nl_harness *r)
   const char *lib = sym && dladdr(sym, &info) && info.dli_fname ? info.dli_fname : "unknown";
   char *(*corename)(void) = (char *(*)(void))dlsym(RTLD_DEFAULT, "openblas_get_corename");
   char *(*config)(void) = (char *(*)(void))dlsym(RTLD_DEFAULT, "openblas_get_config");
-  int (*threads)(void) = (int (*)(void))dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
+  int threads = nl_parallel_blas_threads();
   if (config) {
     nl_harness_note(r, "blas", "OpenBLAS (%s)", lib);
     const char *core = corename ? corename() : NULL, *cfg = config();
     note(r, "blas_core", core && *core ? core : "unknown");
     note(r, "blas_config", cfg && *cfg ? cfg : "unknown");
-    if (threads) nl_harness_note(r, "blas_threads", "%d", threads());
+    if (threads >= 0) nl_harness_note(r, "blas_threads", "%d", threads);
     else note(r, "blas_threads", "unknown");
   } else {
     nl_harness_note(r, "blas", "%s", lib);

@@ -7,11 +7,11 @@
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 
-static inline long lmod(long a, long m) { long r = a % m; return r < 0 ? r + m : r; }
 
 /* The shared final step of both noises (see the header): column lines
  * L_c(t) = t GX_c + A_c blended across the cell with the fade of t. */
@@ -19,7 +19,7 @@ static inline double blend(double t, double gx0, double a0, double gx1, double a
 {
   double l = t * gx0 + a0;
   double r = (t - 1) * gx1 + a1;
-  return l + fade(t) * (r - l);
+  return l + nl_noise_fade(t) * (r - l);
 }
 
 /* ---- 2D --------------------------------------------------------------- */
@@ -72,7 +72,8 @@ size_t nl_noise_grad2_index(const nl_noise_grad2 *t, long i, long j)
   long m = (long)t->m;
   /* A power-of-two m: i mod m is a mask (two's complement), no division. */
   if (m > 0 && (m & (m - 1)) == 0) { long k = m - 1; return t->perm[((long)t->perm[i & k] + j) & k]; }
-  return t->perm[lmod((long)t->perm[lmod(i, m)] + lmod(j, m), m)];
+  long pi = (long)t->perm[nl_noise_lmod(i, m)];
+  return t->perm[nl_noise_lmod(pi + nl_noise_lmod(j, m), m)];
 }
 
 /* Column i at row j with fractional fy and its fade v: blend the two
@@ -88,11 +89,11 @@ static inline void column2(const nl_noise_grad2 *t, long i, long j, double fy, d
 
 double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, double y)
 {
-  long i = lfloor(x), j = lfloor(y);
-  double fy = lfrac(y, j), v = fade(fy), g0, a0, g1, a1;
+  long i = nl_noise_lfloor(x), j = nl_noise_lfloor(y);
+  double fy = nl_noise_lfrac(y, j), v = nl_noise_fade(fy), g0, a0, g1, a1;
   column2(t, i, j, fy, v, &g0, &a0);
   column2(t, i + 1, j, fy, v, &g1, &a1);
-  return blend(lfrac(x, i), g0, a0, g1, a1);
+  return blend(nl_noise_lfrac(x, i), g0, a0, g1, a1);
 }
 
 /* The sample loop shared by both noises once columns are collapsed. */
@@ -101,9 +102,9 @@ static void row_from_columns(const double *gx, const double *a, long ifirst,
 {
   for (size_t k = 0; k < n; k++) {
     double x = x0 + (double)k * dx;
-    long i = lfloor(x);
+    long i = nl_noise_lfloor(x);
     size_t c = (size_t)(i - ifirst);
-    out[k] = blend(lfrac(x, i), gx[c], a[c], gx[c + 1], a[c + 1]);
+    out[k] = blend(nl_noise_lfrac(x, i), gx[c], a[c], gx[c + 1], a[c + 1]);
   }
 }
 
@@ -123,11 +124,113 @@ void nl_noise_grad2_row(const nl_noise_grad2 *t, double x0, double dx, double y,
   double sgx[NL_STACK_COLS], sa[NL_STACK_COLS];
   double *gx = ncol <= NL_STACK_COLS ? sgx : nl_xmalloc(ncol * sizeof *gx);
   double *a = ncol <= NL_STACK_COLS ? sa : nl_xmalloc(ncol * sizeof *a);
-  long j = lfloor(y);
-  double fy = lfrac(y, j), v = fade(fy);
+  long j = nl_noise_lfloor(y);
+  double fy = nl_noise_lfrac(y, j), v = nl_noise_fade(fy);
   for (size_t c = 0; c < ncol; c++) column2(t, ifirst + (long)c, j, fy, v, &gx[c], &a[c]);
   row_from_columns(gx, a, ifirst, x0, dx, n, out);
   if (gx != sgx) { free(gx); free(a); }
+}
+
+/* ---- 3D gradient-table noise ------------------------------------------ */
+
+nl_noise_grad3 *nl_noise_grad3_alloc(size_t m)
+{
+  nl_noise_grad3 *t = nl_xcalloc(1, sizeof *t);
+  t->m = m;
+  t->v = nl_xcalloc(3 * m, sizeof *t->v);
+  t->z = nl_xcalloc(m, sizeof *t->z);
+  t->phi = nl_xcalloc(m, sizeof *t->phi);
+  t->perm = nl_xcalloc(m, sizeof *t->perm);
+  for (size_t k = 0; k < m; k++) {
+    t->perm[k] = (unsigned)k;
+    t->v[3 * k + 2] = t->z[k] = 1;
+  }
+  return t;
+}
+
+void nl_noise_grad3_free(nl_noise_grad3 *t)
+{
+  if (!t) return;
+  free(t->v);
+  free(t->z);
+  free(t->phi);
+  free(t->perm);
+  free(t);
+}
+
+void nl_noise_grad3_set(nl_noise_grad3 *t, size_t k, const double u[3])
+{
+  double n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]), *v = t->v + 3 * k;
+  for (int a = 0; a < 3; a++) v[a] = u[a] / n;
+  t->z[k] = fmax(-1.0, fmin(1.0, v[2]));
+  double ph = atan2(v[1], v[0]);
+  if (ph < 0) ph += NL_TWO_PI;
+  t->phi[k] = ph >= NL_TWO_PI ? 0.0 : ph;   /* -tiny + 2 pi rounds to 2 pi */
+}
+
+void nl_noise_grad3_seed(nl_noise_grad3 *t, unsigned long seed)
+{
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, nl_seed_stream(seed, "cheng3.table", 0));
+  for (size_t k = 0; k < t->m; k++) {   /* hat-box: z ~ U(-1, 1), phi ~ U(0, 2 pi) */
+    double z = 2 * gsl_rng_uniform(r) - 1, ph = NL_TWO_PI * gsl_rng_uniform(r);
+    double s = sqrt(1 - z * z);
+    double u[3] = {s * cos(ph), s * sin(ph), z};
+    nl_noise_grad3_set(t, k, u);
+  }
+  for (size_t k = 0; k < t->m; k++) t->perm[k] = (unsigned)k;
+  gsl_ran_shuffle(r, t->perm, t->m, sizeof *t->perm);
+  gsl_rng_free(r);
+}
+
+void nl_noise_grad3_copy(nl_noise_grad3 *dst, const nl_noise_grad3 *src)
+{
+  memcpy(dst->v, src->v, 3 * src->m * sizeof *dst->v);
+  memcpy(dst->z, src->z, src->m * sizeof *dst->z);
+  memcpy(dst->phi, src->phi, src->m * sizeof *dst->phi);
+  memcpy(dst->perm, src->perm, src->m * sizeof *dst->perm);
+}
+
+size_t nl_noise_grad3_index(const nl_noise_grad3 *t, long i, long j, long k)
+{
+  long m = (long)t->m;
+  long pi = (long)t->perm[nl_noise_lmod(i, m)];
+  long pj = (long)t->perm[nl_noise_lmod(pi + nl_noise_lmod(j, m), m)];
+  return t->perm[nl_noise_lmod(pj + nl_noise_lmod(k, m), m)];
+}
+
+void nl_noise_grad3_corners(const nl_noise_grad3 *t, double x, double y, double z, double amp,
+                            uint32_t entry[8], double w[24])
+{
+  double p[3] = {x, y, z}, f[3], s[3][2];
+  long c0[3];
+  for (int a = 0; a < 3; a++) {
+    c0[a] = nl_noise_lfloor(p[a]);
+    /* p - cell is 1, not 0, for -2^-53 < p < 0 (the rounded limit, which
+     * the fade weights handle); nl_noise_lfrac only for |p| >= 2^62 and NaN. */
+    f[a] = p[a] - (double)c0[a];
+    if (!(f[a] >= 0 && f[a] <= 1)) f[a] = nl_noise_lfrac(p[a], c0[a]);
+    s[a][1] = nl_noise_fade(f[a]);
+    s[a][0] = 1 - s[a][1];
+  }
+  for (int q = 0; q < 8; q++) {
+    int b[3] = {q & 1, (q >> 1) & 1, (q >> 2) & 1};
+    entry[q] = (uint32_t)nl_noise_grad3_index(t, c0[0] + b[0], c0[1] + b[1], c0[2] + b[2]);
+    double ww = amp * s[0][b[0]] * s[1][b[1]] * s[2][b[2]];
+    for (int a = 0; a < 3; a++) w[3 * q + a] = ww * (f[a] - b[a]);
+  }
+}
+
+double nl_noise_grad3_eval(const nl_noise_grad3 *t, double x, double y, double z)
+{
+  uint32_t entry[8];
+  double w[24], sum = 0;
+  nl_noise_grad3_corners(t, x, y, z, 1.0, entry, w);
+  for (int q = 0; q < 8; q++) {
+    const double *g = t->v + 3 * entry[q];
+    sum += w[3 * q] * g[0] + w[3 * q + 1] * g[1] + w[3 * q + 2] * g[2];
+  }
+  return sum;
 }
 
 /* ---- 3D improved noise ------------------------------------------------ */
@@ -190,11 +293,12 @@ static inline void column3(const nl_noise_perm3 *p, long i, long j, long k, doub
 
 double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, double y, double z)
 {
-  long i = lfloor(x), j = lfloor(y), k = lfloor(z);
-  double fy = lfrac(y, j), fz = lfrac(z, k), v = fade(fy), w = fade(fz), g0, a0, g1, a1;
+  long i = nl_noise_lfloor(x), j = nl_noise_lfloor(y), k = nl_noise_lfloor(z);
+  double fy = nl_noise_lfrac(y, j), fz = nl_noise_lfrac(z, k);
+  double v = nl_noise_fade(fy), w = nl_noise_fade(fz), g0, a0, g1, a1;
   column3(p, i, j, k, fy, fz, v, w, &g0, &a0);
   column3(p, i + 1, j, k, fy, fz, v, w, &g1, &a1);
-  return blend(lfrac(x, i), g0, a0, g1, a1);
+  return blend(nl_noise_lfrac(x, i), g0, a0, g1, a1);
 }
 
 void nl_noise_perm3_row(const nl_noise_perm3 *p, double x0, double dx, double y, double z,
@@ -211,8 +315,9 @@ void nl_noise_perm3_row(const nl_noise_perm3 *p, double x0, double dx, double y,
   double sgx[NL_STACK_COLS], sa[NL_STACK_COLS];
   double *gx = ncol <= NL_STACK_COLS ? sgx : nl_xmalloc(ncol * sizeof *gx);
   double *a = ncol <= NL_STACK_COLS ? sa : nl_xmalloc(ncol * sizeof *a);
-  long j = lfloor(y), k = lfloor(z);
-  double fy = lfrac(y, j), fz = lfrac(z, k), v = fade(fy), w = fade(fz);
+  long j = nl_noise_lfloor(y), k = nl_noise_lfloor(z);
+  double fy = nl_noise_lfrac(y, j), fz = nl_noise_lfrac(z, k);
+  double v = nl_noise_fade(fy), w = nl_noise_fade(fz);
   for (size_t c = 0; c < ncol; c++) column3(p, ifirst + (long)c, j, k, fy, fz, v, w, &gx[c], &a[c]);
   row_from_columns(gx, a, ifirst, x0, dx, n, out);
   if (gx != sgx) { free(gx); free(a); }

@@ -1,6 +1,7 @@
 /* nl_noise.h - gradient noise with explicit tables, and sums of octaves.
  *
- * Two gradient noises, both evaluated a row of samples at a time:
+ * Three gradient noises, the first two also evaluated a row of samples at a
+ * time:
  *
  *  - nl_noise_grad2: 2D gradient noise as in Cheng 2009 eq. 3.1-3.2. A table of m
  *    unit gradients stored as angles (the optimiser edits them one at a time)
@@ -8,6 +9,13 @@
  *    G[P[(P[i mod m] + j) mod m]]. Quintic fade 6t^5 - 15t^4 + 10t^3.
  *    |noise| <= sqrt(2)/2 (the value at a cell centre with all four
  *    gradients pointing at it); noise is 0 at every lattice point.
+ *
+ *  - nl_noise_grad3: the same construction in 3D (Cheng 2009 ch. 5's future
+ *    work, TARGETS C8): m unit gradient vectors, stored also as the two
+ *    angles z = cos(polar) and phi = azimuth that the optimiser tests for
+ *    uniformity on the sphere, and a permutation P; lattice point (i, j, k)
+ *    uses G[P[(P[(P[i mod m] + j) mod m] + k) mod m]]. Same fade.
+ *    |noise| <= sqrt(3)/2; 0 at every lattice point.
  *
  *  - nl_noise_perm3: Perlin's 2002 improved noise in 3D (12 edge gradients chosen
  *    by hash & 15, same fade), with his reference permutation or one
@@ -39,7 +47,10 @@
 #ifndef NL_NOISE_H
 #define NL_NOISE_H
 
+#include "simd/nl_simd.h"
+
 #include <stddef.h>
+#include <stdint.h>
 
 /* ---- 2D gradient-table noise ---------------------------------------- */
 
@@ -64,6 +75,48 @@ double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, double y);
 void nl_noise_grad2_row(const nl_noise_grad2 *t, double x0, double dx, double y, size_t n, double *out);
 #define NL_NOISE2_BOUND 0.70710678118654752440
 
+/* ---- 3D gradient-table noise ---------------------------------------
+ *
+ * Noise(x, y, z) = sum over the 8 corners c = (i, j, k) of the cell holding
+ * p of w(x - i) w(y - j) w(z - k) (Delta_c . G_c), Delta_c = p - c, w the
+ * quintic fade (Cheng 2009 eq. 3.1-3.2 in 3D). The noise is linear in the
+ * gradients: nl_noise_grad3_corners gives, for one point, the 8 table
+ * entries its corners use and the weight vectors W_c = amp w w w Delta_c,
+ * so that amp * noise = sum_c W_c . G[entry_c]. An optimiser that stores
+ * them updates a point's value in O(1) when one gradient moves.
+ *
+ *   nl_noise_grad3 *t = nl_noise_grad3_alloc(512);
+ *   nl_noise_grad3_seed(t, seed);               // uniform on the sphere
+ *   double n = nl_noise_grad3_eval(t, x, y, z);  // |n| <= NL_NOISE_GRAD3_BOUND
+ *   nl_noise_grad3_free(t);
+ */
+typedef struct {
+  size_t m;          /* table size; C8 uses 512 */
+  double *v;         /* 3 m: unit gradients (x, y, z), entry k at v + 3 k */
+  double *z, *phi;   /* cos(polar) in [-1, 1], azimuth in [0, 2 pi); kept in step by _set */
+  unsigned *perm;    /* permutation of 0..m-1 */
+} nl_noise_grad3;
+
+/* Every gradient (0, 0, 1), the identity permutation. */
+nl_noise_grad3 *nl_noise_grad3_alloc(size_t m);
+void nl_noise_grad3_free(nl_noise_grad3 *t);
+/* Directions uniform on the sphere (Archimedes' hat-box: z ~ U(-1, 1),
+ * phi ~ U(0, 2 pi)) and a uniform permutation, from MT19937 on stream
+ * ("cheng3.table", 0) of seed: the stream C8's optimiser starts from. */
+void nl_noise_grad3_seed(nl_noise_grad3 *t, unsigned long seed);
+/* Entry k := the direction of u (normalised; u != 0), its z and phi with it. */
+void nl_noise_grad3_set(nl_noise_grad3 *t, size_t k, const double u[3]);
+void nl_noise_grad3_copy(nl_noise_grad3 *dst, const nl_noise_grad3 *src);   /* same m */
+/* Table entry used by lattice point (i, j, k). */
+size_t nl_noise_grad3_index(const nl_noise_grad3 *t, long i, long j, long k);
+/* The point's 8 corners, in the order q = di + 2 dj + 4 dk: entry[q] and
+ * the weight vector w[3q .. 3q+2] = amp w w w Delta (amp folded in first,
+ * so a sum of octaves is a sum of such terms). */
+void nl_noise_grad3_corners(const nl_noise_grad3 *t, double x, double y, double z, double amp,
+                            uint32_t entry[8], double w[24]);
+double nl_noise_grad3_eval(const nl_noise_grad3 *t, double x, double y, double z);
+#define NL_NOISE_GRAD3_BOUND 0.86602540378443864676   /* sqrt(3)/2 */
+
 /* ---- Perlin's improved 3D noise ------------------------------------- */
 
 typedef struct { unsigned char p[512]; } nl_noise_perm3;   /* 256 entries, doubled */
@@ -75,27 +128,27 @@ void nl_noise_perm3_row(const nl_noise_perm3 *p, double x0, double dx, double y,
                         size_t n, double *out);
 #define NL_NOISE3_BOUND 1.22474487139158904910
 
-/* ---- SIMD kernels, run-time dispatch, batches of points (issue 17) -----
+/* ---- SIMD kernels, run-time dispatch, batches of points ---------------
  *
- * Rows of both noises (and so the sums of octaves over nl_noise_basis_grad2 and
- * nl_noise_basis_perm3) and the batches below run on the best vector unit the CPU
- * has: SSE2 (the x86-64 baseline), AVX2 or AVX-512 (F, DQ, BW, VL, VBMI),
- * chosen at run time (no -march in the build; nl_noise_simd.c). Every level returns the scalar code's bits (same IEEE
- * operations in the same order, no FMA); power-of-two tables index by mask.
- * NL_NOISE_SIMD=scalar|sse2|avx2|avx512 in the environment, or
- * nl_noise_simd_set, forces a level (tests and benchmarks compare them).
- */
-typedef enum {
-  NL_NOISE_SIMD_SCALAR = 0, NL_NOISE_SIMD_SSE2 = 1, NL_NOISE_SIMD_AVX2 = 2, NL_NOISE_SIMD_AVX512 = 3
-} nl_noise_simd_level;
-
-int nl_noise_simd_get(void);               /* the level in use */
-int nl_noise_simd_best(void);              /* the best this CPU runs */
-int nl_noise_simd_supported(int level);    /* 1 if this CPU runs it */
-/* GSL_SUCCESS, GSL_EINVAL (no such level) or GSL_EUNSUP (not on this CPU). */
-int nl_noise_simd_set(int level);
-const char *nl_noise_simd_name(int level);          /* "scalar", ..., "avx512" */
-int nl_noise_simd_from_name(const char *name);      /* -1 if none */
+ * Rows of both noises (and so the sums of octaves over nl_noise_basis_grad2
+ * and nl_noise_basis_perm3) and the batches below run on the library's
+ * vector level (simd/nl_simd.h: SSE2, AVX2 or AVX-512, chosen at run time,
+ * NL_NOISE_SIMD in the environment or nl_simd_set to force one). Every
+ * level returns the scalar code's bits (same IEEE operations in the same
+ * order, no FMA); power-of-two tables index by mask.
+ * The nl_noise_simd_* names below are the level's, for the programs that
+ * call them so (bench_noise, the SIMD tests). */
+typedef nl_simd_level nl_noise_simd_level;
+#define NL_NOISE_SIMD_SCALAR NL_SIMD_SCALAR
+#define NL_NOISE_SIMD_SSE2 NL_SIMD_SSE2
+#define NL_NOISE_SIMD_AVX2 NL_SIMD_AVX2
+#define NL_NOISE_SIMD_AVX512 NL_SIMD_AVX512
+static inline int nl_noise_simd_get(void) { return nl_simd_get(); }
+static inline int nl_noise_simd_best(void) { return nl_simd_best(); }
+static inline int nl_noise_simd_supported(int level) { return nl_simd_supported(level); }
+static inline int nl_noise_simd_set(int level) { return nl_simd_set(level); }
+static inline const char *nl_noise_simd_name(int level) { return nl_simd_name(level); }
+static inline int nl_noise_simd_from_name(const char *name) { return nl_simd_from_name(name); }
 
 /* out[k] = nl_noise_grad2_eval(t, x[k], y[k]) and nl_noise_perm3_eval(p, x[k], y[k], z[k]),
  * k < n. out may be one of the inputs (the same array), not overlap one. */
@@ -128,14 +181,6 @@ enum { NL_NOISE_PACK_PAD = 16 };
  * (room for n); returns their count. *top is raised to the largest |noise|. */
 size_t nl_noise_perm3_points_bounded(const nl_noise_perm3 *p, double f, double amp, double r, nl_noise_pack *pk,
                                      int *hi, double *top);
-/* The sample loop of a quadratic B-spline row (wavelet noise, nl_wavelet_row)
- * on the dispatched level: out[k] += weight * (w0 L[i] + w1 L[i+1] + w2 L[i+2])
- * at x0 + k dx, k < count, with the weights and first tap i of nl_wavelet.c's
- * bspline() and L the period line[0 .. n-1] repeated. GSL_SUCCESS, or
- * GSL_CONTINUE (nothing done) on the scalar level, for sparse rows and
- * beyond |x| < 2^51: then the caller's own loop runs. */
-int nl_noise_bspline_row(const double *line, long n, double x0, double dx, size_t count,
-                         double weight, double *out);
 
 /* ---- a noise as a basis for sums ------------------------------------ */
 

@@ -1,16 +1,12 @@
-/* nl_noise_simd.c - run-time dispatch of the noise kernels (issue 17), the
- * row drivers nl_noise.c hands its rows to, and the batch point API.
+/* nl_noise_simd.c - the noise kernel table of the library's vector level
+ * (simd/nl_simd.h: scalar, SSE2, AVX2 or AVX-512), the row drivers
+ * nl_noise.c hands its rows to, and the batch point API. The scalar level
+ * is nl_noise.c's own code, the reference; every level gives its bits
+ * (nl_noise_simd.h).
  *
- * Levels: scalar (nl_noise.c's own code, the reference), SSE2 (the x86-64
- * baseline), AVX2, AVX-512 (F+DQ+BW+VL+VBMI). The level is the best the CPU and
- * OS support (__builtin_cpu_supports, which checks the XSAVE state too),
- * unless NL_NOISE_SIMD=scalar|sse2|avx2|avx512 asks for another (a level the
- * CPU lacks falls back to the best it has, with a warning) or a program calls
- * nl_noise_simd_set. Every level gives the scalar bits (nl_noise_simd.h).
- *
- * The scalar lattice helpers (lfloor, lfrac, fade, row_columns) are
- * nl_noise.c's, from nl_noise_lattice.h; test_noise_simd.c holds the two
- * files to the same bits.
+ * The scalar lattice helpers (nl_noise_lattice.h) and row_columns
+ * (nl_noise_simd.h) are nl_noise.c's; test_noise_simd.c holds the two files
+ * to the same bits.
  */
 #include "noise/nl_noise_simd.h"
 #include "noise/nl_noise_lattice.h"
@@ -28,81 +24,12 @@ const double nl_noise_simd_g3[3][16] = {
   {1, 1, -1, -1, 0, 0, 0, 0, 1, -1, 1, -1, 1, -1, 1, -1},
   {0, 0, 0, 0, 1, 1, -1, -1, 1, 1, -1, -1, 0, 1, 0, -1}};
 
-/* ---- the level ------------------------------------------------------------ */
-
-static const char *const level_names[] = {"scalar", "sse2", "avx2", "avx512"};
-
-const char *nl_noise_simd_name(int level)
-{
-  return level >= 0 && level <= NL_NOISE_SIMD_AVX512 ? level_names[level] : "unknown";
-}
-
-int nl_noise_simd_from_name(const char *name)
-{
-  for (int l = 0; l <= NL_NOISE_SIMD_AVX512; l++)
-    if (name && strcmp(name, level_names[l]) == 0) return l;
-  return -1;
-}
-
-int nl_noise_simd_supported(int level)
-{
-  switch (level) {
-  case NL_NOISE_SIMD_SCALAR: case NL_NOISE_SIMD_SSE2: return 1;
-  case NL_NOISE_SIMD_AVX2:
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2");
-  case NL_NOISE_SIMD_AVX512:
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
-           __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl") &&
-           __builtin_cpu_supports("avx512vbmi") && __builtin_cpu_supports("avx2");
-  default: return 0;
-  }
-}
-
-int nl_noise_simd_best(void)
-{
-  int l = NL_NOISE_SIMD_AVX512;
-  while (!nl_noise_simd_supported(l)) l--;
-  return l;
-}
-
-static int simd_level = -1;   /* -1: not yet resolved */
-
-int nl_noise_simd_get(void)
-{
-  int l = __atomic_load_n(&simd_level, __ATOMIC_ACQUIRE);
-  if (l >= 0) return l;
-  l = nl_noise_simd_best();
-  const char *env = getenv("NL_NOISE_SIMD");
-  if (env && *env && strcmp(env, "auto") != 0) {
-    int want = nl_noise_simd_from_name(env);
-    if (want < 0)
-      fprintf(stderr, "noiselab: NL_NOISE_SIMD=%s is not scalar|sse2|avx2|avx512|auto; using %s\n",
-              env, nl_noise_simd_name(l));
-    else if (!nl_noise_simd_supported(want))
-      fprintf(stderr, "noiselab: this CPU cannot run NL_NOISE_SIMD=%s; using %s\n", env,
-              nl_noise_simd_name(l));
-    else l = want;
-  }
-  __atomic_store_n(&simd_level, l, __ATOMIC_RELEASE);   /* racing first calls agree */
-  return l;
-}
-
-int nl_noise_simd_set(int level)
-{
-  if (level < 0 || level > NL_NOISE_SIMD_AVX512) return GSL_EINVAL;
-  if (!nl_noise_simd_supported(level)) return GSL_EUNSUP;
-  __atomic_store_n(&simd_level, level, __ATOMIC_RELEASE);
-  return GSL_SUCCESS;
-}
-
 static const nl_noise_simd_kernels *kernels(void)
 {
-  switch (nl_noise_simd_get()) {
-  case NL_NOISE_SIMD_SSE2: return &nl_noise_simd_sse2;
-  case NL_NOISE_SIMD_AVX2: return &nl_noise_simd_avx2;
-  case NL_NOISE_SIMD_AVX512: return &nl_noise_simd_avx512;
+  switch (nl_simd_get()) {
+  case NL_SIMD_SSE2: return &nl_noise_simd_sse2;
+  case NL_SIMD_AVX2: return &nl_noise_simd_avx2;
+  case NL_SIMD_AVX512: return &nl_noise_simd_avx512;
   default: return NULL;
   }
 }
@@ -149,8 +76,8 @@ static double *column_arrays(size_t ncol, double *sgx, double *sa, double **a)
  * registers, and loads one by one beat gathers; a row has few columns. */
 static void columns2(const nl_noise_grad2 *t, long ifirst, size_t ncol, double y, double *gx, double *a)
 {
-  long j = lfloor(y);
-  double fy = lfrac(y, j), v = fade(fy);
+  long j = nl_noise_lfloor(y);
+  double fy = nl_noise_lfrac(y, j), v = nl_noise_fade(fy);
   if (grad2_pow2(t)) {   /* i mod m as a mask */
     unsigned long mask = t->m - 1, j0 = (unsigned long)j & mask, j1 = (unsigned long)(j + 1) & mask;
     const unsigned *perm = t->perm;
@@ -177,8 +104,9 @@ static void columns2(const nl_noise_grad2 *t, long ifirst, size_t ncol, double y
 static void columns3(const nl_noise_simd_kernels *K, const nl_noise_perm3 *p, const int *p32, long ifirst,
                      size_t ncol, double y, double z, double *gx, double *a)
 {
-  long j = lfloor(y), k = lfloor(z);
-  double fy = lfrac(y, j), fz = lfrac(z, k), v = fade(fy), w = fade(fz);
+  long j = nl_noise_lfloor(y), k = nl_noise_lfloor(z);
+  double fy = nl_noise_lfrac(y, j), fz = nl_noise_lfrac(z, k);
+  double v = nl_noise_fade(fy), w = nl_noise_fade(fz);
   K->columns3(p, p32, (unsigned)(ifirst & 255), (unsigned)(j & 255), (unsigned)(k & 255), fy, fz,
               v, w, (ncol + NL_SIMD_PAD - 1) / NL_SIMD_PAD * NL_SIMD_PAD, gx, a);
 }
@@ -256,30 +184,6 @@ int nl_noise_simd_fractal_row(const nl_noise_basis *b, const nl_noise_octaves *o
     int mode = (l == 0 ? NL_SIMD_FIRST : NL_SIMD_ADD) | (o->turbulence ? NL_SIMD_ABS : 0);
     row_any(K, t, p, p32, x0 * f, dx * f, y * f, z * f, n, out, mode, o->amp[l]);
   }
-  return GSL_SUCCESS;
-}
-
-/* ---- quadratic B-spline rows (wavelet noise) --------------------------------- */
-
-static long wrapl(long i, long n) { long r = i % n; return r < 0 ? r + n : r; }
-
-int nl_noise_bspline_row(const double *line, long n, double x0, double dx, size_t count,
-                         double weight, double *out)
-{
-  const nl_noise_simd_kernels *K = kernels();
-  if (!K || count == 0 || count > NL_SIMD_MAX_N || n < 1) return GSL_CONTINUE;
-  double xl = x0 + (double)(count - 1) * dx;
-  if (!(fabs(x0) < 0x1p51 && fabs(xl) < 0x1p51)) return GSL_CONTINUE;
-  /* the first taps (bspline's mid - 1) of the lowest and the highest sample */
-  double lo = dx >= 0 ? x0 : xl, hi = dx >= 0 ? xl : x0;
-  long a = (long)ceil(lo - 0.5) - 1, b = (long)ceil(hi - 0.5) - 1;
-  size_t ncol = (size_t)(b - a) + 3;
-  if (ncol > 2 * count + 8) return GSL_CONTINUE;   /* sparse: the caller's loop */
-  double sL[NL_SIMD_STACK_COLS], sU[NL_SIMD_STACK_COLS], *U;
-  double *L = column_arrays(ncol, sL, sU, &U);
-  for (size_t c = 0; c < ncol; c++) L[c] = line[wrapl(a + (long)c, n)];
-  K->bspline(L, a, x0, dx, count, weight, out);
-  if (L != sL) { free(L); free(U); }
   return GSL_SUCCESS;
 }
 

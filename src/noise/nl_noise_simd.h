@@ -21,7 +21,22 @@
 #define NL_NOISE_SIMD_H
 
 #include "noise/nl_noise.h"
+#include "noise/nl_noise_lattice.h"
 #include <stddef.h>
+
+/* Columns spanned by a row; 0 when sampling is so sparse (more than two
+ * columns per sample) that collapsing columns costs more than it saves.
+ * The scalar row (nl_noise.c) and the SIMD row drivers share it, so both
+ * collapse the same rows. */
+static inline size_t row_columns(double x0, double dx, size_t n, long *ifirst)
+{
+  double xl = x0 + (double)(n - 1) * dx;
+  if (!(fabs(x0) < NL_LATTICE_EXACT && fabs(xl) < NL_LATTICE_EXACT)) return 0;
+  long a = nl_noise_lfloor(dx >= 0 ? x0 : xl), b = nl_noise_lfloor(dx >= 0 ? xl : x0);
+  *ifirst = a;
+  size_t ncol = (size_t)(b - a) + 2;
+  return ncol > 2 * n + 8 ? 0 : ncol;
+}
 
 /* Columns and points are padded to a multiple of this (the widest level). */
 #define NL_SIMD_PAD 8
@@ -53,11 +68,6 @@ typedef struct {
   void (*points2)(const nl_noise_grad2 *t, const double *x, const double *y, size_t n, double *out);
   void (*points3)(const nl_noise_perm3 *p, const int *p32, const double *x, const double *y,
                   const double *z, size_t n, double *out);
-  /* nl_wavelet_row's sample loop over the unwrapped line L (columns
-   * a, a + 1, ..., padded by NL_SIMD_COL_PAD): see nl_noise_bspline_row.
-   * Precondition: every x_k has |x_k| < 2^51 and its taps lie in L. */
-  void (*bspline)(const double *L, long a, double x0, double dx, size_t n, double weight,
-                  double *out);
   /* One octave of a sum over points, as nl_noise_perm3_points_sum: sum[k] =
    * sum[k] + amp v_k, v_k the noise at (f x[k], f y[k], f z[k]), and *top
    * raised to the largest |v_k|; n a multiple of NL_SIMD_PAD, lanes out of

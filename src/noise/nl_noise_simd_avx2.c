@@ -2,13 +2,8 @@
  * doubles a vector. Compiled with a target pragma, never -march: called only
  * when the dispatcher has seen the CPU support it. No FMA: see
  * nl_noise_simd.h. */
-#if defined(__clang__)   /* clang has no GCC target pragma; popped at the end */
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC target("avx2")
-#endif
+#include "simd/nl_simd_avx2.h"   /* vd, vl, v_floor, v_ceil, v_all */
 #include "noise/nl_noise_simd.h"
-#include "noise/nl_simd_avx2.h"   /* vd, vl, v_floor, v_ceil, v_all */
 #include <string.h>
 
 #define NL_SIMD_W 4
@@ -18,11 +13,11 @@ typedef unsigned vu __attribute__((vector_size(16)));
 
 /* Lookups lane by lane: on the machines measured (AMD Zen 5) a gather
  * instruction costs more than its loads one by one. */
-#include "noise/nl_noise_simd_lanes.h"
+#include "simd/nl_simd_lanes.h"
 
 #include "noise/nl_noise_simd_body.h"
 
-const nl_noise_simd_kernels NL_SIMD_TABLE = {samples_lanes, columns3, points2, points3_lanes, bspline_lanes,
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples_lanes, columns3, points2, points3_lanes,
                                            points3_sum_lanes, points3_bounded_lanes};
 
 #if defined(__clang__)

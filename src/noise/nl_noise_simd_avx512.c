@@ -11,13 +11,8 @@
  * (vpermt2pd), and the sample loop of a row reads its columns through a
  * window of 8 loaded once per 8 samples (vpermpd).
  */
-#if defined(__clang__)   /* clang has no GCC target pragma; popped at the end */
-#pragma clang attribute push(__attribute__((target("avx512f,avx512dq,avx512bw,avx512vl,avx512vbmi,avx2"))), apply_to = function)
-#else
-#pragma GCC target("avx512f,avx512dq,avx512bw,avx512vl,avx512vbmi,avx2")
-#endif
+#include "simd/nl_simd_avx512.h"   /* vd, vl, v_floor, v_ceil, v_all */
 #include "noise/nl_noise_simd.h"
-#include "noise/nl_simd_avx512.h"   /* vd, vl, v_floor, v_ceil, v_all */
 #include <math.h>
 #include <string.h>
 
@@ -27,7 +22,7 @@ typedef int vi __attribute__((vector_size(32)));
 typedef unsigned vu __attribute__((vector_size(32)));
 
 /* Lookups lane by lane (the 2D tables are too big for registers). */
-#include "noise/nl_noise_simd_lanes.h"
+#include "simd/nl_simd_lanes.h"
 
 #define NL_SIMD_HAVE_TABLES
 typedef struct { __m512i p[4]; __m512d g[3][2]; } p3tab;
@@ -131,32 +126,6 @@ static void samples(const double *gx, const double *a, long ifirst, double x0, d
     if (plain) samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 1, 1);
     else samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 0, 1);
   }
-}
-
-/* The B-spline row through a window, as samples(): 8 samples span at most
- * 7 first taps when 7 |dx| <= 4, and the three taps read L[b ..], L[b + 1 ..],
- * L[b + 2 ..] with one set of local indices (b: lane 0's, the lowest). */
-static void bspline(const double *L, long a, double x0, double dx, size_t n, double weight,
-                    double *out)
-{
-  if (!(fabs(dx) * 7 <= 4) || !(dx >= 0)) { bspline_lanes(L, a, x0, dx, n, weight, out); return; }
-  vd kv, fa1 = SPLAT((double)a + 1.0);
-  for (int l = 0; l < NL_SIMD_W; l++) kv[l] = l;
-  size_t k = 0;
-  for (; k + NL_SIMD_W <= n; k += NL_SIMD_W, kv += (double)NL_SIMD_W) {
-    vd w0, w1, w2;
-    vi ci;
-    v_bspline(kv * dx + x0, fa1, &ci, &w0, &w1, &w2);
-    __m512d c = (__m512d)__builtin_convertvector(ci, vd);
-    __m128d lane = _mm512_castpd512_pd128(c);
-    long b = _mm_cvttsd_si64(lane);
-    __m512i li = _mm512_cvttpd_epi64(_mm512_sub_pd(c, _mm512_broadcastsd_pd(lane)));
-    vd l0 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(L + b));
-    vd l1 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(L + b + 1));
-    vd l2 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(L + b + 2));
-    st(out + k, ld(out + k) + weight * (w0 * l0 + w1 * l1 + w2 * l2));
-  }
-  if (k < n) bspline_tail(L, a, x0, dx, k, n, weight, out);
 }
 
 /* Points 16 at a time: the byte permutes of the hashing fill a whole
@@ -291,7 +260,7 @@ static size_t points3_bounded(const nl_noise_perm3 *P, const int *p32, double f,
   return left;
 }
 
-const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3, points2, points3, bspline, points3_sum,
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3, points2, points3, points3_sum,
                                            points3_bounded};
 
 #if defined(__clang__)

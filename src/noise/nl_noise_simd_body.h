@@ -6,8 +6,6 @@
  *   NL_SIMD_TABLE       the name of the nl_noise_simd_kernels to define
  *   vd, vl, vi, vu      W doubles, W int64 (comparison results), W int32, W uint32
  *   v_floor(vd)         floor, exact for |x| < 2^52, -0 for -0
- *   v_ceil(vd)          ceil, exact for |x| < 2^52 (the sign of a zero result
- *                       may differ from ceil's: the one use cannot see it)
  *   v_gd(base, vi)      base[idx] for doubles; v_gi(base, vi) for ints
  *   v_all(vl)           all lanes true
  * and, optionally, NL_SIMD_HAVE_TABLES with p3tab, p3_make, p3_get and g3
@@ -19,16 +17,7 @@
  */
 #include <string.h>
 
-static inline vd ld(const double *p) { vd v; memcpy(&v, p, sizeof v); return v; }   /* loadu */
-static inline void st(double *p, vd v) { memcpy(p, &v, sizeof v); }                 /* storeu */
-/* A broadcast; not 0 + x, which turns -0 into +0. */
-static inline vd splat(double x)
-{
-  vd v;
-  for (int l = 0; l < NL_SIMD_W; l++) v[l] = x;
-  return v;
-}
-#define SPLAT(x) splat((double)(x))
+#include "simd/nl_simd_vec.h"   /* ld, st, splat, SPLAT */
 #define SPLATU(x) ((vu){0} + (unsigned)(x))
 
 /* fade(t) = t * t * t * (t * (t * 6 - 15) + 10), Perlin 2002's order. */
@@ -100,53 +89,6 @@ static void samples_lanes(const double *gx, const double *a, long ifirst, double
     st(out + k, v_emit(out + k, v, mode, amp));
   }
   if (k < n) samples_tail(gx, a, ifirst, x0, dx, k, n, out, mode, amp);
-}
-
-/* ---- quadratic B-spline rows (wavelet noise) ------------------------------
- *
- * nl_wavelet.c's row loop over a line L of columns already unwrapped (column
- * c is the tile's column a + c mod n): per sample its bspline() -
- * mid = ceil(p - 1/2), t = mid - (p - 1/2), w0 = t^2/2, w2 = (1 - t)^2/2,
- * w1 = 1 - w0 - w2, first tap mid - 1 - and
- * out = out + weight (w0 L[c] + w1 L[c + 1] + w2 L[c + 2]). A zero mid's
- * sign only reaches t = mid - (p - 1/2) = +-0, whose square is +0. */
-static inline void v_bspline(vd x, vd fa1, vi *cp, vd *w0, vd *w1, vd *w2)
-{
-  vd p5 = x - 0.5, mid = v_ceil(p5), t = mid - p5, u = 1.0 - t;
-  *w0 = t * t / 2.0;
-  *w2 = u * u / 2.0;
-  *w1 = 1.0 - *w0 - *w2;
-  *cp = __builtin_convertvector(mid - fa1, vi);   /* mid - 1 - a, exact */
-}
-
-static void bspline_tail(const double *L, long a, double x0, double dx, size_t k0, size_t n,
-                         double weight, double *out)
-{
-  double xs[NL_SIMD_W], acc[NL_SIMD_W] = {0}, res[NL_SIMD_W];
-  for (int l = 0; l < NL_SIMD_W; l++) xs[l] = x0 + (double)(k0 + ((size_t)l < n - k0 ? (size_t)l : 0)) * dx;
-  memcpy(acc, out + k0, (n - k0) * sizeof *acc);
-  vd w0, w1, w2;
-  vi c;
-  v_bspline(ld(xs), SPLAT((double)a + 1.0), &c, &w0, &w1, &w2);
-  vd s = w0 * v_gd(L, c) + w1 * v_gd(L + 1, c) + w2 * v_gd(L + 2, c);
-  st(res, ld(acc) + weight * s);
-  memcpy(out + k0, res, (n - k0) * sizeof *out);
-}
-
-static void bspline_lanes(const double *L, long a, double x0, double dx, size_t n, double weight,
-                          double *out)
-{
-  vd kv, fa1 = SPLAT((double)a + 1.0);
-  for (int l = 0; l < NL_SIMD_W; l++) kv[l] = l;
-  size_t k = 0;
-  for (; k + NL_SIMD_W <= n; k += NL_SIMD_W, kv += (double)NL_SIMD_W) {
-    vd w0, w1, w2;
-    vi c;
-    v_bspline(kv * dx + x0, fa1, &c, &w0, &w1, &w2);
-    vd s = w0 * v_gd(L, c) + w1 * v_gd(L + 1, c) + w2 * v_gd(L + 2, c);
-    st(out + k, ld(out + k) + weight * s);
-  }
-  if (k < n) bspline_tail(L, a, x0, dx, k, n, weight, out);
 }
 
 /* Perlin's grad3 components, by table lookup so the products below are the

@@ -3,7 +3,7 @@
  * (SSE4.1's roundpd) nor gathers: floor goes through the 2^52 rounding
  * trick, lookups lane by lane. */
 #include "noise/nl_noise_simd.h"
-#include "noise/nl_simd_sse2.h"   /* vd, vl, v_floor, v_ceil, v_all */
+#include "simd/nl_simd_sse2.h"   /* vd, vl, v_floor, v_ceil, v_all */
 
 #define NL_SIMD_W 2
 #define NL_SIMD_TABLE nl_noise_simd_sse2
@@ -15,5 +15,5 @@ static inline vi v_gi(const int *b, vi i) { return (vi){b[i[0]], b[i[1]]}; }
 
 #include "noise/nl_noise_simd_body.h"
 
-const nl_noise_simd_kernels NL_SIMD_TABLE = {samples_lanes, columns3, points2, points3_lanes, bspline_lanes,
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples_lanes, columns3, points2, points3_lanes,
                                            points3_sum_lanes, points3_bounded_lanes};

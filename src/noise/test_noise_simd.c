@@ -10,7 +10,6 @@
  * signed zeros and NaN payloads count.
  */
 #include "noise/nl_noise.h"
-#include "wavelet/nl_wavelet.h"
 #include "nl_test.h"
 
 #include <gsl/gsl_errno.h>
@@ -21,69 +20,8 @@
 #include <string.h>
 
 #define NPOINTS 20000   /* points per table and level */
-#define NROWS 300       /* rows per table and level */
-#define MAXROW 2600
+#include "simd/test_simd_rows.h"   /* coord, same, levels, random_row, compared */
 
-static long compared;
-
-/* A coordinate from a mixture: mostly ordinary, some awkward. */
-static double coord(gsl_rng *r)
-{
-  static const double special[] = {0.0, -0.0, 1.0, -1.0, 255.0, 256.0, -256.0, 0.5, -0.5,
-    -1e-20, 1e-20, 0x1p31 - 0.5, -0x1p31, 0x1p31, -0x1p31 - 1, 0x1p52 - 0.5, 0x1p52, -0x1p52,
-    0x1p62, -0x1p62, 0x1p63, 1e300, -1e300, 5e-324, INFINITY, -INFINITY, NAN, 0x1p31 - 1,
-    2147483647.75, -2147483648.25};
-  double u = gsl_rng_uniform(r);
-  if (u < 0.05) return special[gsl_rng_uniform_int(r, sizeof special / sizeof *special)];
-  if (u < 0.10) return (double)((long)gsl_rng_uniform_int(r, 2001) - 1000);          /* lattice */
-  if (u < 0.15) return ldexp(gsl_rng_uniform(r) - 0.5, (int)gsl_rng_uniform_int(r, 70)); /* any scale */
-  if (u < 0.20) return -1e9 * gsl_rng_uniform(r);
-  return 600 * gsl_rng_uniform(r) - 300;
-}
-
-static int same(const double *a, const double *b, size_t n) { return memcmp(a, b, n * sizeof *a) == 0; }
-
-static int levels[4], nlevels;
-static void find_levels(void)
-{
-  if (nlevels) return;
-  for (int l = NL_NOISE_SIMD_SSE2; l <= NL_NOISE_SIMD_AVX512; l++) {
-    if (nl_noise_simd_supported(l))
-      levels[nlevels++] = l;
-    else
-      nl_test_skip("the %s level: not compared, this CPU cannot run it", nl_noise_simd_name(l));
-  }
-  printf("  SIMD levels this CPU runs beside scalar:");
-  for (int k = 0; k < nlevels; k++) printf(" %s", nl_noise_simd_name(levels[k]));
-  printf(" (best: %s)\n", nl_noise_simd_name(nl_noise_simd_best()));
-}
-
-NL_TEST(levels_are_named_and_set)
-{
-  find_levels();
-  NL_CHECK(nl_noise_simd_supported(NL_NOISE_SIMD_SCALAR) && nl_noise_simd_supported(NL_NOISE_SIMD_SSE2));
-  NL_CHECK(nl_noise_simd_set(7) == GSL_EINVAL && nl_noise_simd_set(-1) == GSL_EINVAL);
-  for (int l = 0; l <= NL_NOISE_SIMD_AVX512; l++) {
-    NL_CHECK(nl_noise_simd_from_name(nl_noise_simd_name(l)) == l);
-    if (nl_noise_simd_supported(l)) { NL_CHECK(nl_noise_simd_set(l) == GSL_SUCCESS && nl_noise_simd_get() == l); }
-    else NL_CHECK(nl_noise_simd_set(l) == GSL_EUNSUP);
-  }
-  NL_CHECK(nl_noise_simd_from_name("avx1024") == -1);
-  nl_noise_simd_set(nl_noise_simd_best());
-}
-
-/* A random row: origin, step (dense, sparse, negative, zero, tiny), length. */
-static void random_row(gsl_rng *r, double *x0, double *dx, size_t *n)
-{
-  static const double steps[] = {1.0 / 64, 0.0137, -0.29, 3.7, 1e-4, 0.0, -1.0 / 64, 0.125, 0.75,
-                                 1.0, -2.5, 1e-12, 7.0 / 3};
-  *x0 = gsl_rng_uniform(r) < 0.8 ? 200 * gsl_rng_uniform(r) - 100 : coord(r);
-  *dx = gsl_rng_uniform(r) < 0.7 ? steps[gsl_rng_uniform_int(r, sizeof steps / sizeof *steps)]
-                                 : (gsl_rng_uniform(r) - 0.5) * ldexp(1, (int)gsl_rng_uniform_int(r, 8) - 4);
-  double u = gsl_rng_uniform(r);
-  *n = u < 0.1 ? 1 + gsl_rng_uniform_int(r, 9) : u < 0.2 ? 1040 + gsl_rng_uniform_int(r, MAXROW - 1040)
-                                                 : 1 + gsl_rng_uniform_int(r, 1100);
-}
 
 static void compare_grad2(size_t m, unsigned long seed)
 {
@@ -423,50 +361,6 @@ NL_TEST(edge_rows_match_scalar)
         }
   nl_noise_simd_set(nl_noise_simd_best());
   nl_noise_grad2_free(t);
-}
-
-/* Wavelet noise rows (nl_wavelet_row's sample loop, nl_noise_bspline_row):
- * 2D tiles of power-of-two and other periods and a 3D tile, rows dense and
- * sparse, either direction, added into values already there. */
-NL_TEST(wavelet_rows_match_scalar)
-{
-  find_levels();
-  struct { int dim, n; } tiles[] = {{2, 64}, {2, 10}, {3, 16}};
-  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(r, 77);
-  double *init = malloc(MAXROW * sizeof *init), *ref = malloc(MAXROW * sizeof *ref);
-  double *got = malloc(MAXROW * sizeof *got);
-  int bad = 0;
-  for (int ti = 0; ti < 3; ti++) {
-    nl_wavelet_tile *t = nl_wavelet_tile_alloc(tiles[ti].dim, tiles[ti].n);
-    nl_wavelet_tile_seed(t, 3 + (unsigned long)ti);
-    for (int row = 0; row < NROWS; row++) {
-      double x0, dx, y = gsl_rng_uniform(r) < 0.9 ? 100 * gsl_rng_uniform(r) - 50 : coord(r);
-      double z = gsl_rng_uniform(r) < 0.9 ? 100 * gsl_rng_uniform(r) - 50 : coord(r);
-      double weight = gsl_rng_uniform(r) < 0.2 ? 1.0 : 4 * gsl_rng_uniform(r) - 2;
-      size_t n;
-      random_row(r, &x0, &dx, &n);
-      if (row % 7 == 0) x0 = 0.5 + (double)((long)gsl_rng_uniform_int(r, 200) - 100);   /* p - 1/2 = integer */
-      for (size_t k = 0; k < n; k++) init[k] = gsl_rng_uniform(r) < 0.5 ? 0.0 : gsl_rng_uniform(r) - 0.5;
-      nl_noise_simd_set(NL_NOISE_SIMD_SCALAR);
-      memcpy(ref, init, n * sizeof *ref);
-      nl_wavelet_row(t, x0, dx, y, z, n, weight, ref);
-      for (int L = 0; L < nlevels; L++) {
-        nl_noise_simd_set(levels[L]);
-        memcpy(got, init, n * sizeof *got);
-        nl_wavelet_row(t, x0, dx, y, z, n, weight, got);
-        if (!same(got, ref, n) && bad++ < 5)
-          fprintf(stderr, "  wavelet %dD n=%d %s row x0=%a dx=%a n=%zu differs\n", tiles[ti].dim, tiles[ti].n,
-                  nl_noise_simd_name(levels[L]), x0, dx, n);
-        compared += (long)n;
-      }
-    }
-    nl_wavelet_tile_free(t);
-  }
-  NL_CHECK(bad == 0);
-  nl_noise_simd_set(nl_noise_simd_best());
-  free(init); free(ref); free(got);
-  gsl_rng_free(r);
 }
 
 /* The sums the experiments use (S1-S4): fBm grids over both bases. */

@@ -5,7 +5,6 @@
 #include "stats/nl_cluster.h"
 #include "base/nl_parallel.h"
 
-#include <dlfcn.h>
 #include <float.h>
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_errno.h>
@@ -36,18 +35,7 @@ static int blas_threads_limit(size_t n, size_t d)
 {
   double rows = n < BLOCK ? (double)n : BLOCK;
   if (rows * (double)d * (double)d >= BLAS_ONE_THREAD_WORK) return 0;
-  int (*get)(void) = (int (*)(void))dlsym(RTLD_DEFAULT, "openblas_get_num_threads");
-  void (*set)(int) = (void (*)(int))dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
-  if (!get || !set) return 0;
-  int was = get();
-  if (was > 1) set(1);
-  return was > 1 ? was : 0;
-}
-
-static void blas_threads_restore(int was)
-{
-  void (*set)(int) = (void (*)(int))dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
-  if (was > 1 && set) set(was);
+  return nl_parallel_blas_limit();
 }
 
 /* Buffers of one fit (and of a whole AIC path), allocated once: rows per
@@ -635,7 +623,7 @@ nl_status nl_gmm_fit(nl_gmm *g, const double *x, size_t n, const nl_gmm_options 
   ws_init(&w, n, g->d, g->k, o->threads);
   int threads = blas_threads_limit(n, g->d);
   s = fit_ws(g, x, n, o, &w, err);
-  blas_threads_restore(threads);
+  nl_parallel_blas_restore(threads);
   ws_free(&w);
   return s;
 }
@@ -648,7 +636,7 @@ nl_status nl_gmm_loglik(const nl_gmm *g, const double *x, size_t n, double *tota
       return nl_fail(err, NL_EINVAL, "row %zu, column %zu is not finite", i / g->d + 1, i % g->d + 1);
   int threads = blas_threads_limit(n, g->d);
   *total = e_step(g, x, n, NULL, logp, NULL);
-  blas_threads_restore(threads);
+  nl_parallel_blas_restore(threads);
   return NL_OK;
 }
 
@@ -924,7 +912,7 @@ nl_status nl_gmm_select_aic(const double *x, size_t n, size_t d, size_t k0, doub
   if (!s && memo && bestg && n >= MEMO_MIN_ROWS) { key.k = bestk; memo_put_model(memo, &key, bestg); }
   if (s) { nl_gmm_free(bestg); bestg = NULL; }   /* a failed path returns no model */
   *best = bestg;
-  if (p.ready) { blas_threads_restore(p.threads); ws_free(&p.w); }
+  if (p.ready) { nl_parallel_blas_restore(p.threads); ws_free(&p.w); }
   nl_gmm_free(p.spare);
   return s;
 }

@@ -14,13 +14,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* lgamma without the global signgam (lgamma writes it: a data race when
- * p-values are computed in threads); the same value. */
-static inline double nl__lgamma(double x)
-{
-  int sign;
-  return lgamma_r(x, &sign);
-}
 
 #define E128 128
 static const double EP128 = 0x1p128, EM128 = 0x1p-128;
@@ -48,12 +41,12 @@ double nl_stats_smirnov_sf(size_t n, double d)
 {
   if (!(d > 0.0)) return 1.0;
   if (d >= 1.0) return 0.0;
-  double nn = (double)n, lgn = nl__lgamma(nn + 1.0), sum = 0.0;
+  double nn = (double)n, lgn = nl_lgamma(nn + 1.0), sum = 0.0;
   size_t jmax = (size_t)floor(nn * (1.0 - d));
   for (size_t j = 0; j <= jmax && j <= n; j++) {
     double a = (double)(n - j) / nn - d, b = d + (double)j / nn;
     if (a <= 0.0) { if (j == n) sum += pow(b, (double)j - 1.0); continue; }
-    double lt = lgn - nl__lgamma((double)j + 1.0) - nl__lgamma(nn - (double)j + 1.0)
+    double lt = lgn - nl_lgamma((double)j + 1.0) - nl_lgamma(nn - (double)j + 1.0)
                 + (nn - (double)j) * log(a) + ((double)j - 1.0) * log(b);
     sum += exp(lt);
   }

@@ -59,6 +59,10 @@
  * right-continuous step function F_n(t) = #{x_i <= t} / n
  * (scipy.stats.ecdf); nl_stats_histogram_uniform fills a gsl_histogram.
  *
+ * Also here: the mean, sd and min of a sample in two named roundings
+ * (nl_stats_mean_sd, nl_summary.c) and the sorts under all of the above
+ * (nl_stats_sort, nl_stats_argsort, nl_sort.c).
+ *
  * Conventions: inputs are const and never reordered (a sorted copy is made);
  * n >= 1 for the one-sample tests; NaN or infinite data give NL_EINVAL; a CDF
  * callback must return values in [0, 1] (others are an error).
@@ -245,6 +249,28 @@ nl_status nl_stats_chisq_test_uniform(const double *x, size_t n, size_t k, doubl
 nl_status nl_stats_welch_p(double m1, double s1, size_t n1, double m2, double s2, size_t n2,
                            double *p, nl_error *err);
 nl_status nl_stats_ftest_p(double s1, size_t n1, double s2, size_t n2, double *p, nl_error *err);
+
+/* ---- mean, sd and min of a sample (nl_summary.c) -------------------------
+ *
+ * Quantities measured over seeds are summarised by their mean and sample
+ * sd (divisor n - 1; 0 for n < 2). Two roundings of the same formulas are
+ * named, because the committed reference tables were made with both and
+ * each keeps its last digits:
+ *   NL_STATS_RUNNING  GSL's running mean, m += (x_i - m) / (i + 1), and its
+ *                     sd (gsl_stats_mean, gsl_stats_sd);
+ *   NL_STATS_SUMMED   the sum in order divided by n, then the sum in order
+ *                     of (x_i - m)^2 (two passes).
+ *   double m, sd;
+ *   nl_stats_mean_sd(x, n, NL_STATS_SUMMED, &m, &sd);
+ * n = 0: the mean is NaN (SUMMED) or 0 (RUNNING, as GSL), the sd 0. */
+typedef enum { NL_STATS_RUNNING = 0, NL_STATS_SUMMED = 1 } nl_stats_rounding;
+
+double nl_stats_mean(const double *x, size_t n, nl_stats_rounding rounding);
+double nl_stats_sd(const double *x, size_t n, nl_stats_rounding rounding);
+void nl_stats_mean_sd(const double *x, size_t n, nl_stats_rounding rounding, double *mean,
+                      double *sd);
+/* The smallest x (fmin: a NaN is passed over unless all are NaN); n >= 1. */
+double nl_stats_min(const double *x, size_t n);
 
 /* Empirical CDF: a sorted copy of the sample. */
 typedef struct {

@@ -149,11 +149,7 @@ double nl_study_ks_channels(const nl_image *a, const nl_image *b, double *per)
 
 void nl_study_mean_sd(const double *v, int n, double *m, double *sd)
 {
-  double s = 0, ss = 0;
-  for (int i = 0; i < n; i++) s += v[i];
-  *m = s / n;
-  for (int i = 0; i < n; i++) ss += (v[i] - *m) * (v[i] - *m);
-  *sd = n > 1 ? sqrt(ss / (n - 1)) : 0;
+  nl_stats_mean_sd(v, (size_t)n, NL_STATS_SUMMED, m, sd);
 }
 
 double nl_study_mean_where(const nl_table *t, const char *key, const char *value, const char *col,
@@ -173,11 +169,17 @@ double nl_study_mean_where(const nl_table *t, const char *key, const char *value
   return n ? s / n : NAN;
 }
 
-double nl_study_mean(const double *x, int n) { return gsl_stats_mean(x, 1, (size_t)n); }
-double nl_study_sd(const double *x, int n) { return n > 1 ? gsl_stats_sd(x, 1, (size_t)n) : 0.0; }
+double nl_study_mean(const double *x, int n)
+{
+  return nl_stats_mean(x, (size_t)n, NL_STATS_RUNNING);
+}
+
+double nl_study_sd(const double *x, int n)
+{
+  return nl_stats_sd(x, (size_t)n, NL_STATS_RUNNING);
+}
+
 double nl_study_min(const double *x, int n)
 {
-  double m = x[0];
-  for (int i = 1; i < n; i++) m = fmin(m, x[i]);
-  return m;
+  return nl_stats_min(x, (size_t)n);
 }

@@ -95,11 +95,10 @@ nl_table *nl_study_radial_table(const double *const *img, const char *const *col
  * far a synthesis' histograms are from its exemplar's (sec. 5). */
 double nl_study_ks_channels(const nl_image *a, const nl_image *b, double *per);
 
-/* Summaries of quantities measured over seeds. Two roundings exist because
- * the references were made with both: nl_study_mean/_sd are GSL's
- * (gsl_stats_mean's running mean; sd 0 for n < 2), nl_study_mean_sd sums in
- * order (two passes; sd 0 for n = 1). Making one call the other would move
- * the last digits of the tables built on it. */
+/* Summaries of quantities measured over seeds: thin names for the stats
+ * module's (nl_stats.h, "mean, sd and min"). nl_study_mean/_sd round as
+ * NL_STATS_RUNNING (GSL's running mean), nl_study_mean_sd as
+ * NL_STATS_SUMMED (sums in order); the reference tables were made with both. */
 double nl_study_mean(const double *x, int n);
 double nl_study_sd(const double *x, int n);
 double nl_study_min(const double *x, int n);

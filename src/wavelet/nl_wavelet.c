@@ -1,4 +1,7 @@
 #include "wavelet/nl_wavelet.h"
+#include "noise/nl_noise_lattice.h"   /* nl_noise_lmod: tile indices wrap into [0, n) */
+#include "simd/nl_simd.h"
+#include "wavelet/nl_wavelet_simd.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_randist.h>
@@ -19,8 +22,6 @@ static double afilter(int j)   /* j in [-ARAD, ARAD) */
   int k = j + ARAD;
   return k < ARAD ? A_HALF[k] : A_HALF[2 * ARAD - 1 - k];
 }
-
-static long wrap(long i, long n) { long r = i % n; return r < 0 ? r + n : r; }
 
 nl_wavelet_tile *nl_wavelet_tile_alloc(int dim, int n)
 {
@@ -49,14 +50,14 @@ void nl_wavelet_coarse_line(const float *line, size_t stride, int n, double *coa
   for (int i = 0; i < h; i++) {
     double s = 0;
     for (int k = 2 * i - ARAD; k < 2 * i + ARAD; k++)
-      s += afilter(k - 2 * i) * line[(size_t)wrap(k, n) * stride];
+      s += afilter(k - 2 * i) * line[(size_t)nl_noise_lmod(k, n) * stride];
     down[i] = s;
   }
   /* Upsample with {1/4, 3/4, 3/4, 1/4} centred at 2: p[i - 2k]. */
   static const double P[4] = {0.25, 0.75, 0.75, 0.25};
   for (int i = 0; i < n; i++) {
     double s = 0;
-    for (int k = i / 2; k <= i / 2 + 1; k++) s += P[i - 2 * k + 2] * down[wrap(k, h)];
+    for (int k = i / 2; k <= i / 2 + 1; k++) s += P[i - 2 * k + 2] * down[nl_noise_lmod(k, h)];
     coarse[i] = s;
   }
 }
@@ -102,8 +103,8 @@ static void tile_seed(nl_wavelet_tile *t, unsigned long seed, int transposed)
   for (size_t i = 0; i < total; i++) {
     long x = (long)(i % n), y = (long)((i / n) % n), z = d == 3 ? (long)(i / ((size_t)n * n)) : 0;
     if (transposed) { long tmp = x; x = d == 3 ? z : y; if (d == 3) z = tmp; else y = tmp; }
-    size_t j = (size_t)wrap(x + off, n) + (size_t)wrap(y + off, n) * n
-             + (d == 3 ? (size_t)wrap(z + off, n) * n * n : 0);
+    size_t j = (size_t)nl_noise_lmod(x + off, n) + (size_t)nl_noise_lmod(y + off, n) * n
+             + (d == 3 ? (size_t)nl_noise_lmod(z + off, n) * n * n : 0);
     shifted[i] = t->data[j];
   }
   for (size_t i = 0; i < total; i++) t->data[i] += shifted[i];
@@ -139,8 +140,8 @@ static void collapse_init(const nl_wavelet_tile *t, double y, double z, collapse
   c->nrows = 0;
   for (int jz = 0; jz < (t->dim == 3 ? 3 : 1); jz++)
     for (int jy = 0; jy < 3; jy++) {
-      size_t base = (size_t)wrap(y0 + jy, n) * n
-                  + (t->dim == 3 ? (size_t)wrap(z0 + jz, n) * n * n : 0);
+      size_t base = (size_t)nl_noise_lmod(y0 + jy, n) * n
+                  + (t->dim == 3 ? (size_t)nl_noise_lmod(z0 + jz, n) * n * n : 0);
       c->rows[c->nrows] = t->data + base;
       c->wt[c->nrows++] = t->dim == 3 ? wz[jz] * wy[jy] : wy[jy];
     }
@@ -160,12 +161,46 @@ static double eval_point(const nl_wavelet_tile *t, double x, double y, double z)
   double wx[3];
   long x0 = bspline(x, wx);
   double s = 0;
-  for (int j = 0; j < 3; j++) s += wx[j] * collapse_column(&c, wrap(x0 + j, t->n));
+  for (int j = 0; j < 3; j++) s += wx[j] * collapse_column(&c, nl_noise_lmod(x0 + j, t->n));
   return s;
 }
 
 double nl_wavelet_eval2(const nl_wavelet_tile *t, double x, double y) { return eval_point(t, x, y, 0); }
 double nl_wavelet_eval3(const nl_wavelet_tile *t, double x, double y, double z) { return eval_point(t, x, y, z); }
+
+/* nl_wavelet_row's sample loop on the dispatched level (nl_wavelet_simd.h)
+ * over the period line[0 .. n - 1] repeated: GSL_SUCCESS, or GSL_CONTINUE
+ * (nothing done) on the scalar level, for sparse rows (more than two
+ * columns a sample) and beyond |x| < 2^51: then the caller's loop runs. */
+#define SIMD_STACK_COLS 1056   /* doubles; a multiple of 8 */
+#define SIMD_MAX_N ((size_t)1 << 29)   /* column indices stay ints */
+static int simd_row(const double *line, long n, double x0, double dx, size_t count, double weight,
+                    double *out)
+{
+  nl_wavelet_simd_row_fn row;
+  switch (nl_simd_get()) {
+  case NL_SIMD_SSE2: row = nl_wavelet_simd_sse2; break;
+  case NL_SIMD_AVX2: row = nl_wavelet_simd_avx2; break;
+  case NL_SIMD_AVX512: row = nl_wavelet_simd_avx512; break;
+  default: return GSL_CONTINUE;
+  }
+  if (count == 0 || count > SIMD_MAX_N || n < 1) return GSL_CONTINUE;
+  double xl = x0 + (double)(count - 1) * dx;
+  if (!(fabs(x0) < 0x1p51 && fabs(xl) < 0x1p51)) return GSL_CONTINUE;
+  /* the first taps (bspline's mid - 1) of the lowest and the highest sample */
+  double lo = dx >= 0 ? x0 : xl, hi = dx >= 0 ? xl : x0;
+  long a = (long)ceil(lo - 0.5) - 1, b = (long)ceil(hi - 0.5) - 1;
+  size_t ncol = (size_t)(b - a) + 3;
+  if (ncol > 2 * count + 8) return GSL_CONTINUE;   /* sparse: the caller's loop */
+  size_t len = (ncol + 7) / 8 * 8 + NL_WAVELET_SIMD_PAD;
+  double sL[SIMD_STACK_COLS];
+  double *L = len <= SIMD_STACK_COLS ? sL : nl_xmalloc(len * sizeof *L);
+  memset(L + ncol, 0, (len - ncol) * sizeof *L);
+  for (size_t c = 0; c < ncol; c++) L[c] = line[nl_noise_lmod(a + (long)c, n)];
+  row(L, a, x0, dx, count, weight, out);
+  if (L != sL) free(L);
+  return GSL_SUCCESS;
+}
 
 void nl_wavelet_row(const nl_wavelet_tile *t, double x0, double dx, double y, double z,
                     size_t count, double weight, double *out)
@@ -179,11 +214,14 @@ void nl_wavelet_row(const nl_wavelet_tile *t, double x0, double dx, double y, do
   for (int i = 0; i < n; i++) line[i] = collapse_column(&c, i);
   line[n] = line[0];
   line[n + 1] = line[1];
-  /* The sample loop on the SIMD level (nl_noise.h), same bits; else below. */
-  if (nl_noise_bspline_row(line, n, x0, dx, count, weight, out) == GSL_SUCCESS) { free(line); return; }
+  /* The sample loop on the library's vector level, same bits; else below. */
+  if (simd_row(line, n, x0, dx, count, weight, out) == GSL_SUCCESS) {
+    free(line);
+    return;
+  }
   for (size_t k = 0; k < count; k++) {
     double wx[3];
-    long i = wrap(bspline(x0 + (double)k * dx, wx), n);
+    long i = nl_noise_lmod(bspline(x0 + (double)k * dx, wx), n);
     out[k] += weight * (wx[0] * line[i] + wx[1] * line[i + 1] + wx[2] * line[i + 2]);
   }
   free(line);

@@ -1,4 +1,4 @@
-/* nl_noise_simd_lanes.h - private to src/noise: table lookups lane by lane,
+/* nl_simd_lanes.h - library-internal: table lookups lane by lane,
  * for the levels that include it after defining NL_SIMD_W and the vector
  * types vd (doubles) and vi (int indices). On the machines measured (AMD
  * Zen 5) a gather instruction costs more than its loads one by one. */

@@ -1,9 +1,17 @@
 /* nl_simd_avx512.h - the vector types and primitives every AVX-512 kernel
- * shares (noise: nl_noise_simd_avx512.c, cellular: nl_cellular_simd_avx512.c),
- * 8 doubles a vector. Private: included by a kernel file after its target
- * pragma (F, DQ, BW, VL, VBMI), never installed. */
+ * shares (noise, cellular and wavelet: their *_simd_avx512.c), 8 doubles a
+ * vector, and the target pragma (F, DQ, BW, VL, VBMI): a kernel file
+ * includes it first, so the whole file compiles for the level, never with
+ * -march. Library-internal, never installed. */
 #ifndef NL_SIMD_AVX512_H
 #define NL_SIMD_AVX512_H
+/* The level's target for the rest of the including file (clang's push is
+ * popped at that file's end). */
+#if defined(__clang__)   /* clang has no GCC target pragma; popped at the end */
+#pragma clang attribute push(__attribute__((target("avx512f,avx512dq,avx512bw,avx512vl,avx512vbmi,avx2"))), apply_to = function)
+#else
+#pragma GCC target("avx512f,avx512dq,avx512bw,avx512vl,avx512vbmi,avx2")
+#endif
 #include <immintrin.h>
 
 typedef double vd __attribute__((vector_size(64)));

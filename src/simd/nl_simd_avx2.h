@@ -1,9 +1,17 @@
 /* nl_simd_avx2.h - the vector types and primitives every AVX2 kernel shares
- * (noise: nl_noise_simd_avx2.c, cellular: nl_cellular_simd_avx2.c), 4 doubles
- * a vector. Private: included by a kernel file after its target pragma
- * ("avx2"), never installed. */
+ * (noise, cellular and wavelet: their *_simd_avx2.c), 4 doubles a vector,
+ * and the target pragma ("avx2"): a kernel file includes it first, so the
+ * whole file compiles for the level, never with -march. Library-internal,
+ * never installed. */
 #ifndef NL_SIMD_AVX2_H
 #define NL_SIMD_AVX2_H
+/* The level's target for the rest of the including file (clang's push is
+ * popped at that file's end). */
+#if defined(__clang__)   /* clang has no GCC target pragma; popped at the end */
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#else
+#pragma GCC target("avx2")
+#endif
 #include <immintrin.h>
 
 typedef double vd __attribute__((vector_size(32)));

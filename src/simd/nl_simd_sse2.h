@@ -1,8 +1,8 @@
 /* nl_simd_sse2.h - the vector types and primitives every SSE2 kernel shares
- * (noise: nl_noise_simd_sse2.c, cellular: nl_cellular_simd_sse2.c), 2 doubles
- * a vector. Private: included by a kernel file, never installed. SSE2 has no
- * floor instruction (SSE4.1's roundpd): floor goes through the 2^52 rounding
- * trick, which gives floor's bits for |x| < 2^52. */
+ * (noise, cellular and wavelet: their *_simd_sse2.c), 2 doubles a vector.
+ * Library-internal: included by a kernel file, never installed. SSE2 has
+ * no floor instruction (SSE4.1's roundpd): floor goes through the 2^52
+ * rounding trick, which gives floor's bits for |x| < 2^52. */
 #ifndef NL_SIMD_SSE2_H
 #define NL_SIMD_SSE2_H
 #include <immintrin.h>

@@ -1,0 +1,29 @@
+/* Tests of nl_simd.c: names round-trip, the best level is supported, a
+ * level is set only where the CPU runs it, and the scalar and SSE2 levels
+ * always exist (SSE2 is the x86-64 baseline). */
+#include "simd/nl_simd.h"
+#include "nl_test.h"
+
+#include <gsl/gsl_errno.h>
+#include <string.h>
+
+NL_TEST(levels_names_and_setting)
+{
+  for (int l = NL_SIMD_SCALAR; l <= NL_SIMD_AVX512; l++)
+    NL_CHECK(nl_simd_from_name(nl_simd_name(l)) == l);
+  NL_CHECK(nl_simd_from_name("mmx") == -1 && nl_simd_from_name(NULL) == -1);
+  NL_CHECK(!strcmp(nl_simd_name(9), "unknown"));
+  NL_CHECK(nl_simd_supported(NL_SIMD_SCALAR) && nl_simd_supported(NL_SIMD_SSE2));
+  int best = nl_simd_best();
+  NL_CHECK(nl_simd_supported(best));
+  printf("  best level here: %s\n", nl_simd_name(best));
+  NL_CHECK(nl_simd_set(7) == GSL_EINVAL && nl_simd_set(-1) == GSL_EINVAL);
+  for (int l = NL_SIMD_SCALAR; l <= NL_SIMD_AVX512; l++) {
+    int rc = nl_simd_set(l);
+    NL_CHECK(rc == (nl_simd_supported(l) ? GSL_SUCCESS : GSL_EUNSUP));
+    if (rc == GSL_SUCCESS) NL_CHECK(nl_simd_get() == l);
+  }
+  NL_CHECK(nl_simd_set(best) == GSL_SUCCESS && nl_simd_get() == best);
+}
+
+int main(void) { return nl_test_run(); }
