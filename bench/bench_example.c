@@ -33,7 +33,7 @@ int main(void)
     if (t < best_s) { best_s = t; cpu_s = c; }
     nl_image_free(out);
   }
-  nl_wavelet_tile *tile = nl_wavelet_tile_alloc(2, NL_EXAMPLE_TILE);
+  nl_wavelet_tile *tile = nl_wavelet_tile_alloc(2, NL_BYEXAMPLE_TILE);
   nl_wavelet_tile_seed(tile, 1);
   size_t n = 1 << 20;
   double *row = calloc(n, sizeof *row), sink = 0;

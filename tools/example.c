@@ -126,7 +126,7 @@ static int analyse(const args *a)
   if (a->npos != 1) die("analyse takes one IMAGE");
   check(nl_image_read(a->pos[0], &im, &err), &err);
   nl_byexample_options o = {!a->rgb, !a->nohist, 0, 0, a->paperhist ? NL_HIST_PAPER : NL_HIST_GAUSS,
-                            a->nocal ? 0 : NL_EXAMPLE_CALIBRATE};
+                            a->nocal ? 0 : NL_BYEXAMPLE_CALIBRATE};
   nl_byexample_params p;
   if (nl_byexample_analyse(im, &o, &p, &err)) {
     char msg[NL_ERROR_LEN + 300];
@@ -186,9 +186,9 @@ static int compare(const args *a)
   nl_image *im[2];
   if (a->npos != 2) die("compare takes PHOTO and SYNTH");
   for (int i = 0; i < 2; i++) check(nl_image_read(a->pos[i], &im[i], &err), &err);
-  if (im[0]->width < NL_EXAMPLE_MIN_SIZE || im[0]->height < NL_EXAMPLE_MIN_SIZE) {
+  if (im[0]->width < NL_BYEXAMPLE_MIN_SIZE || im[0]->height < NL_BYEXAMPLE_MIN_SIZE) {
     snprintf(err.msg, sizeof err.msg, "%.200s: image is %d x %d pixels, smaller than %d", a->pos[0],
-             im[0]->width, im[0]->height, NL_EXAMPLE_MIN_SIZE);
+             im[0]->width, im[0]->height, NL_BYEXAMPLE_MIN_SIZE);
     die(err.msg);
   }
   nl_table *bt = nl_study_example_band_table(), *st = nl_study_example_summary_table();

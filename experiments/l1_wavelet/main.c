@@ -25,10 +25,10 @@ int main(int argc, char **argv)
       r, "size", quick ? 128 : 512, 32, 4096,
       "side in pixels of the wavelet-noise images and spectra (quick 128)");
   int tile =
-      (int)nl_harness_param_int(r, "tile", NL_EXAMPLE_TILE, 8, 2048,
+      (int)nl_harness_param_int(r, "tile", NL_BYEXAMPLE_TILE, 8, 2048,
                                 "period in pixels of the 2D wavelet-noise tile (even, >= 8)");
   int tile3 =
-      (int)nl_harness_param_int(r, "tile3", quick ? 32 : NL_EXAMPLE_TILE3, 8, 256,
+      (int)nl_harness_param_int(r, "tile3", quick ? 32 : NL_BYEXAMPLE_TILE3, 8, 256,
                                 "period of the 3D wavelet-noise tile (even, >= 8; quick 32)");
   int band =
       (int)nl_harness_param_int(r, "band", 2, 0, 8, "the band shown in the images (0 = finest)");

@@ -14,7 +14,7 @@
 /* The 6 finest bands (periods 2-128 pixels) exist at every size from 64 up
  * and gain Fourier coefficients as the image grows; the coarsest band of
  * any image always holds the same ~8 coefficients. */
-enum { FINE = 6, NE = NL_BYEX_ESTIMATORS, MB = NL_WAVELET_MAX_BANDS };
+enum { FINE = 6, NE = NL_BYEXAMPLE_ESTIMATORS, MB = NL_WAVELET_MAX_BANDS };
 #define MIN_SIZE 64 /* the sweep's smallest side */
 
 int main(int argc, char **argv)
@@ -34,7 +34,7 @@ int main(int argc, char **argv)
   int sweep_seeds =
       (int)nl_harness_param_int(r, "sweep_seeds", quick ? 3 : 20, 2, 1000,
                                 "seeds per size in the error-against-size sweep (quick 3)");
-  int tile = (int)nl_harness_param_int(r, "tile", NL_EXAMPLE_TILE, 8, 2048,
+  int tile = (int)nl_harness_param_int(r, "tile", NL_BYEXAMPLE_TILE, 8, 2048,
                                        "period in pixels of the wavelet-noise tile (even, >= 8)");
   int tseeds = (int)nl_harness_param_int(
       r, "transfer_seeds", quick ? 4 : 16, 1, 1000,
@@ -70,11 +70,11 @@ int main(int argc, char **argv)
   nl_wavelet_bands b; /* (d): the estimated weights with new offsets */
   nl_wavelet_bands_init(&b, nb, est, tile, nl_seed_stream(seed0, "l2.new_offsets", 0), NULL);
   nl_wavelet_bands_grid(t, &b, size, size, 0, 1, d_img);
-  nl_byexample_estimate(&T, NL_BYEX_EQ12, d_img, est2);
+  nl_byexample_estimate(&T, NL_BYEXAMPLE_EQ12, d_img, est2);
   const char *wcols[] = { "band", "true", "est", "est_of_d", "corrected" };
   nl_table *wt = nl_table_alloc(5, wcols); /* est, est_of_d: eq. 12 */
   for (int k = 0; k < nb; k++)
-    nl_table_append(wt, "idddd", k, truth[k], est[k], est2[k], est[NL_BYEX_CORRECTED * nb + k]);
+    nl_table_append(wt, "idddd", k, truth[k], est[k], est2[k], est[NL_BYEXAMPLE_CORRECTED * nb + k]);
   nl_harness_write_table(r, wt, "weights.tsv");
   double sd = 0;
   for (int k = 0; k < nb; k++) sd += truth[k] * truth[k];
@@ -116,7 +116,7 @@ int main(int argc, char **argv)
         nl_table_append(bt, "iisdd", s, k, nl_byexample_estimator_names[q], rms[q * n + k],
                         bias[q * n + k]);
     for (int k = 0; k < n && s == maxsize; k++)
-      sw.bbelow += rms[NL_BYEX_CORRECTED * n + k] < rms[k];
+      sw.bbelow += rms[NL_BYEXAMPLE_CORRECTED * n + k] < rms[k];
     for (int q = 0; q < NE; q++) {
       for (int c = 0; c < 3; c++)
         nl_study_mean_sd(E + (c * NE + q) * sweep_seeds, sweep_seeds, &sw.m[c][q], &sw.v[c][q]);
@@ -129,7 +129,7 @@ int main(int argc, char **argv)
       }
       nl_table_append(et, "iisdddddddi", s, n, nl_byexample_estimator_names[q], sw.m[0][q],
                       sw.v[0][q], sw.m[1][q], sw.v[1][q], sw.m[2][q], p, sw.pf, sweep_seeds);
-      if (q == NL_BYEX_CORRECTED) {
+      if (q == NL_BYEXAMPLE_CORRECTED) {
         sw.below += sw.m[0][q] < sw.m[0][0];
         sw.pmax = fmax(sw.pmax, p);
         sw.p_last = p;

@@ -51,7 +51,7 @@ typedef struct {
   int *w, *h, *nb, tile, nseeds, nsyn;
   double frac;
   unsigned long seed;
-  double (*res)[NL_BYEX_ESTIMATORS][2];
+  double (*res)[NL_BYEXAMPLE_ESTIMATORS][2];
 } fits_job;
 
 static void fit_item(void *ctx, size_t i, int thread)
@@ -85,9 +85,9 @@ nl_table *l2_exemplar_fits(nl_harness *r, char *const *paths, int n, int max, in
     nl_error err;
     if (exemplar_luminance(paths[i], max, &j.lum[i], &j.w[i], &j.h[i], &err))
       nl_harness_die(r, 2, "%s", err.msg);
-    if (j.w[i] < NL_EXAMPLE_MIN_SIZE || j.h[i] < NL_EXAMPLE_MIN_SIZE)
+    if (j.w[i] < NL_BYEXAMPLE_MIN_SIZE || j.h[i] < NL_BYEXAMPLE_MIN_SIZE)
       nl_harness_die(r, 2, "%s: %d x %d pixels, smaller than %d", paths[i], j.w[i], j.h[i],
-                     NL_EXAMPLE_MIN_SIZE);
+                     NL_BYEXAMPLE_MIN_SIZE);
   }
   /* nl_byexample_sigma2 keeps its value in plain statics: filled before the threads start, so no
    * item writes them. */
@@ -95,7 +95,7 @@ nl_table *l2_exemplar_fits(nl_harness *r, char *const *paths, int n, int max, in
   nl_parallel_for((size_t)n, nl_harness_threads(r), fit_item, &j);
   for (int i = 0; i < n; i++) {
     const char *name = strrchr(paths[i], '/');
-    for (int q = 0; q < NL_BYEX_ESTIMATORS; q++)
+    for (int q = 0; q < NL_BYEXAMPLE_ESTIMATORS; q++)
       nl_table_append(t, "siiisdd", name ? name + 1 : paths[i], j.w[i], j.h[i], j.nb[i],
                       nl_byexample_estimator_names[q], j.res[i][q][0], j.res[i][q][1]);
     free(j.lum[i]);

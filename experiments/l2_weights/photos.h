@@ -17,7 +17,7 @@ char **l2_exemplars_option(int *argc, char **argv, const char *prog, const char 
  * exemplar (file name), width, height, bands, estimator, resid_raw,
  * resid_taper. A/resynthesis seeds from nl_seed_stream(seed,
  * "l2.photo_transfer" / "l2.photo", i). The fits are nl_parallel_for items
- * on the run's threads. An unreadable or too small (< NL_EXAMPLE_MIN_SIZE)
+ * on the run's threads. An unreadable or too small (< NL_BYEXAMPLE_MIN_SIZE)
  * image: nl_harness_die, exit 2. */
 nl_table *l2_exemplar_fits(nl_harness *r, char *const *paths, int n, int max, int tile, double frac,
                            int nseeds, int nsyn, unsigned long seed);

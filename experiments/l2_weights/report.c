@@ -18,7 +18,7 @@ void l2_report(nl_harness *r, const l2_fig4 *f, const l2_sweep *s, const nl_tabl
                   "sum w_est^2 / sum w^2 = %.3f. The paper says only that the two sets are \"very "
                   "similar\" and converge with sample size; the sweep measures it.",
                   f->size, f->size, f->nb, f->seed, nl_byexample_sigma2(f->tile), L2_PAPER_SIGMA2,
-                  f->e[0], f->e[NL_BYEX_CORRECTED], f->pw[0]);
+                  f->e[0], f->e[NL_BYEXAMPLE_CORRECTED], f->pw[0]);
   nl_harness_text(
       r,
       "Beyond the paper: eq. 12 reads each band from its own power, but each wavelet band spills "
@@ -29,13 +29,13 @@ void l2_report(nl_harness *r, const l2_fig4 *f, const l2_sweep *s, const nl_tabl
       "separate the two. Its mean error is below eq. 12's at %d of %d sizes; at %d pixels, %.3f "
       "(sd %.3f) against %.3f (sd %.3f), paired t-test over %d seeds p = %.2g (largest p over "
       "sizes %.2g).",
-      s->tseeds, s->frac, s->below, s->nsizes, s->maxsize, s->m[0][NL_BYEX_CORRECTED],
-      s->v[0][NL_BYEX_CORRECTED], s->m[0][0], s->v[0][0], s->seeds, s->p_last, s->pmax);
+      s->tseeds, s->frac, s->below, s->nsizes, s->maxsize, s->m[0][NL_BYEXAMPLE_CORRECTED],
+      s->v[0][NL_BYEXAMPLE_CORRECTED], s->m[0][0], s->v[0][0], s->seeds, s->p_last, s->pmax);
   nl_harness_text(r,
                   "Where: over the %d finest bands the corrected error at %d pixels is %.3f (sd "
                   "%.3f) against eq. 12's %.3f (sd %.3f), paired t-test p = %.2g; per band, its "
                   "RMS error is below eq. 12's in %d of %d bands (bands.tsv).",
-                  s->fine, s->maxsize, s->m[1][NL_BYEX_CORRECTED], s->v[1][NL_BYEX_CORRECTED],
+                  s->fine, s->maxsize, s->m[1][NL_BYEXAMPLE_CORRECTED], s->v[1][NL_BYEXAMPLE_CORRECTED],
                   s->m[1][0], s->v[1][0], s->pf, s->bbelow,
                   nl_byexample_band_count(s->maxsize, s->maxsize));
   nl_harness_report_table(r, wt,

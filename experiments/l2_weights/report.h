@@ -14,7 +14,7 @@
 typedef struct {
   int size, nb, tile;
   unsigned long seed;
-  double e[NL_BYEX_ESTIMATORS], pw[NL_BYEX_ESTIMATORS];
+  double e[NL_BYEXAMPLE_ESTIMATORS], pw[NL_BYEXAMPLE_ESTIMATORS];
 } l2_fig4;
 
 /* The error-against-size sweep: nsizes sizes up to maxsize, seeds per size,
@@ -27,7 +27,7 @@ typedef struct {
 typedef struct {
   int nsizes, maxsize, seeds, tseeds, fine, below, bbelow;
   double frac;
-  double m[3][NL_BYEX_ESTIMATORS], v[3][NL_BYEX_ESTIMATORS];
+  double m[3][NL_BYEXAMPLE_ESTIMATORS], v[3][NL_BYEXAMPLE_ESTIMATORS];
   double p_last, pmax, pf;
 } l2_sweep;
 

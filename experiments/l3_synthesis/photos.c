@@ -214,7 +214,7 @@ nl_table *l3_photos(nl_harness *r, char (*names)[64], nl_image **photos, int np,
   /* gauss33 and paper10 as the paper synthesises; calibrated = the `example` command's default
    * (gauss33 with the synthesis-time band calibration, nl_byexample.h) */
   const nl_byexample_hist_kind kinds[NREP] = { NL_HIST_GAUSS, NL_HIST_PAPER, NL_HIST_GAUSS };
-  const int cal[NREP] = { 0, 0, NL_EXAMPLE_CALIBRATE };
+  const int cal[NREP] = { 0, 0, NL_BYEXAMPLE_CALIBRATE };
   const nl_image **panels = nl_xmalloc((size_t)(NP * np + 1) * sizeof *panels);
   char(*labels)[64] = nl_xmalloc((size_t)(NP * np + 1) * sizeof *labels);
   const char **lab = nl_xmalloc((size_t)(NP * np + 1) * sizeof *lab);

@@ -18,7 +18,7 @@ nl_status l3_photos_dir_parse(int *argc, char **argv, const char **dir, nl_error
 int l3_photos_load(const char *dir, char (*names)[64], nl_image **photos, int max, nl_error *err);
 
 /* Every photograph with three representations (gauss33, paper10 as the
- * paper synthesises, and calibrated = gauss33 with NL_EXAMPLE_CALIBRATE
+ * paper synthesises, and calibrated = gauss33 with NL_BYEXAMPLE_CALIBRATE
  * rounds, the `example` command's default) and K replicates
  * (nl_seed_replicate(seed, s), the same for all; rows carry the replicate),
  * compared by nl_study_example_compare with the criteria min_share,

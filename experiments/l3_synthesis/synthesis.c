@@ -71,7 +71,7 @@ static void gauss_self_match(size_t n, unsigned long seed, nl_byexample_hist_kin
    * to a channel that needs no change at all. */
   double *x = nl_xmalloc(n * sizeof *x);
   double *y = nl_xmalloc(n * sizeof *y);
-  double q[NL_EXAMPLE_HIST_MAX];
+  double q[NL_BYEXAMPLE_HIST_MAX];
   gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(g, nl_seed_stream(seed, "l3.gauss_exemplar", 0));
   for (size_t i = 0; i < n; i++) x[i] = gsl_ran_gaussian_ziggurat(g, 1.0);

@@ -188,8 +188,8 @@ void nl_byexample_quantiles(const double *v, size_t n, double *q)
   double *s = nl_xmalloc(n * sizeof *s);
   memcpy(s, v, n * sizeof *s);
   nl_stats_sort(s, n);
-  for (int j = 0; j < NL_EXAMPLE_HIST; j++) {
-    double pos = (double)j / (NL_EXAMPLE_HIST - 1) * (double)(n - 1);
+  for (int j = 0; j < NL_BYEXAMPLE_HIST; j++) {
+    double pos = (double)j / (NL_BYEXAMPLE_HIST - 1) * (double)(n - 1);
     size_t i = (size_t)pos;
     double f = pos - (double)i;
     q[j] = i + 1 < n ? s[i] + f * (s[i + 1] - s[i]) : s[n - 1];
@@ -200,7 +200,7 @@ void nl_byexample_quantiles(const double *v, size_t n, double *q)
 void nl_byexample_hist(const double *v, size_t n, nl_byexample_hist_kind kind, double *q)
 {
   if (kind == NL_HIST_PAPER) { nl_byexample_quantiles(v, n, q); return; }
-  double p[NL_EXAMPLE_HIST_MAX], *s = nl_xmalloc(n * sizeof *s);
+  double p[NL_BYEXAMPLE_HIST_MAX], *s = nl_xmalloc(n * sizeof *s);
   int m = nl_byexample_hist_knots(kind, NULL, p);
   memcpy(s, v, n * sizeof *s);
   nl_stats_sort(s, n);
@@ -281,24 +281,24 @@ void nl_byexample_spline(const double *x, const double *y, int n, nl_byexample_s
 
 void nl_byexample_match(double *v, size_t n, double sigma, const double *q, nl_byexample_spline_kind kind)
 {
-  double p[NL_EXAMPLE_HIST];
-  for (int j = 0; j < NL_EXAMPLE_HIST; j++) p[j] = (double)j / (NL_EXAMPLE_HIST - 1);
+  double p[NL_BYEXAMPLE_HIST];
+  for (int j = 0; j < NL_BYEXAMPLE_HIST; j++) p[j] = (double)j / (NL_BYEXAMPLE_HIST - 1);
   /* The expected CDF of the noise (a Gaussian of variance sigma^2, eq. 14)
    * takes noise to a probability, the exemplar's inverse cumulative
    * histogram takes it to an intensity. */
   for (size_t i = 0; i < n; i++) v[i] = gsl_cdf_ugaussian_P(v[i] / sigma);
-  if (q[NL_EXAMPLE_HIST - 1] == q[0]) {   /* constant channel */
+  if (q[NL_BYEXAMPLE_HIST - 1] == q[0]) {   /* constant channel */
     for (size_t i = 0; i < n; i++) v[i] = q[0];
     return;
   }
-  nl_byexample_spline(p, q, NL_EXAMPLE_HIST, kind, v, v, n);
+  nl_byexample_spline(p, q, NL_BYEXAMPLE_HIST, kind, v, v, n);
 }
 
 void nl_byexample_match_kind(double *v, size_t n, double sigma, nl_byexample_hist_kind hk, const double *q,
                              nl_byexample_spline_kind kind)
 {
   if (hk == NL_HIST_PAPER) { nl_byexample_match(v, n, sigma, q, kind); return; }
-  double z[NL_EXAMPLE_HIST_MAX];
+  double z[NL_BYEXAMPLE_HIST_MAX];
   int m = nl_byexample_hist_knots(hk, z, NULL);
   if (q[m - 1] == q[0]) {   /* constant channel */
     for (size_t i = 0; i < n; i++) v[i] = q[0];
@@ -363,10 +363,10 @@ nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *o
 {
   nl_byexample_options o = {1, 1, 0, 0, NL_HIST_PAPER, 0};
   if (opt) o = *opt;
-  if (o.tile == 0) o.tile = NL_EXAMPLE_TILE;
-  if (im->width < NL_EXAMPLE_MIN_SIZE || im->height < NL_EXAMPLE_MIN_SIZE)
+  if (o.tile == 0) o.tile = NL_BYEXAMPLE_TILE;
+  if (im->width < NL_BYEXAMPLE_MIN_SIZE || im->height < NL_BYEXAMPLE_MIN_SIZE)
     return nl_fail(err, NL_EINVAL, "image is %d x %d pixels, smaller than %d", im->width,
-                   im->height, NL_EXAMPLE_MIN_SIZE);
+                   im->height, NL_BYEXAMPLE_MIN_SIZE);
   if (o.tile < 8 || o.tile % 2) return nl_fail(err, NL_EINVAL, "tile period %d not even and >= 8", o.tile);
   memset(p, 0, sizeof *p);
   p->channels = colour_channels(im);
@@ -391,10 +391,10 @@ nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *o
   for (int c = 0; c < p->channels; c++) {
     /* The flat test needs the true extremes (the gauss reading's outer
      * knots are order statistics next to them). */
-    double ext[NL_EXAMPLE_HIST];
+    double ext[NL_BYEXAMPLE_HIST];
     nl_byexample_quantiles(plane[c], n, ext);
     nl_byexample_hist(plane[c], n, p->hist_kind, p->hist[c]);
-    int flat = ext[0] == ext[NL_EXAMPLE_HIST - 1];
+    int flat = ext[0] == ext[NL_BYEXAMPLE_HIST - 1];
     if (p->calibrate && !flat) nl_byexample_band_power(plane[c], im->width, im->height, p->nbands, p->target[c]);
     if (p->calibrate && !flat) { keep[c] = nl_xmalloc(n * sizeof(double)); memcpy(keep[c], plane[c], n * sizeof(double)); }
     if (p->histogram && !flat) nl_byexample_gaussianize(plane[c], n);
@@ -539,7 +539,7 @@ nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, un
                    w, h, p->channels, nl_format_bytes(b1, need), nl_format_bytes(b2, nl_mem_physical()));
   }
   int solid = opt && opt->solid;
-  nl_wavelet_tile *t = nl_wavelet_tile_alloc(solid ? 3 : 2, solid ? NL_EXAMPLE_TILE3 : p->tile);
+  nl_wavelet_tile *t = nl_wavelet_tile_alloc(solid ? 3 : 2, solid ? NL_BYEXAMPLE_TILE3 : p->tile);
   if (!t) return nl_fail(err, NL_EINVAL, "tile period %d not even and >= 8", p->tile);
   nl_wavelet_tile_seed(t, seed);
   /* Scale this tile's noise to the sigma_N^2 the weights were computed with:

@@ -58,7 +58,7 @@
  * Both are provided (nl_byexample_spline) so the difference can be measured.
  *
  * Calibrated synthesis (options.calibrate > 0; the `example` command's
- * default with NL_EXAMPLE_CALIBRATE rounds, gauss33; params file version 3;
+ * default with NL_BYEXAMPLE_CALIBRATE rounds, gauss33; params file version 3;
  * not the paper's method). The paper's synthesis does not reproduce a
  * photo's per-octave power within x1.3 on the photos of data/exemplars (L3's
  * photos table: gauss33 and paper10 rows). Causes found by measurement:
@@ -99,18 +99,18 @@
  *   nl_image *out;
  *   nl_byexample_synthesize(&p, 1024, 1024, seed, NULL, &out, &err);
  */
-#ifndef NL_EXAMPLE_H
-#define NL_EXAMPLE_H
+#ifndef NL_BYEXAMPLE_H
+#define NL_BYEXAMPLE_H
 
 #include "image/nl_image.h"
 #include "wavelet/nl_wavelet.h"
 
-#define NL_EXAMPLE_HIST 10       /* the paper's reading: quantiles at p = j/9 */
-#define NL_EXAMPLE_HIST_MAX 33   /* knots of the widest representation */
-#define NL_EXAMPLE_TILE 256      /* default 2D tile period */
-#define NL_EXAMPLE_TILE3 64      /* 3D tile period for solid synthesis */
-#define NL_EXAMPLE_MIN_SIZE 16   /* smaller exemplars are rejected */
-#define NL_EXAMPLE_CALIBRATE 4   /* the `example` command's calibration iterations */
+#define NL_BYEXAMPLE_HIST 10       /* the paper's reading: quantiles at p = j/9 */
+#define NL_BYEXAMPLE_HIST_MAX 33   /* knots of the widest representation */
+#define NL_BYEXAMPLE_TILE 256      /* default 2D tile period */
+#define NL_BYEXAMPLE_TILE3 64      /* 3D tile period for solid synthesis */
+#define NL_BYEXAMPLE_MIN_SIZE 16   /* smaller exemplars are rejected */
+#define NL_BYEXAMPLE_CALIBRATE 4   /* the `example` command's calibration iterations */
 
 typedef enum { NL_HIST_PAPER = 0, NL_HIST_GAUSS = 1 } nl_byexample_hist_kind;
 
@@ -124,7 +124,7 @@ typedef struct {
   double matrix[3][3];                   /* c = M (rgb - mean) */
   nl_byexample_hist_kind hist_kind;      /* which quantiles hist holds */
   int nhist;                             /* their count (nl_byexample_hist_knots) */
-  double hist[3][NL_EXAMPLE_HIST_MAX];   /* channel quantiles at the kind's knots */
+  double hist[3][NL_BYEXAMPLE_HIST_MAX];   /* channel quantiles at the kind's knots */
   double w[3][NL_WAVELET_MAX_BANDS];     /* w[c][0]: finest band */
   int calibrate;                         /* > 0: iterations of the synthesis-time calibration */
   double target[3][NL_WAVELET_MAX_BANDS];   /* with calibrate: eq. 13 band powers of channel c */
@@ -135,9 +135,9 @@ typedef struct {
   int decorrelate;    /* PCA (1) or plain RGB channels (0) */
   int histogram;      /* histogram matching (1) or Gaussian noise as is (0) */
   double sigma2;      /* 0: nl_byexample_sigma2(tile) */
-  int tile;           /* 0: NL_EXAMPLE_TILE */
+  int tile;           /* 0: NL_BYEXAMPLE_TILE */
   nl_byexample_hist_kind hist_kind;   /* 0: the paper's 10 quantiles */
-  int calibrate;      /* 0: the paper; > 0: store band targets, calibrate in synthesis (NL_EXAMPLE_CALIBRATE) */
+  int calibrate;      /* 0: the paper; > 0: store band targets, calibrate in synthesis (NL_BYEXAMPLE_CALIBRATE) */
 } nl_byexample_options;
 
 typedef enum { NL_SPLINE_STEFFEN = 0, NL_SPLINE_FRITSCH_CARLSON = 1 } nl_byexample_spline_kind;
@@ -175,7 +175,7 @@ void nl_byexample_decorrelate(const nl_image *im, int nch, const double mean[3],
                               const double matrix[3][3], double **plane);
 void nl_byexample_recorrelate(double *const *plane, int nch, const double mean[3],
                               const double matrix[3][3], nl_image *out);
-/* q[j] = quantile of v at p = j/(NL_EXAMPLE_HIST-1), linear between order statistics. */
+/* q[j] = quantile of v at p = j/(NL_BYEXAMPLE_HIST-1), linear between order statistics. */
 void nl_byexample_quantiles(const double *v, size_t n, double *q);
 /* v <- Phi^-1((rank + 1/2) / n), ties in index order. */
 void nl_byexample_gaussianize(double *v, size_t n);

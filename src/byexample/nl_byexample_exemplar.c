@@ -72,7 +72,7 @@ static nl_image *wavelet(int size, unsigned long seed)
   static const double mix[3][3] = {{0.11, 0.05, 0.02}, {0.09, -0.04, 0.03}, {0.06, -0.02, -0.05}};
   static const double base[3] = {0.55, 0.45, 0.32}, peak[3] = {2.5, 1.0, 4.0};
   int nb = nl_byexample_band_count(size, size);
-  nl_wavelet_tile *t = nl_wavelet_tile_alloc(2, NL_EXAMPLE_TILE);
+  nl_wavelet_tile *t = nl_wavelet_tile_alloc(2, NL_BYEXAMPLE_TILE);
   nl_wavelet_tile_seed(t, seed);
   double *ch[3];
   size_t n = (size_t)size * size;

@@ -13,7 +13,7 @@
 
 enum { MAXB = NL_WAVELET_MAX_BANDS };
 
-const char *const nl_byexample_estimator_names[NL_BYEX_ESTIMATORS] = {"eq12", "eq12_taper", "nnls_raw", "corrected"};
+const char *const nl_byexample_estimator_names[NL_BYEXAMPLE_ESTIMATORS] = {"eq12", "eq12_taper", "nnls_raw", "corrected"};
 
 void nl_byexample_band_power_taper(const double *img, int w, int h, int nbands, double frac, double *power)
 {
@@ -175,9 +175,9 @@ double nl_byexample_nnls(const double *M, int m, int n, const double *b, double 
 /* The weights of estimator `kind` from the image's raw and tapered band powers. */
 static void solve(const nl_byexample_transfer *T, int kind, const double p[2][MAXB], double *wts)
 {
-  int nb = T->nbands, taper = kind == NL_BYEX_EQ12_TAPER || kind == NL_BYEX_CORRECTED;
+  int nb = T->nbands, taper = kind == NL_BYEXAMPLE_EQ12_TAPER || kind == NL_BYEXAMPLE_CORRECTED;
   double M[MAXB * MAXB] = {0};
-  if (kind == NL_BYEX_EQ12 || kind == NL_BYEX_EQ12_TAPER) {   /* eq. 12 */
+  if (kind == NL_BYEXAMPLE_EQ12 || kind == NL_BYEXAMPLE_EQ12_TAPER) {   /* eq. 12 */
     for (int k = 0; k < nb; k++) wts[k] = sqrt(p[taper][k] / T->sigma2);
     return;
   }
@@ -208,7 +208,7 @@ void nl_byexample_trial(const nl_byexample_transfer *T, nl_wavelet_tile *t, unsi
   nl_wavelet_bands_grid(t, &b, T->w, T->h, 0, 1, img);
   double p[2][MAXB];
   powers(img, T->w, T->h, nb, T->frac, p[0], p[1]);
-  for (int e = 0; e < NL_BYEX_ESTIMATORS; e++) {
+  for (int e = 0; e < NL_BYEXAMPLE_ESTIMATORS; e++) {
     double *w = est + e * nb, se = 0, st = 0, sef = 0, stf = 0, pe = 0;
     solve(T, e, p, w);
     for (int k = 0; k < nb; k++) {
@@ -228,14 +228,14 @@ typedef struct {
   const nl_byexample_transfer *T;
   const unsigned long *seeds;
   int n, nfine;
-  double *E, (*truth)[MAXB], (*est)[NL_BYEX_ESTIMATORS * MAXB];
+  double *E, (*truth)[MAXB], (*est)[NL_BYEXAMPLE_ESTIMATORS * MAXB];
   nl_wavelet_tile *t[NL_PARALLEL_MAX];
   double *img[NL_PARALLEL_MAX];
 } trials_job;
 
 static void trial_item(void *ctx, size_t k, int th)
 {
-  enum { NE = NL_BYEX_ESTIMATORS };
+  enum { NE = NL_BYEXAMPLE_ESTIMATORS };
   trials_job *j = ctx;
   if (!j->t[th]) {
     j->t[th] = nl_wavelet_tile_alloc(2, j->T->tile);
@@ -253,7 +253,7 @@ static void trial_item(void *ctx, size_t k, int th)
 void nl_byexample_trials(const nl_byexample_transfer *T, const unsigned long *seeds, int n,
                          int nfine, double *E, double *rms, double *bias, int threads)
 {
-  enum { NE = NL_BYEX_ESTIMATORS };
+  enum { NE = NL_BYEXAMPLE_ESTIMATORS };
   int nb = T->nbands;
   double sq[NE * MAXB] = {0}, sum[NE * MAXB] = {0};
   trials_job *j = nl_xcalloc(1, sizeof *j);
@@ -282,12 +282,12 @@ void nl_byexample_trials(const nl_byexample_transfer *T, const unsigned long *se
 }
 
 int nl_byexample_fit_all(const double *img, int w, int h, int tile, double frac, int nseeds, unsigned long tseed,
-                         int nsyn, unsigned long rseed, double resid[NL_BYEX_ESTIMATORS][2])
+                         int nsyn, unsigned long rseed, double resid[NL_BYEXAMPLE_ESTIMATORS][2])
 {
   nl_byexample_transfer T;
   double wts[MAXB];
   nl_byexample_transfer_measure(&T, tile, w, h, nl_byexample_band_count(w, h), frac, nseeds, tseed, 1);   /* callers thread over images */
-  for (int q = 0; q < NL_BYEX_ESTIMATORS; q++) {
+  for (int q = 0; q < NL_BYEXAMPLE_ESTIMATORS; q++) {
     nl_byexample_estimate(&T, q, img, wts);
     nl_byexample_fit_residual(&T, wts, img, nsyn, rseed, resid[q]);
   }

@@ -26,18 +26,18 @@
  *   corrected  steps 1-3
  *
  *   nl_byexample_transfer T;
- *   nl_byexample_transfer_measure(&T, NL_EXAMPLE_TILE, w, h, nbands, 0.25, 8, seed, threads);
- *   nl_byexample_estimate(&T, NL_BYEX_CORRECTED, img, wts);
+ *   nl_byexample_transfer_measure(&T, NL_BYEXAMPLE_TILE, w, h, nbands, 0.25, 8, seed, threads);
+ *   nl_byexample_estimate(&T, NL_BYEXAMPLE_CORRECTED, img, wts);
  */
 #ifndef NL_BYEXAMPLE_LEAK_H
 #define NL_BYEXAMPLE_LEAK_H
 
 #include "byexample/nl_byexample.h"
 
-enum { NL_BYEX_EQ12, NL_BYEX_EQ12_TAPER, NL_BYEX_NNLS_RAW, NL_BYEX_CORRECTED, NL_BYEX_ESTIMATORS };
-extern const char *const nl_byexample_estimator_names[NL_BYEX_ESTIMATORS];
+enum { NL_BYEXAMPLE_EQ12, NL_BYEXAMPLE_EQ12_TAPER, NL_BYEXAMPLE_NNLS_RAW, NL_BYEXAMPLE_CORRECTED, NL_BYEXAMPLE_ESTIMATORS };
+extern const char *const nl_byexample_estimator_names[NL_BYEXAMPLE_ESTIMATORS];
 
-enum { NL_BYEX_RAW = 0, NL_BYEX_TAPER = 1 };   /* how band powers are measured */
+enum { NL_BYEXAMPLE_RAW = 0, NL_BYEXAMPLE_TAPER = 1 };   /* how band powers are measured */
 
 typedef struct {
   int w, h, nbands, tile;
@@ -77,7 +77,7 @@ void nl_byexample_trial(const nl_byexample_transfer *T, nl_wavelet_tile *t, unsi
                         double *truth, double *est, double *img, double *err, double *fine, double *power);
 
 /* n trials (nl_byexample_trial with seeds[k], each on its own tile of period
- * T->tile) into E[(c * NL_BYEX_ESTIMATORS + kind) * n + k], c = 0 err, 1
+ * T->tile) into E[(c * NL_BYEXAMPLE_ESTIMATORS + kind) * n + k], c = 0 err, 1
  * fine, 2 power; per band (may be NULL) the RMS error rms[kind * nbands + k]
  * and mean error bias[...] over the trials. The trials run on `threads`
  * threads (nl_parallel_for; sums in trial order, so the results do not
@@ -88,7 +88,7 @@ void nl_byexample_trials(const nl_byexample_transfer *T, const unsigned long *se
 /* How well weights reproduce an image's band powers: the band powers of the
  * noise of weights wts, averaged over nsyn syntheses (tile and offsets from
  * nl_seed_stream(seed, "byexample.resynth", s)), against the image's, both
- * measured raw (resid[NL_BYEX_RAW]) and tapered (resid[NL_BYEX_TAPER]): the
+ * measured raw (resid[NL_BYEXAMPLE_RAW]) and tapered (resid[NL_BYEXAMPLE_TAPER]): the
  * RMS over bands of (p_syn - p_img) / p_img (bands with p_img = 0 skipped). */
 void nl_byexample_fit_residual(const nl_byexample_transfer *T, const double *wts, const double *img,
                                int nsyn, unsigned long seed, double resid[2]);
@@ -98,7 +98,7 @@ void nl_byexample_fit_residual(const nl_byexample_transfer *T, const double *wts
  * nl_byexample_fit_residual (nsyn syntheses from rseed) into
  * resid[kind][taper]. Returns the band count. */
 int nl_byexample_fit_all(const double *img, int w, int h, int tile, double frac, int nseeds, unsigned long tseed,
-                         int nsyn, unsigned long rseed, double resid[NL_BYEX_ESTIMATORS][2]);
+                         int nsyn, unsigned long rseed, double resid[NL_BYEXAMPLE_ESTIMATORS][2]);
 
 /* Two-sided p-value of the paired t-test of a[i] - b[i], i < n (n >= 2;
  * 1 when every difference is 0). */

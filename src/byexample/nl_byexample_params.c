@@ -44,19 +44,19 @@ const char *nl_byexample_hist_name(nl_byexample_hist_kind kind)
 int nl_byexample_hist_knots(nl_byexample_hist_kind kind, double *x, double *p)
 {
   if (kind == NL_HIST_PAPER) {
-    for (int j = 0; j < NL_EXAMPLE_HIST; j++) {
-      if (x) x[j] = (double)j / (NL_EXAMPLE_HIST - 1);
-      if (p) p[j] = (double)j / (NL_EXAMPLE_HIST - 1);
+    for (int j = 0; j < NL_BYEXAMPLE_HIST; j++) {
+      if (x) x[j] = (double)j / (NL_BYEXAMPLE_HIST - 1);
+      if (p) p[j] = (double)j / (NL_BYEXAMPLE_HIST - 1);
     }
-    return NL_EXAMPLE_HIST;
+    return NL_BYEXAMPLE_HIST;
   }
   if (kind != NL_HIST_GAUSS) return 0;
-  for (int j = 0; j < NL_EXAMPLE_HIST_MAX; j++) {
+  for (int j = 0; j < NL_BYEXAMPLE_HIST_MAX; j++) {
     double z = -4.0 + 0.25 * j;
     if (x) x[j] = z;
     if (p) p[j] = gsl_cdf_ugaussian_P(z);
   }
-  return NL_EXAMPLE_HIST_MAX;
+  return NL_BYEXAMPLE_HIST_MAX;
 }
 
 int nl_byexample_param_count(const nl_byexample_params *p)
@@ -81,7 +81,7 @@ static const char *non_finite(const nl_byexample_params *p, char *buf, size_t le
     if (!isfinite(p->mean[c])) { snprintf(buf, len, "mean %d", c + 1); return buf; }
     for (int k = 0; k < C; k++)
       if (!isfinite(p->matrix[c][k])) { snprintf(buf, len, "matrix %d,%d", c + 1, k + 1); return buf; }
-    for (int k = 0; k < p->nhist && k < NL_EXAMPLE_HIST_MAX; k++)
+    for (int k = 0; k < p->nhist && k < NL_BYEXAMPLE_HIST_MAX; k++)
       if (!isfinite(p->hist[c][k])) { snprintf(buf, len, "hist%d %d", c, k + 1); return buf; }
     for (int k = 0; k < p->nbands && k < NL_WAVELET_MAX_BANDS; k++)
       if (!isfinite(p->w[c][k]) || !isfinite(p->target[c][k]) || !isfinite(p->corr[c][k])) { snprintf(buf, len, "weights%d %d", c, k + 1); return buf; }

@@ -12,8 +12,8 @@ NL_TEST(weights_of_known_noise)
 {
   enum { N = 512, NB = 9, SEEDS = 4 };
   double truth[NB] = {0.5, 0.7, 0.9, 1.0, 1.0, 0.9, 0.8, 0.6, 0.5}, est[NB] = {0};
-  double sigma2 = nl_byexample_sigma2(NL_EXAMPLE_TILE);
-  nl_wavelet_tile *t = nl_wavelet_tile_alloc(2, NL_EXAMPLE_TILE);
+  double sigma2 = nl_byexample_sigma2(NL_BYEXAMPLE_TILE);
+  nl_wavelet_tile *t = nl_wavelet_tile_alloc(2, NL_BYEXAMPLE_TILE);
   double *img = malloc(N * N * sizeof *img);
   for (int s = 1; s <= SEEDS; s++) {
     nl_wavelet_tile_seed(t, (unsigned long)s);

@@ -39,14 +39,14 @@ NL_TEST(transfer_matrix)
 {
   nl_byexample_transfer T;
   int nb = nl_byexample_band_count(128, 128);
-  nl_byexample_transfer_measure(&T, NL_EXAMPLE_TILE, 128, 128, nb, 1.0, 2, 7, 1);
+  nl_byexample_transfer_measure(&T, NL_BYEXAMPLE_TILE, 128, 128, nb, 1.0, 2, 7, 1);
   double far[2] = {0, 0};
   for (int i = 0; i < nb; i++) {
     double tot = 0;
-    for (int j = 0; j < nb; j++) tot += T.A[NL_BYEX_TAPER][i * nb + j];
+    for (int j = 0; j < nb; j++) tot += T.A[NL_BYEXAMPLE_TAPER][i * nb + j];
     printf("  band %d: raw diag %.3f, Hann diag %.3f of sigma_N^2 %.4f\n", i,
            T.A[0][i * nb + i] / T.sigma2, T.A[1][i * nb + i] / T.sigma2, T.sigma2);
-    NL_CHECK(T.A[NL_BYEX_TAPER][i * nb + i] > 0.5 * tot);
+    NL_CHECK(T.A[NL_BYEXAMPLE_TAPER][i * nb + i] > 0.5 * tot);
     for (int j = 0; j + 1 < i; j++) { far[0] += T.A[0][i * nb + j]; far[1] += T.A[1][i * nb + j]; }
   }
   printf("  power 2+ bands finer: raw %.3g, Hann %.3g\n", far[0], far[1]);

@@ -55,7 +55,7 @@
  *   representation. But for the MIXTURE cos/sin has a cost: the rows lie on a
  *   torus of dimension n_low inside R^(2 n_low), so each Gaussian sees a thin,
  *   curved, one-sided spread across the circle and AIC keeps buying
- *   components to follow the curvature (measured in test_reproduce.c: 3
+ *   components to follow the curvature (measured in test_cheng_repro.c: 3
  *   blobs of sd 0.05 select K = 10). NL_CHENG_REP_UNWRAP: each angle unwrapped
  *   to (mu_j - pi, mu_j + pi] with mu_j opposite the middle of the widest
  *   empty arc of column j in the pool (d = n_low, intrinsic coordinates; the

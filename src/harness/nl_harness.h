@@ -56,8 +56,8 @@
  * script from scripts/gnuplot/NAME-*.gp, or are images the program wrote.
  * Report links are relative to results/ ("NAME/file.png").
  */
-#ifndef NL_REPORT_H
-#define NL_REPORT_H
+#ifndef NL_HARNESS_H
+#define NL_HARNESS_H
 
 #include "image/nl_image.h"
 #include "table/nl_table.h"
