@@ -147,16 +147,16 @@ void a2_smoke_curve(nl_harness *r, const a2_smoke_scene *sc, const int *octaves,
       p->diff = j.diff[o + k] > p->diff ? j.diff[o + k] : p->diff;
       p->max_noise = fmax(p->max_noise, j.max_noise[o + k]);
     }
-    p->plain_evals = nl_study_mean(j.ev0 + o, seeds);
-    p->bounded_evals = nl_study_mean(j.ev1 + o, seeds);
+    p->plain_evals = nl_stats_mean(j.ev0 + o, seeds, NL_STATS_RUNNING);
+    p->bounded_evals = nl_stats_mean(j.ev1 + o, seeds, NL_STATS_RUNNING);
     p->eval_ratio = eval_ratio(p->plain_evals, p->bounded_evals);
-    p->eval_ratio_sd = nl_study_sd(er, seeds);
-    p->plain_ms = nl_study_mean(j.ms0 + o, seeds);
-    p->plain_ms_sd = nl_study_sd(j.ms0 + o, seeds);
-    p->bounded_ms = nl_study_mean(j.ms1 + o, seeds);
-    p->bounded_ms_sd = nl_study_sd(j.ms1 + o, seeds);
+    p->eval_ratio_sd = nl_stats_sd(er, seeds, NL_STATS_RUNNING);
+    p->plain_ms = nl_stats_mean(j.ms0 + o, seeds, NL_STATS_RUNNING);
+    p->plain_ms_sd = nl_stats_sd(j.ms0 + o, seeds, NL_STATS_RUNNING);
+    p->bounded_ms = nl_stats_mean(j.ms1 + o, seeds, NL_STATS_RUNNING);
+    p->bounded_ms_sd = nl_stats_sd(j.ms1 + o, seeds, NL_STATS_RUNNING);
     p->time_ratio = timed ? p->plain_ms / p->bounded_ms : 0.0;
-    p->time_ratio_sd = nl_study_sd(j.tr + o, seeds);
+    p->time_ratio_sd = nl_stats_sd(j.tr + o, seeds, NL_STATS_RUNNING);
   }
   for (int t = 0; t < 2 * nt; t++) free(img[t]);
   free(v);

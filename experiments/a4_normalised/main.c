@@ -65,10 +65,11 @@ int main(int argc, char **argv)
   }
   const char *cols[] = { "signal", "f_sup", "aliased_fraction", "aliased_fraction_sd" };
   nl_table *t = nl_table_alloc(4, cols);
-  double mf = nl_study_mean(fs, seeds);
-  nl_table_append(t, "sddd", "noise(x)", mf, nl_study_mean(a0, seeds), nl_study_sd(a0, seeds));
-  nl_table_append(t, "sddd", "noise(x / F_sup)", 1.0, nl_study_mean(a1, seeds),
-                  nl_study_sd(a1, seeds));
+  double mf = nl_stats_mean(fs, seeds, NL_STATS_RUNNING);
+  nl_table_append(t, "sddd", "noise(x)", mf, nl_stats_mean(a0, seeds, NL_STATS_RUNNING),
+                  nl_stats_sd(a0, seeds, NL_STATS_RUNNING));
+  nl_table_append(t, "sddd", "noise(x / F_sup)", 1.0, nl_stats_mean(a1, seeds, NL_STATS_RUNNING),
+                  nl_stats_sd(a1, seeds, NL_STATS_RUNNING));
   nl_harness_write_table(r, t, "aliasing.tsv");
 
   /* Fig. 5.7: the first seed's plane before and after the normalisation. */

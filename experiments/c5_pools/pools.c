@@ -147,14 +147,15 @@ static nl_cheng_model *rule_rows(nl_harness *r, c5_pools *T, const nl_study_chen
 {
   fits f;
   nl_cheng_model *m = seeds_collect(r, j, nseeds, &f);
-  nl_table_append(T->gmm, "sdsdddddddddddddddddsdddddd", th->texture, (double)low, rules[ru],
-                  (double)pool->n, (double)pool->excluded, (double)m->n_in, (double)m->d, eps,
-                  m->cutoff, nl_study_mean(f.k0, nseeds), nl_study_sd(f.k0, nseeds),
-                  nl_study_mean(f.k, nseeds), nl_study_sd(f.k, nseeds),
-                  nl_study_mean(f.aic, nseeds), nl_study_sd(f.aic, nseeds),
-                  nl_study_mean(f.bic, nseeds), nl_study_sd(f.bic, nseeds),
-                  nl_study_mean(f.ll, nseeds), (double)nseeds, (double)f.ok, f.status, f.sec,
-                  (double)th->samples, (double)th->k0, (double)th->k, th->cutoff, th->aic);
+  nl_table_append(
+      T->gmm, "sdsdddddddddddddddddsdddddd", th->texture, (double)low, rules[ru], (double)pool->n,
+      (double)pool->excluded, (double)m->n_in, (double)m->d, eps, m->cutoff,
+      nl_stats_mean(f.k0, nseeds, NL_STATS_RUNNING), nl_stats_sd(f.k0, nseeds, NL_STATS_RUNNING),
+      nl_stats_mean(f.k, nseeds, NL_STATS_RUNNING), nl_stats_sd(f.k, nseeds, NL_STATS_RUNNING),
+      nl_stats_mean(f.aic, nseeds, NL_STATS_RUNNING), nl_stats_sd(f.aic, nseeds, NL_STATS_RUNNING),
+      nl_stats_mean(f.bic, nseeds, NL_STATS_RUNNING), nl_stats_sd(f.bic, nseeds, NL_STATS_RUNNING),
+      nl_stats_mean(f.ll, nseeds, NL_STATS_RUNNING), (double)nseeds, (double)f.ok, f.status, f.sec,
+      (double)th->samples, (double)th->k0, (double)th->k, th->cutoff, th->aic);
   for (size_t q = 0; q < m->npath; q++)
     nl_table_append(T->path, "sdsdddddd", th->texture, (double)low, rules[ru], (double)m->path[q].k,
                     m->path[q].aic, m->path[q].bic, m->path[q].loglik,

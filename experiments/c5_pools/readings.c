@@ -159,10 +159,10 @@ static nl_status repro_draws(const repro_ctx *x, const nl_cheng_model *m, fit_ou
   if (!st) {
     double v[10] = { (double)m->k,
                      (double)x->draws,
-                     nl_study_mean(ks, x->draws),
-                     nl_study_sd(ks, x->draws),
-                     nl_study_mean(con, x->draws),
-                     nl_study_sd(con, x->draws),
+                     nl_stats_mean(ks, x->draws, NL_STATS_RUNNING),
+                     nl_stats_sd(ks, x->draws, NL_STATS_RUNNING),
+                     nl_stats_mean(con, x->draws, NL_STATS_RUNNING),
+                     nl_stats_sd(con, x->draws, NL_STATS_RUNNING),
                      bk / x->draws,
                      bc / x->draws,
                      x->rp->ev.e_ks,
@@ -279,8 +279,8 @@ static void mean_sd(const double *x, int n, double *m, double *sd)
   int k = 0;
   for (int i = 0; i < n; i++)
     if (isfinite(x[i])) v[k++] = x[i];
-  *m = k ? nl_study_mean(v, k) : 0;
-  *sd = k ? nl_study_sd(v, k) : 0;
+  *m = k ? nl_stats_mean(v, k, NL_STATS_RUNNING) : 0;
+  *sd = k ? nl_stats_sd(v, k, NL_STATS_RUNNING) : 0;
 }
 
 static int within(double ours, double paper, int factor)

@@ -100,13 +100,15 @@ static double frac_below(const double *x, int n, double v)
 static void summary_row(nl_table *t, const char *tex, const char *kind, const samples *s, int n,
                         const nl_study_cheng_repro *rp, size_t k)
 {
-  nl_table_append(t, "ssdddddddddddddddddd", tex, kind, (double)n, nl_study_mean(s->ks, n),
-                  nl_study_sd(s->ks, n), nl_study_mean(s->con, n), nl_study_sd(s->con, n),
-                  nl_study_min(s->p, n), nl_study_mean(s->d, n), nl_study_sd(s->d, n),
-                  frac_below(s->ks, n, rp->ev.e_ks), frac_below(s->con, n, rp->ev.e_con),
-                  nl_study_mean(s->ms, n), nl_study_mean(s->mst, n), rp->seconds_opt, (double)k,
-                  nl_study_mean(s->rp, n), nl_study_mean(s->ct, n), rp->ev.e_con_random,
-                  rp->ev.e_con_const);
+  nl_table_append(
+      t, "ssdddddddddddddddddd", tex, kind, (double)n, nl_stats_mean(s->ks, n, NL_STATS_RUNNING),
+      nl_stats_sd(s->ks, n, NL_STATS_RUNNING), nl_stats_mean(s->con, n, NL_STATS_RUNNING),
+      nl_stats_sd(s->con, n, NL_STATS_RUNNING), nl_stats_min(s->p, n),
+      nl_stats_mean(s->d, n, NL_STATS_RUNNING), nl_stats_sd(s->d, n, NL_STATS_RUNNING),
+      frac_below(s->ks, n, rp->ev.e_ks), frac_below(s->con, n, rp->ev.e_con),
+      nl_stats_mean(s->ms, n, NL_STATS_RUNNING), nl_stats_mean(s->mst, n, NL_STATS_RUNNING),
+      rp->seconds_opt, (double)k, nl_stats_mean(s->rp, n, NL_STATS_RUNNING),
+      nl_stats_mean(s->ct, n, NL_STATS_RUNNING), rp->ev.e_con_random, rp->ev.e_con_const);
 }
 
 /* Montage: the original texture and C6_NSHOW reproductions, E_KS / E_Con under each. */

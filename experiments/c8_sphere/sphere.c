@@ -29,13 +29,14 @@ nl_table *c8_summary_alloc(void) { return nl_table_alloc(NSUM, sum_cols); }
 #define PUT(f, kind)                                                                               \
   do {                                                                                             \
     FIELD(f);                                                                                      \
-    nl_table_set(t, row, sum_cols[c++], nl_study_mean(x, k));                                      \
-    nl_table_set(t, row, sum_cols[c++], (kind) ? nl_study_min(x, k) : nl_study_sd(x, k));          \
+    nl_table_set(t, row, sum_cols[c++], nl_stats_mean(x, k, NL_STATS_RUNNING));                    \
+    nl_table_set(t, row, sum_cols[c++],                                                            \
+                 (kind) ? nl_stats_min(x, k) : nl_stats_sd(x, k, NL_STATS_RUNNING));               \
   } while (0)
 #define PUT1(f)                                                                                    \
   do {                                                                                             \
     FIELD(f);                                                                                      \
-    nl_table_set(t, row, sum_cols[c++], nl_study_mean(x, k));                                      \
+    nl_table_set(t, row, sum_cols[c++], nl_stats_mean(x, k, NL_STATS_RUNNING));                    \
   } while (0)
 
 static void summary_add(nl_table *t, const char *pattern, const char *table,
@@ -67,7 +68,7 @@ static void summary_add(nl_table *t, const char *pattern, const char *table,
   PUT(e_con_random, 0);
   nl_table_set(t, row, sum_cols[c++], ev[0].e_con_const); /* the pattern's alone */
   FIELD(e_con);
-  nl_table_set(t, row, sum_cols[c++], nl_study_mean(x, k) / ev[0].e_con_const);
+  nl_table_set(t, row, sum_cols[c++], nl_stats_mean(x, k, NL_STATS_RUNNING) / ev[0].e_con_const);
   free(x);
 }
 

@@ -65,15 +65,15 @@ void c9_rows(const nl_study_cheng *s, const nl_cheng_config *c, const nl_cheng_e
       a[q] = 1.0 / (o.amp[l] * g[q]); /* a_l = a_l^thesis / gain */
       bound += fabs(fabs(u[q]) - hi) < 1e-3;
     }
-    double row[NGAIN] = { l + 1,                /* octave */
-                          1.0 / o.amp[l],       /* a_thesis */
-                          nl_study_mean(a, k),  /* a */
-                          nl_study_sd(a, k),    /* a_sd */
-                          nl_study_mean(g, k),  /* gain */
-                          nl_study_sd(g, k),    /* gain_sd */
-                          nl_study_sd(u, k),    /* log_gain_sd */
-                          c->amp_range,         /* R */
-                          (double)bound / k };  /* at_bound */
+    double row[NGAIN] = { l + 1,                                 /* octave */
+                          1.0 / o.amp[l],                        /* a_thesis */
+                          nl_stats_mean(a, k, NL_STATS_RUNNING), /* a */
+                          nl_stats_sd(a, k, NL_STATS_RUNNING),   /* a_sd */
+                          nl_stats_mean(g, k, NL_STATS_RUNNING), /* gain */
+                          nl_stats_sd(g, k, NL_STATS_RUNNING),   /* gain_sd */
+                          nl_stats_sd(u, k, NL_STATS_RUNNING),   /* log_gain_sd */
+                          c->amp_range,                          /* R */
+                          (double)bound / k };                   /* at_bound */
     size_t r = labelled_row(gains, nlabels, labels);
     for (size_t i = 0; i < NGAIN; i++) nl_table_set(gains, r, gain_cols[i], row[i]);
   }

@@ -108,8 +108,8 @@ int main(int argc, char **argv)
 
   /* Summary against the literature. */
   double m2, s2, m3, s3;
-  nl_study_mean_sd(v2, K, &m2, &s2);
-  nl_study_mean_sd(v3, K, &m3, &s3);
+  nl_stats_mean_sd(v2, K, NL_STATS_SUMMED, &m2, &s2);
+  nl_stats_mean_sd(v3, K, NL_STATS_SUMMED, &m3, &s3);
   double in0 = nl_table_value(lt, 0, "inside");
   double in0sd = nl_table_value(lt, 0, "inside_sd");
   nl_table *st = nl_table_alloc(4, (const char *[]){ "quantity", "ours", "ours_sd", "paper" });

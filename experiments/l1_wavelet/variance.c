@@ -68,7 +68,7 @@ nl_table *l1_variance_readings(int n, int K, unsigned long seed0, double paper)
   nl_table *tab = nl_table_alloc(6, cols);
   for (int i = 0; i < NREAD; i++) {
     double m, sd;
-    nl_study_mean_sd(v + (size_t)i * K, K, &m, &sd);
+    nl_stats_mean_sd(v + (size_t)i * K, K, NL_STATS_SUMMED, &m, &sd);
     /* gap: relative to the paper; gap_in_sd: in sd over seeds (0 sd: +-inf written as a large
      * number) */
     nl_table_append(tab, "sddddd", READINGS[i], m, sd, paper, m / paper - 1,
@@ -116,7 +116,7 @@ nl_table *l1_leakage_table(const double *share, int K, int nb)
         if (j < k) hi += row[j] / K;
       }
     }
-    nl_study_mean_sd(col, K, &in, &in_sd);
+    nl_stats_mean_sd(col, K, NL_STATS_SUMMED, &in, &in_sd);
     nl_table_append(lt, "idddd", k, lo, in, in_sd, hi);
   }
   free(col);

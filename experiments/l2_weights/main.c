@@ -119,7 +119,8 @@ int main(int argc, char **argv)
       sw.bbelow += rms[NL_BYEXAMPLE_CORRECTED * n + k] < rms[k];
     for (int q = 0; q < NE; q++) {
       for (int c = 0; c < 3; c++)
-        nl_study_mean_sd(E + (c * NE + q) * sweep_seeds, sweep_seeds, &sw.m[c][q], &sw.v[c][q]);
+        nl_stats_mean_sd(E + (c * NE + q) * sweep_seeds, sweep_seeds, NL_STATS_SUMMED, &sw.m[c][q],
+                         &sw.v[c][q]);
       double p = 1; /* paired by seed, against eq. 12 (q = 0) */
       sw.pf = 1;
       if (q) {

@@ -122,8 +122,8 @@ static void mean_row(nl_table *mt, const nl_table *bands, const nl_table *sum,
     }
   }
   double km, ksd, sm, ssd;
-  nl_study_mean_sd(ks, K, &km, &ksd);
-  nl_study_mean_sd(sp, K, &sm, &ssd);
+  nl_stats_mean_sd(ks, K, NL_STATS_SUMMED, &km, &ksd);
+  nl_stats_mean_sd(sp, K, NL_STATS_SUMMED, &sm, &ssd);
   size_t last = sum->nrows - 1;
   nl_table_append(mt, "ssdddddddiiiiiiiddd", name, rep, km, ksd,
                   nl_table_value(sum, last, "tail_photo"), ts, sm, ssd, w, wk, nb - 1,

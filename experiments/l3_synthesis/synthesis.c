@@ -118,8 +118,8 @@ nl_table *l3_gauss_table(size_t n, int K, unsigned long seed0, int threads)
   nl_parallel_for(2 * (size_t)K, threads, gauss_item, &j);
   for (int h = 0; h < 2; h++) {
     double km, ksd, tm, tsd;
-    nl_study_mean_sd(ks + (size_t)h * K, K, &km, &ksd);
-    nl_study_mean_sd(tail + (size_t)h * K, K, &tm, &tsd);
+    nl_stats_mean_sd(ks + (size_t)h * K, K, NL_STATS_SUMMED, &km, &ksd);
+    nl_stats_mean_sd(tail + (size_t)h * K, K, NL_STATS_SUMMED, &tm, &tsd);
     nl_table_append(t, "siddddd", nl_byexample_hist_name(kinds[h]), (int)n, km, ksd, tm, tsd,
                     2 * gsl_cdf_ugaussian_Q(2.5));
   }

@@ -94,7 +94,7 @@ static void mean_sd(const l4_edit *rep, int K, size_t offset, double *m, double 
 {
   double *v = nl_xmalloc((size_t)K * sizeof *v);
   for (int s = 0; s < K; s++) v[s] = *(const double *)((const char *)&rep[s] + offset);
-  nl_study_mean_sd(v, K, m, sd);
+  nl_stats_mean_sd(v, K, NL_STATS_SUMMED, m, sd);
   free(v);
 }
 #define MEAN_SD(field, m, sd)                                                                      \

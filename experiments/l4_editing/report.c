@@ -44,8 +44,8 @@ void l4_report(const l4 *q)
       Q("ratio_fine_max"), Q("ratio_fine_sd_max"), Q("floor_fine_min"), Q("floor_fine_max"), f * f,
       f * f, Q("edit_dev_max"), q->nfine, 100 * nl_table_value(q->edit, q->nfine, "leak_fine"),
       q->nfine, Q("coarse_over_fine_power"), Q("peak_over_finest_power"), Q("floor_from_leakage"),
-      Q("floor_fine_nohist"), NL_BYEXAMPLE_TILE3, nl_study_min(ksv, 3), -nl_study_min(ksn, 3),
-      nl_study_min(ksv + 3, 3), -nl_study_min(ksn + 3, 3));
+      Q("floor_fine_nohist"), NL_BYEXAMPLE_TILE3, nl_stats_min(ksv, 3), -nl_stats_min(ksn, 3),
+      nl_stats_min(ksv + 3, 3), -nl_stats_min(ksn + 3, 3));
   nl_harness_text(
       q->r,
       "Morphing (Fig. 12): all parameters are interpolated linearly except the 3x3 PCA matrix, "

@@ -51,8 +51,8 @@ nl_status q4_wood(nl_table *table, const char *panel, const char *expr, double k
     }
   }
   if (!st) {
-    nl_study_mean_sd(cr, K, &res->rings, &res->rings_sd);
-    nl_study_mean_sd(cb, K, &res->ramp_bands, &res->ramp_bands_sd);
+    nl_stats_mean_sd(cr, K, NL_STATS_SUMMED, &res->rings, &res->rings_sd);
+    nl_stats_mean_sd(cb, K, NL_STATS_SUMMED, &res->ramp_bands, &res->ramp_bands_sd);
     nl_texture_wood_grid(wd, win, NULL, t); /* the rings without the basis: the geometry's count */
     nl_image *a = nl_texture_wood_image(wd, t, win->w, win->h);
     res->rings_geometry = nl_texture_band_count(a, vertical, index);

@@ -147,11 +147,6 @@ double nl_study_ks_channels(const nl_image *a, const nl_image *b, double *per)
   return s;
 }
 
-void nl_study_mean_sd(const double *v, int n, double *m, double *sd)
-{
-  nl_stats_mean_sd(v, (size_t)n, NL_STATS_SUMMED, m, sd);
-}
-
 double nl_study_mean_where(const nl_table *t, const char *key, const char *value, const char *col,
                            const char *pcol, double alpha, int *below)
 {
@@ -167,19 +162,4 @@ double nl_study_mean_where(const nl_table *t, const char *key, const char *value
     }
   if (below) *below = b;
   return n ? s / n : NAN;
-}
-
-double nl_study_mean(const double *x, int n)
-{
-  return nl_stats_mean(x, (size_t)n, NL_STATS_RUNNING);
-}
-
-double nl_study_sd(const double *x, int n)
-{
-  return nl_stats_sd(x, (size_t)n, NL_STATS_RUNNING);
-}
-
-double nl_study_min(const double *x, int n)
-{
-  return nl_stats_min(x, (size_t)n);
 }

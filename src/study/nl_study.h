@@ -17,6 +17,7 @@
 #include "image/nl_image.h"
 #include "noise/nl_noise.h"
 #include "harness/nl_harness.h"
+#include "stats/nl_stats.h" /* nl_stats_mean & co.: the summaries over seeds */
 #include "table/nl_table.h"
 #include "texture/nl_texture.h"
 
@@ -94,15 +95,6 @@ nl_table *nl_study_radial_table(const double *const *img, const char *const *col
  * (per[0..2]; may be NULL) and their mean over R, G, B (the return): how
  * far a synthesis' histograms are from its exemplar's (sec. 5). */
 double nl_study_ks_channels(const nl_image *a, const nl_image *b, double *per);
-
-/* Summaries of quantities measured over seeds: thin names for the stats
- * module's (nl_stats.h, "mean, sd and min"). nl_study_mean/_sd round as
- * NL_STATS_RUNNING (GSL's running mean), nl_study_mean_sd as
- * NL_STATS_SUMMED (sums in order); the reference tables were made with both. */
-double nl_study_mean(const double *x, int n);
-double nl_study_sd(const double *x, int n);
-double nl_study_min(const double *x, int n);
-void nl_study_mean_sd(const double *v, int n, double *m, double *sd);
 
 /* Mean of column `col` over the rows of a per-seed table whose text column
  * `key` reads `value` (0 rows: NaN); with pcol, *below (if not NULL) gets how
