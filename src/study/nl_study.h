@@ -1,5 +1,25 @@
 /* nl_study.h - the loops that several experiments share, written once.
  *
+ * An experiment's own code lives in its folder (experiments/NAME/); this
+ * module holds what two or more experiments or tools need:
+ *
+ *   nl_study.c            surveys of sums of octaves as panels, spectra and
+ *                         distributions (S1-S4, sweeps), montages, radial
+ *                         spectra tables, per-channel KS, grouped means
+ *   nl_survey.c           the survey over seeds under all of the above
+ *   nl_study_cheng.h/.c   what the Cheng experiments C1-C9 share: the run's
+ *                         options, runs over seeds into summary tables,
+ *                         Welch rows between conditions, controllability text
+ *   nl_study_cheng_image.c  control patterns from images, textures as images
+ *   nl_study_cheng_repro.c  the thesis's Tables 4.2-4.4 and the original ->
+ *                         pool chain that C5 and C6 both use
+ *   nl_study_exemplars.h/.c  exemplar folders (L2, the example tool)
+ *   nl_study_example.c    synthesis-against-exemplar tables (L3, the example
+ *                         tool)
+ *   nl_study_lines.h/.c   the sampling lines of the bandwidth (A3, A4)
+ *
+ * Tested in test_study.c, and through every experiment's quick run.
+ *
  * nl_study_series: a row of panels (the slides' (a), (b), ...) of sums of
  * octaves, one per setting, surveyed over the run's seeds. It writes
  *   PREFIX_panels.png        the first seed's raster of each setting, labelled
