@@ -162,7 +162,7 @@ void l3_report_photos(nl_harness *r, const nl_table *kt, const nl_table *gt, con
       "spreads the tails. Gaussian self-match (n = %d N(0, 1) values as the exemplar, fresh N(0, "
       "1) noise matched to them, %d seeds; tails in the exemplar's mean and sd): paper10 KS %.4f, "
       "%.2f%% of the values beyond 2.5 sd; gauss33 (33 quantiles at p = Phi(z), z = -4..4 every "
-      "1/4 sd, cubic in z, the `example` command's default since this change) KS %.4f, %.2f%% "
+      "1/4 sd, cubic in z, the `example` command's default) KS %.4f, %.2f%% "
       "beyond 2.5 sd; a Gaussian has %.2f%%.",
       (int)nl_table_value(gt, 0, "n"), K, nl_table_value(gt, 0, "ks_mean"),
       100 * nl_table_value(gt, 0, "tail_mean"), nl_table_value(gt, 1, "ks_mean"),
@@ -190,7 +190,7 @@ void l3_report_photos(nl_harness *r, const nl_table *kt, const nl_table *gt, con
       "synthesised at %d x %d with three representations: gauss33 and paper10 as the paper "
       "synthesises (weights by eq. 12, histogram by the expected sd), and calibrated (gauss33 plus "
       "the `example` command's default synthesis-time band calibration, nl_byexample.h); %d "
-      "replicates (seeds from %lu, the same for all). Criteria (issue 15): on every eq. 13 band "
+      "replicates (seeds from %lu, the same for all). Criteria: on every eq. 13 band "
       "holding >= %.0f%% of the photo's luminance power, power(synthesis) / power(photo) within "
       "x%.2f, and the KS distance of the luminance below %.3f. passes = replicates meeting both "
       "(per-replicate rows in photos_summary.tsv, per band in photos.tsv); worst_ratio_of_means = "

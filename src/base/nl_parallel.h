@@ -52,7 +52,7 @@ int nl_parallel_cores(void);
  * run time with dlsym; a no-op otherwise). OpenBLAS starts its workers when
  * it is loaded, and a new worker spins (sched_yield) for its timeout, about
  * 0.1 s of another core's CPU, before it sleeps: in every process that
- * links it, whether or not it calls a threaded BLAS routine (issue 17: 0.11 s
+ * links it, whether or not it calls a threaded BLAS routine (measured: 0.11 s
  * of a 0.3 s process, /proc/PID/task; 0.05 s against 0.19 s of CPU for a
  * process that sleeps 0.3 s). blas_thread_shutdown_ is OpenBLAS's own (its
  * fork handler calls it): it joins the workers, and the next threaded call

@@ -1,6 +1,6 @@
 /* nl_cellular_simd.h - private to src/cellular: the points of a row of
  * cellular F1..F4 (nl_cellular_row) as the sample kernels read them, and the
- * kernels of each SIMD level (issue 17), chosen at run time by the noise
+ * kernels of each SIMD level, chosen at run time by the noise
  * library's level (nl_simd_get: NL_NOISE_SIMD, nl_simd_set).
  *
  * Per-cube distance rejection. A sample x in cube (i, j, k) looks at the

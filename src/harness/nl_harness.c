@@ -206,7 +206,7 @@ nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char
 {
   nl_harness_program_start();
 #ifdef __GLIBC__
-  /* Speed only (issue 17): glibc returns every freed block above 128 KB to
+  /* Speed only: glibc returns every freed block above 128 KB to
    * the kernel (mmap'ed or trimmed), so a loop that allocates and frees
    * image-sized buffers or EM's K d^2 arrays faults and zeroes their pages
    * again each time (60% of a one-thread L2 run's CPU). Blocks up to 64 MB
@@ -721,7 +721,7 @@ int nl_harness_end(nl_harness *r)
   struct rusage ru;
   getrusage(RUSAGE_SELF, &ru);
   /* CPU time of all threads (user + sys, the process start included): with
-   * `seconds` it says how well a run used the cores (issue 17). */
+   * `seconds` it says how well a run used the cores. */
   nl_harness_note(r, "cpu_seconds", "%.3f (user %.3f + sys %.3f)",
                   ru.ru_utime.tv_sec + ru.ru_utime.tv_usec * 1e-6 + ru.ru_stime.tv_sec + ru.ru_stime.tv_usec * 1e-6,
                   ru.ru_utime.tv_sec + ru.ru_utime.tv_usec * 1e-6, ru.ru_stime.tv_sec + ru.ru_stime.tv_usec * 1e-6);

@@ -1,5 +1,5 @@
 /* nl_noise_simd.h - private: the kernels behind the run-time dispatch of
- * nl_noise.c's rows and the batch point API (issue 17).
+ * nl_noise.c's rows and the batch point API.
  *
  * One table of kernels per instruction-set level. nl_noise_simd_body.h holds
  * the kernels once, written with GCC vector extensions; nl_noise_simd_sse2.c,
