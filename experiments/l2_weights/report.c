@@ -10,14 +10,15 @@ void l2_report(nl_harness *r, const l2_fig4 *f, const l2_sweep *s, const nl_tabl
                int pseeds)
 {
   nl_harness_text(r,
-                  "Fig. 4 at %d x %d (%d bands, seed %lu): random weights uniform in [0.1, 1] (the "
+                  "Fig. 4 at %d x %d (%d bands, seed %lu): random weights uniform in [%g, %g] (the "
                   "paper does not say how it draws them), a 2D wavelet-noise sum with them (b), "
                   "weights estimated by eq. 12-13 with our measured sigma_N^2 = %.4f (paper: %g), "
                   "and a noise with the estimated weights and new band offsets (d). Relative RMS "
                   "weight error |w_est - w| / |w| = %.3f (corrected estimator: %.3f); total power "
                   "sum w_est^2 / sum w^2 = %.3f. The paper says only that the two sets are \"very "
                   "similar\" and converge with sample size; the sweep measures it.",
-                  f->size, f->size, f->nb, f->seed, nl_byexample_sigma2(f->tile), L2_PAPER_SIGMA2,
+                  f->size, f->size, f->nb, f->seed, NL_BYEXAMPLE_TRUE_WEIGHT_MIN,
+                  NL_BYEXAMPLE_TRUE_WEIGHT_MAX, nl_byexample_sigma2(f->tile), L2_PAPER_SIGMA2,
                   f->e[0], f->e[NL_BYEXAMPLE_CORRECTED], f->pw[0]);
   nl_harness_text(
       r,

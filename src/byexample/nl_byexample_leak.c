@@ -200,7 +200,8 @@ void nl_byexample_trial(const nl_byexample_transfer *T, nl_wavelet_tile *t, unsi
   int nb = T->nbands;
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, nl_seed_stream(seed, "byexample.true_weights", 0));   /* apart from the tile's stream */
-  for (int k = 0; k < nb; k++) truth[k] = 0.1 + 0.9 * gsl_rng_uniform(rng);
+  const double lo = NL_BYEXAMPLE_TRUE_WEIGHT_MIN, hi = NL_BYEXAMPLE_TRUE_WEIGHT_MAX;
+  for (int k = 0; k < nb; k++) truth[k] = lo + (hi - lo) * gsl_rng_uniform(rng);
   gsl_rng_free(rng);
   nl_wavelet_tile_seed(t, seed);
   nl_wavelet_bands b;

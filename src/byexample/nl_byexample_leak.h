@@ -67,8 +67,14 @@ void nl_byexample_estimate(const nl_byexample_transfer *T, int kind, const doubl
  * as scipy.optimize.nnls), or -1 if the iteration limit 3n was reached. */
 double nl_byexample_nnls(const double *M, int m, int n, const double *b, double *x);
 
+/* The range of a Fig. 4 trial's true band weights (uniform): the paper
+ * does not say how it draws them. */
+#define NL_BYEXAMPLE_TRUE_WEIGHT_MIN 0.1
+#define NL_BYEXAMPLE_TRUE_WEIGHT_MAX 1.0
+
 /* One Fig. 4 trial at T's size with every estimator: the tile t is seeded
- * with `seed`, true weights uniform in [0.1, 1] from nl_seed_stream(seed,
+ * with `seed`, true weights uniform in [NL_BYEXAMPLE_TRUE_WEIGHT_MIN,
+ * NL_BYEXAMPLE_TRUE_WEIGHT_MAX] from nl_seed_stream(seed,
  * "byexample.true_weights", 0), band offsets from seed; img receives the
  * noise. est[kind * nbands + k]; err[kind] = |est - truth| / |truth|,
  * fine[kind] the same over bands k < nfine, power[kind] = sum est^2 / sum
