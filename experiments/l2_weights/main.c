@@ -5,6 +5,7 @@
  * byexample/nl_byexample_leak.h), and both on exemplar photographs. */
 #include "photos.h"
 #include "report.h"
+#include "sweep.h"
 #include "study/nl_study.h"
 #include "study/nl_study_exemplars.h"
 
@@ -15,7 +16,6 @@
  * and gain Fourier coefficients as the image grows; the coarsest band of
  * any image always holds the same ~8 coefficients. */
 enum { FINE = 6, NE = NL_BYEXAMPLE_ESTIMATORS, MB = NL_WAVELET_MAX_BANDS };
-#define MIN_SIZE 64 /* the sweep's smallest side */
 
 int main(int argc, char **argv)
 {
@@ -74,7 +74,8 @@ int main(int argc, char **argv)
   const char *wcols[] = { "band", "true", "est", "est_of_d", "corrected" };
   nl_table *wt = nl_table_alloc(5, wcols); /* est, est_of_d: eq. 12 */
   for (int k = 0; k < nb; k++)
-    nl_table_append(wt, "idddd", k, truth[k], est[k], est2[k], est[NL_BYEXAMPLE_CORRECTED * nb + k]);
+    nl_table_append(wt, "idddd", k, truth[k], est[k], est2[k],
+                    est[NL_BYEXAMPLE_CORRECTED * nb + k]);
   nl_harness_write_table(r, wt, "weights.tsv");
   double sd = 0;
   for (int k = 0; k < nb; k++) sd += truth[k] * truth[k];
@@ -93,56 +94,13 @@ int main(int argc, char **argv)
                   .frac = frac,
                   .p_last = 1,
                   .pf = 1 };
-  const char *ecols[] = { "size",      "bands",          "estimator",   "err_mean",
-                          "err_sd",    "err_fine_mean",  "err_fine_sd", "power_ratio",
-                          "p_vs_eq12", "p_fine_vs_eq12", "seeds" };
-  const char *bcols[] = { "size", "band", "estimator", "rmse", "bias" };
-  nl_table *et = nl_table_alloc(11, ecols);
-  nl_table *bt = nl_table_alloc(5, bcols);
-  for (int s = MIN_SIZE; s <= maxsize; s *= 2) sw.nsizes++;
-  double *E = malloc((size_t)3 * NE * sweep_seeds * sizeof *E); /* error, fine error, power */
-  double rms[NE * MB], bias[NE * MB];
-  unsigned long *seeds = malloc((size_t)sweep_seeds * sizeof *seeds);
-  for (int k = 0; k < sweep_seeds; k++)
-    seeds[k] = nl_seed_stream(seed0, "l2.size_trial", (unsigned long)k);
-  for (int s = MIN_SIZE, done = 0; s <= maxsize; s *= 2, done++) {
-    int n = nl_byexample_band_count(s, s);
-    nl_byexample_transfer_measure(&T, tile, s, s, n, frac, tseeds,
-                                  nl_seed_stream(seed0, "l2.transfer", (unsigned long)s),
-                                  nl_harness_threads(r));
-    nl_byexample_trials(&T, seeds, sweep_seeds, FINE, E, rms, bias, nl_harness_threads(r));
-    for (int q = 0; q < NE; q++)
-      for (int k = 0; k < n; k++)
-        nl_table_append(bt, "iisdd", s, k, nl_byexample_estimator_names[q], rms[q * n + k],
-                        bias[q * n + k]);
-    for (int k = 0; k < n && s == maxsize; k++)
-      sw.bbelow += rms[NL_BYEXAMPLE_CORRECTED * n + k] < rms[k];
-    for (int q = 0; q < NE; q++) {
-      for (int c = 0; c < 3; c++)
-        nl_stats_mean_sd(E + (c * NE + q) * sweep_seeds, sweep_seeds, NL_STATS_SUMMED, &sw.m[c][q],
-                         &sw.v[c][q]);
-      double p = 1; /* paired by seed, against eq. 12 (q = 0) */
-      sw.pf = 1;
-      if (q) {
-        p = nl_byexample_paired_p(E + q * sweep_seeds, E, sweep_seeds);
-        sw.pf =
-            nl_byexample_paired_p(E + (NE + q) * sweep_seeds, E + NE * sweep_seeds, sweep_seeds);
-      }
-      nl_table_append(et, "iisdddddddi", s, n, nl_byexample_estimator_names[q], sw.m[0][q],
-                      sw.v[0][q], sw.m[1][q], sw.v[1][q], sw.m[2][q], p, sw.pf, sweep_seeds);
-      if (q == NL_BYEXAMPLE_CORRECTED) {
-        sw.below += sw.m[0][q] < sw.m[0][0];
-        sw.pmax = fmax(sw.pmax, p);
-        sw.p_last = p;
-      }
-    }
-    nl_harness_progress(r, (done + 1.0) / sw.nsizes, "size sweep");
-  }
+  nl_table *bt;
+  nl_table *et = l2_size_sweep(r, tile, seed0, &sw, &bt);
   nl_harness_write_table(r, et, "estimators.tsv");
   nl_harness_write_table(r, bt, "bands.tsv");
 
-  /* Photographs: true weights unknown; how well each estimator's weights re-synthesise the band
-   * powers. */
+  /* Photographs: true weights unknown; how well each estimator's weights
+   * re-synthesise the band powers. */
   nl_table *pt = l2_exemplar_fits(r, photos, nphotos, pmax, tile, frac, tseeds, pseeds, seed0);
   if (nphotos) nl_harness_write_table(r, pt, "photos.tsv");
 
@@ -155,8 +113,6 @@ int main(int argc, char **argv)
   nl_table_free(pt);
   free(b_img);
   free(d_img);
-  free(E);
-  free(seeds);
   nl_study_paths_free(photos);
   nl_wavelet_tile_free(t);
   nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */

@@ -36,7 +36,8 @@ void l2_report(nl_harness *r, const l2_fig4 *f, const l2_sweep *s, const nl_tabl
                   "Where: over the %d finest bands the corrected error at %d pixels is %.3f (sd "
                   "%.3f) against eq. 12's %.3f (sd %.3f), paired t-test p = %.2g; per band, its "
                   "RMS error is below eq. 12's in %d of %d bands (bands.tsv).",
-                  s->fine, s->maxsize, s->m[1][NL_BYEXAMPLE_CORRECTED], s->v[1][NL_BYEXAMPLE_CORRECTED],
+                  s->fine, s->maxsize, s->m[1][NL_BYEXAMPLE_CORRECTED],
+                  s->v[1][NL_BYEXAMPLE_CORRECTED],
                   s->m[1][0], s->v[1][0], s->pf, s->bbelow,
                   nl_byexample_band_count(s->maxsize, s->maxsize));
   nl_harness_report_table(r, wt,
