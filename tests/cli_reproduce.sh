@@ -52,12 +52,21 @@ SOURCE_DATE_EPOCH=86400 "$nl" reproduce --quick --seed 4294967295 --out "$r" A1 
 grep -q 'on 1970-01-02\.' "$r/REPORT.md" || fail "REPORT.md not dated by SOURCE_DATE_EPOCH"
 grep -q $'^seed\t4294967295$' "$r/a1_bounds/manifest.tsv" || fail "seed 4294967295 did not reach the experiment"
 # The verdict table: every complete folder's verdicts.tsv, read by column
-# name (a planted one here: A1 and S4 have no paper numbers), counted.
-printf 'reason\tquantity\tsource\tpaper\tours\tours_sd\trule\tverdict\nwhy\tgain\tx.tsv:g\t2\t2.08\t0.01\trel 0.05 0.25\treproduced\n' >"$r/s4_marble/verdicts.tsv"
+# name (planted here for S4, beside A1's own), counted: independent rows as
+# verdicts, the others by kind, a fitted row capped below "reproduced".
+{ printf 'reason\tquantity\tsource\tpaper\tours\tours_sd\trule\tkind\tverdict\n'
+  printf 'why\tgain\tx.tsv:g\t2\t2.08\t0.01\trel 0.05 0.25\tindependent\treproduced\n'
+  printf 'fit\tslope\tx.tsv:s\t2\t2.01\t-\trel 0.05 0.25\tfitted 2/4\tconsistent after fit\n'
+  printf 'set\tF_inf\tx.tsv:f\t1\t1\t-\tabs 0 0\tby construction\tby construction\n'
+} >"$r/s4_marble/verdicts.tsv"
 SOURCE_DATE_EPOCH=86400 "$nl" reproduce --quick --seed 4294967295 --out "$r" A1 2>"$out/verdict.log" || { cat "$out/verdict.log"; fail "reproduce A1 failed"; }
 grep -q '^## Did it reproduce?' "$r/REPORT.md" || fail "REPORT.md has no verdict table"
-grep -qF '1 numbers of the papers compared: 1 reproduced, 0 partly, 0 not reproduced' "$r/REPORT.md" || fail "verdict count wrong"
-grep -qF '| [S4](#s4_marble) | gain | 2 | 2.08 +- 0.01 | **reproduced** | why |' "$r/REPORT.md" || fail "verdict row: $(grep -F gain "$r/REPORT.md")"
+a1_count() { [ -f "$r/a1_bounds/verdicts.tsv" ] || { echo 0; return; }; tsv_awk -v w="$1" 'v("kind") ~ "^" w { n++ } END { print n + 0 }' "$r/a1_bounds/verdicts.tsv"; }
+ni=$(( $(a1_count independent) + 1 )); nf=$(( $(a1_count fitted) + 1 ))
+grep -qE "^$ni independent verdicts \(" "$r/REPORT.md" || fail "verdict count wrong: $(grep 'independent verdicts' "$r/REPORT.md")"
+grep -qE "^Not counted above: $nf fitted to the paper \([0-9]+ consistent after fit\)" "$r/REPORT.md" || fail "fitted count wrong: $(grep 'Not counted' "$r/REPORT.md")"
+grep -qF '| [S4](#s4_marble) | gain | independent | 2 | 2.08 +- 0.01 | **reproduced** | why |' "$r/REPORT.md" || fail "verdict row: $(grep -F gain "$r/REPORT.md")"
+grep -qF '| [S4](#s4_marble) | F_inf | by construction | 1 | 1 | *by construction* | set |' "$r/REPORT.md" || fail "by-construction row: $(grep -F F_inf "$r/REPORT.md")"
 rm "$r/s4_marble/verdicts.tsv"
 
 # Nothing ran (the experiment cannot make its folder): no REPORT.md written.

@@ -130,7 +130,7 @@ int main(int argc, char **argv)
                  .unit = &unit };
   a2_report_fit(r, &run);
   nl_harness_verdict_rows(r, "timing.tsv", t, "plain / bounded ratio", "octaves", "paper_ratio",
-                          "eval_ratio", "eval_ratio_sd", "factor 1.25 2",
+                          "eval_ratio", "eval_ratio_sd", "factor 1.25 2", "fitted 3/4",
                           "evaluations, fitted scene");
   a2_report_images(r, &run);
   nl_image_free(dm);

@@ -64,7 +64,7 @@ void c5_readings_report(nl_harness *r, c5_readings *R, const char *best)
     for (int k = 0; k < 3; k++) {
       snprintf(what, sizeof what, "%s, %s", v[k][0], tex);
       nl_harness_verdict(r, "readings.tsv", t, q, what, v[k][1], v[k][2], one ? NULL : v[k][3],
-                         k < 2 ? "factor 1.25 2" : "rel 0.1 0.5",
+                         k < 2 ? "factor 1.25 2" : "rel 0.1 0.5", "selected 1/48",
                          "headline reading of readings.tsv, the thesis's cutoff as printed");
     }
     char mid[80]; /* the cutoff is a result only where K0 is the input */
@@ -75,6 +75,7 @@ void c5_readings_report(nl_harness *r, c5_readings *R, const char *best)
       nl_harness_verdict(
           r, "readings.tsv", t, (size_t)m, what, "paper_cutoff", "cutoff",
           nl_table_value(t, (size_t)m, "reps") < 2 ? NULL : "cutoff_sd", "factor 1.25 2",
+          "fitted 1/1",
           "the cutoff giving the thesis's K0 under the headline's sample, distance and pool rule");
     }
   }

@@ -568,78 +568,128 @@ const char *nl_harness_check_rule(const nl_harness *r, const char *table, const 
 /* ---- verdicts ------------------------------------------------------------ */
 
 /* One row of verdicts.tsv, every cell as text (numbers in the table's own
- * round-trip format; sd "-" when there is none). */
-static void verdict_row(nl_harness *r, const char *quantity, const char *source, const char *paper, const char *ours,
-                        const char *sd, const char *rule, const char *verdict, const char *reason)
+ * round-trip format; sd "-" when there is none). The kind caps the outcome
+ * (nl_harness_verdict_word). */
+static void verdict_row(nl_harness *r, const char *quantity, const char *source, const char *paper,
+                        const char *ours, const char *sd, const char *rule, const char *kind,
+                        nl_harness_outcome v, const char *reason)
 {
+  nl_error err;
+  if (nl_harness_verdict_kind_check(kind, &err)) nl_harness_die(r, 1, "verdict '%s': %s", quantity, err.msg);
   if (!r->verdicts) {
-    const char *vcols[] = {"quantity", "source", "paper", "ours", "ours_sd", "rule", "verdict", "reason"};
-    r->verdicts = nl_table_alloc(8, vcols);
+    const char *vcols[] = {"quantity", "source", "paper", "ours", "ours_sd", "rule", "kind", "verdict", "reason"};
+    r->verdicts = nl_table_alloc(9, vcols);
   }
-  nl_table_append(r->verdicts, "ssssssss", quantity, source, paper, ours, sd ? sd : "-", rule, verdict, reason);
+  nl_table_append(r->verdicts, "sssssssss", quantity, source, paper, ours, sd ? sd : "-", rule, kind,
+                  nl_harness_verdict_word(v, kind), reason);
+}
+
+static void append_note(char *reason, size_t len, const char *note)
+{
+  if (note && *note) {
+    size_t n = strlen(reason);
+    snprintf(reason + n, len - n, "; %s", note);
+  }
+}
+
+static void need_columns(nl_harness *r, const char *quantity, const char *file, const nl_table *t,
+                         const char *const *cols, int n)
+{
+  for (int k = 0; k < n; k++)
+    if (cols[k] && nl_table_column(t, cols[k]) < 0)
+      nl_harness_die(r, 1, "verdict '%s': %s has no column '%s'", quantity, file, cols[k]);
 }
 
 void nl_harness_verdict(nl_harness *r, const char *file, const nl_table *t, size_t row,
                         const char *quantity, const char *paper_col, const char *ours_col,
-                        const char *sd_col, const char *rule, const char *note)
+                        const char *sd_col, const char *rule, const char *kind, const char *note)
 {
   if (row >= t->nrows) nl_harness_die(r, 1, "verdict '%s': %s has no row %zu", quantity, file, row + 1);
   const char *cols[] = {paper_col, ours_col, sd_col};
-  for (int k = 0; k < 3; k++)
-    if (cols[k] && nl_table_column(t, cols[k]) < 0)
-      nl_harness_die(r, 1, "verdict '%s': %s has no column '%s'", quantity, file, cols[k]);
+  need_columns(r, quantity, file, t, cols, 3);
   double paper = nl_table_value(t, row, paper_col), ours = nl_table_value(t, row, ours_col);
   double sd = sd_col ? nl_table_value(t, row, sd_col) : NAN;
-  nl_harness_verdict_kind v;
-  char reason[256], source[256];
+  nl_harness_outcome v;
+  char reason[320], source[256];
   nl_error err;
+  if (!strncmp(rule, "p ", 2) || !strncmp(rule, "fit ", 4))
+    nl_harness_die(r, 1, "verdict '%s': rule '%s' decides a p-value: use nl_harness_verdict_p", quantity, rule);
   if (nl_harness_verdict_decide(rule, paper, ours, sd, &v, reason, sizeof reason, &err))
     nl_harness_die(r, 1, "verdict '%s': %s", quantity, err.msg);
-  if (note && *note) {
-    size_t n = strlen(reason);
-    snprintf(reason + n, sizeof reason - n, "; %s", note);
-  }
+  append_note(reason, sizeof reason, note);
   char pt[32], ot[32], st[32];
   nl_table_format_double(pt, paper);
   nl_table_format_double(ot, ours);
   if (sd_col) nl_table_format_double(st, sd);
   snprintf(source, sizeof source, "%s:%s", file, ours_col);
-  verdict_row(r, quantity, source, pt, ot, sd_col ? st : NULL, rule, nl_harness_verdict_name(v), reason);
+  verdict_row(r, quantity, source, pt, ot, sd_col ? st : NULL, rule, kind, v, reason);
 }
 
-void nl_harness_verdict_less(nl_harness *r, const char *file, const nl_table *t, size_t row_a, size_t row_b,
-                             const char *quantity, const char *claim, const char *col, const char *sd_col,
-                             const char *n_col, double alpha)
+void nl_harness_verdict_less(nl_harness *r, const char *file, const nl_table *t, size_t row_a,
+                             size_t row_b, const char *quantity, const char *claim,
+                             const char *col, const char *sd_col, const char *n_col,
+                             double alpha, const char *kind)
 {
-  if (row_a >= t->nrows || row_b >= t->nrows) nl_harness_die(r, 1, "verdict '%s': %s has %zu rows", quantity, file, t->nrows);
+  if (row_a >= t->nrows || row_b >= t->nrows)
+    nl_harness_die(r, 1, "verdict '%s': %s has %zu rows", quantity, file, t->nrows);
   const char *cols[] = {col, sd_col, n_col};
-  for (int k = 0; k < 3; k++)
-    if (nl_table_column(t, cols[k]) < 0) nl_harness_die(r, 1, "verdict '%s': %s has no column '%s'", quantity, file, cols[k]);
+  need_columns(r, quantity, file, t, cols, 3);
   double a = nl_table_value(t, row_a, col), b = nl_table_value(t, row_b, col);
   double sa = nl_table_value(t, row_a, sd_col), sb = nl_table_value(t, row_b, sd_col);
   double na = nl_table_value(t, row_a, n_col), nb = nl_table_value(t, row_b, n_col), p = NAN;
   nl_error err;
   if (nl_stats_welch_p(a, sa, (size_t)na, b, sb, (size_t)nb, &p, &err)) p = a == b ? 1 : 0;   /* both sds 0 */
-  nl_harness_verdict_kind v = !(a < b) ? NL_VERDICT_NOT : p < alpha ? NL_VERDICT_REPRODUCED : NL_VERDICT_PARTLY;
+  nl_harness_outcome v = !(a < b) ? NL_VERDICT_NOT : p < alpha ? NL_VERDICT_REPRODUCED : NL_VERDICT_PARTLY;
   char ours[128], reason[256], rule[64], source[256];
   snprintf(ours, sizeof ours, "%.4g +- %.2g vs %.4g +- %.2g", a, sa, b, sb);
-  snprintf(reason, sizeof reason, "%s; Welch p = %.2g (%g vs %g seeds); reproduced when lower with p < %g, partly when lower",
+  snprintf(reason, sizeof reason,
+           "%s; Welch p = %.2g (%g vs %g seeds); reproduced when lower with p < %g, partly when lower",
            a < b ? "lower" : "not lower", p, na, nb, alpha);
   snprintf(rule, sizeof rule, "less welch %g", alpha);
   snprintf(source, sizeof source, "%s:%s", file, col);
-  verdict_row(r, quantity, source, claim, ours, NULL, rule, nl_harness_verdict_name(v), reason);
+  verdict_row(r, quantity, source, claim, ours, NULL, rule, kind, v, reason);
+}
+
+void nl_harness_verdict_p(nl_harness *r, const char *file, const nl_table *t, size_t row,
+                          const char *quantity, const char *claim, const char *stat_col,
+                          const char *p_col, const char *rule, const char *kind, const char *note)
+{
+  if (row >= t->nrows) nl_harness_die(r, 1, "verdict '%s': %s has no row %zu", quantity, file, row + 1);
+  const char *cols[] = {stat_col, p_col};
+  need_columns(r, quantity, file, t, cols, 2);
+  if (strncmp(rule, "p ", 2) && strncmp(rule, "fit ", 4))
+    nl_harness_die(r, 1, "verdict '%s': rule '%s': wanted 'p A B' or 'fit A B'", quantity, rule);
+  double stat = nl_table_value(t, row, stat_col), p = nl_table_value(t, row, p_col);
+  nl_harness_outcome v;
+  char reason[320], source[256], ours[96];
+  nl_error err;
+  if (nl_harness_verdict_decide(rule, NAN, p, NAN, &v, reason, sizeof reason, &err))
+    nl_harness_die(r, 1, "verdict '%s': %s", quantity, err.msg);
+  append_note(reason, sizeof reason, note);
+  snprintf(ours, sizeof ours, "%s %.4g, p = %.2g", stat_col, stat, p);
+  snprintf(source, sizeof source, "%s:%s", file, p_col);
+  verdict_row(r, quantity, source, claim, ours, NULL, rule, kind, v, reason);
+}
+
+void nl_harness_verdict_figure(nl_harness *r, const char *quantity, const char *claim,
+                               const char *figure, const char *note)
+{
+  char reason[320] = "no number decides this claim: judge it on the figure";
+  append_note(reason, sizeof reason, note);
+  verdict_row(r, quantity, figure, claim, figure, NULL, "-", "qualitative", NL_VERDICT_NOT, reason);
 }
 
 void nl_harness_verdict_rows(nl_harness *r, const char *file, const nl_table *t, const char *what,
                              const char *label_col, const char *paper_col, const char *ours_col,
-                             const char *sd_col, const char *rule, const char *note)
+                             const char *sd_col, const char *rule, const char *kind,
+                             const char *note)
 {
   long lc = nl_table_column(t, label_col);
   if (lc < 0) nl_harness_die(r, 1, "verdict '%s': %s has no column '%s'", what, file, label_col);
   for (size_t i = 0; i < t->nrows; i++) {
     char buf[32], q[256];
     snprintf(q, sizeof q, "%s, %s %s", what, label_col, nl_table_cell_text(t, i, (size_t)lc, buf));
-    nl_harness_verdict(r, file, t, i, q, paper_col, ours_col, sd_col, rule, note);
+    nl_harness_verdict(r, file, t, i, q, paper_col, ours_col, sd_col, rule, kind, note);
   }
 }
 

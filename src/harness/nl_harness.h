@@ -279,14 +279,16 @@ char **nl_harness_tables(const char *dir, size_t *n, nl_error *err);
 
 /* ---- verdicts: the paper's numbers against ours (nl_harness_verdict.c) -
  *
- * REPORT.md opens with one row per paper number: id, quantity, paper, ours
- * +- sd, verdict, reason. No verdict is typed: the experiment declares the
- * comparison beside the table it wrote, naming the columns that hold the
- * paper's number and ours, and the rule that decides:
+ * REPORT.md opens with one row per claim of the paper: id, quantity, kind,
+ * paper, ours +- sd, verdict, reason. No verdict is typed: the experiment
+ * declares the comparison beside the table it wrote, naming the columns that
+ * hold the paper's number and ours, the rule that decides, and the kind of
+ * reading ours is:
  *
  *   nl_harness_write_table(r, t, "timing.tsv");
  *   nl_harness_verdict(r, "timing.tsv", t, row, "plain/bounded ratio, N = 10",
- *                      "paper_ratio", "eval_ratio", NULL, "factor 1.1 1.5", NULL);
+ *                      "paper_ratio", "eval_ratio", NULL, "factor 1.1 1.5",
+ *                      "independent", NULL);
  *
  * Rules, each with two thresholds A <= B: "reproduced" within A, "partly"
  * within B, else "not reproduced":
@@ -294,41 +296,78 @@ char **nl_harness_tables(const char *dir, size_t *n, nl_error *err);
  *   abs A B     |ours - paper| <= A                    (absolute difference)
  *   factor A B  max(ours/paper, paper/ours) <= A       (ratios, counts; both > 0)
  *   sd A B      |ours - paper| <= A sd (sd_col: the spread over seeds of ours)
+ * and, for a claim decided by a test (nl_harness_verdict_p), on its p-value:
+ *   p A B       the claimed effect: reproduced when p <= A, partly when p <= B
+ *   fit A B     a claimed law (A >= B): reproduced when p >= A, partly when p >= B
+ *
+ * Kinds. A reading is fixed before it is compared; the kind says how:
+ *   "independent"      the headline: the paper's stated reading, or one chosen
+ *                      by a criterion that never looks at the paper's numbers;
+ *   "fitted K/M"       K parameters were fitted jointly to M of the paper's
+ *                      numbers: at best "consistent after fit";
+ *   "selected 1/N"     the best of N readings by closeness to the paper: at
+ *                      best "consistent after selection";
+ *   "by construction"  the value cannot differ from the paper's by how the
+ *                      experiment is set up: verdict "by construction";
+ *   "qualitative"      a claim no number decides (nl_harness_verdict_figure):
+ *                      verdict "see figure".
+ * Only "independent" rows are counted as reproduced at the top of REPORT.md.
+ *
  * The reason is generated from the numbers and the rule ("4.6% above the
  * paper; reproduced within 5%, partly within 25%"); `note` (may be NULL) is
  * appended after a semicolon and must hold no number of the run (it names
- * the reading, e.g. "slope fitted to the paper's ratios"). A malformed rule,
- * a missing column, or sd without sd_col is a bug in the experiment: exit 1.
- * nl_harness_end writes the rows to verdicts.tsv (columns quantity, source,
- * paper, ours, ours_sd, rule, verdict, reason); the entry script gathers
- * every folder's verdicts.tsv into the table at the top of REPORT.md. The
- * regression check ignores verdicts.tsv: each value in it is a copy of a
- * value compared, by its own rule, in the table it came from. */
-typedef enum { NL_VERDICT_REPRODUCED, NL_VERDICT_PARTLY, NL_VERDICT_NOT } nl_harness_verdict_kind;
+ * the reading, e.g. "slope fitted to the paper's ratios"). A malformed rule
+ * or kind, a missing column, or sd without sd_col is a bug in the
+ * experiment: exit 1. nl_harness_end writes the rows to verdicts.tsv
+ * (columns quantity, source, paper, ours, ours_sd, rule, kind, verdict,
+ * reason); the entry script gathers every folder's verdicts.tsv into the
+ * table at the top of REPORT.md. The regression check ignores verdicts.tsv:
+ * each value in it is a copy of a value compared, by its own rule, in the
+ * table it came from. */
+typedef enum { NL_VERDICT_REPRODUCED, NL_VERDICT_PARTLY, NL_VERDICT_NOT } nl_harness_outcome;
 void nl_harness_verdict(nl_harness *r, const char *file, const nl_table *t, size_t row,
                         const char *quantity, const char *paper_col, const char *ours_col,
-                        const char *sd_col, const char *rule, const char *note);
+                        const char *sd_col, const char *rule, const char *kind, const char *note);
 /* One verdict per row of t, quantity "WHAT, LABEL_COL LABEL" (the row's
  * text or number in label_col, e.g. "E_KS, panel a"). */
 void nl_harness_verdict_rows(nl_harness *r, const char *file, const nl_table *t, const char *what,
                              const char *label_col, const char *paper_col, const char *ours_col,
-                             const char *sd_col, const char *rule, const char *note);
+                             const char *sd_col, const char *rule, const char *kind,
+                             const char *note);
 /* A claim of the paper that a value is lower in one condition than in
  * another (rows row_a and row_b of t, column col; sd_col: the sd over the
  * n_col seeds of each row): "reproduced" when ours is lower and Welch's
  * two-sided test rejects equal means at level alpha, "partly" when lower but
  * not significant, else "not reproduced". The paper column holds `claim`
  * (text), ours the two means and sds, the reason the p-value. */
-void nl_harness_verdict_less(nl_harness *r, const char *file, const nl_table *t, size_t row_a, size_t row_b,
-                             const char *quantity, const char *claim, const char *col, const char *sd_col,
-                             const char *n_col, double alpha);
-/* The decision alone: verdict and reason (at most `len` bytes) for
- * paper, ours, sd (NAN when there is none) under `rule`. */
+void nl_harness_verdict_less(nl_harness *r, const char *file, const nl_table *t, size_t row_a,
+                             size_t row_b, const char *quantity, const char *claim,
+                             const char *col, const char *sd_col, const char *n_col,
+                             double alpha, const char *kind);
+/* A claim decided by a test the experiment ran: the paper column holds
+ * `claim` (text), ours the statistic in stat_col and its p-value in p_col
+ * (row `row` of t), decided by rule "p A B" or "fit A B" (above). The
+ * experiment states in `note` what the test is ("r with the pattern against
+ * 100 random tables, one-sided"). */
+void nl_harness_verdict_p(nl_harness *r, const char *file, const nl_table *t, size_t row,
+                          const char *quantity, const char *claim, const char *stat_col,
+                          const char *p_col, const char *rule, const char *kind, const char *note);
+/* A claim no number decides, shown by a figure of the run: kind
+ * "qualitative", verdict "see figure", source the figure's file name. */
+void nl_harness_verdict_figure(nl_harness *r, const char *quantity, const char *claim,
+                               const char *figure, const char *note);
+/* The decision alone: outcome and reason (at most `len` bytes) for
+ * paper, ours, sd (NAN when there is none) under `rule` (rel, abs, factor,
+ * sd; for p and fit, ours is the p-value and paper is ignored). */
 nl_status nl_harness_verdict_decide(const char *rule, double paper, double ours, double sd,
-                                    nl_harness_verdict_kind *verdict, char *reason, size_t len,
+                                    nl_harness_outcome *outcome, char *reason, size_t len,
                                     nl_error *err);
-/* "reproduced", "partly", "not reproduced". */
-const char *nl_harness_verdict_name(nl_harness_verdict_kind v);
+/* NL_OK when `kind` is one of the kinds above (K, M, N >= 1). */
+nl_status nl_harness_verdict_kind_check(const char *kind, nl_error *err);
+/* The word in the verdict column: the outcome capped by the kind
+ * ("reproduced", "partly", "not reproduced", "consistent after fit",
+ * "consistent after selection", "by construction", "see figure"). */
+const char *nl_harness_verdict_word(nl_harness_outcome outcome, const char *kind);
 
 /* Writes report.md, checks.tsv, verdicts.tsv (when declared) and manifest.tsv,
  * frees r; returns 0 for main(). */

@@ -9,9 +9,39 @@
 #include <stdlib.h>
 #include <string.h>
 
-const char *nl_harness_verdict_name(nl_harness_verdict_kind v)
+static int has_prefix(const char *s, const char *prefix)
 {
-  return v == NL_VERDICT_REPRODUCED ? "reproduced" : v == NL_VERDICT_PARTLY ? "partly" : "not reproduced";
+  return !strncmp(s, prefix, strlen(prefix));
+}
+
+nl_status nl_harness_verdict_kind_check(const char *kind, nl_error *err)
+{
+  unsigned long k, m;
+  int used = 0;
+  if (kind && (!strcmp(kind, "independent") || !strcmp(kind, "by construction") ||
+               !strcmp(kind, "qualitative")))
+    return NL_OK;
+  if (kind && has_prefix(kind, "fitted ") && sscanf(kind, "fitted %lu/%lu%n", &k, &m, &used) == 2 &&
+      !kind[used] && k >= 1 && m >= 1)
+    return NL_OK;
+  if (kind && has_prefix(kind, "selected ") && sscanf(kind, "selected 1/%lu%n", &m, &used) == 1 &&
+      !kind[used] && m >= 2)
+    return NL_OK;
+  return nl_fail(err, NL_EINVAL,
+                 "verdict kind '%s': wanted independent, fitted K/M, selected 1/N, by construction "
+                 "or qualitative", kind ? kind : "(null)");
+}
+
+const char *nl_harness_verdict_word(nl_harness_outcome outcome, const char *kind)
+{
+  if (!strcmp(kind, "by construction")) return "by construction";
+  if (!strcmp(kind, "qualitative")) return "see figure";
+  if (outcome == NL_VERDICT_REPRODUCED && has_prefix(kind, "fitted")) return "consistent after fit";
+  if (outcome == NL_VERDICT_REPRODUCED && has_prefix(kind, "selected"))
+    return "consistent after selection";
+  return outcome == NL_VERDICT_REPRODUCED ? "reproduced"
+         : outcome == NL_VERDICT_PARTLY   ? "partly"
+                                          : "not reproduced";
 }
 
 /* "5%" for rel 0.05, "0.01" for abs, "x1.1" for factor, "2 sd" for sd. */
@@ -24,15 +54,36 @@ static void threshold_text(char *buf, size_t len, const char *kind, double v)
 }
 
 nl_status nl_harness_verdict_decide(const char *rule, double paper, double ours, double sd,
-                                    nl_harness_verdict_kind *verdict, char *reason, size_t len,
+                                    nl_harness_outcome *verdict, char *reason, size_t len,
                                     nl_error *err)
 {
   char kind[16];
   double a, b;
   int used = 0;
-  if (sscanf(rule, "%15s %lf %lf %n", kind, &a, &b, &used) != 3 || rule[used] || !(a >= 0) || !(b >= a) ||
+  if (sscanf(rule, "%15s %lf %lf %n", kind, &a, &b, &used) != 3 || rule[used])
+    kind[0] = 0;
+  if (!strcmp(kind, "p") || !strcmp(kind, "fit")) {
+    /* p-value rules: "p A B" an effect (small p), "fit A B" a law (large p) */
+    int effect = !strcmp(kind, "p");
+    if (!(a >= 0 && b <= 1 && (effect ? b >= a : a >= b)))
+      return nl_fail(err, NL_EINVAL, "verdict rule '%s': wanted 'p A B' with 0 <= A <= B <= 1 or "
+                     "'fit A B' with 1 >= A >= B >= 0", rule);
+    if (!(ours >= 0 && ours <= 1))
+      return nl_fail(err, NL_EINVAL, "verdict rule '%s': p-value %g not in [0, 1]", rule, ours);
+    if (effect) {
+      *verdict = ours <= a ? NL_VERDICT_REPRODUCED : ours <= b ? NL_VERDICT_PARTLY : NL_VERDICT_NOT;
+      snprintf(reason, len, "p = %.2g; reproduced when p <= %g, partly when p <= %g", ours, a, b);
+    } else {
+      *verdict = ours >= a ? NL_VERDICT_REPRODUCED : ours >= b ? NL_VERDICT_PARTLY : NL_VERDICT_NOT;
+      snprintf(reason, len, "p = %.2g; reproduced when p >= %g (not rejected), partly when p >= %g",
+               ours, a, b);
+    }
+    return NL_OK;
+  }
+  if (!kind[0] || !(a >= 0) || !(b >= a) ||
       (strcmp(kind, "rel") && strcmp(kind, "abs") && strcmp(kind, "factor") && strcmp(kind, "sd")))
-    return nl_fail(err, NL_EINVAL, "verdict rule '%s': wanted 'rel|abs|factor|sd A B' with 0 <= A <= B", rule);
+    return nl_fail(err, NL_EINVAL, "verdict rule '%s': wanted 'rel|abs|factor|sd A B' with 0 <= A <= B, "
+                   "'p A B' or 'fit A B'", rule);
   if (!isfinite(paper) || !isfinite(ours))
     return nl_fail(err, NL_EINVAL, "verdict rule '%s': paper %g, ours %g: not finite", rule, paper, ours);
   double d, diff = ours - paper;   /* d: the distance the rule measures */

@@ -195,7 +195,9 @@ NL_TEST(manifest_round_trip)
   nl_table *t = nl_table_alloc(4, tc);
   nl_table_append(t, "sddd", "9.99990000099999e-06", 0.99999, 0.058087919778, 0.06);
   nl_harness_report_table(r, t, NULL, 4);
-  nl_harness_verdict(r, "t.tsv", t, 0, "E", "paper_E", "E", NULL, "rel 0.05 0.25", "a reading");
+  nl_harness_verdict(r, "t.tsv", t, 0, "E", "paper_E", "E", NULL, "rel 0.05 0.25", "independent", "a reading");
+  nl_harness_verdict(r, "t.tsv", t, 0, "E fitted", "paper_E", "E", NULL, "rel 0.05 0.25", "fitted 2/3", NULL);
+  nl_harness_verdict_figure(r, "the look", "looks like marble", "panels.png", NULL);
   nl_table_free(t);
   NL_CHECK(nl_harness_end(r) == 0);
   char *rp = nl_path_join(out, "report.md"), *vp = nl_path_join(out, "verdicts.tsv");
@@ -207,7 +209,11 @@ NL_TEST(manifest_round_trip)
   nl_table *vt = NULL;
   NL_CHECK(nl_table_read(vp, NL_TABLE_TEXT, &vt, &err0) == NL_OK);
   if (vt) {
-    NL_CHECK(vt->nrows == 1 && !strcmp(nl_table_text(vt, 0, "verdict"), "reproduced"));
+    NL_CHECK(vt->nrows == 3 && !strcmp(nl_table_text(vt, 0, "verdict"), "reproduced"));
+    NL_CHECK(!strcmp(nl_table_text(vt, 0, "kind"), "independent"));
+    /* a fitted reading is capped: it cannot be "reproduced" */
+    NL_CHECK(!strcmp(nl_table_text(vt, 1, "verdict"), "consistent after fit"));
+    NL_CHECK(!strcmp(nl_table_text(vt, 2, "verdict"), "see figure") && !strcmp(nl_table_text(vt, 2, "kind"), "qualitative"));
     NL_CHECK(strstr(nl_table_text(vt, 0, "reason"), "3.19% below the paper") && strstr(nl_table_text(vt, 0, "reason"), "; a reading"));
     NL_CHECK(!strcmp(nl_table_text(vt, 0, "source"), "t.tsv:E"));
   }
@@ -326,7 +332,7 @@ NL_TEST(check_engine_on_two_folders)
 /* Verdicts: each rule's thresholds, the words of the reason, bad rules. */
 NL_TEST(verdict_rules)
 {
-  nl_harness_verdict_kind v;
+  nl_harness_outcome v;
   char why[256];
   nl_error err;
   NL_CHECK(nl_harness_verdict_decide("rel 0.05 0.25", 2.0, 2.08, NAN, &v, why, sizeof why, &err) == NL_OK);
@@ -339,12 +345,31 @@ NL_TEST(verdict_rules)
   NL_CHECK(v == NL_VERDICT_PARTLY && strstr(why, "3.5 sd below"));
   NL_CHECK(nl_harness_verdict_decide("sd 2 4", 1, 1, 0, &v, why, sizeof why, &err) == NL_OK && v == NL_VERDICT_REPRODUCED);
   NL_CHECK(nl_harness_verdict_decide("abs 0.01 0.1", 0.5, 0.45, NAN, &v, why, sizeof why, &err) == NL_OK);
-  NL_CHECK(v == NL_VERDICT_PARTLY && !strcmp(nl_harness_verdict_name(v), "partly"));
+  NL_CHECK(v == NL_VERDICT_PARTLY && !strcmp(nl_harness_verdict_word(v, "independent"), "partly"));
   NL_CHECK(nl_harness_verdict_decide("rel 0.5 0.1", 1, 1, NAN, &v, why, sizeof why, &err) == NL_EINVAL);
   NL_CHECK(nl_harness_verdict_decide("near 0.1 0.2", 1, 1, NAN, &v, why, sizeof why, &err) == NL_EINVAL && strstr(err.msg, "near"));
   NL_CHECK(nl_harness_verdict_decide("sd 1 2", 1, 1, NAN, &v, why, sizeof why, &err) == NL_EINVAL);
   NL_CHECK(nl_harness_verdict_decide("factor 1.1 2", -1, 1, NAN, &v, why, sizeof why, &err) == NL_EINVAL);
   NL_CHECK(nl_harness_verdict_decide("rel 0.1 0.2 x", 1, 1, NAN, &v, why, sizeof why, &err) == NL_EINVAL);
+  /* p-value rules: an effect wants a small p, a law a large one */
+  NL_CHECK(nl_harness_verdict_decide("p 0.01 0.05", NAN, 0.03, NAN, &v, why, sizeof why, &err) == NL_OK);
+  NL_CHECK(v == NL_VERDICT_PARTLY && strstr(why, "p = 0.03"));
+  NL_CHECK(nl_harness_verdict_decide("fit 0.05 0.001", NAN, 0.5, NAN, &v, why, sizeof why, &err) == NL_OK);
+  NL_CHECK(v == NL_VERDICT_REPRODUCED);
+  NL_CHECK(nl_harness_verdict_decide("fit 0.05 0.001", NAN, 1e-5, NAN, &v, why, sizeof why, &err) == NL_OK);
+  NL_CHECK(v == NL_VERDICT_NOT);
+  NL_CHECK(nl_harness_verdict_decide("fit 0.001 0.05", NAN, 0.5, NAN, &v, why, sizeof why, &err) == NL_EINVAL);
+  NL_CHECK(nl_harness_verdict_decide("p 0.01 0.05", NAN, 1.5, NAN, &v, why, sizeof why, &err) == NL_EINVAL);
+  /* kinds, and the cap each puts on the word */
+  const char *good[] = {"independent", "fitted 1/6", "fitted 4/12", "selected 1/19", "by construction", "qualitative"};
+  for (size_t i = 0; i < sizeof good / sizeof *good; i++)
+    NL_CHECK(nl_harness_verdict_kind_check(good[i], &err) == NL_OK);
+  const char *bad[] = {"fitted", "fitted 0/3", "selected 2/19", "selected 1/1", "fitted 1/6 ", "chosen", ""};
+  for (size_t i = 0; i < sizeof bad / sizeof *bad; i++)
+    NL_CHECK(nl_harness_verdict_kind_check(bad[i], &err) == NL_EINVAL);
+  NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_REPRODUCED, "selected 1/19"), "consistent after selection"));
+  NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_PARTLY, "fitted 1/6"), "partly"));
+  NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_REPRODUCED, "by construction"), "by construction"));
 }
 
 int main(int argc, char **argv)
