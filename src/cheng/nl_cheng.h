@@ -309,6 +309,12 @@ typedef struct {
                                  of [0,1)^2, per unit length (smoothness, Fig 4.7) */
   /* Controllability: how well the value follows the pattern, and two baselines. */
   double r_pattern;           /* Pearson r of c(x_i) and D_i over the control points */
+  /* E_Con = offset + contrast + shape (population moments over the n points):
+   * n (mean c - mean D)^2, n (sd c - sd D)^2, 2 n sd c sd D (1 - r_pattern). */
+  double e_con_offset, e_con_contrast, e_con_shape;
+  double seam_ratio;          /* largest mean |step| across one raster column or row
+                                 boundary over the mean of all (128^2 raster; ~1.2 for
+                                 seamless noise, ~2 along a seam) */
   double contrast;            /* sd of c on the 128^2 raster */
   double e_con_const;         /* E_Con of the best constant image, sum (D_i - mean D)^2 */
   double e_con_random;        /* E_Con of the unoptimised table (nl_cheng_run's start; NAN

@@ -15,10 +15,14 @@ static double amp_scale(const nl_noise_octaves *o)
 }
 
 /* E_Con over all F octaves with the noise kernel itself (nl_noise_grad2_eval), an
- * evaluation path independent of the optimiser's stored corners; with r != NULL
- * also Pearson's r of the control value and the target D over the points. */
+ * evaluation path independent of the optimiser's stored corners; with out !=
+ * NULL also Pearson's r of the control value c and the target D over the n
+ * points, and E_Con's three parts. With population means and sds,
+ *   sum (c - D)^2 = n (mc - mD)^2 + n (sc - sD)^2 + 2 n sc sD (1 - r),
+ * an offset, a contrast and a shape term: an E_Con above the flat image's is
+ * explained by which of them dominates. */
 static double control_error(const nl_noise_grad2 *g, const nl_cheng_config *c, const nl_cheng_pattern *pat,
-                            double *r)
+                            nl_cheng_eval *out)
 {
   nl_noise_octaves o = nl_cheng_octaves(c);   /* with the config's gains (X6) */
   double s = amp_scale(&o), e = 0, nv[NL_CHENG_MAX_OCTAVES];
@@ -29,9 +33,14 @@ static double control_error(const nl_noise_grad2 *g, const nl_cheng_config *c, c
     e += d * d;
     sv += v; sd += pat->d[i]; svv += v * v; sdd += pat->d[i] * pat->d[i]; svd += v * pat->d[i];
   }
-  if (r) {
+  if (out) {
     double cov = svd - sv * sd / n, vv = svv - sv * sv / n, dd = sdd - sd * sd / n;
-    *r = vv > 0 && dd > 0 ? cov / sqrt(vv * dd) : 0;   /* a flat value or pattern: no correlation */
+    double r = vv > 0 && dd > 0 ? cov / sqrt(vv * dd) : 0;   /* a flat value or pattern: no correlation */
+    double sc = sqrt(fmax(vv, 0) / n), sD = sqrt(fmax(dd, 0) / n), dm = (sv - sd) / n;
+    out->r_pattern = r;
+    out->e_con_offset = n * dm * dm;
+    out->e_con_contrast = n * (sc - sD) * (sc - sD);
+    out->e_con_shape = 2 * n * sc * sD * (1 - r);
   }
   return e;
 }
@@ -48,10 +57,40 @@ static double const_error(const nl_cheng_pattern *pat)
 
 #define ROUGH_N 128
 
+/* The seam ratio of a w x h raster: the mean |difference| across each
+ * boundary between two adjacent columns (over the rows), and between two
+ * adjacent rows, each divided by the mean over all boundaries of its
+ * direction; the largest of these. A smooth noise image has no preferred
+ * boundary (about 1.2 at 128^2 from the spread of 127 means of 128 values);
+ * a seam along x = 0.5 or at the border shows as a ratio near 2. */
+static double seam_ratio(const double *v, int w, int h)
+{
+  double *col = nl_xcalloc((size_t)(w > h ? w : h), sizeof *col), best = 0;
+  for (int dir = 0; dir < 2; dir++) {
+    int nb = dir ? h - 1 : w - 1, along = dir ? w : h;
+    double all = 0;
+    for (int b = 0; b < nb; b++) {
+      double s = 0;
+      for (int a = 0; a < along; a++) {
+        double d = dir ? v[(b + 1) * w + a] - v[b * w + a] : v[a * w + b + 1] - v[a * w + b];
+        s += fabs(d);
+      }
+      col[b] = s / along;
+      all += col[b];
+    }
+    all /= nb;
+    for (int b = 0; b < nb && all > 0; b++)
+      if (col[b] / all > best) best = col[b] / all;
+  }
+  free(col);
+  return best;
+}
+
 /* rms of the finite-difference gradient of the control value, per unit
  * length: a number for "smoother" (Fig 4.7); *contrast = the value's sd on
- * the same raster. */
-static double roughness(const nl_noise_grad2 *g, const nl_cheng_config *c, double *contrast)
+ * the same raster, *seam its seam ratio. */
+static double roughness(const nl_noise_grad2 *g, const nl_cheng_config *c, double *contrast,
+                        double *seam)
 {
   double *v = nl_xmalloc(ROUGH_N * ROUGH_N * sizeof *v), s = 0, m = 0, q = 0;
   nl_cheng_value_grid(g, c, ROUGH_N, ROUGH_N, v);
@@ -59,6 +98,7 @@ static double roughness(const nl_noise_grad2 *g, const nl_cheng_config *c, doubl
   m /= ROUGH_N * ROUGH_N;
   for (int i = 0; i < ROUGH_N * ROUGH_N; i++) q += (v[i] - m) * (v[i] - m);
   *contrast = sqrt(q / (ROUGH_N * ROUGH_N - 1.0));
+  *seam = seam_ratio(v, ROUGH_N, ROUGH_N);
   for (int y = 0; y + 1 < ROUGH_N; y++)
     for (int x = 0; x + 1 < ROUGH_N; x++) {
       double dx = v[y * ROUGH_N + x + 1] - v[y * ROUGH_N + x], dy = v[(y + 1) * ROUGH_N + x] - v[y * ROUGH_N + x];
@@ -82,9 +122,9 @@ nl_status nl_cheng_evaluate(const nl_noise_grad2 *g, const nl_cheng_config *c,
   out->e_ks = ks.d; out->p_ks = ks.p;
   out->kuiper_v = ku.v; out->p_kuiper = ku.p;
   out->chi2 = ch.chi2; out->p_chi2 = ch.p;
-  out->e_con = control_error(g, c, pat, &out->r_pattern);
+  out->e_con = control_error(g, c, pat, out);
   out->rms_con = sqrt(out->e_con / (double)pat->n);
-  out->roughness = roughness(g, c, &out->contrast);
+  out->roughness = roughness(g, c, &out->contrast, &out->seam_ratio);
   out->e_con_const = const_error(pat);
   out->e_con_random = NAN;
   out->moves = 0;

@@ -59,6 +59,10 @@ NL_TEST(stored_corners_match_noise_kernel)
   nl_cheng_eval ev;
   NL_CHECK(nl_cheng_evaluate(f.g, &c, f.pat, &ev, &err) == NL_OK);
   NL_CHECK_NEAR(con, ev.e_con, 1e-12 * ev.e_con);
+  /* E_Con's offset, contrast and shape parts sum to it, each >= 0 */
+  NL_CHECK_NEAR(ev.e_con_offset + ev.e_con_contrast + ev.e_con_shape, ev.e_con, 1e-9 * ev.e_con);
+  NL_CHECK(ev.e_con_offset >= 0 && ev.e_con_contrast >= 0 && ev.e_con_shape >= 0);
+  NL_CHECK(ev.seam_ratio > 1 && ev.seam_ratio < 3);
   test_fixture_close(&f);
 }
 

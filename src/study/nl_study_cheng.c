@@ -55,12 +55,14 @@ static const char *const summary_cols[] = {
   "roughness", "roughness_sd",
   "r_pattern", "r_pattern_sd", "contrast", "contrast_sd",
   "E_con_random", "E_con_random_sd", "E_con_const", "con_vs_const",
+  "con_offset_frac", "con_contrast_frac", "con_shape_frac",
+  "seam_ratio", "seam_ratio_sd",
 };
 #define NSUM (sizeof summary_cols / sizeof *summary_cols)
 
 nl_table *nl_study_cheng_summary_alloc(int nlabels, const char *const *labels)
 {
-  const char *names[32];
+  const char *names[48];
   for (int i = 0; i < nlabels; i++) names[i] = labels[i];
   for (size_t i = 0; i < NSUM; i++) names[nlabels + (int)i] = summary_cols[i];
   return nl_table_alloc((size_t)nlabels + NSUM, names);
@@ -130,6 +132,16 @@ static void summary_add(nl_table *t, int nlabels, const char *const *labels,
   row[c++] = evs[0].e_con_const;   /* the pattern's alone: the same for every seed */
   FIELD(evs, k, e_con, x);
   row[c++] = nl_stats_mean(x, k, NL_STATS_RUNNING) / evs[0].e_con_const; /* > 1: worse than flat */
+  /* E_Con's parts (nl_cheng_eval) as fractions of each run's E_Con, averaged */
+  for (int i = 0; i < k; i++) x[i] = evs[i].e_con > 0 ? evs[i].e_con_offset / evs[i].e_con : 0;
+  row[c++] = nl_stats_mean(x, k, NL_STATS_RUNNING);
+  for (int i = 0; i < k; i++) x[i] = evs[i].e_con > 0 ? evs[i].e_con_contrast / evs[i].e_con : 0;
+  row[c++] = nl_stats_mean(x, k, NL_STATS_RUNNING);
+  for (int i = 0; i < k; i++) x[i] = evs[i].e_con > 0 ? evs[i].e_con_shape / evs[i].e_con : 0;
+  row[c++] = nl_stats_mean(x, k, NL_STATS_RUNNING);
+  FIELD(evs, k, seam_ratio, x);
+  row[c++] = nl_stats_mean(x, k, NL_STATS_RUNNING);
+  row[c++] = nl_stats_sd(x, k, NL_STATS_RUNNING);
   size_t r = nl_table_append_empty(t);
   for (size_t i = 0; i < NSUM; i++) nl_table_set(t, r, summary_cols[i], row[i]);
   for (int i = 0; i < nlabels; i++) nl_table_set_text(t, r, t->names[i], labels[i]);
