@@ -92,17 +92,25 @@ void nl_harness_check_measured(nl_harness *r, const char *table, double multiple
                nl_harness_quick(r) ? " --quick" : "", nl_harness_name(r));
   int nconf = 0;
   for (const char *p = configs; *p; p++) nconf += (p == configs || p[-1] == ' ') && *p != ' ';
+  /* These sentences are about the regression check's tolerances, not the
+   * results: every value above was computed by this run. */
   if (borrowed)
-    nl_harness_text(r, "This scale is not measured; the spreads below are those of the %s-scale run.\n", scale);
-  if (ndiff == 0)
+    nl_harness_text(r, "Regression tolerances are borrowed from the %s-scale measurement: how this "
+                       "scale's values move across CPU configurations has not been measured.\n", scale);
+  if (ndiff == 0) {
     nl_harness_text(r, "Regression rules: exact; no value of %s moved over %d CPU configurations "
                        "(OpenBLAS kernels, BLAS threads, libm without FMA; `data/blas_spread.tsv`).\n",
                    all ? "any table" : table, nconf);
-  else
-    nl_harness_text(r, "Regression rules: %d column%s of %s moved over %d CPU configurations (OpenBLAS "
-                       "kernels, BLAS threads, libm without FMA; `data/blas_spread.tsv`), the largest "
-                       "relative spread %.2g (%s); each is compared within %g x its measured spread "
-                       "(relative%s); the other columns keep their declared rule (exact unless stated).\n",
-                   ndiff, ndiff == 1 ? "" : "s", moved, nconf, worst, worst_at[0] ? worst_at : "-",
-                   multiple, nabs ? "; absolute for values at rounding level" : "");
+    return;
+  }
+  char largest[320] = "";
+  if (worst > 0) snprintf(largest, sizeof largest, ", the largest relative spread %.2g (%s)", worst, worst_at);
+  nl_harness_text(r, "Regression rules: %d column%s of %s moved over %d CPU configurations (OpenBLAS "
+                     "kernels, BLAS threads, libm without FMA; `data/blas_spread.tsv`)%s; each is compared "
+                     "within %g x its measured spread (%s); the other columns keep their declared rule "
+                     "(exact unless stated).\n",
+                 ndiff, ndiff == 1 ? "" : "s", moved, nconf, largest, multiple,
+                 nabs == ndiff ? "absolute: the values move at rounding level"
+                 : nabs        ? "relative; absolute for values at rounding level"
+                               : "relative");
 }
