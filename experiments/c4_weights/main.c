@@ -47,9 +47,10 @@ int main(int argc, char **argv)
   int table = (int)nl_harness_param_int(r, "table", 1, 0, 1,
                                         "1: Table 4.1 and the trade-off sweep; 0: only the run at "
                                         "the configured w1, w2 (a sweep's unit)");
-  int gmin = (int)nl_harness_param_int(r, "grid_min", 8, 1, 1024,
+  int gmin = (int)nl_harness_param_int(r, "grid_min", quick ? 16 : 8, 1, 1024,
                                        "smallest control grid of the E_Con grid x budget table "
-                                       "(doubling up to grid_max; the run's grid is added)");
+                                       "(doubling up to grid_max; the run's grid is added; quick "
+                                       "16)");
   int gmax =
       (int)nl_harness_param_int(r, "grid_max", quick ? 16 : 64, 1, 1024,
                                 "largest control grid of the E_Con grid x budget table (quick 16)");
