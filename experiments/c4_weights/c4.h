@@ -1,10 +1,13 @@
-/* c4.h - C4's Table 4.1 analysis (table41.c) and its report prose (report.c).
+/* c4.h - C4's runs (cases.c), Table 4.1 analysis (table41.c), E_Con over
+ * grids and budgets (econ.c), seams (seams.c), verdicts (verdicts.c) and
+ * report prose (report.c).
  *
  * Cheng 2009 sec. 4.3.2 weighs the statistic term against the control term,
  * E = w1 E_KS + w2 E_Con (eq. 3.9), and prints six pairs (w1, w2) in Table
- * 4.1. The table's text reads the weights the other way round, so C4 runs
+ * 4.1. The table's text reads some weights the other way round, so C4 runs
  * every pair printed (rows 0, 2, 4, ... of its run table) and swapped (rows
- * 1, 3, 5, ...), and asks which reading fits all six rows.
+ * 1, 3, 5, ...); the verdicts read the table as printed, and the other
+ * readings are measured beside it.
  */
 #ifndef C4_H
 #define C4_H
@@ -25,13 +28,13 @@ typedef struct {
 } c4_case;
 /* Sets c's weights to (w1, w2) and w's labels; reading and panel are kept
  * by pointer. */
-void c4_case_set(nl_cheng_config *c, c4_case *w, const char *reading, const char *panel,
-                 double w1, double w2);
+void c4_case_set(nl_cheng_config *c, c4_case *w, const char *reading, const char *panel, double w1,
+                 double w2);
 /* Fig 4.8 as textures.png: the pattern, then the first seed's controlled
  * value per pair on its own 0..1 scale (no display stretch); top row the
  * printed pairs (firsts[2i]), bottom the swapped ones (firsts[2i + 1]). */
-void c4_fig48(nl_harness *r, const nl_cheng_pattern *pat, nl_noise_grad2 *const *firsts,
-              int npair, const nl_cheng_config *c);
+void c4_fig48(nl_harness *r, const nl_cheng_pattern *pat, nl_noise_grad2 *const *firsts, int npair,
+              const nl_cheng_config *c);
 
 /* ---- analysis (table41.c) ---------------------------------------------- */
 
@@ -41,39 +44,89 @@ void c4_fig48(nl_harness *r, const nl_cheng_pattern *pat, nl_noise_grad2 *const 
  * E_ks_swapped, E_con_swapped, p_ks_min, p_kuiper_min (caller frees). */
 nl_table *c4_table41(const nl_table *runs, const c4_thesis_row *thesis, int npair);
 
-/* Which reading of the weight columns fits all rows: per reading (printed;
- * swapped; mixed_a_printed = (a) printed and (b)-(f) swapped) Pearson r of
- * log E_KS (and log E_Con), ours against the thesis's over the rows, its exact
- * one-sided permutation p (n! orderings), and the rms of the centred log ratio
- * (0: ours = the thesis's times one factor); from c4_table41's table. At most
- * 8 rows (8! orderings). */
-nl_table *c4_readings(const nl_table *cmp, const c4_thesis_row *thesis, int npair);
+/* The three readings of Table 4.1's weight columns, in readings.tsv's row
+ * order: printed (the table as printed: the headline), swapped (w1 <-> w2 on
+ * every row) and mixed_a_printed ((a) as printed, (b)-(f) swapped: the only
+ * reading under which the text's "(a) small KS weight, (f) large KS weight"
+ * holds). */
+#define C4_READINGS 3
+extern const char *const c4_reading_names[C4_READINGS];
+/* 1 when reading rd takes the swapped run at panel i (0-based). */
+int c4_reading_swapped(int rd, int panel);
 
-/* Config c on `pattern` read at control grids gmin, 2 gmin, ... <= gmax over
- * s's seeds: grid, points, E_ks, E_ks_sd, E_con, E_con_sd, E_con_per_point,
- * paper_E_con, r_pattern, con_vs_const. The thesis does not state its grid;
- * E_Con sums over the control points, so the grid sets E_Con's scale. */
-nl_table *c4_grid_sweep(const nl_study_cheng *s, const nl_cheng_config *c, const char *pattern,
-                        int gmin, int gmax, double paper_e_con);
-/* The row of c4_grid_sweep's table whose E_con is closest to paper_e_con on
- * a log scale. */
-size_t c4_grid_best(const nl_table *gs, double paper_e_con);
+/* Per reading (rows in c4_reading_names order), over the rows: Pearson r of
+ * log E_KS (and log E_Con), ours against the thesis's, its exact one-sided
+ * permutation p (n! orderings), the rms of the centred log ratio (shape: 0
+ * when ours = the thesis's times one factor) and of the uncentred log ratio
+ * (scale: 0 when ours = the thesis's); from c4_table41's table. At most 8
+ * rows (8! orderings). */
+nl_table *c4_readings(const nl_table *cmp, const c4_thesis_row *thesis, int npair);
+/* The reading closest to the thesis's E_KS on absolute scale: smallest
+ * rms_abs_log_ks (a selection against the thesis's numbers, 1 of 3). */
+size_t c4_readings_closest(const nl_table *rd);
+/* Welch tests, per panel, of printed vs swapped E_KS and E_Con over seeds
+ * (rows 2i, 2i + 1 of the run table): reading_tests.tsv and its table. */
+void c4_reading_tests(nl_harness *r, const nl_table *tab, int npair);
+
+/* ---- E_Con at the printed pairs: grid x budget x reading (econ.c) ------ */
+
+/* Table 4.1's pairs, printed and swapped, on `pattern` at the control grids
+ * gmin, 2 gmin, ... <= gmax and s's own grid, each at the run's annealing
+ * schedule (budget 1) and with moves_per_var scaled by budget_low: a summary
+ * table labelled grid, points, budget, reading, panel, w1, w2, rows in that
+ * order (grid, budget, panel, then printed before swapped). The runs at s's
+ * grid and budget 1 are main_evs (the Table 4.1 runs, case 2i + swapped),
+ * not run again. */
+nl_table *c4_econ_runs(const nl_study_cheng *s, const nl_cheng_config *base, const char *pattern,
+                       const c4_thesis_row *thesis, int npair, const nl_cheng_eval *main_evs,
+                       int gmin, int gmax, double budget_low);
+/* Per grid, budget and reading (c4_reading_names) over the npair panels of
+ * c4_econ_runs: grid, points, budget, moves_per_var, reading, E_con (mean
+ * over the panels), E_con_lo, E_con_hi, E_con_per_point, paper_E_con (the
+ * thesis's mean), con_ratio (ours / thesis), rms_abs_log_ks, rms_abs_log_con
+ * (uncentred rms of log ours / thesis over the panels), E_ks, r_pattern,
+ * seam_ratio (means over the panels). */
+nl_table *c4_econ_grid(const nl_table *runs, const c4_thesis_row *thesis, int npair,
+                       double moves_per_var);
+/* The row of c4_econ_grid's table, reading printed at budget 1, whose E_con
+ * is closest to its paper_E_con on a log scale: the grid fitted to the
+ * thesis's E_Con. */
+size_t c4_econ_fitted(const nl_table *eg);
+/* The row of c4_econ_grid's table at `grid`, reading printed, budget 1. */
+size_t c4_econ_row(const nl_table *eg, int grid);
+
+/* ---- seams (seams.c) --------------------------------------------------- */
+
+/* The seam ratio (nl_cheng_eval) of Table 4.1's panels against the
+ * unoptimised start tables of the same seeds: seams.tsv (summary rows:
+ * printed a..f, swapped a..f, then "unoptimised"), seam_tests.tsv (Welch,
+ * each panel against the unoptimised row) and one sentence. main_evs as for
+ * c4_econ_runs. */
+void c4_seams(const nl_study_cheng *s, const nl_cheng_config *base, const nl_cheng_pattern *pat,
+              const nl_cheng_eval *main_evs, int npair);
+
+/* ---- verdicts (verdicts.c) --------------------------------------------- */
+
+/* E_KS per panel: the printed reading (independent) and the reading closest
+ * on absolute scale (selected 1/3, each panel's column as that reading
+ * takes it); E_Con per panel at the run's grid (independent) and the mean at
+ * the grid fitted to the thesis (fitted 1/6). */
+void c4_verdicts(nl_harness *r, const nl_table *cmp, const nl_table *rd, const nl_table *eg);
 
 /* ---- report prose (report.c), every number from the tables or the run --- */
 
 /* The run at the configured (w1, w2) alone (table=0): its sentence and table. */
 void c4_configured_text(nl_harness *r, const nl_table *one, const nl_cheng_config *c);
 /* The thesis's claim, our setting and Table 4.1 ours vs thesis. */
-void c4_table41_text(nl_harness *r, const nl_table *cmp, int grid, int nsweep, double lo,
-                     double hi, size_t points);
-/* The readings table and its prose; returns the row of the best-fitting
- * reading (smallest rms_log_ks). */
-size_t c4_readings_text(nl_harness *r, const nl_table *rd);
-/* The printed vs swapped Welch table (nl_study_cheng_welch_alloc). */
-void c4_tests_text(nl_harness *r, const nl_table *wt);
-/* The grid sweep's table and the sentence on its best row gb; `grid` is the
- * run's own control grid, the measured alternative. */
-void c4_grid_text(nl_harness *r, const nl_table *gs, size_t gb, double paper_con, int grid);
+void c4_table41_text(nl_harness *r, const nl_table *cmp, int grid, int nsweep, double lo, double hi,
+                     size_t points);
+/* The readings table and its prose: the headline reading and why, and the
+ * reading closest on absolute scale (c4_readings_closest). */
+void c4_readings_text(nl_harness *r, const nl_table *rd);
+/* The grid x budget x reading table and its prose: the headline grid and
+ * why, E_Con per point, and the grid fitted to the thesis's E_Con. */
+void c4_econ_text(nl_harness *r, const nl_table *eg, const nl_cheng_config *c, int grid,
+                  double budget_low);
 /* Uniformity over Table 4.1's runs (printed rows 0, 2, ...) and the sweep
  * (w1 / w2 = rhos[q]): the smallest fractions not rejected and the smallest
  * swept ratio from which every run passes. */
@@ -81,7 +134,6 @@ void c4_uniformity_text(nl_harness *r, const nl_table *tab, const nl_table *swee
                         const double *rhos, int npair);
 /* The figures textures.png (Fig 4.8, captioned with the printed pairs) and
  * tradeoff.png, then the sweep's table. */
-void c4_figures_text(nl_harness *r, const c4_thesis_row *thesis, int npair,
-                     const nl_table *sweep);
+void c4_figures_text(nl_harness *r, const c4_thesis_row *thesis, int npair, const nl_table *sweep);
 
 #endif
