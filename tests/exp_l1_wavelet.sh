@@ -28,5 +28,17 @@ tsv_awk 'FNR > 1 {val[FNR - 2] = n("var3d")}
       if (val[i] - val[0] > 0.01 || val[0] - val[i] > 0.01) {printf "volume-like reading %d: %.4f vs volume %.4f\n", i, val[i], val[0]; exit 1}
     if (!(val[4] > val[0] + 0.01 && val[5] < val[0] - 0.01)) {printf "planes z=0 %.4f, z=1/2 %.4f vs volume %.4f\n", val[4], val[5], val[0]; exit 1}
   }' "$3/variance_readings.tsv"
-grep -q 'Within 2 sd over seeds of 0.210: [0-9]' "$3/report.md"
+grep -q 'reading(s) lie within 2 sd over seeds of 0.210' "$3/report.md"
+# The exact expectation (expect.h) beside the measurement: 2D 0.2703 and 3D
+# 0.1959 on the 4-per-unit grid at every period >= 32 (0.1956 continuous);
+# the quick run's means lie +0.07 and +1.47 standard errors from them
+# (bound 4). Two verdict rows, both independent.
+"$2" "$3/expected.tsv" 'rows=2' 'z<4' 'z>-4' 'seeds==3'
+tsv_awk 'NR > 1 {e[n("dim")] = n("expected")}
+  END {if (e[2] < 0.2698 || e[2] > 0.2708 || e[3] < 0.1954 || e[3] > 0.1964) {
+         print "expected " e[2] " " e[3]; exit 1}}' \
+  "$3/expected.tsv"
+"$2" "$3/expected_period.tsv" 'rows=5' 'var3d_cont>0.195' 'var3d_cont<0.1965' 'var3d>var3d_cont'
+"$2" "$3/verdicts.tsv" 'rows=2'
+tsv_awk 'NR > 1 && v("kind") != "independent" {print "kind " v("kind"); exit 1}' "$3/verdicts.tsv"
 test -s "$3/report.md" && test -s "$3/manifest.tsv"

@@ -31,6 +31,14 @@
 #    (KS 0.0068, band 4 at 2.25 in a 128^2 synthesis); checked: it passes in
 #    every replicate on >= 1 photo and its mean KS < 0.03 on both (gauss33's
 #    clouds KS is 0.229). Both quick photos are colour: photo_sat_max > 0.
+#  - structure (structure.c): every photo is more coherent than its
+#    synthesis by the paper's method; measured at quick, coherence ratio
+#    photo / synthesis 1.49 (clouds), 1.63 (craters): checked > 1.3 (the band
+#    criterion's factor), so no paper10 replicate keeps the structure;
+#  - verdict rows (claims.tsv, verdicts.tsv): 4 rows, the paper's method and
+#    the structure row independent, calibrated fitted, the 66 parameters by
+#    construction and equal to 66; fractions in [0, 1]; measured at quick
+#    paper10 passes 0 of 6 (not reproduced), calibrated 3 of 6;
 #  - the gauss33 and paper10 rows of photos_mean are those of results/quick
 #    to 1e-9 relative (a third representation leaves theirs unchanged).
 set -euo pipefail
@@ -85,6 +93,18 @@ tsv_awk -v cols="ks_mean ks_sd tail_photo tail_synth speckle_mean speckle_sd wor
       if ((d < 0 ? -d : d) > 1e-9 * s) { printf "%s %s: %.17g vs results/quick %.17g\n", key, cn[c], n(cn[c]), a; bad = 1 } } }
   END { if (seen != nref || seen != 4) { printf "%d rows vs %d in results/quick\n", seen, nref; bad = 1 } exit bad }' \
   "$(dirname "$0")/../results/quick/l3_synthesis/photos_mean.tsv" "$3/photos_mean.tsv"
+tsv_awk 'NR == 1 || v("representation") == "paper10"' "$3/photos_mean.tsv" > "$3/photos_paper10.tsv"
+"$2" "$3/photos_paper10.tsv" 'rows=2' 'coh_photo>0' 'coh_photo<1' 'coh_synth_mean>0' \
+  'coh_synth_mean<1' 'coh_ratio>1.3' 'structure_passes==0'
+"$2" "$3/photos_mean.tsv" 'rows=6' 'structure_passes>=0' 'structure_passes<=3' 'coh_synth_sd>=0'
+"$2" "$3/claims.tsv" 'rows=4' 'ours>=0' 'passes>=0' 'passes<=syntheses'
+tsv_awk 'NR > 1 && n("ours") > 1 && v("quantity") !~ /^parameters/ {print "fraction > 1: " $0; exit 1}
+         NR > 1 && v("quantity") ~ /^parameters/ && n("ours") != 66 {print "parameters " n("ours"); exit 1}' "$3/claims.tsv"
+"$2" "$3/verdicts.tsv" 'rows=4'
+tsv_awk 'NR > 1 {k[v("kind")]++; if (v("kind") == "independent") ind[v("verdict")]++}
+  END {if (k["independent"] != 2 || k["by construction"] != 1 || k["fitted 21/21"] != 1) {print "kinds wrong"; exit 1}
+       if (ind["not reproduced"] != 2) {print "independent verdicts: " ind["not reproduced"] " not reproduced"; exit 1}}' \
+  "$3/verdicts.tsv"
 refused "$1" --quick --out "$3/bad" --exemplars "$3/no-such-folder"
 refused "$1" --quick --out "$3/bad" --exemplars
 [ ! -e "$3/bad/ks.tsv" ]

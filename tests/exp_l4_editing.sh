@@ -20,6 +20,12 @@
 # 0.086-0.237 (bound 0.43, a single seed's bound). The morph's matrix
 # stays a rotation (det 1, orthogonal to rounding: measured |det - 1| and
 # orth_err <= 9e-16; 1e-9 leaves room for any BLAS kernel).
+# Verdict rows (edit_claims.tsv): the edited bands' power over the original
+# (measured 0.416 at quick, far above factor^2 = 0.0625: the leakage floor
+# 0.376 stays) and their own power above the floor (measured 0.0649, sd
+# 0.0078 over 3 seeds): checked within 0.02 of 0.0625, and the ratio within
+# 0.03 of floor + 0.0625 (1 - floor) (the per-band bound above, aggregated);
+# three verdict rows, the morph qualitative.
 set -euo pipefail
 # shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
@@ -39,4 +45,12 @@ tsv_awk 'FNR > 1 {q = n("floor_from_leakage") / n("floor_fine_nohist");
 "$2" "$3/solid.tsv" 'rows=3' 'ks_2d_vs_slice<0.43'
 "$2" "$3/morph.tsv" 'rows=5' 'det~1:1e-9' 'orth_err<1e-9' image:morph.png image:editing.png
 grep -q 'ratio = floor' "$3/report.md" && ! grep -q '~0.4-0.6' "$3/report.md"
+"$2" "$3/edit_claims.tsv" 'rows=2' 'paper==0.0625' 'ours>0' 'floor>0.1' 'floor<1' 'seeds==3'
+tsv_awk 'FNR == 2 {r = n("ours"); f = n("floor")} FNR == 3 {a = n("ours")}
+  END {d = r - f - 0.0625 * (1 - f); e = a - 0.0625
+       if (d > 0.03 || d < -0.03 || e > 0.02 || e < -0.02) {printf "edit: ratio %.4f floor %.4f own %.4f\n", r, f, a; exit 1}}' \
+  "$3/edit_claims.tsv"
+"$2" "$3/verdicts.tsv" 'rows=3'
+tsv_awk 'NR > 1 {k[v("kind")]++} END {if (k["independent"] != 2 || k["qualitative"] != 1) {print "kinds"; exit 1}}' \
+  "$3/verdicts.tsv"
 test -s "$3/report.md" && test -s "$3/manifest.tsv"

@@ -11,15 +11,18 @@
 #define L1_CD_SIGMA2_PROJ  0.296 /* Cook & DeRose's code: projected noise */
 
 /* The run's setting: tile periods, seeds from seed0, image side, samples per
- * unit and axis of the variance, decades of the spectrum images. */
+ * unit and axis of the variance, decades of the spectrum images, side of the
+ * window of panels (b) and (d). */
 typedef struct {
   int tile, tile3, seeds, size, samples, decades;
   unsigned long seed0;
+  int window3;
 } l1_setting;
 
 /* st: summary.tsv (2D, 3D, in-band share of band 0); vr: the 3D readings;
- * ft: variance on the shifted lattice (frac 0, 1/8, ..., 1); lt: leakage. */
+ * ft: variance on the shifted lattice (frac 0, 1/8, ..., 1); lt: leakage;
+ * xt, pt: expected.tsv and expected_period.tsv (l1_expected_table). */
 void l1_report(nl_harness *r, const l1_setting *c, const nl_table *st, const nl_table *vr,
-               const nl_table *ft, const nl_table *lt);
+               const nl_table *ft, const nl_table *lt, const nl_table *xt, const nl_table *pt);
 
 #endif

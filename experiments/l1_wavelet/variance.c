@@ -2,6 +2,7 @@
  * sigma_N^2 beside Cook & DeRose's normalisation constant 0.210 (their
  * WMultibandNoise divides by sqrt(sum w_b^2 * 0.210) for plain 3D noise). */
 #include "variance.h"
+#include "expect.h"
 #include "study/nl_study.h"
 
 #include <gsl/gsl_rng.h>
@@ -123,13 +124,37 @@ nl_table *l1_leakage_table(const double *share, int K, int nb)
   return lt;
 }
 
-void l1_readings_gap_range(const nl_table *t, const size_t *rows, int n, double *lo, double *hi)
+nl_table *l1_expected_table(int n2, double m2, double s2, int n3, double m3, double s3, int K,
+                            int samples, nl_table **period)
 {
-  *lo = INFINITY;
-  *hi = -INFINITY;
-  for (int i = 0; i < n; i++) {
-    double g = 100 * nl_table_value(t, rows[i], "gap");
-    *lo = fmin(*lo, g);
-    *hi = fmax(*hi, g);
+  const char *cols[] = { "dim",  "period",      "expected", "expected_cont",
+                         "measured", "measured_sd", "seeds",    "z" };
+  nl_table *t = nl_table_alloc(8, cols);
+  const int n[2] = { n2, n3 };
+  const double m[2] = { m2, m3 }, sd[2] = { s2, s3 };
+  for (int d = 0; d < 2; d++) {
+    double e = l1_variance_expected(d + 2, n[d], samples);
+    double ec = l1_variance_expected(d + 2, n[d], 0);
+    double se = sd[d] / sqrt(K);
+    nl_table_append(t, "iiddddid", d + 2, n[d], e, ec, m[d], sd[d], K,
+                    se > 0 ? (m[d] - e) / se : 0.0);
   }
+  const char *pcols[] = { "period", "var2d", "var3d", "var2d_cont", "var3d_cont" };
+  nl_table *pt = nl_table_alloc(5, pcols);
+  for (int p = 16; p <= 256; p *= 2) {
+    double v2, v3, c2, c3;
+    l1_variance_expected2(p, samples, &v2, &v3);
+    l1_variance_expected2(p, 0, &c2, &c3);
+    nl_table_append(pt, "idddd", p, v2, v3, c2, c3);
+  }
+  *period = pt;
+  return t;
+}
+
+double *l1_window(const double *img, int size, int w)
+{
+  double *o = nl_xmalloc((size_t)w * w * sizeof *o);
+  for (int y = 0; y < w; y++)
+    for (int x = 0; x < w; x++) o[(size_t)y * w + x] = img[(size_t)y * size + x];
+  return o;
 }

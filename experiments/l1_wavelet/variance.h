@@ -35,11 +35,22 @@ nl_table *l1_variance_readings(int n, int K, unsigned long seed0, double paper);
 /* The readings whose |gap_in_sd| <= nsd, as "reading (var +- sd); ..." in
  * buf (size bytes, truncated at a whole reading); returns how many. */
 int l1_readings_within(const nl_table *t, double nsd, char *buf, size_t size);
-/* Smallest and largest 100 * gap over the given rows (percent). */
-void l1_readings_gap_range(const nl_table *t, const size_t *rows, int n, double *lo, double *hi);
 /* L1's leakage table from K seeds' nb x nb shares (nl_byexample_band_leakage,
  * share[(s nb + k) nb + j]: band k's power in eq. 13 band j): band, below
  * (mean share in coarser bands), inside (mean), inside_sd, above (finer). */
 nl_table *l1_leakage_table(const double *share, int K, int nb);
+
+/* The top-left w x w window of a size x size raster (new array, caller frees). */
+double *l1_window(const double *img, int size, int w);
+
+/* The measured band variance beside its exact expectation (expect.h):
+ * expected.tsv, rows 2D (period n2, mean m2, sd s2) and 3D (n3, m3, s3)
+ * over K seeds at `samples` per unit and axis: dim, period, expected (the
+ * same grid), expected_cont (the continuous mean), measured, measured_sd,
+ * seeds, z = (measured - expected) / (measured_sd / sqrt K). *period gets
+ * expected_period.tsv: period 16, 32, ..., 256, var2d, var3d (the grid) and
+ * var2d_cont, var3d_cont. */
+nl_table *l1_expected_table(int n2, double m2, double s2, int n3, double m3, double s3, int K,
+                            int samples, nl_table **period);
 
 #endif

@@ -3,6 +3,7 @@
  * error against image size over seeds beside a leakage-corrected estimator
  * (transfer matrix measured on the noise, tapered DFT, NNLS;
  * byexample/nl_byexample_leak.h), and both on exemplar photographs. */
+#include "claims.h"
 #include "photos.h"
 #include "report.h"
 #include "sweep.h"
@@ -104,7 +105,14 @@ int main(int argc, char **argv)
   nl_table *pt = l2_exemplar_fits(r, photos, nphotos, pmax, tile, frac, tseeds, pseeds, seed0);
   if (nphotos) nl_harness_write_table(r, pt, "photos.tsv");
 
-  l2_report(r, &fig, &sw, wt, et, pt, nphotos, exdir, pmax, pseeds);
+  nl_table *tt;
+  nl_table *st = l2_claims(r, et, size, sw.err_all, sw.err_fine, sw.sizes, sw.nsizes, sw.seeds,
+                           FINE, &tt);
+  l2_report(r, &fig, &sw, wt, et, st, tt, pt, nphotos, exdir, pmax, pseeds);
+  nl_table_free(st);
+  nl_table_free(tt);
+  free(sw.err_all);
+  free(sw.err_fine);
   nl_image_free(ib);
   nl_image_free(id);
   nl_table_free(wt);

@@ -23,19 +23,25 @@ typedef struct {
  * the power ratio, at maxsize; below: sizes where the corrected estimator's
  * mean error is below eq. 12's; bbelow: bands at maxsize where its RMS
  * error is; p_last, pmax: its paired p against eq. 12 at maxsize and the
- * largest over sizes; pf: the same over the finest bands at maxsize. */
+ * largest over sizes; pf: the same over the finest bands at maxsize;
+ * sizes: the sides; err_all, err_fine: eq. 12's error per side and seed
+ * (err[i * seeds + s]; all bands, the fine finest bands), owned by the caller
+ * after the sweep (free). */
 typedef struct {
   int nsizes, maxsize, seeds, tseeds, fine, below, bbelow;
+  int sizes[16];
+  double *err_all, *err_fine;
   double frac;
   double m[3][NL_BYEXAMPLE_ESTIMATORS], v[3][NL_BYEXAMPLE_ESTIMATORS];
   double p_last, pmax, pf;
 } l2_sweep;
 
 /* The whole report: Fig. 4 (weights table wt), the sweep (estimators table
- * et), and the photographs (pt; nphotos in exdir, cropped to pmax, pseeds
+ * et), the verdict tables (st: similar.tsv, tt: trend.tsv, l2_claims), and
+ * the photographs (pt; nphotos in exdir, cropped to pmax, pseeds
  * syntheses each). */
 void l2_report(nl_harness *r, const l2_fig4 *f, const l2_sweep *s, const nl_table *wt,
-               const nl_table *et, const nl_table *pt, int nphotos, const char *exdir, int pmax,
-               int pseeds);
+               const nl_table *et, const nl_table *st, const nl_table *tt, const nl_table *pt,
+               int nphotos, const char *exdir, int pmax, int pseeds);
 
 #endif

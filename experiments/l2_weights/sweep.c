@@ -45,12 +45,15 @@ nl_table *l2_size_sweep(nl_harness *r, int tile, unsigned long seed0, l2_sweep *
   nl_table *bt = nl_table_alloc(5, bcols);
   nl_byexample_transfer T;
   int k = sw->seeds;
-  for (int s = MIN_SIZE; s <= sw->maxsize; s *= 2) sw->nsizes++;
+  for (int s = MIN_SIZE; s <= sw->maxsize && sw->nsizes < 16; s *= 2) sw->sizes[sw->nsizes++] = s;
+  sw->err_all = malloc((size_t)sw->nsizes * k * sizeof *sw->err_all);
+  sw->err_fine = malloc((size_t)sw->nsizes * k * sizeof *sw->err_fine);
   double *E = malloc((size_t)3 * NE * k * sizeof *E); /* error, fine error, power */
   double rms[NE * MB], bias[NE * MB];
   unsigned long *seeds = malloc((size_t)k * sizeof *seeds);
   for (int i = 0; i < k; i++) seeds[i] = nl_seed_stream(seed0, "l2.size_trial", (unsigned long)i);
-  for (int s = MIN_SIZE, done = 0; s <= sw->maxsize; s *= 2, done++) {
+  for (int done = 0; done < sw->nsizes; done++) {
+    int s = sw->sizes[done];
     int n = nl_byexample_band_count(s, s);
     nl_byexample_transfer_measure(&T, tile, s, s, n, sw->frac, sw->tseeds,
                                   nl_seed_stream(seed0, "l2.transfer", (unsigned long)s),
@@ -62,6 +65,10 @@ nl_table *l2_size_sweep(nl_harness *r, int tile, unsigned long seed0, l2_sweep *
                         bias[q * n + b]);
     for (int b = 0; b < n && s == sw->maxsize; b++)
       sw->bbelow += rms[NL_BYEXAMPLE_CORRECTED * n + b] < rms[b];
+    for (int i = 0; i < k; i++) { /* eq. 12 (estimator 0): error, fine error */
+      sw->err_all[done * k + i] = E[i];
+      sw->err_fine[done * k + i] = E[NE * k + i];
+    }
     summarise(et, sw, E, s, n);
     nl_harness_progress(r, (done + 1.0) / sw->nsizes, "size sweep");
   }

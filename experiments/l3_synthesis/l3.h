@@ -14,9 +14,10 @@ void l3_report_exemplars(nl_harness *r, const nl_table *kt, const nl_table *ft,
 /* The Gaussian self-match (gt, K seeds, l3_gauss_table), the procedural
  * `wavelet` exemplar's KS per variant (kt, columns kind, variant, ks_mean)
  * and the photographs (pt, l3_photos: synthesised at size, seeds from seed,
- * judged by min_share, max_ratio, max_ks). */
+ * judged by min_share, max_ratio, max_ks) and the verdict rows (ct, claims.tsv,
+ * l3_verdicts). */
 void l3_report_photos(nl_harness *r, const nl_table *kt, const nl_table *gt, const nl_table *pt,
-                      int K, int size, unsigned long seed, double min_share, double max_ratio,
-                      double max_ks);
+                      const nl_table *ct, int K, int size, unsigned long seed, double min_share,
+                      double max_ratio, double max_ks);
 
 #endif

@@ -12,6 +12,7 @@
 #include "photos.h"
 #include "study/nl_study.h"
 #include "synthesis.h"
+#include "verdicts.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -143,9 +144,11 @@ int main(int argc, char **argv)
   nl_table *gt = l3_gauss_table((size_t)size * size, K, seed0, nl_harness_threads(r));
   nl_harness_write_table(r, gt, "gauss.tsv");
   nl_table *pt = l3_photos(r, names, photos, np, psize, K, seed0, min_share, max_ratio, max_ks);
+  nl_table *ct = l3_verdicts(r, pt, psize);
 
   l3_report_exemplars(r, kt, ft, kinds, NKIND, size, K);
-  l3_report_photos(r, kt, gt, pt, K, psize, seed0, min_share, max_ratio, max_ks);
+  l3_report_photos(r, kt, gt, pt, ct, K, psize, seed0, min_share, max_ratio, max_ks);
+  nl_table_free(ct);
   for (int i = 0; i < np; i++) nl_image_free(photos[i]);
   nl_table_free(gt);
   nl_table_free(pt);

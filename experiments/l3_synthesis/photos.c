@@ -3,6 +3,7 @@
  * replicates on the run's threads, and the tables of their per-band
  * comparison (nl_study_example_compare). See photos.h. */
 #include "photos.h"
+#include "structure.h"
 #include "base/nl_parallel.h"
 #include "study/nl_study_exemplars.h"
 #include "stats/nl_stats.h"
@@ -125,10 +126,32 @@ static void mean_row(nl_table *mt, const nl_table *bands, const nl_table *sum,
   nl_stats_mean_sd(ks, K, NL_STATS_SUMMED, &km, &ksd);
   nl_stats_mean_sd(sp, K, NL_STATS_SUMMED, &sm, &ssd);
   size_t last = sum->nrows - 1;
-  nl_table_append(mt, "ssdddddddiiiiiiiddd", name, rep, km, ksd,
+  /* the structure columns (coh_*) are set by structure_cols */
+  nl_table_append(mt, "ssdddddddiiiiiiidddddddi", name, rep, km, ksd,
                   nl_table_value(sum, last, "tail_photo"), ts, sm, ssd, w, wk, nb - 1,
                   w <= max_ratio && w >= 1 / max_ratio, passes, K, fail_ks, fail_band, sat, sat99,
-                  kg);
+                  kg, 0.0, 0.0, 0.0, 0.0, 0);
+}
+
+/* The structure columns of mt's last row: the photo's coherence, the K
+ * syntheses' (mean, sd), their ratio photo / synthesis and how many
+ * replicates keep it within x max_ratio, the tolerance of the band criterion. */
+static void structure_cols(nl_table *mt, const l3_structure *photo, const double *coh, int K,
+                           double max_ratio)
+{
+  double m, sd;
+  int ok = 0;
+  nl_stats_mean_sd(coh, (size_t)K, NL_STATS_SUMMED, &m, &sd);
+  for (int s = 0; s < K; s++) {
+    double ratio = photo->coherence / coh[s];
+    ok += ratio <= max_ratio && ratio >= 1 / max_ratio;
+  }
+  size_t row = mt->nrows - 1;
+  nl_table_set(mt, row, "coh_photo", photo->coherence);
+  nl_table_set(mt, row, "coh_synth_mean", m);
+  nl_table_set(mt, row, "coh_synth_sd", sd);
+  nl_table_set(mt, row, "coh_ratio", photo->coherence / m);
+  nl_table_set(mt, row, "structure_passes", ok);
 }
 
 /* The rows of src appended to dst (same columns), in order. */
@@ -164,6 +187,7 @@ typedef struct {
   nl_byexample_params *par; /* per (photo, rep) */
   nl_table **bands, **sum;  /* per (photo, rep, replicate) */
   nl_image **crops;         /* per (photo, rep): the first replicate's crop */
+  double *coh;              /* per item: the synthesis' coherence (structure.h) */
   nl_status *st, *sst;      /* per (photo, rep): analysis; per item: synthesis */
   nl_error *err, *serr;
 } photos_job;
@@ -195,6 +219,14 @@ static void photo_item(void *ctx, size_t q, int thread)
                            j->min_share, j->max_ratio, j->max_ks, j->bands[q], j->sum[q]);
   /* the montage shows the first replicate, its top-left 256^2 at most */
   if (!s) j->crops[ih] = crop(syn, j->size < 256 ? j->size : 256);
+  /* coherence at the photo's size (its top-left crop), so that photo and synthesis are read over
+   * as many pixels */
+  int c = j->photos[i]->width < j->photos[i]->height ? j->photos[i]->width : j->photos[i]->height;
+  nl_image *sc = crop(syn, c < j->size ? c : j->size);
+  l3_structure st;
+  l3_structure_measure(sc, &st);
+  j->coh[q] = st.coherence;
+  nl_image_free(sc);
   nl_image_free(syn);
 }
 
@@ -209,8 +241,9 @@ nl_table *l3_photos(nl_harness *r, char (*names)[64], nl_image **photos, int np,
                                  "worst_band",   "coarsest_band",  "bands_ok",
                                  "passes",       "replicates",     "fail_ks",
                                  "fail_band",    "photo_sat_max",  "photo_sat_p99",
-                                 "ks_grad_mean" };
-  nl_table *mt = nl_table_alloc(19, mcols);
+                                 "ks_grad_mean", "coh_photo",      "coh_synth_mean",
+                                 "coh_synth_sd", "coh_ratio",      "structure_passes" };
+  nl_table *mt = nl_table_alloc(24, mcols);
   /* gauss33 and paper10 as the paper synthesises; calibrated = the `example` command's default
    * (gauss33 with the synthesis-time band calibration, nl_byexample.h) */
   const nl_byexample_hist_kind kinds[NREP] = { NL_HIST_GAUSS, NL_HIST_PAPER, NL_HIST_GAUSS };
@@ -234,6 +267,7 @@ nl_table *l3_photos(nl_harness *r, char (*names)[64], nl_image **photos, int np,
   j.bands = nl_xcalloc(nitem, sizeof *j.bands);
   j.sum = nl_xcalloc(nitem, sizeof *j.sum);
   j.crops = nl_xcalloc(nih, sizeof *j.crops);
+  j.coh = nl_xcalloc(nitem, sizeof *j.coh);
   j.st = nl_xcalloc(nih, sizeof *j.st);
   j.sst = nl_xcalloc(nitem, sizeof *j.sst);
   j.err = nl_xmalloc(nih * sizeof *j.err);
@@ -241,6 +275,8 @@ nl_table *l3_photos(nl_harness *r, char (*names)[64], nl_image **photos, int np,
   nl_parallel_for(nih, nl_harness_threads(r), analyse_item, &j);
   nl_parallel_for(nitem, nl_harness_threads(r), photo_item, &j);
   for (int i = 0; i < np; i++) {
+    l3_structure photo_st;
+    l3_structure_measure(photos[i], &photo_st);
     panels[NP * i] = photos[i];
     snprintf(labels[NP * i], 64, "%s %dx%d", names[i], photos[i]->width, photos[i]->height);
     for (int h = 0; h < NREP; h++) {
@@ -256,9 +292,9 @@ nl_table *l3_photos(nl_harness *r, char (*names)[64], nl_image **photos, int np,
         nl_table_free(j.sum[q]);
       }
       panels[NP * i + 1 + h] = j.crops[ih];
-      snprintf(labels[NP * i + 1 + h], 64, "%s %dx%d", rn, size < 256 ? size : 256,
-               size < 256 ? size : 256);
+      snprintf(labels[NP * i + 1 + h], 64, "%s", rn); /* the crop's size is in the title */
       mean_row(mt, bands, sum, photos[i], names[i], rn, K, min_share, max_ratio, max_ks);
+      structure_cols(mt, &photo_st, j.coh + ih * (size_t)K, K, max_ratio);
     }
     nl_harness_progress(r, (i + 1.0) / np, names[i]);
   }
@@ -266,6 +302,7 @@ nl_table *l3_photos(nl_harness *r, char (*names)[64], nl_image **photos, int np,
   free(j.bands);
   free(j.sum);
   free(j.crops);
+  free(j.coh);
   free(j.st);
   free(j.sst);
   free(j.err);
@@ -275,8 +312,8 @@ nl_table *l3_photos(nl_harness *r, char (*names)[64], nl_image **photos, int np,
   nl_harness_write_table(r, sum, "photos_summary.tsv");
   nl_harness_write_table(r, mt, "photos_mean.tsv");
   char title[96];
-  snprintf(title, sizeof title, "photographs | synthesis %d x %d (seed %lu), top-left crop", size,
-           size, seed);
+  snprintf(title, sizeof title, "photographs | synthesis %d x %d (seed %lu), top-left %d x %d",
+           size, size, seed, size < 256 ? size : 256, size < 256 ? size : 256);
   nl_study_montage(r, (const nl_image *const *)panels, lab, NP * np, NP, title,
                    "photos_montage.png");
   for (int i = 0; i < np; i++)

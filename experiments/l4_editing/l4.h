@@ -16,6 +16,7 @@ typedef struct {
   nl_table *solid;    /* solid.tsv */
   nl_table *summary;  /* editing_summary.tsv, one row */
   nl_table *morph;    /* morph.tsv */
+  nl_table *claims;   /* edit_claims.tsv (l4_verdicts) */
 } l4;
 
 /* Editing (Fig. 10c) and its measured cause, solid extrapolation (Fig. 10d)

@@ -5,6 +5,7 @@
 #include "harness/nl_harness.h"
 #include "editing.h"
 #include "l4.h"
+#include "verdicts.h"
 #include "study/nl_study.h"
 
 #include <math.h>
@@ -103,6 +104,7 @@ int main(int argc, char **argv)
   nl_study_montage(r, (const nl_image *const *)seq, tl, 5, 5,
                    "Fig. 12: morphing clouds into granite", "morph.png");
 
+  q.claims = l4_verdicts(&q, rep);
   l4_report(&q);
   nl_image *all[] = {ex, syn, ed, s0, s1, ex2};
   for (int i = 0; i < 6; i++) nl_image_free(all[i]);
@@ -111,6 +113,7 @@ int main(int argc, char **argv)
   nl_table_free(q.solid);
   nl_table_free(q.summary);
   nl_table_free(q.morph);
+  nl_table_free(q.claims);
   free(rep);
   nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);

@@ -1,0 +1,25 @@
+/* verdicts.h - L3's verdict rows (verdicts.c): the paper's method on the
+ * photographs, the calibrated synthesis beside it, the photographs'
+ * structure, and the 66 parameters. */
+#ifndef L3_VERDICTS_H
+#define L3_VERDICTS_H
+
+#include "harness/nl_harness.h"
+#include "table/nl_table.h"
+
+#define L3_PAPER_PARAMS 66 /* sec. 5: 9 matrix + 30 histogram + 27 weights at 512 x 512 */
+
+/* Writes claims.tsv (quantity, representation, paper, ours, passes,
+ * syntheses) from photos_mean.tsv (pt) and declares its verdicts:
+ *   0 syntheses of the paper's method (paper10) passing the band and KS
+ *     criteria, against "all" (paper 1): independent;
+ *   1 the same for the calibrated synthesis: fitted (its gains are fitted to
+ *     the photo's band powers on the realisation, its histogram matched by
+ *     rank: the criteria's own quantities);
+ *   2 paper10 syntheses keeping the photo's structure (coherence ratio
+ *     within the band criterion's factor, structure.h): independent;
+ *   3 the parameter count of a 512 x 512 RGB texture: by construction.
+ * psize: the syntheses' side. Returns claims.tsv (caller frees). */
+nl_table *l3_verdicts(nl_harness *r, const nl_table *pt, int psize);
+
+#endif
