@@ -62,11 +62,12 @@
  *   cut falls where the pool has no angles, if it has such an arc; a cut
  *   opposite the circular mean split a blob in the same test).
  * CUTOFF (sec. 3.5.2). "The merge stops when the Hausdorff distance between
- *   the two clusters exceeds the cutoff": complete linkage (max pairwise
- *   distance) is the Hausdorff-type distance between point sets that makes
- *   "every pair in a cluster within the cutoff" true; flat clusters by
- *   nl_cluster_fcluster_distance. The true Hausdorff distance is not a reducible
- *   linkage; we say so rather than approximate it. The initial K is the number
+ *   the two clusters exceeds the cutoff": we use complete linkage (the
+ *   farthest pair), which makes "every pair in a cluster within the cutoff"
+ *   true; flat clusters by nl_cluster_fcluster_distance. The Hausdorff
+ *   distance of two sets lies between the single-linkage (nearest pair) and
+ *   the complete-linkage distance and is not a reducible linkage; we say so
+ *   rather than approximate it. The initial K is the number
  *   of clusters. cutoff < 0 asks for the cutoff that gives target_k clusters
  *   (midpoint of the merge heights around it): the thesis tuned its cutoff
  *   "case by case" for a proper K, and its absolute values (15.5-19.5) are in
