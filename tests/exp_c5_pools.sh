@@ -36,7 +36,7 @@ tsv_awk 'FNR>1 {k[v("kind")]++; if (v("kind")!="selected 1/8" && v("ours_sd")=="
 # the default floor (1e-6) is the headline's fit; AIC rises with the floor by
 # the rank-deficient prediction (quick, measured: within 0.01% up to 1e-5)
 "$expect" "$out/floor.tsv" rows=18 'reps==2' 'K0>=1' 'K_final>=K0' 'floor_dims>=0' \
-  'floor_dims<=dim' 'n_ok<=reps'
+  'floor_dims<=dim' 'n_ok<=reps' 'log10_floor_paper<0'
 tsv_awk 'FNR==NR && FNR>1 && n("headline")==1 {a[v("texture")]=v("AIC"); k[v("texture")]=v("K0")}
   FNR==NR {next}
   FNR>1 && n("reg_covar")==1e-6 && (v("AIC")!=a[v("texture")] || v("K0")!=k[v("texture")]) {

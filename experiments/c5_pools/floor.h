@@ -11,7 +11,9 @@
  * prediction, column aic_slope_pred) while K stays. floor.tsv: the headline
  * reading refitted at each floor of C5_FLOORS (same rows, seeds and K0),
  * mean and sd over the pool replicates; floor_dims is the mean number of
- * such directions per row of the final model (n_k = n w_k).
+ * such directions per row of the final model (n_k = n w_k);
+ * log10_floor_paper = log10 reg_covar + (paper_AIC - AIC) / aic_slope_pred,
+ * the floor at which that law would give the thesis's AIC.
  *
  * LINKAGE. The thesis stops merging "when the Hausdorff distance between the
  * two clusters exceeds the cutoff". For any two point sets, single linkage
@@ -33,12 +35,13 @@ typedef struct {
 
 void c5_floor_alloc(c5_floor *F);
 void c5_floor_free(c5_floor *F);
-/* One texture: the headline options o (its cutoff, distance and sample)
+/* One texture (paper_aic: its thesis AIC): the headline options o (its cutoff, distance and sample)
  * refitted at every floor and clustered under every linkage, on each of
  * the reps pools (pool k fitted from seeds[k]); rows added to F. Exit 1 on
  * error. */
-void c5_floor_case(nl_harness *r, c5_floor *F, const char *texture, const nl_cheng_model_options *o,
-                   nl_cheng_pool *const *pools, const unsigned long *seeds, int reps, int threads);
+void c5_floor_case(nl_harness *r, c5_floor *F, const char *texture, double paper_aic,
+                   const nl_cheng_model_options *o, nl_cheng_pool *const *pools,
+                   const unsigned long *seeds, int reps, int threads);
 /* Writes floor.tsv and linkage.tsv. */
 void c5_floor_write(nl_harness *r, const c5_floor *F);
 /* Their tables and prose in the report. */

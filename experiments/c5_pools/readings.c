@@ -413,7 +413,7 @@ void c5_readings_case(const nl_study_cheng *s, c5_readings *R, c5_pools *T,
       succ[k] = pools[k][0];
       seeds[k] = nl_seed_replicate(nl_harness_seed(r), k);
     }
-    c5_floor_case(r, &R->floor, th->texture, &ho, succ, seeds, reps, po->threads);
+    c5_floor_case(r, &R->floor, th->texture, th->aic, &ho, succ, seeds, reps, po->threads);
   }
   if (T) { /* the older tables: replicate 0, successive states (the default pool) */
     nl_study_cheng_repro r0 = rp[0];

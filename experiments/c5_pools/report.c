@@ -18,12 +18,14 @@ static long find(const nl_table *t, const char *tex, const char *id)
 }
 
 /* The AIC path's status in words for a verdict's note (no number of the run). */
-static const char *path_words(const nl_table *t, size_t q)
+static void path_words(const nl_table *t, size_t q, char *w, size_t len)
 {
   if (nl_table_value(t, q, "n_kmax") > 0)
-    return "AIC still falling at the path's cap in some replicate (status k_max_reached)";
-  if (!strcmp(nl_table_text(t, q, "status"), "ok")) return "AIC path turned in every replicate";
-  return "AIC path status in readings.tsv (not ok)";
+    snprintf(w, len, "AIC still falling at the path's cap in some replicate (k_max_reached)");
+  else if (!strcmp(nl_table_text(t, q, "status"), "ok"))
+    snprintf(w, len, "AIC path turned in every replicate");
+  else
+    snprintf(w, len, "status %s", nl_table_text(t, q, "status"));
 }
 
 /* Initial K, final K and AIC of row q against the thesis, with its kind. */
@@ -35,10 +37,12 @@ static void k_aic_verdicts(nl_harness *r, const nl_table *t, size_t q, const cha
   const char *v[][4] = { { "initial K", "paper_K_initial", "K0", "K0_sd" },
                          { "final K", "paper_K_final", "K_final", "K_final_sd" },
                          { "AIC", "paper_AIC", "AIC", "AIC_sd" } };
-  char quantity[96], note[256];
-  snprintf(note, sizeof note, "%s; %s", what, path_words(t, q));
+  char quantity[96], note[320], w[96];
+  path_words(t, q, w, sizeof w);
   for (int k = 0; k < 3; k++) {
     snprintf(quantity, sizeof quantity, "%s, %s%s", v[k][0], tex, suffix);
+    snprintf(note, sizeof note, "%s; %s%s", what, w,
+             k == 2 ? "; at EM's default covariance floor, on which it depends (floor.tsv)" : "");
     nl_harness_verdict(r, "readings.tsv", t, q, quantity, v[k][1], v[k][2], one ? NULL : v[k][3],
                        k < 2 ? "factor 1.25 2" : "rel 0.1 0.5", kind, note);
   }
@@ -61,7 +65,9 @@ void c5_readings_report(nl_harness *r, c5_readings *R, const char *best)
       "clustering always on the subsample), the clustering distance (cossin chords or Euclidean on "
       "raw angles), the pool rule (successive cold-tail states or states spaced by a stride) and "
       "the cutoff (the thesis's, K0 a result; matched_K0, K0 an input: k0_is_input = 1, no thesis "
-      "K0 beside it). Mean and sd over pool replicates (column reps). **Headline: %s**, fixed "
+      "K0 beside it). Mean and sd over pool replicates (column reps; the readings on all rows "
+      "over fewer, parameter all_reps: their EM fits are C5's costliest step, so a single "
+      "replicate shows no sd). **Headline: %s**, fixed "
       "before the comparison because the tables print %g input samples, sec. 3.5.2 clusters "
       "\"using Euclidean distance\" between solutions, i.e. on their angles (the printed cutoffs "
       "exceed every (cos, sin) chord), and collects \"the N solutions before the end of the "
