@@ -87,6 +87,8 @@ typedef struct {
   double cutoff, acut, k0, k, aic, sec; /* acut: the matched fit's cutoff on raw angles */
   size_t n_in, n_cl, d;
   nl_cheng_model_status status;
+  int capped;        /* the path ended at its cap K0 + k_extra with AIC still falling, whatever the
+                        status (a one-cluster start reports one_cluster first) */
   nl_gmm_step *path; /* replicate 0: the AIC path (the figure) */
   size_t npath;
   int drawn;      /* replicate 0: C6's question answered (rep) */
@@ -106,7 +108,7 @@ static void add(acc *a, const fit_out *f, double cutoff)
   a->ncl = (int)f->n_cl;
   a->dim[i] = (double)f->d;
   a->apn[i] = a->aic[i] / ((double)f->n_in * (double)f->d); /* the dimension varies by replicate */
-  a->kmax += f->status == NL_CHENG_MODEL_K_MAX;
+  a->kmax += f->capped;
   if (f->status == NL_CHENG_MODEL_OK)
     a->ok++;
   else if (!a->status)
@@ -230,6 +232,8 @@ static nl_status group_fits(group *g)
                     .n_cl = m->n_cl,
                     .d = m->d,
                     .status = m->status };
+    size_t cap = m->k0 + o.k_extra < m->n_in ? m->k0 + o.k_extra : m->n_in;
+    f->capped = m->gmm && m->k == cap && m->npath == cap - m->k0 + 1;
     if (v == 2 && m->n_cl > (size_t)g->th->k0)
       st = angle_cutoff_for_k(g->pool, m, (size_t)g->th->k0, &f->acut, &g->err);
     if (!st && g->x) st = repro_draws(g->x, m, f, &g->err);

@@ -29,7 +29,8 @@
  * the thesis's, AIC within 50% (rel 0.5); ties go to the first in table
  * order. Its rows carry best_match = 1; their verdicts are `selected 1/N`.
  * n_kmax counts the replicates whose AIC path still fell at the cap
- * K0 + k_extra (status k_max_reached). */
+ * K0 + k_extra (status k_max_reached, or one_cluster when the cutoff left one
+ * cluster: that status is reported first). */
 #ifndef C5_READINGS_H
 #define C5_READINGS_H
 

@@ -21,7 +21,7 @@ static long find(const nl_table *t, const char *tex, const char *id)
 static void path_words(const nl_table *t, size_t q, char *w, size_t len)
 {
   if (nl_table_value(t, q, "n_kmax") > 0)
-    snprintf(w, len, "AIC still falling at the path's cap in some replicate (k_max_reached)");
+    snprintf(w, len, "AIC still falling at the path's cap in some replicate (n_kmax)");
   else if (!strcmp(nl_table_text(t, q, "status"), "ok"))
     snprintf(w, len, "AIC path turned in every replicate");
   else

@@ -77,10 +77,10 @@
  *   improvement; we read it as: fit K0, K0+1, ... and stop when AIC falls by
  *   less than T; the model kept is the last that improved by >= T
  *   (nl_gmm_select_aic). The path runs until AIC turns, at most to K0 +
- *   k_extra (default 40: on 10,000 rows of 152 columns a step costs about
- *   2 s, and a full mixture's paths fall steadily past K = 60); a path still
- *   falling there has status k_max_reached. m is scikit-learn's parameter
- *   count (nl_gmm.h).
+ *   k_extra (default 30, a cost limit: on 10,000 rows of 152 columns a step
+ *   costs 1-3 s, and such paths fall steadily until components hold about
+ *   d rows, K ~ n / d); a path still falling there has status
+ *   k_max_reached. m is scikit-learn's parameter count (nl_gmm.h).
  * REPRODUCTION (sec. 3.5.3). Copy the optimised table, draw one vector from
  *   the mixture, decode it into the low entries, and permute a fraction of
  *   the high entries among themselves (swap_fraction 1: a uniform random
@@ -168,7 +168,7 @@ typedef struct {
   double cutoff;        /* complete-linkage cutoff; < 0: the cutoff giving target_k */
   size_t target_k;      /* used when cutoff < 0 */
   double threshold;     /* T: AIC must fall by at least T, 0 */
-  size_t k_extra;       /* path capped at K0 + k_extra, 40 (AIC RULE) */
+  size_t k_extra;       /* path capped at K0 + k_extra, 30 (AIC RULE) */
   nl_gmm_options gmm;   /* nl_gmm_options_default, full covariance */
   size_t cluster_samples; /* rows clustered (drawn by the same stream as the
                              mixture's input, so equal sizes give the same rows);
