@@ -20,8 +20,8 @@
  * HEADLINE: the reading the text states, fixed before any comparison
  * (C5_HEADLINE): Tables 4.2-4.4 print "Number of input sample 1000" and a
  * cutoff (15.5-19.5) on distances between the thesis's variables, the angles
- * (on (cos, sin) chords no two rows are 2 sqrt(n_low) apart, so the printed
- * cutoffs could not cut), and sec. 3.5.2 keeps the N solutions before the
+ * (on (cos, sin) chords the printed cutoffs leave one cluster: gmm.tsv,
+ * status one_cluster), and sec. 3.5.2 keeps the N solutions before the
  * end of each run (successive states). Its rows carry headline = 1.
  * BEST-MATCH RULE (a selection, kept as measured alternatives): among the
  * C5_NSEL readings where K0 is a result, the one with the most matches over

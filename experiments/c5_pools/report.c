@@ -69,8 +69,9 @@ void c5_readings_report(nl_harness *r, c5_readings *R, const char *best)
       "over fewer, parameter all_reps: their EM fits are C5's costliest step, so a single "
       "replicate shows no sd). **Headline: %s**, fixed "
       "before the comparison because the tables print %g input samples, sec. 3.5.2 clusters "
-      "\"using Euclidean distance\" between solutions, i.e. on their angles (the printed cutoffs "
-      "exceed every (cos, sin) chord), and collects \"the N solutions before the end of the "
+      "\"using Euclidean distance\" between solutions, i.e. on their angles (on (cos, sin) chords "
+      "the printed cutoffs leave one cluster: gmm.tsv, status one_cluster), and collects \"the N "
+      "solutions before the end of the "
       "optimization\" (successive states). Measured alternative, selected by its "
       "matches to the thesis (a match: K0 or K_final within a factor %g, AIC within %g%%) among "
       "the %d readings with K0 a result: %s (%d matches of %d; kind selected 1/%d).\n",
