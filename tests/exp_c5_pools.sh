@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Quick C5: pools, clustering and AIC selection for erosion, marble, cloud and
 # erosion with the two-level split; the readings of Tables 4.2-4.4 over pool
-# replicates (readings.tsv, ess.tsv, verdicts on the headline). Checks the table's invariants, the
+# replicates (readings.tsv, ess.tsv, verdicts on the headline, the best match
+# and the fitted cutoff; floor.tsv, linkage.tsv). Checks the table's invariants, the
 # thesis-cutoff rows (no (cos, sin) distance reaches the thesis's cutoffs, so
 # one cluster), the matched rows (the thesis's K0 exactly), the pool rule,
 # and that no table depends on the number of threads (--threads 1 and 2).
@@ -21,17 +22,47 @@ pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
   file:aic_path.tsv
 # readings: 3 textures x (2 samples x 2 distances x 2 pool rules x 2 cutoff rules)
 "$expect" "$out/readings.tsv" rows=48 'reps>=1' 'reps<=2' 'K0>=1' 'K_final>=K0' 'matches>=0' 'matches<=3' \
-  'cluster_samples<=input_samples' 'headline>=0' 'headline<=1'
+  'cluster_samples<=input_samples' 'headline>=0' 'headline<=1' 'best_match>=0' 'best_match<=1' \
+  'n_kmax>=0' 'n_kmax<=reps' 'n_ok<=reps'
 "$expect" "$out/ess.tsv" rows=12 'icc>=0' 'icc<=1' 'ess_kish<=rows' 'ess_kish>=runs' 'ess_tau<=rows' 'dec_sweeps>0'
-"$expect" "$out/verdicts.tsv" rows=12
+# per texture: K0, K_final, AIC of the headline (independent) and of the best
+# match (selected 1/8), and the cutoff giving the thesis's K0 (fitted 1/1)
+"$expect" "$out/verdicts.tsv" rows=21
+tsv_awk 'FNR>1 {k[v("kind")]++; if (v("kind")!="selected 1/8" && v("ours_sd")=="-") bad=1
+    if (v("kind")=="independent" && v("reason") !~ /AIC path/) bad=1}
+  END{if (k["independent"]!=9 || k["selected 1/8"]!=9 || k["fitted 1/1"]!=3 || bad) {
+    print "verdict kinds or spreads"; exit 1}}' "$out/verdicts.tsv"
+# covariance floor: six floors per texture; K0 does not depend on the floor;
+# the default floor (1e-6) is the headline's fit; AIC rises with the floor by
+# the rank-deficient prediction (quick, measured: within 0.01% up to 1e-5)
+"$expect" "$out/floor.tsv" rows=18 'reps==2' 'K0>=1' 'K_final>=K0' 'floor_dims>=0' \
+  'floor_dims<=dim' 'n_ok<=reps' 'log10_floor_paper<0'
+tsv_awk 'FNR==NR && FNR>1 && n("headline")==1 {a[v("texture")]=v("AIC"); k[v("texture")]=v("K0")}
+  FNR==NR {next}
+  FNR>1 && n("reg_covar")==1e-6 && (v("AIC")!=a[v("texture")] || v("K0")!=k[v("texture")]) {
+    print "floor 1e-6 is not the headline: " $0; bad=1}
+  FNR>1 && n("reg_covar")>1e-8 && n("reg_covar")<=1e-5 &&
+    (n("aic_slope")-n("aic_slope_pred"))^2 > (0.01*n("aic_slope_pred"))^2 {
+    print "slope: " $0; bad=1}
+  END{exit bad}' "$out/readings.tsv" "$out/floor.tsv"
+# linkage: single linkage's clusters are the cutoff graph's components, and a
+# complete or average cluster lies within one, so single gives the fewest
+"$expect" "$out/linkage.tsv" rows=9 'K0>=1' 'reps==2'
+tsv_awk 'FNR>1 {k[v("texture"), v("linkage")]=n("K0"); t[v("texture")]=1}
+  END{for (x in t) if (k[x, "single"]>k[x, "average"] || k[x, "single"]>k[x, "complete"]) {
+    print "linkage K0: " x; exit 1}}' "$out/linkage.tsv"
 "$expect" "$out/reproduce.tsv" rows=36 'reps_drawn==4' 'below_ks>=0' 'below_ks<=1' 'below_con>=0' 'below_con<=1' 'E_ks>0' 'K>=1'
 # K0 is an input exactly on the matched rows, and then no thesis K0 stands beside it
 tsv_awk 'FNR>1 && ((v("cutoff_rule")=="matched_K0") != (n("k0_is_input")==1) ||
   (n("k0_is_input")==1 && (v("paper_K_initial")!="n/a" || n("K0")==0)) ||
   (n("k0_is_input")==0 && v("paper_K_initial")=="n/a")) {print "k0_is_input: " $0; bad=1} END{exit bad}' "$out/readings.tsv"
-# one headline reading, K0 a result, on every texture
-tsv_awk 'FNR>1 && n("headline")==1 {h++; r[v("reading")]=1; if (n("k0_is_input")) bad=1}
-  END{k=0; for (x in r) k++; if (h!=3 || k!=1 || bad) {print "headline rows " h ", readings " k; exit 1}}' "$out/readings.tsv"
+# one headline reading, the text's (1000 samples, printed cutoff on the angles,
+# successive states), and one best-match reading, K0 a result, on every texture
+tsv_awk 'FNR>1 && n("headline")==1 {h++; r[v("reading")]=1
+    if (n("k0_is_input") || v("reading")!="sub1000/angles/successive/thesis") bad=1}
+  FNR>1 && n("best_match")==1 {b++; s[v("reading")]=1; if (n("k0_is_input")) bad=1}
+  END{k=0; for (x in r) k++; m=0; for (x in s) m++
+    if (h!=3 || k!=1 || b!=3 || m!=1 || bad) {print "headline rows " h ", best " b; exit 1}}' "$out/readings.tsv"
 # all rows: the mixture fitted on every pool row; AIC per sample and dimension of the literal-cutoff fits
 # (quick, measured: -6.5 ... -1.4) on the scale the thesis's AIC needs (-2 n d x, x of order 1 to 10)
 tsv_awk 'FNR>1 && v("n_rule")=="all" && (n("input_samples")!=120 || (!n("k0_is_input") && (n("AIC_per_nd")>-0.5 || n("AIC_per_nd")<-20))) {
@@ -69,6 +100,8 @@ if thread_identity; then
   cmp "$out/ess.tsv" "$out/one/ess.tsv"
   cmp "$out/aic_path.tsv" "$out/one/aic_path.tsv"
   cmp "$out/aic_readings.tsv" "$out/one/aic_readings.tsv"
+  cmp "$out/floor.tsv" "$out/one/floor.tsv"
+  cmp "$out/linkage.tsv" "$out/one/linkage.tsv"
   cmp "$out/reproduce.tsv" "$out/one/reproduce.tsv"
   "$(dirname "$exp")/../tools/noiselab-check" "$out" "$out/one" >/dev/null
 fi

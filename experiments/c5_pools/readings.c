@@ -16,8 +16,9 @@
 static const char *const rd_cols[] = {
   "texture", "reading", "n_rule", "distance", "pool_rule", "cutoff_rule", "k0_is_input", "reps",
   "input_samples", "cluster_samples", "dim", "stride", "cutoff", "cutoff_sd", "K0", "K0_sd",
-  "K_final", "K_final_sd", "AIC", "AIC_sd", "AIC_per_nd", "n_ok", "status", "matches", "headline",
-  "seconds", "paper_K_initial", "paper_K_final", "paper_cutoff", "paper_AIC"
+  "K_final", "K_final_sd", "AIC", "AIC_sd", "AIC_per_nd", "n_ok", "n_kmax", "status", "matches",
+  "headline", "best_match", "seconds", "paper_K_initial", "paper_K_final", "paper_cutoff",
+  "paper_AIC"
 };
 static const char *const ess_cols[] = {
   "texture", "rep", "pool_rule", "stride", "rows", "runs", "tau_rows", "tau_sweeps", "ess_tau",
@@ -38,7 +39,7 @@ static const char *const rep_cols[] = {
 
 typedef struct {
   double cut[MAXREP], k0[MAXREP], k[MAXREP], aic[MAXREP], apn[MAXREP], dim[MAXREP], sec;
-  int n, ok, nin, ncl;
+  int n, ok, kmax, nin, ncl;
   const char *status;
 } acc;
 
@@ -64,8 +65,9 @@ void c5_readings_alloc(c5_readings *R)
   R->readings = nl_table_alloc(sizeof rd_cols / sizeof *rd_cols, rd_cols);
   R->ess = nl_table_alloc(sizeof ess_cols / sizeof *ess_cols, ess_cols);
   R->repro = nl_table_alloc(sizeof rep_cols / sizeof *rep_cols, rep_cols);
-  const char *pc[] = { "texture", "reading", "K", "AIC", "BIC", "headline" };
-  R->paths = nl_table_alloc(6, pc);
+  const char *pc[] = { "texture", "reading", "K", "AIC", "BIC", "headline", "best_match" };
+  R->paths = nl_table_alloc(7, pc);
+  c5_floor_alloc(&R->floor);
 }
 
 void c5_readings_free(c5_readings *R)
@@ -74,6 +76,7 @@ void c5_readings_free(c5_readings *R)
   nl_table_free(R->ess);
   nl_table_free(R->repro);
   nl_table_free(R->paths);
+  c5_floor_free(&R->floor);
 }
 
 static int rd_index(int cr, int n, int d, int p) { return ((cr * 2 + n) * 2 + d) * 2 + p; }
@@ -84,6 +87,8 @@ typedef struct {
   double cutoff, acut, k0, k, aic, sec; /* acut: the matched fit's cutoff on raw angles */
   size_t n_in, n_cl, d;
   nl_cheng_model_status status;
+  int capped;        /* the path ended at its cap K0 + k_extra with AIC still falling, whatever the
+                        status (a one-cluster start reports one_cluster first) */
   nl_gmm_step *path; /* replicate 0: the AIC path (the figure) */
   size_t npath;
   int drawn;      /* replicate 0: C6's question answered (rep) */
@@ -103,6 +108,7 @@ static void add(acc *a, const fit_out *f, double cutoff)
   a->ncl = (int)f->n_cl;
   a->dim[i] = (double)f->d;
   a->apn[i] = a->aic[i] / ((double)f->n_in * (double)f->d); /* the dimension varies by replicate */
+  a->kmax += f->capped;
   if (f->status == NL_CHENG_MODEL_OK)
     a->ok++;
   else if (!a->status)
@@ -226,6 +232,8 @@ static nl_status group_fits(group *g)
                     .n_cl = m->n_cl,
                     .d = m->d,
                     .status = m->status };
+    size_t cap = m->k0 + o.k_extra < m->n_in ? m->k0 + o.k_extra : m->n_in;
+    f->capped = m->gmm && m->k == cap && m->npath == cap - m->k0 + 1;
     if (v == 2 && m->n_cl > (size_t)g->th->k0)
       st = angle_cutoff_for_k(g->pool, m, (size_t)g->th->k0, &f->acut, &g->err);
     if (!st && g->x) st = repro_draws(g->x, m, f, &g->err);
@@ -253,8 +261,8 @@ static void fit_rows(c5_readings *R, acc *a, const fit_out *f, double cutoff, co
   char id[80];
   reading_id(id, sizeof id, cr, n, d, p);
   for (size_t i = 0; i < f->npath; i++)
-    nl_table_append(R->paths, "ssdddd", tex, id, (double)f->path[i].k, f->path[i].aic,
-                    f->path[i].bic, 0.0);
+    nl_table_append(R->paths, "ssddddd", tex, id, (double)f->path[i].k, f->path[i].aic,
+                    f->path[i].bic, 0.0, 0.0);
   const double *v = f->rep;
   if (f->drawn)
     nl_table_append(R->repro, "ssddddddddddd", tex, id, (double)cr, v[0], v[1], v[2], v[3], v[4],
@@ -334,9 +342,11 @@ static void rows(c5_readings *R, const acc *A, const nl_study_cheng_thesis_gmm *
           }
           nl_table_set(t, q, "AIC_per_nd", apn);
           nl_table_set(t, q, "n_ok", a->ok);
+          nl_table_set(t, q, "n_kmax", a->kmax);
           nl_table_set_text(t, q, "status", a->status ? a->status : "ok");
           nl_table_set(t, q, "matches", match);
-          nl_table_set(t, q, "headline", 0);
+          nl_table_set(t, q, "headline", !strcmp(id, C5_HEADLINE));
+          nl_table_set(t, q, "best_match", 0);
           nl_table_set(t, q, "seconds", a->sec);
           if (cr) /* K0 was the input: nothing to compare */
             nl_table_set_text(t, q, "paper_K_initial", "n/a");
@@ -396,6 +406,19 @@ void c5_readings_case(const nl_study_cheng *s, c5_readings *R, c5_pools *T,
     pools[k][1] = nl_cheng_pool_thin(rp[k].pool, po->keep, ro->stride);
     for (int p = 0; p < 2; p++) ess_row(R->ess, th->texture, k, p, ro->stride, pools[k][p]);
   }
+  { /* the headline's settings the thesis leaves open: floor and linkage (floor.h) */
+    nl_cheng_model_options ho = mm;
+    ho.samples = ho.cluster_samples = mo->samples;
+    ho.cluster_angles = 1;
+    ho.cutoff = th->cutoff;
+    nl_cheng_pool *succ[MAXREP];
+    unsigned long seeds[MAXREP];
+    for (int k = 0; k < reps; k++) {
+      succ[k] = pools[k][0];
+      seeds[k] = nl_seed_replicate(nl_harness_seed(r), k);
+    }
+    c5_floor_case(r, &R->floor, th->texture, th->aic, &ho, succ, seeds, reps, po->threads);
+  }
   if (T) { /* the older tables: replicate 0, successive states (the default pool) */
     nl_study_cheng_repro r0 = rp[0];
     r0.pool = pools[0][0];
@@ -447,7 +470,7 @@ const char *c5_readings_write(nl_harness *r, c5_readings *R)
   nl_table *t = R->readings;
   static char best[80];
   int bestn = -1;
-  for (size_t q = 0; q < t->nrows; q++) { /* HEADLINE RULE: matches summed over the textures */
+  for (size_t q = 0; q < t->nrows; q++) { /* BEST-MATCH RULE: matches summed over the textures */
     if (nl_table_value(t, q, "k0_is_input") != 0) continue;
     const char *id = nl_table_text(t, q, "reading");
     int sum = 0;
@@ -459,13 +482,17 @@ const char *c5_readings_write(nl_harness *r, c5_readings *R)
     }
   }
   for (size_t q = 0; q < t->nrows; q++)
-    nl_table_set(t, q, "headline", !strcmp(nl_table_text(t, q, "reading"), best));
-  for (size_t q = 0; q < R->paths->nrows; q++)
-    nl_table_set(R->paths, q, "headline", !strcmp(nl_table_text(R->paths, q, "reading"), best));
+    nl_table_set(t, q, "best_match", !strcmp(nl_table_text(t, q, "reading"), best));
+  for (size_t q = 0; q < R->paths->nrows; q++) {
+    const char *id = nl_table_text(R->paths, q, "reading");
+    nl_table_set(R->paths, q, "headline", !strcmp(id, C5_HEADLINE));
+    nl_table_set(R->paths, q, "best_match", !strcmp(id, best));
+  }
   nl_harness_write_table(r, R->paths, "aic_readings.tsv");
   nl_harness_write_table(r, t, "readings.tsv");
   nl_harness_write_table(r, R->ess, "ess.tsv");
   nl_harness_write_table(r, R->repro, "reproduce.tsv");
+  c5_floor_write(r, &R->floor);
   nl_harness_check(r, "readings.tsv", "seconds", "ignore");
   return best;
 }

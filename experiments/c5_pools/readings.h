@@ -17,15 +17,28 @@
  * ess.tsv: effective sample size per texture, replicate and pool rule;
  * reproduce.tsv: C6's question (reproductions below the original?) under
  * each reading's model of replicate 0.
- * HEADLINE RULE: among the readings where K0 is a result, the one with the
- * most matches over the three textures, a match being K0 or K_final within
- * a factor 1.25 of the thesis's, AIC within 50% (rel 0.5); ties go to the
- * first in table order. Its rows carry headline = 1. */
+ * HEADLINE: the reading the text states, fixed before any comparison
+ * (C5_HEADLINE): Tables 4.2-4.4 print "Number of input sample 1000" and a
+ * cutoff (15.5-19.5) on distances between the thesis's variables, the angles
+ * (on (cos, sin) chords the printed cutoffs leave one cluster: gmm.tsv,
+ * status one_cluster), and sec. 3.5.2 keeps the N solutions before the
+ * end of each run (successive states). Its rows carry headline = 1.
+ * BEST-MATCH RULE (a selection, kept as measured alternatives): among the
+ * C5_NSEL readings where K0 is a result, the one with the most matches over
+ * the three textures, a match being K0 or K_final within a factor 1.25 of
+ * the thesis's, AIC within 50% (rel 0.5); ties go to the first in table
+ * order. Its rows carry best_match = 1; their verdicts are `selected 1/N`.
+ * n_kmax counts the replicates whose AIC path still fell at the cap
+ * K0 + k_extra (status k_max_reached, or one_cluster when the cutoff left one
+ * cluster: that status is reported first). */
 #ifndef C5_READINGS_H
 #define C5_READINGS_H
 
+#include "floor.h"
 #include "pools.h"
 
+#define C5_HEADLINE     "sub1000/angles/successive/thesis"
+#define C5_NSEL         8    /* readings with K0 a result: sample x distance x pool rule */
 #define C5_MATCH_FACTOR 1.25 /* a match: K0, K_final or the cutoff within this factor */
 #define C5_MATCH_REL    0.5  /* a match: AIC within this fraction of the thesis's */
 
@@ -33,6 +46,7 @@
  * reading, K, AIC, BIC, headline = 1 on the headline reading's rows): C5's AIC figure. */
 typedef struct {
   nl_table *readings, *ess, *repro, *paths;
+  c5_floor floor; /* the headline's floor and linkage readings (floor.h) */
 } c5_readings;
 
 /* --set parameters: reps (pool replicates; quick 2), stride (sweeps between
@@ -53,10 +67,10 @@ void c5_readings_case(const nl_study_cheng *s, c5_readings *R, c5_pools *T,
                       const nl_study_cheng_thesis_gmm *th, const nl_cheng_pool_options *po,
                       const nl_cheng_model_options *mo, const c5_readings_options *ro, int nseeds,
                       int full);
-/* Marks the headline (HEADLINE RULE above) in readings.tsv and
- * aic_readings.tsv, writes them with ess.tsv and reproduce.tsv, and returns
- * the headline's reading id (static storage). Its prose and verdicts:
- * c5_readings_report (report.h). */
+/* Marks the headline and the best match (rules above) in readings.tsv and
+ * aic_readings.tsv, writes them with ess.tsv, reproduce.tsv, floor.tsv and
+ * linkage.tsv, and returns the best match's reading id (static storage).
+ * Prose and verdicts: c5_readings_report (report.h). */
 const char *c5_readings_write(nl_harness *r, c5_readings *R);
 
 #endif

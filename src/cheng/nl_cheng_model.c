@@ -107,7 +107,7 @@ const char *nl_cheng_model_status_name(nl_cheng_model_status s) { return status_
 void nl_cheng_model_options_default(nl_cheng_model_options *o)
 {
   *o = (nl_cheng_model_options){.rep = NL_CHENG_REP_COSSIN, .samples = 1000, .cutoff = -1,
-                                .target_k = 30, .threshold = 0, .k_extra = 12};
+                                .target_k = 30, .threshold = 0, .k_extra = 30};
   nl_gmm_options_default(&o->gmm);
 }
 
