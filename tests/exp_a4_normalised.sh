@@ -15,7 +15,9 @@ tsv_awk 'NR==2{a=n("aliased_fraction")} NR==3{b=n("aliased_fraction")} END{exit 
   'p_below<=1' 'p_above>=0' 'p_above<=1' 'divisor>=1' 'seeds==3'
 tsv_awk 'NR==2{a=n("energy_over_t")} NR==4{b=n("energy_over_t"); d=n("divisor")}
          END{exit !(a > 1 && b < 1 && d == 1.7460938)}' "$out/aliased_energy.tsv"
-tsv_awk 'NR > 1 { k[v("kind")]++; if (v("kind") == "independent" && v("source") !~ /^aliased_energy.tsv/) bad = 1 }
-         END { exit !(!bad && k["independent"] == 2 && k["qualitative"] == 1 && NR == 4) }' "$out/verdicts.tsv"
+tsv_awk 'NR > 1 { k[v("kind")]++
+                  if (v("kind") == "independent" && v("source") !~ /^aliased_energy.tsv/) bad = 1 }
+         END { exit !(!bad && k["independent"] == 2 && k["qualitative"] == 1 && NR == 4) }' \
+  "$out/verdicts.tsv"
 set +e
 refused "$exp" --quick --out "$out/bad" --set rate=0
