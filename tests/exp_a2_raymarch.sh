@@ -7,8 +7,11 @@
 # 1.2x per step of the quick grid -3, -4, -6 (measured: 1.49x and 3.4x);
 # fit.tsv names one best reading, a free one, with rms factor =
 # exp(sqrt(rss_log / 6)); size_check.tsv's reference rows are their own
-# reference. Timings are written but not checked. Two threads and one give
-# the same tables.
+# reference. The joint fit (joint_fit.tsv, quick grid 2 slopes x 2 kappas)
+# names one best row; growth.tsv holds the paper's r(10)/r(2) = 5.068 and
+# ours; the verdicts are the six ratios, fitted 3/6, and the growth,
+# independent. Timings are written but not checked. Two threads and one
+# give the same tables.
 set -euo pipefail
 # shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
@@ -16,7 +19,7 @@ exp="$1" expect="$2" out="$3"
 "$exp" --quick "${NOIMG[@]}" --threads 2 --out "$out" >/dev/null
 "$expect" "$out/timing.tsv" rows=6 'max_diff_levels==0' 'bounded_evals<plain_evals' \
   'eval_ratio>1' 'terms>octaves' 'max_noise<=1.2247448713915890' 'plain_ms>0' 'alt_eval_ratio>1' \
-  'alt_slope==-4' image:balls.png image:ball.png image:bounds.png file:report.md
+  'alt_slope==-4' 'plain_evals_per_term>0' 'paper_plain_ms_per_term>0' image:balls.png image:ball.png image:bounds.png file:report.md
 # The gain grows with the number of octaves (N = 10 against N = 1).
 tsv_awk 'n("octaves")==1{a=n("eval_ratio")} n("octaves")==10{b=n("eval_ratio")} END{exit !(b > a && b > 1.3)}' "$out/timing.tsv"
 # The sweep's columns, and at N = 0 a steeper slope, a larger ratio.
@@ -30,6 +33,12 @@ tsv_awk 'FNR>1 && n("best")==1 { b++; if (n("free") != 1 || v("reading") == "") 
          END { exit !(b == 1) }' "$out/fit.tsv"
 tsv_awk 'NR>1 && n("size")>m {m=n("size")} {s[NR]=n("size"); d[NR]=n("rel_diff"); w[NR]=n("within")}
          END { for (i = 2; i <= NR; i++) if (s[i] == m && (d[i] != 0 || w[i] != 1)) exit 1 }' "$out/size_check.tsv"
+"$expect" "$out/joint_fit.tsv" rows=4 'rss_log>=0' 'growth>1' 'rms_factor>=1'
+tsv_awk 'NR > 1 && n("best") == 1 { b++ } END { exit !(b == 1) }' "$out/joint_fit.tsv"
+"$expect" "$out/growth.tsv" rows=1 'paper_growth~5.0684:0.0001' 'growth>1' 'growth_sd>0' \
+  'grid_min<=grid_max' 'readings==4'
+tsv_awk 'NR > 1 { k[v("kind")]++ }
+         END { exit !(k["fitted 3/6"] == 6 && k["independent"] == 1 && NR == 8) }' "$out/verdicts.tsv"
 grep -q "differ by at most 0 8-bit levels" "$out/report.md"
 grep -q "Best reading: \*\*slope=" "$out/report.md"
 # The renders run as (row, seed) items on the run's threads: one thread gives

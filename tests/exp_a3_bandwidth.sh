@@ -40,15 +40,28 @@ tsv_awk 'NR > 1 { h = v("hypothesis"); k[h]++; if (v("signal") == "1st octave") 
     if (!(f2["simplex06"] > f2["simplex05"] + 0.1)) { print "r2 0.6 not above 0.5 (2nd octave)"; bad = 1 }
     if (length(k) != 19) { print length(k) " readings, wanted 19"; bad = 1 }
     exit bad }' "$out/hypotheses.tsv"
-# The table beside the paper is the reading with the most of the paper's
-# bounds within (the first such; the current reading on a tie).
-tsv_awk -v bw="$out/bandwidth.tsv" 'NR > 1 { h = v("hypothesis"); if (!(h in c)) order[++nh] = h
+# The headline table is the base reading (improved02, sigma = sd), fixed
+# before the comparison; the selected table is the reading with the most of
+# the paper's bounds within (the first such; the base on a tie).
+tsv_awk -v bw="$out/bandwidth.tsv" -v sel="$out/bandwidth_selected.tsv" '
+  NR > 1 { h = v("hypothesis"); if (!(h in c)) order[++nh] = h
     c[h] += n("within_inf") + n("within_sup"); s[h, v("signal")] = n("f_sup") }
+  function same(file, w,   line, m, hd, j, at, x, k) {
+    getline line < file; m = split(line, hd, "\t"); for (j = 1; j <= m; j++) at[hd[j]] = j
+    while ((getline line < file) > 0) { split(line, x, "\t"); k++
+      if (s[w, x[at["signal"]]] != x[at["f_sup"]] + 0) { print file " " x[at["signal"]] " is not " w; exit 1 } }
+    if (k != 3) { print file " has " k " rows"; exit 1 } }
   END { w = order[1]; for (j = 2; j <= nh; j++) if (c[order[j]] > c[w]) w = order[j]
-    getline line < bw; m = split(line, hd, "\t"); for (j = 1; j <= m; j++) at[hd[j]] = j
-    while ((getline line < bw) > 0) { split(line, x, "\t")
-      if (s[w, x[at["signal"]]] != x[at["f_sup"]] + 0) { print "bandwidth.tsv " x[at["signal"]] " is not " w; exit 1 } } }' \
-  "$out/hypotheses.tsv"
+    same(bw, "improved02"); same(sel, w) }' "$out/hypotheses.tsv"
+# Verdicts: the six numbers of Table 5.2 under the headline, independent;
+# the selected reading's rows capped by their kind; every kind known.
+tsv_awk 'NR > 1 { k[v("kind")]++; if (v("kind") == "independent" && v("source") !~ /^bandwidth.tsv:/) bad = 1
+    if (v("kind") ~ /^selected 1\/19$/ && v("verdict") == "reproduced") bad = 1
+    if (v("kind") == "by construction" && v("verdict") != "by construction") bad = 1
+    if (v("kind") !~ /^(independent|selected 1\/19|by construction)$/) bad = 1 }
+  END { if (bad || k["independent"] != 6 || k["selected 1/19"] + k["by construction"] != 6) {
+      print "verdict kinds: " k["independent"] " independent, " k["selected 1/19"] " selected, " k["by construction"] " by construction"; exit 1 } }' \
+  "$out/verdicts.tsv"
 if byte_reruns; then   # same seed, same tables (tsv.sh: release build only)
   "$exp" --quick --no-images --out "$out/again" >/dev/null
   cmp "$out/bandwidth.tsv" "$out/again/bandwidth.tsv"

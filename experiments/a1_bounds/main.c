@@ -1,9 +1,11 @@
 /* A1 - Arnerin 2009 eq. 4.1-4.3 and 5.1-5.4: the octave bound 2^-i, the
  * fractal bound S_{n-1} = 2 - 2^-(n-1) and the incremental bound, checked on
  * random points of Perlin's improved 3D noise, under the paper's assumption
- * |noise| <= 1 and under the noise's analytic bound. */
+ * |noise| <= 1 and under the noise's analytic bound; and that assumption
+ * itself, by the largest |noise| a local maximiser finds (maxnoise.h). */
 #include "bounds/nl_bounds.h"
 #include "harness/nl_harness.h"
+#include "maxnoise.h"
 #include "report.h"
 
 #include <gsl/gsl_statistics_double.h>
@@ -20,18 +22,33 @@ int main(int argc, char **argv)
   long points = nl_harness_param_int(
       r, "points", nl_harness_quick(r) ? 5000 : 100000, 1, 100000000,
       "random evaluation points per octave count the bounds are checked against (quick 5000)");
+  long cands = nl_harness_param_int(
+      r, "candidates", nl_harness_quick(r) ? 100000 : 4000000, 1, 100000000,
+      "random points per seed in one period whose largest |noise| start the climbs (quick 100000)");
+  int starts = (int)nl_harness_param_int(r, "starts", nl_harness_quick(r) ? 100 : 1000, 1, 100000,
+                                         "local climbs of |noise| per seed (quick 100)");
   nl_harness_params_done(r);
   int seeds = nl_harness_seeds(r);
   unsigned long seed0 = nl_harness_seed(r);
 
-  const char *cols[] = { "octaves", "S", "bound", "max_abs", "max_abs_mean", "max_abs_sd",
-                         "max_noise", "points", "over_paper", "over_paper_incremental",
-                         "over_bound", "over_bound_incremental" };
-  nl_table *t = nl_table_alloc(12, cols);
+  const char *cols[] = { "octaves",
+                         "S",
+                         "bound",
+                         "max_abs",
+                         "max_abs_mean",
+                         "max_abs_sd",
+                         "max_noise",
+                         "points",
+                         "over_paper",
+                         "over_paper_incremental",
+                         "over_bound",
+                         "over_bound_incremental",
+                         "over_paper_octave" };
+  nl_table *t = nl_table_alloc(13, cols);
   double *maxes = nl_xmalloc((size_t)seeds * sizeof *maxes);
   for (int n = 1; n <= nmax; n++) {
     nl_noise_octaves o = nl_noise_octaves_fractal(n);
-    long over_p = 0, over_pi = 0, over_b = 0, over_bi = 0;
+    long over_p = 0, over_pi = 0, over_b = 0, over_bi = 0, over_o = 0;
     double max_noise = 0;
     for (int s = 0; s < seeds; s++) {
       nl_noise_perm3 p;
@@ -48,21 +65,39 @@ int main(int argc, char **argv)
       over_pi += paper.over_incremental;
       over_b += ours.over_fractal;
       over_bi += ours.over_incremental;
+      over_o += a1_octave_over(&p, n, points, pts);
     }
     double mx = gsl_stats_max(maxes, 1, (size_t)seeds);
     double mean = gsl_stats_mean(maxes, 1, (size_t)seeds);
     double sd = seeds > 1 ? gsl_stats_sd(maxes, 1, (size_t)seeds) : 0.0;
-    nl_table_append(t, "iddddddiiiii", n, nl_bounds_fractal(n),
+    nl_table_append(t, "iddddddiiiiii", n, nl_bounds_fractal(n),
                     NL_NOISE3_BOUND * nl_bounds_fractal(n), mx, mean, sd, max_noise,
-                    (int)(points * seeds), (int)over_p, (int)over_pi, (int)over_b, (int)over_bi);
+                    (int)(points * seeds), (int)over_p, (int)over_pi, (int)over_b, (int)over_bi,
+                    (int)over_o);
     nl_harness_progress(r, (double)n / nmax, "octaves");
   }
   nl_harness_write_table(r, t, "bounds.tsv");
 
-  a1_run run = { nmax, points, seeds, t };
+  /* The premise |noise| <= 1: climbs from the largest of random points. */
+  const char *mcols[] = {
+    "seed", "candidates", "starts", "sampled_max", "local_max", "x", "y", "z"
+  };
+  nl_table *mt = nl_table_alloc(8, mcols);
+  for (int s = 0; s < seeds; s++) {
+    nl_noise_perm3 p;
+    nl_noise_perm3_seed(&p, nl_seed_replicate(seed0, s));
+    double xyz[3], sampled;
+    double m = a1_local_max(&p, cands, starts, nl_seed_replicate(seed0, s), xyz, &sampled);
+    nl_table_append(mt, "iiiddddd", s, (int)cands, starts, sampled, m, xyz[0], xyz[1], xyz[2]);
+  }
+  nl_harness_write_table(r, mt, "max_noise.tsv");
+
+  a1_run run = { nmax, points, seeds, t, mt };
   a1_report(r, &run);
+  a1_verdicts(r, &run);
   free(maxes);
   nl_table_free(t);
+  nl_table_free(mt);
   nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);
 }

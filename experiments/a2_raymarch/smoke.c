@@ -386,13 +386,29 @@ nl_image *a2_smoke_decision_image(nl_harness *r, const nl_noise_perm3 *p, const 
 nl_table *a2_smoke_timing(const a2_smoke_point *pt, const int *octaves, const double (*paper_ms)[2],
                           int n, const nl_table *size_check, double alt_slope)
 {
-  const char *cols[] = {
-    "octaves",       "terms",         "plain_ms",       "plain_ms_sd",      "bounded_ms",
-    "bounded_ms_sd", "ratio",         "paper_plain_ms", "paper_bounded_ms", "paper_ratio",
-    "plain_evals",   "bounded_evals", "eval_ratio",     "eval_ratio_sd",    "max_diff_levels",
-    "max_noise",     "alt_slope",     "alt_eval_ratio", "alt_eval_ratio_sd"
-  };
-  nl_table *t = nl_table_alloc(19, cols);
+  const char *cols[] = { "octaves",
+                         "terms",
+                         "plain_ms",
+                         "plain_ms_sd",
+                         "bounded_ms",
+                         "bounded_ms_sd",
+                         "ratio",
+                         "paper_plain_ms",
+                         "paper_bounded_ms",
+                         "paper_ratio",
+                         "plain_evals",
+                         "bounded_evals",
+                         "eval_ratio",
+                         "eval_ratio_sd",
+                         "max_diff_levels",
+                         "max_noise",
+                         "alt_slope",
+                         "alt_eval_ratio",
+                         "alt_eval_ratio_sd",
+                         "plain_evals_per_term",
+                         "plain_ms_per_term",
+                         "paper_plain_ms_per_term" };
+  nl_table *t = nl_table_alloc(22, cols);
   double ref = 0;
   for (size_t k = 0; k < size_check->nrows; k++)
     ref = fmax(ref, nl_table_value(size_check, k, "size"));
@@ -404,11 +420,14 @@ nl_table *a2_smoke_timing(const a2_smoke_point *pt, const int *octaves, const do
       k++;
     double alt = k < size_check->nrows ? nl_table_value(size_check, k, "eval_ratio") : NAN;
     double alt_sd = k < size_check->nrows ? nl_table_value(size_check, k, "eval_ratio_sd") : NAN;
-    nl_table_append(t, "iiddddddddddddidddd", octaves[i], pt[i].terms, pt[i].plain_ms,
+    /* the paper's plain sum runs i = 0..N: N + 1 terms */
+    nl_table_append(t, "iiddddddddddddiddddddd", octaves[i], pt[i].terms, pt[i].plain_ms,
                     pt[i].plain_ms_sd, pt[i].bounded_ms, pt[i].bounded_ms_sd, pt[i].time_ratio,
                     paper_ms[i][0], paper_ms[i][1], paper_ms[i][0] / paper_ms[i][1],
                     pt[i].plain_evals, pt[i].bounded_evals, pt[i].eval_ratio, pt[i].eval_ratio_sd,
-                    pt[i].diff, pt[i].max_noise, alt_slope, alt, alt_sd);
+                    pt[i].diff, pt[i].max_noise, alt_slope, alt, alt_sd,
+                    pt[i].plain_evals / pt[i].terms, pt[i].plain_ms / pt[i].terms,
+                    paper_ms[i][0] / (octaves[i] + 1));
   }
   return t;
 }

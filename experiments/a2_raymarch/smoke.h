@@ -131,7 +131,8 @@ double a2_smoke_ratio_at(const nl_table *sweep, const char *vary, double slope, 
  * eval_ratio_sd, max_diff_levels, max_noise, and a measured alternative
  * from the size check's reference size: alt_slope, alt_eval_ratio,
  * alt_eval_ratio_sd (the size check's rows at alt_slope and its largest
- * size). */
+ * size); and per term: plain_evals_per_term, plain_ms_per_term, and
+ * paper_plain_ms_per_term (the paper's plain ms over its N + 1 terms). */
 nl_table *a2_smoke_timing(const a2_smoke_point *pt, const int *octaves, const double (*paper_ms)[2],
                           int n, const nl_table *size_check, double alt_slope);
 /* rss_log (and rms factor) of two columns of a table, ours against paper's. */

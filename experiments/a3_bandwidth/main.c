@@ -3,9 +3,11 @@
  * sqrt T)^2), Gamma^-1(T)], T = (2/255)^2, for the first octave, the second
  * octave and their sum; with a sweep of the sample length and rate, which
  * the paper does not state, and the family of readings of "Perlin noise"
- * and of the estimator (hypotheses.tsv) that could put the paper's band
- * within our spread; the reading that puts the most of it within is the
- * headline beside the paper, the base reading a measured alternative. */
+ * and of the estimator (hypotheses.tsv). The headline is the text's reading,
+ * fixed before any comparison: improved Perlin noise (the paper cites Perlin
+ * 2004 and Green 2005), sigma the standard deviation (sec. 5.2.1). The
+ * reading that puts the most of the paper's band within our spread is kept
+ * beside it as a selected alternative. */
 #include "harness/nl_harness.h"
 #include "report.h"
 #include "tables.h"
@@ -41,7 +43,7 @@ int main(int argc, char **argv)
 
   /* The readings of the paper's method, each measured over the seeds; the
    * one that puts the most of the paper's six bounds within (ties: the
-   * earlier, the current reading first) is the headline. */
+   * earlier, the base reading first) is the selected alternative. */
   nl_error err;
   nl_table *hy = a3_hypotheses(&rd, seed0, seeds, paper, sig_name, &err);
   if (!hy) nl_harness_die(r, 1, "%s", err.msg);
@@ -56,20 +58,15 @@ int main(int argc, char **argv)
     if (nin[h] > nin[win]) win = h;
     if (worst[h][0] < worst[close][0]) close = h;
   }
-  a3_reading head = fam[win];
 
-  /* Table 5.2 beside ours under the headline reading. */
-  double m[NSIG][7];
-  if (a3_bandwidth_seeds(&head, seed0, seeds, m, &err)) nl_harness_die(r, 1, "%s", err.msg);
-  const char *cols[] = { "signal",     "f_inf",      "f_inf_sd",    "f_sup",
-                         "f_sup_sd",   "sigma",      "paper_f_inf", "paper_f_sup",
-                         "f_inf_bins", "f_sup_bins", "f_inf_rms" };
-  nl_table *t = nl_table_alloc(11, cols);
-  double res = 1.0 / head.length;
-  for (int s = 0; s < NSIG; s++)
-    nl_table_append(t, "sdddddddddd", sig_name[s], m[s][0], m[s][1], m[s][2], m[s][3], m[s][4],
-                    paper[s][0], paper[s][1], m[s][0] / res, m[s][2] / res, m[s][6]);
+  /* Table 5.2 beside ours under the headline (base) reading, and under the
+   * selected one. */
+  double m[NSIG][7], ms[NSIG][7];
+  nl_table *t = a3_bandwidth_table(&rd, seed0, seeds, paper, sig_name, m, &err);
+  nl_table *ts = t ? a3_bandwidth_table(&fam[win], seed0, seeds, paper, sig_name, ms, &err) : NULL;
+  if (!ts) nl_harness_die(r, 1, "%s", err.msg);
   nl_harness_write_table(r, t, "bandwidth.tsv");
+  nl_harness_write_table(r, ts, "bandwidth_selected.tsv");
 
   /* How the band moves with the unstated sample length, rate, encoding and
    * line, over at most 3 seeds. */
@@ -78,16 +75,16 @@ int main(int argc, char **argv)
   nl_table *sw = a3_sweep(&rd, nvary, seed0, sweep_seeds, &err);
   if (!sw) nl_harness_die(r, 1, "%s", err.msg);
   nl_harness_write_table(r, sw, "sweep.tsv");
-  nl_table *sh = win ? a3_sweep(&head, nvary, seed0, sweep_seeds, &err) : NULL;
+  nl_table *sh = win ? a3_sweep(&fam[win], nvary, seed0, sweep_seeds, &err) : NULL;
   if (win && !sh) nl_harness_die(r, 1, "%s", err.msg);
-  if (sh) nl_harness_write_table(r, sh, "sweep_headline.tsv");
+  if (sh) nl_harness_write_table(r, sh, "sweep_selected.tsv");
   nl_table *pt = a3_psd(&rd, seed0, &err);
   if (!pt) nl_harness_die(r, 1, "%s", err.msg);
   nl_harness_write_table(r, pt, "psd.tsv");
 
   a3_run run = { .paper = paper,
                  .base = &rd,
-                 .head = &head,
+                 .sel = &fam[win],
                  .name = fname,
                  .nh = nh,
                  .win = win,
@@ -97,21 +94,18 @@ int main(int argc, char **argv)
                  .seeds = seeds,
                  .sweep_seeds = sweep_seeds,
                  .m = m,
+                 .ms = ms,
                  .bandwidth = t,
+                 .selected = ts,
                  .hypotheses = hy,
                  .psd = pt,
                  .sweep = sw,
-                 .sweep_head = sh };
+                 .sweep_sel = sh };
   a3_report_tables(r, &run);
-  /* F_inf is a bin: within a quarter bin reproduced, within one bin partly. */
-  char rule_inf[64];
-  snprintf(rule_inf, sizeof rule_inf, "abs %g %g", 0.25 / rd.length, 1.0 / rd.length);
-  nl_harness_verdict_rows(r, "bandwidth.tsv", t, "F_inf", "signal", "paper_f_inf", "f_inf", NULL,
-                          rule_inf, "selected 1/19", fname[win]);
-  nl_harness_verdict_rows(r, "bandwidth.tsv", t, "F_sup", "signal", "paper_f_sup", "f_sup",
-                          "f_sup_sd", "sd 2 4", "selected 1/19", fname[win]);
+  a3_verdicts(r, &run);
   a3_report_figures(r, &run);
   nl_table_free(t);
+  nl_table_free(ts);
   nl_table_free(sw);
   nl_table_free(sh);
   nl_table_free(pt);

@@ -37,6 +37,22 @@ nl_table *a3_psd(const a3_reading *rd, unsigned long seed, nl_error *err)
   return t;
 }
 
+nl_table *a3_bandwidth_table(const a3_reading *rd, unsigned long seed0, int seeds,
+                             const double paper[][2], const char *const *sig,
+                             double m[A3_NSIGNALS][7], nl_error *err)
+{
+  if (a3_bandwidth_seeds(rd, seed0, seeds, m, err)) return NULL;
+  const char *cols[] = { "signal",     "f_inf",      "f_inf_sd",    "f_sup",
+                         "f_sup_sd",   "sigma",      "paper_f_inf", "paper_f_sup",
+                         "f_inf_bins", "f_sup_bins", "f_inf_rms" };
+  nl_table *t = nl_table_alloc(11, cols);
+  double res = (rd->radians ? 2.0 * M_PI : 1.0) / rd->length;
+  for (int s = 0; s < NSIG; s++)
+    nl_table_append(t, "sdddddddddd", sig[s], m[s][0], m[s][1], m[s][2], m[s][3], m[s][4],
+                    paper[s][0], paper[s][1], m[s][0] / res, m[s][2] / res, m[s][6]);
+  return t;
+}
+
 nl_table *a3_hypotheses(const a3_reading *base, unsigned long seed0, int seeds,
                         const double paper[][2], const char *const *sig, nl_error *err)
 {

@@ -15,6 +15,15 @@
 #include "readings.h"
 #include "table/nl_table.h"
 
+/* Table 5.2 beside ours under one reading: per signal sig[s], the mean
+ * and sd over seeds of F_inf, F_sup and sigma, the paper's pair, both
+ * frequencies in bins of 1/length, and F_inf with sigma = RMS; columns
+ * signal, f_inf, f_inf_sd, f_sup, f_sup_sd, sigma, paper_f_inf,
+ * paper_f_sup, f_inf_bins, f_sup_bins, f_inf_rms. m receives
+ * a3_bandwidth_seeds. NULL on error. */
+nl_table *a3_bandwidth_table(const a3_reading *rd, unsigned long seed0, int seeds,
+                             const double paper[][2], const char *const *sig,
+                             double m[A3_NSIGNALS][7], nl_error *err);
 /* Columns freq, psd_oct1.., gamma_oct1.. up to 8 cycles per unit (DC left out). */
 nl_table *a3_psd(const a3_reading *rd, unsigned long seed, nl_error *err);
 /* The sensitivity table: mean F_inf, F_sup of each signal when the length

@@ -1,6 +1,7 @@
 /* A4 - Arnerin 2009 Fig. 5.7: Perlin noise and the spectrally normalised
  * Nnoise(x) = noise(x / F_sup), both sampled at 2 samples per unit, with the
  * fraction of their energy above the Nyquist frequency (what aliases). */
+#include "alias.h"
 #include "bounds/nl_bounds.h"
 #include "harness/nl_harness.h"
 #include "line.h"
@@ -13,6 +14,8 @@
 /* F_sup is measured on a finely sampled line: 64 samples per unit, far
  * above the band of one octave. */
 #define FINE_RATE 64.0
+/* Table 5.2's F_sup of the first octave, the divisor of the paper's Nnoise. */
+#define PAPER_F_SUP 1.7460938
 
 /* The plane z = 0.5 of noise(f p), size x size pixels over extent units. */
 static nl_image *plane_image(const nl_noise_perm3 *p, double f, int size, double extent)
@@ -41,7 +44,7 @@ int main(int argc, char **argv)
                                    "length of the sampled 1D line in noise units (quick 128)");
   nl_harness_params_done(r);
   int seeds = nl_harness_seeds(r) > 64 ? 64 : nl_harness_seeds(r);
-  double fs[64], a0[64], a1[64];
+  double fs[64], a0[64], a1[64], e[3][64]; /* e: noise, ours, the paper's Nnoise, in T */
   nl_error err;
   for (int k = 0; k < seeds; k++) {
     nl_noise_perm3 p;
@@ -62,7 +65,14 @@ int main(int argc, char **argv)
     if (nl_bounds_psd1_fraction_above(x, n, FINE_RATE, 0.5 * rate2d, &a1[k], &err))
       nl_harness_die(r, 1, "%s", err.msg);
     free(x);
+    /* The stored value's energy above Nyquist against T (alias.h). */
+    const double div[3] = { 1.0, fs[k], PAPER_F_SUP };
+    for (int v = 0; v < 3; v++)
+      if (a4_alias_energy(&p, 1.0 / div[v], length, FINE_RATE, 0.5 * rate2d, &e[v][k], &err))
+        nl_harness_die(r, 1, "%s", err.msg);
   }
+  nl_table *et = a4_energy_table(e, seeds, nl_stats_mean(fs, seeds, NL_STATS_RUNNING), PAPER_F_SUP);
+  nl_harness_write_table(r, et, "aliased_energy.tsv");
   const char *cols[] = { "signal", "f_sup", "aliased_fraction", "aliased_fraction_sd" };
   nl_table *t = nl_table_alloc(4, cols);
   double mf = nl_stats_mean(fs, seeds, NL_STATS_RUNNING);
@@ -84,9 +94,11 @@ int main(int argc, char **argv)
   nl_study_montage(r, (const nl_image *const *)pan, labels, 2, 2, title, "normalised.png");
 
   a4_report(r, &run);
+  a4_report_energy(r, et, 0.5 * rate2d);
   nl_image_free(pan[0]);
   nl_image_free(pan[1]);
   nl_table_free(t);
+  nl_table_free(et);
   nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);
 }

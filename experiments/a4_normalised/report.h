@@ -21,6 +21,9 @@ typedef struct {
 
 /* The paper and our reading, the aliasing table, Fig. 5.7 and its price. */
 void a4_report(nl_harness *r, const a4_run *run);
+/* The energy above Nyquist against T (aliased_energy.tsv), its prose,
+ * the two verdicts of Fig. 5.7 decided by it and the figure's row. */
+void a4_report_energy(nl_harness *r, const nl_table *et, double nyquist);
 /* The title of Fig. 5.7's montage at the run's rate, into buf. */
 void a4_figure_title(const a4_run *run, char *buf, size_t size);
 
