@@ -46,8 +46,9 @@ void c6_below_text(nl_harness *r, const nl_table *b, double swap)
   for (size_t q = 0; q < b->nrows; q++) {
     if (strcmp(nl_table_text(b, q, "kind"), want)) continue;
     char quantity[96];
+    int con = strcmp(nl_table_text(b, q, "error"), "E_con") == 0;
     snprintf(quantity, sizeof quantity, "%s of reproductions below the original's, %s",
-             nl_table_text(b, q, "error"), nl_table_text(b, q, "texture"));
+             con ? "E_Con" : "E_KS", nl_table_text(b, q, "texture"));
     nl_harness_verdict_p(r, "below.tsv", b, q, quantity, "often below the original's", "frac_below",
                          "p_sign", "fit 0.05 0.01", "independent",
                          "one-sided sign test of the count below against Binomial(n, 1/2), "
