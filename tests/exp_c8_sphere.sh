@@ -74,7 +74,8 @@ tsv_awk 'NR > 1 { s += n("new_entries"); if (n("octave") == 1 && n("new_entries"
 # three patterns share their start tables, so their chi2_indep agree.
 "$expect" "$out/summary.tsv" 'con_offset_frac>=0' 'con_contrast_frac>=0' 'con_shape_frac>=0' \
   'mean_D>0' 'chi2_indep>0' 'p_indep>=0' 'p_indep<=1' 'p_indep_min<=p_indep' \
-  'p_indep_bonf>=p_indep_min' 'p_indep_bonf<=1' 'p_joint_min>=0' 'p_joint<=1'
+  'p_indep_bonf>=p_indep_min' 'p_indep_bonf<=1' 'p_indep_pooled>=0' 'p_indep_pooled<=1' \
+  'p_joint_min>=0' 'p_joint<=1'
 tsv_awk 'NR > 1 { s = n("con_offset_frac") + n("con_contrast_frac") + n("con_shape_frac")
     if ((s - 1) ^ 2 > 1e-18) { print "E_Con parts add to " s ": " $0; exit 1 } }
   NR > 1 && v("pattern") == "torus" && v("table") == "optimised" {

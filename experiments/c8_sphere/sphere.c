@@ -7,6 +7,7 @@
 #include "study/nl_study_cheng.h"
 #include "stats/nl_stats.h"
 
+#include <gsl/gsl_cdf.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,7 +19,8 @@ static const char *const sum_cols[] = {
   "R_rayleigh", "p_rayleigh", "p_rayleigh_min", "E_con", "E_con_sd", "rms_con", "E", "r_pattern",
   "r_pattern_sd", "contrast", "contrast_sd", "E_con_random", "E_con_random_sd", "E_con_const",
   "con_vs_const", "con_offset_frac", "con_contrast_frac", "con_shape_frac", "E_con_offset",
-  "mean_D", "chi2_indep", "p_indep", "p_indep_min", "p_indep_bonf", "p_joint", "p_joint_min"
+  "mean_D", "chi2_indep", "p_indep", "p_indep_min", "p_indep_bonf", "p_indep_pooled", "p_joint",
+  "p_joint_min"
 };
 /* clang-format on */
 #define NSUM (sizeof sum_cols / sizeof *sum_cols)
@@ -98,6 +100,13 @@ static void summary_add(nl_table *t, const char *pattern, const char *table,
   IND(p_indep, 1);
   /* all k tables independent: Bonferroni over the seeds */
   nl_table_set(t, row, sum_cols[c++], fmin(1.0, k * nl_stats_min(x, k)));
+  /* pooled: the seeds' statistics summed against chi2 with the summed df */
+  double chi = 0, df = 0;
+  for (int i = 0; i < k; i++) {
+    chi += ind[i].chi2_indep;
+    df += ind[i].df_indep;
+  }
+  nl_table_set(t, row, sum_cols[c++], gsl_cdf_chisq_Q(chi, df));
   IND(p_joint, 1);
   free(x);
 }

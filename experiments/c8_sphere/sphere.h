@@ -29,7 +29,8 @@
  * averaged), E_con_offset (mean), mean_D (the pattern's), and the z-phi
  * test (indep.h, C8_INDEP_BINS^2 cells): chi2_indep, p_indep (mean, min),
  * p_indep_bonf = min(1, seeds x min p_indep) (every seed's table
- * independent), p_joint (mean, min). */
+ * independent), p_indep_pooled (the seeds' chi2_indep summed against chi2
+ * with the summed df: a consistent pairing), p_joint (mean, min). */
 #define C8_INDEP_BINS 8 /* 8 x 8 cells: 8 of the M = 512 pairs expected per cell */
 nl_table *c8_summary_alloc(void);
 /* The run's seeds (nl_seed_replicate of the base seed, nl_harness_seeds of
