@@ -46,7 +46,10 @@ tsv_awk 'NR > 1 { k = n("below"); m = n("n"); c = 1; s = 0
     if ((n("p_sign") - e) ^ 2 > (1e-9 * e) ^ 2) { print "sign p: " $0 " wanted " e; exit 1 } }' \
   "$out/below.tsv"
 tsv_awk 'NR > 1 && v("kind") == "independent" { ind++
-    if (v("rule") != "fit 0.05 0.01" || v("source") !~ /^below.tsv/) { print "sign verdict: " $0; exit 1 } }
-  NR > 1 && v("kind") == "qualitative" { fig++; if (v("verdict") != "see figure") { print $0; exit 1 } }
-  END { if (ind != 6 || fig != 4) { print "verdicts: " ind " independent, " fig " qualitative"; exit 1 } }' \
+    if (v("rule") != "fit 0.05 0.01" || v("source") !~ /^below.tsv/) {
+      print "sign verdict: " $0; exit 1 } }
+  NR > 1 && v("kind") == "qualitative" { fig++
+    if (v("verdict") != "see figure") { print $0; exit 1 } }
+  END { if (ind != 6 || fig != 4) {
+    print "verdicts: " ind " independent, " fig " qualitative"; exit 1 } }' \
   "$out/verdicts.tsv"

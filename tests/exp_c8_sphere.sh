@@ -79,11 +79,15 @@ tsv_awk 'NR > 1 { s += n("new_entries"); if (n("octave") == 1 && n("new_entries"
 tsv_awk 'NR > 1 { s = n("con_offset_frac") + n("con_contrast_frac") + n("con_shape_frac")
     if ((s - 1) ^ 2 > 1e-18) { print "E_Con parts add to " s ": " $0; exit 1 } }
   NR > 1 && v("pattern") == "torus" && v("table") == "optimised" {
-    if (!(n("E_con_offset") > n("E_con_const") && n("con_offset_frac") > 0.5)) { print "torus offset: " $0; exit 1 } }
-  NR > 1 && v("table") == "random" { if (c == "") c = v("chi2_indep"); else if (v("chi2_indep") != c) { print "random chi2_indep: " $0; exit 1 } }' \
+    if (!(n("E_con_offset") > n("E_con_const") && n("con_offset_frac") > 0.5)) {
+      print "torus offset: " $0; exit 1 } }
+  NR > 1 && v("table") == "random" {
+    if (c == "") c = v("chi2_indep")
+    else if (v("chi2_indep") != c) { print "random chi2_indep: " $0; exit 1 } }' \
   "$out/summary.tsv"
 # one verdict per pattern: z and phi independent (kind independent, fit rule)
-tsv_awk 'NR > 1 && !(v("kind") == "independent" && v("rule") == "fit 0.05 0.01" && v("source") ~ /p_indep_bonf$/) { print "verdict: " $0; exit 1 }
+tsv_awk 'NR > 1 && !(v("kind") == "independent" && v("rule") == "fit 0.05 0.01" &&
+    v("source") ~ /p_indep_bonf$/) { print "verdict: " $0; exit 1 }
   END { if (NR != 4) { print "verdicts: " NR - 1 ", wanted 3"; exit 1 } }' "$out/verdicts.tsv"
 refused "$exp" --quick --set grid=1 --out "$out.bad"
 refused "$exp" --quick --set octaves=9 --out "$out.bad"

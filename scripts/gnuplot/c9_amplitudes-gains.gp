@@ -16,15 +16,21 @@ set ylabel "amplitude 1/a_l"
 set xtics 1
 set grid
 set key outside right
-set title "C9: optimised octave amplitudes, default bounds (solid) and wide (dashed); mean and sd over seeds"
-is(c) = (strcol("texture")."/".strcol("pattern")) eq c && strcol("amplitudes") eq "optimised"
-isw(c) = (strcol("texture")."/".strcol("pattern")) eq c && strcol("amplitudes") eq "optimised_wide"
-plot g using (is(word(cases, 1)) ? column("octave") : NaN):(1 / column("a_thesis")) with linespoints lw 3 lc rgb "black" pt 4 title "thesis 1/a_l", \
-     g using (is(word(cases, 1)) ? column("octave") : NaN):(column("R") / column("a_thesis")) with lines dt 2 lc rgb "gray40" title "bounds", \
-     g using (is(word(cases, 1)) ? column("octave") : NaN):(1 / (column("R") * column("a_thesis"))) with lines dt 2 lc rgb "gray40" notitle, \
-     for [i=1:n] g using (is(word(cases, i)) ? column("octave") + 0.04 * (i - (n + 1) / 2.0) : NaN):(column("gain") / column("a_thesis")):(column("gain_sd") / column("a_thesis")) \
-       with yerrorlines pt 7 ps 0.7 lc i title word(cases, i), \
-     g using (isw(word(cases, 1)) ? column("octave") : NaN):(column("R") / column("a_thesis")) with lines dt 3 lc rgb "gray60" title "wide bounds", \
-     g using (isw(word(cases, 1)) ? column("octave") : NaN):(1 / (column("R") * column("a_thesis"))) with lines dt 3 lc rgb "gray60" notitle, \
-     for [i=1:n] g using (isw(word(cases, i)) ? column("octave") + 0.04 * (i - (n + 1) / 2.0) : NaN):(column("gain") / column("a_thesis")) \
-       with linespoints dt 2 pt 6 ps 0.7 lc i notitle
+set title "C9: optimised octave amplitudes, default bounds (solid) and wide (dashed)"
+case(c) = (strcol("texture")."/".strcol("pattern")) eq c
+is(c) = case(c) && strcol("amplitudes") eq "optimised"
+isw(c) = case(c) && strcol("amplitudes") eq "optimised_wide"
+x(ok) = ok ? column("octave") : NaN                   # the octave on rows that pass
+xi(ok, i) = ok ? column("octave") + 0.04 * (i - (n + 1) / 2.0) : NaN   # spread per case
+amp(v) = v / column("a_thesis")                      # a gain as the amplitude 1/a_l
+plot g u (x(is(word(cases, 1)))):(amp(1)) w linespoints lw 3 lc rgb "black" pt 4 \
+       t "thesis 1/a_l", \
+     g u (x(is(word(cases, 1)))):(amp(column("R"))) w lines dt 2 lc rgb "gray40" t "bounds", \
+     g u (x(is(word(cases, 1)))):(amp(1 / column("R"))) w lines dt 2 lc rgb "gray40" notitle, \
+     for [i=1:n] g u (xi(is(word(cases, i)), i)):(amp(column("gain"))):(amp(column("gain_sd"))) \
+       w yerrorlines pt 7 ps 0.7 lc i t word(cases, i), \
+     g u (x(isw(word(cases, 1)))):(amp(column("R"))) w lines dt 3 lc rgb "gray60" \
+       t "wide bounds", \
+     g u (x(isw(word(cases, 1)))):(amp(1 / column("R"))) w lines dt 3 lc rgb "gray60" notitle, \
+     for [i=1:n] g u (xi(isw(word(cases, i)), i)):(amp(column("gain"))) \
+       w linespoints dt 2 pt 6 ps 0.7 lc i notitle
