@@ -34,3 +34,22 @@ if thread_identity; then
   cmp <(drop "$out/summary.tsv") <(drop "$out/again/summary.tsv")
   for t in erosion marble cloud; do cmp "$out/cdf_$t.tsv" "$out/again/cdf_$t.tsv"; done
 fi
+# "Often below the original's" as a sign test (below.tsv): per texture, swap
+# and error a row whose p_sign is P(X <= below), X ~ Binomial(n, 1/2),
+# recomputed here from the exact sum to 1e-9; verdicts: one per texture and
+# error for the thesis's swap (kind independent, rule fit 0.05 0.01) and four
+# qualitative rows for the figures (3 montages, cdf.png).
+"$expect" "$out/below.tsv" rows=12 'n==8' 'below>=0' 'below<=n' 'p_sign>0' 'p_sign<=1'
+tsv_awk 'NR > 1 { k = n("below"); m = n("n"); c = 1; s = 0
+    for (i = 0; i <= k; i++) { s += c; c = c * (m - i) / (i + 1) }
+    e = s / 2 ^ m; if (k >= m) e = 1
+    if ((n("p_sign") - e) ^ 2 > (1e-9 * e) ^ 2) { print "sign p: " $0 " wanted " e; exit 1 } }' \
+  "$out/below.tsv"
+tsv_awk 'NR > 1 && v("kind") == "independent" { ind++
+    if (v("rule") != "fit 0.05 0.01" || v("source") !~ /^below.tsv/) {
+      print "sign verdict: " $0; exit 1 } }
+  NR > 1 && v("kind") == "qualitative" { fig++
+    if (v("verdict") != "see figure") { print $0; exit 1 } }
+  END { if (ind != 6 || fig != 4) {
+    print "verdicts: " ind " independent, " fig " qualitative"; exit 1 } }' \
+  "$out/verdicts.tsv"

@@ -65,6 +65,30 @@ tsv_awk 'NR > 1 && v("table") == "optimised" {
         if (k != 3) {print "patterns: " k; exit 1} }' "$out/summary.tsv"
 tsv_awk 'NR > 1 { s += n("new_entries"); if (n("octave") == 1 && n("new_entries") > 125) {print "octave 1: " $0; exit 1} }
   END { if (!(s > 0 && s <= 512)) {print "level entries " s; exit 1} }' "$out/levels.tsv"
+# E_Con's split (nl_cheng3_eval): the three fractions add up to 1 in every
+# row; the torus's "worse than flat" is its mean offset: the offset part
+# alone exceeds the best constant volume's E_Con (measured 2.78..2.90 times
+# over base seeds 1..4) and is more than half of E_Con (measured
+# 0.740..0.745). z-phi independence (indep.h, 8 x 8 cells): p-values in
+# [0, 1], the Bonferroni p at least the smallest, and the random rows of the
+# three patterns share their start tables, so their chi2_indep agree.
+"$expect" "$out/summary.tsv" 'con_offset_frac>=0' 'con_contrast_frac>=0' 'con_shape_frac>=0' \
+  'mean_D>0' 'chi2_indep>0' 'p_indep>=0' 'p_indep<=1' 'p_indep_min<=p_indep' \
+  'p_indep_bonf>=p_indep_min' 'p_indep_bonf<=1' 'p_indep_pooled>=0' 'p_indep_pooled<=1' \
+  'p_joint_min>=0' 'p_joint<=1'
+tsv_awk 'NR > 1 { s = n("con_offset_frac") + n("con_contrast_frac") + n("con_shape_frac")
+    if ((s - 1) ^ 2 > 1e-18) { print "E_Con parts add to " s ": " $0; exit 1 } }
+  NR > 1 && v("pattern") == "torus" && v("table") == "optimised" {
+    if (!(n("E_con_offset") > n("E_con_const") && n("con_offset_frac") > 0.5)) {
+      print "torus offset: " $0; exit 1 } }
+  NR > 1 && v("table") == "random" {
+    if (c == "") c = v("chi2_indep")
+    else if (v("chi2_indep") != c) { print "random chi2_indep: " $0; exit 1 } }' \
+  "$out/summary.tsv"
+# one verdict per pattern: z and phi independent (kind independent, fit rule)
+tsv_awk 'NR > 1 && !(v("kind") == "independent" && v("rule") == "fit 0.05 0.01" &&
+    v("source") ~ /p_indep_bonf$/) { print "verdict: " $0; exit 1 }
+  END { if (NR != 4) { print "verdicts: " NR - 1 ", wanted 3"; exit 1 } }' "$out/verdicts.tsv"
 refused "$exp" --quick --set grid=1 --out "$out.bad"
 refused "$exp" --quick --set octaves=9 --out "$out.bad"
 refused "$exp" --quick --set w1=0 --set w2=0 --out "$out.bad"

@@ -1,14 +1,20 @@
 #!/usr/bin/env bash
-# Quick C9: fixed vs optimised octave amplitudes, 4 cases x 2 (3 seeds per row).
+# Quick C9: fixed vs optimised octave amplitudes (default and wide bounds),
+# 4 cases x 3 (3 seeds per row).
 # What can fail, bounded by measurements at --quick over seeds 1..5:
 #  - the fixed-amplitude rows are C1's rescaled rows for the same texture and
 #    pattern, bit for bit (same seeds, same setting: amp_vary = 0 changes
 #    nothing), compared with results/quick/c1_textures/summary.tsv;
-#  - the optimised gains stay within their bounds [1/4, 4] and every case
-#    moved them (some octave's mean gain differs from 1);
+#  - the optimised gains stay within their bounds ([1/4, 4], and [1/R, R]
+#    with R = 64 for the wide rows) and every case moved them (some octave's
+#    mean gain differs from 1);
+#  - E_Con's parts (parts.tsv) add up to E_Con (means of a sum: rounding
+#    only, 1e-9 relative); one verdict row per case on E_Con (summary.tsv)
+#    and one on its shape part (parts.tsv), all of kind independent;
 #  - both conditions optimise: E_Con below the unoptimised start table's in
 #    every row, tables stay uniform (E_ks < 0.025: measured 0.0088..0.0173 optimised, 0.0096..0.0122 fixed; E_Con / E_Con_random <= 0.898);
-#  - Welch p-values in [0, 1], one row per case and quantity (5).
+#  - Welch p-values in [0, 1], 12 rows per case (5 quantities and E_Con's 3
+#    parts optimised vs fixed, 4 wide vs default bounds).
 set -euo pipefail
 # shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
@@ -19,14 +25,28 @@ pat="$root/data/patterns"
 # The seed runs are nl_parallel_for items (nl_study_cheng_runs): one thread
 # gives the same tables, timing columns aside (the check ignores them).
 same_on_one_thread "$exp" "$out" --patterns "$pat"
-"$expect" "$out/summary.tsv" rows=8 'seeds==3' 'E_ks>0' 'E_ks<0.025' 'E_con<E_con_random' \
+"$expect" "$out/summary.tsv" rows=12 'seeds==3' 'E_ks>0' 'E_ks<0.025' 'E_con<E_con_random' \
   'contrast>0' image:values.png
-"$expect" "$out/gains.tsv" rows=16 'gain>=0.25' 'gain<=4' 'a>=1' 'at_bound>=0' 'at_bound<=1'
-"$expect" "$out/tests.tsv" rows=20 'p_welch>=0' 'p_welch<=1' 'seeds==3'
-"$expect" "$out/timing.tsv" rows=8 'seconds_per_run>0'
+"$expect" "$out/gains.tsv" rows=32 'gain<=R' 'at_bound>=0' 'at_bound<=1'
+tsv_awk 'NR > 1 { a = v("amplitudes")
+    r = a == "optimised" ? 4 : a == "optimised_wide" ? 64 : 0
+    if (n("R") != r || !(n("gain") * r >= 1 - 1e-12)) { print "bounds: " $0; exit 1 } }' \
+  "$out/gains.tsv"
+"$expect" "$out/tests.tsv" rows=48 'p_welch>=0' 'p_welch<=1' 'seeds==3'
+"$expect" "$out/timing.tsv" rows=12 'seconds_per_run>0'
+"$expect" "$out/parts.tsv" rows=12 'seeds==3' 'E_con_offset>=0' 'E_con_contrast>=0' 'E_con_shape>=0'
+tsv_awk 'NR > 1 { d = n("E_con_offset") + n("E_con_contrast") + n("E_con_shape") - n("E_con")
+    if (d * d > (1e-9 * n("E_con")) ^ 2) { print "parts: " $0; exit 1 } }' "$out/parts.tsv"
+tsv_awk 'NR > 1 { if (v("kind") != "independent") { print "kind: " $0; exit 1 }
+    if (v("quantity") !~ /shape/) { con++; next }
+    sh++
+    if (v("source") !~ /^parts.tsv/) { print $0; exit 1 } }
+  END { if (sh != 4 || con != 4) { print "verdicts: " con " E_Con, " sh " shape"; exit 1 } }' \
+  "$out/verdicts.tsv"
 tsv_awk 'NR > 1 {c = v("texture") "/" v("pattern"); if (n("gain") != 1) moved[c] = 1; seen[c] = 1}
   END {for (c in seen) if (!(c in moved)) {print "gains not moved: " c; exit 1}}' "$out/gains.tsv"
-# fixed rows == C1's rescaled rows (every summary column, as text)
+# fixed rows == C1's rescaled rows (every summary column the reference has,
+# as text: a column added since the reference was written is not compared)
 ref="$root/results/quick/c1_textures/summary.tsv"
 awk -F'\t' 'FNR == 1 {for (i = 1; i <= NF; i++) {col[FILENAME, $i] = i; if (FILENAME == ARGV[2]) hdr[i] = $i}; nf[FILENAME] = NF; next}
   FILENAME == ARGV[1] && $col[ARGV[1], "formula"] == "rescaled" {row[$col[ARGV[1], "texture"] "/" $col[ARGV[1], "pattern"]] = $0}
@@ -35,7 +55,8 @@ awk -F'\t' 'FNR == 1 {for (i = 1; i <= NF; i++) {col[FILENAME, $i] = i; if (FILE
     if (!(k in row)) {print "no C1 row for " k; bad = 1; exit 1}
     split(row[k], a, "\t"); n++
     for (i = col[ARGV[2], "seeds"]; i <= nf[ARGV[2]]; i++)
-      if (a[col[ARGV[1], hdr[i]]] != $i) {print "fixed " k " " hdr[i] ": " $i " vs C1 " a[col[ARGV[1], hdr[i]]]; bad = 1; exit 1}
+      if (((ARGV[1], hdr[i]) in col) && a[col[ARGV[1], hdr[i]]] != $i) {
+        print "fixed " k " " hdr[i] ": " $i " vs C1 " a[col[ARGV[1], hdr[i]]]; bad = 1; exit 1}
   }
   END {if (!bad && n != 4) {print "fixed rows compared with C1: " n ", wanted 4"; exit 1}}' "$ref" "$out/summary.tsv"
 refused "$exp" --quick --out "$out.bad" --patterns "$pat" --set amp_range=0.5

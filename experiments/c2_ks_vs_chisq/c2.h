@@ -25,14 +25,18 @@ void c2_pattern_text(nl_harness *r, const nl_table *sum, const char *pat, size_t
                      size_t row_chi, double pk, double px, double pc);
 /* The Welch table's caption. */
 void c2_tests_text(nl_harness *r, const nl_table *wt);
+/* "E_Con close in both" per pattern (equiv.tsv, c2_equiv_add): the margin
+ * and its reason, the table, and one verdict row per pattern on p_tost. */
+void c2_equiv_text(nl_harness *r, const nl_table *eq);
+/* The seam ratio's range over the summary's rows, in one sentence. */
+void c2_seam_text(nl_harness *r, const nl_table *sum);
 /* Whether uniformity is preserved, then how regular the optimised tables
  * are: P(D <= E_KS) for a random table per objective (rows 0..nobj-1: the
  * first pattern), and the chi-square objective's bins holding exactly one
  * angle (`single`, first pattern, first seed) against a random table's. */
-void c2_regularity_text(nl_harness *r, const nl_table *sum, const char *const *onames,
-                        int nobj, const nl_cheng_config *c, const char *pat, int single);
+void c2_regularity_text(nl_harness *r, const nl_table *sum, const char *const *onames, int nobj,
+                        const nl_cheng_config *c, const char *pat, int single);
 /* The figures: noise_PAT.png per pattern, cdf.png, hist.png. */
-void c2_figures_text(nl_harness *r, const char *const *pats, int npat,
-                     const nl_cheng_config *c);
+void c2_figures_text(nl_harness *r, const char *const *pats, int npat, const nl_cheng_config *c);
 
 #endif

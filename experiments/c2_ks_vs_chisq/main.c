@@ -3,6 +3,7 @@
  * the Kuiper term; CDF of the optimised angles against the ideal line,
  * histograms, and every statistic with its p-value over seeds. */
 #include "c2.h"
+#include "equiv.h"
 #include "study/nl_study_cheng.h"
 #include "harness/nl_harness.h"
 
@@ -23,8 +24,11 @@ int main(int argc, char **argv)
   nl_study_cheng s;
   nl_study_cheng_open(&s, "c2_ks_vs_chisq", "C2 - KS term vs chi-square term (Fig 4.5, 4.6)", &argc,
                       argv);
-  nl_study_cheng_ready(&s);
   nl_harness *r = s.r;
+  double margin = nl_harness_param(r, "equiv_margin", 0.05, 1e-4, 1,
+                                   "\"E_Con close\": equal within this fraction of the mean "
+                                   "E_Con (TOST, fixed before the run)");
+  nl_study_cheng_ready(&s);
   const nl_cheng_config base = s.c;
   int k = nl_harness_seeds(r);
   const char *labels[] = { "pattern", "objective" };
@@ -81,6 +85,7 @@ int main(int argc, char **argv)
   /* Per pattern, the KS objective (row ks) against the chi-square one (row
    * ks + 1) and both against Kuiper (ks + 2): Welch's t-test over seeds. */
   nl_table *wt = nl_study_cheng_welch_alloc();
+  nl_table *eq = c2_equiv_alloc();
   for (int i = 0; i < NPAT; i++) {
     const char *p = pats[i];
     size_t ks = (size_t)i * NOBJ, chi = ks + 1, ku = ks + 2;
@@ -90,6 +95,7 @@ int main(int argc, char **argv)
     double pk = nl_study_cheng_welch_add(wt, sum, ks, chi, "E_ks", p, "ks", "chisq");
     double px = nl_study_cheng_welch_add(wt, sum, chi, ks, "chi2", p, "chisq", "ks");
     c2_pattern_text(r, sum, p, ks, chi, pk, px, pc);
+    c2_equiv_add(eq, sum, ks, chi, p, "ks", "chisq", margin);
     char q[2][64];
     snprintf(q[0], sizeof q[0], "E_KS, KS vs chi-square objective, %s", p);
     snprintf(q[1], sizeof q[1], "chi2, chi-square vs KS objective, %s", p);
@@ -99,9 +105,13 @@ int main(int argc, char **argv)
                             "chi2", "chi2_sd", "seeds", 0.05, "independent");
   }
   nl_harness_write_table(r, wt, "tests.tsv");
+  nl_harness_write_table(r, eq, "equiv.tsv");
   c2_tests_text(r, wt);
+  c2_equiv_text(r, eq);
   nl_study_cheng_control_text(r, sum, 2);
+  c2_seam_text(r, sum);
   nl_table_free(wt);
+  nl_table_free(eq);
   c2_regularity_text(r, sum, onames, NOBJ, &base, pats[0], single[0]);
   c2_figures_text(r, pats, NPAT, &base);
   nl_table_free(sum);

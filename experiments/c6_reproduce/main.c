@@ -6,6 +6,7 @@
  * original's, the CDF of reproduced angles over the original's, a montage,
  * and the "real time" claim measured: ms per reproduction against the
  * seconds of one optimisation. */
+#include "below.h"
 #include "reproduce.h"
 #include "report.h"
 #include "harness/nl_harness.h"
@@ -42,6 +43,11 @@ int main(int argc, char **argv)
   for (int i = 0; i < 2; i++) nl_harness_check(r, "reproductions.tsv", tcols[i], "ignore");
 
   c6_report(r, sum, nrep, swap, &po, &s.c);
+  nl_table *below = c6_below_alloc(); /* "often below": a sign test per texture and error */
+  c6_below_add(below, sum);
+  nl_harness_write_table(r, below, "below.tsv");
+  c6_below_text(r, below, swap);
+  nl_table_free(below);
   nl_table_free(reps);
   nl_table_free(sum);
   nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */

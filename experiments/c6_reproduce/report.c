@@ -64,12 +64,6 @@ void c6_report(nl_harness *r, const nl_table *sum, int nrep, double swap,
   }
   /* r, contrast and the two baselines, originals and reproductions */
   nl_study_cheng_control_text(r, sum, 2);
-  nl_harness_text(
-      r,
-      "Reading: the thesis's \"often below\" holds here for E_Con when the high entries are kept "
-      "(the pool re-optimised the low entries under E_R with the high ones fixed), not after they "
-      "are permuted; E_KS of a reproduction is higher than the original's, whose optimised angles "
-      "are more regular than random (C2), yet no reproduction comes near rejection.\n");
   nl_harness_text(r, "The optimisation time above is one multi-level run (nl_cheng_run); building "
                      "the model once costs the pool (Q annealing runs of E_R) and the fits, see "
                      "C5's original.tsv and gmm.tsv.\n");

@@ -5,7 +5,10 @@
  * E_stat + w2 E_Con (eq. 3.9) annealed with the 2D schedule (nl_cheng3.h).
  * Reported per pattern for the optimised and the random start tables: the
  * uniformity tests (KS z, KS phi, Kuiper phi, Rayleigh) and C1's
- * controllability columns. No thesis number exists: no verdicts. */
+ * controllability columns, E_Con's split into offset, contrast and shape,
+ * and a chi-square test of the independence of z and phi (indep.h), the
+ * half of "uniform on the sphere" the margins do not test: a verdict row
+ * per pattern (no thesis number exists to compare with). */
 #include "report.h"
 #include "sphere.h"
 #include "study/nl_study.h"

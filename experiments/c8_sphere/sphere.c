@@ -1,11 +1,13 @@
 /* C8's harness side: seeds into a summary, ECDF and voxel tables, slices
  * (sphere.h). */
 #include "sphere.h"
+#include "indep.h"
 #include "base/nl_parallel.h"
 #include "study/nl_study.h"
 #include "study/nl_study_cheng.h"
 #include "stats/nl_stats.h"
 
+#include <gsl/gsl_cdf.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,7 +18,9 @@ static const char *const sum_cols[] = {
   "p_phi_min", "p_stat", "p_stat_min", "uniform", "V_kuiper", "p_kuiper", "p_kuiper_min",
   "R_rayleigh", "p_rayleigh", "p_rayleigh_min", "E_con", "E_con_sd", "rms_con", "E", "r_pattern",
   "r_pattern_sd", "contrast", "contrast_sd", "E_con_random", "E_con_random_sd", "E_con_const",
-  "con_vs_const"
+  "con_vs_const", "con_offset_frac", "con_contrast_frac", "con_shape_frac", "E_con_offset",
+  "mean_D", "chi2_indep", "p_indep", "p_indep_min", "p_indep_bonf", "p_indep_pooled", "p_joint",
+  "p_joint_min"
 };
 /* clang-format on */
 #define NSUM (sizeof sum_cols / sizeof *sum_cols)
@@ -39,8 +43,23 @@ nl_table *c8_summary_alloc(void) { return nl_table_alloc(NSUM, sum_cols); }
     nl_table_set(t, row, sum_cols[c++], nl_stats_mean(x, k, NL_STATS_RUNNING));                    \
   } while (0)
 
+/* mean over seeds of E_Con's part f as a fraction of each run's E_Con */
+#define FRAC(f)                                                                                    \
+  do {                                                                                             \
+    for (int i = 0; i < k; i++) x[i] = ev[i].e_con > 0 ? ev[i].f / ev[i].e_con : 0;                \
+    nl_table_set(t, row, sum_cols[c++], nl_stats_mean(x, k, NL_STATS_RUNNING));                    \
+  } while (0)
+/* mean and min over seeds of the independence test's field f, from ind */
+#define IND(f, min)                                                                                \
+  do {                                                                                             \
+    for (int i = 0; i < k; i++) x[i] = ind[i].f;                                                   \
+    nl_table_set(t, row, sum_cols[c++], nl_stats_mean(x, k, NL_STATS_RUNNING));                    \
+    if (min) nl_table_set(t, row, sum_cols[c++], nl_stats_min(x, k));                              \
+  } while (0)
+
 static void summary_add(nl_table *t, const char *pattern, const char *table,
-                        const nl_cheng3_eval *ev, int k)
+                        const nl_cheng3_eval *ev, const c8_indep *ind, const nl_cheng3_pattern *pat,
+                        int k)
 {
   double *x = nl_xmalloc((size_t)k * sizeof *x);
   size_t row = nl_table_append_empty(t);
@@ -69,6 +88,26 @@ static void summary_add(nl_table *t, const char *pattern, const char *table,
   nl_table_set(t, row, sum_cols[c++], ev[0].e_con_const); /* the pattern's alone */
   FIELD(e_con);
   nl_table_set(t, row, sum_cols[c++], nl_stats_mean(x, k, NL_STATS_RUNNING) / ev[0].e_con_const);
+  FRAC(e_con_offset);
+  FRAC(e_con_contrast);
+  FRAC(e_con_shape);
+  PUT1(e_con_offset);
+  double md = 0;
+  for (size_t q = 0; q < pat->n; q++) md += pat->d[q];
+  nl_table_set(t, row, sum_cols[c++], md / (double)pat->n);
+  for (int i = 0; i < k; i++) x[i] = ind[i].chi2_indep;
+  nl_table_set(t, row, sum_cols[c++], nl_stats_mean(x, k, NL_STATS_RUNNING));
+  IND(p_indep, 1);
+  /* all k tables independent: Bonferroni over the seeds */
+  nl_table_set(t, row, sum_cols[c++], fmin(1.0, k * nl_stats_min(x, k)));
+  /* pooled: the seeds' statistics summed against chi2 with the summed df */
+  double chi = 0, df = 0;
+  for (int i = 0; i < k; i++) {
+    chi += ind[i].chi2_indep;
+    df += ind[i].df_indep;
+  }
+  nl_table_set(t, row, sum_cols[c++], gsl_cdf_chisq_Q(chi, df));
+  IND(p_joint, 1);
   free(x);
 }
 
@@ -80,6 +119,7 @@ typedef struct {
   const nl_cheng3_pattern *pat;
   unsigned long seed;
   nl_cheng3_eval *ev, *ev0;
+  c8_indep *ind, *ind0; /* z-phi independence of the optimised and start tables */
   nl_cheng3_table *first;
   nl_status *st;
   nl_error *err;
@@ -89,8 +129,19 @@ static void seed_item(void *ctx, size_t i, int thread)
 {
   (void)thread;
   seeds_job *j = ctx;
-  j->st[i] = nl_cheng3_run(j->c, j->pat, nl_seed_replicate(j->seed, (long)i), &j->ev[i], &j->ev0[i],
-                           NULL, i ? NULL : &j->first, &j->err[i]);
+  unsigned long seed = nl_seed_replicate(j->seed, (long)i);
+  nl_cheng3_table *t = NULL;
+  j->st[i] = nl_cheng3_run(j->c, j->pat, seed, &j->ev[i], &j->ev0[i], NULL, &t, &j->err[i]);
+  if (j->st[i] != NL_OK) return;
+  c8_indep_test(t, C8_INDEP_BINS, &j->ind[i]);
+  nl_cheng3_table *t0 = nl_cheng3_table_alloc(j->c->m); /* the run's start table */
+  nl_cheng3_table_seed(t0, seed);
+  c8_indep_test(t0, C8_INDEP_BINS, &j->ind0[i]);
+  nl_cheng3_table_free(t0);
+  if (i == 0)
+    j->first = t;
+  else
+    nl_cheng3_table_free(t);
 }
 
 nl_cheng3_table *c8_seeds(nl_harness *r, const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
@@ -102,18 +153,20 @@ nl_cheng3_table *c8_seeds(nl_harness *r, const nl_cheng3_config *c, const nl_che
   nl_error *err = nl_xmalloc((size_t)k * sizeof *err);
   double t0 = nl_time_now();
   /* The k seed runs on the run's threads; rows from them in seed order. */
-  seeds_job j = { c, pat, nl_harness_seed(r), ev, ev0, NULL, st, err };
+  c8_indep *ind = nl_xmalloc(2 * (size_t)k * sizeof *ind);
+  seeds_job j = { c, pat, nl_harness_seed(r), ev, ev0, ind, ind + k, NULL, st, err };
   nl_parallel_for((size_t)k, nl_harness_threads(r), seed_item, &j);
   for (int i = 0; i < k; i++) /* the first failure in seed order, as a serial loop met it */
     if (st[i] != NL_OK) nl_harness_die(r, 1, "%s", err[i].msg);
   nl_harness_progress(r, 1.0, name);
   if (seconds) *seconds = nl_time_now() - t0;
-  summary_add(sum, name, "optimised", ev, k);
-  summary_add(sum, name, "random", ev0, k);
+  summary_add(sum, name, "optimised", ev, ind, pat, k);
+  summary_add(sum, name, "random", ev0, ind + k, pat, k);
   *start = nl_cheng3_table_alloc(c->m);
   nl_cheng3_table_seed(*start,
                        nl_seed_replicate(nl_harness_seed(r), 0)); /* the first run's start */
   free(ev);
+  free(ind);
   free(st);
   free(err);
   return j.first;

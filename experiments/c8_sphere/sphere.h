@@ -24,7 +24,14 @@
  * p_kuiper, R_rayleigh, p_rayleigh, E_con, rms_con, E, r_pattern, contrast,
  * E_con_random, E_con_const, con_vs_const (E_con / E_con_const: > 1 is
  * worse than the best constant volume), uniform (fraction of seeds with
- * p_stat >= 0.05). */
+ * p_stat >= 0.05), then E_Con's parts (nl_cheng3_eval) con_offset_frac,
+ * con_contrast_frac, con_shape_frac (each a fraction of its run's E_Con,
+ * averaged), E_con_offset (mean), mean_D (the pattern's), and the z-phi
+ * test (indep.h, C8_INDEP_BINS^2 cells): chi2_indep, p_indep (mean, min),
+ * p_indep_bonf = min(1, seeds x min p_indep) (every seed's table
+ * independent), p_indep_pooled (the seeds' chi2_indep summed against chi2
+ * with the summed df: a consistent pairing), p_joint (mean, min). */
+#define C8_INDEP_BINS 8 /* 8 x 8 cells: 8 of the M = 512 pairs expected per cell */
 nl_table *c8_summary_alloc(void);
 /* The run's seeds (nl_seed_replicate of the base seed, nl_harness_seeds of
  * them) on pat: one row for the optimised tables and one for their random

@@ -27,12 +27,6 @@ nl_table *c9_gains_alloc(int nlabels, const char *const *labels)
   return labelled_alloc(nlabels, labels, gain_cols, NGAIN);
 }
 
-nl_table *c9_timing_alloc(int nlabels, const char *const *labels)
-{
-  const char *cols[] = { "seconds_per_run" };
-  return labelled_alloc(nlabels, labels, cols, 1);
-}
-
 static size_t labelled_row(nl_table *t, int nlabels, const char *const *labels)
 {
   size_t r = nl_table_append_empty(t);
@@ -40,12 +34,62 @@ static size_t labelled_row(nl_table *t, int nlabels, const char *const *labels)
   return r;
 }
 
+static const char *const part_cols[] = {
+  "seeds",           "E_con",          "E_con_sd",          "E_con_offset",
+  "E_con_offset_sd", "E_con_contrast", "E_con_contrast_sd", "E_con_shape",
+  "E_con_shape_sd",  "octave1_share",  "octave1_share_sd"
+};
+#define NPART (sizeof part_cols / sizeof *part_cols)
+
+nl_table *c9_parts_alloc(int nlabels, const char *const *labels)
+{
+  return labelled_alloc(nlabels, labels, part_cols, NPART);
+}
+
+/* E_Con and its three parts (nl_cheng_eval): mean and sd over the k runs */
+/* and octave 1's share of the summed amplitude, 1/a_1 / sum_l 1/a_l with
+ * the run's gains (the thesis's: 0.53 for F = 4; near 1 when octave 1
+ * carries the value alone) */
+static void parts_row(nl_table *parts, int nlabels, const char *const *labels,
+                      const nl_cheng_config *c, const nl_cheng_eval *evs, int k)
+{
+  double *x = nl_xmalloc((size_t)k * sizeof *x);
+  size_t r = labelled_row(parts, nlabels, labels);
+  nl_table_set(parts, r, "seeds", k);
+  for (int part = 0; part < 4; part++) {
+    for (int q = 0; q < k; q++)
+      x[q] = part == 0   ? evs[q].e_con
+             : part == 1 ? evs[q].e_con_offset
+             : part == 2 ? evs[q].e_con_contrast
+                         : evs[q].e_con_shape;
+    nl_table_set(parts, r, part_cols[1 + 2 * part], nl_stats_mean(x, k, NL_STATS_RUNNING));
+    nl_table_set(parts, r, part_cols[2 + 2 * part], nl_stats_sd(x, k, NL_STATS_RUNNING));
+  }
+  nl_noise_octaves o = nl_noise_octaves_cheng(c->octaves, c->f1, c->a1);
+  for (int q = 0; q < k; q++) {
+    double all = 0;
+    for (int l = 0; l < c->octaves; l++) all += o.amp[l] * exp(evs[q].log_gain[l]);
+    x[q] = o.amp[0] * exp(evs[q].log_gain[0]) / all;
+  }
+  nl_table_set(parts, r, "octave1_share", nl_stats_mean(x, k, NL_STATS_RUNNING));
+  nl_table_set(parts, r, "octave1_share_sd", nl_stats_sd(x, k, NL_STATS_RUNNING));
+  free(x);
+}
+
+nl_table *c9_timing_alloc(int nlabels, const char *const *labels)
+{
+  const char *cols[] = { "seconds_per_run" };
+  return labelled_alloc(nlabels, labels, cols, 1);
+}
+
 void c9_rows(const nl_study_cheng *s, const nl_cheng_config *c, const nl_cheng_eval *evs,
-             nl_table *sum, nl_table *gains, nl_table *timing, int nlabels,
-             const char *const *labels, double *first_log_gain)
+             const c9_tables *t, int nlabels, const char *const *labels, double *first_log_gain)
 {
   int k = nl_harness_seeds(s->r);
-  nl_study_cheng_rows_add(s, sum, nlabels, labels, evs);
+  nl_table *gains = t->gains;
+  nl_table *timing = t->timing;
+  nl_study_cheng_rows_add(s, t->sum, nlabels, labels, evs);
+  parts_row(t->parts, nlabels, labels, c, evs, k);
   /* Per run, the thread CPU of its optimisation (nl_cheng_eval.cpu_seconds):
    * the runs share the cores (--threads), so wall time would not be per run. */
   double cpu = 0;
@@ -53,7 +97,7 @@ void c9_rows(const nl_study_cheng *s, const nl_cheng_config *c, const nl_cheng_e
   nl_table_set(timing, labelled_row(timing, nlabels, labels), "seconds_per_run", cpu / k);
   memcpy(first_log_gain, evs[0].log_gain, (size_t)c->octaves * sizeof *first_log_gain);
   nl_noise_octaves o = nl_noise_octaves_cheng(c->octaves, c->f1, c->a1);
-  double *a = nl_xmalloc((size_t)k * 3 * sizeof *a);   /* a_l, gain and ln gain per seed */
+  double *a = nl_xmalloc((size_t)k * 3 * sizeof *a); /* a_l, gain and ln gain per seed */
   double *g = a + k;
   double *u = g + k;
   double hi = log(c->amp_range);
@@ -78,4 +122,21 @@ void c9_rows(const nl_study_cheng *s, const nl_cheng_config *c, const nl_cheng_e
     for (size_t i = 0; i < NGAIN; i++) nl_table_set(gains, r, gain_cols[i], row[i]);
   }
   free(a);
+}
+
+void c9_tests_add(nl_table *tests, const c9_tables *t, size_t f, const char *group,
+                  const char *const *q, size_t nq)
+{
+  size_t o = f + 1, w = f + 2;
+  const char *parts[3] = { "E_con_offset", "E_con_contrast", "E_con_shape" };
+  for (size_t j = 0; j < nq; j++)
+    nl_study_cheng_welch_add(tests, t->sum, o, f, q[j], group, "optimised", "fixed");
+  for (int j = 0; j < 3; j++)
+    nl_study_cheng_welch_add(tests, t->parts, o, f, parts[j], group, "optimised", "fixed");
+  /* wide bounds against the default ones: does the optimum move with the box? */
+  const char *wq[3] = { "E_con", "contrast", "r_pattern" };
+  for (int j = 0; j < 3; j++)
+    nl_study_cheng_welch_add(tests, t->sum, w, o, wq[j], group, "optimised_wide", "optimised");
+  nl_study_cheng_welch_add(tests, t->parts, w, o, "E_con_shape", group, "optimised_wide",
+                           "optimised");
 }

@@ -6,7 +6,9 @@
  * AMPLITUDES AS VARIABLES). One pattern per texture of C1 (its first), plus
  * the two rows C1 finds worse than a flat image (cloud/star, fire/gradient):
  * fixed against optimised amplitudes, over the run's seeds, on E_KS, E_Con
- * and controllability, with Welch's t-test between the two. */
+ * (and its offset, contrast and shape parts) and controllability, with
+ * Welch's t-test between the two; and the same optimisation with the gains'
+ * bounds widened (amp_wide), to see whether the bounds set the result. */
 #include "c9.h"
 #include "study/nl_study_cheng.h"
 #include "harness/nl_harness.h"
@@ -16,6 +18,7 @@
 
 #define NCASE 6
 #define NCOL  5
+#define NCOND C9_NCOND /* fixed, optimised within [1/R, R], within the wide bounds */
 
 static const struct {
   nl_cheng_con con;
@@ -24,6 +27,7 @@ static const struct {
                    { NL_CHENG_CON_ABS, "disc" },     { NL_CHENG_CON_FIRE, "flower" },
                    { NL_CHENG_CON_PLAIN, "star" },   { NL_CHENG_CON_FIRE, "gradient" } };
 static const char *const quantities[] = { "E_ks", "E_con", "r_pattern", "contrast", "roughness" };
+static const char *const conds[NCOND] = { "fixed", "optimised", "optimised_wide" };
 
 int main(int argc, char **argv)
 {
@@ -40,57 +44,64 @@ int main(int argc, char **argv)
   double range = nl_harness_param(r, "amp_range", 4, 1, 64,
                                   "R: each optimised amplitude 1/a_l within [1/R, R] x the "
                                   "thesis's");
+  double wide = nl_harness_param(r, "amp_wide", 64, 1, 1e6,
+                                 "the wide bounds: the same optimisation with gains within "
+                                 "[1/R_wide, R_wide] (do the bounds set the result?)");
   int size = (int)nl_harness_param_int(r, "size", q ? 96 : 192, 16, 2048,
                                        "side in pixels of the value images (quick 96)");
   nl_study_cheng_ready(&s);
   const char *labels[] = { "texture", "pattern", "amplitudes" };
   nl_table *sum = nl_study_cheng_summary_alloc(3, labels);
-  nl_table *gains = c9_gains_alloc(3, labels);
-  nl_table *timing = c9_timing_alloc(3, labels);
+  c9_tables tb = { sum, c9_parts_alloc(3, labels), c9_gains_alloc(3, labels),
+                   c9_timing_alloc(3, labels) };
   nl_table *tests = nl_study_cheng_welch_alloc();
   nl_image *panels[NCOL * NCASE];
   const char *plab[NCOL * NCASE];
   char group[NCASE][48];
   /* Every case, fixed and optimised, over the seeds as one set of independent
    * runs on the run's threads (nl_study_cheng_runs); rows in case order. */
-  nl_cheng_config cs[2 * NCASE];
+  nl_cheng_config cs[NCOND * NCASE];
   nl_cheng_pattern *pats[NCASE];
-  const nl_cheng_pattern *pp[2 * NCASE];
-  nl_noise_grad2 *firsts[2 * NCASE];
+  const nl_cheng_pattern *pp[NCOND * NCASE];
+  nl_noise_grad2 *firsts[NCOND * NCASE];
   for (int i = 0; i < ncase; i++) {
-    cs[2 * i] = s.c;
-    cs[2 * i].con = cases[i].con;
-    cs[2 * i + 1] = cs[2 * i];
-    cs[2 * i + 1].amp_vary = 1;   /* the gains join the level's variables */
-    cs[2 * i + 1].amp_range = range;
-    pp[2 * i] = pp[2 * i + 1] = pats[i] = nl_study_cheng_pattern(&s, cases[i].pattern);
+    nl_cheng_config *c = cs + NCOND * i;
+    c[0] = s.c;
+    c[0].con = cases[i].con;
+    c[1] = c[2] = c[0];
+    c[1].amp_vary = c[2].amp_vary = 1; /* the gains join the level's variables */
+    c[1].amp_range = range;
+    c[2].amp_range = wide;
+    pats[i] = nl_study_cheng_pattern(&s, cases[i].pattern);
+    for (int w = 0; w < NCOND; w++) pp[NCOND * i + w] = pats[i];
   }
-  nl_cheng_eval *evs = nl_study_cheng_runs(&s, 2 * ncase, cs, pp, firsts);
+  nl_cheng_eval *evs = nl_study_cheng_runs(&s, NCOND * ncase, cs, pp, firsts);
   size_t k = (size_t)nl_harness_seeds(r);
   for (int i = 0; i < ncase; i++) {
-    size_t f = 2 * (size_t)i, o = f + 1;   /* fixed and optimised rows */
+    size_t f = NCOND * (size_t)i, o = f + 1; /* fixed and optimised rows; wide: f + 2 */
     nl_cheng_config cf = cs[f];
     nl_cheng_config co = cs[o];
     nl_cheng_pattern *pat = pats[i];
     const char *lab[3] = { nl_cheng_con_name(cf.con), cases[i].pattern, "fixed" };
-    double fixed_gain[NL_CHENG_MAX_OCTAVES];   /* not used: the amplitudes stay fixed */
-    c9_rows(&s, &cf, evs + f * k, sum, gains, timing, 3, lab, fixed_gain);
-    lab[2] = "optimised";
-    c9_rows(&s, &co, evs + o * k, sum, gains, timing, 3, lab, co.log_gain);
+    for (size_t w = 0; w < NCOND; w++) {
+      nl_cheng_config cw = cs[f + w]; /* carries the first seed's optimised gains */
+      lab[2] = conds[w];
+      c9_rows(&s, &cw, evs + (f + w) * k, &tb, 3, lab, cw.log_gain);
+      if (w == 1) co = cw;
+    }
     nl_noise_grad2 *gf = firsts[f];
     nl_noise_grad2 *go = firsts[o];
+    nl_noise_grad2_free(firsts[f + 2]);
     snprintf(group[i], sizeof group[i], "%s/%s", lab[0], lab[1]);
-    /* optimised (a) vs fixed (b) */
-    for (size_t j = 0; j < sizeof quantities / sizeof *quantities; j++)
-      nl_study_cheng_welch_add(tests, sum, o, f, quantities[j], group[i], "optimised", "fixed");
-    nl_image **p = panels + NCOL * i;   /* first seed; co carries its optimised gains */
+    c9_tests_add(tests, &tb, f, group[i], quantities, sizeof quantities / sizeof *quantities);
+    nl_image **p = panels + NCOL * i; /* first seed; co carries its optimised gains */
     p[0] = nl_study_cheng_pattern_panel(pat, size);
     p[1] = nl_study_cheng_value_image_raw(gf, &cf, size);
     p[2] = nl_study_cheng_value_image_raw(go, &co, size);
     p[3] = nl_study_cheng_value_image(gf, &cf, size);
     p[4] = nl_study_cheng_value_image(go, &co, size);
-    const char *pl[NCOL] = { group[i], "fixed, raw 0..1", "optimised, raw 0..1",
-                             "fixed, stretched", "optimised, stretched" };
+    const char *pl[NCOL] = { group[i], "fixed, raw 0..1", "optimised, raw 0..1", "fixed, stretched",
+                             "optimised, stretched" };
     for (int c = 0; c < NCOL; c++) plab[NCOL * i + c] = pl[c];
     nl_noise_grad2_free(gf);
     nl_noise_grad2_free(go);
@@ -101,18 +112,21 @@ int main(int argc, char **argv)
   nl_study_cheng_montage(r, panels, plab, NCOL * ncase, NCOL,
                          "C9: fixed vs optimised octave amplitudes (first seed)", "values.png");
   nl_harness_write_table(r, sum, "summary.tsv");
-  nl_harness_write_table(r, gains, "gains.tsv");
+  nl_harness_write_table(r, tb.parts, "parts.tsv");
+  nl_harness_write_table(r, tb.gains, "gains.tsv");
   nl_harness_write_table(r, tests, "tests.tsv");
-  nl_harness_write_table(r, timing, "timing.tsv");
-  nl_harness_check(r, "timing.tsv", "seconds_per_run", "ignore");   /* CPU time, not a result */
-  c9_intro_text(r, &s, range);
-  c9_results_text(r, sum, tests, gains, range);
+  nl_harness_write_table(r, tb.timing, "timing.tsv");
+  nl_harness_check(r, "timing.tsv", "seconds_per_run", "ignore"); /* CPU time, not a result */
+  c9_intro_text(r, &s, range, wide);
+  c9_results_text(r, &tb, tests, range);
   nl_study_cheng_control_text(r, sum, 3);
-  c9_timing_text(r, timing, ncase);
+  c9_verdicts(r, &tb, tests, ncase);
+  c9_timing_text(r, tb.timing, ncase);
   nl_table_free(sum);
-  nl_table_free(gains);
+  nl_table_free(tb.parts);
+  nl_table_free(tb.gains);
   nl_table_free(tests);
-  nl_table_free(timing);
+  nl_table_free(tb.timing);
   /* measured tolerances (nl_harness.h; data/blas_spread.tsv) */
   nl_harness_check_measured(r, "*", 100);
   return nl_harness_end(r);

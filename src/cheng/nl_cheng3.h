@@ -158,6 +158,10 @@ typedef struct {
   double rayleigh_r, p_rayleigh;   /* |mean vector|; P(chi2_3 > 3 M R^2) */
   double e_con, e, rms_con;
   double r_pattern;                /* Pearson r of c and D over the control points */
+  /* E_Con = offset + contrast + shape over the n control points (population
+   * moments, as nl_cheng_eval's): n (mean c - mean D)^2, n (sd c - sd D)^2,
+   * 2 n sd c sd D (1 - r_pattern). */
+  double e_con_offset, e_con_contrast, e_con_shape;
   double contrast;                 /* sd of c on a 32^3 raster of [0,1)^3 */
   double e_con_const;              /* sum (D_i - mean D)^2 */
   double e_con_random;             /* E_Con of the start table (NAN from _evaluate alone) */

@@ -43,8 +43,12 @@ void nl_cheng3_value_grid(const nl_noise_grad3 *t, const nl_cheng3_config *c, in
         out[((size_t)k * n + j) * n + i] = value_at(t, c, s, (i + 0.5) / n, (j + 0.5) / n, (k + 0.5) / n);
 }
 
+/* E_Con, Pearson's r of c and D and E_Con's three parts (into out):
+ *   sum (c - D)^2 = n (mc - mD)^2 + n (sc - sD)^2 + 2 n sc sD (1 - r)
+ * with population means and sds, so "worse than a flat volume" is
+ * explained by which part dominates. */
 static double control_error(const nl_noise_grad3 *t, const nl_cheng3_config *c,
-                            const nl_cheng3_pattern *pat, double *r)
+                            const nl_cheng3_pattern *pat, nl_cheng3_eval *out)
 {
   double s = scale(c), e = 0, sv = 0, sd = 0, svv = 0, sdd = 0, svd = 0, n = (double)pat->n;
   for (size_t i = 0; i < pat->n; i++) {
@@ -52,10 +56,13 @@ static double control_error(const nl_noise_grad3 *t, const nl_cheng3_config *c,
     e += d * d;
     sv += v; sd += pat->d[i]; svv += v * v; sdd += pat->d[i] * pat->d[i]; svd += v * pat->d[i];
   }
-  if (r) {
-    double cov = svd - sv * sd / n, vv = svv - sv * sv / n, dd = sdd - sd * sd / n;
-    *r = vv > 0 && dd > 0 ? cov / sqrt(vv * dd) : 0;
-  }
+  double cov = svd - sv * sd / n, vv = svv - sv * sv / n, dd = sdd - sd * sd / n;
+  double r = vv > 0 && dd > 0 ? cov / sqrt(vv * dd) : 0;
+  double sc = sqrt(fmax(vv, 0) / n), sD = sqrt(fmax(dd, 0) / n), dm = (sv - sd) / n;
+  out->r_pattern = r;
+  out->e_con_offset = n * dm * dm;
+  out->e_con_contrast = n * (sc - sD) * (sc - sD);
+  out->e_con_shape = 2 * n * sc * sD * (1 - r);
   return e;
 }
 
@@ -79,7 +86,7 @@ nl_status nl_cheng3_evaluate(const nl_noise_grad3 *t, const nl_cheng3_config *c,
   double R = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) / (double)t->m;
   out->rayleigh_r = R;
   out->p_rayleigh = gsl_cdf_chisq_Q(3 * (double)t->m * R * R, 3);   /* Rayleigh: 3 n R^2 ~ chi2_3 */
-  out->e_con = control_error(t, c, pat, &out->r_pattern);
+  out->e_con = control_error(t, c, pat, out);
   out->e = nl_cheng_objective(c, out->e_stat, out->e_con);
   out->rms_con = sqrt(out->e_con / (double)pat->n);
   double md = 0, ec = 0;

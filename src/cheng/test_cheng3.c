@@ -103,6 +103,10 @@ NL_TEST(evaluate_and_refusals)
   nl_noise_grad3_seed(t, 11);
   NL_CHECK(nl_cheng3_evaluate(t, &c, pat, &ev, &err) == NL_OK);
   NL_CHECK(ev.p_rayleigh > 0.001 && ev.p_z > 0.001 && ev.p_phi > 0.001);
+  /* E_Con's three parts add up to it (an identity of the moments: rounding only) */
+  double parts = ev.e_con_offset + ev.e_con_contrast + ev.e_con_shape;
+  NL_CHECK(fabs(parts - ev.e_con) <= 1e-10 * ev.e_con);
+  NL_CHECK(ev.e_con_offset >= 0 && ev.e_con_contrast >= 0 && ev.e_con_shape >= 0);
   c.m = 256;
   NL_CHECK(nl_cheng3_problem_alloc(&c, pat, t, &err) == NULL);
   size_t counts[3];
