@@ -28,7 +28,7 @@ done
 "$expect" "$out/control.tsv" rows=3 'n_random==99' 'p_random>=0.01' 'p_random<=1' \
   'p_random<=0.05' 'p_flat>=0' 'p_flat<=1' 'r_random_sd>0' 'r_pattern>r_random_mean' \
   'E_con_const>0' 'con_offset_frac>=0' 'con_contrast_frac>=0' 'con_shape_frac>=0'
-tsv_awk 'NR > 1 {s = n("con_offset_frac") + n("con_contrast_frac") + n("con_shape_frac")
+tsv_awk 'FNR > 1 {s = n("con_offset_frac") + n("con_contrast_frac") + n("con_shape_frac")
                  if (s < 1 - 1e-9 || s > 1 + 1e-9) {print "E_Con split sums to " s; exit 1}}' \
   "$out/control.tsv"
 # Verdicts: two independent rows per pattern (decided by p) and one

@@ -10,29 +10,27 @@
 
 void c7_text(nl_harness *r, const nl_study_cheng *s, const nl_table *sum, int mesh, double zscale)
 {
-  nl_harness_text(r,
-                  "**Thesis:** terrain from the flower, \"X\" and star patterns, height = "
-                  "controlled noise (Fig 4.15-4.17, images only). **Ours:** height = the "
-                  "controlled value c = (1 + V)/2 of the cloud variant (eq. 3.8) on a %d x %d "
-                  "mesh over the unit square, %d x %d control grid, thesis setting, %d seeds from "
-                  "the seed role %s (so these are not C1's cloud runs); relief shaded from the "
-                  "north-west with vertical exaggeration %g.\n",
-                  mesh, mesh, s->grid, s->grid, nl_harness_seeds(r), s->role, zscale);
-  nl_harness_text(r,
-                  "Headline reading: the rescaled cloud value, fixed by the thesis's own scale "
-                  "(black = 0, red = 1 in the pattern, so the height is read on D's 0..1 scale); "
-                  "the thesis prints no number for C7, so nothing could be matched to choose "
-                  "it.\n");
+  nl_harness_text(
+      r,
+      "**Thesis:** terrain from the flower, \"X\" and star patterns, height = controlled noise "
+      "(Fig 4.15-4.17, images only). **Ours:** height = the controlled value c = (1 + V)/2 of the "
+      "cloud variant (eq. 3.8) on a %d x %d mesh over the unit square, %d x %d control grid, "
+      "thesis setting, %d seeds from the seed role %s (so these are not C1's cloud runs); relief "
+      "shaded from the north-west with vertical exaggeration %g.\n",
+      mesh, mesh, s->grid, s->grid, nl_harness_seeds(r), s->role, zscale);
+  nl_harness_text(
+      r, "Headline reading: the rescaled cloud value, fixed by the thesis's own scale (black = 0, "
+         "red = 1 in the pattern, so the height is read on D's 0..1 scale); the thesis prints no "
+         "number for C7, so nothing could be matched to choose it.\n");
   nl_harness_figure(r, "heightmaps.png",
-                    "Pattern, height map on its own 0..1 scale (no stretch) and shaded relief, "
-                    "per pattern (first seed)");
+                    "Pattern, height map on its own 0..1 scale (no stretch) and shaded relief, per "
+                    "pattern (first seed)");
   nl_harness_figure(r, "terrain.png",
                     "Per pattern: the target, the height map (x, y on the unit square) and the "
                     "surface (first seed)");
-  nl_harness_report_columns(r, sum, "summary.tsv", "pattern,seeds," NL_STUDY_CHENG_STORY,
-                            "Statistics and controllability of the optimised tables (mean and "
-                            "spread over seeds)",
-                            4);
+  nl_harness_report_columns(
+      r, sum, "summary.tsv", "pattern,seeds," NL_STUDY_CHENG_STORY,
+      "Statistics and controllability of the optimised tables (mean and spread over seeds)", 4);
   nl_study_cheng_control_text(r, sum, 1);
 }
 
@@ -70,24 +68,24 @@ static void seams_text(nl_harness *r, const nl_table *t, const nl_cheng_config *
       qlo = fmin(qlo, nl_table_value(t, q, "seam_quarter"));
       qhi = fmax(qhi, nl_table_value(t, q, "seam_quarter"));
     }
-  nl_harness_report_table(r, t,
-                          "Seams: where the largest steps of the height are, per pattern "
-                          "(optimised tables) and, on the last pattern, with the control term "
-                          "off, without propagation and for the unoptimised start tables "
-                          "(means over the seeds' tables)",
-                          3);
+  nl_harness_report_table(
+      r, t,
+      "Seams: where the largest steps of the height are, per pattern (optimised tables) and, on "
+      "the last pattern, with the control term off, without propagation and for the unoptimised "
+      "start tables (means over the seeds' tables)",
+      3);
   nl_harness_text(
       r,
       "**Seams, measured** (a ratio is a boundary's mean |step| over its strip's mean; 1 = no "
-      "seam). Across the edges of the quarter [0, 1/2]^2 (x = 1/2 over y < 1/2 and y = 1/2 over "
-      "x < 1/2: the top-left quarter of the images) the optimised tables give %.2f..%.2f, against "
+      "seam). Across the edges of the quarter [0, 1/2]^2 (x = 1/2 over y < 1/2 and y = 1/2 over x "
+      "< 1/2: the top-left quarter of the images) the optimised tables give %.2f..%.2f, against "
       "%.2f across the same lines outside the quarter and %.2f at the image borders. On %s: "
       "optimised %.2f +- %.2f, %s the start tables' %.2f +- %.2f; with the control term off (w2 = "
       "0) %.2f, which the optimised value is %s; without eq. 3.13's propagation %.2f, %s the start "
       "tables'. Octave 2 alone gives %.2f across the quarter's edges (start tables %.2f). The "
       "largest boundary of the whole image (seam_ratio) is %.2f optimised, %.2f with w2 = 0 and "
-      "%.2f for the start tables. Octave 1's gradients on its lattice lines x = 0, x = 1, y = 0, "
-      "y = 1 have a mean outward component of %.2f +- %.2f, against %.2f for the start tables and "
+      "%.2f for the start tables. Octave 1's gradients on its lattice lines x = 0, x = 1, y = 0, y "
+      "= 1 have a mean outward component of %.2f +- %.2f, against %.2f for the start tables and "
       "%.2f with w2 = 0.\n",
       qlo, qhi, nl_table_value(t, o, "seam_other"), nl_table_value(t, o, "seam_border"), star,
       nl_table_value(t, o, "seam_quarter"), nl_table_value(t, o, "seam_quarter_sd"),
@@ -103,17 +101,17 @@ static void seams_text(nl_harness *r, const nl_table *t, const nl_cheng_config *
   nl_harness_text(
       r,
       "**Cause: the method's, not a bug of ours.** Eq. 3.10 sums one noise field at f_l = f1 "
-      "2^(l-1), and eq. 3.11-3.13 share its gradients between levels: lattice point (I, J) has "
-      "the same gradient in every octave, so octave l over [0, 1/2]^2 is octave l-1 over the "
-      "whole square, shrunk, and its entries are frozen at level l-1. The patterns are black at "
-      "the border; the control term turns octave 1's border gradients outward (the outward "
-      "component above), so the noise falls steeply towards each border line, and octave l "
-      "repeats octave l-1's lines x = 1 and y = 1 as the quarter's edges x = 1/2 and y = 1/2: "
-      "straight half-lines across which the height steps. The seam is on the quarter's edges, "
-      "not on the same lines outside it, so it is not the control grid (which is the same "
-      "everywhere), and not the table's wrap (the highest lattice index, %g, is below M = %zu). "
-      "Offsetting each octave's lattice would break the nesting, but that is not the thesis's "
-      "fractal sum, so the figures keep it.\n",
+      "2^(l-1), and eq. 3.11-3.13 share its gradients between levels: lattice point (I, J) has the "
+      "same gradient in every octave, so octave l over [0, 1/2]^2 is octave l-1 over the whole "
+      "square, shrunk, and its entries are frozen at level l-1. The patterns are black at the "
+      "border; the control term turns octave 1's border gradients outward (the outward component "
+      "above), so the noise falls steeply towards each border line, and octave l repeats octave "
+      "l-1's lines x = 1 and y = 1 as the quarter's edges x = 1/2 and y = 1/2: straight half-lines "
+      "across which the height steps. The seam is on the quarter's edges, not on the same lines "
+      "outside it, so it is not the control grid (which is the same everywhere), and not the "
+      "table's wrap (the highest lattice index, %g, is below M = %zu). Offsetting each octave's "
+      "lattice would break the nesting, but that is not the thesis's fractal sum, so the figures "
+      "keep it.\n",
       ceil(oc.freq[oc.n - 1]), c->m);
 }
 
@@ -129,10 +127,9 @@ void c7_control_text(nl_harness *r, const nl_table *ctl, const nl_table *seams,
     const char *p = nl_table_text(ctl, q, "pattern");
     char qty[96];
     snprintf(qty, sizeof qty, "r with the pattern vs random tables, %s", p);
-    nl_harness_verdict_p(r, "control.tsv", ctl, q, qty, claim, "r_pattern", "p_random",
-                         "p 0.01 0.05", "independent",
-                         "one-sided Monte-Carlo p of the seeds' mean r against single random "
-                         "tables from the seed");
+    nl_harness_verdict_p(
+        r, "control.tsv", ctl, q, qty, claim, "r_pattern", "p_random", "p 0.01 0.05", "independent",
+        "one-sided Monte-Carlo p of the seeds' mean r against single random tables from the seed");
     snprintf(qty, sizeof qty, "E_Con below a flat image's, %s", p);
     nl_harness_verdict_p(r, "control.tsv", ctl, q, qty, claim, "con_vs_const", "p_flat",
                          "p 0.01 0.05", "independent",
@@ -149,9 +146,9 @@ void c7_control_text(nl_harness *r, const nl_table *ctl, const nl_table *seams,
     phi = fmax(phi, nl_table_value(ctl, q, "p_random"));
   }
   nl_harness_text(r,
-                  "r with the pattern: %.3f..%.3f (seeds' means) against random tables' r of "
-                  "mean %.3f, sd %.3f (first row; %g tables per pattern): Monte-Carlo p "
-                  "%.3g..%.3g (the smallest possible is %.3g).\n",
+                  "r with the pattern: %.3f..%.3f (seeds' means) against random tables' r of mean "
+                  "%.3f, sd %.3f (first row; %g tables per pattern): Monte-Carlo p %.3g..%.3g (the "
+                  "smallest possible is %.3g).\n",
                   rlo, rhi, nl_table_value(ctl, 0, "r_random_mean"),
                   nl_table_value(ctl, 0, "r_random_sd"), nl_table_value(ctl, 0, "n_random"), plo,
                   phi, 1 / (1 + nl_table_value(ctl, 0, "n_random")));
