@@ -27,7 +27,8 @@ done
 # image (one-sided t over the seeds; E_Con's three parts sum to it).
 "$expect" "$out/control.tsv" rows=3 'n_random==99' 'p_random>=0.01' 'p_random<=1' \
   'p_random<=0.05' 'p_flat>=0' 'p_flat<=1' 'r_random_sd>0' 'r_pattern>r_random_mean' \
-  'E_con_const>0' 'con_offset_frac>=0' 'con_contrast_frac>=0' 'con_shape_frac>=0'
+  'E_con_const>0' 'con_offset_frac>=0' 'con_contrast_frac>=0' 'con_shape_frac>=0' 'mean_D>0' \
+  'mean_D<1' 'offset_abs>=0'
 tsv_awk 'FNR > 1 {s = n("con_offset_frac") + n("con_contrast_frac") + n("con_shape_frac")
                  if (s < 1 - 1e-9 || s > 1 + 1e-9) {print "E_Con split sums to " s; exit 1}}' \
   "$out/control.tsv"

@@ -225,7 +225,9 @@ double nl_study_t_below_p(const double *x, size_t k, double mu);
  * (nl_study_t_below_p of the seeds' E_con against E_con_const: better than a
  * flat image), and E_Con's split (nl_cheng_eval) as fractions of the seeds'
  * summed E_Con: con_offset_frac (mean offset), con_contrast_frac (sd
- * mismatch), con_shape_frac (1 - r). _add: the row of config c on pat from
+ * mismatch), con_shape_frac (1 - r), then mean_D (the pattern's mean target)
+ * and offset_abs (|mean c - mean D| over the points, mean over the seeds).
+ * _add: the row of config c on pat from
  * the run's k evaluations evs (nl_study_cheng_runs), random tables from
  * `seed`; r_random (may be NULL) gets the n_random null values. */
 nl_table *nl_study_cheng_control_alloc(int nlabels, const char *const *labels);

@@ -80,7 +80,7 @@ double nl_study_t_below_p(const double *x, size_t k, double mu)
 static const char *const control_cols[] = {
   "seeds", "r_pattern", "r_random_mean", "r_random_sd", "n_random", "p_random", "E_con",
   "E_con_const", "con_vs_const", "p_flat", "con_offset_frac", "con_contrast_frac",
-  "con_shape_frac",
+  "con_shape_frac", "mean_D", "offset_abs",
 };
 #define NCTL (sizeof control_cols / sizeof *control_cols)
 
@@ -128,6 +128,13 @@ void nl_study_cheng_control_add(const nl_study_cheng *s, nl_table *t, int nlabel
   row[q++] = all > 0 ? off / all : 0;
   row[q++] = all > 0 ? con / all : 0;
   row[q++] = all > 0 ? shp / all : 0;
+  /* the offset's size: the pattern's mean D and |mean c - mean D| (from
+   * E_Con's offset part, n (mean c - mean D)^2), mean over the seeds */
+  double md = 0, oa = 0;
+  for (size_t i = 0; i < pat->n; i++) md += pat->d[i] / (double)pat->n;
+  for (int i = 0; i < k; i++) oa += sqrt(evs[i].e_con_offset / (double)pat->n) / k;
+  row[q++] = md;
+  row[q++] = oa;
   size_t rr = nl_table_append_empty(t);
   for (size_t i = 0; i < NCTL; i++) nl_table_set(t, rr, control_cols[i], row[i]);
   for (int i = 0; i < nlabels; i++) nl_table_set_text(t, rr, t->names[i], labels[i]);
