@@ -44,7 +44,8 @@ tsv_awk 'NR > 1 && v("kind") == "independent" {i++}
 # controls' border gradients are not turned outward (measured -0.09..0.06 at
 # --quick against 0.27..0.38 optimised, 0.85 at paper scale).
 "$expect" "$out/seams.tsv" rows=6 'tables==3' 'seam_ratio>1' 'seam_quarter>0' 'seam_other>0' \
-  'seam_border>0' 'seam_octave2>0' 'border_outward>=-1' 'border_outward<=1'
+  'seam_border>0' 'seam_octave1>0' 'seam_octave2>0' 'seam_octave4>0' 'border_outward>=-1' \
+  'border_outward<=1'
 tsv_awk 'NR > 1 && v("tables_from") == "optimised" {o[++no] = n("border_outward")}
          NR > 1 && v("tables_from") == "start table" {s = n("border_outward")}
          END {for (i = 1; i <= no; i++)

@@ -74,6 +74,16 @@ static void seams_text(nl_harness *r, const nl_table *t, const nl_cheng_config *
       "the last pattern, with the control term off, without propagation and for the unoptimised "
       "start tables (means over the seeds' tables)",
       3);
+  /* each octave alone across the quarter's edges: optimised, start tables */
+  char oo[96] = "", os[96] = "";
+  for (int l = 1; l <= NL_STUDY_CHENG_SEAM_OCTAVES; l++) {
+    char col[32];
+    snprintf(col, sizeof col, "seam_octave%d", l);
+    snprintf(oo + strlen(oo), sizeof oo - strlen(oo), "%s%.2f", l > 1 ? ", " : "",
+             nl_table_value(t, o, col));
+    snprintf(os + strlen(os), sizeof os - strlen(os), "%s%.2f", l > 1 ? ", " : "",
+             nl_table_value(t, st, col));
+  }
   nl_harness_text(
       r,
       "**Seams, measured** (a ratio is a boundary's mean |step| over its strip's mean; 1 = no "
@@ -82,17 +92,17 @@ static void seams_text(nl_harness *r, const nl_table *t, const nl_cheng_config *
       "%.2f across the same lines outside the quarter and %.2f at the image borders. On %s: "
       "optimised %.2f +- %.2f, %s the start tables' %.2f +- %.2f; with the control term off (w2 = "
       "0) %.2f, which the optimised value is %s; without eq. 3.13's propagation %.2f, %s the start "
-      "tables'. Octave 2 alone gives %.2f across the quarter's edges (start tables %.2f). The "
-      "largest boundary of the whole image (seam_ratio) is %.2f optimised, %.2f with w2 = 0 and "
-      "%.2f for the start tables. Octave 1's gradients on its lattice lines x = 0, x = 1, y = 0, y "
-      "= 1 have a mean outward component of %.2f +- %.2f, against %.2f for the start tables and "
-      "%.2f with w2 = 0.\n",
+      "tables'. Octaves 1, 2, 3, 4 alone give %s across the quarter's edges (start tables %s); "
+      "octave 1 is the only one that holds no copy of a coarser octave. The largest boundary of "
+      "the whole image (seam_ratio) is %.2f optimised, %.2f with w2 = 0 and %.2f for the start "
+      "tables. Octave 1's gradients on its lattice lines x = 0, x = 1, y = 0, y = 1 have a mean "
+      "outward component of %.2f +- %.2f, against %.2f for the start tables and %.2f with w2 = "
+      "0.\n",
       qlo, qhi, nl_table_value(t, o, "seam_other"), nl_table_value(t, o, "seam_border"), star,
       nl_table_value(t, o, "seam_quarter"), nl_table_value(t, o, "seam_quarter_sd"),
       above(t, o, st), nl_table_value(t, st, "seam_quarter"),
       nl_table_value(t, st, "seam_quarter_sd"), nl_table_value(t, w, "seam_quarter"),
-      above(t, o, w), nl_table_value(t, np, "seam_quarter"), above(t, np, st),
-      nl_table_value(t, o, "seam_octave2"), nl_table_value(t, st, "seam_octave2"),
+      above(t, o, w), nl_table_value(t, np, "seam_quarter"), above(t, np, st), oo, os,
       nl_table_value(t, o, "seam_ratio"), nl_table_value(t, w, "seam_ratio"),
       nl_table_value(t, st, "seam_ratio"), nl_table_value(t, o, "border_outward"),
       nl_table_value(t, o, "border_outward_sd"), nl_table_value(t, st, "border_outward"),
@@ -174,13 +184,13 @@ void c7_control_text(nl_harness *r, const nl_table *ctl, const nl_table *seams,
       concordant &= dg * df > 0;
     }
   nl_harness_text(r,
-                  "The mean offset: the patterns' mean target D is %s, the optimised tables' "
-                  "|mean c - mean D| %s, against |1/2 - mean D| = %s for a value whose mean "
-                  "stays at the cloud value's zero-noise 1/2. %s\n",
+                  "The mean offset: the patterns' mean target D is %s, the optimised tables' |mean "
+                  "c - mean D| %s, against |1/2 - mean D| = %s for a value whose mean stays at the "
+                  "cloud value's zero-noise 1/2. %s\n",
                   md, oa, gap,
-                  concordant ? "The further a pattern's mean is from 1/2, the larger the "
-                               "offset's share of E_Con (in every pair of patterns)."
-                             : "The offset's share of E_Con does not order the patterns as "
-                               "their distance from 1/2 does.");
+                  concordant ? "The further a pattern's mean is from 1/2, the larger the offset's "
+                               "share of E_Con (in every pair of patterns)."
+                             : "The offset's share of E_Con does not order the patterns as their "
+                               "distance from 1/2 does.");
   seams_text(r, seams, c);
 }

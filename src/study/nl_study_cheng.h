@@ -251,18 +251,21 @@ int nl_study_cheng_flat_text(nl_harness *r, const nl_table *ctl, int nlabels);
  *   quarter   across those two half-lines (the quarter's edges);
  *   other     across x = 1/2 over y > 1/2 and y = 1/2 over x > 1/2 (no copy);
  *   border    across the first and last column and row boundaries;
- *   octave2_quarter  `quarter` for octave 2 alone (NAN when F < 2);
+ *   octave_quarter   `quarter` for octave l + 1 alone, l < 4 (NAN past F);
  *   outward   the mean outward component (-gx at x = 0, gx at x = 1, -gy, gy)
  *             of the unit gradients on octave 1's border lattice lines (0 for
  *             a random table; 1 for gradients all pointing out). */
+#define NL_STUDY_CHENG_SEAM_OCTAVES 4
 typedef struct {
-  double quarter, other, border, octave2_quarter, outward;
+  double quarter, other, border, outward;
+  double octave_quarter[NL_STUDY_CHENG_SEAM_OCTAVES];
 } nl_study_cheng_seams;
 void nl_study_cheng_seams_measure(const nl_noise_grad2 *g, const nl_cheng_config *c,
                                   nl_study_cheng_seams *out);
 /* A table of nlabels label columns, then tables, seam_ratio (nl_cheng_eval's:
  * the largest boundary over the mean), seam_quarter, seam_quarter_sd,
- * seam_other, seam_border, seam_octave2, border_outward, border_outward_sd:
+ * seam_other, seam_border, seam_octave1 .. seam_octave4 (octave_quarter),
+ * border_outward, border_outward_sd:
  * _add appends the means (and sds) over n tables evaluated under config c
  * on pattern pat. */
 nl_table *nl_study_cheng_seams_alloc(int nlabels, const char *const *labels);

@@ -186,12 +186,13 @@ void nl_study_cheng_seams_measure(const nl_noise_grad2 *g, const nl_cheng_config
                  boundary_ratio(v, n, 1, 0, 0, n) + boundary_ratio(v, n, 1, n - 2, 0, n)) /
                 4;
   nl_noise_octaves o = nl_cheng_octaves(c);
-  out->octave2_quarter = NAN;
-  if (o.n >= 2) {
-    double f = o.freq[1], other;
+  for (int l = 0; l < NL_STUDY_CHENG_SEAM_OCTAVES; l++) {
+    out->octave_quarter[l] = NAN;
+    if (l >= o.n) continue;
+    double f = o.freq[l], other;
     for (int y = 0; y < n; y++)
       nl_noise_grad2_row(g, f * 0.5 / n, f / n, f * (y + 0.5) / n, (size_t)n, v + (size_t)y * n);
-    midlines(v, n, &out->octave2_quarter, &other);
+    midlines(v, n, &out->octave_quarter[l], &other);
   }
   free(v);
   /* The outward component of octave 1's unit gradients on the lines x = 0,
@@ -208,8 +209,9 @@ void nl_study_cheng_seams_measure(const nl_noise_grad2 *g, const nl_cheng_config
 }
 
 static const char *const seam_cols[] = {
-  "tables",      "seam_ratio",   "seam_quarter",   "seam_quarter_sd",   "seam_other",
-  "seam_border", "seam_octave2", "border_outward", "border_outward_sd",
+  "tables",       "seam_ratio",   "seam_quarter", "seam_quarter_sd", "seam_other",
+  "seam_border",  "seam_octave1", "seam_octave2", "seam_octave3",    "seam_octave4",
+  "border_outward", "border_outward_sd",
 };
 #define NSEAM (sizeof seam_cols / sizeof *seam_cols)
 
@@ -226,7 +228,7 @@ void nl_study_cheng_seams_add(nl_table *t, int nlabels, const char *const *label
                               const nl_cheng_config *c, const nl_cheng_pattern *pat)
 {
   double *q = nl_xmalloc((size_t)n * sizeof *q), *w = nl_xmalloc((size_t)n * sizeof *w);
-  double other = 0, border = 0, oct2 = 0, ratio = 0;
+  double other = 0, border = 0, oct[NL_STUDY_CHENG_SEAM_OCTAVES] = { 0 }, ratio = 0;
   for (int i = 0; i < n; i++) {
     nl_cheng_eval ev;
     nl_error err;
@@ -238,7 +240,7 @@ void nl_study_cheng_seams_add(nl_table *t, int nlabels, const char *const *label
     w[i] = s.outward;
     other += s.other / n;
     border += s.border / n;
-    oct2 += s.octave2_quarter / n;
+    for (int l = 0; l < NL_STUDY_CHENG_SEAM_OCTAVES; l++) oct[l] += s.octave_quarter[l] / n;
   }
   double row[NSEAM] = { n,
                         ratio,
@@ -246,7 +248,10 @@ void nl_study_cheng_seams_add(nl_table *t, int nlabels, const char *const *label
                         n > 1 ? nl_stats_sd(q, (size_t)n, NL_STATS_RUNNING) : 0,
                         other,
                         border,
-                        oct2,
+                        oct[0],
+                        oct[1],
+                        oct[2],
+                        oct[3],
                         nl_stats_mean(w, (size_t)n, NL_STATS_RUNNING),
                         n > 1 ? nl_stats_sd(w, (size_t)n, NL_STATS_RUNNING) : 0 };
   size_t r = nl_table_append_empty(t);
