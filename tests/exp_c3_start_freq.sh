@@ -15,3 +15,24 @@ same_on_one_thread "$exp" "$out" --patterns "$pat"
   image:panels.png
 awk -F'\t' 'NR==1{for(i=1;i<=NF;i++) col[$i]=i; next}
   NR>2 && !($col["roughness"] > prev){print "roughness not increasing with f1 at row " NR; exit 1} {prev=$col["roughness"]}' "$out/summary.tsv"
+# The trend test: Spearman's rho of roughness on f1 with a one-sided
+# permutation p (9999 permutations, p in [1/10000, 1]), for the optimised
+# tables (12 runs) and 10 random tables per f1 (40); measured rho 0.97 and
+# 0.97, p = 0.0001 for both at --quick: every table's roughness rises with f1.
+"$expect" "$out/trend_test.tsv" rows=2 'n_perm==9999' 'p_perm>=0.0001' 'p_perm<=0.01' 'rho>0.8' \
+  'rho<=1' 'slope>0'
+# Per f1: optimised against random roughness (measured ratio 0.993..1.007, no
+# Welch p below 0.5 at --quick); the ratio is the two means' quotient.
+"$expect" "$out/trend.tsv" rows=4 'seeds==3' 'n_random==10' 'p_welch>=0' 'p_welch<=1' 'ratio>0.8' \
+  'ratio<1.25'
+tsv_awk 'NR > 1 {q = n("roughness") / n("roughness_random")
+                 d = q - n("ratio")
+                 if (d > 1e-9 || d < -1e-9) {print "ratio: " $0; exit 1}}' \
+  "$out/trend.tsv"
+# One verdict, independent, decided by the trend test.
+"$expect" "$out/verdicts.tsv" rows=1
+tsv_awk 'NR > 1 && (v("kind") != "independent" || v("rule") != "p 0.01 0.05") {print; exit 1}' \
+  "$out/verdicts.tsv"
+# Seams per f1: the first seed's table and its start table.
+"$expect" "$out/seams.tsv" rows=8 'tables==1' 'seam_ratio>1' 'border_outward>=-1' \
+  'border_outward<=1'

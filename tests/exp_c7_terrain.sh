@@ -21,3 +21,33 @@ for p in flower x star; do "$expect" "$out/pattern_$p.tsv" rows=64 'c0>=0' 'c63<
 for p in flower x star; do
   "$expect" "$out/height_$p.tsv" rows=48 'c0>=0' 'c0<=1' 'c47>=0' 'c47<=1'
 done
+# "The height follows the pattern", per pattern: r against 99 random tables
+# (Monte-Carlo p in [1/100, 1]; measured r 0.29..0.38 against random tables'
+# 0.00 +- 0.07 at --quick, p = 0.01 for all three) and E_Con against the flat
+# image (one-sided t over the seeds; E_Con's three parts sum to it).
+"$expect" "$out/control.tsv" rows=3 'n_random==99' 'p_random>=0.01' 'p_random<=1' \
+  'p_random<=0.05' 'p_flat>=0' 'p_flat<=1' 'r_random_sd>0' 'r_pattern>r_random_mean' \
+  'E_con_const>0' 'con_offset_frac>=0' 'con_contrast_frac>=0' 'con_shape_frac>=0' 'mean_D>0' \
+  'mean_D<1' 'offset_abs>=0'
+tsv_awk 'FNR > 1 {s = n("con_offset_frac") + n("con_contrast_frac") + n("con_shape_frac")
+                 if (s < 1 - 1e-9 || s > 1 + 1e-9) {print "E_Con split sums to " s; exit 1}}' \
+  "$out/control.tsv"
+# Verdicts: two independent rows per pattern (decided by p) and one
+# qualitative row for the figure.
+tsv_awk 'NR > 1 && v("kind") == "independent" {i++}
+         NR > 1 && v("kind") == "qualitative" {q++}
+         END {if (i != 6 || q != 1) {print "verdicts: " i " independent, " q " qualitative"
+                                     exit 1}}' \
+  "$out/verdicts.tsv"
+# Seams: 3 patterns' optimised tables, then w2 = 0, no propagation and the
+# start tables on star; ratios positive, outward components in [-1, 1]; the
+# controls' border gradients are not turned outward (measured -0.09..0.06 at
+# --quick against 0.27..0.38 optimised, 0.85 at paper scale).
+"$expect" "$out/seams.tsv" rows=6 'tables==3' 'seam_ratio>1' 'seam_quarter>0' 'seam_other>0' \
+  'seam_border>0' 'seam_octave1>0' 'seam_octave2>0' 'seam_octave4>0' 'border_outward>=-1' \
+  'border_outward<=1'
+tsv_awk 'NR > 1 && v("tables_from") == "optimised" {o[++no] = n("border_outward")}
+         NR > 1 && v("tables_from") == "start table" {s = n("border_outward")}
+         END {for (i = 1; i <= no; i++)
+                if (!(o[i] > s)) {print "outward not above start"; exit 1}}' \
+  "$out/seams.tsv"

@@ -20,10 +20,31 @@ nl_table *c1_cost_alloc(void);
  * its table and a sentence formatted from it into the report. */
 void c1_cost_report(nl_harness *r, const nl_table *t);
 
+/* "The texture follows the pattern", pooled over a texture's np patterns:
+ * columns texture, patterns, seeds, r_pattern (the patterns' mean of the
+ * seeds' mean r), r_random_mean, r_random_sd, n_random, p_random
+ * (nl_study_mc_p_greater against the patterns' mean r of one random table
+ * each: nulls[p] holds pattern p's nrand values), E_con (mean over the
+ * seeds of the patterns' summed E_Con), E_con_const (the summed flat
+ * images'), con_vs_const, p_flat (nl_study_t_below_p over the seeds) and
+ * E_Con's split as fractions (con_offset_frac, con_contrast_frac,
+ * con_shape_frac). evs[p]: pattern p's k evaluations. */
+nl_table *c1_claims_alloc(void);
+void c1_claims_add(nl_table *t, const char *texture, int np, int k, const nl_cheng_eval *const *evs,
+                   const double *const *nulls, int nrand);
+/* The seams row (texture, pattern, "start table") of the first seed's
+ * unoptimised start table under config c on pat. */
+void c1_seams_start(const nl_study_cheng *s, nl_table *seams, const nl_cheng_config *c,
+                    const nl_cheng_pattern *pat, const char *pattern);
+/* The claims' verdicts (two per texture, independent; one qualitative row
+ * per texture's figure TEXTURE.png), the per-case control table and E_Con's
+ * split, and the seams of the first seed's textures. */
+void c1_control_text(nl_harness *r, const nl_table *claims, const nl_table *ctl,
+                     const nl_table *seams);
+
 /* Texture t's figure (Fig 4.(t+1)): its caption, control term `con` by
  * equation `equation`, image `file`. */
-void c1_figure_text(nl_harness *r, int t, nl_cheng_con con, const char *equation,
-                    const char *file);
+void c1_figure_text(nl_harness *r, int t, nl_cheng_con con, const char *equation, const char *file);
 /* The thesis's claim, our setting (c), the summary table, controllability,
  * marble's gain and uniformity. */
 void c1_text(nl_harness *r, const nl_table *sum, const nl_cheng_config *c, int grid);

@@ -3,7 +3,9 @@
  * (eq. 3.8, 4.1, 4.2, 4.3); one montage per texture: pattern | controlled
  * value without and with the display stretch | texture | the literal
  * formula's value. Each panel also runs with the thesis's formulas taken
- * literally (V unscaled: c = V, sin V, |V|), the reading beside ours. */
+ * literally (V unscaled: c = V, sin V, |V|), the reading beside ours.
+ * "The texture follows the pattern" is decided per texture (claims.tsv,
+ * control.c) by r against random tables and E_Con against flat images. */
 #include "c1.h"
 #include "study/nl_study_cheng.h"
 #include "harness/nl_harness.h"
@@ -13,7 +15,7 @@
 
 #define NTEX 4
 #define NPAT 3
-#define NCOL 5   /* panels per pattern */
+#define NCOL 5 /* panels per pattern */
 
 /* Per texture, in nl_cheng_con's order (cloud, marble, erosion, fire): its
  * patterns and its control term's equation. */
@@ -35,6 +37,10 @@ int main(int argc, char **argv)
   int size = (int)nl_harness_param_int(r, "size", nl_harness_quick(r) ? 128 : 256, 16, 2048,
                                        "side in pixels of the texture and control-value images "
                                        "(quick 128)");
+  int nrand =
+      (int)nl_harness_param_int(r, "random_tables", nl_harness_quick(r) ? 99 : 999, 9, 1000000,
+                                "random (unoptimised) tables per case: the null "
+                                "distribution of r with the pattern (quick 99)");
   nl_study_cheng_ready(&s);
   const nl_cheng_config base = s.c;
   int k = nl_harness_seeds(r);
@@ -51,7 +57,7 @@ int main(int argc, char **argv)
   nl_noise_grad2 *firsts[NCASE];
   for (int i = 0; i < NTEX * NPAT; i++) {
     cs[2 * i] = base;
-    cs[2 * i].con = (nl_cheng_con)(i / NPAT);   /* eq. 3.8, 4.1, 4.2, 4.3 */
+    cs[2 * i].con = (nl_cheng_con)(i / NPAT); /* eq. 3.8, 4.1, 4.2, 4.3 */
     cs[2 * i + 1] = cs[2 * i];
     cs[2 * i + 1].literal = 1;
     pats[i] = nl_study_cheng_pattern(&s, patterns[i / NPAT][i % NPAT]);
@@ -59,11 +65,34 @@ int main(int argc, char **argv)
     pp[2 * i + 1] = pats[i];
   }
   nl_cheng_eval *evs = nl_study_cheng_runs(&s, NCASE, cs, pp, firsts);
+  nl_table *ctl = nl_study_cheng_control_alloc(3, labels), *claims = c1_claims_alloc();
+  const char *slabels[] = { "texture", "pattern", "tables_from" };
+  nl_table *seams = nl_study_cheng_seams_alloc(3, slabels);
+  double *nulls = nl_xmalloc((size_t)NCASE * (size_t)nrand * sizeof *nulls);
   for (int i = 0; i < NCASE; i++) {
     const char *lab[3] = { nl_cheng_con_name(cs[i].con), patterns[i / 2 / NPAT][i / 2 % NPAT],
                            formula[i % 2] };
     nl_study_cheng_rows_add(&s, sum, 3, lab, evs + (size_t)i * k);
+    unsigned long rs = nl_seed_stream(nl_harness_seed(r), "c1.random_r", (unsigned long)i);
+    nl_study_cheng_control_add(&s, ctl, 3, lab, &cs[i], pp[i], evs + (size_t)i * k, nrand, rs,
+                               nulls + (size_t)i * nrand);
+    const char *sl[3] = { lab[0], lab[1], "optimised" };
+    if (i % 2 == 0) /* the headline (rescaled) cases' first-seed tables */
+      nl_study_cheng_seams_add(seams, 3, sl, (const nl_noise_grad2 *const *)&firsts[i], 1, &cs[i],
+                               pp[i]);
   }
+  c1_seams_start(&s, seams, &cs[0], pp[0], patterns[0][0]);
+  /* the verdicts' tests: each texture over its patterns, headline formula */
+  for (int t = 0; t < NTEX; t++) {
+    const nl_cheng_eval *e[NPAT];
+    const double *nl[NPAT];
+    for (int j = 0; j < NPAT; j++) {
+      e[j] = evs + (size_t)(2 * (t * NPAT + j)) * k;
+      nl[j] = nulls + (size_t)(2 * (t * NPAT + j)) * nrand;
+    }
+    c1_claims_add(claims, nl_cheng_con_name(cs[2 * NPAT * t].con), NPAT, k, e, nl, nrand);
+  }
+  free(nulls);
   free(evs);
 
   /* Fig 4.1-4.4, one montage per texture, first seed: pattern | value on its
@@ -98,10 +127,17 @@ int main(int argc, char **argv)
     c1_figure_text(r, t, c.con, equation[t], file);
   }
   nl_harness_write_table(r, sum, "summary.tsv");
+  nl_harness_write_table(r, ctl, "control.tsv");
+  nl_harness_write_table(r, claims, "claims.tsv");
+  nl_harness_write_table(r, seams, "seams.tsv");
   c1_text(r, sum, &base, s.grid);
+  c1_control_text(r, claims, ctl, seams);
+  nl_table_free(ctl);
+  nl_table_free(claims);
+  nl_table_free(seams);
   c1_cost_report(r, s.cost);
   nl_table_free(s.cost);
   nl_table_free(sum);
-  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);
 }

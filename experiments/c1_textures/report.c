@@ -3,10 +3,12 @@
 #include "c1.h"
 #include "harness/nl_harness.h"
 
+#include <gsl/gsl_statistics_double.h>
+#include <math.h>
 #include <stdio.h>
+#include <string.h>
 
-void c1_figure_text(nl_harness *r, int t, nl_cheng_con con, const char *equation,
-                    const char *file)
+void c1_figure_text(nl_harness *r, int t, nl_cheng_con con, const char *equation, const char *file)
 {
   char cap[256];
   snprintf(cap, sizeof cap,
@@ -25,29 +27,31 @@ static void marble_text(nl_harness *r, const nl_cheng_config *c)
   double asum = 0;
   for (int l = 0; l < o.n; l++) asum += o.amp[l];
   double gain = NL_PI / (NL_NOISE2_BOUND * asum);
-  nl_harness_text(r,
-                  "Marble's control term: the rescaled sine's argument is pi V = %.3g F_sum (V = "
-                  "F_sum over its bound), %.2fx eq. 4.1's literal sin(F_sum); after (1 + sin)/2 "
-                  "the slope of c at F_sum = 0 is %.3g, against 1 for the literal sin and %.3g for "
-                  "the rescaled cloud term (1 + V)/2. Much of marble's r rests on this gain: "
-                  "compare its literal rows.\n",
-                  gain, gain, gain / 2, gain / (2 * NL_PI));
+  nl_harness_text(
+      r,
+      "Marble's control term: the rescaled sine's argument is pi V = %.3g F_sum (V = F_sum over "
+      "its bound), %.2fx eq. 4.1's literal sin(F_sum); after (1 + sin)/2 the slope of c at F_sum = "
+      "0 is %.3g, against 1 for the literal sin and %.3g for the rescaled cloud term (1 + V)/2. "
+      "Much of marble's r rests on this gain: compare its literal rows.\n",
+      gain, gain, gain / 2, gain / (2 * NL_PI));
 }
 
 void c1_text(nl_harness *r, const nl_table *sum, const nl_cheng_config *c, int grid)
 {
-  nl_harness_text(r,
-                  "**Thesis:** three patterns per texture (images only); cloud, erosion and fire "
-                  "blend two colours with the noise value as alpha, marble goes through a sine; "
-                  "the control term follows the texture (eq. 3.8, 4.1, 4.2, 4.3). **Ours:** %d x "
-                  "%d control grid, thesis setting (F = %d, f1 = %g, a1 = %g, w1 = %g, w2 = %g), "
-                  "%d seeds per row. Formula \"rescaled\" (our headline reading): c = (1 + V)/2, "
-                  "(1 + sin(pi V))/2, |V| or the octave sum of |noise| over its bound, V = the "
-                  "fractal sum over its analytic bound (nl_cheng.h); \"literal\": the thesis's "
-                  "formulas as printed, c = V, sin V, |V|, sum |noise| / a with V unscaled (E_Con "
-                  "= sum (c - D)^2 either way). Images stretch each value's 1st..99th percentile "
-                  "to 0..1 except the \"no stretch\" panel.\n",
-                  grid, grid, c->octaves, c->f1, c->a1, c->w1, c->w2, nl_harness_seeds(r));
+  nl_harness_text(
+      r,
+      "**Thesis:** three patterns per texture (images only); cloud, erosion and fire blend two "
+      "colours with the noise value as alpha, marble goes through a sine; the control term follows "
+      "the texture (eq. 3.8, 4.1, 4.2, 4.3). **Ours:** %d x %d control grid, thesis setting (F = "
+      "%d, f1 = %g, a1 = %g, w1 = %g, w2 = %g), %d seeds per row. Formula \"rescaled\" (our "
+      "headline reading): c = (1 + V)/2, (1 + sin(pi V))/2, |V| or the octave sum of |noise| over "
+      "its bound, V = the fractal sum over its analytic bound (nl_cheng.h); \"literal\": the "
+      "thesis's formulas as printed, c = V, sin V, |V|, sum |noise| / a with V unscaled (E_Con = "
+      "sum (c - D)^2 either way). Images stretch each value's 1st..99th percentile to 0..1 except "
+      "the \"no stretch\" panel. The headline is fixed by the thesis's own scale (black = 0, red = "
+      "1, so c is read on D's 0..1 scale); the thesis prints no number for C1, so nothing could be "
+      "matched to choose it.\n",
+      grid, grid, c->octaves, c->f1, c->a1, c->w1, c->w2, nl_harness_seeds(r));
   nl_harness_report_columns(r, sum, "summary.tsv",
                             "texture,pattern,formula,seeds," NL_STUDY_CHENG_STORY,
                             "Per texture, pattern and formula: statistics and controllability of "
@@ -61,4 +65,126 @@ void c1_text(nl_harness *r, const nl_table *sum, const nl_cheng_config *c, int g
                   "Uniformity: the smallest fraction of runs not rejected as non-uniform at alpha "
                   "= 0.05 is %.2f (KS) and %.2f (Kuiper) over the %zu rows.\n",
                   wks, wku, sum->nrows);
+}
+
+/* lo..hi of column col over the rows of t whose tables_from is `from` */
+static void seam_range(const nl_table *t, const char *from, const char *col, double *lo, double *hi)
+{
+  *lo = INFINITY;
+  *hi = -INFINITY;
+  for (size_t q = 0; q < t->nrows; q++)
+    if (!strcmp(nl_table_text(t, q, "tables_from"), from)) {
+      *lo = fmin(*lo, nl_table_value(t, q, col));
+      *hi = fmax(*hi, nl_table_value(t, q, col));
+    }
+}
+
+static void seams_text(nl_harness *r, const nl_table *t)
+{
+  nl_harness_report_table(
+      r, t,
+      "Seams of the first seed's textures (headline formula) and of its unoptimised start table "
+      "(nl_study_cheng.h: ratios of a boundary's mean |step| to its strip's mean, 1 = no seam)",
+      3);
+  double q0, q1, o0, o1, b0, b1, w0, w1, s0, s1;
+  seam_range(t, "optimised", "seam_quarter", &q0, &q1);
+  seam_range(t, "optimised", "seam_other", &o0, &o1);
+  seam_range(t, "optimised", "seam_border", &b0, &b1);
+  seam_range(t, "optimised", "border_outward", &w0, &w1);
+  seam_range(t, "optimised", "seam_ratio", &s0, &s1);
+  size_t st = t->nrows - 1; /* the start table's row comes last */
+  int more = 0, n = (int)st;
+  double *qv = nl_xmalloc(st * sizeof *qv), *wv = nl_xmalloc(st * sizeof *wv);
+  for (size_t q = 0; q < st; q++) {
+    more += nl_table_value(t, q, "seam_quarter") > nl_table_value(t, q, "seam_other");
+    qv[q] = nl_table_value(t, q, "seam_quarter");
+    wv[q] = nl_table_value(t, q, "border_outward");
+  }
+  /* per texture (rows come texture by texture, its patterns together): the
+   * means of the quarter's seam and of the outward component */
+  char per[512] = "";
+  for (size_t q = 0; q < st;) {
+    const char *tex = nl_table_text(t, q, "texture");
+    double sq = 0, sw = 0;
+    int m = 0;
+    for (; q < st && !strcmp(nl_table_text(t, q, "texture"), tex); q++, m++) {
+      sq += qv[q];
+      sw += wv[q];
+    }
+    size_t used = strlen(per);
+    snprintf(per + used, sizeof per - used, "%s%s %.2f, %.2f", used ? "; " : "", tex, sq / m,
+             sw / m);
+  }
+  double rq = gsl_stats_correlation(wv, 1, qv, 1, st);
+  nl_harness_text(
+      r,
+      "Seams: across the edges of the quarter [0, 1/2]^2 (x = 1/2 over y < 1/2, y = 1/2 over x < "
+      "1/2: the top-left quarter of the images) the textures' value steps %.2f..%.2f x its strip's "
+      "mean, across the same lines outside the quarter %.2f..%.2f, at the borders %.2f..%.2f; the "
+      "start table gives %.2f, %.2f and %.2f. The largest boundary (seam_ratio) is %.2f..%.2f "
+      "against the start table's %.2f. Octave 1's border gradients point outward by %.2f..%.2f "
+      "(start table %.2f). The quarter's edges step more than the same lines outside it in %d of "
+      "%d cases. Per texture (means over its patterns), the quarter's seam and the outward "
+      "component are: %s; over the %d cases their Pearson r is %.2f. The cause is C7's (its "
+      "section measures the controls: w2 = 0, no propagation): octave l over [0, 1/2]^2 is octave "
+      "l-1 over the whole square (eq. 3.10's one noise field, eq. 3.13's shared gradients), so "
+      "the border lines of octave l-1, whose gradients a dark border turns outward, reappear as "
+      "the quarter's edges. Cloud and marble read the signed sum V, and a dark target pushes V "
+      "negative there; erosion's |V| and fire's sum of |noise| are even in the noise's sign, so "
+      "a dark target only asks for small noise, and the gradients need not turn outward. It is "
+      "the method's, and the figures keep it.\n",
+      q0, q1, o0, o1, b0, b1, nl_table_value(t, st, "seam_quarter"),
+      nl_table_value(t, st, "seam_other"), nl_table_value(t, st, "seam_border"), s0, s1,
+      nl_table_value(t, st, "seam_ratio"), w0, w1, nl_table_value(t, st, "border_outward"), more, n,
+      per, n, rq);
+  free(qv);
+  free(wv);
+}
+
+void c1_control_text(nl_harness *r, const nl_table *claims, const nl_table *ctl,
+                     const nl_table *seams)
+{
+  nl_harness_report_table(
+      r, claims,
+      "\"The texture follows the pattern\", per texture over its three patterns (headline "
+      "formula): r against random tables, E_Con against the flat images",
+      3);
+  for (size_t q = 0; q < claims->nrows; q++) {
+    const char *tex = nl_table_text(claims, q, "texture");
+    char qty[96], claim[96], file[64];
+    snprintf(claim, sizeof claim, "%s follows its patterns", tex);
+    snprintf(qty, sizeof qty, "r with the patterns vs random tables, %s", tex);
+    nl_harness_verdict_p(
+        r, "claims.tsv", claims, q, qty, claim, "r_pattern", "p_random", "p 0.01 0.05",
+        "independent",
+        "one-sided Monte-Carlo p of the patterns' mean r against random tables from the seed");
+    snprintf(qty, sizeof qty, "E_Con below the flat images', %s", tex);
+    nl_harness_verdict_p(r, "claims.tsv", claims, q, qty, claim, "con_vs_const", "p_flat",
+                         "p 0.01 0.05", "independent",
+                         "summed E_Con over the flat images'; one-sided t over the seeds");
+    snprintf(qty, sizeof qty, "%s textures' appearance (Fig 4.%zu)", tex, q + 1);
+    snprintf(claim, sizeof claim, "%s textures from three control patterns", tex);
+    snprintf(file, sizeof file, "%s.png", tex);
+    nl_harness_verdict_figure(r, qty, claim, file, "the likeness to the thesis's images");
+  }
+  double rlo = INFINITY, rhi = -INFINITY, nlo = INFINITY, nhi = -INFINITY;
+  for (size_t q = 0; q < claims->nrows; q++) {
+    rlo = fmin(rlo, nl_table_value(claims, q, "r_pattern"));
+    rhi = fmax(rhi, nl_table_value(claims, q, "r_pattern"));
+    nlo = fmin(nlo, nl_table_value(claims, q, "r_random_sd"));
+    nhi = fmax(nhi, nl_table_value(claims, q, "r_random_sd"));
+  }
+  nl_harness_text(
+      r,
+      "r with the patterns, per texture: %.3f..%.3f, against random tables whose pooled r has sd "
+      "%.3f..%.3f around 0 (%g tables per case; the smallest Monte-Carlo p is %.3g).\n",
+      rlo, rhi, nlo, nhi, nl_table_value(claims, 0, "n_random"),
+      1 / (1 + nl_table_value(claims, 0, "n_random")));
+  nl_study_cheng_flat_text(r, claims, 1);
+  nl_harness_report_table(r, ctl,
+                          "The same tests per texture, pattern and formula (the literal formula's "
+                          "rows are the measured alternative; no verdict)",
+                          3);
+  nl_study_cheng_flat_text(r, ctl, 3);
+  seams_text(r, seams);
 }

@@ -12,10 +12,39 @@
 
 /* The thesis's claim, our setting on pattern `pattern`, the figure and the
  * summary table. */
-void c3_intro_text(nl_harness *r, const nl_study_cheng *s, const char *pattern,
-                   const double *f1s, int n, const nl_table *sum);
+void c3_intro_text(nl_harness *r, const nl_study_cheng *s, const char *pattern, const double *f1s,
+                   int n, const nl_table *sum);
 /* Roughness and E_Con per f1 (summary rows 0..n-1): whether roughness rises
  * strictly with f1 (lower f1 smoother) and where E_Con is lowest. */
 void c3_result_text(nl_harness *r, const nl_table *sum, const double *f1s, int n);
+
+/* Spearman's rho of y on x (GSL; ties get average ranks). */
+double c3_spearman(const double *x, const double *y, size_t n);
+/* rho into *rho and its one-sided permutation p (rho large): y shuffled
+ * nperm times (MT19937 from seed), p = (1 + #{rho_perm >= rho}) / (nperm +
+ * 1). */
+double c3_spearman_perm_p(const double *x, const double *y, size_t n, int nperm, unsigned long seed,
+                          double *rho);
+/* Columns tables, runs, rho, p_perm, n_perm, slope (OLS of roughness on
+ * f1); _add: one row from n runs' (f1, roughness). */
+nl_table *c3_trend_test_alloc(void);
+void c3_trend_test_add(nl_table *t, const char *tables, const double *f1, const double *rough,
+                       size_t n, int nperm, unsigned long seed);
+/* Roughness (nl_cheng_evaluate) of n random tables under config c, table j
+ * seeded nl_seed_stream(seed, "c3.random_table", j), on `threads`. */
+void c3_random_roughness(const nl_cheng_config *c, const nl_cheng_pattern *pat, unsigned long seed,
+                         int n, int threads, double *out);
+/* Per f1: f1, seeds, roughness, roughness_sd (optimised, over the seeds),
+ * n_random, roughness_random, roughness_random_sd (random tables), ratio
+ * (optimised over random) and p_welch (two-sided Welch, the two means). */
+nl_table *c3_per_f1_alloc(void);
+void c3_per_f1_add(nl_table *t, double f1, const double *opt, int k, const double *rnd, int n);
+/* The trend tests (optimised and random tables, trend_test.tsv), the per-f1
+ * comparison (trend.tsv) and the verdict: what the optimisation adds to the
+ * trend every table has. */
+void c3_trend_text(nl_harness *r, const nl_table *tt, const nl_table *per_f1);
+/* Seams per f1 (rows f1/optimised, f1/start table of the first seed), with
+ * the quarter's edges against the start tables'. */
+void c3_seams_text(nl_harness *r, const nl_table *seams);
 
 #endif

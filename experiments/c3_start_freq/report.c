@@ -17,18 +17,17 @@ static void list(char *buf, size_t len, const char *fmt, const double *v, int n)
   }
 }
 
-void c3_intro_text(nl_harness *r, const nl_study_cheng *s, const char *pattern,
-                   const double *f1s, int n, const nl_table *sum)
+void c3_intro_text(nl_harness *r, const nl_study_cheng *s, const char *pattern, const double *f1s,
+                   int n, const nl_table *sum)
 {
   const nl_cheng_config *c = &s->c;
-  nl_harness_text(r,
-                  "**Thesis:** the controlled fractal sum for f1 = 2, 4, 6, 8 (Fig 4.7, images "
-                  "only); \"the appearance of lower starting frequency is smoother\". **Ours:** "
-                  "pattern %s, %d x %d control grid, F = %d, a1 = %g, w1 = %g, w2 = %g, %d seeds "
-                  "per f1. Smoothness is measured as the rms gradient of the control value "
-                  "(\"roughness\", per unit length).\n",
-                  pattern, s->grid, s->grid, c->octaves, c->a1, c->w1, c->w2,
-                  nl_harness_seeds(r));
+  nl_harness_text(
+      r,
+      "**Thesis:** the controlled fractal sum for f1 = 2, 4, 6, 8 (Fig 4.7, images only); \"the "
+      "appearance of lower starting frequency is smoother\". **Ours:** pattern %s, %d x %d control "
+      "grid, F = %d, a1 = %g, w1 = %g, w2 = %g, %d seeds per f1. Smoothness is measured as the rms "
+      "gradient of the control value (\"roughness\", per unit length).\n",
+      pattern, s->grid, s->grid, c->octaves, c->a1, c->w1, c->w2, nl_harness_seeds(r));
   char f1_list[128], cap[192];
   list(f1_list, sizeof f1_list, "%g", f1s, n);
   snprintf(cap, sizeof cap, "Controlled value (top) and cloud texture (bottom) for f1 = %s",
@@ -57,8 +56,88 @@ void c3_result_text(nl_harness *r, const nl_table *sum, const double *f1s, int n
                   "Roughness %s for f1 = %s: %s. E_Con %s is lowest at f1 = %g (the thesis gives "
                   "no E_Con per f1 to compare).\n",
                   ro_list, f1_list,
-                  monotone ? "strictly increasing with f1, so lower f1 is smoother, as the thesis "
-                             "says"
-                           : "NOT monotone in f1",
+                  monotone
+                      ? "strictly increasing with f1, so lower f1 is smoother, as the thesis says"
+                      : "NOT monotone in f1",
                   ec_list, f1s[best]);
+}
+
+void c3_trend_text(nl_harness *r, const nl_table *tt, const nl_table *per_f1)
+{
+  nl_harness_text(
+      r,
+      "Headline reading: smoothness is the rms gradient of the control value (the usual measure of "
+      "how fast a function varies), fixed before any run; the thesis prints no number for C3, so "
+      "nothing could be matched to choose it. Decided by Spearman's rho of roughness on f1 over "
+      "every run, with a one-sided permutation p, beside the same test on random (unoptimised) "
+      "tables, since a fractal sum's roughness grows with its frequencies whatever the table.\n");
+  nl_harness_report_table(r, tt,
+                          "Trend test of roughness on f1: optimised tables (one run per seed and "
+                          "f1) and random tables (the same tables at every f1)",
+                          4);
+  nl_harness_verdict_p(r, "trend_test.tsv", tt, 0, "lower f1 is smoother: roughness trend on f1",
+                       "the appearance of lower starting frequency is smoother", "rho", "p_perm",
+                       "p 0.01 0.05", "independent",
+                       "Spearman's rho of roughness on f1 over the runs, one-sided permutation p");
+  nl_harness_report_table(
+      r, per_f1, "Roughness per f1: optimised against random tables (ratio and two-sided Welch p)",
+      4);
+  double ro = nl_table_value(tt, 0, "slope"), rr = nl_table_value(tt, 1, "slope");
+  char ratios[256] = "", ps[256] = "", up[128] = "", down[128] = "";
+  int differ = 0;
+  for (size_t q = 0; q < per_f1->nrows; q++) {
+    size_t a = strlen(ratios), b = strlen(ps);
+    double p = nl_table_value(per_f1, q, "p_welch"), ratio = nl_table_value(per_f1, q, "ratio");
+    snprintf(ratios + a, sizeof ratios - a, "%s%.3f", q ? ", " : "", ratio);
+    snprintf(ps + b, sizeof ps - b, "%s%.2g", q ? ", " : "", p);
+    if (p <= 0.05) {
+      char *to = ratio > 1 ? up : down; /* rougher or smoother than a random table */
+      size_t c = strlen(to);
+      snprintf(to + c, sizeof up - c, "%s%g", c ? ", " : "", nl_table_value(per_f1, q, "f1"));
+      differ++;
+    }
+  }
+  char adds[320];
+  if (differ)
+    snprintf(adds, sizeof adds,
+             "the optimisation makes the value rougher than a random table's at f1 = %s and "
+             "smoother at f1 = %s, so it %s the trend (slope %.3f x the random one) but does not "
+             "make it.",
+             *up ? up : "none", *down ? down : "none", ro < rr ? "flattens" : "steepens", ro / rr);
+  else
+    snprintf(adds, sizeof adds,
+             "the optimisation leaves the roughness where a random table has it.");
+  nl_harness_text(
+      r,
+      "What the optimisation adds: random tables give rho %.3f (p %.3g) and a slope of %.3g "
+      "roughness per unit f1, the optimised tables rho %.3f (p %.3g) and %.3g, %.3f x the random "
+      "slope. Per f1 the optimised roughness is %s x the random tables' (Welch p %s): %d of %zu f1 "
+      "differ at p <= 0.05. Lower f1 is smoother because the fractal sum's frequencies are lower; "
+      "%s\n",
+      nl_table_value(tt, 1, "rho"), nl_table_value(tt, 1, "p_perm"), rr,
+      nl_table_value(tt, 0, "rho"), nl_table_value(tt, 0, "p_perm"), ro, ro / rr, ratios, ps,
+      differ, per_f1->nrows, adds);
+}
+
+void c3_seams_text(nl_harness *r, const nl_table *t)
+{
+  nl_harness_report_table(r, t,
+                          "Seams of the first seed's table and of its unoptimised start table per "
+                          "f1 (nl_study_cheng.h; C7 measures their cause)",
+                          3);
+  char sr[2][160] = { "", "" }, qu[2][160] = { "", "" };
+  for (size_t q = 0; q < t->nrows; q++) {
+    int st = q % 2; /* rows alternate: optimised, start table */
+    size_t a = strlen(sr[st]), b = strlen(qu[st]);
+    snprintf(sr[st] + a, sizeof sr[st] - a, "%s%.2f", q < 2 ? "" : ", ",
+             nl_table_value(t, q, "seam_ratio"));
+    snprintf(qu[st] + b, sizeof qu[st] - b, "%s%.2f", q < 2 ? "" : ", ",
+             nl_table_value(t, q, "seam_quarter"));
+  }
+  nl_harness_text(
+      r,
+      "Seams per f1 (first seed): the largest boundary step over the mean (seam_ratio) is %s "
+      "optimised against %s for the start tables; across the edges of the quarter [0, 1/2]^2, "
+      "where octave l repeats octave l-1's border lines (C7), %s against %s.\n",
+      sr[0], sr[1], qu[0], qu[1]);
 }

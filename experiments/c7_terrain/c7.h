@@ -21,9 +21,27 @@ nl_table *c7_pattern_table(const nl_cheng_pattern *p);
  * tinted by height (0..1). */
 nl_image *c7_relief_image(const double *height, int w, int h, double zscale);
 
+/* Config c on pat over the run's seeds (seeds and results as
+ * nl_study_cheng_runs under s->role), every seed's optimised table into
+ * tables[0..k-1] (caller frees); returns the k evaluations (caller frees).
+ * Exit 1 on error. */
+nl_cheng_eval *c7_runs(const nl_study_cheng *s, const nl_cheng_config *c,
+                       const nl_cheng_pattern *pat, nl_noise_grad2 **tables);
+/* The same runs' unoptimised start tables (nl_cheng_run's random table). */
+void c7_start_tables(const nl_study_cheng *s, const nl_cheng_config *c, nl_noise_grad2 **tables);
+/* The seam controls on pattern `name`: rows (name, "w2=0"), (name, "no
+ * propagation") and (name, "start table") of the seams table
+ * (nl_study_cheng_seams_add), each over the run's seeds, measured under c. */
+void c7_seam_controls(const nl_study_cheng *s, nl_table *seams, const nl_cheng_config *c,
+                      const nl_cheng_pattern *pat, const char *name);
+
 /* The thesis's claim, our setting (mesh side, vertical exaggeration), the
  * figures and the summary table. */
-void c7_text(nl_harness *r, const nl_study_cheng *s, const nl_table *sum, int mesh,
-             double zscale);
+void c7_text(nl_harness *r, const nl_study_cheng *s, const nl_table *sum, int mesh, double zscale);
+/* "The height follows the pattern": the control table's verdicts (r against
+ * random tables, E_Con against a flat image), E_Con's split for every row
+ * worse than flat, and the seams table with its cause. */
+void c7_control_text(nl_harness *r, const nl_table *ctl, const nl_table *seams,
+                     const nl_cheng_config *c);
 
 #endif

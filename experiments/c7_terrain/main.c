@@ -1,6 +1,9 @@
 /* C7 - Cheng 2009 Fig 4.15-4.17 (sec. 4.5): terrain height maps from the
  * flower, "X" and star patterns; the controlled value is the height. Runs of
- * its own (seed role "cheng.terrain"), not C1's cloud runs again. */
+ * its own (seed role "cheng.terrain"), not C1's cloud runs again. "The
+ * height follows the pattern" is decided per pattern by r against random
+ * tables and E_Con against a flat image (control.tsv); the seams of the
+ * height maps are located and their cause measured (seams.tsv). */
 #include "c7.h"
 #include "study/nl_study_cheng.h"
 #include "harness/nl_harness.h"
@@ -9,8 +12,8 @@
 #include <stdlib.h>
 
 #define NPAT  3
-#define NCOL  3     /* panels per pattern: pattern, height, relief */
-#define PANEL 192   /* side in pixels of the panels */
+#define NCOL  3   /* panels per pattern: pattern, height, relief */
+#define PANEL 192 /* side in pixels of the panels */
 
 static const char *const names[NPAT] = { "flower", "x", "star" };
 
@@ -25,19 +28,38 @@ int main(int argc, char **argv)
   double zscale = nl_harness_param(r, "relief_z", 0.08, 1e-3, 100,
                                    "vertical exaggeration of the shaded relief (heights 0..1 "
                                    "over the unit square)");
+  int nrand =
+      (int)nl_harness_param_int(r, "random_tables", nl_harness_quick(r) ? 99 : 999, 9, 1000000,
+                                "random (unoptimised) tables per pattern: the null "
+                                "distribution of r with the pattern (quick 99)");
   nl_study_cheng_ready(&s);
   /* C1 runs the same cloud setting on these patterns: C7 gets its own runs. */
   s.role = "cheng.terrain";
   const nl_cheng_config c = s.c;
   const char *labels[] = { "pattern" };
   nl_table *sum = nl_study_cheng_summary_alloc(1, labels);
+  nl_table *ctl = nl_study_cheng_control_alloc(1, labels);
+  const char *slabels[] = { "pattern", "tables_from" };
+  nl_table *seams = nl_study_cheng_seams_alloc(2, slabels);
+  int k = nl_harness_seeds(r);
+  nl_noise_grad2 **tables = nl_xmalloc((size_t)k * sizeof *tables);
   double *h = nl_xmalloc((size_t)mesh * mesh * sizeof *h);
   double *hp = nl_xmalloc((size_t)PANEL * PANEL * sizeof *hp);
   nl_image *panels[NCOL * NPAT];
   const char *plab[NCOL * NPAT];
   for (int i = 0; i < NPAT; i++) {
     nl_cheng_pattern *pat = nl_study_cheng_pattern(&s, names[i]);
-    nl_noise_grad2 *first = nl_study_cheng_seeds(&s, &c, pat, sum, 1, &names[i]);
+    nl_cheng_eval *evs = c7_runs(&s, &c, pat, tables);
+    nl_study_cheng_rows_add(&s, sum, 1, &names[i], evs);
+    unsigned long rseed = nl_seed_stream(nl_harness_seed(r), "c7.random_r", (unsigned long)i);
+    nl_study_cheng_control_add(&s, ctl, 1, &names[i], &c, pat, evs, nrand, rseed, NULL);
+    const char *sl[2] = { names[i], "optimised" };
+    nl_study_cheng_seams_add(seams, 2, sl, (const nl_noise_grad2 *const *)tables, k, &c, pat);
+    /* the seams' controls on the last pattern (star) */
+    if (i == NPAT - 1) c7_seam_controls(&s, seams, &c, pat, names[i]);
+    free(evs);
+    for (int j = 1; j < k; j++) nl_noise_grad2_free(tables[j]);
+    nl_noise_grad2 *first = tables[0];
     /* The height: the controlled value on the mesh, then at the panels' size. */
     nl_cheng_value_grid(first, &c, mesh, mesh, h);
     char file[64];
@@ -63,10 +85,16 @@ int main(int argc, char **argv)
   nl_study_cheng_montage(r, panels, plab, NCOL * NPAT, NCOL,
                          "Fig 4.15-4.17: pattern | height | relief", "heightmaps.png");
   nl_harness_write_table(r, sum, "summary.tsv");
+  nl_harness_write_table(r, ctl, "control.tsv");
+  nl_harness_write_table(r, seams, "seams.tsv");
   c7_text(r, &s, sum, mesh, zscale);
+  c7_control_text(r, ctl, seams, &c);
   nl_table_free(sum);
+  nl_table_free(ctl);
+  nl_table_free(seams);
+  free(tables);
   free(h);
   free(hp);
-  nl_harness_check_measured(r, "*", 100);   /* measured tolerances (nl_harness.h) */
+  nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);
 }

@@ -147,6 +147,14 @@
  *     consecutive slots P[P[i] + j], so a run of slots the optimiser made coherent
  *     reappears, shifted, in other columns of the higher octaves: optimised tables
  *     show faint vertical streaks (with or without propagation).
+ *   - Side effect of eq. 3.10-3.13, not a reading: every octave evaluates the one
+ *     noise field, so lattice point (I, J) has the same gradient in every octave
+ *     and octave l over [0, 1/2]^2 is octave l-1 over [0, 1]^2, shrunk. A control
+ *     term that pushes the border's value one way (a dark border under the signed
+ *     cloud or marble terms) turns octave 1's border gradients outward, and the
+ *     quarter's edges x = 1/2 (y < 1/2) and y = 1/2 (x < 1/2) repeat that steep
+ *     border as a straight seam (measured by nl_study_cheng_seams_measure in C1,
+ *     C3 and C7).
  */
 #ifndef NL_CHENG_H
 #define NL_CHENG_H
@@ -313,8 +321,8 @@ typedef struct {
    * n (mean c - mean D)^2, n (sd c - sd D)^2, 2 n sd c sd D (1 - r_pattern). */
   double e_con_offset, e_con_contrast, e_con_shape;
   double seam_ratio;          /* largest mean |step| across one raster column or row
-                                 boundary over the mean of all (128^2 raster; ~1.2 for
-                                 seamless noise, ~2 along a seam) */
+                                 boundary over the mean of all (128^2 raster; ~1.4-1.5 for
+                                 unoptimised tables, ~2 along a seam) */
   double contrast;            /* sd of c on the 128^2 raster */
   double e_con_const;         /* E_Con of the best constant image, sum (D_i - mean D)^2 */
   double e_con_random;        /* E_Con of the unoptimised table (nl_cheng_run's start; NAN

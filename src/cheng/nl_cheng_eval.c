@@ -60,9 +60,10 @@ static double const_error(const nl_cheng_pattern *pat)
 /* The seam ratio of a w x h raster: the mean |difference| across each
  * boundary between two adjacent columns (over the rows), and between two
  * adjacent rows, each divided by the mean over all boundaries of its
- * direction; the largest of these. A smooth noise image has no preferred
- * boundary (about 1.2 at 128^2 from the spread of 127 means of 128 values);
- * a seam along x = 0.5 or at the border shows as a ratio near 2. */
+ * direction; the largest of these. A noise image without seams has no
+ * preferred boundary, but the largest of 254 noisy means is about 1.4-1.5 for
+ * unoptimised tables at 128^2; a seam along x = 0.5 or at the border shows
+ * as a ratio near 2 (nl_cheng.h READINGS: where the seams come from). */
 static double seam_ratio(const double *v, int w, int h)
 {
   double *col = nl_xcalloc((size_t)(w > h ? w : h), sizeof *col), best = 0;

@@ -21,6 +21,11 @@
  *             nl_study_cheng_summary_alloc, nl_study_cheng_cdf_table,
  *             nl_study_cheng_welch_alloc / _add, nl_study_cheng_control_text,
  *             nl_study_column_min                          (nl_study_cheng.c)
+ *   control   nl_study_cheng_pattern_r, nl_study_cheng_random_r,
+ *             nl_study_mc_p_greater, nl_study_t_below_p,
+ *             nl_study_cheng_control_alloc / _add, nl_study_cheng_flat_text,
+ *             nl_study_cheng_seams_measure,
+ *             nl_study_cheng_seams_alloc / _add          (nl_study_cheng_control.c)
  *   C5, C6    nl_study_cheng_thesis_gmm_tables, nl_study_cheng_repro_params,
  *             nl_study_cheng_repro_original / _pool / _clear  (nl_study_cheng_repro.c)
  *
@@ -191,6 +196,82 @@ double nl_study_cheng_welch_add(nl_table *t, const nl_table *sum, size_t ra, siz
  * every row whose optimised E_Con is worse than the best constant image's,
  * named as not controlled in that sense. Returns the number of such rows. */
 int nl_study_cheng_control_text(nl_harness *r, const nl_table *sum, int nlabels);
+
+/* ---- controllability tests and seams (nl_study_cheng_control.c) ---------- */
+
+/* Pearson r of the control value c (config c, all octaves) with the targets
+ * D over the pattern's points: nl_cheng_evaluate's r_pattern, computed from
+ * one grid x grid raster (the points are the cells' centres), without the
+ * rest of the evaluation. */
+double nl_study_cheng_pattern_r(const nl_noise_grad2 *g, const nl_cheng_config *c,
+                                const nl_cheng_pattern *pat);
+/* The same r for n random (unoptimised) tables, table j seeded from
+ * nl_seed_stream(seed, "cheng.random_table", j): the null distribution of
+ * "the texture follows the pattern", on `threads` (thread-count independent). */
+void nl_study_cheng_random_r(const nl_cheng_config *c, const nl_cheng_pattern *pat,
+                             unsigned long seed, int n, int threads, double *out);
+/* Monte-Carlo p of obs against n null draws, one-sided (large obs):
+ * (1 + #{null >= obs}) / (n + 1); the smallest p is 1 / (n + 1). */
+double nl_study_mc_p_greater(const double *null, size_t n, double obs);
+/* One-sided one-sample t-test of mean(x) < mu over k values (k - 1 degrees
+ * of freedom); with no spread, 0 when the mean is below mu, else 1. */
+double nl_study_t_below_p(const double *x, size_t k, double mu);
+
+/* "Follows the pattern" per case: nlabels label columns, then seeds,
+ * r_pattern (mean over the seeds), r_random_mean, r_random_sd, n_random and
+ * p_random (nl_study_mc_p_greater of the seeds' mean r against n_random
+ * random tables: a mean of k against single tables, so conservative), E_con
+ * (mean), E_con_const (the best constant image's), con_vs_const, p_flat
+ * (nl_study_t_below_p of the seeds' E_con against E_con_const: better than a
+ * flat image), and E_Con's split (nl_cheng_eval) as fractions of the seeds'
+ * summed E_Con: con_offset_frac (mean offset), con_contrast_frac (sd
+ * mismatch), con_shape_frac (1 - r), then mean_D (the pattern's mean target)
+ * and offset_abs (|mean c - mean D| over the points, mean over the seeds).
+ * _add: the row of config c on pat from
+ * the run's k evaluations evs (nl_study_cheng_runs), random tables from
+ * `seed`; r_random (may be NULL) gets the n_random null values. */
+nl_table *nl_study_cheng_control_alloc(int nlabels, const char *const *labels);
+void nl_study_cheng_control_add(const nl_study_cheng *s, nl_table *t, int nlabels,
+                                const char *const *labels, const nl_cheng_config *c,
+                                const nl_cheng_pattern *pat, const nl_cheng_eval *evs,
+                                int n_random, unsigned long seed, double *r_random);
+/* E_Con against the flat image per row of a control table, split (in units
+ * of the flat image's E_Con) into offset + contrast + shape, naming the rows
+ * whose offset alone makes them worse than flat. Returns the number of rows
+ * worse than flat (con_vs_const >= 1). */
+int nl_study_cheng_flat_text(nl_harness *r, const nl_table *ctl, int nlabels);
+
+/* Where a table's seams are, on a 128^2 raster of the control value (row 0 =
+ * y = 0). The fractal sum evaluates one noise field at f_l x, so octave l's
+ * lattice over [0, 1]^2 contains octave l-1's whole lattice in the quarter
+ * [0, 1/2]^2 (the same points, the same gradients): octave l-1's lines x = 1
+ * and y = 1 reappear in octave l as the half-lines x = 1/2 over y < 1/2 and
+ * y = 1/2 over x < 1/2. Each value is a mean |step| across one boundary
+ * over the mean of all boundaries of the same strip (1 = no seam):
+ *   quarter   across those two half-lines (the quarter's edges);
+ *   other     across x = 1/2 over y > 1/2 and y = 1/2 over x > 1/2 (no copy);
+ *   border    across the first and last column and row boundaries;
+ *   octave_quarter   `quarter` for octave l + 1 alone, l < 4 (NAN past F);
+ *   outward   the mean outward component (-gx at x = 0, gx at x = 1, -gy, gy)
+ *             of the unit gradients on octave 1's border lattice lines (0 for
+ *             a random table; 1 for gradients all pointing out). */
+#define NL_STUDY_CHENG_SEAM_OCTAVES 4
+typedef struct {
+  double quarter, other, border, outward;
+  double octave_quarter[NL_STUDY_CHENG_SEAM_OCTAVES];
+} nl_study_cheng_seams;
+void nl_study_cheng_seams_measure(const nl_noise_grad2 *g, const nl_cheng_config *c,
+                                  nl_study_cheng_seams *out);
+/* A table of nlabels label columns, then tables, seam_ratio (nl_cheng_eval's:
+ * the largest boundary over the mean), seam_quarter, seam_quarter_sd,
+ * seam_other, seam_border, seam_octave1 .. seam_octave4 (octave_quarter),
+ * border_outward, border_outward_sd:
+ * _add appends the means (and sds) over n tables evaluated under config c
+ * on pattern pat. */
+nl_table *nl_study_cheng_seams_alloc(int nlabels, const char *const *labels);
+void nl_study_cheng_seams_add(nl_table *t, int nlabels, const char *const *labels,
+                              const nl_noise_grad2 *const *tables, int n,
+                              const nl_cheng_config *c, const nl_cheng_pattern *pat);
 
 /* ---- what C5 and C6 share (nl_study_cheng_repro.c) ----------------------- */
 

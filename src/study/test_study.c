@@ -1,7 +1,9 @@
 /* test_study.c - the shared study code against hand-made tables and naive
  * references: the grouped mean of a per-seed table, the between-condition
  * Welch rows of the Cheng experiments (p against an independent numeric
- * integral of Student's t density), and the sampling lines of A3 and A4
+ * integral of Student's t density), the controllability tests of C1 and C7
+ * (r from one raster against nl_cheng_evaluate, the Monte-Carlo and t
+ * p-values against closed forms), and the sampling lines of A3 and A4
  * against the sum of octaves evaluated point by point. */
 #include "study/nl_study.h"
 #include "study/nl_study_cheng.h"
@@ -59,6 +61,42 @@ NL_TEST(welch_rows_give_scipy_p_and_the_relative_difference)
   NL_CHECK(w->nrows == 3);
   nl_table_free(w);
   nl_table_free(s);
+}
+
+NL_TEST(pattern_r_is_the_evaluations_r_and_p_values_match_closed_forms)
+{
+  nl_image *im = nl_study_cheng_shape("star", 128);
+  nl_cheng_pattern *pat;
+  nl_error err;
+  NL_CHECK(nl_study_cheng_pattern_from_image(im, 32, &pat, &err) == NL_OK);
+  nl_cheng_config c = nl_cheng_config_default();
+  nl_noise_grad2 *g = nl_noise_grad2_alloc(c.m);
+  nl_noise_grad2_seed(g, 11);
+  nl_cheng_eval ev;
+  NL_CHECK(nl_cheng_evaluate(g, &c, pat, &ev, &err) == NL_OK);
+  /* one raster at the cells' centres against the kernel point by point */
+  NL_CHECK_NEAR(nl_study_cheng_pattern_r(g, &c, pat), ev.r_pattern, 1e-12);
+  double null[4];
+  nl_study_cheng_random_r(&c, pat, 5, 4, 2, null);
+  for (int j = 0; j < 4; j++) NL_CHECK(fabs(null[j]) < 1);
+  nl_study_cheng_seams sm;
+  nl_study_cheng_seams_measure(g, &c, &sm);
+  NL_CHECK(sm.quarter > 0 && sm.other > 0 && sm.border > 0);
+  for (int l = 0; l < 4; l++) NL_CHECK(sm.octave_quarter[l] > 0);   /* F = 4 */
+  NL_CHECK(fabs(sm.outward) <= 1);
+  /* (1 + #{null >= obs}) / (n + 1): 2 of 4 at or above 0.5 */
+  const double d[4] = { 0.1, 0.5, 0.7, 0.2 };
+  NL_CHECK(nl_study_mc_p_greater(d, 4, 0.5) == 3.0 / 5.0);
+  NL_CHECK(nl_study_mc_p_greater(d, 4, 0.9) == 1.0 / 5.0);
+  /* Student's t with 2 df has F(t) = 1/2 + t / (2 sqrt(2 + t^2)): for
+   * x = (1, 2, 3.5) against mu = 4, t = -2.52357, F = 0.0638216278550 (Python,
+   * math module alone) */
+  const double x[3] = { 1, 2, 3.5 }, flat[3] = { 2, 2, 2 };
+  NL_CHECK_NEAR(nl_study_t_below_p(x, 3, 4), 0.0638216278550, 1e-10);
+  NL_CHECK(nl_study_t_below_p(flat, 3, 4) == 0.0 && nl_study_t_below_p(flat, 3, 1) == 1.0);
+  nl_noise_grad2_free(g);
+  nl_cheng_pattern_free(pat);
+  nl_image_free(im);
 }
 
 NL_TEST(line_samples_are_the_octave_sum_point_by_point)

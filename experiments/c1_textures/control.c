@@ -1,0 +1,77 @@
+/* C1's "the texture follows the pattern" (Fig 4.1-4.4): per case, r with the
+ * pattern against random tables and E_Con against a flat image
+ * (nl_study_cheng_control_add); per texture the same two tests pooled over
+ * its three patterns, which decide the verdicts; and where the first seed's
+ * textures have seams (nl_study_cheng_seams_add). */
+#include "c1.h"
+#include "stats/nl_stats.h"
+
+#include <stdlib.h>
+
+static const char *const claim_cols[] = {
+  "texture",         "patterns",          "seeds",          "r_pattern",
+  "r_random_mean",   "r_random_sd",       "n_random",       "p_random",
+  "E_con",           "E_con_const",       "con_vs_const",   "p_flat",
+  "con_offset_frac", "con_contrast_frac", "con_shape_frac",
+};
+#define NCLAIM (sizeof claim_cols / sizeof *claim_cols)
+
+nl_table *c1_claims_alloc(void) { return nl_table_alloc(NCLAIM, claim_cols); }
+
+void c1_claims_add(nl_table *t, const char *texture, int np, int k, const nl_cheng_eval *const *evs,
+                   const double *const *nulls, int nrand)
+{
+  /* r: the mean over the patterns of each pattern's mean over the seeds,
+   * against the mean over the patterns of one random table each (the
+   * patterns' tables are independent draws) */
+  double r = 0, *null = nl_xcalloc((size_t)nrand, sizeof *null);
+  for (int p = 0; p < np; p++) {
+    for (int i = 0; i < k; i++) r += evs[p][i].r_pattern / (k * np);
+    for (int j = 0; j < nrand; j++) null[j] += nulls[p][j] / np;
+  }
+  /* E_Con: per seed the sum over the patterns, against the sum of their flat
+   * images' */
+  double *e = nl_xcalloc((size_t)k, sizeof *e), e0 = 0, off = 0, con = 0, shp = 0, all = 0;
+  for (int p = 0; p < np; p++) {
+    e0 += evs[p][0].e_con_const;
+    for (int i = 0; i < k; i++) {
+      e[i] += evs[p][i].e_con;
+      off += evs[p][i].e_con_offset;
+      con += evs[p][i].e_con_contrast;
+      shp += evs[p][i].e_con_shape;
+      all += evs[p][i].e_con;
+    }
+  }
+  double em = nl_stats_mean(e, (size_t)k, NL_STATS_RUNNING);
+  size_t q = nl_table_append_empty(t);
+  double row[NCLAIM] = { 0,
+                         np,
+                         k,
+                         r,
+                         nl_stats_mean(null, (size_t)nrand, NL_STATS_RUNNING),
+                         nl_stats_sd(null, (size_t)nrand, NL_STATS_RUNNING),
+                         nrand,
+                         nl_study_mc_p_greater(null, (size_t)nrand, r),
+                         em,
+                         e0,
+                         em / e0,
+                         nl_study_t_below_p(e, (size_t)k, e0),
+                         all > 0 ? off / all : 0,
+                         all > 0 ? con / all : 0,
+                         all > 0 ? shp / all : 0 };
+  for (size_t c = 1; c < NCLAIM; c++) nl_table_set(t, q, claim_cols[c], row[c]);
+  nl_table_set_text(t, q, "texture", texture);
+  free(e);
+  free(null);
+}
+
+void c1_seams_start(const nl_study_cheng *s, nl_table *seams, const nl_cheng_config *c,
+                    const nl_cheng_pattern *pat, const char *pattern)
+{
+  nl_noise_grad2 *g = nl_noise_grad2_alloc(c->m);
+  /* nl_cheng_run's start table of the first seed (nl_study_cheng_runs) */
+  nl_noise_grad2_seed(g, nl_seed_replicate(nl_harness_seed(s->r), 0));
+  const char *lab[3] = { nl_cheng_con_name(c->con), pattern, "start table" };
+  nl_study_cheng_seams_add(seams, 3, lab, (const nl_noise_grad2 *const *)&g, 1, c, pat);
+  nl_noise_grad2_free(g);
+}
