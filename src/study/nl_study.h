@@ -54,10 +54,16 @@
  * as "improved" or "noise2", built with its default options for each seed. */
 typedef const char *nl_study_basis_kind;
 
+/* Points per seed of the axis-aligned gradient fraction: a quarter of the
+ * pixels, so it costs about what the raster does. */
+#define NL_STUDY_AXIS_POINTS(w, h) ((size_t)(w) * (size_t)(h) / 4)
+
 typedef struct {
   int nseeds, nbins, w, h;
   double bound;                   /* analytic bound of the sum */
   double *mean, *sd, *min, *max;  /* per seed */
+  double *axis, *axis_worst;      /* per seed: axis-aligned gradient fraction of
+                                     the octaves, pooled and the largest one's */
   double *freq;                   /* nbins, cycles per unit */
   double *power;                  /* nseeds * nbins */
   double *first;                  /* w * h values of the first seed */
@@ -72,7 +78,15 @@ void nl_study_survey_free(nl_study_survey *s);
  *           in the setting), then over
  *           seeds the mean and sd of the per-seed mean and sd, the mean
  *           min and max, the largest |value| seen, the analytic bound and
- *           their ratio;
+ *           their ratio; axis_frac (sd over seeds axis_frac_sd): the
+ *           fraction of points whose gradient lies within 2 degrees of the
+ *           x or y axis, for each octave alone on its slice (noise(f p) on
+ *           the plane z), pooled over the octaves in the picture (amp != 0),
+ *           at NL_STUDY_AXIS_POINTS(w, h) points per octave and seed;
+ *           axis_frac_worst the largest single octave's (mean over seeds);
+ *           axis_frac_iso = 16/360, the value for an isotropic field. The
+ *           octaves on lattice planes (z = 0.5) read 1.7 to 2.0 times that
+ *           at quick scale, the slice NL_STUDY_SLICE_Z 1.06 to 1.14 times;
  *  spectrum freq (cycles per unit) and one column of seed-averaged radial
  *           power per setting, headed by its label;
  *  panels   the first seed's raster of each setting as a grey image mapped
@@ -88,8 +102,21 @@ nl_table *nl_study_series(nl_harness *r, const char *prefix, const char *title,
                           nl_study_basis_kind kind, const nl_study_setting *settings, int n,
                           const nl_noise_window *win);
 
+/* The plane z of the 2D slices through 3D improved noise (S1-S4, Q2's and
+ * Q4's Perlin panels). An octave of frequency f samples noise on the plane
+ * z f; on a lattice plane (z f an integer) only one layer of gradients
+ * contributes and a third of them, (+-1, 0, +-1) and (0, +-1, +-1), project
+ * onto an axis, so the slice shows straight axis-aligned creases (and z f a
+ * half-integer is nearly as bad). z = 64/3 puts z 2^k at a third of a cell,
+ * frac(z 2^k) = 1/3 or 2/3, for every k >= -6: every octave of every sum
+ * with lacunarity 2^m (0.5, 1, 2, 4, 8) sits as far from the lattice planes
+ * as it can while keeping that for all octaves. The surveys measure the
+ * result (axis_frac, nl_study_survey_series). */
+#define NL_STUDY_SLICE_Z (64.0 / 3.0)
+
 /* The square window of the S experiments from the run's parameters:
- * size (pixels; 512, or 128 with --quick), extent (4 units) and z (0.5). */
+ * size (pixels; 512, or 128 with --quick), extent (4 units) and z
+ * (NL_STUDY_SLICE_Z). */
 nl_noise_window nl_study_window(nl_harness *r);
 
 /* S1 and S2: Shaffer's sums at 1, 2, 3 and 8 octaves (fractal sum, or
@@ -98,6 +125,16 @@ nl_noise_window nl_study_window(nl_harness *r);
  * surveyed by nl_study_series. Returns the distribution table (caller frees). */
 nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int turbulence,
                                  const char *slides, const char *prefix, const char *title);
+
+/* The slides' law for the sd of a sum of octaves, per row of a distribution
+ * table of nl_study_series (columns setting, octaves, gain, lacunarity, sd,
+ * sd_sd): octaves of one noise at different frequencies are uncorrelated,
+ * so their variances add, sd_law = sd1 sqrt(sum_{j<n} gain^2j), sd1 the sd
+ * of the lone first octave; at lacunarity 1 every octave is the same noise
+ * and the amplitudes add, sd_law = sd1 sum gain^j. Columns: setting, octaves,
+ * gain, lacunarity, sd, sd_sd, sd1, sd_law, law ("independent" or
+ * "identical"), sd_over_law. Caller frees. */
+nl_table *nl_study_sd_law_table(const nl_table *dist, double sd1);
 
 /* Lays panels out in a montage of `cols` columns (nl_image_montage), writes it as
  * FILE in the run's folder (nl_harness_write_image) and frees it: the figure step that
