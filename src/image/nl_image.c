@@ -313,12 +313,23 @@ nl_image *nl_image_montage(const nl_image *const *images, const char *const *lab
       free(buf);
     }
   int caph = 12 * scale * lines + pad;
-  int titleh = title ? 14 * scale + pad : 0;
+  /* The title, too, is broken into lines as wide as the grid. */
+  int width = pad + cols * (cw + pad);
+  char *tbuf = title ? nl_xmalloc(strlen(title) + 1) : NULL;
+  int tlines = title ? caption_wrap(title, scale, width - 2 * pad, tbuf) : 0;
+  int titleh = title ? 14 * scale * tlines + pad : 0;
   int rows = (n + cols - 1) / cols;
-  nl_image *m = nl_image_alloc(pad + cols * (cw + pad), titleh + pad + rows * (chh + caph + pad), 3);
+  nl_image *m = nl_image_alloc(width, titleh + pad + rows * (chh + caph + pad), 3);
   for (size_t i = 0; i < (size_t)m->width * m->height * 3; i++) m->data[i] = 1.0f;
   const float black[3] = {0, 0, 0};
-  if (title) nl_image_text(m, pad, pad, scale, title, black);
+  char *l = tbuf;
+  for (int line = 0; l; line++) {
+    char *nl = strchr(l, '\n');
+    if (nl) *nl = 0;
+    nl_image_text(m, pad, pad + 14 * scale * line, scale, l, black);
+    l = nl ? nl + 1 : NULL;
+  }
+  free(tbuf);
   for (int i = 0; i < n; i++) {
     nl_image *rgb = nl_image_convert(images[i], 3);
     int x0 = pad + (i % cols) * (cw + pad) + (cw - rgb->width) / 2;
