@@ -58,4 +58,10 @@ void q4_report(const q4 *q)
   nl_harness_figure(
       q->r, "wood.png",
       "Wood, table (F1 - F1F1) and trunk (F3 - F3F3): the ramp reading beside the wood shader");
+  nl_harness_verdict_figure(q->r, "Fig. 5: eq. 7 clouds, Perlin and five GCTBF",
+                            "cellular clouds beside Perlin's (images only)", "clouds.png",
+                            "the five combinations are our reading: the figure names none");
+  nl_harness_verdict_figure(q->r, "Fig. 6: marble, wood, sky and flame textures",
+                            "GCTBF textures (images only)", "textures.png",
+                            "colours, wood shader and amplitudes are our reading");
 }
