@@ -17,14 +17,16 @@ int main(int argc, char **argv)
                                        "and 8 octaves (images only).",
                                        "fractal", "fractal_sum(p) = sum noise(2^j p) / 2^j");
   /* The slides' law against the lone octave (row 0, sd1 by construction). */
-  nl_table *law = nl_study_sd_law_table(d, nl_table_value(d, 0, "sd"));
+  nl_table *law = nl_study_sd_law_table(d, nl_table_value(d, 0, "sd"),
+                                        nl_table_value(d, 0, "sd_sd"), nl_harness_seeds(r));
   nl_harness_write_table(r, law, "fractal_sd_law.tsv");
   for (size_t i = 1; i < law->nrows; i++) {
     char q[96];
-    snprintf(q, sizeof q, "sd of the sum against sd1 sqrt(sum 4^-j), %s",
+    snprintf(q, sizeof q, "sd of the sum over sd1 sqrt(sum 4^-j), %s",
              nl_table_text(law, i, "setting"));
-    nl_harness_verdict(r, "fractal_sd_law.tsv", law, i, q, "sd_law", "sd", "sd_sd", "rel 0.05 0.15",
-                       "independent", "variances of uncorrelated octaves add");
+    nl_harness_verdict(r, "fractal_sd_law.tsv", law, i, q, "claim_ratio", "sd_over_law",
+                       "sd_over_law_se", "sd 2 3", "independent",
+                       "variances of uncorrelated octaves add; sd: the ratio's standard error");
   }
   nl_harness_verdict_figure(r, "fractal sum at 1, 2, 3 and 8 octaves",
                             "octaves add detail at half the amplitude (images only)",

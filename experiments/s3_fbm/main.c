@@ -32,14 +32,15 @@ int main(int argc, char **argv)
                                  "improved", g, 5, &win);
   /* The slides' sd law against the lone octave: gain 0 (row 0, sd1). */
   double sd1 = nl_table_value(gt, 0, "sd");
-  nl_table *gsd = nl_study_sd_law_table(gt, sd1);
+  double sd1_sd = nl_table_value(gt, 0, "sd_sd");
+  nl_table *gsd = nl_study_sd_law_table(gt, sd1, sd1_sd, nl_harness_seeds(r));
   nl_harness_write_table(r, gsd, "gain_sd_law.tsv");
   s3_sd_verdicts(r, gsd, "gain_sd_law.tsv", -1);
   s3_report_gain(r, octaves, gsd, "gain_spectrum.tsv");
   nl_harness_text(r, "### Varying the lacunarity\n");
   nl_table *lt = nl_study_series(r, "lacunarity", "fBm, gain 0.5: lacunarity 0.5, 1, 2, 4, 8",
                                  "improved", l, 5, &win);
-  nl_table *lsd = nl_study_sd_law_table(lt, sd1);
+  nl_table *lsd = nl_study_sd_law_table(lt, sd1, sd1_sd, nl_harness_seeds(r));
   nl_harness_write_table(r, lsd, "lacunarity_sd_law.tsv");
   s3_sd_verdicts(r, lsd, "lacunarity_sd_law.tsv", 2); /* lacunarity 2: gain 0.5's row */
   s3_report_lacunarity(r, octaves, lsd, &win);

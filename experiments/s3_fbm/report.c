@@ -35,10 +35,11 @@ void s3_sd_verdicts(nl_harness *r, const nl_table *law, const char *file, long s
     if (!strcmp(nl_table_text(law, i, "law"), "identical")) continue;
     if (nl_table_value(law, i, "gain") == 0) continue;
     char q[96];
-    snprintf(q, sizeof q, "sd of fBm against sd1 sqrt(sum gain^2j), %s",
+    snprintf(q, sizeof q, "sd of fBm over sd1 sqrt(sum gain^2j), %s",
              nl_table_text(law, i, "setting"));
-    nl_harness_verdict(r, file, law, i, q, "sd_law", "sd", "sd_sd", "rel 0.05 0.15", "independent",
-                       "variances of uncorrelated octaves add");
+    nl_harness_verdict(r, file, law, i, q, "claim_ratio", "sd_over_law", "sd_over_law_se", "sd 2 3",
+                       "independent",
+                       "variances of uncorrelated octaves add; sd: the ratio's standard error");
   }
 }
 

@@ -127,11 +127,12 @@ nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int 
   return nl_study_series(r, prefix, title, "improved", st, 4, win);
 }
 
-nl_table *nl_study_sd_law_table(const nl_table *dist, double sd1)
+nl_table *nl_study_sd_law_table(const nl_table *dist, double sd1, double sd1_sd, int nseeds)
 {
-  const char *cols[] = {"setting", "octaves", "gain", "lacunarity", "sd", "sd_sd",
-                        "sd1", "sd_law", "law", "sd_over_law"};
-  nl_table *t = nl_table_alloc(10, cols);
+  const char *cols[] = {"setting", "octaves", "gain",        "lacunarity",     "sd",
+                        "sd_sd",   "sd1",     "sd_law",      "law",            "sd_over_law",
+                        "sd_over_law_se",     "claim_ratio"};
+  nl_table *t = nl_table_alloc(12, cols);
   for (size_t i = 0; i < dist->nrows; i++) {
     int n = (int)nl_table_value(dist, i, "octaves");
     double g = nl_table_value(dist, i, "gain"), lac = nl_table_value(dist, i, "lacunarity");
@@ -142,9 +143,11 @@ nl_table *nl_study_sd_law_table(const nl_table *dist, double sd1)
     }
     int same = lac == 1;
     double law = sd1 * (same ? sum : sqrt(sum2)), sd = nl_table_value(dist, i, "sd");
-    nl_table_append(t, "siddddddsd", nl_table_text(dist, i, "setting"), n, g, lac, sd,
-                    nl_table_value(dist, i, "sd_sd"), sd1, law, same ? "identical" : "independent",
-                    sd / law);
+    double sdsd = nl_table_value(dist, i, "sd_sd");
+    double rel = (sdsd / sd) * (sdsd / sd) + (sd1_sd / sd1) * (sd1_sd / sd1);
+    nl_table_append(t, "siddddddsddd", nl_table_text(dist, i, "setting"), n, g, lac, sd, sdsd,
+                    sd1, law, same ? "identical" : "independent", sd / law,
+                    sd / law * sqrt(rel / nseeds), 1.0);
   }
   return t;
 }

@@ -133,8 +133,11 @@ nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int 
  * of the lone first octave; at lacunarity 1 every octave is the same noise
  * and the amplitudes add, sd_law = sd1 sum gain^j. Columns: setting, octaves,
  * gain, lacunarity, sd, sd_sd, sd1, sd_law, law ("independent" or
- * "identical"), sd_over_law. Caller frees. */
-nl_table *nl_study_sd_law_table(const nl_table *dist, double sd1);
+ * "identical"), sd_over_law, its standard error over the nseeds seeds
+ * sd_over_law_se (from sd_sd and sd1_sd, the spreads of one seed's sd,
+ * taken as independent: an upper bound, both share the first octave) and
+ * claim_ratio = 1, the law's value of sd_over_law. Caller frees. */
+nl_table *nl_study_sd_law_table(const nl_table *dist, double sd1, double sd1_sd, int nseeds);
 
 /* Lays panels out in a montage of `cols` columns (nl_image_montage), writes it as
  * FILE in the run's folder (nl_harness_write_image) and frees it: the figure step that
