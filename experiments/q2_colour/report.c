@@ -20,7 +20,8 @@ void q2_report(nl_harness *r, const nl_noise_window *win, const nl_noise_window 
   nl_harness_report_table(r, t, "GCTBF values before the clamp", 4);
   nl_harness_figure(r, "colour.png",
                     "Fig. 2: Perlin noise and five GCTBF combinations through the 13-knot spline");
-  nl_harness_verdict_figure(r, "Fig. 2: colour-mapped Perlin and GCTBF patterns", "images only",
+  nl_harness_verdict_figure(r, "Fig. 2: colour-mapped Perlin and GCTBF patterns",
+                            "blue-marble patterns through the 13-knot spline (images only)",
                             "colour.png",
                             "the five combinations are our reading; no number of the paper");
 }

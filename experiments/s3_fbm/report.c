@@ -88,7 +88,10 @@ void s3_report_gain(nl_harness *r, int octaves, const nl_table *law, const char 
       "for uncorrelated octaves: the sd over the law, sd_over_law, lies between %.3f and %.3f "
       "for gains above 0 (table). At gain %g all %s octaves weigh the same: the spectrum falls as "
       "f^%.2f over 1 "
-      "to 8 cycles per unit, fBm's f^-(2H+2) with H = 0 being f^-2.\n",
+      "to 8 cycles per unit, fBm's f^-(2H+2) with H = 0 being f^-2. The verdicts read the slides' "
+      "law as "
+      "stated, with sd1 the lone first octave's sd (gain 0) on the same slice and seeds: nothing "
+      "is fitted.\n",
       lo, hi, nl_table_value(law, top, "gain"), count_word(octaves, buf, sizeof buf), slope);
 }
 
