@@ -11,10 +11,11 @@ int main(int argc, char **argv)
   nl_noise_window win = nl_study_window(r);
   nl_harness_params_done(r);
 
-  nl_table *d = nl_study_octave_series(r, &win, 1,
-                                       "turbulence, the fractal sum of |noise|, at 1, 2, 3 "
-                                       "and 8 octaves (images only).",
-                                       "turbulence", "turbulence(p) = sum |noise(2^j p)| / 2^j");
+  nl_table *d =
+      nl_study_octave_series(r, &win, 1,
+                             "turbulence, the fractal sum of |noise|, at 1, 2, 3 "
+                             "and 8 octaves (images only).",
+                             "turbulence", "turbulence(p) = sum |noise(2^j p)| / 2^j", NULL);
   nl_table_free(d);
   /* Above twice the octave's frequency (1 cycle per unit): outside its band. */
   nl_table *fold = s2_fold_table(&win, nl_harness_seed(r), nl_harness_seeds(r), 2.0);

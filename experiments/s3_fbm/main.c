@@ -28,19 +28,20 @@ int main(int argc, char **argv)
     l[i] = (nl_study_setting){ ll[i], nl_noise_octaves_fbm(octaves, 0.5, lacs[i]), 0.5, lacs[i] };
   }
   nl_harness_text(r, "### Varying the gain\n");
+  nl_table *gs;
+  nl_table *ls;
   nl_table *gt = nl_study_series(r, "gain", "fBm, lacunarity 2: gain 0, 0.25, 0.5, 0.75, 1",
-                                 "improved", g, 5, &win);
+                                 "improved", g, 5, &win, &gs);
   /* The slides' sd law against the lone octave: gain 0 (row 0, sd1). */
-  double sd1 = nl_table_value(gt, 0, "sd");
-  double sd1_sd = nl_table_value(gt, 0, "sd_sd");
-  nl_table *gsd = nl_study_sd_law_table(gt, sd1, sd1_sd, nl_harness_seeds(r));
+  const char *lone = nl_table_text(gt, 0, "setting");
+  nl_table *gsd = nl_study_sd_law_table(gt, gs, gs, lone);
   nl_harness_write_table(r, gsd, "gain_sd_law.tsv");
   s3_sd_verdicts(r, gsd, "gain_sd_law.tsv", -1);
   s3_report_gain(r, octaves, gsd, "gain_spectrum.tsv");
   nl_harness_text(r, "### Varying the lacunarity\n");
   nl_table *lt = nl_study_series(r, "lacunarity", "fBm, gain 0.5: lacunarity 0.5, 1, 2, 4, 8",
-                                 "improved", l, 5, &win);
-  nl_table *lsd = nl_study_sd_law_table(lt, sd1, sd1_sd, nl_harness_seeds(r));
+                                 "improved", l, 5, &win, &ls);
+  nl_table *lsd = nl_study_sd_law_table(lt, ls, gs, lone);
   nl_harness_write_table(r, lsd, "lacunarity_sd_law.tsv");
   s3_sd_verdicts(r, lsd, "lacunarity_sd_law.tsv", 2); /* lacunarity 2: gain 0.5's row */
   s3_report_lacunarity(r, octaves, lsd, &win);
@@ -52,6 +53,8 @@ int main(int argc, char **argv)
   nl_table_free(gt);
   nl_table_free(lt);
   nl_table_free(gsd);
+  nl_table_free(gs);
+  nl_table_free(ls);
   nl_table_free(lsd);
   nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);

@@ -39,7 +39,8 @@ void s3_sd_verdicts(nl_harness *r, const nl_table *law, const char *file, long s
              nl_table_text(law, i, "setting"));
     nl_harness_verdict(r, file, law, i, q, "claim_ratio", "sd_over_law", "sd_over_law_se", "sd 2 3",
                        "independent",
-                       "variances of uncorrelated octaves add; sd: the ratio's standard error");
+                       "variances of uncorrelated octaves add; sd: the standard error of the ratio "
+                       "taken seed by seed");
   }
 }
 

@@ -39,14 +39,14 @@ static void slice_text(nl_harness *r, const nl_table *dist, const nl_noise_windo
 
 nl_table *nl_study_series(nl_harness *r, const char *prefix, const char *title,
                           nl_study_basis_kind kind, const nl_study_setting *settings, int n,
-                          const nl_noise_window *win)
+                          const nl_noise_window *win, nl_table **per_seed)
 {
-  nl_table *dist, *spec;
+  nl_table *dist, *spec, *seeds;
   nl_image **panels = nl_xcalloc((size_t)n, sizeof *panels);
   const char **labels = nl_xcalloc((size_t)n, sizeof *labels);
   for (int i = 0; i < n; i++) labels[i] = settings[i].label;
   nl_study_survey_series(kind, settings, n, win, nl_harness_seed(r), nl_harness_seeds(r), &dist,
-                         &spec, panels);
+                         &spec, panels, &seeds);
   nl_image *m = nl_image_montage((const nl_image *const *)panels, labels, n, n, title);
   char f[256], cap[512];
   put(prefix, "panels.png", f, sizeof f);
@@ -64,6 +64,12 @@ nl_table *nl_study_series(nl_harness *r, const char *prefix, const char *title,
   slice_text(r, dist, win);
   put(prefix, "spectrum.tsv", f, sizeof f);
   nl_harness_write_table(r, spec, f);
+  put(prefix, "seeds.tsv", f, sizeof f);
+  nl_harness_write_table(r, seeds, f);
+  if (per_seed)
+    *per_seed = seeds;
+  else
+    nl_table_free(seeds);
   /* Regression rules (scripts/noiselab check): mean and sd are means over
    * seeds with their spreads beside them, compared as statistics so that a
    * new random stream passes and a shift fails. Everything else, the
@@ -115,7 +121,8 @@ nl_noise_window nl_study_window(nl_harness *r)
 }
 
 nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int turbulence,
-                                 const char *slides, const char *prefix, const char *title)
+                                 const char *slides, const char *prefix, const char *title,
+                                 nl_table **per_seed)
 {
   nl_harness_text(r, "**Slides:** %s **Ours:** the slice z = %g of Perlin's improved 3D noise over "
                      "[0, %g)^2, %d seeds for the numbers.\n",
@@ -124,16 +131,27 @@ nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int 
   nl_study_setting st[4];
   char labels[4][32];
   octave_settings(oct, 4, turbulence, st, labels);
-  return nl_study_series(r, prefix, title, "improved", st, 4, win);
+  return nl_study_series(r, prefix, title, "improved", st, 4, win, per_seed);
 }
 
-nl_table *nl_study_sd_law_table(const nl_table *dist, double sd1, double sd1_sd, int nseeds)
+/* sd of setting `name` at seed `seed` in a per-seed table; NAN if absent. */
+static double seed_sd(const nl_table *t, const char *name, double seed)
+{
+  for (size_t k = 0; k < t->nrows; k++)
+    if (nl_table_value(t, k, "seed") == seed && !strcmp(nl_table_text(t, k, "setting"), name))
+      return nl_table_value(t, k, "sd");
+  return NAN;
+}
+
+nl_table *nl_study_sd_law_table(const nl_table *dist, const nl_table *seeds,
+                                const nl_table *ref_seeds, const char *ref)
 {
   const char *cols[] = {"setting", "octaves", "gain",        "lacunarity",     "sd",
                         "sd_sd",   "sd1",     "sd_law",      "law",            "sd_over_law",
                         "sd_over_law_se",     "claim_ratio"};
   nl_table *t = nl_table_alloc(12, cols);
   for (size_t i = 0; i < dist->nrows; i++) {
+    const char *name = nl_table_text(dist, i, "setting");
     int n = (int)nl_table_value(dist, i, "octaves");
     double g = nl_table_value(dist, i, "gain"), lac = nl_table_value(dist, i, "lacunarity");
     double sum = 0, sum2 = 0, a = 1;
@@ -142,12 +160,23 @@ nl_table *nl_study_sd_law_table(const nl_table *dist, double sd1, double sd1_sd,
       sum2 += a * a;
     }
     int same = lac == 1;
-    double law = sd1 * (same ? sum : sqrt(sum2)), sd = nl_table_value(dist, i, "sd");
-    double sdsd = nl_table_value(dist, i, "sd_sd");
-    double rel = (sdsd / sd) * (sdsd / sd) + (sd1_sd / sd1) * (sd1_sd / sd1);
-    nl_table_append(t, "siddddddsddd", nl_table_text(dist, i, "setting"), n, g, lac, sd, sdsd,
-                    sd1, law, same ? "identical" : "independent", sd / law,
-                    sd / law * sqrt(rel / nseeds), 1.0);
+    double factor = same ? sum : sqrt(sum2);
+    /* the per-seed ratios, paired by seed */
+    double *ratio = nl_xmalloc(seeds->nrows * sizeof *ratio), sd1 = 0;
+    size_t m = 0;
+    for (size_t k = 0; k < seeds->nrows; k++) {
+      if (strcmp(nl_table_text(seeds, k, "setting"), name)) continue;
+      double s1 = seed_sd(ref_seeds, ref, nl_table_value(seeds, k, "seed"));
+      ratio[m++] = nl_table_value(seeds, k, "sd") / (s1 * factor);
+      sd1 += s1;
+    }
+    sd1 /= m;
+    double mean = gsl_stats_mean(ratio, 1, m);
+    double se = m > 1 ? gsl_stats_sd_m(ratio, 1, m, mean) / sqrt((double)m) : 0;
+    free(ratio);
+    nl_table_append(t, "siddddddsddd", name, n, g, lac, nl_table_value(dist, i, "sd"),
+                    nl_table_value(dist, i, "sd_sd"), sd1, sd1 * factor,
+                    same ? "identical" : "independent", mean, se, 1.0);
   }
   return t;
 }

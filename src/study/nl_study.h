@@ -91,16 +91,22 @@ void nl_study_survey_free(nl_study_survey *s);
  *           power per setting, headed by its label;
  *  panels   the first seed's raster of each setting as a grey image mapped
  *           from [mean - 3 sd, mean + 3 sd] to [0, 1] (each panel its own
- *           contrast; the table carries the amplitudes).
+ *           contrast; the table carries the amplitudes);
+ *  per_seed one row per setting and seed: setting, seed, mean, sd,
+ *           axis_frac (the statistics a paired comparison between
+ *           settings needs, nl_study_sd_law_table).
  * Any output pointer may be NULL. */
 typedef struct { const char *label; nl_noise_octaves oct; double gain, lacunarity; } nl_study_setting;
 void nl_study_survey_series(nl_study_basis_kind kind, const nl_study_setting *settings, int n,
                             const nl_noise_window *win, unsigned long seed0, int nseeds,
-                            nl_table **dist, nl_table **spectrum, nl_image **panels);
+                            nl_table **dist, nl_table **spectrum, nl_image **panels,
+                            nl_table **per_seed);
 
+/* Also writes PREFIX_seeds.tsv (per_seed above), returned in *per_seed
+ * when not NULL (caller frees). */
 nl_table *nl_study_series(nl_harness *r, const char *prefix, const char *title,
                           nl_study_basis_kind kind, const nl_study_setting *settings, int n,
-                          const nl_noise_window *win);
+                          const nl_noise_window *win, nl_table **per_seed);
 
 /* The plane z of the 2D slices through 3D improved noise (S1-S4, Q2's and
  * Q4's Perlin panels). An octave of frequency f samples noise on the plane
@@ -122,22 +128,28 @@ nl_noise_window nl_study_window(nl_harness *r);
 /* S1 and S2: Shaffer's sums at 1, 2, 3 and 8 octaves (fractal sum, or
  * turbulence when `turbulence`), introduced by one paragraph ("**Slides:**
  * SLIDES **Ours:** the slice z = ... over [0, size)^2, K seeds ...") and
- * surveyed by nl_study_series. Returns the distribution table (caller frees). */
+ * surveyed by nl_study_series. Returns the distribution table (caller frees);
+ * per_seed as nl_study_series. */
 nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int turbulence,
-                                 const char *slides, const char *prefix, const char *title);
+                                 const char *slides, const char *prefix, const char *title,
+                                 nl_table **per_seed);
 
 /* The slides' law for the sd of a sum of octaves, per row of a distribution
  * table of nl_study_series (columns setting, octaves, gain, lacunarity, sd,
  * sd_sd): octaves of one noise at different frequencies are uncorrelated,
  * so their variances add, sd_law = sd1 sqrt(sum_{j<n} gain^2j), sd1 the sd
  * of the lone first octave; at lacunarity 1 every octave is the same noise
- * and the amplitudes add, sd_law = sd1 sum gain^j. Columns: setting, octaves,
- * gain, lacunarity, sd, sd_sd, sd1, sd_law, law ("independent" or
- * "identical"), sd_over_law, its standard error over the nseeds seeds
- * sd_over_law_se (from sd_sd and sd1_sd, the spreads of one seed's sd,
- * taken as independent: an upper bound, both share the first octave) and
- * claim_ratio = 1, the law's value of sd_over_law. Caller frees. */
-nl_table *nl_study_sd_law_table(const nl_table *dist, double sd1, double sd1_sd, int nseeds);
+ * and the amplitudes add, sd_law = sd1 sum gain^j. sd1 is setting `ref` of
+ * the per-seed table ref_seeds (nl_study_series), seeds the series' own
+ * per-seed table: the ratio sd / sd_law is taken seed by seed (the sum and
+ * the lone octave share the first octave's noise, so the pairing removes
+ * most of the seed-to-seed spread) and averaged. Columns: setting, octaves,
+ * gain, lacunarity, sd, sd_sd, sd1 (mean over seeds), sd_law (sd1 times
+ * the law's factor), law ("independent" or "identical"), sd_over_law (mean
+ * of the per-seed ratios), sd_over_law_se (their standard error),
+ * claim_ratio = 1, the law's value of the ratio. Caller frees. */
+nl_table *nl_study_sd_law_table(const nl_table *dist, const nl_table *seeds,
+                                const nl_table *ref_seeds, const char *ref);
 
 /* Lays panels out in a montage of `cols` columns (nl_image_montage), writes it as
  * FILE in the run's folder (nl_harness_write_image) and frees it: the figure step that

@@ -143,12 +143,18 @@ static void dist_row(nl_table *t, const nl_study_setting *st, const nl_study_sur
 
 void nl_study_survey_series(nl_study_basis_kind kind, const nl_study_setting *settings, int n,
                             const nl_noise_window *win, unsigned long seed0, int nseeds,
-                            nl_table **dist, nl_table **spectrum, nl_image **panels)
+                            nl_table **dist, nl_table **spectrum, nl_image **panels,
+                            nl_table **per_seed)
 {
   nl_table *dt = dist_table(), *sp = NULL;
+  const char *pcols[] = {"setting", "seed", "mean", "sd", "axis_frac"};
+  nl_table *ps = nl_table_alloc(5, pcols);
   for (int i = 0; i < n; i++) {
     nl_study_survey *s = nl_study_survey_run(kind, &settings[i].oct, win, seed0, nseeds);
     dist_row(dt, &settings[i], s);
+    for (int k = 0; k < nseeds; k++)
+      nl_table_append(ps, "sdddd", settings[i].label, (double)nl_seed_replicate(seed0, k),
+                      s->mean[k], s->sd[k], s->axis[k]);
     if (!sp) {
       const char **cols = nl_xmalloc((size_t)(n + 1) * sizeof *cols);
       cols[0] = "freq";
@@ -169,5 +175,6 @@ void nl_study_survey_series(nl_study_basis_kind kind, const nl_study_setting *se
     nl_study_survey_free(s);
   }
   if (dist) *dist = dt; else nl_table_free(dt);
+  if (per_seed) *per_seed = ps; else nl_table_free(ps);
   if (spectrum) *spectrum = sp; else nl_table_free(sp);
 }
