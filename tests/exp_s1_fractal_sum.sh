@@ -46,6 +46,16 @@ tsv_awk 'v("setting") == "(d) 8 octaves" && n("axis_frac") <= 1.5 * n("axis_frac
 # checked within 5%. The verdict: within 2 standard errors (rule "sd 2 3").
 "$expect" "$out/fractal_sd_law.tsv" rows=4 'sd_over_law~1:0.05' 'sd_law>0' 'sd_over_law_se>=0' \
   'sd_over_law_se<0.05' 'claim_ratio==1'
+# Its two factors (paired by seed): the octaves' correlation, sd / sd_sep
+# (0.975-0.978 at seed 1), and each octave's own variance on the window
+# against the lone octave's, sd_sep / sd_law (0.999-1.002): the product is
+# the ratio. Per-seed rows: 4 settings x 3 seeds.
+"$expect" "$out/fractal_sd_law.tsv" 'sd_over_sep~1:0.05' 'sep_over_law~1:0.05' \
+  'sd_over_sep_se>=0' 'sep_over_law_se>=0'
+tsv_awk 'FNR > 1 { d = n("sd_over_sep") * n("sep_over_law") - n("sd_over_law")
+  if (d > 0.01 || d < -0.01) { print v("setting") ": factors " d " off the ratio"; exit 1 } }' \
+  "$out/fractal_sd_law.tsv"
+"$expect" "$out/fractal_seeds.tsv" rows=12 'sd>0' 'sd_sep>0'
 # the lone octave against itself: exactly 1 on every seed
 tsv_awk 'NR == 2 && (n("sd_over_law") != 1 || n("sd_over_law_se") != 0) { print; exit 1 }' \
   "$out/fractal_sd_law.tsv"

@@ -1,6 +1,7 @@
 /* report.c - S1's report prose: the fractal sum's staircase spectrum, its
  * sd against uncorrelated octaves, and the bound, from the run's tables. */
 #include "s1.h"
+#include "study/nl_study.h"
 
 void s1_report(nl_harness *r, const nl_table *d, const nl_table *law)
 {
@@ -11,6 +12,7 @@ void s1_report(nl_harness *r, const nl_table *d, const nl_table *law)
                           "The sd of the sum against the slides' law for uncorrelated octaves "
                           "(fractal_sd_law.tsv)",
                           4);
+  nl_study_sd_law_text(r, law);
   nl_harness_text(
       r,
       "Each octave adds a band one octave up at a quarter of the power (amplitude 1/2): the "

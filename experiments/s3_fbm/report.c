@@ -76,6 +76,7 @@ void s3_report_gain(nl_harness *r, int octaves, const nl_table *law, const char 
                           "The sd of fBm against the slides' law (gain_sd_law.tsv): sd1 the lone "
                           "octave's (gain 0)",
                           4);
+  nl_study_sd_law_text(r, law);
   double slope = spectrum_slope(r, spectrum, nl_table_text(law, top, "setting"), 1, 8);
   double lo = INFINITY, hi = -INFINITY;
   for (size_t i = 1; i < law->nrows; i++) {
@@ -121,6 +122,7 @@ void s3_report_lacunarity(nl_harness *r, int octaves, const nl_table *law,
                           "the lone octave's (gain series, gain 0); at lacunarity 1 the octaves "
                           "are one noise and the amplitudes add",
                           4);
+  nl_study_sd_law_text(r, law);
   nl_harness_text(
       r,
       "Lacunarity 1 sums one noise %s times: the picture of gain 0 at sd %.4f, %.4f times its "

@@ -143,13 +143,21 @@ static double seed_sd(const nl_table *t, const char *name, double seed)
   return NAN;
 }
 
+/* Mean and standard error of x[0..m-1]. */
+static void mean_se(const double *x, size_t m, double *mean, double *se)
+{
+  *mean = gsl_stats_mean(x, 1, m);
+  *se = m > 1 ? gsl_stats_sd_m(x, 1, m, *mean) / sqrt((double)m) : 0;
+}
+
 nl_table *nl_study_sd_law_table(const nl_table *dist, const nl_table *seeds,
                                 const nl_table *ref_seeds, const char *ref)
 {
   const char *cols[] = {"setting", "octaves", "gain",        "lacunarity",     "sd",
                         "sd_sd",   "sd1",     "sd_law",      "law",            "sd_over_law",
-                        "sd_over_law_se",     "claim_ratio"};
-  nl_table *t = nl_table_alloc(12, cols);
+                        "sd_over_law_se",     "claim_ratio",    "sd_over_sep",    "sd_over_sep_se",
+                        "sep_over_law",       "sep_over_law_se"};
+  nl_table *t = nl_table_alloc(16, cols);
   for (size_t i = 0; i < dist->nrows; i++) {
     const char *name = nl_table_text(dist, i, "setting");
     int n = (int)nl_table_value(dist, i, "octaves");
@@ -162,23 +170,57 @@ nl_table *nl_study_sd_law_table(const nl_table *dist, const nl_table *seeds,
     int same = lac == 1;
     double factor = same ? sum : sqrt(sum2);
     /* the per-seed ratios, paired by seed */
-    double *ratio = nl_xmalloc(seeds->nrows * sizeof *ratio), sd1 = 0;
+    double *ratio = nl_xmalloc(3 * seeds->nrows * sizeof *ratio), sd1 = 0;
+    double *corr = ratio + seeds->nrows, *samp = corr + seeds->nrows;
     size_t m = 0;
     for (size_t k = 0; k < seeds->nrows; k++) {
       if (strcmp(nl_table_text(seeds, k, "setting"), name)) continue;
       double s1 = seed_sd(ref_seeds, ref, nl_table_value(seeds, k, "seed"));
-      ratio[m++] = nl_table_value(seeds, k, "sd") / (s1 * factor);
+      double sd = nl_table_value(seeds, k, "sd"), sep = nl_table_value(seeds, k, "sd_sep");
+      ratio[m] = sd / (s1 * factor);
+      corr[m] = sd / sep;
+      samp[m++] = sep / (s1 * factor);
       sd1 += s1;
     }
     sd1 /= m;
-    double mean = gsl_stats_mean(ratio, 1, m);
-    double se = m > 1 ? gsl_stats_sd_m(ratio, 1, m, mean) / sqrt((double)m) : 0;
+    double r[6];
+    mean_se(ratio, m, &r[0], &r[1]);
+    mean_se(corr, m, &r[2], &r[3]);
+    mean_se(samp, m, &r[4], &r[5]);
     free(ratio);
-    nl_table_append(t, "siddddddsddd", name, n, g, lac, nl_table_value(dist, i, "sd"),
+    nl_table_append(t, "siddddddsddddddd", name, n, g, lac, nl_table_value(dist, i, "sd"),
                     nl_table_value(dist, i, "sd_sd"), sd1, sd1 * factor,
-                    same ? "identical" : "independent", mean, se, 1.0);
+                    same ? "identical" : "independent", r[0], r[1], 1.0, r[2], r[3], r[4], r[5]);
   }
   return t;
+}
+
+void nl_study_sd_law_text(nl_harness *r, const nl_table *law)
+{
+  long far = -1;
+  double z = -1;
+  for (size_t i = 0; i < law->nrows; i++) {
+    double se = nl_table_value(law, i, "sd_over_law_se");
+    if (strcmp(nl_table_text(law, i, "law"), "independent") || se == 0) continue;
+    double zi = fabs(nl_table_value(law, i, "sd_over_law") - 1) / se;
+    if (zi > z) {
+      z = zi;
+      far = (long)i;
+    }
+  }
+  if (far < 0) return;
+  size_t i = (size_t)far;
+  nl_harness_text(r,
+                  "Farthest from the law: %s, sd_over_law %.3f +- %.3f (%.1f standard errors). "
+                  "Its factors: the octaves' correlation, sd_over_sep = %.3f +- %.3f (1 for "
+                  "uncorrelated octaves), and each octave's own variance on the window against "
+                  "the lone first octave's, sep_over_law = %.3f +- %.3f (1 when the pixels and the "
+                  "window sample every octave alike).\n",
+                  nl_table_text(law, i, "setting"), nl_table_value(law, i, "sd_over_law"),
+                  nl_table_value(law, i, "sd_over_law_se"), z,
+                  nl_table_value(law, i, "sd_over_sep"), nl_table_value(law, i, "sd_over_sep_se"),
+                  nl_table_value(law, i, "sep_over_law"),
+                  nl_table_value(law, i, "sep_over_law_se"));
 }
 
 void nl_study_montage(nl_harness *r, const nl_image *const *panels, const char *const *labels,

@@ -54,9 +54,12 @@
  * as "improved" or "noise2", built with its default options for each seed. */
 typedef const char *nl_study_basis_kind;
 
-/* Points per seed of the axis-aligned gradient fraction: a quarter of the
- * pixels, so it costs about what the raster does. */
-#define NL_STUDY_AXIS_POINTS(w, h) ((size_t)(w) * (size_t)(h) / 4)
+/* Points per octave and seed of the axis-aligned gradient fraction: a
+ * quarter of the pixels (4096 at quick scale), at most 16384 (standard
+ * error 0.0017 per octave and seed), so it costs at most what the raster
+ * does. */
+#define NL_STUDY_AXIS_POINTS(w, h) \
+  ((size_t)(w) * (size_t)(h) / 4 < 16384 ? (size_t)(w) * (size_t)(h) / 4 : 16384)
 
 typedef struct {
   int nseeds, nbins, w, h;
@@ -64,6 +67,8 @@ typedef struct {
   double *mean, *sd, *min, *max;  /* per seed */
   double *axis, *axis_worst;      /* per seed: axis-aligned gradient fraction of
                                      the octaves, pooled and the largest one's */
+  double *sd_sep;                 /* per seed: sqrt(sum amp_l^2 var_l), var_l the
+                                     variance of octave l alone on the window */
   double *freq;                   /* nbins, cycles per unit */
   double *power;                  /* nseeds * nbins */
   double *first;                  /* w * h values of the first seed */
@@ -93,8 +98,10 @@ void nl_study_survey_free(nl_study_survey *s);
  *           from [mean - 3 sd, mean + 3 sd] to [0, 1] (each panel its own
  *           contrast; the table carries the amplitudes);
  *  per_seed one row per setting and seed: setting, seed, mean, sd,
- *           axis_frac (the statistics a paired comparison between
- *           settings needs, nl_study_sd_law_table).
+ *           sd_sep (the sd of the sum if its octaves were uncorrelated,
+ *           each with the variance it has alone on the window), axis_frac
+ *           (the statistics a paired comparison between settings needs,
+ *           nl_study_sd_law_table).
  * Any output pointer may be NULL. */
 typedef struct { const char *label; nl_noise_octaves oct; double gain, lacunarity; } nl_study_setting;
 void nl_study_survey_series(nl_study_basis_kind kind, const nl_study_setting *settings, int n,
@@ -147,9 +154,17 @@ nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int 
  * gain, lacunarity, sd, sd_sd, sd1 (mean over seeds), sd_law (sd1 times
  * the law's factor), law ("independent" or "identical"), sd_over_law (mean
  * of the per-seed ratios), sd_over_law_se (their standard error),
- * claim_ratio = 1, the law's value of the ratio. Caller frees. */
+ * claim_ratio = 1, the law's value of the ratio, and its two factors, each
+ * a mean of per-seed ratios with its standard error: sd_over_sep = sd /
+ * sd_sep (the octaves' correlation: 1 when uncorrelated) and sep_over_law =
+ * sd_sep / sd_law (each octave's variance on the window against the lone
+ * first octave's: 1 when sampling treats every octave alike). Caller
+ * frees. */
 nl_table *nl_study_sd_law_table(const nl_table *dist, const nl_table *seeds,
                                 const nl_table *ref_seeds, const char *ref);
+/* One paragraph on such a table: the row of independent octaves farthest
+ * from the law in standard errors, and its two factors. */
+void nl_study_sd_law_text(nl_harness *r, const nl_table *law);
 
 /* Lays panels out in a montage of `cols` columns (nl_image_montage), writes it as
  * FILE in the run's folder (nl_harness_write_image) and frees it: the figure step that

@@ -63,6 +63,28 @@ static double axis_fraction(const nl_noise_basis *b, const nl_noise_octaves *o,
   return n ? (double)hit / n : NAN;
 }
 
+/* The sd the sum would have if its octaves were uncorrelated, each with
+ * the variance it has alone on this window: sqrt(sum amp_l^2 var_l), var_l
+ * the variance of octave l's raster (of |noise| for turbulence). Against
+ * the sum's own sd it isolates the octaves' correlation; against the lone
+ * first octave's sd, what sampling does to each octave's variance (octaves
+ * wider than the window, octaves above the pixel rate). */
+static double separate_sd(const nl_noise_basis *b, const nl_noise_octaves *o,
+                          const nl_noise_window *win, double *v)
+{
+  size_t n = (size_t)win->w * win->h;
+  double var = 0;
+  for (int l = 0; l < o->n; l++) {
+    if (o->amp[l] == 0) continue;
+    nl_noise_octaves one = nl_noise_octaves_fbm(1, 1.0, 1.0);
+    one.freq[0] = o->freq[l];
+    one.turbulence = o->turbulence;
+    nl_noise_fractal_grid(b, &one, win, v);
+    var += o->amp[l] * o->amp[l] * gsl_stats_variance(v, 1, n);
+  }
+  return sqrt(var);
+}
+
 static void one_seed(nl_study_survey *s, nl_study_basis_kind kind, const nl_noise_octaves *o, const nl_noise_window *win,
                      unsigned long seed, int k, double *v)
 {
@@ -82,6 +104,7 @@ static void one_seed(nl_study_survey *s, nl_study_basis_kind kind, const nl_nois
   free(f);
   s->axis[k] = axis_fraction(&b->noise, o, win, NL_STUDY_AXIS_POINTS(win->w, win->h), seed,
                              &s->axis_worst[k]);
+  s->sd_sep[k] = o->n == 1 ? s->sd[k] : separate_sd(&b->noise, o, win, v);
   s->bound = nl_noise_octaves_bound(o, b->noise.bound);
   nl_basis_free(b);
 }
@@ -100,6 +123,7 @@ nl_study_survey *nl_study_survey_run(nl_study_basis_kind kind, const nl_noise_oc
   s->max = nl_xmalloc((size_t)nseeds * sizeof *s->max);
   s->axis = nl_xmalloc((size_t)nseeds * sizeof *s->axis);
   s->axis_worst = nl_xmalloc((size_t)nseeds * sizeof *s->axis_worst);
+  s->sd_sep = nl_xmalloc((size_t)nseeds * sizeof *s->sd_sep);
   s->freq = nl_xmalloc((size_t)s->nbins * sizeof *s->freq);
   s->power = nl_xmalloc((size_t)nseeds * s->nbins * sizeof *s->power);
   s->first = nl_xmalloc((size_t)win->w * win->h * sizeof *s->first);
@@ -115,7 +139,7 @@ nl_study_survey *nl_study_survey_run(nl_study_basis_kind kind, const nl_noise_oc
 void nl_study_survey_free(nl_study_survey *s)
 {
   if (!s) return;
-  free(s->mean); free(s->sd); free(s->min); free(s->max); free(s->axis); free(s->axis_worst);
+  free(s->mean); free(s->sd); free(s->min); free(s->max); free(s->axis); free(s->axis_worst); free(s->sd_sep);
   free(s->freq); free(s->power); free(s->first); free(s);
 }
 
@@ -147,14 +171,14 @@ void nl_study_survey_series(nl_study_basis_kind kind, const nl_study_setting *se
                             nl_table **per_seed)
 {
   nl_table *dt = dist_table(), *sp = NULL;
-  const char *pcols[] = {"setting", "seed", "mean", "sd", "axis_frac"};
-  nl_table *ps = nl_table_alloc(5, pcols);
+  const char *pcols[] = {"setting", "seed", "mean", "sd", "sd_sep", "axis_frac"};
+  nl_table *ps = nl_table_alloc(6, pcols);
   for (int i = 0; i < n; i++) {
     nl_study_survey *s = nl_study_survey_run(kind, &settings[i].oct, win, seed0, nseeds);
     dist_row(dt, &settings[i], s);
     for (int k = 0; k < nseeds; k++)
-      nl_table_append(ps, "sdddd", settings[i].label, (double)nl_seed_replicate(seed0, k),
-                      s->mean[k], s->sd[k], s->axis[k]);
+      nl_table_append(ps, "sddddd", settings[i].label, (double)nl_seed_replicate(seed0, k),
+                      s->mean[k], s->sd[k], s->sd_sep[k], s->axis[k]);
     if (!sp) {
       const char **cols = nl_xmalloc((size_t)(n + 1) * sizeof *cols);
       cols[0] = "freq";
