@@ -139,8 +139,17 @@ nl_study_survey *nl_study_survey_run(nl_study_basis_kind kind, const nl_noise_oc
 void nl_study_survey_free(nl_study_survey *s)
 {
   if (!s) return;
-  free(s->mean); free(s->sd); free(s->min); free(s->max); free(s->axis); free(s->axis_worst); free(s->sd_sep);
-  free(s->freq); free(s->power); free(s->first); free(s);
+  free(s->mean);
+  free(s->sd);
+  free(s->min);
+  free(s->max);
+  free(s->axis);
+  free(s->axis_worst);
+  free(s->sd_sep);
+  free(s->freq);
+  free(s->power);
+  free(s->first);
+  free(s);
 }
 
 static nl_table *dist_table(void)
