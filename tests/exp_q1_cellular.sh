@@ -16,6 +16,27 @@ tsv_awk 'v("rule")=="inverse-cdf" && (n("chi2_rejects")!=0 || n("ks_rejects")!=0
 tsv_awk 'NR>1 && v("rule")=="inverse-cdf" && (n("chi2_p")<0.01 || n("ks_p")<0.01) {print "row " NR " (" v("rule") ") out of range: " $0; exit 1}' "$out/tests.tsv"
 "$expect" "$out/tests.tsv" rows=9 'chi2>0' 'ks_d>0' 'df>=8'
 "$expect" "$out/counts.tsv" rows=21 'poisson>0' 'closest>=0' 'inverse_cdf>=0' 'closest_last>=0'
+# The verdict: the paper's rule (closest p(m), 16-bit cube seeds) against
+# Poisson(4), every seed's cubes pooled: rejected (chi-square 3.1e4, p = 0).
+"$expect" "$out/count_law.tsv" rows=4 'p>=0' 'p<=1' 'chi2>0' 'cubes==12288'
+tsv_awk 'v("rule") == "closest" && n("p") > 1e-6 { print "closest: p " n("p"); exit 1 }
+  v("seeding") == "full hash" && n("p") < 0.01 { print "full hash pooled: p " n("p"); exit 1 }' \
+  "$out/count_law.tsv"
+tsv_awk -v want=1 'FNR > 1 { rows++
+    if (v("kind") != "independent" || v("verdict") != "not reproduced" \
+        || v("rule") != "fit 0.01 0.001") {
+      print "verdict: " $0; exit 1 } }
+  END { if (rows != want) { print "verdicts: " rows " rows"; exit 1 } }' "$out/verdicts.tsv"
+# The check: inverse-CDF counts with r from a full hash of (seed, i, j, k)
+# pass on every seed (p 0.13-0.72 at seeds 1-3; paper scale: 0 of 10
+# rejected, pooled p = 0.24).
+"$expect" "$out/hash_check.tsv" rows=3 'chi2_p>=0.01' 'mean_count~4:0.1'
+# The fixed set of 2^16 first draws every table shares: the same for any
+# permutation (mean count 3.981201171875 = 260911 / 65536), and the
+# chi-square it adds to a table of n cubes, n sum (q - p)^2 / p, is
+# n / 65536 times its own (pooled bins aside): 0.60 at 4096 cubes (own 13.0).
+"$expect" "$out/fixed_set.tsv" rows=1 'cube_seeds==65536' 'mean_count~3.981201171875:1e-12' \
+  'chi2_added>0' 'chi2_added<chi2'
 if byte_reruns; then   # same seed, same tables (tsv.sh: release build only)
   "$exp" --quick --no-images --out "$out/again" >/dev/null
   cmp "$out/tests.tsv" "$out/again/tests.tsv"

@@ -21,5 +21,17 @@ tsv_awk 'NR==2 && (n("bump_mean")!=0 || n("bump_max")!=0 || n("shade_sd")!=0) {p
             NR>4 && !(n("bump_mean") - b < 0.9 * db) {print "bump_mean steps not shrinking at row " NR; exit 1}
             NR>2 {if (NR>3) db = n("bump_mean") - b; b = n("bump_mean"); sd = n("shade_sd")}
             END {if (NR != 7) {print NR " lines, wanted 7"; exit 1}}' "$out/bumps.tsv"
+# The steepest slope at amp = 1 (the report's reading of the amplitude):
+# none on the flat plane, and it grows with each octave (seed 1: 23, 53,
+# 67, 75, 80).
+tsv_awk 'NR == 2 && n("slope_max") != 0 { print "flat plane slope " n("slope_max"); exit 1 }
+  NR > 2 && !(n("slope_max") > s) { print "slope_max not growing at row " NR; exit 1 }
+  { s = n("slope_max") }' "$out/bumps.tsv"
+# Verdict rows: Fig. 4, qualitative.
+tsv_awk -v ind=0 -v qual=1 'FNR > 1 { k[v("kind")]++
+    if (v("kind") == "qualitative" && v("verdict") != "see figure") { print "bad: " $0; exit 1 } }
+  END { if (k["independent"] != ind || k["qualitative"] != qual || NR - 1 != ind + qual) {
+      printf "verdicts: %d independent, %d qualitative, %d rows\n", k["independent"],
+        k["qualitative"], NR - 1; exit 1 } }' "$out/verdicts.tsv"
 set +e
 refused "$exp" --quick --out "$out/bad" --set octaves=31

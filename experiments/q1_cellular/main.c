@@ -6,6 +6,7 @@
 #include "cellular/nl_cellular.h"
 #include "harness/nl_harness.h"
 #include "q1.h"
+#include "seeding.h"
 #include "study/nl_study.h"
 
 #include <gsl/gsl_statistics_double.h>
@@ -42,11 +43,11 @@ static void one_seed(nl_harness *r, nl_cellular *c, int side, long points, unsig
 
 static nl_image *f_panel(const nl_cellular *c, const char *expr, int size, double extent)
 {
-  nl_cellular_gctbf_basis gb = {c, {0}};
+  nl_cellular_gctbf_basis gb = { c, { 0 } };
   nl_cellular_gctbf_parse(expr, &gb.g, NULL);
   nl_noise_basis b = nl_cellular_basis_gctbf(&gb);
   nl_noise_octaves o = nl_noise_octaves_fbm(1, 1.0, 1.0);
-  nl_noise_window w = {0, 0, 0.5, extent, size, size};
+  nl_noise_window w = { 0, 0, 0.5, extent, size, size };
   size_t n = (size_t)size * size;
   double *v = nl_xmalloc(n * sizeof *v);
   nl_noise_fractal_grid(&b, &o, &w, v);
@@ -57,9 +58,9 @@ static nl_image *f_panel(const nl_cellular *c, const char *expr, int size, doubl
 
 int main(int argc, char **argv)
 {
-  q1 q = {0};
-  nl_harness *r = q.r = nl_harness_begin("q1_cellular", "Q1 - Cellular F1..F4 and the count rule",
-                                         argc, argv);
+  q1 q = { 0 };
+  nl_harness *r = q.r =
+      nl_harness_begin("q1_cellular", "Q1 - Cellular F1..F4 and the count rule", argc, argv);
   int quick = nl_harness_quick(r);
   q.lambda = nl_harness_param(r, "lambda", 4.0, 1e-3, 1000.0,
                               "Poisson mean lambda of feature points per unit cube "
@@ -81,10 +82,10 @@ int main(int argc, char **argv)
   unsigned long seed0 = nl_harness_seed(r);
 
   /* The three count rules over the seeds: per-seed tests, count histogram. */
-  const char *pcols[] = {"rule", "seed", "mean_count", "var_count", "chi2", "chi2_p", "df",
-                         "ks_d", "ks_p", "mean_f1"};
+  const char *pcols[] = { "rule",   "seed", "mean_count", "var_count", "chi2",
+                          "chi2_p", "df",   "ks_d",       "ks_p",      "mean_f1" };
   nl_table *per = nl_table_alloc(10, pcols);
-  const char *dcols[] = {"m", "poisson", "closest", "inverse_cdf", "closest_last"};
+  const char *dcols[] = { "m", "poisson", "closest", "inverse_cdf", "closest_last" };
   q.dist = nl_table_alloc(5, dcols);
   double h[NL_CELLULAR_MAX_M + 1];
   double ncubes = (double)q.side * q.side * q.side;
@@ -102,8 +103,8 @@ int main(int argc, char **argv)
     nl_table_append(q.dist, "idddd", m, ref->pmf[m], q.hist[0][m], q.hist[1][m], q.hist[2][m]);
 
   /* Per rule: mean over seeds, and how many seeds reject at p < 0.01. */
-  const char *scols[] = {"rule", "mean_count", "chi2", "chi2_rejects", "ks_d", "ks_rejects",
-                         "mean_f1", "mean_f1_theory", "seeds"};
+  const char *scols[] = { "rule",       "mean_count", "chi2",           "chi2_rejects", "ks_d",
+                          "ks_rejects", "mean_f1",    "mean_f1_theory", "seeds" };
   q.sum = nl_table_alloc(9, scols);
   q.theory = tgamma(4.0 / 3.0) * pow(4.0 / 3.0 * NL_PI * lambda, -1.0 / 3.0);
   for (int rule = 0; rule < NRULE; rule++) {
@@ -120,16 +121,17 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, q.sum, "summary.tsv");
   nl_harness_write_table(r, q.dist, "counts.tsv");
 
-  const char *exprs[] = {"F1", "F2", "F3", "F4", "F2 - F1"};
+  const char *exprs[] = { "F1", "F2", "F3", "F4", "F2 - F1" };
   nl_image *panels[6];
   for (int k = 0; k < 5; k++) panels[k] = f_panel(ref, exprs[k], size, 4.0);
   nl_cellular *closest = make(r, lambda, M, NL_COUNT_CLOSEST, seed0);
   panels[5] = f_panel(closest, "F1", size, 4.0);
-  const char *labels[] = {"F1", "F2", "F3", "F4", "F2 - F1", "F1 paper rule"};
+  const char *labels[] = { "F1", "F2", "F3", "F4", "F2 - F1", "F1 paper rule" };
   nl_study_montage(r, (const nl_image *const *)panels, labels, 6, 3, "F_i on z = 0.5",
                    "planes.png");
 
   q1_report(&q, ref->pmf);
+  q1_seeding(&q, seed0);
   for (int k = 0; k < 6; k++) nl_image_free(panels[k]);
   nl_cellular_free(ref);
   nl_cellular_free(closest);

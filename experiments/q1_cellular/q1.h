@@ -25,4 +25,9 @@ typedef struct {
  * ties: text, tables and figures. pmf: Poisson(lambda)'s p(0..M). */
 void q1_report(const q1 *q, const double *pmf);
 
+/* The seeding paragraph (seeding.h): the tables count_law, hash_check and
+ * fixed_set, and how many full-hash seeds chi-square rejects at 0.01. */
+void q1_report_seeding(const q1 *q, const nl_table *law, const nl_table *hash,
+                       const nl_table *fixed, int rejects);
+
 #endif

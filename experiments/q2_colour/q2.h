@@ -3,9 +3,12 @@
 #define Q2_H
 
 #include "harness/nl_harness.h"
+#include "noise/nl_noise.h"
 
-/* Eq. 4 and our reading (the square [0, extent)^2, the Perlin panel's
- * frequency), the table t (values.tsv) and the figure. */
-void q2_report(nl_harness *r, double extent, double perlin_freq, const nl_table *t);
+/* Eq. 4 and our reading (the window of the GCTBF panels win, the Perlin
+ * panel's pwin and frequency), the table t (values.tsv), the figure and its
+ * qualitative verdict row. */
+void q2_report(nl_harness *r, const nl_noise_window *win, const nl_noise_window *pwin,
+               double perlin_freq, const nl_table *t);
 
 #endif

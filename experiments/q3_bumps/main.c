@@ -8,6 +8,20 @@
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>
 
+/* The steepest slope of the height field h (w x w samples `spacing` apart):
+ * the largest |grad h| by central differences, at displacement amp = 1. */
+static double slope_max(const double *h, int w, double spacing)
+{
+  double top = 0;
+  for (int y = 1; y < w - 1; y++)
+    for (int x = 1; x < w - 1; x++) {
+      double gx = (h[(size_t)y * w + x + 1] - h[(size_t)y * w + x - 1]) / (2 * spacing);
+      double gy = (h[(size_t)(y + 1) * w + x] - h[(size_t)(y - 1) * w + x]) / (2 * spacing);
+      top = fmax(top, sqrt(gx * gx + gy * gy));
+    }
+  return top;
+}
+
 int main(int argc, char **argv)
 {
   nl_harness *r =
@@ -29,28 +43,30 @@ int main(int argc, char **argv)
   nl_harness_params_done(r);
   int seeds = nl_harness_seeds(r);
   size_t npix = (size_t)size * size;
-  nl_noise_window win = {0, 0, 0.5, extent, size, size};
+  nl_noise_window win = { 0, 0, 0.5, extent, size, size };
   /* One light from the upper left, 45 degrees high. */
-  const double light[3] = {-0.5, 0.5, 0.70710678118654752};
-  double *h = nl_xmalloc(npix * sizeof *h);  /* bump height */
+  const double light[3] = { -0.5, 0.5, 0.70710678118654752 };
+  double *h = nl_xmalloc(npix * sizeof *h);   /* bump height */
   double *sh = nl_xmalloc(npix * sizeof *sh); /* its shading */
   int npan = max_oct + 2;
   nl_image **panels = nl_xmalloc((size_t)npan * sizeof *panels);
   char **labels = nl_xmalloc((size_t)npan * sizeof *labels);
 
-  const char *cols[] = {"octaves", "bump_mean", "bump_max", "shade_mean", "shade_sd"};
-  nl_table *t = nl_table_alloc(5, cols);
+  const char *cols[] = {
+    "octaves", "bump_mean", "bump_max", "shade_mean", "shade_sd", "slope_max"
+  };
+  nl_table *t = nl_table_alloc(6, cols);
   for (int i = 0; i < npan; i++) labels[i] = nl_xmalloc(32);
   for (int i = 0; i < npan; i++) snprintf(labels[i], 32, i ? "octaves = %d" : "original", i - 1);
   for (int pan = 0; pan < npan; pan++) {
-    double st[4] = {0, 0, 0, 0};
+    double st[5] = { 0, 0, 0, 0, 0 };
     for (int s = 0; s < seeds; s++) {
       nl_cellular *c;
       nl_error err;
       unsigned long seed = nl_seed_replicate(nl_harness_seed(r), s);
       if (nl_cellular_alloc(4.0, 50, NL_COUNT_INVERSE_CDF, seed, &c, &err))
         nl_harness_die(r, 1, "%s", err.msg);
-      nl_cellular_gctbf_basis gb = {c, {0}};
+      nl_cellular_gctbf_basis gb = { c, { 0 } };
       nl_cellular_gctbf_parse("F2 - F1 - F1F1", &gb.g, NULL);
       if (pan == 0) {
         for (size_t q = 0; q < npix; q++) h[q] = 0.0; /* the flat plane */
@@ -63,14 +79,15 @@ int main(int argc, char **argv)
       st[1] = fmax(st[1], gsl_stats_max(h, 1, npix));
       st[2] += gsl_stats_mean(sh, 1, npix) / seeds;
       st[3] += gsl_stats_sd(sh, 1, npix) / seeds;
+      st[4] = fmax(st[4], slope_max(h, size, extent / size));
       if (s == 0) panels[pan] = nl_image_from_values(sh, size, size, 0.0, 1.0);
       nl_cellular_free(c);
     }
-    nl_table_append(t, "idddd", pan - 1, st[0], st[1], st[2], st[3]);
+    nl_table_append(t, "iddddd", pan - 1, st[0], st[1], st[2], st[3], st[4]);
   }
   nl_harness_write_table(r, t, "bumps.tsv");
-  nl_image *m = nl_image_montage((const nl_image *const *)panels, (const char *const *)labels,
-                                 npan, 3, "Fig. 4: F2 - F1 - F1F1 wrinkles");
+  nl_image *m = nl_image_montage((const nl_image *const *)panels, (const char *const *)labels, npan,
+                                 3, "Fig. 4: F2 - F1 - F1F1 wrinkles");
   nl_harness_write_image(r, m, "bumps.png");
 
   q3_report(r, extent, k, amp, light, max_oct, t);

@@ -12,15 +12,15 @@
 
 typedef struct {
   nl_harness *r;
-  int size;             /* side in pixels of the images */
-  int octaves;          /* octaves above the first in eq. 7 and the flame */
-  int seeds;            /* seeds averaged in the tables */
-  double k;             /* scale between octaves (eq. 7) */
-  double rings;         /* wood: rings per unit of distance to the axis */
-  double turb;          /* wood: rings added per unit of the basis */
-  nl_noise_window win;  /* plane z = 0.5, [0, 2)^2 */
-  nl_table *t;          /* textures.tsv: one row per texture */
-  nl_table *wood;       /* wood.tsv: one row per wood panel (wood.h) */
+  int size;            /* side in pixels of the images */
+  int octaves;         /* octaves above the first in eq. 7 and the flame */
+  int seeds;           /* seeds averaged in the tables */
+  double k;            /* scale between octaves (eq. 7) */
+  double rings;        /* wood: rings per unit of distance to the axis */
+  double turb;         /* wood: rings added per unit of the basis */
+  nl_noise_window win; /* plane z = 0.5, [0, 2)^2 (Perlin: z NL_STUDY_SLICE_Z) */
+  nl_table *t;         /* textures.tsv: one row per texture */
+  nl_table *wood;      /* wood.tsv: one row per wood panel (wood.h) */
 } q4;
 
 /* The report of Q4: the paper and our readings, the two tables, the three

@@ -1,6 +1,7 @@
 /* report.c - Q4's report prose: what Qin & Yang 2000 show in Fig. 5 and 6,
  * how we read what they leave open, and what the wood panels measure. */
 #include "q4.h"
+#include "study/nl_study.h"
 
 static void q4_report_readings(const q4 *q)
 {
@@ -10,7 +11,9 @@ static void q4_report_readings(const q4 *q)
       "**Paper (Fig. 5, 6):** cloud pattern eq. 7 for Perlin and five GCTBF; marble sum (-1)^i F_i "
       "+ sum (-1)^(i+j) F_i F_j, wood F1 - F1F1 and F3 - F3F3, sky F1F2 + F2F3 and F1, flame F1 "
       "(images only; colours other than the sky/cloud of eq. 7 and the marble knots of sec. 4.1 "
-      "are not given). **Ours:** plane z = 0.5, [0, 2)^2 scaled by k = %g, %d octaves after the "
+      "are not given). **Ours:** plane z = %g (Perlin's: z = %.4g, a third of a cell off the "
+      "lattice planes at every octave for k a power of 2, where the octaves' gradients would "
+      "line up with the axes), [0, %g)^2 scaled by k = %g, %d octaves after the "
       "first in eq. 7 and the flame, lambda = 4 with inverse-CDF counts, %d seeds for the "
       "numbers.\n\n**Readings:** smoothscale() of eq. 7 (an antialiasing fade tied to the "
       "RenderMan footprint) is 1; Fig. 5's five combinations are drawn, not named: we use F1, F2, "
@@ -32,11 +35,11 @@ static void q4_report_readings(const q4 *q)
       "around F1's feature points, like knots; neither has the fine fibre grain of wood (the basis "
       "is isotropic, not stretched along the axis). The ramp reading shows cells and creases, no "
       "rings.\n",
-      q->k, q->octaves, q->seeds, q->rings, q->turb, nl_table_value(wt, 0, "perturb_rings_sd"),
-      nl_table_value(wt, 1, "perturb_rings_sd"), nl_table_value(wt, 0, "rings"),
-      nl_table_value(wt, 1, "rings"), nl_table_value(wt, 0, "rings_geometry"),
-      nl_table_value(wt, 1, "rings_geometry"), nl_table_value(wt, 0, "ramp_bands"),
-      nl_table_value(wt, 1, "ramp_bands"));
+      q->win.z, NL_STUDY_SLICE_Z, q->win.size, q->k, q->octaves, q->seeds, q->rings, q->turb,
+      nl_table_value(wt, 0, "perturb_rings_sd"), nl_table_value(wt, 1, "perturb_rings_sd"),
+      nl_table_value(wt, 0, "rings"), nl_table_value(wt, 1, "rings"),
+      nl_table_value(wt, 0, "rings_geometry"), nl_table_value(wt, 1, "rings_geometry"),
+      nl_table_value(wt, 0, "ramp_bands"), nl_table_value(wt, 1, "ramp_bands"));
 }
 
 void q4_report(const q4 *q)
@@ -55,4 +58,10 @@ void q4_report(const q4 *q)
   nl_harness_figure(
       q->r, "wood.png",
       "Wood, table (F1 - F1F1) and trunk (F3 - F3F3): the ramp reading beside the wood shader");
+  nl_harness_verdict_figure(q->r, "Fig. 5: eq. 7 clouds, Perlin and five GCTBF",
+                            "cellular clouds beside Perlin's (images only)", "clouds.png",
+                            "the five combinations are our reading: the figure names none");
+  nl_harness_verdict_figure(q->r, "Fig. 6: marble, wood, sky and flame textures",
+                            "GCTBF textures (images only)", "textures.png",
+                            "colours, wood shader and amplitudes are our reading");
 }

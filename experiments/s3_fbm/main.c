@@ -15,8 +15,8 @@ int main(int argc, char **argv)
   nl_harness_params_done(r);
 
   s3_report_intro(r, octaves, &win);
-  const double gains[] = {0, 0.25, 0.5, 0.75, 1.0};
-  const double lacs[] = {0.5, 1, 2, 4, 8};
+  const double gains[] = { 0, 0.25, 0.5, 0.75, 1.0 };
+  const double lacs[] = { 0.5, 1, 2, 4, 8 };
   nl_study_setting g[5];
   nl_study_setting l[5];
   char gl[5][32];
@@ -24,19 +24,38 @@ int main(int argc, char **argv)
   for (int i = 0; i < 5; i++) {
     snprintf(gl[i], 32, "(%c) gain %g", 'a' + i, gains[i]);
     snprintf(ll[i], 32, "(%c) lacunarity %g", 'a' + i, lacs[i]);
-    g[i] = (nl_study_setting){gl[i], nl_noise_octaves_fbm(octaves, gains[i], 2.0), gains[i], 2.0};
-    l[i] = (nl_study_setting){ll[i], nl_noise_octaves_fbm(octaves, 0.5, lacs[i]), 0.5, lacs[i]};
+    g[i] = (nl_study_setting){ gl[i], nl_noise_octaves_fbm(octaves, gains[i], 2.0), gains[i], 2.0 };
+    l[i] = (nl_study_setting){ ll[i], nl_noise_octaves_fbm(octaves, 0.5, lacs[i]), 0.5, lacs[i] };
   }
   nl_harness_text(r, "### Varying the gain\n");
+  nl_table *gs;
+  nl_table *ls;
   nl_table *gt = nl_study_series(r, "gain", "fBm, lacunarity 2: gain 0, 0.25, 0.5, 0.75, 1",
-                                 "improved", g, 5, &win);
-  s3_report_gain(r, octaves);
+                                 "improved", g, 5, &win, &gs);
+  /* The slides' sd law against the lone octave: gain 0 (row 0, sd1). */
+  const char *lone = nl_table_text(gt, 0, "setting");
+  nl_table *gsd = nl_study_sd_law_table(gt, gs, gs, lone);
+  nl_harness_write_table(r, gsd, "gain_sd_law.tsv");
+  s3_sd_verdicts(r, gsd, "gain_sd_law.tsv", -1);
+  s3_report_gain(r, octaves, gsd, "gain_spectrum.tsv");
   nl_harness_text(r, "### Varying the lacunarity\n");
   nl_table *lt = nl_study_series(r, "lacunarity", "fBm, gain 0.5: lacunarity 0.5, 1, 2, 4, 8",
-                                 "improved", l, 5, &win);
-  s3_report_lacunarity(r, octaves, gt, lt);
+                                 "improved", l, 5, &win, &ls);
+  nl_table *lsd = nl_study_sd_law_table(lt, ls, gs, lone);
+  nl_harness_write_table(r, lsd, "lacunarity_sd_law.tsv");
+  s3_sd_verdicts(r, lsd, "lacunarity_sd_law.tsv", 2); /* lacunarity 2: gain 0.5's row */
+  s3_report_lacunarity(r, octaves, lsd, &win);
+  nl_harness_verdict_figure(r, "fBm varying the gain", "higher gain, rougher fBm (images only)",
+                            "gain_panels.png", NULL);
+  nl_harness_verdict_figure(r, "fBm varying the lacunarity",
+                            "higher lacunarity, finer detail (images only)",
+                            "lacunarity_panels.png", NULL);
   nl_table_free(gt);
   nl_table_free(lt);
+  nl_table_free(gsd);
+  nl_table_free(gs);
+  nl_table_free(ls);
+  nl_table_free(lsd);
   nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);
 }

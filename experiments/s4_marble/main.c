@@ -2,7 +2,9 @@
  * mapped through a colour ramp (slides "Marble", panels (a)-(c)). */
 #include "noise/nl_noise.h"
 #include "harness/nl_harness.h"
+#include "arcsine.h"
 #include "s4.h"
+#include "study/nl_study.h"
 #include "texture/nl_texture.h"
 
 #include <gsl/gsl_histogram.h>
@@ -10,7 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define NA 4
+#define NA    4
 #define NBINS 20
 
 int main(int argc, char **argv)
@@ -27,20 +29,20 @@ int main(int argc, char **argv)
                                    "side of the noise-space square [0, extent)^2 the images cover");
   nl_harness_params_done(r);
 
-  const double amps[NA] = {0, 0.25, 0.5, 1.0};
+  const double amps[NA] = { 0, 0.25, 0.5, 1.0 };
   nl_noise_octaves o = nl_noise_octaves_fractal(octaves);
-  nl_noise_window win = {0, 0, 0.5, extent, size, size};
+  nl_noise_window win = { 0, 0, NL_STUDY_SLICE_Z, extent, size, size };
   nl_texture_ramp ramp = nl_texture_ramp_marble();
   size_t npix = (size_t)size * size;
   double *u = nl_xmalloc(npix * sizeof *u);
-  const char *hcols[NA + 1] = {"u", "a=0", "a=0.25", "a=0.5", "a=1"};
+  const char *hcols[NA + 1] = { "u", "a=0", "a=0.25", "a=0.5", "a=1" };
   nl_table *hist = nl_table_alloc(NA + 1, hcols);
   for (int b = 0; b < NBINS; b++) {
     size_t row = nl_table_append_empty(hist);
     nl_table_set(hist, row, "u", (b + 0.5) / NBINS);
   }
-  const char *dcols[] = {"a", "u_mean", "u_mean_sd", "u_sd", "u_sd_sd"};
-  nl_table *dist = nl_table_alloc(5, dcols);
+  const char *dcols[] = { "a", "u_mean", "u_mean_sd", "u_sd", "u_sd_sd", "cdf_gap" };
+  nl_table *dist = nl_table_alloc(6, dcols);
   nl_image *panels[NA];
   char labels[NA][32];
   const char *lab[NA];
@@ -62,14 +64,15 @@ int main(int argc, char **argv)
       if (k == 0) panels[i] = nl_texture_ramp_image(&ramp, u, size, size, 0, 1);
     }
     /* density: samples per bin over all seeds, per unit of u */
+    double dens[NBINS];
     for (int bin = 0; bin < NBINS; bin++) {
-      double density = gsl_histogram_get(h, bin) / ((double)npix * nseeds) * NBINS;
-      nl_table_set(hist, (size_t)bin, hcols[i + 1], density);
+      dens[bin] = gsl_histogram_get(h, bin) / ((double)npix * nseeds) * NBINS;
+      nl_table_set(hist, (size_t)bin, hcols[i + 1], dens[bin]);
     }
     double m_sd = nseeds > 1 ? gsl_stats_sd(m, 1, nseeds) : 0;
     double sd_sd = nseeds > 1 ? gsl_stats_sd(sd, 1, nseeds) : 0;
-    nl_table_append(dist, "ddddd", amps[i], gsl_stats_mean(m, 1, nseeds), m_sd,
-                    gsl_stats_mean(sd, 1, nseeds), sd_sd);
+    nl_table_append(dist, "dddddd", amps[i], gsl_stats_mean(m, 1, nseeds), m_sd,
+                    gsl_stats_mean(sd, 1, nseeds), sd_sd, s4_arcsine_gap(dens, NBINS));
     snprintf(labels[i], sizeof labels[i], "(%c) a = %g", 'a' + i, amps[i]);
     lab[i] = labels[i];
   }
@@ -86,7 +89,10 @@ int main(int argc, char **argv)
   nl_harness_check(r, "distribution.tsv", "u_mean_sd", "ftest 1e-3");
   nl_harness_check(r, "distribution.tsv", "u_sd_sd", "ftest 1e-3");
 
-  s4_report(r, stripes, octaves, extent, dist);
+  nl_harness_verdict_figure(r, "marble through a colour ramp",
+                            "turbulent marble veins (images only)", "panels.png",
+                            "the amplitude a is not given: ours a sweep");
+  s4_report(r, stripes, octaves, &win, dist, NBINS, s4_uniform_gap(NBINS));
   gsl_histogram_free(h);
   for (int i = 0; i < NA; i++) nl_image_free(panels[i]);
   nl_image_free(mont);

@@ -3,10 +3,13 @@
 #define S4_H
 
 #include "harness/nl_harness.h"
+#include "noise/nl_noise.h"
 
 /* The slides' marble and ours (stripes per unit, octaves of the fractal
- * sum, the square [0, extent)^2), the panels, the table dist
- * (distribution.tsv) and the density figure. */
-void s4_report(nl_harness *r, double stripes, int octaves, double extent, const nl_table *dist);
+ * sum, the window win), the panels, the table dist (distribution.tsv, with
+ * each a's cdf_gap from the arcsine law at the edges of nbins bins) and the
+ * density figure; uniform_gap is a uniform u's distance at the same edges. */
+void s4_report(nl_harness *r, double stripes, int octaves, const nl_noise_window *win,
+               const nl_table *dist, int nbins, double uniform_gap);
 
 #endif

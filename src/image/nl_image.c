@@ -254,6 +254,34 @@ nl_image *nl_image_downsample(const nl_image *im, int f)
   return o;
 }
 
+/* Breaks `text` at spaces into lines no wider than `width` pixels at
+ * `scale` (a word wider than that stays whole on its own line), writing them
+ * '\n'-separated into out (strlen(text) + 1 bytes); returns the line count.
+ * A caption wider than its panel would run into its neighbours' captions. */
+static int caption_wrap(const char *text, int scale, int width, char *out)
+{
+  size_t n = strlen(text);
+  int lines = 1;
+  size_t start = 0; /* first byte of the current line in out */
+  memcpy(out, text, n + 1);
+  for (size_t k = 0; k < n; k++) {
+    if (out[k] != ' ') continue;
+    /* the line so far plus the next word */
+    size_t end = k + 1;
+    while (end < n && out[end] != ' ') end++;
+    char save = out[end];
+    out[end] = 0;
+    int wide = nl_image_text_width(out + start, scale) > width;
+    out[end] = save;
+    if (wide && k > start) {
+      out[k] = '\n';
+      start = k + 1;
+      lines++;
+    }
+  }
+  return lines;
+}
+
 nl_image *nl_image_montage(const nl_image *const *images, const char *const *labels, int n,
                            int cols, const char *title)
 {
@@ -276,13 +304,32 @@ nl_image *nl_image_montage(const nl_image *const *images, const char *const *lab
   }
   /* Captions scale with the panels so they stay legible in large montages. */
   int scale = cw >= 384 ? 3 : 2;
-  int caph = 12 * scale + pad;
-  int titleh = title ? 14 * scale + pad : 0;
+  int lines = 1;
+  for (int i = 0; labels && i < n; i++)
+    if (labels[i]) {
+      char *buf = nl_xmalloc(strlen(labels[i]) + 1);
+      int k = caption_wrap(labels[i], scale, cw, buf);
+      if (k > lines) lines = k;
+      free(buf);
+    }
+  int caph = 12 * scale * lines + pad;
+  /* The title, too, is broken into lines as wide as the grid. */
+  int width = pad + cols * (cw + pad);
+  char *tbuf = title ? nl_xmalloc(strlen(title) + 1) : NULL;
+  int tlines = title ? caption_wrap(title, scale, width - 2 * pad, tbuf) : 0;
+  int titleh = title ? 14 * scale * tlines + pad : 0;
   int rows = (n + cols - 1) / cols;
-  nl_image *m = nl_image_alloc(pad + cols * (cw + pad), titleh + pad + rows * (chh + caph + pad), 3);
+  nl_image *m = nl_image_alloc(width, titleh + pad + rows * (chh + caph + pad), 3);
   for (size_t i = 0; i < (size_t)m->width * m->height * 3; i++) m->data[i] = 1.0f;
   const float black[3] = {0, 0, 0};
-  if (title) nl_image_text(m, pad, pad, scale, title, black);
+  char *l = tbuf;
+  for (int line = 0; l; line++) {
+    char *nl = strchr(l, '\n');
+    if (nl) *nl = 0;
+    nl_image_text(m, pad, pad + 14 * scale * line, scale, l, black);
+    l = nl ? nl + 1 : NULL;
+  }
+  free(tbuf);
   for (int i = 0; i < n; i++) {
     nl_image *rgb = nl_image_convert(images[i], 3);
     int x0 = pad + (i % cols) * (cw + pad) + (cw - rgb->width) / 2;
@@ -290,8 +337,18 @@ nl_image *nl_image_montage(const nl_image *const *images, const char *const *lab
     for (int y = 0; y < rgb->height; y++)
       memcpy(nl_image_pixel(m, x0, y0 + y), nl_image_pixel(rgb, 0, y), (size_t)rgb->width * 3 * sizeof(float));
     if (labels && labels[i]) {
-      int tw = nl_image_text_width(labels[i], scale);
-      nl_image_text(m, pad + (i % cols) * (cw + pad) + (cw - tw) / 2, y0 + chh + pad / 2, scale, labels[i], black);
+      char *buf = nl_xmalloc(strlen(labels[i]) + 1);
+      caption_wrap(labels[i], scale, cw, buf);
+      char *l = buf;
+      for (int line = 0; l; line++) {
+        char *nl = strchr(l, '\n');
+        if (nl) *nl = 0;
+        int tw = nl_image_text_width(l, scale);
+        int tx = pad + (i % cols) * (cw + pad) + (cw - tw) / 2;
+        nl_image_text(m, tx, y0 + chh + pad / 2 + 12 * scale * line, scale, l, black);
+        l = nl ? nl + 1 : NULL;
+      }
+      free(buf);
     }
     nl_image_free(rgb);
   }

@@ -131,6 +131,36 @@ NL_TEST(montage_layout_and_text)
   nl_image_free(a); nl_image_free(b); nl_image_free(m);
 }
 
+/* A caption wider than its panel is broken at spaces onto more lines (the
+ * montage grows taller) and no caption pixel lands outside its own column;
+ * a title wider than the grid, likewise. */
+NL_TEST(montage_wraps_long_captions)
+{
+  nl_image *a = ramp(128, 128, 1);   /* S3's quick panels */
+  const nl_image *ims[] = {a, a};
+  const char *shortl[] = {"(a)", "(b)"};
+  const char *longl[] = {"(a) lacunarity 0.5", "(b) lacunarity 1"};
+  nl_image *s = nl_image_montage(ims, shortl, 2, 2, NULL);
+  nl_image *m = nl_image_montage(ims, longl, 2, 2, NULL);
+  NL_CHECK(m->width == s->width && m->height > s->height);
+  int stray = 0;
+  for (int y = 8 + 128; y < m->height; y++)
+    for (int x = 0; x < m->width; x++) {
+      int gap = x < 8 || (x >= 8 + 128 && x < 8 + 128 + 8) || x >= 8 + 2 * 128 + 8;
+      if (gap && nl_image_pixel(m, x, y)[0] == 0.0f) stray++;
+    }
+  NL_CHECK(stray == 0);
+  /* A title wider than the grid takes more lines; no pixel of it is cut. */
+  nl_image *ts = nl_image_montage(ims, shortl, 2, 2, "Fig. 4");
+  nl_image *tl = nl_image_montage(ims, shortl, 2, 2, "Fig. 4: F2 - F1 - F1F1 wrinkles, octaves");
+  NL_CHECK(tl->width == ts->width && tl->height > ts->height);
+  int edge = 0;
+  for (int y = 0; y < tl->height; y++)
+    for (int x = tl->width - 8; x < tl->width; x++) edge += nl_image_pixel(tl, x, y)[0] == 0.0f;
+  NL_CHECK(edge == 0);
+  nl_image_free(a); nl_image_free(s); nl_image_free(m); nl_image_free(ts); nl_image_free(tl);
+}
+
 NL_TEST(downsample_box_filter_and_wide_montage)
 {
   nl_image *a = nl_image_alloc(4, 2, 1);

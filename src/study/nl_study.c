@@ -14,16 +14,39 @@ static void put(const char *prefix, const char *what, char *buf, size_t n)
   snprintf(buf, n, "%s_%s", prefix, what);
 }
 
+/* How far the series' octaves are from the lattice-plane creases, from the
+ * axis_frac columns of dist (nl_study_survey_series). */
+static void slice_text(nl_harness *r, const nl_table *dist, const nl_noise_window *win)
+{
+  size_t top = 0;
+  double worst = 0;
+  for (size_t i = 0; i < dist->nrows; i++) {
+    if (nl_table_value(dist, i, "axis_frac") > nl_table_value(dist, top, "axis_frac")) top = i;
+    worst = fmax(worst, nl_table_value(dist, i, "axis_frac_worst"));
+  }
+  double ax = nl_table_value(dist, top, "axis_frac");
+  double iso = nl_table_value(dist, top, "axis_frac_iso");
+  nl_harness_text(r,
+                  "**Slice.** Each octave of frequency f samples the plane z f = %g f. The "
+                  "gradients of the octaves, each alone on its plane, lie within 2 degrees of "
+                  "the x or y axis at a fraction %.4f of points at most (axis_frac, %s; the "
+                  "worst single octave of any setting %.4f) against %.4f for an isotropic "
+                  "field: %.2f times. An octave on a lattice plane (z f an integer) would show "
+                  "straight axis-aligned creases and raise this fraction (run with --set "
+                  "z=0.5).\n",
+                  win->z, ax, nl_table_text(dist, top, "setting"), worst, iso, ax / iso);
+}
+
 nl_table *nl_study_series(nl_harness *r, const char *prefix, const char *title,
                           nl_study_basis_kind kind, const nl_study_setting *settings, int n,
-                          const nl_noise_window *win)
+                          const nl_noise_window *win, nl_table **per_seed)
 {
-  nl_table *dist, *spec;
+  nl_table *dist, *spec, *seeds;
   nl_image **panels = nl_xcalloc((size_t)n, sizeof *panels);
   const char **labels = nl_xcalloc((size_t)n, sizeof *labels);
   for (int i = 0; i < n; i++) labels[i] = settings[i].label;
   nl_study_survey_series(kind, settings, n, win, nl_harness_seed(r), nl_harness_seeds(r), &dist,
-                         &spec, panels);
+                         &spec, panels, &seeds);
   nl_image *m = nl_image_montage((const nl_image *const *)panels, labels, n, n, title);
   char f[256], cap[512];
   put(prefix, "panels.png", f, sizeof f);
@@ -38,8 +61,15 @@ nl_table *nl_study_series(nl_harness *r, const char *prefix, const char *title,
            "mean min and max, largest |value| seen against the analytic bound",
            nl_harness_seeds(r), f);
   nl_harness_report_table(r, dist, cap, 4);
+  slice_text(r, dist, win);
   put(prefix, "spectrum.tsv", f, sizeof f);
   nl_harness_write_table(r, spec, f);
+  put(prefix, "seeds.tsv", f, sizeof f);
+  nl_harness_write_table(r, seeds, f);
+  if (per_seed)
+    *per_seed = seeds;
+  else
+    nl_table_free(seeds);
   /* Regression rules (scripts/noiselab check): mean and sd are means over
    * seeds with their spreads beside them, compared as statistics so that a
    * new random stream passes and a shift fails. Everything else, the
@@ -83,14 +113,16 @@ nl_noise_window nl_study_window(nl_harness *r)
                                        "image side in pixels of each survey slice (quick 128)");
   double extent = nl_harness_param(r, "extent", 4.0, 1e-3, 1e4,
                                    "side of the noise-space square [0, extent)^2 the slice covers");
-  double z = nl_harness_param(r, "z", 0.5, -1e6, 1e6,
-                              "z of the 2D slice through Perlin's improved 3D noise");
+  double z = nl_harness_param(r, "z", NL_STUDY_SLICE_Z, -1e6, 1e6,
+                              "z of the 2D slice through Perlin's improved 3D noise (64/3: "
+                              "a third of a cell off the lattice planes at every octave)");
   nl_noise_window w = {0, 0, z, extent, size, size};
   return w;
 }
 
 nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int turbulence,
-                                 const char *slides, const char *prefix, const char *title)
+                                 const char *slides, const char *prefix, const char *title,
+                                 nl_table **per_seed)
 {
   nl_harness_text(r, "**Slides:** %s **Ours:** the slice z = %g of Perlin's improved 3D noise over "
                      "[0, %g)^2, %d seeds for the numbers.\n",
@@ -99,7 +131,96 @@ nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int 
   nl_study_setting st[4];
   char labels[4][32];
   octave_settings(oct, 4, turbulence, st, labels);
-  return nl_study_series(r, prefix, title, "improved", st, 4, win);
+  return nl_study_series(r, prefix, title, "improved", st, 4, win, per_seed);
+}
+
+/* sd of setting `name` at seed `seed` in a per-seed table; NAN if absent. */
+static double seed_sd(const nl_table *t, const char *name, double seed)
+{
+  for (size_t k = 0; k < t->nrows; k++)
+    if (nl_table_value(t, k, "seed") == seed && !strcmp(nl_table_text(t, k, "setting"), name))
+      return nl_table_value(t, k, "sd");
+  return NAN;
+}
+
+/* Mean and standard error of x[0..m-1]. */
+static void mean_se(const double *x, size_t m, double *mean, double *se)
+{
+  *mean = gsl_stats_mean(x, 1, m);
+  *se = m > 1 ? gsl_stats_sd_m(x, 1, m, *mean) / sqrt((double)m) : 0;
+}
+
+nl_table *nl_study_sd_law_table(const nl_table *dist, const nl_table *seeds,
+                                const nl_table *ref_seeds, const char *ref)
+{
+  const char *cols[] = {"setting", "octaves", "gain",        "lacunarity",     "sd",
+                        "sd_sd",   "sd1",     "sd_law",      "law",            "sd_over_law",
+                        "sd_over_law_se",     "claim_ratio",    "sd_over_sep",    "sd_over_sep_se",
+                        "sep_over_law",       "sep_over_law_se"};
+  nl_table *t = nl_table_alloc(16, cols);
+  for (size_t i = 0; i < dist->nrows; i++) {
+    const char *name = nl_table_text(dist, i, "setting");
+    int n = (int)nl_table_value(dist, i, "octaves");
+    double g = nl_table_value(dist, i, "gain"), lac = nl_table_value(dist, i, "lacunarity");
+    double sum = 0, sum2 = 0, a = 1;
+    for (int j = 0; j < n; j++, a *= g) {
+      sum += a;
+      sum2 += a * a;
+    }
+    int same = lac == 1;
+    double factor = same ? sum : sqrt(sum2);
+    /* the per-seed ratios, paired by seed */
+    double *ratio = nl_xmalloc(3 * seeds->nrows * sizeof *ratio), sd1 = 0;
+    double *corr = ratio + seeds->nrows, *samp = corr + seeds->nrows;
+    size_t m = 0;
+    for (size_t k = 0; k < seeds->nrows; k++) {
+      if (strcmp(nl_table_text(seeds, k, "setting"), name)) continue;
+      double s1 = seed_sd(ref_seeds, ref, nl_table_value(seeds, k, "seed"));
+      double sd = nl_table_value(seeds, k, "sd"), sep = nl_table_value(seeds, k, "sd_sep");
+      ratio[m] = sd / (s1 * factor);
+      corr[m] = sd / sep;
+      samp[m++] = sep / (s1 * factor);
+      sd1 += s1;
+    }
+    sd1 /= m;
+    double r[6];
+    mean_se(ratio, m, &r[0], &r[1]);
+    mean_se(corr, m, &r[2], &r[3]);
+    mean_se(samp, m, &r[4], &r[5]);
+    free(ratio);
+    nl_table_append(t, "siddddddsddddddd", name, n, g, lac, nl_table_value(dist, i, "sd"),
+                    nl_table_value(dist, i, "sd_sd"), sd1, sd1 * factor,
+                    same ? "identical" : "independent", r[0], r[1], 1.0, r[2], r[3], r[4], r[5]);
+  }
+  return t;
+}
+
+void nl_study_sd_law_text(nl_harness *r, const nl_table *law)
+{
+  long far = -1;
+  double z = -1;
+  for (size_t i = 0; i < law->nrows; i++) {
+    double se = nl_table_value(law, i, "sd_over_law_se");
+    if (strcmp(nl_table_text(law, i, "law"), "independent") || se == 0) continue;
+    double zi = fabs(nl_table_value(law, i, "sd_over_law") - 1) / se;
+    if (zi > z) {
+      z = zi;
+      far = (long)i;
+    }
+  }
+  if (far < 0) return;
+  size_t i = (size_t)far;
+  nl_harness_text(r,
+                  "Farthest from the law: %s, sd_over_law %.3f +- %.3f (%.1f standard errors). "
+                  "Its factors: the octaves' correlation, sd_over_sep = %.3f +- %.3f (1 for "
+                  "uncorrelated octaves), and each octave's own variance on the window against "
+                  "the lone first octave's, sep_over_law = %.3f +- %.3f (1 when the pixels and the "
+                  "window sample every octave alike).\n",
+                  nl_table_text(law, i, "setting"), nl_table_value(law, i, "sd_over_law"),
+                  nl_table_value(law, i, "sd_over_law_se"), z,
+                  nl_table_value(law, i, "sd_over_sep"), nl_table_value(law, i, "sd_over_sep_se"),
+                  nl_table_value(law, i, "sep_over_law"),
+                  nl_table_value(law, i, "sep_over_law_se"));
 }
 
 void nl_study_montage(nl_harness *r, const nl_image *const *panels, const char *const *labels,

@@ -54,10 +54,21 @@
  * as "improved" or "noise2", built with its default options for each seed. */
 typedef const char *nl_study_basis_kind;
 
+/* Points per octave and seed of the axis-aligned gradient fraction: a
+ * quarter of the pixels (4096 at quick scale), at most 16384 (standard
+ * error 0.0017 per octave and seed), so it costs at most what the raster
+ * does. */
+#define NL_STUDY_AXIS_POINTS(w, h) \
+  ((size_t)(w) * (size_t)(h) / 4 < 16384 ? (size_t)(w) * (size_t)(h) / 4 : 16384)
+
 typedef struct {
   int nseeds, nbins, w, h;
   double bound;                   /* analytic bound of the sum */
   double *mean, *sd, *min, *max;  /* per seed */
+  double *axis, *axis_worst;      /* per seed: axis-aligned gradient fraction of
+                                     the octaves, pooled and the largest one's */
+  double *sd_sep;                 /* per seed: sqrt(sum amp_l^2 var_l), var_l the
+                                     variance of octave l alone on the window */
   double *freq;                   /* nbins, cycles per unit */
   double *power;                  /* nseeds * nbins */
   double *first;                  /* w * h values of the first seed */
@@ -72,32 +83,88 @@ void nl_study_survey_free(nl_study_survey *s);
  *           in the setting), then over
  *           seeds the mean and sd of the per-seed mean and sd, the mean
  *           min and max, the largest |value| seen, the analytic bound and
- *           their ratio;
+ *           their ratio; axis_frac (sd over seeds axis_frac_sd): the
+ *           fraction of points whose gradient lies within 2 degrees of the
+ *           x or y axis, for each octave alone on its slice (noise(f p) on
+ *           the plane z), pooled over the octaves in the picture (amp != 0),
+ *           at NL_STUDY_AXIS_POINTS(w, h) points per octave and seed;
+ *           axis_frac_worst the largest single octave's (mean over seeds);
+ *           axis_frac_iso = 16/360, the value for an isotropic field. The
+ *           octaves on lattice planes (z = 0.5) read 1.7 to 2.0 times that
+ *           at quick scale, the slice NL_STUDY_SLICE_Z 1.06 to 1.14 times;
  *  spectrum freq (cycles per unit) and one column of seed-averaged radial
  *           power per setting, headed by its label;
  *  panels   the first seed's raster of each setting as a grey image mapped
  *           from [mean - 3 sd, mean + 3 sd] to [0, 1] (each panel its own
- *           contrast; the table carries the amplitudes).
+ *           contrast; the table carries the amplitudes);
+ *  per_seed one row per setting and seed: setting, seed, mean, sd,
+ *           sd_sep (the sd of the sum if its octaves were uncorrelated,
+ *           each with the variance it has alone on the window), axis_frac
+ *           (the statistics a paired comparison between settings needs,
+ *           nl_study_sd_law_table).
  * Any output pointer may be NULL. */
 typedef struct { const char *label; nl_noise_octaves oct; double gain, lacunarity; } nl_study_setting;
 void nl_study_survey_series(nl_study_basis_kind kind, const nl_study_setting *settings, int n,
                             const nl_noise_window *win, unsigned long seed0, int nseeds,
-                            nl_table **dist, nl_table **spectrum, nl_image **panels);
+                            nl_table **dist, nl_table **spectrum, nl_image **panels,
+                            nl_table **per_seed);
 
+/* Also writes PREFIX_seeds.tsv (per_seed above), returned in *per_seed
+ * when not NULL (caller frees). */
 nl_table *nl_study_series(nl_harness *r, const char *prefix, const char *title,
                           nl_study_basis_kind kind, const nl_study_setting *settings, int n,
-                          const nl_noise_window *win);
+                          const nl_noise_window *win, nl_table **per_seed);
+
+/* The plane z of the 2D slices through 3D improved noise (S1-S4, Q2's and
+ * Q4's Perlin panels). An octave of frequency f samples noise on the plane
+ * z f; on a lattice plane (z f an integer) only one layer of gradients
+ * contributes and a third of them, (+-1, 0, +-1) and (0, +-1, +-1), project
+ * onto an axis, so the slice shows straight axis-aligned creases (and z f a
+ * half-integer is nearly as bad). z = 64/3 puts z 2^k at a third of a cell,
+ * frac(z 2^k) = 1/3 or 2/3, for every k >= -6: every octave of every sum
+ * with lacunarity 2^m (0.5, 1, 2, 4, 8) sits as far from the lattice planes
+ * as it can while keeping that for all octaves. The surveys measure the
+ * result (axis_frac, nl_study_survey_series). */
+#define NL_STUDY_SLICE_Z (64.0 / 3.0)
 
 /* The square window of the S experiments from the run's parameters:
- * size (pixels; 512, or 128 with --quick), extent (4 units) and z (0.5). */
+ * size (pixels; 512, or 128 with --quick), extent (4 units) and z
+ * (NL_STUDY_SLICE_Z). */
 nl_noise_window nl_study_window(nl_harness *r);
 
 /* S1 and S2: Shaffer's sums at 1, 2, 3 and 8 octaves (fractal sum, or
  * turbulence when `turbulence`), introduced by one paragraph ("**Slides:**
  * SLIDES **Ours:** the slice z = ... over [0, size)^2, K seeds ...") and
- * surveyed by nl_study_series. Returns the distribution table (caller frees). */
+ * surveyed by nl_study_series. Returns the distribution table (caller frees);
+ * per_seed as nl_study_series. */
 nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int turbulence,
-                                 const char *slides, const char *prefix, const char *title);
+                                 const char *slides, const char *prefix, const char *title,
+                                 nl_table **per_seed);
+
+/* The slides' law for the sd of a sum of octaves, per row of a distribution
+ * table of nl_study_series (columns setting, octaves, gain, lacunarity, sd,
+ * sd_sd): octaves of one noise at different frequencies are uncorrelated,
+ * so their variances add, sd_law = sd1 sqrt(sum_{j<n} gain^2j), sd1 the sd
+ * of the lone first octave; at lacunarity 1 every octave is the same noise
+ * and the amplitudes add, sd_law = sd1 sum gain^j. sd1 is setting `ref` of
+ * the per-seed table ref_seeds (nl_study_series), seeds the series' own
+ * per-seed table: the ratio sd / sd_law is taken seed by seed (the sum and
+ * the lone octave share the first octave's noise, so the pairing removes
+ * most of the seed-to-seed spread) and averaged. Columns: setting, octaves,
+ * gain, lacunarity, sd, sd_sd, sd1 (mean over seeds), sd_law (sd1 times
+ * the law's factor), law ("independent" or "identical"), sd_over_law (mean
+ * of the per-seed ratios), sd_over_law_se (their standard error),
+ * claim_ratio = 1, the law's value of the ratio, and its two factors, each
+ * a mean of per-seed ratios with its standard error: sd_over_sep = sd /
+ * sd_sep (the octaves' correlation: 1 when uncorrelated) and sep_over_law =
+ * sd_sep / sd_law (each octave's variance on the window against the lone
+ * first octave's: 1 when sampling treats every octave alike). Caller
+ * frees. */
+nl_table *nl_study_sd_law_table(const nl_table *dist, const nl_table *seeds,
+                                const nl_table *ref_seeds, const char *ref);
+/* One paragraph on such a table: the row of independent octaves farthest
+ * from the law in standard errors, and its two factors. */
+void nl_study_sd_law_text(nl_harness *r, const nl_table *law);
 
 /* Lays panels out in a montage of `cols` columns (nl_image_montage), writes it as
  * FILE in the run's folder (nl_harness_write_image) and frees it: the figure step that
