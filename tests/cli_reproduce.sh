@@ -61,7 +61,7 @@ grep -q $'^seed\t4294967295$' "$r/a1_bounds/manifest.tsv" || fail "seed 42949672
 } >"$r/s4_marble/verdicts.tsv"
 SOURCE_DATE_EPOCH=86400 "$nl" reproduce --quick --seed 4294967295 --out "$r" A1 2>"$out/verdict.log" || { cat "$out/verdict.log"; fail "reproduce A1 failed"; }
 grep -q '^## Did it reproduce?' "$r/REPORT.md" || fail "REPORT.md has no verdict table"
-a1_count() { [ -f "$r/a1_bounds/verdicts.tsv" ] || { echo 0; return; }; tsv_awk -v w="$1" 'v("kind") ~ "^" w { n++ } END { print n + 0 }' "$r/a1_bounds/verdicts.tsv"; }
+a1_count() { [ -f "$r/a1_bounds/verdicts.tsv" ] || { echo 0; return; }; tsv_awk -v w="$1" 'FNR > 1 && index(v("kind"), w) == 1 { cnt++ } END { print cnt + 0 }' "$r/a1_bounds/verdicts.tsv"; }
 ni=$(( $(a1_count independent) + 1 )); nf=$(( $(a1_count fitted) + 1 ))
 grep -qE "^$ni independent verdicts \(" "$r/REPORT.md" || fail "verdict count wrong: $(grep 'independent verdicts' "$r/REPORT.md")"
 grep -qE "^Not counted above: $nf fitted to the paper \([0-9]+ consistent after fit\)" "$r/REPORT.md" || fail "fitted count wrong: $(grep 'Not counted' "$r/REPORT.md")"

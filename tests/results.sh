@@ -22,7 +22,7 @@ for dir in "$root/results" "$root/results/quick"; do
     [ -n "$commit" ] || fail "$m names no commit"
     case "$commit" in *+dirty) fail "$m was made from a modified tree ($commit)";; esac
     [ -f "$v" ] || fail "$dir/$e has no verdicts.tsv: every experiment decides at least one claim"
-    n="$(tsv_awk 'FNR > 1 { n++ } END { print n + 0 }' "$v")"
+    n="$(tsv_awk 'FNR > 1 { cnt++ } END { print cnt + 0 }' "$v")"
     [ "$n" -ge 1 ] || fail "$v has no rows"
     bad="$(tsv_awk -v re="$kinds" 'FNR > 1 && !(v("kind") ~ re) { print NR ": " v("kind") }' "$v" | head -1)"
     [ -z "$bad" ] || fail "$v row $bad: not a kind"

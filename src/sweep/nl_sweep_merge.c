@@ -216,9 +216,14 @@ static size_t group_rows(const size_t *point_of, const size_t *row_of, size_t n,
 }
 
 /* Columns of the first task's table that hold text (labels), by its first row. */
+/* A column is text when any row of the first task's table holds text in it
+ * (a verdict's ours_sd is "-" on rows without a spread, a number on others):
+ * the summary then carries the group's first cell, not a mean. */
 static int is_text_col(const nl_table *first, size_t c)
 {
-  return first->nrows > 0 && first->text[c] != NULL;
+  for (size_t r = 0; r < first->nrows; r++)
+    if (first->text[r * first->ncols + c]) return 1;
+  return 0;
 }
 
 static nl_table *summary_alloc(const nl_sweep_merge *m, const nl_table *merged,
@@ -279,6 +284,7 @@ nl_status nl_sweep_merge_summary(const nl_sweep_merge *m, const nl_table *merged
   size_t nc = s->ncols;
   double *num = nl_xmalloc(nc * sizeof *num), *vals = nl_xmalloc((n + 1) * sizeof *vals);
   char **text = nl_xcalloc(nc, sizeof *text);
+  char (*numtext)[32] = nl_xmalloc(nc * sizeof *numtext);   /* numbers in text columns */
   nl_status st = NL_OK;
   for (size_t g = 0; g < ng && !st; g++) {
     size_t r0 = first_row[g], col = 0, cnt = start[g + 1] - start[g];
@@ -290,6 +296,10 @@ nl_status nl_sweep_merge_summary(const nl_sweep_merge *m, const nl_table *merged
     for (size_t c = 0; c < tc; c++)
       if (is_text_col(first, c)) {
         text[col] = merged->text[r0 * merged->ncols + lead + c];
+        if (!text[col]) {
+          nl_table_format_double(numtext[col], nl_table_get(merged, r0, lead + c));
+          text[col] = numtext[col];
+        }
         num[col++] = NAN;
       }
     num[col++] = (double)cnt;
@@ -316,6 +326,7 @@ nl_status nl_sweep_merge_summary(const nl_sweep_merge *m, const nl_table *merged
   free(num);
   free(vals);
   free(text);
+  free(numtext);
   if (st) {
     nl_table_free(s);
     s = NULL;
