@@ -56,7 +56,7 @@ grep -q $'^seed\t4294967295$' "$r/a1_bounds/manifest.tsv" || fail "seed 42949672
 # verdicts, the others by kind, a fitted row capped below "reproduced".
 { printf 'reason\tquantity\tsource\tpaper\tours\tours_sd\trule\tkind\tverdict\n'
   printf 'why\tgain\tx.tsv:g\t2\t2.08\t0.01\trel 0.05 0.25\tindependent\treproduced\n'
-  printf 'fit\tslope\tx.tsv:s\t2\t2.01\t-\trel 0.05 0.25\tfitted 2/4\tconsistent after fit\n'
+  printf 'fit\tslope |s|\tx.tsv:s\t2\t2.01\t-\trel 0.05 0.25\tfitted 2/4\tconsistent after fit\n'
   printf 'set\tF_inf\tx.tsv:f\t1\t1\t-\tabs 0 0\tby construction\tby construction\n'
 } >"$r/s4_marble/verdicts.tsv"
 SOURCE_DATE_EPOCH=86400 "$nl" reproduce --quick --seed 4294967295 --out "$r" A1 2>"$out/verdict.log" || { cat "$out/verdict.log"; fail "reproduce A1 failed"; }
@@ -67,6 +67,8 @@ grep -qE "^$ni independent verdicts \(" "$r/REPORT.md" || fail "verdict count wr
 grep -qE "^Not counted above: $nf fitted to the paper \([0-9]+ consistent after fit\)" "$r/REPORT.md" || fail "fitted count wrong: $(grep 'Not counted' "$r/REPORT.md")"
 grep -qF '| [S4](#s4_marble) | gain | independent | 2 | 2.08 +- 0.01 | **reproduced** | why |' "$r/REPORT.md" || fail "verdict row: $(grep -F gain "$r/REPORT.md")"
 grep -qF '| [S4](#s4_marble) | F_inf | by construction | 1 | 1 | *by construction* | set |' "$r/REPORT.md" || fail "by-construction row: $(grep -F F_inf "$r/REPORT.md")"
+# a | inside a cell is escaped, or it would split the row
+grep -qF '| [S4](#s4_marble) | slope \|s\| | fitted 2/4 |' "$r/REPORT.md" || fail "a | in a cell: $(grep -F slope "$r/REPORT.md")"
 rm "$r/s4_marble/verdicts.tsv"
 
 # Nothing ran (the experiment cannot make its folder): no REPORT.md written.
