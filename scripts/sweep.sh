@@ -53,7 +53,11 @@ run_local() {   # DIR JOBS
   # Only unfinished tasks go to parallel, so the joblog records real runs.
   "$TOOL" status "$dir" pending >"$pending"
   say "sweep: $total tasks, $done0 already done, $(wc -l <"$pending") to run on $jobs job(s) -> $dir"
-  parallel --will-cite --jobs "$jobs" --joblog "+$dir/joblog" --halt never <"$pending" >/dev/null 2>"$dir/.parallel.err" &
+  # The tasks run from the repository, as reproduce's experiments do: their
+  # default data/ folders are there. dir and the job lines are absolute
+  # (noiselab-sweep prepare), so the user's own paths keep their meaning.
+  (cd "$ROOT" && exec parallel --will-cite --jobs "$jobs" --joblog "+$dir/joblog" --halt never \
+     <"$pending" >/dev/null 2>"$dir/.parallel.err") &
   pid=$!
   trap 'kill -TERM "$pid" 2>/dev/null; sleep 0.2; kill -TERM "$pid" 2>/dev/null; rm -f "$pending"; say ""; say "sweep: interrupted; the same command continues it"; exit 130' INT TERM
   while kill -0 "$pid" 2>/dev/null; do progress "$dir" "$total" "$done0" "$t0" "$jl0" 0; sleep 1; done

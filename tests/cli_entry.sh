@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# scripts/noiselab as a user runs it from a folder of their own:
+#  - every path typed is relative to the folder it was typed in: stat's
+#    input and --labels, render -o, example's files, patterns DIR,
+#    reproduce --out, sweep --out and sweep merge DIR all land there, and
+#    nothing lands in the repository; check takes names from any folder.
+# Args: NOISELAB_SCRIPT EXPECT OUTDIR.
+set -euo pipefail
+nl="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")" out="$3"   # $2, expect: not needed
+root="$(cd "$(dirname "$nl")/.." && pwd)"
+rm -rf "$out"; mkdir -p "$out"
+for v in $(env | sed -n 's/^\(NL_[A-Za-z0-9_]*\)=.*/\1/p'); do unset "$v"; done
+# What the commands below write, by the names they are given: none of them
+# may appear in the repository (removed there again when one did).
+names=(nl-cwd-test-labels.tsv nl-cwd-test.png nl-cwd-test.params nl-cwd-test-syn.png
+       nl-cwd-test-patterns nl-cwd-test-r nl-cwd-test-sweep)
+strays() { local n; for n in "${names[@]}"; do [ ! -e "$root/$n" ] || printf '%s ' "$n"; done; }
+fail() {
+  local s; s="$(strays)"
+  # shellcheck disable=SC2086  # the names are ours, without spaces
+  [ -z "$s" ] || (cd "$root" && rm -rf $s)
+  echo "cli_entry: $*"; exit 1
+}
+ok() {   # LABEL CMD...: runs CMD, its stderr kept for a failure
+  local label="$1"; shift
+  "$@" >"$out/last.out" 2>"$out/last.err" || fail "$label: exit $?: $(cat "$out/last.err")"
+}
+
+# ---- paths relative to the user's folder ----------------------------------
+w="$out/elsewhere"; mkdir -p "$w"
+cd "$w"
+readme="$(cksum <"$root/README.md")"
+awk 'BEGIN { srand(7); for (i = 0; i < 1000; i++) printf "%.6f\n", rand() }' >u1000.tsv
+printf '0 0\n0.1 0\n5 5\n5.1 5\n10 0\n10 0.1\n' >pts.tsv
+ok "stat ks u1000.tsv" "$nl" stat ks u1000.tsv
+grep -q 'n=1000' "$out/last.out" || fail "stat ks: $(cat "$out/last.out")"
+ok "stat hclust --labels" "$nl" stat hclust pts.tsv --linkage ward --clusters 3 --labels nl-cwd-test-labels.tsv
+[ "$(wc -l <nl-cwd-test-labels.tsv)" = 7 ] || fail "hclust --labels: not a header and 6 labels in $w"
+ok "render -o" "$nl" render fbm --size 32 -o nl-cwd-test.png
+[ -s nl-cwd-test.png ] || fail "render -o nl-cwd-test.png: nothing in $w"
+ok "example analyse" "$nl" example analyse nl-cwd-test.png -o nl-cwd-test.params
+ok "example synthesize" "$nl" example synthesize nl-cwd-test.params --size 16 -o nl-cwd-test-syn.png
+[ -s nl-cwd-test-syn.png ] || fail "example synthesize: nothing in $w"
+ok "patterns" "$nl" patterns nl-cwd-test-patterns --size 16
+[ -n "$(find nl-cwd-test-patterns -name '*.png')" ] || fail "patterns: no PNG in $w/nl-cwd-test-patterns"
+ok "reproduce --out" "$nl" reproduce --quick --jobs 1 --out nl-cwd-test-r A1
+{ [ -f nl-cwd-test-r/a1_bounds/manifest.tsv ] && [ -f nl-cwd-test-r/REPORT.md ]; } \
+  || fail "reproduce --out nl-cwd-test-r: no complete run in $w"
+ok "sweep --out" "$nl" sweep A1 --quick --param points=500,1000 --jobs 2 --out nl-cwd-test-sweep
+[ "$(find nl-cwd-test-sweep/tasks -name manifest.tsv | wc -l)" = 2 ] || fail "sweep --out: not 2 tasks in $w"
+ok "sweep merge" "$nl" sweep merge nl-cwd-test-sweep --table bounds.tsv --y max_abs
+[ -s nl-cwd-test-sweep/merged/plot.png ] || fail "sweep merge: no plot in $w"
+# check takes names, not paths: from here it runs (0, or 1 on drift) and
+# leaves this folder as it was.
+before="$(ls -A)"
+rc=0; "$nl" check --quick A1 >/dev/null 2>"$out/check.err" || rc=$?
+[ "$rc" -le 1 ] || fail "check --quick A1 from another folder: exit $rc: $(cat "$out/check.err")"
+[ "$(ls -A)" = "$before" ] || fail "check wrote into the user's folder: $(ls -A)"
+s="$(strays)"
+[ -z "$s" ] || fail "written into the repository instead of $w: $s"
+[ "$(cksum <"$root/README.md")" = "$readme" ] || fail "the repository's README.md changed"
+cd "$out"
+
+echo "cli_entry: ok"
