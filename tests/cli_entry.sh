@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
-# scripts/noiselab as a user runs it from a folder of their own:
+# scripts/noiselab as a user runs it from a folder of their own, and two
+# commands at once:
 #  - every path typed is relative to the folder it was typed in: stat's
 #    input and --labels, render -o, example's files, patterns DIR,
 #    reproduce --out, sweep --out and sweep merge DIR all land there, and
-#    nothing lands in the repository; check takes names from any folder.
+#    nothing lands in the repository; check takes names from any folder;
+#  - a command started while another holds the build lock waits for it (seen
+#    blocked on the lock in /proc/locks), then finds the build done and runs.
 # Args: NOISELAB_SCRIPT EXPECT OUTDIR.
 set -euo pipefail
 nl="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")" out="$3"   # $2, expect: not needed
@@ -60,5 +63,34 @@ s="$(strays)"
 [ -z "$s" ] || fail "written into the repository instead of $w: $s"
 [ "$(cksum <"$root/README.md")" = "$readme" ] || fail "the repository's README.md changed"
 cd "$out"
+
+# ---- the build lock: one builder, the others wait -------------------------
+lockf="$root/build/.noiselab-build.lock"
+if [ -r /proc/locks ]; then
+  # Held here as a build would hold it; two commands started meanwhile must
+  # both block on it, and both run once it is free.
+  exec 7>>"$lockf"
+  flock 7
+  ino="$(stat -c %i "$lockf")"
+  # (7>&-: a command that inherited the descriptor would hold the lock too.)
+  "$nl" stat ks "$w/u1000.tsv" >"$out/wait1.out" 2>"$out/wait1.err" 7>&- &
+  p1=$!
+  "$nl" render fbm --size 16 -o "$out/wait2.png" >/dev/null 2>"$out/wait2.err" 7>&- &
+  p2=$!
+  for ((k = 0; k < 600; k++)); do   # 60 s
+    [ "$(grep -cE -- "-> FLOCK .* [0-9a-f]+:[0-9a-f]+:$ino " /proc/locks)" = 2 ] && break
+    kill -0 "$p1" 2>/dev/null || { exec 7>&-; fail "stat ks ran while another command held the build lock"; }
+    kill -0 "$p2" 2>/dev/null || { exec 7>&-; fail "render ran while another command held the build lock"; }
+    sleep 0.1
+  done
+  exec 7>&-
+  [ "$k" -lt 600 ] || fail "two commands did not wait on the build lock within 60 s"
+  wait "$p1" || fail "stat ks after waiting for the build: $(cat "$out/wait1.err")"
+  wait "$p2" || fail "render after waiting for the build: $(cat "$out/wait2.err")"
+  grep -q 'n=1000' "$out/wait1.out" || fail "stat ks after the wait: $(cat "$out/wait1.out")"
+  [ -s "$out/wait2.png" ] || fail "render after the wait wrote nothing"
+else
+  echo "cli_entry: no /proc/locks; the build lock is not tested"
+fi
 
 echo "cli_entry: ok"
