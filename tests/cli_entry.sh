@@ -6,7 +6,11 @@
 #    reproduce --out, sweep --out and sweep merge DIR all land there, and
 #    nothing lands in the repository; check takes names from any folder;
 #  - a command started while another holds the build lock waits for it (seen
-#    blocked on the lock in /proc/locks), then finds the build done and runs.
+#    blocked on the lock in /proc/locks), then finds the build done and runs;
+#  - two checks at once compare their own runs: the second one's start does
+#    not remove the first one's tables (a fake experiment, in a fake build
+#    folder named by CHECK_BUILD, writes the reference's tables and waits on
+#    a lock the test holds, so the two runs overlap by construction).
 # Args: NOISELAB_SCRIPT EXPECT OUTDIR.
 set -euo pipefail
 nl="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")" out="$3"   # $2, expect: not needed
@@ -93,4 +97,51 @@ else
   echo "cli_entry: no /proc/locks; the build lock is not tested"
 fi
 
+# ---- two checks at once -----------------------------------------------------
+fb="$out/fakebuild"; mkdir -p "$fb/experiments"
+cat >"$fb/experiments/a1_bounds" <<'FAKE'
+#!/usr/bin/env bash
+# Stands in for A1 under check: the reference's tables into --out, early
+# (before waiting on FAKE_LOCK) or late (after), then a mark.
+set -euo pipefail
+o=""
+while [ $# -gt 0 ]; do case "$1" in --out) o="$2"; shift ;; esac; shift; done
+mkdir -p "$o"
+if [ "$FAKE_WHEN" = early ]; then cp -r "$FAKE_REF"/. "$o"/; fi
+: >"$FAKE_MARK"
+flock "$FAKE_LOCK" true
+if [ "$FAKE_WHEN" = late ]; then cp -r "$FAKE_REF"/. "$o"/; fi
+FAKE
+chmod +x "$fb/experiments/a1_bounds"
+export FAKE_REF="$root/results/quick/a1_bounds"
+[ -f "$FAKE_REF/manifest.tsv" ] || fail "no reference $FAKE_REF"
+waitmark() {   # MARK PID LOG
+  local k
+  for ((k = 0; k < 600; k++)); do
+    [ -e "$1" ] && return 0
+    kill -0 "$2" 2>/dev/null || fail "check ended before its experiment ran: $(cat "$3")"
+    sleep 0.1
+  done
+  fail "check's experiment did not start within 60 s"
+}
+exec 5>"$out/lockA" 6>"$out/lockB"
+flock 5; flock 6
+# A's experiment writes its tables, then waits; B starts meanwhile, its
+# experiment waits before writing; A then compares while B still waits.
+CHECK_BUILD="$fb" FAKE_WHEN=early FAKE_LOCK="$out/lockA" FAKE_MARK="$out/markA" \
+  "$nl" check --quick A1 >/dev/null 2>"$out/checkA.err" 5>&- 6>&- &
+pa=$!
+waitmark "$out/markA" "$pa" "$out/checkA.err"
+CHECK_BUILD="$fb" FAKE_WHEN=late FAKE_LOCK="$out/lockB" FAKE_MARK="$out/markB" \
+  "$nl" check --quick A1 >/dev/null 2>"$out/checkB.err" 5>&- 6>&- &
+pb=$!
+waitmark "$out/markB" "$pb" "$out/checkB.err"
+exec 5>&-
+rc=0; wait "$pa" || rc=$?
+exec 6>&-
+[ "$rc" = 0 ] || fail "check A, with check B started during its run: exit $rc: $(cat "$out/checkA.err")"
+rc=0; wait "$pb" || rc=$?
+[ "$rc" = 0 ] || fail "check B: exit $rc: $(cat "$out/checkB.err")"
+[ -z "$(find "$fb" -mindepth 1 -maxdepth 1 -name 'check*')" ] \
+  || fail "passed checks left their runs: $(ls "$fb")"
 echo "cli_entry: ok"
