@@ -107,6 +107,10 @@ while [ $# -gt 0 ]; do
   case "$1" in -e) dir="$(printf '%s' "$2" | sed -n "s/^dir='\(.*\)'$/\1/p")"; shift ;; *) gp="$1" ;; esac
   shift
 done
+# FAKE_GNUPLOT_ONLY: only scripts whose path holds it; the others go to the real one.
+if [ -n "${FAKE_GNUPLOT_ONLY:-}" ] && [[ "$gp" != *"$FAKE_GNUPLOT_ONLY"* ]]; then
+  exec "$REAL_GNUPLOT" -e "dir='$dir'" "$gp"
+fi
 f="$(sed -n "s/^set output dir\.'\(.*\)'.*/\1/p" "$gp" | head -n 1)"
 printf '\211PNG\r\n\032\n\000\000\000\rIHDR' >"$dir$f"
 echo $$ >"$FAKE_GNUPLOT_MARK"
@@ -249,4 +253,35 @@ sed $'s/^images\t.*/images\tno/' "$rs/s4_marble/manifest.tsv" >"$out/noimages.ts
 # ETA: previous times scaled by this run's pace, the mean so far for the rest.
 [ "$(bash -c 'source "$1"; repro_eta 10 1 5 20 -' _ "$nl")" = "1/3 done, elapsed 10 s, ETA 50 s (previous times and mean so far x 2)" ] \
   || fail "repro_eta: $(bash -c 'source "$1"; repro_eta 10 1 5 20 -' _ "$nl")"
+# SIGKILL after A1 finished a seed-3 run into a complete folder (A1 seed 2,
+# S4 seed 1), while S4's figure is made: REPORT.md still lists the old seeds
+# and S4. The next reproduce into the folder, even one that runs nothing
+# (--resume skips A1), makes REPORT.md agree with the folders first.
+rm -f "$out/mark"
+FAKE_GNUPLOT_ONLY=s4_marble REAL_GNUPLOT="$(command -v gnuplot)" FAKE_GNUPLOT_MARK="$out/mark" \
+  PATH="$out/bin:$PATH" "$nl" reproduce --quick --jobs 1 --seed 3 --out "$rs" A1 S4 \
+  2>"$out/kill3.log" &
+PID=$!
+for ((k = 0; k < 600; k++)); do   # 60 s
+  [ -s "$out/mark" ] && break
+  kill -0 "$PID" 2>/dev/null || break
+  sleep 0.1
+done
+[ -s "$out/mark" ] || { cat "$out/kill3.log"; fail "seed 3: the fake gnuplot never ran for S4"; }
+kill -KILL "$PID"; wait "$PID" 2>/dev/null || true
+g="$(cat "$out/mark")"; kill "$g" 2>/dev/null || true
+while kill -0 "$g" 2>/dev/null; do sleep 0.1; done   # it held the folder's lock
+{ grep -q $'^seed\t3$' "$rs/a1_bounds/manifest.tsv" && [ ! -f "$rs/s4_marble/manifest.tsv" ] \
+  && grep -q '^| \[a1_bounds\](#a1_bounds) | 2 |' "$rs/REPORT.md" \
+  && grep -q '<a id="s4_marble">' "$rs/REPORT.md"; } \
+  || fail "seed 3 killed: not the state to test: $(cat "$out/kill3.log")"
+"$nl" reproduce --quick --resume --seed 3 --out "$rs" A1 2>"$out/resume4.log" \
+  || { cat "$out/resume4.log"; fail "reproduce --resume --seed 3 failed"; }
+grep -q '^noiselab: reproduce --resume: skipped 1 of 1 ' "$out/resume4.log" \
+  || fail "--resume --seed 3: $(cat "$out/resume4.log")"
+consistent "SIGKILL of --seed 3, then --resume"
+grep -q '^| \[a1_bounds\](#a1_bounds) | 3 |' "$rs/REPORT.md" \
+  || fail "REPORT.md does not list A1's seed-3 run: $(grep -F '| [a1_bounds]' "$rs/REPORT.md")"
+{ [ ! "$rs/REPORT.md" -nt "$rs/report.html" ] && ! grep -q s4_marble "$rs/report.html"; } \
+  || fail "report.html not made again from REPORT.md"
 echo "cli_reproduce: ok"
