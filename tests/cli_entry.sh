@@ -20,7 +20,7 @@ for v in $(env | sed -n 's/^\(NL_[A-Za-z0-9_]*\)=.*/\1/p'); do unset "$v"; done
 # What the commands below write, by the names they are given: none of them
 # may appear in the repository (removed there again when one did).
 names=(nl-cwd-test-labels.tsv nl-cwd-test.png nl-cwd-test.params nl-cwd-test-syn.png
-       nl-cwd-test-patterns nl-cwd-test-r nl-cwd-test-sweep)
+       nl-cwd-test-patterns nl-cwd-test-r nl-cwd-test-sweep nl-cwd-test-sweep-c3)
 strays() { local n; for n in "${names[@]}"; do [ ! -e "$root/$n" ] || printf '%s ' "$n"; done; }
 fail() {
   local s; s="$(strays)"
@@ -57,6 +57,11 @@ ok "sweep --out" "$nl" sweep A1 --quick --param points=500,1000 --jobs 2 --out n
 [ "$(find nl-cwd-test-sweep/tasks -name manifest.tsv | wc -l)" = 2 ] || fail "sweep --out: not 2 tasks in $w"
 ok "sweep merge" "$nl" sweep merge nl-cwd-test-sweep --table bounds.tsv --y max_abs
 [ -s nl-cwd-test-sweep/merged/plot.png ] || fail "sweep merge: no plot in $w"
+# The sweep's tasks still find the experiments' data/ folders (C3 reads
+# data/patterns from the repository).
+ok "sweep C3" "$nl" sweep C3 --quick --param grid=64 --jobs 1 --out nl-cwd-test-sweep-c3
+[ "$(find nl-cwd-test-sweep-c3/tasks -name manifest.tsv | wc -l)" = 1 ] \
+  || fail "sweep C3 from another folder: $(cat nl-cwd-test-sweep-c3/logs/*.log)"
 # check takes names, not paths: from here it runs (0, or 1 on drift) and
 # leaves this folder as it was.
 before="$(ls -A)"
