@@ -15,7 +15,9 @@
 #if defined(__GLIBC__) && defined(__x86_64__) && defined(__has_include)
 #if __has_include(<sys/platform/x86.h>)
 #include <sys/platform/x86.h>
+#ifdef CPU_FEATURE_ACTIVE   /* glibc 2.33 on; 2.32 named it CPU_FEATURE_USABLE */
 #define NL_HAVE_X86_FEATURES 1
+#endif
 #endif
 #endif
 #include <math.h>
