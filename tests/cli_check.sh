@@ -75,8 +75,9 @@ mkdir -p "$out/r1" "$out/r2"; cp -r "$ref" "$out/r1/t1"; cp -r "$ref" "$out/r2/t
 "$check" "$out/r1" "$out/r2" t1 | grep -q 'check: 1 experiment, 2 tables'
 
 # Many drifted values: the first 10 lines and a count; --all every line. The
-# summary names the experiment and the platform of both runs: the reference
-# predates the cpu/blas_core keys ("unknown"), then another kernel, then same.
+# summary names the experiment and the platform of both runs, what differs
+# first: the reference predates the platform keys ("unknown"), then another
+# BLAS kernel, then another libm variant on the same CPU and kernel.
 copy many
 for i in $(seq 12); do printf '%s\t0.001\n' "$i" >>"$out/many/spec.tsv"; done
 cp -r "$out/many" "$out/many12"
@@ -85,24 +86,44 @@ cp "$ref/spec.tsv" "$out/spec.orig"; cp "$ref/manifest.tsv" "$out/manifest.orig"
 rc=0; "$check" "$ref" "$out/many12" >"$out/many.out" || rc=$?
 [ "$rc" = 1 ] || { echo "many: exit $rc"; cat "$out/many.out"; exit 1; }
 [ "$(grep -c $'^t1\tspec.tsv\t' "$out/many.out")" = 10 ] || { echo "many: wanted 10 value lines"; cat "$out/many.out"; exit 1; }
-grep -q '^check: t1: 12 drifted (first 10 shown; --all for every one); reference vs this run: CPU unknown (reference: not recorded, this run: not recorded), BLAS kernel unknown' "$out/many.out" \
+want='^check: t1: 12 drifted (first 10 shown; --all for every one); reference vs this run: '
+want+='CPU unknown (reference: not recorded, this run: not recorded), architecture unknown (.*), '
+want+='BLAS kernel unknown (.*), libm unknown (.*)$'
+grep -q "$want" "$out/many.out" \
   || { echo "many: summary line"; cat "$out/many.out"; exit 1; }
 grep -q 'check: 1 experiment, 2 tables, .* 12 drifted' "$out/many.out" || { echo "many: total"; cat "$out/many.out"; exit 1; }
 rc=0; "$check" --all "$ref" "$out/many12" >"$out/all.out" || rc=$?
 { [ "$rc" = 1 ] && [ "$(grep -c $'^t1\tspec.tsv\t' "$out/all.out")" = 12 ] \
   && grep -q '^check: t1: 12 drifted; ' "$out/all.out"; } \
   || { echo "--all: rc=$rc"; cat "$out/all.out"; exit 1; }
-printf 'cpu\tAMD EPYC\nblas_core\tSkylakeX\n' >>"$ref/manifest.tsv"
-printf 'cpu\tAMD EPYC\nblas_core\tHaswell\nstarted\t2030-01-01T00:00:00Z\nseconds\t99\npeak_rss_mb\t1\nblas_threads\t7\n' >>"$out/many12/manifest.tsv"
+cp "$out/many12/manifest.tsv" "$out/manifest.many12"
+platform() {   # DIR CPU ARCH BLAS_CORE LIBM
+  printf 'cpu\t%s\narch\t%s\nblas_core\t%s\nlibm\t%s\n' "$2" "$3" "$4" "$5" >>"$1/manifest.tsv"
+}
+platform "$ref" 'AMD EPYC' x86_64 SkylakeX 'glibc 2.36 fma'
+platform "$out/many12" 'AMD EPYC' x86_64 Haswell 'glibc 2.36 fma'
+printf 'started\t2030-01-01T00:00:00Z\nseconds\t99\npeak_rss_mb\t1\nblas_threads\t7\n' \
+  >>"$out/many12/manifest.tsv"
 "$check" "$ref" "$out/many12" >"$out/plat.out" || true
-grep -q '^check: t1: 12 drifted.*CPU same (AMD EPYC), BLAS kernel other (reference SkylakeX, this run Haswell)$' "$out/plat.out" \
+want='^check: t1: 12 drifted.*; reference vs this run: '
+want+='BLAS kernel other (reference SkylakeX, this run Haswell), CPU same (AMD EPYC), '
+want+='architecture same (x86_64), libm same (glibc 2.36 fma)$'
+grep -q "$want" "$out/plat.out" \
   || { echo "platform: summary"; cat "$out/plat.out"; exit 1; }
+cp "$out/manifest.many12" "$out/many12/manifest.tsv"
+platform "$out/many12" 'AMD EPYC' x86_64 SkylakeX "glibc 2.36 avx (CPU's fma turned off)"
+"$check" "$ref" "$out/many12" >"$out/libm.out" || true
+want='^check: t1: 12 drifted.*; reference vs this run: libm other (reference glibc 2.36 fma, '
+want+="this run glibc 2.36 avx (CPU's fma turned off)), CPU same (AMD EPYC), "
+want+='architecture same (x86_64), BLAS kernel same (SkylakeX)$'
+grep -q "$want" "$out/libm.out" \
+  || { echo "libm: summary"; cat "$out/libm.out"; exit 1; }
 # Platform and timing lines are never compared: same tables, other platform, no drift.
-cp -r "$ref" "$out/plat"; printf 'cpu\tOther CPU\nblas_core\tPrescott\n' >>"$out/plat/manifest.tsv"
+cp -r "$ref" "$out/plat"; platform "$out/plat" 'Other CPU' aarch64 Prescott 'glibc 2.41 sse2'
 sed -i 's/^seconds\t.*/seconds\t42/' "$out/plat/manifest.tsv"
 run 0 plat '0 drifted'
 cp "$out/spec.orig" "$ref/spec.tsv"; cp "$out/manifest.orig" "$ref/manifest.tsv"
-rm -rf "$out/many" "$out/many12" "$out/plat"
+rm -rf "$out/many" "$out/many12" "$out/plat" "$out/manifest.many12"
 copy same; run 0 same '0 drifted'
 
 # Bad input: one line, exit 2.

@@ -79,4 +79,22 @@ printf '%s\n' "$h" | grep -q '^  octaves .*1, 30.*octaves summed' || { echo "--h
 [ ! -e "$out/help" ] || { echo "--help made a folder"; exit 1; }
 "$s3" --quick --seeds 1 --out "$out/s3" --set octaves=2 >/dev/null
 grep -q $'^param\toctaves=2$' "$out/s3/manifest.tsv" || { echo "accepted run did not write its manifest"; exit 1; }
+
+# The manifest names what moves a value's last bits across machines: the
+# architecture and glibc's libm variant, as glibc sees the CPU, so a run with
+# FMA turned off by GLIBC_TUNABLES says so (the regression check names both).
+mval() { tsv_awk -v k="$1" 'v("key") == k { print v("value") }' "$2"; }
+[ "$(mval arch "$out/s3/manifest.tsv")" = "$(uname -m)" ] \
+  || { echo "manifest: arch is not uname -m"; exit 1; }
+libm="$(mval libm "$out/s3/manifest.tsv")"
+if ldd --version 2>&1 | grep -qi glibc && [ "$(uname -m)" = x86_64 ] &&
+   grep -qw fma /proc/cpuinfo && grep -qw avx2 /proc/cpuinfo; then
+  [[ "$libm" == "glibc 2."*" fma" ]] \
+    || { echo "manifest: libm '$libm', wanted glibc's fma variant"; exit 1; }
+  GLIBC_TUNABLES=glibc.cpu.hwcaps=-AVX2,-FMA,-FMA4,-AVX512F \
+    "$s3" --quick --seeds 1 --out "$out/s3-nofma" --set octaves=2 >/dev/null
+  libm="$(mval libm "$out/s3-nofma/manifest.tsv")"
+  [[ "$libm" == "glibc 2."*" (CPU's fma turned off)" && "$libm" != *" fma ("* ]] \
+    || { echo "manifest under -FMA: libm '$libm', wanted fma turned off"; exit 1; }
+fi
 echo "cli_run: ok"

@@ -3,7 +3,11 @@
 # build has a complete folder at paper scale and in results/quick, each with
 # a verdicts.tsv whose rows carry a valid kind, REPORT.md counts independent
 # verdicts, and no manifest was made from a modified tree (+dirty), so the
-# commit it names holds the code that made it.
+# commit it names holds the code that made it. Every number of a quick table
+# that the regression check compares has a measured spread over the CPU
+# configurations in data/blas_spread.tsv (bench/blas-spread.sh --quick): a
+# table or column added since the last measurement would be compared exactly
+# and drift under another OpenBLAS kernel or libm variant.
 set -euo pipefail
 # shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
@@ -28,3 +32,26 @@ for dir in "$root/results" "$root/results/quick"; do
     [ -z "$bad" ] || fail "$v row $bad: not a kind"
   done <"$list"
 done
+
+spread="$root/data/blas_spread.tsv"
+[ -f "$spread" ] || fail "no $spread"
+while IFS= read -r e; do
+  [ -n "$e" ] || continue
+  q="$root/results/quick/$e"
+  for t in "$q"/*.tsv; do
+    case "$(basename "$t")" in manifest.tsv|checks.tsv|verdicts.tsv) continue ;; esac
+    # Columns with a number in any row (the cells bench/blas-spread.sh measures),
+    # less those the committed checks.tsv ignores, without a quick-scale spread.
+    miss="$(awk -F'\t' -v e="$e" -v t="$(basename "$t")" '
+      FILENAME == ARGV[1] { if (FNR > 1 && $1 == e && $2 == "quick" && $3 == t) have[$4] = 1; next }
+      FILENAME == ARGV[2] { if (FNR > 1 && $1 == t && $3 == "ignore") ign[$2] = 1; next }
+      FNR == 1 { for (i = 1; i <= NF; i++) name[i] = $i; next }
+      { for (i = 1; i <= NF; i++) if ($i ~ /^[-+]?([0-9]|\.[0-9])/) num[i] = 1 }
+      END {
+        if ("*" in ign) exit
+        for (i in num) if (!(name[i] in have) && !(name[i] in ign)) { print name[i]; exit }
+      }' "$spread" "$q/checks.tsv" "$t")"
+    [ -z "$miss" ] || fail "$t: column $miss has no measured spread in data/blas_spread.tsv" \
+      "(bash bench/blas-spread.sh --quick $e)"
+  done
+done <"$list"

@@ -12,7 +12,7 @@
  * declaration takes effect when the references are made again). The
  * manifests' seed, seeds, quick and param lines must match exactly.
  *
- * The other manifest lines (commit, versions, cpu, blas*, cflags, started,
+ * The other manifest lines (commit, versions, cpu, arch, libm, blas*, cflags, started,
  * seconds, cpu_seconds, peak_rss_mb) are never compared.
  *
  * Output: one tab-separated line per drifted value on stdout
@@ -20,8 +20,10 @@
  * (row: 1-based data row, with its first text cell as a label), the first
  * 10 of an experiment only unless --all; for an experiment with drift a line
  *   check: EXPERIMENT: D drifted[ (first 10 shown; --all for every one)];
- *     reference vs this run: CPU same|other|unknown (...), BLAS kernel ...
- * ("unknown" when a manifest predates the cpu and blas_core keys), then
+ *     reference vs this run: BLAS kernel other (reference X, this run Y),
+ *     CPU same (...), architecture same (...), libm same (...)
+ * (the CPU, architecture, BLAS kernel and libm variant: those that differ
+ * first, then "unknown" ones a manifest predates, then the same), then
  *   check: E experiments, T tables, V values compared, D drifted
  * Exit 0: no drift; 1: drift; 2: bad input (missing folder or manifest,
  * unreadable table, malformed rule or a rule naming a missing column).
@@ -63,7 +65,8 @@ int main(int argc, char **argv)
              "the committed checks.tsv; prints one line per drifted value\n"
              "(experiment, table, row, column, committed, new, rule), the first %d of\n"
              "an experiment (--all: every one), a line per drifted experiment naming\n"
-             "the CPU and BLAS kernel of both runs, and a summary.\n"
+             "the CPU, architecture, BLAS kernel and libm variant of both runs (what\n"
+             "differs first), and a summary.\n"
              "Exit 0: no drift, 1: drift, 2: bad input.\n", NL_CHECK_SHOWN);
       nl_opt_end(&p);
       return 0;

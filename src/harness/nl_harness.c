@@ -9,13 +9,23 @@
 #include <dlfcn.h>
 #include <errno.h>
 #ifdef __GLIBC__
+#include <gnu/libc-version.h>
 #include <malloc.h>
+#endif
+#if defined(__GLIBC__) && defined(__x86_64__) && defined(__has_include)
+#if __has_include(<sys/platform/x86.h>)
+#include <sys/platform/x86.h>
+#ifdef CPU_FEATURE_ACTIVE   /* glibc 2.33 on; 2.32 named it CPU_FEATURE_USABLE */
+#define NL_HAVE_X86_FEATURES 1
+#endif
+#endif
 #endif
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <sys/utsname.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -727,13 +737,44 @@ static void cpu_model(char *buf, size_t n)
   fclose(fp);
 }
 
-/* The BLAS the process runs with. OpenBLAS's own functions are looked up at
- * run time (dlsym), so the library builds and runs without OpenBLAS. */
+/* glibc's libm picks its exp, log, pow, sin, atan... among FMA, FMA4, AVX and
+ * SSE2 versions by the CPU features glibc takes as usable (the ifunc
+ * selectors of sysdeps/x86_64/fpu/multiarch), and
+ * GLIBC_TUNABLES=glibc.cpu.hwcaps=-AVX2,-FMA can turn features off: so the
+ * variant is named from glibc's view of the features, not from cpuid, and a
+ * feature the CPU has but glibc does not use is said. Their last bits differ. */
+static void libm_variant(char *buf, size_t n)
+{
+#ifdef __GLIBC__
+  const char *variant = "", *off = "";
+#ifdef NL_HAVE_X86_FEATURES
+  int fma = CPU_FEATURE_ACTIVE(FMA) && CPU_FEATURE_ACTIVE(AVX2);
+  if (fma) variant = " fma";
+  else if (CPU_FEATURE_ACTIVE(FMA4)) variant = " fma4";
+  else if (CPU_FEATURE_ACTIVE(AVX)) variant = " avx";
+  else variant = " sse2";
+  if (!fma && CPU_FEATURE_PRESENT(FMA) && CPU_FEATURE_PRESENT(AVX2))
+    off = " (CPU's fma turned off)";
+#endif
+  snprintf(buf, n, "glibc %s%s%s", gnu_get_libc_version(), variant, off);
+#else
+  snprintf(buf, n, "unknown");
+#endif
+}
+
+/* Where the run was made: CPU, architecture, libm variant and the BLAS the
+ * process runs with, what moves a value's last bits across machines (the
+ * regression check names them on drift). OpenBLAS's own functions are looked
+ * up at run time (dlsym), so the library builds and runs without OpenBLAS. */
 static void note_platform(nl_harness *r)
 {
   char buf[512];
   cpu_model(buf, sizeof buf);
   note(r, "cpu", buf);
+  struct utsname u;
+  note(r, "arch", uname(&u) == 0 ? u.machine : "unknown");
+  libm_variant(buf, sizeof buf);
+  note(r, "libm", buf);
   void *sym = dlsym(RTLD_DEFAULT, "openblas_get_config");
   if (!sym) sym = dlsym(RTLD_DEFAULT, "cblas_dgemm");
   Dl_info info;

@@ -36,11 +36,15 @@
  * wall time, peak memory and where it was made: compiler (name and version,
  * "gcc 12.2.0"), cflags
  * (project and user C flags, buildtype, optimisation, sanitizers), cpu
- * (/proc/cpuinfo model name), blas (library file; "OpenBLAS (path)" when
+ * (/proc/cpuinfo model name), arch (uname's machine, "x86_64"), libm
+ * (glibc's version and, on x86-64, the variant of exp, log, pow, sin... its
+ * libm runs as glibc sees the CPU: "glibc 2.36 fma", or "glibc 2.36 avx
+ * (CPU's fma turned off)" under GLIBC_TUNABLES=glibc.cpu.hwcaps=-FMA,...),
+ * blas (library file; "OpenBLAS (path)" when
  * OpenBLAS is loaded), blas_core, blas_config, blas_threads (OpenBLAS's
  * openblas_get_corename/config/num_threads; "none" without OpenBLAS).
  * The regression check compares none of these (nor started, seconds,
- * peak_rss_mb), but names cpu and blas_core when it finds drift.
+ * peak_rss_mb), but names cpu, arch, blas_core and libm when it finds drift.
  * NL_MANIFEST_NAME (a hidden file name, set by the entry script) makes
  * nl_harness_end write the manifest under that name instead; the script renames
  * it to manifest.tsv once the figures are made. It is written last and removed first, so a
@@ -255,7 +259,10 @@ nl_status nl_harness_rule_parse(const char *s, nl_harness_rule *rule, nl_error *
  * (row: 1-based data row, with its first text cell as a label), the first
  * NL_CHECK_SHOWN of an experiment unless s.all; after an experiment with
  * drift a line "check: EXP: D drifted[ (first 10 shown; ...)]; reference vs
- * this run: CPU same|other|unknown (...), BLAS kernel ...". welch and ftest
+ * this run: libm other (reference X, this run Y), CPU same (...), ..." naming
+ * the CPU, architecture, BLAS kernel and libm variant of both manifests,
+ * those that differ first, then those a manifest does not record (unknown),
+ * then those that are the same. welch and ftest
  * p-values come from nl_stats_welch_p and nl_stats_ftest_p. Returns NL_OK
  * whether or not there was drift (counted in s), else a one-line message:
  * a missing folder or manifest, an unreadable table, a malformed rule or a

@@ -226,31 +226,53 @@ static void check_manifests(check_ctx *c, const nl_table *ref, const nl_table *n
   }
 }
 
-/* "CPU same (X)", "CPU other (X -> Y)" or "CPU unknown (...)" for one
- * platform key of the two manifests. */
-static void platform_phrase(const nl_table *ref, const nl_table *new, const char *key,
-                            const char *label, char *out, size_t n)
+/* "CPU same (X)", "CPU other (reference X, this run Y)" or "CPU unknown
+ * (...)" for one platform key of the two manifests. Returns 2 for other, 1
+ * for unknown, 0 for same: the order the summary names them in. */
+static int platform_phrase(const nl_table *ref, const nl_table *new, const char *key,
+                           const char *label, char *out, size_t n)
 {
   char ba[32], bb[32];
   const char *a = manifest_get(ref, key, ba), *b = manifest_get(new, key, bb);
-  if (!a || !b || !strcmp(a, "unknown") || !strcmp(b, "unknown"))
-    snprintf(out, n, "%s unknown (reference: %s, this run: %s)", label, a ? a : "not recorded", b ? b : "not recorded");
-  else if (!strcmp(a, b)) snprintf(out, n, "%s same (%s)", label, a);
-  else snprintf(out, n, "%s other (reference %s, this run %s)", label, a, b);
+  if (!a || !b || !strcmp(a, "unknown") || !strcmp(b, "unknown")) {
+    snprintf(out, n, "%s unknown (reference: %s, this run: %s)", label, a ? a : "not recorded",
+             b ? b : "not recorded");
+    return 1;
+  }
+  if (!strcmp(a, b)) {
+    snprintf(out, n, "%s same (%s)", label, a);
+    return 0;
+  }
+  snprintf(out, n, "%s other (reference %s, this run %s)", label, a, b);
+  return 2;
 }
 
-/* After an experiment with drift: how much, and whether the reference was
- * made on another CPU or BLAS kernel than the new run. */
+/* After an experiment with drift: how much, and what the two runs were made
+ * on, what differs first (a libm variant or BLAS kernel moves the last bits
+ * on one CPU; another CPU or architecture may change either). */
 static void check_summary(const check_ctx *c, const nl_table *ref, const nl_table *new)
 {
-  char cpu[600], core[300], shown[80] = "";
+  static const char *keys[][2] = {
+    {"cpu", "CPU"}, {"arch", "architecture"}, {"blas_core", "BLAS kernel"}, {"libm", "libm"},
+  };
+  enum { NKEYS = sizeof keys / sizeof keys[0] };
+  char phrase[NKEYS][600], shown[80] = "";
+  int rank[NKEYS];
+  FILE *out = out_of(c->s);
   if (!c->exp_drifted) return;
-  platform_phrase(ref, new, "cpu", "CPU", cpu, sizeof cpu);
-  platform_phrase(ref, new, "blas_core", "BLAS kernel", core, sizeof core);
+  for (int k = 0; k < NKEYS; k++)
+    rank[k] = platform_phrase(ref, new, keys[k][0], keys[k][1], phrase[k], sizeof phrase[k]);
   if (!c->s->all && c->exp_drifted > NL_CHECK_SHOWN)
     snprintf(shown, sizeof shown, " (first %d shown; --all for every one)", NL_CHECK_SHOWN);
-  fprintf(out_of(c->s), "check: %s: %zu drifted%s; reference vs this run: %s, %s\n", c->exp, c->exp_drifted,
-          shown, cpu, core);
+  fprintf(out, "check: %s: %zu drifted%s; reference vs this run: ", c->exp, c->exp_drifted, shown);
+  const char *sep = "";
+  for (int want = 2; want >= 0; want--)
+    for (int k = 0; k < NKEYS; k++) {
+      if (rank[k] != want) continue;
+      fprintf(out, "%s%s", sep, phrase[k]);
+      sep = ", ";
+    }
+  fputc('\n', out);
 }
 
 /* The manifests, the rules and every committed table, in name order. */

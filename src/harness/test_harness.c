@@ -236,6 +236,14 @@ NL_TEST(manifest_round_trip)
     const char *cc = manifest_value(m, "compiler", 0);
     NL_CHECK(cc && (!strncmp(cc, "gcc ", 4) || strstr(cc, "lang")));   /* names the compiler */
     NL_CHECK(manifest_value(m, "cflags", 0) && manifest_value(m, "blas", 0) && manifest_value(m, "cpu", 0));
+    /* what moves last bits across machines: the architecture and libm's variant */
+    const char *arch = manifest_value(m, "arch", 0), *libm = manifest_value(m, "libm", 0);
+    NL_CHECK(arch && *arch && strcmp(arch, "unknown"));
+#ifdef __GLIBC__
+    NL_CHECK(libm && !strncmp(libm, "glibc 2.", 8));
+#else
+    NL_CHECK(libm != NULL);
+#endif
     NL_CHECK(ck->nrows == 3 && !strcmp(ck->text[0 * 3 + 2], "ignore") && !strcmp(ck->text[1 * 3 + 1], "*"));
     /* verdicts.tsv holds copies of compared values: not compared again */
     NL_CHECK(!strcmp(ck->text[2 * 3], "verdicts.tsv") && !strcmp(ck->text[2 * 3 + 2], "ignore"));
@@ -314,7 +322,11 @@ NL_TEST(check_engine_on_two_folders)
   /* noise under welch passes, the timing is ignored, a count that moved drifts */
   nl_harness_check_state s2 = {0};
   NL_CHECK(check(ref, moved, &s2, &rep, &err) == NL_OK && s2.drifted == 1);
-  NL_CHECK(strstr(rep, "t1\td.tsv\t2 [b]\tcount\t4\t5\texact\n") && strstr(rep, "check: t1: 1 drifted; reference vs this run: CPU same (X)"));
+  NL_CHECK(strstr(rep, "t1\td.tsv\t2 [b]\tcount\t4\t5\texact\n"));
+  /* what differs or is not recorded comes first, what is the same last */
+  NL_CHECK(strstr(rep, "check: t1: 1 drifted; reference vs this run: architecture unknown ("));
+  NL_CHECK(strstr(rep, ", libm unknown (reference: not recorded, this run: not recorded), "
+                       "CPU same (X)\n"));
   free(rep);
   /* bad input is a status and a message, not an exit */
   put(badrule, "manifest.tsv", MANIFEST);
