@@ -43,6 +43,11 @@ nl_status nl_image_read(const char *path, nl_image **out, nl_error *err);
  * since 1970) that time is written instead. The parent directory of path
  * is checked first ("x/y.png: parent x is not a directory"). */
 nl_status nl_image_write(const nl_image *im, const char *path, int bits, nl_error *err);
+/* NL_EINVAL (and nl_image_write refuses) when path's format cannot hold
+ * `bits` as asked: 32-bit float to an integer format (PNG, JPEG, BMP, GIF,
+ * PNM, TGA, WebP), which OpenImageIO would quietly clip to 0..1 at 8 bits.
+ * Programs call it before computing an image so a refusal costs nothing. */
+nl_status nl_image_check_bits(const char *path, int bits, nl_error *err);
 
 /* A grey image from a w*h array of doubles, mapped linearly so that lo -> 0
  * and hi -> 1 (values outside are clamped). */

@@ -106,6 +106,11 @@ NL_TEST(failed_write_leaves_nothing)
   NL_CHECK(strstr(err.msg, "/nonexistent/x.png") != NULL);
   char *noext = nl_path_join(dir, "noext");
   NL_CHECK(nl_image_write(a, noext, 8, &err) == NL_EINVAL);
+  char *png = nl_path_join(dir, "float.png");
+  NL_CHECK(nl_image_write(a, png, 32, &err) == NL_EINVAL && strstr(err.msg, "PNG cannot hold 32-bit"));
+  NL_CHECK(access(png, F_OK) != 0);
+  NL_CHECK(nl_image_check_bits("x.JPG", 32, &err) == NL_EINVAL && nl_image_check_bits("x.tif", 32, &err) == 0);
+  free(png);
   /* No temporary files left in the directory. */
   DIR *d = opendir(dir);
   struct dirent *e;
