@@ -271,6 +271,40 @@ NL_TEST(hostile_exr_header_refused_quickly)
   nl_image_free(ok); free(p);
 }
 
+/* A 264-byte uncompressed TIFF whose header declares 776 x 65474 pixels
+ * (50 million, 4.1 GB as the decoder reads them): refused from the header
+ * against the file's size, before anything that large is allocated. */
+static void put16(unsigned char *b, unsigned v) { b[0] = v & 0xff; b[1] = v >> 8 & 0xff; }
+static void put32(unsigned char *b, unsigned long v) { put16(b, v & 0xffff); put16(b + 2, v >> 16); }
+
+NL_TEST(header_larger_than_file_refused)
+{
+  static const unsigned long tags[9][3] = {   /* tag, type (3 short, 4 long), value */
+    {256, 4, 776}, {257, 4, 65474}, {258, 3, 8}, {259, 3, 1}, {262, 3, 1},
+    {273, 4, 122}, {277, 3, 1}, {278, 4, 65474}, {279, 4, 776ul * 65474}};
+  unsigned char t[264] = {'I', 'I', 42, 0, 8, 0, 0, 0, 9, 0};
+  for (int i = 0; i < 9; i++) {
+    unsigned char *e = t + 10 + 12 * i;
+    put16(e, (unsigned)tags[i][0]);
+    put16(e + 2, (unsigned)tags[i][1]);
+    put32(e + 4, 1);
+    if (tags[i][1] == 3) put16(e + 8, (unsigned)tags[i][2]);
+    else put32(e + 8, tags[i][2]);
+  }
+  char *p = nl_path_join(dir, "huge_header.tif");
+  FILE *f = fopen(p, "wb");
+  fwrite(t, 1, sizeof t, f);
+  fclose(f);
+  nl_image *im = NULL;
+  nl_error err = {{0}};
+  double t0 = nl_time_now();
+  NL_CHECK(nl_image_read(p, &im, &err) == NL_EFORMAT && im == NULL);
+  NL_CHECK(nl_time_now() - t0 < 5.0);
+  NL_CHECK(strstr(err.msg, "declares 776 x 65474 pixels in 264 bytes") != NULL);
+  if (im) nl_image_free(im);
+  free(p);
+}
+
 NL_TEST(write_names_the_parent_problem)
 {
   nl_image *a = ramp(4, 4, 1);
