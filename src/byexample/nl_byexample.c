@@ -368,6 +368,9 @@ nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *o
     return nl_fail(err, NL_EINVAL, "image is %d x %d pixels, smaller than %d", im->width,
                    im->height, NL_BYEXAMPLE_MIN_SIZE);
   if (o.tile < 8 || o.tile % 2) return nl_fail(err, NL_EINVAL, "tile period %d not even and >= 8", o.tile);
+  /* The analysis transforms the image several times: a side with a large
+   * prime factor would make each transform O(n^2) (minutes, not seconds). */
+  if (nl_spectrum_check_size(im->width, im->height, err)) return NL_EINVAL;
   memset(p, 0, sizeof *p);
   p->channels = colour_channels(im);
   p->nbands = nl_byexample_band_count(im->width, im->height);

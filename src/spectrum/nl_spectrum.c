@@ -209,6 +209,58 @@ void nl_spectrum_rfft2(nl_spectrum_fft2_plan *p, const double *img, double *H)
   }
 }
 
+/* The sum of n's prime factors (with multiplicity) and the largest. */
+static double prime_factor_sum(int n, int *largest)
+{
+  double sum = 0;
+  *largest = 1;
+  for (int f = 2; (long)f * f <= n; f++)
+    while (n % f == 0) {
+      sum += f;
+      *largest = f;
+      n /= f;
+    }
+  if (n > 1) {
+    sum += n;
+    *largest = n;
+  }
+  return sum;
+}
+
+double nl_spectrum_fft2_cost(int w, int h)
+{
+  int lw, lh;
+  return (double)w * h * (prime_factor_sum(w, &lw) + prime_factor_sum(h, &lh));
+}
+
+/* The largest m <= n that passes nl_spectrum_check_size with the other
+ * side `other`: made of 2, 3, 5 and 7, or cheap enough. */
+static int crop_to(int n, int other, int is_width)
+{
+  for (int m = n; m > 1; m--) {
+    int largest;
+    double cost = is_width ? nl_spectrum_fft2_cost(m, other) : nl_spectrum_fft2_cost(other, m);
+    prime_factor_sum(m, &largest);
+    if (largest <= 7 || cost <= NL_SPECTRUM_MAX_COST) return m;
+  }
+  return 1;
+}
+
+nl_status nl_spectrum_check_size(int w, int h, nl_error *err)
+{
+  double cost = nl_spectrum_fft2_cost(w, h);
+  int lw, lh;
+  prime_factor_sum(w, &lw);
+  prime_factor_sum(h, &lh);
+  if (cost <= NL_SPECTRUM_MAX_COST || (lw <= 7 && lh <= 7)) return NL_OK;
+  int side_is_w = lw >= lh, n = side_is_w ? w : h;
+  return nl_fail(err, NL_EINVAL, "%d x %d pixels: %s %d has the prime factor %d, and a Fourier "
+                 "transform of it costs %.2g operations (limit %.0g); crop the %s to %d",
+                 w, h, side_is_w ? "width" : "height", n, side_is_w ? lw : lh, cost,
+                 NL_SPECTRUM_MAX_COST, side_is_w ? "width" : "height",
+                 crop_to(n, side_is_w ? h : w, side_is_w));
+}
+
 void nl_spectrum_fft2(const double *img, int w, int h, double *F)
 {
   nl_spectrum_fft2_plan *p = nl_spectrum_fft2_plan_alloc(w, h);
