@@ -37,13 +37,14 @@ static inline float *nl_image_pixel(const nl_image *im, int x, int y)
  * than the file holds (checked before OpenEXR allocates them). Codecs'
  * own stderr lines are muted: the message is the one line. */
 #define NL_IMAGE_MAX_PIXELS (1L << 28)
-/* Nor may a file declare more pixels than its bytes can expand to: deflate
- * (PNG, TIFF, EXR zip) expands at most 1032 times, LZW about 1400 times,
- * so with 1-bit samples a byte holds at most about 11,000 pixels. A header
- * declaring more (a 264-byte TIFF of 776 x 65474) is refused before the
- * decoder allocates or loops over it. CCITT fax coding of blank pages can
- * go further and is not supported. */
-#define NL_IMAGE_MAX_PIXELS_PER_BYTE 16384
+/* Nor may a file declare more samples than its bytes can expand to:
+ * deflate (PNG, TIFF, EXR zip) expands at most 1032 times, TIFF's LZW
+ * about 1400 times. A header declaring more bytes of samples than
+ * NL_IMAGE_MAX_EXPANSION times the file's size (a 264-byte TIFF of
+ * 776 x 65474) is refused before the decoder allocates or loops over
+ * them. Not covered: CCITT fax coding and EXR's lossy DWA of constant
+ * images, which can go further. */
+#define NL_IMAGE_MAX_EXPANSION 2048
 nl_status nl_image_read(const char *path, nl_image **out, nl_error *err);
 /* Writing embeds no time: TIFF DateTime / EXR capDate are left out, so the
  * same image gives the same bytes; with SOURCE_DATE_EPOCH set (seconds

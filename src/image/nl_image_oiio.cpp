@@ -176,12 +176,14 @@ extern "C" nl_status nl_oiio_read(const char *path, nl_image **out, nl_error *er
     return nl_fail(err, NL_EFORMAT, "%s: %d x %d pixels%s is beyond the %.0f-pixel limit",
                    path, spec.width, spec.height, spec.depth > 1 ? " (and depth)" : "",
                    (double)NL_IMAGE_MAX_PIXELS);
-  // A header can declare any size; the pixels must come from the file's bytes.
-  // A special file (a FIFO: size 0) is not held to it.
-  if (file_bytes > 0 && npixd * spec.depth > (double)file_bytes * NL_IMAGE_MAX_PIXELS_PER_BYTE)
-    return nl_fail(err, NL_EFORMAT, "%s: declares %d x %d pixels in %lld bytes, more than any "
-                   "compression holds (%d pixels per byte): the file is damaged or truncated",
-                   path, spec.width, spec.height, file_bytes, NL_IMAGE_MAX_PIXELS_PER_BYTE);
+  // A header can declare any size; the samples must come from the file's
+  // bytes. A special file (a FIFO: size 0) is not held to it.
+  int bits = spec.get_int_attribute("oiio:BitsPerSample", (int)spec.format.size() * 8);
+  double raw = npixd * spec.depth * spec.nchannels * (bits > 0 ? bits : 1) / 8.0;
+  if (file_bytes > 0 && raw > (double)file_bytes * NL_IMAGE_MAX_EXPANSION)
+    return nl_fail(err, NL_EFORMAT, "%s: declares %d x %d pixels (%.3g bytes of samples) in %lld "
+                   "bytes, more than compression expands to (%dx): the file is damaged",
+                   path, spec.width, spec.height, raw, file_bytes, NL_IMAGE_MAX_EXPANSION);
   if (!nl_mem_fits(bytes)) {
     char b1[32], b2[32];
     return nl_fail(err, NL_ENOMEM, "%s: %d x %d x %d pixels need %s to read; this machine has %s",
