@@ -553,6 +553,12 @@ nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, un
   double *plane[3];
   int cal = p->calibrate > 0 && p->histogram && !solid && !(opt && opt->scale > 0 && opt->scale != 1) &&
             nl_mem_fits(need + (double)n * p->nbands * p->channels * sizeof(double));
+  /* Calibration measures band powers by FFT of the output: O(n^2) for a
+   * side with a large prime factor, as in the analysis. */
+  if (cal && nl_spectrum_check_size(w, h, err)) {
+    nl_wavelet_tile_free(t);
+    return NL_EINVAL;
+  }
   for (int c = 0; c < p->channels; c++) plane[c] = nl_xmalloc(n * sizeof(double));
   if (cal) calibrate_channels(p, t, gain, w, h, seed, opt, plane);
   for (int c = 0; c < p->channels && !cal; c++) {

@@ -267,4 +267,13 @@ NL_TEST(prime_width_refused_quickly)
   NL_CHECK(nl_time_now() - t0 < 5.0);
   NL_CHECK(strstr(err.msg, "width 65521 has the prime factor 65521") != NULL);
   nl_image_free(im);
+  /* The calibrated synthesis transforms its output: the same size refused. */
+  nl_image *ex = nl_byexample_exemplar("clouds", 64, 2), *out = NULL;
+  nl_byexample_options o = {1, 1, 0, 0, NL_HIST_PAPER, NL_BYEXAMPLE_CALIBRATE};
+  NL_CHECK(nl_byexample_analyse(ex, &o, &p, NULL) == NL_OK && p.calibrate > 0);
+  t0 = nl_time_now();
+  NL_CHECK(nl_byexample_synthesize(&p, 65521, 16, 1, NULL, &out, &err) == NL_EINVAL && out == NULL);
+  NL_CHECK(nl_time_now() - t0 < 5.0);
+  NL_CHECK(strstr(err.msg, "crop the width to 65520") != NULL);
+  nl_image_free(ex);
 }
