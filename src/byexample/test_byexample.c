@@ -274,6 +274,6 @@ NL_TEST(prime_width_refused_quickly)
   t0 = nl_time_now();
   NL_CHECK(nl_byexample_synthesize(&p, 65521, 16, 1, NULL, &out, &err) == NL_EINVAL && out == NULL);
   NL_CHECK(nl_time_now() - t0 < 5.0);
-  NL_CHECK(strstr(err.msg, "crop the width to 65520") != NULL);
+  NL_CHECK(strstr(err.msg, "crop it to 65520 x 16") != NULL);
   nl_image_free(ex);
 }

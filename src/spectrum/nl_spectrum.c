@@ -233,32 +233,45 @@ double nl_spectrum_fft2_cost(int w, int h)
   return (double)w * h * (prime_factor_sum(w, &lw) + prime_factor_sum(h, &lh));
 }
 
-/* The largest m <= n that passes nl_spectrum_check_size with the other
- * side `other`: made of 2, 3, 5 and 7, or cheap enough. */
+static int size_passes(int w, int h)
+{
+  int lw, lh;
+  prime_factor_sum(w, &lw);
+  prime_factor_sum(h, &lh);
+  return nl_spectrum_fft2_cost(w, h) <= NL_SPECTRUM_MAX_COST || (lw <= 7 && lh <= 7);
+}
+
+/* The largest m <= n with which the other side `other` passes: made of 2,
+ * 3, 5 and 7 (then passing needs the other side so too), or cheap enough. */
 static int crop_to(int n, int other, int is_width)
 {
   for (int m = n; m > 1; m--) {
     int largest;
-    double cost = is_width ? nl_spectrum_fft2_cost(m, other) : nl_spectrum_fft2_cost(other, m);
     prime_factor_sum(m, &largest);
-    if (largest <= 7 || cost <= NL_SPECTRUM_MAX_COST) return m;
+    if (largest <= 7 || size_passes(is_width ? m : other, is_width ? other : m)) return m;
   }
   return 1;
 }
 
 nl_status nl_spectrum_check_size(int w, int h, nl_error *err)
 {
-  double cost = nl_spectrum_fft2_cost(w, h);
+  if (size_passes(w, h)) return NL_OK;
   int lw, lh;
   prime_factor_sum(w, &lw);
   prime_factor_sum(h, &lh);
-  if (cost <= NL_SPECTRUM_MAX_COST || (lw <= 7 && lh <= 7)) return NL_OK;
-  int side_is_w = lw >= lh, n = side_is_w ? w : h;
+  /* The side with the larger factor is cropped first, the other only if
+   * that is not enough. */
+  int side_is_w = lw >= lh, cw = w, ch = h;
+  if (side_is_w) cw = crop_to(w, h, 1);
+  else ch = crop_to(h, w, 0);
+  if (!size_passes(cw, ch)) {
+    if (side_is_w) ch = crop_to(h, cw, 0);
+    else cw = crop_to(w, ch, 1);
+  }
   return nl_fail(err, NL_EINVAL, "%d x %d pixels: %s %d has the prime factor %d, and a Fourier "
-                 "transform of it costs %.2g operations (limit %.0g); crop the %s to %d",
-                 w, h, side_is_w ? "width" : "height", n, side_is_w ? lw : lh, cost,
-                 NL_SPECTRUM_MAX_COST, side_is_w ? "width" : "height",
-                 crop_to(n, side_is_w ? h : w, side_is_w));
+                 "transform of it costs %.2g operations (limit %.0g); crop it to %d x %d",
+                 w, h, side_is_w ? "width" : "height", side_is_w ? w : h, side_is_w ? lw : lh,
+                 nl_spectrum_fft2_cost(w, h), NL_SPECTRUM_MAX_COST, cw, ch);
 }
 
 void nl_spectrum_fft2(const double *img, int w, int h, double *F)

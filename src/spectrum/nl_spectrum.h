@@ -53,8 +53,8 @@ void nl_spectrum_fft2(const double *img, int w, int h, double *F);
  * nl_spectrum_check_size refuses a size above NL_SPECTRUM_MAX_COST (about a
  * second of GSL per transform) when a side has a prime factor beyond 7 (a
  * large image of small factors is O(n log n) work and passes), with a
- * message naming the side, its largest prime factor and the largest length
- * at most that side that passes (crop to it). */
+ * message naming the side, its largest prime factor and a size to crop to
+ * that passes (the side with the larger factor cropped first). */
 #define NL_SPECTRUM_MAX_COST 2e9
 double nl_spectrum_fft2_cost(int w, int h);
 nl_status nl_spectrum_check_size(int w, int h, nl_error *err);

@@ -164,9 +164,12 @@ NL_TEST(awkward_sizes_refused)
   NL_CHECK(nl_spectrum_fft2_cost(16, 65536) == 16.0 * 65536 * (2 * 16 + 2 * 4));
   NL_CHECK(nl_spectrum_check_size(65521, 16, &err) == NL_EINVAL);
   NL_CHECK(strstr(err.msg, "width 65521 has the prime factor 65521") != NULL);
-  NL_CHECK(strstr(err.msg, "crop the width to 65520") != NULL);
+  NL_CHECK(strstr(err.msg, "crop it to 65520 x 16") != NULL);
   NL_CHECK(nl_spectrum_check_size(4096, 4093, &err) == NL_EINVAL && strstr(err.msg, "height 4093"));
   NL_CHECK(nl_spectrum_check_size(16, 65536, &err) == NL_OK);
+  /* both sides awkward (776 = 8 x 97, 65474 = 2 x 19 x 1723): both cropped */
+  NL_CHECK(nl_spectrum_check_size(776, 65474, &err) == NL_EINVAL && strstr(err.msg, "height 65474"));
+  NL_CHECK(strstr(err.msg, "crop it to 768 x 64827") != NULL);
   NL_CHECK(nl_spectrum_check_size(16384, 16384, &err) == NL_OK);
   NL_CHECK(nl_spectrum_check_size(15000, 15000, &err) == NL_OK);
   NL_CHECK(nl_spectrum_check_size(512, 509, &err) == NL_OK);
