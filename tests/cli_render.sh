@@ -37,7 +37,8 @@ bad "/nonexistent/dir/x.png: directory /nonexistent/dir does not exist" fbm --si
 bad "no output file" fbm --size 8
 # An integer format cannot hold raw 32-bit floats: refused, nothing written.
 rm -f "$out/new.png"
-bad "new.png: PNG cannot hold 32-bit float; use .exr or .tif" fbm --size 32 --bits 32 -o "$out/new.png"
+bad "new.png: PNG cannot hold 32-bit float; use .exr or .tif" \
+  fbm --size 32 --bits 32 -o "$out/new.png"
 [ ! -e "$out/new.png" ] || { echo "render --bits 32 to a PNG wrote $out/new.png"; exit 1; }
 "$render" fbm --size 32 --bits 32 -o "$out/f32.tif"
 bad "must be even" wavelet --tile 9 -o "$out/x.png"

@@ -127,8 +127,12 @@ expect_error "ragged.tsv:2" "$STAT" hclust "$TMP/ragged.tsv" --linkage single --
 expect_error "only 3 rows" "$STAT" gmm "$TMP/three.tsv" --k 4
 # A byte-order mark is skipped (all 1000 rows are data); a first line "inf"
 # is a row of data, refused on line 1, not a header that drops a row.
-{ printf '\357\273\277'; awk 'BEGIN { for (i = 0; i < 1000; i++) print (i + 0.5) / 1000 }'; } >"$TMP/bom.tsv"
-case $("$STAT" ks "$TMP/bom.tsv") in *"n=1000 "*) ok ;; *) bad "ks on a file with a BOM: not n=1000" ;; esac
+{ printf '\357\273\277'; awk 'BEGIN { for (i = 0; i < 1000; i++) print (i + 0.5) / 1000 }'; } \
+  >"$TMP/bom.tsv"
+case $("$STAT" ks "$TMP/bom.tsv") in
+  *"n=1000 "*) ok ;;
+  *) bad "ks on a file with a BOM: not n=1000" ;;
+esac
 { echo inf; awk 'BEGIN { for (i = 1; i < 1000; i++) print (i + 0.5) / 1000 }'; } >"$TMP/inf1.tsv"
 expect_error "inf1.tsv:1: column 'c1' holds 'inf'" "$STAT" ks "$TMP/inf1.tsv"
 # Finite values whose squared distances overflow: refused, whatever the linkage.

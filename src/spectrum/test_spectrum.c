@@ -168,7 +168,8 @@ NL_TEST(awkward_sizes_refused)
   NL_CHECK(nl_spectrum_check_size(4096, 4093, &err) == NL_EINVAL && strstr(err.msg, "height 4093"));
   NL_CHECK(nl_spectrum_check_size(16, 65536, &err) == NL_OK);
   /* both sides awkward (776 = 8 x 97, 65474 = 2 x 19 x 1723): both cropped */
-  NL_CHECK(nl_spectrum_check_size(776, 65474, &err) == NL_EINVAL && strstr(err.msg, "height 65474"));
+  NL_CHECK(nl_spectrum_check_size(776, 65474, &err) == NL_EINVAL);
+  NL_CHECK(strstr(err.msg, "height 65474") != NULL);
   NL_CHECK(strstr(err.msg, "crop it to 768 x 64827") != NULL);
   NL_CHECK(nl_spectrum_check_size(16384, 16384, &err) == NL_OK);
   NL_CHECK(nl_spectrum_check_size(15000, 15000, &err) == NL_OK);

@@ -103,7 +103,8 @@ NL_TEST(huge_values_refused)
       nl_error err;
       err.msg[0] = 0;
       size_t n = pairs[p][2] != 0 ? 3 : 2;
-      NL_CHECK(nl_cluster_linkage(pairs[p], n, 1, (nl_cluster_linkage_method)m, Z, &err) == NL_EINVAL);
+      nl_cluster_linkage_method lm = (nl_cluster_linkage_method)m;
+      NL_CHECK(nl_cluster_linkage(pairs[p], n, 1, lm, Z, &err) == NL_EINVAL);
       NL_CHECK(strstr(err.msg, "rescale the data") != NULL);
     }
   double big[] = {0, 1e149, 3e149, 4e149}, small[] = {0, 1, 3, 4}, Zb[12], Zs[12];

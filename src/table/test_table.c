@@ -78,7 +78,8 @@ NL_TEST(bom_and_non_finite_first_line)
   NL_CHECK(t && t->nrows == 1 && nl_table_column(t, "x") == 0);
   nl_table_free(t);
   free(p);
-  NL_CHECK(read_fails_with("inf\n1\n2\n", "bad.tsv:1: column 'c1' holds 'inf'", NL_TABLE_HEADER_AUTO));
+  NL_CHECK(read_fails_with("inf\n1\n2\n", "bad.tsv:1: column 'c1' holds 'inf'",
+                           NL_TABLE_HEADER_AUTO));
   NL_CHECK(read_fails_with("1\t1e999\n1\t2\n", "bad.tsv:1:", NL_TABLE_HEADER_AUTO));
 }
 

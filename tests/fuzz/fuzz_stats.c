@@ -44,8 +44,9 @@ static void fuzz_hclust(const double *x, size_t n, size_t d, int method, size_t 
     size_t got;
     for (int pass = 0; pass < 2; pass++) {
       /* the second pass cuts at the median merge height */
+      double median = Z[4 * ((n - 1) / 2) + 2];
       st = pass == 0 ? nl_cluster_fcluster_maxclust(Z, n, k, lab, &got, &err)
-                     : nl_cluster_fcluster_distance(Z, n, Z[4 * ((n - 1) / 2) + 2], lab, &got, &err);
+                     : nl_cluster_fcluster_distance(Z, n, median, lab, &got, &err);
       if (st != NL_OK) {
         fprintf(stderr, "nl_fuzz: a linkage of %zu points gave merges fcluster refuses: %s\n",
                 n, err.msg);
