@@ -162,6 +162,24 @@ le32() {
   printf -v b '\\x%02x\\x%02x\\x%02x\\x%02x' $(($1 & 255)) $((($1 >> 8) & 255)) $((($1 >> 16) & 255)) $((($1 >> 24) & 255))
   printf '%b' "$b"
 }
+# A 264-byte uncompressed TIFF whose header declares 776 x 65474 8-bit
+# pixels (4.1 GB as floats): refused from the header in a blink.
+{
+  printf 'II*\0'; le32 8; printf '\x09\0'
+  for tag in '256 4 776' '257 4 65474' '258 3 8' '259 3 1' '262 3 1' '273 4 122' \
+             '277 3 1' '278 4 65474' '279 4 50807824'; do
+    read -r t ty v <<<"$tag"
+    printf -v b '\\x%02x\\x%02x\\x%02x\\x00' $((t & 255)) $((t >> 8)) "$ty"
+    printf '%b' "$b"; le32 1; le32 "$v"
+  done
+  le32 0; head -c 142 /dev/zero
+} > "$out/huge.tif"
+[ "$(stat -c %s "$out/huge.tif")" -eq 264 ]
+rc=0
+timeout 60 "$tool" analyse "$out/huge.tif" -o "$out/huge.params" 2> "$out/err.txt" || rc=$?
+[ "$rc" -eq 2 ]
+grep -q 'huge.tif: declares 776 x 65474 pixels' "$out/err.txt"
+[ "$(wc -l < "$out/err.txt")" -eq 1 ] && [ ! -e "$out/huge.params" ]
 # exr_1ch FILE W H PIXEL: an uncompressed one-channel float EXR made by hand,
 # every pixel PIXEL (4 bytes as printf escapes, little-endian).
 exr_1ch() {

@@ -35,6 +35,12 @@ bad "--octaves: 31 is outside" fbm --octaves 31 -o "$out/x.png"
 bad "--gain: 'abc' is not a number" fbm --gain abc -o "$out/x.png"
 bad "/nonexistent/dir/x.png: directory /nonexistent/dir does not exist" fbm --size 8 -o /nonexistent/dir/x.png
 bad "no output file" fbm --size 8
+# An integer format cannot hold raw 32-bit floats: refused, nothing written.
+rm -f "$out/new.png"
+bad "new.png: PNG cannot hold 32-bit float; use .exr or .tif" \
+  fbm --size 32 --bits 32 -o "$out/new.png"
+[ ! -e "$out/new.png" ] || { echo "render --bits 32 to a PNG wrote $out/new.png"; exit 1; }
+"$render" fbm --size 32 --bits 32 -o "$out/f32.tif"
 bad "must be even" wavelet --tile 9 -o "$out/x.png"
 bad "--lambda: -1 must be in (0, 1000]" gctbf --lambda -1 -o "$out/x.png"
 bad "F index must be in 1..4" gctbf --terms F5 -o "$out/x.png"

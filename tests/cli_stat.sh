@@ -125,6 +125,26 @@ expect_error "inf.tsv:2" "$STAT" kuiper "$TMP/inf.tsv"
 expect_error "word.tsv:3" "$STAT" chisq "$TMP/word.tsv" --bins 4
 expect_error "ragged.tsv:2" "$STAT" hclust "$TMP/ragged.tsv" --linkage single --clusters 2
 expect_error "only 3 rows" "$STAT" gmm "$TMP/three.tsv" --k 4
+# A byte-order mark is skipped (all 1000 rows are data); a first line "inf"
+# is a row of data, refused on line 1, not a header that drops a row.
+{ printf '\357\273\277'; awk 'BEGIN { for (i = 0; i < 1000; i++) print (i + 0.5) / 1000 }'; } \
+  >"$TMP/bom.tsv"
+case $("$STAT" ks "$TMP/bom.tsv") in
+  *"n=1000 "*) ok ;;
+  *) bad "ks on a file with a BOM: not n=1000" ;;
+esac
+{ echo inf; awk 'BEGIN { for (i = 1; i < 1000; i++) print (i + 0.5) / 1000 }'; } >"$TMP/inf1.tsv"
+expect_error "inf1.tsv:1: column 'c1' holds 'inf'" "$STAT" ks "$TMP/inf1.tsv"
+# Finite values whose squared distances overflow: refused, whatever the linkage.
+printf '0\n1e160\n' >"$TMP/huge2.tsv"
+printf '0\n1e200\n3e200\n' >"$TMP/huge3.tsv"
+for link in single complete average ward; do
+  expect_error "huge2.tsv: the points span a distance of 1e+160" \
+    "$STAT" hclust "$TMP/huge2.tsv" --linkage "$link" --clusters 1
+  expect_error "huge3.tsv: .*rescale the data" \
+    "$STAT" hclust "$TMP/huge3.tsv" --linkage "$link" --clusters 1 --labels "$TMP/huge_labels.tsv"
+done
+if [ ! -e "$TMP/huge_labels.tsv" ]; then ok; else bad "a refused hclust wrote its labels"; fi
 expect_error "--bins" "$STAT" chisq "$DATA/chisq_0.tsv" --bins 1
 expect_error "--cutoff" "$STAT" hclust "$DATA/hclust_X.tsv" --linkage single --cutoff -1
 expect_error "outside" "$STAT" chisq "$DATA/chisq_0.tsv" --bins 10

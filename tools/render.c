@@ -237,6 +237,9 @@ static void parse(int argc, char **argv, options *o)
   o->bo.count = !strcmp(o->count, "closest") ? NL_COUNT_CLOSEST : NL_COUNT_INVERSE_CDF;
   if (!one_of(o->normalize, norms)) { snprintf(m, sizeof m, "--normalize: '%s' is not bound or range", o->normalize); fail(m); }
   if (o->bits && o->bits != 8 && o->bits != 16 && o->bits != 32) { snprintf(m, sizeof m, "--bits: %ld is not 8, 16 or 32", o->bits); fail(m); }
+  nl_error berr;
+  if (!ends_with(o->out, ".tsv") && nl_image_check_bits(o->out, (int)o->bits, &berr))
+    fail(berr.msg);
   /* values (double) and the image (float); a .tsv holds 3 columns of a
    * table (number and text slot each) that may be doubled while growing */
   size_t len = strlen(o->out);

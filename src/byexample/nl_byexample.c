@@ -368,6 +368,9 @@ nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *o
     return nl_fail(err, NL_EINVAL, "image is %d x %d pixels, smaller than %d", im->width,
                    im->height, NL_BYEXAMPLE_MIN_SIZE);
   if (o.tile < 8 || o.tile % 2) return nl_fail(err, NL_EINVAL, "tile period %d not even and >= 8", o.tile);
+  /* The analysis transforms the image several times: a side with a large
+   * prime factor would make each transform O(n^2) (minutes, not seconds). */
+  if (nl_spectrum_check_size(im->width, im->height, err)) return NL_EINVAL;
   memset(p, 0, sizeof *p);
   p->channels = colour_channels(im);
   p->nbands = nl_byexample_band_count(im->width, im->height);
@@ -550,6 +553,12 @@ nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, un
   double *plane[3];
   int cal = p->calibrate > 0 && p->histogram && !solid && !(opt && opt->scale > 0 && opt->scale != 1) &&
             nl_mem_fits(need + (double)n * p->nbands * p->channels * sizeof(double));
+  /* Calibration measures band powers by FFT of the output: O(n^2) for a
+   * side with a large prime factor, as in the analysis. */
+  if (cal && nl_spectrum_check_size(w, h, err)) {
+    nl_wavelet_tile_free(t);
+    return NL_EINVAL;
+  }
   for (int c = 0; c < p->channels; c++) plane[c] = nl_xmalloc(n * sizeof(double));
   if (cal) calibrate_channels(p, t, gain, w, h, seed, opt, plane);
   for (int c = 0; c < p->channels && !cal; c++) {

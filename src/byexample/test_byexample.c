@@ -253,3 +253,27 @@ NL_TEST(rotation_error_and_correlation_error)
 }
 
 int main(void) { return nl_test_run(); }
+
+/* A valid 16 x 65521 exemplar: 65521 is prime, so each transform of the
+ * analysis would be O(n^2) (minutes). Refused at once, naming the width. */
+NL_TEST(prime_width_refused_quickly)
+{
+  nl_image *im = nl_image_alloc(65521, 16, 1);
+  for (size_t i = 0; i < (size_t)65521 * 16; i++) im->data[i] = (float)((i * 7919) % 256) / 255.0f;
+  nl_byexample_params p;
+  nl_error err = {{0}};
+  double t0 = nl_time_now();
+  NL_CHECK(nl_byexample_analyse(im, NULL, &p, &err) == NL_EINVAL);
+  NL_CHECK(nl_time_now() - t0 < 5.0);
+  NL_CHECK(strstr(err.msg, "width 65521 has the prime factor 65521") != NULL);
+  nl_image_free(im);
+  /* The calibrated synthesis transforms its output: the same size refused. */
+  nl_image *ex = nl_byexample_exemplar("clouds", 64, 2), *out = NULL;
+  nl_byexample_options o = {1, 1, 0, 0, NL_HIST_PAPER, NL_BYEXAMPLE_CALIBRATE};
+  NL_CHECK(nl_byexample_analyse(ex, &o, &p, NULL) == NL_OK && p.calibrate > 0);
+  t0 = nl_time_now();
+  NL_CHECK(nl_byexample_synthesize(&p, 65521, 16, 1, NULL, &out, &err) == NL_EINVAL && out == NULL);
+  NL_CHECK(nl_time_now() - t0 < 5.0);
+  NL_CHECK(strstr(err.msg, "crop it to 65520 x 16") != NULL);
+  nl_image_free(ex);
+}

@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #ifndef NL_OIIO_STATIC
 #include <dlfcn.h>
@@ -137,9 +138,27 @@ nl_status nl_image_read(const char *path, nl_image **out, nl_error *err)
   return s;
 }
 
+nl_status nl_image_check_bits(const char *path, int bits, nl_error *err)
+{
+  static const char *const integer_only[][2] = {
+    {".png", "PNG"}, {".jpg", "JPEG"}, {".jpeg", "JPEG"}, {".bmp", "BMP"}, {".gif", "GIF"},
+    {".ppm", "PNM"}, {".pgm", "PNM"}, {".pnm", "PNM"}, {".tga", "TGA"}, {".webp", "WebP"}};
+  if (bits != 32) return NL_OK;
+  size_t len = strlen(path);
+  for (size_t i = 0; i < sizeof integer_only / sizeof *integer_only; i++) {
+    size_t e = strlen(integer_only[i][0]);
+    if (len >= e && strcasecmp(path + len - e, integer_only[i][0]) == 0)
+      return nl_fail(err, NL_EINVAL, "%s: %s cannot hold 32-bit float; use .exr or .tif",
+                     path, integer_only[i][1]);
+  }
+  return NL_OK;
+}
+
 nl_status nl_image_write(const nl_image *im, const char *path, int bits, nl_error *err)
 {
-  nl_status s = backend(path, err);
+  nl_status s = nl_image_check_bits(path, bits, err);
+  if (s) return s;
+  s = backend(path, err);
   if (s) return s;
   QUIET_BEGIN();
   s = oiio_write(im, path, bits, err);

@@ -37,12 +37,25 @@ static inline float *nl_image_pixel(const nl_image *im, int x, int y)
  * than the file holds (checked before OpenEXR allocates them). Codecs'
  * own stderr lines are muted: the message is the one line. */
 #define NL_IMAGE_MAX_PIXELS (1L << 28)
+/* Nor may a file declare more samples than its bytes can expand to:
+ * deflate (PNG, TIFF, EXR zip) expands at most 1032 times, TIFF's LZW
+ * about 1400 times. A header declaring more bytes of samples than
+ * NL_IMAGE_MAX_EXPANSION times the file's size (a 264-byte TIFF of
+ * 776 x 65474) is refused before the decoder allocates or loops over
+ * them. Not covered: CCITT fax coding and EXR's lossy DWA of constant
+ * images, which can go further. */
+#define NL_IMAGE_MAX_EXPANSION 2048
 nl_status nl_image_read(const char *path, nl_image **out, nl_error *err);
 /* Writing embeds no time: TIFF DateTime / EXR capDate are left out, so the
  * same image gives the same bytes; with SOURCE_DATE_EPOCH set (seconds
  * since 1970) that time is written instead. The parent directory of path
  * is checked first ("x/y.png: parent x is not a directory"). */
 nl_status nl_image_write(const nl_image *im, const char *path, int bits, nl_error *err);
+/* NL_EINVAL (and nl_image_write refuses) when path's format cannot hold
+ * `bits` as asked: 32-bit float to an integer format (PNG, JPEG, BMP, GIF,
+ * PNM, TGA, WebP), which OpenImageIO would quietly clip to 0..1 at 8 bits.
+ * Programs call it before computing an image so a refusal costs nothing. */
+nl_status nl_image_check_bits(const char *path, int bits, nl_error *err);
 
 /* A grey image from a w*h array of doubles, mapped linearly so that lo -> 0
  * and hi -> 1 (values outside are clamped). */

@@ -137,10 +137,11 @@ static nl_status check_exr_header(const char *path, FILE *f, long long fsize, nl
 /* nl_image_read (nl_image.c) has named a missing, unreadable or special
  * file before loading this module; what stays here is the EXR header check
  * (its size and open can still fail if the file changed since). */
-static nl_status precheck(const char *path, nl_error *err)
+static nl_status precheck(const char *path, long long *size, nl_error *err)
 {
   struct stat st;
   if (stat(path, &st) != 0) return nl_fail(err, NL_EIO, "%s: cannot open: %s", path, std::strerror(errno));
+  *size = (long long)st.st_size;
   FILE *f = std::fopen(path, "rb");
   if (!f) return nl_fail(err, NL_EIO, "%s: cannot open: %s", path, std::strerror(errno));
   nl_status s = check_exr_header(path, f, (long long)st.st_size, err);
@@ -151,7 +152,8 @@ static nl_status precheck(const char *path, nl_error *err)
 extern "C" nl_status nl_oiio_read(const char *path, nl_image **out, nl_error *err)
 {
   *out = nullptr;
-  nl_status ps = precheck(path, err);
+  long long file_bytes = 0;
+  nl_status ps = precheck(path, &file_bytes, err);
   if (ps) return ps;
   // Pixels are kept unassociated (straight) alpha: a transparent pixel keeps
   // its colour, which control patterns and round trips rely on.
@@ -174,6 +176,14 @@ extern "C" nl_status nl_oiio_read(const char *path, nl_image **out, nl_error *er
     return nl_fail(err, NL_EFORMAT, "%s: %d x %d pixels%s is beyond the %.0f-pixel limit",
                    path, spec.width, spec.height, spec.depth > 1 ? " (and depth)" : "",
                    (double)NL_IMAGE_MAX_PIXELS);
+  // A header can declare any size; the samples must come from the file's
+  // bytes. A special file (a FIFO: size 0) is not held to it.
+  int bits = spec.get_int_attribute("oiio:BitsPerSample", (int)spec.format.size() * 8);
+  double raw = npixd * spec.depth * spec.nchannels * (bits > 0 ? bits : 1) / 8.0;
+  if (file_bytes > 0 && raw > (double)file_bytes * NL_IMAGE_MAX_EXPANSION)
+    return nl_fail(err, NL_EFORMAT, "%s: declares %d x %d pixels (%.3g bytes of samples) in %lld "
+                   "bytes, more than compression expands to (%dx): the file is damaged",
+                   path, spec.width, spec.height, raw, file_bytes, NL_IMAGE_MAX_EXPANSION);
   if (!nl_mem_fits(bytes)) {
     char b1[32], b2[32];
     return nl_fail(err, NL_ENOMEM, "%s: %d x %d x %d pixels need %s to read; this machine has %s",

@@ -106,6 +106,13 @@ NL_TEST(failed_write_leaves_nothing)
   NL_CHECK(strstr(err.msg, "/nonexistent/x.png") != NULL);
   char *noext = nl_path_join(dir, "noext");
   NL_CHECK(nl_image_write(a, noext, 8, &err) == NL_EINVAL);
+  char *png = nl_path_join(dir, "float.png");
+  NL_CHECK(nl_image_write(a, png, 32, &err) == NL_EINVAL);
+  NL_CHECK(strstr(err.msg, "PNG cannot hold 32-bit") != NULL);
+  NL_CHECK(access(png, F_OK) != 0);
+  NL_CHECK(nl_image_check_bits("x.JPG", 32, &err) == NL_EINVAL);
+  NL_CHECK(nl_image_check_bits("x.tif", 32, &err) == NL_OK);
+  free(png);
   /* No temporary files left in the directory. */
   DIR *d = opendir(dir);
   struct dirent *e;
@@ -264,6 +271,45 @@ NL_TEST(hostile_exr_header_refused_quickly)
     NL_CHECK(nl_image_read(p, &im, &err) == NL_EFORMAT && strstr(err.msg, "data window") != NULL);
   }
   nl_image_free(ok); free(p);
+}
+
+/* A 264-byte uncompressed TIFF whose header declares 776 x 65474 pixels
+ * (50 million, 4.1 GB as the decoder reads them): refused from the header
+ * against the file's size, before anything that large is allocated. */
+static void put16(unsigned char *b, unsigned v) { b[0] = v & 0xff; b[1] = v >> 8 & 0xff; }
+static void put32(unsigned char *b, unsigned long v)
+{
+  put16(b, v & 0xffff);
+  put16(b + 2, (unsigned)(v >> 16));
+}
+
+NL_TEST(header_larger_than_file_refused)
+{
+  static const unsigned long tags[9][3] = {   /* tag, type (3 short, 4 long), value */
+    {256, 4, 776}, {257, 4, 65474}, {258, 3, 8}, {259, 3, 1}, {262, 3, 1},
+    {273, 4, 122}, {277, 3, 1}, {278, 4, 65474}, {279, 4, 776ul * 65474}};
+  unsigned char t[264] = {'I', 'I', 42, 0, 8, 0, 0, 0, 9, 0};
+  for (int i = 0; i < 9; i++) {
+    unsigned char *e = t + 10 + 12 * i;
+    put16(e, (unsigned)tags[i][0]);
+    put16(e + 2, (unsigned)tags[i][1]);
+    put32(e + 4, 1);
+    if (tags[i][1] == 3) put16(e + 8, (unsigned)tags[i][2]);
+    else put32(e + 8, tags[i][2]);
+  }
+  char *p = nl_path_join(dir, "huge_header.tif");
+  FILE *f = fopen(p, "wb");
+  fwrite(t, 1, sizeof t, f);
+  fclose(f);
+  nl_image *im = NULL;
+  nl_error err = {{0}};
+  double t0 = nl_time_now();
+  NL_CHECK(nl_image_read(p, &im, &err) == NL_EFORMAT && im == NULL);
+  NL_CHECK(nl_time_now() - t0 < 5.0);
+  NL_CHECK(strstr(err.msg, "declares 776 x 65474 pixels (5.08e+07 bytes of samples) in 264 bytes")
+           != NULL);
+  if (im) nl_image_free(im);
+  free(p);
 }
 
 NL_TEST(write_names_the_parent_problem)

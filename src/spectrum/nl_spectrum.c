@@ -209,6 +209,71 @@ void nl_spectrum_rfft2(nl_spectrum_fft2_plan *p, const double *img, double *H)
   }
 }
 
+/* The sum of n's prime factors (with multiplicity) and the largest. */
+static double prime_factor_sum(int n, int *largest)
+{
+  double sum = 0;
+  *largest = 1;
+  for (int f = 2; (long)f * f <= n; f++)
+    while (n % f == 0) {
+      sum += f;
+      *largest = f;
+      n /= f;
+    }
+  if (n > 1) {
+    sum += n;
+    *largest = n;
+  }
+  return sum;
+}
+
+double nl_spectrum_fft2_cost(int w, int h)
+{
+  int lw, lh;
+  return (double)w * h * (prime_factor_sum(w, &lw) + prime_factor_sum(h, &lh));
+}
+
+static int size_passes(int w, int h)
+{
+  int lw, lh;
+  prime_factor_sum(w, &lw);
+  prime_factor_sum(h, &lh);
+  return nl_spectrum_fft2_cost(w, h) <= NL_SPECTRUM_MAX_COST || (lw <= 7 && lh <= 7);
+}
+
+/* The largest m <= n with which the other side `other` passes: made of 2,
+ * 3, 5 and 7 (then passing needs the other side so too), or cheap enough. */
+static int crop_to(int n, int other, int is_width)
+{
+  for (int m = n; m > 1; m--) {
+    int largest;
+    prime_factor_sum(m, &largest);
+    if (largest <= 7 || size_passes(is_width ? m : other, is_width ? other : m)) return m;
+  }
+  return 1;
+}
+
+nl_status nl_spectrum_check_size(int w, int h, nl_error *err)
+{
+  if (size_passes(w, h)) return NL_OK;
+  int lw, lh;
+  prime_factor_sum(w, &lw);
+  prime_factor_sum(h, &lh);
+  /* The side with the larger factor is cropped first, the other only if
+   * that is not enough. */
+  int side_is_w = lw >= lh, cw = w, ch = h;
+  if (side_is_w) cw = crop_to(w, h, 1);
+  else ch = crop_to(h, w, 0);
+  if (!size_passes(cw, ch)) {
+    if (side_is_w) ch = crop_to(h, cw, 0);
+    else cw = crop_to(w, ch, 1);
+  }
+  return nl_fail(err, NL_EINVAL, "%d x %d pixels: %s %d has the prime factor %d, and a Fourier "
+                 "transform of it costs %.2g operations (limit %.0g); crop it to %d x %d",
+                 w, h, side_is_w ? "width" : "height", side_is_w ? w : h, side_is_w ? lw : lh,
+                 nl_spectrum_fft2_cost(w, h), NL_SPECTRUM_MAX_COST, cw, ch);
+}
+
 void nl_spectrum_fft2(const double *img, int w, int h, double *F)
 {
   nl_spectrum_fft2_plan *p = nl_spectrum_fft2_plan_alloc(w, h);

@@ -46,6 +46,18 @@ nl_spectrum_fft2_plan *nl_spectrum_fft2_plan_alloc(int w, int h);
 void nl_spectrum_fft2_plan_free(nl_spectrum_fft2_plan *p);
 void nl_spectrum_rfft2(nl_spectrum_fft2_plan *p, const double *img, double *H);
 void nl_spectrum_fft2(const double *img, int w, int h, double *F);
+/* The work of one 2D transform of a w x h image, in complex multiply-adds,
+ * about: GSL's mixed-radix transform of length n costs n times the sum of
+ * n's prime factors (a prime p beyond 7 is a general O(p) pass per output),
+ * so a prime side is O(n^2): 16 x 65521 costs 7e10, 16 x 65536 4e7.
+ * nl_spectrum_check_size refuses a size above NL_SPECTRUM_MAX_COST (about a
+ * second of GSL per transform) when a side has a prime factor beyond 7 (a
+ * large image of small factors is O(n log n) work and passes), with a
+ * message naming the side, its largest prime factor and a size to crop to
+ * that passes (the side with the larger factor cropped first). */
+#define NL_SPECTRUM_MAX_COST 2e9
+double nl_spectrum_fft2_cost(int w, int h);
+nl_status nl_spectrum_check_size(int w, int h, nl_error *err);
 void nl_spectrum_fft2_inverse(const double *F, int w, int h, double *img);
 void nl_spectrum_power2(const double *img, int w, int h, double *P);
 void nl_spectrum_radial(const double *img, int w, int h, int nbins, double *f, double *p);

@@ -2,6 +2,7 @@
 #include "nl_test.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 NL_TEST(parseval_and_round_trip_odd_size)
 {
@@ -152,4 +153,25 @@ NL_TEST(real_path_matches_direct_dft)
   }
   printf("  radix-4 real path: worst |F - direct DFT| %.3g (values of |F| up to ~sqrt(w h))\n", worst);
   NL_CHECK(worst < 1e-12);   /* measured 1.1e-14 */
+}
+
+/* Sides with a large prime factor make GSL's transform O(n^2): refused
+ * above the cost limit with the side, its factor and a length to crop to;
+ * smooth sizes of any size pass. */
+NL_TEST(awkward_sizes_refused)
+{
+  nl_error err = {{0}};
+  NL_CHECK(nl_spectrum_fft2_cost(16, 65536) == 16.0 * 65536 * (2 * 16 + 2 * 4));
+  NL_CHECK(nl_spectrum_check_size(65521, 16, &err) == NL_EINVAL);
+  NL_CHECK(strstr(err.msg, "width 65521 has the prime factor 65521") != NULL);
+  NL_CHECK(strstr(err.msg, "crop it to 65520 x 16") != NULL);
+  NL_CHECK(nl_spectrum_check_size(4096, 4093, &err) == NL_EINVAL && strstr(err.msg, "height 4093"));
+  NL_CHECK(nl_spectrum_check_size(16, 65536, &err) == NL_OK);
+  /* both sides awkward (776 = 8 x 97, 65474 = 2 x 19 x 1723): both cropped */
+  NL_CHECK(nl_spectrum_check_size(776, 65474, &err) == NL_EINVAL);
+  NL_CHECK(strstr(err.msg, "height 65474") != NULL);
+  NL_CHECK(strstr(err.msg, "crop it to 768 x 64827") != NULL);
+  NL_CHECK(nl_spectrum_check_size(16384, 16384, &err) == NL_OK);
+  NL_CHECK(nl_spectrum_check_size(15000, 15000, &err) == NL_OK);
+  NL_CHECK(nl_spectrum_check_size(512, 509, &err) == NL_OK);
 }

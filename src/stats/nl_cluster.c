@@ -405,6 +405,28 @@ static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method meth
   free(act.pred);
 }
 
+/* Refuses points whose bounding box's diagonal, an upper bound on every
+ * pairwise distance, exceeds NL_CLUSTER_MAX_SPAN (nl_cluster.h). Half-widths
+ * keep the subtraction finite for coordinates near +-DBL_MAX, and hypot
+ * keeps the sum of their squares from overflowing before the comparison, so
+ * the message gives the real span. */
+static nl_status check_span(const double *x, size_t n, size_t d, nl_error *err)
+{
+  double half_span = 0.0;
+  for (size_t j = 0; j < d; j++) {
+    double lo = x[j], hi = x[j];
+    for (size_t i = 1; i < n; i++) {
+      lo = fmin(lo, x[i * d + j]);
+      hi = fmax(hi, x[i * d + j]);
+    }
+    half_span = hypot(half_span, hi / 2 - lo / 2);
+  }
+  double span = 2 * half_span;
+  if (span <= NL_CLUSTER_MAX_SPAN) return NL_OK;
+  return nl_fail(err, NL_EINVAL, "the points span a distance of %.3g; distances above %g overflow "
+                 "in the linkage: rescale the data", span, NL_CLUSTER_MAX_SPAN);
+}
+
 nl_status nl_cluster_linkage(const double *x, size_t n, size_t d, nl_cluster_linkage_method method,
                              double *Z, nl_error *err)
 {
@@ -413,6 +435,8 @@ nl_status nl_cluster_linkage(const double *x, size_t n, size_t d, nl_cluster_lin
   for (size_t i = 0; i < n * d; i++)
     if (!isfinite(x[i]))
       return nl_fail(err, NL_EINVAL, "point %zu, coordinate %zu is not finite", i / d + 1, i % d + 1);
+  nl_status s = check_span(x, n, d, err);
+  if (s) return s;
   if (method == NL_LINKAGE_SINGLE) {
     linkage_single(x, n, d, Z);
   } else {

@@ -64,8 +64,17 @@ nl_status nl_cluster_linkage_method_parse(const char *name, nl_cluster_linkage_m
 double nl_cluster_euclidean(const double *a, const double *b, size_t d);
 double nl_cluster_sumsq(const double *a, size_t d);
 
+/* The largest distance between two points the linkages accept: squared
+ * distances overflow to infinity past about 1.34e154, and Ward's update
+ * squares cluster distances up to sqrt(n) times the largest point distance;
+ * with 1e150 (squared 1e300) its three terms stay finite for any n whose
+ * distance matrix fits in memory (n < 1e7: 3 x 1e7 x 1e300 < DBL_MAX). */
+#define NL_CLUSTER_MAX_SPAN 1e150
+
 /* Clusters n >= 2 points of dimension d >= 1 (finite values). Z has
- * (n - 1) * 4 doubles. NL_ENOMEM if the distance matrix cannot be had. */
+ * (n - 1) * 4 doubles. NL_EINVAL if a value is not finite or the points'
+ * bounding box has a diagonal above NL_CLUSTER_MAX_SPAN (rescale such data);
+ * NL_ENOMEM if the distance matrix cannot be had. */
 nl_status nl_cluster_linkage(const double *x, size_t n, size_t d, nl_cluster_linkage_method method,
                              double *Z, nl_error *err);
 

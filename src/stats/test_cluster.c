@@ -9,6 +9,7 @@
 #include "nl_test.h"
 #include "test_vectors.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -85,6 +86,36 @@ NL_TEST(bad_input)
   nl_cluster_linkage_method m;
   NL_CHECK(nl_cluster_linkage_method_parse("median", &m, &err) == NL_EINVAL);
   NL_CHECK(nl_cluster_linkage_method_parse("ward", &m, &err) == NL_OK && m == NL_LINKAGE_WARD);
+}
+
+/* Points far enough apart that their squared distances overflow: every
+ * linkage refuses them with a line saying so instead of clustering
+ * infinities (nearest() then had no candidate and indexed past the
+ * matrix). Just below the limit, Ward's squared cluster distances (the
+ * largest terms) stay finite and the heights are exact multiples of the
+ * small case's. */
+NL_TEST(huge_values_refused)
+{
+  double pairs[][3] = {{0, 1e160, 0}, {0, 1e200, 3e200}, {-DBL_MAX, DBL_MAX, 0}, {0, 1.1e150, 0}};
+  double Z[8];
+  for (int m = 0; m < 4; m++)
+    for (int p = 0; p < 4; p++) {
+      nl_error err;
+      err.msg[0] = 0;
+      size_t n = pairs[p][2] != 0 ? 3 : 2;
+      nl_cluster_linkage_method lm = (nl_cluster_linkage_method)m;
+      NL_CHECK(nl_cluster_linkage(pairs[p], n, 1, lm, Z, &err) == NL_EINVAL);
+      NL_CHECK(strstr(err.msg, "rescale the data") != NULL);
+    }
+  double big[] = {0, 1e149, 3e149, 4e149}, small[] = {0, 1, 3, 4}, Zb[12], Zs[12];
+  for (int m = 0; m < 4; m++) {
+    NL_CHECK(nl_cluster_linkage(big, 4, 1, (nl_cluster_linkage_method)m, Zb, NULL) == NL_OK);
+    NL_CHECK(nl_cluster_linkage(small, 4, 1, (nl_cluster_linkage_method)m, Zs, NULL) == NL_OK);
+    for (int i = 0; i < 3; i++) {
+      NL_CHECK(isfinite(Zb[4 * i + 2]));
+      NL_CHECK_NEAR(Zb[4 * i + 2] / 1e149, Zs[4 * i + 2], 1e-12);
+    }
+  }
 }
 
 /* Ward on four points of a line, worked by hand: {0,1} and {10,11} merge at

@@ -277,6 +277,11 @@ static nl_status read_rows(FILE *fp, const char *path, int flags, nl_table **out
       break;
     }
     chomp(line);
+    /* A UTF-8 byte-order mark (what some editors and spreadsheets put
+     * first) is not part of the first field: left in, it would turn a
+     * first row of numbers into a header and rename the first column. */
+    if (lineno == 1 && strncmp(line, "\xEF\xBB\xBF", 3) == 0)
+      memmove(line, line + 3, strlen(line + 3) + 1);
     if (line[0] == '#' || blank(line)) continue;
     size_t len = strlen(line) + 1;   /* an upper bound on the field count */
     if (len > fmax) { fmax = len; f = nl_xrealloc(f, fmax * sizeof *f); }
@@ -286,9 +291,12 @@ static nl_status read_rows(FILE *fp, const char *path, int flags, nl_table **out
     if (!t) {
       int header = 1;
       if (flags & NL_TABLE_HEADER_AUTO) {
+        /* Fields that parse as numbers, finite or not, make a data row:
+         * "inf" or "1e999" first is then refused on line 1 like anywhere
+         * else, instead of quietly becoming a header and dropping a row. */
         header = 0;
         double v;
-        for (size_t c = 0; c < n; c++) if (parse_num(f[c], &v) != 1) header = 1;
+        for (size_t c = 0; c < n; c++) if (parse_num(f[c], &v) == 0) header = 1;
       }
       char **names = nl_xcalloc(n, sizeof *names);
       char num[32];

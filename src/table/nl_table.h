@@ -19,7 +19,9 @@
  * Rejected with "file:line: reason": an empty file, ragged rows, cells that
  * are not numbers (unless NL_TABLE_TEXT allows text columns), NaN and inf.
  * The first line is a header; with NL_TABLE_HEADER_AUTO it is a header only
- * if one of its fields is not a number. Lines starting with '#' are comments.
+ * if one of its fields is not a number (a line of numbers is data, and an
+ * "inf" or "nan" in it is refused as on any other line). A UTF-8 byte-order
+ * mark at the start of the file is skipped. Lines starting with '#' are comments.
  * Also rejected: a line longer than NL_TABLE_MAX_LINE bytes ("FILE:LINE:
  * line longer than 1048576 bytes"; an endless line such as /dev/zero ends
  * there), a NUL byte ("FILE:LINE: NUL byte in column C"), and a table

@@ -60,6 +60,29 @@ NL_TEST(rejects_bad_input_with_line)
   NL_CHECK(read_fails_with("a\tb\ninf\t1\n", "(NaN or infinite)", NL_TABLE_TEXT));
 }
 
+/* A byte-order mark is skipped, so the first row stays data (or the first
+ * column keeps its name); a first line of numbers that are not finite is
+ * data and refused, not taken for a header with one row fewer. */
+NL_TEST(bom_and_non_finite_first_line)
+{
+  char *p = write_file("bom.tsv", "\xEF\xBB\xBF" "0.5\n0.25\n0.75\n");
+  nl_table *t = NULL;
+  nl_error err;
+  NL_CHECK(nl_table_read(p, NL_TABLE_HEADER_AUTO, &t, &err) == NL_OK);
+  NL_CHECK(t && t->nrows == 3 && nl_table_get(t, 0, 0) == 0.5);
+  nl_table_free(t);
+  t = NULL;
+  free(p);
+  p = write_file("bomh.tsv", "\xEF\xBB\xBF" "x\ty\n1\t2\n");
+  NL_CHECK(nl_table_read(p, 0, &t, &err) == NL_OK);
+  NL_CHECK(t && t->nrows == 1 && nl_table_column(t, "x") == 0);
+  nl_table_free(t);
+  free(p);
+  NL_CHECK(read_fails_with("inf\n1\n2\n", "bad.tsv:1: column 'c1' holds 'inf'",
+                           NL_TABLE_HEADER_AUTO));
+  NL_CHECK(read_fails_with("1\t1e999\n1\t2\n", "bad.tsv:1:", NL_TABLE_HEADER_AUTO));
+}
+
 NL_TEST(missing_file_names_it)
 {
   nl_table *t;
