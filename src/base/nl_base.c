@@ -160,14 +160,14 @@ static int live_add(char *name)
     __atomic_store_n(&live_pid[i], getpid(), __ATOMIC_RELEASE);
     if (__atomic_compare_exchange_n(&live_name[i], &none, name, 0, __ATOMIC_ACQ_REL,
                                     __ATOMIC_ACQUIRE))
-      return i;
+      return i + 1;
   }
-  return -1;   /* full: this temporary is still removed by commit and abort */
+  return 0;   /* full: this temporary is still removed by commit and abort */
 }
 
 static void live_remove(int slot)
 {
-  if (slot >= 0) __atomic_store_n(&live_name[slot], NULL, __ATOMIC_RELEASE);
+  if (slot > 0) __atomic_store_n(&live_name[slot - 1], NULL, __ATOMIC_RELEASE);
 }
 
 /* ---- atomic output ----------------------------------------------------- */
@@ -182,7 +182,6 @@ static void atomic_release(nl_atomic_file *af)
   free(af->path);
   free(af->tmp);
   memset(af, 0, sizeof *af);
-  af->slot = -1;
 }
 
 /* A character device or a FIFO is written in place: replacing it by a file
@@ -238,7 +237,6 @@ static char *atomic_target(const char *path, int *through, nl_error *err)
 nl_status nl_atomic_open(nl_atomic_file *af, const char *path, nl_error *err)
 {
   memset(af, 0, sizeof *af);
-  af->slot = -1;
   /* "", "dir/", a directory or a parent that is a file: say so, naming the
    * target, before a temporary file is made. */
   nl_status c = nl_path_check_writable(path, err);
@@ -329,7 +327,7 @@ nl_status nl_atomic_commit_all(nl_atomic_file *af, size_t n, nl_error *err)
                     strerror(errno));
       } else {
         live_remove(af[i].slot);
-        af[i].slot = -1;
+        af[i].slot = 0;
         free(af[i].tmp);
         af[i].tmp = NULL;
       }

@@ -74,9 +74,11 @@ typedef struct {
   char *path;     /* the name given, used in messages */
   char *tmp;      /* temporary name beside the target; NULL when writing through */
   char *target;   /* the file replaced: path, or what a symbolic link names */
-  int slot;       /* this temporary's place in the exit/signal clean-up list */
+  int slot;       /* 1 + this temporary's place in the exit/signal clean-up list */
 } nl_atomic_file;
 
+/* An nl_atomic_file set to zeros is "not opened": commit_all skips it and
+ * abort does nothing. */
 nl_status nl_atomic_open(nl_atomic_file *af, const char *path, nl_error *err);
 /* Flushes, checks and renames; on failure removes the temporary. Either way
  * af is released. */
