@@ -86,6 +86,13 @@ check test -p fifo.tsv
 check test "$(head -1 from_fifo.tsv)" = label
 check test "$(wc -l <from_fifo.tsv)" = 301
 
+# ---- /dev/stdout (a link to the pipe) and /dev/null need no writable /dev
+check test "$("$STAT" hclust pts.tsv --linkage ward --clusters 3 --labels /dev/stdout | head -1)" \
+  = label
+"$STAT" hclust pts.tsv --linkage ward --clusters 3 --labels /dev/null >out 2>err
+check test $? = 0
+check test -c /dev/null
+
 # ---- devices (root: private copies of /dev/null and /dev/full)
 if [ "$(id -u)" = 0 ] && mknod null c 1 3 2>/dev/null && mknod full c 1 7 2>/dev/null; then
   "$STAT" hclust pts.tsv --linkage ward --clusters 3 --labels null --merges null >out 2>err

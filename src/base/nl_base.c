@@ -216,10 +216,18 @@ static char *atomic_target(const char *path, int *through, nl_error *err)
   }
   char *target = (char *)path;
   if (S_ISLNK(st.st_mode)) {
-    target = realpath(path, NULL);
-    if (!target || stat(target, &st) != 0) {
+    if (stat(path, &st) != 0) {
       nl_fail(err, NL_EIO, "%s: symbolic link to a missing file; not followed", path);
-      free(target);
+      return NULL;
+    }
+    /* /dev/stdout names /proc/self/fd/1, which may be a pipe: opened as is. */
+    if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) {
+      *through = 1;
+      return target;
+    }
+    target = realpath(path, NULL);
+    if (!target) {
+      nl_fail(err, NL_EIO, "%s: cannot follow symbolic link: %s", path, strerror(errno));
       return NULL;
     }
   }
@@ -406,6 +414,10 @@ nl_status nl_path_check_writable(const char *path, nl_error *err)
   if (!path || !*path) return nl_fail(err, NL_EINVAL, "'': empty file name");
   size_t n = strlen(path);
   if (path[n - 1] == '/') return nl_fail(err, NL_EINVAL, "%s: names a directory, not a file", path);
+  /* A device or FIFO is written through (nl_atomic_open): its folder need
+   * not be writable (/dev/null, /dev/stdout for a user). */
+  struct stat dev;
+  if (stat(path, &dev) == 0 && (S_ISCHR(dev.st_mode) || S_ISFIFO(dev.st_mode))) return NL_OK;
   const char *slash = strrchr(path, '/');
   char *dir = slash ? nl_xstrdup(path) : nl_xstrdup(".");
   if (slash) dir[slash == path ? 1 : (size_t)(slash - path)] = '\0';

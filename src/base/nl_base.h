@@ -100,7 +100,8 @@ nl_status nl_mkdir_p(const char *dir, nl_error *err);
 /* Checks that a file can be created at `path`: its parent exists, is a
  * directory and is writable, and path itself is not a directory. Fails with
  * a message naming path and the reason ("afile/x.png: parent afile is not a
- * directory"). nl_atomic_open adds the checks on what path is (above). */
+ * directory"). A character device or FIFO passes whatever its folder (it is
+ * written through). nl_atomic_open adds the checks on what path is (above). */
 nl_status nl_path_check_writable(const char *path, nl_error *err);
 
 /* ---- memory a request needs ---------------------------------------------
