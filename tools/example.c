@@ -193,8 +193,14 @@ static int compare(const args *a)
   }
   nl_table *bt = nl_study_example_band_table(), *st = nl_study_example_summary_table();
   nl_study_example_compare(im[0], im[1], a->pos[0], a->pos[1], 0, 0.02, 1.3, 0.03, bt, st);
-  check(nl_table_write(st, a->out, &err), &err);
-  if (a->bands) check(nl_table_write(bt, a->bands, &err), &err);
+  /* Both tables or neither: the second path is checked before the first
+   * file is replaced. */
+  nl_atomic_file af[2] = {{0}, {0}};
+  check(nl_atomic_open(&af[0], a->out, &err), &err);
+  if (a->bands) check(nl_atomic_open(&af[1], a->bands, &err), &err);
+  check(nl_table_write_to(st, &af[0], &err), &err);
+  if (a->bands) check(nl_table_write_to(bt, &af[1], &err), &err);
+  check(nl_atomic_commit_all(af, 2, &err), &err);
   nl_table_free(bt);
   nl_table_free(st);
   nl_image_free(im[0]);

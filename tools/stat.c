@@ -448,6 +448,12 @@ static void run_hclust(const opts *o)
   if (!o->linkage) die(o->sub, "--linkage single|complete|average|ward is required");
   if (nl_cluster_linkage_method_parse(o->linkage, &m, &err)) die(o->sub, err.msg);
   if (o->have_cutoff == o->have_clusters) die(o->sub, "give exactly one of --cutoff C and --clusters K");
+  /* Both outputs are opened (and so checked) before anything is computed or
+   * written, and committed together: a bad --merges leaves --labels' old
+   * file as it was. A temporary left by die() is removed at exit. */
+  nl_atomic_file af[2] = {{0}, {0}};
+  if (o->labels_out && nl_atomic_open(&af[0], o->labels_out, &err)) die(o->sub, err.msg);
+  if (o->merges_out && nl_atomic_open(&af[1], o->merges_out, &err)) die(o->sub, err.msg);
   nl_table *t = read_table(o, o->files[0]);
   size_t n = t->nrows;
   double *Z = hold(nl_xmalloc((n - 1) * 4 * sizeof(double)));
@@ -457,18 +463,22 @@ static void run_hclust(const opts *o)
   nl_status s = o->have_cutoff ? nl_cluster_fcluster_distance(Z, n, o->cutoff, lab, &k, &err)
                                : nl_cluster_fcluster_maxclust(Z, n, (size_t)o->clusters, lab, &k, &err);
   if (s) fail_lib(o, o->files[0], &err);
+  nl_table *out[2] = {NULL, NULL};
   if (o->labels_out) {
     const char *cols[] = {"label"};
-    nl_table *lt = nl_table_alloc(1, cols);
-    for (size_t i = 0; i < n; i++) nl_table_append(lt, "i", lab[i]);
-    write_or_die(o, lt, o->labels_out);
+    out[0] = nl_table_alloc(1, cols);
+    for (size_t i = 0; i < n; i++) nl_table_append(out[0], "i", lab[i]);
   }
   if (o->merges_out) {
     const char *cols[] = {"a", "b", "dist", "size"};
-    nl_table *mt = nl_table_alloc(4, cols);
-    for (size_t i = 0; i + 1 < n; i++) nl_table_append_doubles(mt, Z + 4 * i);
-    write_or_die(o, mt, o->merges_out);
+    out[1] = nl_table_alloc(4, cols);
+    for (size_t i = 0; i + 1 < n; i++) nl_table_append_doubles(out[1], Z + 4 * i);
   }
+  for (int i = 0; i < 2; i++)
+    if (out[i] && nl_table_write_to(out[i], &af[i], &err)) die(o->sub, err.msg);
+  if (nl_atomic_commit_all(af, 2, &err)) die(o->sub, err.msg);
+  nl_table_free(out[0]);
+  nl_table_free(out[1]);
   record r = {0};
   rec_size(&r, "clusters", k);
   emit(o, &r, 1);

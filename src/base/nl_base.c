@@ -1,6 +1,9 @@
 #include "base/nl_base.h"
 
 #include <errno.h>
+#include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -97,66 +100,272 @@ char *nl_temp_sibling(const char *path)
   return t;
 }
 
+/* ---- temporaries removed at exit and on a signal --------------------
+ *
+ * A fixed table of the temporaries open in this process, claimed and
+ * released with atomic exchanges so that threads writing at once need no
+ * lock and a signal handler can read it: it only calls unlink() (async-
+ * signal-safe). The pid kept with each entry stops a forked child that
+ * calls exit() from removing its parent's files. */
+#define LIVE_MAX 256
+static char *live_name[LIVE_MAX];
+static pid_t live_pid[LIVE_MAX];
+static const int live_signals[3] = {SIGINT, SIGTERM, SIGHUP};
+static struct sigaction live_previous[3];
+static pthread_once_t live_once = PTHREAD_ONCE_INIT;
+
+static void live_unlink_all(void)
+{
+  pid_t me = getpid();
+  for (int i = 0; i < LIVE_MAX; i++) {
+    char *name = __atomic_load_n(&live_name[i], __ATOMIC_ACQUIRE);
+    if (name && __atomic_load_n(&live_pid[i], __ATOMIC_ACQUIRE) == me) unlink(name);
+  }
+}
+
+/* Removes the temporaries, puts back what the signal did before (the
+ * default: end the process; or the program's own handler) and raises it
+ * again; it is blocked in here, so it arrives when this returns. */
+static void live_on_signal(int sig)
+{
+  int saved = errno;
+  live_unlink_all();
+  for (int k = 0; k < 3; k++)
+    if (live_signals[k] == sig) sigaction(sig, &live_previous[k], NULL);
+  raise(sig);
+  errno = saved;
+}
+
+static void live_install(void)
+{
+  atexit(live_unlink_all);
+  for (int k = 0; k < 3; k++) {
+    struct sigaction sa;
+    if (sigaction(live_signals[k], NULL, &live_previous[k]) != 0) continue;
+    /* An ignored signal stays ignored (nohup, a shell's background job). */
+    if (!(live_previous[k].sa_flags & SA_SIGINFO) && live_previous[k].sa_handler == SIG_IGN)
+      continue;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = live_on_signal;
+    sigfillset(&sa.sa_mask);
+    sigaction(live_signals[k], &sa, NULL);
+  }
+}
+
+static int live_add(char *name)
+{
+  pthread_once(&live_once, live_install);
+  for (int i = 0; i < LIVE_MAX; i++) {
+    char *none = NULL;
+    __atomic_store_n(&live_pid[i], getpid(), __ATOMIC_RELEASE);
+    if (__atomic_compare_exchange_n(&live_name[i], &none, name, 0, __ATOMIC_ACQ_REL,
+                                    __ATOMIC_ACQUIRE))
+      return i + 1;
+  }
+  return 0;   /* full: this temporary is still removed by commit and abort */
+}
+
+static void live_remove(int slot)
+{
+  if (slot > 0) __atomic_store_n(&live_name[slot - 1], NULL, __ATOMIC_RELEASE);
+}
+
+/* ---- atomic output ----------------------------------------------------- */
+
+/* Closes and removes whatever af still holds, and frees it. */
+static void atomic_release(nl_atomic_file *af)
+{
+  if (af->fp) fclose(af->fp);
+  live_remove(af->slot);
+  if (af->tmp) unlink(af->tmp);
+  if (af->target != af->path) free(af->target);
+  free(af->path);
+  free(af->tmp);
+  memset(af, 0, sizeof *af);
+}
+
+/* A character device or a FIFO is written in place: replacing it by a file
+ * would break what reads it (a pipe) or the system (/dev/null as root). */
+static nl_status atomic_through(nl_atomic_file *af, const char *path, const char *target,
+                                nl_error *err)
+{
+  int fd = open(target, O_WRONLY | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) return nl_fail(err, NL_EIO, "%s: cannot open: %s", path, strerror(errno));
+  af->fp = fdopen(fd, "w");
+  if (!af->fp) {
+    nl_status s = nl_fail(err, NL_EIO, "%s: cannot open: %s", path, strerror(errno));
+    close(fd);
+    return s;
+  }
+  af->path = nl_xstrdup(path);
+  af->target = af->path;
+  return NL_OK;
+}
+
+/* What is at path decides the target (nl_base.h); *through is set for a
+ * device or FIFO. Returns the target (path itself, or a link's resolution
+ * the caller frees) or NULL after a refusal. */
+static char *atomic_target(const char *path, int *through, nl_error *err)
+{
+  struct stat st;
+  *through = 0;
+  if (lstat(path, &st) != 0) {
+    if (errno == ENOENT) return (char *)path;
+    nl_fail(err, NL_EIO, "%s: %s", path, strerror(errno));
+    return NULL;
+  }
+  char *target = (char *)path;
+  if (S_ISLNK(st.st_mode)) {
+    if (stat(path, &st) != 0) {
+      nl_fail(err, NL_EIO, "%s: symbolic link to a missing file; not followed", path);
+      return NULL;
+    }
+    /* /dev/stdout names /proc/self/fd/1, which may be a pipe: opened as is. */
+    if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) {
+      *through = 1;
+      return target;
+    }
+    target = realpath(path, NULL);
+    if (!target) {
+      nl_fail(err, NL_EIO, "%s: cannot follow symbolic link: %s", path, strerror(errno));
+      return NULL;
+    }
+  }
+  if (S_ISREG(st.st_mode)) return target;
+  if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) {
+    *through = 1;
+    return target;
+  }
+  if (S_ISDIR(st.st_mode)) nl_fail(err, NL_EIO, "%s: is a directory", path);
+  else nl_fail(err, NL_EIO, "%s: not a regular file, character device or FIFO; not replaced", path);
+  if (target != path) free(target);
+  return NULL;
+}
+
 nl_status nl_atomic_open(nl_atomic_file *af, const char *path, nl_error *err)
 {
-  af->fp = NULL;
-  af->path = af->tmp = NULL;
+  memset(af, 0, sizeof *af);
   /* "", "dir/", a directory or a parent that is a file: say so, naming the
    * target, before a temporary file is made. */
   nl_status c = nl_path_check_writable(path, err);
   if (c) return c;
+  int through;
+  char *target = atomic_target(path, &through, err);
+  if (!target) return NL_EIO;
+  if (through) {
+    nl_status s = atomic_through(af, path, target, err);
+    if (target != path) free(target);
+    return s;
+  }
+  if (target != path && (c = nl_path_check_writable(target, err))) {
+    free(target);
+    return c;
+  }
   af->path = nl_xstrdup(path);
-  af->tmp = nl_temp_sibling(path);
+  af->target = target == path ? af->path : target;
+  af->tmp = nl_temp_sibling(af->target);
   const char *dot = strrchr(af->tmp, '.');
   int suffix = (dot && strstr(af->tmp, "XXXXXX") < dot) ? (int)strlen(dot) : 0;
   int fd = mkstemps(af->tmp, suffix);
   if (fd < 0) {
     int e = errno;
     /* The reason, naming the target rather than the temporary name. */
-    nl_status s = nl_path_check_writable(path, err);
+    nl_status s = nl_path_check_writable(af->target, err);
     if (!s) s = nl_fail(err, NL_EIO, "%s: cannot create: %s", path, strerror(e));
-    free(af->path); free(af->tmp);
-    af->path = af->tmp = NULL;
+    free(af->tmp);
+    af->tmp = NULL;
+    atomic_release(af);
     return s;
   }
+  af->slot = live_add(af->tmp);
   /* mkstemp makes 0600 files; results are meant to be shared. */
   fchmod(fd, 0644);
   af->fp = fdopen(fd, "w");
   if (!af->fp) {
     nl_status s = nl_fail(err, NL_EIO, "%s: cannot open: %s", path, strerror(errno));
     close(fd);
-    unlink(af->tmp);
-    free(af->path); free(af->tmp);
-    af->path = af->tmp = NULL;
+    atomic_release(af);
     return s;
   }
   return NL_OK;
 }
 
+/* Flushes and closes af->fp and checks that every byte is on the disk:
+ * stdio's error flag, fsync, the file's size against the bytes written,
+ * close. A full disk or a file size limit shows in one of them even where
+ * a library writing through stdio ignored its own failed writes. */
+static nl_status atomic_finish(nl_atomic_file *af, nl_error *err)
+{
+  int e = 0;
+  long long wrote = -1, size = -1;
+  /* A failed write sets the stream's error flag and errno; later calls
+   * that succeed leave errno as it was, so it still names the reason. */
+  if (fflush(af->fp) != 0 || ferror(af->fp)) {
+    e = errno ? errno : EIO;
+  } else if (af->tmp) {
+    struct stat st;
+    int fd = fileno(af->fp);
+    wrote = (long long)ftello(af->fp);
+    if (fsync(fd) != 0) e = errno;
+    else if (fstat(fd, &st) != 0) e = errno;
+    else size = (long long)st.st_size;
+  }
+  if (fclose(af->fp) != 0 && !e) e = errno;
+  af->fp = NULL;
+  if (e) return nl_fail(err, NL_EIO, "%s: write failed: %s", af->path, strerror(e));
+  if (wrote != size)
+    return nl_fail(err, NL_EIO, "%s: write failed: %lld of %lld bytes reached the disk",
+                   af->path, size, wrote);
+  return NL_OK;
+}
+
+nl_status nl_atomic_commit_all(nl_atomic_file *af, size_t n, nl_error *err)
+{
+  nl_status s = NL_OK;
+  for (size_t i = 0; i < n; i++)
+    if (af[i].fp) {
+      nl_status t = atomic_finish(&af[i], s ? NULL : err);
+      if (!s) s = t;
+    }
+  for (size_t i = 0; i < n; i++) {
+    if (!af[i].path) continue;
+    if (!s && af[i].tmp) {
+      if (rename(af[i].tmp, af[i].target) != 0) {
+        s = nl_fail(err, NL_EIO, "%s: cannot rename into place: %s", af[i].path,
+                    strerror(errno));
+      } else {
+        live_remove(af[i].slot);
+        af[i].slot = 0;
+        free(af[i].tmp);
+        af[i].tmp = NULL;
+      }
+    }
+    atomic_release(&af[i]);
+  }
+  return s;
+}
+
 nl_status nl_atomic_commit(nl_atomic_file *af, nl_error *err)
 {
-  int bad = ferror(af->fp);
-  if (fclose(af->fp) != 0) bad = 1;
-  af->fp = NULL;
-  nl_status s = NL_OK;
-  if (bad) {
-    s = nl_fail(err, NL_EIO, "%s: write failed: %s", af->path, strerror(errno));
-    unlink(af->tmp);
-  } else if (rename(af->tmp, af->path) != 0) {
-    s = nl_fail(err, NL_EIO, "%s: cannot rename into place: %s", af->path, strerror(errno));
-    unlink(af->tmp);
-  }
-  free(af->path); free(af->tmp);
-  af->path = af->tmp = NULL;
-  return s;
+  return nl_atomic_commit_all(af, 1, err);
 }
 
 void nl_atomic_abort(nl_atomic_file *af)
 {
-  if (af->fp) fclose(af->fp);
-  if (af->tmp) unlink(af->tmp);
-  free(af->path); free(af->tmp);
-  af->fp = NULL; af->path = af->tmp = NULL;
+  atomic_release(af);
+}
+
+nl_status nl_atomic_write(const char *path, const void *data, size_t n, nl_error *err)
+{
+  nl_atomic_file af;
+  nl_status s = nl_atomic_open(&af, path, err);
+  if (s) return s;
+  if (fwrite(data, 1, n, af.fp) != n) {
+    s = nl_fail(err, NL_EIO, "%s: write failed: %s", path, strerror(errno));
+    nl_atomic_abort(&af);
+    return s;
+  }
+  return nl_atomic_commit(&af, err);
 }
 
 nl_status nl_mkdir_p(const char *dir, nl_error *err)
@@ -205,6 +414,10 @@ nl_status nl_path_check_writable(const char *path, nl_error *err)
   if (!path || !*path) return nl_fail(err, NL_EINVAL, "'': empty file name");
   size_t n = strlen(path);
   if (path[n - 1] == '/') return nl_fail(err, NL_EINVAL, "%s: names a directory, not a file", path);
+  /* A device or FIFO is written through (nl_atomic_open): its folder need
+   * not be writable (/dev/null, /dev/stdout for a user). */
+  struct stat dev;
+  if (stat(path, &dev) == 0 && (S_ISCHR(dev.st_mode) || S_ISFIFO(dev.st_mode))) return NL_OK;
   const char *slash = strrchr(path, '/');
   char *dir = slash ? nl_xstrdup(path) : nl_xstrdup(".");
   if (slash) dir[slash == path ? 1 : (size_t)(slash - path)] = '\0';

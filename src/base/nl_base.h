@@ -7,10 +7,30 @@
  * so that programs can print them unchanged and exit non-zero.
  *
  * Output files are written atomically: nl_atomic_open() creates a hidden
- * temporary file beside the target, nl_atomic_commit() flushes and renames
- * it over the target, nl_atomic_abort() removes it. A crash or an error half
- * way never leaves a truncated file under the final name, and never destroys
- * the previous version.
+ * temporary file beside the target, nl_atomic_commit() flushes it, checks
+ * that every byte reached the disk (stdio's error, fsync, close, and the
+ * file's size against what was written: a full disk or a file size limit
+ * fails here) and renames it over the target; nl_atomic_abort() removes it.
+ * A crash or an error half way never leaves a truncated file under the
+ * final name, and never destroys the previous version.
+ *
+ * What the target is decides how it is written (the file is never replaced
+ * by something of another kind):
+ *   - missing or a regular file: temporary + rename, as above;
+ *   - a symbolic link: followed on purpose; the file it finally names is
+ *     written atomically and the link stays (a link to nothing, a directory
+ *     or a block device is refused);
+ *   - a character device or a FIFO (/dev/null, /dev/stdout, a pipe): opened
+ *     and written through, no temporary and no rename;
+ *   - anything else (a directory, a socket, a block device): refused.
+ *
+ * Temporaries still open are removed when the program exits (exit(), so a
+ * tool may die() between open and commit) and on SIGINT, SIGTERM and SIGHUP,
+ * after which the signal's previous disposition applies.
+ *
+ * A command that writes several files writes all or none: it opens every
+ * output first (which checks each target), writes each, then calls
+ * nl_atomic_commit_all(), which checks every temporary before renaming any.
  */
 #ifndef NL_BASE_H
 #define NL_BASE_H
@@ -51,13 +71,25 @@ char *nl_xstrdup(const char *s);
 
 typedef struct {
   FILE *fp;
-  char *path;   /* final name */
-  char *tmp;    /* temporary name in the same directory */
+  char *path;     /* the name given, used in messages */
+  char *tmp;      /* temporary name beside the target; NULL when writing through */
+  char *target;   /* the file replaced: path, or what a symbolic link names */
+  int slot;       /* 1 + this temporary's place in the exit/signal clean-up list */
 } nl_atomic_file;
 
+/* An nl_atomic_file set to zeros is "not opened": commit_all skips it and
+ * abort does nothing. */
 nl_status nl_atomic_open(nl_atomic_file *af, const char *path, nl_error *err);
+/* Flushes, checks and renames; on failure removes the temporary. Either way
+ * af is released. */
 nl_status nl_atomic_commit(nl_atomic_file *af, nl_error *err);
+/* Commits n files together: each is flushed and checked first, and only when
+ * all are whole are they renamed in; otherwise none is and all temporaries
+ * are removed. Entries never opened (path NULL) are skipped. */
+nl_status nl_atomic_commit_all(nl_atomic_file *af, size_t n, nl_error *err);
 void nl_atomic_abort(nl_atomic_file *af);
+/* Writes n bytes to `path` the same way (open, write, commit). */
+nl_status nl_atomic_write(const char *path, const void *data, size_t n, nl_error *err);
 /* A temporary path beside `path` keeping its extension (image writers pick
  * the format from it): "dir/.name.XXXXXX.png". Caller frees. */
 char *nl_temp_sibling(const char *path);
@@ -66,8 +98,10 @@ char *nl_temp_sibling(const char *path);
  * error ("'': empty directory name"). */
 nl_status nl_mkdir_p(const char *dir, nl_error *err);
 /* Checks that a file can be created at `path`: its parent exists, is a
- * directory and is writable. Fails with a message naming path and the
- * reason ("afile/x.png: parent afile is not a directory"). */
+ * directory and is writable, and path itself is not a directory. Fails with
+ * a message naming path and the reason ("afile/x.png: parent afile is not a
+ * directory"). A character device or FIFO passes whatever its folder (it is
+ * written through). nl_atomic_open adds the checks on what path is (above). */
 nl_status nl_path_check_writable(const char *path, nl_error *err);
 
 /* ---- memory a request needs ---------------------------------------------

@@ -8,6 +8,7 @@
 #include "nl_test.h"
 
 #include <dirent.h>
+#include <fcntl.h>
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_rng.h>
 #include <gsl/gsl_statistics_double.h>
@@ -16,6 +17,7 @@
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <sys/wait.h>
 #include <dlfcn.h>
 #include <unistd.h>
@@ -223,6 +225,112 @@ NL_TEST(atomic_write_that_fails_midway_leaves_the_old_file)
   NL_CHECK(strcmp(slurp_file(path), "old\n") == 0);
   NL_CHECK(no_temporaries(dir));
   free(path);
+}
+
+/* Targets that are not regular files are never replaced: a symbolic link is
+ * followed (the file it names is written atomically, the link stays), a
+ * link to nothing is refused, a FIFO and a character device are written
+ * through. The devices are private copies made with mknod, as root only. */
+NL_TEST(atomic_write_keeps_links_fifos_and_devices)
+{
+  nl_error err = {{0}};
+  char *sub = nl_path_join(dir, "special");
+  NL_CHECK(nl_mkdir_p(sub, &err) == NL_OK);
+  char *real = nl_path_join(sub, "real.tsv"), *link = nl_path_join(sub, "link.tsv");
+  char *dangling = nl_path_join(sub, "dangling.tsv"), *fifo = nl_path_join(sub, "fifo");
+  write_old(real);
+  NL_CHECK(symlink("real.tsv", link) == 0);
+  NL_CHECK(nl_atomic_write(link, "new\n", 4, &err) == NL_OK);
+  struct stat st;
+  NL_CHECK(lstat(link, &st) == 0 && S_ISLNK(st.st_mode));
+  NL_CHECK(strcmp(slurp_file(real), "new\n") == 0);
+  NL_CHECK(symlink("nothing.tsv", dangling) == 0);
+  NL_CHECK(nl_atomic_write(dangling, "x\n", 2, &err) == NL_EIO);
+  NL_CHECK(strstr(err.msg, "dangling.tsv: symbolic link to a missing file") != NULL);
+  NL_CHECK(lstat(dangling, &st) == 0 && S_ISLNK(st.st_mode));
+  NL_CHECK(mkfifo(fifo, 0644) == 0);
+  int rd = open(fifo, O_RDONLY | O_NONBLOCK);
+  NL_CHECK(rd >= 0);
+  NL_CHECK(nl_atomic_write(fifo, "through\n", 8, &err) == NL_OK);
+  char got[16] = "";
+  NL_CHECK(rd >= 0 && read(rd, got, sizeof got - 1) == 8 && strcmp(got, "through\n") == 0);
+  if (rd >= 0) close(rd);
+  NL_CHECK(lstat(fifo, &st) == 0 && S_ISFIFO(st.st_mode));
+  if (geteuid() == 0) {
+    char *null = nl_path_join(sub, "null"), *full = nl_path_join(sub, "full");
+    NL_CHECK(mknod(null, S_IFCHR | 0666, makedev(1, 3)) == 0);
+    NL_CHECK(mknod(full, S_IFCHR | 0666, makedev(1, 7)) == 0);
+    NL_CHECK(nl_atomic_write(null, "gone\n", 5, &err) == NL_OK);
+    NL_CHECK(lstat(null, &st) == 0 && S_ISCHR(st.st_mode));
+    /* /dev/full: the write through fails as a full disk would. */
+    NL_CHECK(nl_atomic_write(full, "gone\n", 5, &err) == NL_EIO);
+    NL_CHECK(strstr(err.msg, "No space left on device") != NULL);
+    NL_CHECK(lstat(full, &st) == 0 && S_ISCHR(st.st_mode));
+    unlink(null); unlink(full);
+    free(null); free(full);
+  }
+  NL_CHECK(no_temporaries(sub));
+  free(sub); free(real); free(link); free(dangling); free(fifo);
+}
+
+/* Several files commit together: when the second does not fit (a file
+ * size limit, as a full disk), neither is replaced. */
+NL_TEST(atomic_commit_all_is_all_or_nothing)
+{
+  char *sub = nl_path_join(dir, "pair");
+  nl_error err = {{0}};
+  NL_CHECK(nl_mkdir_p(sub, &err) == NL_OK);
+  char *a = nl_path_join(sub, "a.tsv"), *b = nl_path_join(sub, "b.tsv");
+  write_old(a);
+  write_old(b);
+  pid_t pid = fork();
+  if (pid == 0) {
+    signal(SIGXFSZ, SIG_IGN);
+    struct rlimit rl = {256, 256};
+    if (setrlimit(RLIMIT_FSIZE, &rl)) _exit(3);
+    nl_atomic_file af[2];
+    if (nl_atomic_open(&af[0], a, &err) || nl_atomic_open(&af[1], b, &err)) _exit(4);
+    fputs("small\n", af[0].fp);
+    for (int i = 0; i < 1000; i++) fputs("0123456789abcdef\n", af[1].fp);
+    _exit(nl_atomic_commit_all(af, 2, &err) == NL_EIO && strstr(err.msg, "b.tsv") ? 0 : 1);
+  }
+  int status = -1;
+  NL_CHECK(pid > 0 && waitpid(pid, &status, 0) == pid);
+  NL_CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  NL_CHECK(strcmp(slurp_file(a), "old\n") == 0);
+  NL_CHECK(strcmp(slurp_file(b), "old\n") == 0);
+  NL_CHECK(no_temporaries(sub));
+  free(sub); free(a); free(b);
+}
+
+/* A temporary still open when the program exits or is stopped by SIGINT,
+ * SIGTERM or SIGHUP is removed; the signal still ends the process. */
+NL_TEST(atomic_temporaries_removed_on_exit_and_signals)
+{
+  static const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+  char *sub = nl_path_join(dir, "signals");
+  nl_error err = {{0}};
+  NL_CHECK(nl_mkdir_p(sub, &err) == NL_OK);
+  char *p = nl_path_join(sub, "t.tsv");
+  for (int k = 0; k <= 3; k++) {
+    pid_t pid = fork();
+    if (pid == 0) {
+      nl_atomic_file af;
+      if (nl_atomic_open(&af, p, &err)) _exit(4);
+      fputs("half", af.fp);
+      fflush(af.fp);
+      if (k == 3) exit(5);
+      raise(sigs[k]);
+      _exit(6);
+    }
+    int status = -1;
+    NL_CHECK(pid > 0 && waitpid(pid, &status, 0) == pid);
+    if (k == 3) NL_CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 5);
+    else NL_CHECK(WIFSIGNALED(status) && WTERMSIG(status) == sigs[k]);
+    NL_CHECK(no_temporaries(sub));
+  }
+  NL_CHECK(access(p, F_OK) != 0);
+  free(sub); free(p);
 }
 
 NL_TEST(range_checked_parsing)

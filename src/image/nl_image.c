@@ -43,19 +43,21 @@
 /* ---- the image back-end, loaded on first use ------------------------- */
 
 typedef nl_status (*nl_oiio_read_fn)(const char *, nl_image **, nl_error *);
-typedef nl_status (*nl_oiio_write_fn)(const nl_image *, const char *, int, nl_error *);
+typedef nl_status (*nl_oiio_encode_fn)(const nl_image *, const char *, int, unsigned char **,
+                                       size_t *, nl_error *);
 
 #ifdef NL_OIIO_STATIC
 /* The fuzz targets link nl_image_oiio.cpp in. */
 nl_status nl_oiio_read(const char *path, nl_image **out, nl_error *err);
-nl_status nl_oiio_write(const nl_image *im, const char *path, int bits, nl_error *err);
+nl_status nl_oiio_encode(const nl_image *im, const char *path, int bits, unsigned char **data,
+                         size_t *size, nl_error *err);
 static nl_oiio_read_fn oiio_read = nl_oiio_read;
-static nl_oiio_write_fn oiio_write = nl_oiio_write;
+static nl_oiio_encode_fn oiio_encode = nl_oiio_encode;
 static nl_status backend(const char *path, nl_error *err) { (void)path; (void)err; return NL_OK; }
 int nl_image_backend_loaded(void) { return 1; }
 #else
 static nl_oiio_read_fn oiio_read;
-static nl_oiio_write_fn oiio_write;
+static nl_oiio_encode_fn oiio_encode;
 static pthread_once_t oiio_once = PTHREAD_ONCE_INIT;
 static char oiio_why[NL_ERROR_LEN];
 
@@ -82,9 +84,10 @@ static void backend_open(void)
     QUIET_END();
     if (h) {
       oiio_read = (nl_oiio_read_fn)(void (*)(void))dlsym(h, "nl_oiio_read");
-      oiio_write = (nl_oiio_write_fn)(void (*)(void))dlsym(h, "nl_oiio_write");
-      if (oiio_read && oiio_write) return;
-      oiio_read = NULL; oiio_write = NULL;
+      oiio_encode = (nl_oiio_encode_fn)(void (*)(void))dlsym(h, "nl_oiio_encode");
+      if (oiio_read && oiio_encode) return;
+      oiio_read = NULL;
+      oiio_encode = NULL;
     }
     const char *e = dlerror();   /* why dlopen or dlsym failed: the message names the file */
     if (h) dlclose(h);
@@ -154,15 +157,34 @@ nl_status nl_image_check_bits(const char *path, int bits, nl_error *err)
   return NL_OK;
 }
 
+/* A PNG ends with its IEND chunk: length 0, "IEND", CRC ae 42 60 82. */
+static int png_whole(const unsigned char *d, size_t n)
+{
+  static const unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+  return n >= 8 + sizeof iend && memcmp(d + n - sizeof iend, iend, sizeof iend) == 0;
+}
+
 nl_status nl_image_write(const nl_image *im, const char *path, int bits, nl_error *err)
 {
   nl_status s = nl_image_check_bits(path, bits, err);
   if (s) return s;
+  /* A target that cannot be written is named before the codec is loaded. */
+  s = nl_path_check_writable(path, err);
+  if (s) return s;
   s = backend(path, err);
   if (s) return s;
+  unsigned char *data = NULL;
+  size_t n = 0;
   QUIET_BEGIN();
-  s = oiio_write(im, path, bits, err);
+  s = oiio_encode(im, path, bits, &data, &n, err);
   QUIET_END();
+  if (s) return s;
+  const char *dot = strrchr(path, '.');
+  if (dot && strcasecmp(dot, ".png") == 0 && !png_whole(data, n))
+    s = nl_fail(err, NL_EIO, "%s: the PNG encoder stopped before the end (no IEND chunk)", path);
+  else
+    s = nl_atomic_write(path, data, n, err);
+  free(data);
   return s;
 }
 

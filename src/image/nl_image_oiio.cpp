@@ -5,9 +5,10 @@
 // some 260 shared libraries, 0.6 s of CPU at every program start, so
 // nl_image.c opens this module on the first image read or write and a
 // program that only writes tables never loads it. The entry points are
-// nl_oiio_read / nl_oiio_write; nl_image.c's nl_image_read/nl_image_write
+// nl_oiio_read / nl_oiio_encode; nl_image.c's nl_image_read/nl_image_write
 // call them (directly when NL_OIIO_STATIC links this file in, as the fuzz
 // targets do).
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <cerrno>
@@ -22,6 +23,7 @@
 #include <unistd.h>
 #include <memory>
 #include <string>
+#include <vector>
 
 extern "C" {
 #include "image/nl_image.h"
@@ -253,24 +255,23 @@ static nl_status nl_image_timestamp(const char *path, std::string *out, nl_error
   return NL_OK;
 }
 
-extern "C" nl_status nl_oiio_write(const nl_image *im, const char *path, int bits, nl_error *err)
+// Encodes into memory (an IOVecOutput), never into a file: the codecs do not
+// all report failed writes (the PNG writer ignores a full disk), so the bytes
+// go to disk through nl_atomic_write, which checks every one of them and
+// knows what to do with a symbolic link or a device. *data is malloc'd.
+extern "C" nl_status nl_oiio_encode(const nl_image *im, const char *path, int bits,
+                                    unsigned char **data, size_t *size, nl_error *err)
 {
+  *data = nullptr;
+  *size = 0;
   if (bits != 8 && bits != 16 && bits != 32)
     return nl_fail(err, NL_EINVAL, "%s: bit depth %d is not 8, 16 or 32", path, bits);
   if (!std::strrchr(path, '.'))
     return nl_fail(err, NL_EINVAL, "%s: no file extension to choose a format from", path);
-  nl_status pc = nl_path_check_writable(path, err);
-  if (pc) return pc;
-  char *tmp = nl_temp_sibling(path);
-  // mkstemps is not needed: the XXXXXX is made unique from the pid below.
-  std::string t(tmp);
-  free(tmp);
-  size_t x = t.find("XXXXXX");
-  char pid[16];
-  snprintf(pid, sizeof pid, "%06d", (int)(getpid() % 1000000));
-  t.replace(x, 6, pid);
   auto out = ImageOutput::create(path);
   if (!out) return set_err(err, NL_EIO, path, OIIO::geterror());
+  if (!out->supports("ioproxy"))
+    return nl_fail(err, NL_EIO, "%s: the %s writer cannot write to memory", path, out->format_name());
   ImageSpec spec(im->width, im->height, im->channels, type_for(path, bits));
   if (im->channels == 4) spec.attribute("oiio:UnassociatedAlpha", 1);
   // Same input, same bytes: TIFF and EXR writers stamp the current time
@@ -280,24 +281,18 @@ extern "C" nl_status nl_oiio_write(const nl_image *im, const char *path, int bit
   nl_status ws = nl_image_timestamp(path, &when, err);
   if (ws) return ws;
   spec.attribute("DateTime", when);
+  std::vector<unsigned char> buf;
+  Filesystem::IOVecOutput vec(buf);
   // Integer formats clamp to [0, 1] on conversion from float.
-  if (!out->open(t, spec)) {
-    std::string why = out->geterror();
-    std::remove(t.c_str());
-    for (size_t at; (at = why.find(t)) != std::string::npos;) why.replace(at, t.size(), path);
-    return set_err(err, NL_EIO, path, why);
-  }
-  bool ok = out->write_image(TypeDesc::FLOAT, im->data);
+  bool ok = out->set_ioproxy(&vec) && out->open(path, spec);
+  ok = ok && out->write_image(TypeDesc::FLOAT, im->data);
   std::string why = ok ? "" : out->geterror();
   ok = out->close() && ok;
-  if (ok && std::rename(t.c_str(), path) != 0) { ok = false; why = std::strerror(errno); }
-  if (!ok) {
-    std::remove(t.c_str());
-    if (why.empty()) why = out->geterror();
-    // Name the target, not our temporary name.
-    for (size_t at; (at = why.find(t)) != std::string::npos;) why.replace(at, t.size(), path);
-    return set_err(err, NL_EIO, path, why);
-  }
+  if (!ok) return set_err(err, NL_EIO, path, why.empty() ? out->geterror() : why);
+  *data = static_cast<unsigned char *>(std::malloc(buf.size() ? buf.size() : 1));
+  if (!*data) return nl_fail(err, NL_ENOMEM, "%s: out of memory for %zu bytes", path, buf.size());
+  std::memcpy(*data, buf.data(), buf.size());
+  *size = buf.size();
   return NL_OK;
 }
 

@@ -5,6 +5,10 @@
 #include <dirent.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 static const char *dir;
@@ -325,6 +329,99 @@ NL_TEST(write_names_the_parent_problem)
   NL_CHECK(strcmp(err.msg, want) == 0);
   if (strcmp(err.msg, want)) fprintf(stderr, "  %s\n", err.msg);
   nl_image_free(a); free(file); free(under);
+}
+
+static int same_bytes(const char *a, const char *b)
+{
+  char cmd[1200];
+  snprintf(cmd, sizeof cmd, "cmp -s '%s' '%s'", a, b);
+  return system(cmd) == 0;
+}
+
+/* A full disk, made by a file size limit with SIGXFSZ ignored (writes then
+ * fail with EFBIG, as on a full disk with ENOSPC): each format fails with a
+ * message naming the file, the old file stays whole and no temporary is
+ * left. OpenImageIO's PNG writer ignores its failed writes: before images
+ * went to disk through the checked atomic writer, a PNG reported success
+ * and was left truncated. */
+NL_TEST(full_disk_fails_and_keeps_the_old_file)
+{
+  static const char *names[3] = {"full.png", "full.exr", "full.tif"};
+  char *sub = nl_path_join(dir, "fulldisk");
+  nl_error err;
+  NL_CHECK(nl_mkdir_p(sub, &err) == NL_OK);
+  nl_image *small = ramp(4, 4, 3), *big = ramp(256, 256, 3);
+  unsigned x = 1;   /* noise: no codec packs it into the 4 kB limit */
+  for (size_t k = 0; k < (size_t)256 * 256 * 3; k++) {
+    x = x * 1103515245u + 12345u;
+    big->data[k] = (float)(x >> 16) / 65536.0f;
+  }
+  for (int i = 0; i < 3; i++) {
+    char *p = nl_path_join(sub, names[i]), *keep = nl_path_join(sub, "keep");
+    NL_CHECK(nl_image_write(small, p, 16, &err) == NL_OK);
+    char cp[1200];
+    snprintf(cp, sizeof cp, "cp '%s' '%s'", p, keep);
+    NL_CHECK(system(cp) == 0);
+    /* In this process: a fork after OpenImageIO started its threads can
+     * deadlock. Only the soft limit moves, so it can be put back. */
+    struct rlimit was, rl;
+    NL_CHECK(getrlimit(RLIMIT_FSIZE, &was) == 0);
+    rl = was;
+    rl.rlim_cur = 4096;
+    void (*old)(int) = signal(SIGXFSZ, SIG_IGN);
+    NL_CHECK(setrlimit(RLIMIT_FSIZE, &rl) == 0);
+    nl_error e2 = {{0}};
+    nl_status st = nl_image_write(big, p, 16, &e2);
+    setrlimit(RLIMIT_FSIZE, &was);
+    signal(SIGXFSZ, old);
+    NL_CHECK(st == NL_EIO && strstr(e2.msg, names[i]) && strstr(e2.msg, "File too large"));
+    if (st != NL_EIO) fprintf(stderr, "  %s: status %d: %s\n", names[i], (int)st, e2.msg);
+    NL_CHECK(same_bytes(p, keep));
+    unlink(keep);
+    free(p); free(keep);
+  }
+  DIR *d = opendir(sub);
+  struct dirent *e;
+  int hidden = 0;
+  while ((e = readdir(d))) if (e->d_name[0] == '.' && strlen(e->d_name) > 2) hidden++;
+  closedir(d);
+  NL_CHECK(hidden == 0);
+  nl_image_free(small); nl_image_free(big); free(sub);
+}
+
+/* A symbolic link is followed (the file it names is replaced, the link
+ * stays); a FIFO is written through, never replaced by a file. */
+NL_TEST(links_and_fifos_stay_what_they_are)
+{
+  nl_image *a = ramp(8, 8, 1);
+  nl_error err;
+  char *real = nl_path_join(dir, "real.png"), *link = nl_path_join(dir, "link.png");
+  char *fifo = nl_path_join(dir, "fifo.png"), *got = nl_path_join(dir, "fromfifo.png");
+  NL_CHECK(nl_image_write(a, real, 8, &err) == NL_OK);
+  NL_CHECK(symlink("real.png", link) == 0);
+  nl_image *b = ramp(16, 16, 1), *back = NULL;
+  NL_CHECK(nl_image_write(b, link, 8, &err) == NL_OK);
+  struct stat st;
+  NL_CHECK(lstat(link, &st) == 0 && S_ISLNK(st.st_mode));
+  NL_CHECK(nl_image_read(real, &back, &err) == NL_OK && back && back->width == 16);
+  nl_image_free(back);
+  /* The reader opens first (O_NONBLOCK: no writer yet), so the write's
+   * open does not wait; the PNG fits in the pipe's buffer. */
+  NL_CHECK(mkfifo(fifo, 0644) == 0);
+  int rd = open(fifo, O_RDONLY | O_NONBLOCK);
+  NL_CHECK(rd >= 0);
+  NL_CHECK(nl_image_write(b, fifo, 8, &err) == NL_OK);
+  NL_CHECK(lstat(fifo, &st) == 0 && S_ISFIFO(st.st_mode));
+  static unsigned char buf[65536];
+  ssize_t n = rd >= 0 ? read(rd, buf, sizeof buf) : -1;
+  if (rd >= 0) close(rd);
+  FILE *g = fopen(got, "wb");
+  if (g && n > 0) fwrite(buf, 1, (size_t)n, g);
+  if (g) fclose(g);
+  NL_CHECK(same_bytes(real, got));
+  unlink(link); unlink(fifo); unlink(got); unlink(real);
+  nl_image_free(a); nl_image_free(b);
+  free(real); free(link); free(fifo); free(got);
 }
 
 int main(void)

@@ -128,23 +128,33 @@ void nl_table_format_double(char *buf, double v)
   if (strtod(buf, NULL) != v) snprintf(buf, 32, "%.17g", v);
 }
 
-nl_status nl_table_write(const nl_table *t, const char *path, nl_error *err)
+nl_status nl_table_write_to(const nl_table *t, nl_atomic_file *af, nl_error *err)
 {
   for (size_t k = 0; k < t->nrows * t->ncols; k++)
     if (!(t->text && t->text[k]) && !isfinite(t->num[k]))
       return nl_fail(err, NL_EINVAL, "%s: column '%s' row %zu holds %g (NaN or infinite; the reader rejects it)",
-                     path, t->names[k % t->ncols], k / t->ncols + 1, t->num[k]);
-  nl_atomic_file af;
-  nl_status s = nl_atomic_open(&af, path, err);
-  if (s) return s;
+                     af->path, t->names[k % t->ncols], k / t->ncols + 1, t->num[k]);
   for (size_t c = 0; c < t->ncols; c++)
-    fprintf(af.fp, "%s%s", c ? "\t" : "", t->names[c]);
-  fputc('\n', af.fp);
+    fprintf(af->fp, "%s%s", c ? "\t" : "", t->names[c]);
+  fputc('\n', af->fp);
   char buf[32];
   for (size_t r = 0; r < t->nrows; r++) {
     for (size_t c = 0; c < t->ncols; c++)
-      fprintf(af.fp, "%s%s", c ? "\t" : "", nl_table_cell_text(t, r, c, buf));
-    fputc('\n', af.fp);
+      fprintf(af->fp, "%s%s", c ? "\t" : "", nl_table_cell_text(t, r, c, buf));
+    fputc('\n', af->fp);
+  }
+  return NL_OK;
+}
+
+nl_status nl_table_write(const nl_table *t, const char *path, nl_error *err)
+{
+  nl_atomic_file af;
+  nl_status s = nl_atomic_open(&af, path, err);
+  if (s) return s;
+  s = nl_table_write_to(t, &af, err);
+  if (s) {
+    nl_atomic_abort(&af);
+    return s;
   }
   return nl_atomic_commit(&af, err);
 }

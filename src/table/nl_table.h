@@ -89,6 +89,11 @@ const char *nl_table_cell_text(const nl_table *t, size_t r, size_t c, char *buf)
 /* Refuses (NL_EINVAL, nothing written) a NaN or infinite number, which the
  * reader would reject: one rule for both directions. */
 nl_status nl_table_write(const nl_table *t, const char *path, nl_error *err);
+/* Writes the table into an output opened with nl_atomic_open, without
+ * committing it: a command writing several files opens them all first (so
+ * a bad path is refused before any is written), then commits them together
+ * with nl_atomic_commit_all. On a refusal af is left open for the caller. */
+nl_status nl_table_write_to(const nl_table *t, nl_atomic_file *af, nl_error *err);
 nl_status nl_table_read(const char *path, int flags, nl_table **out, nl_error *err);
 
 /* Formats a double the way the writer does (shortest of %.15g/%.17g that
