@@ -78,6 +78,13 @@ fi
 "$tool" morph "$out/rgb.tif.params" "$out/rgb.tif.params" --t 0.3 -o "$out/m.params"
 "$tool" morph "$out/rgb.tif.params" "$out/rgb16.png.params" --t 0 --size 96 --seed 11 -o "$out/m0.png"
 cmp -s "$out/a.png" "$out/m0.png"
+# An option typed without effect is said, not silently dropped: --seed on a
+# morph that writes parameters, --z without --solid.
+"$tool" morph "$out/rgb.tif.params" "$out/rgb.tif.params" --t 0.3 --seed 5 -o "$out/m5.params" 2>"$out/warn.err"
+grep -q 'warning: --seed ignored: without --size' "$out/warn.err"
+cmp -s "$out/m.params" "$out/m5.params"
+"$tool" synthesize "$out/rgb.tif.params" --size 32 --z 0.5 -o "$out/z.png" 2>"$out/warn.err"
+grep -q 'warning: --z ignored' "$out/warn.err"
 
 # The hand-written files above are version 1 (no hist_kind): they load as the
 # paper's 10 quantiles. A shipped photograph (data/exemplars, GIMP's crinkled

@@ -64,6 +64,7 @@ typedef struct {
   long size, height, seed;
   double t, scale, z;
   int rgb, nohist, paperhist, nocal, solid, have_t, have_size;
+  int have_seed, have_height, have_scale, have_z;   /* typed, for the ignored-option warnings */
 } args;
 
 static void parse(int argc, char **argv, args *a)
@@ -92,11 +93,23 @@ static void parse(int argc, char **argv, args *a)
     case O_OUT: a->out = v; break;
     case O_BANDS: a->bands = v; break;
     case O_SIZE: check(nl_parse_long("--size", v, 1, 32768, &a->size, &err), &err); a->have_size = 1; break;
-    case O_HEIGHT: check(nl_parse_long("--height", v, 1, 32768, &a->height, &err), &err); break;
-    case O_SEED: check(nl_parse_long("--seed", v, 0, 4294967295L, &a->seed, &err), &err); break;
+    case O_HEIGHT:
+      check(nl_parse_long("--height", v, 1, 32768, &a->height, &err), &err);
+      a->have_height = 1;
+      break;
+    case O_SEED:
+      check(nl_parse_long("--seed", v, 0, 4294967295L, &a->seed, &err), &err);
+      a->have_seed = 1;
+      break;
     case O_T: check(nl_parse_double("--t", v, 0, 1, &a->t, &err), &err); a->have_t = 1; break;
-    case O_SCALE: check(nl_parse_double("--scale", v, 1e-6, 1e6, &a->scale, &err), &err); break;
-    case O_Z: check(nl_parse_double("--z", v, -1e9, 1e9, &a->z, &err), &err); break;
+    case O_SCALE:
+      check(nl_parse_double("--scale", v, 1e-6, 1e6, &a->scale, &err), &err);
+      a->have_scale = 1;
+      break;
+    case O_Z:
+      check(nl_parse_double("--z", v, -1e9, 1e9, &a->z, &err), &err);
+      a->have_z = 1;
+      break;
     case O_RGB: a->rgb = 1; break;
     case O_NOHIST: a->nohist = 1; break;
     case O_PAPERHIST: a->paperhist = 1; break;
@@ -140,11 +153,19 @@ static int analyse(const args *a)
   return 0;
 }
 
+/* An option typed but without effect is said, as render does, rather than
+ * silently ignored: the user meant something by it. */
+static void ignored(const char *opt, const char *why)
+{
+  fprintf(stderr, "noiselab example: warning: %s ignored: %s\n", opt, why);
+}
+
 static void synth_write(const nl_byexample_params *p, const args *a)
 {
   nl_error err;
   nl_image *im;
   if (!a->have_size) die("--size N is required");
+  if (a->have_z && !a->solid) ignored("--z", "it sets the depth of --solid's slice");
   nl_byexample_synth_options so = {a->scale, a->solid, a->z, NL_SPLINE_STEFFEN};
   check(nl_byexample_synthesize(p, (int)a->size, (int)(a->height ? a->height : a->size),
                                 (unsigned long)a->seed, &so, &im, &err), &err);
@@ -175,8 +196,15 @@ static int morph(const args *a)
     snprintf(msg, sizeof msg, "%s, %s: %s", a->pos[0], a->pos[1], err.msg);
     die(msg);
   }
-  if (a->have_size) synth_write(&m, a);
-  else check(nl_byexample_params_save(&m, a->out, &err), &err);
+  if (a->have_size) {
+    synth_write(&m, a);
+    return 0;
+  }
+  const char *const opts[] = {"--seed", "--height", "--scale", "--solid", "--z"};
+  const int typed[] = {a->have_seed, a->have_height, a->have_scale, a->solid, a->have_z};
+  for (int i = 0; i < 5; i++)
+    if (typed[i]) ignored(opts[i], "without --size, morph writes parameters, not an image");
+  check(nl_byexample_params_save(&m, a->out, &err), &err);
   return 0;
 }
 
