@@ -151,6 +151,10 @@ bad analyse "$out/junk.png" -o "$out/x.params"
 grep -v '^weights1' "$out/rgb.params" > "$out/missing.params"
 bad synthesize "$out/missing.params" --size 16 -o "$out/x.png"
 grep -q "weights1" "$out/err.txt"
+# each side within 1..32768 but their product past the limit: the message
+# names the pixel count, not a side
+bad synthesize "$out/rgb.tif.params" --size 32768 --height 32768 -o "$out/x.png"
+grep -q '1.07e+09 pixels, more than the limit of 1e9' "$out/err.txt"
 sed 's/^sigma2 .*/sigma2 abc/' "$out/rgb.params" > "$out/nonnum.params"
 bad synthesize "$out/nonnum.params" --size 16 -o "$out/x.png"
 grep -q "abc" "$out/err.txt"

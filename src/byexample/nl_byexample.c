@@ -532,8 +532,11 @@ nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, un
                                   const nl_byexample_synth_options *opt, nl_image **out,
                                   nl_error *err)
 {
-  if (w < 1 || h < 1 || (double)w * h > 1e9)
-    return nl_fail(err, NL_EINVAL, "output size %d x %d out of range", w, h);
+  if (w < 1 || h < 1)
+    return nl_fail(err, NL_EINVAL, "output size %d x %d: each side must be at least 1", w, h);
+  if ((double)w * h > 1e9)   /* each side may be in range while their product is not */
+    return nl_fail(err, NL_EINVAL, "output size %d x %d is %.3g pixels, more than the limit of 1e9",
+                   w, h, (double)w * h);
   /* channel planes (double) and the image (float), checked before allocating */
   double need = (double)w * h * p->channels * (sizeof(double) + sizeof(float));
   if (!nl_mem_fits(need)) {
