@@ -28,10 +28,6 @@ tsv_awk 'NR == 2 && n("slope_max") != 0 { print "flat plane slope " n("slope_max
   NR > 2 && !(n("slope_max") > s) { print "slope_max not growing at row " NR; exit 1 }
   { s = n("slope_max") }' "$out/bumps.tsv"
 # Verdict rows: Fig. 4, qualitative.
-tsv_awk -v ind=0 -v qual=1 'FNR > 1 { k[v("kind")]++
-    if (v("kind") == "qualitative" && v("verdict") != "see figure") { print "bad: " $0; exit 1 } }
-  END { if (k["independent"] != ind || k["qualitative"] != qual || NR - 1 != ind + qual) {
-      printf "verdicts: %d independent, %d qualitative, %d rows\n", k["independent"],
-        k["qualitative"], NR - 1; exit 1 } }' "$out/verdicts.tsv"
+verdict_kinds "$out/verdicts.tsv" 0 1
 set +e
 refused "$exp" --quick --out "$out/bad" --set octaves=31

@@ -13,11 +13,7 @@ tsv_awk 'FNR > 1 {r = n("rings"); g = n("rings_geometry"); b = n("ramp_bands")
   if (r - g > 3 || g - r > 3 || b > r - 4) {printf "%s: rings %.2f, geometry %g, ramp bands %.2f\n", v("panel"), r, g, b; exit 1}}' "$out/wood.tsv"
 grep -q 'RenderMan Companion' "$out/report.md"
 # Verdict rows: Fig. 5 and Fig. 6, qualitative.
-tsv_awk -v ind=0 -v qual=2 'FNR > 1 { k[v("kind")]++
-    if (v("kind") == "qualitative" && v("verdict") != "see figure") { print "bad: " $0; exit 1 } }
-  END { if (k["independent"] != ind || k["qualitative"] != qual || NR - 1 != ind + qual) {
-      printf "verdicts: %d independent, %d qualitative, %d rows\n", k["independent"],
-        k["qualitative"], NR - 1; exit 1 } }' "$out/verdicts.tsv"
+verdict_kinds "$out/verdicts.tsv" 0 2
 
 if byte_reruns; then   # same seed, same tables (tsv.sh: release build only)
   "$exp" --quick --no-images --out "$out/again" >/dev/null

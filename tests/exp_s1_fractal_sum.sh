@@ -60,14 +60,7 @@ tsv_awk 'FNR > 1 { d = n("sd_over_sep") * n("sep_over_law") - n("sd_over_law")
 tsv_awk 'NR == 2 && (n("sd_over_law") != 1 || n("sd_over_law_se") != 0) { print; exit 1 }' \
   "$out/fractal_sd_law.tsv"
 # Verdict rows: 3 sd-law rows (independent), the panels (qualitative).
-tsv_awk -v ind=3 -v qual=1 'FNR > 1 { k[v("kind")]++
-    if (v("kind") == "qualitative" && v("verdict") != "see figure") { print "bad: " $0; exit 1 }
-    if (v("kind") == "independent" && (v("rule") != "sd 2 3" \
-        || v("verdict") !~ /^(reproduced|partly|not reproduced)$/)) {
-      print "bad: " $0; exit 1 } }
-  END { if (k["independent"] != ind || k["qualitative"] != qual || NR - 1 != ind + qual) {
-      printf "verdicts: %d independent, %d qualitative, %d rows\n", k["independent"],
-        k["qualitative"], NR - 1; exit 1 } }' "$out/verdicts.tsv"
+verdict_kinds "$out/verdicts.tsv" 3 1 "sd 2 3"
 # A second run with the same seed gives the same table, byte for byte.
 if byte_reruns; then   # same seed, same tables (tsv.sh: release build only)
   "$exp" --quick --no-images --out "$out/again" >/dev/null

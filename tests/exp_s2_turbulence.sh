@@ -37,10 +37,4 @@ tsv_awk 'v("field") == "noise" { a = n("above_frac"); d = n("dc_frac") }
       print "fold: " a " " b " " d " " e; exit 1 } }' \
   "$out/fold.tsv"
 # Verdict rows: the panels (qualitative).
-tsv_awk -v ind=0 -v qual=1 'FNR > 1 { k[v("kind")]++
-    if (v("kind") == "qualitative" && v("verdict") != "see figure") { print "bad: " $0; exit 1 }
-    if (v("kind") == "independent" && v("verdict") !~ /^(reproduced|partly|not reproduced)$/) {
-      print "bad: " $0; exit 1 } }
-  END { if (k["independent"] != ind || k["qualitative"] != qual || NR - 1 != ind + qual) {
-      printf "verdicts: %d independent, %d qualitative, %d rows\n", k["independent"],
-        k["qualitative"], NR - 1; exit 1 } }' "$out/verdicts.tsv"
+verdict_kinds "$out/verdicts.tsv" 0 1

@@ -52,14 +52,7 @@ done
 tsv_awk 'v("law") == "identical" && (n("sd_over_law") - 1 > 1e-9 || 1 - n("sd_over_law") > 1e-9) {
   print "lacunarity 1: sd_over_law " n("sd_over_law"); exit 1 }' "$out/lacunarity_sd_law.tsv"
 # Verdict rows: 4 gains and 3 lacunarities against the sd law (independent), 2 panels.
-tsv_awk -v ind=7 -v qual=2 'FNR > 1 { k[v("kind")]++
-    if (v("kind") == "qualitative" && v("verdict") != "see figure") { print "bad: " $0; exit 1 }
-    if (v("kind") == "independent" && (v("rule") != "sd 2 3" \
-        || v("verdict") !~ /^(reproduced|partly|not reproduced)$/)) {
-      print "bad: " $0; exit 1 } }
-  END { if (k["independent"] != ind || k["qualitative"] != qual || NR - 1 != ind + qual) {
-      printf "verdicts: %d independent, %d qualitative, %d rows\n", k["independent"],
-        k["qualitative"], NR - 1; exit 1 } }' "$out/verdicts.tsv"
+verdict_kinds "$out/verdicts.tsv" 7 2 "sd 2 3"
 # Parameters reach the program: 3 octaves.
 "$exp" --quick --no-images --out "$out/three" --set octaves=3 >/dev/null
 "$expect" "$out/three/gain_distribution.tsv" 'octaves==3'

@@ -14,6 +14,7 @@
 #       A name the file does not have stops awk with exit 2 and a message.
 #   tsv_cut FILE NAME      the column NAME of FILE (header included), as cut -f
 #   tsv_slopes FILE LO HI  a spectrum's log-log slopes per column (below)
+#   verdict_kinds FILE IND QUAL [RULE]  a verdicts.tsv's rows by kind (below)
 # shellcheck disable=SC2016  # awk's $ fields, for awk, not for the shell
 TSV_AWK_LIB='
 FNR == 1 { split("", TSV_COL); for (TSV_I = 1; TSV_I <= NF; TSV_I++) TSV_COL[$TSV_I] = TSV_I }
@@ -106,4 +107,18 @@ refused() {
     printf 'expected exit 2 and one line on stderr from: %s\ngot exit %d and:\n%s\n' "$*" "$rc" "$err" >&2
     return 1
   fi
+}
+
+# verdict_kinds FILE IND QUAL [RULE]: FILE (a verdicts.tsv) holds exactly IND
+# independent and QUAL qualitative rows and nothing else; each qualitative
+# row says "see figure", each independent row carries one of the three
+# verdicts and, when RULE is given, that rule.
+verdict_kinds() {
+  tsv_awk -v ind="$2" -v qual="$3" -v rule="${4:-}" 'FNR > 1 { k[v("kind")]++
+      if (v("kind") == "qualitative" && v("verdict") != "see figure") { print "bad: " $0; exit 1 }
+      if (v("kind") == "independent" && ((rule != "" && v("rule") != rule) \
+          || v("verdict") !~ /^(reproduced|partly|not reproduced)$/)) { print "bad: " $0; exit 1 } }
+    END { if (k["independent"] != ind || k["qualitative"] != qual || NR - 1 != ind + qual) {
+        printf "verdicts: %d independent, %d qualitative, %d rows\n", k["independent"],
+          k["qualitative"], NR - 1; exit 1 } }' "$1"
 }
