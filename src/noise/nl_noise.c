@@ -206,10 +206,7 @@ void nl_noise_grad3_corners(const nl_noise_grad3 *t, double x, double y, double 
   long c0[3];
   for (int a = 0; a < 3; a++) {
     c0[a] = nl_noise_lfloor(p[a]);
-    /* p - cell is 1, not 0, for -2^-53 < p < 0 (the rounded limit, which
-     * the fade weights handle); nl_noise_lfrac only for |p| >= 2^62 and NaN. */
-    f[a] = p[a] - (double)c0[a];
-    if (!(f[a] >= 0 && f[a] <= 1)) f[a] = nl_noise_lfrac(p[a], c0[a]);
+    f[a] = nl_noise_lfrac(p[a], c0[a]);
     s[a][1] = nl_noise_fade(f[a]);
     s[a][0] = 1 - s[a][1];
   }
@@ -235,7 +232,9 @@ double nl_noise_grad3_eval(const nl_noise_grad3 *t, double x, double y, double z
 
 /* ---- 3D improved noise ------------------------------------------------ */
 
-static const unsigned char perlin_permutation[256] = {
+/* Perlin 2002's permutation, all 256 entries: the array is sized by its
+ * initialiser and checked, so a dropped entry cannot become a silent 0. */
+static const unsigned char perlin_permutation[] = {
   151,160,137,91,90,15,131,13,201,95,96,53,194,233,7,225,140,36,103,30,69,142,
   8,99,37,240,21,10,23,190,6,148,247,120,234,75,0,26,197,62,94,252,219,203,117,
   35,11,32,57,177,33,88,237,149,56,87,174,20,125,136,171,168,68,175,74,165,71,
@@ -247,7 +246,8 @@ static const unsigned char perlin_permutation[256] = {
   172,9,129,22,39,253,19,98,108,110,79,113,224,232,178,185,112,104,218,246,97,
   228,251,34,242,193,238,210,144,12,191,179,162,241,81,51,145,235,249,14,239,
   107,49,192,214,31,181,199,106,157,184,84,204,176,115,121,50,45,127,4,150,254,
-  138,236,205,93,222,114,67,29,24,72,243,141,128,195,78,66,215,61,156};
+  138,236,205,93,222,114,67,29,24,72,243,141,128,195,78,66,215,61,156,180};
+_Static_assert(sizeof perlin_permutation == 256, "Perlin's permutation has 256 entries");
 
 /* Perlin's grad(hash, x, y, z) as vectors: the 12 cube edges, 4 repeated. */
 static const double grad3[16][3] = {

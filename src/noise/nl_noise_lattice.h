@@ -10,7 +10,7 @@
  * project compiles with -ffp-contract=off).
  *
  *   long i = nl_noise_lfloor(x);          // the cell, floor(x)
- *   double t = nl_noise_lfrac(x, i);      // x - i in [0, 1)
+ *   double t = nl_noise_lfrac(x, i);      // x - i in [0, 1]
  *   double w = nl_noise_fade(t);          // 6t^5 - 15t^4 + 10t^3
  *   long e = nl_noise_lmod(i, m);         // i mod m in [0, m)
  */
@@ -42,13 +42,17 @@ static inline long nl_noise_lfloor(double x)
   return (long)fmod(x, NL_LATTICE_WRAP);
 }
 
-/* The fraction x - floor(x) in [0, 1) for the cell i = nl_noise_lfloor(x):
- * exact for |x| < 2^62, 0 beyond (x is an integer there), NaN for NaN and
- * inf. */
+/* The fraction x - i for the cell i = nl_noise_lfloor(x), rounded as
+ * Perlin's reference code rounds x - floor(x): in [0, 1) and exact, except
+ * for -1 < x < 0, where x - (-1) = 1 + x rounds, and to 1 itself for x in
+ * [-2^-54, 0). The fraction is then 1 in cell -1, which is the point x = 0
+ * (the far face of the cell, where the fade is 1): the noise is continuous
+ * there and equals the reference. Mapping that 1 to 0 would move the point
+ * to x = -1. 0 beyond 2^62 (x is an integer there), NaN for NaN and inf. */
 static inline double nl_noise_lfrac(double x, long i)
 {
   double f = x - (double)i;
-  return f >= 0 && f < 1 ? f : isfinite(x) ? 0.0 : NAN;
+  return f >= 0 && f <= 1 ? f : isfinite(x) ? 0.0 : NAN;
 }
 
 /* a mod m in [0, m) for m > 0 (C's % keeps the sign of a): lattice indices

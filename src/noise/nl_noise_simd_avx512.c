@@ -82,10 +82,8 @@ static inline size_t v_pack(const nl_noise_pack *pk, size_t k, vd x, vd y, vd z,
  * is at most 1/2 below 2^52), the columns they use are gx[b .. b + 7] for
  * b the lowest of them, and gx[b + 1 .. b + 8] for the right-hand ones.
  * The column arrays are padded for the load past the last column.
- * plain: no x is -0 (so no cell is -0) and none lies in [-2^-54, 0), the
- * only doubles whose x - floor(x) rounds to 1: v_cell's +0 and v_frac's
- * mask change nothing there and are left out (same bits, 3 fewer
- * operations per 8 samples). */
+ * plain: no x is -0 (so no cell is -0): v_cell's +0 changes nothing there
+ * and is left out (same bits, one operation fewer per 8 samples). */
 static inline __attribute__((always_inline)) void
 samples_win(const double *gx, const double *a, long ifirst, double x0, double dx, size_t n,
             double *out, int mode, double amp, int plain, int rev)
@@ -107,7 +105,7 @@ samples_win(const double *gx, const double *a, long ifirst, double x0, double dx
     vd a0 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(a + b));
     vd g1 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(gx + b + 1));
     vd a1 = (vd)_mm512_permutexvar_pd(li, _mm512_loadu_pd(a + b + 1));
-    vd v = v_blend(plain ? x - cell : v_frac(x, cell), g0, a0, g1, a1);
+    vd v = v_blend(v_frac(x, cell), g0, a0, g1, a1);
     st(out + k, v_emit(out + k, v, mode, amp));
   }
   if (k < n) samples_tail(gx, a, ifirst, x0, dx, k, n, out, mode, amp);
@@ -117,8 +115,7 @@ static void samples(const double *gx, const double *a, long ifirst, double x0, d
                     size_t n, double *out, int mode, double amp)
 {
   if (!(fabs(dx) * 7 <= 4)) { samples_lanes(gx, a, ifirst, x0, dx, n, out, mode, amp); return; }
-  double xl = x0 + (double)(n - 1) * dx, lo = fmin(x0, xl), hi = fmax(x0, xl);
-  int plain = !(x0 == 0 && signbit(x0)) && !(lo < 0 && hi >= -0x1p-50);
+  int plain = !(x0 == 0 && signbit(x0));   /* x = k dx + x0 is -0 only for x0 = -0 */
   if (dx >= 0) {
     if (plain) samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 1, 0);
     else samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 0, 0);

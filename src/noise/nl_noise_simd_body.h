@@ -34,13 +34,9 @@ static inline vd v_blend(vd t, vd gx0, vd a0, vd gx1, vd a1)
  * double, which is never -0: adding +0 turns floor(-0) = -0 into +0, so
  * x - cell keeps the sign the scalar subtraction gives. */
 static inline vd v_cell(vd x) { return v_floor(x) + 0.0; }
-/* lfrac for finite x with |x| < 2^52: x - cell is in [0, 1] and exact; the
- * scalar code maps 1 (x just below an integer, e.g. -1e-20) to 0. */
-static inline vd v_frac(vd x, vd cell)
-{
-  vd f = x - cell;
-  return (vd)((vl)f & (f < 1.0));
-}
+/* lfrac for finite x with |x| < 2^52: x - cell, in [0, 1] (1 for x in
+ * [-2^-54, 0), as the scalar code keeps it). */
+static inline vd v_frac(vd x, vd cell) { return x - cell; }
 static inline vl v_small(vd x)   /* |x| < 2^31: the cell fits an int; false for NaN */
 {
   vd a = (vd)((vl)x & 0x7fffffffffffffffLL);
