@@ -6,7 +6,8 @@
 #  - SIGINT / SIGTERM during gnuplot stop it with exit 130 / 143, SIGKILL
 #    leaves no figure under its final name that is not whole and no folder
 #    with a manifest but without its figures; a rerun recovers;
-#  - a second reproduce into the same folder names the first and exits 1;
+#  - a second reproduce into the same folder names the first and exits 1,
+#    also when both start together; SIGKILL stops what the run started;
 #  - list (id, name, title) and params EXPERIMENT answer as TSV tables;
 #  - bench runs every benchmark, skips meson's bench_*.p/ folders, and fails
 #    at the end naming the failed ones.
@@ -149,6 +150,34 @@ rc=0; err="$("$nl" reproduce --quick --out "$r" S4 2>&1 >/dev/null)" || rc=$?
   || fail "second reproduce: rc=$rc: $err"
 stop_slow INT 130
 consistent "SIGINT"
+
+# Two runs started together: the one that finds the lock taken names the
+# other's pid and command, never "holder unknown". A slow `date` (the
+# holder's start time, asked once) keeps the first between taking the lock
+# and writing its line, where the second used to find an empty lock file.
+mkdir -p "$out/slowdate"
+cat >"$out/slowdate/date" <<'FAKE'
+#!/usr/bin/env bash
+if [[ "$*" == *T%H:%M:%SZ* ]] && mkdir "$SLOW_DATE_ONCE" 2>/dev/null; then sleep 3; fi
+exec /usr/bin/date "$@"
+FAKE
+chmod +x "$out/slowdate/date"
+lk="$out/lockrace"; mkdir -p "$lk"
+# shellcheck disable=SC2016  # the inner scripts' own $1 and $2
+SLOW_DATE_ONCE="$out/slowdate/once" PATH="$out/slowdate:$PATH" \
+  bash -c 'source "$1"; REPRO_ARGS="--quick A1"; take_lock "$2"; exec sleep 30' _ "$nl" "$lk" \
+  2>"$out/race1.log" &
+first=$!
+for ((k = 0; k < 100; k++)); do
+  [ ! -e "$lk/.noiselab.lock" ] || break
+  sleep 0.1
+done
+# shellcheck disable=SC2016
+rc=0; err="$(bash -c 'source "$1"; take_lock "$2"' _ "$nl" "$lk" 2>&1)" || rc=$?
+kill "$first" 2>/dev/null || true
+wait "$first" 2>/dev/null || true
+{ [ "$rc" = 1 ] && [[ "$err" == *"in use"*"pid $first"*"reproduce --quick A1"* ]]; } \
+  || fail "two runs at once: the second said (rc=$rc): $err"
 [ ! -f "$r/a1_bounds/manifest.tsv" ] || fail "SIGINT: a1_bounds kept a manifest"
 { grep -q '<a id="s4_marble">' "$r/REPORT.md" \
   && ! grep -q '<a id="a1_bounds">' "$r/REPORT.md"; } \
@@ -161,10 +190,20 @@ stop_slow TERM 143
 consistent "SIGTERM"
 [ ! -e "$r/REPORT.md" ] || fail "SIGTERM: REPORT.md names folders that are not complete"
 
-# SIGKILL: nothing runs after it; the fake gnuplot is stopped by its pid.
+# SIGKILL: nothing runs after it. The processes it started (here the fake
+# gnuplot) hold the folder's lock; its watchdog stops them, so they neither
+# write into the folder nor keep the next run out.
 start_slow A1
+g="$(cat "$out/mark")"
 stop_slow KILL 137
-kill "$(cat "$out/mark")" 2>/dev/null || true
+for ((k = 0; k < 20; k++)); do
+  kill -0 "$g" 2>/dev/null || break
+  sleep 0.1
+done
+if kill -0 "$g" 2>/dev/null; then
+  kill "$g"
+  fail "SIGKILL: gnuplot (pid $g), started by the killed run, still runs 2 s later"
+fi
 consistent "SIGKILL"
 
 # A rerun recovers: both complete, no leftovers.
