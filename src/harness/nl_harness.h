@@ -265,8 +265,10 @@ nl_status nl_harness_rule_parse(const char *s, nl_harness_rule *rule, nl_error *
  * then those that are the same. welch and ftest
  * p-values come from nl_stats_welch_p and nl_stats_ftest_p. Returns NL_OK
  * whether or not there was drift (counted in s), else a one-line message:
- * a missing folder or manifest, an unreadable table, a malformed rule or a
- * rule naming a missing column (the comparison stops there). */
+ * a missing folder or manifest, an unreadable committed table, a malformed
+ * rule or a rule naming a table or column the committed folder does not have
+ * (the comparison stops there). A new table that is missing or unreadable is
+ * drift ("missing", or "unreadable: " and the table reader's message). */
 #define NL_CHECK_SHOWN 10   /* drifted values printed per experiment without `all` */
 typedef struct {
   int all;                  /* print every drifted value */
