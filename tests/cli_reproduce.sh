@@ -3,7 +3,7 @@
 #  - a bad seed or experiment is one line and exit 2, and writes nothing;
 #  - REPORT.md is 0644, dated by SOURCE_DATE_EPOCH when set, never written
 #    when nothing ran, and names complete folders only;
-#  - SIGINT / SIGTERM during gnuplot stop it with exit 130 / 143, SIGKILL
+#  - SIGINT / SIGTERM during gnuplot stop it (and check) with exit 130 / 143, SIGKILL
 #    leaves no figure under its final name that is not whole and no folder
 #    with a manifest but without its figures; a rerun recovers;
 #  - a second reproduce into the same folder names the first and exits 1,
@@ -245,6 +245,30 @@ rc=0; err="$(bash -c 'source "$1"; run_benchmarks "$2"' _ "$nl" "$b" 2>&1 >/dev/
 { [ "$rc" = 2 ] && [[ "$err" == *"1 benchmark(s) failed: bench_c"* ]]; } \
   || fail "bench: rc=$rc: $err"
 [ "$(tr '\n' ' ' <"$b/ran")" = "ran-a ran-c ran-d " ] || fail "bench: ran $(cat "$b/ran")"
+# check stopped by a signal: exit 128 + its number, as reproduce and sweep;
+# the experiment it was running is stopped, its folder removed.
+stop_check() {   # SIGNAL WANT_RC
+  local rc=0 k pid exp=""
+  : >"$out/check-stamp"
+  set -m
+  "$nl" check --quick C1 >/dev/null 2>"$out/check-stop.log" &
+  pid=$!
+  set +m
+  for ((k = 0; k < 600; k++)); do
+    exp="$(pgrep -f "^$root/build/experiments/c1_textures --out $root/build/check-quick\\." || true)"
+    [ -z "$exp" ] || break
+    sleep 0.1
+  done
+  [ -n "$exp" ] || fail "check --quick C1 never ran c1_textures: $(cat "$out/check-stop.log")"
+  kill -"$1" "$pid"
+  wait "$pid" || rc=$?
+  [ "$rc" = "$2" ] || fail "check got SIG$1: exit $rc, wanted $2: $(cat "$out/check-stop.log")"
+  ! kill -0 "$exp" 2>/dev/null || { kill "$exp"; fail "check got SIG$1: c1_textures still runs"; }
+  [ -z "$(find "$root/build" -maxdepth 1 -name 'check-quick.*' -newer "$out/check-stamp")" ] \
+    || fail "check got SIG$1: its folder is left: $(ls -d "$root"/build/check-quick.*)"
+}
+stop_check INT 130
+stop_check TERM 143
 # check --quick with an unknown id: the one line of resolve, nothing after it.
 one_line_exit2 "unknown experiment 'Q9'" check --quick Q9
 # Without --out, reproduce writes into the git-tracked results/ and says so
