@@ -8,6 +8,8 @@
 #    with a manifest but without its figures; a rerun recovers;
 #  - a second reproduce into the same folder names the first and exits 1,
 #    also when both start together; SIGKILL stops what the run started;
+#  - a rerun removes the outputs an earlier run listed and it did not write,
+#    never a file no run listed;
 #  - list (id, name, title) and params EXPERIMENT answer as TSV tables;
 #  - bench runs every benchmark, skips meson's bench_*.p/ folders, and fails
 #    at the end naming the failed ones.
@@ -193,14 +195,17 @@ consistent "SIGTERM"
 # SIGKILL: nothing runs after it. The processes it started (here the fake
 # gnuplot) hold the folder's lock; its watchdog stops them, so they neither
 # write into the folder nor keep the next run out.
+# (A process that has exited counts as gone even before its new parent
+# reaps it: this machine's init reaps orphans about a second late.)
+running() { [ -e "/proc/$1" ] && ! grep -q '^[0-9]* ([^)]*) Z' "/proc/$1/stat" 2>/dev/null; }
 start_slow A1
 g="$(cat "$out/mark")"
 stop_slow KILL 137
 for ((k = 0; k < 20; k++)); do
-  kill -0 "$g" 2>/dev/null || break
+  running "$g" || break
   sleep 0.1
 done
-if kill -0 "$g" 2>/dev/null; then
+if running "$g"; then
   kill "$g"
   fail "SIGKILL: gnuplot (pid $g), started by the killed run, still runs 2 s later"
 fi
@@ -234,6 +239,28 @@ rc=0; "$nl" reproduce --quick --jobs 2 --out "$jf" A1 S4 2>"$out/jfail.log" || r
   && [ -f "$jf/s4_marble/manifest.tsv" ] && grep -q '<a id="s4_marble">' "$jf/REPORT.md" \
   && [ -z "$(find "$jf" -name '.log-*')" ]; } \
     || fail "--jobs 2 with a failing experiment: rc=$rc: $(cat "$out/jfail.log")"
+
+# A run replaces the outputs of an earlier one: a table an earlier run
+# listed in its manifest ("output" lines) and this one did not write goes;
+# a file no run listed (the user's notes) stays. After an interrupted run
+# (no manifest) the list is in .outputs-previous.tsv.
+st="$out/stale"
+a4="$st/a4_normalised"
+"$nl" reproduce --quick --out "$st" A4 2>"$out/stale1.log" || { cat "$out/stale1.log"; fail "reproduce A4 failed"; }
+grep -q $'^output\taliasing.tsv$' "$a4/manifest.tsv" || fail "the manifest lists no outputs: $(cat "$a4/manifest.tsv")"
+printf 'x\n1\n' >"$a4/sweep_headline.tsv"
+printf 'output\tsweep_headline.tsv\n' >>"$a4/manifest.tsv"
+echo "my notes" >"$a4/notes.txt"
+printf 'x\n1\n' >"$a4/mine.tsv"
+"$nl" reproduce --quick --out "$st" A4 2>"$out/stale2.log" || { cat "$out/stale2.log"; fail "rerun of A4 failed"; }
+[ ! -e "$a4/sweep_headline.tsv" ] || fail "a table listed by the earlier run and not written now survived the rerun"
+{ [ "$(cat "$a4/notes.txt")" = "my notes" ] && [ -f "$a4/mine.tsv" ]; } || fail "the rerun removed a file no run wrote"
+printf 'x\n1\n' >"$a4/old_table.tsv"
+printf 'output\nold_table.tsv\n' >"$a4/.outputs-previous.tsv"
+rm "$a4/manifest.tsv"
+"$nl" reproduce --quick --out "$st" A4 2>"$out/stale3.log" || { cat "$out/stale3.log"; fail "rerun of A4 failed"; }
+{ [ ! -e "$a4/old_table.tsv" ] && [ ! -e "$a4/.outputs-previous.tsv" ] && [ -f "$a4/notes.txt" ]; } \
+  || fail "after an interrupted run: $(ls -a "$a4")"
 
 # bench: every regular executable bench_* runs; a failure is reported at the end.
 b="$out/bench"; mkdir -p "$b/bench_cellular.p"

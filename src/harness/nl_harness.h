@@ -45,6 +45,11 @@
  * openblas_get_corename/config/num_threads; "none" without OpenBLAS).
  * The regression check compares none of these (nor started, seconds,
  * peak_rss_mb), but names cpu, arch, blas_core and libm when it finds drift.
+ * One "output" line per file the run wrote (every path nl_harness_path handed
+ * out, and each nl_harness_figure file; a PNG figure the program did not
+ * write is drawn by the entry script with an SVG beside it): a run that
+ * completes removes the files an earlier run in its folder listed and it did
+ * not write (a table the code no longer makes), never a file no run listed.
  * NL_MANIFEST_NAME (a hidden file name, set by the entry script) makes
  * nl_harness_end write the manifest under that name instead; the script renames
  * it to manifest.tsv once the figures are made. It is written last and removed first, so a
