@@ -24,7 +24,8 @@
 lock_holders() {   # INO [any]
   local files=(/proc/[0-9]*/fdinfo/9)
   [ "${2:-}" != any ] || files=(/proc/[0-9]*/fdinfo/*)
-  grep -l -E "^lock:[[:space:]]+[0-9]+: FLOCK .* [0-9a-f]+:[0-9a-f]+:$1 " "${files[@]}" 2>/dev/null |
+  local re="^lock:[[:space:]]+[0-9]+: FLOCK .* [0-9a-f]+:[0-9a-f]+:$1 "
+  grep -l -E "$re" "${files[@]}" 2>/dev/null |
     sed 's|^/proc/\([0-9]*\)/.*|\1|' | sort -un || true
 }
 
@@ -52,8 +53,12 @@ lock_same_file() {   # FD PATH
 lock_take() {   # LOCK WHAT
   local lock="$1" what="$2" tmp k w held pid
   LOCK_HOLDER=""
-  tmp="$(mktemp "$lock.XXXXXX" 2>/dev/null)" || { LOCK_HOLDER="cannot make a file beside $lock"; return 2; }
-  if ! printf 'pid %s\tsince %s\tcommand %s\n' "$$" "$(date -u +%Y-%m-%dT%H:%M:%SZ)" "$what" >"$tmp"; then
+  if ! tmp="$(mktemp "$lock.XXXXXX" 2>/dev/null)"; then
+    LOCK_HOLDER="cannot make a file beside $lock"
+    return 2
+  fi
+  if ! printf 'pid %s\tsince %s\tcommand %s\n' "$$" "$(date -u +%Y-%m-%dT%H:%M:%SZ)" "$what" \
+       >"$tmp"; then
     rm -f "$tmp"; LOCK_HOLDER="cannot write $tmp"; return 2
   fi
   chmod 0644 "$tmp"
@@ -95,7 +100,7 @@ lock_take() {   # LOCK WHAT
     elif ! kill -0 "$pid" 2>/dev/null; then
       # shellcheck disable=SC2046  # one pid a word
       left="$(lock_describe $(lock_holders "$(stat -L -c %i /dev/fd/8)"))"
-      LOCK_HOLDER="$LOCK_HOLDER; that run has ended but its processes still hold the lock: ${left:-none found}"
+      LOCK_HOLDER+="; that run has ended but its processes still hold the lock: ${left:-none found}"
     fi
     LOCK_HOLDER="$(printf '%s' "$LOCK_HOLDER" | tr '\t' ' ' | head -c 600)"
     exec 8<&- 9<&-; rm -f "$tmp"

@@ -154,11 +154,11 @@ bad "no column 'nosuch'" "$out/nocol" "$ref"
 # A rule for a table or column the reference does not have would check
 # nothing: bad input naming the rule, the table and the folder.
 copy ruletable; printf 'nosuch.tsv\tx\trel 1e-3\n' >>"$out/ruletable/checks.tsv"
-bad "$out/ruletable/checks.tsv:6: rule 'rel 1e-3' for nosuch.tsv column x: $out/ruletable has no table nosuch.tsv" \
-  "$out/ruletable" "$ref"
+bad "$out/ruletable/checks.tsv:6: rule 'rel 1e-3' for nosuch.tsv column x: $out/ruletable has no \
+table nosuch.tsv" "$out/ruletable" "$ref"
 copy rulecol; printf 'spec.tsv\tnosuch\trel 1e-3\n' >>"$out/rulecol/checks.tsv"
-bad "$out/rulecol/checks.tsv:6: rule 'rel 1e-3' for spec.tsv column nosuch: $out/rulecol/spec.tsv has no such column" \
-  "$out/rulecol" "$ref"
+bad "$out/rulecol/checks.tsv:6: rule 'rel 1e-3' for spec.tsv column nosuch: \
+$out/rulecol/spec.tsv has no such column" "$out/rulecol" "$ref"
 copy ragged; printf '1\t2\t3\n' >>"$out/ragged/spec.tsv"
 bad "spec.tsv:4" "$out/ragged" "$ref"
 echo "cli_check: ok"

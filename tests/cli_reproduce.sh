@@ -246,20 +246,28 @@ rc=0; "$nl" reproduce --quick --jobs 2 --out "$jf" A1 S4 2>"$out/jfail.log" || r
 # (no manifest) the list is in .outputs-previous.tsv.
 st="$out/stale"
 a4="$st/a4_normalised"
-"$nl" reproduce --quick --out "$st" A4 2>"$out/stale1.log" || { cat "$out/stale1.log"; fail "reproduce A4 failed"; }
-grep -q $'^output\taliasing.tsv$' "$a4/manifest.tsv" || fail "the manifest lists no outputs: $(cat "$a4/manifest.tsv")"
+rerun_a4() {   # N: the N-th run of A4 into st
+  "$nl" reproduce --quick --out "$st" A4 2>"$out/stale$1.log" \
+    || { cat "$out/stale$1.log"; fail "run $1 of A4 failed"; }
+}
+rerun_a4 1
+grep -q $'^output\taliasing.tsv$' "$a4/manifest.tsv" \
+  || fail "the manifest lists no outputs: $(cat "$a4/manifest.tsv")"
 printf 'x\n1\n' >"$a4/sweep_headline.tsv"
 printf 'output\tsweep_headline.tsv\n' >>"$a4/manifest.tsv"
 echo "my notes" >"$a4/notes.txt"
 printf 'x\n1\n' >"$a4/mine.tsv"
-"$nl" reproduce --quick --out "$st" A4 2>"$out/stale2.log" || { cat "$out/stale2.log"; fail "rerun of A4 failed"; }
-[ ! -e "$a4/sweep_headline.tsv" ] || fail "a table listed by the earlier run and not written now survived the rerun"
-{ [ "$(cat "$a4/notes.txt")" = "my notes" ] && [ -f "$a4/mine.tsv" ]; } || fail "the rerun removed a file no run wrote"
+rerun_a4 2
+[ ! -e "$a4/sweep_headline.tsv" ] \
+  || fail "a table listed by the earlier run and not written now survived the rerun"
+{ [ "$(cat "$a4/notes.txt")" = "my notes" ] && [ -f "$a4/mine.tsv" ]; } \
+  || fail "the rerun removed a file no run wrote"
 printf 'x\n1\n' >"$a4/old_table.tsv"
 printf 'output\nold_table.tsv\n' >"$a4/.outputs-previous.tsv"
 rm "$a4/manifest.tsv"
-"$nl" reproduce --quick --out "$st" A4 2>"$out/stale3.log" || { cat "$out/stale3.log"; fail "rerun of A4 failed"; }
-{ [ ! -e "$a4/old_table.tsv" ] && [ ! -e "$a4/.outputs-previous.tsv" ] && [ -f "$a4/notes.txt" ]; } \
+rerun_a4 3
+{ [ ! -e "$a4/old_table.tsv" ] && [ ! -e "$a4/.outputs-previous.tsv" ] \
+  && [ -f "$a4/notes.txt" ]; } \
   || fail "after an interrupted run: $(ls -a "$a4")"
 
 # bench: every regular executable bench_* runs; a failure is reported at the end.
@@ -282,7 +290,8 @@ stop_check() {   # SIGNAL WANT_RC
   pid=$!
   set +m
   for ((k = 0; k < 600; k++)); do
-    exp="$(pgrep -f "^$root/build/experiments/c1_textures --out $root/build/check-quick\\." || true)"
+    exp="$(pgrep -f "^$root/build/experiments/c1_textures --out $root/build/check-quick\\." \
+           || true)"
     [ -z "$exp" ] || break
     sleep 0.1
   done

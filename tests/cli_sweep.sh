@@ -66,7 +66,8 @@ stop_sweep() {   # DIR SIGNAL WANT_RC: stopped once its first task has finished
   done
   kill -"$2" "$pid"
   wait "$pid" || rc=$?
-  [ "$rc" = "$3" ] || { cat "$out/stop.err"; echo "sweep stopped by SIG$2: exit $rc, wanted $3"; exit 1; }
+  [ "$rc" = "$3" ] \
+    || { cat "$out/stop.err"; echo "sweep stopped by SIG$2: exit $rc, wanted $3"; exit 1; }
 }
 stop_sweep "$out/stopped" TERM 143
 stop_sweep "$out/stopped" INT 130
@@ -75,7 +76,8 @@ stop_sweep "$kdir" KILL 137
 for ((k = 0; k < 40; k++)); do pgrep -f -- "$kdir/" >/dev/null || break; sleep 0.05; done
 left="$(pgrep -a -f -- "$kdir/" || true)"
 [ -z "$left" ] || { echo "SIGKILL of the sweep left its tasks running after 2 s: $left"; exit 1; }
-"${sweep[@]}" "${kdef[@]}" --out "$kdir" 2>"$out/rerun.err" || { cat "$out/rerun.err"; echo "rerun after SIGKILL failed"; exit 1; }
+"${sweep[@]}" "${kdef[@]}" --out "$kdir" 2>"$out/rerun.err" \
+  || { cat "$out/rerun.err"; echo "rerun after SIGKILL failed"; exit 1; }
 grep -q 'sweep: 12/12 done, 0 failed' "$out/rerun.err" || { cat "$out/rerun.err"; exit 1; }
 left="$(find "$kdir" -name '.pending.*' -o -name '.parallel.err')"
 [ -z "$left" ] || { echo "rerun after SIGKILL left $left"; exit 1; }
