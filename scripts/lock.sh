@@ -68,6 +68,11 @@ lock_take() {   # LOCK WHAT
     if ln "$tmp" "$lock" 2>/dev/null; then
       rm -f "$tmp"; lock_watch "$lock"; return 0
     fi
+    # A file system without hard links (vfat, some network shares): a rename
+    # that never replaces (mv -n) does the same, the file keeping its lock.
+    if [ ! -e "$lock" ] && mv -n "$tmp" "$lock" 2>/dev/null && [ ! -e "$tmp" ]; then
+      lock_watch "$lock"; return 0
+    fi
     { exec 8<"$lock"; } 2>/dev/null || continue   # removed or replaced meanwhile: again
     # A holder whose shell is gone: its watchdog is stopping the processes
     # it left (a few tenths of a second), so wait a little for them.
