@@ -349,6 +349,14 @@ sed $'s/^images\t.*/images\tno/' "$rs/s4_marble/manifest.tsv" >"$out/noimages.ts
 { grep -q $'^images\tno$' "$out/noimages.tsv" \
   && ! matches "$out/noimages.tsv" s4_marble 1 1 "$c"; } \
   || fail "resume_matches: a --no-images run matches"
+# A package held at its version (apt-mark hold) is installed: no apt-get.
+mkdir -p "$out/dpkg"
+printf '#!/bin/sh\nprintf "gnuplot-nox hold ok installed\\nmeson install ok installed\\n"\n' \
+  >"$out/dpkg/dpkg-query"
+chmod +x "$out/dpkg/dpkg-query"
+# shellcheck disable=SC2016
+missing="$(PATH="$out/dpkg:$PATH" bash -c 'source "$1"; missing_packages gnuplot-nox meson pandoc' _ "$nl")"
+[ "$missing" = "pandoc " ] || fail "missing_packages with gnuplot-nox held: '$missing', wanted 'pandoc '"
 # ETA: previous times scaled by this run's pace, the mean so far for the rest.
 [ "$(bash -c 'source "$1"; repro_eta 10 1 5 20 -' _ "$nl")" = "1/3 done, elapsed 10 s, ETA 50 s (previous times and mean so far x 2)" ] \
   || fail "repro_eta: $(bash -c 'source "$1"; repro_eta 10 1 5 20 -' _ "$nl")"
