@@ -105,6 +105,8 @@ lock_take() {   # LOCK WHAT
     elif ! kill -0 "$pid" 2>/dev/null; then
       # shellcheck disable=SC2046  # one pid a word
       left="$(lock_describe $(lock_holders "$(stat -L -c %i /dev/fd/8)"))"
+      # shellcheck disable=SC2046  # not a run's process (a user's flock)
+      [ -n "$left" ] || left="$(lock_describe $(lock_holders "$(stat -L -c %i /dev/fd/8)" any))"
       LOCK_HOLDER+="; that run has ended but its processes still hold the lock: ${left:-none found}"
     fi
     LOCK_HOLDER="$(printf '%s' "$LOCK_HOLDER" | tr '\t' ' ' | head -c 600)"
