@@ -24,6 +24,8 @@ say() { printf '%s\n' "$*" >&2; }
 die() { printf 'noiselab sweep: %s\n' "$*" >&2; exit 2; }
 # shellcheck source=scripts/experiments.sh
 source "$ROOT/scripts/experiments.sh"   # resolve
+# shellcheck source=scripts/lock.sh
+source "$ROOT/scripts/lock.sh"          # lock_take
 
 progress() {   # DIR TOTAL DONE0 T0 JOBLOG_LINES0 FINAL
   local dir="$1" total="$2" done0="$3" t0="$4" jl0="$5" final="$6"
@@ -42,11 +44,28 @@ progress() {   # DIR TOTAL DONE0 T0 JOBLOG_LINES0 FINAL
   return 0
 }
 
+# The trap of a running sweep: stops GNU parallel and its tasks, exits CODE.
+sweep_stop() {   # CODE (uses run_local's pid and pending)
+  trap '' INT TERM   # a second signal does not cut the stop short
+  kill -TERM "$pid" 2>/dev/null || true
+  sleep 0.2
+  kill -TERM "$pid" 2>/dev/null || true
+  wait "$pid" 2>/dev/null || true
+  rm -f "$pending"
+  say ""
+  say "sweep: interrupted; the same command continues it"
+  exit "$1"
+}
+
 run_local() {   # DIR JOBS
   local dir="$1" jobs="$2" total done0 jl0=0 pending pid t0=$SECONDS
   command -v parallel >/dev/null || die "GNU parallel is not installed (apt-get install parallel; scripts/noiselab setup does it)"
-  exec 9>"$dir/.lock"
-  flock -n 9 || die "$dir: another sweep is running in this folder"
+  local rc=0
+  lock_take "$dir/.lock" "scripts/noiselab sweep $SWEEP_ARGS" || rc=$?
+  [ "$rc" = 0 ] || die "$dir: another sweep is running in this folder ($LOCK_HOLDER)"
+  # Leftovers of a sweep killed outright (SIGKILL runs no trap): the lock is
+  # ours, so no live process owns them.
+  rm -f "$dir"/.pending.* "$dir/.parallel.err"
   read -r total done0 < <("$TOOL" status "$dir")
   [ -f "$dir/joblog" ] && jl0="$(wc -l <"$dir/joblog")"
   pending="$(mktemp "$dir/.pending.XXXXXX")"
@@ -59,7 +78,11 @@ run_local() {   # DIR JOBS
   (cd "$ROOT" && exec parallel --will-cite --jobs "$jobs" --joblog "+$dir/joblog" --halt never \
      <"$pending" >/dev/null 2>"$dir/.parallel.err") &
   pid=$!
-  trap 'kill -TERM "$pid" 2>/dev/null; sleep 0.2; kill -TERM "$pid" 2>/dev/null; rm -f "$pending"; say ""; say "sweep: interrupted; the same command continues it"; exit 130' INT TERM
+  # Exit 128 + the signal's number, as the shell and reproduce do. GNU
+  # parallel stops starting tasks at the first SIGTERM and stops the running
+  # ones at the second; it is waited for, so no task outlives the sweep.
+  trap 'sweep_stop 130' INT
+  trap 'sweep_stop 143' TERM
   while kill -0 "$pid" 2>/dev/null; do progress "$dir" "$total" "$done0" "$t0" "$jl0" 0; sleep 1; done
   wait "$pid" || true
   trap - INT TERM
@@ -85,6 +108,7 @@ merge() {   # DIR [--table T] [--y COL] [--x NAME]
   say "sweep: merged into $dir/merged (plot.png)"
 }
 
+SWEEP_ARGS="$*"
 main() {
   [ -x "$TOOL" ] || die "no $TOOL (scripts/noiselab setup)"
   case "${1:-}" in

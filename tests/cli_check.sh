@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # noiselab check: passes on an unchanged run, fails on drift (a bit-level
 # change under `exact`, a mean shifted beyond Welch's test, a relative
-# tolerance exceeded, a missing table or changed parameter), passes on
-# noise-level differences under the statistical rules, and refuses bad
-# input with one line and exit 2.
+# tolerance exceeded, a missing or unreadable table or changed parameter),
+# passes on noise-level differences under the statistical rules, and
+# refuses bad input (a rule naming a table or column the reference lacks)
+# with one line and exit 2.
 set -euo pipefail
 # shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
@@ -65,6 +66,12 @@ run 1 relbad $'spec.tsv\t2\tpower' 'rel 1e-9'
 # Shape and run: a missing table, an extra row, another parameter.
 copy notable; rm "$out/notable/spec.tsv"
 run 1 notable $'spec.tsv\t-\t-\ttable\tmissing'
+# A table the run wrote but the reader refuses (NUL bytes; nothing but
+# NULs) is drift that names the reader's complaint, never "missing".
+copy nul; { printf 'freq\tpower\n0.125\t0.0'; printf '\000'; printf '77\n'; } >"$out/nul/spec.tsv"
+run 1 nul $'spec.tsv\t-\t-\ttable\tunreadable: '"$out/nul/spec.tsv:2: NUL byte" '1 drifted'
+copy zeros; head -c 64 /dev/zero >"$out/zeros/spec.tsv"
+run 1 zeros "unreadable: $out/zeros/spec.tsv:1: NUL byte" '1 drifted'
 copy rows; printf '0.625\t0.001\n' >>"$out/rows/spec.tsv"
 run 1 rows '2 rows'
 copy param; edit param manifest.tsv 5 value size=16
@@ -144,6 +151,14 @@ copy badrule; printf 'dist.tsv\tcount\twelch\n' >>"$out/badrule/checks.tsv"
 bad "welch needs SDCOL ALPHA" "$out/badrule" "$ref"
 copy nocol; printf 'dist.tsv\tcount\twelch nosuch 1e-3\n' >>"$out/nocol/checks.tsv"
 bad "no column 'nosuch'" "$out/nocol" "$ref"
+# A rule for a table or column the reference does not have would check
+# nothing: bad input naming the rule, the table and the folder.
+copy ruletable; printf 'nosuch.tsv\tx\trel 1e-3\n' >>"$out/ruletable/checks.tsv"
+bad "$out/ruletable/checks.tsv:6: rule 'rel 1e-3' for nosuch.tsv column x: $out/ruletable has no \
+table nosuch.tsv" "$out/ruletable" "$ref"
+copy rulecol; printf 'spec.tsv\tnosuch\trel 1e-3\n' >>"$out/rulecol/checks.tsv"
+bad "$out/rulecol/checks.tsv:6: rule 'rel 1e-3' for spec.tsv column nosuch: \
+$out/rulecol/spec.tsv has no such column" "$out/rulecol" "$ref"
 copy ragged; printf '1\t2\t3\n' >>"$out/ragged/spec.tsv"
 bad "spec.tsv:4" "$out/ragged" "$ref"
 echo "cli_check: ok"

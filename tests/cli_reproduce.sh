@@ -3,10 +3,13 @@
 #  - a bad seed or experiment is one line and exit 2, and writes nothing;
 #  - REPORT.md is 0644, dated by SOURCE_DATE_EPOCH when set, never written
 #    when nothing ran, and names complete folders only;
-#  - SIGINT / SIGTERM during gnuplot stop it with exit 130 / 143, SIGKILL
+#  - SIGINT / SIGTERM during gnuplot stop it (and check) with exit 130 / 143, SIGKILL
 #    leaves no figure under its final name that is not whole and no folder
 #    with a manifest but without its figures; a rerun recovers;
-#  - a second reproduce into the same folder names the first and exits 1;
+#  - a second reproduce into the same folder names the first and exits 1,
+#    also when both start together; SIGKILL stops what the run started;
+#  - a rerun removes the outputs an earlier run listed and it did not write,
+#    never a file no run listed;
 #  - list (id, name, title) and params EXPERIMENT answer as TSV tables;
 #  - bench runs every benchmark, skips meson's bench_*.p/ folders, and fails
 #    at the end naming the failed ones.
@@ -149,6 +152,34 @@ rc=0; err="$("$nl" reproduce --quick --out "$r" S4 2>&1 >/dev/null)" || rc=$?
   || fail "second reproduce: rc=$rc: $err"
 stop_slow INT 130
 consistent "SIGINT"
+
+# Two runs started together: the one that finds the lock taken names the
+# other's pid and command, never "holder unknown". A slow `date` (the
+# holder's start time, asked once) keeps the first between taking the lock
+# and writing its line, where the second used to find an empty lock file.
+mkdir -p "$out/slowdate"
+cat >"$out/slowdate/date" <<'FAKE'
+#!/usr/bin/env bash
+if [[ "$*" == *T%H:%M:%SZ* ]] && mkdir "$SLOW_DATE_ONCE" 2>/dev/null; then sleep 3; fi
+exec /usr/bin/date "$@"
+FAKE
+chmod +x "$out/slowdate/date"
+lk="$out/lockrace"; mkdir -p "$lk"
+# shellcheck disable=SC2016  # the inner scripts' own $1 and $2
+SLOW_DATE_ONCE="$out/slowdate/once" PATH="$out/slowdate:$PATH" \
+  bash -c 'source "$1"; REPRO_ARGS="--quick A1"; take_lock "$2"; exec sleep 30' _ "$nl" "$lk" \
+  2>"$out/race1.log" &
+first=$!
+for ((k = 0; k < 100; k++)); do
+  [ ! -e "$lk/.noiselab.lock" ] || break
+  sleep 0.1
+done
+# shellcheck disable=SC2016
+rc=0; err="$(bash -c 'source "$1"; take_lock "$2"' _ "$nl" "$lk" 2>&1)" || rc=$?
+kill "$first" 2>/dev/null || true
+wait "$first" 2>/dev/null || true
+{ [ "$rc" = 1 ] && [[ "$err" == *"in use"*"pid $first"*"reproduce --quick A1"* ]]; } \
+  || fail "two runs at once: the second said (rc=$rc): $err"
 [ ! -f "$r/a1_bounds/manifest.tsv" ] || fail "SIGINT: a1_bounds kept a manifest"
 { grep -q '<a id="s4_marble">' "$r/REPORT.md" \
   && ! grep -q '<a id="a1_bounds">' "$r/REPORT.md"; } \
@@ -161,10 +192,23 @@ stop_slow TERM 143
 consistent "SIGTERM"
 [ ! -e "$r/REPORT.md" ] || fail "SIGTERM: REPORT.md names folders that are not complete"
 
-# SIGKILL: nothing runs after it; the fake gnuplot is stopped by its pid.
+# SIGKILL: nothing runs after it. The processes it started (here the fake
+# gnuplot) hold the folder's lock; its watchdog stops them, so they neither
+# write into the folder nor keep the next run out.
+# (A process that has exited counts as gone even before its new parent
+# reaps it: this machine's init reaps orphans about a second late.)
+running() { [ -e "/proc/$1" ] && ! grep -q '^[0-9]* ([^)]*) Z' "/proc/$1/stat" 2>/dev/null; }
 start_slow A1
+g="$(cat "$out/mark")"
 stop_slow KILL 137
-kill "$(cat "$out/mark")" 2>/dev/null || true
+for ((k = 0; k < 20; k++)); do
+  running "$g" || break
+  sleep 0.1
+done
+if running "$g"; then
+  kill "$g"
+  fail "SIGKILL: gnuplot (pid $g), started by the killed run, still runs 2 s later"
+fi
 consistent "SIGKILL"
 
 # A rerun recovers: both complete, no leftovers.
@@ -196,6 +240,36 @@ rc=0; "$nl" reproduce --quick --jobs 2 --out "$jf" A1 S4 2>"$out/jfail.log" || r
   && [ -z "$(find "$jf" -name '.log-*')" ]; } \
     || fail "--jobs 2 with a failing experiment: rc=$rc: $(cat "$out/jfail.log")"
 
+# A run replaces the outputs of an earlier one: a table an earlier run
+# listed in its manifest ("output" lines) and this one did not write goes;
+# a file no run listed (the user's notes) stays. After an interrupted run
+# (no manifest) the list is in .outputs-previous.tsv.
+st="$out/stale"
+a4="$st/a4_normalised"
+rerun_a4() {   # N: the N-th run of A4 into st
+  "$nl" reproduce --quick --out "$st" A4 2>"$out/stale$1.log" \
+    || { cat "$out/stale$1.log"; fail "run $1 of A4 failed"; }
+}
+rerun_a4 1
+grep -q $'^output\taliasing.tsv$' "$a4/manifest.tsv" \
+  || fail "the manifest lists no outputs: $(cat "$a4/manifest.tsv")"
+printf 'x\n1\n' >"$a4/sweep_headline.tsv"
+printf 'output\tsweep_headline.tsv\n' >>"$a4/manifest.tsv"
+echo "my notes" >"$a4/notes.txt"
+printf 'x\n1\n' >"$a4/mine.tsv"
+rerun_a4 2
+[ ! -e "$a4/sweep_headline.tsv" ] \
+  || fail "a table listed by the earlier run and not written now survived the rerun"
+{ [ "$(cat "$a4/notes.txt")" = "my notes" ] && [ -f "$a4/mine.tsv" ]; } \
+  || fail "the rerun removed a file no run wrote"
+printf 'x\n1\n' >"$a4/old_table.tsv"
+printf 'output\nold_table.tsv\n' >"$a4/.outputs-previous.tsv"
+rm "$a4/manifest.tsv"
+rerun_a4 3
+{ [ ! -e "$a4/old_table.tsv" ] && [ ! -e "$a4/.outputs-previous.tsv" ] \
+  && [ -f "$a4/notes.txt" ]; } \
+  || fail "after an interrupted run: $(ls -a "$a4")"
+
 # bench: every regular executable bench_* runs; a failure is reported at the end.
 b="$out/bench"; mkdir -p "$b/bench_cellular.p"
 printf '#!/bin/sh\necho ran-a >>"%s/ran"\n' "$b" >"$b/bench_a"
@@ -206,6 +280,31 @@ rc=0; err="$(bash -c 'source "$1"; run_benchmarks "$2"' _ "$nl" "$b" 2>&1 >/dev/
 { [ "$rc" = 2 ] && [[ "$err" == *"1 benchmark(s) failed: bench_c"* ]]; } \
   || fail "bench: rc=$rc: $err"
 [ "$(tr '\n' ' ' <"$b/ran")" = "ran-a ran-c ran-d " ] || fail "bench: ran $(cat "$b/ran")"
+# check stopped by a signal: exit 128 + its number, as reproduce and sweep;
+# the experiment it was running is stopped, its folder removed.
+stop_check() {   # SIGNAL WANT_RC
+  local rc=0 k pid exp=""
+  : >"$out/check-stamp"
+  set -m
+  "$nl" check --quick C1 >/dev/null 2>"$out/check-stop.log" &
+  pid=$!
+  set +m
+  for ((k = 0; k < 600; k++)); do
+    exp="$(pgrep -f "^$root/build/experiments/c1_textures --out $root/build/check-quick\\." \
+           || true)"
+    [ -z "$exp" ] || break
+    sleep 0.1
+  done
+  [ -n "$exp" ] || fail "check --quick C1 never ran c1_textures: $(cat "$out/check-stop.log")"
+  kill -"$1" "$pid"
+  wait "$pid" || rc=$?
+  [ "$rc" = "$2" ] || fail "check got SIG$1: exit $rc, wanted $2: $(cat "$out/check-stop.log")"
+  ! kill -0 "$exp" 2>/dev/null || { kill "$exp"; fail "check got SIG$1: c1_textures still runs"; }
+  [ -z "$(find "$root/build" -maxdepth 1 -name 'check-quick.*' -newer "$out/check-stamp")" ] \
+    || fail "check got SIG$1: its folder is left: $(ls -d "$root"/build/check-quick.*)"
+}
+stop_check INT 130
+stop_check TERM 143
 # check --quick with an unknown id: the one line of resolve, nothing after it.
 one_line_exit2 "unknown experiment 'Q9'" check --quick Q9
 # Without --out, reproduce writes into the git-tracked results/ and says so
@@ -250,6 +349,14 @@ sed $'s/^images\t.*/images\tno/' "$rs/s4_marble/manifest.tsv" >"$out/noimages.ts
 { grep -q $'^images\tno$' "$out/noimages.tsv" \
   && ! matches "$out/noimages.tsv" s4_marble 1 1 "$c"; } \
   || fail "resume_matches: a --no-images run matches"
+# A package held at its version (apt-mark hold) is installed: no apt-get.
+mkdir -p "$out/dpkg"
+printf '#!/bin/sh\nprintf "gnuplot-nox hold ok installed\\nmeson install ok installed\\n"\n' \
+  >"$out/dpkg/dpkg-query"
+chmod +x "$out/dpkg/dpkg-query"
+# shellcheck disable=SC2016
+missing="$(PATH="$out/dpkg:$PATH" bash -c 'source "$1"; missing_packages gnuplot-nox meson pandoc' _ "$nl")"
+[ "$missing" = "pandoc " ] || fail "missing_packages with gnuplot-nox held: '$missing', wanted 'pandoc '"
 # ETA: previous times scaled by this run's pace, the mean so far for the rest.
 [ "$(bash -c 'source "$1"; repro_eta 10 1 5 20 -' _ "$nl")" = "1/3 done, elapsed 10 s, ETA 50 s (previous times and mean so far x 2)" ] \
   || fail "repro_eta: $(bash -c 'source "$1"; repro_eta 10 1 5 20 -' _ "$nl")"

@@ -3,9 +3,10 @@
 # parallel and merges; it resumes without rerunning finished tasks; a failed
 # task is reported with its log while the others finish; bad input and a
 # folder holding another sweep are refused (exit 2, nothing overwritten);
-# the job file and the Slurm script are written. With a Slurm cluster
-# (scripts/slurm-local.sh), the same sweep goes through sbatch and must merge
-# into identical tables.
+# the job file and the Slurm script are written; a signal stops it with
+# 128 + its number, and SIGKILL leaves nothing running nor behind for the
+# next run. With a Slurm cluster (scripts/slurm-local.sh), the same sweep
+# goes through sbatch and must merge into identical tables.
 set -euo pipefail
 tool="$1" expect="$2" out="$3"
 src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -47,6 +48,39 @@ printf 'not a folder\n' >"$fdir/tasks/0001"
 grep -q "task 0001 .*failed; log: $fdir/logs/0001.log" "$out/fail.err"
 grep -q '3/4 done, 1 failed' "$out/fail.err"
 [ -f "$fdir/tasks/0003/manifest.tsv" ]
+
+# Stopped by a signal, a sweep exits 128 + its number (SIGINT 130, SIGTERM
+# 143), as reproduce does. Killed outright (SIGKILL runs no trap), the
+# tasks it started stop with it, and the next run into the folder removes
+# its leftovers (.pending.*) and finishes the sweep.
+kdef=(a1_bounds --quick --param 'points=500,600,700,800,900,1000' --seeds 2 --jobs 1)
+stop_sweep() {   # DIR SIGNAL WANT_RC: stopped once its first task has finished
+  local d="$1" rc=0 k pid
+  set -m   # else a background job starts with SIGINT ignored
+  "${sweep[@]}" "${kdef[@]}" --out "$d" 2>"$out/stop.err" &
+  pid=$!
+  set +m
+  for ((k = 0; k < 1200; k++)); do
+    compgen -G "$d/tasks/*/manifest.tsv" >/dev/null && break
+    sleep 0.05
+  done
+  kill -"$2" "$pid"
+  wait "$pid" || rc=$?
+  [ "$rc" = "$3" ] \
+    || { cat "$out/stop.err"; echo "sweep stopped by SIG$2: exit $rc, wanted $3"; exit 1; }
+}
+stop_sweep "$out/stopped" TERM 143
+stop_sweep "$out/stopped" INT 130
+kdir="$out/killed"
+stop_sweep "$kdir" KILL 137
+for ((k = 0; k < 40; k++)); do pgrep -f -- "$kdir/" >/dev/null || break; sleep 0.05; done
+left="$(pgrep -a -f -- "$kdir/" || true)"
+[ -z "$left" ] || { echo "SIGKILL of the sweep left its tasks running after 2 s: $left"; exit 1; }
+"${sweep[@]}" "${kdef[@]}" --out "$kdir" 2>"$out/rerun.err" \
+  || { cat "$out/rerun.err"; echo "rerun after SIGKILL failed"; exit 1; }
+grep -q 'sweep: 12/12 done, 0 failed' "$out/rerun.err" || { cat "$out/rerun.err"; exit 1; }
+left="$(find "$kdir" -name '.pending.*' -o -name '.parallel.err')"
+[ -z "$left" ] || { echo "rerun after SIGKILL left $left"; exit 1; }
 
 # Bad input: one line, exit 2, and the sweep folder untouched.
 cp "$dir/sweep.tsv" "$out/sweep.before"

@@ -25,8 +25,11 @@
  * (the CPU, architecture, BLAS kernel and libm variant: those that differ
  * first, then "unknown" ones a manifest predates, then the same), then
  *   check: E experiments, T tables, V values compared, D drifted
+ * A new table that is missing or that the table reader refuses (a NUL byte,
+ * a ragged row) is drift, its line naming the reader's complaint.
  * Exit 0: no drift; 1: drift; 2: bad input (missing folder or manifest,
- * unreadable table, malformed rule or a rule naming a missing column).
+ * unreadable committed table, malformed rule, or a rule naming a table or
+ * column the committed folder does not have).
  * The engine is the harness's (nl_harness_check_experiment in
  * src/harness/nl_harness.h); this is its command line.
  */

@@ -25,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/utsname.h>
 #include <time.h>
 #include <unistd.h>
@@ -49,6 +50,12 @@ struct nl_harness {
   nl_table *manifest;     /* key, value (text) */
   nl_table *checks;       /* table, column, rule (text): regression rules */
   nl_table *verdicts;     /* quantity, source, paper, ours, ours_sd, rule, verdict, reason */
+  char **outputs;         /* files this run writes (nl_harness_path), and its figures */
+  size_t noutputs;
+  char **figures;         /* nl_harness_figure's files */
+  size_t nfigures;
+  char **previous;        /* outputs of earlier runs in the folder (prepare) */
+  size_t nprevious;
   char *md;               /* report section being built */
   size_t md_len, md_cap;
   double last_progress;
@@ -277,6 +284,106 @@ static const char *manifest_name(void)
   return "manifest.tsv";
 }
 
+/* ---- outputs: what a run wrote, so that the next run removes its stale ones
+ *
+ * The manifest lists every file the run wrote ("output" lines): the paths
+ * handed out by nl_harness_path (tables, images, report.md, checks.tsv,
+ * verdicts.tsv) and the figures named by nl_harness_figure (a PNG the
+ * program did not write is drawn by the entry script, with its SVG beside
+ * it). A run that completes removes the files an earlier run listed and it
+ * did not write: a table the code no longer makes would otherwise stay
+ * beside the new ones and be read by the regression check and REPORT.md.
+ * Files no run listed (a user's notes) are never touched. Between the
+ * removal of the old manifest (prepare) and the new one, the list waits in
+ * OUTPUTS_PENDING, so an interrupted run does not lose it. */
+#define OUTPUTS_PENDING ".outputs-previous.tsv"
+
+static int listed(char **names, size_t n, const char *name)
+{
+  for (size_t i = 0; i < n; i++)
+    if (!strcmp(names[i], name)) return 1;
+  return 0;
+}
+
+static void list_add(char ***names, size_t *n, const char *name)
+{
+  if (listed(*names, *n, name)) return;
+  *names = nl_xrealloc(*names, (*n + 1) * sizeof **names);
+  (*names)[(*n)++] = nl_xstrdup(name);
+}
+
+/* Adds to r->previous the names in column `col` of DIR/FILE whose key
+ * (column 0, when key is not NULL) is `key`; a missing file adds nothing. */
+static void previous_read(nl_harness *r, const char *file, const char *key, size_t col)
+{
+  char *p = nl_path_join(r->out, file);
+  nl_table *t;
+  nl_error err;
+  if (access(p, F_OK) == 0 && nl_table_read(p, NL_TABLE_TEXT, &t, &err) == NL_OK) {
+    for (size_t i = 0; i < t->nrows && col < t->ncols; i++) {
+      char ka[32], va[32];
+      if (key && strcmp(nl_table_cell_text(t, i, 0, ka), key)) continue;
+      list_add(&r->previous, &r->nprevious, nl_table_cell_text(t, i, col, va));
+    }
+    nl_table_free(t);
+  }
+  free(p);
+}
+
+/* The outputs of earlier runs, kept in OUTPUTS_PENDING before their
+ * manifest goes. */
+static void previous_keep(nl_harness *r)
+{
+  previous_read(r, "manifest.tsv", "output", 1);
+  previous_read(r, manifest_name(), "output", 1);
+  previous_read(r, OUTPUTS_PENDING, NULL, 0);
+  if (!r->nprevious) return;
+  const char *cols[] = {"output"};
+  nl_table *t = nl_table_alloc(1, cols);
+  for (size_t i = 0; i < r->nprevious; i++)
+    nl_table_append(t, "s", r->previous[i]);
+  char *p = nl_path_join(r->out, OUTPUTS_PENDING);
+  nl_error err;
+  nl_status st = nl_table_write(t, p, &err);
+  nl_table_free(t);
+  free(p);
+  if (st) nl_harness_die(r, 1, "%s", err.msg);
+}
+
+/* At the end: the manifest's "output" lines, and the earlier outputs this
+ * run did not write removed (plain names only: nothing outside the folder,
+ * no hidden file, never the manifest). */
+static void outputs_settle(nl_harness *r)
+{
+  size_t written = r->noutputs;
+  for (size_t i = 0; i < r->nfigures; i++) {
+    const char *f = r->figures[i];
+    size_t len = strlen(f);
+    if (listed(r->outputs, written, f)) continue;   /* an image the program wrote */
+    list_add(&r->outputs, &r->noutputs, f);
+    if (len > 4 && !strcmp(f + len - 4, ".png")) {   /* the entry script's SVG of it */
+      char *svg = nl_xstrdup(f);
+      strcpy(svg + len - 4, ".svg");
+      list_add(&r->outputs, &r->noutputs, svg);
+      free(svg);
+    }
+  }
+  for (size_t i = 0; i < r->noutputs; i++)
+    note(r, "output", r->outputs[i]);
+  for (size_t i = 0; i < r->nprevious; i++) {
+    const char *f = r->previous[i];
+    if (listed(r->outputs, r->noutputs, f) || strchr(f, '/') || f[0] == '.' || !f[0]
+        || !strcmp(f, "manifest.tsv"))
+      continue;
+    char *p = nl_path_join(r->out, f);
+    struct stat st;
+    if (lstat(p, &st) == 0 && !S_ISDIR(st.st_mode) && unlink(p) && errno != ENOENT)
+      nl_harness_die(r, 1, "%s: cannot remove this output of an earlier run: %s", p,
+                     strerror(errno));
+    free(p);
+  }
+}
+
 /* The run is about to write: every parameter has been accepted (unknown
  * --set names are refused here at the latest), so now the folder is made and
  * the previous run's manifest removed (a folder with a manifest is a
@@ -288,6 +395,7 @@ static void prepare(nl_harness *r)
   if (!r->params_checked) nl_harness_params_done(r);
   nl_error err;
   if (nl_mkdir_p(r->out, &err)) nl_harness_die(r, 1, "%s", err.msg);
+  previous_keep(r);
   const char *names[2] = {"manifest.tsv", manifest_name()};
   for (int k = 0; k < 2; k++) {
     char *m = nl_path_join(r->out, names[k]);
@@ -376,7 +484,10 @@ void nl_harness_params_done(nl_harness *r)
 
 char *nl_harness_path(const nl_harness *r, const char *file)
 {
-  prepare((nl_harness *)r);   /* r is always a heap nl_harness; the folder must exist for the caller */
+  nl_harness *w = (nl_harness *)r;   /* r is always a heap nl_harness */
+  prepare(w);   /* the folder must exist for the caller */
+  if (strcmp(file, "manifest.tsv") && strcmp(file, manifest_name()))
+    list_add(&w->outputs, &w->noutputs, file);
   return nl_path_join(r->out, file);
 }
 
@@ -503,6 +614,7 @@ void nl_harness_report_columns(nl_harness *r, const nl_table *t, const char *fil
 
 void nl_harness_figure(nl_harness *r, const char *file, const char *caption)
 {
+  list_add(&r->figures, &r->nfigures, file);
   nl_harness_text(r, "![%s](%s/%s)\n\n*%s*\n", caption, r->name, file, caption);
 }
 
@@ -823,7 +935,16 @@ int nl_harness_end(nl_harness *r)
   }
   /* Always written: an experiment without declarations is all `exact`. */
   nl_harness_write_table(r, r->checks, "checks.tsv");
+  outputs_settle(r);
   nl_harness_write_table(r, r->manifest, manifest_name());
+  char *pending = nl_path_join(r->out, OUTPUTS_PENDING);
+  if (unlink(pending) && errno != ENOENT)
+    nl_harness_die(r, 1, "%s: cannot remove: %s", pending, strerror(errno));
+  free(pending);
+  for (size_t i = 0; i < r->noutputs; i++) free(r->outputs[i]);
+  for (size_t i = 0; i < r->nfigures; i++) free(r->figures[i]);
+  for (size_t i = 0; i < r->nprevious; i++) free(r->previous[i]);
+  free(r->outputs); free(r->figures); free(r->previous);
   for (int k = 0; k < r->nset; k++) { free(r->set_key[k]); free(r->set_val[k]); }
   free(r->set_key); free(r->set_val); free(r->set_used); free(r->param);
   nl_table_free(r->manifest);

@@ -45,6 +45,11 @@
  * openblas_get_corename/config/num_threads; "none" without OpenBLAS).
  * The regression check compares none of these (nor started, seconds,
  * peak_rss_mb), but names cpu, arch, blas_core and libm when it finds drift.
+ * One "output" line per file the run wrote (every path nl_harness_path handed
+ * out, and each nl_harness_figure file; a PNG figure the program did not
+ * write is drawn by the entry script with an SVG beside it): a run that
+ * completes removes the files an earlier run in its folder listed and it did
+ * not write (a table the code no longer makes), never a file no run listed.
  * NL_MANIFEST_NAME (a hidden file name, set by the entry script) makes
  * nl_harness_end write the manifest under that name instead; the script renames
  * it to manifest.tsv once the figures are made. It is written last and removed first, so a
@@ -265,8 +270,10 @@ nl_status nl_harness_rule_parse(const char *s, nl_harness_rule *rule, nl_error *
  * then those that are the same. welch and ftest
  * p-values come from nl_stats_welch_p and nl_stats_ftest_p. Returns NL_OK
  * whether or not there was drift (counted in s), else a one-line message:
- * a missing folder or manifest, an unreadable table, a malformed rule or a
- * rule naming a missing column (the comparison stops there). */
+ * a missing folder or manifest, an unreadable committed table, a malformed
+ * rule or a rule naming a table or column the committed folder does not have
+ * (the comparison stops there). A new table that is missing or unreadable is
+ * drift ("missing", or "unreadable: " and the table reader's message). */
 #define NL_CHECK_SHOWN 10   /* drifted values printed per experiment without `all` */
 typedef struct {
   int all;                  /* print every drifted value */

@@ -7,10 +7,12 @@
 #include "stats/nl_stats.h"
 #include "table/nl_table.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 typedef struct {
   nl_harness_check_state *s;
@@ -155,16 +157,49 @@ static nl_status check_column(check_ctx *c, const char *file, const nl_table *re
   return NL_OK;
 }
 
+/* The new run's table: NULL and "missing" when there is no such file, NULL
+ * and the reader's message ("DIR/t.tsv:3: NUL byte in column 1") when it
+ * cannot be read. Either is drift in that run, not bad input: the run wrote
+ * no table to compare, and the other tables are still compared. */
+static nl_table *check_read_new(const char *dir, const char *file, char *why, size_t n)
+{
+  char *p = nl_path_join(dir, file);
+  nl_table *t = NULL;
+  nl_error e;
+  if (access(p, F_OK) != 0 && errno == ENOENT) snprintf(why, n, "missing");
+  else if (nl_table_read(p, NL_TABLE_TEXT, &t, &e)) snprintf(why, n, "unreadable: %s", e.msg);
+  free(p);
+  return t;
+}
+
+/* Every rule of checks.tsv for this table names one of its columns (or *):
+ * a rule for a column the reference does not have would compare nothing. */
+static nl_status check_rule_columns(const check_ctx *c, const char *ref_dir, const char *file,
+                                    const nl_table *ref, nl_error *err)
+{
+  for (size_t i = 0; c->rules && i < c->rules->nrows; i++) {
+    char **row = c->rules->text + i * c->rules->ncols;
+    if (!row[0] || !row[1] || strcmp(row[0], file) || !strcmp(row[1], "*")) continue;
+    if (nl_table_column(ref, row[1]) < 0)
+      return nl_fail(err, NL_EFORMAT, "%s/checks.tsv:%zu: rule '%s' for %s column %s: %s/%s has "
+                     "no such column", ref_dir, i + 2, row[2] ? row[2] : "", file, row[1], ref_dir,
+                     file);
+  }
+  return NL_OK;
+}
+
 /* One table: shape first (rows, columns on either side), then every value. */
 static nl_status check_table(check_ctx *c, const char *ref_dir, const char *new_dir, const char *file, nl_error *err)
 {
   nl_table *ref, *new;
+  char why[NL_ERROR_LEN + 16];
   nl_status st = check_read(ref_dir, file, 1, &ref, err);
   if (st) return st;
-  if ((st = check_read(new_dir, file, 0, &new, err))) { nl_table_free(ref); return st; }
+  if ((st = check_rule_columns(c, ref_dir, file, ref, err))) { nl_table_free(ref); return st; }
+  new = check_read_new(new_dir, file, why, sizeof why);
   char a[32], b[32];
   c->s->tables++;
-  if (!new) { drift(c, file, "-", "-", "table", "missing", "exact"); nl_table_free(ref); return NL_OK; }
+  if (!new) { drift(c, file, "-", "-", "table", why, "exact"); nl_table_free(ref); return NL_OK; }
   if (ref->nrows != new->nrows) {
     snprintf(a, sizeof a, "%zu rows", ref->nrows); snprintf(b, sizeof b, "%zu rows", new->nrows);
     drift(c, file, "-", "-", a, b, "exact");
@@ -275,6 +310,24 @@ static void check_summary(const check_ctx *c, const nl_table *ref, const nl_tabl
   fputc('\n', out);
 }
 
+/* Every rule of checks.tsv names a table of the reference folder: a rule
+ * for a table that is not there would silently check nothing. */
+static nl_status check_rule_tables(const check_ctx *c, const char *ref_dir, char **tables, size_t n,
+                                   nl_error *err)
+{
+  for (size_t i = 0; c->rules && i < c->rules->nrows; i++) {
+    char **row = c->rules->text + i * c->rules->ncols;
+    size_t k = 0;
+    while (k < n && (!row[0] || strcmp(row[0], tables[k])))
+      k++;
+    if (k == n)
+      return nl_fail(err, NL_EFORMAT, "%s/checks.tsv:%zu: rule '%s' for %s column %s: %s has no "
+                     "table %s", ref_dir, i + 2, row[2] ? row[2] : "", row[0] ? row[0] : "",
+                     row[1] ? row[1] : "", ref_dir, row[0] ? row[0] : "(empty)");
+  }
+  return NL_OK;
+}
+
 /* The manifests, the rules and every committed table, in name order. */
 static nl_status check_folders(check_ctx *c, const char *ref_dir, const char *new_dir, nl_table *mref,
                                nl_table *mnew, nl_error *err)
@@ -292,6 +345,7 @@ static nl_status check_folders(check_ctx *c, const char *ref_dir, const char *ne
   size_t n;
   char **tables = nl_harness_tables(ref_dir, &n, err);
   if (!tables) return NL_EIO;
+  st = check_rule_tables(c, ref_dir, tables, n, err);
   for (size_t i = 0; i < n; i++) {
     if (!st) st = check_table(c, ref_dir, new_dir, tables[i], err);
     free(tables[i]);
