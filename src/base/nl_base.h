@@ -35,6 +35,7 @@
 #ifndef NL_BASE_H
 #define NL_BASE_H
 
+#include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -51,9 +52,20 @@ typedef enum {
 typedef struct { char msg[NL_ERROR_LEN]; } nl_error;
 
 /* Sets err->msg (if err != NULL) and returns status, for `return nl_fail(...)`.
- * Control characters in the message (from an echoed input) become '?'. */
+ * The message stays one line whatever input it echoes: control characters
+ * are escaped (a newline as \n, a tab as \t, the others and DEL as \xNN).
+ * One too long for NL_ERROR_LEN loses the middle of its longest words (the
+ * paths and values it quotes: "/very/lo...ng/name.tsv: directory ... does not
+ * exist"), never its end, where the reason is. The arguments may include
+ * err->msg itself ("%s: %s", path, err->msg). */
 nl_status nl_fail(nl_error *err, nl_status status, const char *fmt, ...)
   __attribute__((format(printf, 3, 4)));
+
+/* Prints one line to f: fmt formatted, control characters escaped as by
+ * nl_fail, never cut, then a newline. For what a program says itself with
+ * input in it ("noiselab render: wrote FILE", a tool's error line). */
+void nl_message(FILE *f, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+void nl_vmessage(FILE *f, const char *fmt, va_list ap) __attribute__((format(printf, 2, 0)));
 
 /* Allocation that never returns NULL: out-of-memory is not a condition any
  * caller here can recover from. On failure it prints "noiselab: out of

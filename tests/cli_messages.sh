@@ -1,0 +1,91 @@
+#!/bin/bash
+# Messages: tests/cli_messages.sh RENDER STAT EXAMPLE PATTERNS SWEEP [NOISELAB].
+# A message quoting a path of 3000 bytes still ends with its reason (the
+# path loses its middle, never the reason); a path or a value holding a
+# newline, a tab or another control character gives one escaped line and a
+# non-zero exit, from the C tools and from the entry script (NOISELAB, given
+# in the release build only).
+set -u
+usage='usage: cli_messages.sh RENDER STAT EXAMPLE PATTERNS SWEEP [NOISELAB]'
+RENDER=$(realpath "${1:?$usage}")
+STAT=$(realpath "${2:?$usage}")
+EXAMPLE=$(realpath "${3:?$usage}")
+PATTERNS=$(realpath "${4:?$usage}")
+SWEEP=$(realpath "${5:?$usage}")
+NOISELAB="${6:+$(realpath "$6")}"
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+cd "$TMP" || exit 1
+pass=0 fail=0
+
+ok()  { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*" >&2; }
+check() { if "$@"; then ok; else bad "$*"; fi; }
+# FILE holds exactly one line, and it contains TEXT (fixed string)
+one_line() { [ "$(wc -l <"$1")" = 1 ] && grep -qF -- "$2" "$1"; }
+# FILE holds exactly one line, and it ends with TEXT
+ends_with() { [ "$(wc -l <"$1")" = 1 ] && [ "$(tail -c $((${#2} + 1)) "$1")" = "$2" ]; }
+# Runs CMD...; passes when it exits non-zero with one line on stderr holding TEXT.
+refused() {
+  local text="$1"; shift
+  "$@" >out 2>err
+  local rc=$?
+  if [ "$rc" != 0 ] && one_line err "$text"; then ok
+  else bad "$* (exit $rc): $(head -c 300 err)"; fi
+}
+
+seq 0 299 | awk '{ print ($1 * 7919) % 1000 }' >pts.tsv
+
+# ---- a path of 3000 bytes: the message ends with its reason
+seg=$(printf 'd%.0s' $(seq 196))
+long=.
+for _ in $(seq 15); do long="$long/$seg"; done
+"$STAT" ks "$long/in.tsv" >out 2>err
+check test $? = 2
+check ends_with err 'cannot open: No such file or directory'
+"$RENDER" fbm --size 8 -o "$long/out.png" >out 2>err
+check test $? = 2
+check ends_with err 'does not exist'
+"$STAT" hclust pts.tsv --linkage ward --clusters 3 --labels "$long/labels.tsv" >out 2>err
+check test $? = 2
+check ends_with err 'does not exist'
+"$EXAMPLE" analyse "$long/photo.png" -o params.tsv >out 2>err
+check test $? = 2
+check ends_with err 'No such file or directory'
+# the middle of the path goes, its start and its file name stay
+check grep -qF -- '...' err
+check grep -qF -- '/photo.png: ' err
+
+# ---- a newline, a tab or another control character: one escaped line
+nl=$'a\nb'
+refused 'a\nb/x.png: directory a\nb does not exist' "$RENDER" fbm --size 8 -o "$nl/x.png"
+refused 'a\tb\x01/x.png' "$RENDER" fbm --size 8 -o $'a\tb\x01/x.png'
+refused "'a\\nb' is not" "$RENDER" fbm --size 8 --basis "$nl" -o x.png
+refused 'a\nb: unknown noise' "$RENDER" "$nl" -o x.png
+refused 'a\nb: cannot open' "$STAT" ks "$nl"
+refused "--format: 'a\\nb' is not" "$STAT" ks pts.tsv --format "$nl"
+refused "unknown subcommand 'a\\nb'" "$STAT" "$nl" pts.tsv
+refused 'a\nb/p.tsv' "$STAT" gmm pts.tsv --k 1 --params "$nl/p.tsv"
+refused "unknown command 'a\\nb'" "$EXAMPLE" "$nl"
+refused 'a\nb' "$EXAMPLE" analyse "$nl" -o params.tsv
+refused "unexpected argument 'a\\nb'" "$PATTERNS" pat "$nl"
+refused "'a\\nb' is not a number" "$SWEEP" expand "x=$nl"
+check test ! -e pat
+
+# ---- the entry script: messages quoting what the user typed are one line
+if [ -n "$NOISELAB" ]; then
+  refused "unknown experiment 'a\\nb'" "$NOISELAB" params "$nl"
+  refused "unknown experiment 'a\\nb'" "$NOISELAB" reproduce "$nl"
+  refused "unknown experiment 'a\\nb'" "$NOISELAB" sweep "$nl"
+  refused "'a\\nb' is not a number" "$NOISELAB" sweep s3 --param "octaves=$nl" --out sw
+  touch afile
+  refused 'afile/a\nb: Not a directory' "$NOISELAB" reproduce --out "afile/$nl" S3
+  # a sweep folder's name goes into one-line job lines: refused
+  refused "--out: 'sw\\nx': a control character" \
+    "$NOISELAB" sweep s3 --param octaves=2 --quick --emit parallel --out $'sw\nx'
+  check test ! -e sw
+  check test -z "$(find . -maxdepth 1 -name 'sw*' -print -quit)"
+fi
+
+echo "cli_messages: $pass passed, $fail failed"
+[ "$fail" = 0 ]
