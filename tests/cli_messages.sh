@@ -1,10 +1,11 @@
 #!/bin/bash
-# Messages: tests/cli_messages.sh RENDER STAT EXAMPLE PATTERNS SWEEP [NOISELAB].
+# Messages and output names: tests/cli_messages.sh RENDER STAT EXAMPLE PATTERNS SWEEP [NOISELAB].
 # A message quoting a path of 3000 bytes still ends with its reason (the
 # path loses its middle, never the reason); a path or a value holding a
 # newline, a tab or another control character gives one escaped line and a
 # non-zero exit, from the C tools and from the entry script (NOISELAB, given
-# in the release build only).
+# in the release build only); any name the folder accepts (255 bytes) can be
+# written and leaves no temporary beside it.
 set -u
 usage='usage: cli_messages.sh RENDER STAT EXAMPLE PATTERNS SWEEP [NOISELAB]'
 RENDER=$(realpath "${1:?$usage}")
@@ -72,6 +73,26 @@ refused "unexpected argument 'a\\nb'" "$PATTERNS" pat "$nl"
 refused "'a\\nb' is not a number" "$SWEEP" expand "x=$nl"
 check test ! -e pat
 
+# ---- names of 248-255 bytes: written, nothing else left in the folder
+n255=$(printf 'n%.0s' $(seq 251))
+mkdir names
+for f in "$n255.png" "${n255:0:244}.png" "$n255.tsv" "a.$(printf 'e%.0s' $(seq 253))"; do
+  case "$f" in
+    *.png) "$RENDER" fbm --size 16 -o "names/$f" >out 2>err ;;
+    *) "$STAT" gmm pts.tsv --k 1 --params "names/$f" >out 2>err ;;
+  esac
+  check test $? = 0
+  check test -s "names/$f"
+done
+"$STAT" hclust pts.tsv --linkage ward --clusters 3 --labels "names/$n255.tsv" \
+  --merges "names/${n255:0:250}.tsv" >out 2>err
+check test $? = 0
+check test "$(head -1 "names/$n255.tsv")" = label
+check test "$(find names -mindepth 1 | wc -l)" = 5
+# a name one byte too long is refused, naming the file system's reason
+refused 'File name too long' "$STAT" gmm pts.tsv --k 1 --params "names/x$n255.tsv"
+check test "$(find names -mindepth 1 | wc -l)" = 5
+
 # ---- the entry script: messages quoting what the user typed are one line
 if [ -n "$NOISELAB" ]; then
   refused "unknown experiment 'a\\nb'" "$NOISELAB" params "$nl"
@@ -85,6 +106,14 @@ if [ -n "$NOISELAB" ]; then
     "$NOISELAB" sweep s3 --param octaves=2 --quick --emit parallel --out $'sw\nx'
   check test ! -e sw
   check test -z "$(find . -maxdepth 1 -name 'sw*' -print -quit)"
+  # a rerun still removes the short temporaries a SIGKILL left beside
+  # outputs of long names (.nl.XXXXXX.EXT, .nl.XXXXXX)
+  mkdir -p rep/s3_fbm
+  touch rep/s3_fbm/.nl.Ab3dE9.png rep/s3_fbm/.nl.Zz09aB
+  "$NOISELAB" reproduce --quick --out rep S3 >out 2>err
+  check test $? = 0
+  check test -f rep/s3_fbm/manifest.tsv
+  check test -z "$(find rep/s3_fbm -name '.nl.*' -print -quit)"
 fi
 
 echo "cli_messages: $pass passed, $fail failed"

@@ -201,7 +201,23 @@ char *nl_path_join(const char *dir, const char *name)
   return p;
 }
 
-char *nl_temp_sibling(const char *path)
+/* The longest file name the folder `dir` (length dirlen, "" for ".")
+ * accepts: pathconf's, or POSIX's usual 255 when it cannot say. */
+static size_t name_max_in(const char *dir, size_t dirlen)
+{
+  char *d = dirlen ? nl_xmalloc(dirlen + 1) : nl_xstrdup(".");
+  if (dirlen) {
+    memcpy(d, dir, dirlen);
+    d[dirlen] = '\0';
+  }
+  long m = pathconf(d, _PC_NAME_MAX);
+  free(d);
+  return m > 0 ? (size_t)m : 255;
+}
+
+/* nl_temp_sibling's template; *suffix: the bytes after its XXXXXX, for
+ * mkstemps. */
+static char *temp_template(const char *path, int *suffix)
 {
   const char *slash = strrchr(path, '/');
   const char *base = slash ? slash + 1 : path;
@@ -209,10 +225,28 @@ char *nl_temp_sibling(const char *path)
   size_t dirlen = (size_t)(base - path);
   size_t stemlen = dot ? (size_t)(dot - base) : strlen(base);
   const char *ext = dot ? dot : "";
-  size_t n = dirlen + 1 + stemlen + 8 + strlen(ext) + 1;
+  size_t extlen = strlen(ext), name_max = name_max_in(path, dirlen);
+  /* ".stem.XXXXXX.ext" is 8 bytes longer than the name: for a name the
+   * folder accepts but that leaves no room, the temporary is ".nl.XXXXXX.ext"
+   * (without the extension if even that is too long), a name the clean-up
+   * of leftovers still knows (".?*.XXXXXX[.*]", scripts/noiselab). */
+  const char *stem = base;
+  if (stemlen + extlen + 8 > name_max) {
+    stem = "nl";
+    stemlen = 2;
+    if (stemlen + extlen + 8 > name_max) extlen = 0;
+  }
+  size_t n = dirlen + 1 + stemlen + 8 + extlen + 1;
   char *t = nl_xmalloc(n);
-  snprintf(t, n, "%.*s.%.*s.XXXXXX%s", (int)dirlen, path, (int)stemlen, base, ext);
+  snprintf(t, n, "%.*s.%.*s.XXXXXX%.*s", (int)dirlen, path, (int)stemlen, stem, (int)extlen, ext);
+  *suffix = (int)extlen;
   return t;
+}
+
+char *nl_temp_sibling(const char *path)
+{
+  int suffix;
+  return temp_template(path, &suffix);
 }
 
 /* ---- temporaries removed at exit and on a signal --------------------
@@ -378,9 +412,8 @@ nl_status nl_atomic_open(nl_atomic_file *af, const char *path, nl_error *err)
   }
   af->path = nl_xstrdup(path);
   af->target = target == path ? af->path : target;
-  af->tmp = nl_temp_sibling(af->target);
-  const char *dot = strrchr(af->tmp, '.');
-  int suffix = (dot && strstr(af->tmp, "XXXXXX") < dot) ? (int)strlen(dot) : 0;
+  int suffix;
+  af->tmp = temp_template(af->target, &suffix);
   int fd = mkstemps(af->tmp, suffix);
   if (fd < 0) {
     int e = errno;

@@ -103,7 +103,10 @@ void nl_atomic_abort(nl_atomic_file *af);
 /* Writes n bytes to `path` the same way (open, write, commit). */
 nl_status nl_atomic_write(const char *path, const void *data, size_t n, nl_error *err);
 /* A temporary path beside `path` keeping its extension (image writers pick
- * the format from it): "dir/.name.XXXXXX.png". Caller frees. */
+ * the format from it): "dir/.name.XXXXXX.png", or "dir/.nl.XXXXXX.png" when
+ * the name is too long for that in its folder (NAME_MAX, 255 bytes on most
+ * file systems), so that every name the folder accepts can be written.
+ * Caller frees. */
 char *nl_temp_sibling(const char *path);
 
 /* Creates a directory and its parents (mkdir -p). An empty name is an

@@ -170,6 +170,41 @@ NL_TEST(messages_one_line_with_their_reason)
   NL_CHECK(whole && strstr(err.msg, ": bad") != NULL);
 }
 
+/* Every name the folder accepts can be written: the temporary of a name of
+ * NAME_MAX bytes is a short one in the same folder, and nothing is left. */
+NL_TEST(longest_names_are_written)
+{
+  nl_error err;
+  char name[256];
+  memset(name, 'n', 251);
+  strcpy(name + 251, ".png");
+  char *path = nl_path_join(dir, name);
+  char *t = nl_temp_sibling(path);
+  NL_CHECK(strlen(strrchr(t, '/') + 1) <= 255 && strstr(t, "/.nl.XXXXXX.png") != NULL);
+  free(t);
+  NL_CHECK(nl_atomic_write(path, "x", 1, &err) == NL_OK);
+  struct stat st;
+  NL_CHECK(stat(path, &st) == 0 && st.st_size == 1);
+  /* an extension too long to keep: dropped from the temporary only */
+  memset(name, 'e', 255);
+  name[0] = 'a';
+  name[1] = '.';
+  name[255] = '\0';
+  char *ext = nl_path_join(dir, name);
+  NL_CHECK(nl_atomic_write(ext, "y", 1, &err) == NL_OK);
+  NL_CHECK(stat(ext, &st) == 0 && st.st_size == 1);
+  DIR *d = opendir(dir);
+  int hidden = 0;
+  for (struct dirent *e; d && (e = readdir(d));)
+    hidden += strncmp(e->d_name, ".nl.", 4) == 0;
+  if (d) closedir(d);
+  NL_CHECK(hidden == 0);
+  unlink(path);
+  unlink(ext);
+  free(path);
+  free(ext);
+}
+
 NL_TEST(memory_sizes)
 {
   char b[32];
