@@ -5,7 +5,9 @@
 # newline, a tab or another control character gives one escaped line and a
 # non-zero exit, from the C tools and from the entry script (NOISELAB, given
 # in the release build only); any name the folder accepts (255 bytes) can be
-# written and leaves no temporary beside it.
+# written and leaves no temporary beside it; every output is checked before
+# the work starts (stat gmm --params before EM, render -o before the noise,
+# patterns' files before the first is written).
 set -u
 usage='usage: cli_messages.sh RENDER STAT EXAMPLE PATTERNS SWEEP [NOISELAB]'
 RENDER=$(realpath "${1:?$usage}")
@@ -92,6 +94,35 @@ check test "$(find names -mindepth 1 | wc -l)" = 5
 # a name one byte too long is refused, naming the file system's reason
 refused 'File name too long' "$STAT" gmm pts.tsv --k 1 --params "names/x$n255.tsv"
 check test "$(find names -mindepth 1 | wc -l)" = 5
+
+# ---- every output is checked before the work starts
+# stat gmm --params: refused before EM (no fit line on stdout), the path named
+refused 'nodir/p.tsv: directory nodir does not exist' \
+  "$STAT" gmm pts.tsv --k 2 --params nodir/p.tsv
+check test ! -s out
+mkdir adir
+refused 'adir: is a directory' "$STAT" gmm pts.tsv --k 2 --params adir
+check test ! -s out
+ln -s missing.tsv dangling.tsv
+refused 'dangling.tsv: symbolic link to a missing file' \
+  "$STAT" gmm pts.tsv --k 2 --params dangling.tsv
+check test ! -s out
+check test -L dangling.tsv
+# render -o: a link to nothing is named before the noise is set up (whose
+# own error would otherwise come first)
+ln -s missing.png dangling.png
+refused 'dangling.png: symbolic link to a missing file' \
+  "$RENDER" fbm --octaves 30 --lacunarity 1e6 --size 8 -o dangling.png
+# patterns: a name taken by a directory refuses the lot, nothing written
+mkdir -p pats/spiral.png
+refused 'pats/spiral.png: is a directory' "$PATTERNS" pats --size 16
+check test "$(find pats -mindepth 1 | wc -l)" = 1
+if [ "$(id -u)" != 0 ]; then
+  mkdir ro && chmod a-w ro
+  refused 'ro/p.tsv: directory ro is not writable' "$STAT" gmm pts.tsv --k 2 --params ro/p.tsv
+  check test ! -s out
+  chmod u+w ro
+fi
 
 # ---- the entry script: messages quoting what the user typed are one line
 if [ -n "$NOISELAB" ]; then

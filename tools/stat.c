@@ -429,13 +429,6 @@ static void run_chisq(const opts *o)
   nl_table_free(t);
 }
 
-static void write_or_die(const opts *o, nl_table *t, const char *path)
-{
-  nl_error err;
-  if (nl_table_write(t, path, &err)) die(o->sub, "%s", err.msg);
-  nl_table_free(t);
-}
-
 static void run_hclust(const opts *o)
 {
   nl_cluster_linkage_method m;
@@ -492,7 +485,9 @@ static void fit_record(record *r, size_t n, size_t k, double ll, double aic, dou
   rec_size(r, "converged", (size_t)conv);
 }
 
-static void write_params(const opts *o, const nl_gmm *g)
+/* Into af, opened (and so checked) before the fit: a bad --params is
+ * refused before EM runs, as hclust's outputs are. */
+static void write_params(const opts *o, const nl_gmm *g, nl_atomic_file *af)
 {
   const char *cols[] = {"component", "param", "i", "j", "value"};
   nl_table *t = nl_table_alloc(5, cols);
@@ -507,7 +502,9 @@ static void write_params(const opts *o, const nl_gmm *g)
         nl_table_append(t, "isiid", (int)k + 1, "cov", (int)i + 1, (int)j + 1, v);
       }
   }
-  write_or_die(o, t, o->params_out);
+  nl_error err;
+  if (nl_table_write_to(t, af, &err) || nl_atomic_commit(af, &err)) die(o->sub, "%s", err.msg);
+  nl_table_free(t);
 }
 
 /* Constant columns are legal (reg_covar keeps their variance finite), but
@@ -546,9 +543,12 @@ static void run_gmm(const opts *o)
   go.tol = o->tol;
   go.max_iter = (size_t)o->max_iter;
   go.reg_covar = o->reg;
+  nl_error err;
+  /* A temporary left by die() is removed at exit. */
+  nl_atomic_file af = {0};
+  if (o->params_out && nl_atomic_open(&af, o->params_out, &err)) die(o->sub, "%s", err.msg);
   nl_table *t = read_table(o, o->files[0]);
   size_t n = t->nrows, d = t->ncols;
-  nl_error err;
   nl_gmm *g;
   if (o->have_k) {
     if ((size_t)o->k > n) {
@@ -582,7 +582,7 @@ static void run_gmm(const opts *o)
     free(path);
   }
   note_constant_columns(o, t);
-  if (o->params_out) write_params(o, g);
+  if (o->params_out) write_params(o, g, &af);
   nl_gmm_free(g);
   nl_table_free(t);
 }

@@ -321,6 +321,8 @@ static void live_remove(int slot)
 
 /* ---- atomic output ----------------------------------------------------- */
 
+static nl_status path_check_folder(const char *path, nl_error *err);
+
 /* Closes and removes whatever af still holds, and frees it. */
 static void atomic_release(nl_atomic_file *af)
 {
@@ -396,7 +398,7 @@ nl_status nl_atomic_open(nl_atomic_file *af, const char *path, nl_error *err)
   memset(af, 0, sizeof *af);
   /* "", "dir/", a directory or a parent that is a file: say so, naming the
    * target, before a temporary file is made. */
-  nl_status c = nl_path_check_writable(path, err);
+  nl_status c = path_check_folder(path, err);
   if (c) return c;
   int through;
   char *target = atomic_target(path, &through, err);
@@ -406,7 +408,7 @@ nl_status nl_atomic_open(nl_atomic_file *af, const char *path, nl_error *err)
     if (target != path) free(target);
     return s;
   }
-  if (target != path && (c = nl_path_check_writable(target, err))) {
+  if (target != path && (c = path_check_folder(target, err))) {
     free(target);
     return c;
   }
@@ -418,7 +420,7 @@ nl_status nl_atomic_open(nl_atomic_file *af, const char *path, nl_error *err)
   if (fd < 0) {
     int e = errno;
     /* The reason, naming the target rather than the temporary name. */
-    nl_status s = nl_path_check_writable(af->target, err);
+    nl_status s = path_check_folder(af->target, err);
     if (!s) s = nl_fail(err, NL_EIO, "%s: cannot create: %s", path, strerror(e));
     free(af->tmp);
     af->tmp = NULL;
@@ -557,7 +559,8 @@ nl_status nl_mkdir_p(const char *dir, nl_error *err)
   return s;
 }
 
-nl_status nl_path_check_writable(const char *path, nl_error *err)
+/* The checks of nl_path_check_writable on the name itself and its folder. */
+static nl_status path_check_folder(const char *path, nl_error *err)
 {
   if (!path || !*path) return nl_fail(err, NL_EINVAL, "'': empty file name");
   size_t n = strlen(path);
@@ -586,6 +589,23 @@ nl_status nl_path_check_writable(const char *path, nl_error *err)
     s = nl_fail(err, NL_EIO, "%s: is a directory", path);
   }
   free(dir);
+  return s;
+}
+
+nl_status nl_path_check_writable(const char *path, nl_error *err)
+{
+  nl_status s = path_check_folder(path, err);
+  if (s) return s;
+  /* What is there (nl_atomic_open's rules): a link to nothing, a socket or
+   * a block device is refused now, before any work; a link's target must
+   * be writable in its own folder. */
+  int through;
+  char *target = atomic_target(path, &through, err);
+  if (!target) return NL_EIO;
+  if (target != path) {
+    s = through ? NL_OK : path_check_folder(target, err);
+    free(target);
+  }
   return s;
 }
 

@@ -112,11 +112,14 @@ char *nl_temp_sibling(const char *path);
 /* Creates a directory and its parents (mkdir -p). An empty name is an
  * error ("'': empty directory name"). */
 nl_status nl_mkdir_p(const char *dir, nl_error *err);
-/* Checks that a file can be created at `path`: its parent exists, is a
- * directory and is writable, and path itself is not a directory. Fails with
- * a message naming path and the reason ("afile/x.png: parent afile is not a
- * directory"). A character device or FIFO passes whatever its folder (it is
- * written through). nl_atomic_open adds the checks on what path is (above). */
+/* Checks that nl_atomic_open would accept `path`, without creating
+ * anything: its parent exists, is a directory and is writable, and what is
+ * at path is one of the kinds above (not a directory, a link to nothing, a
+ * socket or a block device; a link's target is checked in its own folder).
+ * Fails with a message naming path and the reason ("afile/x.png: parent
+ * afile is not a directory"). A character device or FIFO passes whatever
+ * its folder (it is written through). Programs call it for every output
+ * before their work starts. */
 nl_status nl_path_check_writable(const char *path, nl_error *err);
 
 /* ---- memory a request needs ---------------------------------------------
