@@ -1,7 +1,28 @@
 # scripts/experiments.sh - sourced by scripts/noiselab and scripts/sweep.sh:
-# the experiments of a build and experiment names. Needs BUILD (the build
-# folder) and die (prints its message, exits 2) from the script that sources it.
+# the experiments of a build and experiment names, and the escaping of their
+# messages. Needs BUILD (the build folder) and die (prints its message, exits
+# 2) from the script that sources it.
 # shellcheck shell=bash
+
+# REPLY = the words given, with control characters escaped as the C tools'
+# messages have them (nl_fail: a newline as \n, a tab as \t, the others as
+# \xNN): a message that quotes a path or a value the user typed stays one
+# line. A message without any costs no loop.
+message_line() {
+  REPLY="$*"
+  [[ "$REPLY" == *[[:cntrl:]]* ]] || return 0
+  local s="$REPLY" c i hex
+  REPLY=""
+  for ((i = 0; i < ${#s}; i++)); do
+    c="${s:i:1}"
+    case "$c" in
+      $'\n') REPLY+='\n' ;;
+      $'\t') REPLY+='\t' ;;
+      [[:cntrl:]]) printf -v hex '\\x%02x' "'$c"; REPLY+="$hex" ;;
+      *) REPLY+="$c" ;;
+    esac
+  done
+}
 
 # The experiments of this build, in report order.
 experiment_list() { grep -v '^$' "$BUILD/experiments/experiments.txt" || true; }

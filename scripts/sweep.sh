@@ -20,8 +20,9 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="${NL_BUILD:-$ROOT/build}"
 TOOL="$BUILD/tools/noiselab-sweep"
 
-say() { printf '%s\n' "$*" >&2; }
-die() { printf 'noiselab sweep: %s\n' "$*" >&2; exit 2; }
+# One line each, whatever input they quote (message_line, experiments.sh).
+say() { message_line "$@"; printf '%s\n' "$REPLY" >&2; }
+die() { message_line "$@"; printf 'noiselab sweep: %s\n' "$REPLY" >&2; exit 2; }
 # shellcheck source=scripts/experiments.sh
 source "$ROOT/scripts/experiments.sh"   # resolve
 # shellcheck source=scripts/lock.sh

@@ -35,12 +35,20 @@
  */
 #include "harness/nl_harness.h"
 
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
-static int die(const char *msg)
+/* One line on stderr; returns check's exit for bad input. Input quoted in
+ * the message is escaped (nl_message). */
+static int die(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+static int die(const char *fmt, ...)
 {
-  fprintf(stderr, "noiselab-check: %s\n", msg);
+  va_list ap;
+  va_start(ap, fmt);
+  fputs("noiselab-check: ", stderr);
+  nl_vmessage(stderr, fmt, ap);
+  va_end(ap);
   return 2;
 }
 
@@ -56,10 +64,8 @@ int main(int argc, char **argv)
   nl_opt_begin(&p, argc, argv, 1, spec);
   for (int k; (k = nl_opt_next(&p, &err)) != NL_OPT_END;) {
     if (k == NL_OPT_ERROR) {
-      char m[NL_ERROR_LEN + 32];
-      snprintf(m, sizeof m, "%s (see --help)", err.msg);
       nl_opt_end(&p);
-      return die(m);
+      return die("%s (see --help)", err.msg);
     }
     if (k == 1) {
       printf("usage: noiselab-check [--all] COMMITTED_DIR NEW_DIR\n"
@@ -80,12 +86,13 @@ int main(int argc, char **argv)
   nl_opt_end(&p);
   argc = w;
   if (argc < 3) return die("wanted COMMITTED NEW [EXPERIMENT...] (see --help)");
-  if (argc == 3 && nl_harness_check_experiment(&s, argv[1], argv[2], &err)) return die(err.msg);
+  if (argc == 3 && nl_harness_check_experiment(&s, argv[1], argv[2], &err))
+    return die("%s", err.msg);
   for (int i = 3; i < argc; i++) {
     char *a = nl_path_join(argv[1], argv[i]), *b = nl_path_join(argv[2], argv[i]);
     nl_status st = nl_harness_check_experiment(&s, a, b, &err);
     free(a); free(b);
-    if (st) return die(err.msg);
+    if (st) return die("%s", err.msg);
   }
   nl_harness_check_totals(&s);
   return s.drifted ? 1 : 0;

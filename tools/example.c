@@ -14,6 +14,7 @@
 #include "byexample/nl_byexample.h"
 #include "study/nl_study.h"
 
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -48,14 +49,19 @@ static void usage(FILE *fp)
         fp);
 }
 
-static void die(const char *msg) __attribute__((noreturn));
-static void die(const char *msg)
+/* One line on stderr, exit 2: input quoted in it is escaped (nl_message). */
+static void die(const char *fmt, ...) __attribute__((format(printf, 1, 2), noreturn));
+static void die(const char *fmt, ...)
 {
-  fprintf(stderr, "noiselab example: %s\n", msg);
+  va_list ap;
+  va_start(ap, fmt);
+  fputs("noiselab example: ", stderr);
+  nl_vmessage(stderr, fmt, ap);
+  va_end(ap);
   exit(2);
 }
 
-static void check(nl_status st, const nl_error *err) { if (st) die(err->msg); }
+static void check(nl_status st, const nl_error *err) { if (st) die("%s", err->msg); }
 
 typedef struct {
   const char *pos[2];
@@ -85,9 +91,9 @@ static void parse(int argc, char **argv, args *a)
   for (int k; (k = nl_opt_next(&p, &err)) != NL_OPT_END;) {
     const char *v = p.value[0];
     switch (k) {
-    case NL_OPT_ERROR: { char m[NL_ERROR_LEN + 16]; snprintf(m, sizeof m, "%s (try --help)", err.msg); die(m); }
+    case NL_OPT_ERROR: die("%s (try --help)", err.msg);
     case NL_OPT_POSITIONAL:
-      if (a->npos == 2) { snprintf(err.msg, sizeof err.msg, "%s: unexpected argument", v); die(err.msg); }
+      if (a->npos == 2) die("%s: unexpected argument", v);
       a->pos[a->npos++] = v;
       break;
     case O_OUT: a->out = v; break;
@@ -141,14 +147,11 @@ static int analyse(const args *a)
   nl_byexample_options o = {!a->rgb, !a->nohist, 0, 0, a->paperhist ? NL_HIST_PAPER : NL_HIST_GAUSS,
                             a->nocal ? 0 : NL_BYEXAMPLE_CALIBRATE};
   nl_byexample_params p;
-  if (nl_byexample_analyse(im, &o, &p, &err)) {
-    char msg[NL_ERROR_LEN + 300];
-    snprintf(msg, sizeof msg, "%s: %s", a->pos[0], err.msg);
-    die(msg);
-  }
+  if (nl_byexample_analyse(im, &o, &p, &err)) die("%s: %s", a->pos[0], err.msg);
   check(nl_byexample_params_save(&p, a->out, &err), &err);
-  fprintf(stderr, "noiselab example: wrote %s (%d parameters: %d channel%s, %d quantiles, %d bands)\n", a->out,
-          nl_byexample_param_count(&p), p.channels, p.channels > 1 ? "s" : "", p.nhist, p.nbands);
+  nl_message(stderr, "noiselab example: wrote %s (%d parameters: %d channel%s, %d quantiles, "
+             "%d bands)", a->out, nl_byexample_param_count(&p), p.channels,
+             p.channels > 1 ? "s" : "", p.nhist, p.nbands);
   nl_image_free(im);
   return 0;
 }
@@ -191,11 +194,8 @@ static int morph(const args *a)
   if (!a->have_t) die("--t T is required");
   check(nl_byexample_params_load(a->pos[0], &p1, &err), &err);
   check(nl_byexample_params_load(a->pos[1], &p2, &err), &err);
-  if (nl_byexample_morph(&p1, &p2, a->t, &m, &err)) {
-    char msg[NL_ERROR_LEN + 600];
-    snprintf(msg, sizeof msg, "%s, %s: %s", a->pos[0], a->pos[1], err.msg);
-    die(msg);
-  }
+  if (nl_byexample_morph(&p1, &p2, a->t, &m, &err))
+    die("%s, %s: %s", a->pos[0], a->pos[1], err.msg);
   if (a->have_size) {
     synth_write(&m, a);
     return 0;
@@ -214,11 +214,9 @@ static int compare(const args *a)
   nl_image *im[2];
   if (a->npos != 2) die("compare takes PHOTO and SYNTH");
   for (int i = 0; i < 2; i++) check(nl_image_read(a->pos[i], &im[i], &err), &err);
-  if (im[0]->width < NL_BYEXAMPLE_MIN_SIZE || im[0]->height < NL_BYEXAMPLE_MIN_SIZE) {
-    snprintf(err.msg, sizeof err.msg, "%.200s: image is %d x %d pixels, smaller than %d", a->pos[0],
-             im[0]->width, im[0]->height, NL_BYEXAMPLE_MIN_SIZE);
-    die(err.msg);
-  }
+  if (im[0]->width < NL_BYEXAMPLE_MIN_SIZE || im[0]->height < NL_BYEXAMPLE_MIN_SIZE)
+    die("%s: image is %d x %d pixels, smaller than %d", a->pos[0], im[0]->width, im[0]->height,
+        NL_BYEXAMPLE_MIN_SIZE);
   nl_table *bt = nl_study_example_band_table(), *st = nl_study_example_summary_table();
   nl_study_example_compare(im[0], im[1], a->pos[0], a->pos[1], 0, 0.02, 1.3, 0.03, bt, st);
   /* Both tables or neither: the second path is checked before the first
@@ -245,9 +243,7 @@ int main(int argc, char **argv)
   args a;
   if (strcmp(cmd, "analyse") && strcmp(cmd, "analyze") && strcmp(cmd, "synthesize") &&
       strcmp(cmd, "synthesise") && strcmp(cmd, "morph") && strcmp(cmd, "compare")) {
-    char msg[300];
-    snprintf(msg, sizeof msg, "unknown command '%.200s' (analyse, synthesize, morph, compare)", cmd);
-    die(msg);
+    die("unknown command '%s' (analyse, synthesize, morph, compare)", cmd);
   }
   parse(argc, argv, &a);
   if (!strncmp(cmd, "analy", 5)) return analyse(&a);

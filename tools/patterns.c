@@ -13,6 +13,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* DIR/SHAPE.png for shape k. Caller frees. */
+static char *shape_path(const char *dir, int k)
+{
+  char file[64];
+  snprintf(file, sizeof file, "%s.png", nl_study_cheng_shape_names[k]);
+  return nl_path_join(dir, file);
+}
+
 int main(int argc, char **argv)
 {
   nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
@@ -24,12 +32,16 @@ int main(int argc, char **argv)
   nl_opt_begin(&p, argc, argv, 1, spec);
   for (int k; (k = nl_opt_next(&p, &err)) != NL_OPT_END;) {
     if (k == NL_OPT_ERROR) {
-      fprintf(stderr, "patterns: %s (usage: noiselab patterns DIR [--size N])\n", err.msg);
+      nl_message(stderr, "patterns: %s (usage: noiselab patterns DIR [--size N])", err.msg);
       nl_opt_end(&p);
       return 2;
     }
     if (k == 0) {
-      if (nl_parse_long("--size", p.value[0], 8, 4096, &size, &err)) { fprintf(stderr, "patterns: %s\n", err.msg); nl_opt_end(&p); return 2; }
+      if (nl_parse_long("--size", p.value[0], 8, 4096, &size, &err)) {
+        nl_message(stderr, "patterns: %s", err.msg);
+        nl_opt_end(&p);
+        return 2;
+      }
     } else if (k == 1) {
       printf("usage: noiselab patterns DIR [--size N]\nshapes:");
       for (int j = 0; nl_study_cheng_shape_names[j]; j++) printf(" %s", nl_study_cheng_shape_names[j]);
@@ -37,22 +49,29 @@ int main(int argc, char **argv)
       nl_opt_end(&p);
       return 0;
     } else if (dir) {
-      fprintf(stderr, "patterns: unexpected argument '%s' (usage: noiselab patterns DIR [--size N])\n", p.value[0]);
+      nl_message(stderr, "patterns: unexpected argument '%s' "
+                 "(usage: noiselab patterns DIR [--size N])", p.value[0]);
       nl_opt_end(&p);
       return 2;
     } else dir = p.value[0];
   }
   nl_opt_end(&p);
   if (!dir) { fprintf(stderr, "patterns: missing output folder (usage: noiselab patterns DIR [--size N])\n"); return 2; }
-  if (nl_mkdir_p(dir, &err)) { fprintf(stderr, "patterns: %s\n", err.msg); return 1; }
+  if (nl_mkdir_p(dir, &err)) { nl_message(stderr, "patterns: %s", err.msg); return 1; }
+  /* Every file is checked before the first is written (a folder that is not
+   * writable, a name taken by a directory): all are refused alike. */
   for (int k = 0; nl_study_cheng_shape_names[k]; k++) {
-    char file[64];
-    snprintf(file, sizeof file, "%s.png", nl_study_cheng_shape_names[k]);
-    char *path = nl_path_join(dir, file);
+    char *path = shape_path(dir, k);
+    nl_status c = nl_path_check_writable(path, &err);
+    free(path);
+    if (c) { nl_message(stderr, "patterns: %s", err.msg); return 1; }
+  }
+  for (int k = 0; nl_study_cheng_shape_names[k]; k++) {
+    char *path = shape_path(dir, k);
     nl_image *im = nl_study_cheng_shape(nl_study_cheng_shape_names[k], (int)size);
     nl_status s = nl_image_write(im, path, 8, &err);
     nl_image_free(im);
-    if (s) { fprintf(stderr, "patterns: %s\n", err.msg); free(path); return 1; }
+    if (s) { nl_message(stderr, "patterns: %s", err.msg); free(path); return 1; }
     printf("%s\n", path);
     free(path);
   }

@@ -14,6 +14,7 @@
 #include "table/nl_table.h"
 
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -89,18 +90,28 @@ static void usage(void)
          bases, nl_basis_default()->under);
 }
 
-static void fail(const char *msg) { fprintf(stderr, "noiselab render: %s\n", msg); exit(2); }
+/* One line on stderr, exit 2: input quoted in it is escaped (nl_message). */
+static void fail(const char *fmt, ...) __attribute__((format(printf, 1, 2), noreturn));
+static void fail(const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  fputs("noiselab render: ", stderr);
+  nl_vmessage(stderr, fmt, ap);
+  va_end(ap);
+  exit(2);
+}
 
 static void num(const char *opt, const char *val, double lo, double hi, double *out)
 {
   nl_error err;
-  if (nl_parse_double(opt, val, lo, hi, out, &err)) fail(err.msg);
+  if (nl_parse_double(opt, val, lo, hi, out, &err)) fail("%s", err.msg);
 }
 
 static void integer(const char *opt, const char *val, long lo, long hi, long *out)
 {
   nl_error err;
-  if (nl_parse_long(opt, val, lo, hi, out, &err)) fail(err.msg);
+  if (nl_parse_long(opt, val, lo, hi, out, &err)) fail("%s", err.msg);
 }
 
 static int one_of(const char *s, const char *const *list)
@@ -138,12 +149,11 @@ static void parse(int argc, char **argv, options *o)
   nl_opt_begin(&p, argc, argv, 1, spec);
   for (int k; (k = nl_opt_next(&p, &err)) != NL_OPT_END;) {
     const char *a = p.name, *v = p.value[0];
-    char m[NL_ERROR_LEN + 32];
     if (k >= 0) given[k] = 1;
     switch (k) {
-    case NL_OPT_ERROR: snprintf(m, sizeof m, "%s (see --help)", err.msg); fail(m); break;
+    case NL_OPT_ERROR: fail("%s (see --help)", err.msg);
     case NL_OPT_POSITIONAL:
-      if (o->noise) { snprintf(m, sizeof m, "%s: only one NOISE may be given", v); fail(m); }
+      if (o->noise) fail("%s: only one NOISE may be given", v);
       o->noise = v;
       break;
     case R_HELP: usage(); exit(0);
@@ -169,8 +179,7 @@ static void parse(int argc, char **argv, options *o)
     case R_LAMBDA:
       num(a, v, -1e9, 1e9, &o->bo.lambda);
       if (!(o->bo.lambda > 0 && o->bo.lambda <= 1000)) {
-        snprintf(m, sizeof m, "--lambda: %s must be in (0, 1000] (mean feature points per unit cube)", v);
-        fail(m);
+        fail("--lambda: %s must be in (0, 1000] (mean feature points per unit cube)", v);
       }
       break;
     case R_POINTS: integer(a, v, 1, NL_CELLULAR_MAX_M, &o->bo.points); break;
@@ -178,7 +187,7 @@ static void parse(int argc, char **argv, options *o)
     }
   }
   nl_opt_end(&p);
-  char m[512], list[256];
+  char list[256];
   if (!o->noise) fail("no NOISE given (see --help)");
   /* The chosen sum (a single noise is the sum of one octave) and basis, as
    * the registry knows them; reads: what each of them takes from options. */
@@ -211,35 +220,36 @@ static void parse(int argc, char **argv, options *o)
     {R_BITS, !is_tsv, "a .tsv holds the values as text"},
     {R_NORMALIZE, !is_tsv, "a .tsv holds the raw values"},
   };
-  for (size_t i = 0; i < sizeof rules / sizeof *rules; i++)
-    if (given[rules[i].opt] && !rules[i].applies)
-      fprintf(stderr, "noiselab render: warning: --%s ignored for %s%s: %s\n", spec[rules[i].opt].name,
-              o->noise, is_tsv && (rules[i].opt == R_BITS || rules[i].opt == R_NORMALIZE) ? " to a .tsv" : "", rules[i].why);
+  for (size_t i = 0; i < sizeof rules / sizeof *rules; i++) {
+    if (!given[rules[i].opt] || rules[i].applies) continue;
+    int format = rules[i].opt == R_BITS || rules[i].opt == R_NORMALIZE;
+    nl_message(stderr, "noiselab render: warning: --%s ignored for %s%s: %s",
+               spec[rules[i].opt].name, o->noise, is_tsv && format ? " to a .tsv" : "",
+               rules[i].why);
+  }
   if (given[R_BITS] && o->out && (ends_with(o->out, ".jpg") || ends_with(o->out, ".jpeg")) && o->bits != 8)
   { fprintf(stderr, "noiselab render: warning: --bits %ld: JPEG stores 8 bits; writing 8\n", o->bits); o->bits = 8; }
   if (!known) {
     names(list, sizeof list, 0, ", ", ", ");
-    snprintf(m, sizeof m, "%s: unknown noise (%s)", o->noise, list);
-    fail(m);
+    fail("%s: unknown noise (%s)", o->noise, list);
   }
   if (!o->out) fail("-o: no output file given");
   const char *norms[] = {"bound", "range", NULL}, *counts[] = {"inverse", "closest", NULL};
   const nl_basis_kind *under = nl_basis_find(o->basis);
   if (!under || strcmp(o->basis, under->under)) {
     names(list, sizeof list, 1, ", ", " or ");
-    snprintf(m, sizeof m, "--basis: '%s' is not %s", o->basis, list);
-    fail(m);
+    fail("--basis: '%s' is not %s", o->basis, list);
   }
   if (!one_of(o->count, counts)) {
-    snprintf(m, sizeof m, "--count: '%s' is not inverse or closest", o->count);
-    fail(m);
+    fail("--count: '%s' is not inverse or closest", o->count);
   }
   o->bo.count = !strcmp(o->count, "closest") ? NL_COUNT_CLOSEST : NL_COUNT_INVERSE_CDF;
-  if (!one_of(o->normalize, norms)) { snprintf(m, sizeof m, "--normalize: '%s' is not bound or range", o->normalize); fail(m); }
-  if (o->bits && o->bits != 8 && o->bits != 16 && o->bits != 32) { snprintf(m, sizeof m, "--bits: %ld is not 8, 16 or 32", o->bits); fail(m); }
+  if (!one_of(o->normalize, norms)) fail("--normalize: '%s' is not bound or range", o->normalize);
+  if (o->bits && o->bits != 8 && o->bits != 16 && o->bits != 32)
+    fail("--bits: %ld is not 8, 16 or 32", o->bits);
   nl_error berr;
   if (!ends_with(o->out, ".tsv") && nl_image_check_bits(o->out, (int)o->bits, &berr))
-    fail(berr.msg);
+    fail("%s", berr.msg);
   /* values (double) and the image (float); a .tsv holds 3 columns of a
    * table (number and text slot each) that may be doubled while growing */
   size_t len = strlen(o->out);
@@ -247,16 +257,15 @@ static void parse(int argc, char **argv, options *o)
   double bytes = (double)o->size * o->size * (12.0 + (tsv ? 96.0 : 0.0));
   if (!nl_mem_fits(bytes)) {
     char b1[32], b2[32];
-    snprintf(m, sizeof m, "--size %ld%s needs %s of memory; this machine has %s", o->size,
-             tsv ? " as a .tsv" : "", nl_format_bytes(b1, bytes), nl_format_bytes(b2, nl_mem_physical()));
-    fail(m);
+    fail("--size %ld%s needs %s of memory; this machine has %s", o->size, tsv ? " as a .tsv" : "",
+         nl_format_bytes(b1, bytes), nl_format_bytes(b2, nl_mem_physical()));
   }
 }
 
 static void check_writable(const char *path)
 {
   nl_error err;
-  if (nl_path_check_writable(path, &err)) fail(err.msg);
+  if (nl_path_check_writable(path, &err)) fail("%s", err.msg);
 }
 
 /* The lattice coordinate of the finest octave must stay below 2^52: beyond
@@ -273,18 +282,15 @@ static void check_lattice(const options *o, const nl_noise_octaves *oct, const n
     f = fmax(f, fabs(oct->freq[l]));
   if (f * c < 0x1p52)
     return;
-  char m[600];
   if (o->sum->reads & NL_BASIS_SUM_FBM)
-    snprintf(m, sizeof m, "--lacunarity %g with --octaves %ld: the finest octave's frequency %g "
-             "times the window's largest coordinate %g is %g, beyond 2^52 = 4.5e15 where the "
-             "noise lattice has no fractional positions; use fewer octaves or a smaller lacunarity",
-             o->so.lacunarity, o->so.octaves, f, c, f * c);
-  else
-    snprintf(m, sizeof m, "--octaves %ld: the finest octave's frequency %g times the window's "
-             "largest coordinate %g is %g, beyond 2^52 = 4.5e15 where the noise lattice has no "
-             "fractional positions; use fewer octaves or a window nearer the origin",
-             o->so.octaves, f, c, f * c);
-  fail(m);
+    fail("--lacunarity %g with --octaves %ld: the finest octave's frequency %g times the window's "
+         "largest coordinate %g is %g, beyond 2^52 = 4.5e15 where the noise lattice has no "
+         "fractional positions; use fewer octaves or a smaller lacunarity",
+         o->so.lacunarity, o->so.octaves, f, c, f * c);
+  fail("--octaves %ld: the finest octave's frequency %g times the window's largest coordinate %g "
+       "is %g, beyond 2^52 = 4.5e15 where the noise lattice has no fractional positions; use "
+       "fewer octaves or a window nearer the origin",
+       o->so.octaves, f, c, f * c);
 }
 
 /* Evaluates the chosen noise (nl_basis.h builds it); *lo, *hi are its
@@ -296,7 +302,7 @@ static double *evaluate(const options *o, double *lo, double *hi)
   nl_basis *b;
   nl_error err;
   if (nl_basis_make(kind, &o->bo, (unsigned long)o->seed, &b, &err))
-    fail(err.msg);
+    fail("%s", err.msg);
   nl_noise_octaves oct = o->sum->octaves(&o->so);
   check_lattice(o, &oct, b);
   double *v = nl_xmalloc((size_t)o->size * o->size * sizeof *v);
@@ -314,8 +320,9 @@ static void write_tsv(const options *o, const double *v)
     for (long c = 0; c < o->size; c++)
       nl_table_append(t, "ddd", o->x0 + (c + 0.5) * d, o->y0 + (r + 0.5) * d, v[r * o->size + c]);
   nl_error err;
-  if (nl_table_write(t, o->out, &err)) fail(err.msg);
-  fprintf(stderr, "noiselab render: wrote %s (%ld x %ld values of %s: x, y, value)\n", o->out, o->size, o->size, o->noise);
+  if (nl_table_write(t, o->out, &err)) fail("%s", err.msg);
+  nl_message(stderr, "noiselab render: wrote %s (%ld x %ld values of %s: x, y, value)", o->out,
+             o->size, o->size, o->noise);
   nl_table_free(t);
 }
 
@@ -332,10 +339,14 @@ static void write_image(const options *o, const double *v, double lo, double hi)
                      : nl_image_from_values(v, (int)o->size, (int)o->size, lo, hi);
   if (raw) for (size_t k = 0; k < n; k++) im->data[k] = (float)v[k];
   nl_error err;
-  if (nl_image_write(im, o->out, bits, &err)) fail(err.msg);
-  if (raw) fprintf(stderr, "noiselab render: wrote %s (%ld x %ld %s, %d-bit float, raw values)\n", o->out, o->size, o->size, o->noise, bits);
-  else fprintf(stderr, "noiselab render: wrote %s (%ld x %ld %s, %d-bit, values [%.4g, %.4g] to black..white: %s)\n", o->out,
-               o->size, o->size, o->noise, bits, lo, hi, strcmp(o->normalize, "range") ? "the analytic bound" : "the image's range");
+  if (nl_image_write(im, o->out, bits, &err)) fail("%s", err.msg);
+  if (raw)
+    nl_message(stderr, "noiselab render: wrote %s (%ld x %ld %s, %d-bit float, raw values)", o->out,
+               o->size, o->size, o->noise, bits);
+  else
+    nl_message(stderr, "noiselab render: wrote %s (%ld x %ld %s, %d-bit, values [%.4g, %.4g] to "
+               "black..white: %s)", o->out, o->size, o->size, o->noise, bits, lo, hi,
+               strcmp(o->normalize, "range") ? "the analytic bound" : "the image's range");
   nl_image_free(im);
 }
 
@@ -345,10 +356,8 @@ static void check_finite(const options *o, const double *v)
   size_t n = (size_t)o->size * o->size;
   for (size_t k = 0; k < n; k++)
     if (!isfinite(v[k])) {
-      char m[256];
-      snprintf(m, sizeof m, "%s: the noise is not finite (%g) at pixel (%zu, %zu); nothing written",
-               o->out, v[k], k % (size_t)o->size, k / (size_t)o->size);
-      fail(m);
+      fail("%s: the noise is not finite (%g) at pixel (%zu, %zu); nothing written", o->out, v[k],
+           k % (size_t)o->size, k / (size_t)o->size);
     }
 }
 

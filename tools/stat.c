@@ -12,6 +12,7 @@
 #include "table/nl_table.h"
 
 #include <math.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -95,9 +96,16 @@ typedef struct {
   const char *linkage, *labels_out, *merges_out, *params_out, *covariance, *dist, *cdf_file;
 } opts;
 
-static void die(const char *sub, const char *msg)
+/* One line on stderr, exit 2: input quoted in it is escaped (nl_message). */
+static void die(const char *sub, const char *fmt, ...)
+  __attribute__((format(printf, 2, 3), noreturn));
+static void die(const char *sub, const char *fmt, ...)
 {
-  fprintf(stderr, PROG " %s: %s\n", sub, msg);
+  va_list ap;
+  va_start(ap, fmt);
+  fprintf(stderr, PROG " %s: ", sub);
+  nl_vmessage(stderr, fmt, ap);
+  va_end(ap);
   exit(2);
 }
 
@@ -105,7 +113,7 @@ static double num_arg(const opts *o, const char *what, const char *s, double lo,
 {
   double v;
   nl_error err;
-  if (nl_parse_double(what, s, lo, hi, &v, &err)) die(o->sub, err.msg);
+  if (nl_parse_double(what, s, lo, hi, &v, &err)) die(o->sub, "%s", err.msg);
   return v;
 }
 
@@ -113,7 +121,7 @@ static long int_arg(const opts *o, const char *what, const char *s, long lo, lon
 {
   long v;
   nl_error err;
-  if (nl_parse_long(what, s, lo, hi, &v, &err)) die(o->sub, err.msg);
+  if (nl_parse_long(what, s, lo, hi, &v, &err)) die(o->sub, "%s", err.msg);
   return v;
 }
 
@@ -142,9 +150,7 @@ static void parse(int argc, char **argv, opts *o)
   for (int k; (k = nl_opt_next(&p, &err)) != NL_OPT_END;) {
     const char *a = p.name, *v = p.value[0];
     if (k == NL_OPT_ERROR) {
-      char m[NL_ERROR_LEN + 64];
-      snprintf(m, sizeof m, "%s (see " PROG " %s --help)", err.msg, o->sub);
-      die(o->sub, m);
+      die(o->sub, "%s (see " PROG " %s --help)", err.msg, o->sub);
     }
     switch (k) {
     case NL_OPT_POSITIONAL:
@@ -187,9 +193,7 @@ static void parse(int argc, char **argv, opts *o)
       else if (!strcmp(v, "tsv")) o->format = OUT_TSV;
       else if (!strcmp(v, "json")) o->format = OUT_JSON;
       else {
-        char m[160];
-        snprintf(m, sizeof m, "--format: '%.64s' is not kv, tsv or json", v);
-        die(o->sub, m);
+        die(o->sub, "--format: '%s' is not kv, tsv or json", v);
       }
       break;
     default: break;   /* --help was answered before parsing */
@@ -287,12 +291,10 @@ static nl_table *read_table(const opts *o, const char *path)
 {
   nl_table *t = NULL;
   nl_error err;
-  if (nl_table_read(path, table_flags(o), &t, &err)) die(o->sub, err.msg);
+  if (nl_table_read(path, table_flags(o), &t, &err)) die(o->sub, "%s", err.msg);
   hold(t);
   if (t->nrows < 2) {
-    char m[NL_ERROR_LEN + 64];
-    snprintf(m, sizeof m, "%s: %zu data row(s); at least 2 are needed", shown(path), t->nrows);
-    die(o->sub, m);
+    die(o->sub, "%s: %zu data row(s); at least 2 are needed", shown(path), t->nrows);
   }
   return t;
 }
@@ -301,9 +303,7 @@ static nl_table *read_table(const opts *o, const char *path)
 static double *column(const opts *o, const nl_table *t, const char *path)
 {
   if ((size_t)o->column > t->ncols) {
-    char m[NL_ERROR_LEN];
-    snprintf(m, sizeof m, "%s: no column %ld (the table has %zu)", shown(path), o->column, t->ncols);
-    die(o->sub, m);
+    die(o->sub, "%s: no column %ld (the table has %zu)", shown(path), o->column, t->ncols);
   }
   double *x = nl_xmalloc(t->nrows * sizeof(double));
   for (size_t i = 0; i < t->nrows; i++) x[i] = nl_table_get(t, i, (size_t)o->column - 1);
@@ -312,9 +312,7 @@ static double *column(const opts *o, const nl_table *t, const char *path)
 
 static void fail_lib(const opts *o, const char *path, const nl_error *err)
 {
-  char m[NL_ERROR_LEN + 256];
-  snprintf(m, sizeof m, "%s: %s", shown(path), err->msg);
-  die(o->sub, m);
+  die(o->sub, "%s: %s", shown(path), err->msg);
 }
 
 /* The null distribution of ks/kuiper: --uniform A B (end points), --dist
@@ -327,13 +325,12 @@ static void null_dist(const opts *o, nl_stats_dist *dist, nl_table **cdf_table, 
   *xF = NULL;
   if (o->cdf_file) {
     nl_table *t = NULL;
-    if (nl_table_read(o->cdf_file, table_flags(o), &t, &err)) die(o->sub, err.msg);
+    if (nl_table_read(o->cdf_file, table_flags(o), &t, &err)) die(o->sub, "%s", err.msg);
     long cx = nl_table_column(t, "x"), cF = nl_table_column(t, "F");
     if (cx < 0 || cF < 0) { cx = 0; cF = 1; }
     if (t->ncols < 2) {
-      char m[NL_ERROR_LEN];
-      snprintf(m, sizeof m, "%s: a CDF table needs columns x and F (it has %zu column)", shown(o->cdf_file), t->ncols);
-      die(o->sub, m);
+      die(o->sub, "%s: a CDF table needs columns x and F (it has %zu column)", shown(o->cdf_file),
+          t->ncols);
     }
     double *x = nl_xmalloc(2 * t->nrows * sizeof *x), *F = x + t->nrows;
     for (size_t i = 0; i < t->nrows; i++) { x[i] = nl_table_get(t, i, (size_t)cx); F[i] = nl_table_get(t, i, (size_t)cF); }
@@ -342,12 +339,10 @@ static void null_dist(const opts *o, nl_stats_dist *dist, nl_table **cdf_table, 
     *xF = x;
   } else if (o->dist) {
     nl_stats_dist_kind kind;
-    if (nl_stats_dist_parse(o->dist, &kind, &err)) die(o->sub, err.msg);
+    if (nl_stats_dist_parse(o->dist, &kind, &err)) die(o->sub, "%s", err.msg);
     double scale = o->have_scale ? o->scale : 1.0;
     if (nl_stats_dist_init(dist, kind, o->have_loc ? o->loc : 0.0, scale, &err)) {
-      char m[NL_ERROR_LEN + 16];
-      snprintf(m, sizeof m, "--%s", err.msg);   /* "--scale 0 must be positive ..." */
-      die(o->sub, m);
+      die(o->sub, "--%s", err.msg);   /* "--scale 0 must be positive ..." */
     }
   } else {
     /* end points: uniform on [a, b) evaluated as (x - a) / (b - a), as before */
@@ -434,26 +429,19 @@ static void run_chisq(const opts *o)
   nl_table_free(t);
 }
 
-static void write_or_die(const opts *o, nl_table *t, const char *path)
-{
-  nl_error err;
-  if (nl_table_write(t, path, &err)) die(o->sub, err.msg);
-  nl_table_free(t);
-}
-
 static void run_hclust(const opts *o)
 {
   nl_cluster_linkage_method m;
   nl_error err;
   if (!o->linkage) die(o->sub, "--linkage single|complete|average|ward is required");
-  if (nl_cluster_linkage_method_parse(o->linkage, &m, &err)) die(o->sub, err.msg);
+  if (nl_cluster_linkage_method_parse(o->linkage, &m, &err)) die(o->sub, "%s", err.msg);
   if (o->have_cutoff == o->have_clusters) die(o->sub, "give exactly one of --cutoff C and --clusters K");
   /* Both outputs are opened (and so checked) before anything is computed or
    * written, and committed together: a bad --merges leaves --labels' old
    * file as it was. A temporary left by die() is removed at exit. */
   nl_atomic_file af[2] = {{0}, {0}};
-  if (o->labels_out && nl_atomic_open(&af[0], o->labels_out, &err)) die(o->sub, err.msg);
-  if (o->merges_out && nl_atomic_open(&af[1], o->merges_out, &err)) die(o->sub, err.msg);
+  if (o->labels_out && nl_atomic_open(&af[0], o->labels_out, &err)) die(o->sub, "%s", err.msg);
+  if (o->merges_out && nl_atomic_open(&af[1], o->merges_out, &err)) die(o->sub, "%s", err.msg);
   nl_table *t = read_table(o, o->files[0]);
   size_t n = t->nrows;
   double *Z = hold(nl_xmalloc((n - 1) * 4 * sizeof(double)));
@@ -475,8 +463,8 @@ static void run_hclust(const opts *o)
     for (size_t i = 0; i + 1 < n; i++) nl_table_append_doubles(out[1], Z + 4 * i);
   }
   for (int i = 0; i < 2; i++)
-    if (out[i] && nl_table_write_to(out[i], &af[i], &err)) die(o->sub, err.msg);
-  if (nl_atomic_commit_all(af, 2, &err)) die(o->sub, err.msg);
+    if (out[i] && nl_table_write_to(out[i], &af[i], &err)) die(o->sub, "%s", err.msg);
+  if (nl_atomic_commit_all(af, 2, &err)) die(o->sub, "%s", err.msg);
   nl_table_free(out[0]);
   nl_table_free(out[1]);
   record r = {0};
@@ -497,7 +485,9 @@ static void fit_record(record *r, size_t n, size_t k, double ll, double aic, dou
   rec_size(r, "converged", (size_t)conv);
 }
 
-static void write_params(const opts *o, const nl_gmm *g)
+/* Into af, opened (and so checked) before the fit: a bad --params is
+ * refused before EM runs, as hclust's outputs are. */
+static void write_params(const opts *o, const nl_gmm *g, nl_atomic_file *af)
 {
   const char *cols[] = {"component", "param", "i", "j", "value"};
   nl_table *t = nl_table_alloc(5, cols);
@@ -512,7 +502,9 @@ static void write_params(const opts *o, const nl_gmm *g)
         nl_table_append(t, "isiid", (int)k + 1, "cov", (int)i + 1, (int)j + 1, v);
       }
   }
-  write_or_die(o, t, o->params_out);
+  nl_error err;
+  if (nl_table_write_to(t, af, &err) || nl_atomic_commit(af, &err)) die(o->sub, "%s", err.msg);
+  nl_table_free(t);
 }
 
 /* Constant columns are legal (reg_covar keeps their variance finite), but
@@ -523,8 +515,8 @@ static void note_constant_columns(const opts *o, const nl_table *t)
     size_t i = 1;
     while (i < t->nrows && nl_table_get(t, i, j) == nl_table_get(t, 0, j)) i++;
     if (i == t->nrows)
-      fprintf(stderr, PROG " gmm: note: %s: column %zu is constant; its variance is reg_covar = %g\n",
-              shown(o->files[0]), j + 1, o->reg);
+      nl_message(stderr, PROG " gmm: note: %s: column %zu is constant; its variance is "
+                 "reg_covar = %g", shown(o->files[0]), j + 1, o->reg);
   }
 }
 
@@ -534,9 +526,10 @@ static void warn_overparameterised(const opts *o, const nl_table *t, size_t k, n
 {
   size_t m = nl_gmm_nparams(k, t->ncols, cov), numbers = t->nrows * t->ncols;
   if (m > numbers)
-    fprintf(stderr, PROG " gmm: warning: %s: k = %zu components (%s covariance) have %zu free "
-            "parameters, more than the %zu numbers of the data (%zu rows x %zu columns); the fit is not meaningful\n",
-            shown(o->files[0]), k, cov == NL_GMM_FULL ? "full" : "diag", m, numbers, t->nrows, t->ncols);
+    nl_message(stderr, PROG " gmm: warning: %s: k = %zu components (%s covariance) have %zu free "
+               "parameters, more than the %zu numbers of the data (%zu rows x %zu columns); the "
+               "fit is not meaningful", shown(o->files[0]), k,
+               cov == NL_GMM_FULL ? "full" : "diag", m, numbers, t->nrows, t->ncols);
 }
 
 static void run_gmm(const opts *o)
@@ -550,15 +543,16 @@ static void run_gmm(const opts *o)
   go.tol = o->tol;
   go.max_iter = (size_t)o->max_iter;
   go.reg_covar = o->reg;
+  nl_error err;
+  /* A temporary left by die() is removed at exit. */
+  nl_atomic_file af = {0};
+  if (o->params_out && nl_atomic_open(&af, o->params_out, &err)) die(o->sub, "%s", err.msg);
   nl_table *t = read_table(o, o->files[0]);
   size_t n = t->nrows, d = t->ncols;
-  nl_error err;
   nl_gmm *g;
   if (o->have_k) {
     if ((size_t)o->k > n) {
-      char m[NL_ERROR_LEN];
-      snprintf(m, sizeof m, "%s: %ld components but only %zu rows", shown(o->files[0]), o->k, n);
-      die(o->sub, m);
+      die(o->sub, "%s: %ld components but only %zu rows", shown(o->files[0]), o->k, n);
     }
     if (nl_gmm_check_size(n, d, (size_t)o->k, go.covariance, &err)) fail_lib(o, o->files[0], &err);
     g = hold(nl_gmm_alloc((size_t)o->k, d, go.covariance));
@@ -569,9 +563,7 @@ static void run_gmm(const opts *o)
     warn_overparameterised(o, t, g->k, go.covariance);
   } else {
     if ((size_t)o->k0 > n) {
-      char m[NL_ERROR_LEN];
-      snprintf(m, sizeof m, "%s: K0 = %ld components but only %zu rows", shown(o->files[0]), o->k0, n);
-      die(o->sub, m);
+      die(o->sub, "%s: K0 = %ld components but only %zu rows", shown(o->files[0]), o->k0, n);
     }
     size_t kmax = (size_t)(o->max_k > o->k0 ? o->max_k : o->k0), np;
     nl_gmm_step *path = hold(nl_xmalloc((kmax - (size_t)o->k0 + 1) * sizeof *path));
@@ -590,7 +582,7 @@ static void run_gmm(const opts *o)
     free(path);
   }
   note_constant_columns(o, t);
-  if (o->params_out) write_params(o, g);
+  if (o->params_out) write_params(o, g, &af);
   nl_gmm_free(g);
   nl_table_free(t);
 }
@@ -614,7 +606,8 @@ int main(int argc, char **argv)
             .max_iter = 100, .max_k = 100, .covariance = "full"};
   const char *help = sub_help(o.sub);
   if (!help) {
-    fprintf(stderr, PROG ": unknown subcommand '%s' (ks, ks2, kuiper, chisq, hclust, gmm)\n", o.sub);
+    nl_message(stderr, PROG ": unknown subcommand '%s' (ks, ks2, kuiper, chisq, hclust, gmm)",
+               o.sub);
     return 2;
   }
   for (int i = 2; i < argc && strcmp(argv[i], "--"); i++)

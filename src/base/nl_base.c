@@ -12,20 +12,135 @@
 #include <time.h>
 #include <unistd.h>
 
+/* ---- one-line messages ---------------------------------------------- */
+
+/* fmt formatted in full, with every control character escaped (newline as
+ * \n, tab as \t, the others and DEL as \xNN): an input echoed in a message,
+ * a file name or an argument holding a newline, still gives one line.
+ * Backslashes stay as they are, so escaping twice changes nothing. */
+static char *message_vformat(const char *fmt, va_list ap)
+{
+  va_list aq;
+  va_copy(aq, ap);
+  int n = vsnprintf(NULL, 0, fmt, aq);
+  va_end(aq);
+  if (n < 0) return nl_xstrdup("(the message could not be formatted)");
+  char *raw = nl_xmalloc((size_t)n + 1);
+  vsnprintf(raw, (size_t)n + 1, fmt, ap);
+  char *out = nl_xmalloc(4 * (size_t)n + 1);
+  char *o = out;
+  for (const unsigned char *c = (const unsigned char *)raw; *c; c++) {
+    if (*c == '\n') { *o++ = '\\'; *o++ = 'n'; }
+    else if (*c == '\t') { *o++ = '\\'; *o++ = 't'; }
+    else if (*c < 0x20 || *c == 0x7f) o += sprintf(o, "\\x%02x", *c);
+    else *o++ = (char)*c;
+  }
+  *o = '\0';
+  free(raw);
+  return out;
+}
+
+/* Width a word keeps when it is shortened, "head...tail", and its least. */
+enum { MESSAGE_WORD_MIN = 24 };
+
+static int utf8_continuation(char c) { return ((unsigned char)c & 0xc0) == 0x80; }
+
+/* Copies word w (length n) into d shortened to about `keep` bytes: a third
+ * from its start, the rest from its end (a path's file name), "..." between;
+ * no UTF-8 character is cut. Returns the bytes written. */
+static size_t message_word_cut(char *d, const char *w, size_t n, size_t keep)
+{
+  if (n <= keep) {
+    memcpy(d, w, n);
+    return n;
+  }
+  size_t head = (keep - 3) / 3, tail = keep - 3 - head;
+  while (head > 0 && utf8_continuation(w[head])) head--;
+  while (tail > 0 && utf8_continuation(w[n - tail])) tail--;
+  memcpy(d, w, head);
+  memcpy(d + head, "...", 3);
+  memcpy(d + head + 3, w + n - tail, tail);
+  return head + 3 + tail;
+}
+
+/* Length of s with every word (a run without spaces) over `keep` bytes cut. */
+static size_t message_fitted_length(const char *s, size_t keep)
+{
+  size_t total = 0;
+  while (*s) {
+    size_t w = strcspn(s, " ");
+    total += (w > keep ? keep : w);
+    s += w;
+    size_t sp = strspn(s, " ");
+    total += sp;
+    s += sp;
+  }
+  return total;
+}
+
+/* Puts s into dst[cap]. A message too long for it loses the middle of its
+ * longest words, never its end: the long words are the paths and the values
+ * echoed ("/very/lo...ng/name.tsv: directory /very/lo...ng does not exist"),
+ * the reason is short words after them. */
+static void message_fit(char *dst, size_t cap, const char *s)
+{
+  size_t len = strlen(s);
+  if (len < cap) {
+    memcpy(dst, s, len + 1);
+    return;
+  }
+  /* the widest cut that fits: the fitted length grows with it */
+  size_t lo = MESSAGE_WORD_MIN, hi = len;
+  while (lo < hi) {
+    size_t mid = lo + (hi - lo + 1) / 2;
+    if (message_fitted_length(s, mid) < cap) lo = mid;
+    else hi = mid - 1;
+  }
+  size_t keep = lo;
+  /* Each word is cut into cut[] first; what is left of dst may be shorter
+   * still when even MESSAGE_WORD_MIN is too long (then the end is lost). */
+  char *cut = nl_xmalloc(keep + 1);
+  char *d = dst, *end = dst + cap - 1;
+  while (*s && d < end) {
+    size_t w = strcspn(s, " ");
+    size_t m = message_word_cut(cut, s, w, keep);
+    size_t room = (size_t)(end - d);
+    if (m > room) m = room;
+    memcpy(d, cut, m);
+    d += m;
+    s += w;
+    while (*s == ' ' && d < end) *d++ = *s++;
+  }
+  free(cut);
+  *d = '\0';
+}
+
 nl_status nl_fail(nl_error *err, nl_status status, const char *fmt, ...)
 {
   if (err) {
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(err->msg, sizeof err->msg, fmt, ap);
+    char *m = message_vformat(fmt, ap);
     va_end(ap);
-    /* One line whatever the input echoed in it (a file name or an argument
-     * holding a newline or a NUL-truncated byte run): control characters
-     * become '?', so a program can print the message as its one line. */
-    for (char *c = err->msg; *c; c++)
-      if ((unsigned char)*c < 0x20 || *c == 0x7f) *c = '?';
+    message_fit(err->msg, sizeof err->msg, m);
+    free(m);
   }
   return status;
+}
+
+void nl_vmessage(FILE *f, const char *fmt, va_list ap)
+{
+  char *m = message_vformat(fmt, ap);
+  fprintf(f, "%s\n", m);
+  free(m);
+}
+
+void nl_message(FILE *f, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  nl_vmessage(f, fmt, ap);
+  va_end(ap);
 }
 
 /* NULL: abort() after the message, as GSL's default error handler does. */
@@ -86,7 +201,23 @@ char *nl_path_join(const char *dir, const char *name)
   return p;
 }
 
-char *nl_temp_sibling(const char *path)
+/* The longest file name the folder `dir` (length dirlen, "" for ".")
+ * accepts: pathconf's, or POSIX's usual 255 when it cannot say. */
+static size_t name_max_in(const char *dir, size_t dirlen)
+{
+  char *d = dirlen ? nl_xmalloc(dirlen + 1) : nl_xstrdup(".");
+  if (dirlen) {
+    memcpy(d, dir, dirlen);
+    d[dirlen] = '\0';
+  }
+  long m = pathconf(d, _PC_NAME_MAX);
+  free(d);
+  return m > 0 ? (size_t)m : 255;
+}
+
+/* nl_temp_sibling's template; *suffix: the bytes after its XXXXXX, for
+ * mkstemps. */
+static char *temp_template(const char *path, int *suffix)
 {
   const char *slash = strrchr(path, '/');
   const char *base = slash ? slash + 1 : path;
@@ -94,10 +225,28 @@ char *nl_temp_sibling(const char *path)
   size_t dirlen = (size_t)(base - path);
   size_t stemlen = dot ? (size_t)(dot - base) : strlen(base);
   const char *ext = dot ? dot : "";
-  size_t n = dirlen + 1 + stemlen + 8 + strlen(ext) + 1;
+  size_t extlen = strlen(ext), name_max = name_max_in(path, dirlen);
+  /* ".stem.XXXXXX.ext" is 8 bytes longer than the name: for a name the
+   * folder accepts but that leaves no room, the temporary is ".nl.XXXXXX.ext"
+   * (without the extension if even that is too long), a name the clean-up
+   * of leftovers still knows (".?*.XXXXXX[.*]", scripts/noiselab). */
+  const char *stem = base;
+  if (stemlen + extlen + 8 > name_max) {
+    stem = "nl";
+    stemlen = 2;
+    if (stemlen + extlen + 8 > name_max) extlen = 0;
+  }
+  size_t n = dirlen + 1 + stemlen + 8 + extlen + 1;
   char *t = nl_xmalloc(n);
-  snprintf(t, n, "%.*s.%.*s.XXXXXX%s", (int)dirlen, path, (int)stemlen, base, ext);
+  snprintf(t, n, "%.*s.%.*s.XXXXXX%.*s", (int)dirlen, path, (int)stemlen, stem, (int)extlen, ext);
+  *suffix = (int)extlen;
   return t;
+}
+
+char *nl_temp_sibling(const char *path)
+{
+  int suffix;
+  return temp_template(path, &suffix);
 }
 
 /* ---- temporaries removed at exit and on a signal --------------------
@@ -171,6 +320,8 @@ static void live_remove(int slot)
 }
 
 /* ---- atomic output ----------------------------------------------------- */
+
+static nl_status path_check_folder(const char *path, nl_error *err);
 
 /* Closes and removes whatever af still holds, and frees it. */
 static void atomic_release(nl_atomic_file *af)
@@ -247,7 +398,7 @@ nl_status nl_atomic_open(nl_atomic_file *af, const char *path, nl_error *err)
   memset(af, 0, sizeof *af);
   /* "", "dir/", a directory or a parent that is a file: say so, naming the
    * target, before a temporary file is made. */
-  nl_status c = nl_path_check_writable(path, err);
+  nl_status c = path_check_folder(path, err);
   if (c) return c;
   int through;
   char *target = atomic_target(path, &through, err);
@@ -257,20 +408,19 @@ nl_status nl_atomic_open(nl_atomic_file *af, const char *path, nl_error *err)
     if (target != path) free(target);
     return s;
   }
-  if (target != path && (c = nl_path_check_writable(target, err))) {
+  if (target != path && (c = path_check_folder(target, err))) {
     free(target);
     return c;
   }
   af->path = nl_xstrdup(path);
   af->target = target == path ? af->path : target;
-  af->tmp = nl_temp_sibling(af->target);
-  const char *dot = strrchr(af->tmp, '.');
-  int suffix = (dot && strstr(af->tmp, "XXXXXX") < dot) ? (int)strlen(dot) : 0;
+  int suffix;
+  af->tmp = temp_template(af->target, &suffix);
   int fd = mkstemps(af->tmp, suffix);
   if (fd < 0) {
     int e = errno;
     /* The reason, naming the target rather than the temporary name. */
-    nl_status s = nl_path_check_writable(af->target, err);
+    nl_status s = path_check_folder(af->target, err);
     if (!s) s = nl_fail(err, NL_EIO, "%s: cannot create: %s", path, strerror(e));
     free(af->tmp);
     af->tmp = NULL;
@@ -409,7 +559,8 @@ nl_status nl_mkdir_p(const char *dir, nl_error *err)
   return s;
 }
 
-nl_status nl_path_check_writable(const char *path, nl_error *err)
+/* The checks of nl_path_check_writable on the name itself and its folder. */
+static nl_status path_check_folder(const char *path, nl_error *err)
 {
   if (!path || !*path) return nl_fail(err, NL_EINVAL, "'': empty file name");
   size_t n = strlen(path);
@@ -438,6 +589,23 @@ nl_status nl_path_check_writable(const char *path, nl_error *err)
     s = nl_fail(err, NL_EIO, "%s: is a directory", path);
   }
   free(dir);
+  return s;
+}
+
+nl_status nl_path_check_writable(const char *path, nl_error *err)
+{
+  nl_status s = path_check_folder(path, err);
+  if (s) return s;
+  /* What is there (nl_atomic_open's rules): a link to nothing, a socket or
+   * a block device is refused now, before any work; a link's target must
+   * be writable in its own folder. */
+  int through;
+  char *target = atomic_target(path, &through, err);
+  if (!target) return NL_EIO;
+  if (target != path) {
+    s = through ? NL_OK : path_check_folder(target, err);
+    free(target);
+  }
   return s;
 }
 

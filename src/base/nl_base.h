@@ -35,6 +35,7 @@
 #ifndef NL_BASE_H
 #define NL_BASE_H
 
+#include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -51,9 +52,20 @@ typedef enum {
 typedef struct { char msg[NL_ERROR_LEN]; } nl_error;
 
 /* Sets err->msg (if err != NULL) and returns status, for `return nl_fail(...)`.
- * Control characters in the message (from an echoed input) become '?'. */
+ * The message stays one line whatever input it echoes: control characters
+ * are escaped (a newline as \n, a tab as \t, the others and DEL as \xNN).
+ * One too long for NL_ERROR_LEN loses the middle of its longest words (the
+ * paths and values it quotes: "/very/lo...ng/name.tsv: directory ... does not
+ * exist"), never its end, where the reason is. The arguments may include
+ * err->msg itself ("%s: %s", path, err->msg). */
 nl_status nl_fail(nl_error *err, nl_status status, const char *fmt, ...)
   __attribute__((format(printf, 3, 4)));
+
+/* Prints one line to f: fmt formatted, control characters escaped as by
+ * nl_fail, never cut, then a newline. For what a program says itself with
+ * input in it ("noiselab render: wrote FILE", a tool's error line). */
+void nl_message(FILE *f, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+void nl_vmessage(FILE *f, const char *fmt, va_list ap) __attribute__((format(printf, 2, 0)));
 
 /* Allocation that never returns NULL: out-of-memory is not a condition any
  * caller here can recover from. On failure it prints "noiselab: out of
@@ -91,17 +103,23 @@ void nl_atomic_abort(nl_atomic_file *af);
 /* Writes n bytes to `path` the same way (open, write, commit). */
 nl_status nl_atomic_write(const char *path, const void *data, size_t n, nl_error *err);
 /* A temporary path beside `path` keeping its extension (image writers pick
- * the format from it): "dir/.name.XXXXXX.png". Caller frees. */
+ * the format from it): "dir/.name.XXXXXX.png", or "dir/.nl.XXXXXX.png" when
+ * the name is too long for that in its folder (NAME_MAX, 255 bytes on most
+ * file systems), so that every name the folder accepts can be written.
+ * Caller frees. */
 char *nl_temp_sibling(const char *path);
 
 /* Creates a directory and its parents (mkdir -p). An empty name is an
  * error ("'': empty directory name"). */
 nl_status nl_mkdir_p(const char *dir, nl_error *err);
-/* Checks that a file can be created at `path`: its parent exists, is a
- * directory and is writable, and path itself is not a directory. Fails with
- * a message naming path and the reason ("afile/x.png: parent afile is not a
- * directory"). A character device or FIFO passes whatever its folder (it is
- * written through). nl_atomic_open adds the checks on what path is (above). */
+/* Checks that nl_atomic_open would accept `path`, without creating
+ * anything: its parent exists, is a directory and is writable, and what is
+ * at path is one of the kinds above (not a directory, a link to nothing, a
+ * socket or a block device; a link's target is checked in its own folder).
+ * Fails with a message naming path and the reason ("afile/x.png: parent
+ * afile is not a directory"). A character device or FIFO passes whatever
+ * its folder (it is written through). Programs call it for every output
+ * before their work starts. */
 nl_status nl_path_check_writable(const char *path, nl_error *err);
 
 /* ---- memory a request needs ---------------------------------------------

@@ -133,6 +133,78 @@ NL_TEST(writable_check_names_the_reason)
   free(file); free(under);
 }
 
+/* A message quoting input stays one line (control characters escaped) and,
+ * too long for NL_ERROR_LEN, keeps its end: the reason. */
+NL_TEST(messages_one_line_with_their_reason)
+{
+  nl_error err;
+  NL_CHECK(nl_fail(&err, NL_EIO, "%s: cannot open", "a\nb\tc\x01\x7f") == NL_EIO);
+  NL_CHECK(strcmp(err.msg, "a\\nb\\tc\\x01\\x7f: cannot open") == 0);
+  /* escaping twice changes nothing: a tool may quote a message again */
+  char again[NL_ERROR_LEN];
+  snprintf(again, sizeof again, "%s", err.msg);
+  nl_fail(&err, NL_EIO, "%s", again);
+  NL_CHECK(strcmp(err.msg, again) == 0);
+  /* 3000 bytes of path, twice: the middles go, the reason stays */
+  char path[3100];
+  memset(path, 'd', 3000);
+  strcpy(path + 3000, "/name.tsv");
+  nl_fail(&err, NL_EIO, "%s: directory %s does not exist", path, path);
+  size_t n = strlen(err.msg);
+  NL_CHECK(n < NL_ERROR_LEN && n > NL_ERROR_LEN / 2);
+  NL_CHECK(n > 15 && strcmp(err.msg + n - 15, " does not exist") == 0);
+  NL_CHECK(strstr(err.msg, "/name.tsv: directory ") != NULL && strstr(err.msg, "...") != NULL);
+  NL_CHECK(strncmp(err.msg, "ddd", 3) == 0);
+  /* a message of its own argument, as callers prefix a path */
+  nl_fail(&err, NL_EIO, "reason");
+  nl_fail(&err, NL_EIO, "%s: %s", "x.tsv", err.msg);
+  NL_CHECK(strcmp(err.msg, "x.tsv: reason") == 0);
+  /* no UTF-8 character is cut in two */
+  char wide[2000] = "";
+  for (int i = 0; i < 600; i++) strcat(wide, "\xc3\xa9");
+  nl_fail(&err, NL_EIO, "%s: bad", wide);
+  int whole = 1;
+  for (const unsigned char *c = (const unsigned char *)err.msg; *c; c++)
+    if (*c == 0xc3) whole &= c[1] == 0xa9;
+    else if (*c == 0xa9) whole &= c > (const unsigned char *)err.msg && c[-1] == 0xc3;
+  NL_CHECK(whole && strstr(err.msg, ": bad") != NULL);
+}
+
+/* Every name the folder accepts can be written: the temporary of a name of
+ * NAME_MAX bytes is a short one in the same folder, and nothing is left. */
+NL_TEST(longest_names_are_written)
+{
+  nl_error err;
+  char name[256];
+  memset(name, 'n', 251);
+  strcpy(name + 251, ".png");
+  char *path = nl_path_join(dir, name);
+  char *t = nl_temp_sibling(path);
+  NL_CHECK(strlen(strrchr(t, '/') + 1) <= 255 && strstr(t, "/.nl.XXXXXX.png") != NULL);
+  free(t);
+  NL_CHECK(nl_atomic_write(path, "x", 1, &err) == NL_OK);
+  struct stat st;
+  NL_CHECK(stat(path, &st) == 0 && st.st_size == 1);
+  /* an extension too long to keep: dropped from the temporary only */
+  memset(name, 'e', 255);
+  name[0] = 'a';
+  name[1] = '.';
+  name[255] = '\0';
+  char *ext = nl_path_join(dir, name);
+  NL_CHECK(nl_atomic_write(ext, "y", 1, &err) == NL_OK);
+  NL_CHECK(stat(ext, &st) == 0 && st.st_size == 1);
+  DIR *d = opendir(dir);
+  int hidden = 0;
+  for (struct dirent *e; d && (e = readdir(d));)
+    hidden += strncmp(e->d_name, ".nl.", 4) == 0;
+  if (d) closedir(d);
+  NL_CHECK(hidden == 0);
+  unlink(path);
+  unlink(ext);
+  free(path);
+  free(ext);
+}
+
 NL_TEST(memory_sizes)
 {
   char b[32];

@@ -126,8 +126,7 @@ void nl_harness_die(nl_harness *r, int code, const char *fmt, ...)
   va_list ap;
   va_start(ap, fmt);
   fprintf(stderr, "%s: ", r ? r->name : "noiselab");
-  vfprintf(stderr, fmt, ap);
-  fputc('\n', stderr);
+  nl_vmessage(stderr, fmt, ap);   /* one line whatever input it quotes */
   va_end(ap);
   exit(code);
 }
@@ -173,9 +172,7 @@ nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_erro
     const char *v = p.value[0];
     long n;
     if (k == NL_OPT_ERROR) {
-      size_t len = strlen(err->msg);
-      snprintf(err->msg + len, sizeof err->msg - len, " (see --help)");
-      st = NL_EINVAL;
+      st = nl_fail(err, NL_EINVAL, "%s (see --help)", err->msg);
     } else if (k == NL_OPT_POSITIONAL) st = nl_fail(err, NL_EINVAL, "%s: unexpected argument (see --help)", v);
     else if (!strcmp(spec[k].name, "help")) o->help = 1;
     else if (!strcmp(spec[k].name, "params")) o->params = 1;

@@ -1,6 +1,7 @@
 /* nl_simd.c - the vector level (nl_simd.h): what the CPU supports, the
  * NL_NOISE_SIMD override, and the level every kernel table is picked by. */
 #include "simd/nl_simd.h"
+#include "base/nl_base.h"
 
 #include <gsl/gsl_errno.h>
 #include <stdio.h>
@@ -55,10 +56,10 @@ int nl_simd_get(void)
   if (env && *env && strcmp(env, "auto") != 0) {
     int want = nl_simd_from_name(env);
     if (want < 0)
-      fprintf(stderr, "noiselab: NL_NOISE_SIMD=%s is not scalar|sse2|avx2|avx512|auto; using %s\n",
+      nl_message(stderr, "noiselab: NL_NOISE_SIMD=%s is not scalar|sse2|avx2|avx512|auto; using %s",
               env, nl_simd_name(l));
     else if (!nl_simd_supported(want))
-      fprintf(stderr, "noiselab: this CPU cannot run NL_NOISE_SIMD=%s; using %s\n", env,
+      nl_message(stderr, "noiselab: this CPU cannot run NL_NOISE_SIMD=%s; using %s", env,
               nl_simd_name(l));
     else l = want;
   }

@@ -145,6 +145,12 @@ nl_status nl_sweep_folder(const nl_sweep_plan *pl, const char *out, const char *
 {
   char *o;
   *dir = NULL;
+  /* The folder's name goes into one-line job lines (jobs.txt, GNU parallel
+   * reads a job a line) and tab-separated tables: refused, not mangled. */
+  for (const unsigned char *c = (const unsigned char *)(out ? out : ""); *c; c++)
+    if (*c < 0x20 || *c == 0x7f)
+      return nl_fail(err, NL_EINVAL, "--out: '%s': a control character in a sweep folder's name "
+                     "(its job lines and tables hold it on one line)", out);
   if (out)
     o = nl_xstrdup(out);
   else {
