@@ -203,4 +203,47 @@ NL_TEST(rows_and_gctbf_match_brute_force)
   gsl_rng_free(r);
 }
 
+/* Q1's count statistics: nl_cellular_count_histogram over blocks of cubes
+ * (origins of either sign, across PERM's 2^16 wrap) against the counts of
+ * the oracle's cubes, exactly; nl_cellular_count_moments against the mean
+ * and population variance of those counts in long double (1e-14
+ * relative: the library forms E[m^2] - mean^2, which cancels digits where
+ * the variance is small against the mean square); measured 1.6e-15. */
+NL_TEST(count_histogram_and_moments_match)
+{
+  static const long origins[] = {0, -20, 65530, -65545, 1000};
+  double worst = 0;
+  long bad = 0;
+  for (size_t t = 0; t < NTABLES; t++) {
+    worley_ref w;
+    nl_cellular *c = make(t, &w);
+    for (size_t q = 0; q < sizeof origins / sizeof *origins; q++) {
+      int side = 12 + (int)q;
+      double hist[51], want[51] = {0}, pts[3 * NL_CELLULAR_MAX_M];
+      nl_cellular_count_histogram(c, origins[q], side, hist);
+      long double s1 = 0, s2 = 0, cubes = 0;
+      for (long i = origins[q]; i < origins[q] + side; i++)
+        for (long j = origins[q]; j < origins[q] + side; j++)
+          for (long k = origins[q]; k < origins[q] + side; k++) {
+            int m = worley_ref_cube(&w, i, j, k, pts);
+            want[m]++;
+            s1 += m;
+            s2 += (long double)m * m;
+            cubes++;
+          }
+      for (int m = 0; m <= 50; m++)
+        bad += hist[m] != want[m];
+      double mean, var;
+      nl_cellular_count_moments(hist, 50, &mean, &var);
+      long double wm = s1 / cubes, wv = s2 / cubes - wm * wm;
+      worst = fmax(worst, fabs((double)((mean - wm) / wm)));
+      worst = fmax(worst, fabs((double)((var - wv) / wv)));
+    }
+    nl_cellular_free(c);
+  }
+  printf("  histograms: %ld bins differ; moments max relative error %.3g\n", bad, worst);
+  NL_CHECK(bad == 0);
+  NL_CHECK(worst <= 1e-14);
+}
+
 int main(void) { return nl_test_run(); }
