@@ -5,9 +5,10 @@ Where the library is looked for, first found wins:
   2. the build tree this package sits in: python/noiselab/ beside build/
      (a checkout built by `scripts/noiselab setup`), so that
      `PYTHONPATH=python` works with no installation;
-  3. LIBDIR of an installed noiselab, from `pkg-config --variable=libdir
+  3. LIBDIR recorded when meson installed this package (_config.py);
+  4. LIBDIR of an installed noiselab, from `pkg-config --variable=libdir
      noiselab` (meson install puts noiselab.pc there);
-  4. the dynamic loader's own search (ctypes.util.find_library).
+  5. the dynamic loader's own search (ctypes.util.find_library).
 """
 
 import ctypes
@@ -35,6 +36,11 @@ def _candidates():
     here = os.path.dirname(os.path.abspath(__file__))
     root = os.path.dirname(os.path.dirname(here))
     yield os.path.join(root, "build", "libnoiselab.so")
+    try:
+        from . import _config
+        yield os.path.join(_config.LIBDIR, "libnoiselab.so")
+    except ImportError:
+        pass
     try:
         libdir = subprocess.run(["pkg-config", "--variable=libdir", "noiselab"],
                                 capture_output=True, text=True, check=True).stdout.strip()

@@ -245,7 +245,7 @@ _DOC_OPTIONS = """
 def grid(noise="improved", size=512, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=1,
          basis="improved", octaves=6, gain=0.5, lacunarity=2.0, amplitude=0.5, stripes=1.0,
          table=None, table_size=512, reference=False, terms="F1", lambda_=4.0, points=50,
-         count="inverse", tile=64):
+         count="inverse", tile=64, out=None):
     """A size x size raster of a noise, as ``scripts/noiselab render`` makes it.
 
     Pixel (row r, column c) holds the noise at x = x0 + (c + 1/2) extent / size,
@@ -261,6 +261,9 @@ def grid(noise="improved", size=512, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=
         side of the square in noise units (4), its origin (0, 0), the plane (0.5).
     amplitude, stripes : float
         marble's displacement and stripes per unit (0.5, 1).
+    out : numpy.ndarray, optional
+        a C-contiguous float64 (size, size) array to write into (a fresh one
+        costs its page faults, as much as the noise on a loaded machine).
     """ + _DOC_OPTIONS + """
     Returns
     -------
@@ -280,7 +283,7 @@ def grid(noise="improved", size=512, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=
         raise ValueError(f"extent: {extent!r} is not positive")
     nz = _Noise(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
                 terms, lambda_, points, count, tile)
-    out = np.empty((size, size), dtype=np.float64)
+    out = _out(out, (size, size))
     try:
         if nz.sum == "marble":
             _marble_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
@@ -291,6 +294,17 @@ def grid(noise="improved", size=512, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=
                           _ptr(out))
     finally:
         nz.close()
+    return out
+
+
+def _out(out, shape):
+    if out is None:
+        return np.empty(shape, dtype=np.float64)
+    if not isinstance(out, np.ndarray) or out.dtype != np.float64 or out.shape != shape \
+            or not out.flags.c_contiguous or not out.flags.writeable:
+        desc = f"{out.dtype} {out.shape}" if isinstance(out, np.ndarray) else type(out).__name__
+        raise ValueError(f"out: expected a writeable C-contiguous float64 array of shape "
+                         f"{shape}, got {desc}")
     return out
 
 
@@ -312,7 +326,9 @@ def _coords(names, arrays):
     out = []
     for name, a in zip(names, b):
         a = np.ascontiguousarray(a).reshape(a.shape)   # 0-d stays 0-d
-        if not np.all(np.isfinite(a)):
+        # min and max are NaN if any value is, infinite if any is: one fast
+        # pass each instead of an isfinite array
+        if a.size and not (np.isfinite(a.min()) and np.isfinite(a.max())):
             k = np.flatnonzero(~np.isfinite(a.ravel()))[0]
             raise ValueError(f"{name}: coordinate {k} (flat index) is {a.ravel()[k]}, "
                              f"not a finite number")
@@ -322,7 +338,7 @@ def _coords(names, arrays):
 
 def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=6, gain=0.5,
            lacunarity=2.0, table=None, table_size=512, reference=False, terms="F1",
-           lambda_=4.0, points=50, count="inverse", tile=64):
+           lambda_=4.0, points=50, count="inverse", tile=64, out=None):
     """A noise at arrays of points: x, y (and z) broadcast together as numpy does.
 
     Coordinates are float64 (integer and float32 arrays are converted; complex,
@@ -339,6 +355,8 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
     ----------
     x, y, z : array_like
         coordinates, any shapes that broadcast together.
+    out : numpy.ndarray, optional
+        a C-contiguous float64 array of the broadcast shape to write into.
     """ + _DOC_OPTIONS + """
     Returns
     -------
@@ -363,7 +381,7 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
             zs = None
         else:
             xs, ys, zs = _coords("xyz", (x, y, 0.5 if z is None else z))
-        out = np.empty(xs.shape, dtype=np.float64)
+        out = _out(out, xs.shape)
         n = out.size
         o = nz.octaves
         if nz.kind == "improved" and nz.sum is None:

@@ -91,6 +91,15 @@ def test_given_table_is_seeded_table():
                           nn.points(x, 0.3, None, "noise2", seed=11, table_size=32))
 
 
+def test_out():
+    buf = np.full((32, 32), np.nan)
+    assert nn.grid("fbm", 32, seed=4, out=buf) is buf
+    assert np.array_equal(buf, nn.grid("fbm", 32, seed=4))
+    x = np.linspace(-2, 2, 9)
+    pb = np.empty(9)
+    assert nn.points(x, 0.5, 0.25, out=pb) is pb and np.array_equal(pb, nn.points(x, 0.5, 0.25))
+
+
 def test_broadcast_and_dtypes():
     x = np.linspace(0, 3, 7, dtype=np.float32)
     y = np.arange(3, dtype=np.int64)[:, None]
@@ -111,6 +120,8 @@ def test_broadcast_and_dtypes():
     (lambda: nn.points(0.0, 0.0, 1.0, "noise2"), ValueError, "2D noise"),
     (lambda: nn.points(0.0, 0.0, noise="marble"), ValueError, "use grid"),
     (lambda: nn.grid("fbm", -1), ValueError, "size: -1 is outside"),
+    (lambda: nn.grid("fbm", 4, out=np.empty((4, 4), np.float32)), ValueError, "out: expected"),
+    (lambda: nn.points(np.zeros(3), 0.0, out=np.empty(4)), ValueError, "out: expected"),
     (lambda: nn.grid("fbm", 8, octaves=0), ValueError, "octaves: 0"),
     (lambda: nn.grid("perlin", 8), ValueError, "unknown noise 'perlin'"),
     (lambda: nn.grid("fbm", 8, basis="x"), ValueError, "unknown noise basis"),
