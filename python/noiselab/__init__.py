@@ -6,6 +6,7 @@ nothing here is a second implementation. Modules:
   noiselab.noise    grid(...) and points(...) of every noise of ``noiselab render``
   noiselab.stats    kstest, ks_2samp, kuiper, chisquare, linkage, GaussianMixture
                     with scipy's and scikit-learn's names and result attributes
+  noiselab.cheng    Cheng's controllable noise: optimise a table for a pattern array
   noiselab.results  an experiment folder's tables, manifest and verdicts
 
 Binding: ctypes over the shared library, not a CPython extension. ctypes is
@@ -32,5 +33,5 @@ Example (from a checkout built by ``scripts/noiselab setup``):
 
 from ._lib import NoiselabError, path as library_path
 
-__all__ = ["NoiselabError", "library_path", "noise", "stats", "results"]
+__all__ = ["NoiselabError", "library_path", "noise", "stats", "cheng", "results"]
 __version__ = "0.1.0"
