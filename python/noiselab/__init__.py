@@ -7,6 +7,7 @@ nothing here is a second implementation. Modules:
   noiselab.stats    kstest, ks_2samp, kuiper, chisquare, linkage, GaussianMixture
                     with scipy's and scikit-learn's names and result attributes
   noiselab.cheng    Cheng's controllable noise: optimise a table for a pattern array
+  noiselab.byexample  Lagae's noise by example: analyse an image, synthesize, morph
   noiselab.results  an experiment folder's tables, manifest and verdicts
 
 Binding: ctypes over the shared library, not a CPython extension. ctypes is
@@ -33,5 +34,6 @@ Example (from a checkout built by ``scripts/noiselab setup``):
 
 from ._lib import NoiselabError, path as library_path
 
-__all__ = ["NoiselabError", "library_path", "noise", "stats", "cheng", "results"]
+__all__ = ["NoiselabError", "library_path", "noise", "stats", "cheng", "byexample",
+           "results"]
 __version__ = "0.1.0"
