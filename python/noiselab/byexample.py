@@ -162,7 +162,8 @@ class Params:
         return cls(p)
 
     def __repr__(self):
-        return f"Params({self.channels} channels, {self.nbands} bands, {self.param_count} parameters)"
+        return (f"Params({self.channels} channels, {self.nbands} bands, "
+                f"{self.param_count} parameters)")
 
 
 def analyse(image, *, rgb=False, histogram=True, paper_histogram=False, calibrate=True):

@@ -61,7 +61,8 @@ def test_frame():
     pd = pytest.importorskip("pandas")
     r = nr.load(os.path.join(QUICK, "s3_fbm"))
     f = r.frame("gain_distribution")
-    assert isinstance(f, pd.DataFrame) and np.array_equal(f["sd"], r.tables["gain_distribution"]["sd"])
+    assert isinstance(f, pd.DataFrame)
+    assert np.array_equal(f["sd"], r.tables["gain_distribution"]["sd"])
 
 
 def test_bad_folders(tmp_path):
