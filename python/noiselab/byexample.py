@@ -90,7 +90,12 @@ def _from_numpy(name, a):
 
 
 def read_image(path):
-    """An image file (any format OpenImageIO reads) as a float32 (h, w, channels) array."""
+    """An image file (any format OpenImageIO reads) as a float32 (h, w, channels) array.
+
+    Example
+    -------
+    >>> img = read_image("data/exemplars/wood.png")            # doctest: +SKIP
+    """
     im, err = _IP(), Error()
     check(_image_read(os.fsencode(os.fspath(path)), ctypes.byref(im), ctypes.byref(err)), err)
     try:
@@ -101,7 +106,12 @@ def read_image(path):
 
 def write_image(image, path, bits=16):
     """Writes an (h, w[, channels]) array as the library writes images (atomic;
-    format from the extension; bits 8/16 for PNG, 16/32 for EXR)."""
+    format from the extension; bits 8/16 for PNG, 16/32 for EXR).
+
+    Example
+    -------
+    >>> write_image(np.zeros((8, 8, 3)), "black.png", 8)       # doctest: +SKIP
+    """
     im = _from_numpy("image", image)
     try:
         err = Error()
@@ -206,7 +216,16 @@ def analyse(image, *, rgb=False, histogram=True, paper_histogram=False, calibrat
 def synthesize(params, width, height=None, *, seed=1, scale=1.0, solid=False, z=0.0):
     """A width x height texture from Params (nl_byexample_synthesize), float32
     (height, width, channels), as `noiselab example synthesize` makes it
-    before writing its file."""
+    before writing its file. scale: pixel size in exemplar pixels; solid:
+    a slice z of 3D wavelet noise.
+
+    Example
+    -------
+    >>> import noiselab.noise as nn, noiselab.byexample as nb
+    >>> p = nb.analyse(nn.grid("fbm", 64, seed=3))
+    >>> nb.synthesize(p, 48, 32, seed=2).shape
+    (32, 48, 1)
+    """
     if not isinstance(params, Params):
         raise TypeError(f"params: expected noiselab.byexample.Params, got {type(params).__name__}")
     for name, v in (("width", width), ("height", width if height is None else height)):
@@ -225,7 +244,16 @@ def synthesize(params, width, height=None, *, seed=1, scale=1.0, solid=False, z=
 
 def morph(a, b, t):
     """Params between a (t = 0) and b (t = 1): linear, the PCA rotation by
-    quaternion slerp (nl_byexample_morph)."""
+    quaternion slerp (nl_byexample_morph).
+
+    Example
+    -------
+    >>> import noiselab.noise as nn, noiselab.byexample as nb
+    >>> a = nb.analyse(nn.grid("fbm", 64, seed=3))
+    >>> b = nb.analyse(nn.grid("turbulence", 64, seed=4))
+    >>> nb.morph(a, b, 0.5).channels
+    1
+    """
     m, err = _Params(), Error()
     check(_morph(ctypes.byref(a._p), ctypes.byref(b._p), float(t), ctypes.byref(m),
                  ctypes.byref(err)), err)

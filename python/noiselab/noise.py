@@ -21,7 +21,6 @@ import ctypes
 
 import numpy as np
 
-from . import _lib
 from ._lib import Error, c_double_p, check, fn
 
 _MAX_OCTAVES = 32
@@ -264,7 +263,7 @@ def grid(noise="improved", size=512, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=
     out : numpy.ndarray, optional
         a C-contiguous float64 (size, size) array to write into (a fresh one
         costs its page faults, as much as the noise on a loaded machine).
-    """ + _DOC_OPTIONS + """
+    %OPTIONS%
     Returns
     -------
     numpy.ndarray of float64, shape (size, size)
@@ -357,7 +356,7 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
         coordinates, any shapes that broadcast together.
     out : numpy.ndarray, optional
         a C-contiguous float64 array of the broadcast shape to write into.
-    """ + _DOC_OPTIONS + """
+    %OPTIONS%
     Returns
     -------
     numpy.ndarray of float64 with the broadcast shape
@@ -408,3 +407,8 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
     finally:
         nz.close()
     return out
+
+
+# The options both functions share, written once.
+grid.__doc__ = grid.__doc__.replace("%OPTIONS%", _DOC_OPTIONS)
+points.__doc__ = points.__doc__.replace("%OPTIONS%", _DOC_OPTIONS)

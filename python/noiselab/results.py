@@ -151,8 +151,10 @@ def load(folder):
 
 def report(folder):
     """The verdict rows of an experiment folder (quantity, paper, ours,
-    verdict, reason, ...), as a structured array; printing it row by row:
+    verdict, reason, ...), as a structured array.
 
+    Example
+    -------
     >>> for v in report("results/quick/s3_fbm"):                  # doctest: +SKIP
     ...     print(v["quantity"], v["verdict"])
     """
