@@ -77,6 +77,8 @@ _fractal_row = fn("nl_noise_fractal_row", None, ctypes.POINTER(_NoiseBasis),
 _marble_grid = fn("nl_texture_marble_grid", None, ctypes.POINTER(_NoiseBasis),
                   ctypes.POINTER(_Octaves), ctypes.POINTER(_Window), ctypes.c_double,
                   ctypes.c_double, c_double_p)
+_octaves_bound = fn("nl_noise_octaves_bound", ctypes.c_double, ctypes.POINTER(_Octaves),
+                    ctypes.c_double)
 _perm3_points = fn("nl_noise_perm3_points", None, ctypes.c_void_p, c_double_p, c_double_p,
                    c_double_p, ctypes.c_size_t, c_double_p)
 _perm3_points_sum = fn("nl_noise_perm3_points_sum", ctypes.c_double, ctypes.c_void_p,
@@ -305,6 +307,30 @@ def _out(out, shape):
         raise ValueError(f"out: expected a writeable C-contiguous float64 array of shape "
                          f"{shape}, got {desc}")
     return out
+
+
+def bound(noise="improved", *, seed=1, basis="improved", octaves=6, gain=0.5, lacunarity=2.0,
+          table=None, table_size=512, reference=False, terms="F1", lambda_=4.0, points=50,
+          count="inverse", tile=64):
+    """The analytic bound B of a noise, |value| <= B (turbulence: 0 <= value <= B):
+    the basis's bound times the sum of |amplitudes| (nl_noise_octaves_bound);
+    render maps an integer image's grey levels by it. Marble's values lie in
+    [0, 1]. Options as grid's.
+
+    Example
+    -------
+    >>> import noiselab.noise as nn
+    >>> round(nn.bound("improved"), 6), round(nn.bound("fbm", octaves=2, gain=0.5), 6)
+    (1.224745, 1.837117)
+    """
+    if noise == "marble":
+        return 1.0
+    nz = _Noise(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
+                terms, lambda_, points, count, tile)
+    try:
+        return _octaves_bound(ctypes.byref(nz.octaves), nz.basis.bound)
+    finally:
+        nz.close()
 
 
 def _coords(names, arrays):

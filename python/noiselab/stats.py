@@ -61,6 +61,8 @@ _kuiper_test = fn("nl_stats_kuiper_test", ctypes.c_int, c_double_p, ctypes.c_siz
                   ctypes.c_void_p, ctypes.POINTER(_KuiperResult), _E)
 _chisq_test = fn("nl_stats_chisq_test", ctypes.c_int, c_double_p, c_double_p, ctypes.c_size_t,
                  ctypes.POINTER(_ChisqResult), _E)
+_mean_sd = fn("nl_stats_mean_sd", None, c_double_p, ctypes.c_size_t, ctypes.c_int, c_double_p,
+               c_double_p)
 _linkage_parse = fn("nl_cluster_linkage_method_parse", ctypes.c_int, ctypes.c_char_p,
                     ctypes.POINTER(ctypes.c_int), _E)
 _linkage = fn("nl_cluster_linkage", ctypes.c_int, c_double_p, ctypes.c_size_t, ctypes.c_size_t,
@@ -257,6 +259,27 @@ def chisquare(f_obs, f_exp=None):
     return ChisquareResult(res.chi2, res.p, res.df, res.min_expected, bool(res.low_expected))
 
 
+def mean_sd(x, rounding="running"):
+    """The mean and sample sd (divisor n - 1) of x in one of the library's two
+    named roundings, so that the numbers of a committed table come back to
+    the bit: 'running' is GSL's running mean and sd (gsl_stats_mean,
+    gsl_stats_sd), 'summed' the sum in order over n, then the sum of squares.
+
+    Example
+    -------
+    >>> import noiselab.stats as ns
+    >>> ns.mean_sd([1.0, 2.0, 4.0])
+    (2.3333333333333335, 1.5275252316519468)
+    """
+    a = _sample("x", x)
+    if rounding not in ("running", "summed"):
+        raise ValueError(f"rounding: {rounding!r} is not 'running' or 'summed'")
+    m, sd = ctypes.c_double(), ctypes.c_double()
+    _mean_sd(_ptr(a), a.size, 0 if rounding == "running" else 1, ctypes.byref(m),
+             ctypes.byref(sd))
+    return m.value, sd.value
+
+
 def linkage(X, method="single"):
     """Agglomerative clustering of the rows of X (Euclidean), as
     scipy.cluster.hierarchy.linkage(X, method).
@@ -291,5 +314,5 @@ def linkage(X, method="single"):
 
 from ._gmm import GaussianMixture  # noqa: E402  (after the helpers it imports)
 
-__all__ = ["kstest", "ks_2samp", "kuiper", "chisquare", "linkage", "GaussianMixture",
+__all__ = ["kstest", "ks_2samp", "kuiper", "chisquare", "linkage", "GaussianMixture", "mean_sd",
            "KstestResult", "KuiperResult", "ChisquareResult"]
