@@ -77,6 +77,10 @@ _fractal_row = fn("nl_noise_fractal_row", None, ctypes.POINTER(_NoiseBasis),
 _marble_grid = fn("nl_texture_marble_grid", None, ctypes.POINTER(_NoiseBasis),
                   ctypes.POINTER(_Octaves), ctypes.POINTER(_Window), ctypes.c_double,
                   ctypes.c_double, c_double_p)
+_cellular_eval = fn("nl_cellular_eval", None, ctypes.c_void_p, c_double_p, ctypes.c_int,
+                    c_double_p)
+_cellular_row = fn("nl_cellular_row", None, ctypes.c_void_p, ctypes.c_double, ctypes.c_double,
+                   ctypes.c_double, ctypes.c_double, ctypes.c_size_t, ctypes.c_int, c_double_p)
 _octaves_bound = fn("nl_noise_octaves_bound", ctypes.c_double, ctypes.POINTER(_Octaves),
                     ctypes.c_double)
 _perm3_points = fn("nl_noise_perm3_points", None, ctypes.c_void_p, c_double_p, c_double_p,
@@ -438,3 +442,69 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
 # The options both functions share, written once.
 grid.__doc__ = grid.__doc__.replace("%OPTIONS%", _DOC_OPTIONS)
 points.__doc__ = points.__doc__.replace("%OPTIONS%", _DOC_OPTIONS)
+
+
+def _cells(seed, lambda_, points, count):
+    return _Noise("gctbf", seed, "improved", 1, 0.5, 2.0, None, 512, False, "F1", lambda_,
+                  points, count, 64)
+
+
+def cellular(x, y, z=0.5, n=4, *, seed=1, lambda_=4.0, points=50, count="inverse"):
+    """Worley's cellular distances F1..Fn (Qin & Yang 2000's feature points,
+    src/cellular/nl_cellular.h) at arrays of points, broadcast as numpy does.
+
+    Returns an array of the broadcast shape plus a last axis of n (1..4):
+    F1 <= F2 <= ... The feature points are gctbf's for the same seed,
+    lambda_, points and count, so F1 equals points(..., "gctbf") with
+    terms="F1". One C call per point.
+
+    Example
+    -------
+    >>> import numpy as np, noiselab.noise as nn
+    >>> F = nn.cellular(np.linspace(0, 3, 4), 0.5, 0.5, n=2, seed=2)
+    >>> F.shape, bool(np.all(F[:, 0] <= F[:, 1]))
+    ((4, 2), True)
+    """
+    n = _int("n", n, 1, 4)
+    xs, ys, zs = _coords("xyz", (x, y, z))
+    nz = _cells(seed, lambda_, points, count)
+    try:
+        out = np.empty(xs.shape + (n,))
+        cell = nz._b.contents.cell
+        p = np.empty(3)
+        fo = out.reshape(-1, n)
+        for k, (a, b, c) in enumerate(zip(xs.ravel(), ys.ravel(), zs.ravel())):
+            p[0], p[1], p[2] = a, b, c
+            _cellular_eval(cell, _ptr(p), n, _ptr(fo[k]))
+    finally:
+        nz.close()
+    return out
+
+
+def cellular_grid(size=512, n=4, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=1, lambda_=4.0,
+                  points=50, count="inverse"):
+    """F1..Fn on grid()'s raster through the cellular row kernel:
+    (size, size, n) float64, [r, c, i] = F_{i+1} at grid's pixel (r, c).
+
+    Example
+    -------
+    >>> import noiselab.noise as nn
+    >>> nn.cellular_grid(16, 3, seed=5).shape
+    (16, 16, 3)
+    """
+    size = _int("size", size, 1, 65536)
+    n = _int("n", n, 1, 4)
+    ext = _real("extent", extent, 0.0)
+    if not ext > 0:
+        raise ValueError(f"extent: {extent!r} is not positive")
+    x0, y0, z = _real("x0", x0), _real("y0", y0), _real("z", z)
+    nz = _cells(seed, lambda_, points, count)
+    out = np.empty((size, size, n))
+    try:
+        d = ext / size
+        for r in range(size):
+            _cellular_row(nz._b.contents.cell, x0 + 0.5 * d, d, y0 + (r + 0.5) * d, z, size, n,
+                          _ptr(out[r]))
+    finally:
+        nz.close()
+    return out

@@ -136,3 +136,18 @@ def test_bad_input(call, exc, words):
         call()
     msg = str(e.value)
     assert words in msg and "\n" not in msg, msg
+
+
+def test_cellular_distances():
+    """F1..F4: sorted, F1 and F2 - F1 as the gctbf noise gives them, rows = points."""
+    F = nn.cellular_grid(20, 4, seed=6)
+    assert F.shape == (20, 20, 4) and np.all(np.diff(F, axis=-1) >= 0)
+    assert np.array_equal(F[..., 0], nn.grid("gctbf", 20, seed=6, terms="F1"))
+    assert np.allclose(F[..., 1] - F[..., 0], nn.grid("gctbf", 20, seed=6, terms="F2 - F1"),
+                       rtol=0, atol=1e-15)
+    d = 4.0 / 20
+    x = (0.5 * d) + np.arange(20) * d
+    y = (np.arange(20)[:, None] + 0.5) * d
+    assert np.array_equal(nn.cellular(x[None, :], y, 0.5, 4, seed=6), F)
+    with pytest.raises(ValueError, match="n: 5 is outside 1..4"):
+        nn.cellular(0.0, 0.0, 0.0, n=5)
