@@ -204,6 +204,21 @@ class _Noise:
         self._g = g
         self.basis = _basis_grad2(g)
 
+    def check_lattice(self, c):
+        """Refuses coordinates whose finest octave passes 2^52 (render's rule):
+        beyond it doubles have no fractional bits and a cell index would
+        overflow the C side's long."""
+        o = self.octaves
+        f = max(abs(o.freq[k]) for k in range(o.n))
+        if f * c < 2.0 ** 52:
+            return
+        what = (f"lacunarity with octaves {o.n}" if self.sum == "fbm" else
+                f"octaves {o.n}" if self.sum else "the noise")
+        raise ValueError(f"coordinates: the finest octave's frequency {f:g} times the largest "
+                         f"coordinate {c:g} is {f * c:g}, beyond 2^52 = 4.5e15 where the noise "
+                         f"lattice has no fractional positions ({what}); use fewer octaves, a "
+                         f"smaller lacunarity or coordinates nearer the origin")
+
     def grad2(self):
         return ctypes.cast(self._g, ctypes.c_void_p) if self._g else self._b.contents.grad2
 
@@ -288,6 +303,12 @@ def grid(noise="improved", size=512, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=
         raise ValueError(f"extent: {extent!r} is not positive")
     nz = _Noise(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
                 terms, lambda_, points, count, tile)
+    try:
+        c = max(abs(win.x0), abs(win.x0 + win.size), abs(win.y0), abs(win.y0 + win.size))
+        nz.check_lattice(c if nz.planar else max(c, abs(win.z)))
+    except ValueError:
+        nz.close()
+        raise
     out = _out(out, (size, size))
     try:
         if nz.sum == "marble":
@@ -410,6 +431,9 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
             zs = None
         else:
             xs, ys, zs = _coords("xyz", (x, y, 0.5 if z is None else z))
+        if xs.size:
+            nz.check_lattice(max(float(np.max(np.abs(a))) for a in (xs, ys, zs)
+                                 if a is not None))
         out = _out(out, xs.shape)
         n = out.size
         o = nz.octaves

@@ -120,6 +120,8 @@ def test_broadcast_and_dtypes():
     (lambda: nn.points(0.0, 0.0, 1.0, "noise2"), ValueError, "2D noise"),
     (lambda: nn.points(0.0, 0.0, noise="marble"), ValueError, "use grid"),
     (lambda: nn.grid("fbm", -1), ValueError, "size: -1 is outside"),
+    (lambda: nn.grid("fbm", 4, lacunarity=1e3, octaves=8), ValueError, "beyond 2^52"),
+    (lambda: nn.points(1e16, 0.0, 0.0), ValueError, "beyond 2^52"),
     (lambda: nn.grid("fbm", 4, out=np.empty((4, 4), np.float32)), ValueError, "out: expected"),
     (lambda: nn.points(np.zeros(3), 0.0, out=np.empty(4)), ValueError, "out: expected"),
     (lambda: nn.grid("fbm", 8, octaves=0), ValueError, "octaves: 0"),
