@@ -18,6 +18,7 @@ sum of F1..F4), ``wavelet`` (Cook & DeRose 2005), and the sums ``fractal``,
 """
 
 import ctypes
+import functools
 
 import numpy as np
 
@@ -83,6 +84,10 @@ _cellular_row = fn("nl_cellular_row", None, ctypes.c_void_p, ctypes.c_double, ct
                    ctypes.c_double, ctypes.c_double, ctypes.c_size_t, ctypes.c_int, c_double_p)
 _octaves_bound = fn("nl_noise_octaves_bound", ctypes.c_double, ctypes.POINTER(_Octaves),
                     ctypes.c_double)
+_perm3_eval = fn("nl_noise_perm3_eval", ctypes.c_double, ctypes.c_void_p, ctypes.c_double,
+                 ctypes.c_double, ctypes.c_double)
+_grad2_eval = fn("nl_noise_grad2_eval", ctypes.c_double, ctypes.c_void_p, ctypes.c_double,
+                 ctypes.c_double)
 _perm3_points = fn("nl_noise_perm3_points", None, ctypes.c_void_p, c_double_p, c_double_p,
                    c_double_p, ctypes.c_size_t, c_double_p)
 _perm3_points_sum = fn("nl_noise_perm3_points_sum", ctypes.c_double, ctypes.c_void_p,
@@ -204,14 +209,16 @@ class _Noise:
         self._g = g
         self.basis = _basis_grad2(g)
 
-    def check_lattice(self, c):
+    def check_lattice(self, c, strict=True):
         """Refuses coordinates whose finest octave passes 2^52 (render's rule):
         beyond it doubles have no fractional bits and a cell index would
-        overflow the C side's long."""
+        overflow the C side's long. strict=False: returns False instead."""
         o = self.octaves
         f = max(abs(o.freq[k]) for k in range(o.n))
         if f * c < 2.0 ** 52:
-            return
+            return True
+        if not strict:
+            return False
         what = (f"lacunarity with octaves {o.n}" if self.sum == "fbm" else
                 f"octaves {o.n}" if self.sum else "the noise")
         raise ValueError(f"coordinates: the finest octave's frequency {f:g} times the largest "
@@ -222,16 +229,37 @@ class _Noise:
     def grad2(self):
         return ctypes.cast(self._g, ctypes.c_void_p) if self._g else self._b.contents.grad2
 
-    def close(self):
+    # The freeing functions are bound as defaults: at interpreter exit the
+    # cached noises are collected after the module's globals are gone.
+    def close(self, basis_free=_basis_free, grad2_free=_grad2_free):
         if self._b:
-            _basis_free(self._b)
+            basis_free(self._b)
             self._b = None
         if self._g:
-            _grad2_free(self._g)
+            grad2_free(self._g)
             self._g = None
 
     def __del__(self):
         self.close()
+
+
+@functools.lru_cache(maxsize=8)
+def _cached(*args):
+    return _Noise(*args)
+
+
+def _make(noise, seed, basis, octaves, gain, lacunarity, table, *rest):
+    """The built noise: the last few seeded ones are kept (building a table
+    costs more than a point), a given table is built afresh each call.
+    Built noises are never changed, so threads may share them."""
+    if table is not None:
+        return _Noise(noise, seed, basis, octaves, gain, lacunarity, table, *rest)
+    try:
+        return _cached(noise, seed, basis, octaves, gain, lacunarity, None, *rest)
+    except TypeError as e:
+        if "unhashable" not in str(e):
+            raise
+        return _Noise(noise, seed, basis, octaves, gain, lacunarity, None, *rest)
 
 
 _DOC_OPTIONS = """
@@ -301,25 +329,18 @@ def grid(noise="improved", size=512, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=
                   _real("extent", extent, 0.0), size, size)
     if not win.size > 0:
         raise ValueError(f"extent: {extent!r} is not positive")
-    nz = _Noise(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
-                terms, lambda_, points, count, tile)
-    try:
-        c = max(abs(win.x0), abs(win.x0 + win.size), abs(win.y0), abs(win.y0 + win.size))
-        nz.check_lattice(c if nz.planar else max(c, abs(win.z)))
-    except ValueError:
-        nz.close()
-        raise
+    nz = _make(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
+               terms, lambda_, points, count, tile)
+    c = max(abs(win.x0), abs(win.x0 + win.size), abs(win.y0), abs(win.y0 + win.size))
+    nz.check_lattice(c if nz.planar else max(c, abs(win.z)))
     out = _out(out, (size, size))
-    try:
-        if nz.sum == "marble":
-            _marble_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
-                         2 * np.pi * _real("stripes", stripes), _real("amplitude", amplitude),
-                         _ptr(out))
-        else:
-            _fractal_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
-                          _ptr(out))
-    finally:
-        nz.close()
+    if nz.sum == "marble":
+        _marble_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
+                     2 * np.pi * _real("stripes", stripes), _real("amplitude", amplitude),
+                     _ptr(out))
+    else:
+        _fractal_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
+                      _ptr(out))
     return out
 
 
@@ -359,7 +380,8 @@ def bound(noise="improved", *, seed=1, basis="improved", octaves=6, gain=0.5, la
 
 
 def _coords(names, arrays):
-    """float64, C-contiguous, broadcast copies of coordinate arrays (views when they are)."""
+    """float64, C-contiguous, broadcast copies of coordinate arrays (views when
+    they are), and the largest |coordinate| (0 for none)."""
     conv = []
     for name, a in zip(names, arrays):
         a = np.asarray(a)
@@ -374,16 +396,51 @@ def _coords(names, arrays):
         shapes = ", ".join(f"{n} {a.shape}" for n, a in zip(names, conv))
         raise ValueError(f"coordinates do not broadcast together: {shapes}") from None
     out = []
+    top = 0.0
     for name, a in zip(names, b):
         a = np.ascontiguousarray(a).reshape(a.shape)   # 0-d stays 0-d
-        # min and max are NaN if any value is, infinite if any is: one fast
-        # pass each instead of an isfinite array
-        if a.size and not (np.isfinite(a.min()) and np.isfinite(a.max())):
-            k = np.flatnonzero(~np.isfinite(a.ravel()))[0]
-            raise ValueError(f"{name}: coordinate {k} (flat index) is {a.ravel()[k]}, "
-                             f"not a finite number")
+        if a.size:
+            # One pass (BLAS): a . a is NaN or infinite if any coordinate is,
+            # and its root bounds the largest |coordinate| from above.
+            ss = float(np.dot(a.ravel(), a.ravel()))
+            if not np.isfinite(ss):
+                bad = ~np.isfinite(a.ravel())
+                if bad.any():
+                    k = np.flatnonzero(bad)[0]
+                    raise ValueError(f"{name}: coordinate {k} (flat index) is {a.ravel()[k]}, "
+                                     f"not a finite number")
+            top = max(top, np.sqrt(ss))
         out.append(a)
-    return out
+    return out, top
+
+
+def _max_abs(arrays):
+    """The largest |coordinate| exactly (two passes an array)."""
+    return max((max(-float(a.min()), float(a.max())) for a in arrays
+                if a is not None and a.size), default=0.0)
+
+
+def _scalars(*v):
+    return all(type(a) in (float, int, np.float64) for a in v if a is not None)
+
+
+def _point(nz, x, y, z):
+    """One point of improved or noise2 through the point call (the batch
+    kernels' bits), without numpy's array machinery: ~50x less overhead."""
+    x, y = float(x), float(y)
+    if nz.planar:
+        if z is not None:
+            raise ValueError(f"z: {nz.kind} is a 2D noise and takes no z")
+        zf = 0.0
+    else:
+        zf = 0.5 if z is None else float(z)
+    for name, v in (("x", x), ("y", y), ("z", zf)):
+        if not np.isfinite(v):
+            raise ValueError(f"{name}: coordinate 0 (flat index) is {v}, not a finite number")
+    nz.check_lattice(max(abs(x), abs(y), abs(zf)))
+    if nz.planar:
+        return np.float64(_grad2_eval(nz.grad2(), x, y))
+    return np.float64(_perm3_eval(ctypes.addressof(nz._b.contents.perm3), x, y, zf))
 
 
 def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=6, gain=0.5,
@@ -419,47 +476,46 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
     >>> nn.points(x, 1.5, 0.5, "improved", seed=3).shape
     (5,)
     """
-    nz = _Noise(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
-                terms, lambda_, points, count, tile)
-    try:
-        if nz.sum == "marble":
-            raise ValueError("noise: marble is a texture of the plane: use grid()")
-        if nz.planar:
-            if z is not None:
-                raise ValueError(f"z: {nz.kind} is a 2D noise and takes no z")
-            xs, ys = _coords("xy", (x, y))
-            zs = None
-        else:
-            xs, ys, zs = _coords("xyz", (x, y, 0.5 if z is None else z))
-        if xs.size:
-            nz.check_lattice(max(float(np.max(np.abs(a))) for a in (xs, ys, zs)
-                                 if a is not None))
-        out = _out(out, xs.shape)
-        n = out.size
-        o = nz.octaves
-        if nz.kind == "improved" and nz.sum is None:
-            _perm3_points(ctypes.addressof(nz._b.contents.perm3), _ptr(xs), _ptr(ys), _ptr(zs),
-                          n, _ptr(out))
-        elif nz.kind == "noise2" and nz.sum is None:
-            _grad2_points(nz.grad2(), _ptr(xs), _ptr(ys), n, _ptr(out))
-        elif nz.kind == "improved" and not o.turbulence:
-            out.fill(0.0)
-            p = ctypes.addressof(nz._b.contents.perm3)
-            for k in range(o.n):
-                _perm3_points_sum(p, o.freq[k], _ptr(xs), _ptr(ys), _ptr(zs), n, o.amp[k],
-                                  _ptr(out))
-        else:
-            scratch = np.empty(1, dtype=np.float64)
-            cell = np.empty(1, dtype=np.float64)
-            bp, op, sp, cp = ctypes.byref(nz.basis), ctypes.byref(o), _ptr(scratch), _ptr(cell)
-            fx, fy = xs.ravel(), ys.ravel()
-            fz = zs.ravel() if zs is not None else np.zeros(n)
-            fo = out.ravel()
-            for k in range(n):
-                _fractal_row(bp, op, fx[k], 0.0, fy[k], fz[k], 1, cp, sp)
-                fo[k] = cell[0]
-    finally:
-        nz.close()
+    nz = _make(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
+               terms, lambda_, points, count, tile)
+    if out is None and nz.sum is None and nz.kind in ("improved", "noise2") \
+            and _scalars(x, y, z):
+        return _point(nz, x, y, z)
+    if nz.sum == "marble":
+        raise ValueError("noise: marble is a texture of the plane: use grid()")
+    if nz.planar:
+        if z is not None:
+            raise ValueError(f"z: {nz.kind} is a 2D noise and takes no z")
+        (xs, ys), top = _coords("xy", (x, y))
+        zs = None
+    else:
+        (xs, ys, zs), top = _coords("xyz", (x, y, 0.5 if z is None else z))
+    if not nz.check_lattice(top, strict=False):
+        nz.check_lattice(_max_abs((xs, ys, zs)))   # the bound was loose: decide exactly
+    out = _out(out, xs.shape)
+    n = out.size
+    o = nz.octaves
+    if nz.kind == "improved" and nz.sum is None:
+        _perm3_points(ctypes.addressof(nz._b.contents.perm3), _ptr(xs), _ptr(ys), _ptr(zs),
+                      n, _ptr(out))
+    elif nz.kind == "noise2" and nz.sum is None:
+        _grad2_points(nz.grad2(), _ptr(xs), _ptr(ys), n, _ptr(out))
+    elif nz.kind == "improved" and not o.turbulence:
+        out.fill(0.0)
+        p = ctypes.addressof(nz._b.contents.perm3)
+        for k in range(o.n):
+            _perm3_points_sum(p, o.freq[k], _ptr(xs), _ptr(ys), _ptr(zs), n, o.amp[k],
+                              _ptr(out))
+    else:
+        scratch = np.empty(1, dtype=np.float64)
+        cell = np.empty(1, dtype=np.float64)
+        bp, op, sp, cp = ctypes.byref(nz.basis), ctypes.byref(o), _ptr(scratch), _ptr(cell)
+        fx, fy = xs.ravel(), ys.ravel()
+        fz = zs.ravel() if zs is not None else np.zeros(n)
+        fo = out.ravel()
+        for k in range(n):
+            _fractal_row(bp, op, fx[k], 0.0, fy[k], fz[k], 1, cp, sp)
+            fo[k] = cell[0]
     return out
 
 
@@ -490,9 +546,11 @@ def cellular(x, y, z=0.5, n=4, *, seed=1, lambda_=4.0, points=50, count="inverse
     ((4, 2), True)
     """
     n = _int("n", n, 1, 4)
-    xs, ys, zs = _coords("xyz", (x, y, z))
+    (xs, ys, zs), top = _coords("xyz", (x, y, z))
     nz = _cells(seed, lambda_, points, count)
     try:
+        if not nz.check_lattice(top, strict=False):
+            nz.check_lattice(_max_abs((xs, ys, zs)))
         out = np.empty(xs.shape + (n,))
         cell = nz._b.contents.cell
         p = np.empty(3)

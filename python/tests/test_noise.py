@@ -186,3 +186,28 @@ def test_long_calls_release_the_gil():
     inside = [s for s in stamps if span[0] < s < span[1]]
     covered = (inside[-1] - inside[0]) / (span[1] - span[0]) if inside else 0.0
     assert covered > 0.5, (covered, span[1] - span[0])
+
+
+def test_scalar_point_is_the_batch():
+    """Scalars take the point call (no arrays): the batch kernel's bits."""
+    r = np.random.default_rng(3)
+    x, y, z = r.uniform(-50, 50, (3, 200))
+    for noise, kw in (("improved", dict(seed=4)), ("noise2", dict(seed=4, table_size=64))):
+        zz = None if noise == "noise2" else z
+        batch = nn.points(x, y, zz, noise, **kw)
+        one = [nn.points(float(a), float(b), None if zz is None else float(c), noise, **kw)
+               for a, b, c in zip(x, y, z)]
+        assert np.array_equal(batch, np.array(one)), noise
+    assert isinstance(nn.points(1.0, 2.0, 3.0), np.float64)
+    with pytest.raises(ValueError, match="y: coordinate 0"):
+        nn.points(1.0, float("nan"), 0.0)
+
+
+def test_lattice_bound_is_exact_when_the_quick_one_is_loose():
+    """10^4 points near 1e14: the one-pass bound sqrt(sum x^2) ~ 1e16 passes
+    2^52, the exact largest |x| does not: the points are accepted."""
+    x = np.full(10_000, 1e14) + np.arange(10_000) * 0.25
+    v = nn.points(x, 0.3, 0.7)
+    assert np.array_equal(v[:5], [nn.points(float(a), 0.3, 0.7) for a in x[:5]])
+    with pytest.raises(ValueError, match="beyond 2"):
+        nn.points(np.append(x, 5e15), 0.3, 0.7)
