@@ -122,4 +122,25 @@ tsv_awk '
   END { if (seen != 3 || r != 64) { print "rows: " seen " points, " r " row samples"; exit 1 }
         sd = sqrt(ss / r - (s / r) ^ 2); if (sd < 0.05) { print "row sd " sd ": flat"; exit 1 }
         exit bad }' "$out/noise.tsv" || fail "wrong values in $out/noise.tsv"
-echo "cli_install: ok ($n headers, shared and static, module from $lib/noiselab)"
+
+# The Python package installed beside the library (when /usr/bin/python3 has
+# numpy, which setup installs): it imports from the destdir's site folder and
+# gives Perlin's reference value through the installed libnoiselab.so.
+pymsg="no numpy: Python package not checked"
+if /usr/bin/python3 -c 'import numpy' 2>/dev/null; then
+  pyinit="$(find "$dest" -path '*/noiselab/noise.py' | head -n 1)"
+  [ -n "$pyinit" ] || fail "Python package not installed (no noiselab/noise.py in $dest)"
+  grep -q "^LIBDIR = \"$prefix/" "$(dirname "$pyinit")/_config.py" \
+    || fail "the installed package's _config.py does not name the install's LIBDIR"
+  # shellcheck disable=SC2016  # Python, not shell
+  v="$(cd "$out" && PYTHONPATH="$(dirname "$(dirname "$pyinit")")" \
+       NOISELAB_LIBRARY="$lib/libnoiselab.so" PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 -c '
+import noiselab, noiselab.noise as nn
+assert noiselab.library_path.startswith("'"$lib"'/"), noiselab.library_path
+print(repr(float(nn.points(3.14, 42.0, 7.0, reference=True))))')" \
+    || fail "the installed Python package does not run"
+  [ "$v" = 0.13691995878400012 ] || [ "$v" = 0.1369199587840001 ] \
+    || fail "installed Python package: noise(3.14, 42, 7) = $v"
+  pymsg="Python package from $(dirname "$pyinit")"
+fi
+echo "cli_install: ok ($n headers, shared and static, module from $lib/noiselab; $pymsg)"

@@ -1,0 +1,592 @@
+"""Noise on numpy arrays: every noise of ``scripts/noiselab render``.
+
+Two entry points, both float64 out:
+
+``grid(noise, size, ...)``
+    a size x size raster through the library's row kernels (the same call
+    ``noiselab render`` makes, so the same seed gives the same bits);
+``points(x, y, z=None, noise=..., ...)``
+    the noise at arrays of coordinates of any shape, broadcast as numpy
+    broadcasts, through the batch kernels where the library has them
+    (improved and noise2 on their own, fractal and fBm sums over improved)
+    and one C call per point otherwise.
+
+Noises (``noise``): ``improved`` (Perlin 2002), ``noise2`` (Cheng 2009's 2D
+gradient table; ``table`` under a sum), ``gctbf`` (Qin & Yang's cellular
+sum of F1..F4), ``wavelet`` (Cook & DeRose 2005), and the sums ``fractal``,
+``turbulence``, ``fbm`` and ``marble`` over ``basis`` (default improved).
+"""
+
+import ctypes
+import functools
+
+import numpy as np
+
+from ._lib import Error, c_double_p, check, fn
+
+_MAX_OCTAVES = 32
+
+
+class _NoiseBasis(ctypes.Structure):
+    _fields_ = [("row", ctypes.c_void_p), ("ctx", ctypes.c_void_p), ("bound", ctypes.c_double)]
+
+
+class _Octaves(ctypes.Structure):
+    _fields_ = [("n", ctypes.c_int), ("turbulence", ctypes.c_int),
+                ("freq", ctypes.c_double * _MAX_OCTAVES), ("amp", ctypes.c_double * _MAX_OCTAVES)]
+
+
+class _Window(ctypes.Structure):
+    _fields_ = [("x0", ctypes.c_double), ("y0", ctypes.c_double), ("z", ctypes.c_double),
+                ("size", ctypes.c_double), ("w", ctypes.c_int), ("h", ctypes.c_int)]
+
+
+class _Gctbf(ctypes.Structure):
+    _fields_ = [("n", ctypes.c_int), ("c", ctypes.c_double * 4),
+                ("cc", (ctypes.c_double * 4) * 4)]
+
+
+class _Basis(ctypes.Structure):
+    """nl_basis (basis/nl_basis.h): the noise and the tables it points into."""
+    _fields_ = [("noise", _NoiseBasis), ("kind", ctypes.c_void_p), ("grad2", ctypes.c_void_p),
+                ("perm3", ctypes.c_ubyte * 512), ("cell", ctypes.c_void_p),
+                ("gctbf_cell", ctypes.c_void_p), ("gctbf", _Gctbf), ("tile", ctypes.c_void_p)]
+
+
+class _BasisOptions(ctypes.Structure):
+    _fields_ = [("table_size", ctypes.c_long), ("reference", ctypes.c_int),
+                ("lambda_", ctypes.c_double), ("points", ctypes.c_long), ("count", ctypes.c_int),
+                ("terms", ctypes.c_char_p), ("tile", ctypes.c_long)]
+
+
+class _Grad2(ctypes.Structure):
+    _fields_ = [("m", ctypes.c_size_t), ("angle", c_double_p), ("gx", c_double_p),
+                ("gy", c_double_p), ("perm", ctypes.POINTER(ctypes.c_uint))]
+
+
+_basis_defaults = fn("nl_basis_defaults", _BasisOptions)
+_basis_make = fn("nl_basis_make", ctypes.c_int, ctypes.c_char_p, ctypes.POINTER(_BasisOptions),
+                 ctypes.c_ulong, ctypes.POINTER(ctypes.POINTER(_Basis)), ctypes.POINTER(Error))
+_basis_free = fn("nl_basis_free", None, ctypes.POINTER(_Basis))
+_octaves_fbm = fn("nl_noise_octaves_fbm", _Octaves, ctypes.c_int, ctypes.c_double,
+                  ctypes.c_double)
+_fractal_grid = fn("nl_noise_fractal_grid", None, ctypes.POINTER(_NoiseBasis),
+                   ctypes.POINTER(_Octaves), ctypes.POINTER(_Window), c_double_p)
+_fractal_row = fn("nl_noise_fractal_row", None, ctypes.POINTER(_NoiseBasis),
+                  ctypes.POINTER(_Octaves), ctypes.c_double, ctypes.c_double, ctypes.c_double,
+                  ctypes.c_double, ctypes.c_size_t, c_double_p, c_double_p)
+_marble_grid = fn("nl_texture_marble_grid", None, ctypes.POINTER(_NoiseBasis),
+                  ctypes.POINTER(_Octaves), ctypes.POINTER(_Window), ctypes.c_double,
+                  ctypes.c_double, c_double_p)
+_cellular_eval = fn("nl_cellular_eval", None, ctypes.c_void_p, c_double_p, ctypes.c_int,
+                    c_double_p)
+_cellular_row = fn("nl_cellular_row", None, ctypes.c_void_p, ctypes.c_double, ctypes.c_double,
+                   ctypes.c_double, ctypes.c_double, ctypes.c_size_t, ctypes.c_int, c_double_p)
+_octaves_bound = fn("nl_noise_octaves_bound", ctypes.c_double, ctypes.POINTER(_Octaves),
+                    ctypes.c_double)
+_perm3_eval = fn("nl_noise_perm3_eval", ctypes.c_double, ctypes.c_void_p, ctypes.c_double,
+                 ctypes.c_double, ctypes.c_double)
+_grad2_eval = fn("nl_noise_grad2_eval", ctypes.c_double, ctypes.c_void_p, ctypes.c_double,
+                 ctypes.c_double)
+_perm3_points = fn("nl_noise_perm3_points", None, ctypes.c_void_p, c_double_p, c_double_p,
+                   c_double_p, ctypes.c_size_t, c_double_p)
+_perm3_points_sum = fn("nl_noise_perm3_points_sum", ctypes.c_double, ctypes.c_void_p,
+                       ctypes.c_double, c_double_p, c_double_p, c_double_p, ctypes.c_size_t,
+                       ctypes.c_double, c_double_p)
+_grad2_points = fn("nl_noise_grad2_points", None, ctypes.c_void_p, c_double_p, c_double_p,
+                   ctypes.c_size_t, c_double_p)
+_grad2_alloc = fn("nl_noise_grad2_alloc", ctypes.POINTER(_Grad2), ctypes.c_size_t)
+_grad2_free = fn("nl_noise_grad2_free", None, ctypes.POINTER(_Grad2))
+_grad2_set_angle = fn("nl_noise_grad2_set_angle", None, ctypes.POINTER(_Grad2), ctypes.c_size_t,
+                      ctypes.c_double)
+_basis_grad2 = fn("nl_noise_basis_grad2", _NoiseBasis, ctypes.POINTER(_Grad2))
+
+_BASES = {"improved": "improved", "noise2": "noise2", "table": "noise2", "gctbf": "gctbf",
+          "wavelet": "wavelet"}
+_SUMS = ("fractal", "turbulence", "fbm", "marble")
+_COUNTS = {"closest": 0, "inverse": 1, "closest-last": 2}
+_PLANAR = ("noise2",)
+
+
+def _ptr(a):
+    return a.ctypes.data_as(c_double_p)
+
+
+def _int(name, v, lo, hi):
+    if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
+        raise TypeError(f"{name}: expected an integer, got {type(v).__name__}")
+    if not lo <= v <= hi:
+        raise ValueError(f"{name}: {v} is outside {lo}..{hi}")
+    return int(v)
+
+
+def _real(name, v, lo=-np.inf, hi=np.inf):
+    try:
+        f = float(v)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name}: expected a number, got {v!r}") from None
+    if not np.isfinite(f) or not lo <= f <= hi:
+        raise ValueError(f"{name}: {v!r} is not a finite number in [{lo}, {hi}]")
+    return f
+
+
+class _Noise:
+    """A built noise (its C tables) and the octaves of its sum."""
+
+    def __init__(self, noise, seed, basis, octaves, gain, lacunarity, table, table_size,
+                 reference, terms, lambda_, points, count, tile):
+        self._b = None
+        self._g = None
+        if noise in _SUMS:
+            self.sum, under = noise, basis
+            if under not in _BASES:
+                raise ValueError(f"basis: unknown noise basis {under!r} "
+                                 f"(one of {', '.join(sorted(_BASES))})")
+        elif noise in _BASES:
+            self.sum, under = None, noise
+        else:
+            raise ValueError(f"noise: unknown noise {noise!r} "
+                             f"(one of {', '.join(list(_BASES) + list(_SUMS))})")
+        self.kind = _BASES[under]
+        self.planar = self.kind in _PLANAR
+        if count not in _COUNTS:
+            raise ValueError(f"count: {count!r} is not one of {', '.join(_COUNTS)}")
+        seed = _int("seed", seed, 0, 2**64 - 1)
+        if table is not None:
+            if self.kind != "noise2":
+                raise ValueError(f"table: only noise2 (table under a sum) reads a table, "
+                                 f"not {under}")
+            self._own_table(table)
+        else:
+            o = _basis_defaults()
+            o.table_size = _int("table_size", table_size, 1, 2**40)
+            o.reference = 1 if reference else 0
+            o.lambda_ = _real("lambda_", lambda_)
+            o.points = _int("points", points, -2**62, 2**62)
+            o.count = _COUNTS[count]
+            self._terms = str(terms).encode()
+            o.terms = self._terms
+            o.tile = _int("tile", tile, -2**62, 2**62)
+            b = ctypes.POINTER(_Basis)()
+            err = Error()
+            check(_basis_make(self.kind.encode(), ctypes.byref(o), seed, ctypes.byref(b),
+                              ctypes.byref(err)), err)
+            self._b = b
+            self.basis = b.contents.noise
+        n = 1
+        if self.sum is not None:
+            n = _int("octaves", octaves, 1, 30)
+        if self.sum == "fbm":
+            self.octaves = _octaves_fbm(n, _real("gain", gain), _real("lacunarity", lacunarity))
+        elif self.sum is None:
+            self.octaves = _octaves_fbm(1, 1.0, 1.0)
+        else:
+            self.octaves = _octaves_fbm(n, 0.5, 2.0)   # Shaffer's fractal sum
+            self.octaves.turbulence = 1 if self.sum == "turbulence" else 0
+
+    def _own_table(self, table):
+        try:
+            angle, perm = table
+        except (TypeError, ValueError):
+            raise ValueError("table: expected (angles, permutation), two arrays of m entries") \
+                from None
+        angle = np.asarray(angle, dtype=np.float64)
+        perm = np.asarray(perm)
+        m = angle.size
+        if angle.ndim != 1 or perm.shape != (m,) or m < 1:
+            raise ValueError(f"table: angles and permutation must be 1-D of the same size m >= 1 "
+                             f"(got shapes {angle.shape} and {perm.shape})")
+        if not np.all(np.isfinite(angle)):
+            raise ValueError("table: an angle is not finite")
+        if not np.issubdtype(perm.dtype, np.integer) or \
+                not np.array_equal(np.sort(perm), np.arange(m)):
+            raise ValueError(f"table: the permutation is not a permutation of 0..{m - 1}")
+        g = _grad2_alloc(m)
+        for k in range(m):
+            _grad2_set_angle(g, k, float(angle[k]))
+        for k in range(m):
+            g.contents.perm[k] = int(perm[k])
+        self._g = g
+        self.basis = _basis_grad2(g)
+
+    def check_lattice(self, c, strict=True):
+        """Refuses coordinates whose finest octave passes 2^52 (render's rule):
+        beyond it doubles have no fractional bits and a cell index would
+        overflow the C side's long. strict=False: returns False instead."""
+        o = self.octaves
+        f = max(abs(o.freq[k]) for k in range(o.n))
+        if f * c < 2.0 ** 52:
+            return True
+        if not strict:
+            return False
+        what = (f"lacunarity with octaves {o.n}" if self.sum == "fbm" else
+                f"octaves {o.n}" if self.sum else "the noise")
+        raise ValueError(f"coordinates: the finest octave's frequency {f:g} times the largest "
+                         f"coordinate {c:g} is {f * c:g}, beyond 2^52 = 4.5e15 where the noise "
+                         f"lattice has no fractional positions ({what}); use fewer octaves, a "
+                         f"smaller lacunarity or coordinates nearer the origin")
+
+    def grad2(self):
+        return ctypes.cast(self._g, ctypes.c_void_p) if self._g else self._b.contents.grad2
+
+    # The freeing functions are bound as defaults: at interpreter exit the
+    # cached noises are collected after the module's globals are gone.
+    def close(self, basis_free=_basis_free, grad2_free=_grad2_free):
+        if self._b:
+            basis_free(self._b)
+            self._b = None
+        if self._g:
+            grad2_free(self._g)
+            self._g = None
+
+    def __del__(self):
+        self.close()
+
+
+@functools.lru_cache(maxsize=8)
+def _cached(*args):
+    return _Noise(*args)
+
+
+def _make(noise, seed, basis, octaves, gain, lacunarity, table, *rest):
+    """The built noise: the last few seeded ones are kept (building a table
+    costs more than a point), a given table is built afresh each call.
+    Built noises are never changed, so threads may share them."""
+    if table is not None:
+        return _Noise(noise, seed, basis, octaves, gain, lacunarity, table, *rest)
+    try:
+        return _cached(noise, seed, basis, octaves, gain, lacunarity, None, *rest)
+    except TypeError as e:
+        if "unhashable" not in str(e):
+            raise
+        return _Noise(noise, seed, basis, octaves, gain, lacunarity, None, *rest)
+
+
+_DOC_OPTIONS = """
+    noise : str
+        improved, noise2, gctbf, wavelet, or a sum of octaves over ``basis``:
+        fractal, turbulence, fbm (``points`` has no marble).
+    seed : int
+        the tables' seed (the permutation, gradient table, feature points or
+        wavelet tile), as ``render --seed``; default 1.
+    basis : str
+        the noise under a sum: improved (default), table (noise2), gctbf, wavelet.
+    octaves : int
+        1..30 octaves of a sum (6).
+    gain, lacunarity : float
+        fbm's amplitude and frequency ratios (0.5, 2).
+    table : (angles, permutation), optional
+        noise2's gradient table given instead of seeded: m angles in radians
+        and a permutation of 0..m-1 (as ``noiselab.cheng`` optimises them).
+    table_size : int
+        gradients in noise2's seeded table (512).
+    reference : bool
+        improved noise with Perlin's own permutation, not the seed's.
+    terms, lambda_, points, count : str, float, int, str
+        gctbf's sum ("F1", "F2 - F1", ...), feature points per unit cube (4),
+        at most per cube (50), count rule (inverse, closest, closest-last).
+    tile : int
+        wavelet tile period, even, 8..256 (64).
+"""
+
+
+def grid(noise="improved", size=512, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=1,
+         basis="improved", octaves=6, gain=0.5, lacunarity=2.0, amplitude=0.5, stripes=1.0,
+         table=None, table_size=512, reference=False, terms="F1", lambda_=4.0, points=50,
+         count="inverse", tile=64, out=None):
+    """A size x size raster of a noise, as ``scripts/noiselab render`` makes it.
+
+    Pixel (row r, column c) holds the noise at x = x0 + (c + 1/2) extent / size,
+    y = y0 + (r + 1/2) extent / size, in the plane z (2D noises ignore z):
+    row 0 is y0, the top of render's image. Computed by the library's row
+    kernels (SIMD, the scalar code's bits); the GIL is released meanwhile.
+
+    Parameters
+    ----------
+    size : int
+        pixels per side, 1..65536.
+    extent, x0, y0, z : float
+        side of the square in noise units (4), its origin (0, 0), the plane (0.5).
+    amplitude, stripes : float
+        marble's displacement and stripes per unit (0.5, 1).
+    out : numpy.ndarray, optional
+        a C-contiguous float64 (size, size) array to write into (a fresh one
+        costs its page faults, as much as the noise on a loaded machine).
+    %OPTIONS%
+    Returns
+    -------
+    numpy.ndarray of float64, shape (size, size)
+
+    Example
+    -------
+    >>> import noiselab.noise as nn
+    >>> v = nn.grid("fbm", 256, octaves=6, gain=0.5, lacunarity=2, seed=7)
+    >>> v.shape, v.dtype
+    ((256, 256), dtype('float64'))
+    """
+    size = _int("size", size, 1, 65536)
+    win = _Window(_real("x0", x0), _real("y0", y0), _real("z", z),
+                  _real("extent", extent, 0.0), size, size)
+    if not win.size > 0:
+        raise ValueError(f"extent: {extent!r} is not positive")
+    nz = _make(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
+               terms, lambda_, points, count, tile)
+    c = max(abs(win.x0), abs(win.x0 + win.size), abs(win.y0), abs(win.y0 + win.size))
+    nz.check_lattice(c if nz.planar else max(c, abs(win.z)))
+    out = _out(out, (size, size))
+    if nz.sum == "marble":
+        _marble_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
+                     2 * np.pi * _real("stripes", stripes), _real("amplitude", amplitude),
+                     _ptr(out))
+    else:
+        _fractal_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
+                      _ptr(out))
+    return out
+
+
+def _out(out, shape):
+    if out is None:
+        return np.empty(shape, dtype=np.float64)
+    if not isinstance(out, np.ndarray) or out.dtype != np.float64 or out.shape != shape \
+            or not out.flags.c_contiguous or not out.flags.writeable:
+        desc = f"{out.dtype} {out.shape}" if isinstance(out, np.ndarray) else type(out).__name__
+        raise ValueError(f"out: expected a writeable C-contiguous float64 array of shape "
+                         f"{shape}, got {desc}")
+    return out
+
+
+def bound(noise="improved", *, seed=1, basis="improved", octaves=6, gain=0.5, lacunarity=2.0,
+          table=None, table_size=512, reference=False, terms="F1", lambda_=4.0, points=50,
+          count="inverse", tile=64):
+    """The analytic bound B of a noise, |value| <= B (turbulence: 0 <= value <= B):
+    the basis's bound times the sum of |amplitudes| (nl_noise_octaves_bound);
+    render maps an integer image's grey levels by it. Marble's values lie in
+    [0, 1]. Options as grid's.
+
+    Example
+    -------
+    >>> import noiselab.noise as nn
+    >>> round(nn.bound("improved"), 6), round(nn.bound("fbm", octaves=2, gain=0.5), 6)
+    (1.224745, 1.837117)
+    """
+    if noise == "marble":
+        return 1.0
+    nz = _Noise(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
+                terms, lambda_, points, count, tile)
+    try:
+        return _octaves_bound(ctypes.byref(nz.octaves), nz.basis.bound)
+    finally:
+        nz.close()
+
+
+def _coords(names, arrays):
+    """float64, C-contiguous, broadcast copies of coordinate arrays (views when
+    they are), and the largest |coordinate| (0 for none)."""
+    conv = []
+    for name, a in zip(names, arrays):
+        a = np.asarray(a)
+        if a.dtype != np.float64:
+            if a.dtype.kind not in "biuf":
+                raise TypeError(f"{name}: coordinates must be real numbers, got dtype {a.dtype}")
+            a = a.astype(np.float64)
+        conv.append(a)
+    try:
+        b = np.broadcast_arrays(*conv)
+    except ValueError:
+        shapes = ", ".join(f"{n} {a.shape}" for n, a in zip(names, conv))
+        raise ValueError(f"coordinates do not broadcast together: {shapes}") from None
+    out = []
+    top = 0.0
+    for name, a in zip(names, b):
+        a = np.ascontiguousarray(a).reshape(a.shape)   # 0-d stays 0-d
+        if a.size:
+            # One pass (BLAS): a . a is NaN or infinite if any coordinate is,
+            # and its root bounds the largest |coordinate| from above.
+            ss = float(np.dot(a.ravel(), a.ravel()))
+            if not np.isfinite(ss):
+                bad = ~np.isfinite(a.ravel())
+                if bad.any():
+                    k = np.flatnonzero(bad)[0]
+                    raise ValueError(f"{name}: coordinate {k} (flat index) is {a.ravel()[k]}, "
+                                     f"not a finite number")
+            top = max(top, np.sqrt(ss))
+        out.append(a)
+    return out, top
+
+
+def _max_abs(arrays):
+    """The largest |coordinate| exactly (two passes an array)."""
+    return max((max(-float(a.min()), float(a.max())) for a in arrays
+                if a is not None and a.size), default=0.0)
+
+
+def _scalars(*v):
+    return all(type(a) in (float, int, np.float64) for a in v if a is not None)
+
+
+def _point(nz, x, y, z):
+    """One point of improved or noise2 through the point call (the batch
+    kernels' bits), without numpy's array machinery: ~50x less overhead."""
+    x, y = float(x), float(y)
+    if nz.planar:
+        if z is not None:
+            raise ValueError(f"z: {nz.kind} is a 2D noise and takes no z")
+        zf = 0.0
+    else:
+        zf = 0.5 if z is None else float(z)
+    for name, v in (("x", x), ("y", y), ("z", zf)):
+        if not np.isfinite(v):
+            raise ValueError(f"{name}: coordinate 0 (flat index) is {v}, not a finite number")
+    nz.check_lattice(max(abs(x), abs(y), abs(zf)))
+    if nz.planar:
+        return np.float64(_grad2_eval(nz.grad2(), x, y))
+    return np.float64(_perm3_eval(ctypes.addressof(nz._b.contents.perm3), x, y, zf))
+
+
+def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=6, gain=0.5,
+           lacunarity=2.0, table=None, table_size=512, reference=False, terms="F1",
+           lambda_=4.0, points=50, count="inverse", tile=64, out=None):
+    """A noise at arrays of points: x, y (and z) broadcast together as numpy does.
+
+    Coordinates are float64 (integer and float32 arrays are converted; complex,
+    object or string arrays raise TypeError); a NaN or infinite coordinate is a
+    ValueError. z defaults to the plane 0.5 that ``grid`` and render use; 2D
+    noise (noise2) takes no z. Batch kernels (one C call for all
+    points, the GIL released) serve improved, noise2 and the fractal and fbm
+    sums over improved; the other noises cost one C call per point.
+    A point gives the bits ``grid`` gives at the same coordinates (for sums,
+    when every octave's frequency is a power of two, as with lacunarity 2:
+    the row kernels scale x0 and dx separately).
+
+    Parameters
+    ----------
+    x, y, z : array_like
+        coordinates, any shapes that broadcast together.
+    out : numpy.ndarray, optional
+        a C-contiguous float64 array of the broadcast shape to write into.
+    %OPTIONS%
+    Returns
+    -------
+    numpy.ndarray of float64 with the broadcast shape
+
+    Example
+    -------
+    >>> import numpy as np, noiselab.noise as nn
+    >>> x = np.linspace(0, 4, 5)
+    >>> nn.points(x, 1.5, 0.5, "improved", seed=3).shape
+    (5,)
+    """
+    nz = _make(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
+               terms, lambda_, points, count, tile)
+    if out is None and nz.sum is None and nz.kind in ("improved", "noise2") \
+            and _scalars(x, y, z):
+        return _point(nz, x, y, z)
+    if nz.sum == "marble":
+        raise ValueError("noise: marble is a texture of the plane: use grid()")
+    if nz.planar:
+        if z is not None:
+            raise ValueError(f"z: {nz.kind} is a 2D noise and takes no z")
+        (xs, ys), top = _coords("xy", (x, y))
+        zs = None
+    else:
+        (xs, ys, zs), top = _coords("xyz", (x, y, 0.5 if z is None else z))
+    if not nz.check_lattice(top, strict=False):
+        nz.check_lattice(_max_abs((xs, ys, zs)))   # the bound was loose: decide exactly
+    out = _out(out, xs.shape)
+    n = out.size
+    o = nz.octaves
+    if nz.kind == "improved" and nz.sum is None:
+        _perm3_points(ctypes.addressof(nz._b.contents.perm3), _ptr(xs), _ptr(ys), _ptr(zs),
+                      n, _ptr(out))
+    elif nz.kind == "noise2" and nz.sum is None:
+        _grad2_points(nz.grad2(), _ptr(xs), _ptr(ys), n, _ptr(out))
+    elif nz.kind == "improved" and not o.turbulence:
+        out.fill(0.0)
+        p = ctypes.addressof(nz._b.contents.perm3)
+        for k in range(o.n):
+            _perm3_points_sum(p, o.freq[k], _ptr(xs), _ptr(ys), _ptr(zs), n, o.amp[k],
+                              _ptr(out))
+    else:
+        scratch = np.empty(1, dtype=np.float64)
+        cell = np.empty(1, dtype=np.float64)
+        bp, op, sp, cp = ctypes.byref(nz.basis), ctypes.byref(o), _ptr(scratch), _ptr(cell)
+        fx, fy = xs.ravel(), ys.ravel()
+        fz = zs.ravel() if zs is not None else np.zeros(n)
+        fo = out.ravel()
+        for k in range(n):
+            _fractal_row(bp, op, fx[k], 0.0, fy[k], fz[k], 1, cp, sp)
+            fo[k] = cell[0]
+    return out
+
+
+# The options both functions share, written once.
+grid.__doc__ = grid.__doc__.replace("%OPTIONS%", _DOC_OPTIONS)
+points.__doc__ = points.__doc__.replace("%OPTIONS%", _DOC_OPTIONS)
+
+
+def _cells(seed, lambda_, points, count):
+    return _Noise("gctbf", seed, "improved", 1, 0.5, 2.0, None, 512, False, "F1", lambda_,
+                  points, count, 64)
+
+
+def cellular(x, y, z=0.5, n=4, *, seed=1, lambda_=4.0, points=50, count="inverse"):
+    """Worley's cellular distances F1..Fn (Qin & Yang 2000's feature points,
+    src/cellular/nl_cellular.h) at arrays of points, broadcast as numpy does.
+
+    Returns an array of the broadcast shape plus a last axis of n (1..4):
+    F1 <= F2 <= ... The feature points are gctbf's for the same seed,
+    lambda_, points and count, so F1 equals points(..., "gctbf") with
+    terms="F1". One C call per point.
+
+    Example
+    -------
+    >>> import numpy as np, noiselab.noise as nn
+    >>> F = nn.cellular(np.linspace(0, 3, 4), 0.5, 0.5, n=2, seed=2)
+    >>> F.shape, bool(np.all(F[:, 0] <= F[:, 1]))
+    ((4, 2), True)
+    """
+    n = _int("n", n, 1, 4)
+    (xs, ys, zs), top = _coords("xyz", (x, y, z))
+    nz = _cells(seed, lambda_, points, count)
+    try:
+        if not nz.check_lattice(top, strict=False):
+            nz.check_lattice(_max_abs((xs, ys, zs)))
+        out = np.empty(xs.shape + (n,))
+        cell = nz._b.contents.cell
+        p = np.empty(3)
+        fo = out.reshape(-1, n)
+        for k, (a, b, c) in enumerate(zip(xs.ravel(), ys.ravel(), zs.ravel())):
+            p[0], p[1], p[2] = a, b, c
+            _cellular_eval(cell, _ptr(p), n, _ptr(fo[k]))
+    finally:
+        nz.close()
+    return out
+
+
+def cellular_grid(size=512, n=4, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=1, lambda_=4.0,
+                  points=50, count="inverse"):
+    """F1..Fn on grid()'s raster through the cellular row kernel:
+    (size, size, n) float64, [r, c, i] = F_{i+1} at grid's pixel (r, c).
+
+    Example
+    -------
+    >>> import noiselab.noise as nn
+    >>> nn.cellular_grid(16, 3, seed=5).shape
+    (16, 16, 3)
+    """
+    size = _int("size", size, 1, 65536)
+    n = _int("n", n, 1, 4)
+    ext = _real("extent", extent, 0.0)
+    if not ext > 0:
+        raise ValueError(f"extent: {extent!r} is not positive")
+    x0, y0, z = _real("x0", x0), _real("y0", y0), _real("z", z)
+    nz = _cells(seed, lambda_, points, count)
+    out = np.empty((size, size, n))
+    try:
+        d = ext / size
+        for r in range(size):
+            _cellular_row(nz._b.contents.cell, x0 + 0.5 * d, d, y0 + (r + 0.5) * d, z, size, n,
+                          _ptr(out[r]))
+    finally:
+        nz.close()
+    return out

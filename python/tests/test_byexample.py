@@ -1,0 +1,75 @@
+"""noiselab.byexample against `noiselab example` (the tool's files, byte for byte)."""
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+from conftest import BUILD
+import noiselab.byexample as nb
+import noiselab.noise as nn
+
+EXAMPLE = os.path.join(BUILD, "tools", "noiselab-example")
+
+
+def exemplar(seed, size=64):
+    """A coloured fBm texture in [0, 1]: three correlated channels."""
+    a, b = (nn.grid("fbm", size, seed=seed + k) for k in (0, 1))
+    return np.stack([(1 + a) / 2, (1 + 0.7 * a + 0.3 * b) / 2, (1 + b) / 2], axis=-1)
+
+
+def tool(*args):
+    subprocess.run([EXAMPLE, *map(str, args)], check=True, capture_output=True)
+
+
+def test_analyse_synthesize_morph_are_the_tool(tmp_path):
+    ea, eb = exemplar(1), exemplar(7)
+    nb.write_image(ea, tmp_path / "a.exr", 32)   # float32: the tool reads the array's values
+    nb.write_image(eb, tmp_path / "b.exr", 32)
+    tool("analyse", tmp_path / "a.exr", "-o", tmp_path / "a.params")
+    tool("analyse", tmp_path / "b.exr", "-o", tmp_path / "b.params")
+    pa, pb = nb.analyse(ea), nb.analyse(eb)
+    pa.save(tmp_path / "pa.params")
+    assert (tmp_path / "pa.params").read_bytes() == (tmp_path / "a.params").read_bytes()
+    assert np.array_equal(nb.analyse(tmp_path / "a.exr").weights, pa.weights)
+    assert np.array_equal(nb.Params.load(tmp_path / "b.params").weights, pb.weights)
+    assert pa.channels == 3 and pa.weights.shape == (3, pa.nbands)
+    m = pa.matrix
+    assert np.allclose(m @ m.T, np.eye(3), atol=1e-12) and np.linalg.det(m) > 0
+
+    tool("synthesize", tmp_path / "a.params", "--size", 48, "--height", 40, "--seed", 5,
+         "-o", tmp_path / "s.exr")
+    s = nb.synthesize(pa, 48, 40, seed=5)
+    assert s.shape == (40, 48, 3) and s.dtype == np.float32
+    ref = nb.read_image(tmp_path / "s.exr")           # the tool writes half floats
+    assert np.array_equal(s.astype(np.float16).astype(np.float32), ref)
+
+    tool("morph", tmp_path / "a.params", tmp_path / "b.params", "--t", 0.3,
+         "-o", tmp_path / "m.params")
+    nb.morph(pa, pb, 0.3).save(tmp_path / "pm.params")
+    assert (tmp_path / "pm.params").read_bytes() == (tmp_path / "m.params").read_bytes()
+    assert np.allclose(nb.morph(pa, pb, 0.0).weights, pa.weights, rtol=1e-15)
+
+
+def test_grey_exemplar():
+    p = nb.analyse(nn.grid("fbm", 64, seed=3), calibrate=False, paper_histogram=True)
+    assert p.channels == 1 and p.hist.shape == (1, 10)
+    s = nb.synthesize(p, 32, seed=2)
+    assert s.shape == (32, 32, 1) and np.all(np.isfinite(s))
+    assert np.array_equal(s, nb.synthesize(p, 32, seed=2))
+
+
+@pytest.mark.parametrize("call,exc,words", [
+    (lambda: nb.analyse(np.zeros((8, 8))), ValueError, "16"),
+    (lambda: nb.analyse(np.full((32, 32), np.inf)), ValueError, "not finite"),
+    (lambda: nb.analyse(np.zeros((32, 32, 5))), ValueError, "channels <= 4"),
+    (lambda: nb.analyse("/nonexistent/x.png"), OSError, "/nonexistent/x.png"),
+    (lambda: nb.synthesize(nb.analyse(exemplar(1)), 0), ValueError, "width: 0"),
+    (lambda: nb.synthesize("p", 8), TypeError, "params"),
+    (lambda: nb.morph(nb.analyse(exemplar(1)), nb.analyse(exemplar(1)[..., 0]), 0.5),
+     ValueError, "channel"),
+])
+def test_bad_input(call, exc, words):
+    with pytest.raises(exc) as e:
+        call()
+    assert words in str(e.value) and "\n" not in str(e.value), str(e.value)

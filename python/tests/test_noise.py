@@ -1,0 +1,213 @@
+"""noiselab.noise against the render tool (same seed, same bits) and itself."""
+import ctypes
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+from conftest import BUILD
+import noiselab.noise as nn
+
+RENDER = os.path.join(BUILD, "tools", "noiselab-render")
+
+
+def render(tmp_path, args, size):
+    out = tmp_path / "v.tsv"
+    subprocess.run([RENDER, *args, "--size", str(size), "-o", str(out)], check=True,
+                   capture_output=True)
+    t = np.genfromtxt(out, names=True, delimiter="\t")
+    return t["value"].reshape(size, size), t["x"].reshape(size, size), t["y"].reshape(size, size)
+
+
+CASES = [
+    ("improved", ["--seed", "7"], dict(seed=7)),
+    ("improved", ["--reference", "--z", "1.25"], dict(reference=True, z=1.25)),
+    ("noise2", ["--seed", "3", "--table-size", "64"], dict(seed=3, table_size=64)),
+    ("fractal", ["--octaves", "5", "--seed", "2"], dict(octaves=5, seed=2)),
+    ("turbulence", ["--octaves", "4", "--basis", "table"], dict(octaves=4, basis="table")),
+    ("fbm", ["--octaves", "6", "--gain", "0.7", "--lacunarity", "2", "--seed", "9"],
+     dict(octaves=6, gain=0.7, lacunarity=2.0, seed=9)),
+    ("fbm", ["--octaves", "3", "--lacunarity", "1.9", "--basis", "wavelet", "--tile", "32"],
+     dict(octaves=3, lacunarity=1.9, basis="wavelet", tile=32)),
+    ("gctbf", ["--terms", "F2 - F1", "--seed", "5"], dict(terms="F2 - F1", seed=5)),
+    ("wavelet", ["--tile", "16", "--extent", "40", "--seed", "4"],
+     dict(tile=16, extent=40.0, seed=4)),
+    ("marble", ["--octaves", "4", "--amplitude", "0.8", "--stripes", "2"],
+     dict(octaves=4, amplitude=0.8, stripes=2.0)),
+]
+
+
+@pytest.mark.parametrize("noise,args,kw", CASES)
+def test_grid_is_render(tmp_path, noise, args, kw):
+    """The same seed and options give render's values bit for bit (its .tsv
+    prints each double so that it reads back exactly)."""
+    size = 24
+    ref, _, _ = render(tmp_path, [noise, *args], size)
+    v = nn.grid(noise, size, **kw)
+    assert v.shape == (size, size) and v.dtype == np.float64
+    assert np.array_equal(v, ref), np.max(np.abs(v - ref))
+
+
+POINT_CASES = [c for c in CASES if c[0] != "marble"]
+
+
+@pytest.mark.parametrize("noise,args,kw", POINT_CASES)
+def test_points_are_grid(noise, args, kw):
+    """points() at the grid's pixel centres gives the grid's bits (every case
+    here has power-of-two octave frequencies but one: lacunarity 1.9, whose
+    row kernel scales x0 and dx apart, which the test allows to 1e-12)."""
+    size = 16
+    kw = dict(kw)
+    extent, z = kw.pop("extent", 4.0), kw.pop("z", 0.5)
+    v = nn.grid(noise, size, extent=extent, z=z, **kw)
+    d = extent / size
+    x = (0.0 + 0.5 * d) + np.arange(size) * d
+    y = 0.0 + (np.arange(size)[:, None] + 0.5) * d
+    basis = kw.get("basis", noise)
+    zz = None if basis in ("noise2", "table") else z
+    p = nn.points(x[None, :], y, zz, noise, **kw)
+    assert p.shape == (size, size)
+    if kw.get("lacunarity", 2.0) == 2.0:
+        assert np.array_equal(p, v), np.max(np.abs(p - v))
+    else:
+        assert np.allclose(p, v, rtol=0, atol=1e-12)
+
+
+def test_given_table_is_seeded_table():
+    """A table given as arrays is the noise of those arrays: a seeded table's
+    own angles and permutation, read back from the library, give its values."""
+    import ctypes
+    nz = nn._Noise("noise2", 11, "improved", 1, 0.5, 2.0, None, 32, False, "F1", 4.0, 50,
+                   "inverse", 64)
+    g = ctypes.cast(nz.grad2(), ctypes.POINTER(nn._Grad2)).contents
+    angles = np.array([g.angle[k] for k in range(32)])
+    perm = np.array([g.perm[k] for k in range(32)])
+    nz.close()
+    a = nn.grid("noise2", 20, seed=11, table_size=32)
+    b = nn.grid("noise2", 20, table=(angles, perm))
+    assert np.array_equal(a, b)
+    x = np.linspace(-3, 3, 50)
+    assert np.array_equal(nn.points(x, 0.3, None, "noise2", table=(angles, perm)),
+                          nn.points(x, 0.3, None, "noise2", seed=11, table_size=32))
+
+
+def test_out():
+    buf = np.full((32, 32), np.nan)
+    assert nn.grid("fbm", 32, seed=4, out=buf) is buf
+    assert np.array_equal(buf, nn.grid("fbm", 32, seed=4))
+    x = np.linspace(-2, 2, 9)
+    pb = np.empty(9)
+    assert nn.points(x, 0.5, 0.25, out=pb) is pb and np.array_equal(pb, nn.points(x, 0.5, 0.25))
+
+
+def test_broadcast_and_dtypes():
+    x = np.linspace(0, 3, 7, dtype=np.float32)
+    y = np.arange(3, dtype=np.int64)[:, None]
+    p = nn.points(x, y, 0.25)
+    assert p.shape == (3, 7) and p.dtype == np.float64
+    q = nn.points(x.astype(np.float64)[None, :].repeat(3, 0), y.astype(float).repeat(7, 1),
+                  np.full((3, 7), 0.25))
+    assert np.array_equal(p, q)
+    assert nn.points(1.5, 2.5, 3.5).shape == ()
+
+
+@pytest.mark.parametrize("call,exc,words", [
+    (lambda: nn.points(np.array([1j]), 0.0), TypeError, "x: coordinates must be real"),
+    (lambda: nn.points(np.array(["a"]), 0.0), TypeError, "x: coordinates must be real"),
+    (lambda: nn.points(np.zeros(3), np.zeros(4)), ValueError, "do not broadcast"),
+    (lambda: nn.points(0.0, np.array([0.0, np.nan])), ValueError, "y: coordinate 1"),
+    (lambda: nn.points(np.inf, 0.0), ValueError, "not a finite number"),
+    (lambda: nn.points(0.0, 0.0, 1.0, "noise2"), ValueError, "2D noise"),
+    (lambda: nn.points(0.0, 0.0, noise="marble"), ValueError, "use grid"),
+    (lambda: nn.grid("fbm", -1), ValueError, "size: -1 is outside"),
+    (lambda: nn.grid("fbm", 4, lacunarity=1e3, octaves=8), ValueError, "beyond 2^52"),
+    (lambda: nn.points(1e16, 0.0, 0.0), ValueError, "beyond 2^52"),
+    (lambda: nn.grid("fbm", 4, out=np.empty((4, 4), np.float32)), ValueError, "out: expected"),
+    (lambda: nn.points(np.zeros(3), 0.0, out=np.empty(4)), ValueError, "out: expected"),
+    (lambda: nn.grid("fbm", 8, octaves=0), ValueError, "octaves: 0"),
+    (lambda: nn.grid("perlin", 8), ValueError, "unknown noise 'perlin'"),
+    (lambda: nn.grid("fbm", 8, basis="x"), ValueError, "unknown noise basis"),
+    (lambda: nn.grid("gctbf", 8, terms="F9"), ValueError, "F9"),
+    (lambda: nn.grid("wavelet", 8, tile=7), ValueError, "--tile"),
+    (lambda: nn.grid("noise2", 8, table=([0.0, 1.0], [0, 0])), ValueError, "not a permutation"),
+])
+def test_bad_input(call, exc, words):
+    """Bad input raises with a one-line message naming it (the library's own
+    message where the library checks)."""
+    with pytest.raises(exc) as e:
+        call()
+    msg = str(e.value)
+    assert words in msg and "\n" not in msg, msg
+
+
+def test_cellular_distances():
+    """F1..F4: sorted, F1 and F2 - F1 as the gctbf noise gives them, rows = points."""
+    F = nn.cellular_grid(20, 4, seed=6)
+    assert F.shape == (20, 20, 4) and np.all(np.diff(F, axis=-1) >= 0)
+    assert np.array_equal(F[..., 0], nn.grid("gctbf", 20, seed=6, terms="F1"))
+    assert np.allclose(F[..., 1] - F[..., 0], nn.grid("gctbf", 20, seed=6, terms="F2 - F1"),
+                       rtol=0, atol=1e-15)
+    d = 4.0 / 20
+    x = (0.5 * d) + np.arange(20) * d
+    y = (np.arange(20)[:, None] + 0.5) * d
+    assert np.array_equal(nn.cellular(x[None, :], y, 0.5, 4, seed=6), F)
+    with pytest.raises(ValueError, match="n: 5 is outside 1..4"):
+        nn.cellular(0.0, 0.0, 0.0, n=5)
+
+
+def test_long_calls_release_the_gil():
+    """While a long grid runs in C on one thread, Python runs on another
+    (ctypes drops the GIL around foreign calls): the main thread's loop keeps
+    stamping times through the call's span. Held (ctypes.PyDLL, measured),
+    the main thread runs only in the switch interval before the call: its
+    stamps inside the span covered 7% of it (12 ms of 160), released 99%."""
+    import threading
+    import time
+    span = []
+
+    def work():
+        buf = np.empty((1536, 1536))
+        t0 = time.perf_counter()
+        nn._fractal_grid(*work.args, nn._ptr(buf))
+        span.extend([t0, time.perf_counter()])
+
+    nz = nn._Noise("fbm", 1, "improved", 12, 0.5, 2.0, None, 512, False, "F1", 4.0, 50,
+                   "inverse", 64)
+    win = nn._Window(0.0, 0.0, 0.5, 4.0, 1536, 1536)
+    work.args = (ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win))
+    t = threading.Thread(target=work)
+    stamps = []
+    t.start()
+    while t.is_alive():
+        stamps.append(time.perf_counter())
+    t.join()
+    nz.close()
+    inside = [s for s in stamps if span[0] < s < span[1]]
+    covered = (inside[-1] - inside[0]) / (span[1] - span[0]) if inside else 0.0
+    assert covered > 0.5, (covered, span[1] - span[0])
+
+
+def test_scalar_point_is_the_batch():
+    """Scalars take the point call (no arrays): the batch kernel's bits."""
+    r = np.random.default_rng(3)
+    x, y, z = r.uniform(-50, 50, (3, 200))
+    for noise, kw in (("improved", dict(seed=4)), ("noise2", dict(seed=4, table_size=64))):
+        zz = None if noise == "noise2" else z
+        batch = nn.points(x, y, zz, noise, **kw)
+        one = [nn.points(float(a), float(b), None if zz is None else float(c), noise, **kw)
+               for a, b, c in zip(x, y, z)]
+        assert np.array_equal(batch, np.array(one)), noise
+    assert isinstance(nn.points(1.0, 2.0, 3.0), np.float64)
+    with pytest.raises(ValueError, match="y: coordinate 0"):
+        nn.points(1.0, float("nan"), 0.0)
+
+
+def test_lattice_bound_is_exact_when_the_quick_one_is_loose():
+    """10^4 points near 1e14: the one-pass bound sqrt(sum x^2) ~ 1e16 passes
+    2^52, the exact largest |x| does not: the points are accepted."""
+    x = np.full(10_000, 1e14) + np.arange(10_000) * 0.25
+    v = nn.points(x, 0.3, 0.7)
+    assert np.array_equal(v[:5], [nn.points(float(a), 0.3, 0.7) for a in x[:5]])
+    with pytest.raises(ValueError, match="beyond 2"):
+        nn.points(np.append(x, 5e15), 0.3, 0.7)
