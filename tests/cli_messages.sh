@@ -130,6 +130,10 @@ if [ -n "$NOISELAB" ]; then
   refused "unknown experiment 'a\\nb'" "$NOISELAB" reproduce "$nl"
   refused "unknown experiment 'a\\nb'" "$NOISELAB" sweep "$nl"
   refused "'a\\nb' is not a number" "$NOISELAB" sweep s3 --param "octaves=$nl" --out sw
+  # --help of a command answers, it is not an experiment's name
+  "$NOISELAB" params --help >out 2>err
+  check test $? = 0
+  check grep -q '^  params EXPERIMENT' out
   touch afile
   refused 'afile/a\nb: Not a directory' "$NOISELAB" reproduce --out "afile/$nl" S3
   # a sweep folder's name goes into one-line job lines: refused

@@ -93,8 +93,8 @@ bad() {   # WANT_FRAGMENT ARGS...
   fi
 }
 bad "unknown experiment 'nosuch'" nosuch --param z=1 --out "$out/x"
-bad "--set gain: unknown parameter for s3_fbm" s3_fbm --quick --param gain=0:1:5 --out "$out/x"
-bad "--set size: 8 is outside [16, 4096]" s3_fbm --quick --param size=8 --out "$out/x"
+bad "--param gain: unknown parameter for s3_fbm" s3_fbm --quick --param gain=0:1:5 --out "$out/x"
+bad "--param size: 8 is outside [16, 4096]" s3_fbm --quick --param size=8 --out "$out/x"
 bad "empty range" s3_fbm --param z=0:1:0 --out "$out/x"
 bad "a log range needs positive ends" s3_fbm --param z=0:1:log5 --out "$out/x"
 bad "a log range needs positive ends" s3_fbm --param z=1:-2:log5 --out "$out/x"

@@ -101,6 +101,16 @@ static char *dry_run_line(const nl_sweep_plan *pl, const char *qexe, size_t i)
   return cmd;
 }
 
+/* An experiment's complaint about a value names the option it was given,
+ * "--set NAME"; the user typed "--param NAME", so the message says that. */
+static nl_status blame_param(nl_error *err, const char *line)
+{
+  const char *p = strstr(line, "--set ");
+  if (!p)
+    return nl_fail(err, NL_EINVAL, "%s", line);
+  return nl_fail(err, NL_EINVAL, "%.*s--param %s", (int)(p - line), line, p + strlen("--set "));
+}
+
 nl_status nl_sweep_probe(const nl_sweep_plan *pl, const char *exe, nl_error *err)
 {
   static char out[1 << 16];
@@ -117,7 +127,7 @@ nl_status nl_sweep_probe(const nl_sweep_plan *pl, const char *exe, nl_error *err
   for (int k = 0; !s && k < pl->np; k++) {
     char *names = NULL;
     if (!known_param(out, pl->p[k].name, &names))
-      s = nl_fail(err, NL_EINVAL, "--set %s: unknown parameter for %s (valid: %s)", pl->p[k].name,
+      s = nl_fail(err, NL_EINVAL, "--param %s: unknown parameter for %s (valid: %s)", pl->p[k].name,
                   pl->experiment, names);
     free(names);
   }
@@ -130,7 +140,7 @@ nl_status nl_sweep_probe(const nl_sweep_plan *pl, const char *exe, nl_error *err
     if (rc < 0)
       s = nl_fail(err, NL_EIO, "cannot run %s", line);
     else if (rc == 2)   /* the experiment's own one-line complaint */
-      s = nl_fail(err, NL_EINVAL, "%s", nl_sweep_last_line(out));
+      s = blame_param(err, nl_sweep_last_line(out));
     else if (rc)
       s = nl_fail(err, NL_EINVAL, "dry run of %s failed (exit %d): %s", pl->experiment, rc,
                   nl_sweep_last_line(out));
