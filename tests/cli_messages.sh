@@ -124,6 +124,20 @@ if [ "$(id -u)" != 0 ]; then
   chmod u+w ro
 fi
 
+# ---- an image given where a text file belongs is named as an image
+"$RENDER" fbm --size 16 -o img.png >/dev/null 2>&1
+refused 'img.png: a PNG image, not a table' "$STAT" ks img.png
+refused 'img.png: a PNG image, not a parameter file' "$EXAMPLE" synthesize img.png --size 8 -o s.png
+check test ! -e s.png
+# a pipe is read, not sniffed (its first bytes cannot be put back)
+seq 1 9 | awk '{ print $1 / 10 }' >u.tsv
+"$STAT" ks /dev/stdin <u.tsv >out 2>err
+check grep -q 'n=9 ' out
+# each example subcommand's --help is its own
+"$EXAMPLE" synthesize --help >out 2>err
+check grep -q '^usage: noiselab example synthesize' out
+check test "$(grep -c 'noiselab example' out)" = 1
+
 # ---- the entry script: messages quoting what the user typed are one line
 if [ -n "$NOISELAB" ]; then
   refused "unknown experiment 'a\\nb'" "$NOISELAB" params "$nl"

@@ -19,34 +19,56 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void usage(FILE *fp)
+/* Each subcommand's usage and options; `example CMD --help` prints its own,
+ * `example --help` all four. */
+static const struct { const char *cmd, *usage, *help; } HELP[] = {
+  {"analyse",
+   "noiselab example analyse IMAGE -o PARAMS [--rgb] [--no-histogram] [--paper-histogram]\n"
+   "                        [--no-calibration]\n",
+   "  analyse     fit the procedural texture of an exemplar (grey, RGB, RGBA; 8/16-bit or\n"
+   "              float; at least 16 x 16 pixels): C^2 + C (Q + B) parameters for C channels,\n"
+   "              Q histogram quantiles and B = floor(log2 of the larger side) bands (the\n"
+   "              paper's 66 for a 512 x 512 RGB exemplar and its 10 quantiles); analyse\n"
+   "              prints the count\n"
+   "  --rgb       no PCA colour decorrelation;  --no-histogram  no histogram matching\n"
+   "  --paper-histogram  the paper's 10 quantiles at p = j/9 (default: 33 quantiles at\n"
+   "              p = Phi(z), z = -4..4 every 1/4 sd, which keep the tails)\n"
+   "  --no-calibration  the paper's synthesis: weights by eq. 12, histogram by the expected\n"
+   "              sd; default: the file keeps the exemplar's band powers and synthesis\n"
+   "              calibrates the band weights to them at its size and seed (4 rounds of\n"
+   "              synthesize, rank-match the histogram, measure, correct; nl_byexample.h)\n"},
+  {"synthesize",
+   "noiselab example synthesize PARAMS --size N [--height H] [--seed S] [--scale S]\n"
+   "                        [--solid [--z Z]] -o OUT.png|.exr|.tif\n",
+   "  synthesize  evaluate it on an N x H grid (pixels of the exemplar's size times --scale);\n"
+   "              --solid uses 3D wavelet noise, the slice at depth --z\n"},
+  {"morph",
+   "noiselab example morph PARAMS1 PARAMS2 --t T -o OUT.params\n"
+   "                        [--size N [--seed S]  (then OUT is an image)]\n",
+   "  morph       interpolate two parameter files at t in [0, 1] (matrix by quaternion slerp)\n"},
+  {"compare",
+   "noiselab example compare PHOTO SYNTH -o SUMMARY.tsv [--bands BANDS.tsv]\n",
+   "  compare     luminance of SYNTH against PHOTO: KS distance, tail mass beyond 2.5 sd, colour\n"
+   "              speckle, and per eq. 13 band of PHOTO the power ratio (--bands); pass = every\n"
+   "              band with >= 2% of the power within x1.3 and KS < 0.03 (L3's criteria)\n"},
+};
+enum { NHELP = sizeof HELP / sizeof HELP[0] };
+
+/* cmd NULL: every subcommand; else the one whose name cmd starts (analyze,
+ * synthesise are accepted spellings). */
+static void usage(FILE *fp, const char *cmd)
 {
-  fputs("usage: noiselab example analyse IMAGE -o PARAMS [--rgb] [--no-histogram] [--paper-histogram]\n"
-        "                        [--no-calibration]\n"
-        "       noiselab example synthesize PARAMS --size N [--height H] [--seed S] [--scale S]\n"
-        "                        [--solid [--z Z]] -o OUT.png|.exr|.tif\n"
-        "       noiselab example morph PARAMS1 PARAMS2 --t T -o OUT.params\n"
-        "                        [--size N [--seed S]  (then OUT is an image)]\n"
-        "       noiselab example compare PHOTO SYNTH -o SUMMARY.tsv [--bands BANDS.tsv]\n"
-        "  analyse     fit the procedural texture of an exemplar (grey, RGB, RGBA; 8/16-bit or\n"
-        "              float; at least 16 x 16 pixels): C^2 + C (Q + B) parameters for C channels,\n"
-        "              Q histogram quantiles and B = floor(log2 of the larger side) bands (the\n"
-        "              paper's 66 for a 512 x 512 RGB exemplar and its 10 quantiles); analyse\n"
-        "              prints the count\n"
-        "  --rgb       no PCA colour decorrelation;  --no-histogram  no histogram matching\n"
-        "  --paper-histogram  the paper's 10 quantiles at p = j/9 (default: 33 quantiles at\n"
-        "              p = Phi(z), z = -4..4 every 1/4 sd, which keep the tails)\n"
-        "  --no-calibration  the paper's synthesis: weights by eq. 12, histogram by the expected\n"
-        "              sd; default: the file keeps the exemplar's band powers and synthesis\n"
-        "              calibrates the band weights to them at its size and seed (4 rounds of\n"
-        "              synthesize, rank-match the histogram, measure, correct; nl_byexample.h)\n"
-        "  synthesize  evaluate it on an N x H grid (pixels of the exemplar's size times --scale);\n"
-        "              --solid uses 3D wavelet noise, the slice at depth --z\n"
-        "  morph       interpolate two parameter files at t in [0, 1] (matrix by quaternion slerp)\n"
-        "  compare     luminance of SYNTH against PHOTO: KS distance, tail mass beyond 2.5 sd, colour\n"
-        "              speckle, and per eq. 13 band of PHOTO the power ratio (--bands); pass = every\n"
-        "              band with >= 2% of the power within x1.3 and KS < 0.03 (L3's criteria)\n",
-        fp);
+  int first = 1;
+  for (int k = 0; k < NHELP; k++) {
+    if (cmd && strncmp(cmd, HELP[k].cmd, 5))
+      continue;
+    fputs(first ? "usage: " : "       ", fp);
+    fputs(HELP[k].usage, fp);
+    first = 0;
+  }
+  for (int k = 0; k < NHELP; k++)
+    if (!cmd || !strncmp(cmd, HELP[k].cmd, 5))
+      fputs(HELP[k].help, fp);
 }
 
 /* One line on stderr, exit 2: input quoted in it is escaped (nl_message). */
@@ -121,7 +143,7 @@ static void parse(int argc, char **argv, args *a)
     case O_PAPERHIST: a->paperhist = 1; break;
     case O_NOCAL: a->nocal = 1; break;
     case O_SOLID: a->solid = 1; break;
-    case O_HELP: usage(stdout); exit(0);
+    case O_HELP: usage(stdout, argv[1]); exit(0);
     }
   }
   nl_opt_end(&p);
@@ -237,9 +259,9 @@ static int compare(const args *a)
 int main(int argc, char **argv)
 {
   nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
-  if (argc < 2) { usage(stderr); return 2; }
+  if (argc < 2) { usage(stderr, NULL); return 2; }
   const char *cmd = argv[1];
-  if (!strcmp(cmd, "-h") || !strcmp(cmd, "--help")) { usage(stdout); return 0; }
+  if (!strcmp(cmd, "-h") || !strcmp(cmd, "--help")) { usage(stdout, NULL); return 0; }
   args a;
   if (strcmp(cmd, "analyse") && strcmp(cmd, "analyze") && strcmp(cmd, "synthesize") &&
       strcmp(cmd, "synthesise") && strcmp(cmd, "morph") && strcmp(cmd, "compare")) {

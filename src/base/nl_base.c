@@ -720,3 +720,25 @@ double nl_lgamma(double x)
   int sign;
   return lgamma_r(x, &sign);
 }
+
+const char *nl_file_image_kind(FILE *fp)
+{
+  static const struct { const char *name; unsigned char magic[8]; size_t n; } KINDS[] = {
+    {"PNG", {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'}, 8},
+    {"OpenEXR", {0x76, 0x2f, 0x31, 0x01}, 4},
+    {"TIFF", {'I', 'I', 42, 0}, 4},
+    {"TIFF", {'M', 'M', 0, 42}, 4},
+    {"JPEG", {0xff, 0xd8, 0xff}, 3},
+    {"GIF", {'G', 'I', 'F', '8'}, 4},
+  };
+  struct stat st;
+  if (fstat(fileno(fp), &st) || !S_ISREG(st.st_mode))
+    return NULL;   /* a pipe cannot be rewound: its bytes are the reader's */
+  unsigned char head[8];
+  size_t got = fread(head, 1, sizeof head, fp);
+  rewind(fp);
+  for (size_t k = 0; k < sizeof KINDS / sizeof KINDS[0]; k++)
+    if (got >= KINDS[k].n && !memcmp(head, KINDS[k].magic, KINDS[k].n))
+      return KINDS[k].name;
+  return NULL;
+}

@@ -109,6 +109,13 @@ nl_status nl_atomic_write(const char *path, const void *data, size_t n, nl_error
  * Caller frees. */
 char *nl_temp_sibling(const char *path);
 
+/* The image format whose signature opens the file `fp` ("PNG", "OpenEXR",
+ * "TIFF", "JPEG", "GIF"), or NULL; reads at most 8 bytes of a regular file
+ * and rewinds (NULL for a pipe or device, which are not read). Text readers (tables, parameter files) ask it first so
+ * that an image given in a text file's place is named as one, instead of
+ * its first NUL byte or garbled line. */
+const char *nl_file_image_kind(FILE *fp);
+
 /* Creates a directory and its parents (mkdir -p). An empty name is an
  * error ("'': empty directory name"). */
 nl_status nl_mkdir_p(const char *dir, nl_error *err);

@@ -184,6 +184,12 @@ static nl_status read_fields(const char *path, field *f, int *nf, nl_error *err)
 {
   FILE *fp = fopen(path, "r");
   if (!fp) return nl_fail(err, NL_EIO, "%s: cannot open: %s", path, strerror(errno));
+  const char *image = nl_file_image_kind(fp);
+  if (image) {
+    fclose(fp);
+    return nl_fail(err, NL_EFORMAT, "%s: a %s image, not a parameter file (example analyse makes "
+                   "one from an image)", path, image);
+  }
   char buf[4096];
   int lineno = 0, c = 0;
   long total = 0;

@@ -362,6 +362,11 @@ nl_status nl_table_read(const char *path, int flags, nl_table **out, nl_error *e
   int is_stdin = strcmp(path, "-") == 0;
   FILE *fp = is_stdin ? stdin : fopen(path, "r");
   if (!fp) return nl_fail(err, NL_EIO, "%s: cannot open: %s", path, strerror(errno));
+  const char *image = is_stdin ? NULL : nl_file_image_kind(fp);
+  if (image) {
+    fclose(fp);
+    return nl_fail(err, NL_EFORMAT, "%s: a %s image, not a table", path, image);
+  }
   nl_status s = read_rows(fp, is_stdin ? "<stdin>" : path, flags, out, err);
   if (!is_stdin) fclose(fp);
   return s;
