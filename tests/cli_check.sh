@@ -36,7 +36,7 @@ run() {   # WANT_RC NAME [GREP...]: runs the check of ref against NAME
 
 # Unchanged: passes, and says how much it compared.
 copy same
-run 0 same 'check: 1 experiment, 2 tables, .* 0 drifted'
+run 0 same 'check: t1: 2 tables, .* 0 drifted'
 
 # exact: one unit in the last place of an undeclared column is drift.
 copy ulp; edit ulp dist.tsv 1 count 17.000000000000004
@@ -79,7 +79,7 @@ run 1 param $'manifest.tsv\t-\tparam\tsize=8'
 
 # Several experiments under two roots.
 mkdir -p "$out/r1" "$out/r2"; cp -r "$ref" "$out/r1/t1"; cp -r "$ref" "$out/r2/t1"
-"$check" "$out/r1" "$out/r2" t1 | grep -q 'check: 1 experiment, 2 tables'
+"$check" "$out/r1" "$out/r2" t1 | grep -q 'check: t1: 2 tables'
 
 # Many drifted values: the first 10 lines and a count; --all every line. The
 # summary names the experiment and the platform of both runs, what differs
@@ -98,7 +98,7 @@ want+='CPU unknown (reference: not recorded, this run: not recorded), architectu
 want+='BLAS kernel unknown (.*), libm unknown (.*)$'
 grep -q "$want" "$out/many.out" \
   || { echo "many: summary line"; cat "$out/many.out"; exit 1; }
-grep -q 'check: 1 experiment, 2 tables, .* 12 drifted' "$out/many.out" || { echo "many: total"; cat "$out/many.out"; exit 1; }
+grep -q 'check: t1: 2 tables, .* 12 drifted' "$out/many.out" || { echo "many: total"; cat "$out/many.out"; exit 1; }
 rc=0; "$check" --all "$ref" "$out/many12" >"$out/all.out" || rc=$?
 { [ "$rc" = 1 ] && [ "$(grep -c $'^t1\tspec.tsv\t' "$out/all.out")" = 12 ] \
   && grep -q '^check: t1: 12 drifted; ' "$out/all.out"; } \

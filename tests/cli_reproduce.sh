@@ -360,6 +360,14 @@ missing="$(PATH="$out/dpkg:$PATH" bash -c 'source "$1"; missing_packages gnuplot
 # ETA: previous times scaled by this run's pace, the mean so far for the rest.
 [ "$(bash -c 'source "$1"; repro_eta 10 1 5 20 -' _ "$nl")" = "1/3 done, elapsed 10 s, ETA 50 s (previous times and mean so far x 2)" ] \
   || fail "repro_eta: $(bash -c 'source "$1"; repro_eta 10 1 5 20 -' _ "$nl")"
+# A fast experiment (0 s of 0.5 s before) gives no scale ("x 0"), and the
+# last line no ETA.
+# shellcheck disable=SC2016
+[ "$(bash -c 'source "$1"; repro_eta 0 1 0.5 3' _ "$nl")" = "1/2 done, elapsed 0 s, ETA 3 s (previous times)" ] \
+  || fail "repro_eta fast: $(bash -c 'source "$1"; repro_eta 0 1 0.5 3' _ "$nl")"
+# shellcheck disable=SC2016
+[ "$(bash -c 'source "$1"; repro_eta 7 2 3 4' _ "$nl")" = "2/2 done, elapsed 7 s" ] \
+  || fail "repro_eta last: $(bash -c 'source "$1"; repro_eta 7 2 3 4' _ "$nl")"
 # SIGKILL after A1 finished a seed-3 run into a complete folder (A1 seed 2,
 # S4 seed 1), while S4's figure is made: REPORT.md still lists the old seeds
 # and S4. The next reproduce into the folder, even one that runs nothing

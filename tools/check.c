@@ -15,7 +15,8 @@
  * The other manifest lines (commit, versions, cpu, arch, libm, blas*, cflags, started,
  * seconds, cpu_seconds, peak_rss_mb) are never compared.
  *
- * Output: one tab-separated line per drifted value on stdout
+ * Output: one tab-separated line per drifted value on stdout, under a header
+ * line of the column names before the first,
  *   experiment  table  row  column  committed  new  rule[: detail]
  * (row: 1-based data row, with its first text cell as a label), the first
  * 10 of an experiment only unless --all; for an experiment with drift a line
@@ -25,6 +26,7 @@
  * (the CPU, architecture, BLAS kernel and libm variant: those that differ
  * first, then "unknown" ones a manifest predates, then the same), then
  *   check: E experiments, T tables, V values compared, D drifted
+ * ("check: EXPERIMENT: T tables, ..." when one experiment was compared).
  * A new table that is missing or that the table reader refuses (a NUL byte,
  * a ragged row) is drift, its line naming the reader's complaint.
  * Exit 0: no drift; 1: drift; 2: bad input (missing folder or manifest,

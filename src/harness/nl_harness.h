@@ -253,7 +253,7 @@ nl_status nl_harness_rule_parse(const char *s, nl_harness_rule *rule, nl_error *
  *   nl_harness_check_state s = {0};                 // s.all = 1: every drifted value
  *   if (nl_harness_check_experiment(&s, "results/s3_fbm", "build/check/s3_fbm", &err))
  *     ... bad input: err.msg ...
- *   nl_harness_check_totals(&s);             // "check: 1 experiment, ..."
+ *   nl_harness_check_totals(&s);             // "check: s3_fbm: 5 tables, ..."
  *   return s.drifted ? 1 : 0;
  *
  * Every table (nl_harness_tables) of the committed folder is compared cell by
@@ -261,7 +261,8 @@ nl_status nl_harness_rule_parse(const char *s, nl_harness_rule *rule, nl_error *
  * lines must match exactly (the others never are). Written to s.out
  * (stdout when NULL), one tab-separated line per drifted value
  *   experiment  table  row  column  committed  new  rule[: detail]
- * (row: 1-based data row, with its first text cell as a label), the first
+ * (row: 1-based data row, with its first text cell as a label) under a
+ * header line of those names before the first, the first
  * NL_CHECK_SHOWN of an experiment unless s.all; after an experiment with
  * drift a line "check: EXP: D drifted[ (first 10 shown; ...)]; reference vs
  * this run: libm other (reference X, this run Y), CPU same (...), ..." naming
@@ -279,10 +280,12 @@ typedef struct {
   int all;                  /* print every drifted value */
   FILE *out;                /* the report; NULL: stdout */
   size_t experiments, tables, values, drifted;   /* totals so far */
+  char last[128];           /* the experiment compared last, for the totals */
 } nl_harness_check_state;
 nl_status nl_harness_check_experiment(nl_harness_check_state *s, const char *ref_dir, const char *new_dir,
                                       nl_error *err);
-/* "check: E experiments, T tables, V values compared, D drifted". */
+/* "check: E experiments, T tables, V values compared, D drifted", or for
+ * one experiment "check: NAME: T tables, V values compared, D drifted". */
 void nl_harness_check_totals(const nl_harness_check_state *s);
 
 /* The data tables of a run folder: every *.tsv but manifest.tsv and

@@ -47,7 +47,8 @@ static nl_status check_read(const char *dir, const char *file, int required, nl_
 static void drift(check_ctx *c, const char *table, const char *row, const char *col,
                   const char *ref, const char *new, const char *rule)
 {
-  c->s->drifted++;
+  if (c->s->drifted++ == 0)
+    fputs("experiment\ttable\trow\tcolumn\tcommitted\tnew\trule\n", out_of(c->s));
   if (++c->exp_drifted <= NL_CHECK_SHOWN || c->s->all)
     fprintf(out_of(c->s), "%s\t%s\t%s\t%s\t%s\t%s\t%s\n", c->exp, table, row, col, ref, new, rule);
 }
@@ -336,6 +337,7 @@ static nl_status check_folders(check_ctx *c, const char *ref_dir, const char *ne
   const char *exp = manifest_get(mref, "experiment", buf);
   nl_status st;
   c->exp = exp ? exp : ref_dir;
+  snprintf(c->s->last, sizeof c->s->last, "%s", c->exp);
   if ((st = manifest_seeds(mref, ref_dir, &c->n_ref, err)) || (st = manifest_seeds(mnew, new_dir, &c->n_new, err)) ||
       (st = check_read(ref_dir, "checks.tsv", 0, &c->rules, err)))
     return st;
@@ -370,6 +372,10 @@ nl_status nl_harness_check_experiment(nl_harness_check_state *s, const char *ref
 
 void nl_harness_check_totals(const nl_harness_check_state *s)
 {
-  fprintf(out_of(s), "check: %zu experiment%s, %zu tables, %zu values compared, %zu drifted\n",
-          s->experiments, s->experiments == 1 ? "" : "s", s->tables, s->values, s->drifted);
+  if (s->experiments == 1)
+    fprintf(out_of(s), "check: %s: %zu tables, %zu values compared, %zu drifted\n", s->last,
+            s->tables, s->values, s->drifted);
+  else
+    fprintf(out_of(s), "check: %zu experiments, %zu tables, %zu values compared, %zu drifted\n",
+            s->experiments, s->tables, s->values, s->drifted);
 }
