@@ -28,6 +28,11 @@ grep -q 'sweep: 4/4 done, 0 failed' "$out/run1.err"
 # is renamed task_points beside the parameter's.
 "$expect" "$dir/merged/bounds.tsv" rows=32 'points>=500' 'seed>=1' 'seed<=2' 'max_abs<=bound' 'task_points==points'
 "$expect" "$dir/merged/bounds_summary.tsv" rows=16 'n==2' 'max_abs_spread>=0' file:plot.png
+# The plot's series colours: 20 distinct (gnuplot's own cycle has 8, so a
+# sweep of 10 values drew pairs alike).
+{ sed -n '/^array C/,/^shape/p' "$src/scripts/gnuplot/sweep.gp"; echo 'do for [i=0:19] { print col(i) }'; } \
+  >"$out/colours.gp"
+[ "$(gnuplot "$out/colours.gp" 2>&1 | sort -u | wc -l)" = 20 ] || { echo "sweep.gp: not 20 colours"; exit 1; }
 
 # Resumable: nothing reruns; a task without a manifest (interrupted) does.
 jl="$(wc -l <"$dir/joblog")"
