@@ -158,8 +158,11 @@ grep -q '1.07e+09 pixels, more than the limit of 1e9' "$out/err.txt"
 sed 's/^sigma2 .*/sigma2 abc/' "$out/rgb.params" > "$out/nonnum.params"
 bad synthesize "$out/nonnum.params" --size 16 -o "$out/x.png"
 grep -q "abc" "$out/err.txt"
-bad morph "$out/rgb.params" "$out/rgb.tif.params" --t 0.5 -o "$out/x.params"   # 5 vs 6 bands
-grep -q "bands" "$out/err.txt"
+# exemplars of different sizes (7 and 6 bands) morph over the 6 bands both
+# have, and say so in one line
+"$tool" morph "$out/photo.params" "$out/rgb.tif.params" --t 0.5 -o "$out/m76.params" 2>"$out/err.txt"
+grep -q '^bands 6$' "$out/m76.params"
+[ "$(wc -l <"$out/err.txt")" = 1 ] && grep -q "the result keeps the 6 finest both have" "$out/err.txt"
 bad synthesize "$out/rgb.params" --size 0 -o "$out/x.png"
 bad synthesize "$out/rgb.params" -o "$out/x.png"
 bad morph "$out/rgb.params" "$out/rgb.params" --t 1.5 -o "$out/x.params"

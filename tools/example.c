@@ -218,6 +218,9 @@ static int morph(const args *a)
   check(nl_byexample_params_load(a->pos[1], &p2, &err), &err);
   if (nl_byexample_morph(&p1, &p2, a->t, &m, &err))
     die("%s, %s: %s", a->pos[0], a->pos[1], err.msg);
+  if (p1.nbands != p2.nbands)
+    nl_message(stderr, "noiselab example: morph: %s has %d bands, %s %d: the result keeps the %d "
+               "finest both have", a->pos[0], p1.nbands, a->pos[1], p2.nbands, m.nbands);
   if (a->have_size) {
     synth_write(&m, a);
     return 0;

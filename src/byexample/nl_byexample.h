@@ -218,8 +218,12 @@ nl_status nl_byexample_params_save(const nl_byexample_params *p, const char *pat
 nl_status nl_byexample_params_load(const char *path, nl_byexample_params *p, nl_error *err);
 
 /* Everything linear except the matrix, which follows the quaternion slerp
- * between the two rotations (the paper's Fig. 12). Errors on different
- * channel or band counts. */
+ * between the two rotations (the paper's Fig. 12). Exemplars of different
+ * sizes have different band counts; band k is the same scale (2^k pixels,
+ * k = 0 finest) in both, so the result keeps the bands both have, and the
+ * larger exemplar's coarsest bands are dropped (out->nbands is the smaller
+ * count). Errors on different channel counts, histogram kinds or one
+ * calibrated file and one not. */
 nl_status nl_byexample_morph(const nl_byexample_params *a, const nl_byexample_params *b, double t,
                              nl_byexample_params *out, nl_error *err);
 /* Frequency-based editing (Fig. 10c): w[c][k] *= factor for the `nfine`

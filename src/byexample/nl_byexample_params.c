@@ -374,9 +374,6 @@ nl_status nl_byexample_morph(const nl_byexample_params *a, const nl_byexample_pa
 {
   if (a->channels != b->channels)
     return nl_fail(err, NL_EINVAL, "cannot morph %d channels into %d", a->channels, b->channels);
-  if (a->nbands != b->nbands)
-    return nl_fail(err, NL_EINVAL, "cannot morph %d bands into %d (exemplars of different sizes)",
-                   a->nbands, b->nbands);
   if (a->histogram != b->histogram)
     return nl_fail(err, NL_EINVAL, "cannot morph with and without histogram matching");
   if ((a->calibrate > 0) != (b->calibrate > 0))
@@ -385,13 +382,17 @@ nl_status nl_byexample_morph(const nl_byexample_params *a, const nl_byexample_pa
     return nl_fail(err, NL_EINVAL, "cannot morph histogram representation %s into %s",
                    nl_byexample_hist_name(a->hist_kind), nl_byexample_hist_name(b->hist_kind));
   nl_byexample_params r = *a;
+  r.nbands = a->nbands < b->nbands ? a->nbands : b->nbands;
+  for (int c = 0; c < 3; c++)
+    for (int k = r.nbands; k < NL_WAVELET_MAX_BANDS; k++)
+      r.w[c][k] = r.target[c][k] = r.corr[c][k] = 0;
   r.sigma2 = (1 - t) * a->sigma2 + t * b->sigma2;
   for (int c = 0; c < 3; c++) {
     r.mean[c] = (1 - t) * a->mean[c] + t * b->mean[c];
     for (int j = 0; j < a->nhist; j++) r.hist[c][j] = (1 - t) * a->hist[c][j] + t * b->hist[c][j];
-    for (int k = 0; k < a->nbands; k++) r.w[c][k] = (1 - t) * a->w[c][k] + t * b->w[c][k];
+    for (int k = 0; k < r.nbands; k++) r.w[c][k] = (1 - t) * a->w[c][k] + t * b->w[c][k];
     /* targets are powers: interpolated as their square roots, like the weights */
-    for (int k = 0; k < a->nbands; k++) {
+    for (int k = 0; k < r.nbands; k++) {
       double s = (1 - t) * sqrt(a->target[c][k]) + t * sqrt(b->target[c][k]);
       r.target[c][k] = s * s;
       r.corr[c][k] = (1 - t) * a->corr[c][k] + t * b->corr[c][k];   /* a convex mix of definite matrices is definite */
