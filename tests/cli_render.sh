@@ -17,6 +17,23 @@ SOURCE_DATE_EPOCH=0 "$render" marble --size 32 --bits 16 -o "$out/m.tif"
 "$render" wavelet --size 16 --tile 16 -o "$out/w.tsv"
 "$expect" "$out/w.tsv" rows=256 'value<=6' 'value>=-6'   # Gaussian-tile values: loose sanity bounds
 for f in fbm.png t.exr m.tif g.png; do [ -s "$out/$f" ]; done
+# Grey levels: the image's range by default, the analytic bound on request;
+# stderr says which, with the values mapped to black and white.
+"$render" fbm --size 32 --seed 7 -o "$out/r.png" 2>"$out/r.err"
+grep -q "to black..white: the image's range" "$out/r.err"
+"$render" fbm --size 32 --seed 7 --normalize bound -o "$out/b.png" 2>"$out/b.err"
+grep -q "to black..white: the analytic bound" "$out/b.err"
+# -o -: the .tsv on stdout, the same bytes as the file
+"$render" noise2 --size 16 --seed 3 -o - >"$out/stdout.tsv" 2>/dev/null
+cmp "$out/stdout.tsv" "$out/n.tsv"
+# .npy: numpy's header (a multiple of 64 bytes) and 16 x 16 float64 values
+"$render" noise2 --size 16 --seed 3 -o "$out/n.npy" 2>/dev/null
+[ "$(head -c 6 "$out/n.npy" | tail -c 5)" = NUMPY ]
+[ "$(stat -c %s "$out/n.npy")" = $((128 + 16 * 16 * 8)) ]
+head -c 128 "$out/n.npy" | grep -q "'descr': '<f8', 'fortran_order': False, 'shape': (16, 16)"
+# the first value, as od prints it, is the table's first (x 0.125, y 0.125)
+first="$(od -A n -t f8 -j 128 -N 8 "$out/n.npy" | tr -d ' ')"
+awk -F'\t' -v f="$first" 'NR == 2 { d = $3 - f; exit !(d < 1e-12 && d > -1e-12) }' "$out/n.tsv"
 # Same seed, same bytes.
 "$render" noise2 --size 16 --seed 3 -o "$out/n2.tsv"
 cmp "$out/n.tsv" "$out/n2.tsv"

@@ -3,11 +3,15 @@
  *   noiselab render fbm --octaves 6 --gain 0.5 --lacunarity 2 --size 512 --seed 7 -o fbm.png
  *
  * Images go through OpenImageIO (format from the extension). Integer
- * formats (8/16-bit PNG, TIFF, ...) store the value mapped to [0, 1] by the
- * noise's analytic bound B: (v / B + 1) / 2, or v / B for turbulence, so
- * grey levels mean the same thing at every setting (--normalize range maps
- * min..max instead). Float formats (EXR, or --bits 32) store raw values.
- * A .tsv output holds the raw values as columns x, y, value.
+ * formats (8/16-bit PNG, TIFF, ...) store the image's min..max mapped to
+ * black..white, so that every picture uses the whole grey scale (an fBm's
+ * values fill under half of its analytic bound); --normalize bound maps the
+ * noise's analytic bound B instead, (v / B + 1) / 2 or v / B for
+ * turbulence, so that grey levels mean the same thing at every setting.
+ * stderr names the mapping and its values. Float formats (EXR, or --bits
+ * 32) store raw values. A .tsv output, or "-o -" (stdout), holds the raw
+ * values as columns x, y, value; a .npy (numpy's format, float64, rows by
+ * y) the raw values as a size x size array.
  */
 #include "harness/nl_harness.h"
 #include "basis/nl_basis.h"
@@ -64,7 +68,8 @@ static void usage(void)
   for (size_t i = 0; i < nk + ns; i++)
     printf("%s%-12s%s\n", i ? "       " : "NOISE: ", i < nk ? k[i].name : s[i - nk].name,
            i < nk ? k[i].summary : s[i - nk].summary);
-  printf("\n  -o FILE              .png .exr .tif ... (OpenImageIO) or .tsv (x, y, value)\n"
+  printf("\n  -o FILE              .png .exr .tif ... (OpenImageIO), .tsv (x, y, value), - (the\n"
+         "                       .tsv on stdout) or .npy (numpy: float64, size x size, rows by y)\n"
          "  --size N             pixels per side, 1..65536 (512)\n"
          "  --extent X           side of the square in noise units (4)\n"
          "  --x0 X --y0 Y --z Z  window origin and plane (0 0 0.5)\n"
@@ -80,9 +85,9 @@ static void usage(void)
          "  --table-size M       gradient-table size for noise2/table, 4..1048576 (512)\n"
          "  --seed S             table seed (1)   --reference  Perlin's own permutation\n"
          "  --bits 8|16|32       image bit depth (8; EXR defaults to 32)\n"
-         "  --normalize bound|range   grey mapping for integer formats: the analytic bound, or\n"
-         "                       the image's min..max (bound; range for gctbf, whose values\n"
-         "                       fill a small part of its bound)\n\n"
+         "  --normalize range|bound   grey mapping for integer formats: the image's min..max\n"
+         "                       (range), or the noise's analytic bound, the same grey for\n"
+         "                       the same value at every setting (bound)\n\n"
          "Pixel (column c, row r) holds the noise at x = x0 + (c + 1/2) extent / size,\n"
          "y = y0 + (r + 1/2) extent / size: row 0 is the top of the image, so y grows\n"
          "downward in the picture (as the .tsv's rows). An option that does not apply to\n"
@@ -126,9 +131,16 @@ static int ends_with(const char *s, const char *suffix)
   return a >= b && strcasecmp(s + a - b, suffix) == 0;
 }
 
+/* Outputs that hold the values themselves, not a picture: a table (.tsv or
+ * "-", stdout) or a numpy array (.npy). */
+static int raw_values(const char *out)
+{
+  return !strcmp(out, "-") || ends_with(out, ".tsv") || ends_with(out, ".npy");
+}
+
 static void parse(int argc, char **argv, options *o)
 {
-  *o = (options){.basis = nl_basis_default()->under, .normalize = "bound", .count = "inverse",
+  *o = (options){.basis = nl_basis_default()->under, .normalize = "range", .count = "inverse",
                  .bo = nl_basis_defaults(), .so = nl_basis_sum_defaults(), .size = 512, .seed = 1,
                  .bits = 0, .extent = 4, .z = 0.5};
   enum { R_OUT, R_SIZE, R_OCTAVES, R_SEED, R_TABLE_SIZE, R_BITS, R_EXTENT, R_X0, R_Y0, R_Z, R_GAIN,
@@ -196,10 +208,8 @@ static void parse(int argc, char **argv, options *o)
   unsigned sr = sum ? sum->reads : 0, br = basis ? basis->reads : 0;
   int known = sum || (basis && !strcmp(o->noise, basis->name));   /* "table": under a sum only */
   o->sum = sum ? sum : &nl_basis_single;
-  if (!given[R_NORMALIZE] && !sum && known && (br & NL_BASIS_LOOSE_BOUND))
-    o->normalize = "range";
   /* Options the chosen noise or format does not read: say so, once each. */
-  int is_tsv = o->out && ends_with(o->out, ".tsv");
+  int is_tsv = o->out && raw_values(o->out);
   struct { int opt, applies; const char *why; } rules[] = {
     {R_OCTAVES, sr & NL_BASIS_SUM_OCTAVES,
      "only the sums (fractal, turbulence, fbm, marble) have octaves"},
@@ -217,14 +227,14 @@ static void parse(int argc, char **argv, options *o)
      "only noise2 (or basis table) has a gradient table"},
     {R_REFERENCE, br & NL_BASIS_READS_REFERENCE, "only improved noise has Perlin's permutation"},
     {R_Z, !(br & NL_BASIS_PLANAR), "2D table noise has no plane z"},
-    {R_BITS, !is_tsv, "a .tsv holds the values as text"},
-    {R_NORMALIZE, !is_tsv, "a .tsv holds the raw values"},
+    {R_BITS, !is_tsv, "a table or .npy holds the values as they are"},
+    {R_NORMALIZE, !is_tsv, "a table or .npy holds the raw values"},
   };
   for (size_t i = 0; i < sizeof rules / sizeof *rules; i++) {
     if (!given[rules[i].opt] || rules[i].applies) continue;
     int format = rules[i].opt == R_BITS || rules[i].opt == R_NORMALIZE;
     nl_message(stderr, "noiselab render: warning: --%s ignored for %s%s: %s",
-               spec[rules[i].opt].name, o->noise, is_tsv && format ? " to a .tsv" : "",
+               spec[rules[i].opt].name, o->noise, is_tsv && format ? " to a table or .npy" : "",
                rules[i].why);
   }
   if (given[R_BITS] && o->out && (ends_with(o->out, ".jpg") || ends_with(o->out, ".jpeg")) && o->bits != 8)
@@ -248,12 +258,11 @@ static void parse(int argc, char **argv, options *o)
   if (o->bits && o->bits != 8 && o->bits != 16 && o->bits != 32)
     fail("--bits: %ld is not 8, 16 or 32", o->bits);
   nl_error berr;
-  if (!ends_with(o->out, ".tsv") && nl_image_check_bits(o->out, (int)o->bits, &berr))
+  if (!raw_values(o->out) && nl_image_check_bits(o->out, (int)o->bits, &berr))
     fail("%s", berr.msg);
   /* values (double) and the image (float); a .tsv holds 3 columns of a
    * table (number and text slot each) that may be doubled while growing */
-  size_t len = strlen(o->out);
-  int tsv = len >= 4 && strcasecmp(o->out + len - 4, ".tsv") == 0;
+  int tsv = raw_values(o->out) && !ends_with(o->out, ".npy");
   double bytes = (double)o->size * o->size * (12.0 + (tsv ? 96.0 : 0.0));
   if (!nl_mem_fits(bytes)) {
     char b1[32], b2[32];
@@ -320,10 +329,39 @@ static void write_tsv(const options *o, const double *v)
     for (long c = 0; c < o->size; c++)
       nl_table_append(t, "ddd", o->x0 + (c + 0.5) * d, o->y0 + (r + 0.5) * d, v[r * o->size + c]);
   nl_error err;
-  if (nl_table_write(t, o->out, &err)) fail("%s", err.msg);
-  nl_message(stderr, "noiselab render: wrote %s (%ld x %ld values of %s: x, y, value)", o->out,
-             o->size, o->size, o->noise);
+  int out = !strcmp(o->out, "-");
+  if (out ? nl_table_print(t, stdout, "<stdout>", &err) : nl_table_write(t, o->out, &err))
+    fail("%s", err.msg);
+  nl_message(stderr, "noiselab render: wrote %s (%ld x %ld values of %s: x, y, value)",
+             out ? "<stdout>" : o->out, o->size, o->size, o->noise);
   nl_table_free(t);
+}
+
+/* numpy's .npy, version 1.0: magic, header length (2 bytes, little-endian),
+ * a Python dict literal padded with spaces to a multiple of 64 bytes and
+ * ended by a newline, then the doubles in C order (row r is y = y0 + ...). */
+static void write_npy(const options *o, const double *v)
+{
+  unsigned one = 1;
+  int little = *(unsigned char *)&one == 1;
+  char head[128];
+  int n = snprintf(head + 10, sizeof head - 10,
+                   "{'descr': '%cf8', 'fortran_order': False, 'shape': (%ld, %ld), }",
+                   little ? '<' : '>', o->size, o->size);
+  int total = (10 + n + 1 + 63) / 64 * 64;   /* magic, length, dict, newline */
+  memset(head + 10 + n, ' ', (size_t)(total - 10 - n - 1));
+  head[total - 1] = '\n';
+  memcpy(head, "\x93NUMPY\x01\x00", 8);
+  head[8] = (char)((total - 10) & 0xff);
+  head[9] = (char)((total - 10) >> 8);
+  nl_atomic_file af;
+  nl_error err;
+  if (nl_atomic_open(&af, o->out, &err)) fail("%s", err.msg);
+  fwrite(head, 1, (size_t)total, af.fp);
+  fwrite(v, sizeof *v, (size_t)o->size * (size_t)o->size, af.fp);
+  if (nl_atomic_commit(&af, &err)) fail("%s", err.msg);
+  nl_message(stderr, "noiselab render: wrote %s (%ld x %ld float64 values of %s, numpy .npy)",
+             o->out, o->size, o->size, o->noise);
 }
 
 static void write_image(const options *o, const double *v, double lo, double hi)
@@ -366,11 +404,12 @@ int main(int argc, char **argv)
   nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
   options o;
   parse(argc, argv, &o);
-  check_writable(o.out);
+  if (strcmp(o.out, "-")) check_writable(o.out);
   double lo, hi;
   double *v = evaluate(&o, &lo, &hi);
   check_finite(&o, v);
-  if (ends_with(o.out, ".tsv")) write_tsv(&o, v);
+  if (!strcmp(o.out, "-") || ends_with(o.out, ".tsv")) write_tsv(&o, v);
+  else if (ends_with(o.out, ".npy")) write_npy(&o, v);
   else write_image(&o, v, lo, hi);
   free(v);
   return 0;

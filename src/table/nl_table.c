@@ -128,21 +128,37 @@ void nl_table_format_double(char *buf, double v)
   if (strtod(buf, NULL) != v) snprintf(buf, 32, "%.17g", v);
 }
 
-nl_status nl_table_write_to(const nl_table *t, nl_atomic_file *af, nl_error *err)
+/* The rows as the writer writes them, into fp; name is the output's name
+ * for messages. Stream errors are left for the caller to check. */
+static nl_status table_emit(const nl_table *t, FILE *fp, const char *name, nl_error *err)
 {
   for (size_t k = 0; k < t->nrows * t->ncols; k++)
     if (!(t->text && t->text[k]) && !isfinite(t->num[k]))
       return nl_fail(err, NL_EINVAL, "%s: column '%s' row %zu holds %g (NaN or infinite; the reader rejects it)",
-                     af->path, t->names[k % t->ncols], k / t->ncols + 1, t->num[k]);
+                     name, t->names[k % t->ncols], k / t->ncols + 1, t->num[k]);
   for (size_t c = 0; c < t->ncols; c++)
-    fprintf(af->fp, "%s%s", c ? "\t" : "", t->names[c]);
-  fputc('\n', af->fp);
+    fprintf(fp, "%s%s", c ? "\t" : "", t->names[c]);
+  fputc('\n', fp);
   char buf[32];
   for (size_t r = 0; r < t->nrows; r++) {
     for (size_t c = 0; c < t->ncols; c++)
-      fprintf(af->fp, "%s%s", c ? "\t" : "", nl_table_cell_text(t, r, c, buf));
-    fputc('\n', af->fp);
+      fprintf(fp, "%s%s", c ? "\t" : "", nl_table_cell_text(t, r, c, buf));
+    fputc('\n', fp);
   }
+  return NL_OK;
+}
+
+nl_status nl_table_write_to(const nl_table *t, nl_atomic_file *af, nl_error *err)
+{
+  return table_emit(t, af->fp, af->path, err);
+}
+
+nl_status nl_table_print(const nl_table *t, FILE *fp, const char *name, nl_error *err)
+{
+  nl_status s = table_emit(t, fp, name, err);
+  if (s) return s;
+  if (fflush(fp) || ferror(fp))
+    return nl_fail(err, NL_EIO, "%s: write failed: %s", name, strerror(errno ? errno : EIO));
   return NL_OK;
 }
 

@@ -94,6 +94,10 @@ nl_status nl_table_write(const nl_table *t, const char *path, nl_error *err);
  * a bad path is refused before any is written), then commits them together
  * with nl_atomic_commit_all. On a refusal af is left open for the caller. */
 nl_status nl_table_write_to(const nl_table *t, nl_atomic_file *af, nl_error *err);
+/* Writes the table to a stream (a command's "-o -", stdout), checking the
+ * stream after a flush; `name` names it in messages ("<stdout>"). Nothing
+ * is atomic about a stream: a refusal (NaN) comes before the first byte. */
+nl_status nl_table_print(const nl_table *t, FILE *fp, const char *name, nl_error *err);
 nl_status nl_table_read(const char *path, int flags, nl_table **out, nl_error *err);
 
 /* Formats a double the way the writer does (shortest of %.15g/%.17g that
