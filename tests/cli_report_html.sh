@@ -4,8 +4,12 @@
 # and images) and C4 (the verdict table), every figure of the page loads
 # (naturalWidth > 0), every in-page link has its target, every relative link
 # names a file that exists, and every gnuplot figure has its SVG beside the
-# PNG. The probe must also fail: a copy of the page with one figure missing
-# is reported broken. Args: NOISELAB_SCRIPT OUTDIR.
+# PNG. In a 1400 x 900 window, as a reader sees it (tests/report_probe.js):
+# the per-experiment summary on the first screen, no table wider than the
+# window, no cell cut, "reproduced" and "not reproduced" in different
+# colours. The probe must also fail: a copy of the page with one figure
+# missing, and one without its stylesheet, are reported broken.
+# Args: NOISELAB_SCRIPT OUTDIR.
 set -euo pipefail
 nl="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")" out="$2"
 root="$(cd "$(dirname "$nl")/.." && pwd)"
@@ -24,7 +28,8 @@ probe() {   # HTML_IN_DIR -> prints the probe's line
   { sed 's#</body>##' "$page"; printf '<script>\n'; cat "$root/tests/report_probe.js"; printf '</script>\n</body>\n'; } >"$copy"
   # --no-sandbox: CI runs as root; a fresh profile each time.
   timeout 120 chromium --headless --no-sandbox --disable-gpu --user-data-dir="$out/profile" \
-    --virtual-time-budget=20000 --dump-dom "file://$copy" 2>"$out/chromium.log" | grep -oE 'NL-PROBE images=[0-9]+[^<]*' || true
+    --window-size=1400,900 --hide-scrollbars --virtual-time-budget=20000 --dump-dom "file://$copy" \
+    2>"$out/chromium.log" | grep -oE 'NL-PROBE images=[0-9]+[^<]*' || true
   rm -f "$copy"
 }
 
@@ -48,4 +53,12 @@ cp -r "$r"/. "$out/broken/"
 rm "$out/broken/s3_fbm/gain_spectrum.png"
 line="$(probe "$out/broken/report.html")"
 [[ "$line" == *"BROKEN: image s3_fbm/gain_spectrum.png"* ]] || fail "a missing figure was not reported: $line"
+# the probe can fail: the page without its stylesheet (pandoc's default
+# alone) has a table wider than the window and verdicts in one colour
+sed '/<style id="report-css">/,/<\/style>/d' "$r/report.html" >"$r/bare.html"
+grep -q 'v-reproduced {' "$r/bare.html" && fail "the stylesheet was not removed from the copy"
+line="$(probe "$r/bare.html")"
+rm "$r/bare.html"
+[[ "$line" == *"wider than the window"* && "$line" == *"verdicts in one colour"* ]] ||
+  fail "a page without its stylesheet was not reported: $line"
 echo "report.html: $n images, links and figures whole"

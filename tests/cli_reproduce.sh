@@ -68,8 +68,17 @@ a1_count() { [ -f "$r/a1_bounds/verdicts.tsv" ] || { echo 0; return; }; tsv_awk 
 ni=$(( $(a1_count independent) + 1 )); nf=$(( $(a1_count fitted) + 1 ))
 grep -qE "^$ni independent verdicts \(" "$r/REPORT.md" || fail "verdict count wrong: $(grep 'independent verdicts' "$r/REPORT.md")"
 grep -qE "^Not counted above: $nf fitted to the paper \([0-9]+ consistent after fit\)" "$r/REPORT.md" || fail "fitted count wrong: $(grep 'Not counted' "$r/REPORT.md")"
-grep -qF '| [S4](#s4_marble) | gain | independent | 2 | 2.08 +- 0.01 | **reproduced** | why |' "$r/REPORT.md" || fail "verdict row: $(grep -F gain "$r/REPORT.md")"
-grep -qF '| [S4](#s4_marble) | F_inf | by construction | 1 | 1 | *by construction* | set |' "$r/REPORT.md" || fail "by-construction row: $(grep -F F_inf "$r/REPORT.md")"
+# a row: the rule's thresholds in their own column, the reason as the experiment gave it
+row='| [S4](#s4_marble) | gain | independent | 2 | 2.08 +- 0.01 | **reproduced** | 5% / 25% | why |'
+grep -qF "$row" "$r/REPORT.md" || fail "verdict row: $(grep -F gain "$r/REPORT.md")"
+row='| [S4](#s4_marble) | F_inf | by construction | 1 | 1 | *by construction* | equal | set |'
+grep -qF "$row" "$r/REPORT.md" || fail "by-construction row: $(grep -F F_inf "$r/REPORT.md")"
+# one summary line per experiment, its rows counted by verdict, above the table
+sum='^- \[S4 - [^]]*\]\(#s4_marble\): \*\*1 reproduced\*\*, \*\*1 consistent after fit\*\*, '
+grep -qE "$sum"'\*\*1 by construction\*\*$' "$r/REPORT.md" ||
+  fail "summary line: $(grep -F '(#s4_marble):' "$r/REPORT.md")"
+at() { grep -n -m1 "$1" "$r/REPORT.md" | cut -d: -f1; }
+[ "$(at '(#s4_marble):')" -lt "$(at '^| id | quantity')" ] || fail "the summary is below the table"
 # a | inside a cell is escaped, or it would split the row
 grep -qF '| [S4](#s4_marble) | slope \|s\| | fitted 2/4 |' "$r/REPORT.md" || fail "a | in a cell: $(grep -F slope "$r/REPORT.md")"
 rm "$r/s4_marble/verdicts.tsv"

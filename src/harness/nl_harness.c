@@ -761,9 +761,8 @@ void nl_harness_verdict_less(nl_harness *r, const char *file, const nl_table *t,
   nl_harness_outcome v = !(a < b) ? NL_VERDICT_NOT : p < alpha ? NL_VERDICT_REPRODUCED : NL_VERDICT_PARTLY;
   char ours[128], reason[256], rule[64], source[256];
   snprintf(ours, sizeof ours, "%.4g +- %.2g vs %.4g +- %.2g", a, sa, b, sb);
-  snprintf(reason, sizeof reason,
-           "%s; Welch p = %.2g (%g vs %g seeds); reproduced when lower with p < %g, partly when lower",
-           a < b ? "lower" : "not lower", p, na, nb, alpha);
+  snprintf(reason, sizeof reason, "%s; Welch p = %.2g (%g vs %g seeds)",
+           a < b ? "lower" : "not lower", p, na, nb);
   snprintf(rule, sizeof rule, "less welch %g", alpha);
   snprintf(source, sizeof source, "%s:%s", file, col);
   verdict_row(r, quantity, source, claim, ours, NULL, rule, kind, v, reason);
@@ -793,8 +792,9 @@ void nl_harness_verdict_p(nl_harness *r, const char *file, const nl_table *t, si
 void nl_harness_verdict_figure(nl_harness *r, const char *quantity, const char *claim,
                                const char *figure, const char *note)
 {
-  char reason[320] = "no number decides this claim: judge it on the figure";
-  append_note(reason, sizeof reason, note);
+  /* the kind and the verdict ("see figure") already say no number decides */
+  char reason[320] = "";
+  snprintf(reason, sizeof reason, "%s", note && *note ? note : "the figure decides");
   verdict_row(r, quantity, figure, claim, figure, NULL, "-", "qualitative", NL_VERDICT_NOT, reason);
 }
 

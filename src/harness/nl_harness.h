@@ -330,9 +330,9 @@ char **nl_harness_tables(const char *dir, size_t *n, nl_error *err);
  *                      verdict "see figure".
  * Only "independent" rows are counted as reproduced at the top of REPORT.md.
  *
- * The reason is generated from the numbers and the rule ("4.6% above the
- * paper; reproduced within 5%, partly within 25%"); `note` (may be NULL) is
- * appended after a semicolon and must hold no number of the run (it names
+ * The reason is generated from the numbers ("4.6% above the paper", "p =
+ * 0.003"); the thresholds are the rule's, stated once in its own column.
+ * `note` (may be NULL) is appended after a semicolon and must hold no number of the run (it names
  * the reading, e.g. "slope fitted to the paper's ratios"). A malformed rule
  * or kind, a missing column, or sd without sd_col is a bug in the
  * experiment: exit 1. nl_harness_end writes the rows to verdicts.tsv

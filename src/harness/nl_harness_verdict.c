@@ -1,7 +1,9 @@
 /* nl_harness_verdict.c - the decision behind a row of REPORT.md's verdict
  * table (nl_harness.h, "verdicts"). The thresholds are the experiment's,
  * stated in the rule; this file only measures the distance the rule names
- * and words it. */
+ * and words it. The reason says where ours lies, not the thresholds: the
+ * rule beside it in verdicts.tsv (and REPORT.md's rule column) states them
+ * once. */
 #include "harness/nl_harness.h"
 
 #include <math.h>
@@ -44,15 +46,6 @@ const char *nl_harness_verdict_word(nl_harness_outcome outcome, const char *kind
                                           : "not reproduced";
 }
 
-/* "5%" for rel 0.05, "0.01" for abs, "x1.1" for factor, "2 sd" for sd. */
-static void threshold_text(char *buf, size_t len, const char *kind, double v)
-{
-  if (!strcmp(kind, "rel")) snprintf(buf, len, "%.3g%%", 100 * v);
-  else if (!strcmp(kind, "factor")) snprintf(buf, len, "x%.3g", v);
-  else if (!strcmp(kind, "sd")) snprintf(buf, len, "%.3g sd", v);
-  else snprintf(buf, len, "%.3g", v);
-}
-
 nl_status nl_harness_verdict_decide(const char *rule, double paper, double ours, double sd,
                                     nl_harness_outcome *verdict, char *reason, size_t len,
                                     nl_error *err)
@@ -70,14 +63,11 @@ nl_status nl_harness_verdict_decide(const char *rule, double paper, double ours,
                      "'fit A B' with 1 >= A >= B >= 0", rule);
     if (!(ours >= 0 && ours <= 1))
       return nl_fail(err, NL_EINVAL, "verdict rule '%s': p-value %g not in [0, 1]", rule, ours);
-    if (effect) {
+    if (effect)
       *verdict = ours <= a ? NL_VERDICT_REPRODUCED : ours <= b ? NL_VERDICT_PARTLY : NL_VERDICT_NOT;
-      snprintf(reason, len, "p = %.2g; reproduced when p <= %g, partly when p <= %g", ours, a, b);
-    } else {
+    else
       *verdict = ours >= a ? NL_VERDICT_REPRODUCED : ours >= b ? NL_VERDICT_PARTLY : NL_VERDICT_NOT;
-      snprintf(reason, len, "p = %.2g; reproduced when p >= %g (not rejected), partly when p >= %g",
-               ours, a, b);
-    }
+    snprintf(reason, len, "p = %.2g", ours);
     return NL_OK;
   }
   if (!kind[0] || !(a >= 0) || !(b >= a) ||
@@ -87,29 +77,24 @@ nl_status nl_harness_verdict_decide(const char *rule, double paper, double ours,
   if (!isfinite(paper) || !isfinite(ours))
     return nl_fail(err, NL_EINVAL, "verdict rule '%s': paper %g, ours %g: not finite", rule, paper, ours);
   double d, diff = ours - paper;   /* d: the distance the rule measures */
-  char what[96];
   if (!strcmp(kind, "rel")) {
     if (paper == 0) return nl_fail(err, NL_EINVAL, "verdict rule '%s': the paper's value is 0", rule);
     d = fabs(diff) / fabs(paper);
-    snprintf(what, sizeof what, "%.3g%% %s the paper", 100 * d, diff >= 0 ? "above" : "below");
+    snprintf(reason, len, "%.3g%% %s the paper", 100 * d, diff >= 0 ? "above" : "below");
   } else if (!strcmp(kind, "abs")) {
     d = fabs(diff);
-    snprintf(what, sizeof what, "%.3g %s the paper", d, diff >= 0 ? "above" : "below");
+    snprintf(reason, len, "%.3g %s the paper", d, diff >= 0 ? "above" : "below");
   } else if (!strcmp(kind, "factor")) {
     if (!(paper > 0) || !(ours > 0))
       return nl_fail(err, NL_EINVAL, "verdict rule '%s': paper %g and ours %g must be > 0", rule, paper, ours);
     d = ours > paper ? ours / paper : paper / ours;
-    snprintf(what, sizeof what, "x%.3g %s the paper", d, ours >= paper ? "above" : "below");
+    snprintf(reason, len, "x%.3g %s the paper", d, ours >= paper ? "above" : "below");
   } else {
     if (!(sd >= 0)) return nl_fail(err, NL_EINVAL, "verdict rule '%s': needs the spread of ours", rule);
     d = sd > 0 ? fabs(diff) / sd : (diff == 0 ? 0 : INFINITY);
-    if (isinf(d)) snprintf(what, sizeof what, "%.4g from the paper with sd 0", diff);
-    else snprintf(what, sizeof what, "%.3g sd %s the paper", d, diff >= 0 ? "above" : "below");
+    if (isinf(d)) snprintf(reason, len, "%.4g from the paper with sd 0", diff);
+    else snprintf(reason, len, "%.3g sd %s the paper", d, diff >= 0 ? "above" : "below");
   }
   *verdict = d <= a ? NL_VERDICT_REPRODUCED : d <= b ? NL_VERDICT_PARTLY : NL_VERDICT_NOT;
-  char ta[32], tb[32];
-  threshold_text(ta, sizeof ta, kind, a);
-  threshold_text(tb, sizeof tb, kind, b);
-  snprintf(reason, len, "%s; reproduced within %s, partly within %s", what, ta, tb);
   return NL_OK;
 }
