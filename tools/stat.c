@@ -27,34 +27,41 @@ static const char *usage_text[] = {
   "  hclust  hierarchical clustering           " PROG " hclust --help\n"
   "  gmm     Gaussian mixture by EM            " PROG " gmm --help\n"
   "Options as --name VALUE or --name=VALUE; --format kv|tsv|json (default kv: key=value);\n"
+  "--column C: the column tested, by number (1-based) or by the header's name.\n"
   "FILE may be CSV (detected from a first line with commas and no tab, or --csv).\n",
 };
 
 static const char *help_ks =
-  "usage: " PROG " ks FILE [--column N] [--uniform A B | --dist NAME [--loc L] [--scale S] | --cdf TABLE]\n"
+  "usage: " PROG " ks FILE [--column C] [--uniform A B | --dist NAME [--shape A[,B]] [--loc L] [--scale S] | --cdf TABLE]\n"
   "                 [--csv] [--format kv|tsv|json]\n"
-  "One-sample Kolmogorov-Smirnov test of column N (1-based, default 1) against\n"
+  "One-sample Kolmogorov-Smirnov test of column C (a number, 1-based, default 1, or the\n"
+  "name of a header's column) against\n"
   "  --uniform A B     the uniform distribution on [A, B) (end points; the default, 0 1)\n"
-  "  --dist NAME       uniform, norm or expon with scipy's --loc L (0) and --scale S (1):\n"
-  "                    F((x - L) / S), so uniform is on [L, L + S] (scipy.stats.kstest(x, NAME, (L, S)))\n"
+  "  --dist NAME       a distribution of scipy.stats with its --shape A[,B] (if it has any),\n"
+  "                    --loc L (0) and --scale S (1): F((x - L) / S; A, B), so uniform is on\n"
+  "                    [L, L + S] (scipy.stats.kstest(x, NAME, (A, B, L, S))). NAME (shapes):\n"
+  "                    uniform, norm, expon, gamma (a), beta (a,b), lognorm (s; scale = e^mu),\n"
+  "                    t (df), chi2 (df), weibull_min (c), cauchy, logistic, laplace,\n"
+  "                    pareto (b), rayleigh\n"
   "  --cdf TABLE       a tabulated CDF: columns x and F (or the first two), linear\n"
   "                    interpolation, constant beyond the ends (numpy.interp)\n"
   "Prints D=... p=... n=... method=... (--format tsv: a header and a row; json: an object).\n"
   "p is two-sided and exact for finite n (scipy.stats.kstest); method names the\n"
   "algorithm (durbin-mtw, pomeranz, pelz-good, smirnov, ruben-gambino).\n";
 static const char *help_ks2 =
-  "usage: " PROG " ks2 FILE1 FILE2 [--column N] [--csv] [--format kv|tsv|json]\n"
-  "Two-sample Kolmogorov-Smirnov test of column N (default 1) of each file.\n"
+  "usage: " PROG " ks2 FILE1 FILE2 [--column C] [--csv] [--format kv|tsv|json]\n"
+  "Two-sample Kolmogorov-Smirnov test of column C (number or header name, default 1)\n"
+  "of each file.\n"
   "Prints D=... p=... n=N1,N2 method=exact|asymp (scipy.stats.ks_2samp).\n";
 static const char *help_kuiper =
-  "usage: " PROG " kuiper FILE [--column N] [--uniform A B | --dist NAME [--loc L] [--scale S] | --cdf TABLE]\n"
+  "usage: " PROG " kuiper FILE [--column C] [--uniform A B | --dist NAME [--shape A[,B]] [--loc L] [--scale S] | --cdf TABLE]\n"
   "                     [--csv] [--format kv|tsv|json]\n"
   "Kuiper's test (invariant to where a circle is cut) against the uniform\n"
   "distribution on [A, B) (default 0 1), or a distribution as for ks (see ks --help).\n"
   "Prints V=... p=... n=...\n";
 static const char *help_chisq =
-  "usage: " PROG " chisq FILE --bins K [--column N] [--uniform A B] [--csv] [--format kv|tsv|json]\n"
-  "Pearson chi-square of column N in K >= 2 equal bins of [A, B] (default 0 1)\n"
+  "usage: " PROG " chisq FILE --bins K [--column C] [--uniform A B] [--csv] [--format kv|tsv|json]\n"
+  "Pearson chi-square of column C (number or name) in K >= 2 equal bins of [A, B] (default 0 1)\n"
   "against equal expected counts. Prints chi2=... df=... p=... min_expected=...\n"
   "and warns on stderr when min_expected < 5 (the p-value is then unreliable).\n";
 static const char *help_hclust =
@@ -88,8 +95,10 @@ typedef struct {
   const char *sub;
   const char *files[2];
   int nfiles;
+  const char *column_name;   /* --column NAME: a header's column; NULL: the number column */
   long column, bins, clusters, k, k0, seed, max_iter, max_k;
-  double a, b, cutoff, tol, reg, thresh, loc, scale;
+  double a, b, cutoff, tol, reg, thresh, loc, scale, shape[2];
+  size_t nshape;
   int have_bins, have_cutoff, have_clusters, have_k, have_select, have_uniform, have_loc, have_scale;
   int csv;
   out_format format;
@@ -125,10 +134,26 @@ static long int_arg(const opts *o, const char *what, const char *s, long lo, lon
   return v;
 }
 
+/* --shape A or A,B: scipy's shape parameters, in its order. */
+static void parse_shape(opts *o, const char *v)
+{
+  const char *comma = strchr(v, ',');
+  char first[64];
+  if (comma && strchr(comma + 1, ',')) die(o->sub, "--shape: '%s' has more than 2 values", v);
+  if (comma && (size_t)(comma - v) >= sizeof first) die(o->sub, "--shape: '%s' is too long", v);
+  if (comma) {
+    memcpy(first, v, (size_t)(comma - v));
+    first[comma - v] = 0;
+  }
+  o->shape[0] = num_arg(o, "--shape", comma ? first : v, 0, 1e300);
+  o->nshape = 1;
+  if (comma) o->shape[o->nshape++] = num_arg(o, "--shape", comma + 1, 0, 1e300);
+}
+
 enum {
   O_COLUMN, O_UNIFORM, O_BINS, O_LINKAGE, O_METHOD, O_CUTOFF, O_CLUSTERS, O_LABELS, O_MERGES,
   O_PARAMS, O_K, O_SELECT_AIC, O_COVARIANCE, O_SEED, O_TOL, O_MAX_ITER, O_MAX_K, O_REG_COVAR,
-  O_DIST, O_LOC, O_SCALE, O_CDF, O_FORMAT, O_CSV, O_HELP
+  O_DIST, O_SHAPE, O_LOC, O_SCALE, O_CDF, O_FORMAT, O_CSV, O_HELP
 };
 static const nl_opt_spec spec[] = {
   [O_COLUMN] = {"column", 0, 1}, [O_UNIFORM] = {"uniform", 0, 2}, [O_BINS] = {"bins", 0, 1},
@@ -137,7 +162,7 @@ static const nl_opt_spec spec[] = {
   [O_PARAMS] = {"params", 0, 1}, [O_K] = {"k", 0, 1}, [O_SELECT_AIC] = {"select-aic", 0, 2},
   [O_COVARIANCE] = {"covariance", 0, 1}, [O_SEED] = {"seed", 0, 1}, [O_TOL] = {"tol", 0, 1},
   [O_MAX_ITER] = {"max-iter", 0, 1}, [O_MAX_K] = {"max-k", 0, 1}, [O_REG_COVAR] = {"reg-covar", 0, 1},
-  [O_DIST] = {"dist", 0, 1}, [O_LOC] = {"loc", 0, 1}, [O_SCALE] = {"scale", 0, 1},
+  [O_DIST] = {"dist", 0, 1}, [O_SHAPE] = {"shape", 0, 1}, [O_LOC] = {"loc", 0, 1}, [O_SCALE] = {"scale", 0, 1},
   [O_CDF] = {"cdf", 0, 1}, [O_FORMAT] = {"format", 0, 1}, [O_CSV] = {"csv", 0, 0},
   [O_HELP] = {"help", 'h', 0}, {NULL, 0, 0}};
 
@@ -157,7 +182,12 @@ static void parse(int argc, char **argv, opts *o)
       if (o->nfiles == 2) die(o->sub, "too many file arguments");
       o->files[o->nfiles++] = v;
       break;
-    case O_COLUMN: o->column = int_arg(o, a, v, 1, 1000000); break;
+    case O_COLUMN:
+      /* A number keeps its meaning (1-based); anything else names a header's column. */
+      o->column_name = NULL;
+      if (strspn(v, "0123456789+-") == strlen(v)) o->column = int_arg(o, a, v, 1, 1000000);
+      else o->column_name = v;
+      break;
     case O_UNIFORM:
       o->a = num_arg(o, a, v, -1e300, 1e300);
       o->b = num_arg(o, a, p.value[1], -1e300, 1e300);
@@ -184,6 +214,7 @@ static void parse(int argc, char **argv, opts *o)
     case O_MAX_K: o->max_k = int_arg(o, a, v, 1, 100000); break;
     case O_REG_COVAR: o->reg = num_arg(o, a, v, 0, 1e300); break;
     case O_DIST: o->dist = v; break;
+    case O_SHAPE: parse_shape(o, v); break;
     case O_LOC: o->loc = num_arg(o, a, v, -1e300, 1e300); o->have_loc = 1; break;
     case O_SCALE: o->scale = num_arg(o, a, v, 0, 1e300); o->have_scale = 1; break;
     case O_CDF: o->cdf_file = v; break;
@@ -202,8 +233,8 @@ static void parse(int argc, char **argv, opts *o)
   nl_opt_end(&p);
   if (o->have_uniform + (o->dist != NULL) + (o->cdf_file != NULL) > 1)
     die(o->sub, "give one of --uniform A B, --dist NAME and --cdf TABLE");
-  if ((o->have_loc || o->have_scale) && !o->dist)
-    die(o->sub, "--loc and --scale go with --dist NAME (scipy's loc/scale convention)");
+  if ((o->have_loc || o->have_scale || o->nshape) && !o->dist)
+    die(o->sub, "--shape, --loc and --scale go with --dist NAME (scipy's shape/loc/scale convention)");
 }
 
 /* ---- output: key=value (default), TSV or JSON --------------------------- */
@@ -299,14 +330,30 @@ static nl_table *read_table(const opts *o, const char *path)
   return t;
 }
 
-/* Column o->column of the table as a new array. */
+/* Column --column of the table (a number, or a header's name) as a new array. */
 static double *column(const opts *o, const nl_table *t, const char *path)
 {
-  if ((size_t)o->column > t->ncols) {
+  size_t c = (size_t)o->column - 1;
+  if (o->column_name) {
+    long j = nl_table_column(t, o->column_name);
+    if (j < 0) {
+      /* The table's own names, so the user can copy one; a wide table's list is cut. */
+      char list[512];
+      size_t len = 0;
+      for (size_t i = 0; i < t->ncols && len < sizeof list; i++) {
+        int w = i < 16 ? snprintf(list + len, sizeof list - len, "%s%s", i ? ", " : "", t->names[i])
+                       : snprintf(list + len, sizeof list - len, ", ... (%zu in all)", t->ncols);
+        len += w > 0 ? (size_t)w : 0;
+        if (i >= 16) break;
+      }
+      die(o->sub, "%s: no column '%s' (the table's columns: %s)", shown(path), o->column_name, list);
+    }
+    c = (size_t)j;
+  } else if ((size_t)o->column > t->ncols) {
     die(o->sub, "%s: no column %ld (the table has %zu)", shown(path), o->column, t->ncols);
   }
   double *x = nl_xmalloc(t->nrows * sizeof(double));
-  for (size_t i = 0; i < t->nrows; i++) x[i] = nl_table_get(t, i, (size_t)o->column - 1);
+  for (size_t i = 0; i < t->nrows; i++) x[i] = nl_table_get(t, i, c);
   return hold(x);
 }
 
@@ -341,8 +388,21 @@ static void null_dist(const opts *o, nl_stats_dist *dist, nl_table **cdf_table, 
     nl_stats_dist_kind kind;
     if (nl_stats_dist_parse(o->dist, &kind, &err)) die(o->sub, "%s", err.msg);
     double scale = o->have_scale ? o->scale : 1.0;
-    if (nl_stats_dist_init(dist, kind, o->have_loc ? o->loc : 0.0, scale, &err)) {
-      die(o->sub, "--%s", err.msg);   /* "--scale 0 must be positive ..." */
+    int want = nl_stats_dist_nshape(kind);
+    if ((size_t)want != o->nshape) {
+      if (want == 0) die(o->sub, "--dist %s takes no --shape", o->dist);
+      die(o->sub, "--dist %s needs --shape %s (%d value%s, scipy's order), got %zu", o->dist,
+          want == 1 ? "A" : "A,B", want, want == 1 ? "" : "s", o->nshape);
+    }
+    if (o->have_scale && !(scale > 0)) die(o->sub, "--scale %g must be positive", scale);
+    for (size_t i = 0; i < o->nshape; i++)
+      if (!(o->shape[i] > 0)) {
+        die(o->sub, "--shape: %s's %s must be positive, got %g", o->dist,
+            nl_stats_dist_shape_names(kind), o->shape[i]);
+      }
+    if (nl_stats_dist_init_shape(dist, kind, o->shape, o->nshape, o->have_loc ? o->loc : 0.0, scale,
+                                 &err)) {
+      die(o->sub, "--dist %s: %s", o->dist, err.msg);
     }
   } else {
     /* end points: uniform on [a, b) evaluated as (x - a) / (b - a), as before */

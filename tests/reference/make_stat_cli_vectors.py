@@ -90,6 +90,51 @@ def make_ks():
     write("ks_dist.tsv", ["file", "dist", "loc", "scale", "D", "p", "V"], rows)
 
 
+# (distribution, shapes, loc, scale, n) drawn from; each is tested against
+# itself and against a neighbour (the same shapes scaled by 1.15, loc + 0.1
+# scale) so that both large and small p-values are checked.
+SHAPED = [
+    ("norm", (), 0.3, 1.5, 90),
+    ("uniform", (), -1.0, 4.0, 70),
+    ("expon", (), 0.2, 2.0, 120),
+    ("gamma", (2.5,), 0.0, 1.3, 150),
+    ("beta", (2.0, 5.0), 0.0, 1.0, 110),
+    ("lognorm", (0.6,), 0.0, np.exp(0.4), 130),
+    ("t", (4.0,), 0.5, 1.0, 100),
+    ("chi2", (3.0,), 0.0, 1.0, 80),
+    ("weibull_min", (1.7,), 0.0, 2.0, 140),
+    ("cauchy", (), -0.5, 0.7, 60),
+    ("logistic", (), 1.0, 0.8, 160),
+    ("laplace", (), 0.0, 1.2, 50),
+    ("pareto", (3.0,), 0.0, 1.0, 200),
+    ("rayleigh", (), 0.1, 1.5, 75),
+]
+
+
+def make_ks_shapes():
+    """kstest against every named distribution with scipy's (shapes, loc,
+    scale), with the two one-sided alternatives beside the two-sided test."""
+    rng = np.random.default_rng(20261127)
+    rows = []
+    for name, shapes, loc, scale, n in SHAPED:
+        dist = getattr(st, name)
+        x = dist.rvs(*shapes, loc=loc, scale=scale, size=n, random_state=rng)
+        fname = f"dist_{name}_{n}.tsv"
+        write(fname, ["value"], [[v] for v in x])
+        near = tuple(a * 1.15 for a in shapes)
+        for sh, lo, sc in [(shapes, loc, scale), (near, loc + 0.1 * scale, scale * 1.1)]:
+            args = tuple(sh) + (lo, sc)
+            r = {a: st.kstest(x, name, args=args, alternative=a)
+                 for a in ("two-sided", "less", "greater")}
+            v = kuiper_v(dist.cdf(x, *args))
+            rows.append([fname, name, ",".join(repr(float(a)) for a in sh) or "-", lo, sc,
+                         r["two-sided"].statistic, r["two-sided"].pvalue,
+                         r["less"].statistic, r["less"].pvalue,
+                         r["greater"].statistic, r["greater"].pvalue, v])
+    write("ks_shapes.tsv", ["file", "dist", "shape", "loc", "scale", "D", "p", "D_less", "p_less",
+                            "D_greater", "p_greater", "V"], rows)
+
+
 def make_ward():
     rng = np.random.default_rng(7)
     centres = np.array([[0.0, 0.0, 0.0], [4.0, 0.5, 1.0], [1.0, 5.0, -1.0], [5.0, 5.0, 3.0]])
@@ -104,6 +149,7 @@ def make_ward():
 def main():
     os.makedirs(OUT, exist_ok=True)
     make_ks()
+    make_ks_shapes()
     make_ward()
     with open(os.path.join(OUT, "VERSIONS"), "w") as f:
         f.write(f"scipy {scipy.__version__}\nnumpy {np.__version__}\n")
