@@ -33,7 +33,7 @@ static const char *usage_text[] = {
 
 static const char *help_ks =
   "usage: " PROG " ks FILE [--column C] [--uniform A B | --dist NAME [--shape A[,B]] [--loc L] [--scale S] | --cdf TABLE]\n"
-  "                 [--csv] [--format kv|tsv|json]\n"
+  "                 [--alternative two-sided|less|greater] [--csv] [--format kv|tsv|json]\n"
   "One-sample Kolmogorov-Smirnov test of column C (a number, 1-based, default 1, or the\n"
   "name of a header's column) against\n"
   "  --uniform A B     the uniform distribution on [A, B) (end points; the default, 0 1)\n"
@@ -45,13 +45,17 @@ static const char *help_ks =
   "                    pareto (b), rayleigh\n"
   "  --cdf TABLE       a tabulated CDF: columns x and F (or the first two), linear\n"
   "                    interpolation, constant beyond the ends (numpy.interp)\n"
+  "  --alternative A  two-sided (default), less (D- = max(F - F_n): the sample lies\n"
+  "                    below F somewhere) or greater (D+ = max(F_n - F)), as kstest's\n"
   "Prints D=... p=... n=... method=... (--format tsv: a header and a row; json: an object).\n"
-  "p is two-sided and exact for finite n (scipy.stats.kstest); method names the\n"
-  "algorithm (durbin-mtw, pomeranz, pelz-good, smirnov, ruben-gambino).\n";
+  "p is exact for finite n (scipy.stats.kstest; one-sided: Smirnov's law, ksone); method\n"
+  "names the algorithm (durbin-mtw, pomeranz, pelz-good, smirnov, ruben-gambino).\n";
 static const char *help_ks2 =
-  "usage: " PROG " ks2 FILE1 FILE2 [--column C] [--csv] [--format kv|tsv|json]\n"
+  "usage: " PROG " ks2 FILE1 FILE2 [--column C] [--alternative two-sided|less|greater]\n"
+  "                  [--csv] [--format kv|tsv|json]\n"
   "Two-sample Kolmogorov-Smirnov test of column C (number or header name, default 1)\n"
   "of each file.\n"
+  "--alternative: greater tests F1 > F2 somewhere (D = max(F1 - F2)), less F1 < F2.\n"
   "Prints D=... p=... n=N1,N2 method=exact|asymp (scipy.stats.ks_2samp).\n";
 static const char *help_kuiper =
   "usage: " PROG " kuiper FILE [--column C] [--uniform A B | --dist NAME [--shape A[,B]] [--loc L] [--scale S] | --cdf TABLE]\n"
@@ -102,6 +106,8 @@ typedef struct {
   int have_bins, have_cutoff, have_clusters, have_k, have_select, have_uniform, have_loc, have_scale;
   int csv;
   out_format format;
+  const char *alternative;
+  nl_stats_ks_alternative alt;
   const char *linkage, *labels_out, *merges_out, *params_out, *covariance, *dist, *cdf_file;
 } opts;
 
@@ -153,7 +159,7 @@ static void parse_shape(opts *o, const char *v)
 enum {
   O_COLUMN, O_UNIFORM, O_BINS, O_LINKAGE, O_METHOD, O_CUTOFF, O_CLUSTERS, O_LABELS, O_MERGES,
   O_PARAMS, O_K, O_SELECT_AIC, O_COVARIANCE, O_SEED, O_TOL, O_MAX_ITER, O_MAX_K, O_REG_COVAR,
-  O_DIST, O_SHAPE, O_LOC, O_SCALE, O_CDF, O_FORMAT, O_CSV, O_HELP
+  O_ALTERNATIVE, O_DIST, O_SHAPE, O_LOC, O_SCALE, O_CDF, O_FORMAT, O_CSV, O_HELP
 };
 static const nl_opt_spec spec[] = {
   [O_COLUMN] = {"column", 0, 1}, [O_UNIFORM] = {"uniform", 0, 2}, [O_BINS] = {"bins", 0, 1},
@@ -162,7 +168,8 @@ static const nl_opt_spec spec[] = {
   [O_PARAMS] = {"params", 0, 1}, [O_K] = {"k", 0, 1}, [O_SELECT_AIC] = {"select-aic", 0, 2},
   [O_COVARIANCE] = {"covariance", 0, 1}, [O_SEED] = {"seed", 0, 1}, [O_TOL] = {"tol", 0, 1},
   [O_MAX_ITER] = {"max-iter", 0, 1}, [O_MAX_K] = {"max-k", 0, 1}, [O_REG_COVAR] = {"reg-covar", 0, 1},
-  [O_DIST] = {"dist", 0, 1}, [O_SHAPE] = {"shape", 0, 1}, [O_LOC] = {"loc", 0, 1}, [O_SCALE] = {"scale", 0, 1},
+  [O_ALTERNATIVE] = {"alternative", 0, 1}, [O_DIST] = {"dist", 0, 1},
+  [O_SHAPE] = {"shape", 0, 1}, [O_LOC] = {"loc", 0, 1}, [O_SCALE] = {"scale", 0, 1},
   [O_CDF] = {"cdf", 0, 1}, [O_FORMAT] = {"format", 0, 1}, [O_CSV] = {"csv", 0, 0},
   [O_HELP] = {"help", 'h', 0}, {NULL, 0, 0}};
 
@@ -213,6 +220,7 @@ static void parse(int argc, char **argv, opts *o)
     case O_MAX_ITER: o->max_iter = int_arg(o, a, v, 1, 100000000); break;
     case O_MAX_K: o->max_k = int_arg(o, a, v, 1, 100000); break;
     case O_REG_COVAR: o->reg = num_arg(o, a, v, 0, 1e300); break;
+    case O_ALTERNATIVE: o->alternative = v; break;
     case O_DIST: o->dist = v; break;
     case O_SHAPE: parse_shape(o, v); break;
     case O_LOC: o->loc = num_arg(o, a, v, -1e300, 1e300); o->have_loc = 1; break;
@@ -231,6 +239,10 @@ static void parse(int argc, char **argv, opts *o)
     }
   }
   nl_opt_end(&p);
+  if (o->alternative && strcmp(o->sub, "ks") && strcmp(o->sub, "ks2"))
+    die(o->sub, "--alternative is for ks and ks2 (%s has no one-sided form)", o->sub);
+  if (o->alternative && nl_stats_ks_alternative_parse(o->alternative, &o->alt, &err))
+    die(o->sub, "--alternative: %s", err.msg);
   if (o->have_uniform + (o->dist != NULL) + (o->cdf_file != NULL) > 1)
     die(o->sub, "give one of --uniform A B, --dist NAME and --cdf TABLE");
   if ((o->have_loc || o->have_scale || o->nshape) && !o->dist)
@@ -434,6 +446,7 @@ static void run_ks(const opts *o, int kuiper)
     nl_status s = named ? nl_stats_ks_test(x, t->nrows, nl_stats_dist_cdf, &dist, &k, &err)
                         : nl_stats_ks_test_uniform(x, t->nrows, o->a, o->b, &k, &err);
     if (s) fail_lib(o, o->files[0], &err);
+    nl_stats_ks_one_sided(&k, o->alt);
     rec_num(&r, "D", k.d);
     rec_num(&r, "p", k.p);
     rec_size(&r, "n", k.n);
@@ -453,6 +466,7 @@ static void run_ks2(const opts *o)
   nl_stats_ks_result k;
   nl_error err;
   if (nl_stats_ks2_test(x, t1->nrows, y, t2->nrows, &k, &err)) fail_lib(o, o->files[0], &err);
+  nl_stats_ks_one_sided(&k, o->alt);
   record r = {0};
   char n12[64];
   snprintf(n12, sizeof n12, "%zu,%zu", k.n, k.n2);

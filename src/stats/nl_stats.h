@@ -174,6 +174,24 @@ double nl_stats_kolmogorov_sf(double lambda);
  * scipy.stats.ks_2samp(method='auto'). */
 double nl_stats_ks2_sf(size_t n1, size_t n2, double d, nl_stats_ks_method *method);
 
+/* One-sided P(D+_{n1,n2} >= d) (the same law for D-): exact for n1, n2 <= 10000
+ * while the path counts fit a double, else Hodges' corrected limit;
+ * scipy.stats.ks_2samp(alternative='greater', method='auto'). */
+double nl_stats_ks2_sf_one_sided(size_t n1, size_t n2, double d, nl_stats_ks_method *method);
+
+/* scipy.stats.kstest's alternatives, F_n the sample's ECDF and F the null's
+ * CDF (two samples: F_1 and F_2): "greater" tests F_n > F somewhere with
+ * D+ = max(F_n - F) (max(F_1 - F_2)), "less" F_n < F with D- = max(F - F_n)
+ * (max(F_2 - F_1)); two-sided is D = max(D+, D-). */
+typedef enum { NL_KS_TWO_SIDED, NL_KS_LESS, NL_KS_GREATER } nl_stats_ks_alternative;
+/* "two-sided", "less", "greater"; NL_EINVAL otherwise. */
+nl_status nl_stats_ks_alternative_parse(const char *name, nl_stats_ks_alternative *alt,
+                                        nl_error *err);
+/* Turns a two-sided result of nl_stats_ks_test* (n2 == 0) or nl_stats_ks2_test
+ * into the one-sided test's: d = d_plus (greater) or d_minus (less), p from
+ * the exact one-sided law (smirnov_sf; two-sample: nl_stats_ks2_sf_one_sided). */
+void nl_stats_ks_one_sided(nl_stats_ks_result *r, nl_stats_ks_alternative alt);
+
 /* D+, D-, D of CDF values u[0..n-1] sorted ascending (no p-value). */
 void nl_stats_ks_statistic(const double *u, size_t n, double *d_plus, double *d_minus);
 

@@ -135,6 +135,26 @@ def make_ks_shapes():
                             "D_greater", "p_greater", "V"], rows)
 
 
+def make_ks2_alternatives():
+    """ks_2samp with each alternative: equal sizes (the product form), unequal
+    sizes (Hodges' path count), sizes whose path counts overflow a double and
+    sizes past 10000 (both asymptotic)."""
+    rng = np.random.default_rng(20261128)
+    sizes = [(40, 40, 0.3), (37, 52, 0.4), (120, 75, -0.2), (300, 500, 0.1),
+             (700, 900, 0.05), (12000, 300, 0.15)]
+    rows = []
+    for n1, n2, shift in sizes:
+        a = np.round(rng.normal(0.0, 1.0, n1), 3)   # rounded: ties across the samples
+        b = np.round(rng.normal(shift, 1.0, n2), 3)
+        fa, fb = f"ks2_{n1}_{n2}_a.tsv", f"ks2_{n1}_{n2}_b.tsv"
+        write(fa, ["value"], [[v] for v in a])
+        write(fb, ["value"], [[v] for v in b])
+        for alt in ("two-sided", "less", "greater"):
+            r = st.ks_2samp(a, b, alternative=alt)
+            rows.append([fa, fb, alt, r.statistic, r.pvalue])
+    write("ks2_alt.tsv", ["file1", "file2", "alternative", "D", "p"], rows)
+
+
 def make_ward():
     rng = np.random.default_rng(7)
     centres = np.array([[0.0, 0.0, 0.0], [4.0, 0.5, 1.0], [1.0, 5.0, -1.0], [5.0, 5.0, 3.0]])
@@ -150,6 +170,7 @@ def main():
     os.makedirs(OUT, exist_ok=True)
     make_ks()
     make_ks_shapes()
+    make_ks2_alternatives()
     make_ward()
     with open(os.path.join(OUT, "VERSIONS"), "w") as f:
         f.write(f"scipy {scipy.__version__}\nnumpy {np.__version__}\n")
