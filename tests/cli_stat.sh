@@ -4,7 +4,9 @@
 # tests/reference/make_stats_vectors.py); bad inputs must give exit 2 and one
 # line on stderr naming the input.
 set -u
-STAT=${1:?usage: cli_stat.sh PATH/TO/noiselab-stat}
+STAT=${1:?usage: cli_stat.sh PATH/TO/noiselab-stat [PATH/TO/expect]}
+# json_get (tests/json_get.c) is built beside expect: strict JSON, values by path.
+JSON_GET=$(dirname "${2:-$(dirname "$STAT")/../tests/expect}")/json_get
 HERE=$(cd "$(dirname "$0")" && pwd)
 DATA=$HERE/data/stats
 # shellcheck source=tests/tsv.sh
@@ -303,11 +305,44 @@ else bad "ward distance 6 labels"; fi
 line=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3)
 expect_value "$line" score "$(awk 'BEGIN { printf "%.17g", -5069.630131017421 / 750 }')" 1e-8
 js=$("$STAT" gmm "$DATA/gmm_X.tsv" --select-aic 1 20 --format json)
-if [ "$(printf '%s\n' "$js" | grep -c '"selected": 1')" != 1 ]; then
+if [ "$(printf '%s\n' "$js" | grep -c '"selected": true')" != 1 ]; then
   bad "select json: one selected row expected: $js"
 else
   case $js in '['*']') ok ;; *) bad "select json: $js" ;; esac
 fi
+# JSON: valid (strict) for every subcommand, flags as true/false, and complete:
+# hclust gives scipy's linkage matrix and the labels, gmm its parameters.
+for cmd in "ks $REF/u01_100.tsv" "kuiper $REF/u01_100.tsv" "chisq $REF/u01_100.tsv --bins 4" \
+           "ks2 $REF/ks2_40_40_a.tsv $REF/ks2_40_40_b.tsv" "gmm $DATA/gmm_X.tsv --k 3" \
+           "gmm $DATA/gmm_X.tsv --select-aic 1 20" "hclust $REF/ward_X.tsv --linkage ward --clusters 4"; do
+  # shellcheck disable=SC2086 # the command's words
+  if "$STAT" $cmd --format json | "$JSON_GET" . >/dev/null; then ok; else bad "json of $cmd"; fi
+done
+js=$("$STAT" hclust "$REF/ward_X.tsv" --linkage ward --clusters 4 --format json)
+if [ "$(printf '%s' "$js" | "$JSON_GET" clusters Z labels linkage | tr '\n' ' ')" \
+     = "4 array 59 array 60 ward " ]; then ok; else bad "hclust json: $js"; fi
+# every element of Z against scipy's (ward_Z.tsv), as --merges is checked above
+paths=$(awk 'BEGIN { for (i = 0; i < 59; i++) for (j = 0; j < 4; j++) printf "Z.%d.%d ", i, j }')
+# shellcheck disable=SC2086 # one path per word
+if printf '%s' "$js" | "$JSON_GET" $paths | paste - - - - \
+   | tsv_awk 'NR == FNR { if (FNR > 1) { a[FNR] = n("a"); b[FNR] = n("b"); d[FNR] = n("dist")
+                                          s[FNR] = n("size") }; next }
+              { r = FNR + 1; e = $3 - d[r]; if (e < 0) e = -e
+                if ($1 != a[r] || $2 != b[r] || $4 != s[r] || e > 1e-12 * d[r]) bad = 1 }
+              END { exit bad || FNR != 59 }' "$REF/ward_Z.tsv" -; then ok
+else bad "hclust json Z differs from scipy's linkage"; fi
+paths=$(awk 'BEGIN { for (i = 0; i < 60; i++) printf "labels.%d ", i }')
+# shellcheck disable=SC2086 # one path per word
+if cmp -s <(printf '%s' "$js" | "$JSON_GET" $paths) \
+          <(tsv_cut "$REF/ward_labels.tsv" maxclust_4 | tail -n +2); then ok
+else bad "hclust json labels differ from scipy's fcluster"; fi
+js=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --format json)
+if [ "$(printf '%s' "$js" | "$JSON_GET" converged weights means.2 covariances.1 covariances.1.0 \
+        | tr '\n' ' ')" = "true array 3 array 4 array 4 array 4 " ]; then ok
+else bad "gmm json: $js"; fi
+if [ "$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --covariance diag --format json \
+        | "$JSON_GET" covariances.2 covariances.2.3)" != "" ]; then ok
+else bad "gmm diag json covariances"; fi
 # more parameters than numbers: one warning line
 awk 'BEGIN { for (i = 0; i < 20; i++) print (i * 37 % 20) / 20, (i * 11 % 20) / 20 }' >"$TMP/g20.tsv"
 "$STAT" gmm "$TMP/g20.tsv" --k 8 >/dev/null 2>"$TMP/err"

@@ -74,7 +74,8 @@ static const char *help_hclust =
   "Agglomerative clustering of the rows (Euclidean; --method is another name for\n"
   "--linkage). ward: Ward's minimum variance (scipy's Lance-Williams update).\n"
   "--cutoff: points of a cluster have cophenetic distance <= C (scipy fcluster\n"
-  "'distance'); --clusters: at most K clusters ('maxclust'). Prints clusters=K.\n"
+  "'distance'); --clusters: at most K clusters ('maxclust'). Prints clusters=K;\n"
+  "--format json adds linkage, Z (scipy's linkage matrix) and labels (one per row).\n"
   "--labels writes one label (1..K) per row; --merges writes scipy's linkage\n"
   "matrix (a, b, dist, size).\n";
 static const char *help_gmm =
@@ -84,7 +85,8 @@ static const char *help_gmm =
   "Gaussian mixture of the rows by EM (scikit-learn's GaussianMixture, k-means++\n"
   "initialisation from --seed, default 0; tol 1e-3, max-iter 100, reg-covar 1e-6).\n"
   "Prints k=... loglik=... score=... aic=... bic=... iterations=... converged=...\n"
-  "(loglik: the total log-likelihood; score: its mean per row, sklearn's score()).\n"
+  "(loglik: the total log-likelihood; score: its mean per row, sklearn's score()).\n"  "--format json: converged as true/false, and weights, means and covariances\n"
+  "(sklearn's weights_, means_, covariances_); --select-aic: selected true on one K.\n"
   "Warns on stderr when the model has more free parameters than the data has numbers.\n"
   "--select-aic K0 T fits K0, K0+1, ... (at most --max-k, default 100) until the AIC\n"
   "drops by less than T, prints one line per K and then selected=K (tsv/json: a\n"
@@ -275,6 +277,14 @@ static void rec_size(record *r, const char *key, size_t v)
   snprintf(r->val[r->n++], sizeof r->val[0], "%zu", v);
 }
 
+/* 1 or 0 in key=value and TSV; true or false in JSON. */
+static void rec_bool(record *r, const char *key, int v)
+{
+  r->key[r->n] = key;
+  r->text[r->n] = 2;
+  snprintf(r->val[r->n++], sizeof r->val[0], "%d", v != 0);
+}
+
 static void rec_text(record *r, const char *key, const char *v)
 {
   r->key[r->n] = key;
@@ -282,10 +292,48 @@ static void rec_text(record *r, const char *key, const char *v)
   snprintf(r->val[r->n++], sizeof r->val[0], "%s", v);
 }
 
+/* A JSON number (null when not finite: JSON has no NaN or infinity). */
+static void json_num(double v)
+{
+  char buf[64];
+  if (!isfinite(v)) {
+    fputs("null", stdout);
+    return;
+  }
+  nl_table_format_double(buf, v);
+  fputs(buf, stdout);
+}
+
+/* "[v0, v1, ...]" of n numbers spaced by stride. */
+static void json_list(const double *v, size_t n, size_t stride)
+{
+  putchar('[');
+  for (size_t i = 0; i < n; i++) {
+    if (i) fputs(", ", stdout);
+    json_num(v[i * stride]);
+  }
+  putchar(']');
+}
+
+/* ", "KEY": [...]": a member after the record's scalars. */
+static void json_array(const char *key, const double *v, size_t n, size_t stride)
+{
+  printf(", \"%s\": ", key);
+  json_list(v, n, stride);
+}
+
+/* What a single JSON record carries beyond its scalars (arrays), written
+ * before its closing brace; NULL: nothing. */
+typedef void (*json_more_fn)(const void *ctx);
+static void emit_more(const opts *o, const record *r, size_t nr, json_more_fn more,
+                      const void *ctx);
+static void emit(const opts *o, const record *r, size_t nr) { emit_more(o, r, nr, NULL, NULL); }
+
 /* key=value lines; TSV: one header (the first record's keys) and a row per
  * record; JSON: an object, or an array of objects for several records
- * (non-finite numbers as null). */
-static void emit(const opts *o, const record *r, size_t nr)
+ * (non-finite numbers as null, flags as true and false). */
+static void emit_more(const opts *o, const record *r, size_t nr, json_more_fn more,
+                      const void *ctx)
 {
   for (size_t i = 0; i < nr; i++) {
     if (o->format == OUT_TSV && i == 0)
@@ -297,12 +345,15 @@ static void emit(const opts *o, const record *r, size_t nr)
       const char *v = r[i].val[j];
       if (o->format == OUT_KV) printf("%s%s=%s", j ? " " : "", r[i].key[j], v);
       else if (o->format == OUT_TSV) printf("%s%s", j ? "\t" : "", v);
+      else if (r[i].text[j] == 2)
+        printf("%s\"%s\": %s", j ? ", " : "", r[i].key[j], strcmp(v, "0") ? "true" : "false");
       else if (r[i].text[j]) printf("%s\"%s\": \"%s\"", j ? ", " : "", r[i].key[j], v);
       else {
         int finite = strcmp(v, "nan") && strcmp(v, "inf") && strcmp(v, "-inf");
         printf("%s\"%s\": %s", j ? ", " : "", r[i].key[j], finite ? v : "null");
       }
     }
+    if (o->format == OUT_JSON && more) more(ctx);
     if (o->format == OUT_JSON) putchar('}');
     if (o->format != OUT_JSON || i + 1 == nr) {
       if (o->format == OUT_JSON && nr > 1) putchar(']');
@@ -503,6 +554,32 @@ static void run_chisq(const opts *o)
   nl_table_free(t);
 }
 
+typedef struct {
+  const char *linkage;
+  const double *Z;
+  const int *labels;
+  size_t n;
+} hclust_json;
+
+/* JSON: the linkage matrix in scipy's layout (n - 1 rows a, b, dist, size)
+ * and the flat clusters' labels, one per row of the input. */
+static void hclust_more(const void *ctx)
+{
+  const hclust_json *h = ctx;
+  printf(", \"linkage\": \"%s\", \"Z\": [", h->linkage);
+  for (size_t i = 0; i + 1 < h->n; i++) {
+    fputs(i ? ", [" : "[", stdout);
+    for (int j = 0; j < 4; j++) {
+      if (j) fputs(", ", stdout);
+      json_num(h->Z[4 * i + (size_t)j]);
+    }
+    putchar(']');
+  }
+  fputs("], \"labels\": [", stdout);
+  for (size_t i = 0; i < h->n; i++) printf("%s%d", i ? ", " : "", h->labels[i]);
+  putchar(']');
+}
+
 static void run_hclust(const opts *o)
 {
   nl_cluster_linkage_method m;
@@ -543,7 +620,8 @@ static void run_hclust(const opts *o)
   nl_table_free(out[1]);
   record r = {0};
   rec_size(&r, "clusters", k);
-  emit(o, &r, 1);
+  hclust_json hj = {o->linkage, Z, lab, n};
+  emit_more(o, &r, 1, hclust_more, &hj);
   free(Z); free(lab);
   nl_table_free(t);
 }
@@ -556,7 +634,7 @@ static void fit_record(record *r, size_t n, size_t k, double ll, double aic, dou
   rec_num(r, "aic", aic);
   rec_num(r, "bic", bic);
   rec_size(r, "iterations", it);
-  rec_size(r, "converged", (size_t)conv);
+  rec_bool(r, "converged", conv);
 }
 
 /* Into af, opened (and so checked) before the fit: a bad --params is
@@ -606,6 +684,36 @@ static void warn_overparameterised(const opts *o, const nl_table *t, size_t k, n
                cov == NL_GMM_FULL ? "full" : "diag", m, numbers, t->nrows, t->ncols);
 }
 
+/* JSON of one fit: its weights, means (k rows of d) and covariances (k
+ * matrices d x d, or k rows of d variances for diag), as sklearn's
+ * weights_, means_ and covariances_. */
+static void gmm_more(const void *ctx)
+{
+  const nl_gmm *g = ctx;
+  size_t d = g->d;
+  json_array("weights", g->weights, g->k, 1);
+  fputs(", \"means\": [", stdout);
+  for (size_t k = 0; k < g->k; k++) {
+    fputs(k ? ", " : "", stdout);
+    json_list(g->means + k * d, d, 1);
+  }
+  fputs("], \"covariances\": [", stdout);
+  for (size_t k = 0; k < g->k; k++) {
+    fputs(k ? ", " : "", stdout);
+    if (g->covariance == NL_GMM_DIAG) {
+      json_list(g->covs + k * d, d, 1);
+      continue;
+    }
+    fputs("[", stdout);
+    for (size_t i = 0; i < d; i++) {
+      fputs(i ? ", " : "", stdout);
+      json_list(g->covs + (k * d + i) * d, d, 1);
+    }
+    fputs("]", stdout);
+  }
+  putchar(']');
+}
+
 static void run_gmm(const opts *o)
 {
   if (o->have_k == o->have_select) die(o->sub, "give exactly one of --k K and --select-aic K0 T");
@@ -633,7 +741,7 @@ static void run_gmm(const opts *o)
     if (nl_gmm_fit(g, t->num, n, &go, &err)) fail_lib(o, o->files[0], &err);
     record r = {0};
     fit_record(&r, n, g->k, g->loglik, g->aic, g->bic, g->iterations, g->converged);
-    emit(o, &r, 1);
+    emit_more(o, &r, 1, gmm_more, g);
     warn_overparameterised(o, t, g->k, go.covariance);
   } else {
     if ((size_t)o->k0 > n) {
@@ -647,7 +755,7 @@ static void run_gmm(const opts *o)
     for (size_t i = 0; i < np; i++) {
       fit_record(&r[i], n, path[i].k, path[i].loglik, path[i].aic, path[i].bic, path[i].iterations,
                  path[i].converged);
-      if (o->format != OUT_KV) rec_size(&r[i], "selected", path[i].k == g->k);
+      if (o->format != OUT_KV) rec_bool(&r[i], "selected", path[i].k == g->k);
     }
     emit(o, r, np);
     if (o->format == OUT_KV) printf("selected=%zu\n", g->k);
