@@ -343,6 +343,33 @@ else bad "gmm json: $js"; fi
 if [ "$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --covariance diag --format json \
         | "$JSON_GET" covariances.2 covariances.2.3)" != "" ]; then ok
 else bad "gmm diag json covariances"; fi
+# Every covariance type (sklearn's covariance_type) at k = 3: the k-means++ start
+# finds sklearn's optimum (gmm_fit.tsv: sklearn from its KMeans labels), so
+# loglik, AIC and BIC agree within 1e-8 relative and --labels equals sklearn's
+# predict on all 750 rows up to renaming the components (measured: 1e-15).
+same_partition() {   # two label columns (header skipped): one-to-one on every row
+  paste <(tail -n +2 "$1") <(tail -n +2 "$2") | awk -F'\t' '
+    { if (($1 in f) && f[$1] != $2 || ($2 in b) && b[$2] != $1) bad = 1; f[$1] = $2; b[$2] = $1; n++ }
+    END { exit bad || n != 750 }'
+}
+for cov in full diag tied spherical; do
+  want=$(tsv_awk -v c=$cov 'v("k") == 3 && v("covariance") == c { print v("loglik"), v("aic"), v("bic") }' \
+         "$DATA/gmm_fit.tsv")
+  line=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --covariance $cov --labels "$TMP/gl.tsv")
+  expect_value "$line" loglik "${want%% *}" 1e-8
+  expect_value "$line" aic "$(echo "$want" | cut -d' ' -f2)" 1e-8
+  expect_value "$line" bic "${want##* }" 1e-8
+  if same_partition "$TMP/gl.tsv" "$DATA/gmm_predict_k3_$cov.tsv"; then ok
+  else bad "gmm --covariance $cov --labels differ from sklearn's predict"; fi
+done
+js=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --covariance tied --format json)
+if [ "$(printf '%s' "$js" | "$JSON_GET" covariance_type covariances covariances.3 labels | tr '\n' ' ')" \
+     = "tied array 4 array 4 array 750 " ]; then ok; else bad "gmm tied json: $js"; fi
+js=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --covariance spherical --format json)
+if [ "$(printf '%s' "$js" | "$JSON_GET" covariances | tr '\n' ' ')" = "array 3 " ]; then ok
+else bad "gmm spherical json: $js"; fi
+expect_error "--covariance: unknown covariance type 'round' (full, diag, tied or spherical)" \
+  "$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --covariance round
 # more parameters than numbers: one warning line
 awk 'BEGIN { for (i = 0; i < 20; i++) print (i * 37 % 20) / 20, (i * 11 % 20) / 20 }' >"$TMP/g20.tsv"
 "$STAT" gmm "$TMP/g20.tsv" --k 8 >/dev/null 2>"$TMP/err"

@@ -79,8 +79,9 @@ static const char *help_hclust =
   "--labels writes one label (1..K) per row; --merges writes scipy's linkage\n"
   "matrix (a, b, dist, size).\n";
 static const char *help_gmm =
-  "usage: " PROG " gmm FILE (--k K | --select-aic K0 T) [--covariance full|diag] [--seed N]\n"
-  "                  [--tol X] [--max-iter N] [--reg-covar X] [--max-k N] [--params OUT]\n"
+  "usage: " PROG " gmm FILE (--k K | --select-aic K0 T) [--covariance full|diag|tied|spherical]\n"
+  "                  [--seed N] [--tol X] [--max-iter N] [--reg-covar X] [--max-k N]\n"
+  "                  [--params OUT] [--labels OUT]\n"
   "                  [--csv] [--format kv|tsv|json]\n"
   "Gaussian mixture of the rows by EM (scikit-learn's GaussianMixture, k-means++\n"
   "initialisation from --seed, default 0; tol 1e-3, max-iter 100, reg-covar 1e-6).\n"
@@ -91,7 +92,13 @@ static const char *help_gmm =
   "--select-aic K0 T fits K0, K0+1, ... (at most --max-k, default 100) until the AIC\n"
   "drops by less than T, prints one line per K and then selected=K (tsv/json: a\n"
   "column selected, 1 on the chosen K).\n"
-  "--params writes component, param (weight, mean, cov), i, j, value rows.\n"
+  "--covariance (sklearn's covariance_type): full, diag, tied (one matrix for all\n"
+  "components) or spherical (one variance per component); AIC/BIC count sklearn's\n"
+  "free parameters for each.\n"
+  "--params writes component, param (weight, mean, cov), i, j, value rows (each\n"
+  "component's matrix: tied repeats the shared one, spherical gives sigma^2 on the diagonal).\n"
+  "--labels writes each row's component, 1..K (sklearn's predict, plus one), of the\n"
+  "fitted (or selected) model.\n"
   "Every subcommand: options as --name VALUE or --name=VALUE; tables are TSV or\n"
   "blank-separated, or CSV (found from a first line with commas and no tab, or --csv).\n";
 
@@ -639,7 +646,7 @@ static void fit_record(record *r, size_t n, size_t k, double ll, double aic, dou
 
 /* Into af, opened (and so checked) before the fit: a bad --params is
  * refused before EM runs, as hclust's outputs are. */
-static void write_params(const opts *o, const nl_gmm *g, nl_atomic_file *af)
+static nl_table *params_table(const nl_gmm *g)
 {
   const char *cols[] = {"component", "param", "i", "j", "value"};
   nl_table *t = nl_table_alloc(5, cols);
@@ -649,14 +656,23 @@ static void write_params(const opts *o, const nl_gmm *g, nl_atomic_file *af)
     for (size_t i = 0; i < d; i++) nl_table_append(t, "isiid", (int)k + 1, "mean", (int)i + 1, 0, g->means[k * d + i]);
     for (size_t i = 0; i < d; i++)
       for (size_t j = 0; j < d; j++) {
-        if (g->covariance == NL_GMM_DIAG && i != j) continue;
-        double v = g->covariance == NL_GMM_FULL ? g->covs[(k * d + i) * d + j] : g->covs[k * d + i];
+        /* each component's matrix: tied repeats the shared one, spherical is sigma_k^2 I */
+        int full = g->covariance == NL_GMM_FULL || g->covariance == NL_GMM_TIED;
+        if (!full && i != j) continue;
+        double v = full ? g->covs[(k * d + i) * d + j] : g->covs[k * d + i];
         nl_table_append(t, "isiid", (int)k + 1, "cov", (int)i + 1, (int)j + 1, v);
       }
   }
+  return t;
+}
+
+/* sklearn's predict on the fitted rows, 0-based (held: freed at exit). */
+static int *predict(const opts *o, const nl_gmm *g, const nl_table *t)
+{
+  int *lab = hold(nl_xmalloc(t->nrows * sizeof(int)));
   nl_error err;
-  if (nl_table_write_to(t, af, &err) || nl_atomic_commit(af, &err)) die(o->sub, "%s", err.msg);
-  nl_table_free(t);
+  if (nl_gmm_predict(g, t->num, t->nrows, lab, &err)) fail_lib(o, o->files[0], &err);
+  return lab;
 }
 
 /* Constant columns are legal (reg_covar keeps their variance finite), but
@@ -681,36 +697,51 @@ static void warn_overparameterised(const opts *o, const nl_table *t, size_t k, n
     nl_message(stderr, PROG " gmm: warning: %s: k = %zu components (%s covariance) have %zu free "
                "parameters, more than the %zu numbers of the data (%zu rows x %zu columns); the "
                "fit is not meaningful", shown(o->files[0]), k,
-               cov == NL_GMM_FULL ? "full" : "diag", m, numbers, t->nrows, t->ncols);
+               nl_gmm_covariance_name(cov), m, numbers, t->nrows, t->ncols);
 }
 
-/* JSON of one fit: its weights, means (k rows of d) and covariances (k
- * matrices d x d, or k rows of d variances for diag), as sklearn's
- * weights_, means_ and covariances_. */
+/* JSON of one fit: its weights, means (k rows of d) and covariances in
+ * sklearn's shapes (full: k matrices d x d; tied: one d x d; diag: k rows of
+ * d; spherical: k variances), as weights_, means_ and covariances_, and
+ * predict's label (1..k) of every row. */
+typedef struct {
+  const nl_gmm *g;
+  const int *labels;
+} gmm_json;
+
 static void gmm_more(const void *ctx)
 {
-  const nl_gmm *g = ctx;
+  const gmm_json *j = ctx;
+  const nl_gmm *g = j->g;
   size_t d = g->d;
+  nl_gmm_covariance c = g->covariance;
+  printf(", \"covariance_type\": \"%s\"", nl_gmm_covariance_name(c));
   json_array("weights", g->weights, g->k, 1);
   fputs(", \"means\": [", stdout);
   for (size_t k = 0; k < g->k; k++) {
     fputs(k ? ", " : "", stdout);
     json_list(g->means + k * d, d, 1);
   }
-  fputs("], \"covariances\": [", stdout);
-  for (size_t k = 0; k < g->k; k++) {
+  fputs("], \"covariances\": ", stdout);
+  if (c == NL_GMM_SPHERICAL) json_list(g->covs, g->k, d);
+  size_t matrices = c == NL_GMM_FULL ? g->k : c == NL_GMM_TIED ? 1 : 0;
+  if (c == NL_GMM_DIAG || c == NL_GMM_TIED) putchar('[');
+  for (size_t k = 0; c == NL_GMM_DIAG && k < g->k; k++) {
     fputs(k ? ", " : "", stdout);
-    if (g->covariance == NL_GMM_DIAG) {
-      json_list(g->covs + k * d, d, 1);
-      continue;
-    }
-    fputs("[", stdout);
+    json_list(g->covs + k * d, d, 1);
+  }
+  if (c == NL_GMM_FULL) putchar('[');
+  for (size_t k = 0; k < matrices; k++) {
+    fputs(k ? ", [" : c == NL_GMM_FULL ? "[" : "", stdout);
     for (size_t i = 0; i < d; i++) {
       fputs(i ? ", " : "", stdout);
       json_list(g->covs + (k * d + i) * d, d, 1);
     }
-    fputs("]", stdout);
+    if (c == NL_GMM_FULL) putchar(']');
   }
+  if (c != NL_GMM_SPHERICAL) putchar(']');
+  fputs(", \"labels\": [", stdout);
+  for (size_t i = 0; i < g->n; i++) printf("%s%d", i ? ", " : "", j->labels[i] + 1);
   putchar(']');
 }
 
@@ -719,16 +750,18 @@ static void run_gmm(const opts *o)
   if (o->have_k == o->have_select) die(o->sub, "give exactly one of --k K and --select-aic K0 T");
   nl_gmm_options go;
   nl_gmm_options_default(&go);
-  if (!strcmp(o->covariance, "diag")) go.covariance = NL_GMM_DIAG;
-  else if (strcmp(o->covariance, "full")) die(o->sub, "--covariance must be full or diag");
+  nl_error err;
+  if (nl_gmm_covariance_parse(o->covariance, &go.covariance, &err))
+    die(o->sub, "--covariance: %s", err.msg);
   go.seed = (unsigned long)o->seed;
   go.tol = o->tol;
   go.max_iter = (size_t)o->max_iter;
   go.reg_covar = o->reg;
-  nl_error err;
-  /* A temporary left by die() is removed at exit. */
-  nl_atomic_file af = {0};
-  if (o->params_out && nl_atomic_open(&af, o->params_out, &err)) die(o->sub, "%s", err.msg);
+  /* Both outputs opened (so checked) before EM runs, committed together.
+   * A temporary left by die() is removed at exit. */
+  nl_atomic_file af[2] = {{0}, {0}};
+  if (o->params_out && nl_atomic_open(&af[0], o->params_out, &err)) die(o->sub, "%s", err.msg);
+  if (o->labels_out && nl_atomic_open(&af[1], o->labels_out, &err)) die(o->sub, "%s", err.msg);
   nl_table *t = read_table(o, o->files[0]);
   size_t n = t->nrows, d = t->ncols;
   nl_gmm *g;
@@ -741,7 +774,8 @@ static void run_gmm(const opts *o)
     if (nl_gmm_fit(g, t->num, n, &go, &err)) fail_lib(o, o->files[0], &err);
     record r = {0};
     fit_record(&r, n, g->k, g->loglik, g->aic, g->bic, g->iterations, g->converged);
-    emit_more(o, &r, 1, gmm_more, g);
+    gmm_json gj = {g, predict(o, g, t)};
+    emit_more(o, &r, 1, gmm_more, &gj);
     warn_overparameterised(o, t, g->k, go.covariance);
   } else {
     if ((size_t)o->k0 > n) {
@@ -764,7 +798,18 @@ static void run_gmm(const opts *o)
     free(path);
   }
   note_constant_columns(o, t);
-  if (o->params_out) write_params(o, g, &af);
+  nl_table *out[2] = {o->params_out ? params_table(g) : NULL, NULL};
+  if (o->labels_out) {
+    const char *cols[] = {"label"};
+    int *lab = predict(o, g, t);
+    out[1] = nl_table_alloc(1, cols);
+    for (size_t i = 0; i < n; i++) nl_table_append(out[1], "i", lab[i] + 1);
+  }
+  for (int i = 0; i < 2; i++)
+    if (out[i] && nl_table_write_to(out[i], &af[i], &err)) die(o->sub, "%s", err.msg);
+  if (nl_atomic_commit_all(af, 2, &err)) die(o->sub, "%s", err.msg);
+  nl_table_free(out[0]);
+  nl_table_free(out[1]);
   nl_gmm_free(g);
   nl_table_free(t);
 }
