@@ -153,7 +153,8 @@ expect_error "outside" "$STAT" chisq "$DATA/chisq_0.tsv" --bins 10
 expect_error "cannot open" "$STAT" ks "$TMP/missing.tsv"
 expect_error "unknown option" "$STAT" ks "$DATA/ks_facts_512.tsv" --bogus
 expect_error "no column 2" "$STAT" ks "$DATA/ks_facts_512.tsv" --column 2
-expect_error "unknown linkage 'median' (single, complete, average or ward)" "$STAT" hclust "$DATA/hclust_X.tsv" --linkage median --clusters 2
+expect_error "unknown linkage 'medoid' (single, complete, average, weighted, ward, centroid or median)" \
+  "$STAT" hclust "$DATA/hclust_X.tsv" --linkage medoid --clusters 2
 expect_error "exactly one" "$STAT" gmm "$DATA/gmm_X.tsv"
 expect_error "two files" "$STAT" ks2 "$DATA/ks2_1_a.tsv"
 expect_error "unknown subcommand" "$STAT" frobnicate x
@@ -301,6 +302,37 @@ else bad "ward maxclust 4 labels"; fi
 if cmp -s <(tail -n +2 "$TMP/wl6.tsv") \
   <(tsv_cut "$REF/ward_labels.tsv" distance_6 | tail -n +2); then ok
 else bad "ward distance 6 labels"; fi
+# pdist's metrics with single, complete, average and weighted linkage, and
+# centroid and median linkage (Euclidean; the generic algorithm, Z in merge
+# order) against scipy (metric_Z.tsv, metric_labels.tsv): a, b and size equal,
+# dist within 1e-11 relative (measured: 0 but cosine and correlation, 7.9e-13:
+# 1 - cos cancels), fcluster maxclust 4 labels equal.
+cases=0
+while IFS=$'\t' read -r method metric; do
+  cases=$((cases + 1))
+  "$STAT" hclust "$REF/metric_X.tsv" --linkage "$method" --metric "$metric" --clusters 4 \
+    --merges "$TMP/mz.tsv" --labels "$TMP/ml.tsv" >/dev/null
+  if tsv_awk -v m="$method" -v d="$metric" '
+       NR == FNR { if (v("method") == m && v("metric") == d) { k++; a[k] = n("a"); b[k] = n("b")
+                   dist[k] = n("dist"); size[k] = n("size") }; next }
+       FNR > 1 { i = FNR - 1; e = n("dist") - dist[i]; if (e < 0) e = -e
+                 if (n("a") != a[i] || n("b") != b[i] || n("size") != size[i] || e > 1e-11 * dist[i]) bad = 1 }
+       END { exit bad || FNR - 1 != k || k != 41 }' "$REF/metric_Z.tsv" "$TMP/mz.tsv"; then ok
+  else bad "hclust --linkage $method --metric $metric: Z differs from scipy's"; fi
+  if cmp -s <(tail -n +2 "$TMP/ml.tsv") <(tsv_awk -v m="$method" -v d="$metric" \
+              'v("method") == m && v("metric") == d { print v("maxclust_4") }' "$REF/metric_labels.tsv"); then ok
+  else bad "hclust --linkage $method --metric $metric: labels differ from scipy's fcluster"; fi
+done < <(tail -n +2 "$REF/metric_Z.tsv" | cut -f1,2 | uniq)
+if [ "$cases" = 31 ]; then ok; else bad "metric_Z.tsv: $cases cases, want 31"; fi
+expect_error "--linkage ward needs --metric euclidean, not cosine (as scipy's linkage)" \
+  "$STAT" hclust "$REF/metric_X.tsv" --linkage ward --metric cosine --clusters 2
+expect_error "--linkage centroid needs --metric euclidean, not cityblock" \
+  "$STAT" hclust "$REF/metric_X.tsv" --linkage centroid --metric cityblock --clusters 2
+expect_error "--metric: unknown metric 'manhattan' (euclidean, sqeuclidean, cityblock" \
+  "$STAT" hclust "$REF/metric_X.tsv" --linkage single --metric manhattan --clusters 2
+printf '1 2\n0 0\n3 1\n' >"$TMP/zero_row.tsv"
+expect_error "zero_row.tsv: point 2 is zero: its cosine distance is 0/0" \
+  "$STAT" hclust "$TMP/zero_row.tsv" --linkage average --metric cosine --clusters 2
 # gmm: score (sklearn's mean log-likelihood per row) beside the total
 line=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3)
 expect_value "$line" score "$(awk 'BEGIN { printf "%.17g", -5069.630131017421 / 750 }')" 1e-8

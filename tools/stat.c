@@ -69,10 +69,14 @@ static const char *help_chisq =
   "against equal expected counts. Prints chi2=... df=... p=... min_expected=...\n"
   "and warns on stderr when min_expected < 5 (the p-value is then unreliable).\n";
 static const char *help_hclust =
-  "usage: " PROG " hclust FILE --linkage single|complete|average|ward (--cutoff C | --clusters K)\n"
+  "usage: " PROG " hclust FILE --linkage METHOD [--metric NAME] (--cutoff C | --clusters K)\n"
   "                     [--labels OUT] [--merges OUT] [--csv] [--format kv|tsv|json]\n"
-  "Agglomerative clustering of the rows (Euclidean; --method is another name for\n"
-  "--linkage). ward: Ward's minimum variance (scipy's Lance-Williams update).\n"
+  "Agglomerative clustering of the rows, scipy.cluster.hierarchy.linkage(x, METHOD,\n"
+  "NAME) (--method is another name for --linkage). METHOD: single, complete, average,\n"
+  "weighted, ward (Ward's minimum variance), centroid or median (scipy's Lance-Williams\n"
+  "updates; centroid and median can merge lower than before: Z is in merge order).\n"
+  "--metric (pdist's; default euclidean): sqeuclidean, cityblock, chebyshev, cosine,\n"
+  "correlation, canberra, braycurtis; ward, centroid and median need euclidean.\n"
   "--cutoff: points of a cluster have cophenetic distance <= C (scipy fcluster\n"
   "'distance'); --clusters: at most K clusters ('maxclust'). Prints clusters=K;\n"
   "--format json adds linkage, Z (scipy's linkage matrix) and labels (one per row).\n"
@@ -115,7 +119,7 @@ typedef struct {
   int have_bins, have_cutoff, have_clusters, have_k, have_select, have_uniform, have_loc, have_scale;
   int csv;
   out_format format;
-  const char *alternative;
+  const char *alternative, *metric;
   nl_stats_ks_alternative alt;
   const char *linkage, *labels_out, *merges_out, *params_out, *covariance, *dist, *cdf_file;
 } opts;
@@ -168,7 +172,7 @@ static void parse_shape(opts *o, const char *v)
 enum {
   O_COLUMN, O_UNIFORM, O_BINS, O_LINKAGE, O_METHOD, O_CUTOFF, O_CLUSTERS, O_LABELS, O_MERGES,
   O_PARAMS, O_K, O_SELECT_AIC, O_COVARIANCE, O_SEED, O_TOL, O_MAX_ITER, O_MAX_K, O_REG_COVAR,
-  O_ALTERNATIVE, O_DIST, O_SHAPE, O_LOC, O_SCALE, O_CDF, O_FORMAT, O_CSV, O_HELP
+  O_ALTERNATIVE, O_METRIC, O_DIST, O_SHAPE, O_LOC, O_SCALE, O_CDF, O_FORMAT, O_CSV, O_HELP
 };
 static const nl_opt_spec spec[] = {
   [O_COLUMN] = {"column", 0, 1}, [O_UNIFORM] = {"uniform", 0, 2}, [O_BINS] = {"bins", 0, 1},
@@ -177,7 +181,8 @@ static const nl_opt_spec spec[] = {
   [O_PARAMS] = {"params", 0, 1}, [O_K] = {"k", 0, 1}, [O_SELECT_AIC] = {"select-aic", 0, 2},
   [O_COVARIANCE] = {"covariance", 0, 1}, [O_SEED] = {"seed", 0, 1}, [O_TOL] = {"tol", 0, 1},
   [O_MAX_ITER] = {"max-iter", 0, 1}, [O_MAX_K] = {"max-k", 0, 1}, [O_REG_COVAR] = {"reg-covar", 0, 1},
-  [O_ALTERNATIVE] = {"alternative", 0, 1}, [O_DIST] = {"dist", 0, 1},
+  [O_ALTERNATIVE] = {"alternative", 0, 1}, [O_METRIC] = {"metric", 0, 1},
+  [O_DIST] = {"dist", 0, 1},
   [O_SHAPE] = {"shape", 0, 1}, [O_LOC] = {"loc", 0, 1}, [O_SCALE] = {"scale", 0, 1},
   [O_CDF] = {"cdf", 0, 1}, [O_FORMAT] = {"format", 0, 1}, [O_CSV] = {"csv", 0, 0},
   [O_HELP] = {"help", 'h', 0}, {NULL, 0, 0}};
@@ -230,6 +235,7 @@ static void parse(int argc, char **argv, opts *o)
     case O_MAX_K: o->max_k = int_arg(o, a, v, 1, 100000); break;
     case O_REG_COVAR: o->reg = num_arg(o, a, v, 0, 1e300); break;
     case O_ALTERNATIVE: o->alternative = v; break;
+    case O_METRIC: o->metric = v; break;
     case O_DIST: o->dist = v; break;
     case O_SHAPE: parse_shape(o, v); break;
     case O_LOC: o->loc = num_arg(o, a, v, -1e300, 1e300); o->have_loc = 1; break;
@@ -562,7 +568,7 @@ static void run_chisq(const opts *o)
 }
 
 typedef struct {
-  const char *linkage;
+  const char *linkage, *metric;
   const double *Z;
   const int *labels;
   size_t n;
@@ -573,7 +579,7 @@ typedef struct {
 static void hclust_more(const void *ctx)
 {
   const hclust_json *h = ctx;
-  printf(", \"linkage\": \"%s\", \"Z\": [", h->linkage);
+  printf(", \"linkage\": \"%s\", \"metric\": \"%s\", \"Z\": [", h->linkage, h->metric);
   for (size_t i = 0; i + 1 < h->n; i++) {
     fputs(i ? ", [" : "[", stdout);
     for (int j = 0; j < 4; j++) {
@@ -591,8 +597,18 @@ static void run_hclust(const opts *o)
 {
   nl_cluster_linkage_method m;
   nl_error err;
-  if (!o->linkage) die(o->sub, "--linkage single|complete|average|ward is required");
+  nl_cluster_metric metric = NL_METRIC_EUCLIDEAN;
+  if (!o->linkage) {
+    die(o->sub, "--linkage single|complete|average|weighted|ward|centroid|median is required");
+  }
   if (nl_cluster_linkage_method_parse(o->linkage, &m, &err)) die(o->sub, "%s", err.msg);
+  if (o->metric && nl_cluster_metric_parse(o->metric, &metric, &err))
+    die(o->sub, "--metric: %s", err.msg);
+  if (metric != NL_METRIC_EUCLIDEAN
+      && (m == NL_LINKAGE_WARD || m == NL_LINKAGE_CENTROID || m == NL_LINKAGE_MEDIAN)) {
+    die(o->sub, "--linkage %s needs --metric euclidean, not %s (as scipy's linkage)", o->linkage,
+        o->metric);
+  }
   if (o->have_cutoff == o->have_clusters) die(o->sub, "give exactly one of --cutoff C and --clusters K");
   /* Both outputs are opened (and so checked) before anything is computed or
    * written, and committed together: a bad --merges leaves --labels' old
@@ -605,7 +621,8 @@ static void run_hclust(const opts *o)
   double *Z = hold(nl_xmalloc((n - 1) * 4 * sizeof(double)));
   int *lab = hold(nl_xmalloc(n * sizeof(int)));
   size_t k;
-  if (nl_cluster_linkage(t->num, n, t->ncols, m, Z, &err)) fail_lib(o, o->files[0], &err);
+  if (nl_cluster_linkage_metric(t->num, n, t->ncols, m, metric, Z, &err))
+    fail_lib(o, o->files[0], &err);
   nl_status s = o->have_cutoff ? nl_cluster_fcluster_distance(Z, n, o->cutoff, lab, &k, &err)
                                : nl_cluster_fcluster_maxclust(Z, n, (size_t)o->clusters, lab, &k, &err);
   if (s) fail_lib(o, o->files[0], &err);
@@ -627,7 +644,7 @@ static void run_hclust(const opts *o)
   nl_table_free(out[1]);
   record r = {0};
   rec_size(&r, "clusters", k);
-  hclust_json hj = {o->linkage, Z, lab, n};
+  hclust_json hj = {nl_cluster_linkage_method_name(m), nl_cluster_metric_name(metric), Z, lab, n};
   emit_more(o, &r, 1, hclust_more, &hj);
   free(Z); free(lab);
   nl_table_free(t);

@@ -155,6 +155,30 @@ def make_ks2_alternatives():
     write("ks2_alt.tsv", ["file1", "file2", "alternative", "D", "p"], rows)
 
 
+def make_linkage_metrics():
+    """linkage with pdist's metrics, weighted linkage, and centroid and median
+    linkage (Euclidean), in long form: every row of every Z, and fcluster's
+    maxclust 4 labels."""
+    rng = np.random.default_rng(20261129)
+    centres = np.array([[1.0, 1.0, 2.0, 0.5], [4.0, 1.5, 1.0, 3.0], [2.0, 5.0, 4.0, 1.0]])
+    # positive coordinates (canberra and braycurtis), clusters of 14 points
+    X = np.vstack([c + rng.gamma(2.0, 0.4, (14, 4)) for c in centres])
+    write("metric_X.tsv", ["x0", "x1", "x2", "x3"], X.tolist())
+    cases = [(m, d) for m in ("single", "complete", "average", "weighted")
+             for d in ("sqeuclidean", "cityblock", "chebyshev", "cosine", "correlation",
+                       "canberra", "braycurtis")]
+    cases += [("weighted", "euclidean"), ("centroid", "euclidean"), ("median", "euclidean")]
+    zrows, lrows = [], []
+    for method, metric in cases:
+        Z = sch.linkage(X, method, metric)
+        for r in Z:
+            zrows.append([method, metric, int(r[0]), int(r[1]), r[2], int(r[3])])
+        for i, lab in enumerate(sch.fcluster(Z, 4, "maxclust")):
+            lrows.append([method, metric, i, int(lab)])
+    write("metric_Z.tsv", ["method", "metric", "a", "b", "dist", "size"], zrows)
+    write("metric_labels.tsv", ["method", "metric", "row", "maxclust_4"], lrows)
+
+
 def make_ward():
     rng = np.random.default_rng(7)
     centres = np.array([[0.0, 0.0, 0.0], [4.0, 0.5, 1.0], [1.0, 5.0, -1.0], [5.0, 5.0, 3.0]])
@@ -171,6 +195,7 @@ def main():
     make_ks()
     make_ks_shapes()
     make_ks2_alternatives()
+    make_linkage_metrics()
     make_ward()
     with open(os.path.join(OUT, "VERSIONS"), "w") as f:
         f.write(f"scipy {scipy.__version__}\nnumpy {np.__version__}\n")
