@@ -153,7 +153,7 @@ expect_error "outside" "$STAT" chisq "$DATA/chisq_0.tsv" --bins 10
 expect_error "cannot open" "$STAT" ks "$TMP/missing.tsv"
 expect_error "unknown option" "$STAT" ks "$DATA/ks_facts_512.tsv" --bogus
 expect_error "no column 2" "$STAT" ks "$DATA/ks_facts_512.tsv" --column 2
-expect_error "unknown linkage 'medoid' (single, complete, average, weighted, ward, centroid or median)" \
+expect_error "unknown linkage 'medoid' (single, complete, average, weighted, ward, centroid or" \
   "$STAT" hclust "$DATA/hclust_X.tsv" --linkage medoid --clusters 2
 expect_error "exactly one" "$STAT" gmm "$DATA/gmm_X.tsv"
 expect_error "two files" "$STAT" ks2 "$DATA/ks2_1_a.tsv"
@@ -285,6 +285,9 @@ else bad "ks2 --column=x"; fi
 expect_error "norm_200.csv: no column 'value' (the table's columns: x, twice)" \
   "$STAT" ks "$REF/norm_200.csv" --column value
 expect_error "--column: 0 is outside" "$STAT" chisq "$REF/u01_100.tsv" --bins 4 --column 0
+expect_error "--column is for ks, ks2, kuiper and chisq (gmm uses every column)" \
+  "$STAT" gmm "$DATA/gmm_X.tsv" --k 2 --column x0
+expect_error "--metric is for hclust" "$STAT" ks "$REF/u01_100.tsv" --metric cosine
 printf 'x\ty\n0.1,0.2\t0.3\n0.4\t0.5\n' >"$TMP/mixed.tsv"
 expect_error "holds '0.1,0.2', not a number (commas: a CSV file?" "$STAT" ks "$TMP/mixed.tsv"
 # Ward against scipy.cluster.hierarchy.linkage(X, 'ward') and fcluster
@@ -316,11 +319,13 @@ while IFS=$'\t' read -r method metric; do
        NR == FNR { if (v("method") == m && v("metric") == d) { k++; a[k] = n("a"); b[k] = n("b")
                    dist[k] = n("dist"); size[k] = n("size") }; next }
        FNR > 1 { i = FNR - 1; e = n("dist") - dist[i]; if (e < 0) e = -e
-                 if (n("a") != a[i] || n("b") != b[i] || n("size") != size[i] || e > 1e-11 * dist[i]) bad = 1 }
+                 if (n("a") != a[i] || n("b") != b[i] || n("size") != size[i] \
+                     || e > 1e-11 * dist[i]) bad = 1 }
        END { exit bad || FNR - 1 != k || k != 41 }' "$REF/metric_Z.tsv" "$TMP/mz.tsv"; then ok
   else bad "hclust --linkage $method --metric $metric: Z differs from scipy's"; fi
   if cmp -s <(tail -n +2 "$TMP/ml.tsv") <(tsv_awk -v m="$method" -v d="$metric" \
-              'v("method") == m && v("metric") == d { print v("maxclust_4") }' "$REF/metric_labels.tsv"); then ok
+              'v("method") == m && v("metric") == d { print v("maxclust_4") }' \
+              "$REF/metric_labels.tsv"); then ok
   else bad "hclust --linkage $method --metric $metric: labels differ from scipy's fcluster"; fi
 done < <(tail -n +2 "$REF/metric_Z.tsv" | cut -f1,2 | uniq)
 if [ "$cases" = 31 ]; then ok; else bad "metric_Z.tsv: $cases cases, want 31"; fi
@@ -346,7 +351,8 @@ fi
 # hclust gives scipy's linkage matrix and the labels, gmm its parameters.
 for cmd in "ks $REF/u01_100.tsv" "kuiper $REF/u01_100.tsv" "chisq $REF/u01_100.tsv --bins 4" \
            "ks2 $REF/ks2_40_40_a.tsv $REF/ks2_40_40_b.tsv" "gmm $DATA/gmm_X.tsv --k 3" \
-           "gmm $DATA/gmm_X.tsv --select-aic 1 20" "hclust $REF/ward_X.tsv --linkage ward --clusters 4"; do
+           "gmm $DATA/gmm_X.tsv --select-aic 1 20" \
+           "hclust $REF/ward_X.tsv --linkage ward --clusters 4"; do
   # shellcheck disable=SC2086 # the command's words
   if "$STAT" $cmd --format json | "$JSON_GET" . >/dev/null; then ok; else bad "json of $cmd"; fi
 done
@@ -381,11 +387,13 @@ else bad "gmm diag json covariances"; fi
 # predict on all 750 rows up to renaming the components (measured: 1e-15).
 same_partition() {   # two label columns (header skipped): one-to-one on every row
   paste <(tail -n +2 "$1") <(tail -n +2 "$2") | awk -F'\t' '
-    { if (($1 in f) && f[$1] != $2 || ($2 in b) && b[$2] != $1) bad = 1; f[$1] = $2; b[$2] = $1; n++ }
+    { if (($1 in f) && f[$1] != $2 || ($2 in b) && b[$2] != $1) bad = 1
+      f[$1] = $2; b[$2] = $1; n++ }
     END { exit bad || n != 750 }'
 }
 for cov in full diag tied spherical; do
-  want=$(tsv_awk -v c=$cov 'v("k") == 3 && v("covariance") == c { print v("loglik"), v("aic"), v("bic") }' \
+  want=$(tsv_awk -v c=$cov \
+         'v("k") == 3 && v("covariance") == c { print v("loglik"), v("aic"), v("bic") }' \
          "$DATA/gmm_fit.tsv")
   line=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --covariance $cov --labels "$TMP/gl.tsv")
   expect_value "$line" loglik "${want%% *}" 1e-8
@@ -395,7 +403,8 @@ for cov in full diag tied spherical; do
   else bad "gmm --covariance $cov --labels differ from sklearn's predict"; fi
 done
 js=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --covariance tied --format json)
-if [ "$(printf '%s' "$js" | "$JSON_GET" covariance_type covariances covariances.3 labels | tr '\n' ' ')" \
+if [ "$(printf '%s' "$js" | "$JSON_GET" covariance_type covariances covariances.3 labels \
+        | tr '\n' ' ')" \
      = "tied array 4 array 4 array 750 " ]; then ok; else bad "gmm tied json: $js"; fi
 js=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --covariance spherical --format json)
 if [ "$(printf '%s' "$js" | "$JSON_GET" covariances | tr '\n' ' ')" = "array 3 " ]; then ok

@@ -166,7 +166,8 @@ int main(int argc, char **argv)
       fprintf(stderr, "json_get: no value at %s\n", argv[i]);
       return 1;
     }
-    if (w.kind == '[' || w.kind == '{') printf("%s %zu\n", w.kind == '[' ? "array" : "object", w.count);
+    if (w.kind == '[' || w.kind == '{')
+      printf("%s %zu\n", w.kind == '[' ? "array" : "object", w.count);
     else if (w.kind == 's') printf("%.*s\n", (int)(w.end - w.start - 2), w.start + 1);
     else printf("%.*s\n", (int)(w.end - w.start), w.start);
   }

@@ -32,7 +32,9 @@ static const char *usage_text[] = {
 };
 
 static const char *help_ks =
-  "usage: " PROG " ks FILE [--column C] [--uniform A B | --dist NAME [--shape A[,B]] [--loc L] [--scale S] | --cdf TABLE]\n"
+  "usage: " PROG " ks FILE [--column C]\n"
+  "                 [--uniform A B | --dist NAME [--shape A[,B]] [--loc L] [--scale S]\n"
+  "                  | --cdf TABLE]\n"
   "                 [--alternative two-sided|less|greater] [--csv] [--format kv|tsv|json]\n"
   "One-sample Kolmogorov-Smirnov test of column C (a number, 1-based, default 1, or the\n"
   "name of a header's column) against\n"
@@ -58,13 +60,16 @@ static const char *help_ks2 =
   "--alternative: greater tests F1 > F2 somewhere (D = max(F1 - F2)), less F1 < F2.\n"
   "Prints D=... p=... n=N1,N2 method=exact|asymp (scipy.stats.ks_2samp).\n";
 static const char *help_kuiper =
-  "usage: " PROG " kuiper FILE [--column C] [--uniform A B | --dist NAME [--shape A[,B]] [--loc L] [--scale S] | --cdf TABLE]\n"
+  "usage: " PROG " kuiper FILE [--column C]\n"
+  "                     [--uniform A B | --dist NAME [--shape A[,B]] [--loc L] [--scale S]\n"
+  "                      | --cdf TABLE]\n"
   "                     [--csv] [--format kv|tsv|json]\n"
   "Kuiper's test (invariant to where a circle is cut) against the uniform\n"
   "distribution on [A, B) (default 0 1), or a distribution as for ks (see ks --help).\n"
   "Prints V=... p=... n=...\n";
 static const char *help_chisq =
-  "usage: " PROG " chisq FILE --bins K [--column C] [--uniform A B] [--csv] [--format kv|tsv|json]\n"
+  "usage: " PROG " chisq FILE --bins K [--column C] [--uniform A B] [--csv]\n"
+  "                    [--format kv|tsv|json]\n"
   "Pearson chi-square of column C (number or name) in K >= 2 equal bins of [A, B] (default 0 1)\n"
   "against equal expected counts. Prints chi2=... df=... p=... min_expected=...\n"
   "and warns on stderr when min_expected < 5 (the p-value is then unreliable).\n";
@@ -90,7 +95,8 @@ static const char *help_gmm =
   "Gaussian mixture of the rows by EM (scikit-learn's GaussianMixture, k-means++\n"
   "initialisation from --seed, default 0; tol 1e-3, max-iter 100, reg-covar 1e-6).\n"
   "Prints k=... loglik=... score=... aic=... bic=... iterations=... converged=...\n"
-  "(loglik: the total log-likelihood; score: its mean per row, sklearn's score()).\n"  "--format json: converged as true/false, and weights, means and covariances\n"
+  "(loglik: the total log-likelihood; score: its mean per row, sklearn's score()).\n"
+  "--format json: converged as true/false, and weights, means and covariances\n"
   "(sklearn's weights_, means_, covariances_); --select-aic: selected true on one K.\n"
   "Warns on stderr when the model has more free parameters than the data has numbers.\n"
   "--select-aic K0 T fits K0, K0+1, ... (at most --max-k, default 100) until the AIC\n"
@@ -116,7 +122,7 @@ typedef struct {
   long column, bins, clusters, k, k0, seed, max_iter, max_k;
   double a, b, cutoff, tol, reg, thresh, loc, scale, shape[2];
   size_t nshape;
-  int have_bins, have_cutoff, have_clusters, have_k, have_select, have_uniform, have_loc, have_scale;
+  int have_column, have_bins, have_cutoff, have_clusters, have_k, have_select, have_uniform, have_loc, have_scale;
   int csv;
   out_format format;
   const char *alternative, *metric;
@@ -206,6 +212,7 @@ static void parse(int argc, char **argv, opts *o)
     case O_COLUMN:
       /* A number keeps its meaning (1-based); anything else names a header's column. */
       o->column_name = NULL;
+      o->have_column = 1;
       if (strspn(v, "0123456789+-") == strlen(v)) o->column = int_arg(o, a, v, 1, 1000000);
       else o->column_name = v;
       break;
@@ -254,6 +261,10 @@ static void parse(int argc, char **argv, opts *o)
     }
   }
   nl_opt_end(&p);
+  if (o->have_column && (!strcmp(o->sub, "hclust") || !strcmp(o->sub, "gmm")))
+    die(o->sub, "--column is for ks, ks2, kuiper and chisq (%s uses every column)", o->sub);
+  if (o->metric && strcmp(o->sub, "hclust"))
+    die(o->sub, "--metric is for hclust");
   if (o->alternative && strcmp(o->sub, "ks") && strcmp(o->sub, "ks2"))
     die(o->sub, "--alternative is for ks and ks2 (%s has no one-sided form)", o->sub);
   if (o->alternative && nl_stats_ks_alternative_parse(o->alternative, &o->alt, &err))
@@ -261,7 +272,8 @@ static void parse(int argc, char **argv, opts *o)
   if (o->have_uniform + (o->dist != NULL) + (o->cdf_file != NULL) > 1)
     die(o->sub, "give one of --uniform A B, --dist NAME and --cdf TABLE");
   if ((o->have_loc || o->have_scale || o->nshape) && !o->dist)
-    die(o->sub, "--shape, --loc and --scale go with --dist NAME (scipy's shape/loc/scale convention)");
+    die(o->sub, "--shape, --loc and --scale go with --dist NAME (scipy's shape/loc/scale "
+        "convention)");
 }
 
 /* ---- output: key=value (default), TSV or JSON --------------------------- */
@@ -422,7 +434,8 @@ static double *column(const opts *o, const nl_table *t, const char *path)
         len += w > 0 ? (size_t)w : 0;
         if (i >= 16) break;
       }
-      die(o->sub, "%s: no column '%s' (the table's columns: %s)", shown(path), o->column_name, list);
+      die(o->sub, "%s: no column '%s' (the table's columns: %s)", shown(path), o->column_name,
+          list);
     }
     c = (size_t)j;
   } else if ((size_t)o->column > t->ncols) {

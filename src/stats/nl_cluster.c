@@ -593,7 +593,8 @@ static void linkage_generic(double *D, size_t n, nl_cluster_linkage_method metho
       if (size[z] == 0.0 || z == y) continue;
       double dx = D[cidx(n, z, x)], dy = D[cidx(n, z, y)], v;
       if (method == NL_LINKAGE_CENTROID)
-        v = sqrt(((nx * dx * dx) + (ny * dy * dy) - (nx * ny * dist * dist) / (nx + ny)) / (nx + ny));
+        v = sqrt(((nx * dx * dx) + (ny * dy * dy) - (nx * ny * dist * dist) / (nx + ny))
+                 / (nx + ny));
       else
         v = sqrt(0.5 * (dx * dx + dy * dy) - 0.25 * dist * dist);
       D[cidx(n, z, y)] = v;
@@ -667,7 +668,9 @@ nl_status nl_cluster_linkage_metric(const double *x, size_t n, size_t d,
       return nl_fail(err, NL_EINVAL, "point %zu, coordinate %zu is not finite", i / d + 1, i % d + 1);
   nl_status s = check_span(x, n, d, err);
   if (s) return s;
-  if (metric == NL_METRIC_COSINE || metric == NL_METRIC_CORRELATION || metric == NL_METRIC_BRAYCURTIS)
+  int ratio = metric == NL_METRIC_COSINE || metric == NL_METRIC_CORRELATION
+              || metric == NL_METRIC_BRAYCURTIS;
+  if (ratio)
     for (size_t i = 0; i < n; i++) {   /* the distances these metrics cannot give (0/0) */
       double lo = x[i * d], hi = lo, sum = 0.0;
       for (size_t j = 0; j < d; j++) {

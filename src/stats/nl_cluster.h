@@ -38,7 +38,8 @@
  *             one), so Muellner's generic algorithm, O(n^2) to O(n^3), as
  *             scipy's fast_linkage; Z stays in merge order (not sorted),
  *             with scipy's updates on Euclidean distances:
- *             centroid d = sqrt((n_a d_ax^2 + n_b d_bx^2 - n_a n_b d_ab^2 / (n_a + n_b)) / (n_a + n_b)),
+ *             centroid, with n = n_a + n_b,
+ *               d = sqrt((n_a d_ax^2 + n_b d_bx^2 - n_a n_b d_ab^2 / n) / n),
  *             median d = sqrt(d_ax^2 / 2 + d_bx^2 / 2 - d_ab^2 / 4).
  * Other metrics (nl_cluster_linkage_metric) give the condensed matrix of
  * scipy.spatial.distance.pdist(x, metric); single linkage computes them on the fly.

@@ -24,7 +24,8 @@ nl_status nl_stats_dist_parse(const char *name, nl_stats_dist_kind *kind, nl_err
   for (size_t i = 0; i < NDIST; i++)
     if (!strcmp(name, dist_info[i].name)) { *kind = (nl_stats_dist_kind)i; return NL_OK; }
   return nl_fail(err, NL_EINVAL, "unknown distribution '%s' (uniform, norm, expon, gamma, beta, "
-                 "lognorm, t, chi2, weibull_min, cauchy, logistic, laplace, pareto, rayleigh)", name);
+                 "lognorm, t, chi2, weibull_min, cauchy, logistic, laplace, pareto, rayleigh)",
+                 name);
 }
 
 int nl_stats_dist_nshape(nl_stats_dist_kind kind)
@@ -56,7 +57,8 @@ nl_status nl_stats_dist_init_shape(nl_stats_dist *d, nl_stats_dist_kind kind, co
 {
   if ((int)nshape != nl_stats_dist_nshape(kind))
     return nl_fail(err, NL_EINVAL, "%s takes %d shape parameter(s) (%s), got %zu",
-                   dist_info[kind].name, nl_stats_dist_nshape(kind), dist_info[kind].shapes, nshape);
+                   dist_info[kind].name, nl_stats_dist_nshape(kind), dist_info[kind].shapes,
+                   nshape);
   for (size_t i = 0; i < nshape; i++)
     if (!(shape[i] > 0) || !isfinite(shape[i]))
       return nl_fail(err, NL_EINVAL, "shape %g of %s must be positive and finite", shape[i],

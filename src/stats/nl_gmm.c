@@ -701,7 +701,8 @@ nl_status nl_gmm_predict(const nl_gmm *g, const double *x, size_t n, int *labels
 {
   for (size_t i = 0; i < n * g->d; i++)
     if (!isfinite(x[i]))
-      return nl_fail(err, NL_EINVAL, "row %zu, column %zu is not finite", i / g->d + 1, i % g->d + 1);
+      return nl_fail(err, NL_EINVAL, "row %zu, column %zu is not finite", i / g->d + 1,
+                     i % g->d + 1);
   size_t K = g->k;
   double *R = nl_xmalloc(n * K * sizeof(double));
   int threads = blas_threads_limit(n, g->d);

@@ -572,7 +572,8 @@ nl_status nl_stats_ks_alternative_parse(const char *name, nl_stats_ks_alternativ
   if (!strcmp(name, "two-sided")) *alt = NL_KS_TWO_SIDED;
   else if (!strcmp(name, "less")) *alt = NL_KS_LESS;
   else if (!strcmp(name, "greater")) *alt = NL_KS_GREATER;
-  else return nl_fail(err, NL_EINVAL, "unknown alternative '%s' (two-sided, less or greater)", name);
+  else
+    return nl_fail(err, NL_EINVAL, "unknown alternative '%s' (two-sided, less or greater)", name);
   return NL_OK;
 }
 
