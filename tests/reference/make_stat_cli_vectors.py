@@ -1,7 +1,10 @@
 #!/usr/bin/python3
 """Reference vectors for `noiselab stat`: one-sample KS against
-named distributions with scipy's loc/scale convention and against a
-tabulated CDF, Kuiper's V against the same CDFs, Ward linkage.
+named distributions with scipy's shape/loc/scale convention (all 14 the
+command names, with the one-sided alternatives) and against a tabulated
+CDF, Kuiper's V against the same CDFs, two-sample KS with each
+alternative, Ward linkage, and linkage with pdist's metrics and the
+weighted, centroid and median methods.
 
 Writes TSV/CSV files to tests/reference/stat_cli/; tests/cli_stat.sh reads
 only those, so the tests need no Python. Regenerate with Debian's scipy:
