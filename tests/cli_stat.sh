@@ -4,7 +4,9 @@
 # tests/reference/make_stats_vectors.py); bad inputs must give exit 2 and one
 # line on stderr naming the input.
 set -u
-STAT=${1:?usage: cli_stat.sh PATH/TO/noiselab-stat}
+STAT=${1:?usage: cli_stat.sh PATH/TO/noiselab-stat [PATH/TO/expect]}
+# json_get (tests/json_get.c) is built beside expect: strict JSON, values by path.
+JSON_GET=$(dirname "${2:-$(dirname "$STAT")/../tests/expect}")/json_get
 HERE=$(cd "$(dirname "$0")" && pwd)
 DATA=$HERE/data/stats
 # shellcheck source=tests/tsv.sh
@@ -151,7 +153,8 @@ expect_error "outside" "$STAT" chisq "$DATA/chisq_0.tsv" --bins 10
 expect_error "cannot open" "$STAT" ks "$TMP/missing.tsv"
 expect_error "unknown option" "$STAT" ks "$DATA/ks_facts_512.tsv" --bogus
 expect_error "no column 2" "$STAT" ks "$DATA/ks_facts_512.tsv" --column 2
-expect_error "unknown linkage 'median' (single, complete, average or ward)" "$STAT" hclust "$DATA/hclust_X.tsv" --linkage median --clusters 2
+expect_error "unknown linkage 'medoid' (single, complete, average, weighted, ward, centroid or" \
+  "$STAT" hclust "$DATA/hclust_X.tsv" --linkage medoid --clusters 2
 expect_error "exactly one" "$STAT" gmm "$DATA/gmm_X.tsv"
 expect_error "two files" "$STAT" ks2 "$DATA/ks2_1_a.tsv"
 expect_error "unknown subcommand" "$STAT" frobnicate x
@@ -204,6 +207,57 @@ while IFS=$'\t' read -r f dist loc scale D p V; do
   expect_value "$line" V "$V" 1e-13
 done <"$REF/ks_dist.tsv"
 if [ "$rows" = 10 ]; then ok; else bad "ks_dist.tsv: $rows cases read, want 10"; fi
+# Every named distribution with scipy's (shapes, loc, scale): ks_shapes.tsv
+# (make_stat_cli_vectors.py, scipy.stats.kstest). Measured: D and V within
+# 1.1e-14 relative (GSL's incomplete beta against cephes'), p within 2.5e-12.
+# Tolerances: D and V 1e-13, p 1e-10, as above.
+rows=0
+while IFS=$'\t' read -r f dist shape loc scale D p _ _ _ _ V; do
+  [ "$f" = file ] && continue
+  rows=$((rows + 1))
+  how=(--dist "$dist" --loc "$loc" --scale "$scale")
+  [ "$shape" != - ] && how+=(--shape "$shape")
+  line=$("$STAT" ks "$REF/$f" --column value "${how[@]}")
+  expect_value "$line" D "$D" 1e-13
+  expect_value "$line" p "$p" 1e-10
+  expect_value "$("$STAT" kuiper "$REF/$f" "${how[@]}")" V "$V" 1e-13
+done <"$REF/ks_shapes.tsv"
+if [ "$rows" = 28 ]; then ok; else bad "ks_shapes.tsv: $rows cases read, want 28"; fi
+expect_error "--dist gamma needs --shape A (1 value, scipy's order), got 0" \
+  "$STAT" ks "$REF/u01_100.tsv" --dist gamma
+expect_error "--dist beta needs --shape A,B (2 values, scipy's order), got 1" \
+  "$STAT" ks "$REF/u01_100.tsv" --dist beta --shape 2
+expect_error "--dist norm takes no --shape" "$STAT" ks "$REF/u01_100.tsv" --dist norm --shape 1
+expect_error "--shape: gamma's a must be positive, got 0" \
+  "$STAT" ks "$REF/u01_100.tsv" --dist gamma --shape 0
+expect_error "--shape: '1,2,3' has more than 2 values" \
+  "$STAT" ks "$REF/u01_100.tsv" --dist beta --shape 1,2,3
+# --alternative less|greater as scipy's kstest (one-sided exact p: ksone) and
+# ks_2samp (Hodges' path count; asymptotic past 10000 or when the counts overflow).
+# Measured: D within 2.8e-14 relative, p within 5.6e-13. Tolerances: 1e-13, 1e-10.
+while IFS=$'\t' read -r f dist shape loc scale _ _ Dl pl Dg pg _; do
+  [ "$f" = file ] && continue
+  how=(--dist "$dist" --loc "$loc" --scale "$scale")
+  [ "$shape" != - ] && how+=(--shape "$shape")
+  line=$("$STAT" ks "$REF/$f" "${how[@]}" --alternative less)
+  expect_value "$line" D "$Dl" 1e-13
+  expect_value "$line" p "$pl" 1e-10
+  line=$("$STAT" ks "$REF/$f" "${how[@]}" --alternative=greater)
+  expect_value "$line" D "$Dg" 1e-13
+  expect_value "$line" p "$pg" 1e-10
+done <"$REF/ks_shapes.tsv"
+rows=0
+while IFS=$'\t' read -r f1 f2 alt D p; do
+  [ "$f1" = file1 ] && continue
+  rows=$((rows + 1))
+  line=$("$STAT" ks2 "$REF/$f1" "$REF/$f2" --alternative "$alt")
+  expect_value "$line" D "$D" 1e-13
+  expect_value "$line" p "$p" 1e-10
+done <"$REF/ks2_alt.tsv"
+if [ "$rows" = 18 ]; then ok; else bad "ks2_alt.tsv: $rows cases read, want 18"; fi
+expect_error "--alternative: unknown alternative 'lower' (two-sided, less or greater)" \
+  "$STAT" ks "$REF/u01_100.tsv" --alternative lower
+expect_error "--alternative is for ks and ks2" "$STAT" kuiper "$REF/u01_100.tsv" --alternative less
 # the issue's own command, GNU spellings, and the other formats
 js=$("$STAT" ks "$REF/norm_200.tsv" --dist norm --loc 0 --scale 1 --format json)
 case $js in '{"D": '*', "p": '*', "n": 200, "method": "'*'"}') ok ;; *) bad "json shape: $js" ;; esac
@@ -221,6 +275,19 @@ else bad "CSV not read as the TSV"; fi
 if [ "$("$STAT" ks --csv - --dist norm --format json <"$REF/norm_200.csv")" = "$js" ]; then ok
 else bad "--csv on stdin"; fi
 expect_value "$("$STAT" ks "$REF/norm_200.csv" --column=2 --dist norm --scale 2)" D "$(json_value "$js" D)" 1e-15
+# --column by the header's name, as tables are addressed everywhere else
+if [ "$("$STAT" ks "$REF/norm_200.csv" --column twice --dist norm --scale 2)" \
+     = "$("$STAT" ks "$REF/norm_200.csv" --column 2 --dist norm --scale 2)" ]; then ok
+else bad "--column twice differs from --column 2"; fi
+if [ "$("$STAT" ks2 "$REF/norm_200.csv" "$REF/norm_200.tsv" --column=x)" \
+     = "$("$STAT" ks2 "$REF/norm_200.csv" "$REF/norm_200.tsv")" ]; then ok
+else bad "ks2 --column=x"; fi
+expect_error "norm_200.csv: no column 'value' (the table's columns: x, twice)" \
+  "$STAT" ks "$REF/norm_200.csv" --column value
+expect_error "--column: 0 is outside" "$STAT" chisq "$REF/u01_100.tsv" --bins 4 --column 0
+expect_error "--column is for ks, ks2, kuiper and chisq (gmm uses every column)" \
+  "$STAT" gmm "$DATA/gmm_X.tsv" --k 2 --column x0
+expect_error "--metric is for hclust" "$STAT" ks "$REF/u01_100.tsv" --metric cosine
 printf 'x\ty\n0.1,0.2\t0.3\n0.4\t0.5\n' >"$TMP/mixed.tsv"
 expect_error "holds '0.1,0.2', not a number (commas: a CSV file?" "$STAT" ks "$TMP/mixed.tsv"
 # Ward against scipy.cluster.hierarchy.linkage(X, 'ward') and fcluster
@@ -238,15 +305,112 @@ else bad "ward maxclust 4 labels"; fi
 if cmp -s <(tail -n +2 "$TMP/wl6.tsv") \
   <(tsv_cut "$REF/ward_labels.tsv" distance_6 | tail -n +2); then ok
 else bad "ward distance 6 labels"; fi
+# pdist's metrics with single, complete, average and weighted linkage, and
+# centroid and median linkage (Euclidean; the generic algorithm, Z in merge
+# order) against scipy (metric_Z.tsv, metric_labels.tsv): a, b and size equal,
+# dist within 1e-11 relative (measured: 0 but cosine and correlation, 7.9e-13:
+# 1 - cos cancels), fcluster maxclust 4 labels equal.
+cases=0
+while IFS=$'\t' read -r method metric; do
+  cases=$((cases + 1))
+  "$STAT" hclust "$REF/metric_X.tsv" --linkage "$method" --metric "$metric" --clusters 4 \
+    --merges "$TMP/mz.tsv" --labels "$TMP/ml.tsv" >/dev/null
+  if tsv_awk -v m="$method" -v d="$metric" '
+       NR == FNR { if (v("method") == m && v("metric") == d) { k++; a[k] = n("a"); b[k] = n("b")
+                   dist[k] = n("dist"); size[k] = n("size") }; next }
+       FNR > 1 { i = FNR - 1; e = n("dist") - dist[i]; if (e < 0) e = -e
+                 if (n("a") != a[i] || n("b") != b[i] || n("size") != size[i] \
+                     || e > 1e-11 * dist[i]) bad = 1 }
+       END { exit bad || FNR - 1 != k || k != 41 }' "$REF/metric_Z.tsv" "$TMP/mz.tsv"; then ok
+  else bad "hclust --linkage $method --metric $metric: Z differs from scipy's"; fi
+  if cmp -s <(tail -n +2 "$TMP/ml.tsv") <(tsv_awk -v m="$method" -v d="$metric" \
+              'v("method") == m && v("metric") == d { print v("maxclust_4") }' \
+              "$REF/metric_labels.tsv"); then ok
+  else bad "hclust --linkage $method --metric $metric: labels differ from scipy's fcluster"; fi
+done < <(tail -n +2 "$REF/metric_Z.tsv" | cut -f1,2 | uniq)
+if [ "$cases" = 31 ]; then ok; else bad "metric_Z.tsv: $cases cases, want 31"; fi
+expect_error "--linkage ward needs --metric euclidean, not cosine (as scipy's linkage)" \
+  "$STAT" hclust "$REF/metric_X.tsv" --linkage ward --metric cosine --clusters 2
+expect_error "--linkage centroid needs --metric euclidean, not cityblock" \
+  "$STAT" hclust "$REF/metric_X.tsv" --linkage centroid --metric cityblock --clusters 2
+expect_error "--metric: unknown metric 'manhattan' (euclidean, sqeuclidean, cityblock" \
+  "$STAT" hclust "$REF/metric_X.tsv" --linkage single --metric manhattan --clusters 2
+printf '1 2\n0 0\n3 1\n' >"$TMP/zero_row.tsv"
+expect_error "zero_row.tsv: point 2 is zero: its cosine distance is 0/0" \
+  "$STAT" hclust "$TMP/zero_row.tsv" --linkage average --metric cosine --clusters 2
 # gmm: score (sklearn's mean log-likelihood per row) beside the total
 line=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3)
 expect_value "$line" score "$(awk 'BEGIN { printf "%.17g", -5069.630131017421 / 750 }')" 1e-8
 js=$("$STAT" gmm "$DATA/gmm_X.tsv" --select-aic 1 20 --format json)
-if [ "$(printf '%s\n' "$js" | grep -c '"selected": 1')" != 1 ]; then
+if [ "$(printf '%s\n' "$js" | grep -c '"selected": true')" != 1 ]; then
   bad "select json: one selected row expected: $js"
 else
   case $js in '['*']') ok ;; *) bad "select json: $js" ;; esac
 fi
+# JSON: valid (strict) for every subcommand, flags as true/false, and complete:
+# hclust gives scipy's linkage matrix and the labels, gmm its parameters.
+for cmd in "ks $REF/u01_100.tsv" "kuiper $REF/u01_100.tsv" "chisq $REF/u01_100.tsv --bins 4" \
+           "ks2 $REF/ks2_40_40_a.tsv $REF/ks2_40_40_b.tsv" "gmm $DATA/gmm_X.tsv --k 3" \
+           "gmm $DATA/gmm_X.tsv --select-aic 1 20" \
+           "hclust $REF/ward_X.tsv --linkage ward --clusters 4"; do
+  # shellcheck disable=SC2086 # the command's words
+  if "$STAT" $cmd --format json | "$JSON_GET" . >/dev/null; then ok; else bad "json of $cmd"; fi
+done
+js=$("$STAT" hclust "$REF/ward_X.tsv" --linkage ward --clusters 4 --format json)
+if [ "$(printf '%s' "$js" | "$JSON_GET" clusters Z labels linkage | tr '\n' ' ')" \
+     = "4 array 59 array 60 ward " ]; then ok; else bad "hclust json: $js"; fi
+# every element of Z against scipy's (ward_Z.tsv), as --merges is checked above
+paths=$(awk 'BEGIN { for (i = 0; i < 59; i++) for (j = 0; j < 4; j++) printf "Z.%d.%d ", i, j }')
+# shellcheck disable=SC2086 # one path per word
+if printf '%s' "$js" | "$JSON_GET" $paths | paste - - - - \
+   | tsv_awk 'NR == FNR { if (FNR > 1) { a[FNR] = n("a"); b[FNR] = n("b"); d[FNR] = n("dist")
+                                          s[FNR] = n("size") }; next }
+              { r = FNR + 1; e = $3 - d[r]; if (e < 0) e = -e
+                if ($1 != a[r] || $2 != b[r] || $4 != s[r] || e > 1e-12 * d[r]) bad = 1 }
+              END { exit bad || FNR != 59 }' "$REF/ward_Z.tsv" -; then ok
+else bad "hclust json Z differs from scipy's linkage"; fi
+paths=$(awk 'BEGIN { for (i = 0; i < 60; i++) printf "labels.%d ", i }')
+# shellcheck disable=SC2086 # one path per word
+if cmp -s <(printf '%s' "$js" | "$JSON_GET" $paths) \
+          <(tsv_cut "$REF/ward_labels.tsv" maxclust_4 | tail -n +2); then ok
+else bad "hclust json labels differ from scipy's fcluster"; fi
+js=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --format json)
+if [ "$(printf '%s' "$js" | "$JSON_GET" converged weights means.2 covariances.1 covariances.1.0 \
+        | tr '\n' ' ')" = "true array 3 array 4 array 4 array 4 " ]; then ok
+else bad "gmm json: $js"; fi
+if [ "$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --covariance diag --format json \
+        | "$JSON_GET" covariances.2 covariances.2.3)" != "" ]; then ok
+else bad "gmm diag json covariances"; fi
+# Every covariance type (sklearn's covariance_type) at k = 3: the k-means++ start
+# finds sklearn's optimum (gmm_fit.tsv: sklearn from its KMeans labels), so
+# loglik, AIC and BIC agree within 1e-8 relative and --labels equals sklearn's
+# predict on all 750 rows up to renaming the components (measured: 1e-15).
+same_partition() {   # two label columns (header skipped): one-to-one on every row
+  paste <(tail -n +2 "$1") <(tail -n +2 "$2") | awk -F'\t' '
+    { if (($1 in f) && f[$1] != $2 || ($2 in b) && b[$2] != $1) bad = 1
+      f[$1] = $2; b[$2] = $1; n++ }
+    END { exit bad || n != 750 }'
+}
+for cov in full diag tied spherical; do
+  want=$(tsv_awk -v c=$cov \
+         'v("k") == 3 && v("covariance") == c { print v("loglik"), v("aic"), v("bic") }' \
+         "$DATA/gmm_fit.tsv")
+  line=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --covariance $cov --labels "$TMP/gl.tsv")
+  expect_value "$line" loglik "${want%% *}" 1e-8
+  expect_value "$line" aic "$(echo "$want" | cut -d' ' -f2)" 1e-8
+  expect_value "$line" bic "${want##* }" 1e-8
+  if same_partition "$TMP/gl.tsv" "$DATA/gmm_predict_k3_$cov.tsv"; then ok
+  else bad "gmm --covariance $cov --labels differ from sklearn's predict"; fi
+done
+js=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --covariance tied --format json)
+if [ "$(printf '%s' "$js" | "$JSON_GET" covariance_type covariances covariances.3 labels \
+        | tr '\n' ' ')" \
+     = "tied array 4 array 4 array 750 " ]; then ok; else bad "gmm tied json: $js"; fi
+js=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --covariance spherical --format json)
+if [ "$(printf '%s' "$js" | "$JSON_GET" covariances | tr '\n' ' ')" = "array 3 " ]; then ok
+else bad "gmm spherical json: $js"; fi
+expect_error "--covariance: unknown covariance type 'round' (full, diag, tied or spherical)" \
+  "$STAT" gmm "$DATA/gmm_X.tsv" --k 3 --covariance round
 # more parameters than numbers: one warning line
 awk 'BEGIN { for (i = 0; i < 20; i++) print (i * 37 % 20) / 20, (i * 11 % 20) / 20 }' >"$TMP/g20.tsv"
 "$STAT" gmm "$TMP/g20.tsv" --k 8 >/dev/null 2>"$TMP/err"
@@ -258,9 +422,10 @@ if [ ! -s "$TMP/err" ]; then ok; else bad "gmm k=2 on 20 x 2 warned: $(cat "$TMP
 # refusals
 printf 'x\tF\n0\t0\n0.5\t0.6\n0.4\t0.7\n' >"$TMP/badcdf.tsv"
 expect_error "x = 0.4 does not increase" "$STAT" ks "$REF/u01_100.tsv" --cdf "$TMP/badcdf.tsv"
-expect_error "unknown distribution 'gamma'" "$STAT" ks "$REF/u01_100.tsv" --dist gamma
+expect_error "unknown distribution 'gumbel' (uniform, norm, expon, gamma" \
+  "$STAT" ks "$REF/u01_100.tsv" --dist gumbel
 expect_error "--scale 0 must be positive" "$STAT" ks "$REF/u01_100.tsv" --dist norm --scale 0
-expect_error "--loc and --scale go with --dist" "$STAT" ks "$REF/u01_100.tsv" --loc 1
+expect_error "--shape, --loc and --scale go with --dist" "$STAT" ks "$REF/u01_100.tsv" --loc 1
 expect_error "give one of --uniform A B, --dist NAME and --cdf TABLE" "$STAT" ks "$REF/u01_100.tsv" --uniform 0 1 --dist norm
 expect_error "--format: 'xml' is not kv, tsv or json" "$STAT" ks "$REF/u01_100.tsv" --format xml
 expect_error "--bogus: unknown option" "$STAT" ks "$REF/u01_100.tsv" --bogus=1

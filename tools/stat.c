@@ -27,58 +27,88 @@ static const char *usage_text[] = {
   "  hclust  hierarchical clustering           " PROG " hclust --help\n"
   "  gmm     Gaussian mixture by EM            " PROG " gmm --help\n"
   "Options as --name VALUE or --name=VALUE; --format kv|tsv|json (default kv: key=value);\n"
+  "--column C: the column tested, by number (1-based) or by the header's name.\n"
   "FILE may be CSV (detected from a first line with commas and no tab, or --csv).\n",
 };
 
 static const char *help_ks =
-  "usage: " PROG " ks FILE [--column N] [--uniform A B | --dist NAME [--loc L] [--scale S] | --cdf TABLE]\n"
-  "                 [--csv] [--format kv|tsv|json]\n"
-  "One-sample Kolmogorov-Smirnov test of column N (1-based, default 1) against\n"
+  "usage: " PROG " ks FILE [--column C]\n"
+  "                 [--uniform A B | --dist NAME [--shape A[,B]] [--loc L] [--scale S]\n"
+  "                  | --cdf TABLE]\n"
+  "                 [--alternative two-sided|less|greater] [--csv] [--format kv|tsv|json]\n"
+  "One-sample Kolmogorov-Smirnov test of column C (a number, 1-based, default 1, or the\n"
+  "name of a header's column) against\n"
   "  --uniform A B     the uniform distribution on [A, B) (end points; the default, 0 1)\n"
-  "  --dist NAME       uniform, norm or expon with scipy's --loc L (0) and --scale S (1):\n"
-  "                    F((x - L) / S), so uniform is on [L, L + S] (scipy.stats.kstest(x, NAME, (L, S)))\n"
+  "  --dist NAME       a distribution of scipy.stats with its --shape A[,B] (if it has any),\n"
+  "                    --loc L (0) and --scale S (1): F((x - L) / S; A, B), so uniform is on\n"
+  "                    [L, L + S] (scipy.stats.kstest(x, NAME, (A, B, L, S))). NAME (shapes):\n"
+  "                    uniform, norm, expon, gamma (a), beta (a,b), lognorm (s; scale = e^mu),\n"
+  "                    t (df), chi2 (df), weibull_min (c), cauchy, logistic, laplace,\n"
+  "                    pareto (b), rayleigh\n"
   "  --cdf TABLE       a tabulated CDF: columns x and F (or the first two), linear\n"
   "                    interpolation, constant beyond the ends (numpy.interp)\n"
+  "  --alternative A  two-sided (default), less (D- = max(F - F_n): the sample lies\n"
+  "                    below F somewhere) or greater (D+ = max(F_n - F)), as kstest's\n"
   "Prints D=... p=... n=... method=... (--format tsv: a header and a row; json: an object).\n"
-  "p is two-sided and exact for finite n (scipy.stats.kstest); method names the\n"
-  "algorithm (durbin-mtw, pomeranz, pelz-good, smirnov, ruben-gambino).\n";
+  "p is exact for finite n (scipy.stats.kstest; one-sided: Smirnov's law, ksone); method\n"
+  "names the algorithm (durbin-mtw, pomeranz, pelz-good, smirnov, ruben-gambino).\n";
 static const char *help_ks2 =
-  "usage: " PROG " ks2 FILE1 FILE2 [--column N] [--csv] [--format kv|tsv|json]\n"
-  "Two-sample Kolmogorov-Smirnov test of column N (default 1) of each file.\n"
+  "usage: " PROG " ks2 FILE1 FILE2 [--column C] [--alternative two-sided|less|greater]\n"
+  "                  [--csv] [--format kv|tsv|json]\n"
+  "Two-sample Kolmogorov-Smirnov test of column C (number or header name, default 1)\n"
+  "of each file.\n"
+  "--alternative: greater tests F1 > F2 somewhere (D = max(F1 - F2)), less F1 < F2.\n"
   "Prints D=... p=... n=N1,N2 method=exact|asymp (scipy.stats.ks_2samp).\n";
 static const char *help_kuiper =
-  "usage: " PROG " kuiper FILE [--column N] [--uniform A B | --dist NAME [--loc L] [--scale S] | --cdf TABLE]\n"
+  "usage: " PROG " kuiper FILE [--column C]\n"
+  "                     [--uniform A B | --dist NAME [--shape A[,B]] [--loc L] [--scale S]\n"
+  "                      | --cdf TABLE]\n"
   "                     [--csv] [--format kv|tsv|json]\n"
   "Kuiper's test (invariant to where a circle is cut) against the uniform\n"
   "distribution on [A, B) (default 0 1), or a distribution as for ks (see ks --help).\n"
   "Prints V=... p=... n=...\n";
 static const char *help_chisq =
-  "usage: " PROG " chisq FILE --bins K [--column N] [--uniform A B] [--csv] [--format kv|tsv|json]\n"
-  "Pearson chi-square of column N in K >= 2 equal bins of [A, B] (default 0 1)\n"
+  "usage: " PROG " chisq FILE --bins K [--column C] [--uniform A B] [--csv]\n"
+  "                    [--format kv|tsv|json]\n"
+  "Pearson chi-square of column C (number or name) in K >= 2 equal bins of [A, B] (default 0 1)\n"
   "against equal expected counts. Prints chi2=... df=... p=... min_expected=...\n"
   "and warns on stderr when min_expected < 5 (the p-value is then unreliable).\n";
 static const char *help_hclust =
-  "usage: " PROG " hclust FILE --linkage single|complete|average|ward (--cutoff C | --clusters K)\n"
+  "usage: " PROG " hclust FILE --linkage METHOD [--metric NAME] (--cutoff C | --clusters K)\n"
   "                     [--labels OUT] [--merges OUT] [--csv] [--format kv|tsv|json]\n"
-  "Agglomerative clustering of the rows (Euclidean; --method is another name for\n"
-  "--linkage). ward: Ward's minimum variance (scipy's Lance-Williams update).\n"
+  "Agglomerative clustering of the rows, scipy.cluster.hierarchy.linkage(x, METHOD,\n"
+  "NAME) (--method is another name for --linkage). METHOD: single, complete, average,\n"
+  "weighted, ward (Ward's minimum variance), centroid or median (scipy's Lance-Williams\n"
+  "updates; centroid and median can merge lower than before: Z is in merge order).\n"
+  "--metric (pdist's; default euclidean): sqeuclidean, cityblock, chebyshev, cosine,\n"
+  "correlation, canberra, braycurtis; ward, centroid and median need euclidean.\n"
   "--cutoff: points of a cluster have cophenetic distance <= C (scipy fcluster\n"
-  "'distance'); --clusters: at most K clusters ('maxclust'). Prints clusters=K.\n"
+  "'distance'); --clusters: at most K clusters ('maxclust'). Prints clusters=K;\n"
+  "--format json adds linkage, Z (scipy's linkage matrix) and labels (one per row).\n"
   "--labels writes one label (1..K) per row; --merges writes scipy's linkage\n"
   "matrix (a, b, dist, size).\n";
 static const char *help_gmm =
-  "usage: " PROG " gmm FILE (--k K | --select-aic K0 T) [--covariance full|diag] [--seed N]\n"
-  "                  [--tol X] [--max-iter N] [--reg-covar X] [--max-k N] [--params OUT]\n"
+  "usage: " PROG " gmm FILE (--k K | --select-aic K0 T) [--covariance full|diag|tied|spherical]\n"
+  "                  [--seed N] [--tol X] [--max-iter N] [--reg-covar X] [--max-k N]\n"
+  "                  [--params OUT] [--labels OUT]\n"
   "                  [--csv] [--format kv|tsv|json]\n"
   "Gaussian mixture of the rows by EM (scikit-learn's GaussianMixture, k-means++\n"
   "initialisation from --seed, default 0; tol 1e-3, max-iter 100, reg-covar 1e-6).\n"
   "Prints k=... loglik=... score=... aic=... bic=... iterations=... converged=...\n"
   "(loglik: the total log-likelihood; score: its mean per row, sklearn's score()).\n"
+  "--format json: converged as true/false, and weights, means and covariances\n"
+  "(sklearn's weights_, means_, covariances_); --select-aic: selected true on one K.\n"
   "Warns on stderr when the model has more free parameters than the data has numbers.\n"
   "--select-aic K0 T fits K0, K0+1, ... (at most --max-k, default 100) until the AIC\n"
   "drops by less than T, prints one line per K and then selected=K (tsv/json: a\n"
   "column selected, 1 on the chosen K).\n"
-  "--params writes component, param (weight, mean, cov), i, j, value rows.\n"
+  "--covariance (sklearn's covariance_type): full, diag, tied (one matrix for all\n"
+  "components) or spherical (one variance per component); AIC/BIC count sklearn's\n"
+  "free parameters for each.\n"
+  "--params writes component, param (weight, mean, cov), i, j, value rows (each\n"
+  "component's matrix: tied repeats the shared one, spherical gives sigma^2 on the diagonal).\n"
+  "--labels writes each row's component, 1..K (sklearn's predict, plus one), of the\n"
+  "fitted (or selected) model.\n"
   "Every subcommand: options as --name VALUE or --name=VALUE; tables are TSV or\n"
   "blank-separated, or CSV (found from a first line with commas and no tab, or --csv).\n";
 
@@ -88,11 +118,15 @@ typedef struct {
   const char *sub;
   const char *files[2];
   int nfiles;
+  const char *column_name;   /* --column NAME: a header's column; NULL: the number column */
   long column, bins, clusters, k, k0, seed, max_iter, max_k;
-  double a, b, cutoff, tol, reg, thresh, loc, scale;
-  int have_bins, have_cutoff, have_clusters, have_k, have_select, have_uniform, have_loc, have_scale;
+  double a, b, cutoff, tol, reg, thresh, loc, scale, shape[2];
+  size_t nshape;
+  int have_column, have_bins, have_cutoff, have_clusters, have_k, have_select, have_uniform, have_loc, have_scale;
   int csv;
   out_format format;
+  const char *alternative, *metric;
+  nl_stats_ks_alternative alt;
   const char *linkage, *labels_out, *merges_out, *params_out, *covariance, *dist, *cdf_file;
 } opts;
 
@@ -125,10 +159,26 @@ static long int_arg(const opts *o, const char *what, const char *s, long lo, lon
   return v;
 }
 
+/* --shape A or A,B: scipy's shape parameters, in its order. */
+static void parse_shape(opts *o, const char *v)
+{
+  const char *comma = strchr(v, ',');
+  char first[64];
+  if (comma && strchr(comma + 1, ',')) die(o->sub, "--shape: '%s' has more than 2 values", v);
+  if (comma && (size_t)(comma - v) >= sizeof first) die(o->sub, "--shape: '%s' is too long", v);
+  if (comma) {
+    memcpy(first, v, (size_t)(comma - v));
+    first[comma - v] = 0;
+  }
+  o->shape[0] = num_arg(o, "--shape", comma ? first : v, 0, 1e300);
+  o->nshape = 1;
+  if (comma) o->shape[o->nshape++] = num_arg(o, "--shape", comma + 1, 0, 1e300);
+}
+
 enum {
   O_COLUMN, O_UNIFORM, O_BINS, O_LINKAGE, O_METHOD, O_CUTOFF, O_CLUSTERS, O_LABELS, O_MERGES,
   O_PARAMS, O_K, O_SELECT_AIC, O_COVARIANCE, O_SEED, O_TOL, O_MAX_ITER, O_MAX_K, O_REG_COVAR,
-  O_DIST, O_LOC, O_SCALE, O_CDF, O_FORMAT, O_CSV, O_HELP
+  O_ALTERNATIVE, O_METRIC, O_DIST, O_SHAPE, O_LOC, O_SCALE, O_CDF, O_FORMAT, O_CSV, O_HELP
 };
 static const nl_opt_spec spec[] = {
   [O_COLUMN] = {"column", 0, 1}, [O_UNIFORM] = {"uniform", 0, 2}, [O_BINS] = {"bins", 0, 1},
@@ -137,7 +187,9 @@ static const nl_opt_spec spec[] = {
   [O_PARAMS] = {"params", 0, 1}, [O_K] = {"k", 0, 1}, [O_SELECT_AIC] = {"select-aic", 0, 2},
   [O_COVARIANCE] = {"covariance", 0, 1}, [O_SEED] = {"seed", 0, 1}, [O_TOL] = {"tol", 0, 1},
   [O_MAX_ITER] = {"max-iter", 0, 1}, [O_MAX_K] = {"max-k", 0, 1}, [O_REG_COVAR] = {"reg-covar", 0, 1},
-  [O_DIST] = {"dist", 0, 1}, [O_LOC] = {"loc", 0, 1}, [O_SCALE] = {"scale", 0, 1},
+  [O_ALTERNATIVE] = {"alternative", 0, 1}, [O_METRIC] = {"metric", 0, 1},
+  [O_DIST] = {"dist", 0, 1},
+  [O_SHAPE] = {"shape", 0, 1}, [O_LOC] = {"loc", 0, 1}, [O_SCALE] = {"scale", 0, 1},
   [O_CDF] = {"cdf", 0, 1}, [O_FORMAT] = {"format", 0, 1}, [O_CSV] = {"csv", 0, 0},
   [O_HELP] = {"help", 'h', 0}, {NULL, 0, 0}};
 
@@ -157,7 +209,13 @@ static void parse(int argc, char **argv, opts *o)
       if (o->nfiles == 2) die(o->sub, "too many file arguments");
       o->files[o->nfiles++] = v;
       break;
-    case O_COLUMN: o->column = int_arg(o, a, v, 1, 1000000); break;
+    case O_COLUMN:
+      /* A number keeps its meaning (1-based); anything else names a header's column. */
+      o->column_name = NULL;
+      o->have_column = 1;
+      if (strspn(v, "0123456789+-") == strlen(v)) o->column = int_arg(o, a, v, 1, 1000000);
+      else o->column_name = v;
+      break;
     case O_UNIFORM:
       o->a = num_arg(o, a, v, -1e300, 1e300);
       o->b = num_arg(o, a, p.value[1], -1e300, 1e300);
@@ -183,7 +241,10 @@ static void parse(int argc, char **argv, opts *o)
     case O_MAX_ITER: o->max_iter = int_arg(o, a, v, 1, 100000000); break;
     case O_MAX_K: o->max_k = int_arg(o, a, v, 1, 100000); break;
     case O_REG_COVAR: o->reg = num_arg(o, a, v, 0, 1e300); break;
+    case O_ALTERNATIVE: o->alternative = v; break;
+    case O_METRIC: o->metric = v; break;
     case O_DIST: o->dist = v; break;
+    case O_SHAPE: parse_shape(o, v); break;
     case O_LOC: o->loc = num_arg(o, a, v, -1e300, 1e300); o->have_loc = 1; break;
     case O_SCALE: o->scale = num_arg(o, a, v, 0, 1e300); o->have_scale = 1; break;
     case O_CDF: o->cdf_file = v; break;
@@ -200,10 +261,19 @@ static void parse(int argc, char **argv, opts *o)
     }
   }
   nl_opt_end(&p);
+  if (o->have_column && (!strcmp(o->sub, "hclust") || !strcmp(o->sub, "gmm")))
+    die(o->sub, "--column is for ks, ks2, kuiper and chisq (%s uses every column)", o->sub);
+  if (o->metric && strcmp(o->sub, "hclust"))
+    die(o->sub, "--metric is for hclust");
+  if (o->alternative && strcmp(o->sub, "ks") && strcmp(o->sub, "ks2"))
+    die(o->sub, "--alternative is for ks and ks2 (%s has no one-sided form)", o->sub);
+  if (o->alternative && nl_stats_ks_alternative_parse(o->alternative, &o->alt, &err))
+    die(o->sub, "--alternative: %s", err.msg);
   if (o->have_uniform + (o->dist != NULL) + (o->cdf_file != NULL) > 1)
     die(o->sub, "give one of --uniform A B, --dist NAME and --cdf TABLE");
-  if ((o->have_loc || o->have_scale) && !o->dist)
-    die(o->sub, "--loc and --scale go with --dist NAME (scipy's loc/scale convention)");
+  if ((o->have_loc || o->have_scale || o->nshape) && !o->dist)
+    die(o->sub, "--shape, --loc and --scale go with --dist NAME (scipy's shape/loc/scale "
+        "convention)");
 }
 
 /* ---- output: key=value (default), TSV or JSON --------------------------- */
@@ -232,6 +302,14 @@ static void rec_size(record *r, const char *key, size_t v)
   snprintf(r->val[r->n++], sizeof r->val[0], "%zu", v);
 }
 
+/* 1 or 0 in key=value and TSV; true or false in JSON. */
+static void rec_bool(record *r, const char *key, int v)
+{
+  r->key[r->n] = key;
+  r->text[r->n] = 2;
+  snprintf(r->val[r->n++], sizeof r->val[0], "%d", v != 0);
+}
+
 static void rec_text(record *r, const char *key, const char *v)
 {
   r->key[r->n] = key;
@@ -239,10 +317,48 @@ static void rec_text(record *r, const char *key, const char *v)
   snprintf(r->val[r->n++], sizeof r->val[0], "%s", v);
 }
 
+/* A JSON number (null when not finite: JSON has no NaN or infinity). */
+static void json_num(double v)
+{
+  char buf[64];
+  if (!isfinite(v)) {
+    fputs("null", stdout);
+    return;
+  }
+  nl_table_format_double(buf, v);
+  fputs(buf, stdout);
+}
+
+/* "[v0, v1, ...]" of n numbers spaced by stride. */
+static void json_list(const double *v, size_t n, size_t stride)
+{
+  putchar('[');
+  for (size_t i = 0; i < n; i++) {
+    if (i) fputs(", ", stdout);
+    json_num(v[i * stride]);
+  }
+  putchar(']');
+}
+
+/* ", "KEY": [...]": a member after the record's scalars. */
+static void json_array(const char *key, const double *v, size_t n, size_t stride)
+{
+  printf(", \"%s\": ", key);
+  json_list(v, n, stride);
+}
+
+/* What a single JSON record carries beyond its scalars (arrays), written
+ * before its closing brace; NULL: nothing. */
+typedef void (*json_more_fn)(const void *ctx);
+static void emit_more(const opts *o, const record *r, size_t nr, json_more_fn more,
+                      const void *ctx);
+static void emit(const opts *o, const record *r, size_t nr) { emit_more(o, r, nr, NULL, NULL); }
+
 /* key=value lines; TSV: one header (the first record's keys) and a row per
  * record; JSON: an object, or an array of objects for several records
- * (non-finite numbers as null). */
-static void emit(const opts *o, const record *r, size_t nr)
+ * (non-finite numbers as null, flags as true and false). */
+static void emit_more(const opts *o, const record *r, size_t nr, json_more_fn more,
+                      const void *ctx)
 {
   for (size_t i = 0; i < nr; i++) {
     if (o->format == OUT_TSV && i == 0)
@@ -254,12 +370,15 @@ static void emit(const opts *o, const record *r, size_t nr)
       const char *v = r[i].val[j];
       if (o->format == OUT_KV) printf("%s%s=%s", j ? " " : "", r[i].key[j], v);
       else if (o->format == OUT_TSV) printf("%s%s", j ? "\t" : "", v);
+      else if (r[i].text[j] == 2)
+        printf("%s\"%s\": %s", j ? ", " : "", r[i].key[j], strcmp(v, "0") ? "true" : "false");
       else if (r[i].text[j]) printf("%s\"%s\": \"%s\"", j ? ", " : "", r[i].key[j], v);
       else {
         int finite = strcmp(v, "nan") && strcmp(v, "inf") && strcmp(v, "-inf");
         printf("%s\"%s\": %s", j ? ", " : "", r[i].key[j], finite ? v : "null");
       }
     }
+    if (o->format == OUT_JSON && more) more(ctx);
     if (o->format == OUT_JSON) putchar('}');
     if (o->format != OUT_JSON || i + 1 == nr) {
       if (o->format == OUT_JSON && nr > 1) putchar(']');
@@ -299,14 +418,31 @@ static nl_table *read_table(const opts *o, const char *path)
   return t;
 }
 
-/* Column o->column of the table as a new array. */
+/* Column --column of the table (a number, or a header's name) as a new array. */
 static double *column(const opts *o, const nl_table *t, const char *path)
 {
-  if ((size_t)o->column > t->ncols) {
+  size_t c = (size_t)o->column - 1;
+  if (o->column_name) {
+    long j = nl_table_column(t, o->column_name);
+    if (j < 0) {
+      /* The table's own names, so the user can copy one; a wide table's list is cut. */
+      char list[512];
+      size_t len = 0;
+      for (size_t i = 0; i < t->ncols && len < sizeof list; i++) {
+        int w = i < 16 ? snprintf(list + len, sizeof list - len, "%s%s", i ? ", " : "", t->names[i])
+                       : snprintf(list + len, sizeof list - len, ", ... (%zu in all)", t->ncols);
+        len += w > 0 ? (size_t)w : 0;
+        if (i >= 16) break;
+      }
+      die(o->sub, "%s: no column '%s' (the table's columns: %s)", shown(path), o->column_name,
+          list);
+    }
+    c = (size_t)j;
+  } else if ((size_t)o->column > t->ncols) {
     die(o->sub, "%s: no column %ld (the table has %zu)", shown(path), o->column, t->ncols);
   }
   double *x = nl_xmalloc(t->nrows * sizeof(double));
-  for (size_t i = 0; i < t->nrows; i++) x[i] = nl_table_get(t, i, (size_t)o->column - 1);
+  for (size_t i = 0; i < t->nrows; i++) x[i] = nl_table_get(t, i, c);
   return hold(x);
 }
 
@@ -341,8 +477,21 @@ static void null_dist(const opts *o, nl_stats_dist *dist, nl_table **cdf_table, 
     nl_stats_dist_kind kind;
     if (nl_stats_dist_parse(o->dist, &kind, &err)) die(o->sub, "%s", err.msg);
     double scale = o->have_scale ? o->scale : 1.0;
-    if (nl_stats_dist_init(dist, kind, o->have_loc ? o->loc : 0.0, scale, &err)) {
-      die(o->sub, "--%s", err.msg);   /* "--scale 0 must be positive ..." */
+    int want = nl_stats_dist_nshape(kind);
+    if ((size_t)want != o->nshape) {
+      if (want == 0) die(o->sub, "--dist %s takes no --shape", o->dist);
+      die(o->sub, "--dist %s needs --shape %s (%d value%s, scipy's order), got %zu", o->dist,
+          want == 1 ? "A" : "A,B", want, want == 1 ? "" : "s", o->nshape);
+    }
+    if (o->have_scale && !(scale > 0)) die(o->sub, "--scale %g must be positive", scale);
+    for (size_t i = 0; i < o->nshape; i++)
+      if (!(o->shape[i] > 0)) {
+        die(o->sub, "--shape: %s's %s must be positive, got %g", o->dist,
+            nl_stats_dist_shape_names(kind), o->shape[i]);
+      }
+    if (nl_stats_dist_init_shape(dist, kind, o->shape, o->nshape, o->have_loc ? o->loc : 0.0, scale,
+                                 &err)) {
+      die(o->sub, "--dist %s: %s", o->dist, err.msg);
     }
   } else {
     /* end points: uniform on [a, b) evaluated as (x - a) / (b - a), as before */
@@ -374,6 +523,7 @@ static void run_ks(const opts *o, int kuiper)
     nl_status s = named ? nl_stats_ks_test(x, t->nrows, nl_stats_dist_cdf, &dist, &k, &err)
                         : nl_stats_ks_test_uniform(x, t->nrows, o->a, o->b, &k, &err);
     if (s) fail_lib(o, o->files[0], &err);
+    nl_stats_ks_one_sided(&k, o->alt);
     rec_num(&r, "D", k.d);
     rec_num(&r, "p", k.p);
     rec_size(&r, "n", k.n);
@@ -393,6 +543,7 @@ static void run_ks2(const opts *o)
   nl_stats_ks_result k;
   nl_error err;
   if (nl_stats_ks2_test(x, t1->nrows, y, t2->nrows, &k, &err)) fail_lib(o, o->files[0], &err);
+  nl_stats_ks_one_sided(&k, o->alt);
   record r = {0};
   char n12[64];
   snprintf(n12, sizeof n12, "%zu,%zu", k.n, k.n2);
@@ -429,12 +580,48 @@ static void run_chisq(const opts *o)
   nl_table_free(t);
 }
 
+typedef struct {
+  const char *linkage, *metric;
+  const double *Z;
+  const int *labels;
+  size_t n;
+} hclust_json;
+
+/* JSON: the linkage matrix in scipy's layout (n - 1 rows a, b, dist, size)
+ * and the flat clusters' labels, one per row of the input. */
+static void hclust_more(const void *ctx)
+{
+  const hclust_json *h = ctx;
+  printf(", \"linkage\": \"%s\", \"metric\": \"%s\", \"Z\": [", h->linkage, h->metric);
+  for (size_t i = 0; i + 1 < h->n; i++) {
+    fputs(i ? ", [" : "[", stdout);
+    for (int j = 0; j < 4; j++) {
+      if (j) fputs(", ", stdout);
+      json_num(h->Z[4 * i + (size_t)j]);
+    }
+    putchar(']');
+  }
+  fputs("], \"labels\": [", stdout);
+  for (size_t i = 0; i < h->n; i++) printf("%s%d", i ? ", " : "", h->labels[i]);
+  putchar(']');
+}
+
 static void run_hclust(const opts *o)
 {
   nl_cluster_linkage_method m;
   nl_error err;
-  if (!o->linkage) die(o->sub, "--linkage single|complete|average|ward is required");
+  nl_cluster_metric metric = NL_METRIC_EUCLIDEAN;
+  if (!o->linkage) {
+    die(o->sub, "--linkage single|complete|average|weighted|ward|centroid|median is required");
+  }
   if (nl_cluster_linkage_method_parse(o->linkage, &m, &err)) die(o->sub, "%s", err.msg);
+  if (o->metric && nl_cluster_metric_parse(o->metric, &metric, &err))
+    die(o->sub, "--metric: %s", err.msg);
+  if (metric != NL_METRIC_EUCLIDEAN
+      && (m == NL_LINKAGE_WARD || m == NL_LINKAGE_CENTROID || m == NL_LINKAGE_MEDIAN)) {
+    die(o->sub, "--linkage %s needs --metric euclidean, not %s (as scipy's linkage)", o->linkage,
+        o->metric);
+  }
   if (o->have_cutoff == o->have_clusters) die(o->sub, "give exactly one of --cutoff C and --clusters K");
   /* Both outputs are opened (and so checked) before anything is computed or
    * written, and committed together: a bad --merges leaves --labels' old
@@ -447,7 +634,8 @@ static void run_hclust(const opts *o)
   double *Z = hold(nl_xmalloc((n - 1) * 4 * sizeof(double)));
   int *lab = hold(nl_xmalloc(n * sizeof(int)));
   size_t k;
-  if (nl_cluster_linkage(t->num, n, t->ncols, m, Z, &err)) fail_lib(o, o->files[0], &err);
+  if (nl_cluster_linkage_metric(t->num, n, t->ncols, m, metric, Z, &err))
+    fail_lib(o, o->files[0], &err);
   nl_status s = o->have_cutoff ? nl_cluster_fcluster_distance(Z, n, o->cutoff, lab, &k, &err)
                                : nl_cluster_fcluster_maxclust(Z, n, (size_t)o->clusters, lab, &k, &err);
   if (s) fail_lib(o, o->files[0], &err);
@@ -469,7 +657,8 @@ static void run_hclust(const opts *o)
   nl_table_free(out[1]);
   record r = {0};
   rec_size(&r, "clusters", k);
-  emit(o, &r, 1);
+  hclust_json hj = {nl_cluster_linkage_method_name(m), nl_cluster_metric_name(metric), Z, lab, n};
+  emit_more(o, &r, 1, hclust_more, &hj);
   free(Z); free(lab);
   nl_table_free(t);
 }
@@ -482,12 +671,12 @@ static void fit_record(record *r, size_t n, size_t k, double ll, double aic, dou
   rec_num(r, "aic", aic);
   rec_num(r, "bic", bic);
   rec_size(r, "iterations", it);
-  rec_size(r, "converged", (size_t)conv);
+  rec_bool(r, "converged", conv);
 }
 
 /* Into af, opened (and so checked) before the fit: a bad --params is
  * refused before EM runs, as hclust's outputs are. */
-static void write_params(const opts *o, const nl_gmm *g, nl_atomic_file *af)
+static nl_table *params_table(const nl_gmm *g)
 {
   const char *cols[] = {"component", "param", "i", "j", "value"};
   nl_table *t = nl_table_alloc(5, cols);
@@ -497,14 +686,23 @@ static void write_params(const opts *o, const nl_gmm *g, nl_atomic_file *af)
     for (size_t i = 0; i < d; i++) nl_table_append(t, "isiid", (int)k + 1, "mean", (int)i + 1, 0, g->means[k * d + i]);
     for (size_t i = 0; i < d; i++)
       for (size_t j = 0; j < d; j++) {
-        if (g->covariance == NL_GMM_DIAG && i != j) continue;
-        double v = g->covariance == NL_GMM_FULL ? g->covs[(k * d + i) * d + j] : g->covs[k * d + i];
+        /* each component's matrix: tied repeats the shared one, spherical is sigma_k^2 I */
+        int full = g->covariance == NL_GMM_FULL || g->covariance == NL_GMM_TIED;
+        if (!full && i != j) continue;
+        double v = full ? g->covs[(k * d + i) * d + j] : g->covs[k * d + i];
         nl_table_append(t, "isiid", (int)k + 1, "cov", (int)i + 1, (int)j + 1, v);
       }
   }
+  return t;
+}
+
+/* sklearn's predict on the fitted rows, 0-based (held: freed at exit). */
+static int *predict(const opts *o, const nl_gmm *g, const nl_table *t)
+{
+  int *lab = hold(nl_xmalloc(t->nrows * sizeof(int)));
   nl_error err;
-  if (nl_table_write_to(t, af, &err) || nl_atomic_commit(af, &err)) die(o->sub, "%s", err.msg);
-  nl_table_free(t);
+  if (nl_gmm_predict(g, t->num, t->nrows, lab, &err)) fail_lib(o, o->files[0], &err);
+  return lab;
 }
 
 /* Constant columns are legal (reg_covar keeps their variance finite), but
@@ -529,7 +727,52 @@ static void warn_overparameterised(const opts *o, const nl_table *t, size_t k, n
     nl_message(stderr, PROG " gmm: warning: %s: k = %zu components (%s covariance) have %zu free "
                "parameters, more than the %zu numbers of the data (%zu rows x %zu columns); the "
                "fit is not meaningful", shown(o->files[0]), k,
-               cov == NL_GMM_FULL ? "full" : "diag", m, numbers, t->nrows, t->ncols);
+               nl_gmm_covariance_name(cov), m, numbers, t->nrows, t->ncols);
+}
+
+/* JSON of one fit: its weights, means (k rows of d) and covariances in
+ * sklearn's shapes (full: k matrices d x d; tied: one d x d; diag: k rows of
+ * d; spherical: k variances), as weights_, means_ and covariances_, and
+ * predict's label (1..k) of every row. */
+typedef struct {
+  const nl_gmm *g;
+  const int *labels;
+} gmm_json;
+
+static void gmm_more(const void *ctx)
+{
+  const gmm_json *j = ctx;
+  const nl_gmm *g = j->g;
+  size_t d = g->d;
+  nl_gmm_covariance c = g->covariance;
+  printf(", \"covariance_type\": \"%s\"", nl_gmm_covariance_name(c));
+  json_array("weights", g->weights, g->k, 1);
+  fputs(", \"means\": [", stdout);
+  for (size_t k = 0; k < g->k; k++) {
+    fputs(k ? ", " : "", stdout);
+    json_list(g->means + k * d, d, 1);
+  }
+  fputs("], \"covariances\": ", stdout);
+  if (c == NL_GMM_SPHERICAL) json_list(g->covs, g->k, d);
+  size_t matrices = c == NL_GMM_FULL ? g->k : c == NL_GMM_TIED ? 1 : 0;
+  if (c == NL_GMM_DIAG || c == NL_GMM_TIED) putchar('[');
+  for (size_t k = 0; c == NL_GMM_DIAG && k < g->k; k++) {
+    fputs(k ? ", " : "", stdout);
+    json_list(g->covs + k * d, d, 1);
+  }
+  if (c == NL_GMM_FULL) putchar('[');
+  for (size_t k = 0; k < matrices; k++) {
+    fputs(k ? ", [" : c == NL_GMM_FULL ? "[" : "", stdout);
+    for (size_t i = 0; i < d; i++) {
+      fputs(i ? ", " : "", stdout);
+      json_list(g->covs + (k * d + i) * d, d, 1);
+    }
+    if (c == NL_GMM_FULL) putchar(']');
+  }
+  if (c != NL_GMM_SPHERICAL) putchar(']');
+  fputs(", \"labels\": [", stdout);
+  for (size_t i = 0; i < g->n; i++) printf("%s%d", i ? ", " : "", j->labels[i] + 1);
+  putchar(']');
 }
 
 static void run_gmm(const opts *o)
@@ -537,16 +780,18 @@ static void run_gmm(const opts *o)
   if (o->have_k == o->have_select) die(o->sub, "give exactly one of --k K and --select-aic K0 T");
   nl_gmm_options go;
   nl_gmm_options_default(&go);
-  if (!strcmp(o->covariance, "diag")) go.covariance = NL_GMM_DIAG;
-  else if (strcmp(o->covariance, "full")) die(o->sub, "--covariance must be full or diag");
+  nl_error err;
+  if (nl_gmm_covariance_parse(o->covariance, &go.covariance, &err))
+    die(o->sub, "--covariance: %s", err.msg);
   go.seed = (unsigned long)o->seed;
   go.tol = o->tol;
   go.max_iter = (size_t)o->max_iter;
   go.reg_covar = o->reg;
-  nl_error err;
-  /* A temporary left by die() is removed at exit. */
-  nl_atomic_file af = {0};
-  if (o->params_out && nl_atomic_open(&af, o->params_out, &err)) die(o->sub, "%s", err.msg);
+  /* Both outputs opened (so checked) before EM runs, committed together.
+   * A temporary left by die() is removed at exit. */
+  nl_atomic_file af[2] = {{0}, {0}};
+  if (o->params_out && nl_atomic_open(&af[0], o->params_out, &err)) die(o->sub, "%s", err.msg);
+  if (o->labels_out && nl_atomic_open(&af[1], o->labels_out, &err)) die(o->sub, "%s", err.msg);
   nl_table *t = read_table(o, o->files[0]);
   size_t n = t->nrows, d = t->ncols;
   nl_gmm *g;
@@ -559,7 +804,8 @@ static void run_gmm(const opts *o)
     if (nl_gmm_fit(g, t->num, n, &go, &err)) fail_lib(o, o->files[0], &err);
     record r = {0};
     fit_record(&r, n, g->k, g->loglik, g->aic, g->bic, g->iterations, g->converged);
-    emit(o, &r, 1);
+    gmm_json gj = {g, predict(o, g, t)};
+    emit_more(o, &r, 1, gmm_more, &gj);
     warn_overparameterised(o, t, g->k, go.covariance);
   } else {
     if ((size_t)o->k0 > n) {
@@ -573,7 +819,7 @@ static void run_gmm(const opts *o)
     for (size_t i = 0; i < np; i++) {
       fit_record(&r[i], n, path[i].k, path[i].loglik, path[i].aic, path[i].bic, path[i].iterations,
                  path[i].converged);
-      if (o->format != OUT_KV) rec_size(&r[i], "selected", path[i].k == g->k);
+      if (o->format != OUT_KV) rec_bool(&r[i], "selected", path[i].k == g->k);
     }
     emit(o, r, np);
     if (o->format == OUT_KV) printf("selected=%zu\n", g->k);
@@ -582,7 +828,18 @@ static void run_gmm(const opts *o)
     free(path);
   }
   note_constant_columns(o, t);
-  if (o->params_out) write_params(o, g, &af);
+  nl_table *out[2] = {o->params_out ? params_table(g) : NULL, NULL};
+  if (o->labels_out) {
+    const char *cols[] = {"label"};
+    int *lab = predict(o, g, t);
+    out[1] = nl_table_alloc(1, cols);
+    for (size_t i = 0; i < n; i++) nl_table_append(out[1], "i", lab[i] + 1);
+  }
+  for (int i = 0; i < 2; i++)
+    if (out[i] && nl_table_write_to(out[i], &af[i], &err)) die(o->sub, "%s", err.msg);
+  if (nl_atomic_commit_all(af, 2, &err)) die(o->sub, "%s", err.msg);
+  nl_table_free(out[0]);
+  nl_table_free(out[1]);
   nl_gmm_free(g);
   nl_table_free(t);
 }

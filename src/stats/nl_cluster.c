@@ -10,13 +10,30 @@
 #include <string.h>
 #include <sys/mman.h>
 
+static const char *method_names[] = {"single", "complete", "average", "ward", "weighted",
+                                     "centroid", "median"};
+static const char *metric_names[] = {"euclidean", "sqeuclidean", "cityblock", "chebyshev",
+                                     "cosine", "correlation", "canberra", "braycurtis"};
+
 nl_status nl_cluster_linkage_method_parse(const char *name, nl_cluster_linkage_method *m, nl_error *err)
 {
-  static const char *names[] = {"single", "complete", "average", "ward"};
-  for (int i = 0; i < 4; i++)
-    if (strcmp(name, names[i]) == 0) { *m = (nl_cluster_linkage_method)i; return NL_OK; }
-  return nl_fail(err, NL_EINVAL, "unknown linkage '%s' (single, complete, average or ward)", name);
+  for (int i = 0; i < 7; i++)
+    if (strcmp(name, method_names[i]) == 0) { *m = (nl_cluster_linkage_method)i; return NL_OK; }
+  return nl_fail(err, NL_EINVAL, "unknown linkage '%s' (single, complete, average, weighted, "
+                 "ward, centroid or median)", name);
 }
+
+const char *nl_cluster_linkage_method_name(nl_cluster_linkage_method m) { return method_names[m]; }
+
+nl_status nl_cluster_metric_parse(const char *name, nl_cluster_metric *m, nl_error *err)
+{
+  for (int i = 0; i < 8; i++)
+    if (strcmp(name, metric_names[i]) == 0) { *m = (nl_cluster_metric)i; return NL_OK; }
+  return nl_fail(err, NL_EINVAL, "unknown metric '%s' (euclidean, sqeuclidean, cityblock, "
+                 "chebyshev, cosine, correlation, canberra or braycurtis)", name);
+}
+
+const char *nl_cluster_metric_name(nl_cluster_metric m) { return metric_names[m]; }
 
 /* 8 lanes as two 4-wide vectors; GCC emits SSE2 pairs or, in the AVX2 clone,
  * 256-bit ops. The summation order is the same in both. */
@@ -92,6 +109,55 @@ double nl_cluster_sumsq(const double *a, size_t d)
 
 typedef struct { double dist; size_t order; } merge_key;
 
+/* The metrics other than Euclidean, as scipy.spatial.distance.pdist
+ * computes them (scipy/spatial/src/distance_impl.h): cosine and correlation
+ * clip the cosine to [-1, 1]; canberra skips 0/0 terms. */
+static double metric_dist(nl_cluster_metric m, const double *a, const double *b, size_t d)
+{
+  double s = 0.0, t = 0.0, u = 0.0;
+  switch (m) {
+  case NL_METRIC_EUCLIDEAN: return nl_cluster_euclidean(a, b, d);
+  case NL_METRIC_SQEUCLIDEAN: return sq_diff_sum(a, b, d);
+  case NL_METRIC_CITYBLOCK:
+    for (size_t j = 0; j < d; j++) s += fabs(a[j] - b[j]);
+    return s;
+  case NL_METRIC_CHEBYSHEV:
+    for (size_t j = 0; j < d; j++) s = fmax(s, fabs(a[j] - b[j]));
+    return s;
+  case NL_METRIC_CANBERRA:
+    for (size_t j = 0; j < d; j++) {
+      double den = fabs(a[j]) + fabs(b[j]);
+      if (den > 0.0) s += fabs(a[j] - b[j]) / den;
+    }
+    return s;
+  case NL_METRIC_BRAYCURTIS:
+    for (size_t j = 0; j < d; j++) {
+      s += fabs(a[j] - b[j]);
+      t += fabs(a[j] + b[j]);
+    }
+    return s / t;
+  case NL_METRIC_COSINE:
+  case NL_METRIC_CORRELATION: {
+    double ma = 0.0, mb = 0.0;
+    if (m == NL_METRIC_CORRELATION) {
+      for (size_t j = 0; j < d; j++) { ma += a[j]; mb += b[j]; }
+      ma /= (double)d;
+      mb /= (double)d;
+    }
+    for (size_t j = 0; j < d; j++) {
+      double p = a[j] - ma, q = b[j] - mb;
+      s += p * q;
+      t += p * p;
+      u += q * q;
+    }
+    double c = s / (sqrt(t) * sqrt(u));
+    if (fabs(c) > 1.0) c = copysign(1.0, c);
+    return 1.0 - c;
+  }
+  }
+  return NAN;
+}
+
 static int cmp_key(const void *pa, const void *pb)
 {
   const merge_key *a = pa, *b = pb;
@@ -133,7 +199,7 @@ static void sort_and_label(double *Z, size_t n)
 
 /* ---- single linkage: Prim's MST -------------------------------------------- */
 
-static void linkage_single(const double *x, size_t n, size_t d, double *Z)
+static void linkage_single(const double *x, size_t n, size_t d, nl_cluster_metric metric, double *Z)
 {
   double *dmin = nl_xmalloc(n * sizeof(double));
   unsigned char *merged = nl_xcalloc(n, 1);
@@ -145,7 +211,7 @@ static void linkage_single(const double *x, size_t n, size_t d, double *Z)
     size_t y = cur;
     for (size_t i = 0; i < n; i++) {
       if (merged[i]) continue;
-      double dist = nl_cluster_euclidean(x + cur * d, x + i * d, d);
+      double dist = metric_dist(metric, x + cur * d, x + i * d, d);
       if (dist < dmin[i]) dmin[i] = dist;
       if (dmin[i] < best || y == cur) { best = dmin[i]; y = i; }
     }
@@ -381,6 +447,7 @@ static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method meth
       /* complete: max(dx, dy) (no NaN: the points are finite) */
       if (method == NL_LINKAGE_COMPLETE) v = dx > dy ? dx : dy;
       else if (method == NL_LINKAGE_AVERAGE) v = (nx * dx + ny * dy) / (nx + ny);
+      else if (method == NL_LINKAGE_WEIGHTED) v = 0.5 * (dx + dy);   /* WPGMA, scipy's _weighted */
       else {
         /* Ward (Lance-Williams on Euclidean distances), in scipy's
          * _hierarchy_distance_update.pxi _ward expression and order. */
@@ -403,6 +470,157 @@ static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method meth
   free(chain);
   free(act.succ);
   free(act.pred);
+}
+
+/* The condensed matrix of another metric, with the column lists filled in
+ * the order condensed_distances fills them (rows increasing per column). */
+static double *condensed_metric(const double *x, size_t n, size_t d, nl_cluster_metric metric,
+                                col_top *cm)
+{
+  double *D = condensed_alloc(n * (n - 1) / 2);
+  if (!D) return NULL;
+  for (size_t j = 0; j < n; j++) { cm[j].cnt = 0; cm[j].full = 1; }
+  for (size_t i = 0; i + 1 < n; i++)
+    for (size_t j = i + 1; j < n; j++) {
+      double v = metric_dist(metric, x + i * d, x + j * d, d);
+      D[cidx(n, i, j)] = v;
+      col_offer(&cm[j], v, i);
+    }
+  return D;
+}
+
+/* ---- centroid / median: the generic algorithm ------------------------------ */
+
+/* Their Lance-Williams updates are not reducible (a merge can sit lower than
+ * the one before it), so the chain does not apply: Muellner's generic
+ * algorithm (arXiv:1109.2378, fig. 2) as scipy's fast_linkage writes it,
+ * with its binary heap of lower bounds on each cluster's nearest neighbour
+ * among higher indices, so that merges and ties come out in scipy's order. */
+typedef struct { double *v; size_t *key_at, *at_key, size; } heap;
+
+static void heap_swap(heap *h, size_t i, size_t j)
+{
+  double t = h->v[i];
+  h->v[i] = h->v[j];
+  h->v[j] = t;
+  size_t ki = h->key_at[i], kj = h->key_at[j];
+  h->key_at[i] = kj;
+  h->key_at[j] = ki;
+  h->at_key[ki] = j;
+  h->at_key[kj] = i;
+}
+
+static void heap_down(heap *h, size_t i)
+{
+  for (size_t c = 2 * i + 1; c < h->size; c = 2 * i + 1) {
+    if (c + 1 < h->size && h->v[c + 1] < h->v[c]) c++;
+    if (!(h->v[i] > h->v[c])) break;
+    heap_swap(h, i, c);
+    i = c;
+  }
+}
+
+static void heap_change(heap *h, size_t key, double value)
+{
+  size_t i = h->at_key[key];
+  double old = h->v[i];
+  h->v[i] = value;
+  if (value < old) {
+    while (i > 0 && h->v[(i - 1) / 2] > h->v[i]) {
+      heap_swap(h, i, (i - 1) / 2);
+      i = (i - 1) / 2;
+    }
+  } else {
+    heap_down(h, i);
+  }
+}
+
+/* The nearest active cluster above x: (index, distance), index n if none. */
+static size_t find_min_dist(const double *D, size_t n, const double *size, size_t x, double *dist)
+{
+  double best = INFINITY;
+  size_t y = n;
+  for (size_t i = x + 1; i < n; i++) {
+    if (size[i] == 0.0) continue;
+    double v = D[cidx(n, x, i)];
+    if (v < best) { best = v; y = i; }
+  }
+  *dist = best;
+  return y;
+}
+
+/* Z in merge order with scipy's cluster numbers (no sorting: heights may
+ * decrease). scipy's _centroid and _median updates on Euclidean distances. */
+static void linkage_generic(double *D, size_t n, nl_cluster_linkage_method method, double *Z)
+{
+  double *size = nl_xmalloc(n * sizeof(double)), *min_dist = nl_xmalloc(n * sizeof(double));
+  size_t *id = nl_xmalloc(n * sizeof(size_t)), *nbr = nl_xmalloc(n * sizeof(size_t));
+  heap h = {nl_xmalloc(n * sizeof(double)), nl_xmalloc(n * sizeof(size_t)),
+            nl_xmalloc(n * sizeof(size_t)), n - 1};
+  for (size_t i = 0; i < n; i++) { size[i] = 1.0; id[i] = i; }
+  for (size_t x = 0; x + 1 < n; x++) {
+    nbr[x] = find_min_dist(D, n, size, x, &min_dist[x]);
+    h.v[x] = min_dist[x];
+    h.key_at[x] = h.at_key[x] = x;
+  }
+  for (size_t i = h.size / 2; i-- > 0;) heap_down(&h, i);
+  for (size_t k = 0; k + 1 < n; k++) {
+    size_t x = 0, y = 0;
+    double dist = 0.0;
+    for (size_t i = 0; i < n - k; i++) {   /* at most n - k refreshes, as scipy */
+      x = h.key_at[0];
+      dist = h.v[0];
+      y = nbr[x];
+      if (dist == D[cidx(n, x, y)]) break;
+      y = find_min_dist(D, n, size, x, &dist);
+      nbr[x] = y;
+      min_dist[x] = dist;
+      heap_change(&h, x, dist);
+    }
+    heap_swap(&h, 0, h.size - 1);   /* remove the minimum */
+    h.size--;
+    heap_down(&h, 0);
+    size_t ix = id[x] < id[y] ? id[x] : id[y], iy = id[x] < id[y] ? id[y] : id[x];
+    double nx = size[x], ny = size[y];
+    Z[4 * k] = (double)ix;
+    Z[4 * k + 1] = (double)iy;
+    Z[4 * k + 2] = dist;
+    Z[4 * k + 3] = nx + ny;
+    size[x] = 0.0;
+    size[y] = nx + ny;
+    id[y] = n + k;
+    for (size_t z = 0; z < n; z++) {
+      if (size[z] == 0.0 || z == y) continue;
+      double dx = D[cidx(n, z, x)], dy = D[cidx(n, z, y)], v;
+      if (method == NL_LINKAGE_CENTROID)
+        v = sqrt(((nx * dx * dx) + (ny * dy * dy) - (nx * ny * dist * dist) / (nx + ny))
+                 / (nx + ny));
+      else
+        v = sqrt(0.5 * (dx * dx + dy * dy) - 0.25 * dist * dist);
+      D[cidx(n, z, y)] = v;
+    }
+    for (size_t z = 0; z < x; z++)
+      if (size[z] > 0.0 && nbr[z] == x) nbr[z] = y;
+    for (size_t z = 0; z < y; z++) {
+      if (size[z] == 0.0) continue;
+      double v = D[cidx(n, z, y)];
+      if (v < min_dist[z]) {
+        nbr[z] = y;
+        min_dist[z] = v;
+        heap_change(&h, z, v);
+      }
+    }
+    if (y + 1 < n) {
+      size_t z = find_min_dist(D, n, size, y, &dist);
+      if (z < n) {
+        nbr[y] = z;
+        min_dist[y] = dist;
+        heap_change(&h, y, dist);
+      }
+    }
+  }
+  free(size); free(min_dist); free(id); free(nbr);
+  free(h.v); free(h.key_at); free(h.at_key);
 }
 
 /* Refuses points whose bounding box's diagonal, an upper bound on every
@@ -430,15 +648,42 @@ static nl_status check_span(const double *x, size_t n, size_t d, nl_error *err)
 nl_status nl_cluster_linkage(const double *x, size_t n, size_t d, nl_cluster_linkage_method method,
                              double *Z, nl_error *err)
 {
+  return nl_cluster_linkage_metric(x, n, d, method, NL_METRIC_EUCLIDEAN, Z, err);
+}
+
+nl_status nl_cluster_linkage_metric(const double *x, size_t n, size_t d,
+                                    nl_cluster_linkage_method method, nl_cluster_metric metric,
+                                    double *Z, nl_error *err)
+{
   if (n < 2) return nl_fail(err, NL_EINVAL, "clustering needs at least 2 points, got %zu", n);
   if (d < 1) return nl_fail(err, NL_EINVAL, "points have no coordinates");
+  int geometric = method == NL_LINKAGE_WARD || method == NL_LINKAGE_CENTROID
+                  || method == NL_LINKAGE_MEDIAN;
+  if (geometric && metric != NL_METRIC_EUCLIDEAN)
+    return nl_fail(err, NL_EINVAL, "%s linkage needs the Euclidean metric, not %s (its update "
+                   "is geometry in Euclidean space; scipy refuses it too)",
+                   method_names[method], metric_names[metric]);
   for (size_t i = 0; i < n * d; i++)
     if (!isfinite(x[i]))
       return nl_fail(err, NL_EINVAL, "point %zu, coordinate %zu is not finite", i / d + 1, i % d + 1);
   nl_status s = check_span(x, n, d, err);
   if (s) return s;
+  int ratio = metric == NL_METRIC_COSINE || metric == NL_METRIC_CORRELATION
+              || metric == NL_METRIC_BRAYCURTIS;
+  if (ratio)
+    for (size_t i = 0; i < n; i++) {   /* the distances these metrics cannot give (0/0) */
+      double lo = x[i * d], hi = lo, sum = 0.0;
+      for (size_t j = 0; j < d; j++) {
+        lo = fmin(lo, x[i * d + j]);
+        hi = fmax(hi, x[i * d + j]);
+        sum += fabs(x[i * d + j]);
+      }
+      if (metric == NL_METRIC_CORRELATION ? lo == hi : sum == 0.0)
+        return nl_fail(err, NL_EINVAL, "point %zu is %s: its %s distance is 0/0", i + 1,
+                       metric == NL_METRIC_CORRELATION ? "constant" : "zero", metric_names[metric]);
+    }
   if (method == NL_LINKAGE_SINGLE) {
-    linkage_single(x, n, d, Z);
+    linkage_single(x, n, d, metric, Z);
   } else {
     /* Checked before trying: malloc may grant what the machine cannot hold
      * (overcommit), and the O(n^2) fill would run for minutes first. */
@@ -448,11 +693,18 @@ nl_status nl_cluster_linkage(const double *x, size_t n, size_t d, nl_cluster_lin
       return nl_fail(err, NL_ENOMEM, "%zu rows need %s for the distance matrix; this machine has %s",
                      n, nl_format_bytes(b1, need), nl_format_bytes(b2, nl_mem_physical()));
     col_top *cm = nl_xmalloc(n * sizeof *cm);
-    double *D = condensed_distances(x, n, d, cm);
+    double *D = metric == NL_METRIC_EUCLIDEAN ? condensed_distances(x, n, d, cm)
+                                              : condensed_metric(x, n, d, metric, cm);
     if (!D) {
       free(cm);
       return nl_fail(err, NL_ENOMEM, "%zu rows need %s for the distance matrix; allocating it failed",
                      n, nl_format_bytes(b1, need));
+    }
+    if (method == NL_LINKAGE_CENTROID || method == NL_LINKAGE_MEDIAN) {
+      linkage_generic(D, n, method, Z);
+      free(D);
+      free(cm);
+      return NL_OK;   /* scipy's order and numbers already; no sorting (inversions) */
     }
     linkage_nn_chain(D, n, method, cm, Z);
     free(D);

@@ -14,7 +14,7 @@
  * two merge heights tie to that precision.
  *
  * Algorithms (Muellner, "Modern hierarchical, agglomerative clustering
- * algorithms", arXiv:1109.2378, sec. 3), all O(n^2) time:
+ * algorithms", arXiv:1109.2378, sec. 3), O(n^2) time but centroid and median:
  *   single:   Prim's minimum spanning tree with distances computed on the
  *             fly: O(n d) memory. (Single linkage = MST, Gower & Ross 1969.)
  *   complete, average: the nearest-neighbour chain on the condensed distance
@@ -33,6 +33,16 @@
  *             d = sqrt((n_x + n_a) t d_ax^2 + (n_x + n_b) t d_bx^2 - n_x t d_ab^2);
  *             the height is sqrt(2 x the increase of the within-cluster sum
  *             of squares), scipy.cluster.hierarchy.linkage(x, 'ward').
+ *   weighted: the chain with WPGMA's d = (d_ax + d_bx) / 2.
+ *   centroid, median: not reducible (a merge can be lower than an earlier
+ *             one), so Muellner's generic algorithm, O(n^2) to O(n^3), as
+ *             scipy's fast_linkage; Z stays in merge order (not sorted),
+ *             with scipy's updates on Euclidean distances:
+ *             centroid, with n = n_a + n_b,
+ *               d = sqrt((n_a d_ax^2 + n_b d_bx^2 - n_a n_b d_ab^2 / n) / n),
+ *             median d = sqrt(d_ax^2 / 2 + d_bx^2 / 2 - d_ab^2 / 4).
+ * Other metrics (nl_cluster_linkage_metric) give the condensed matrix of
+ * scipy.spatial.distance.pdist(x, metric); single linkage computes them on the fly.
  * Distances sum (x_j - y_j)^2 in 8 fixed lanes, then take sqrt: the order of
  * the sum is fixed by the code, so results are identical on every x86-64
  * whether or not the AVX2 clone runs.
@@ -53,11 +63,31 @@ typedef enum {
   NL_LINKAGE_SINGLE,
   NL_LINKAGE_COMPLETE,
   NL_LINKAGE_AVERAGE,
-  NL_LINKAGE_WARD
+  NL_LINKAGE_WARD,
+  NL_LINKAGE_WEIGHTED,   /* WPGMA: d = (d_ax + d_bx) / 2, on the chain */
+  NL_LINKAGE_CENTROID,   /* Euclidean only; the generic algorithm (below) */
+  NL_LINKAGE_MEDIAN      /* WPGMC; Euclidean only; the generic algorithm */
 } nl_cluster_linkage_method;
 
-/* "single", "complete", "average", "ward" -> method; NL_EINVAL otherwise. */
+/* scipy.spatial.distance.pdist's metrics (scipy's formulas and names). */
+typedef enum {
+  NL_METRIC_EUCLIDEAN,
+  NL_METRIC_SQEUCLIDEAN,
+  NL_METRIC_CITYBLOCK,
+  NL_METRIC_CHEBYSHEV,
+  NL_METRIC_COSINE,       /* 1 - u.v / (|u| |v|) */
+  NL_METRIC_CORRELATION,  /* cosine of the centred rows */
+  NL_METRIC_CANBERRA,     /* sum |u - v| / (|u| + |v|), 0/0 terms left out */
+  NL_METRIC_BRAYCURTIS    /* sum |u - v| / sum |u + v| */
+} nl_cluster_metric;
+
+/* "single", "complete", "average", "ward", "weighted", "centroid", "median"
+ * -> method; NL_EINVAL otherwise. */
 nl_status nl_cluster_linkage_method_parse(const char *name, nl_cluster_linkage_method *m, nl_error *err);
+const char *nl_cluster_linkage_method_name(nl_cluster_linkage_method m);
+/* scipy's metric name -> metric; NL_EINVAL otherwise. */
+nl_status nl_cluster_metric_parse(const char *name, nl_cluster_metric *m, nl_error *err);
+const char *nl_cluster_metric_name(nl_cluster_metric m);
 
 /* Euclidean distance between rows a and b of length d, and sum of squares
  * of a (summed in 8 fixed lanes: see above). */
@@ -77,6 +107,13 @@ double nl_cluster_sumsq(const double *a, size_t d);
  * NL_ENOMEM if the distance matrix cannot be had. */
 nl_status nl_cluster_linkage(const double *x, size_t n, size_t d, nl_cluster_linkage_method method,
                              double *Z, nl_error *err);
+/* As nl_cluster_linkage with another metric: scipy.cluster.hierarchy.linkage(x,
+ * method, metric). Ward, centroid and median need Euclidean (NL_EINVAL
+ * otherwise, as scipy); cosine, correlation and braycurtis refuse a row
+ * whose distance would be 0/0 (a zero or constant row). */
+nl_status nl_cluster_linkage_metric(const double *x, size_t n, size_t d,
+                                    nl_cluster_linkage_method method, nl_cluster_metric metric,
+                                    double *Z, nl_error *err);
 
 /* labels: n ints, 1-based. *nclusters (may be NULL) receives k. */
 nl_status nl_cluster_fcluster_distance(const double *Z, size_t n, double t, int *labels,

@@ -2,26 +2,67 @@
  * convention, and a tabulated CDF, for the one-sample tests (nl_stats.h). */
 #include "stats/nl_stats.h"
 
+#include <gsl/gsl_cdf.h>
 #include <math.h>
 #include <string.h>
 
-static const char *dist_names[] = {"uniform", "norm", "expon"};
+/* In nl_stats_dist_kind's order; the shape parameters as scipy names them. */
+static const struct {
+  const char *name;
+  int nshape;
+  const char *shapes;
+} dist_info[] = {
+  {"uniform", 0, ""}, {"norm", 0, ""}, {"expon", 0, ""}, {"gamma", 1, "a"},
+  {"beta", 2, "a,b"}, {"lognorm", 1, "s"}, {"t", 1, "df"}, {"chi2", 1, "df"},
+  {"weibull_min", 1, "c"}, {"cauchy", 0, ""}, {"logistic", 0, ""}, {"laplace", 0, ""},
+  {"pareto", 1, "b"}, {"rayleigh", 0, ""},
+};
+#define NDIST (sizeof dist_info / sizeof dist_info[0])
 
 nl_status nl_stats_dist_parse(const char *name, nl_stats_dist_kind *kind, nl_error *err)
 {
-  for (int i = 0; i < 3; i++)
-    if (!strcmp(name, dist_names[i])) { *kind = (nl_stats_dist_kind)i; return NL_OK; }
-  return nl_fail(err, NL_EINVAL, "unknown distribution '%s' (uniform, norm or expon)", name);
+  for (size_t i = 0; i < NDIST; i++)
+    if (!strcmp(name, dist_info[i].name)) { *kind = (nl_stats_dist_kind)i; return NL_OK; }
+  return nl_fail(err, NL_EINVAL, "unknown distribution '%s' (uniform, norm, expon, gamma, beta, "
+                 "lognorm, t, chi2, weibull_min, cauchy, logistic, laplace, pareto, rayleigh)",
+                 name);
+}
+
+int nl_stats_dist_nshape(nl_stats_dist_kind kind)
+{
+  return kind == NL_DIST_TABLE ? 0 : dist_info[kind].nshape;
+}
+
+const char *nl_stats_dist_shape_names(nl_stats_dist_kind kind)
+{
+  return kind == NL_DIST_TABLE ? "" : dist_info[kind].shapes;
 }
 
 const char *nl_stats_dist_name(nl_stats_dist_kind kind)
 {
-  return kind == NL_DIST_TABLE ? "table" : dist_names[kind];
+  return kind == NL_DIST_TABLE ? "table" : dist_info[kind].name;
 }
 
 nl_status nl_stats_dist_init(nl_stats_dist *d, nl_stats_dist_kind kind, double loc, double scale,
                              nl_error *err)
 {
+  if (nl_stats_dist_nshape(kind))
+    return nl_fail(err, NL_EINVAL, "%s needs its shape parameter(s) %s", dist_info[kind].name,
+                   dist_info[kind].shapes);
+  return nl_stats_dist_init_shape(d, kind, NULL, 0, loc, scale, err);
+}
+
+nl_status nl_stats_dist_init_shape(nl_stats_dist *d, nl_stats_dist_kind kind, const double *shape,
+                                   size_t nshape, double loc, double scale, nl_error *err)
+{
+  if ((int)nshape != nl_stats_dist_nshape(kind))
+    return nl_fail(err, NL_EINVAL, "%s takes %d shape parameter(s) (%s), got %zu",
+                   dist_info[kind].name, nl_stats_dist_nshape(kind), dist_info[kind].shapes,
+                   nshape);
+  for (size_t i = 0; i < nshape; i++)
+    if (!(shape[i] > 0) || !isfinite(shape[i]))
+      return nl_fail(err, NL_EINVAL, "shape %g of %s must be positive and finite", shape[i],
+                     dist_info[kind].name);
   if (!isfinite(loc)) return nl_fail(err, NL_EINVAL, "loc %g is not finite", loc);
   if (!(scale > 0) || !isfinite(scale))
     return nl_fail(err, NL_EINVAL, "scale %g must be positive and finite", scale);
@@ -29,6 +70,7 @@ nl_status nl_stats_dist_init(nl_stats_dist *d, nl_stats_dist_kind kind, double l
   d->kind = kind;
   d->loc = loc;
   d->scale = scale;
+  for (size_t i = 0; i < nshape; i++) d->shape[i] = shape[i];
   return NL_OK;
 }
 
@@ -86,6 +128,18 @@ double nl_stats_dist_cdf(double x, void *params)
   case NL_DIST_UNIFORM: return z <= 0.0 ? 0.0 : z >= 1.0 ? 1.0 : z;
   case NL_DIST_NORM: return ndtr(z);
   case NL_DIST_EXPON: return z <= 0.0 ? 0.0 : -expm1(-z);
+  case NL_DIST_GAMMA: return z <= 0.0 ? 0.0 : gsl_cdf_gamma_P(z, d->shape[0], 1.0);
+  case NL_DIST_BETA:
+    return z <= 0.0 ? 0.0 : z >= 1.0 ? 1.0 : gsl_cdf_beta_P(z, d->shape[0], d->shape[1]);
+  case NL_DIST_LOGNORM: return z <= 0.0 ? 0.0 : ndtr(log(z) / d->shape[0]);
+  case NL_DIST_T: return gsl_cdf_tdist_P(z, d->shape[0]);
+  case NL_DIST_CHI2: return z <= 0.0 ? 0.0 : gsl_cdf_chisq_P(z, d->shape[0]);
+  case NL_DIST_WEIBULL_MIN: return z <= 0.0 ? 0.0 : -expm1(-pow(z, d->shape[0]));
+  case NL_DIST_CAUCHY: return 0.5 + atan(z) / M_PI;
+  case NL_DIST_LOGISTIC: return 1.0 / (1.0 + exp(-z));   /* scipy.special.expit */
+  case NL_DIST_LAPLACE: return z > 0.0 ? 1.0 - 0.5 * exp(-z) : 0.5 * exp(z);
+  case NL_DIST_PARETO: return z < 1.0 ? 0.0 : -expm1(-d->shape[0] * log(z));
+  case NL_DIST_RAYLEIGH: return z <= 0.0 ? 0.0 : -expm1(-0.5 * z * z);
   default: return NAN;
   }
 }

@@ -83,15 +83,36 @@ void nl_gmm_options_default(nl_gmm_options *o)
   o->memo = NULL;
 }
 
+/* sklearn's _n_parameters: covariance entries, then means and weights. */
 size_t nl_gmm_nparams(size_t k, size_t d, nl_gmm_covariance covariance)
 {
-  size_t cov = covariance == NL_GMM_FULL ? k * d * (d + 1) / 2 : k * d;
+  size_t cov = covariance == NL_GMM_FULL ? k * d * (d + 1) / 2
+             : covariance == NL_GMM_TIED ? d * (d + 1) / 2
+             : covariance == NL_GMM_DIAG ? k * d
+             : k;
   return cov + k * d + k - 1;
 }
 
+static const char *cov_names[] = {"full", "diag", "tied", "spherical"};
+
+const char *nl_gmm_covariance_name(nl_gmm_covariance c) { return cov_names[c]; }
+
+nl_status nl_gmm_covariance_parse(const char *name, nl_gmm_covariance *c, nl_error *err)
+{
+  for (int i = 0; i < 4; i++)
+    if (!strcmp(name, cov_names[i])) { *c = (nl_gmm_covariance)i; return NL_OK; }
+  return nl_fail(err, NL_EINVAL, "unknown covariance type '%s' (full, diag, tied or spherical)",
+                 name);
+}
+
+/* Tied is stored as full with K equal matrices, spherical as diagonal with d
+ * equal variances: the E-step, the factors and sampling need no case of
+ * their own, and the log-density is sklearn's for either. */
+static int full_storage(nl_gmm_covariance c) { return c == NL_GMM_FULL || c == NL_GMM_TIED; }
+
 static size_t cov_size(const nl_gmm *g)
 {
-  return g->covariance == NL_GMM_FULL ? g->d * g->d : g->d;
+  return full_storage(g->covariance) ? g->d * g->d : g->d;
 }
 
 /* K d^2 arrays (covariances, factors, inverses): several MB each, and a
@@ -197,7 +218,7 @@ static nl_gmm *gmm_new(size_t k, size_t kcap, size_t d, nl_gmm_covariance covari
   g->means = GET(kcap * d);
   g->covs = big_alloc(kcap * cs, zero);
   g->chol = big_alloc(kcap * cs, zero);
-  g->prec = covariance == NL_GMM_FULL ? big_alloc(kcap * d * d, zero) : NULL;
+  g->prec = full_storage(covariance) ? big_alloc(kcap * d * d, zero) : NULL;
 #undef GET
   g->nparams = nl_gmm_nparams(k, d, covariance);
   return g;
@@ -211,7 +232,7 @@ nl_gmm *nl_gmm_alloc(size_t k, size_t d, nl_gmm_covariance covariance)
 double nl_gmm_bytes(size_t n, size_t d, size_t k, nl_gmm_covariance covariance)
 {
   double N = (double)n, D = (double)d, K = (double)k;
-  double cs = covariance == NL_GMM_FULL ? D * D : D;
+  double cs = full_storage(covariance) ? D * D : D;
   double model = K * (1 + D + 3 * cs);
   return sizeof(double) * (2 * N * K + N + 2 * model + BLOCK * (2 * D + K)) + sizeof(int) * N;
 }
@@ -242,7 +263,7 @@ static double half_logdet(const nl_gmm *g, size_t k)
   double s = 0.0;
   const double *c = g->chol + k * cov_size(g);
   for (size_t j = 0; j < g->d; j++)
-    s += log(g->covariance == NL_GMM_FULL ? c[j * g->d + j] : c[j]);
+    s += log(full_storage(g->covariance) ? c[j * g->d + j] : c[j]);
   return s;
 }
 
@@ -256,7 +277,7 @@ static void block_log_prob(const nl_gmm *g, size_t k, const double *xb, size_t n
   double base = c0 - half_logdet(g, k) + log(g->weights[k]);
   for (size_t i = 0; i < nb; i++)
     for (size_t j = 0; j < d; j++) y[i * d + j] = xb[i * d + j] - mu[j];
-  if (g->covariance == NL_GMM_FULL) {
+  if (full_storage(g->covariance)) {
     /* Y = (X_b - mu) L^{-T}: a multiplication by the stored inverse runs
      * about 3x faster in OpenBLAS than the equivalent dtrsm */
     gsl_matrix_view Y = gsl_matrix_view_array(y, nb, d);
@@ -363,7 +384,7 @@ static int factorize_one(nl_gmm *g, size_t k)
   double *c = g->chol + k * cs;
   memcpy(c, g->covs + k * cs, cs * sizeof(double));
   int bad = 0;
-  if (g->covariance == NL_GMM_FULL) {
+  if (full_storage(g->covariance)) {
     gsl_matrix_view L = gsl_matrix_view_array(c, d, d);
     bad = gsl_linalg_cholesky_decomp1(&L.matrix) != GSL_SUCCESS;
     for (size_t i = 0; i < d; i++)
@@ -415,7 +436,13 @@ static void mstep_item(void *ctx, size_t k, int t)
   const double *x = j->x, *R = j->R;
   double nk = g->weights[k], *mu = g->means + k * d, *S = g->covs + k * cs;
   for (size_t q = 0; q < d; q++) mu[q] /= nk;
-  if (g->covariance == NL_GMM_FULL) {
+  if (g->covariance == NL_GMM_TIED) {
+    /* the raw scatter: m_step pools the components' and factors once */
+    scatter_full(x, n, d, R, K, k, mu, SKIP * j->w->rmax[k], j->w->z[t], j->w->nb, S);
+    j->w->bad[k] = 0;
+    return;
+  }
+  if (full_storage(g->covariance)) {
     scatter_full(x, n, d, R, K, k, mu, SKIP * j->w->rmax[k], j->w->z[t], j->w->nb, S);
     for (size_t i = 0; i < d; i++)
       for (size_t q = 0; q <= i; q++) S[q * d + i] = S[i * d + q] /= nk;
@@ -428,8 +455,37 @@ static void mstep_item(void *ctx, size_t k, int t)
         S[q] += R[i * K + k] * v * v;
       }
     for (size_t q = 0; q < d; q++) S[q] = S[q] / nk + j->reg;
+    if (g->covariance == NL_GMM_SPHERICAL) {   /* sklearn: the diagonal's mean */
+      double m = 0.0;
+      for (size_t q = 0; q < d; q++) m += S[q];
+      for (size_t q = 0; q < d; q++) S[q] = m / (double)d;
+    }
   }
   j->w->bad[k] = factorize_one(g, k);
+}
+
+/* Tied: Sigma = sum_k scatter_k / sum_k N_k + reg_covar I (sklearn's
+ * _estimate_gaussian_covariances_tied, the pooled within-component
+ * covariance), into every component; its factor once, copied. The
+ * weights still hold N_k here. */
+static void pool_tied(nl_gmm *g, double reg, workspace *w)
+{
+  size_t K = g->k, d = g->d, cs = d * d;
+  double nsum = 0.0, *S = g->covs;
+  for (size_t k = 0; k < K; k++) nsum += g->weights[k];
+  for (size_t k = 1; k < K; k++)
+    for (size_t i = 0; i < d; i++)
+      for (size_t q = 0; q <= i; q++) S[i * d + q] += g->covs[k * cs + i * d + q];
+  for (size_t i = 0; i < d; i++)
+    for (size_t q = 0; q <= i; q++) S[q * d + i] = S[i * d + q] /= nsum;
+  for (size_t q = 0; q < d; q++) S[q * d + q] += reg;
+  w->bad[0] = factorize_one(g, 0);
+  for (size_t k = 1; k < K; k++) {
+    memcpy(g->covs + k * cs, S, cs * sizeof(double));
+    memcpy(g->chol + k * cs, g->chol, cs * sizeof(double));
+    memcpy(g->prec + k * cs, g->prec, cs * sizeof(double));
+    w->bad[k] = w->bad[0];
+  }
 }
 
 /* Weights, means, covariances from responsibilities R (sklearn's
@@ -457,6 +513,7 @@ static nl_status m_step(nl_gmm *g, const double *x, size_t n, const double *R, d
   mstep_job j = {g, x, n, R, reg, w};
   handler_off();
   nl_parallel_for(K, w->threads, mstep_item, &j);
+  if (g->covariance == NL_GMM_TIED) pool_tied(g, reg, w);
   handler_restore();
   for (size_t k = 0; k < K; k++) total += g->weights[k];
   for (size_t k = 0; k < K; k++) g->weights[k] /= normalise ? total : (double)n;
@@ -640,6 +697,27 @@ nl_status nl_gmm_loglik(const nl_gmm *g, const double *x, size_t n, double *tota
   return NL_OK;
 }
 
+nl_status nl_gmm_predict(const nl_gmm *g, const double *x, size_t n, int *labels, nl_error *err)
+{
+  for (size_t i = 0; i < n * g->d; i++)
+    if (!isfinite(x[i]))
+      return nl_fail(err, NL_EINVAL, "row %zu, column %zu is not finite", i / g->d + 1,
+                     i % g->d + 1);
+  size_t K = g->k;
+  double *R = nl_xmalloc(n * K * sizeof(double));
+  int threads = blas_threads_limit(n, g->d);
+  e_step(g, x, n, R, NULL, NULL);
+  nl_parallel_blas_restore(threads);
+  for (size_t i = 0; i < n; i++) {   /* the first of equal maxima, as numpy's argmax */
+    size_t best = 0;
+    for (size_t k = 1; k < K; k++)
+      if (R[i * K + k] > R[i * K + best]) best = k;
+    labels[i] = (int)best;
+  }
+  free(R);
+  return NL_OK;
+}
+
 void nl_gmm_sample(const nl_gmm *g, gsl_rng *rng, size_t n, double *out, int *labels)
 {
   size_t d = g->d, cs = cov_size(g);
@@ -651,7 +729,7 @@ void nl_gmm_sample(const nl_gmm *g, gsl_rng *rng, size_t n, double *out, int *la
     for (size_t j = 0; j < d; j++) z[j] = gsl_ran_gaussian_ziggurat(rng, 1.0);
     for (size_t r = 0; r < d; r++) {   /* x = mu + L z */
       double v = mu[r];
-      if (g->covariance == NL_GMM_FULL)
+      if (full_storage(g->covariance))
         for (size_t j = 0; j <= r; j++) v += c[r * d + j] * z[j];
       else
         v += c[r] * z[r];
@@ -782,7 +860,7 @@ static void memo_put_step(nl_gmm_memo *m, const memo_key *key, const nl_gmm_step
 static size_t model_bytes(const nl_gmm *g)
 {
   size_t cs = cov_size(g);
-  return sizeof(double) * (g->k * (1 + g->d) + g->k * cs * (g->covariance == NL_GMM_FULL ? 3 : 2));
+  return sizeof(double) * (g->k * (1 + g->d) + g->k * cs * (full_storage(g->covariance) ? 3 : 2));
 }
 
 /* A copy of g with exactly g->k components. */

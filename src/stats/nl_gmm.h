@@ -7,7 +7,8 @@
  *   printf("%g %g %g\n", g->loglik, g->aic, g->bic);
  *   nl_gmm_free(g);
  *
- * The model: p(x) = sum_k w_k N(x; mu_k, Sigma_k), Sigma_k full or diagonal.
+ * The model: p(x) = sum_k w_k N(x; mu_k, Sigma_k), Sigma_k full, diagonal, tied
+ * (one for all k) or spherical (sigma_k^2 I), as sklearn's covariance_type.
  * EM is scikit-learn 1.2's GaussianMixture step for step, so from the same
  * initial responsibilities both produce the same iterates to rounding:
  *   - initialisation: responsibilities one-hot from labels (given in
@@ -37,7 +38,8 @@
  * Results: weights, means, covariances, their Cholesky factors, and for the
  * final parameters loglik = sum_i log p(x_i) (sklearn: score(X) * n),
  * AIC = -2 loglik + 2m, BIC = -2 loglik + m ln n, with m free parameters:
- * full K d(d+1)/2 + K d + K - 1, diagonal 2 K d + K - 1 (sklearn's count).
+ * full K d(d+1)/2 + K d + K - 1, diagonal 2 K d + K - 1, tied d(d+1)/2 + K d + K - 1,
+ * spherical 2K + K d - 1 (sklearn's count).
  * Agreement with sklearn from the same labels: loglik to 1e-8 relative,
  * same iteration count (tests/data/stats/gmm_fit.tsv).
  *
@@ -57,7 +59,14 @@
 
 #include <gsl/gsl_rng.h>
 
-typedef enum { NL_GMM_FULL, NL_GMM_DIAG } nl_gmm_covariance;
+/* scikit-learn's covariance_type: full (one matrix per component), diag
+ * (variances per component), tied (one matrix shared by all components:
+ * the pooled scatter / n + reg_covar I) and spherical (one variance per
+ * component: the mean of its diagonal variances). */
+typedef enum { NL_GMM_FULL, NL_GMM_DIAG, NL_GMM_TIED, NL_GMM_SPHERICAL } nl_gmm_covariance;
+/* "full", "diag", "tied", "spherical"; NL_EINVAL otherwise. */
+nl_status nl_gmm_covariance_parse(const char *name, nl_gmm_covariance *c, nl_error *err);
+const char *nl_gmm_covariance_name(nl_gmm_covariance c);
 
 typedef struct {
   nl_gmm_covariance covariance;
@@ -78,11 +87,12 @@ typedef struct {
   nl_gmm_covariance covariance;
   double *weights;     /* k */
   double *means;       /* k x d */
-  double *covs;        /* full: k x d x d; diagonal: k x d variances */
-  double *chol;        /* full: lower L_k (k x d x d, upper part zero);
-                          diagonal: k x d standard deviations */
-  double *prec;        /* full: L_k^{-1} (lower, k x d x d), so that the
-                          precision is prec^T prec; diagonal: NULL */
+  double *covs;        /* full, tied: k x d x d (tied: k equal copies);
+                          diag, spherical: k x d variances (spherical: d equal) */
+  double *chol;        /* full, tied: lower L_k (k x d x d, upper part zero);
+                          diag, spherical: k x d standard deviations */
+  double *prec;        /* full, tied: L_k^{-1} (lower, k x d x d), so that the
+                          precision is prec^T prec; diag, spherical: NULL */
   size_t n;            /* rows of the last fit */
   double loglik;       /* sum of log p(x_i) at the final parameters */
   double aic, bic;
@@ -112,6 +122,10 @@ nl_status nl_gmm_fit(nl_gmm *g, const double *x, size_t n, const nl_gmm_options 
 /* sum_i log p(x_i) under g; logp (may be NULL) receives each log p(x_i). */
 nl_status nl_gmm_loglik(const nl_gmm *g, const double *x, size_t n, double *total,
                         double *logp, nl_error *err);
+
+/* sklearn's predict: labels[i] (0..k-1) is the component of largest
+ * w_k N(x_i; mu_k, Sigma_k), the first of equal ones. */
+nl_status nl_gmm_predict(const nl_gmm *g, const double *x, size_t n, int *labels, nl_error *err);
 
 /* n draws from the mixture into out (n x d); labels (may be NULL) gets the
  * component of each draw. */

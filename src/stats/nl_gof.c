@@ -563,3 +563,38 @@ size_t nl_stats_chisq_bin(double v, size_t k, double a, double b)
 {
   return bin_index(v, k, a, b);
 }
+
+/* ---- one-sided alternatives ---------------------------------------------- */
+
+nl_status nl_stats_ks_alternative_parse(const char *name, nl_stats_ks_alternative *alt,
+                                        nl_error *err)
+{
+  if (!strcmp(name, "two-sided")) *alt = NL_KS_TWO_SIDED;
+  else if (!strcmp(name, "less")) *alt = NL_KS_LESS;
+  else if (!strcmp(name, "greater")) *alt = NL_KS_GREATER;
+  else
+    return nl_fail(err, NL_EINVAL, "unknown alternative '%s' (two-sided, less or greater)", name);
+  return NL_OK;
+}
+
+void nl_stats_ks_one_sided(nl_stats_ks_result *r, nl_stats_ks_alternative alt)
+{
+  if (alt == NL_KS_TWO_SIDED) return;
+  double d = alt == NL_KS_GREATER ? r->d_plus : r->d_minus;
+  if (r->n2 == 0) {
+    /* the exact one-sided law for any n: scipy's ksone.sf = special.smirnov */
+    r->d = d;
+    r->p = nl_stats_smirnov_sf(r->n, d);
+    r->method = NL_KS_SMIRNOV;
+    return;
+  }
+  r->p = nl_stats_ks2_sf_one_sided(r->n, r->n2, d, &r->method);
+  r->d = d;
+  if (r->method == NL_KS_TWO_SAMPLE_EXACT) {
+    /* the lattice value the exact p belongs to, as for the two-sided test */
+    long g = (long)r->n, h = (long)r->n2;
+    while (h) { long t = g % h; g = h; h = t; }
+    double lcm = (double)((long)r->n / g * (long)r->n2);
+    r->d = nearbyint(d * lcm) / lcm;
+  }
+}

@@ -81,29 +81,53 @@ typedef double (*nl_stats_cdf_fn)(double x, void *params);
  * clipped to [0, 1]: (x - a) / (b - a), scipy.stats.uniform(a, b - a).cdf. */
 double nl_stats_cdf_uniform(double x, void *params);
 
-/* Named distributions with scipy's loc/scale convention, F(x) = F0((x - loc) / scale):
- *   uniform  F0(z) = z on [0, 1]   (uniform on [loc, loc + scale]: scipy.stats.uniform)
- *   norm     F0(z) = Phi(z)       (scipy.special.ndtr's erf/erfc split: scipy.stats.norm)
- *   expon    F0(z) = 1 - e^-z, z >= 0 (as -expm1(-z): scipy.stats.expon)
+/* Named distributions with scipy's shape/loc/scale convention, F(x) = F0((x - loc) / scale)
+ * with F0 the standard form of scipy.stats.NAME with its shape parameters:
+ *   uniform      z on [0, 1]       (uniform on [loc, loc + scale])
+ *   norm         Phi(z)            (scipy.special.ndtr's erf/erfc split)
+ *   expon        1 - e^-z, z >= 0  (as -expm1(-z))
+ *   gamma a      P(a, z)           (regularised lower incomplete gamma, gsl_cdf_gamma_P)
+ *   beta a b     I_z(a, b)         (gsl_cdf_beta_P)
+ *   lognorm s    Phi(ln z / s)     (scipy's lognorm(s, scale = e^mu))
+ *   t df         Student's t       (gsl_cdf_tdist_P)
+ *   chi2 df      chi-square        (gsl_cdf_chisq_P)
+ *   weibull_min c  1 - exp(-z^c), z >= 0
+ *   cauchy       1/2 + atan(z) / pi
+ *   logistic     1 / (1 + e^-z)
+ *   laplace      e^z / 2 below 0, 1 - e^-z / 2 above
+ *   pareto b     1 - z^-b, z >= 1
+ *   rayleigh     1 - exp(-z^2 / 2), z >= 0
  * and a tabulated CDF (points x_i strictly increasing, F_i non-decreasing in
  * [0, 1]) interpolated linearly and constant beyond its ends (numpy.interp).
  *   nl_stats_dist dist;
- *   nl_stats_dist_init(&dist, NL_DIST_NORM, 0.0, 1.0, &err);   // or nl_stats_dist_table
- *   nl_stats_ks_test(x, n, nl_stats_dist_cdf, &dist, &r, &err); // scipy.stats.kstest(x, 'norm')
+ *   double a = 2.5;
+ *   nl_stats_dist_init_shape(&dist, NL_DIST_GAMMA, &a, 1, 0.0, 1.0, &err);
+ *   nl_stats_ks_test(x, n, nl_stats_dist_cdf, &dist, &r, &err); // kstest(x, 'gamma', (2.5,))
  * A table's arrays are not copied: they must outlive the dist. */
-typedef enum { NL_DIST_UNIFORM, NL_DIST_NORM, NL_DIST_EXPON, NL_DIST_TABLE } nl_stats_dist_kind;
+typedef enum {
+  NL_DIST_UNIFORM, NL_DIST_NORM, NL_DIST_EXPON, NL_DIST_GAMMA, NL_DIST_BETA, NL_DIST_LOGNORM,
+  NL_DIST_T, NL_DIST_CHI2, NL_DIST_WEIBULL_MIN, NL_DIST_CAUCHY, NL_DIST_LOGISTIC, NL_DIST_LAPLACE,
+  NL_DIST_PARETO, NL_DIST_RAYLEIGH, NL_DIST_TABLE
+} nl_stats_dist_kind;
 typedef struct {
   nl_stats_dist_kind kind;
   double loc, scale;
+  double shape[2];
   size_t m;
   const double *x, *F;
 } nl_stats_dist;
-/* "uniform", "norm", "expon" -> kind; NL_EINVAL otherwise. */
+/* scipy's name ("gamma", "weibull_min", ...) -> kind; NL_EINVAL otherwise. */
 nl_status nl_stats_dist_parse(const char *name, nl_stats_dist_kind *kind, nl_error *err);
 const char *nl_stats_dist_name(nl_stats_dist_kind kind);
-/* scale > 0 and loc finite, else NL_EINVAL. */
+/* How many shape parameters the kind takes (0, 1 or 2), and their scipy names ("a,b"). */
+int nl_stats_dist_nshape(nl_stats_dist_kind kind);
+const char *nl_stats_dist_shape_names(nl_stats_dist_kind kind);
+/* scale > 0 and loc finite, else NL_EINVAL; a kind with shapes is refused. */
 nl_status nl_stats_dist_init(nl_stats_dist *d, nl_stats_dist_kind kind, double loc, double scale,
                              nl_error *err);
+/* As nl_stats_dist_init with the kind's nshape shapes, each positive and finite. */
+nl_status nl_stats_dist_init_shape(nl_stats_dist *d, nl_stats_dist_kind kind, const double *shape,
+                                   size_t nshape, double loc, double scale, nl_error *err);
 nl_status nl_stats_dist_table(nl_stats_dist *d, const double *x, const double *F, size_t m,
                               nl_error *err);
 /* An nl_stats_cdf_fn; params is an nl_stats_dist *. */
@@ -149,6 +173,24 @@ double nl_stats_kolmogorov_sf(double lambda);
  * (d is rounded to the lattice h / lcm(n1, n2) first), else asymptotic;
  * scipy.stats.ks_2samp(method='auto'). */
 double nl_stats_ks2_sf(size_t n1, size_t n2, double d, nl_stats_ks_method *method);
+
+/* One-sided P(D+_{n1,n2} >= d) (the same law for D-): exact for n1, n2 <= 10000
+ * while the path counts fit a double, else Hodges' corrected limit;
+ * scipy.stats.ks_2samp(alternative='greater', method='auto'). */
+double nl_stats_ks2_sf_one_sided(size_t n1, size_t n2, double d, nl_stats_ks_method *method);
+
+/* scipy.stats.kstest's alternatives, F_n the sample's ECDF and F the null's
+ * CDF (two samples: F_1 and F_2): "greater" tests F_n > F somewhere with
+ * D+ = max(F_n - F) (max(F_1 - F_2)), "less" F_n < F with D- = max(F - F_n)
+ * (max(F_2 - F_1)); two-sided is D = max(D+, D-). */
+typedef enum { NL_KS_TWO_SIDED, NL_KS_LESS, NL_KS_GREATER } nl_stats_ks_alternative;
+/* "two-sided", "less", "greater"; NL_EINVAL otherwise. */
+nl_status nl_stats_ks_alternative_parse(const char *name, nl_stats_ks_alternative *alt,
+                                        nl_error *err);
+/* Turns a two-sided result of nl_stats_ks_test* (n2 == 0) or nl_stats_ks2_test
+ * into the one-sided test's: d = d_plus (greater) or d_minus (less), p from
+ * the exact one-sided law (smirnov_sf; two-sample: nl_stats_ks2_sf_one_sided). */
+void nl_stats_ks_one_sided(nl_stats_ks_result *r, nl_stats_ks_alternative alt);
 
 /* D+, D-, D of CDF values u[0..n-1] sorted ascending (no p-value). */
 void nl_stats_ks_statistic(const double *u, size_t n, double *d_plus, double *d_minus);

@@ -84,7 +84,7 @@ NL_TEST(bad_input)
   NL_CHECK(nl_cluster_fcluster_distance(Z, 3, -1.0, lab, NULL, &err) == NL_EINVAL && strstr(err.msg, ">= 0"));
   NL_CHECK(nl_cluster_fcluster_maxclust(Z, 3, 0, lab, NULL, &err) == NL_EINVAL);
   nl_cluster_linkage_method m;
-  NL_CHECK(nl_cluster_linkage_method_parse("median", &m, &err) == NL_EINVAL);
+  NL_CHECK(nl_cluster_linkage_method_parse("medoid", &m, &err) == NL_EINVAL);
   NL_CHECK(nl_cluster_linkage_method_parse("ward", &m, &err) == NL_OK && m == NL_LINKAGE_WARD);
 }
 

@@ -1,9 +1,10 @@
 /* Tests of nl_gmm.h against scikit-learn 1.2 GaussianMixture started from the
  * same k-means labels (tests/reference/make_stats_vectors.py: 750 points in
- * 4-D from 3 correlated Gaussians; k = 1..4, full and diagonal).
+ * 4-D from 3 correlated Gaussians; k = 1..4, full, diagonal, tied and spherical).
  * Tolerances: log-likelihood, AIC, BIC 1e-8 relative (EM from the same
  * responsibilities; only rounding differs); iteration count and converged
- * flag exact; k = 3 weights and means 1e-6 absolute (data scale ~5).
+ * flag exact; k = 3 weights and means 1e-6 absolute (data scale ~5), and
+ * predict's labels equal sklearn's on every row up to renaming the components.
  */
 #include "stats/nl_gmm.h"
 #include "nl_test.h"
@@ -22,6 +23,24 @@ static int *load_labels(size_t k, size_t n)
   return lab;
 }
 
+/* nl_gmm_predict's labels against sklearn's predict, up to a renaming of
+ * the components (one-to-one): every row must agree. */
+static int predict_matches(const nl_gmm *g, const double *x, size_t n, const char *file)
+{
+  nl_table *t = vec_read(file);
+  int *lab = nl_xmalloc(n * sizeof(int)), map[64], back[64], ok = t->nrows == n;
+  for (int c = 0; c < 64; c++) map[c] = back[c] = -1;
+  ok = ok && nl_gmm_predict(g, x, n, lab, NULL) == NL_OK;
+  for (size_t i = 0; i < n && ok; i++) {
+    int a = lab[i], b = (int)nl_table_get(t, i, 0);
+    if (map[a] < 0 && back[b] < 0) { map[a] = b; back[b] = a; }
+    ok = map[a] == b && back[b] == a;
+  }
+  free(lab);
+  nl_table_free(t);
+  return ok;
+}
+
 NL_TEST(em_matches_sklearn_from_same_labels)
 {
   size_t n, d;
@@ -31,7 +50,7 @@ NL_TEST(em_matches_sklearn_from_same_labels)
     size_t k = (size_t)vec_get(t, r, "k");
     nl_gmm_options o;
     nl_gmm_options_default(&o);
-    o.covariance = strcmp(vec_text(t, r, "covariance"), "full") == 0 ? NL_GMM_FULL : NL_GMM_DIAG;
+    NL_CHECK(nl_gmm_covariance_parse(vec_text(t, r, "covariance"), &o.covariance, NULL) == NL_OK);
     int *lab = load_labels(k, n);
     o.init_labels = lab;
     nl_gmm *g = nl_gmm_alloc(k, d, o.covariance);
@@ -51,6 +70,8 @@ NL_TEST(em_matches_sklearn_from_same_labels)
         for (size_t j = 0; j < d; j++) NL_CHECK_NEAR(g->means[c * d + j], nl_table_get(p, c, 1 + j), 1e-6);
       }
       nl_table_free(p);
+      snprintf(name, sizeof name, "gmm_predict_k3_%s.tsv", vec_text(t, r, "covariance"));
+      NL_CHECK(predict_matches(g, x, n, name));
     }
     nl_gmm_free(g);
     free(lab);

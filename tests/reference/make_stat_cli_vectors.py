@@ -1,7 +1,10 @@
 #!/usr/bin/python3
 """Reference vectors for `noiselab stat`: one-sample KS against
-named distributions with scipy's loc/scale convention and against a
-tabulated CDF, Kuiper's V against the same CDFs, Ward linkage.
+named distributions with scipy's shape/loc/scale convention (all 14 the
+command names, with the one-sided alternatives) and against a tabulated
+CDF, Kuiper's V against the same CDFs, two-sample KS with each
+alternative, Ward linkage, and linkage with pdist's metrics and the
+weighted, centroid and median methods.
 
 Writes TSV/CSV files to tests/reference/stat_cli/; tests/cli_stat.sh reads
 only those, so the tests need no Python. Regenerate with Debian's scipy:
@@ -90,6 +93,95 @@ def make_ks():
     write("ks_dist.tsv", ["file", "dist", "loc", "scale", "D", "p", "V"], rows)
 
 
+# (distribution, shapes, loc, scale, n) drawn from; each is tested against
+# itself and against a neighbour (the same shapes scaled by 1.15, loc + 0.1
+# scale) so that both large and small p-values are checked.
+SHAPED = [
+    ("norm", (), 0.3, 1.5, 90),
+    ("uniform", (), -1.0, 4.0, 70),
+    ("expon", (), 0.2, 2.0, 120),
+    ("gamma", (2.5,), 0.0, 1.3, 150),
+    ("beta", (2.0, 5.0), 0.0, 1.0, 110),
+    ("lognorm", (0.6,), 0.0, np.exp(0.4), 130),
+    ("t", (4.0,), 0.5, 1.0, 100),
+    ("chi2", (3.0,), 0.0, 1.0, 80),
+    ("weibull_min", (1.7,), 0.0, 2.0, 140),
+    ("cauchy", (), -0.5, 0.7, 60),
+    ("logistic", (), 1.0, 0.8, 160),
+    ("laplace", (), 0.0, 1.2, 50),
+    ("pareto", (3.0,), 0.0, 1.0, 200),
+    ("rayleigh", (), 0.1, 1.5, 75),
+]
+
+
+def make_ks_shapes():
+    """kstest against every named distribution with scipy's (shapes, loc,
+    scale), with the two one-sided alternatives beside the two-sided test."""
+    rng = np.random.default_rng(20261127)
+    rows = []
+    for name, shapes, loc, scale, n in SHAPED:
+        dist = getattr(st, name)
+        x = dist.rvs(*shapes, loc=loc, scale=scale, size=n, random_state=rng)
+        fname = f"dist_{name}_{n}.tsv"
+        write(fname, ["value"], [[v] for v in x])
+        near = tuple(a * 1.15 for a in shapes)
+        for sh, lo, sc in [(shapes, loc, scale), (near, loc + 0.1 * scale, scale * 1.1)]:
+            args = tuple(sh) + (lo, sc)
+            r = {a: st.kstest(x, name, args=args, alternative=a)
+                 for a in ("two-sided", "less", "greater")}
+            v = kuiper_v(dist.cdf(x, *args))
+            rows.append([fname, name, ",".join(repr(float(a)) for a in sh) or "-", lo, sc,
+                         r["two-sided"].statistic, r["two-sided"].pvalue,
+                         r["less"].statistic, r["less"].pvalue,
+                         r["greater"].statistic, r["greater"].pvalue, v])
+    write("ks_shapes.tsv", ["file", "dist", "shape", "loc", "scale", "D", "p", "D_less", "p_less",
+                            "D_greater", "p_greater", "V"], rows)
+
+
+def make_ks2_alternatives():
+    """ks_2samp with each alternative: equal sizes (the product form), unequal
+    sizes (Hodges' path count), sizes whose path counts overflow a double and
+    sizes past 10000 (both asymptotic)."""
+    rng = np.random.default_rng(20261128)
+    sizes = [(40, 40, 0.3), (37, 52, 0.4), (120, 75, -0.2), (300, 500, 0.1),
+             (700, 900, 0.05), (12000, 300, 0.15)]
+    rows = []
+    for n1, n2, shift in sizes:
+        a = np.round(rng.normal(0.0, 1.0, n1), 3)   # rounded: ties across the samples
+        b = np.round(rng.normal(shift, 1.0, n2), 3)
+        fa, fb = f"ks2_{n1}_{n2}_a.tsv", f"ks2_{n1}_{n2}_b.tsv"
+        write(fa, ["value"], [[v] for v in a])
+        write(fb, ["value"], [[v] for v in b])
+        for alt in ("two-sided", "less", "greater"):
+            r = st.ks_2samp(a, b, alternative=alt)
+            rows.append([fa, fb, alt, r.statistic, r.pvalue])
+    write("ks2_alt.tsv", ["file1", "file2", "alternative", "D", "p"], rows)
+
+
+def make_linkage_metrics():
+    """linkage with pdist's metrics, weighted linkage, and centroid and median
+    linkage (Euclidean), in long form: every row of every Z, and fcluster's
+    maxclust 4 labels."""
+    rng = np.random.default_rng(20261129)
+    centres = np.array([[1.0, 1.0, 2.0, 0.5], [4.0, 1.5, 1.0, 3.0], [2.0, 5.0, 4.0, 1.0]])
+    # positive coordinates (canberra and braycurtis), clusters of 14 points
+    X = np.vstack([c + rng.gamma(2.0, 0.4, (14, 4)) for c in centres])
+    write("metric_X.tsv", ["x0", "x1", "x2", "x3"], X.tolist())
+    cases = [(m, d) for m in ("single", "complete", "average", "weighted")
+             for d in ("sqeuclidean", "cityblock", "chebyshev", "cosine", "correlation",
+                       "canberra", "braycurtis")]
+    cases += [("weighted", "euclidean"), ("centroid", "euclidean"), ("median", "euclidean")]
+    zrows, lrows = [], []
+    for method, metric in cases:
+        Z = sch.linkage(X, method, metric)
+        for r in Z:
+            zrows.append([method, metric, int(r[0]), int(r[1]), r[2], int(r[3])])
+        for i, lab in enumerate(sch.fcluster(Z, 4, "maxclust")):
+            lrows.append([method, metric, i, int(lab)])
+    write("metric_Z.tsv", ["method", "metric", "a", "b", "dist", "size"], zrows)
+    write("metric_labels.tsv", ["method", "metric", "row", "maxclust_4"], lrows)
+
+
 def make_ward():
     rng = np.random.default_rng(7)
     centres = np.array([[0.0, 0.0, 0.0], [4.0, 0.5, 1.0], [1.0, 5.0, -1.0], [5.0, 5.0, 3.0]])
@@ -104,6 +196,9 @@ def make_ward():
 def main():
     os.makedirs(OUT, exist_ok=True)
     make_ks()
+    make_ks_shapes()
+    make_ks2_alternatives()
+    make_linkage_metrics()
     make_ward()
     with open(os.path.join(OUT, "VERSIONS"), "w") as f:
         f.write(f"scipy {scipy.__version__}\nnumpy {np.__version__}\n")

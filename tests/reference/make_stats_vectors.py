@@ -235,7 +235,7 @@ def make_gmm():
     for kk in (1, 2, 3, 4):
         labels = KMeans(kk, n_init=1, random_state=kk).fit(X).labels_
         write(f"gmm_labels_k{kk}.tsv", ["label"], [[int(l)] for l in labels])
-        for cov in ("full", "diag"):
+        for cov in ("full", "diag", "tied", "spherical"):
             g = GMMFromLabels(labels=labels, n_components=kk, covariance_type=cov,
                               tol=1e-3, reg_covar=1e-6, max_iter=100)
             g.fit(X)
@@ -244,6 +244,8 @@ def make_gmm():
             if kk == 3:
                 P = [[w, *m] for w, m in zip(g.weights_, g.means_)]
                 write(f"gmm_params_k3_{cov}.tsv", ["weight"] + [f"mean{j}" for j in range(d)], P)
+                # predict(X): each row's component (0-based, sklearn's order)
+                write(f"gmm_predict_k3_{cov}.tsv", ["label"], [[int(l)] for l in g.predict(X)])
     write("gmm_fit.tsv", ["k", "covariance", "loglik", "iterations", "converged", "aic", "bic"], rows)
 
 
