@@ -25,7 +25,8 @@ _CDF = ctypes.CFUNCTYPE(ctypes.c_double, ctypes.c_double, ctypes.c_void_p)
 
 class _Dist(ctypes.Structure):
     _fields_ = [("kind", ctypes.c_int), ("loc", ctypes.c_double), ("scale", ctypes.c_double),
-                ("m", ctypes.c_size_t), ("x", c_double_p), ("F", c_double_p)]
+                ("shape", ctypes.c_double * 2), ("m", ctypes.c_size_t), ("x", c_double_p),
+                ("F", c_double_p)]
 
 
 class _KsResult(ctypes.Structure):
@@ -48,8 +49,10 @@ class _ChisqResult(ctypes.Structure):
 _E = ctypes.POINTER(Error)
 _dist_parse = fn("nl_stats_dist_parse", ctypes.c_int, ctypes.c_char_p,
                  ctypes.POINTER(ctypes.c_int), _E)
-_dist_init = fn("nl_stats_dist_init", ctypes.c_int, ctypes.POINTER(_Dist), ctypes.c_int,
-                ctypes.c_double, ctypes.c_double, _E)
+_dist_init = fn("nl_stats_dist_init_shape", ctypes.c_int, ctypes.POINTER(_Dist), ctypes.c_int,
+                c_double_p, ctypes.c_size_t, ctypes.c_double, ctypes.c_double, _E)
+_dist_nshape = fn("nl_stats_dist_nshape", ctypes.c_int, ctypes.c_int)
+_dist_shape_names = fn("nl_stats_dist_shape_names", ctypes.c_char_p, ctypes.c_int)
 _dist_cdf = ctypes.cast(fn("nl_stats_dist_cdf", ctypes.c_double, ctypes.c_double,
                            ctypes.c_void_p), _CDF)
 _ks_test = fn("nl_stats_ks_test", ctypes.c_int, c_double_p, ctypes.c_size_t, _CDF,
@@ -126,12 +129,16 @@ class _Cdf:
         if isinstance(cdf, str):
             kind = ctypes.c_int()
             check(_dist_parse(cdf.encode(), ctypes.byref(kind), ctypes.byref(err)), err)
-            args = tuple(args)
-            if len(args) > 2:
-                raise ValueError(f"args: {cdf} takes (loc, scale), got {len(args)} values")
-            loc, scale = (tuple(float(a) for a in args) + (0.0, 1.0)[len(args):])
+            args = tuple(float(a) for a in args)
+            k = _dist_nshape(kind.value)
+            names = (_dist_shape_names(kind.value) or b"").decode()
+            want = f"({names + ', ' if k else ''}loc, scale)"
+            if len(args) < k or len(args) > k + 2:
+                raise ValueError(f"args: {cdf} takes {want}, got {len(args)} values")
+            shape = (ctypes.c_double * 2)(*args[:k])
+            loc, scale = (args[k:] + (0.0, 1.0)[len(args) - k:])
             self.dist = _Dist()
-            check(_dist_init(ctypes.byref(self.dist), kind.value, loc, scale,
+            check(_dist_init(ctypes.byref(self.dist), kind.value, shape, k, loc, scale,
                              ctypes.byref(err)), err)
             self.fn = _dist_cdf
             self.params = ctypes.cast(ctypes.byref(self.dist), ctypes.c_void_p)
@@ -168,9 +175,12 @@ def kstest(rvs, cdf, args=()):
     rvs : array_like
         the sample (flattened); NaN or infinite values are a ValueError.
     cdf : str or callable
-        'uniform', 'norm' or 'expon', or F(x, *args) -> [0, 1].
+        one of scipy.stats' names the library has (uniform, norm, expon, gamma,
+        beta, lognorm, t, chi2, weibull_min, cauchy, logistic, laplace, pareto,
+        rayleigh), or F(x, *args) -> [0, 1].
     args : tuple
-        (loc, scale) for a name (default (0, 1)); extra arguments of a callable.
+        for a name, scipy's (shapes..., loc, scale), loc and scale optional
+        (default 0, 1); extra arguments of a callable.
 
     Returns
     -------

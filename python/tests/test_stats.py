@@ -28,6 +28,9 @@ def rel(a, b, tol):
     ("norm", (0.0, 1.0), lambda r, n: r.normal(0.1, 1.0, n)),
     ("expon", (0.5, 3.0), lambda r, n: 0.5 + r.exponential(3.0, n)),
     ("uniform", (0.0, 2 * np.pi), lambda r, n: r.uniform(0, 2 * np.pi, n) ** 1.02),
+    ("gamma", (2.5, 0.1, 1.5), lambda r, n: 0.1 + r.gamma(2.5, 1.5, n)),
+    ("lognorm", (0.7, 0.0, 2.0), lambda r, n: 2.0 * r.lognormal(0.0, 0.72, n)),
+    ("weibull_min", (1.3,), lambda r, n: r.weibull(1.3, n)),
 ])
 def test_kstest_is_scipy(n, dist, args, draw):
     x = draw(np.random.default_rng(n), n)
@@ -137,7 +140,7 @@ def test_gmm_kmeans_init_finds_clusters():
     (lambda: ns.kstest([0.1], lambda x: 1 / 0), ZeroDivisionError, "division"),
     (lambda: ns.chisquare([1, 2, 3], [1, 2]), ValueError, "f_exp: 2 expected"),
     (lambda: ns.linkage(np.zeros(5), "ward"), ValueError, "2-D"),
-    (lambda: ns.linkage(np.zeros((5, 2)), "median"), ValueError, "median"),
+    (lambda: ns.linkage(np.zeros((5, 2)), "medoid"), ValueError, "medoid"),
     (lambda: ns.GaussianMixture(2, covariance_type="tied"), ValueError, "tied"),
     (lambda: ns.GaussianMixture(2).score(np.zeros((3, 2))), ValueError, "not fitted"),
     (lambda: ns.GaussianMixture(5).fit(np.zeros((3, 2))), ValueError, ""),
