@@ -42,8 +42,10 @@ static inline float *nl_image_pixel(const nl_image *im, int x, int y)
  * about 1400 times. A header declaring more bytes of samples than
  * NL_IMAGE_MAX_EXPANSION times the file's size (a 264-byte TIFF of
  * 776 x 65474) is refused before the decoder allocates or loops over
- * them. Not covered: CCITT fax coding and EXR's lossy DWA of constant
- * images, which can go further. */
+ * them; in a tiled file, the samples of the tiles that cover the image
+ * (a 1 x 1 TIFF may declare one tile of 16384 x 16384). Not covered:
+ * CCITT fax coding and EXR's lossy DWA of constant images, which can go
+ * further. */
 #define NL_IMAGE_MAX_EXPANSION 2048
 nl_status nl_image_read(const char *path, nl_image **out, nl_error *err);
 /* Writing embeds no time: TIFF DateTime / EXR capDate are left out, so the

@@ -136,6 +136,14 @@ static nl_status check_exr_header(const char *path, FILE *f, long long fsize, nl
   }
 }
 
+/* Pixels along one axis that the tiles covering n pixels hold (n when the
+ * file is not tiled: tile size 0). */
+static double tile_grid(int n, int tile)
+{
+  if (n < 1) n = 1;
+  return tile > 0 ? std::ceil((double)n / tile) * tile : n;
+}
+
 /* nl_image_read (nl_image.c) has named a missing, unreadable or special
  * file before loading this module; what stays here is the EXR header check
  * (its size and open can still fail if the file changed since). */
@@ -179,13 +187,27 @@ extern "C" nl_status nl_oiio_read(const char *path, nl_image **out, nl_error *er
                    path, spec.width, spec.height, spec.depth > 1 ? " (and depth)" : "",
                    (double)NL_IMAGE_MAX_PIXELS);
   // A header can declare any size; the samples must come from the file's
-  // bytes. A special file (a FIFO: size 0) is not held to it.
+  // bytes. A special file (a FIFO: size 0) is not held to it. A tiled file
+  // stores whole tiles, and a codec decodes (OIIO converts) a whole tile to
+  // read any pixel of it: a 1 x 1 TIFF may declare 16384 x 16384 tiles,
+  // 1 GB and 25 s (fuzz build) from 162 bytes. What is held to the file's size
+  // is therefore the grid of tiles that covers the image.
+  double grid = tile_grid(spec.width, spec.tile_width) * tile_grid(spec.height, spec.tile_height) *
+                tile_grid(spec.depth, spec.tile_depth);
+  if (grid > NL_IMAGE_MAX_PIXELS)
+    return nl_fail(err, NL_EFORMAT, "%s: %d x %d pixels in tiles of %d x %d is beyond the "
+                   "%.0f-pixel limit", path, spec.width, spec.height, spec.tile_width,
+                   spec.tile_height, (double)NL_IMAGE_MAX_PIXELS);
   int bits = spec.get_int_attribute("oiio:BitsPerSample", (int)spec.format.size() * 8);
-  double raw = npixd * spec.depth * spec.nchannels * (bits > 0 ? bits : 1) / 8.0;
-  if (file_bytes > 0 && raw > (double)file_bytes * NL_IMAGE_MAX_EXPANSION)
-    return nl_fail(err, NL_EFORMAT, "%s: declares %d x %d pixels (%.3g bytes of samples) in %lld "
+  double raw = grid * spec.nchannels * (bits > 0 ? bits : 1) / 8.0;
+  if (file_bytes > 0 && raw > (double)file_bytes * NL_IMAGE_MAX_EXPANSION) {
+    char tiles[64] = "";
+    if (spec.tile_width > 0)
+      std::snprintf(tiles, sizeof tiles, " in tiles of %d x %d", spec.tile_width, spec.tile_height);
+    return nl_fail(err, NL_EFORMAT, "%s: declares %d x %d pixels%s (%.3g bytes of samples) in %lld "
                    "bytes, more than compression expands to (%dx): the file is damaged",
-                   path, spec.width, spec.height, raw, file_bytes, NL_IMAGE_MAX_EXPANSION);
+                   path, spec.width, spec.height, tiles, raw, file_bytes, NL_IMAGE_MAX_EXPANSION);
+  }
   if (!nl_mem_fits(bytes)) {
     char b1[32], b2[32];
     return nl_fail(err, NL_ENOMEM, "%s: %d x %d x %d pixels need %s to read; this machine has %s",

@@ -316,6 +316,39 @@ NL_TEST(header_larger_than_file_refused)
   free(p);
 }
 
+/* A 150-byte TIFF of 1 x 1 pixel in one tile of 16384 x 16384: a codec
+ * decodes, and OpenImageIO converts to float, the whole tile to read the
+ * pixel (1 GB, over 10 s under the fuzzers' sanitizers). The tiles
+ * covering the image are held to the file's size, not the image alone. */
+NL_TEST(tiles_larger_than_file_refused)
+{
+  static const unsigned long tags[10][3] = {   /* tag, type (3 short, 4 long), value */
+    {256, 4, 1}, {257, 4, 1}, {258, 3, 8}, {259, 3, 1}, {262, 3, 1}, {277, 3, 1},
+    {322, 4, 16384}, {323, 4, 16384}, {324, 4, 134}, {325, 4, 16}};
+  unsigned char t[150] = {'I', 'I', 42, 0, 8, 0, 0, 0, 10, 0};
+  for (int i = 0; i < 10; i++) {
+    unsigned char *e = t + 10 + 12 * i;
+    put16(e, (unsigned)tags[i][0]);
+    put16(e + 2, (unsigned)tags[i][1]);
+    put32(e + 4, 1);
+    if (tags[i][1] == 3) put16(e + 8, (unsigned)tags[i][2]);
+    else put32(e + 8, tags[i][2]);
+  }
+  memset(t + 134, 0x80, 16);
+  char *p = nl_path_join(dir, "huge_tiles.tif");
+  FILE *f = fopen(p, "wb");
+  fwrite(t, 1, sizeof t, f);
+  fclose(f);
+  nl_image *im = NULL;
+  nl_error err = {{0}};
+  NL_CHECK(nl_image_read(p, &im, &err) == NL_EFORMAT && im == NULL);
+  NL_CHECK(strstr(err.msg, "declares 1 x 1 pixels in tiles of 16384 x 16384 (2.68e+08 bytes of "
+                  "samples) in 150 bytes") != NULL);
+  if (!strstr(err.msg, "tiles of")) fprintf(stderr, "  %s\n", err.msg);
+  if (im) nl_image_free(im);
+  free(p);
+}
+
 NL_TEST(write_names_the_parent_problem)
 {
   nl_image *a = ramp(4, 4, 1);

@@ -73,10 +73,15 @@ static nl_status sorted_cdf(const double *x, size_t n, nl_stats_cdf_fn cdf, void
   return NL_OK;
 }
 
+/* The width b - a must be finite too: for [-1e308, 1e308] it overflows, and
+ * the uniform CDF (x - a) / (b - a) is then 0 or NaN for every x. */
 static nl_status check_interval(double a, double b, nl_error *err)
 {
   if (!(isfinite(a) && isfinite(b) && a < b))
     return nl_fail(err, NL_EINVAL, "interval [%g, %g) is empty or not finite", a, b);
+  if (!isfinite(b - a))
+    return nl_fail(err, NL_EINVAL,
+                   "interval [%g, %g) is wider than a double holds: rescale the data", a, b);
   return NL_OK;
 }
 
@@ -495,6 +500,12 @@ gsl_histogram *nl_stats_histogram_uniform(const double *x, size_t n, size_t k, d
 {
   if (k < 1 || check_interval(a, b, err)) {
     if (k < 1) nl_fail(err, NL_EINVAL, "histogram needs at least 1 bin");
+    return NULL;
+  }
+  /* bin_index scales by k / (b - a): infinite for 2 bins of [0, 1e-308],
+   * and 0 * inf is NaN, which has no bin. */
+  if (!isfinite((double)k / (b - a))) {
+    nl_fail(err, NL_EINVAL, "interval [%g, %g) is too narrow for %zu equal bins", a, b, k);
     return NULL;
   }
   gsl_histogram *h = gsl_histogram_alloc(k);

@@ -260,6 +260,18 @@ NL_TEST(bad_input_is_an_error)
   double y[] = {0.1, 0.2, 1.5};
   NL_CHECK(nl_stats_chisq_test_uniform(y, 3, 1, 0, 1, &c, &err) == NL_EINVAL);
   NL_CHECK(nl_stats_chisq_test_uniform(y, 3, 2, 0, 1, &c, &err) == NL_EINVAL && strstr(err.msg, "outside"));
+  /* Intervals whose width, or bins per unit, overflow a double: every value
+   * would get the CDF 0 or NaN and no bin. */
+  double wide[] = {-1e308, 0.0, 1e308};
+  NL_CHECK(nl_stats_chisq_test_uniform(wide, 3, 2, -1e308, 1e308, &c, &err) == NL_EINVAL &&
+           strstr(err.msg, "wider than a double holds"));
+  NL_CHECK(nl_stats_ks_test_uniform(wide, 3, -1e308, 1e308, &r, &err) == NL_EINVAL &&
+           strstr(err.msg, "wider than a double holds"));
+  nl_stats_kuiper_result kr;
+  NL_CHECK(nl_stats_kuiper_test_uniform(wide, 3, -1e308, 1e308, &kr, &err) == NL_EINVAL);
+  double narrow[] = {0.0, 0.0, 5e-324};
+  NL_CHECK(nl_stats_chisq_test_uniform(narrow, 3, 2, 0.0, 5e-324, &c, &err) == NL_EINVAL &&
+           strstr(err.msg, "too narrow for 2 equal bins"));
   /* A CDF outside [0, 1]: the message names the value and where, read
    * before anything is freed (the sanitizer build checks that). */
   NL_CHECK(nl_stats_ks_test(y, 3, bad_cdf, NULL, &r, &err) == NL_EINVAL &&

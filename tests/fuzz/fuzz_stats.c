@@ -5,16 +5,19 @@
  *     cutoff; a linkage that succeeded must give valid merges, so the flat
  *     clusters must succeed, with every label in 1..k;
  *   gmm (nl_gmm.h): a fit of 1..4 components, full or diagonal, few
- *     iterations (the cost of a unit, not EM's convergence, is bounded);
+ *     iterations (the cost of a unit, not EM's convergence, is bounded),
+ *     then an AIC selection from 1 up to that many components (`stat gmm
+ *     --select-aic`): the selected model must be one of its path's;
  *   ks, kuiper and ks2 (nl_stats.h) on the first column, against the
- *     uniform on its range and a normal; a p-value must be in [0, 1].
+ *     uniform on its range and a normal, and chisq on 2..9 equal bins of
+ *     that range; a p-value must be in [0, 1].
  * Rows beyond MAX_ROWS are not clustered or fitted, and tables wider than
  * GMM_MAX_COLS are not fitted: a unit stays well under a second (hclust is
  * O(n^2) in time and memory, a full covariance's Cholesky O(d^3)).
  *
  * Option byte: bits 0-1 linkage (single, complete, average, ward), bits 2-3
  * gmm components - 1, bit 4 diagonal covariance, bits 5-7 the number of
- * flat clusters asked for (1..8). */
+ * flat clusters asked for (1..8), one less than chisq's bins. */
 #include "stats/nl_cluster.h"
 #include "stats/nl_gmm.h"
 #include "stats/nl_stats.h"
@@ -86,9 +89,26 @@ static void fuzz_gmm(const double *x, size_t n, size_t d, size_t k, int diag)
     }
   }
   nl_gmm_free(g);
+  nl_gmm_step path[4];
+  size_t np = 0;
+  g = NULL;
+  st = nl_gmm_select_aic(x, n, d, 1, 0.0, k, &o, &g, path, &np, &err);
+  nl_fuzz_check_error(st, &err);
+  if (st == NL_OK) {
+    int found = 0;
+    for (size_t i = 0; i < np; i++) found |= g && path[i].k == g->k;
+    if (!found || np < 1 || np > k) {
+      fprintf(stderr, "nl_fuzz: AIC selection of %zu models did not select one of them\n", np);
+      abort();
+    }
+  } else if (g) {
+    fprintf(stderr, "nl_fuzz: a failed AIC selection returned a model\n");
+    abort();
+  }
+  nl_gmm_free(g);
 }
 
-static void fuzz_ks(const double *x, size_t n)
+static void fuzz_ks(const double *x, size_t n, size_t bins)
 {
   nl_error err = {{0}};
   double lo = x[0], hi = x[0];
@@ -114,6 +134,14 @@ static void fuzz_ks(const double *x, size_t n)
     nl_fuzz_check_error(st, &err);
     if (st == NL_OK) check_p("ks2", r.p);
   }
+  nl_stats_chisq_result cr;
+  st = nl_stats_chisq_test_uniform(x, n, bins, lo, hi, &cr, &err);
+  nl_fuzz_check_error(st, &err);
+  if (st == NL_OK) check_p("chisq", cr.p);
+  if (st == NL_OK && cr.n != n) {
+    fprintf(stderr, "nl_fuzz: chisq binned %zu of %zu values\n", cr.n, n);
+    abort();
+  }
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -130,7 +158,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   size_t n = t->nrows < MAX_ROWS ? t->nrows : MAX_ROWS, d = t->ncols;
   double *col = nl_xmalloc(t->nrows * sizeof *col);
   for (size_t i = 0; i < t->nrows; i++) col[i] = nl_table_get(t, i, 0);
-  fuzz_ks(col, t->nrows);
+  fuzz_ks(col, t->nrows, (size_t)(opt >> 5) + 2);
   free(col);
   if (n >= 2) fuzz_hclust(t->num, n, d, opt & 3, (size_t)(opt >> 5) + 1);
   if (d <= GMM_MAX_COLS) fuzz_gmm(t->num, n, d, (size_t)((opt >> 2) & 3) + 1, (opt >> 4) & 1);
