@@ -101,6 +101,10 @@ grep -q 'warning: --z ignored' "$out/warn.err"
 # whose KS and colour speckle stay above gauss33's (measured 0.0367, 0.0524 vs
 # 0.0168, 0.0168).
 photo="$(cd "$(dirname "$0")/../data/exemplars" && pwd)/crinklepaper.png"
+# A valid PNG that compresses 7900-fold (all black, 1 bit, 4096 x 4096 in
+# 2,116 bytes) is read, not taken for a damaged one: its samples are bits.
+"$tool" analyse "$(dirname "$0")/data/image/black-1bit-4096.png" -o "$out/black.params" 2>/dev/null
+grep -q '^bands 12$' "$out/black.params"
 "$tool" analyse "$photo" -o "$out/photo.params"
 "$tool" analyse "$photo" --paper-histogram -o "$out/photo10.params"
 "$tool" analyse "$photo" --no-calibration -o "$out/photo2.params"

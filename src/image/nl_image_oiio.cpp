@@ -138,6 +138,20 @@ static nl_status check_exr_header(const char *path, FILE *f, long long fsize, nl
 
 /* Pixels along one axis that the tiles covering n pixels hold (n when the
  * file is not tiled: tile size 0). */
+// The bit depth in a PNG's IHDR (byte 24 of the file), or 0 if the file
+// does not start as a PNG does.
+static int png_bit_depth(const char *path)
+{
+  unsigned char h[25];
+  FILE *fp = std::fopen(path, "rb");
+  if (!fp) return 0;
+  size_t got = std::fread(h, 1, sizeof h, fp);
+  std::fclose(fp);
+  if (got < sizeof h || std::memcmp(h, "\x89PNG\r\n\x1a\n", 8) || std::memcmp(h + 12, "IHDR", 4))
+    return 0;
+  return h[24];
+}
+
 static double tile_grid(int n, int tile)
 {
   if (n < 1) n = 1;
@@ -199,6 +213,12 @@ extern "C" nl_status nl_oiio_read(const char *path, nl_image **out, nl_error *er
                    "%.0f-pixel limit", path, spec.width, spec.height, spec.tile_width,
                    spec.tile_height, (double)NL_IMAGE_MAX_PIXELS);
   int bits = spec.get_int_attribute("oiio:BitsPerSample", (int)spec.format.size() * 8);
+  // OIIO reports a 1-, 2- or 4-bit PNG as 8 bits: its stored bits come from
+  // the header (an all-black 1-bit 4096 x 4096 PNG is 2,116 valid bytes).
+  if (!std::strcmp(in->format_name(), "png")) {
+    int png = png_bit_depth(path);
+    if (png > 0 && png < bits) bits = png;
+  }
   double raw = grid * spec.nchannels * (bits > 0 ? bits : 1) / 8.0;
   if (file_bytes > 0 && raw > (double)file_bytes * NL_IMAGE_MAX_EXPANSION) {
     char tiles[64] = "";
