@@ -98,6 +98,9 @@ static void backend_open(void)
 
 static nl_status backend(const char *path, nl_error *err)
 {
+  if (!NL_OIIO_BUILT)
+    return nl_fail(err, NL_EIO, "%s: this build has no image support (meson -Dimages=disabled)",
+                   path);
   pthread_once(&oiio_once, backend_open);
   if (oiio_read) return NL_OK;
   return nl_fail(err, NL_EIO, "%s: image support (OpenImageIO module) not loaded: %s", path, oiio_why);
