@@ -25,6 +25,9 @@
  * (the CPU, architecture, BLAS kernel and libm variant: those that differ
  * first, then "unknown" ones a manifest predates, then the same), then
  *   check: E experiments, T tables, V values compared, D drifted
+ * ending, when a reference was made on another architecture or libm, with
+ *   ; reference made elsewhere: architecture other (reference x86_64, this
+ *     run aarch64), libm other (reference glibc 2.36 fma, this run ...)
  * Exit 0: no drift; 1: drift; 2: bad input (missing folder or manifest,
  * unreadable table, malformed rule or a rule naming a missing column).
  * The engine is the harness's (nl_harness_check_experiment in

@@ -272,10 +272,18 @@ typedef struct {
   int all;                  /* print every drifted value */
   FILE *out;                /* the report; NULL: stdout */
   size_t experiments, tables, values, drifted;   /* totals so far */
+  /* The first experiment whose reference was made on another architecture
+   * or libm than this run: "architecture other (reference x86_64, this run
+   * aarch64), libm other (...)", named by the totals line. */
+  char elsewhere[512];
 } nl_harness_check_state;
 nl_status nl_harness_check_experiment(nl_harness_check_state *s, const char *ref_dir, const char *new_dir,
                                       nl_error *err);
-/* "check: E experiments, T tables, V values compared, D drifted". */
+/* "check: E experiments, T tables, V values compared, D drifted", and when a
+ * reference was made on another architecture or libm (the manifests' arch
+ * and libm lines), "; reference made elsewhere: architecture other
+ * (reference x86_64, this run aarch64), libm other (...)": 0 drifted then
+ * says the results held across them. */
 void nl_harness_check_totals(const nl_harness_check_state *s);
 
 /* The data tables of a run folder: every *.tsv but manifest.tsv and

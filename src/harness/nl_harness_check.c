@@ -275,6 +275,21 @@ static void check_summary(const check_ctx *c, const nl_table *ref, const nl_tabl
   fputc('\n', out);
 }
 
+/* The first reference made on another architecture or libm, kept for the
+ * totals line: whether or not anything drifted, the user learns that the
+ * comparison crossed machines. */
+static void note_elsewhere(nl_harness_check_state *s, const nl_table *ref, const nl_table *new)
+{
+  static const char *keys[][2] = {{"arch", "architecture"}, {"libm", "libm"}};
+  if (s->elsewhere[0]) return;
+  for (int k = 0; k < 2; k++) {
+    char phrase[600];
+    if (platform_phrase(ref, new, keys[k][0], keys[k][1], phrase, sizeof phrase) != 2) continue;
+    size_t used = strlen(s->elsewhere);
+    snprintf(s->elsewhere + used, sizeof s->elsewhere - used, "%s%s", used ? ", " : "", phrase);
+  }
+}
+
 /* The manifests, the rules and every committed table, in name order. */
 static nl_status check_folders(check_ctx *c, const char *ref_dir, const char *new_dir, nl_table *mref,
                                nl_table *mnew, nl_error *err)
@@ -298,6 +313,7 @@ static nl_status check_folders(check_ctx *c, const char *ref_dir, const char *ne
   }
   free(tables);
   if (!st) check_summary(c, mref, mnew);
+  if (!st) note_elsewhere(c->s, mref, mnew);
   return st;
 }
 
@@ -316,6 +332,7 @@ nl_status nl_harness_check_experiment(nl_harness_check_state *s, const char *ref
 
 void nl_harness_check_totals(const nl_harness_check_state *s)
 {
-  fprintf(out_of(s), "check: %zu experiment%s, %zu tables, %zu values compared, %zu drifted\n",
-          s->experiments, s->experiments == 1 ? "" : "s", s->tables, s->values, s->drifted);
+  fprintf(out_of(s), "check: %zu experiment%s, %zu tables, %zu values compared, %zu drifted%s%s\n",
+          s->experiments, s->experiments == 1 ? "" : "s", s->tables, s->values, s->drifted,
+          s->elsewhere[0] ? "; reference made elsewhere: " : "", s->elsewhere);
 }

@@ -265,6 +265,11 @@ NL_TEST(manifest_round_trip)
     NL_CHECK(arch && *arch && strcmp(arch, "unknown"));
 #ifdef __GLIBC__
     NL_CHECK(libm && !strncmp(libm, "glibc 2.", 8));
+#if defined(__x86_64__)
+    NL_CHECK(libm && (strstr(libm, " fma") || strstr(libm, " avx") || strstr(libm, " sse2")));
+#elif defined(__aarch64__)
+    NL_CHECK(libm && strstr(libm, " aarch64") && !strcmp(arch, "aarch64"));
+#endif
 #else
     NL_CHECK(libm != NULL);
 #endif
