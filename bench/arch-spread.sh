@@ -7,7 +7,10 @@
 # print doubles with 17 digits, so the same bits), or how far apart.
 #
 #   bash bench/arch-spread.sh [--quick] [--out DIR] [--compare-only] EXPERIMENT...
-# (--compare-only: the runs already in DIR, compared again)
+#   bash bench/arch-spread.sh [--out DIR] --rows
+# (--compare-only: the runs already in DIR, compared again; --rows: the
+# measured rows in data/blas_spread.tsv's columns, configs "aarch64-qemu",
+# on stdout, for whoever decides to merge them: ignored columns left out)
 #
 # A measurement made by hand, like bench/blas-spread.sh: it writes nothing
 # under data/ or results/. Rows of DIR/arch-spread.tsv (default DIR:
@@ -23,11 +26,12 @@
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 XB="$ROOT/build-aarch64"
-quick=0 out="$XB/arch-spread" names=() failed=0 compare_only=0
+quick=0 out="$XB/arch-spread" names=() failed=0 compare_only=0 rows=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) quick=1 ;;
     --compare-only) compare_only=1 ;;
+    --rows) rows=1 ;;
     --out) out="$2"; shift ;;
     -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "arch-spread: unknown option $1" >&2; exit 2 ;;
@@ -35,6 +39,13 @@ while [ $# -gt 0 ]; do
   esac
   shift
 done
+if [ "$rows" = 1 ]; then
+  [ -f "$out/arch-spread.tsv" ] || { echo "arch-spread: no $out/arch-spread.tsv yet" >&2; exit 2; }
+  awk -F'\t' -v OFS='\t' 'NR == 1 {print "experiment", "scale", "table", "column", "max_rel_spread",
+      "max_abs_spread", "cells_differing", "cells", "configs"; next}
+    $5 != "ignore" {print $1, $2, $3, $4, $8, $9, $6 - $7, $6, "aarch64-qemu:armv8"}' "$out/arch-spread.tsv"
+  exit 0
+fi
 [ ${#names[@]} -gt 0 ] || { echo "arch-spread: name at least one experiment" >&2; exit 2; }
 command -v qemu-aarch64 >/dev/null || { echo "arch-spread: no qemu-aarch64 (scripts/noiselab check --arch aarch64 installs it)" >&2; exit 2; }
 scale=full ref="$ROOT/results"
