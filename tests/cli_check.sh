@@ -126,9 +126,19 @@ want+='architecture same (x86_64), BLAS kernel same (SkylakeX)$'
 grep -q "$want" "$out/libm.out" \
   || { echo "libm: summary"; cat "$out/libm.out"; exit 1; }
 # Platform and timing lines are never compared: same tables, other platform, no drift.
-cp -r "$ref" "$out/plat"; platform "$out/plat" 'Other CPU' aarch64 Prescott 'glibc 2.41 sse2'
+cp -r "$ref" "$out/plat"
+sed -i '/^\(cpu\|arch\|blas_core\|libm\)\t/d' "$out/plat/manifest.tsv"
+platform "$out/plat" 'Other CPU' aarch64 Prescott 'glibc 2.41 sse2'
 sed -i 's/^seconds\t.*/seconds\t42/' "$out/plat/manifest.tsv"
-run 0 plat '0 drifted'
+# ... and the totals line says that the reference was made on another
+# architecture and libm (the CPU and BLAS kernel are not named there).
+want='0 drifted; reference made elsewhere: architecture other (reference x86_64, this run aarch64), '
+want+='libm other (reference glibc 2.36 fma, this run glibc 2.41 sse2)$'
+run 0 plat "$want"
+grep -q 'same (\|Prescott' "$out/plat.out" && { echo "plat: more than arch and libm named"; cat "$out/plat.out"; exit 1; }
+# Another CPU alone, same architecture and libm: nothing named.
+sed -i 's/^arch\taarch64$/arch\tx86_64/; s/^libm\tglibc 2.41 sse2$/libm\tglibc 2.36 fma/' "$out/plat/manifest.tsv"
+run 0 plat '0 drifted$'
 cp "$out/spec.orig" "$ref/spec.tsv"; cp "$out/manifest.orig" "$ref/manifest.tsv"
 rm -rf "$out/many" "$out/many12" "$out/plat" "$out/manifest.many12"
 copy same; run 0 same '0 drifted'

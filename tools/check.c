@@ -26,7 +26,10 @@
  * (the CPU, architecture, BLAS kernel and libm variant: those that differ
  * first, then "unknown" ones a manifest predates, then the same), then
  *   check: E experiments, T tables, V values compared, D drifted
- * ("check: EXPERIMENT: T tables, ..." when one experiment was compared).
+ * ("check: EXPERIMENT: T tables, ..." when one experiment was compared),
+ * ending, when a reference was made on another architecture or libm, with
+ *   ; reference made elsewhere: architecture other (reference x86_64, this
+ *     run aarch64), libm other (reference glibc 2.36 fma, this run ...)
  * A new table that is missing or that the table reader refuses (a NUL byte,
  * a ragged row) is drift, its line naming the reader's complaint.
  * Exit 0: no drift; 1: drift; 2: bad input (missing folder or manifest,

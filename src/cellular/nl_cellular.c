@@ -294,9 +294,11 @@ void nl_cellular_row(const nl_cellular *c, double x0, double dx, double y, doubl
   rowbuf b;
   rowbuf_fill(c, ifirst, (size_t)(ilast - ifirst + 1), y, z, &b);
   switch (nl_simd_get()) {   /* the library's level: NL_NOISE_SIMD, nl_simd_set */
+#if NL_SIMD_X86
   case NL_SIMD_SSE2: nl_cellular_row_sse2(&b.r, x0, dx, count, n, F); break;
   case NL_SIMD_AVX2: nl_cellular_row_avx2(&b.r, x0, dx, count, n, F); break;
   case NL_SIMD_AVX512: nl_cellular_row_avx512(&b.r, x0, dx, count, n, F); break;
+#endif
   default: row_scalar(&b.r, x0, dx, count, n, F);
   }
   rowbuf_free(&b);

@@ -851,7 +851,9 @@ static void cpu_model(char *buf, size_t n)
  * selectors of sysdeps/x86_64/fpu/multiarch), and
  * GLIBC_TUNABLES=glibc.cpu.hwcaps=-AVX2,-FMA can turn features off: so the
  * variant is named from glibc's view of the features, not from cpuid, and a
- * feature the CPU has but glibc does not use is said. Their last bits differ. */
+ * feature the CPU has but glibc does not use is said. Their last bits differ.
+ * On aarch64 glibc's libm is its own code (sysdeps/aarch64/fpu and the
+ * generic functions), the same on every CPU: named "aarch64". */
 static void libm_variant(char *buf, size_t n)
 {
 #ifdef __GLIBC__
@@ -864,6 +866,8 @@ static void libm_variant(char *buf, size_t n)
   else variant = " sse2";
   if (!fma && CPU_FEATURE_PRESENT(FMA) && CPU_FEATURE_PRESENT(AVX2))
     off = " (CPU's fma turned off)";
+#elif defined(__aarch64__)
+  variant = " aarch64";   /* one code path on every arm64 CPU: no per-CPU variants */
 #endif
   snprintf(buf, n, "glibc %s%s%s", gnu_get_libc_version(), variant, off);
 #else

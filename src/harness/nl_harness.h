@@ -281,11 +281,19 @@ typedef struct {
   FILE *out;                /* the report; NULL: stdout */
   size_t experiments, tables, values, drifted;   /* totals so far */
   char last[128];           /* the experiment compared last, for the totals */
+  /* The first experiment whose reference was made on another architecture
+   * or libm than this run: "architecture other (reference x86_64, this run
+   * aarch64), libm other (...)", named by the totals line. */
+  char elsewhere[512];
 } nl_harness_check_state;
 nl_status nl_harness_check_experiment(nl_harness_check_state *s, const char *ref_dir, const char *new_dir,
                                       nl_error *err);
-/* "check: E experiments, T tables, V values compared, D drifted", or for
- * one experiment "check: NAME: T tables, V values compared, D drifted". */
+/* "check: E experiments, T tables, V values compared, D drifted" (for one
+ * experiment "check: NAME: T tables, ..."), and when a reference was made
+ * on another architecture or libm (the manifests' arch and libm lines),
+ * "; reference made elsewhere: architecture other (reference x86_64, this
+ * run aarch64), libm other (...)": 0 drifted then says the results held
+ * across them. */
 void nl_harness_check_totals(const nl_harness_check_state *s);
 
 /* The data tables of a run folder: every *.tsv but manifest.tsv and

@@ -329,6 +329,21 @@ static nl_status check_rule_tables(const check_ctx *c, const char *ref_dir, char
   return NL_OK;
 }
 
+/* The first reference made on another architecture or libm, kept for the
+ * totals line: whether or not anything drifted, the user learns that the
+ * comparison crossed machines. */
+static void note_elsewhere(nl_harness_check_state *s, const nl_table *ref, const nl_table *new)
+{
+  static const char *keys[][2] = {{"arch", "architecture"}, {"libm", "libm"}};
+  if (s->elsewhere[0]) return;
+  for (int k = 0; k < 2; k++) {
+    char phrase[600];
+    if (platform_phrase(ref, new, keys[k][0], keys[k][1], phrase, sizeof phrase) != 2) continue;
+    size_t used = strlen(s->elsewhere);
+    snprintf(s->elsewhere + used, sizeof s->elsewhere - used, "%s%s", used ? ", " : "", phrase);
+  }
+}
+
 /* The manifests, the rules and every committed table, in name order. */
 static nl_status check_folders(check_ctx *c, const char *ref_dir, const char *new_dir, nl_table *mref,
                                nl_table *mnew, nl_error *err)
@@ -354,6 +369,7 @@ static nl_status check_folders(check_ctx *c, const char *ref_dir, const char *ne
   }
   free(tables);
   if (!st) check_summary(c, mref, mnew);
+  if (!st) note_elsewhere(c->s, mref, mnew);
   return st;
 }
 
@@ -372,10 +388,11 @@ nl_status nl_harness_check_experiment(nl_harness_check_state *s, const char *ref
 
 void nl_harness_check_totals(const nl_harness_check_state *s)
 {
+  const char *sep = s->elsewhere[0] ? "; reference made elsewhere: " : "";
   if (s->experiments == 1)
-    fprintf(out_of(s), "check: %s: %zu tables, %zu values compared, %zu drifted\n", s->last,
-            s->tables, s->values, s->drifted);
+    fprintf(out_of(s), "check: %s: %zu tables, %zu values compared, %zu drifted%s%s\n", s->last,
+            s->tables, s->values, s->drifted, sep, s->elsewhere);
   else
-    fprintf(out_of(s), "check: %zu experiments, %zu tables, %zu values compared, %zu drifted\n",
-            s->experiments, s->tables, s->values, s->drifted);
+    fprintf(out_of(s), "check: %zu experiments, %zu tables, %zu values compared, %zu drifted%s%s\n",
+            s->experiments, s->tables, s->values, s->drifted, sep, s->elsewhere);
 }

@@ -4,6 +4,9 @@
 #endif
 #include "image/nl_image.h"
 #include "image/nl_image_config.h"
+#if !NL_OIIO_BUILT
+#include "image/nl_image_png.h"
+#endif
 
 #include <errno.h>
 #include <math.h>
@@ -98,6 +101,10 @@ static void backend_open(void)
 
 static nl_status backend(const char *path, nl_error *err)
 {
+  if (!NL_OIIO_BUILT)
+    return nl_fail(err, NL_EIO,
+                   "%s: this build has no image support but PNG reading (meson -Dimages=disabled)",
+                   path);
   pthread_once(&oiio_once, backend_open);
   if (oiio_read) return NL_OK;
   return nl_fail(err, NL_EIO, "%s: image support (OpenImageIO module) not loaded: %s", path, oiio_why);
@@ -127,6 +134,12 @@ nl_status nl_image_read(const char *path, nl_image **out, nl_error *err)
   *out = NULL;
   nl_status s = readable(path, err);
   if (s) return s;
+#if !NL_OIIO_BUILT
+  /* No module: a PNG (the patterns and exemplars) through stb_image, the
+   * pixels the module would give (nl_image_png.c); other formats refused. */
+  size_t len = strlen(path);
+  if (len >= 4 && strcasecmp(path + len - 4, ".png") == 0) return nl_image_png_read(path, out, err);
+#endif
   s = backend(path, err);
   if (s) return s;
   QUIET_BEGIN();

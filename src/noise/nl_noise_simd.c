@@ -27,9 +27,11 @@ const double nl_noise_simd_g3[3][16] = {
 static const nl_noise_simd_kernels *kernels(void)
 {
   switch (nl_simd_get()) {
+#if NL_SIMD_X86
   case NL_SIMD_SSE2: return &nl_noise_simd_sse2;
   case NL_SIMD_AVX2: return &nl_noise_simd_avx2;
   case NL_SIMD_AVX512: return &nl_noise_simd_avx512;
+#endif
   default: return NULL;
   }
 }

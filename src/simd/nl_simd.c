@@ -24,6 +24,9 @@ int nl_simd_from_name(const char *name)
 
 int nl_simd_supported(int level)
 {
+#if !NL_SIMD_X86
+  return level == NL_SIMD_SCALAR;
+#else
   switch (level) {
   case NL_SIMD_SCALAR: case NL_SIMD_SSE2: return 1;
   case NL_SIMD_AVX2:
@@ -36,6 +39,7 @@ int nl_simd_supported(int level)
            __builtin_cpu_supports("avx512vbmi") && __builtin_cpu_supports("avx2");
   default: return 0;
   }
+#endif
 }
 
 int nl_simd_best(void)

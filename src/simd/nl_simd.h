@@ -22,6 +22,15 @@
 #ifndef NL_SIMD_H
 #define NL_SIMD_H
 
+/* 1 where the SSE2, AVX2 and AVX-512 kernels are built (x86 and x86-64,
+ * meson.build's cpu_family); elsewhere (aarch64) every kernel is the scalar
+ * code and nl_simd_supported says so. */
+#if defined(__x86_64__) || defined(__i386__)
+#define NL_SIMD_X86 1
+#else
+#define NL_SIMD_X86 0
+#endif
+
 typedef enum {
   NL_SIMD_SCALAR = 0, NL_SIMD_SSE2 = 1, NL_SIMD_AVX2 = 2, NL_SIMD_AVX512 = 3
 } nl_simd_level;

@@ -38,9 +38,16 @@ const char *nl_cluster_metric_name(nl_cluster_metric m) { return metric_names[m]
 /* 8 lanes as two 4-wide vectors; GCC emits SSE2 pairs or, in the AVX2 clone,
  * 256-bit ops. The summation order is the same in both. */
 typedef double v4d __attribute__((vector_size(32)));
+/* The AVX2 clone exists on x86 only; elsewhere (aarch64: NEON pairs) the one
+ * generic version, with the same lane-wise operations and so the same bits. */
+#if defined(__x86_64__) || defined(__i386__)
+#define AVX2_CLONE __attribute__((target_clones("avx2", "default")))
+#else
+#define AVX2_CLONE
+#endif
 
 /* sum_j (a_j - b_j)^2, or sum_j a_j^2 when b is NULL. */
-__attribute__((target_clones("avx2", "default")))
+AVX2_CLONE
 static double sq_diff_sum(const double *a, const double *b, size_t d)
 {
   static const v4d zero = {0, 0, 0, 0};
@@ -67,7 +74,7 @@ static double sq_diff_sum(const double *a, const double *b, size_t d)
  * sequence of operations on its pair (same blocks, same sums, same tail), so
  * every result has sq_diff_sum's bits; a is loaded once for four b's and the
  * four addition chains overlap instead of one waiting on its own latency. */
-__attribute__((target_clones("avx2", "default")))
+AVX2_CLONE
 static void sq_diff_sum4(const double *a, const double *const b[4], size_t d, double r[4])
 {
   static const v4d zero = {0, 0, 0, 0};

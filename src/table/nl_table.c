@@ -220,7 +220,8 @@ static size_t split(char *line, int ws, char **f, size_t max)
   return n;
 }
 
-/* 1 = finite number, 0 = not a number, -1 = NaN or infinite. */
+/* 1 = finite number, 0 = not a number, -1 = NaN or infinite, -2 = a number
+ * beyond the double range ("1e999", and a commit id like 7395e8327457). */
 static int parse_num(const char *s, double *v)
 {
   if (!*s) return 0;
@@ -228,8 +229,10 @@ static int parse_num(const char *s, double *v)
   errno = 0;
   *v = strtod(s, &end);
   if (end == s) return 0;
+  int range = errno == ERANGE;
   while (*end == ' ') end++;
   if (*end) return 0;
+  if (isinf(*v) && range) return -2;
   if (!isfinite(*v)) return -1;
   return 1;
 }
@@ -352,7 +355,7 @@ static nl_status read_rows(FILE *fp, const char *path, int flags, nl_table **out
       double v;
       int k = parse_num(f[c], &v);
       if (k == 1) t->num[r * t->ncols + c] = v;
-      else if (k == -1) {
+      else if (k == -1 || (k == -2 && !(flags & NL_TABLE_TEXT))) {
         s = nl_fail(err, NL_EFORMAT, "%s:%zu: column '%s' holds '%s' (NaN or infinite)", path, lineno, t->names[c], f[c]);
         break;
       } else if (flags & NL_TABLE_TEXT) t->text[r * t->ncols + c] = nl_xstrdup(f[c]);

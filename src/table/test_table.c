@@ -58,6 +58,23 @@ NL_TEST(rejects_bad_input_with_line)
   NL_CHECK(read_fails_with("a\tb\n1\t2\n3\tx\n", "bad.tsv:3: column 'b' holds 'x'", 0));
   NL_CHECK(read_fails_with("a\tb\n1\tnan\n", "bad.tsv:2: column 'b' holds 'nan' (NaN", 0));
   NL_CHECK(read_fails_with("a\tb\ninf\t1\n", "(NaN or infinite)", NL_TABLE_TEXT));
+  NL_CHECK(read_fails_with("a\tb\n1e999\t1\n", "holds '1e999' (NaN or infinite)", 0));
+}
+
+/* A word that reads as a number beyond the double range is text where text
+ * is allowed: a manifest's commit id 7395e8327457 (7395 x 10^8327457) made
+ * every regression check of that commit "bad input". */
+NL_TEST(out_of_range_number_is_text_in_text_tables)
+{
+  char *p = write_file("manifest.tsv", "key\tvalue\ncommit\t7395e8327457\nseed\t1\nbig\t1e999\n");
+  nl_table *t = NULL;
+  nl_error err;
+  NL_CHECK(nl_table_read(p, NL_TABLE_TEXT, &t, &err) == NL_OK);
+  NL_CHECK(t && t->nrows == 3 && t->text[1] && !strcmp(t->text[1], "7395e8327457"));
+  NL_CHECK(t && !t->text[3] && nl_table_get(t, 1, 1) == 1);
+  NL_CHECK(t && t->text[5] && !strcmp(t->text[5], "1e999"));
+  nl_table_free(t);
+  free(p);
 }
 
 /* A byte-order mark is skipped, so the first row stays data (or the first

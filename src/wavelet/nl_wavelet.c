@@ -179,9 +179,11 @@ static int simd_row(const double *line, long n, double x0, double dx, size_t cou
 {
   nl_wavelet_simd_row_fn row;
   switch (nl_simd_get()) {
+#if NL_SIMD_X86
   case NL_SIMD_SSE2: row = nl_wavelet_simd_sse2; break;
   case NL_SIMD_AVX2: row = nl_wavelet_simd_avx2; break;
   case NL_SIMD_AVX512: row = nl_wavelet_simd_avx512; break;
+#endif
   default: return GSL_CONTINUE;
   }
   if (count == 0 || count > SIMD_MAX_N || n < 1) return GSL_CONTINUE;
@@ -346,7 +348,12 @@ nl_noise_basis nl_wavelet_basis(const nl_wavelet_tile *t)
 {
   size_t n = (size_t)t->n * t->n * (t->dim == 3 ? (size_t)t->n : 1);
   double m = 0;
-  for (size_t k = 0; k < n; k++) m = fmax(m, fabs(t->data[k]));
+  /* fmax's value (a NaN is skipped) written as a comparison: aarch64 gcc 12
+   * stops with an internal error vectorizing the fmax reduction. */
+  for (size_t k = 0; k < n; k++) {
+    double a = fabs(t->data[k]);
+    if (a > m) m = a;
+  }
   nl_noise_basis b = {wavelet_basis_row, t, m};
   return b;
 }
