@@ -425,6 +425,10 @@ expect_error "x = 0.4 does not increase" "$STAT" ks "$REF/u01_100.tsv" --cdf "$T
 expect_error "unknown distribution 'gumbel' (uniform, norm, expon, gamma" \
   "$STAT" ks "$REF/u01_100.tsv" --dist gumbel
 expect_error "--scale 0 must be positive" "$STAT" ks "$REF/u01_100.tsv" --dist norm --scale 0
+# a negative scale or shape gets the same message as zero, not a range
+expect_error "--scale -1 must be positive" "$STAT" ks "$REF/u01_100.tsv" --dist norm --scale -1
+expect_error "--shape: gamma's a must be positive, got -2" \
+  "$STAT" ks "$REF/u01_100.tsv" --dist gamma --shape -2
 expect_error "--shape, --loc and --scale go with --dist" "$STAT" ks "$REF/u01_100.tsv" --loc 1
 expect_error "give one of --uniform A B, --dist NAME and --cdf TABLE" "$STAT" ks "$REF/u01_100.tsv" --uniform 0 1 --dist norm
 expect_error "--format: 'xml' is not kv, tsv or json" "$STAT" ks "$REF/u01_100.tsv" --format xml

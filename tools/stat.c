@@ -170,9 +170,9 @@ static void parse_shape(opts *o, const char *v)
     memcpy(first, v, (size_t)(comma - v));
     first[comma - v] = 0;
   }
-  o->shape[0] = num_arg(o, "--shape", comma ? first : v, 0, 1e300);
+  o->shape[0] = num_arg(o, "--shape", comma ? first : v, -1e300, 1e300);
   o->nshape = 1;
-  if (comma) o->shape[o->nshape++] = num_arg(o, "--shape", comma + 1, 0, 1e300);
+  if (comma) o->shape[o->nshape++] = num_arg(o, "--shape", comma + 1, -1e300, 1e300);
 }
 
 enum {
@@ -246,7 +246,7 @@ static void parse(int argc, char **argv, opts *o)
     case O_DIST: o->dist = v; break;
     case O_SHAPE: parse_shape(o, v); break;
     case O_LOC: o->loc = num_arg(o, a, v, -1e300, 1e300); o->have_loc = 1; break;
-    case O_SCALE: o->scale = num_arg(o, a, v, 0, 1e300); o->have_scale = 1; break;
+    case O_SCALE: o->scale = num_arg(o, a, v, -1e300, 1e300); o->have_scale = 1; break;
     case O_CDF: o->cdf_file = v; break;
     case O_CSV: o->csv = 1; break;
     case O_FORMAT:
