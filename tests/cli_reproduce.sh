@@ -64,6 +64,11 @@ grep -q $'^seed\t4294967295$' "$r/a1_bounds/manifest.tsv" || fail "seed 42949672
 } >"$r/s4_marble/verdicts.tsv"
 SOURCE_DATE_EPOCH=86400 "$nl" reproduce --quick --seed 4294967295 --out "$r" A1 2>"$out/verdict.log" || { cat "$out/verdict.log"; fail "reproduce A1 failed"; }
 grep -q '^## Did it reproduce?' "$r/REPORT.md" || fail "REPORT.md has no verdict table"
+# a quick run says first, on the terminal and at the top of the report, that
+# its verdicts are about the harness, not the papers
+awk '/quick scale .*verdicts test the harness, not the papers/ { c = NR } /\[1\/1\]/ && !r { r = NR }
+  END { exit !(c && c < r) }' "$out/verdict.log" || fail "no quick-scale caveat before the run: $(cat "$out/verdict.log")"
+grep -q '^\*\*Quick scale: .*the harness, not the papers' "$r/REPORT.md" || fail "no quick caveat in REPORT.md"
 a1_count() { [ -f "$r/a1_bounds/verdicts.tsv" ] || { echo 0; return; }; tsv_awk -v w="$1" 'FNR > 1 && index(v("kind"), w) == 1 { cnt++ } END { print cnt + 0 }' "$r/a1_bounds/verdicts.tsv"; }
 ni=$(( $(a1_count independent) + 1 )); nf=$(( $(a1_count fitted) + 1 ))
 grep -qE "^$ni independent verdicts \(" "$r/REPORT.md" || fail "verdict count wrong: $(grep 'independent verdicts' "$r/REPORT.md")"
