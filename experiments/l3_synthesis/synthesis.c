@@ -9,6 +9,7 @@
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
+#include <math.h>
 #include <stdlib.h>
 
 typedef struct {
@@ -126,4 +127,33 @@ nl_table *l3_gauss_table(size_t n, int K, unsigned long seed0, int threads)
   free(ks);
   free(tail);
   return t;
+}
+
+double l3_max_abs_diff(const nl_image *a, const nl_image *b)
+{
+  size_t n = (size_t)a->width * a->height * (size_t)a->channels;
+  double m = 0;
+  /* A comparison, not fmax (a NaN is skipped by both): aarch64 gcc 12 stops
+   * with an internal error vectorizing an fmax reduction. */
+  for (size_t i = 0; i < n; i++) {
+    double d = fabs(a->data[i] - b->data[i]);
+    if (d > m) m = d;
+  }
+  return m;
+}
+
+void l3_write_spectra(nl_harness *r, const char *name, const nl_image *ex,
+                      const nl_image *syn, const nl_image *nohist)
+{
+  const nl_image *src[3] = {ex, syn, nohist};
+  const char *labels[3] = {"exemplar", "synthesis", "synthesis_nohist"};
+  double *grey[3];
+  for (int i = 0; i < 3; i++) {
+    grey[i] = nl_xmalloc((size_t)ex->width * ex->height * sizeof *grey[i]);
+    nl_byexample_luminance(src[i], grey[i]);
+  }
+  nl_table *t = nl_study_radial_table((const double *const *)grey, labels, 3, ex->width, 1);
+  nl_harness_write_table(r, t, name);
+  nl_table_free(t);
+  for (int i = 0; i < 3; i++) free(grey[i]);
 }

@@ -27,4 +27,13 @@ nl_image *l3_synth_seeds(const nl_byexample_params *p, const nl_byexample_synth_
  * 2 Q(2.5) = 1.24%); rows paper10, gauss33. Caller frees. */
 nl_table *l3_gauss_table(size_t n, int K, unsigned long seed0, int threads);
 
+/* The largest |a - b| over every sample of two images of one shape. */
+double l3_max_abs_diff(const nl_image *a, const nl_image *b);
+
+/* The radial spectra of the luminance of the exemplar and of the syntheses
+ * with and without histogram matching (columns exemplar, synthesis,
+ * synthesis_nohist; nl_study_radial_table), written as table `name`. */
+void l3_write_spectra(nl_harness *r, const char *name, const nl_image *ex,
+                      const nl_image *syn, const nl_image *nohist);
+
 #endif
