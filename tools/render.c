@@ -96,16 +96,7 @@ static void usage(void)
 }
 
 /* One line on stderr, exit 2: input quoted in it is escaped (nl_message). */
-static void fail(const char *fmt, ...) __attribute__((format(printf, 1, 2), noreturn));
-static void fail(const char *fmt, ...)
-{
-  va_list ap;
-  va_start(ap, fmt);
-  fputs("noiselab render: ", stderr);
-  nl_vmessage(stderr, fmt, ap);
-  va_end(ap);
-  exit(2);
-}
+#define fail(...) nl_die("noiselab render: ", __VA_ARGS__)
 
 static void num(const char *opt, const char *val, double lo, double hi, double *out)
 {

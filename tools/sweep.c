@@ -13,16 +13,7 @@
 #include <unistd.h>
 
 /* One line on stderr, exit 2: input quoted in it is escaped (nl_message). */
-static void die(const char *fmt, ...) __attribute__((format(printf, 1, 2), noreturn));
-static void die(const char *fmt, ...)
-{
-  va_list ap;
-  va_start(ap, fmt);
-  fputs("noiselab sweep: ", stderr);
-  nl_vmessage(stderr, fmt, ap);
-  va_end(ap);
-  exit(2);
-}
+#define die(...) nl_die("noiselab sweep: ", __VA_ARGS__)
 
 static void check(nl_status s, const nl_error *err)
 {

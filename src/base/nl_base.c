@@ -742,3 +742,13 @@ const char *nl_file_image_kind(FILE *fp)
       return KINDS[k].name;
   return NULL;
 }
+
+void nl_die(const char *prefix, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  fputs(prefix, stderr);
+  nl_vmessage(stderr, fmt, ap);
+  va_end(ap);
+  exit(2);
+}
