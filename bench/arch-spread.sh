@@ -8,12 +8,17 @@
 #
 #   bash bench/arch-spread.sh [--quick] [--out DIR] [--compare-only] EXPERIMENT...
 #   bash bench/arch-spread.sh [--out DIR] --rows
+#   bash bench/arch-spread.sh [--out DIR] --merge
 # (--compare-only: the runs already in DIR, compared again; --rows: the
 # measured rows in data/blas_spread.tsv's columns, configs "aarch64-qemu",
-# on stdout, for whoever decides to merge them: ignored columns left out)
+# on stdout, ignored columns left out; --merge: those rows folded into
+# data/blas_spread.tsv, each column's spread the larger of the two and
+# "aarch64-qemu:armv8" added to its configs, so the regression check's
+# tolerances cover arm64 too; rows of columns not measured here, such as
+# every paper-scale one, stay as they are)
 #
-# A measurement made by hand, like bench/blas-spread.sh: it writes nothing
-# under data/ or results/. Rows of DIR/arch-spread.tsv (default DIR:
+# A measurement made by hand, like bench/blas-spread.sh: only --merge
+# writes under data/, and nothing writes under results/. Rows of DIR/arch-spread.tsv (default DIR:
 # build-aarch64/arch-spread; rows of the same experiment and scale are
 # replaced), one per table and column:
 #   experiment scale table column rule cells identical max_rel max_abs
@@ -26,24 +31,57 @@
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 XB="$ROOT/build-aarch64"
-quick=0 out="$XB/arch-spread" names=() failed=0 compare_only=0 rows=0
+quick=0 out="$XB/arch-spread" names=() failed=0 compare_only=0 rows=0 merge=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) quick=1 ;;
     --compare-only) compare_only=1 ;;
     --rows) rows=1 ;;
+    --merge) merge=1 ;;
     --out) out="$2"; shift ;;
-    -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,28p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "arch-spread: unknown option $1" >&2; exit 2 ;;
     *) names+=("$1") ;;
   esac
   shift
 done
-if [ "$rows" = 1 ]; then
-  [ -f "$out/arch-spread.tsv" ] || { echo "arch-spread: no $out/arch-spread.tsv yet" >&2; exit 2; }
+arch_rows() {
   awk -F'\t' -v OFS='\t' 'NR == 1 {print "experiment", "scale", "table", "column", "max_rel_spread",
       "max_abs_spread", "cells_differing", "cells", "configs"; next}
     $5 != "ignore" {print $1, $2, $3, $4, $8, $9, $6 - $7, $6, "aarch64-qemu:armv8"}' "$out/arch-spread.tsv"
+}
+if [ "$rows" = 1 ] || [ "$merge" = 1 ]; then
+  [ -f "$out/arch-spread.tsv" ] || { echo "arch-spread: no $out/arch-spread.tsv yet" >&2; exit 2; }
+  [ "$merge" = 1 ] || { arch_rows; exit 0; }
+  data="$ROOT/data/blas_spread.tsv"
+  # Columns by name in both files; a row of the arm64 measurement either
+  # widens the row of its column or, for a column the x86-64 measurement
+  # lacks, is added. The new file replaces the old one only when complete.
+  arch_rows | awk -F'\t' -v OFS='\t' '
+    FNR == 1 { file++
+      split("experiment scale table column max_rel_spread max_abs_spread cells_differing cells configs", need, " ")
+      for (k in need) { c[file, need[k]] = 0; for (i = 1; i <= NF; i++) if ($i == need[k]) c[file, need[k]] = i
+        if (!c[file, need[k]]) { print "arch-spread: no column " need[k] > "/dev/stderr"; exit 2 } }
+      if (file == 2) print
+      next }
+    function f(n, name) { return $(c[n, name]) }
+    file == 1 { key = f(1, "experiment") SUBSEP f(1, "scale") SUBSEP f(1, "table") SUBSEP f(1, "column")
+      arel[key] = f(1, "max_rel_spread"); aabs[key] = f(1, "max_abs_spread"); adiff[key] = f(1, "cells_differing")
+      arow[key] = $0; order[++na] = key; next }
+    { key = f(2, "experiment") SUBSEP f(2, "scale") SUBSEP f(2, "table") SUBSEP f(2, "column")
+      if (key in arel) {
+        if (arel[key] + 0 > f(2, "max_rel_spread") + 0) $(c[2, "max_rel_spread"]) = arel[key]
+        if (aabs[key] + 0 > f(2, "max_abs_spread") + 0) $(c[2, "max_abs_spread"]) = aabs[key]
+        if (adiff[key] + 0 > f(2, "cells_differing") + 0) $(c[2, "cells_differing"]) = adiff[key]
+        if (index(" " f(2, "configs") " ", " aarch64-qemu:armv8 ") == 0)
+          $(c[2, "configs"]) = f(2, "configs") " aarch64-qemu:armv8"
+        done[key] = 1
+      }
+      print }
+    END { for (i = 1; i <= na; i++) if (!(order[i] in done)) print arow[order[i]] }
+  ' - "$data" >"$data.new" || { rm -f "$data.new"; exit 2; }
+  mv "$data.new" "$data"
+  echo "arch-spread: merged $(($(wc -l <"$out/arch-spread.tsv") - 1)) measured columns into data/blas_spread.tsv" >&2
   exit 0
 fi
 [ ${#names[@]} -gt 0 ] || { echo "arch-spread: name at least one experiment" >&2; exit 2; }

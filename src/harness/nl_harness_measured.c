@@ -97,6 +97,9 @@ void nl_harness_check_measured(nl_harness *r, const char *table, double multiple
                nl_harness_quick(r) ? " --quick" : "", nl_harness_name(r));
   int nconf = 0;
   for (const char *p = configs; *p; p++) nconf += (p == configs || p[-1] == ' ') && *p != ' ';
+  /* bench/arch-spread.sh --merge adds the arm64 run to the configurations */
+  const char *kinds = strstr(configs, "aarch64") ? "OpenBLAS kernels, BLAS threads, libm without FMA, arm64"
+                                                 : "OpenBLAS kernels, BLAS threads, libm without FMA";
   /* These sentences are about the regression check's tolerances, not the
    * results: every value above was computed by this run. */
   if (borrowed)
@@ -104,18 +107,18 @@ void nl_harness_check_measured(nl_harness *r, const char *table, double multiple
                        "scale's values move across CPU configurations has not been measured.\n", scale);
   if (ndiff == 0) {
     nl_harness_text(r, "Regression rules: exact; no value of %s moved over %d CPU configurations "
-                       "(OpenBLAS kernels, BLAS threads, libm without FMA; `data/blas_spread.tsv`).\n",
-                   all ? "any table" : table, nconf);
+                       "(%s; `data/blas_spread.tsv`).\n",
+                   all ? "any table" : table, nconf, kinds);
     return;
   }
   char largest[320] = "";
   if (worst > 0) snprintf(largest, sizeof largest, ", the largest relative spread %.2g (%s)", worst, worst_at);
   else if (nabs) snprintf(largest, sizeof largest, ", the largest absolute spread %.2g (%s)", worst_abs, worst_abs_at);
-  nl_harness_text(r, "Regression rules: %d column%s of %s moved over %d CPU configurations (OpenBLAS "
-                     "kernels, BLAS threads, libm without FMA; `data/blas_spread.tsv`)%s; each is compared "
+  nl_harness_text(r, "Regression rules: %d column%s of %s moved over %d CPU configurations (%s; "
+                     "`data/blas_spread.tsv`)%s; each is compared "
                      "within %g x its measured spread (%s); the other columns keep their declared rule "
                      "(exact unless stated).\n",
-                 ndiff, ndiff == 1 ? "" : "s", moved, nconf, largest, multiple,
+                 ndiff, ndiff == 1 ? "" : "s", moved, nconf, kinds, largest, multiple,
                  nabs == ndiff ? "absolute: the values move at rounding level"
                  : nabs        ? "relative; absolute for values at rounding level"
                                : "relative");
