@@ -24,21 +24,22 @@
  *     the same way (1.5 * 2^54: the doubles near it are the multiples of 4;
  *     from 2^53 on every double is an even integer, so a becomes 0).
  *  2. sin(pi (k/2 + r)) is s, c, -s, -c for k mod 4 = 0..3, with
- *     s = sin(pi r) = r P0 + r u (P1 + ... + P6 u^5) and
- *     c = cos(pi r) = 1 + u Q1 + u u (Q2 + ... + Q7 u^5), u = r^2: the same
- *     shape, base + w K + w u poly(u) with (base, w) = (0, r) or (1, u). So
+ *     s = sin(pi r) = 0 + r (P0 + u (P1 + ... + P6 u^5)) and
+ *     c = cos(pi r) = 1 + u (Q1 + u (Q2 + ... + Q7 u^5)), u = r^2: the same
+ *     shape, base + w (K + u poly(u)) with (base, w) = (0, r) or (1, u). So
  *     one polynomial is evaluated, its coefficients chosen by k's parity
- *     (a table, nl_math__coef), not two polynomials and a selection:
- *     sinpi takes 0.7 of the time of glibc's sin. Estrin's scheme: half the
- *     latency of Horner's, and the annealer's loop waits on it. The
+ *     (a table, nl_math__coef), not two polynomials and a selection. The
  *     coefficients are Chebyshev fits of 200-bit values by
  *     src/base/nl_math_fit.py (mpmath), rounded to double; the fits' own
  *     relative errors are 3.5e-18 (P) and 4.3e-20 (Q), far below the
  *     rounding of the evaluation.
- *  3. The leading term w K is summed last from exact parts (w's 26-bit
- *     head times K's 27-bit head is exact; base plus that is split into sum
- *     and error, Fast2Sum), so the result is rounded about once: 0.77 ulp
- *     measured, against 1.5 for the plain polynomials.
+ *  3. Evaluated as base + (w K + (w u) poly(u)), poly by Estrin's scheme:
+ *     the annealer's loop waits on the result, and Estrin's dependency
+ *     chain is half of Horner's. Speed was chosen over the last ulp: a
+ *     version that summed w K from exact parts (26- and 27-bit heads,
+ *     Fast2Sum) measured 0.77 ulp, but took 6.1 ns a call against 4.8 here
+ *     (glibc's sin(M_PI * v): 8.9 ns), and made marble's optimisation
+ *     1.05x faster than glibc's sin did, against 1.2x here.
  *  4. Signs by multiplying with +-1 (exact, and no branch on the data nor a
  *     trip through the integer registers); + 0.0 turns the -0 of
  *     -sin(pi 0) into +0; then sinpi is multiplied by x's sign.
@@ -48,10 +49,11 @@
  *   sinpi(n + 1/2) and cospi(n) are exactly +-1; sinpi(-0) = -0;
  *   +-inf and NaN give NaN. Huge |x| is exact (step 1), not a loss.
  *
- * Accuracy: at most 0.77 ulp for both, measured at 10^6 random x against a
+ * Accuracy: at most 1.83 ulp for both, measured at 10^6 random x against a
  * long double reference and at 2331 hard inputs against 300-bit mpmath
  * values (tests/data/math/sinpi.tsv); src/base/test_math.c holds them to
- * 1 ulp.
+ * 2 ulp. On marble's c = (1 + sinpi(V)) / 2, V in [-1, 1]: 1.21e-16 at most
+ * (glibc's sin(M_PI * V): 2.3e-16).
  *
  * The definitions are inline (C99 inline: nl_math.c holds the external
  * ones), because the annealer calls nl_math_sinpi for every point a move
@@ -64,8 +66,8 @@
 #include <stdint.h>
 #include <string.h>
 
-/* src/base/nl_math_fit.py's output, verbatim (P0 and Q1 are used as their
- * head and rest; P0's value is pi to 17 digits, not pi itself). */
+/* src/base/nl_math_fit.py's output, verbatim (P0's value is pi to 17
+ * digits, not pi itself). */
 /* SINPI_P: degree 6 in u, largest relative error 3.5e-18 */
 #define NL_MATH__SINPI_P0 0x1.921fb54442d18p+1   /* 3.1415926535897932 */
 #define NL_MATH__SINPI_P1 -0x1.4abbce625be41p+2   /* -5.1677127800499545 */
@@ -74,8 +76,6 @@
 #define NL_MATH__SINPI_P4 0x1.50782fda12d96p-4   /* 0.082145869180001746 */
 #define NL_MATH__SINPI_P5 -0x1.e30071afc3e59p-8   /* -0.0073700215869077703 */
 #define NL_MATH__SINPI_P6 0x1.e3f38399551bfp-12   /* 0.000461531855383581 */
-#define NL_MATH__SINPI_P0_HI 0x1.921fb54000000p+1
-#define NL_MATH__SINPI_P0_LO 0x1.10b46103960bbp-29
 /* COSPI_Q: degree 7 in u, largest relative error 4.29e-20 */
 #define NL_MATH__COSPI_Q0 0x1.0000000000000p+0   /* 1.0 */
 #define NL_MATH__COSPI_Q1 -0x1.3bd3cc9be45dep+2   /* -4.9348022005446792 */
@@ -85,12 +85,10 @@
 #define NL_MATH__COSPI_Q5 -0x1.a6d1ec7906c20p-6   /* -0.025806885652951305 */
 #define NL_MATH__COSPI_Q6 0x1.f9cc41140bb60p-10   /* 0.0019294657440800043 */
 #define NL_MATH__COSPI_Q7 -0x1.b264ba152378ap-14   /* -0.00010356747255199479 */
-#define NL_MATH__COSPI_Q1_HI -0x1.3bd3cc8000000p+2
-#define NL_MATH__COSPI_Q1_LO -0x1.be45de486383ep-26
 
-/* The kernel's coefficients by k's parity (nl_math.c): K's head and rest,
- * base, then the 6 of poly, lowest degree first. */
-#define NL_MATH__NCOEF 9
+/* The kernel's coefficients by k's parity (nl_math.c): base, K, then the 6
+ * of poly, lowest degree first. */
+#define NL_MATH__NCOEF 8
 extern const double nl_math__coef[2][NL_MATH__NCOEF];
 extern const double nl_math__coef_sign[2];   /* 1, -1 */
 
@@ -127,28 +125,16 @@ inline double nl_math__reduce(double x, unsigned *quadrant)
   return a - 0.5 * k;
 }
 
-/* x with the low 27 bits of its significand cleared: a 26-bit head, and
- * x = head + (x - head) exactly. */
-inline double nl_math__head(double x)
-{
-  return nl_math__double(nl_math__bits(x) & ~(((uint64_t)1 << 27) - 1));
-}
-
 /* Steps 2 to 4 for one quadrant: sin(pi (k/2 + r)) with k mod 4 = quadrant,
  * the -0 of an exact zero made +0. */
 inline double nl_math__kernel(double r, double u, unsigned quadrant)
 {
-  const double *k = nl_math__coef[quadrant & 1u];
+  const double *c = nl_math__coef[quadrant & 1u];
   uint64_t pick = (uint64_t)0 - (uint64_t)(quadrant & 1u);
   double w = nl_math__double((nl_math__bits(r) & ~pick) | (nl_math__bits(u) & pick));
   double u2 = u * u;
-  double p = (k[3] + k[4] * u) + u2 * ((k[5] + k[6] * u) + u2 * (k[7] + k[8] * u));
-  double wh = nl_math__head(w);
-  double a = wh * k[0];
-  double sum = k[2] + a;
-  double err = (k[2] - sum) + a;
-  double corr = (w - wh) * k[0] + w * k[1] + (w * u) * p;
-  double v = sum + (err + corr);
+  double p = (c[2] + c[3] * u) + u2 * ((c[4] + c[5] * u) + u2 * (c[6] + c[7] * u));
+  double v = c[0] + (w * c[1] + (w * u) * p);
   return v * nl_math__coef_sign[(quadrant >> 1) & 1u] + 0.0;
 }
 

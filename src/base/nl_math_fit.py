@@ -6,12 +6,10 @@ On the reduced argument |r| <= 1/4, with u = r^2 in [0, 1/16]:
     cos(pi r) = Q(u),      Q of degree 7 (cos of degree 14)
 P and Q are Chebyshev interpolants (mpmath.chebyfit, within a small factor of
 the minimax polynomial) of sin(pi sqrt(u)) / sqrt(u) and cos(pi sqrt(u)),
-computed with 200-bit arithmetic and rounded to the nearest double. P0 and
-Q1, the terms that carry most of the value, are also split into a head of
-27 bits, whose products with the 26-bit head of r (P0) or u (Q1) are exact,
-and the rest (nl_math.h, step 3). The script prints each fit's largest
-relative error, then the coefficients as the C lines of nl_math.h (exact
-hexadecimal, lowest degree first), which nl_math.h holds verbatim. Made with
+computed with 200-bit arithmetic and rounded to the nearest double. The
+script prints each fit's largest relative error, then the coefficients as
+the C lines of nl_math.h (exact hexadecimal, lowest degree first), which
+nl_math.h holds verbatim. Made with
 Debian's python3-mpmath (1.2.1; 1.3.0 gives the same output):
 
     /usr/bin/python3 src/base/nl_math_fit.py
@@ -33,13 +31,7 @@ def cos_of_root(u):
     return mp.cos(mp.pi * mp.sqrt(u))
 
 
-def head(v, bits):
-    """v rounded to `bits` significant bits."""
-    m, e = mp.frexp(v)
-    return mp.ldexp(mp.nint(mp.ldexp(m, bits)), e - bits)
-
-
-def fit(name, f, degree, low, split, split_bits):
+def fit(name, f, degree, low):
     coef, err = mp.chebyfit(f, [0, QUARTER_SQUARED], degree + 1, error=True)
     coef = list(reversed(coef))   # chebyfit lists the highest degree first
     print("/* %s: degree %d in u, largest relative error %s */"
@@ -47,10 +39,7 @@ def fit(name, f, degree, low, split, split_bits):
     for k, c in enumerate(coef):
         print("#define NL_MATH__%s%d %s   /* %s */"
               % (name, k, float(c).hex(), mp.nstr(c, 17)))
-    hi = head(coef[split], split_bits)
-    print("#define NL_MATH__%s%d_HI %s" % (name, split, float(hi).hex()))
-    print("#define NL_MATH__%s%d_LO %s" % (name, split, float(coef[split] - hi).hex()))
 
 
-fit("SINPI_P", sin_ratio, 6, sin_ratio(QUARTER_SQUARED), 0, 27)
-fit("COSPI_Q", cos_of_root, 7, cos_of_root(QUARTER_SQUARED), 1, 27)
+fit("SINPI_P", sin_ratio, 6, sin_ratio(QUARTER_SQUARED))
+fit("COSPI_Q", cos_of_root, 7, cos_of_root(QUARTER_SQUARED))
