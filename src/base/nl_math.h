@@ -35,11 +35,11 @@
  *     rounding of the evaluation.
  *  3. Evaluated as base + (w K + (w u) poly(u)), poly by Estrin's scheme:
  *     the annealer's loop waits on the result, and Estrin's dependency
- *     chain is half of Horner's. Speed was chosen over the last ulp: a
- *     version that summed w K from exact parts (26- and 27-bit heads,
- *     Fast2Sum) measured 0.77 ulp, but took 6.1 ns a call against 4.8 here
- *     (glibc's sin(M_PI * v): 8.9 ns), and made marble's optimisation
- *     1.05x faster than glibc's sin did, against 1.2x here.
+ *     chain is half of Horner's. Speed is chosen over the last ulp:
+ *     summing w K from exact parts (26- and 27-bit heads, Fast2Sum) gives
+ *     0.77 ulp but lengthens that chain, 6.1 ns a call against 4.8 (glibc's
+ *     sin(M_PI * v): 8.9 ns), and speeds marble's optimisation up 1.05x
+ *     against 1.2x.
  *  4. Signs by multiplying with +-1 (exact, and no branch on the data nor a
  *     trip through the integer registers); + 0.0 turns the -0 of
  *     -sin(pi 0) into +0; then sinpi is multiplied by x's sign.
