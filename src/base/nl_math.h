@@ -57,7 +57,10 @@
  *
  * The definitions are inline (C99 inline: nl_math.c holds the external
  * ones), because the annealer calls nl_math_sinpi for every point a move
- * touches.
+ * touches. So a program that includes this header compiles them with its
+ * own flags: for the library's bits it needs -ffp-contract=off (GCC's
+ * default in ISO C modes, -std=c11, but not in -std=gnu11, where a machine
+ * with FMA would fuse the polynomial's products and sums).
  */
 #ifndef NL_MATH_H
 #define NL_MATH_H
