@@ -22,30 +22,35 @@ import functools
 
 import numpy as np
 
-from ._lib import Error, c_double_p, check, fn
+from ._lib import Error, c_double_p, check, fn, mirror
 
 _MAX_OCTAVES = 32
 
 
+@mirror("nl_noise_basis")
 class _NoiseBasis(ctypes.Structure):
     _fields_ = [("row", ctypes.c_void_p), ("ctx", ctypes.c_void_p), ("bound", ctypes.c_double)]
 
 
+@mirror("nl_noise_octaves")
 class _Octaves(ctypes.Structure):
     _fields_ = [("n", ctypes.c_int), ("turbulence", ctypes.c_int),
                 ("freq", ctypes.c_double * _MAX_OCTAVES), ("amp", ctypes.c_double * _MAX_OCTAVES)]
 
 
+@mirror("nl_noise_window")
 class _Window(ctypes.Structure):
     _fields_ = [("x0", ctypes.c_double), ("y0", ctypes.c_double), ("z", ctypes.c_double),
                 ("size", ctypes.c_double), ("w", ctypes.c_int), ("h", ctypes.c_int)]
 
 
+@mirror("nl_cellular_gctbf")
 class _Gctbf(ctypes.Structure):
     _fields_ = [("n", ctypes.c_int), ("c", ctypes.c_double * 4),
                 ("cc", (ctypes.c_double * 4) * 4)]
 
 
+@mirror("nl_basis", gctbf_cell="gctbf.cell", gctbf="gctbf.g")
 class _Basis(ctypes.Structure):
     """nl_basis (basis/nl_basis.h): the noise and the tables it points into."""
     _fields_ = [("noise", _NoiseBasis), ("kind", ctypes.c_void_p), ("grad2", ctypes.c_void_p),
@@ -53,12 +58,14 @@ class _Basis(ctypes.Structure):
                 ("gctbf_cell", ctypes.c_void_p), ("gctbf", _Gctbf), ("tile", ctypes.c_void_p)]
 
 
+@mirror("nl_basis_options", lambda_="lambda")
 class _BasisOptions(ctypes.Structure):
     _fields_ = [("table_size", ctypes.c_long), ("reference", ctypes.c_int),
                 ("lambda_", ctypes.c_double), ("points", ctypes.c_long), ("count", ctypes.c_int),
                 ("terms", ctypes.c_char_p), ("tile", ctypes.c_long)]
 
 
+@mirror("nl_noise_grad2")
 class _Grad2(ctypes.Structure):
     _fields_ = [("m", ctypes.c_size_t), ("angle", c_double_p), ("gx", c_double_p),
                 ("gy", c_double_p), ("perm", ctypes.POINTER(ctypes.c_uint))]
