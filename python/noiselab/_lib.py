@@ -67,11 +67,19 @@ def _load():
 lib, path = _load()
 
 
-def check(status, err):
-    """Raises the exception for a non-zero nl_status, with the library's message."""
+def check(status, err, names=None):
+    """Raises the exception for a non-zero nl_status, with the library's message.
+
+    names maps how the library names an input at the start of its message
+    (the command-line option, "--tile", or the C field, "cellular: lambda")
+    to the Python parameter, which the message then names instead."""
     if status == NL_OK:
         return
     msg = err.msg.decode("utf-8", "replace")
+    for lib_name, py_name in (names or {}).items():
+        if msg.startswith(lib_name) and msg[len(lib_name):len(lib_name) + 1] in (":", " "):
+            msg = py_name + msg[len(lib_name):]
+            break
     if status in (NL_EINVAL, NL_EFORMAT):
         raise ValueError(msg)
     if status == NL_EIO:

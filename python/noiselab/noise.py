@@ -128,6 +128,10 @@ _basis_grad2 = fn("nl_noise_basis_grad2", _NoiseBasis, ctypes.POINTER(_Grad2))
 _BASES = {"improved": "improved", "noise2": "noise2", "table": "noise2", "gctbf": "gctbf",
           "wavelet": "wavelet"}
 _SUMS = ("fractal", "turbulence", "fbm", "marble")
+# nl_basis_make names its inputs as render's options (or nl_cellular_alloc's
+# fields); a Python user typed these parameters.
+_BASIS_NAMES = {"--table-size": "table_size", "--terms": "terms", "--tile": "tile",
+                "cellular: lambda": "lambda_", "cellular: M": "points"}
 _COUNTS = {"closest": 0, "inverse": 1, "closest-last": 2}
 _PLANAR = ("noise2",)
 
@@ -194,7 +198,7 @@ class _Noise:
             b = ctypes.POINTER(_Basis)()
             err = Error()
             check(_basis_make(self.kind.encode(), ctypes.byref(o), seed, ctypes.byref(b),
-                              ctypes.byref(err)), err)
+                              ctypes.byref(err)), err, _BASIS_NAMES)
             self._b = b
             self.basis = b.contents.noise
         n = 1

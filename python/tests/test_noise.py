@@ -129,7 +129,7 @@ def test_broadcast_and_dtypes():
     (lambda: nn.grid("perlin", 8), ValueError, "unknown noise 'perlin'"),
     (lambda: nn.grid("fbm", 8, basis="x"), ValueError, "unknown noise basis"),
     (lambda: nn.grid("gctbf", 8, terms="F9"), ValueError, "F9"),
-    (lambda: nn.grid("wavelet", 8, tile=7), ValueError, "--tile"),
+    (lambda: nn.grid("wavelet", 8, tile=7), ValueError, "tile: the wavelet tile period"),
     (lambda: nn.grid("noise2", 8, table=([0.0, 1.0], [0, 0])), ValueError, "not a permutation"),
 ])
 def test_bad_input(call, exc, words):
@@ -302,3 +302,24 @@ def test_refusal_keeps_the_points_before(noise, kw):
         assert (f"y: coordinate {k} (flat index)" in msg) if np.isnan(bad) or np.isinf(bad) \
             else "beyond 2^52" in msg, msg
         assert np.array_equal(out[:k], ref[:k])
+
+
+@pytest.mark.parametrize("kw,words", [
+    (dict(noise="wavelet", tile=7), "tile: the wavelet tile period must be even and in 8..256"),
+    (dict(noise="wavelet", tile=4), "tile: the wavelet tile period must be even and in 8..256"),
+    (dict(noise="noise2", table_size=2), "table_size: 2 is below 4"),
+    (dict(noise="gctbf", terms="F9"), "terms: "),
+    (dict(noise="gctbf", lambda_=0.0), "lambda_ must be in"),
+    (dict(noise="gctbf", points=0), "points must be in 1..64"),
+    (dict(noise="fbm", basis="wavelet", tile=300), "tile: "),
+])
+def test_library_messages_name_the_python_parameter(kw, words):
+    """The library names its inputs as render's options (--tile) or its C
+    fields; from Python the message names the parameter the user typed.
+    (tile=4 used to reach the library unchecked and crash the interpreter.)"""
+    for call in (lambda: nn.grid(size=8, **kw), lambda: nn.points(0.5, 0.5, **kw),
+                 lambda: nn.bound(**kw)):
+        with pytest.raises(ValueError) as e:
+            call()
+        msg = str(e.value)
+        assert msg.startswith(words) and "--" not in msg and "\n" not in msg, msg
