@@ -106,9 +106,9 @@ _abi_offsetof = fn("nl_abi_offsetof", ctypes.c_long, ctypes.c_char_p, ctypes.c_c
 
 def mirror(c_type, **members):
     """Class decorator of a ctypes Structure that mirrors the library's struct
-    c_type: its size and every field's offset are checked against the
-    library's own, and every field's size (abi/nl_abi.h), when the class is made, at import, so that a
-    mirror gone stale (a member added, removed, retyped or moved in C) raises
+    c_type: its size and every field's offset and size are checked against
+    the library's own (abi/nl_abi.h) when the class is made, at import, so
+    that a mirror gone stale (a member added, removed, retyped or moved in C) raises
     ImportError naming the struct instead of reading the wrong bytes.
     members maps a field to its C designator where the names differ
     (lambda_="lambda", gctbf_cell="gctbf.cell")."""
