@@ -54,8 +54,9 @@ def test_a_stale_mirror_is_an_import_error(tmp_path):
         src = (pkg / name).read_text()
         assert old in src
         (pkg / name).write_text(src.replace(old, new))
+        # cwd: python -c looks there first, and the tests run in python/
         r = subprocess.run([sys.executable, "-c", f"import noiselab.{module}"],
-                           env=dict(os.environ, PYTHONPATH=str(pkg.parent)),
+                           env=dict(os.environ, PYTHONPATH=str(pkg.parent)), cwd=tmp_path,
                            capture_output=True, text=True)
         assert r.returncode != 0
         last = r.stderr.strip().splitlines()[-1]
