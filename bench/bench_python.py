@@ -4,8 +4,10 @@
 
 Each case is timed through noiselab (the public function, its checks
 included) and as the bare C call it makes (through ctypes, arguments
-prepared once), alternately, REPEATS times (default 21); the minimum of
-each is printed with their ratio, as a TSV:
+prepared once), alternately, REPEATS times (default 21), in CPU seconds
+of the calling thread (the C calls run in it; another process's load on a
+shared machine does not count); the minimum of each is printed with their
+ratio, as a TSV:
 
   case  n  python_s  c_s  ratio
 
@@ -33,9 +35,9 @@ from noiselab import noise as _impl  # noqa: E402
 def best(f, repeats):
     ts = []
     for _ in range(repeats):
-        t = time.perf_counter()
+        t = time.thread_time()
         f()
-        ts.append(time.perf_counter() - t)
+        ts.append(time.thread_time() - t)
     return min(ts)
 
 

@@ -4,9 +4,10 @@ import ctypes
 
 import numpy as np
 
-from ._lib import Error, c_double_p, check, fn
+from ._lib import Error, c_double_p, check, fn, mirror
 
 
+@mirror("nl_gmm_options")
 class _Options(ctypes.Structure):
     _fields_ = [("covariance", ctypes.c_int), ("tol", ctypes.c_double),
                 ("reg_covar", ctypes.c_double), ("max_iter", ctypes.c_size_t),
@@ -14,6 +15,7 @@ class _Options(ctypes.Structure):
                 ("threads", ctypes.c_int), ("memo", ctypes.c_void_p)]
 
 
+@mirror("nl_gmm")
 class _Gmm(ctypes.Structure):
     _fields_ = [("k", ctypes.c_size_t), ("d", ctypes.c_size_t), ("covariance", ctypes.c_int),
                 ("weights", c_double_p), ("means", c_double_p), ("covs", c_double_p),

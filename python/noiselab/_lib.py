@@ -23,9 +23,6 @@ class NoiselabError(RuntimeError):
     """A numerical failure of the library (NL_ENUM: singular matrix, no convergence)."""
 
 
-class Error(ctypes.Structure):
-    """nl_error: the library's one-line message."""
-    _fields_ = [("msg", ctypes.c_char * 512)]
 
 
 def _candidates():
@@ -70,11 +67,19 @@ def _load():
 lib, path = _load()
 
 
-def check(status, err):
-    """Raises the exception for a non-zero nl_status, with the library's message."""
+def check(status, err, names=None):
+    """Raises the exception for a non-zero nl_status, with the library's message.
+
+    names maps how the library names an input at the start of its message
+    (the command-line option, "--tile", or the C field, "cellular: lambda")
+    to the Python parameter, which the message then names instead."""
     if status == NL_OK:
         return
     msg = err.msg.decode("utf-8", "replace")
+    for lib_name, py_name in (names or {}).items():
+        if msg.startswith(lib_name) and msg[len(lib_name):len(lib_name) + 1] in (":", " "):
+            msg = py_name + msg[len(lib_name):]
+            break
     if status in (NL_EINVAL, NL_EFORMAT):
         raise ValueError(msg)
     if status == NL_EIO:
@@ -93,3 +98,46 @@ def fn(name, restype, *argtypes):
 
 
 c_double_p = ctypes.POINTER(ctypes.c_double)
+
+
+_abi_sizeof = fn("nl_abi_sizeof", ctypes.c_size_t, ctypes.c_char_p, ctypes.c_char_p)
+_abi_offsetof = fn("nl_abi_offsetof", ctypes.c_long, ctypes.c_char_p, ctypes.c_char_p)
+
+
+def mirror(c_type, **members):
+    """Class decorator of a ctypes Structure that mirrors the library's struct
+    c_type: its size and every field's offset and size are checked against
+    the library's own (abi/nl_abi.h) when the class is made, at import, so
+    that a mirror gone stale (a member added, removed, retyped or moved in C) raises
+    ImportError naming the struct instead of reading the wrong bytes.
+    members maps a field to its C designator where the names differ
+    (lambda_="lambda", gctbf_cell="gctbf.cell")."""
+    def check(cls):
+        where = f"{cls.__module__}.{cls.__qualname__}"
+        size = _abi_sizeof(c_type.encode(), None)
+        if size == 0:
+            raise ImportError(f"{where}: {path} does not describe struct {c_type}: the package "
+                              f"and the library come from different versions")
+        if size != ctypes.sizeof(cls):
+            raise ImportError(f"{where} mirrors struct {c_type} in {ctypes.sizeof(cls)} bytes, "
+                              f"{path} has {size}: the package and the library come from "
+                              f"different versions")
+        for field in cls._fields_:
+            name = field[0]
+            c_name = members.get(name, name)
+            want = (_abi_offsetof(c_type.encode(), c_name.encode()),
+                    _abi_sizeof(c_type.encode(), c_name.encode()))
+            got = (getattr(cls, name).offset, getattr(cls, name).size)
+            if want != got:
+                raise ImportError(f"{where} mirrors struct {c_type} with {c_name} at offset "
+                                  f"{got[0]}, {got[1]} bytes; {path} has offset {want[0]}, "
+                                  f"{want[1]} bytes: the package and the library come from "
+                                  f"different versions")
+        return cls
+    return check
+
+
+@mirror("nl_error")
+class Error(ctypes.Structure):
+    """nl_error: the library's one-line message."""
+    _fields_ = [("msg", ctypes.c_char * 512)]

@@ -18,18 +18,20 @@ import os
 
 import numpy as np
 
-from ._lib import Error, check, fn
+from ._lib import Error, check, fn, mirror
 
 _MAXB = 16
 _HMAX = 33
 _CALIBRATE = 4   # NL_BYEXAMPLE_CALIBRATE
 
 
+@mirror("nl_image")
 class _Image(ctypes.Structure):
     _fields_ = [("width", ctypes.c_int), ("height", ctypes.c_int), ("channels", ctypes.c_int),
                 ("data", ctypes.POINTER(ctypes.c_float))]
 
 
+@mirror("nl_byexample_params")
 class _Params(ctypes.Structure):
     _fields_ = [("channels", ctypes.c_int), ("nbands", ctypes.c_int), ("tile", ctypes.c_int),
                 ("histogram", ctypes.c_int), ("sigma2", ctypes.c_double),
@@ -40,12 +42,14 @@ class _Params(ctypes.Structure):
                 ("corr", (ctypes.c_double * _MAXB) * 3)]
 
 
+@mirror("nl_byexample_options")
 class _Options(ctypes.Structure):
     _fields_ = [("decorrelate", ctypes.c_int), ("histogram", ctypes.c_int),
                 ("sigma2", ctypes.c_double), ("tile", ctypes.c_int), ("hist_kind", ctypes.c_int),
                 ("calibrate", ctypes.c_int)]
 
 
+@mirror("nl_byexample_synth_options")
 class _SynthOptions(ctypes.Structure):
     _fields_ = [("scale", ctypes.c_double), ("solid", ctypes.c_int), ("z", ctypes.c_double),
                 ("spline", ctypes.c_int)]

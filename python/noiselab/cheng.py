@@ -17,17 +17,19 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ._lib import Error, c_double_p, check, fn
+from ._lib import Error, c_double_p, check, fn, mirror
 from . import noise as _noise
 
 _MAXO = 8
 
 
+@mirror("nl_cheng_schedule")
 class _Schedule(ctypes.Structure):
     _fields_ = [("n_temps", ctypes.c_int), ("moves_per_var", ctypes.c_double),
                 ("t_decades", ctypes.c_double), ("p0", ctypes.c_double), ("stall", ctypes.c_int)]
 
 
+@mirror("nl_cheng_config")
 class _Config(ctypes.Structure):
     _fields_ = [("stat", ctypes.c_int), ("con", ctypes.c_int), ("w1", ctypes.c_double),
                 ("w2", ctypes.c_double), ("octaves", ctypes.c_int), ("f1", ctypes.c_double),
@@ -42,12 +44,14 @@ _EVAL_DOUBLES = ("e_ks", "p_ks", "kuiper_v", "p_kuiper", "chi2", "p_chi2", "e_co
                  "e_con_shape", "seam_ratio", "contrast", "e_con_const", "e_con_random")
 
 
+@mirror("nl_cheng_eval")
 class _Eval(ctypes.Structure):
     _fields_ = [(n, ctypes.c_double) for n in _EVAL_DOUBLES] + \
         [("log_gain", ctypes.c_double * _MAXO), ("moves", ctypes.c_long),
          ("cpu_seconds", ctypes.c_double)]
 
 
+@mirror("nl_cheng_pattern")
 class _Pattern(ctypes.Structure):
     _fields_ = [("grid", ctypes.c_int), ("n", ctypes.c_size_t), ("x", c_double_p),
                 ("y", c_double_p), ("d", c_double_p), ("cell", ctypes.POINTER(ctypes.c_int))]

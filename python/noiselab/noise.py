@@ -7,9 +7,9 @@ Two entry points, both float64 out:
     ``noiselab render`` makes, so the same seed gives the same bits);
 ``points(x, y, z=None, noise=..., ...)``
     the noise at arrays of coordinates of any shape, broadcast as numpy
-    broadcasts, through the batch kernels where the library has them
-    (improved and noise2 on their own, fractal and fBm sums over improved)
-    and one C call per point otherwise.
+    broadcasts, one C call per array: the SIMD batch kernels where the
+    library has them (improved and noise2 on their own, fractal and fBm sums
+    over improved), the library's point loops otherwise.
 
 Noises (``noise``): ``improved`` (Perlin 2002), ``noise2`` (Cheng 2009's 2D
 gradient table; ``table`` under a sum), ``gctbf`` (Qin & Yang's cellular
@@ -22,30 +22,35 @@ import functools
 
 import numpy as np
 
-from ._lib import Error, c_double_p, check, fn
+from ._lib import Error, c_double_p, check, fn, mirror
 
 _MAX_OCTAVES = 32
 
 
+@mirror("nl_noise_basis")
 class _NoiseBasis(ctypes.Structure):
     _fields_ = [("row", ctypes.c_void_p), ("ctx", ctypes.c_void_p), ("bound", ctypes.c_double)]
 
 
+@mirror("nl_noise_octaves")
 class _Octaves(ctypes.Structure):
     _fields_ = [("n", ctypes.c_int), ("turbulence", ctypes.c_int),
                 ("freq", ctypes.c_double * _MAX_OCTAVES), ("amp", ctypes.c_double * _MAX_OCTAVES)]
 
 
+@mirror("nl_noise_window")
 class _Window(ctypes.Structure):
     _fields_ = [("x0", ctypes.c_double), ("y0", ctypes.c_double), ("z", ctypes.c_double),
                 ("size", ctypes.c_double), ("w", ctypes.c_int), ("h", ctypes.c_int)]
 
 
+@mirror("nl_cellular_gctbf")
 class _Gctbf(ctypes.Structure):
     _fields_ = [("n", ctypes.c_int), ("c", ctypes.c_double * 4),
                 ("cc", (ctypes.c_double * 4) * 4)]
 
 
+@mirror("nl_basis", gctbf_cell="gctbf.cell", gctbf="gctbf.g")
 class _Basis(ctypes.Structure):
     """nl_basis (basis/nl_basis.h): the noise and the tables it points into."""
     _fields_ = [("noise", _NoiseBasis), ("kind", ctypes.c_void_p), ("grad2", ctypes.c_void_p),
@@ -53,12 +58,14 @@ class _Basis(ctypes.Structure):
                 ("gctbf_cell", ctypes.c_void_p), ("gctbf", _Gctbf), ("tile", ctypes.c_void_p)]
 
 
+@mirror("nl_basis_options", lambda_="lambda")
 class _BasisOptions(ctypes.Structure):
     _fields_ = [("table_size", ctypes.c_long), ("reference", ctypes.c_int),
                 ("lambda_", ctypes.c_double), ("points", ctypes.c_long), ("count", ctypes.c_int),
                 ("terms", ctypes.c_char_p), ("tile", ctypes.c_long)]
 
 
+@mirror("nl_noise_grad2")
 class _Grad2(ctypes.Structure):
     _fields_ = [("m", ctypes.c_size_t), ("angle", c_double_p), ("gx", c_double_p),
                 ("gy", c_double_p), ("perm", ctypes.POINTER(ctypes.c_uint))]
@@ -95,6 +102,23 @@ _perm3_points_sum = fn("nl_noise_perm3_points_sum", ctypes.c_double, ctypes.c_vo
                        ctypes.c_double, c_double_p)
 _grad2_points = fn("nl_noise_grad2_points", None, ctypes.c_void_p, c_double_p, c_double_p,
                    ctypes.c_size_t, c_double_p)
+_points_refused = fn("nl_noise_points_refused", ctypes.c_size_t, c_double_p, c_double_p,
+                     c_double_p, ctypes.c_size_t, ctypes.c_double)
+_perm3_checked = fn("nl_noise_perm3_points_checked", ctypes.c_size_t, ctypes.c_void_p,
+                    ctypes.POINTER(_Octaves), c_double_p, c_double_p, c_double_p, ctypes.c_size_t,
+                    c_double_p)
+_grad2_checked = fn("nl_noise_grad2_points_checked", ctypes.c_size_t, ctypes.c_void_p, c_double_p,
+                    c_double_p, ctypes.c_size_t, c_double_p)
+_fractal_points = fn("nl_noise_fractal_points", None, ctypes.POINTER(_NoiseBasis),
+                     ctypes.POINTER(_Octaves), c_double_p, c_double_p, c_double_p, ctypes.c_size_t,
+                     c_double_p)
+_octaves_fmax = fn("nl_noise_octaves_fmax", ctypes.c_double, ctypes.POINTER(_Octaves))
+_wavelet_points = fn("nl_wavelet_points", None, ctypes.c_void_p, c_double_p, c_double_p,
+                     c_double_p, ctypes.c_size_t, c_double_p)
+_cellular_points = fn("nl_cellular_points", None, ctypes.c_void_p, c_double_p, c_double_p,
+                      c_double_p, ctypes.c_size_t, ctypes.c_int, c_double_p)
+_gctbf_points = fn("nl_cellular_gctbf_points", None, ctypes.c_void_p, ctypes.POINTER(_Gctbf),
+                   c_double_p, c_double_p, c_double_p, ctypes.c_size_t, c_double_p)
 _grad2_alloc = fn("nl_noise_grad2_alloc", ctypes.POINTER(_Grad2), ctypes.c_size_t)
 _grad2_free = fn("nl_noise_grad2_free", None, ctypes.POINTER(_Grad2))
 _grad2_set_angle = fn("nl_noise_grad2_set_angle", None, ctypes.POINTER(_Grad2), ctypes.c_size_t,
@@ -104,6 +128,10 @@ _basis_grad2 = fn("nl_noise_basis_grad2", _NoiseBasis, ctypes.POINTER(_Grad2))
 _BASES = {"improved": "improved", "noise2": "noise2", "table": "noise2", "gctbf": "gctbf",
           "wavelet": "wavelet"}
 _SUMS = ("fractal", "turbulence", "fbm", "marble")
+# nl_basis_make names its inputs as render's options (or nl_cellular_alloc's
+# fields); a Python user typed these parameters.
+_BASIS_NAMES = {"--table-size": "table_size", "--terms": "terms", "--tile": "tile",
+                "cellular: lambda": "lambda_", "cellular: M": "points"}
 _COUNTS = {"closest": 0, "inverse": 1, "closest-last": 2}
 _PLANAR = ("noise2",)
 
@@ -170,7 +198,7 @@ class _Noise:
             b = ctypes.POINTER(_Basis)()
             err = Error()
             check(_basis_make(self.kind.encode(), ctypes.byref(o), seed, ctypes.byref(b),
-                              ctypes.byref(err)), err)
+                              ctypes.byref(err)), err, _BASIS_NAMES)
             self._b = b
             self.basis = b.contents.noise
         n = 1
@@ -381,7 +409,8 @@ def bound(noise="improved", *, seed=1, basis="improved", octaves=6, gain=0.5, la
 
 def _coords(names, arrays):
     """float64, C-contiguous, broadcast copies of coordinate arrays (views when
-    they are), and the largest |coordinate| (0 for none)."""
+    they are). NaN, infinity and the lattice limit are checked by the C side,
+    block by block beside the kernel (nl_noise_points_refused)."""
     conv = []
     for name, a in zip(names, arrays):
         a = np.asarray(a)
@@ -395,29 +424,19 @@ def _coords(names, arrays):
     except ValueError:
         shapes = ", ".join(f"{n} {a.shape}" for n, a in zip(names, conv))
         raise ValueError(f"coordinates do not broadcast together: {shapes}") from None
-    out = []
-    top = 0.0
-    for name, a in zip(names, b):
-        a = np.ascontiguousarray(a).reshape(a.shape)   # 0-d stays 0-d
-        if a.size:
-            # One pass (BLAS): a . a is NaN or infinite if any coordinate is,
-            # and its root bounds the largest |coordinate| from above.
-            ss = float(np.dot(a.ravel(), a.ravel()))
-            if not np.isfinite(ss):
-                bad = ~np.isfinite(a.ravel())
-                if bad.any():
-                    k = np.flatnonzero(bad)[0]
-                    raise ValueError(f"{name}: coordinate {k} (flat index) is {a.ravel()[k]}, "
-                                     f"not a finite number")
-            top = max(top, np.sqrt(ss))
-        out.append(a)
-    return out, top
+    return [np.ascontiguousarray(a).reshape(a.shape) for a in b]   # 0-d stays 0-d
 
 
-def _max_abs(arrays):
-    """The largest |coordinate| exactly (two passes an array)."""
-    return max((max(-float(a.min()), float(a.max())) for a in arrays
-                if a is not None and a.size), default=0.0)
+def _refuse(nz, names, arrays, k):
+    """The one-line error for the point at flat index k, which the C side
+    refused (nl_noise_points_refused): a coordinate that is not finite, else
+    the lattice limit of nz's finest octave."""
+    vals = [(name, float(a.ravel()[k])) for name, a in zip(names, arrays) if a is not None]
+    for name, v in vals:
+        if not np.isfinite(v):
+            raise ValueError(f"{name}: coordinate {k} (flat index) is {v}, not a finite number")
+    nz.check_lattice(max(abs(v) for _, v in vals))
+    raise AssertionError(f"point {k} refused by the library but not here")
 
 
 def _scalars(*v):
@@ -449,11 +468,16 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
     """A noise at arrays of points: x, y (and z) broadcast together as numpy does.
 
     Coordinates are float64 (integer and float32 arrays are converted; complex,
-    object or string arrays raise TypeError); a NaN or infinite coordinate is a
-    ValueError. z defaults to the plane 0.5 that ``grid`` and render use; 2D
-    noise (noise2) takes no z. Batch kernels (one C call for all
-    points, the GIL released) serve improved, noise2 and the fractal and fbm
-    sums over improved; the other noises cost one C call per point.
+    object or string arrays raise TypeError); a NaN or infinite coordinate, or
+    one whose finest octave passes 2^52, is a ValueError naming the first such
+    point (flat index): then ``out`` holds the values of the points before it
+    in C order, and its entries from it on may have been written (the library
+    checks the points a block of 512 at a time, beside the kernel, where they
+    are in cache). z defaults to the plane 0.5 that ``grid`` and
+    render use; 2D noise (noise2) takes no z. Every noise is one C call for
+    the whole array (the GIL released): SIMD batch kernels for improved,
+    noise2 and the fractal and fbm sums over improved, point loops in C for
+    the others.
     A point gives the bits ``grid`` gives at the same coordinates (for sums,
     when every octave's frequency is a power of two, as with lacunarity 2:
     the row kernels scale x0 and dx separately).
@@ -486,36 +510,33 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
     if nz.planar:
         if z is not None:
             raise ValueError(f"z: {nz.kind} is a 2D noise and takes no z")
-        (xs, ys), top = _coords("xy", (x, y))
-        zs = None
+        names, (xs, ys), zs = "xy", _coords("xy", (x, y)), None
     else:
-        (xs, ys, zs), top = _coords("xyz", (x, y, 0.5 if z is None else z))
-    if not nz.check_lattice(top, strict=False):
-        nz.check_lattice(_max_abs((xs, ys, zs)))   # the bound was loose: decide exactly
+        names = "xyz"
+        xs, ys, zs = _coords(names, (x, y, 0.5 if z is None else z))
     out = _out(out, xs.shape)
     n = out.size
     o = nz.octaves
-    if nz.kind == "improved" and nz.sum is None:
-        _perm3_points(ctypes.addressof(nz._b.contents.perm3), _ptr(xs), _ptr(ys), _ptr(zs),
-                      n, _ptr(out))
+    px, py, po = _ptr(xs), _ptr(ys), _ptr(out)
+    pz = _ptr(zs) if zs is not None else None
+    # The SIMD kernels check their points block by block (nl_noise_*_checked);
+    # the others are checked in one pass first, which costs little beside them.
+    if nz.kind == "improved" and not o.turbulence:
+        perm3 = ctypes.addressof(nz._b.contents.perm3)
+        k = _perm3_checked(perm3, None if nz.sum is None else ctypes.byref(o), px, py, pz, n, po)
     elif nz.kind == "noise2" and nz.sum is None:
-        _grad2_points(nz.grad2(), _ptr(xs), _ptr(ys), n, _ptr(out))
-    elif nz.kind == "improved" and not o.turbulence:
-        out.fill(0.0)
-        p = ctypes.addressof(nz._b.contents.perm3)
-        for k in range(o.n):
-            _perm3_points_sum(p, o.freq[k], _ptr(xs), _ptr(ys), _ptr(zs), n, o.amp[k],
-                              _ptr(out))
+        k = _grad2_checked(nz.grad2(), px, py, n, po)
     else:
-        scratch = np.empty(1, dtype=np.float64)
-        cell = np.empty(1, dtype=np.float64)
-        bp, op, sp, cp = ctypes.byref(nz.basis), ctypes.byref(o), _ptr(scratch), _ptr(cell)
-        fx, fy = xs.ravel(), ys.ravel()
-        fz = zs.ravel() if zs is not None else np.zeros(n)
-        fo = out.ravel()
-        for k in range(n):
-            _fractal_row(bp, op, fx[k], 0.0, fy[k], fz[k], 1, cp, sp)
-            fo[k] = cell[0]
+        k = _points_refused(px, py, pz, n, _octaves_fmax(ctypes.byref(o)))
+        if nz.kind == "wavelet" and nz.sum is None:
+            _wavelet_points(nz._b.contents.tile, px, py, pz, k, po)
+        elif nz.kind == "gctbf" and nz.sum is None:
+            b = nz._b.contents
+            _gctbf_points(b.gctbf_cell, ctypes.byref(b.gctbf), px, py, pz, k, po)
+        else:
+            _fractal_points(ctypes.byref(nz.basis), ctypes.byref(o), px, py, pz, k, po)
+    if k < n:
+        _refuse(nz, names, (xs, ys, zs), k)
     return out
 
 
@@ -536,7 +557,7 @@ def cellular(x, y, z=0.5, n=4, *, seed=1, lambda_=4.0, points=50, count="inverse
     Returns an array of the broadcast shape plus a last axis of n (1..4):
     F1 <= F2 <= ... The feature points are gctbf's for the same seed,
     lambda_, points and count, so F1 equals points(..., "gctbf") with
-    terms="F1". One C call per point.
+    terms="F1". One C call for all points (nl_cellular_points).
 
     Example
     -------
@@ -546,18 +567,15 @@ def cellular(x, y, z=0.5, n=4, *, seed=1, lambda_=4.0, points=50, count="inverse
     ((4, 2), True)
     """
     n = _int("n", n, 1, 4)
-    (xs, ys, zs), top = _coords("xyz", (x, y, z))
+    xs, ys, zs = _coords("xyz", (x, y, z))
     nz = _cells(seed, lambda_, points, count)
     try:
-        if not nz.check_lattice(top, strict=False):
-            nz.check_lattice(_max_abs((xs, ys, zs)))
         out = np.empty(xs.shape + (n,))
-        cell = nz._b.contents.cell
-        p = np.empty(3)
-        fo = out.reshape(-1, n)
-        for k, (a, b, c) in enumerate(zip(xs.ravel(), ys.ravel(), zs.ravel())):
-            p[0], p[1], p[2] = a, b, c
-            _cellular_eval(cell, _ptr(p), n, _ptr(fo[k]))
+        px, py, pz = _ptr(xs), _ptr(ys), _ptr(zs)
+        k = _points_refused(px, py, pz, xs.size, 1.0)
+        if k < xs.size:
+            _refuse(nz, "xyz", (xs, ys, zs), k)
+        _cellular_points(nz._b.contents.cell, px, py, pz, xs.size, n, _ptr(out))
     finally:
         nz.close()
     return out

@@ -17,9 +17,10 @@ import os
 
 import numpy as np
 
-from ._lib import Error, check, fn
+from ._lib import Error, check, fn, mirror
 
 
+@mirror("nl_table")
 class _Table(ctypes.Structure):
     _fields_ = [("nrows", ctypes.c_size_t), ("ncols", ctypes.c_size_t),
                 ("names", ctypes.POINTER(ctypes.c_char_p)),

@@ -18,28 +18,32 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._lib import Error, c_double_p, check, fn
+from ._lib import Error, c_double_p, check, fn, mirror
 
 _CDF = ctypes.CFUNCTYPE(ctypes.c_double, ctypes.c_double, ctypes.c_void_p)
 
 
+@mirror("nl_stats_dist")
 class _Dist(ctypes.Structure):
     _fields_ = [("kind", ctypes.c_int), ("loc", ctypes.c_double), ("scale", ctypes.c_double),
                 ("shape", ctypes.c_double * 2), ("m", ctypes.c_size_t), ("x", c_double_p),
                 ("F", c_double_p)]
 
 
+@mirror("nl_stats_ks_result")
 class _KsResult(ctypes.Structure):
     _fields_ = [("d", ctypes.c_double), ("d_plus", ctypes.c_double),
                 ("d_minus", ctypes.c_double), ("p", ctypes.c_double), ("n", ctypes.c_size_t),
                 ("n2", ctypes.c_size_t), ("method", ctypes.c_int)]
 
 
+@mirror("nl_stats_kuiper_result")
 class _KuiperResult(ctypes.Structure):
     _fields_ = [("v", ctypes.c_double), ("d_plus", ctypes.c_double),
                 ("d_minus", ctypes.c_double), ("p", ctypes.c_double), ("n", ctypes.c_size_t)]
 
 
+@mirror("nl_stats_chisq_result")
 class _ChisqResult(ctypes.Structure):
     _fields_ = [("chi2", ctypes.c_double), ("df", ctypes.c_size_t), ("p", ctypes.c_double),
                 ("min_expected", ctypes.c_double), ("low_expected", ctypes.c_int),

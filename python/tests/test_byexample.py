@@ -5,7 +5,7 @@ import subprocess
 import numpy as np
 import pytest
 
-from conftest import BUILD
+from conftest import BUILD, ROOT
 import noiselab.byexample as nb
 import noiselab.noise as nn
 
@@ -73,3 +73,39 @@ def test_bad_input(call, exc, words):
     with pytest.raises(exc) as e:
         call()
     assert words in str(e.value) and "\n" not in str(e.value), str(e.value)
+
+
+def test_failed_writes_leave_nothing(tmp_path):
+    """Bad input and a full disk (RLIMIT_FSIZE, SIGXFSZ ignored, in a child)
+    raise one-line errors and leave no file, not even a temporary one."""
+    import subprocess
+    import sys
+    bad = [(lambda: nb.write_image(np.full((8, 8), np.nan), tmp_path / "a.png", 8), ValueError),
+           (lambda: nb.write_image(np.zeros((8, 8)), tmp_path / "a.png", 7), ValueError),
+           (lambda: nb.write_image(np.zeros((8, 8)), tmp_path / "no" / "a.png", 8), OSError)]
+    for call, exc in bad:
+        with pytest.raises(exc) as e:
+            call()
+        assert "\n" not in str(e.value)
+    assert os.listdir(tmp_path) == []
+    code = """if True:
+        import resource, signal, sys
+        import numpy as np, noiselab.byexample as nb
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (512, 512))
+        img = np.random.default_rng(1).random((128, 128, 3))
+        p = nb.analyse(np.random.default_rng(2).random((64, 64)))
+        for write in (lambda: nb.write_image(img, sys.argv[1] + "/full.png", 16),
+                      lambda: p.save(sys.argv[1] + "/full.params")):
+            try:
+                write()
+            except OSError as e:
+                print("OSError:", e)
+    """
+    env = dict(os.environ, PYTHONPATH=os.path.join(ROOT, "python"))
+    r = subprocess.run([sys.executable, "-c", code, str(tmp_path)], env=env,
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    lines = r.stdout.splitlines()
+    assert len(lines) == 2 and all(line.startswith("OSError:") for line in lines), r.stdout
+    assert os.listdir(tmp_path) == []

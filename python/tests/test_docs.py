@@ -31,3 +31,33 @@ def test_every_public_function_has_an_example(mod):
 def test_examples_run(mod):
     r = doctest.testmod(mod, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
     assert r.failed == 0
+
+
+def test_a_stale_mirror_is_an_import_error(tmp_path):
+    """Every ctypes mirror of a library struct is checked against the
+    library's own layout (nl_abi_sizeof, nl_abi_offsetof) at import: a copy
+    of the package with one member retyped (nl_noise_basis's bound a float)
+    or one moved (nl_gmm's k and d swapped: the same size) fails to import,
+    naming the struct."""
+    import os
+    import shutil
+    import subprocess
+    import sys
+    from conftest import ROOT
+    cases = [("noise.py", '("bound", ctypes.c_double)', '("bound", ctypes.c_float)',
+              "noise", "nl_noise_basis"),
+             ("_gmm.py", '("k", ctypes.c_size_t), ("d", ctypes.c_size_t)',
+              '("d", ctypes.c_size_t), ("k", ctypes.c_size_t)', "stats", "nl_gmm with d")]
+    for i, (name, old, new, module, words) in enumerate(cases):
+        pkg = tmp_path / str(i) / "noiselab"
+        shutil.copytree(os.path.join(ROOT, "python", "noiselab"), pkg)
+        src = (pkg / name).read_text()
+        assert old in src
+        (pkg / name).write_text(src.replace(old, new))
+        # cwd: python -c looks there first, and the tests run in python/
+        r = subprocess.run([sys.executable, "-c", f"import noiselab.{module}"],
+                           env=dict(os.environ, PYTHONPATH=str(pkg.parent)), cwd=tmp_path,
+                           capture_output=True, text=True)
+        assert r.returncode != 0
+        last = r.stderr.strip().splitlines()[-1]
+        assert last.startswith("ImportError:") and f"mirrors struct {words}" in last, last

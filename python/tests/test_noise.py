@@ -129,7 +129,7 @@ def test_broadcast_and_dtypes():
     (lambda: nn.grid("perlin", 8), ValueError, "unknown noise 'perlin'"),
     (lambda: nn.grid("fbm", 8, basis="x"), ValueError, "unknown noise basis"),
     (lambda: nn.grid("gctbf", 8, terms="F9"), ValueError, "F9"),
-    (lambda: nn.grid("wavelet", 8, tile=7), ValueError, "--tile"),
+    (lambda: nn.grid("wavelet", 8, tile=7), ValueError, "tile: the wavelet tile period"),
     (lambda: nn.grid("noise2", 8, table=([0.0, 1.0], [0, 0])), ValueError, "not a permutation"),
 ])
 def test_bad_input(call, exc, words):
@@ -211,3 +211,115 @@ def test_lattice_bound_is_exact_when_the_quick_one_is_loose():
     assert np.array_equal(v[:5], [nn.points(float(a), 0.3, 0.7) for a in x[:5]])
     with pytest.raises(ValueError, match="beyond 2"):
         nn.points(np.append(x, 5e15), 0.3, 0.7)
+
+
+def _pt_fns():
+    """The library's point calls, the reference of the batches."""
+    from noiselab._lib import fn, c_double_p
+    ev3 = fn("nl_wavelet_eval3", ctypes.c_double, ctypes.c_void_p, ctypes.c_double,
+             ctypes.c_double, ctypes.c_double)
+    cev = fn("nl_cellular_eval", None, ctypes.c_void_p, c_double_p, ctypes.c_int, c_double_p)
+    val = fn("nl_cellular_gctbf_value", ctypes.c_double, ctypes.POINTER(nn._Gctbf), c_double_p)
+    return ev3, cev, val
+
+
+def test_batches_are_the_point_calls(monkeypatch):
+    """Wavelet, gctbf and F1..F4 at scattered points (negative and far ones
+    among them) are one C call per array and give the point calls' bits."""
+    ev3, cev, val = _pt_fns()
+    r = np.random.default_rng(11)
+    x = np.concatenate([r.uniform(-300, 300, 400), r.uniform(-1e9, 0, 50)])
+    y = r.uniform(-50, 10, x.size)
+    z = r.uniform(-1e4, 1e4, x.size)
+    calls = []
+    for name in ("_wavelet_points", "_gctbf_points", "_cellular_points"):
+        f = getattr(nn, name)
+        monkeypatch.setattr(nn, name, lambda *a, f=f, name=name: (calls.append(name), f(*a))[1])
+
+    w = nn.points(x, y, z, "wavelet", seed=4, tile=16)
+    nz = nn._Noise("wavelet", 4, "improved", 1, 0.5, 2.0, None, 512, False, "F1", 4.0, 50,
+                   "inverse", 16)
+    ref = [ev3(nz._b.contents.tile, a, b, c) for a, b, c in zip(x, y, z)]
+    nz.close()
+    assert np.array_equal(w, ref)
+
+    g = nn.points(x, y, z, "gctbf", seed=6, terms="F2 - F1 + 0.5 F1F3")
+    F = nn.cellular(x, y, z, 4, seed=6)
+    nz = nn._Noise("gctbf", 6, "improved", 1, 0.5, 2.0, None, 512, False, "F2 - F1 + 0.5 F1F3",
+                   4.0, 50, "inverse", 64)
+    b = nz._b.contents
+    p, q, ref, refF = np.empty(3), np.empty(4), [], []
+    for a, bb, c in zip(x, y, z):
+        p[:] = a, bb, c
+        cev(b.gctbf_cell, nn._ptr(p), b.gctbf.n, nn._ptr(q))
+        ref.append(val(ctypes.byref(b.gctbf), nn._ptr(q)))
+        cev(b.gctbf_cell, nn._ptr(p), 4, nn._ptr(q))
+        refF.append(q.copy())
+    nz.close()
+    assert np.array_equal(g, ref)
+    assert np.array_equal(F, np.array(refF))
+    assert calls == ["_wavelet_points", "_gctbf_points", "_cellular_points"]
+
+
+def test_sums_over_any_basis_are_one_call(monkeypatch):
+    """A sum over a basis without a batch kernel of its own (turbulence, the
+    table, wavelet) is one nl_noise_fractal_points call with the grid's bits."""
+    calls = []
+    f = nn._fractal_points
+    monkeypatch.setattr(nn, "_fractal_points", lambda *a: (calls.append(1), f(*a))[1])
+    for noise, kw in (("turbulence", dict(octaves=4)), ("fbm", dict(basis="wavelet", tile=16)),
+                      ("fractal", dict(basis="table", table_size=64))):
+        size = 16
+        v = nn.grid(noise, size, x0=-3.0, y0=-2.0, **kw)
+        d = 4.0 / size
+        xs = (-3.0 + 0.5 * d) + np.arange(size) * d
+        ys = -2.0 + (np.arange(size)[:, None] + 0.5) * d
+        zz = None if kw.get("basis") == "table" else 0.5
+        assert np.array_equal(nn.points(xs[None, :], ys, zz, noise, **kw), v), noise
+    assert len(calls) == 3
+
+
+@pytest.mark.parametrize("noise,kw", [("improved", {}), ("fbm", dict(octaves=5)),
+                                      ("noise2", {}), ("wavelet", dict(tile=16)),
+                                      ("gctbf", {})])
+def test_refusal_keeps_the_points_before(noise, kw):
+    """A refused point (checked by the library beside the kernel): a
+    one-line ValueError naming it, out= holding the values of the points
+    before it (the contract of the docstring)."""
+    r = np.random.default_rng(2)
+    n = 3000
+    x, y = r.uniform(-100, 100, n), r.uniform(-100, 100, n)
+    z = None if noise == "noise2" else r.uniform(-100, 100, n)
+    ref = nn.points(x, y, z, noise, **kw)
+    for k, bad in ((1700, np.nan), (5, -np.inf), (2999, 2.0 ** 53)):
+        yb = y.copy()
+        yb[k] = bad
+        out = np.full(n, -7.0)
+        with pytest.raises(ValueError) as e:
+            nn.points(x, yb, z, noise, out=out, **kw)
+        msg = str(e.value)
+        assert "\n" not in msg
+        assert (f"y: coordinate {k} (flat index)" in msg) if np.isnan(bad) or np.isinf(bad) \
+            else "beyond 2^52" in msg, msg
+        assert np.array_equal(out[:k], ref[:k])
+
+
+@pytest.mark.parametrize("kw,words", [
+    (dict(noise="wavelet", tile=7), "tile: the wavelet tile period must be even and in 8..256"),
+    (dict(noise="wavelet", tile=4), "tile: the wavelet tile period must be even and in 8..256"),
+    (dict(noise="noise2", table_size=2), "table_size: 2 is below 4"),
+    (dict(noise="gctbf", terms="F9"), "terms: "),
+    (dict(noise="gctbf", lambda_=0.0), "lambda_ must be in"),
+    (dict(noise="gctbf", points=0), "points must be in 1..64"),
+    (dict(noise="fbm", basis="wavelet", tile=300), "tile: "),
+])
+def test_library_messages_name_the_python_parameter(kw, words):
+    """The library names its inputs as render's options (--tile) or its C
+    fields; from Python the message names the parameter the user typed.
+    (tile=4 used to reach the library unchecked and crash the interpreter.)"""
+    for call in (lambda: nn.grid(size=8, **kw), lambda: nn.points(0.5, 0.5, **kw),
+                 lambda: nn.bound(**kw)):
+        with pytest.raises(ValueError) as e:
+            call()
+        msg = str(e.value)
+        assert msg.startswith(words) and "--" not in msg and "\n" not in msg, msg

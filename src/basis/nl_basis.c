@@ -60,8 +60,10 @@ static nl_status make_gctbf(nl_basis *b, const nl_basis_options *o, unsigned lon
 static nl_status make_wavelet(nl_basis *b, const nl_basis_options *o, unsigned long seed,
                               nl_error *err)
 {
-  if (o->tile % 2)
-    return nl_fail(err, NL_EINVAL, "--tile: the wavelet tile period must be even");
+  /* nl_wavelet_tile_alloc's own limit is 512, a 512 MiB tile: render's 256 */
+  if (o->tile < 8 || o->tile > 256 || o->tile % 2)
+    return nl_fail(err, NL_EINVAL, "--tile: the wavelet tile period must be even and in 8..256, "
+                   "not %ld", o->tile);
   b->tile = nl_wavelet_tile_alloc(3, (int)o->tile);
   nl_wavelet_tile_seed(b->tile, seed);
   b->noise = nl_wavelet_basis(b->tile);

@@ -92,6 +92,12 @@ NL_TEST(bad_names_and_options_are_refused)
   NL_CHECK(make_fails_with("perlin", NULL, "perlin: unknown noise basis"));
   o.tile = 9;
   NL_CHECK(make_fails_with("wavelet", &o, "--tile: the wavelet tile period must be even"));
+  /* outside the tile's range: refused, not a NULL tile seeded */
+  long tiles[] = {4, 0, -2, 258, 1L << 40};
+  for (size_t k = 0; k < sizeof tiles / sizeof *tiles; k++) {
+    o.tile = tiles[k];
+    NL_CHECK(make_fails_with("wavelet", &o, "in 8..256"));
+  }
   o = nl_basis_defaults();
   o.terms = "F5";
   NL_CHECK(make_fails_with("gctbf", &o, "--terms: "));

@@ -426,6 +426,26 @@ void nl_cellular_gctbf_row(const nl_cellular *c, const nl_cellular_gctbf *g, dou
   free(F);
 }
 
+void nl_cellular_points(const nl_cellular *c, const double *x, const double *y, const double *z,
+                        size_t count, int n, double *F)
+{
+  for (size_t k = 0; k < count; k++) {
+    double p[3] = {x[k], y[k], z[k]};
+    nl_cellular_eval(c, p, n, F + k * (size_t)n);
+  }
+}
+
+void nl_cellular_gctbf_points(const nl_cellular *c, const nl_cellular_gctbf *g, const double *x,
+                              const double *y, const double *z, size_t count, double *out)
+{
+  int n = g->n > 0 ? g->n : 1;
+  for (size_t k = 0; k < count; k++) {
+    double p[3] = {x[k], y[k], z[k]}, F[NL_CELLULAR_NMAX];
+    nl_cellular_eval(c, p, n, F);
+    out[k] = g->n ? nl_cellular_gctbf_value(g, F) : 0.0;
+  }
+}
+
 void nl_cellular_gctbf_grid(const nl_cellular *c, const nl_cellular_gctbf *g, const nl_noise_window *win, double *out)
 {
   double dx = win->size / win->w, dy = win->size / win->h;

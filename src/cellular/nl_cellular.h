@@ -109,6 +109,10 @@ int nl_cellular_cube(const nl_cellular *c, long i, long j, long k, double *xyz);
 
 /* F[0..n-1] = F1..Fn at xyz, 1 <= n <= 4. */
 void nl_cellular_eval(const nl_cellular *c, const double *xyz, int n, double *F);
+/* F[k n + i] = F_{i+1}(x[k], y[k], z[k]), k < count: nl_cellular_eval at
+ * arbitrary points in one call. */
+void nl_cellular_points(const nl_cellular *c, const double *x, const double *y, const double *z,
+                        size_t count, int n, double *F);
 /* F[k n + i] = F_{i+1}(x0 + k dx, y, z), k < count. */
 void nl_cellular_row(const nl_cellular *c, double x0, double dx, double y, double z,
                      size_t count, int n, double *F);
@@ -131,6 +135,10 @@ double nl_cellular_gctbf_bound(const nl_cellular_gctbf *g);
 /* out[k] = GCTBF(x0 + k dx, y, z). */
 void nl_cellular_gctbf_row(const nl_cellular *c, const nl_cellular_gctbf *g, double x0, double dx, double y,
                            double z, size_t count, double *out);
+
+/* out[k] = GCTBF(x[k], y[k], z[k]) = nl_cellular_gctbf_value of nl_cellular_eval. */
+void nl_cellular_gctbf_points(const nl_cellular *c, const nl_cellular_gctbf *g, const double *x,
+                              const double *y, const double *z, size_t count, double *out);
 
 /* GCTBF on a window (pixel centres, row 0 at y0), like nl_noise_fractal_grid. */
 void nl_cellular_gctbf_grid(const nl_cellular *c, const nl_cellular_gctbf *g, const nl_noise_window *win, double *out);

@@ -55,6 +55,45 @@ NL_TEST(count_rules)
 /* F1 <= F2 <= F3 <= F4 on rows and points; rows give the same bits as
  * points; each F_i matches a brute-force search over 5 x 5 x 5 cubes
  * wherever F_i <= 1 (where the 27-cube search is exact). */
+/* nl_cellular_points and nl_cellular_gctbf_points give the point calls'
+ * bits (nl_cellular_eval, then nl_cellular_gctbf_value) at scattered
+ * points, negative ones among them, for n = 1..4 and a GCTBF sum. */
+NL_TEST(points_equal_eval_bit_for_bit)
+{
+  nl_cellular *c = make(NL_COUNT_INVERSE_CDF, 3);
+  enum { N = 400 };
+  double x[N], y[N], z[N], F[4 * N], v[N];
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, 8);
+  for (int k = 0; k < N; k++) {
+    x[k] = 80 * gsl_rng_uniform(r) - 40;
+    y[k] = -60 * gsl_rng_uniform(r);
+    z[k] = 1e5 * (gsl_rng_uniform(r) - 0.5);
+  }
+  long bad = 0;
+  for (int n = 1; n <= 4; n++) {
+    nl_cellular_points(c, x, y, z, N, n, F);
+    for (int k = 0; k < N; k++) {
+      double p[3] = {x[k], y[k], z[k]}, q[4];
+      nl_cellular_eval(c, p, n, q);
+      bad += memcmp(q, F + (size_t)k * n, (size_t)n * sizeof *q) != 0;
+    }
+  }
+  nl_cellular_gctbf g;
+  nl_error err;
+  NL_CHECK(nl_cellular_gctbf_parse("F3 - 0.5 F1 + F1F2", &g, &err) == NL_OK);
+  nl_cellular_gctbf_points(c, &g, x, y, z, N, v);
+  for (int k = 0; k < N; k++) {
+    double p[3] = {x[k], y[k], z[k]}, q[4];
+    nl_cellular_eval(c, p, g.n, q);
+    double w = nl_cellular_gctbf_value(&g, q);
+    bad += memcmp(&w, &v[k], sizeof w) != 0;
+  }
+  NL_CHECK(bad == 0);
+  gsl_rng_free(r);
+  nl_cellular_free(c);
+}
+
 NL_TEST(ordering_rows_and_brute_force)
 {
   nl_cellular *c = make(NL_COUNT_INVERSE_CDF, 9);

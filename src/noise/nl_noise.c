@@ -385,6 +385,21 @@ void nl_noise_fractal_row(const nl_noise_basis *b, const nl_noise_octaves *o, do
   }
 }
 
+void nl_noise_fractal_points(const nl_noise_basis *b, const nl_noise_octaves *o, const double *x,
+                             const double *y, const double *z, size_t n, double *out)
+{
+  double scratch;
+  for (size_t k = 0; k < n; k++)
+    nl_noise_fractal_row(b, o, x[k], 0.0, y[k], z ? z[k] : 0.0, 1, out + k, &scratch);
+}
+
+double nl_noise_octaves_fmax(const nl_noise_octaves *o)
+{
+  double f = o->n > 0 ? 0.0 : 1.0;
+  for (int l = 0; l < o->n; l++) f = fabs(o->freq[l]) > f ? fabs(o->freq[l]) : f;
+  return f;
+}
+
 void nl_noise_fractal_grid(const nl_noise_basis *b, const nl_noise_octaves *o, const nl_noise_window *win, double *out)
 {
   double dx = win->size / win->w, dy = win->size / win->h;

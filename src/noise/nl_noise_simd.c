@@ -191,73 +191,92 @@ int nl_noise_simd_fractal_row(const nl_noise_basis *b, const nl_noise_octaves *o
 
 /* ---- points ---------------------------------------------------------------- */
 
-void nl_noise_grad2_points(const nl_noise_grad2 *t, const double *x, const double *y, size_t n,
-                           double *out)
+/* The batches on level K, each returning 1 if a point went through the
+ * scalar code (always on the scalar level), 0 if every point had finite
+ * coordinates below 2^31 (times f for a sum): the checked batches' test. */
+static int grad2_points(const nl_noise_simd_kernels *K, const nl_noise_grad2 *t, const double *x,
+                        const double *y, size_t n, double *out)
 {
-  const nl_noise_simd_kernels *K = kernels();
   if (!K) {
     for (size_t k = 0; k < n; k++) out[k] = nl_noise_grad2_eval(t, x[k], y[k]);
-    return;
+    return 1;
   }
   size_t nb = n / NL_SIMD_PAD * NL_SIMD_PAD;
-  if (nb) K->points2(t, x, y, nb, out);
-  if (nb == n) return;
+  int slow = nb ? K->points2(t, x, y, nb, out) : 0;
+  if (nb == n) return slow;
   double xs[NL_SIMD_PAD] = {0}, ys[NL_SIMD_PAD] = {0}, res[NL_SIMD_PAD];
   memcpy(xs, x + nb, (n - nb) * sizeof *xs);
   memcpy(ys, y + nb, (n - nb) * sizeof *ys);
-  K->points2(t, xs, ys, NL_SIMD_PAD, res);
+  slow |= K->points2(t, xs, ys, NL_SIMD_PAD, res);
   memcpy(out + nb, res, (n - nb) * sizeof *res);
+  return slow;
 }
 
-void nl_noise_perm3_points(const nl_noise_perm3 *p, const double *x, const double *y, const double *z,
-                           size_t n, double *out)
+static int perm3_points(const nl_noise_simd_kernels *K, const nl_noise_perm3 *p, const double *x,
+                        const double *y, const double *z, size_t n, double *out)
 {
-  const nl_noise_simd_kernels *K = kernels();
-  if (!K) {
+  const int *p32 = K ? perm3_ints(p) : NULL;
+  if (!p32) {   /* the scalar level, or not a doubled table: the scalar code indexes all 512 */
     for (size_t k = 0; k < n; k++) out[k] = nl_noise_perm3_eval(p, x[k], y[k], z[k]);
-    return;
-  }
-  const int *p32 = perm3_ints(p);
-  if (!p32) {   /* not a doubled table: the scalar code indexes all 512 */
-    for (size_t k = 0; k < n; k++) out[k] = nl_noise_perm3_eval(p, x[k], y[k], z[k]);
-    return;
+    return 1;
   }
   size_t nb = n / NL_SIMD_PAD * NL_SIMD_PAD;
-  if (nb) K->points3(p, p32, x, y, z, nb, out);
-  if (nb == n) return;
+  int slow = nb ? K->points3(p, p32, x, y, z, nb, out) : 0;
+  if (nb == n) return slow;
   double xs[NL_SIMD_PAD] = {0}, ys[NL_SIMD_PAD] = {0}, zs[NL_SIMD_PAD] = {0}, res[NL_SIMD_PAD];
   memcpy(xs, x + nb, (n - nb) * sizeof *xs);
   memcpy(ys, y + nb, (n - nb) * sizeof *ys);
   memcpy(zs, z + nb, (n - nb) * sizeof *zs);
-  K->points3(p, p32, xs, ys, zs, NL_SIMD_PAD, res);
+  slow |= K->points3(p, p32, xs, ys, zs, NL_SIMD_PAD, res);
   memcpy(out + nb, res, (n - nb) * sizeof *res);
+  return slow;
 }
 
-double nl_noise_perm3_points_sum(const nl_noise_perm3 *p, double f, const double *x, const double *y,
-                                 const double *z, size_t n, double amp, double *sum)
+static int perm3_points_sum(const nl_noise_simd_kernels *K, const nl_noise_perm3 *p, double f,
+                            const double *x, const double *y, const double *z, size_t n,
+                            double amp, double *sum, double *top)
 {
-  const nl_noise_simd_kernels *K = kernels();
   const int *p32 = K ? perm3_ints(p) : NULL;
-  double top = 0.0;
   if (!p32) {   /* the scalar level, or not a doubled table */
     for (size_t k = 0; k < n; k++) {
       double v = nl_noise_perm3_eval(p, f * x[k], f * y[k], f * z[k]), a = fabs(v);
-      top = a > top ? a : top;
+      *top = a > *top ? a : *top;
       sum[k] = sum[k] + amp * v;
     }
-    return top;
+    return 1;
   }
   size_t nb = n / NL_SIMD_PAD * NL_SIMD_PAD;
-  if (nb) K->points3_sum(p, p32, f, x, y, z, nb, amp, sum, &top);
-  if (nb == n) return top;
+  int slow = nb ? K->points3_sum(p, p32, f, x, y, z, nb, amp, sum, top) : 0;
+  if (nb == n) return slow;
   /* the tail through a padded block: noise(0, 0, 0) = 0 leaves top alone */
   double xs[NL_SIMD_PAD] = {0}, ys[NL_SIMD_PAD] = {0}, zs[NL_SIMD_PAD] = {0}, ss[NL_SIMD_PAD] = {0};
   memcpy(xs, x + nb, (n - nb) * sizeof *xs);
   memcpy(ys, y + nb, (n - nb) * sizeof *ys);
   memcpy(zs, z + nb, (n - nb) * sizeof *zs);
   memcpy(ss, sum + nb, (n - nb) * sizeof *ss);
-  K->points3_sum(p, p32, f, xs, ys, zs, NL_SIMD_PAD, amp, ss, &top);
+  slow |= K->points3_sum(p, p32, f, xs, ys, zs, NL_SIMD_PAD, amp, ss, top);
   memcpy(sum + nb, ss, (n - nb) * sizeof *ss);
+  return slow;
+}
+
+void nl_noise_grad2_points(const nl_noise_grad2 *t, const double *x, const double *y, size_t n,
+                           double *out)
+{
+  grad2_points(kernels(), t, x, y, n, out);
+}
+
+void nl_noise_perm3_points(const nl_noise_perm3 *p, const double *x, const double *y,
+                           const double *z, size_t n, double *out)
+{
+  perm3_points(kernels(), p, x, y, z, n, out);
+}
+
+double nl_noise_perm3_points_sum(const nl_noise_perm3 *p, double f, const double *x,
+                                 const double *y, const double *z, size_t n, double amp,
+                                 double *sum)
+{
+  double top = 0.0;
+  perm3_points_sum(kernels(), p, f, x, y, z, n, amp, sum, &top);
   return top;
 }
 
@@ -309,4 +328,99 @@ size_t nl_noise_perm3_points_bounded(const nl_noise_perm3 *p, double f, double a
   pk->n = left;
   *top = t;
   return nhi;
+}
+
+/* ---- checked batches ------------------------------------------------------- */
+
+/* Points per block of a checked batch (NL_NOISE_CHECK_BLOCK): three
+ * coordinate blocks and the output stay in L1 (32 KiB) between the kernel
+ * and the check. */
+#define NL_CHECK_BLOCK NL_NOISE_CHECK_BLOCK
+
+/* Whether f |c| leaves the lattice's range (NaN and infinity do). */
+static inline int refused(double c, double f) { return !(f * fabs(c) < 0x1p52); }
+
+/* The largest lim with f |c| < 2^52 whenever |c| < lim (the product
+ * rounds monotonically in |c|): the vector test compares without a
+ * multiplication, and where it fails the exact test decides. */
+static double lattice_lim(double f)
+{
+  double lim = 0x1p52 / f;
+  while (lim > 0 && !(f * lim < 0x1p52)) lim = nextafter(lim, 0.0);
+  return lim;
+}
+
+/* 1 if some coordinate of the block may be refused: the level's vector
+ * test over whole vectors, the scalar one on the tail. */
+static int block_refused(const nl_noise_simd_kernels *K, const double *x, const double *y,
+                         const double *z, size_t n, double f, double lim)
+{
+  size_t nb = K ? n / NL_SIMD_PAD * NL_SIMD_PAD : 0;
+  if (nb && K->refused(x, y, z, nb, lim)) return 1;
+  for (size_t k = nb; k < n; k++)
+    if (refused(x[k], f) || refused(y[k], f) || (z && refused(z[k], f))) return 1;
+  return 0;
+}
+
+/* nl_noise_points_refused with the level and lim (lattice_lim(f)) given. */
+static size_t first_refused(const nl_noise_simd_kernels *K, const double *x, const double *y,
+                            const double *z, size_t n, double f, double lim)
+{
+  for (size_t k0 = 0; k0 < n; k0 += NL_CHECK_BLOCK) {
+    size_t m = n - k0 < NL_CHECK_BLOCK ? n - k0 : NL_CHECK_BLOCK;
+    if (!block_refused(K, x + k0, y + k0, z ? z + k0 : NULL, m, f, lim)) continue;
+    for (size_t k = k0; k < k0 + m; k++)
+      if (refused(x[k], f) || refused(y[k], f) || (z && refused(z[k], f))) return k;
+  }
+  return n;
+}
+
+size_t nl_noise_points_refused(const double *x, const double *y, const double *z, size_t n,
+                               double f)
+{
+  return first_refused(kernels(), x, y, z, n, f, lattice_lim(f));
+}
+
+/* The kernel runs first, writing out, and tells whether every point of
+ * the block had finite coordinates below 2^31 (times f for each octave):
+ * its vector code tests that anyway, so the check costs nothing then; a
+ * block with a point outside is checked exactly. A separate pass over the
+ * points (nl_noise_points_refused) cost 1.3x the bare call at 10^6 points
+ * when it came first (the points' trip from memory stalls it), 1.07x
+ * right after the kernel, on the same block in cache. */
+size_t nl_noise_perm3_points_checked(const nl_noise_perm3 *p, const nl_noise_octaves *o,
+                                     const double *x, const double *y, const double *z, size_t n,
+                                     double *out)
+{
+  const nl_noise_simd_kernels *K = kernels();
+  double f = o ? nl_noise_octaves_fmax(o) : 1.0, lim = lattice_lim(f), top = 0.0;
+  for (size_t k0 = 0; k0 < n; k0 += NL_CHECK_BLOCK) {
+    size_t m = n - k0 < NL_CHECK_BLOCK ? n - k0 : NL_CHECK_BLOCK;
+    const double *xb = x + k0, *yb = y + k0, *zb = z + k0;
+    int slow = 0;
+    if (!o) {
+      slow = perm3_points(K, p, xb, yb, zb, m, out + k0);
+    } else {
+      memset(out + k0, 0, m * sizeof *out);
+      for (int l = 0; l < o->n; l++)
+        slow |= perm3_points_sum(K, p, o->freq[l], xb, yb, zb, m, o->amp[l], out + k0, &top);
+    }
+    size_t ok = slow ? first_refused(K, xb, yb, zb, m, f, lim) : m;
+    if (ok < m) return k0 + ok;
+  }
+  return n;
+}
+
+size_t nl_noise_grad2_points_checked(const nl_noise_grad2 *t, const double *x, const double *y,
+                                     size_t n, double *out)
+{
+  const nl_noise_simd_kernels *K = kernels();
+  double lim = lattice_lim(1.0);
+  for (size_t k0 = 0; k0 < n; k0 += NL_CHECK_BLOCK) {
+    size_t m = n - k0 < NL_CHECK_BLOCK ? n - k0 : NL_CHECK_BLOCK;
+    int slow = grad2_points(K, t, x + k0, y + k0, m, out + k0);
+    size_t ok = slow ? first_refused(K, x + k0, y + k0, NULL, m, 1.0, lim) : m;
+    if (ok < m) return k0 + ok;
+  }
+  return n;
 }

@@ -64,21 +64,28 @@ typedef struct {
                    double fz, double v, double w, size_t ncol, double *gx, double *a);
   /* Points; n is a multiple of NL_SIMD_PAD (the caller pads). Lanes whose
    * coordinates leave |.| < 2^31 (or are not finite) go through the scalar
-   * nl_noise_grad2_eval / nl_noise_perm3_eval. */
-  void (*points2)(const nl_noise_grad2 *t, const double *x, const double *y, size_t n, double *out);
-  void (*points3)(const nl_noise_perm3 *p, const int *p32, const double *x, const double *y,
+   * nl_noise_grad2_eval / nl_noise_perm3_eval; then (only then) the call
+   * returns 1, else 0: every coordinate finite and below 2^31, which the
+   * checked batches take as their test passed. */
+  int (*points2)(const nl_noise_grad2 *t, const double *x, const double *y, size_t n, double *out);
+  int (*points3)(const nl_noise_perm3 *p, const int *p32, const double *x, const double *y,
                   const double *z, size_t n, double *out);
   /* One octave of a sum over points, as nl_noise_perm3_points_sum: sum[k] =
    * sum[k] + amp v_k, v_k the noise at (f x[k], f y[k], f z[k]), and *top
    * raised to the largest |v_k|; n a multiple of NL_SIMD_PAD, lanes out of
-   * range as points3. */
-  void (*points3_sum)(const nl_noise_perm3 *p, const int *p32, double f, const double *x, const double *y,
-                      const double *z, size_t n, double amp, double *sum, double *top);
+   * range as points3 (here f x[k] ..., so 0 means f |c| < 2^31). */
+  int (*points3_sum)(const nl_noise_perm3 *p, const int *p32, double f, const double *x,
+                     const double *y, const double *z, size_t n, double amp, double *sum,
+                     double *top);
   /* nl_noise_perm3_points_bounded on the first n points of pk (n a
    * multiple of NL_SIMD_PAD): the undecided go to the front from 0, their
    * count returned; hi and *nhi, *top as there. pk->n is not touched. */
   size_t (*points3_bounded)(const nl_noise_perm3 *p, const int *p32, double f, double amp, double r,
                             const nl_noise_pack *pk, size_t n, int *hi, size_t *nhi, double *top);
+  /* 1 if a coordinate among x[k], y[k], z[k], k < n (a multiple of
+   * NL_SIMD_PAD; z NULL: planar) has |c| >= lim or is NaN, else 0: the
+   * quick test of nl_noise_points_refused, a vector at a time. */
+  int (*refused)(const double *x, const double *y, const double *z, size_t n, double lim);
 } nl_noise_simd_kernels;
 
 extern const nl_noise_simd_kernels nl_noise_simd_sse2, nl_noise_simd_avx2, nl_noise_simd_avx512;

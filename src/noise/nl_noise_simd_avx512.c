@@ -184,13 +184,14 @@ arith8(const p3tab *tab, vi16 hs[2][4], int h, vd vx, vd vy, vd vz)
 
 /* n points 16 at a time, stored or (sum) scaled by f and summed into out
  * as points3_do (nl_noise_simd_body.h). */
-static inline __attribute__((always_inline)) void
+static inline __attribute__((always_inline)) int
 points3_16(const nl_noise_perm3 *P, const int *p32, double f, const double *x, const double *y,
            const double *z, size_t n, double *out, double amp, double *top, int sum)
 {
   p3tab tab = p3_make(P, p32);
   vd vt = SPLAT(0.0);
   size_t k = 0;
+  int slow = 0;
   for (; k + 16 <= n; k += 16) {
     vd sx[2], sy[2], sz[2];
     vi16 hs[2][4];
@@ -199,7 +200,7 @@ points3_16(const nl_noise_perm3 *P, const int *p32, double f, const double *x, c
       if (sum) { sx[h] = f * sx[h]; sy[h] = f * sy[h]; sz[h] = f * sz[h]; }   /* f * x[k] ... */
     }
     if (!hash16(&tab, sx, sy, sz, hs)) {
-      points3_do(P, p32, f, x + k, y + k, z + k, 16, out + k, amp, top, sum);
+      slow |= points3_do(P, p32, f, x + k, y + k, z + k, 16, out + k, amp, top, sum);
       continue;
     }
     for (int h = 0; h < 2; h++) {
@@ -208,20 +209,22 @@ points3_16(const nl_noise_perm3 *P, const int *p32, double f, const double *x, c
       v_points_emit(out + k + 8 * h, arith8(&tab, hs, h, vx, vy, vz), sum, amp, &vt);
     }
   }
-  if (k < n) points3_do(P, p32, f, x + k, y + k, z + k, n - k, out + k, amp, top, sum);
+  if (k < n) slow |= points3_do(P, p32, f, x + k, y + k, z + k, n - k, out + k, amp, top, sum);
   if (sum) *top = v_top(vt, *top);
+  return slow;
 }
 
-static void points3(const nl_noise_perm3 *P, const int *p32, const double *x, const double *y,
+static int points3(const nl_noise_perm3 *P, const int *p32, const double *x, const double *y,
                     const double *z, size_t n, double *out)
 {
-  points3_16(P, p32, 1.0, x, y, z, n, out, 0.0, NULL, 0);
+  return points3_16(P, p32, 1.0, x, y, z, n, out, 0.0, NULL, 0);
 }
 
-static void points3_sum(const nl_noise_perm3 *P, const int *p32, double f, const double *x, const double *y,
-                        const double *z, size_t n, double amp, double *sum, double *top)
+static int points3_sum(const nl_noise_perm3 *P, const int *p32, double f, const double *x,
+                       const double *y, const double *z, size_t n, double amp, double *sum,
+                       double *top)
 {
-  points3_16(P, p32, f, x, y, z, n, sum, amp, top, 1);
+  return points3_16(P, p32, f, x, y, z, n, sum, amp, top, 1);
 }
 
 /* The bounded term 16 at a time: each half packed as soon as it is summed
@@ -258,7 +261,7 @@ static size_t points3_bounded(const nl_noise_perm3 *P, const int *p32, double f,
 }
 
 const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3, points2, points3, points3_sum,
-                                           points3_bounded};
+                                           points3_bounded, refused_lanes};
 
 #if defined(__clang__)
 #pragma clang attribute pop

@@ -140,8 +140,9 @@ static void columns3(const nl_noise_perm3 *P, const int *p32, unsigned xm, unsig
 
 /* ---- points ---------------------------------------------------------------- */
 
-static void points2(const nl_noise_grad2 *t, const double *x, const double *y, size_t n, double *out)
+static int points2(const nl_noise_grad2 *t, const double *x, const double *y, size_t n, double *out)
 {
+  int slow = 0;
   const int *perm = (const int *)t->perm;
   int pow2 = t->m >= 1 && (t->m & (t->m - 1)) == 0 && t->m <= 0x80000000u;
   vu mask = SPLATU(t->m - 1);
@@ -149,6 +150,7 @@ static void points2(const nl_noise_grad2 *t, const double *x, const double *y, s
     vd vx = ld(x + k), vy = ld(y + k);
     if (!v_all(v_small(vx) & v_small(vy))) {
       for (size_t l = 0; l < NL_SIMD_W; l++) out[k + l] = nl_noise_grad2_eval(t, x[k + l], y[k + l]);
+      slow = 1;
       continue;
     }
     /* nl_noise_grad2_eval: i = lfloor(x), j = lfloor(y), fy = lfrac(y, j), v = fade(fy) */
@@ -177,15 +179,18 @@ static void points2(const nl_noise_grad2 *t, const double *x, const double *y, s
     vd gx1 = g10 + v * (g11 - g10), a1 = a10 + v * (a11 - a10);
     st(out + k, v_blend(fx, gx0, a0, gx1, a1));
   }
+  return slow;
 }
 
 /* One vector of points of nl_noise_perm3_eval. Lanes whose coordinates
- * leave |.| < 2^31 (or are not finite) go through the scalar code. */
+ * leave |.| < 2^31 (or are not finite) go through the scalar code, and
+ * set *slow. */
 static inline __attribute__((always_inline)) vd
-v_perm3(const p3tab *tab, const nl_noise_perm3 *P, vd vx, vd vy, vd vz)
+v_perm3(const p3tab *tab, const nl_noise_perm3 *P, vd vx, vd vy, vd vz, int *slow)
 {
   if (!v_all(v_small(vx) & v_small(vy) & v_small(vz))) {
     double r[NL_SIMD_W];
+    *slow = 1;
     for (int l = 0; l < NL_SIMD_W; l++) r[l] = nl_noise_perm3_eval(P, vx[l], vy[l], vz[l]);
     return ld(r);
   }
@@ -243,33 +248,38 @@ static inline double v_top(vd top, double t)
 }
 
 /* n points (a multiple of NL_SIMD_W): stored, or (sum) scaled by f and
- * summed into out, *top raised to the largest |noise|. */
-static inline __attribute__((always_inline)) void
+ * summed into out, *top raised to the largest |noise|; 1 if a lane went
+ * through the scalar code. */
+static inline __attribute__((always_inline)) int
 points3_do(const nl_noise_perm3 *P, const int *p32, double f, const double *x, const double *y,
            const double *z, size_t n, double *out, double amp, double *top, int sum)
 {
   p3tab tab = p3_make(P, p32);
   vd vt = SPLAT(0.0);
+  int slow = 0;
   for (size_t k = 0; k < n; k += NL_SIMD_W) {
     vd vx = ld(x + k), vy = ld(y + k), vz = ld(z + k);
     if (sum) { vx = f * vx; vy = f * vy; vz = f * vz; }   /* f * x[k] ... */
-    v_points_emit(out + k, v_perm3(&tab, P, vx, vy, vz), sum, amp, &vt);
+    v_points_emit(out + k, v_perm3(&tab, P, vx, vy, vz, &slow), sum, amp, &vt);
   }
   if (sum) *top = v_top(vt, *top);
+  return slow;
 }
 
 /* (unused where a level brings its own) */
-static __attribute__((unused)) void points3_lanes(const nl_noise_perm3 *P, const int *p32, const double *x,
-                                                  const double *y, const double *z, size_t n, double *out)
+static __attribute__((unused)) int points3_lanes(const nl_noise_perm3 *P, const int *p32,
+                                                 const double *x, const double *y, const double *z,
+                                                 size_t n, double *out)
 {
-  points3_do(P, p32, 1.0, x, y, z, n, out, 0.0, NULL, 0);
+  return points3_do(P, p32, 1.0, x, y, z, n, out, 0.0, NULL, 0);
 }
 
-static __attribute__((unused)) void points3_sum_lanes(const nl_noise_perm3 *P, const int *p32, double f,
-                                                      const double *x, const double *y, const double *z,
-                                                      size_t n, double amp, double *sum, double *top)
+static __attribute__((unused)) int points3_sum_lanes(const nl_noise_perm3 *P, const int *p32,
+                                                     double f, const double *x, const double *y,
+                                                     const double *z, size_t n, double amp,
+                                                     double *sum, double *top)
 {
-  points3_do(P, p32, f, x, y, z, n, sum, amp, top, 1);
+  return points3_do(P, p32, f, x, y, z, n, sum, amp, top, 1);
 }
 
 /* ---- one term of a bounded sum (nl_noise_perm3_points_bounded) ----------- */
@@ -304,7 +314,8 @@ points3_bounded_do(const p3tab *tab, const nl_noise_perm3 *P, double f, double a
 {
   for (size_t k = k0; k < k1; k += NL_SIMD_W) {
     vd x = ld(pk->x + k), y = ld(pk->y + k), z = ld(pk->z + k);
-    vd v = v_perm3(tab, P, f * x, f * y, f * z);   /* noise(f x[k], ...) */
+    int slow;
+    vd v = v_perm3(tab, P, f * x, f * y, f * z, &slow);   /* noise(f x[k], ...) */
     v_top_raise(vt, v);
     left = v_pack(pk, k, x, y, z, ld(pk->base + k), ld(pk->sum + k) + amp * v, r, left, hi, nh);
   }
@@ -321,4 +332,26 @@ points3_bounded_lanes(const nl_noise_perm3 *P, const int *p32, double f, double 
   size_t left = points3_bounded_do(&tab, P, f, amp, r, &q, 0, n, 0, hi, nhi, &vt);
   *top = v_top(vt, *top);
   return left;
+}
+
+/* ---- the refusal test of checked batches (nl_noise_points_refused) -------- */
+
+/* All lanes set where |c| < lim (NaN compares false, so it fails). */
+static inline vl v_below(const double *c, vd lim)
+{
+  vd a = (vd)((vl)ld(c) & 0x7fffffffffffffffLL);
+  return (vl)(a < lim);
+}
+static __attribute__((unused)) int refused_lanes(const double *x, const double *y, const double *z,
+                                                 size_t n, double lim)
+{
+  vd vlim = SPLAT(lim);
+  if (z) {
+    for (size_t k = 0; k < n; k += NL_SIMD_W)
+      if (!v_all(v_below(x + k, vlim) & v_below(y + k, vlim) & v_below(z + k, vlim))) return 1;
+  } else {
+    for (size_t k = 0; k < n; k += NL_SIMD_W)
+      if (!v_all(v_below(x + k, vlim) & v_below(y + k, vlim))) return 1;
+  }
+  return 0;
 }

@@ -363,6 +363,113 @@ NL_TEST(edge_rows_match_scalar)
   nl_noise_grad2_free(t);
 }
 
+/* The checked batches: the unchecked batches' bits where every point
+ * passes, and at a refused point (NaN, infinity, f |c| at 2^52 and just
+ * below it, in each coordinate, at block edges and in the tail) its index,
+ * the values before it and nothing past its block. */
+static int refused_ref(const double *x, const double *y, const double *z, size_t k, double f)
+{
+  return !(f * fabs(x[k]) < 0x1p52) || !(f * fabs(y[k]) < 0x1p52) ||
+         (z && !(f * fabs(z[k]) < 0x1p52));
+}
+
+NL_TEST(checked_points)
+{
+  find_levels();
+  enum { N = 2 * NL_NOISE_CHECK_BLOCK + 37 };
+  nl_noise_perm3 p;
+  nl_noise_perm3_seed(&p, 5);
+  nl_noise_grad2 *t = nl_noise_grad2_alloc(64);
+  nl_noise_grad2_seed(t, 5);
+  nl_noise_octaves fbm = nl_noise_octaves_fbm(5, 0.5, 2.0);   /* finest frequency 16 */
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, 77);
+  static double x[N], y[N], z[N], ref[N], got[N];
+  for (size_t k = 0; k < N; k++) {
+    x[k] = 600 * gsl_rng_uniform(r) - 300;
+    y[k] = 600 * gsl_rng_uniform(r) - 300;
+    z[k] = -1e6 * gsl_rng_uniform(r);
+  }
+  const size_t at[] = {0, 7, NL_NOISE_CHECK_BLOCK - 1, NL_NOISE_CHECK_BLOCK, N - 1};
+  const double bad[] = {NAN, INFINITY, -INFINITY, 0x1p52, -0x1p52};
+  int levels_all[5] = {NL_NOISE_SIMD_SCALAR};
+  for (int L = 0; L < nlevels; L++) levels_all[L + 1] = levels[L];
+  for (int L = 0; L <= nlevels; L++) {
+    nl_noise_simd_set(levels_all[L]);
+    for (int kind = 0; kind < 3; kind++) {   /* improved, fbm over improved, grad2 */
+      const nl_noise_octaves *o = kind == 1 ? &fbm : NULL;
+      double f = kind == 1 ? 16.0 : 1.0;
+      for (size_t k = 0; k < N; k++) ref[k] = 0.0;
+      if (kind == 0) nl_noise_perm3_points(&p, x, y, z, N, ref);
+      if (kind == 1)
+        for (int l = 0; l < fbm.n; l++)
+          nl_noise_perm3_points_sum(&p, fbm.freq[l], x, y, z, N, fbm.amp[l], ref);
+      if (kind == 2) nl_noise_grad2_points(t, x, y, N, ref);
+      size_t k = kind == 2 ? nl_noise_grad2_points_checked(t, x, y, N, got)
+                           : nl_noise_perm3_points_checked(&p, o, x, y, z, N, got);
+      NL_CHECK(k == N && same(got, ref, N));
+      double *cs[] = {x, y, z};
+      for (size_t a = 0; a < sizeof at / sizeof *at; a++)
+        for (size_t b = 0; b < sizeof bad / sizeof *bad + 1; b++)
+          for (int c = 0; c < (kind == 2 ? 2 : 3); c++) {
+            double keep = cs[c][at[a]];
+            /* the last case: just below the limit, accepted */
+            cs[c][at[a]] = b < sizeof bad / sizeof *bad ? bad[b] / f : nextafter(0x1p52, 0) / f;
+            int refuse = b < sizeof bad / sizeof *bad;
+            for (size_t q = 0; q < N; q++) got[q] = -7.0;
+            k = kind == 2 ? nl_noise_grad2_points_checked(t, x, y, N, got)
+                          : nl_noise_perm3_points_checked(&p, o, x, y, z, N, got);
+            size_t end = (at[a] / NL_NOISE_CHECK_BLOCK + 1) * NL_NOISE_CHECK_BLOCK;
+            NL_CHECK(k == (refuse ? at[a] : N));
+            NL_CHECK(nl_noise_points_refused(x, y, kind == 2 ? NULL : z, N, f) == k);
+            if (refuse) {
+              NL_CHECK(same(got, ref, at[a]));
+              for (size_t q = end; q < N; q++) NL_CHECK(got[q] == -7.0);
+            }
+            cs[c][at[a]] = keep;
+          }
+    }
+    /* a frequency that is not a power of two: the quick test's bound
+     * against the exact product, around 2^52 / 3 */
+    double f = 3.0, c0 = 0x1p52 / 3;
+    for (int d = -4; d <= 4; d++) {
+      double c = c0;
+      for (int s = 0; s < (d < 0 ? -d : d); s++) c = nextafter(c, d < 0 ? 0 : INFINITY);
+      double cx[16], cy[16] = {0};
+      for (int q = 0; q < 16; q++) cx[q] = q == 11 ? c : 1.0;
+      size_t want = refused_ref(cx, cy, NULL, 11, f) ? 11 : 16;
+      NL_CHECK(nl_noise_points_refused(cx, cy, NULL, 16, f) == want);
+    }
+  }
+  nl_noise_simd_set(nl_noise_simd_best());
+  gsl_rng_free(r);
+  nl_noise_grad2_free(t);
+}
+
+/* nl_noise_fractal_points is nl_noise_fractal_row point by point: at a
+ * row's samples (dyadic, power-of-two frequencies: exact products) it
+ * gives the row's bits, for each basis and turbulence. */
+NL_TEST(fractal_points_are_rows)
+{
+  nl_noise_perm3 p;
+  nl_noise_perm3_seed(&p, 9);
+  nl_noise_grad2 *t = nl_noise_grad2_alloc(128);
+  nl_noise_grad2_seed(t, 9);
+  nl_noise_basis bases[] = {nl_noise_basis_perm3(&p), nl_noise_basis_grad2(t)};
+  nl_noise_octaves o = nl_noise_octaves_fbm(4, 0.6, 2.0);
+  enum { N = 300 };
+  double x[N], y[N], z[N], row[N], got[N], scratch[N];
+  for (int tb = 0; tb < 2; tb++, o.turbulence = 1)
+    for (int b = 0; b < 2; b++) {
+      double x0 = -37.25, dx = 0.015625, yy = -3.5, zz = 11.75;
+      for (int k = 0; k < N; k++) { x[k] = x0 + k * dx; y[k] = yy; z[k] = zz; }
+      nl_noise_fractal_row(&bases[b], &o, x0, dx, yy, b ? 0.0 : zz, N, row, scratch);
+      nl_noise_fractal_points(&bases[b], &o, x, y, b ? NULL : z, N, got);
+      NL_CHECK(same(got, row, N));
+    }
+  nl_noise_grad2_free(t);
+}
+
 /* The sums the experiments use (S1-S4): fBm grids over both bases. */
 NL_TEST(fractal_grids_match_scalar)
 {

@@ -168,6 +168,12 @@ static double eval_point(const nl_wavelet_tile *t, double x, double y, double z)
 double nl_wavelet_eval2(const nl_wavelet_tile *t, double x, double y) { return eval_point(t, x, y, 0); }
 double nl_wavelet_eval3(const nl_wavelet_tile *t, double x, double y, double z) { return eval_point(t, x, y, z); }
 
+void nl_wavelet_points(const nl_wavelet_tile *t, const double *x, const double *y, const double *z,
+                       size_t n, double *out)
+{
+  for (size_t k = 0; k < n; k++) out[k] = eval_point(t, x[k], y[k], t->dim == 3 ? z[k] : 0);
+}
+
 /* nl_wavelet_row's sample loop on the dispatched level (nl_wavelet_simd.h)
  * over the period line[0 .. n - 1] repeated: GSL_SUCCESS, or GSL_CONTINUE
  * (nothing done) on the scalar level, for sparse rows (more than two

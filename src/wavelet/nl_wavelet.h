@@ -77,6 +77,10 @@ void nl_wavelet_coarse_line(const float *line, size_t stride, int n, double *coa
 
 double nl_wavelet_eval2(const nl_wavelet_tile *t, double x, double y);
 double nl_wavelet_eval3(const nl_wavelet_tile *t, double x, double y, double z);
+/* out[k] = nl_wavelet_eval3(t, x[k], y[k], z[k]) (2D tiles: eval2; z may be
+ * NULL), k < n: arbitrary points in one call. */
+void nl_wavelet_points(const nl_wavelet_tile *t, const double *x, const double *y, const double *z,
+                       size_t n, double *out);
 /* out[k] += weight * N(x0 + k dx, y[, z]), k < count. 2D tiles ignore z. */
 void nl_wavelet_row(const nl_wavelet_tile *t, double x0, double dx, double y, double z,
                     size_t count, double weight, double *out);

@@ -49,6 +49,33 @@ NL_TEST(row_equals_points_bit_for_bit)
   }
 }
 
+/* nl_wavelet_points gives nl_wavelet_eval2/3's bits at scattered points,
+ * negative and far from the origin among them. */
+NL_TEST(points_equal_eval_bit_for_bit)
+{
+  enum { N = 500 };
+  double x[N], y[N], z[N], got[N];
+  unsigned long s = 12345;
+  for (int k = 0; k < N; k++) {   /* a small LCG: the points need no statistics */
+    s = s * 6364136223846793005UL + 1442695040888963407UL;
+    x[k] = ((double)(s >> 11) / 0x1p53 - 0.5) * (k % 7 ? 200 : 2e9);
+    y[k] = -x[k] * 0.37 + (k % 5) - 2.5;
+    z[k] = x[k] * 0.11 - 40;
+  }
+  for (int dim = 2; dim <= 3; dim++) {
+    nl_wavelet_tile *t = nl_wavelet_tile_alloc(dim, 16);
+    nl_wavelet_tile_seed(t, 4);
+    nl_wavelet_points(t, x, y, dim == 3 ? z : NULL, N, got);
+    int same = 1;
+    for (int k = 0; k < N; k++) {
+      double p = dim == 2 ? nl_wavelet_eval2(t, x[k], y[k]) : nl_wavelet_eval3(t, x[k], y[k], z[k]);
+      same &= memcmp(&p, &got[k], sizeof p) == 0;
+    }
+    NL_CHECK(same);
+    nl_wavelet_tile_free(t);
+  }
+}
+
 NL_TEST(bspline_interpolates_a_constant_tile)
 {
   /* Quadratic B-spline weights sum to 1: a tile of ones evaluates to 1. */
