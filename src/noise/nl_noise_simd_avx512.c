@@ -182,6 +182,128 @@ arith8(const p3tab *tab, vi16 hs[2][4], int h, vd vx, vd vy, vd vz)
   return v_blend(v_frac(vx, ci), g0, a0, g1, a1);
 }
 
+/* ---- 64 points (or columns) per byte permute ------------------------------
+ *
+ * With a doubled table p[idx] = p[idx & 255], so Perlin's hashing is byte
+ * arithmetic: A = p[X] + Y and the sums after it may wrap mod 256 without
+ * changing a lookup, and X + 1 may too. One lookup of 64 byte lanes then
+ * serves 64 points, where int lanes serve 16: the 14 lookups of a point
+ * fall from 56 permutes per 16 points to 56 per 64. The corner hashes go
+ * through memory, where the arithmetic widens 8 of them at a time to the
+ * qword indices of the gradient permutes (vpermt2pd reads the low 4 bits:
+ * the & 15 is free). */
+typedef char vb __attribute__((vector_size(64)));
+static inline vb p3_byte(const p3tab *t, vb idx)
+{
+  __m512i ix = (__m512i)idx;
+  __m512i lo = _mm512_permutex2var_epi8(t->p[0], ix, t->p[1]);
+  __m512i hi = _mm512_permutex2var_epi8(t->p[2], ix, t->p[3]);
+  return (vb)_mm512_mask_blend_epi8(_mm512_movepi8_mask(ix), lo, hi);
+}
+/* Hashes 8 q .. 8 q + 7 of a byte array, widened to qwords. */
+static inline __m512i widen8(const unsigned char *h)
+{
+  return _mm512_cvtepu8_epi64(_mm_loadl_epi64((const __m128i *)h));
+}
+static inline vd g3q(const p3tab *t, int comp, __m512i h)
+{
+  return (vd)_mm512_permutex2var_pd(t->g[comp][0], h, t->g[comp][1]);
+}
+/* v_column3_fp (nl_noise_simd_body.h), the same operations in the same
+ * order, on widened hashes. */
+static inline __attribute__((always_inline)) void
+column3_q(const p3tab *p, __m512i h00, __m512i h10, __m512i h01, __m512i h11, vd fy, vd fz, vd v,
+          vd w, vd *gxo, vd *ao)
+{
+  *gxo = v_lerp(w, v_lerp(v, g3q(p, 0, h00), g3q(p, 0, h10)),
+                v_lerp(v, g3q(p, 0, h01), g3q(p, 0, h11)));
+  vd fy1 = fy - 1.0, fz1 = fz - 1.0;
+  vd y00 = g3q(p, 1, h00) * fy + g3q(p, 2, h00) * fz;
+  vd y10 = g3q(p, 1, h10) * fy1 + g3q(p, 2, h10) * fz;
+  vd y01 = g3q(p, 1, h01) * fy + g3q(p, 2, h01) * fz1;
+  vd y11 = g3q(p, 1, h11) * fy1 + g3q(p, 2, h11) * fz1;
+  *ao = v_lerp(w, v_lerp(v, y00, y10), v_lerp(v, y01, y11));
+}
+
+/* Perlin's hashing (nl_noise.c column3 at columns i and i + 1) of the 64
+ * points of bytes X, Y, Z: the corner hashes h00, h10, h01, h11 of column
+ * i to hs[0 .. 3], of column i + 1 to hs[4 .. 7]. */
+static inline __attribute__((always_inline)) void
+hash64(const p3tab *tab, vb X, vb Y, vb Z, unsigned char hs[8][64])
+{
+  for (int c = 0; c < 2; c++) {
+    vb A = p3_byte(tab, X + (char)c) + Y;
+    vb AA = p3_byte(tab, A) + Z, AB = p3_byte(tab, A + 1) + Z;
+    vb h[4] = {p3_byte(tab, AA), p3_byte(tab, AB), p3_byte(tab, AA + 1), p3_byte(tab, AB + 1)};
+    memcpy(hs[4 * c], h, sizeof h);
+  }
+}
+
+/* The cells of 8 coordinates as ints: floor by the conversion's rounding
+ * mode. A coordinate outside [-2^31, 2^31), NaN or infinite converts to
+ * INT_MIN, which the caller takes as "not here" (with the few coordinates
+ * whose floor is INT_MIN itself: the scalar code takes them all). */
+static inline __m256i cell_ints(vd x)
+{
+  return _mm512_cvt_roundpd_epi32((__m512d)x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+}
+
+/* The fractions of 64 points, their fades and their hashes; 0 if a
+ * coordinate has no int cell (then nothing is hashed). lfloor as the int
+ * cell converted back (exact, and +0 for -0, as the scalar (double)i), so
+ * the fraction is the scalar one. The fades are made here, apart from the
+ * blends that use them: the chains of the second pass stay short. */
+static inline __attribute__((always_inline)) int
+points_hash64(const p3tab *tab, double f, int scale, const double *x, const double *y,
+              const double *z, double fr[6][64], unsigned char hs[8][64])
+{
+  const double *src[3] = {x, y, z};
+  __mmask16 bad = 0;
+  vb b[3];
+  for (int a = 0; a < 3; a++) {
+    __m128i q[4];
+    for (int h = 0; h < 4; h++) {
+      __m256i ci[2];
+      for (int u = 0; u < 2; u++) {
+        int g = 2 * h + u;
+        vd v = ld(src[a] + 8 * g);
+        if (scale) v = f * v;   /* f * x[k] ... */
+        ci[u] = cell_ints(v);
+        vd t = v - (vd)_mm512_cvtepi32_pd(ci[u]);
+        st(fr[a] + 8 * g, t);
+        st(fr[3 + a] + 8 * g, v_fade(t));
+      }
+      __m512i c16 = _mm512_inserti64x4(_mm512_castsi256_si512(ci[0]), ci[1], 1);
+      bad |= _mm512_cmpeq_epi32_mask(c16, _mm512_set1_epi32((int)0x80000000u));
+      q[h] = _mm512_cvtepi32_epi8(c16);   /* the low bytes */
+    }
+    __m512i w = _mm512_castsi128_si512(q[0]);
+    w = _mm512_inserti32x4(w, q[1], 1);
+    w = _mm512_inserti32x4(w, q[2], 2);
+    b[a] = (vb)_mm512_inserti32x4(w, q[3], 3);
+  }
+  if (bad) return 0;
+  hash64(tab, b[0], b[1], b[2], hs);
+  return 1;
+}
+
+/* Points 8 g .. 8 g + 7 of a hashed 64: nl_noise_perm3_eval from the
+ * fractions and fades (two columns, then nl_noise.c's blend). */
+static inline __attribute__((always_inline)) vd
+points_arith64(const p3tab *tab, const double fr[6][64], const unsigned char hs[8][64], int g)
+{
+  vd fy = ld(fr[1] + 8 * g), fz = ld(fr[2] + 8 * g);
+  vd v = ld(fr[4] + 8 * g), w = ld(fr[5] + 8 * g), g0, a0, g1, a1;
+  column3_q(tab, widen8(hs[0] + 8 * g), widen8(hs[1] + 8 * g), widen8(hs[2] + 8 * g),
+            widen8(hs[3] + 8 * g), fy, fz, v, w, &g0, &a0);
+  column3_q(tab, widen8(hs[4] + 8 * g), widen8(hs[5] + 8 * g), widen8(hs[6] + 8 * g),
+            widen8(hs[7] + 8 * g), fy, fz, v, w, &g1, &a1);
+  vd t = ld(fr[0] + 8 * g);   /* v_blend with its fade of t made earlier */
+  vd l = t * g0 + a0;
+  vd r = (t - 1.0) * g1 + a1;
+  return l + ld(fr[3] + 8 * g) * (r - l);
+}
+
 /* n points 16 at a time, stored or (sum) scaled by f and summed into out
  * as points3_do (nl_noise_simd_body.h). */
 static inline __attribute__((always_inline)) void
@@ -191,6 +313,15 @@ points3_16(const nl_noise_perm3 *P, const int *p32, double f, const double *x, c
   p3tab tab = p3_make(P, p32);
   vd vt = SPLAT(0.0);
   size_t k = 0;
+  for (; k + 64 <= n; k += 64) {
+    double fr[6][64] __attribute__((aligned(64)));
+    unsigned char hs64[8][64] __attribute__((aligned(64)));
+    if (!points_hash64(&tab, f, sum, x + k, y + k, z + k, fr, hs64)) {
+      points3_do(P, p32, f, x + k, y + k, z + k, 64, out + k, amp, top, sum);
+      continue;
+    }
+    for (int g = 0; g < 8; g++) v_points_emit(out + k + 8 * g, points_arith64(&tab, fr, hs64, g), sum, amp, &vt);
+  }
   for (; k + 16 <= n; k += 16) {
     vd sx[2], sy[2], sz[2];
     vi16 hs[2][4];
@@ -234,6 +365,21 @@ static size_t points3_bounded(const nl_noise_perm3 *P, const int *p32, double f,
   p3tab tab = p3_make(P, p32);
   vd vt = SPLAT(0.0);
   size_t k = 0, left = 0;
+  for (; k + 64 <= n; k += 64) {   /* pass 1 reads the 64 before any is packed */
+    double fr[6][64] __attribute__((aligned(64)));
+    unsigned char hs64[8][64] __attribute__((aligned(64)));
+    if (!points_hash64(&tab, f, 1, pk->x + k, pk->y + k, pk->z + k, fr, hs64)) {
+      left = points3_bounded_do(&tab, P, f, amp, r, pk, k, k + 64, left, hi, nhi, &vt);
+      continue;
+    }
+    for (int g = 0; g < 8; g++) {
+      size_t q = k + 8 * (size_t)g;
+      vd v = points_arith64(&tab, fr, hs64, g);
+      v_top_raise(&vt, v);
+      left = v_pack(pk, q, ld(pk->x + q), ld(pk->y + q), ld(pk->z + q), ld(pk->base + q),
+                    ld(pk->sum + q) + amp * v, r, left, hi, nhi);
+    }
+  }
   for (; k + 16 <= n; k += 16) {
     vd sx[2], sy[2], sz[2];
     vi16 hs[2][4];

@@ -166,6 +166,64 @@ static void sum_reference(const nl_noise_perm3 *p, double f, const double *x, co
   }
 }
 
+/* A coordinate the batch kernels take whole blocks of: in range, but at
+ * the lattice's edges (integers, half-integers, -0, values just below an
+ * integer or 0, near multiples of 256, either sign). */
+static double tame(gsl_rng *r)
+{
+  static const double edge[] = {0.0, -0.0, -1e-20, 1e-20, -0x1p-54, -0x1p-53, 0.5, -0.5, 255.0,
+                                256.0, -256.0, -255.0, 0x1p31 - 0.5, -0x1p31 + 1, 2147483647.75};
+  double u = gsl_rng_uniform(r);
+  if (u < 0.05) return edge[gsl_rng_uniform_int(r, sizeof edge / sizeof *edge)];
+  if (u < 0.25) return (double)((long)gsl_rng_uniform_int(r, 601) - 300);
+  if (u < 0.35) return (double)((long)gsl_rng_uniform_int(r, 601) - 300) + 0.5;
+  if (u < 0.45) return nextafter((double)((long)gsl_rng_uniform_int(r, 601) - 300), -INFINITY);
+  return 600 * gsl_rng_uniform(r) - 300;
+}
+
+/* Batches whose blocks of 64 points the kernels hash at once, and blocks
+ * that one awkward point sends to the per-vector path (a cell of -2^31, a
+ * coordinate past 2^31, NaN): points, sums of one octave and one bounded
+ * term against the point call, at every level. */
+NL_TEST(perm3_blocks_match_scalar)
+{
+  find_levels();
+  enum { NB = 64 * 160 + 40 };
+  static const double awkward[] = {-0x1p31, -2147483647.5, 0x1p31, NAN, -INFINITY, 1e300};
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, 33);
+  double *c[3], *ref = malloc(NB * sizeof *ref), *got = malloc(NB * sizeof *got);
+  for (int a = 0; a < 3; a++) {
+    c[a] = malloc(NB * sizeof *c[a]);
+    for (size_t k = 0; k < NB; k++) c[a][k] = tame(r);
+  }
+  for (size_t b = 1; b < NB / 64; b += 3)   /* one awkward coordinate in every third block */
+    c[b % 3][64 * b + gsl_rng_uniform_int(r, 64)] = awkward[(b / 3) % 6];
+  nl_noise_perm3 p;
+  for (int tab = 0; tab < 2; tab++) {
+    if (tab) nl_noise_perm3_seed(&p, 12);
+    else nl_noise_perm3_reference(&p);
+    for (size_t k = 0; k < NB; k++) ref[k] = nl_noise_perm3_eval(&p, c[0][k], c[1][k], c[2][k]);
+    for (int L = 0; L < nlevels; L++) {
+      nl_noise_simd_set(levels[L]);
+      nl_noise_perm3_points(&p, c[0], c[1], c[2], NB, got);
+      NL_CHECK(same(got, ref, NB));
+      for (int s = 0; s < 2; s++) {   /* f = 1 and f = -1.5, from a sum of -0 */
+        double f = s ? -1.5 : 1.0, rs[NB], t0, t1;
+        for (size_t k = 0; k < NB; k++) rs[k] = got[k] = -0.0;
+        sum_reference(&p, f, c[0], c[1], c[2], NB, 0.75, rs, &t0);
+        t1 = nl_noise_perm3_points_sum(&p, f, c[0], c[1], c[2], NB, 0.75, got);
+        NL_CHECK(same(got, rs, NB) && memcmp(&t0, &t1, sizeof t0) == 0);
+      }
+      compared += 3 * NB;
+    }
+  }
+  nl_noise_simd_set(nl_noise_simd_best());
+  for (int a = 0; a < 3; a++) free(c[a]);
+  free(ref); free(got);
+  gsl_rng_free(r);
+}
+
 static void compare_perm3_sum(const nl_noise_perm3 *p, unsigned long seed)
 {
   static const double fs[] = {1.0, 2.0, 2048.0, -3.5, 0.0, -0.0, 1e300, 0x1p20, 0.37};
