@@ -320,7 +320,8 @@ points3_16(const nl_noise_perm3 *P, const int *p32, double f, const double *x, c
       points3_do(P, p32, f, x + k, y + k, z + k, 64, out + k, amp, top, sum);
       continue;
     }
-    for (int g = 0; g < 8; g++) v_points_emit(out + k + 8 * g, points_arith64(&tab, fr, hs64, g), sum, amp, &vt);
+    for (int g = 0; g < 8; g++)
+      v_points_emit(out + k + 8 * g, points_arith64(&tab, fr, hs64, g), sum, amp, &vt);
   }
   for (; k + 16 <= n; k += 16) {
     vd sx[2], sy[2], sz[2];
@@ -403,7 +404,93 @@ static size_t points3_bounded(const nl_noise_perm3 *P, const int *p32, double f,
   return left;
 }
 
-const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3, points2, points3, points3_sum,
+/* ---- batches of the 2D table noise ----------------------------------------
+ *
+ * Lattice point (i, j) uses gradient G[P[(P[i] + j) mod m]] (nl_noise.h).
+ * For a power-of-two m the composite tables QX[a] = gx[P[a]], QY[a] =
+ * gy[P[a]] fold the second permutation into the gradient loads: per 8
+ * points one gather of 16 ints (P at i and i + 1) and 8 of doubles, where
+ * the lane-by-lane path loads 14 x 8 values one at a time. They are made
+ * per call (2 m loads), so only for batches of at least m points. */
+enum { Q2_MAX = 1024 };
+
+/* The pairs (QX[k], QY[k]) at 8 addresses: one 16-byte load each, then
+ * split into the two vectors. */
+static inline __attribute__((always_inline)) void
+pairs8(const double *const q[8], vd *gx, vd *gy)
+{
+  __m512d lo = _mm512_castpd128_pd512(_mm_loadu_pd(q[0]));
+  lo = _mm512_insertf64x2(lo, _mm_loadu_pd(q[1]), 1);
+  lo = _mm512_insertf64x2(lo, _mm_loadu_pd(q[2]), 2);
+  lo = _mm512_insertf64x2(lo, _mm_loadu_pd(q[3]), 3);
+  __m512d hi = _mm512_castpd128_pd512(_mm_loadu_pd(q[4]));
+  hi = _mm512_insertf64x2(hi, _mm_loadu_pd(q[5]), 1);
+  hi = _mm512_insertf64x2(hi, _mm_loadu_pd(q[6]), 2);
+  hi = _mm512_insertf64x2(hi, _mm_loadu_pd(q[7]), 3);
+  *gx = (vd)_mm512_permutex2var_pd(lo, _mm512_setr_epi64(0, 2, 4, 6, 8, 10, 12, 14), hi);
+  *gy = (vd)_mm512_permutex2var_pd(lo, _mm512_setr_epi64(1, 3, 5, 7, 9, 11, 13, 15), hi);
+}
+
+/* 8 points of nl_noise_grad2_eval from the tables of points2_q. The
+ * indices are scalar work, lane by lane, beside the vector work. */
+static inline __attribute__((always_inline)) vd
+points2_q8(const int *p2, const double *q2, unsigned mask, vd vx, vd vy)
+{
+  /* i = lfloor(x), j = lfloor(y), fy = lfrac(y, j), v = fade(fy) */
+  __m256i ci = cell_ints(vx), cj = cell_ints(vy);
+  vd fx = vx - (vd)_mm512_cvtepi32_pd(ci), fy = vy - (vd)_mm512_cvtepi32_pd(cj), v = v_fade(fy);
+  unsigned is[8], js[8];
+  _mm256_storeu_si256((__m256i *)is, ci);
+  _mm256_storeu_si256((__m256i *)js, cj);
+  const double *q[4][8];   /* corners (i + di, j + dj), q = dj + 2 di */
+  for (int l = 0; l < 8; l++) {
+    const int *pi = p2 + (is[l] & mask);   /* P[i mod m], then P[(i + 1) mod m] */
+    unsigned j = js[l], p0 = (unsigned)pi[0], p1 = (unsigned)pi[1];
+    q[0][l] = q2 + 2 * ((p0 + j) & mask);
+    q[1][l] = q2 + 2 * ((p0 + j + 1) & mask);
+    q[2][l] = q2 + 2 * ((p1 + j) & mask);
+    q[3][l] = q2 + 2 * ((p1 + j + 1) & mask);
+  }
+  /* column2 at i and i + 1, then blend(lfrac(x, i), ...), as points2 */
+  vd fy1 = fy - 1.0, g00, g01, g10, g11, y00, y01, y10, y11;
+  pairs8(q[0], &g00, &y00);
+  pairs8(q[1], &g01, &y01);
+  pairs8(q[2], &g10, &y10);
+  pairs8(q[3], &g11, &y11);
+  vd a00 = y00 * fy, a01 = y01 * fy1, a10 = y10 * fy, a11 = y11 * fy1;
+  vd gx0 = g00 + v * (g01 - g00), a0 = a00 + v * (a01 - a00);
+  vd gx1 = g10 + v * (g11 - g10), a1 = a10 + v * (a11 - a10);
+  return v_blend(fx, gx0, a0, gx1, a1);
+}
+
+static void points2_q(const nl_noise_grad2 *t, const double *x, const double *y, size_t n, double *out)
+{
+  size_t m = t->m;
+  if (!(m >= 1 && (m & (m - 1)) == 0 && m <= Q2_MAX && n >= m)) {
+    points2(t, x, y, n, out);
+    return;
+  }
+  double q2[2 * Q2_MAX];
+  int p2[Q2_MAX + 1];
+  for (size_t a = 0; a < m; a++) {
+    p2[a] = (int)t->perm[a];
+    q2[2 * a] = t->gx[t->perm[a]];
+    q2[2 * a + 1] = t->gy[t->perm[a]];
+  }
+  p2[m] = p2[0];   /* P[(i + 1) mod m] beside P[i] for i = m - 1 too */
+  __m512i bad = _mm512_set1_epi32((int)0x80000000u);
+  for (size_t k = 0; k < n; k += NL_SIMD_W) {
+    vd vx = ld(x + k), vy = ld(y + k);
+    __m512i c = _mm512_inserti64x4(_mm512_castsi256_si512(cell_ints(vx)), cell_ints(vy), 1);
+    if (_mm512_cmpeq_epi32_mask(c, bad)) {   /* no int cell: the scalar code */
+      for (size_t l = 0; l < NL_SIMD_W; l++) out[k + l] = nl_noise_grad2_eval(t, x[k + l], y[k + l]);
+      continue;
+    }
+    st(out + k, points2_q8(p2, q2, (unsigned)(m - 1), vx, vy));
+  }
+}
+
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3, points2_q, points3, points3_sum,
                                            points3_bounded};
 
 #if defined(__clang__)
