@@ -111,10 +111,51 @@ samples_win(const double *gx, const double *a, long ifirst, double x0, double dx
   if (k < n) samples_tail(gx, a, ifirst, x0, dx, k, n, out, mode, amp);
 }
 
+/* samples_win for sparser rows: while 7 |dx| <= 13, 8 consecutive samples
+ * span at most 15 columns with their right-hand ones (cells at most 14
+ * apart, as above), so two vectors of columns from the lowest serve both
+ * sides through two-table permutes (vpermt2pd), the right-hand side at
+ * index + 1. A row with 0.7 cells per sample reads its columns this way,
+ * not lane by lane. */
+static inline __attribute__((always_inline)) void
+samples_win16(const double *gx, const double *a, long ifirst, double x0, double dx, size_t n,
+              double *out, int mode, double amp, int plain, int rev)
+{
+  vd kv;
+  for (int l = 0; l < NL_SIMD_W; l++) kv[l] = l;
+  __m512i one = _mm512_set1_epi64(1);
+  size_t k = 0;
+  for (; k + NL_SIMD_W <= n; k += NL_SIMD_W, kv += (double)NL_SIMD_W) {
+    vd x = kv * dx + x0;                  /* x0 + (double)k * dx */
+    vd cell = plain ? v_floor(x) : v_cell(x);
+    /* the lowest cell: lane 0, or lane 7 when dx < 0 (rev) */
+    __m128d lane = _mm512_castpd512_pd128((__m512d)cell);
+    if (rev) { __m128d q = _mm512_extractf64x2_pd((__m512d)cell, 3); lane = _mm_unpackhi_pd(q, q); }
+    long b = _mm_cvttsd_si64(lane) - ifirst;
+    __m512i li = _mm512_cvttpd_epi64(_mm512_sub_pd((__m512d)cell, _mm512_broadcastsd_pd(lane)));
+    __m512i li1 = _mm512_add_epi64(li, one);
+    __m512d G0 = _mm512_loadu_pd(gx + b), G1 = _mm512_loadu_pd(gx + b + 8);
+    __m512d A0 = _mm512_loadu_pd(a + b), A1 = _mm512_loadu_pd(a + b + 8);
+    vd g0 = (vd)_mm512_permutex2var_pd(G0, li, G1), a0 = (vd)_mm512_permutex2var_pd(A0, li, A1);
+    vd g1 = (vd)_mm512_permutex2var_pd(G0, li1, G1), a1 = (vd)_mm512_permutex2var_pd(A0, li1, A1);
+    vd v = v_blend(v_frac(x, cell), g0, a0, g1, a1);
+    st(out + k, v_emit(out + k, v, mode, amp));
+  }
+  if (k < n) samples_tail(gx, a, ifirst, x0, dx, k, n, out, mode, amp);
+}
+
 static void samples(const double *gx, const double *a, long ifirst, double x0, double dx,
                     size_t n, double *out, int mode, double amp)
 {
-  if (!(fabs(dx) * 7 <= 4)) { samples_lanes(gx, a, ifirst, x0, dx, n, out, mode, amp); return; }
+  if (!(fabs(dx) * 7 <= 4)) {
+    int plain = !(x0 == 0 && signbit(x0));
+    if (!(fabs(dx) * 7 <= 13)) samples_lanes(gx, a, ifirst, x0, dx, n, out, mode, amp);
+    else if (dx >= 0 && plain) samples_win16(gx, a, ifirst, x0, dx, n, out, mode, amp, 1, 0);
+    else if (dx >= 0) samples_win16(gx, a, ifirst, x0, dx, n, out, mode, amp, 0, 0);
+    else if (plain) samples_win16(gx, a, ifirst, x0, dx, n, out, mode, amp, 1, 1);
+    else samples_win16(gx, a, ifirst, x0, dx, n, out, mode, amp, 0, 1);
+    return;
+  }
   int plain = !(x0 == 0 && signbit(x0));   /* x = k dx + x0 is -0 only for x0 = -0 */
   if (dx >= 0) {
     if (plain) samples_win(gx, a, ifirst, x0, dx, n, out, mode, amp, 1, 0);
@@ -236,6 +277,36 @@ hash64(const p3tab *tab, vb X, vb Y, vb Z, unsigned char hs[8][64])
     vb AA = p3_byte(tab, A) + Z, AB = p3_byte(tab, A + 1) + Z;
     vb h[4] = {p3_byte(tab, AA), p3_byte(tab, AB), p3_byte(tab, AA + 1), p3_byte(tab, AB + 1)};
     memcpy(hs[4 * c], h, sizeof h);
+  }
+}
+
+/* nl_noise.c column3 for columns ifirst + c, c < ncol, of a row at (y, z)
+ * (columns3 of nl_noise_simd_body.h), hashed 64 columns at a time: X =
+ * xm + c in bytes wraps as the lookups do. */
+static void columns3_64(const nl_noise_perm3 *P, const int *p32, unsigned xm, unsigned ym, unsigned zm,
+                        double fy, double fz, double v, double w, size_t ncol, double *gxo, double *ao)
+{
+  p3tab tab = p3_make(P, p32);
+  vb iota, Y, Z;
+  for (int l = 0; l < 64; l++) {
+    iota[l] = (char)l;
+    Y[l] = (char)ym;
+    Z[l] = (char)zm;
+  }
+  vd vfy = SPLAT(fy), vfz = SPLAT(fz), vv = SPLAT(v), vw = SPLAT(w), g, a;
+  for (size_t c = 0; c < ncol; c += 64) {
+    unsigned char hs[4][64] __attribute__((aligned(64)));
+    vb A = p3_byte(&tab, iota + (char)(xm + c)) + Y;
+    vb AA = p3_byte(&tab, A) + Z, AB = p3_byte(&tab, A + 1) + Z;
+    vb h[4] = {p3_byte(&tab, AA), p3_byte(&tab, AB), p3_byte(&tab, AA + 1), p3_byte(&tab, AB + 1)};
+    memcpy(hs, h, sizeof h);
+    size_t ng = ncol - c < 64 ? (ncol - c) / 8 : 8;
+    for (size_t q = 0; q < ng; q++) {
+      column3_q(&tab, widen8(hs[0] + 8 * q), widen8(hs[1] + 8 * q), widen8(hs[2] + 8 * q),
+                widen8(hs[3] + 8 * q), vfy, vfz, vv, vw, &g, &a);
+      st(gxo + c + 8 * q, g);
+      st(ao + c + 8 * q, a);
+    }
   }
 }
 
@@ -490,7 +561,7 @@ static void points2_q(const nl_noise_grad2 *t, const double *x, const double *y,
   }
 }
 
-const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3, points2_q, points3, points3_sum,
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3_64, points2_q, points3, points3_sum,
                                            points3_bounded};
 
 #if defined(__clang__)

@@ -123,7 +123,8 @@ static inline void v_column3_fp(const p3tab *p, vi h00, vi h10, vi h01, vi h11, 
   *ao = v_lerp(w, v_lerp(v, y00, y10), v_lerp(v, y01, y11));
 }
 
-static void columns3(const nl_noise_perm3 *P, const int *p32, unsigned xm, unsigned ym, unsigned zm, double fy,
+static __attribute__((unused)) void
+columns3(const nl_noise_perm3 *P, const int *p32, unsigned xm, unsigned ym, unsigned zm, double fy,
                      double fz, double v, double w, size_t ncol, double *gxo, double *ao)
 {
   vi iota, Y = (vi){0} + (int)ym, Z = (vi){0} + (int)zm;

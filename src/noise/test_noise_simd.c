@@ -401,7 +401,8 @@ NL_TEST(perm3_bounded_match_scalar)
 
 /* Rows at the edges of the kernels' shortcuts: x = -0 (whose cell must read
  * +0), x in [-2^-54, 0) (whose fraction rounds to 1 and is mapped to 0),
- * steps at the window's limit (7 |dx| = 4) and either side of it, rows
+ * steps at the windows' limits (7 |dx| = 4 and 13) and either side of
+ * them, sparse steps (0.7 to 2.5 cells a sample) either way, rows
  * ending at the lattice bound 2^52, and every length up to 3 vectors. */
 NL_TEST(edge_rows_match_scalar)
 {
@@ -412,7 +413,8 @@ NL_TEST(edge_rows_match_scalar)
   nl_noise_perm3_seed(&p, 5);
   const double x0s[] = {-0.0, 0.0, -0x1p-54, -0x1p-55, -1e-20, -0x1p-53, -0x1p-50, -1.0 / 3, 0x1p52 - 40,
                         -0x1p52 + 1, 1e-300, -5e-324};
-  const double dxs[] = {1.0 / 64, -1.0 / 64, 4.0 / 7, -4.0 / 7, 0.5714286, 0x1p-60, -0x1p-60, 0.0, -0.0, 1.0, 0.75};
+  const double dxs[] = {1.0 / 64, -1.0 / 64, 4.0 / 7, -4.0 / 7, 0.5714286, 0x1p-60, -0x1p-60, 0.0, -0.0, 1.0, 0.75,
+                        0.7, -0.7, 13.0 / 7, -13.0 / 7, 1.8571429, -1.8571429, 1.3, 2.0, -2.5};
   const double ys[] = {-0.0, 0.0, 3.0, -1e-20, 0.25};
   double ref[3 * 8 + 1], got[3 * 8 + 1], acc[3 * 8 + 1];
   int bad = 0;
