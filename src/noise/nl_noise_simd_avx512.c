@@ -283,8 +283,9 @@ hash64(const p3tab *tab, vb X, vb Y, vb Z, unsigned char hs[8][64])
 /* nl_noise.c column3 for columns ifirst + c, c < ncol, of a row at (y, z)
  * (columns3 of nl_noise_simd_body.h), hashed 64 columns at a time: X =
  * xm + c in bytes wraps as the lookups do. */
-static void columns3_64(const nl_noise_perm3 *P, const int *p32, unsigned xm, unsigned ym, unsigned zm,
-                        double fy, double fz, double v, double w, size_t ncol, double *gxo, double *ao)
+static void columns3_64(const nl_noise_perm3 *P, const int *p32, unsigned xm, unsigned ym,
+                        unsigned zm, double fy, double fz, double v, double w, size_t ncol,
+                        double *gxo, double *ao)
 {
   p3tab tab = p3_make(P, p32);
   vb iota, Y, Z;
@@ -534,7 +535,8 @@ points2_q8(const int *p2, const double *q2, unsigned mask, vd vx, vd vy)
   return v_blend(fx, gx0, a0, gx1, a1);
 }
 
-static void points2_q(const nl_noise_grad2 *t, const double *x, const double *y, size_t n, double *out)
+static void points2_q(const nl_noise_grad2 *t, const double *x, const double *y, size_t n,
+                      double *out)
 {
   size_t m = t->m;
   if (!(m >= 1 && (m & (m - 1)) == 0 && m <= Q2_MAX && n >= m)) {
@@ -554,7 +556,8 @@ static void points2_q(const nl_noise_grad2 *t, const double *x, const double *y,
     vd vx = ld(x + k), vy = ld(y + k);
     __m512i c = _mm512_inserti64x4(_mm512_castsi256_si512(cell_ints(vx)), cell_ints(vy), 1);
     if (_mm512_cmpeq_epi32_mask(c, bad)) {   /* no int cell: the scalar code */
-      for (size_t l = 0; l < NL_SIMD_W; l++) out[k + l] = nl_noise_grad2_eval(t, x[k + l], y[k + l]);
+      for (size_t l = 0; l < NL_SIMD_W; l++)
+        out[k + l] = nl_noise_grad2_eval(t, x[k + l], y[k + l]);
       continue;
     }
     st(out + k, points2_q8(p2, q2, (unsigned)(m - 1), vx, vy));
