@@ -234,12 +234,15 @@ arith8(const p3tab *tab, vi16 hs[2][4], int h, vd vx, vd vy, vd vz)
  * qword indices of the gradient permutes (vpermt2pd reads the low 4 bits:
  * the & 15 is free). */
 typedef char vb __attribute__((vector_size(64)));
+/* p[idx]: the lanes with bit 7 set look up the upper 128 entries in place
+ * (vpermi2b keeps the index where the mask is clear), then the others the
+ * lower 128: no blend. */
 static inline vb p3_byte(const p3tab *t, vb idx)
 {
   __m512i ix = (__m512i)idx;
-  __m512i lo = _mm512_permutex2var_epi8(t->p[0], ix, t->p[1]);
-  __m512i hi = _mm512_permutex2var_epi8(t->p[2], ix, t->p[3]);
-  return (vb)_mm512_mask_blend_epi8(_mm512_movepi8_mask(ix), lo, hi);
+  __mmask64 up = _mm512_movepi8_mask(ix);
+  __m512i r = _mm512_mask2_permutex2var_epi8(t->p[2], ix, up, t->p[3]);
+  return (vb)_mm512_mask2_permutex2var_epi8(t->p[0], r, (__mmask64)~up, t->p[1]);
 }
 /* Hashes 8 q .. 8 q + 7 of a byte array, widened to qwords. */
 static inline __m512i widen8(const unsigned char *h)
