@@ -235,7 +235,7 @@ arith8(const p3tab *tab, vi16 hs[2][4], int h, vd vx, vd vy, vd vz)
  * through memory, where the arithmetic widens 8 of them at a time to the
  * qword indices of the gradient permutes (vpermt2pd reads the low 4 bits:
  * the & 15 is free). */
-typedef char vb __attribute__((vector_size(64)));
+typedef unsigned char vb __attribute__((vector_size(64)));   /* wraps mod 256 */
 /* p[idx]: the lanes with bit 7 set look up the upper 128 entries in place
  * (vpermi2b keeps the index where the mask is clear), then the others the
  * lower 128: no blend. */
@@ -278,7 +278,7 @@ static inline __attribute__((always_inline)) void
 hash64(const p3tab *tab, vb X, vb Y, vb Z, unsigned char hs[8][64])
 {
   for (int c = 0; c < 2; c++) {
-    vb A = p3_byte(tab, X + (char)c) + Y;
+    vb A = p3_byte(tab, X + (unsigned char)c) + Y;
     vb AA = p3_byte(tab, A) + Z, AB = p3_byte(tab, A + 1) + Z;
     vb h[4] = {p3_byte(tab, AA), p3_byte(tab, AB), p3_byte(tab, AA + 1), p3_byte(tab, AB + 1)};
     memcpy(hs[4 * c], h, sizeof h);
@@ -295,14 +295,14 @@ static void columns3_64(const nl_noise_perm3 *P, const int *p32, unsigned xm, un
   p3tab tab = p3_make(P, p32);
   vb iota, Y, Z;
   for (int l = 0; l < 64; l++) {
-    iota[l] = (char)l;
-    Y[l] = (char)ym;
-    Z[l] = (char)zm;
+    iota[l] = (unsigned char)l;
+    Y[l] = (unsigned char)ym;
+    Z[l] = (unsigned char)zm;
   }
   vd vfy = SPLAT(fy), vfz = SPLAT(fz), vv = SPLAT(v), vw = SPLAT(w), g, a;
   for (size_t c = 0; c < ncol; c += 64) {
     unsigned char hs[4][64] __attribute__((aligned(64)));
-    vb A = p3_byte(&tab, iota + (char)(xm + c)) + Y;
+    vb A = p3_byte(&tab, iota + (unsigned char)(xm + c)) + Y;
     vb AA = p3_byte(&tab, A) + Z, AB = p3_byte(&tab, A + 1) + Z;
     vb h[4] = {p3_byte(&tab, AA), p3_byte(&tab, AB), p3_byte(&tab, AA + 1), p3_byte(&tab, AB + 1)};
     memcpy(hs, h, sizeof h);
