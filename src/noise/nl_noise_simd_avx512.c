@@ -299,7 +299,16 @@ static void columns3_64(const nl_noise_perm3 *P, const int *p32, unsigned xm, un
     Y[l] = (unsigned char)ym;
     Z[l] = (unsigned char)zm;
   }
-  vd vfy = SPLAT(fy), vfz = SPLAT(fz), vv = SPLAT(v), vw = SPLAT(w), g, a;
+  /* A row's corners have fixed fractions in y and z, so each corner's
+   * yz_part (nl_noise.c) is a function of its hash alone: 16 values,
+   * made once here with the same operations, looked up per column. The
+   * corners q = dj + 2 dk, as v_column3_fp's y00, y10, y01, y11. */
+  double fys[2] = {fy, fy - 1}, fzs[2] = {fz, fz - 1};
+  __m512d yz[4][2];
+  for (int q = 0; q < 4; q++)
+    for (int h = 0; h < 2; h++)
+      yz[q][h] = (__m512d)((vd)tab.g[1][h] * fys[q & 1] + (vd)tab.g[2][h] * fzs[q >> 1]);
+  vd vv = SPLAT(v), vw = SPLAT(w);
   for (size_t c = 0; c < ncol; c += 64) {
     unsigned char hs[4][64] __attribute__((aligned(64)));
     vb A = p3_byte(&tab, iota + (unsigned char)(xm + c)) + Y;
@@ -308,10 +317,17 @@ static void columns3_64(const nl_noise_perm3 *P, const int *p32, unsigned xm, un
     memcpy(hs, h, sizeof h);
     size_t ng = ncol - c < 64 ? (ncol - c) / 8 : 8;
     for (size_t q = 0; q < ng; q++) {
-      column3_q(&tab, widen8(hs[0] + 8 * q), widen8(hs[1] + 8 * q), widen8(hs[2] + 8 * q),
-                widen8(hs[3] + 8 * q), vfy, vfz, vv, vw, &g, &a);
+      __m512i h[4];
+      vd y[4];
+      for (int e = 0; e < 4; e++) {
+        h[e] = widen8(hs[e] + 8 * q);
+        y[e] = (vd)_mm512_permutex2var_pd(yz[e][0], h[e], yz[e][1]);
+      }
+      /* the rest of v_column3_fp */
+      vd g = v_lerp(vw, v_lerp(vv, g3q(&tab, 0, h[0]), g3q(&tab, 0, h[1])),
+                    v_lerp(vv, g3q(&tab, 0, h[2]), g3q(&tab, 0, h[3])));
       st(gxo + c + 8 * q, g);
-      st(ao + c + 8 * q, a);
+      st(ao + c + 8 * q, v_lerp(vw, v_lerp(vv, y[0], y[1]), v_lerp(vv, y[2], y[3])));
     }
   }
 }
