@@ -499,13 +499,11 @@ static size_t points3_bounded(const nl_noise_perm3 *P, const int *p32, double f,
 
 /* ---- batches of the 2D table noise ----------------------------------------
  *
- * Lattice point (i, j) uses gradient G[P[(P[i] + j) mod m]] (nl_noise.h).
- * For a power-of-two m the composite tables QX[a] = gx[P[a]], QY[a] =
- * gy[P[a]] fold the second permutation into the gradient loads: per 8
- * points one gather of 16 ints (P at i and i + 1) and 8 of doubles, where
- * the lane-by-lane path loads 14 x 8 values one at a time. They are made
- * per call (2 m loads), so only for batches of at least m points. */
-enum { Q2_MAX = 1024 };
+ * points2_fold (nl_noise_simd_body.h) with its tables: the permutation
+ * folded into the gradients as pairs (gx, gy)[P[a]], read by one 16-byte
+ * load per corner and lane and split into two vectors by two permutes.
+ * Gathers in place of these loads were measured slower (1.56x the lane-by-
+ * lane path against 2.5x). */
 
 /* The pairs (QX[k], QY[k]) at 8 addresses: one 16-byte load each, then
  * split into the two vectors. */
@@ -527,7 +525,7 @@ pairs8(const double *const q[8], vd *gx, vd *gy)
 /* 8 points of nl_noise_grad2_eval from the tables of points2_q. The
  * indices are scalar work, lane by lane, beside the vector work. */
 static inline __attribute__((always_inline)) vd
-points2_q8(const int *p2, const double *q2, unsigned mask, vd vx, vd vy)
+points2_q8(const unsigned *p2, const double *q2, unsigned mask, vd vx, vd vy)
 {
   /* i = lfloor(x), j = lfloor(y), fy = lfrac(y, j), v = fade(fy) */
   __m256i ci = cell_ints(vx), cj = cell_ints(vy);
@@ -537,8 +535,8 @@ points2_q8(const int *p2, const double *q2, unsigned mask, vd vx, vd vy)
   _mm256_storeu_si256((__m256i *)js, cj);
   const double *q[4][8];   /* corners (i + di, j + dj), q = dj + 2 di */
   for (int l = 0; l < 8; l++) {
-    const int *pi = p2 + (is[l] & mask);   /* P[i mod m], then P[(i + 1) mod m] */
-    unsigned j = js[l], p0 = (unsigned)pi[0], p1 = (unsigned)pi[1];
+    const unsigned *pi = p2 + (is[l] & mask);   /* P[i mod m], then P[(i + 1) mod m] */
+    unsigned j = js[l], p0 = pi[0], p1 = pi[1];
     q[0][l] = q2 + 2 * ((p0 + j) & mask);
     q[1][l] = q2 + 2 * ((p0 + j + 1) & mask);
     q[2][l] = q2 + 2 * ((p1 + j) & mask);
@@ -560,18 +558,13 @@ static void points2_q(const nl_noise_grad2 *t, const double *x, const double *y,
                       double *out)
 {
   size_t m = t->m;
-  if (!(m >= 1 && (m & (m - 1)) == 0 && m <= Q2_MAX && n >= m)) {
+  if (!points2_foldable(t, n)) {
     points2(t, x, y, n, out);
     return;
   }
-  double q2[2 * Q2_MAX];
-  int p2[Q2_MAX + 1];
-  for (size_t a = 0; a < m; a++) {
-    p2[a] = (int)t->perm[a];
-    q2[2 * a] = t->gx[t->perm[a]];
-    q2[2 * a + 1] = t->gy[t->perm[a]];
-  }
-  p2[m] = p2[0];   /* P[(i + 1) mod m] beside P[i] for i = m - 1 too */
+  double q2[2 * NL_Q2_MAX];
+  unsigned p2[NL_Q2_MAX + 1];
+  points2_fold_tables(t, q2, p2);
   __m512i bad = _mm512_set1_epi32((int)0x80000000u);
   for (size_t k = 0; k < n; k += NL_SIMD_W) {
     vd vx = ld(x + k), vy = ld(y + k);
