@@ -132,7 +132,10 @@ samples_win16(const double *gx, const double *a, long ifirst, double x0, double 
     vd cell = plain ? v_floor(x) : v_cell(x);
     /* the lowest cell: lane 0, or lane 7 when dx < 0 (rev) */
     __m128d lane = _mm512_castpd512_pd128((__m512d)cell);
-    if (rev) { __m128d q = _mm512_extractf64x2_pd((__m512d)cell, 3); lane = _mm_unpackhi_pd(q, q); }
+    if (rev) {
+      __m128d q = _mm512_extractf64x2_pd((__m512d)cell, 3);
+      lane = _mm_unpackhi_pd(q, q);
+    }
     long b = _mm_cvttsd_si64(lane) - ifirst;
     __m512i li = _mm512_cvttpd_epi64(_mm512_sub_pd((__m512d)cell, _mm512_broadcastsd_pd(lane)));
     __m512i li1 = _mm512_add_epi64(li, one);

@@ -237,7 +237,10 @@ NL_TEST(grad2_blocks_match_scalar)
   gsl_rng_set(r, 34);
   double *x = malloc(NB * sizeof *x), *y = malloc(NB * sizeof *y);
   double *ref = malloc(NB * sizeof *ref), *got = malloc(NB * sizeof *got);
-  for (size_t k = 0; k < NB; k++) { x[k] = tame(r); y[k] = tame(r); }
+  for (size_t k = 0; k < NB; k++) {
+    x[k] = tame(r);
+    y[k] = tame(r);
+  }
   for (size_t v = 1; v < NB / 8; v += 3)
     (v % 2 ? x : y)[8 * v + gsl_rng_uniform_int(r, 8)] = awkward[(v / 3) % 6];
   for (size_t a = 0; a < sizeof ms / sizeof *ms; a++) {
@@ -255,7 +258,10 @@ NL_TEST(grad2_blocks_match_scalar)
     nl_noise_grad2_free(t);
   }
   nl_noise_simd_set(nl_noise_simd_best());
-  free(x); free(y); free(ref); free(got);
+  free(x);
+  free(y);
+  free(ref);
+  free(got);
   gsl_rng_free(r);
 }
 
