@@ -13,7 +13,11 @@
  * the fBm rows is against stb_perlin_fbm_noise3 (4 octaves), of the others
  * against stb_perlin_noise3. The points kernels take random, incoherent
  * points in [0, 16)^2 (2D) or [0, 16)^3 (3D) through the batch API
- * (nl_noise_grad2_points, nl_noise_perm3_points): no row reuse.
+ * (nl_noise_grad2_points, nl_noise_perm3_points): no row reuse; vs_stb of
+ * the 3D points is against stb_perlin_noise3 on the same points.
+ * noise3_row_sparse: rows of the same grid's y with 0.7 lattice cells per
+ * sample (x = 0.35 + 0.7 k, z = 0.5), where a row holds fewer samples than
+ * cells; vs_stb against stb_perlin_noise3 on the same samples.
  * wavelet_row: nl_wavelet_row over a 256^2 2D tile on the same grid.
  * cellular_row: nl_cellular_row, F1..F4 (Worley 1996; Qin & Yang 2000) on the
  * same grid at lambda = 4, M = 50, inverse-CDF counts, seed 1 (as
@@ -91,7 +95,36 @@ static void g_stbfbm(const void *ctx, double *out)
       out[(size_t)r * N + c] = stb_perlin_fbm_noise3((c + 0.5f) * dx, (r + 0.5f) * dx, 0.5f, 2.0f, 0.5f, 4);
 }
 
+/* Sparse rows: 0.7 lattice cells per sample. */
+static const double SPARSE_DX = 0.7, SPARSE_X0 = 0.35;
+
+static void g_noise3_sparse(const void *ctx, double *out)
+{
+  double dy = EXTENT / N;
+  for (int r = 0; r < N; r++)
+    nl_noise_perm3_row(ctx, SPARSE_X0, SPARSE_DX, (r + 0.5) * dy, 0.5, (size_t)N,
+                       out + (size_t)r * N);
+}
+
+static void g_stb3_sparse(const void *ctx, double *out)
+{
+  (void)ctx;
+  double dy = EXTENT / N;
+  for (int r = 0; r < N; r++)
+    for (int c = 0; c < N; c++) {
+      float x = (float)(SPARSE_X0 + c * SPARSE_DX), y = (float)((r + 0.5) * dy);
+      out[(size_t)r * N + c] = stb_perlin_noise3(x, y, 0.5f, 0, 0, 0);
+    }
+}
+
 static double *rx, *ry, *rz;
+static void g_stb3_points(const void *ctx, double *out)
+{
+  (void)ctx;
+  for (size_t k = 0; k < (size_t)N * N; k++)
+    out[k] = stb_perlin_noise3((float)rx[k], (float)ry[k], (float)rz[k], 0, 0, 0);
+}
+
 static void g_noise2_points(const void *ctx, double *out)
 {
   nl_noise_grad2_points(ctx, rx, ry, (size_t)N * N, out);
@@ -170,10 +203,13 @@ int main(int argc, char **argv)
     return 1;
   }
 
-  /* fbm: 1 compares with stb's fBm, 0 and 2 with stb_perlin_noise3 */
+  /* fbm: the peer of vs_stb: 1 stb's fBm; 0 and 2 stb_perlin_noise3 on the
+   * grid, 3 on the sparse rows' samples, 4 on the random points */
   struct { const char *name, *label; void (*f)(const void *, double *); const void *ctx; int fbm; timing tm; } k[] = {
     {"noise3_row", "nl_noise_perm3_row (improved 3D)", g_noise3, &p, 0, {0, 0, 0}},
-    {"noise3_points", "nl_noise_perm3_points, random", g_noise3_points, &p, 0, {0, 0, 0}},
+    {"noise3_row_sparse", "nl_noise_perm3_row, 0.7 cells/sample", g_noise3_sparse, &p, 3,
+     {0, 0, 0}},
+    {"noise3_points", "nl_noise_perm3_points, random", g_noise3_points, &p, 4, {0, 0, 0}},
     {"noise2_row", "nl_noise_grad2_row (2D table, M=512)", g_noise2, t, 0, {0, 0, 0}},
     {"noise2_points", "nl_noise_grad2_points, random", g_noise2_points, t, 0, {0, 0, 0}},
     {"fbm4_3d_row", "fbm 4 oct, improved 3D", g_fbm, &b3, 1, {0, 0, 0}},
@@ -183,13 +219,16 @@ int main(int argc, char **argv)
   };
   /* Rounds over all the kernels, stb's among them, so that each meets the
    * same spells of a shared machine; the fastest round of each counts. */
-  timing stb = {0, 0, 0}, stbf = {0, 0, 0};
+  timing stb = {0, 0, 0}, stbf = {0, 0, 0}, stbs = {0, 0, 0}, stbp = {0, 0, 0};
   for (int r = 0; r < ROUNDS; r++) {
     round_of(g_stb3, NULL, out, &stb);
     round_of(g_stbfbm, NULL, out, &stbf);
+    round_of(g_stb3_sparse, NULL, out, &stbs);
+    round_of(g_stb3_points, NULL, out, &stbp);
     for (size_t i = 0; i < sizeof k / sizeof *k; i++) round_of(k[i].f, k[i].ctx, out, &k[i].tm);
   }
   int nk = (int)(sizeof k / sizeof *k);
+  const timing *peer[] = {&stb, &stbf, &stb, &stbs, &stbp};   /* by the field fbm */
   nl_bench_loadavg(load1, sizeof load1);
   const char *level = nl_noise_simd_name(nl_noise_simd_get());
   if (tsv) {
@@ -197,23 +236,28 @@ int main(int argc, char **argv)
            N, N, EXTENT, where, (int)ROUNDS, level);
     printf("# loadavg before: %s\n# loadavg after: %s\n", load0, load1);
     printf("# stb_perlin_noise3 %.1f Msamples/s, stb_perlin_fbm_noise3 (4 oct) %.1f Msamples/s\n", stb.rate, stbf.rate);
+    printf("# stb_perlin_noise3 on the sparse rows' samples %.1f Msamples/s, on the random"
+           " points %.1f\n", stbs.rate, stbp.rate);
     printf("kernel\tmsamples_per_s\tcpu_ms\twall_ms\tvs_stb\n");
     for (int i = 0; i < nk; i++)
       printf("%s\t%.1f\t%.2f\t%.2f\t%.2f\n", k[i].name, k[i].tm.rate, k[i].tm.cpu_ms, k[i].tm.wall_ms,
-             k[i].tm.rate / (k[i].fbm == 1 ? stbf.rate : stb.rate));
+             k[i].tm.rate / peer[k[i].fbm]->rate);
   } else {
     printf("# %d x %d grid over [0,%g)^2, single thread (%s), Msamples per CPU second (best of %d rounds), kernels: %s\n",
            N, N, EXTENT, where, (int)ROUNDS, level);
     printf("# load average: %s (before), %s (after)\n", load0, load1);
     printf("%-34s %10s %10s %10s %8s\n", "noise", "Msample/s", "cpu ms", "wall ms", "vs stb");
-    printf("%-34s %10.1f %10.2f %10.2f %8s\n", "stb_perlin_noise3", stb.rate, stb.cpu_ms, stb.wall_ms, "1.00");
+    /* each peer's line above the rows compared with it (scripts/noiselab bench reads them so) */
+    static const char *peer_name[] = {"stb_perlin_noise3", "stb_perlin_fbm_noise3 (4 oct)",
+                                      "stb_perlin_noise3", "stb_perlin_noise3, same samples",
+                                      "stb_perlin_noise3, same points"};
     for (int i = 0; i < nk; i++) {
-      if (k[i].fbm == 1 && (i == 0 || !k[i - 1].fbm))
-        printf("%-34s %10.1f %10.2f %10.2f %8s\n", "stb_perlin_fbm_noise3 (4 oct)", stbf.rate, stbf.cpu_ms, stbf.wall_ms, "1.00");
-      if (k[i].fbm == 2 && (i == 0 || k[i - 1].fbm != 2))
-        printf("%-34s %10.1f %10.2f %10.2f %8s\n", "stb_perlin_noise3", stb.rate, stb.cpu_ms, stb.wall_ms, "1.00");
+      const timing *pe = peer[k[i].fbm];
+      if (i == 0 || pe != peer[k[i - 1].fbm])
+        printf("%-34s %10.1f %10.2f %10.2f %8s\n", peer_name[k[i].fbm], pe->rate, pe->cpu_ms,
+               pe->wall_ms, "1.00");
       printf("%-34s %10.1f %10.2f %10.2f %8.2f\n", k[i].label, k[i].tm.rate, k[i].tm.cpu_ms, k[i].tm.wall_ms,
-             k[i].tm.rate / (k[i].fbm == 1 ? stbf.rate : stb.rate));
+             k[i].tm.rate / pe->rate);
     }
   }
   nl_noise_grad2_free(t);

@@ -64,9 +64,10 @@ typedef struct {
                    double fz, double v, double w, size_t ncol, double *gx, double *a);
   /* Points; n is a multiple of NL_SIMD_PAD (the caller pads). Lanes whose
    * coordinates leave |.| < 2^31 (or are not finite) go through the scalar
-   * nl_noise_grad2_eval / nl_noise_perm3_eval; then (only then) the call
-   * returns 1, else 0: every coordinate finite and below 2^31, which the
-   * checked batches take as their test passed. */
+   * nl_noise_grad2_eval / nl_noise_perm3_eval (at AVX-512 also those whose
+   * cell is -2^31, and the rest of their vector or block of 64: same bits);
+   * then (only then) the call returns 1, else 0: every coordinate finite and
+   * below 2^31, which the checked batches take as their test passed. */
   int (*points2)(const nl_noise_grad2 *t, const double *x, const double *y, size_t n, double *out);
   int (*points3)(const nl_noise_perm3 *p, const int *p32, const double *x, const double *y,
                   const double *z, size_t n, double *out);

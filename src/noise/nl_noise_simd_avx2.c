@@ -17,7 +17,7 @@ typedef unsigned vu __attribute__((vector_size(16)));
 
 #include "noise/nl_noise_simd_body.h"
 
-const nl_noise_simd_kernels NL_SIMD_TABLE = {samples_lanes, columns3, points2, points3_lanes,
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples_lanes, columns3, points2_fold, points3_lanes,
                                            points3_sum_lanes, points3_bounded_lanes,
                                            refused_lanes};
 

@@ -123,7 +123,8 @@ static inline void v_column3_fp(const p3tab *p, vi h00, vi h10, vi h01, vi h11, 
   *ao = v_lerp(w, v_lerp(v, y00, y10), v_lerp(v, y01, y11));
 }
 
-static void columns3(const nl_noise_perm3 *P, const int *p32, unsigned xm, unsigned ym, unsigned zm, double fy,
+static __attribute__((unused)) void
+columns3(const nl_noise_perm3 *P, const int *p32, unsigned xm, unsigned ym, unsigned zm, double fy,
                      double fz, double v, double w, size_t ncol, double *gxo, double *ao)
 {
   vi iota, Y = (vi){0} + (int)ym, Z = (vi){0} + (int)zm;
@@ -175,6 +176,71 @@ static int points2(const nl_noise_grad2 *t, const double *x, const double *y, si
     vd g00 = v_gd(t->gx, k00), g01 = v_gd(t->gx, k01), g10 = v_gd(t->gx, k10), g11 = v_gd(t->gx, k11);
     vd a00 = v_gd(t->gy, k00) * fy, a01 = v_gd(t->gy, k01) * fy1;
     vd a10 = v_gd(t->gy, k10) * fy, a11 = v_gd(t->gy, k11) * fy1;
+    vd gx0 = g00 + v * (g01 - g00), a0 = a00 + v * (a01 - a00);
+    vd gx1 = g10 + v * (g11 - g10), a1 = a10 + v * (a11 - a10);
+    st(out + k, v_blend(fx, gx0, a0, gx1, a1));
+  }
+  return slow;
+}
+
+/* points2 for a power-of-two table of at most NL_Q2_MAX entries and a
+ * batch of at least m points. Lattice point (i, j) uses G[P[(P[i] + j) mod
+ * m]]: the composite table (gx, gy)[P[a]], as interleaved pairs, and P with
+ * P[0] repeated after its last entry, made per call (2 m loads), turn a
+ * point's 14 loads (2 of P, 4 of P again, 8 of gradients) into 2 adjacent
+ * ones of P and 4 pairs. The indices are scalar work beside the vector
+ * work. (The AVX-512 kernels bring their own, nl_noise_simd_avx512.c.) */
+enum { NL_Q2_MAX = 1024 };
+static inline int points2_foldable(const nl_noise_grad2 *t, size_t n)
+{
+  return t->m >= 1 && (t->m & (t->m - 1)) == 0 && t->m <= NL_Q2_MAX && n >= t->m;
+}
+static inline void points2_fold_tables(const nl_noise_grad2 *t, double *q2, unsigned *p2)
+{
+  for (size_t a = 0; a < t->m; a++) {
+    p2[a] = t->perm[a];
+    q2[2 * a] = t->gx[t->perm[a]];
+    q2[2 * a + 1] = t->gy[t->perm[a]];
+  }
+  p2[t->m] = p2[0];   /* P[(i + 1) mod m] beside P[i] for i = m - 1 too */
+}
+
+static __attribute__((unused)) int
+points2_fold(const nl_noise_grad2 *t, const double *x, const double *y, size_t n, double *out)
+{
+  if (!points2_foldable(t, n))
+    return points2(t, x, y, n, out);
+  int slow = 0;
+  double q2[2 * NL_Q2_MAX];
+  unsigned p2[NL_Q2_MAX + 1], mask = (unsigned)(t->m - 1);
+  points2_fold_tables(t, q2, p2);
+  for (size_t k = 0; k < n; k += NL_SIMD_W) {
+    vd vx = ld(x + k), vy = ld(y + k);
+    if (!v_all(v_small(vx) & v_small(vy))) {
+      for (size_t l = 0; l < NL_SIMD_W; l++)
+        out[k + l] = nl_noise_grad2_eval(t, x[k + l], y[k + l]);
+      slow = 1;
+      continue;
+    }
+    /* nl_noise_grad2_eval: i = lfloor(x), j = lfloor(y), fy = lfrac(y, j), v = fade(fy) */
+    vd ci = v_cell(vx), cj = v_cell(vy);
+    vd fy = v_frac(vy, cj), v = v_fade(fy), fx = v_frac(vx, ci);
+    vi i = __builtin_convertvector(ci, vi), j = __builtin_convertvector(cj, vi);
+    double g[4][NL_SIMD_W], gy[4][NL_SIMD_W];   /* corners q = dj + 2 di */
+    for (int l = 0; l < NL_SIMD_W; l++) {
+      const unsigned *pi = p2 + ((unsigned)i[l] & mask);
+      unsigned jl = (unsigned)j[l];
+      unsigned e[4] = {(pi[0] + jl) & mask, (pi[0] + jl + 1) & mask, (pi[1] + jl) & mask,
+                       (pi[1] + jl + 1) & mask};
+      for (int q = 0; q < 4; q++) {
+        g[q][l] = q2[2 * e[q]];
+        gy[q][l] = q2[2 * e[q] + 1];
+      }
+    }
+    /* column2 at i and i + 1, then blend(lfrac(x, i), ...), as points2 */
+    vd fy1 = fy - 1.0;
+    vd g00 = ld(g[0]), g01 = ld(g[1]), g10 = ld(g[2]), g11 = ld(g[3]);
+    vd a00 = ld(gy[0]) * fy, a01 = ld(gy[1]) * fy1, a10 = ld(gy[2]) * fy, a11 = ld(gy[3]) * fy1;
     vd gx0 = g00 + v * (g01 - g00), a0 = a00 + v * (a01 - a00);
     vd gx1 = g10 + v * (g11 - g10), a1 = a10 + v * (a11 - a10);
     st(out + k, v_blend(fx, gx0, a0, gx1, a1));

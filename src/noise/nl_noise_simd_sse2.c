@@ -15,6 +15,6 @@ static inline vi v_gi(const int *b, vi i) { return (vi){b[i[0]], b[i[1]]}; }
 
 #include "noise/nl_noise_simd_body.h"
 
-const nl_noise_simd_kernels NL_SIMD_TABLE = {samples_lanes, columns3, points2, points3_lanes,
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples_lanes, columns3, points2_fold, points3_lanes,
                                            points3_sum_lanes, points3_bounded_lanes,
                                            refused_lanes};

@@ -170,12 +170,16 @@ static void batches_at_level(const nl_noise_perm3 *p, const char *name)
     free(blocks[k]);
 }
 
-/* Rows from the points (origin, y, z) with steps dense to sparse, and rows
- * across the lattice planes 0 and -256 in steps of 2^-56 (through
- * [-2^-54, 0)): as nl_noise_perm3_row and as a one-octave fractal row. */
+/* Rows from the points (origin, y, z) with steps dense to sparse (to 3.7
+ * cells a sample: both windows of the columns, columns lane by lane, and
+ * the points path), and rows across the lattice planes 0 and -256 in steps
+ * of 2^-56 (through [-2^-54, 0)): as nl_noise_perm3_row and as a one-octave
+ * fractal row. */
 static void rows_at_level(const nl_noise_perm3 *p, const char *name)
 {
-  static const double steps[] = {1.0 / 64, 0.0137, -0.29, 3.7, 1e-4, -1.0 / 64, 0.75, 0x1p-56};
+  static const double steps[] = {1.0 / 64, 0.0137, -0.29, 3.7, 1e-4, -1.0 / 64, 0.75, 0x1p-56,
+                                 0.7, -1.3, 13.0 / 7, -1.95};
+  enum { NSTEPS = sizeof steps / sizeof *steps };
   enum { ROW = 256 };
   double out[ROW], frac[ROW], one[ROW], scratch[ROW];
   nl_noise_basis b = nl_noise_basis_perm3(p);
@@ -185,7 +189,7 @@ static void rows_at_level(const nl_noise_perm3 *p, const char *name)
   size_t nrows = NL_REF_POINTS / ROW;
   for (size_t r = 0; r < nrows + 8; r++) {
     double y = py[r], z = pz[r];
-    double dx = r < nrows ? steps[r % 8] : r % 2 ? 0x1p-44 : 0x1p-56;   /* the ulp of 256, 2^-56 */
+    double dx = r < nrows ? steps[r % NSTEPS] : r % 2 ? 0x1p-44 : 0x1p-56;   /* ulp of 256, 2^-56 */
     double x0 = r < nrows ? px[r] : r % 2 ? -256.0 - 100 * dx : -100 * dx;
     nl_noise_perm3_row(p, x0, dx, y, z, ROW, out);
     nl_noise_fractal_row(&b, &o, x0, dx, y, z, ROW, frac, scratch);

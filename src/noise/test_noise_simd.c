@@ -166,6 +166,105 @@ static void sum_reference(const nl_noise_perm3 *p, double f, const double *x, co
   }
 }
 
+/* A coordinate the batch kernels take whole blocks of: in range, but at
+ * the lattice's edges (integers, half-integers, -0, values just below an
+ * integer or 0, near multiples of 256, either sign). */
+static double tame(gsl_rng *r)
+{
+  static const double edge[] = {0.0, -0.0, -1e-20, 1e-20, -0x1p-54, -0x1p-53, 0.5, -0.5, 255.0,
+                                256.0, -256.0, -255.0, 0x1p31 - 0.5, -0x1p31 + 1, 2147483647.75};
+  double u = gsl_rng_uniform(r);
+  if (u < 0.05) return edge[gsl_rng_uniform_int(r, sizeof edge / sizeof *edge)];
+  if (u < 0.25) return (double)((long)gsl_rng_uniform_int(r, 601) - 300);
+  if (u < 0.35) return (double)((long)gsl_rng_uniform_int(r, 601) - 300) + 0.5;
+  if (u < 0.45) return nextafter((double)((long)gsl_rng_uniform_int(r, 601) - 300), -INFINITY);
+  return 600 * gsl_rng_uniform(r) - 300;
+}
+
+/* Batches whose blocks of 64 points the kernels hash at once, and blocks
+ * that one awkward point sends to the per-vector path (a cell of -2^31, a
+ * coordinate past 2^31, NaN): points, sums of one octave and one bounded
+ * term against the point call, at every level. */
+NL_TEST(perm3_blocks_match_scalar)
+{
+  find_levels();
+  enum { NB = 64 * 160 + 40 };
+  static const double awkward[] = {-0x1p31, -2147483647.5, 0x1p31, NAN, -INFINITY, 1e300};
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, 33);
+  double *c[3], *ref = malloc(NB * sizeof *ref), *got = malloc(NB * sizeof *got);
+  for (int a = 0; a < 3; a++) {
+    c[a] = malloc(NB * sizeof *c[a]);
+    for (size_t k = 0; k < NB; k++) c[a][k] = tame(r);
+  }
+  for (size_t b = 1; b < NB / 64; b += 3)   /* one awkward coordinate in every third block */
+    c[b % 3][64 * b + gsl_rng_uniform_int(r, 64)] = awkward[(b / 3) % 6];
+  nl_noise_perm3 p;
+  for (int tab = 0; tab < 2; tab++) {
+    if (tab) nl_noise_perm3_seed(&p, 12);
+    else nl_noise_perm3_reference(&p);
+    for (size_t k = 0; k < NB; k++) ref[k] = nl_noise_perm3_eval(&p, c[0][k], c[1][k], c[2][k]);
+    for (int L = 0; L < nlevels; L++) {
+      nl_noise_simd_set(levels[L]);
+      nl_noise_perm3_points(&p, c[0], c[1], c[2], NB, got);
+      NL_CHECK(same(got, ref, NB));
+      for (int s = 0; s < 2; s++) {   /* f = 1 and f = -1.5, from a sum of -0 */
+        double f = s ? -1.5 : 1.0, rs[NB], t0, t1;
+        for (size_t k = 0; k < NB; k++) rs[k] = got[k] = -0.0;
+        sum_reference(&p, f, c[0], c[1], c[2], NB, 0.75, rs, &t0);
+        t1 = nl_noise_perm3_points_sum(&p, f, c[0], c[1], c[2], NB, 0.75, got);
+        NL_CHECK(same(got, rs, NB) && memcmp(&t0, &t1, sizeof t0) == 0);
+      }
+      compared += 3 * NB;
+    }
+  }
+  nl_noise_simd_set(nl_noise_simd_best());
+  for (int a = 0; a < 3; a++) free(c[a]);
+  free(ref); free(got);
+  gsl_rng_free(r);
+}
+
+/* 2D batches of in-range points, with one awkward point in every third
+ * vector, for power-of-two tables (whose batches fold the permutation into
+ * the gradients) and others, against the point call at every level. */
+NL_TEST(grad2_blocks_match_scalar)
+{
+  find_levels();
+  enum { NB = 8 * 1200 + 5 };
+  static const double awkward[] = {-0x1p31, -2147483647.5, 0x1p31, NAN, INFINITY, -1e300};
+  static const size_t ms[] = {512, 1024, 2048, 256, 1, 2, 300};
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, 34);
+  double *x = malloc(NB * sizeof *x), *y = malloc(NB * sizeof *y);
+  double *ref = malloc(NB * sizeof *ref), *got = malloc(NB * sizeof *got);
+  for (size_t k = 0; k < NB; k++) {
+    x[k] = tame(r);
+    y[k] = tame(r);
+  }
+  for (size_t v = 1; v < NB / 8; v += 3)
+    (v % 2 ? x : y)[8 * v + gsl_rng_uniform_int(r, 8)] = awkward[(v / 3) % 6];
+  for (size_t a = 0; a < sizeof ms / sizeof *ms; a++) {
+    nl_noise_grad2 *t = nl_noise_grad2_alloc(ms[a]);
+    nl_noise_grad2_seed(t, 40 + a);
+    for (size_t k = 0; k < NB; k++) ref[k] = nl_noise_grad2_eval(t, x[k], y[k]);
+    for (int L = 0; L < nlevels; L++) {
+      nl_noise_simd_set(levels[L]);
+      nl_noise_grad2_points(t, x, y, NB, got);
+      NL_CHECK(same(got, ref, NB));
+      nl_noise_grad2_points(t, x + 3, y + 3, ms[a] + 1, got);   /* just past the table's size */
+      NL_CHECK(same(got, ref + 3, ms[a] + 1));
+      compared += NB + (long)ms[a] + 1;
+    }
+    nl_noise_grad2_free(t);
+  }
+  nl_noise_simd_set(nl_noise_simd_best());
+  free(x);
+  free(y);
+  free(ref);
+  free(got);
+  gsl_rng_free(r);
+}
+
 static void compare_perm3_sum(const nl_noise_perm3 *p, unsigned long seed)
 {
   static const double fs[] = {1.0, 2.0, 2048.0, -3.5, 0.0, -0.0, 1e300, 0x1p20, 0.37};
@@ -308,7 +407,8 @@ NL_TEST(perm3_bounded_match_scalar)
 
 /* Rows at the edges of the kernels' shortcuts: x = -0 (whose cell must read
  * +0), x in [-2^-54, 0) (whose fraction rounds to 1 and is mapped to 0),
- * steps at the window's limit (7 |dx| = 4) and either side of it, rows
+ * steps at the windows' limits (7 |dx| = 4 and 13) and either side of
+ * them, sparse steps (0.7 to 2.5 cells a sample) either way, rows
  * ending at the lattice bound 2^52, and every length up to 3 vectors. */
 NL_TEST(edge_rows_match_scalar)
 {
@@ -319,7 +419,9 @@ NL_TEST(edge_rows_match_scalar)
   nl_noise_perm3_seed(&p, 5);
   const double x0s[] = {-0.0, 0.0, -0x1p-54, -0x1p-55, -1e-20, -0x1p-53, -0x1p-50, -1.0 / 3, 0x1p52 - 40,
                         -0x1p52 + 1, 1e-300, -5e-324};
-  const double dxs[] = {1.0 / 64, -1.0 / 64, 4.0 / 7, -4.0 / 7, 0.5714286, 0x1p-60, -0x1p-60, 0.0, -0.0, 1.0, 0.75};
+  const double dxs[] = {1.0 / 64, -1.0 / 64, 4.0 / 7, -4.0 / 7, 0.5714286, 0x1p-60, -0x1p-60, 0.0,
+                        -0.0, 1.0, 0.75, 0.7, -0.7, 13.0 / 7, -13.0 / 7, 1.8571429, -1.8571429,
+                        1.3, 2.0, -2.5};
   const double ys[] = {-0.0, 0.0, 3.0, -1e-20, 0.25};
   double ref[3 * 8 + 1], got[3 * 8 + 1], acc[3 * 8 + 1];
   int bad = 0;
