@@ -66,6 +66,19 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* The point calls nl_noise_grad2_eval, nl_noise_perm3_eval and
+ * nl_noise_perm3_fractal_eval are inline functions in C99's sense: their
+ * bodies are at the end of this header, so a loop of calls compiles into
+ * the caller (and work that does not change from one call to the next,
+ * such as the z of points on a plane, leaves the loop), while the library
+ * still exports each of them as a symbol (bindings, pointers to them).
+ * Define NL_NOISE_NO_INLINE to call the library's copies instead. */
+#if defined(__GNUC__) && !defined(NL_NOISE_NO_INLINE)
+#define NL_NOISE_INLINE inline
+#else
+#define NL_NOISE_INLINE
+#endif
+
 /* ---- 2D gradient-table noise ---------------------------------------- */
 
 typedef struct {
@@ -84,7 +97,11 @@ void nl_noise_grad2_copy(nl_noise_grad2 *dst, const nl_noise_grad2 *src);   /* s
 /* Table entry used by lattice point (i, j). */
 size_t nl_noise_grad2_index(const nl_noise_grad2 *t, long i, long j);
 
-double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, double y);
+NL_NOISE_INLINE double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, double y);
+/* The same noise, out of line and for every double: what nl_noise_grad2_eval
+ * computes when m is not a power of two or a coordinate is 2^31 or more
+ * from 0 (or not finite). */
+double nl_noise_grad2_eval_general(const nl_noise_grad2 *t, double x, double y);
 /* out[k] = noise(x0 + k dx, y), k < n. */
 void nl_noise_grad2_row(const nl_noise_grad2 *t, double x0, double dx, double y, size_t n, double *out);
 #define NL_NOISE2_BOUND 0.70710678118654752440
@@ -137,7 +154,10 @@ typedef struct { unsigned char p[512]; } nl_noise_perm3;   /* 256 entries, doubl
 
 void nl_noise_perm3_reference(nl_noise_perm3 *p);                 /* Perlin 2002's table */
 void nl_noise_perm3_seed(nl_noise_perm3 *p, unsigned long seed);  /* shuffled 0..255 */
-double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, double y, double z);
+NL_NOISE_INLINE double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, double y, double z);
+/* The same noise, out of line and for every double: what nl_noise_perm3_eval
+ * computes when a coordinate is 2^31 or more from 0 (or not finite). */
+double nl_noise_perm3_eval_general(const nl_noise_perm3 *p, double x, double y, double z);
 void nl_noise_perm3_row(const nl_noise_perm3 *p, double x0, double dx, double y, double z,
                         size_t n, double *out);
 #define NL_NOISE3_BOUND 1.22474487139158904910
@@ -224,6 +244,11 @@ nl_noise_octaves nl_noise_octaves_cheng(int n, double f1, double a1);
 /* bound(N) * sum |amp|: the sum never leaves [-b, b] ([0, b] if turbulence). */
 double nl_noise_octaves_bound(const nl_noise_octaves *o, double basis_bound);
 
+/* The sum of octaves of Perlin's improved noise at one point: the bits of
+ * nl_noise_fractal_row over nl_noise_basis_perm3 with n = 1. */
+NL_NOISE_INLINE double nl_noise_perm3_fractal_eval(const nl_noise_perm3 *p, const nl_noise_octaves *o,
+                                                   double x, double y, double z);
+
 /* out[k] = sum of octaves at (x0 + k dx, y, z); scratch holds n doubles. */
 void nl_noise_fractal_row(const nl_noise_basis *b, const nl_noise_octaves *o, double x0, double dx,
                           double y, double z, size_t n, double *out, double *scratch);
@@ -232,5 +257,125 @@ void nl_noise_fractal_row(const nl_noise_basis *b, const nl_noise_octaves *o, do
  * plane z, sampled at pixel centres; row 0 is y0. */
 typedef struct { double x0, y0, z, size; int w, h; } nl_noise_window;
 void nl_noise_fractal_grid(const nl_noise_basis *b, const nl_noise_octaves *o, const nl_noise_window *win, double *out);
+
+/* ---- the point calls, inline ----------------------------------------
+ *
+ * The bodies of nl_noise_grad2_eval, nl_noise_perm3_eval and
+ * nl_noise_perm3_fractal_eval (see the top of this header). They compute
+ * what the row kernels compute (the column lines L_c of the header's
+ * "Evaluation order"), with the same IEEE operations in the same order,
+ * so their bits are those of the rows, the batches and
+ * nl_noise_*_eval_general; three things make them faster than that code:
+ *  - the two columns i and i + 1 of the cell go through the same
+ *    operations, so they are the two lanes of one 2-double vector (SSE2
+ *    on x86-64: half the arithmetic instructions);
+ *  - Perlin's 16 gradients are read as pairs, one entry per pair of hashes
+ *    (nl_noise_perm3_gradpairs, 12 KiB), three aligned loads per corner of
+ *    both columns instead of six scalar ones;
+ *  - coordinates within 2^31 of 0 (every finite double the noise is used
+ *    at) take a floor and fraction without the range checks
+ *    nl_noise_lattice.h makes for every double; the others go to
+ *    nl_noise_*_eval_general, which makes them.
+ * The bits are the library's only if the caller's compiler contracts no
+ * a * b + c into a fused multiply-add: GCC in ISO C mode (-std=c11, the
+ * project's flags) or with -ffp-contract=off, clang with
+ * -ffp-contract=off. An inline definition may not use the static helpers
+ * of nl_noise_lattice.h, hence the macros. */
+#if defined(__GNUC__) && !defined(NL_NOISE_NO_INLINE)
+
+typedef double nl_noise_v2d __attribute__((vector_size(16)));
+/* Gradients a and b of Perlin's 16 (x, y and z components as lane pairs)
+ * at entry 16 a + b. */
+typedef struct { nl_noise_v2d gx, gy, gz; } nl_noise_perm3_gradpair;
+extern const nl_noise_perm3_gradpair nl_noise_perm3_gradpairs[256];
+
+#define NL_NOISE_FADE_(t) ((t) * (t) * (t) * ((t) * ((t) * 6.0 - 15.0) + 10.0))
+#define NL_NOISE_LERP_(t, a, b) ((a) + (t) * ((b) - (a)))
+#define NL_NOISE_NEAR_(x) ((x) > -0x1p31 && (x) < 0x1p31)
+
+/* L_c(t) + fade(t) (L_{c+1}(t - 1) - L_c(t)), with lane 0 of gx and a
+ * column c's line and lane 1 column c + 1's. */
+#define NL_NOISE_BLEND_(t, gx, a, out)                                    \
+  do {                                                                    \
+    nl_noise_v2d lr_ = (nl_noise_v2d){(t), (t) - 1.0} * (gx) + (a);         \
+    (out) = lr_[0] + NL_NOISE_FADE_(t) * (lr_[1] - lr_[0]);               \
+  } while (0)
+
+NL_NOISE_INLINE double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, double y)
+{
+  long m = (long)t->m, km = m - 1;
+  if (!(NL_NOISE_NEAR_(x) && NL_NOISE_NEAR_(y)) || m <= 0 || (m & km) != 0)
+    return nl_noise_grad2_eval_general(t, x, y);
+  long i = (long)x, j = (long)y;
+  i -= x < (double)i;
+  j -= y < (double)j;
+  double fx = x - (double)i, fy = y - (double)j, v = NL_NOISE_FADE_(fy), res;
+  /* Table entries of the corners (i + di, j + dj), G[P[(P[i] + j) mod m]] */
+  const unsigned *P = t->perm;
+  long pi0 = P[i & km], pi1 = P[(i + 1) & km];
+  size_t k00 = P[(pi0 + j) & km], k10 = P[(pi1 + j) & km];
+  size_t k01 = P[(pi0 + j + 1) & km], k11 = P[(pi1 + j + 1) & km];
+  const double *GX = t->gx, *GY = t->gy;
+  nl_noise_v2d gx0 = {GX[k00], GX[k10]}, gx1 = {GX[k01], GX[k11]};
+  nl_noise_v2d a0 = (nl_noise_v2d){GY[k00], GY[k10]} * (nl_noise_v2d){fy, fy};
+  nl_noise_v2d a1 = (nl_noise_v2d){GY[k01], GY[k11]} * (nl_noise_v2d){fy - 1.0, fy - 1.0};
+  nl_noise_v2d vv = {v, v};
+  NL_NOISE_BLEND_(fx, NL_NOISE_LERP_(vv, gx0, gx1), NL_NOISE_LERP_(vv, a0, a1), res);
+  return res;
+}
+
+NL_NOISE_INLINE double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, double y, double z)
+{
+  if (!(NL_NOISE_NEAR_(x) && NL_NOISE_NEAR_(y) && NL_NOISE_NEAR_(z)))
+    return nl_noise_perm3_eval_general(p, x, y, z);
+  long i = (long)x, j = (long)y, k = (long)z;
+  i -= x < (double)i;
+  j -= y < (double)j;
+  k -= z < (double)k;
+  double fx = x - (double)i, res;
+  nl_noise_v2d f = {y - (double)j, z - (double)k}, vw = NL_NOISE_FADE_(f), f1 = f - 1.0;
+  nl_noise_v2d v = {vw[0], vw[0]}, w = {vw[1], vw[1]};
+  nl_noise_v2d fy0 = {f[0], f[0]}, fy1 = {f1[0], f1[0]}, fz0 = {f[1], f[1]}, fz1 = {f1[1], f1[1]};
+  /* Perlin's hashes of the corners (i + di, j + dj, k + dk); the table
+   * is doubled, so P[X + 1] is column i + 1's. */
+  const unsigned char *P = p->p;
+  int X = (int)(i & 255), Y = (int)(j & 255), Z = (int)(k & 255);
+  int A = P[X] + Y, B = P[X + 1] + Y;
+  int AA = P[A] + Z, AB = P[A + 1] + Z, BA = P[B] + Z, BB = P[B + 1] + Z;
+  const nl_noise_perm3_gradpair *g00 = &nl_noise_perm3_gradpairs[(P[AA] & 15) << 4 | (P[BA] & 15)];
+  const nl_noise_perm3_gradpair *g10 = &nl_noise_perm3_gradpairs[(P[AB] & 15) << 4 | (P[BB] & 15)];
+  const nl_noise_perm3_gradpair *g01 =
+      &nl_noise_perm3_gradpairs[(P[AA + 1] & 15) << 4 | (P[BA + 1] & 15)];
+  const nl_noise_perm3_gradpair *g11 =
+      &nl_noise_perm3_gradpairs[(P[AB + 1] & 15) << 4 | (P[BB + 1] & 15)];
+  /* Each corner's y and z terms, blended along y then z into the lines */
+  nl_noise_v2d gx = NL_NOISE_LERP_(w, NL_NOISE_LERP_(v, g00->gx, g10->gx),
+                                   NL_NOISE_LERP_(v, g01->gx, g11->gx));
+  nl_noise_v2d a00 = g00->gy * fy0 + g00->gz * fz0, a10 = g10->gy * fy1 + g10->gz * fz0;
+  nl_noise_v2d a01 = g01->gy * fy0 + g01->gz * fz1, a11 = g11->gy * fy1 + g11->gz * fz1;
+  nl_noise_v2d a = NL_NOISE_LERP_(w, NL_NOISE_LERP_(v, a00, a10), NL_NOISE_LERP_(v, a01, a11));
+  NL_NOISE_BLEND_(fx, gx, a, res);
+  return res;
+}
+
+/* Octave l adds amp_l * N(freq_l p) to a sum started at 0 (|N| for
+ * turbulence), as nl_noise_fractal_row adds its rows. */
+NL_NOISE_INLINE double nl_noise_perm3_fractal_eval(const nl_noise_perm3 *p, const nl_noise_octaves *o,
+                                                   double x, double y, double z)
+{
+  double sum = 0;
+  for (int l = 0; l < o->n; l++) {
+    double f = o->freq[l], v = nl_noise_perm3_eval(p, x * f, y * f, z * f);
+    sum += o->amp[l] * (o->turbulence ? __builtin_fabs(v) : v);
+  }
+  return sum;
+}
+
+#undef NL_NOISE_BLEND_
+#undef NL_NOISE_NEAR_
+#undef NL_NOISE_LERP_
+#undef NL_NOISE_FADE_
+
+#endif
 
 #endif
