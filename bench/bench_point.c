@@ -31,7 +31,10 @@
  * printed before and after. The program pins itself to the processor it
  * starts on unless already given one.
  *
- *   build/bench/bench_point [--tsv]
+ *   build/bench/bench_point [--tsv] [--only KERNEL]
+ *
+ * --only KERNEL times that kernel alone (for perf stat / perf record); its
+ * vs_peer is then not a ratio.
  *
  * --tsv: '#' lines (load, CPU), a header, one line per kernel: kernel,
  * points, msamples_per_s, ns_per_call, peer, vs_peer (rate / peer's rate).
@@ -253,13 +256,23 @@ static void round_of(kernel *k)
 int main(int argc, char **argv)
 {
   int tsv = 0;
+  const char *only = NULL;
   for (int a = 1; a < argc; a++) {
     if (strcmp(argv[a], "--tsv") == 0) {
       tsv = 1;
+    } else if (strcmp(argv[a], "--only") == 0 && a + 1 < argc) {
+      only = argv[++a];
     } else {
-      fprintf(stderr, "bench_point: unknown argument '%s'; usage: bench_point [--tsv]\n", argv[a]);
+      fprintf(stderr, "bench_point: unknown argument '%s'; usage: bench_point [--tsv] [--only KERNEL]\n",
+              argv[a]);
       return 2;
     }
+  }
+  int known = !only;
+  for (int i = 0; i < NK; i++) known |= only && strcmp(only, ks[i].name) == 0;
+  if (!known) {
+    fprintf(stderr, "bench_point: --only '%s': no such kernel (see the kernel column of a full run)\n", only);
+    return 2;
   }
   char where[64], load0[128], load1[128];
   nl_bench_pin(where, sizeof where);
@@ -284,7 +297,8 @@ int main(int argc, char **argv)
   fbm4 = nl_noise_octaves_fbm(4, 0.5, 2.0);
 
   for (int r = 0; r < ROUNDS; r++)
-    for (int i = 0; i < NK; i++) round_of(&ks[i]);
+    for (int i = 0; i < NK; i++)
+      if (!only || strcmp(only, ks[i].name) == 0) round_of(&ks[i]);
   nl_bench_loadavg(load1, sizeof load1);
 
   const char *fmt = tsv ? "%s\t%d\t%.1f\t%.2f\t%s\t%s\n" : "%-30s %7d %10.1f %8.2f  %-30s %s\n";
@@ -295,7 +309,8 @@ int main(int argc, char **argv)
   else printf("%-30s %7s %10s %8s  %-30s %s\n", "kernel", "points", "Msample/s", "ns/call", "peer", "vs peer");
   for (int i = 0; i < NK; i++) {
     char ratio[32] = "-";
-    if (ks[i].peer >= 0) snprintf(ratio, sizeof ratio, "%.2f", ks[i].rate / ks[ks[i].peer].rate);
+    if (only && strcmp(only, ks[i].name) != 0) continue;
+    if (ks[i].peer >= 0 && ks[ks[i].peer].rate > 0) snprintf(ratio, sizeof ratio, "%.2f", ks[i].rate / ks[ks[i].peer].rate);
     printf(fmt, ks[i].name, NPOINTS, ks[i].rate, 1e3 / ks[i].rate, ks[i].peer >= 0 ? ks[ks[i].peer].name : "-",
            ratio);
   }

@@ -286,13 +286,14 @@ void nl_noise_perm3_seed(nl_noise_perm3 *p, unsigned long seed)
                 : (h) == 13 || (h) == 15 ? -1 : ((h) & 1 ? -1 : 1))
 #define G3Z(h) ((h) < 4 || (h) == 12 || (h) == 14 ? 0 : (h) < 8 ? ((h) & 2 ? -1 : 1) \
                 : (h) == 13 ? 1 : (h) == 15 ? -1 : ((h) & 2 ? -1 : 1))
-#define PAIR(a, b) {{G3X(a), G3X(b)}, {G3Y(a), G3Y(b)}, {G3Z(a), G3Z(b)}}
-#define PAIRS(a) PAIR(a, 0), PAIR(a, 1), PAIR(a, 2), PAIR(a, 3), PAIR(a, 4), PAIR(a, 5), \
-                 PAIR(a, 6), PAIR(a, 7), PAIR(a, 8), PAIR(a, 9), PAIR(a, 10), PAIR(a, 11), \
-                 PAIR(a, 12), PAIR(a, 13), PAIR(a, 14), PAIR(a, 15)
-const nl_noise_perm3_gradpair nl_noise_perm3_gradpairs[256] = {
-  PAIRS(0), PAIRS(1), PAIRS(2), PAIRS(3), PAIRS(4), PAIRS(5), PAIRS(6), PAIRS(7),
-  PAIRS(8), PAIRS(9), PAIRS(10), PAIRS(11), PAIRS(12), PAIRS(13), PAIRS(14), PAIRS(15)};
+#define P2(C, a, b) {C(a), C(b)}
+#define P16(C, a) P2(C, a, 0), P2(C, a, 1), P2(C, a, 2), P2(C, a, 3), P2(C, a, 4), P2(C, a, 5), \
+                  P2(C, a, 6), P2(C, a, 7), P2(C, a, 8), P2(C, a, 9), P2(C, a, 10), P2(C, a, 11), \
+                  P2(C, a, 12), P2(C, a, 13), P2(C, a, 14), P2(C, a, 15)
+#define P256(C) {P16(C, 0), P16(C, 1), P16(C, 2), P16(C, 3), P16(C, 4), P16(C, 5), P16(C, 6), \
+                 P16(C, 7), P16(C, 8), P16(C, 9), P16(C, 10), P16(C, 11), P16(C, 12), P16(C, 13), \
+                 P16(C, 14), P16(C, 15)}
+const nl_noise_perm3_gradpairs_table nl_noise_perm3_gradpairs = {P256(G3X), P256(G3Y), P256(G3Z)};
 
 /* Corner contribution without its x term: gy (fy - dj) + gz (fz - dk). */
 static inline double yz_part(int h, double fy, double fz)

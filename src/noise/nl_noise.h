@@ -284,10 +284,11 @@ void nl_noise_fractal_grid(const nl_noise_basis *b, const nl_noise_octaves *o, c
 #if defined(__GNUC__) && !defined(NL_NOISE_NO_INLINE)
 
 typedef double nl_noise_v2d __attribute__((vector_size(16)));
-/* Gradients a and b of Perlin's 16 (x, y and z components as lane pairs)
- * at entry 16 a + b. */
-typedef struct { nl_noise_v2d gx, gy, gz; } nl_noise_perm3_gradpair;
-extern const nl_noise_perm3_gradpair nl_noise_perm3_gradpairs[256];
+/* Gradients a and b of Perlin's 16 as lane pairs, at entry 16 a + b of
+ * each component's array. */
+typedef struct { nl_noise_v2d gx[256], gy[256], gz[256]; } nl_noise_perm3_gradpairs_table;
+_Static_assert(sizeof(nl_noise_v2d[256]) == 4096, "the point call's offsets of gy and gz");
+extern const nl_noise_perm3_gradpairs_table nl_noise_perm3_gradpairs;
 
 #define NL_NOISE_FADE_(t) ((t) * (t) * (t) * ((t) * ((t) * 6.0 - 15.0) + 10.0))
 #define NL_NOISE_LERP_(t, a, b) ((a) + (t) * ((b) - (a)))
@@ -339,20 +340,24 @@ NL_NOISE_INLINE double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, do
   /* Perlin's hashes of the corners (i + di, j + dj, k + dk); the table
    * is doubled, so P[X + 1] is column i + 1's. */
   const unsigned char *P = p->p;
-  int X = (int)(i & 255), Y = (int)(j & 255), Z = (int)(k & 255);
-  int A = P[X] + Y, B = P[X + 1] + Y;
-  int AA = P[A] + Z, AB = P[A + 1] + Z, BA = P[B] + Z, BB = P[B + 1] + Z;
-  const nl_noise_perm3_gradpair *g00 = &nl_noise_perm3_gradpairs[(P[AA] & 15) << 4 | (P[BA] & 15)];
-  const nl_noise_perm3_gradpair *g10 = &nl_noise_perm3_gradpairs[(P[AB] & 15) << 4 | (P[BB] & 15)];
-  const nl_noise_perm3_gradpair *g01 =
-      &nl_noise_perm3_gradpairs[(P[AA + 1] & 15) << 4 | (P[BA + 1] & 15)];
-  const nl_noise_perm3_gradpair *g11 =
-      &nl_noise_perm3_gradpairs[(P[AB + 1] & 15) << 4 | (P[BB + 1] & 15)];
+  size_t X = (size_t)i & 255, Y = (size_t)j & 255, Z = (size_t)k & 255;
+  size_t A = P[X] + Y, B = P[X + 1] + Y;
+  size_t AA = P[A] + Z, AB = P[A + 1] + Z, BA = P[B] + Z, BB = P[B + 1] + Z;
+  /* The corners' byte offsets into each array of nl_noise_perm3_gradpairs */
+  const char *G = (const char *)&nl_noise_perm3_gradpairs;
+  size_t q00 = ((size_t)P[AA] & 15) << 8 | ((size_t)P[BA] & 15) << 4;
+  size_t q10 = ((size_t)P[AB] & 15) << 8 | ((size_t)P[BB] & 15) << 4;
+  size_t q01 = ((size_t)P[AA + 1] & 15) << 8 | ((size_t)P[BA + 1] & 15) << 4;
+  size_t q11 = ((size_t)P[AB + 1] & 15) << 8 | ((size_t)P[BB + 1] & 15) << 4;
+#define NL_NOISE_GX_(q) (*(const nl_noise_v2d *)(G + (q)))
+#define NL_NOISE_GY_(q) (*(const nl_noise_v2d *)(G + 4096 + (q)))
+#define NL_NOISE_GZ_(q) (*(const nl_noise_v2d *)(G + 8192 + (q)))
+#define NL_NOISE_YZ_(q, fy, fz) (NL_NOISE_GY_(q) * (fy) + NL_NOISE_GZ_(q) * (fz))
   /* Each corner's y and z terms, blended along y then z into the lines */
-  nl_noise_v2d gx = NL_NOISE_LERP_(w, NL_NOISE_LERP_(v, g00->gx, g10->gx),
-                                   NL_NOISE_LERP_(v, g01->gx, g11->gx));
-  nl_noise_v2d a00 = g00->gy * fy0 + g00->gz * fz0, a10 = g10->gy * fy1 + g10->gz * fz0;
-  nl_noise_v2d a01 = g01->gy * fy0 + g01->gz * fz1, a11 = g11->gy * fy1 + g11->gz * fz1;
+  nl_noise_v2d gx = NL_NOISE_LERP_(w, NL_NOISE_LERP_(v, NL_NOISE_GX_(q00), NL_NOISE_GX_(q10)),
+                                   NL_NOISE_LERP_(v, NL_NOISE_GX_(q01), NL_NOISE_GX_(q11)));
+  nl_noise_v2d a00 = NL_NOISE_YZ_(q00, fy0, fz0), a10 = NL_NOISE_YZ_(q10, fy1, fz0);
+  nl_noise_v2d a01 = NL_NOISE_YZ_(q01, fy0, fz1), a11 = NL_NOISE_YZ_(q11, fy1, fz1);
   nl_noise_v2d a = NL_NOISE_LERP_(w, NL_NOISE_LERP_(v, a00, a10), NL_NOISE_LERP_(v, a01, a11));
   NL_NOISE_BLEND_(fx, gx, a, res);
   return res;
@@ -371,6 +376,10 @@ NL_NOISE_INLINE double nl_noise_perm3_fractal_eval(const nl_noise_perm3 *p, cons
   return sum;
 }
 
+#undef NL_NOISE_YZ_
+#undef NL_NOISE_GZ_
+#undef NL_NOISE_GY_
+#undef NL_NOISE_GX_
 #undef NL_NOISE_BLEND_
 #undef NL_NOISE_NEAR_
 #undef NL_NOISE_LERP_

@@ -103,13 +103,14 @@ NL_TEST(perm3_gradient_pairs)
 {
   for (int a = 0; a < 16; a++) {
     for (int b = 0; b < 16; b++) {
-      const nl_noise_perm3_gradpair *g = &nl_noise_perm3_gradpairs[16 * a + b];
+      const nl_noise_perm3_gradpairs_table *g = &nl_noise_perm3_gradpairs;
+      int q = 16 * a + b;
       int h[2] = {a, b};
       for (int l = 0; l < 2; l++) {
         double x = 1, y = 10, z = 100;   /* grad(h, x, y, z) = gx x + gy y + gz z */
         double u = h[l] < 8 ? x : y, v = h[l] < 4 ? y : h[l] == 12 || h[l] == 14 ? x : z;
         double perlin = ((h[l] & 1) == 0 ? u : -u) + ((h[l] & 2) == 0 ? v : -v);
-        NL_CHECK(g->gx[l] * x + g->gy[l] * y + g->gz[l] * z == perlin);
+        NL_CHECK(g->gx[q][l] * x + g->gy[q][l] * y + g->gz[q][l] * z == perlin);
       }
     }
   }
