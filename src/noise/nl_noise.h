@@ -294,12 +294,12 @@ extern const nl_noise_perm3_gradpairs_table nl_noise_perm3_gradpairs;
 #define NL_NOISE_LERP_(t, a, b) ((a) + (t) * ((b) - (a)))
 #define NL_NOISE_NEAR_(x) ((x) > -0x1p31 && (x) < 0x1p31)
 
-/* L_c(t) + fade(t) (L_{c+1}(t - 1) - L_c(t)), with lane 0 of gx and a
- * column c's line and lane 1 column c + 1's. */
-#define NL_NOISE_BLEND_(t, gx, a, out)                                    \
+/* L_c(t) + u (L_{c+1}(t - 1) - L_c(t)), u = fade(t), with lane 0 of gx
+ * and a column c's line and lane 1 column c + 1's. */
+#define NL_NOISE_BLEND_(t, u, gx, a, out)                                 \
   do {                                                                    \
-    nl_noise_v2d lr_ = (nl_noise_v2d){(t), (t) - 1.0} * (gx) + (a);         \
-    (out) = lr_[0] + NL_NOISE_FADE_(t) * (lr_[1] - lr_[0]);               \
+    nl_noise_v2d lr_ = (nl_noise_v2d){(t), (t) - 1.0} * (gx) + (a);       \
+    (out) = lr_[0] + (u) * (lr_[1] - lr_[0]);                             \
   } while (0)
 
 NL_NOISE_INLINE double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, double y)
@@ -310,7 +310,9 @@ NL_NOISE_INLINE double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, do
   long i = (long)x, j = (long)y;
   i -= x < (double)i;
   j -= y < (double)j;
-  double fx = x - (double)i, fy = y - (double)j, v = NL_NOISE_FADE_(fy), res;
+  double fx = x - (double)i, fy = y - (double)j, res;
+  nl_noise_v2d uv = NL_NOISE_FADE_(((nl_noise_v2d){fx, fy}));   /* fades of fx and fy */
+  double v = uv[1];
   /* Table entries of the corners (i + di, j + dj), G[P[(P[i] + j) mod m]] */
   const unsigned *P = t->perm;
   long pi0 = P[i & km], pi1 = P[(i + 1) & km];
@@ -321,7 +323,7 @@ NL_NOISE_INLINE double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, do
   nl_noise_v2d a0 = (nl_noise_v2d){GY[k00], GY[k10]} * (nl_noise_v2d){fy, fy};
   nl_noise_v2d a1 = (nl_noise_v2d){GY[k01], GY[k11]} * (nl_noise_v2d){fy - 1.0, fy - 1.0};
   nl_noise_v2d vv = {v, v};
-  NL_NOISE_BLEND_(fx, NL_NOISE_LERP_(vv, gx0, gx1), NL_NOISE_LERP_(vv, a0, a1), res);
+  NL_NOISE_BLEND_(fx, uv[0], NL_NOISE_LERP_(vv, gx0, gx1), NL_NOISE_LERP_(vv, a0, a1), res);
   return res;
 }
 
@@ -333,10 +335,13 @@ NL_NOISE_INLINE double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, do
   i -= x < (double)i;
   j -= y < (double)j;
   k -= z < (double)k;
-  double fx = x - (double)i, res;
-  nl_noise_v2d f = {y - (double)j, z - (double)k}, vw = NL_NOISE_FADE_(f), f1 = f - 1.0;
-  nl_noise_v2d v = {vw[0], vw[0]}, w = {vw[1], vw[1]};
-  nl_noise_v2d fy0 = {f[0], f[0]}, fy1 = {f1[0], f1[0]}, fz0 = {f[1], f[1]}, fz1 = {f1[1], f1[1]};
+  double fx = x - (double)i, fy = y - (double)j, fz = z - (double)k, res;
+  /* The fades of fx and fy together; fz's alone, so that a constant z
+   * leaves a loop of calls. */
+  nl_noise_v2d uv = NL_NOISE_FADE_(((nl_noise_v2d){fx, fy}));
+  double fw = NL_NOISE_FADE_(fz);
+  nl_noise_v2d v = {uv[1], uv[1]}, w = {fw, fw};
+  nl_noise_v2d fy0 = {fy, fy}, fy1 = {fy - 1.0, fy - 1.0}, fz0 = {fz, fz}, fz1 = {fz - 1.0, fz - 1.0};
   /* Perlin's hashes of the corners (i + di, j + dj, k + dk); the table
    * is doubled, so P[X + 1] is column i + 1's. */
   const unsigned char *P = p->p;
@@ -359,7 +364,7 @@ NL_NOISE_INLINE double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, do
   nl_noise_v2d a00 = NL_NOISE_YZ_(q00, fy0, fz0), a10 = NL_NOISE_YZ_(q10, fy1, fz0);
   nl_noise_v2d a01 = NL_NOISE_YZ_(q01, fy0, fz1), a11 = NL_NOISE_YZ_(q11, fy1, fz1);
   nl_noise_v2d a = NL_NOISE_LERP_(w, NL_NOISE_LERP_(v, a00, a10), NL_NOISE_LERP_(v, a01, a11));
-  NL_NOISE_BLEND_(fx, gx, a, res);
+  NL_NOISE_BLEND_(fx, uv[0], gx, a, res);
   return res;
 }
 
