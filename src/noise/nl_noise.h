@@ -283,6 +283,10 @@ void nl_noise_fractal_grid(const nl_noise_basis *b, const nl_noise_octaves *o, c
  * of nl_noise_lattice.h, hence the macros. */
 #if defined(__GNUC__) && !defined(NL_NOISE_NO_INLINE)
 
+#if defined(__x86_64__) && defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 typedef double nl_noise_v2d __attribute__((vector_size(16)));
 /* Gradients a and b of Perlin's 16 as lane pairs, at entry 16 a + b of
  * each component's array. */
@@ -292,7 +296,19 @@ extern const nl_noise_perm3_gradpairs_table nl_noise_perm3_gradpairs;
 
 #define NL_NOISE_FADE_(t) ((t) * (t) * (t) * ((t) * ((t) * 6.0 - 15.0) + 10.0))
 #define NL_NOISE_LERP_(t, a, b) ((a) + (t) * ((b) - (a)))
-#define NL_NOISE_NEAR_(x) ((x) > -0x1p31 && (x) < 0x1p31)
+/* NL_NOISE_TRUNC_(x) is (long)x for |x| < 2^31, and NL_NOISE_OFF_(i) < 2^32
+ * says that i = NL_NOISE_TRUNC_(x) came from such an x. With SSE2's
+ * conversion the result alone tells (it is -2^63 for every x beyond long,
+ * NaN included), so the coordinates need one test together; elsewhere C's
+ * conversion is guarded and gives 2^32 beyond. The fast path holds for
+ * every x that passes: nl_noise_lattice.h's floor and fraction are these
+ * for |x| < 2^62. */
+#if defined(__x86_64__) && defined(__SSE2__)
+#define NL_NOISE_TRUNC_(x) _mm_cvttsd_si64(_mm_set_sd(x))
+#else
+#define NL_NOISE_TRUNC_(x) ((x) > -0x1p31 && (x) < 0x1p31 ? (long)(x) : 0x100000000L)
+#endif
+#define NL_NOISE_OFF_(i) ((unsigned long long)(i) + 0x80000000ull)
 
 /* L_c(t) + u (L_{c+1}(t - 1) - L_c(t)), u = fade(t), with lane 0 of gx
  * and a column c's line and lane 1 column c + 1's. */
@@ -304,10 +320,11 @@ extern const nl_noise_perm3_gradpairs_table nl_noise_perm3_gradpairs;
 
 NL_NOISE_INLINE double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, double y)
 {
-  long m = (long)t->m, km = m - 1;
-  if (!(NL_NOISE_NEAR_(x) && NL_NOISE_NEAR_(y)) || m <= 0 || (m & km) != 0)
+  size_t m = t->m, km = m - 1;
+  long i = NL_NOISE_TRUNC_(x), j = NL_NOISE_TRUNC_(y);
+  /* m ^ (m - 1) > m - 1 just when m is a power of two */
+  if ((NL_NOISE_OFF_(i) | NL_NOISE_OFF_(j)) >= 0x100000000ull || (m ^ km) <= km)
     return nl_noise_grad2_eval_general(t, x, y);
-  long i = (long)x, j = (long)y;
   i -= x < (double)i;
   j -= y < (double)j;
   double fx = x - (double)i, fy = y - (double)j, res;
@@ -329,9 +346,9 @@ NL_NOISE_INLINE double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, do
 
 NL_NOISE_INLINE double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, double y, double z)
 {
-  if (!(NL_NOISE_NEAR_(x) && NL_NOISE_NEAR_(y) && NL_NOISE_NEAR_(z)))
+  long i = NL_NOISE_TRUNC_(x), j = NL_NOISE_TRUNC_(y), k = NL_NOISE_TRUNC_(z);
+  if ((NL_NOISE_OFF_(i) | NL_NOISE_OFF_(j) | NL_NOISE_OFF_(k)) >= 0x100000000ull)
     return nl_noise_perm3_eval_general(p, x, y, z);
-  long i = (long)x, j = (long)y, k = (long)z;
   i -= x < (double)i;
   j -= y < (double)j;
   k -= z < (double)k;
@@ -386,7 +403,8 @@ NL_NOISE_INLINE double nl_noise_perm3_fractal_eval(const nl_noise_perm3 *p, cons
 #undef NL_NOISE_GY_
 #undef NL_NOISE_GX_
 #undef NL_NOISE_BLEND_
-#undef NL_NOISE_NEAR_
+#undef NL_NOISE_OFF_
+#undef NL_NOISE_TRUNC_
 #undef NL_NOISE_LERP_
 #undef NL_NOISE_FADE_
 

@@ -98,6 +98,7 @@ NL_TEST(perm3_fractal_point_is_the_row)
   gsl_rng_free(r);
 }
 
+#ifndef NL_NOISE_NO_INLINE
 /* The pair table holds Perlin's 16 gradients (his grad(hash, x, y, z)). */
 NL_TEST(perm3_gradient_pairs)
 {
@@ -115,5 +116,7 @@ NL_TEST(perm3_gradient_pairs)
     }
   }
 }
+
+#endif
 
 int main(void) { return nl_test_run(); }
