@@ -4,9 +4,8 @@
  * Single thread, 2^14 random points (the same points for every kernel;
  * floats for the float peers, the same values), in three sets:
  *   volume: (x, y, z) uniform in [0, 16)^3;
- *   plane:  (x, y) uniform in [0, 16)^2 on the plane z = 0.5 (a call that
- *           inlines into the loop hoists the z work out of it: stb runs
- *           about 2.5x faster there than in the volume);
+ *   plane:  (x, y) uniform in [0, 16)^2 on the plane z = 0.5 (a call
+ *           compiled into the loop can hoist the z work out of it);
  *   2D:     the plane's (x, y).
  * Kernels and their peers, in the same process:
  *   perm3_volume, perm3_plane      nl_noise_perm3_eval (the reference
@@ -16,8 +15,8 @@
  *       frequency 1, no fractal (float; bench/third_party/FastNoiseLite.h,
  *       MIT, used by this benchmark only): the like-for-like kernel, one
  *       gradient per lattice corner and Perlin's quintic fade;
- *   fbm4_volume, fbm4_plane        nl_noise_perm3_fractal_eval, 4 octaves, gain
- *       1/2, lacunarity 2 vs stb_perlin_fbm_noise3 (same octaves).
+ *   fbm4_volume, fbm4_plane        nl_noise_perm3_fractal_eval, 4 octaves,
+ *       gain 1/2, lacunarity 2 vs stb_perlin_fbm_noise3 (same octaves).
  * The point calls also run as the library built them before the header's
  * inline fast path (*_old: old_perm3_eval and old_grad2_eval below, the
  * same bits, out of line as they were), so old and new are timed back to
@@ -33,7 +32,7 @@
  *
  *   build/bench/bench_point [--tsv] [--only KERNEL]
  *
- * --only KERNEL times that kernel alone (for perf stat / perf record); its
+ * --only KERNEL times that kernel alone (for perf record); its
  * vs_peer is then not a ratio.
  *
  * --tsv: '#' lines (load, CPU), a header, one line per kernel: kernel,
@@ -151,62 +150,74 @@ static nl_noise_octaves fbm4;
 
 static void k_perm3_volume(void)
 {
-  for (int k = 0; k < NPOINTS; k++) out[k] = nl_noise_perm3_eval(&perm, px[k], py[k], pz[k]);
+  for (int k = 0; k < NPOINTS; k++)
+    out[k] = nl_noise_perm3_eval(&perm, px[k], py[k], pz[k]);
 }
 
 static void k_perm3_volume_old(void)
 {
-  for (int k = 0; k < NPOINTS; k++) out[k] = old_perm3_eval(&perm, px[k], py[k], pz[k]);
+  for (int k = 0; k < NPOINTS; k++)
+    out[k] = old_perm3_eval(&perm, px[k], py[k], pz[k]);
 }
 
 static void k_stb_volume(void)
 {
-  for (int k = 0; k < NPOINTS; k++) out[k] = stb_perlin_noise3(fx[k], fy[k], fz[k], 0, 0, 0);
+  for (int k = 0; k < NPOINTS; k++)
+    out[k] = stb_perlin_noise3(fx[k], fy[k], fz[k], 0, 0, 0);
 }
 
 static void k_perm3_plane(void)
 {
-  for (int k = 0; k < NPOINTS; k++) out[k] = nl_noise_perm3_eval(&perm, px[k], py[k], PLANE_Z);
+  for (int k = 0; k < NPOINTS; k++)
+    out[k] = nl_noise_perm3_eval(&perm, px[k], py[k], PLANE_Z);
 }
 
 static void k_perm3_plane_old(void)
 {
-  for (int k = 0; k < NPOINTS; k++) out[k] = old_perm3_eval(&perm, px[k], py[k], PLANE_Z);
+  for (int k = 0; k < NPOINTS; k++)
+    out[k] = old_perm3_eval(&perm, px[k], py[k], PLANE_Z);
 }
 
 static void k_stb_plane(void)
 {
-  for (int k = 0; k < NPOINTS; k++) out[k] = stb_perlin_noise3(fx[k], fy[k], (float)PLANE_Z, 0, 0, 0);
+  for (int k = 0; k < NPOINTS; k++)
+    out[k] = stb_perlin_noise3(fx[k], fy[k], (float)PLANE_Z, 0, 0, 0);
 }
 
 static void k_grad2(void)
 {
-  for (int k = 0; k < NPOINTS; k++) out[k] = nl_noise_grad2_eval(table, px[k], py[k]);
+  for (int k = 0; k < NPOINTS; k++)
+    out[k] = nl_noise_grad2_eval(table, px[k], py[k]);
 }
 
 static void k_grad2_old(void)
 {
-  for (int k = 0; k < NPOINTS; k++) out[k] = old_grad2_eval(table, px[k], py[k]);
+  for (int k = 0; k < NPOINTS; k++)
+    out[k] = old_grad2_eval(table, px[k], py[k]);
 }
 
 static void k_fnl2(void)
 {
-  for (int k = 0; k < NPOINTS; k++) out[k] = fnlGetNoise2D(&fnl, fx[k], fy[k]);
+  for (int k = 0; k < NPOINTS; k++)
+    out[k] = fnlGetNoise2D(&fnl, fx[k], fy[k]);
 }
 
 static void k_fbm4_volume(void)
 {
-  for (int k = 0; k < NPOINTS; k++) out[k] = nl_noise_perm3_fractal_eval(&perm, &fbm4, px[k], py[k], pz[k]);
+  for (int k = 0; k < NPOINTS; k++)
+    out[k] = nl_noise_perm3_fractal_eval(&perm, &fbm4, px[k], py[k], pz[k]);
 }
 
 static void k_stbfbm_volume(void)
 {
-  for (int k = 0; k < NPOINTS; k++) out[k] = stb_perlin_fbm_noise3(fx[k], fy[k], fz[k], 2.0f, 0.5f, 4);
+  for (int k = 0; k < NPOINTS; k++)
+    out[k] = stb_perlin_fbm_noise3(fx[k], fy[k], fz[k], 2.0f, 0.5f, 4);
 }
 
 static void k_fbm4_plane(void)
 {
-  for (int k = 0; k < NPOINTS; k++) out[k] = nl_noise_perm3_fractal_eval(&perm, &fbm4, px[k], py[k], PLANE_Z);
+  for (int k = 0; k < NPOINTS; k++)
+    out[k] = nl_noise_perm3_fractal_eval(&perm, &fbm4, px[k], py[k], PLANE_Z);
 }
 
 static void k_stbfbm_plane(void)
@@ -263,15 +274,16 @@ int main(int argc, char **argv)
     } else if (strcmp(argv[a], "--only") == 0 && a + 1 < argc) {
       only = argv[++a];
     } else {
-      fprintf(stderr, "bench_point: unknown argument '%s'; usage: bench_point [--tsv] [--only KERNEL]\n",
-              argv[a]);
+      fprintf(stderr, "bench_point: unknown argument '%s'; usage: bench_point [--tsv] "
+              "[--only KERNEL]\n", argv[a]);
       return 2;
     }
   }
   int known = !only;
   for (int i = 0; i < NK; i++) known |= only && strcmp(only, ks[i].name) == 0;
   if (!known) {
-    fprintf(stderr, "bench_point: --only '%s': no such kernel (see the kernel column of a full run)\n", only);
+    fprintf(stderr, "bench_point: --only '%s': no such kernel (see the kernel column of a full "
+            "run)\n", only);
     return 2;
   }
   char where[64], load0[128], load1[128];
@@ -306,13 +318,15 @@ int main(int argc, char **argv)
          "best of %d rounds by CPU time\n", NPOINTS, where, (int)ROUNDS);
   printf("# loadavg before: %s\n# loadavg after: %s\n", load0, load1);
   if (tsv) printf("kernel\tpoints\tmsamples_per_s\tns_per_call\tpeer\tvs_peer\n");
-  else printf("%-30s %7s %10s %8s  %-30s %s\n", "kernel", "points", "Msample/s", "ns/call", "peer", "vs peer");
+  else
+    printf("%-30s %7s %10s %8s  %-30s %s\n", "kernel", "points", "Msample/s", "ns/call", "peer",
+           "vs peer");
   for (int i = 0; i < NK; i++) {
     char ratio[32] = "-";
     if (only && strcmp(only, ks[i].name) != 0) continue;
-    if (ks[i].peer >= 0 && ks[ks[i].peer].rate > 0) snprintf(ratio, sizeof ratio, "%.2f", ks[i].rate / ks[ks[i].peer].rate);
-    printf(fmt, ks[i].name, NPOINTS, ks[i].rate, 1e3 / ks[i].rate, ks[i].peer >= 0 ? ks[ks[i].peer].name : "-",
-           ratio);
+    const kernel *peer = ks[i].peer >= 0 ? &ks[ks[i].peer] : NULL;
+    if (peer && peer->rate > 0) snprintf(ratio, sizeof ratio, "%.2f", ks[i].rate / peer->rate);
+    printf(fmt, ks[i].name, NPOINTS, ks[i].rate, 1e3 / ks[i].rate, peer ? peer->name : "-", ratio);
   }
   nl_noise_grad2_free(table);
   return 0;

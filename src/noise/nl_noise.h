@@ -246,7 +246,8 @@ double nl_noise_octaves_bound(const nl_noise_octaves *o, double basis_bound);
 
 /* The sum of octaves of Perlin's improved noise at one point: the bits of
  * nl_noise_fractal_row over nl_noise_basis_perm3 with n = 1. */
-NL_NOISE_INLINE double nl_noise_perm3_fractal_eval(const nl_noise_perm3 *p, const nl_noise_octaves *o,
+NL_NOISE_INLINE double nl_noise_perm3_fractal_eval(const nl_noise_perm3 *p,
+                                                   const nl_noise_octaves *o,
                                                    double x, double y, double z);
 
 /* out[k] = sum of octaves at (x0 + k dx, y, z); scratch holds n doubles. */
@@ -265,17 +266,18 @@ void nl_noise_fractal_grid(const nl_noise_basis *b, const nl_noise_octaves *o, c
  * what the row kernels compute (the column lines L_c of the header's
  * "Evaluation order"), with the same IEEE operations in the same order,
  * so their bits are those of the rows, the batches and
- * nl_noise_*_eval_general; three things make them faster than that code:
+ * nl_noise_*_eval_general. Besides being compiled into the caller, three
+ * things make them faster than that code:
  *  - the two columns i and i + 1 of the cell go through the same
  *    operations, so they are the two lanes of one 2-double vector (SSE2
  *    on x86-64: half the arithmetic instructions);
  *  - Perlin's 16 gradients are read as pairs, one entry per pair of hashes
  *    (nl_noise_perm3_gradpairs, 12 KiB), three aligned loads per corner of
  *    both columns instead of six scalar ones;
- *  - coordinates within 2^31 of 0 (every finite double the noise is used
- *    at) take a floor and fraction without the range checks
- *    nl_noise_lattice.h makes for every double; the others go to
- *    nl_noise_*_eval_general, which makes them.
+ *  - cells within 2^31 of 0 (every finite double the noise is used at)
+ *    take floor and fraction without nl_noise_lattice.h's range checks,
+ *    one test of the converted coordinates deciding for all of them; the
+ *    others go to nl_noise_*_eval_general, which makes the checks.
  * The bits are the library's only if the caller's compiler contracts no
  * a * b + c into a fused multiply-add: GCC in ISO C mode (-std=c11, the
  * project's flags) or with -ffp-contract=off, clang with
@@ -296,13 +298,13 @@ extern const nl_noise_perm3_gradpairs_table nl_noise_perm3_gradpairs;
 
 #define NL_NOISE_FADE_(t) ((t) * (t) * (t) * ((t) * ((t) * 6.0 - 15.0) + 10.0))
 #define NL_NOISE_LERP_(t, a, b) ((a) + (t) * ((b) - (a)))
-/* NL_NOISE_TRUNC_(x) is (long)x for |x| < 2^31, and NL_NOISE_OFF_(i) < 2^32
- * says that i = NL_NOISE_TRUNC_(x) came from such an x. With SSE2's
- * conversion the result alone tells (it is -2^63 for every x beyond long,
- * NaN included), so the coordinates need one test together; elsewhere C's
- * conversion is guarded and gives 2^32 beyond. The fast path holds for
- * every x that passes: nl_noise_lattice.h's floor and fraction are these
- * for |x| < 2^62. */
+/* NL_NOISE_TRUNC_(x) is (long)x where that is defined, and NL_NOISE_OFF_(i)
+ * is below 2^32 just when i is in [-2^31, 2^31). With SSE2's conversion an
+ * x beyond long (NaN included) gives -2^63, so the converted coordinates
+ * are tested together after converting; elsewhere C's conversion is
+ * guarded and gives 2^32 beyond 2^31. Every x whose truncation passes is
+ * below 2^62 in size, where nl_noise_lattice.h's floor and fraction are
+ * the ones computed here. */
 #if defined(__x86_64__) && defined(__SSE2__)
 #define NL_NOISE_TRUNC_(x) _mm_cvttsd_si64(_mm_set_sd(x))
 #else
@@ -358,7 +360,8 @@ NL_NOISE_INLINE double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, do
   nl_noise_v2d uv = NL_NOISE_FADE_(((nl_noise_v2d){fx, fy}));
   double fw = NL_NOISE_FADE_(fz);
   nl_noise_v2d v = {uv[1], uv[1]}, w = {fw, fw};
-  nl_noise_v2d fy0 = {fy, fy}, fy1 = {fy - 1.0, fy - 1.0}, fz0 = {fz, fz}, fz1 = {fz - 1.0, fz - 1.0};
+  nl_noise_v2d fy0 = {fy, fy}, fy1 = {fy - 1.0, fy - 1.0};
+  nl_noise_v2d fz0 = {fz, fz}, fz1 = {fz - 1.0, fz - 1.0};
   /* Perlin's hashes of the corners (i + di, j + dj, k + dk); the table
    * is doubled, so P[X + 1] is column i + 1's. */
   const unsigned char *P = p->p;
@@ -387,7 +390,8 @@ NL_NOISE_INLINE double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, do
 
 /* Octave l adds amp_l * N(freq_l p) to a sum started at 0 (|N| for
  * turbulence), as nl_noise_fractal_row adds its rows. */
-NL_NOISE_INLINE double nl_noise_perm3_fractal_eval(const nl_noise_perm3 *p, const nl_noise_octaves *o,
+NL_NOISE_INLINE double nl_noise_perm3_fractal_eval(const nl_noise_perm3 *p,
+                                                   const nl_noise_octaves *o,
                                                    double x, double y, double z)
 {
   double sum = 0;

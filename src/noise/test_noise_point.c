@@ -61,7 +61,8 @@ NL_TEST(grad2_point_is_the_general_formula)
 {
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(r, 35);
-  nl_noise_grad2 *t[3] = {nl_noise_grad2_alloc(512), nl_noise_grad2_alloc(64), nl_noise_grad2_alloc(300)};
+  nl_noise_grad2 *t[3] = {nl_noise_grad2_alloc(512), nl_noise_grad2_alloc(64),
+                          nl_noise_grad2_alloc(300)};
   for (int a = 0; a < 3; a++) nl_noise_grad2_seed(t[a], 7 + (unsigned long)a);
   long bad = 0;
   for (int k = 0; k < NPOINTS; k++) {
