@@ -1,6 +1,6 @@
 /* The inline point calls of nl_noise.h against the library's out-of-line
- * formula (nl_noise_*_eval_general, the code every kernel was checked
- * against before the calls were inlined), bit for bit, at 2^17 points a
+ * formula (nl_noise_*_eval_general: the scalar kernel with
+ * nl_noise_lattice.h's floor and fraction), bit for bit, at 2^17 points a
  * test whose coordinates are random in [-300, 300], lattice points,
  * half-integers, an ulp either side of an integer, tiny of either sign,
  * near a multiple of 256, at the 2^31 edge of the inline path, or not
