@@ -348,20 +348,21 @@ NL_NOISE_INLINE double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, do
 
 NL_NOISE_INLINE double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, double y, double z)
 {
-  long i = NL_NOISE_TRUNC_(x), j = NL_NOISE_TRUNC_(y), k = NL_NOISE_TRUNC_(z);
-  if ((NL_NOISE_OFF_(i) | NL_NOISE_OFF_(j) | NL_NOISE_OFF_(k)) >= 0x100000000ull)
+  long i = NL_NOISE_TRUNC_(x), j = NL_NOISE_TRUNC_(y), kt = NL_NOISE_TRUNC_(z);
+  /* z's cell, fraction and fade come first, whatever z is (they are
+   * defined for every double), so that a loop of calls at a constant z
+   * computes them once: code after a branch out would stay in the loop. */
+  long k = (long)((unsigned long)kt - (z < (double)kt));
+  double fz = z - (double)k, fw = NL_NOISE_FADE_(fz);
+  nl_noise_v2d w = {fw, fw}, fz0 = {fz, fz}, fz1 = {fz - 1.0, fz - 1.0};
+  if ((NL_NOISE_OFF_(i) | NL_NOISE_OFF_(j) | NL_NOISE_OFF_(kt)) >= 0x100000000ull)
     return nl_noise_perm3_eval_general(p, x, y, z);
   i -= x < (double)i;
   j -= y < (double)j;
-  k -= z < (double)k;
-  double fx = x - (double)i, fy = y - (double)j, fz = z - (double)k, res;
-  /* The fades of fx and fy together; fz's alone, so that a constant z
-   * leaves a loop of calls. */
-  nl_noise_v2d uv = NL_NOISE_FADE_(((nl_noise_v2d){fx, fy}));
-  double fw = NL_NOISE_FADE_(fz);
-  nl_noise_v2d v = {uv[1], uv[1]}, w = {fw, fw};
+  double fx = x - (double)i, fy = y - (double)j, res;
+  nl_noise_v2d uv = NL_NOISE_FADE_(((nl_noise_v2d){fx, fy}));   /* fades of fx and fy */
+  nl_noise_v2d v = {uv[1], uv[1]};
   nl_noise_v2d fy0 = {fy, fy}, fy1 = {fy - 1.0, fy - 1.0};
-  nl_noise_v2d fz0 = {fz, fz}, fz1 = {fz - 1.0, fz - 1.0};
   /* Perlin's hashes of the corners (i + di, j + dj, k + dk); the table
    * is doubled, so P[X + 1] is column i + 1's. */
   const unsigned char *P = p->p;
