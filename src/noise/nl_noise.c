@@ -22,6 +22,13 @@ static inline double blend(double t, double gx0, double a0, double gx1, double a
   return l + nl_noise_fade(t) * (r - l);
 }
 
+/* The library's copies of the inline point calls (C99 6.7.4: an extern
+ * declaration makes this file's definition the external one). */
+extern inline double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, double y);
+extern inline double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, double y, double z);
+extern inline double nl_noise_perm3_fractal_eval(const nl_noise_perm3 *p, const nl_noise_octaves *o,
+                                                 double x, double y, double z);
+
 /* ---- 2D --------------------------------------------------------------- */
 
 nl_noise_grad2 *nl_noise_grad2_alloc(size_t m)
@@ -87,7 +94,9 @@ static inline void column2(const nl_noise_grad2 *t, long i, long j, double fy, d
   *ao = a0 + v * (a1 - a0);
 }
 
-double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, double y)
+/* The inline nl_noise_grad2_eval (nl_noise.h) computes this for most
+ * points with the same operations; this copy takes every double and any m. */
+double nl_noise_grad2_eval_general(const nl_noise_grad2 *t, double x, double y)
 {
   long i = nl_noise_lfloor(x), j = nl_noise_lfloor(y);
   double fy = nl_noise_lfrac(y, j), v = nl_noise_fade(fy), g0, a0, g1, a1;
@@ -270,6 +279,22 @@ void nl_noise_perm3_seed(nl_noise_perm3 *p, unsigned long seed)
   for (int k = 0; k < 512; k++) p->p[k] = base[k & 255];
 }
 
+/* The same 16 gradients as constant expressions, for the pair table of the
+ * inline point call: G3X(h) = grad3[h][0], and so on (test_noise checks). */
+#define G3X(h) ((h) == 12 ? 1 : (h) == 14 ? -1 : (h) < 8 ? ((h) & 1 ? -1 : 1) : 0)
+#define G3Y(h) ((h) < 4 ? ((h) & 2 ? -1 : 1) : (h) < 8 ? 0 : (h) == 12 || (h) == 14 ? 1 \
+                : (h) == 13 || (h) == 15 ? -1 : ((h) & 1 ? -1 : 1))
+#define G3Z(h) ((h) < 4 || (h) == 12 || (h) == 14 ? 0 : (h) < 8 ? ((h) & 2 ? -1 : 1) \
+                : (h) == 13 ? 1 : (h) == 15 ? -1 : ((h) & 2 ? -1 : 1))
+#define P2(C, a, b) {C(a), C(b)}
+#define P16(C, a) P2(C, a, 0), P2(C, a, 1), P2(C, a, 2), P2(C, a, 3), P2(C, a, 4), P2(C, a, 5), \
+                  P2(C, a, 6), P2(C, a, 7), P2(C, a, 8), P2(C, a, 9), P2(C, a, 10), P2(C, a, 11), \
+                  P2(C, a, 12), P2(C, a, 13), P2(C, a, 14), P2(C, a, 15)
+#define P256(C) {P16(C, 0), P16(C, 1), P16(C, 2), P16(C, 3), P16(C, 4), P16(C, 5), P16(C, 6), \
+                 P16(C, 7), P16(C, 8), P16(C, 9), P16(C, 10), P16(C, 11), P16(C, 12), P16(C, 13), \
+                 P16(C, 14), P16(C, 15)}
+const nl_noise_perm3_gradpairs_table nl_noise_perm3_gradpairs = {P256(G3X), P256(G3Y), P256(G3Z)};
+
 /* Corner contribution without its x term: gy (fy - dj) + gz (fz - dk). */
 static inline double yz_part(int h, double fy, double fz)
 {
@@ -291,7 +316,9 @@ static inline void column3(const nl_noise_perm3 *p, long i, long j, long k, doub
   *ao = a;
 }
 
-double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, double y, double z)
+/* The inline nl_noise_perm3_eval (nl_noise.h) computes this for most
+ * points with the same operations; this copy takes every double. */
+double nl_noise_perm3_eval_general(const nl_noise_perm3 *p, double x, double y, double z)
 {
   long i = nl_noise_lfloor(x), j = nl_noise_lfloor(y), k = nl_noise_lfloor(z);
   double fy = nl_noise_lfrac(y, j), fz = nl_noise_lfrac(z, k);

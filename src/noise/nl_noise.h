@@ -66,6 +66,19 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* The point calls nl_noise_grad2_eval, nl_noise_perm3_eval and
+ * nl_noise_perm3_fractal_eval are inline functions in C99's sense: their
+ * bodies are at the end of this header, so a loop of calls compiles into
+ * the caller (and work that does not change from one call to the next,
+ * such as the z of points on a plane, leaves the loop), while the library
+ * still exports each of them as a symbol (bindings, pointers to them).
+ * Define NL_NOISE_NO_INLINE to call the library's copies instead. */
+#if defined(__GNUC__) && !defined(NL_NOISE_NO_INLINE)
+#define NL_NOISE_INLINE inline
+#else
+#define NL_NOISE_INLINE
+#endif
+
 /* ---- 2D gradient-table noise ---------------------------------------- */
 
 typedef struct {
@@ -84,7 +97,11 @@ void nl_noise_grad2_copy(nl_noise_grad2 *dst, const nl_noise_grad2 *src);   /* s
 /* Table entry used by lattice point (i, j). */
 size_t nl_noise_grad2_index(const nl_noise_grad2 *t, long i, long j);
 
-double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, double y);
+NL_NOISE_INLINE double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, double y);
+/* The same noise, out of line and for every double: what nl_noise_grad2_eval
+ * computes when m is not a power of two or a coordinate is 2^31 or more
+ * from 0 (or not finite). */
+double nl_noise_grad2_eval_general(const nl_noise_grad2 *t, double x, double y);
 /* out[k] = noise(x0 + k dx, y), k < n. */
 void nl_noise_grad2_row(const nl_noise_grad2 *t, double x0, double dx, double y, size_t n, double *out);
 #define NL_NOISE2_BOUND 0.70710678118654752440
@@ -137,7 +154,10 @@ typedef struct { unsigned char p[512]; } nl_noise_perm3;   /* 256 entries, doubl
 
 void nl_noise_perm3_reference(nl_noise_perm3 *p);                 /* Perlin 2002's table */
 void nl_noise_perm3_seed(nl_noise_perm3 *p, unsigned long seed);  /* shuffled 0..255 */
-double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, double y, double z);
+NL_NOISE_INLINE double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, double y, double z);
+/* The same noise, out of line and for every double: what nl_noise_perm3_eval
+ * computes when a coordinate is 2^31 or more from 0 (or not finite). */
+double nl_noise_perm3_eval_general(const nl_noise_perm3 *p, double x, double y, double z);
 void nl_noise_perm3_row(const nl_noise_perm3 *p, double x0, double dx, double y, double z,
                         size_t n, double *out);
 #define NL_NOISE3_BOUND 1.22474487139158904910
@@ -253,6 +273,12 @@ nl_noise_octaves nl_noise_octaves_cheng(int n, double f1, double a1);
 /* bound(N) * sum |amp|: the sum never leaves [-b, b] ([0, b] if turbulence). */
 double nl_noise_octaves_bound(const nl_noise_octaves *o, double basis_bound);
 
+/* The sum of octaves of Perlin's improved noise at one point: the bits of
+ * nl_noise_fractal_row over nl_noise_basis_perm3 with n = 1. */
+NL_NOISE_INLINE double nl_noise_perm3_fractal_eval(const nl_noise_perm3 *p,
+                                                   const nl_noise_octaves *o,
+                                                   double x, double y, double z);
+
 /* out[k] = sum of octaves at (x0 + k dx, y, z); scratch holds n doubles. */
 void nl_noise_fractal_row(const nl_noise_basis *b, const nl_noise_octaves *o, double x0, double dx,
                           double y, double z, size_t n, double *out, double *scratch);
@@ -270,5 +296,161 @@ double nl_noise_octaves_fmax(const nl_noise_octaves *o);
  * plane z, sampled at pixel centres; row 0 is y0. */
 typedef struct { double x0, y0, z, size; int w, h; } nl_noise_window;
 void nl_noise_fractal_grid(const nl_noise_basis *b, const nl_noise_octaves *o, const nl_noise_window *win, double *out);
+
+/* ---- the point calls, inline ----------------------------------------
+ *
+ * The bodies of nl_noise_grad2_eval, nl_noise_perm3_eval and
+ * nl_noise_perm3_fractal_eval (see the top of this header). They compute
+ * what the row kernels compute (the column lines L_c of the header's
+ * "Evaluation order"), with the same IEEE operations in the same order,
+ * so their bits are those of the rows, the batches and
+ * nl_noise_*_eval_general. Besides being compiled into the caller, three
+ * things make them faster than that code:
+ *  - the two columns i and i + 1 of the cell go through the same
+ *    operations, so they are the two lanes of one 2-double vector (SSE2
+ *    on x86-64: half the arithmetic instructions);
+ *  - Perlin's 16 gradients are read as pairs, one entry per pair of hashes
+ *    (nl_noise_perm3_gradpairs, 12 KiB), three aligned loads per corner of
+ *    both columns instead of six scalar ones;
+ *  - cells within 2^31 of 0 (every finite double the noise is used at)
+ *    take floor and fraction without nl_noise_lattice.h's range checks,
+ *    one test of the converted coordinates deciding for all of them; the
+ *    others go to nl_noise_*_eval_general, which makes the checks.
+ * The bits are the library's only if the caller's compiler contracts no
+ * a * b + c into a fused multiply-add: GCC in ISO C mode (-std=c11, the
+ * project's flags) or with -ffp-contract=off, clang with
+ * -ffp-contract=off. An inline definition may not use the static helpers
+ * of nl_noise_lattice.h, hence the macros. */
+#if defined(__GNUC__) && !defined(NL_NOISE_NO_INLINE)
+
+#if defined(__x86_64__) && defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+typedef double nl_noise_v2d __attribute__((vector_size(16)));
+/* Gradients a and b of Perlin's 16 as lane pairs, at entry 16 a + b of
+ * each component's array. */
+typedef struct { nl_noise_v2d gx[256], gy[256], gz[256]; } nl_noise_perm3_gradpairs_table;
+_Static_assert(sizeof(nl_noise_v2d[256]) == 4096, "the point call's offsets of gy and gz");
+extern const nl_noise_perm3_gradpairs_table nl_noise_perm3_gradpairs;
+
+#define NL_NOISE_FADE_(t) ((t) * (t) * (t) * ((t) * ((t) * 6.0 - 15.0) + 10.0))
+#define NL_NOISE_LERP_(t, a, b) ((a) + (t) * ((b) - (a)))
+/* NL_NOISE_TRUNC_(x) is (long)x where that is defined, and NL_NOISE_OFF_(i)
+ * is below 2^32 just when i is in [-2^31, 2^31). With SSE2's conversion an
+ * x beyond long (NaN included) gives -2^63, so the converted coordinates
+ * are tested together after converting; elsewhere C's conversion is
+ * guarded and gives 2^32 beyond 2^31. Every x whose truncation passes is
+ * below 2^62 in size, where nl_noise_lattice.h's floor and fraction are
+ * the ones computed here. */
+#if defined(__x86_64__) && defined(__SSE2__)
+#define NL_NOISE_TRUNC_(x) _mm_cvttsd_si64(_mm_set_sd(x))
+#else
+#define NL_NOISE_TRUNC_(x) ((x) > -0x1p31 && (x) < 0x1p31 ? (long)(x) : 0x100000000L)
+#endif
+#define NL_NOISE_OFF_(i) ((unsigned long long)(i) + 0x80000000ull)
+
+/* L_c(t) + u (L_{c+1}(t - 1) - L_c(t)), u = fade(t), with lane 0 of gx
+ * and a column c's line and lane 1 column c + 1's. */
+#define NL_NOISE_BLEND_(t, u, gx, a, out)                                 \
+  do {                                                                    \
+    nl_noise_v2d lr_ = (nl_noise_v2d){(t), (t) - 1.0} * (gx) + (a);       \
+    (out) = lr_[0] + (u) * (lr_[1] - lr_[0]);                             \
+  } while (0)
+
+NL_NOISE_INLINE double nl_noise_grad2_eval(const nl_noise_grad2 *t, double x, double y)
+{
+  size_t m = t->m, km = m - 1;
+  long i = NL_NOISE_TRUNC_(x), j = NL_NOISE_TRUNC_(y);
+  /* m ^ (m - 1) > m - 1 just when m is a power of two */
+  if ((NL_NOISE_OFF_(i) | NL_NOISE_OFF_(j)) >= 0x100000000ull || (m ^ km) <= km)
+    return nl_noise_grad2_eval_general(t, x, y);
+  i -= x < (double)i;
+  j -= y < (double)j;
+  double fx = x - (double)i, fy = y - (double)j, res;
+  nl_noise_v2d uv = NL_NOISE_FADE_(((nl_noise_v2d){fx, fy}));   /* fades of fx and fy */
+  double v = uv[1];
+  /* Table entries of the corners (i + di, j + dj), G[P[(P[i] + j) mod m]] */
+  const unsigned *P = t->perm;
+  long pi0 = P[i & km], pi1 = P[(i + 1) & km];
+  size_t k00 = P[(pi0 + j) & km], k10 = P[(pi1 + j) & km];
+  size_t k01 = P[(pi0 + j + 1) & km], k11 = P[(pi1 + j + 1) & km];
+  const double *GX = t->gx, *GY = t->gy;
+  nl_noise_v2d gx0 = {GX[k00], GX[k10]}, gx1 = {GX[k01], GX[k11]};
+  nl_noise_v2d a0 = (nl_noise_v2d){GY[k00], GY[k10]} * (nl_noise_v2d){fy, fy};
+  nl_noise_v2d a1 = (nl_noise_v2d){GY[k01], GY[k11]} * (nl_noise_v2d){fy - 1.0, fy - 1.0};
+  nl_noise_v2d vv = {v, v};
+  NL_NOISE_BLEND_(fx, uv[0], NL_NOISE_LERP_(vv, gx0, gx1), NL_NOISE_LERP_(vv, a0, a1), res);
+  return res;
+}
+
+NL_NOISE_INLINE double nl_noise_perm3_eval(const nl_noise_perm3 *p, double x, double y, double z)
+{
+  long i = NL_NOISE_TRUNC_(x), j = NL_NOISE_TRUNC_(y), kt = NL_NOISE_TRUNC_(z);
+  /* z's cell, fraction and fade come first, whatever z is (they are
+   * defined for every double), so that a loop of calls at a constant z
+   * computes them once: code after a branch out would stay in the loop. */
+  long k = (long)((unsigned long)kt - (z < (double)kt));
+  double fz = z - (double)k, fw = NL_NOISE_FADE_(fz);
+  nl_noise_v2d w = {fw, fw}, fz0 = {fz, fz}, fz1 = {fz - 1.0, fz - 1.0};
+  if ((NL_NOISE_OFF_(i) | NL_NOISE_OFF_(j) | NL_NOISE_OFF_(kt)) >= 0x100000000ull)
+    return nl_noise_perm3_eval_general(p, x, y, z);
+  i -= x < (double)i;
+  j -= y < (double)j;
+  double fx = x - (double)i, fy = y - (double)j, res;
+  nl_noise_v2d uv = NL_NOISE_FADE_(((nl_noise_v2d){fx, fy}));   /* fades of fx and fy */
+  nl_noise_v2d v = {uv[1], uv[1]};
+  nl_noise_v2d fy0 = {fy, fy}, fy1 = {fy - 1.0, fy - 1.0};
+  /* Perlin's hashes of the corners (i + di, j + dj, k + dk); the table
+   * is doubled, so P[X + 1] is column i + 1's. */
+  const unsigned char *P = p->p;
+  size_t X = (size_t)i & 255, Y = (size_t)j & 255, Z = (size_t)k & 255;
+  size_t A = P[X] + Y, B = P[X + 1] + Y;
+  size_t AA = P[A] + Z, AB = P[A + 1] + Z, BA = P[B] + Z, BB = P[B + 1] + Z;
+  /* The corners' byte offsets into each array of nl_noise_perm3_gradpairs */
+  const char *G = (const char *)&nl_noise_perm3_gradpairs;
+  size_t q00 = ((size_t)P[AA] & 15) << 8 | ((size_t)P[BA] & 15) << 4;
+  size_t q10 = ((size_t)P[AB] & 15) << 8 | ((size_t)P[BB] & 15) << 4;
+  size_t q01 = ((size_t)P[AA + 1] & 15) << 8 | ((size_t)P[BA + 1] & 15) << 4;
+  size_t q11 = ((size_t)P[AB + 1] & 15) << 8 | ((size_t)P[BB + 1] & 15) << 4;
+#define NL_NOISE_GX_(q) (*(const nl_noise_v2d *)(G + (q)))
+#define NL_NOISE_GY_(q) (*(const nl_noise_v2d *)(G + 4096 + (q)))
+#define NL_NOISE_GZ_(q) (*(const nl_noise_v2d *)(G + 8192 + (q)))
+#define NL_NOISE_YZ_(q, fy, fz) (NL_NOISE_GY_(q) * (fy) + NL_NOISE_GZ_(q) * (fz))
+  /* Each corner's y and z terms, blended along y then z into the lines */
+  nl_noise_v2d gx = NL_NOISE_LERP_(w, NL_NOISE_LERP_(v, NL_NOISE_GX_(q00), NL_NOISE_GX_(q10)),
+                                   NL_NOISE_LERP_(v, NL_NOISE_GX_(q01), NL_NOISE_GX_(q11)));
+  nl_noise_v2d a00 = NL_NOISE_YZ_(q00, fy0, fz0), a10 = NL_NOISE_YZ_(q10, fy1, fz0);
+  nl_noise_v2d a01 = NL_NOISE_YZ_(q01, fy0, fz1), a11 = NL_NOISE_YZ_(q11, fy1, fz1);
+  nl_noise_v2d a = NL_NOISE_LERP_(w, NL_NOISE_LERP_(v, a00, a10), NL_NOISE_LERP_(v, a01, a11));
+  NL_NOISE_BLEND_(fx, uv[0], gx, a, res);
+  return res;
+}
+
+/* Octave l adds amp_l * N(freq_l p) to a sum started at 0 (|N| for
+ * turbulence), as nl_noise_fractal_row adds its rows. */
+NL_NOISE_INLINE double nl_noise_perm3_fractal_eval(const nl_noise_perm3 *p,
+                                                   const nl_noise_octaves *o,
+                                                   double x, double y, double z)
+{
+  double sum = 0;
+  for (int l = 0; l < o->n; l++) {
+    double f = o->freq[l], v = nl_noise_perm3_eval(p, x * f, y * f, z * f);
+    sum += o->amp[l] * (o->turbulence ? __builtin_fabs(v) : v);
+  }
+  return sum;
+}
+
+#undef NL_NOISE_YZ_
+#undef NL_NOISE_GZ_
+#undef NL_NOISE_GY_
+#undef NL_NOISE_GX_
+#undef NL_NOISE_BLEND_
+#undef NL_NOISE_OFF_
+#undef NL_NOISE_TRUNC_
+#undef NL_NOISE_LERP_
+#undef NL_NOISE_FADE_
+
+#endif
 
 #endif
