@@ -47,11 +47,17 @@ NL_TEST(marble_control_is_within_1p5e_16_of_the_true_value)
 
 NL_TEST(marble_control_is_the_same_under_every_libm_variant)
 {
+#if defined(__x86_64__) || defined(__i386__)
   __builtin_cpu_init();
   if (!__builtin_cpu_supports("fma")) {
     nl_test_skip("libm variants: this CPU has no FMA, glibc has one variant only");
     return;
   }
+#else
+  /* glibc's variants chosen by these tunables are x86-64's */
+  nl_test_skip("libm variants: GLIBC_TUNABLES' FMA variants are x86-64's");
+  return;
+#endif
   char cmd[4200];
   snprintf(cmd, sizeof cmd, "GLIBC_TUNABLES=" NO_FMA_TUNABLES " '%s' --hash", self);
   FILE *p = popen(cmd, "r");
