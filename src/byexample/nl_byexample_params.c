@@ -272,7 +272,7 @@ static nl_status check_arrays(const char *path, const nl_byexample_params *p, nl
 nl_status nl_byexample_params_load(const char *path, nl_byexample_params *p, nl_error *err)
 {
   field f[MAX_FIELDS];
-  int nf, version;
+  int nf = 0, version;
   const double *v = NULL;
   nl_status st = read_fields(path, f, &nf, err);
   if (st) return st;
