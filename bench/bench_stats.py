@@ -48,8 +48,9 @@ def bench_gmm(X, labels):
 
 
 def cpu_now():
+    """User and system CPU seconds of this process so far."""
     r = resource.getrusage(resource.RUSAGE_SELF)
-    return r.ru_utime + r.ru_stime
+    return r.ru_utime, r.ru_stime
 
 
 def linkage_child(d, method, lib):
@@ -68,13 +69,14 @@ def linkage_child(d, method, lib):
         link = sch.linkage
     X, _ = load(d)
     base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
-    t0, c0 = time.perf_counter(), cpu_now()
+    t0, (u0, s0) = time.perf_counter(), cpu_now()
     Z = link(X, method=method)
-    t, c = time.perf_counter() - t0, cpu_now() - c0
+    t, (u1, s1) = time.perf_counter() - t0, cpu_now()
+    u, s = u1 - u0, s1 - s0
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
     tag = "scipy" if lib == "scipy" else "fastc"
-    print(f"linkage  {tag} {method:8s} n={X.shape[0]} d={X.shape[1]}: {t:.3f} s, {c:.3f} s CPU, "
-          f"top merge height {Z[-1, 2]:.10g}")
+    print(f"linkage  {tag} {method:8s} n={X.shape[0]} d={X.shape[1]}: {t:.3f} s, {u + s:.3f} s CPU = "
+          f"{u:.3f} s user + {s:.3f} s system, top merge height {Z[-1, 2]:.10g}")
     print(f"linkage  {tag} {method:8s} peak RSS of the process {peak / 1024:.0f} MiB "
           f"({(peak - base) / 1024:.0f} MiB above the loaded data)")
     zc = os.path.join(d, f"Z_{method}.tsv")

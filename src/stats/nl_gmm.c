@@ -14,7 +14,6 @@
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
 
 /* Points per block in the E- and M-steps: a 1024 x d block (d = 81: 660 KB)
  * stays in L2 while dtrsm/dsyrk work on it. */
@@ -117,21 +116,30 @@ static size_t cov_size(const nl_gmm *g)
 
 /* K d^2 arrays (covariances, factors, inverses): several MB each, and a
  * C5 run fits about a hundred AIC paths. Fresh memory for each path made a
- * third of a quick C5 run 4 KB page faults and page zeroing, so the arrays
- * are (a) advised onto 2 MB pages (transparent huge pages, where the system
- * has them: one fault per 512 pages) and (b) kept after nl_gmm_free in a
- * small process-wide cache (at most CACHE_SLOTS arrays, CACHE_MAX bytes,
- * behind a mutex) for the next model. Not per thread: arrays held only in
+ * third of a quick C5 run page faults and page zeroing, so the arrays are
+ * kept after nl_gmm_free in a small process-wide cache (at most
+ * CACHE_SLOTS arrays, CACHE_MAX bytes, behind a mutex) for the next model.
+ * They are not advised onto 2 MB pages (MADV_HUGEPAGE): on this project's
+ * machines (2-core VMs) a fresh 2 MB page cost the kernel several times
+ * what 512 small ones do, and C5's quick run took 2.62 s of system time
+ * with the advice against 0.80 s without (means of four alternating runs;
+ * user time the same, 9.3 s; the BLAS calls stream through the arrays, so
+ * small pages' TLB misses do not show). Not per thread: arrays held only in
  * thread-local storage would be lost when a worker thread ends, and look
  * leaked to LeakSanitizer, which our sanitizer runs keep off TLS (use_tls=0). A freed array
  * that finds the cache full pushes out smaller ones (a larger array serves
  * their requests too): C5's quick run alternates 34 MB and 79 MB arrays, and
  * keeping the small ones re-zeroed the large ones' pages for every path. No value is ever read before it is written,
  * so the results do not depend on which memory a model gets. A header in
- * front of each array keeps its size. */
-#define HUGE_PAGE ((size_t)2 << 20)
+ * front of each array keeps its size. The slots hold what is alive at
+ * once: 3 arrays of each of the 2 models an AIC path alternates between,
+ * for every thread running a path, plus the memo's models (up to 8 of 3).
+ * With 8 slots C5's quick run (2 threads) missed the cache for 118 arrays,
+ * 2.4 GB of fresh pages; with 32 for 48, 1.7 GB: its working set, grown in
+ * 4 steps as d and K grow. */
+#define GRAIN ((size_t)2 << 20)   /* sizes are rounded to it: a freed array serves a bit more */
 #define HEADER 64
-#define CACHE_SLOTS 8
+#define CACHE_SLOTS 32
 #define CACHE_MAX ((size_t)1 << 30)
 
 typedef struct { void *base; size_t bytes; } cached;
@@ -143,10 +151,10 @@ static double *big_alloc(size_t count, int zero)
 {
   size_t bytes = HEADER + count * sizeof(double);
   void *base = NULL;
-  if (bytes < 2 * HUGE_PAGE) {
+  if (bytes < 2 * GRAIN) {
     base = zero ? nl_xcalloc(1, bytes) : nl_xmalloc(bytes);
   } else {
-    bytes = (bytes + HUGE_PAGE - 1) / HUGE_PAGE * HUGE_PAGE;
+    bytes = (bytes + GRAIN - 1) / GRAIN * GRAIN;
     int best = -1;   /* the smallest cached array that is large enough */
     pthread_mutex_lock(&cache_lock);
     for (int q = 0; q < CACHE_SLOTS; q++)
@@ -161,11 +169,7 @@ static double *big_alloc(size_t count, int zero)
     if (best >= 0) {
       if (zero) memset((char *)base + HEADER, 0, count * sizeof(double));
     } else {
-      if (posix_memalign(&base, HUGE_PAGE, bytes)) base = NULL;
-      if (!base) base = nl_xmalloc(bytes);
-#ifdef MADV_HUGEPAGE
-      else madvise(base, bytes, MADV_HUGEPAGE);   /* advice only: ignored where unsupported */
-#endif
+      base = nl_xmalloc(bytes);
       if (zero) memset((char *)base + HEADER, 0, count * sizeof(double));
     }
   }
@@ -178,7 +182,7 @@ static void big_free(double *p)
   if (!p) return;
   void *base = (char *)p - HEADER;
   size_t bytes = *(size_t *)base;
-  if (bytes >= 2 * HUGE_PAGE) {
+  if (bytes >= 2 * GRAIN) {
     pthread_mutex_lock(&cache_lock);
     int kept = 0;
     for (;;) {   /* room for it: smaller arrays make way (a larger one serves their requests too) */
