@@ -279,7 +279,20 @@ int main(int argc, char **argv)
   }
   const char *only = NULL;
   int a = 1;
-  if (argc > 2 && strcmp(argv[1], "--only") == 0) { only = argv[2]; a = 3; }
+  if (argc > 2 && strcmp(argv[1], "--only") == 0) {
+    only = argv[2];
+    a = 3;
+  }
+  /* An option where the data folder goes would become a folder named "--help". */
+  if (argc > a + 1 || (argc > a && argv[a][0] == '-')) {
+    fprintf(stderr, "usage: bench_stats [--only ks|fft|linkage|gmm] [DIR]\n");
+    return 2;
+  }
+  if (only && strcmp(only, "ks") && strcmp(only, "fft") && strcmp(only, "linkage") &&
+      strcmp(only, "gmm")) {
+    fprintf(stderr, "bench_stats: --only %s: not one of ks, fft, linkage, gmm\n", only);
+    return 2;
+  }
   const char *dir = argc > a ? argv[a] : "/tmp/noiselab_bench_stats";
   mkdir(dir, 0755);
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
