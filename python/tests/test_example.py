@@ -6,7 +6,7 @@ import sys
 
 import numpy as np
 
-from conftest import ROOT
+from conftest import ROOT, s3_copy_with_one_sd_changed
 import noiselab.byexample as nb
 
 SCRIPT = os.path.join(ROOT, "python", "examples", "s3_gain.py")
@@ -32,12 +32,6 @@ def test_s3_gain_example(tmp_path):
 
 def test_s3_gain_example_fails_on_a_changed_table(tmp_path):
     """The check can fail: one sd changed in a copy of the folder is found."""
-    src = os.path.join(ROOT, "results", "quick", "s3_fbm")
-    for f in os.listdir(src):
-        if f.endswith(".tsv"):
-            text = open(os.path.join(src, f), encoding="utf-8").read()
-            if f == "gain_seeds.tsv":
-                text = text.replace("0.28279196913397137", "0.282791969134", 1)
-            (tmp_path / f).write_text(text, encoding="utf-8")
+    s3_copy_with_one_sd_changed(tmp_path)
     r = run(tmp_path)
     assert r.returncode == 1 and "14 of 15 panels equal" in r.stdout, r.stdout + r.stderr

@@ -5,7 +5,7 @@ import os
 
 import pytest
 
-from conftest import BUILD, ROOT
+from conftest import BUILD, ROOT, s3_copy_with_one_sd_changed
 
 nbclient = pytest.importorskip(
     "nbclient", reason="Debian's python3-nbclient is not installed (scripts/noiselab setup "
@@ -53,13 +53,7 @@ def test_notebook_regenerates_s3_gain():
 
 def test_notebook_fails_on_a_changed_table(tmp_path):
     """Its check can fail: one sd changed in a copy of the folder stops it."""
-    src = os.path.join(ROOT, "results", "quick", "s3_fbm")
-    for f in os.listdir(src):
-        if f.endswith(".tsv"):
-            text = open(os.path.join(src, f), encoding="utf-8").read()
-            if f == "gain_seeds.tsv":
-                text = text.replace("0.28279196913397137", "0.282791969134", 1)
-            (tmp_path / f).write_text(text, encoding="utf-8")
+    s3_copy_with_one_sd_changed(tmp_path)
     with pytest.raises(nbclient.exceptions.CellExecutionError) as e:
         execute(tmp_path)
     assert "1 panels differ" in str(e.value)
