@@ -42,9 +42,14 @@ static int nl__ntests, nl__failed_checks;
 /* A scratch directory for the test program, removed at exit. */
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 static char nl__tmpdir[64];
+static pid_t nl__tmpdir_owner;
+/* Only the process that made it removes it: a forked child that calls
+ * exit() runs this too, and would take its parent's files. */
 static void nl__rm_tmpdir(void)
 {
+  if (getpid() != nl__tmpdir_owner) return;
   char cmd[96];
   snprintf(cmd, sizeof cmd, "rm -rf '%s'", nl__tmpdir);
   if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", nl__tmpdir);
@@ -54,6 +59,7 @@ static inline const char *nl_test_tmpdir(void)
   if (!nl__tmpdir[0]) {
     strcpy(nl__tmpdir, "/tmp/nl_test_XXXXXX");
     if (!mkdtemp(nl__tmpdir)) { perror("mkdtemp"); exit(1); }
+    nl__tmpdir_owner = getpid();
     atexit(nl__rm_tmpdir);
   }
   return nl__tmpdir;

@@ -385,6 +385,14 @@ NL_TEST(atomic_temporaries_removed_on_exit_and_signals)
   NL_CHECK(nl_mkdir_p(sub, &err) == NL_OK);
   char *p = nl_path_join(sub, "t.tsv");
   for (int k = 0; k <= 3; k++) {
+    struct sigaction was;
+    /* The library leaves a signal that was ignored when it installed its
+     * handlers ignored (nohup ignores SIGHUP): nothing to test there. */
+    if (k < 3 && sigaction(sigs[k], NULL, &was) == 0 && !(was.sa_flags & SA_SIGINFO) &&
+        was.sa_handler == SIG_IGN) {
+      nl_test_skip("signal %d is ignored in this environment (nohup?): left ignored", sigs[k]);
+      continue;
+    }
     pid_t pid = fork();
     if (pid == 0) {
       nl_atomic_file af;
