@@ -123,8 +123,11 @@ inline double nl_math__reduce(double x, unsigned *quadrant)
   double a = fabs(x);
   if (!(a < 0x1p50))
     a = nl_math__reduce_huge(a);
-  double k = (2.0 * a + 0x1.8p52) - 0x1.8p52;
-  *quadrant = (unsigned)(int64_t)k & 3u;
+  double t = 2.0 * a + 0x1.8p52;
+  double k = t - 0x1.8p52;
+  /* t's ulp is 1, so its last bits are k's: the quadrant without a
+   * conversion, which for the NaN of inf or NaN would be undefined. */
+  *quadrant = (unsigned)(nl_math__bits(t) & 3u);
   return a - 0.5 * k;
 }
 
