@@ -3,7 +3,7 @@
 #ifndef NL_CHENG_INTERNAL_H
 #define NL_CHENG_INTERNAL_H
 
-#include "base/nl_math.h"
+#include "math/nl_math.h"
 #include "cheng/nl_cheng.h"
 #include "cheng/nl_cheng_repro.h"
 #include "stats/nl_stats.h"
@@ -68,6 +68,7 @@ struct nl_cheng_problem {
   size_t *tp, ntouch;
   double *tnv, *tterm;
   nl_cheng__touch *tu;
+  double *sv;            /* np: marble's sums, then their sines, in a top-octave move */
   unsigned *mark, stamp;
   /* pd[2i]: point i's octave sum over octaves 0..level-2 (nl_cheng__octave_sum's
    * first level-1 steps, formed at each resum). A move of the top octave

@@ -129,6 +129,7 @@ nl_cheng_problem *nl_cheng_problem_alloc(const nl_cheng_config *c, const nl_chen
   p->tterm = nl_xmalloc(p->np * sizeof *p->tterm);
   p->pd = nl_xmalloc(2 * p->np * sizeof *p->pd);
   p->tu = nl_xmalloc(p->np * sizeof *p->tu);
+  p->sv = nl_xmalloc(p->np * sizeof *p->sv);
   build_corners(p);
   build_usage(p);
   build_lists(p);
@@ -146,6 +147,7 @@ void nl_cheng_problem_free(nl_cheng_problem *p)
   free(p->tnv); free(p->tterm); free(p->lstart); free(p->litem); free(p->lw); free(p->uterm);
   free(p->pd);
   free(p->tu);
+  free(p->sv);
   free(p);
 }
 
@@ -373,6 +375,43 @@ top_loop(const uint32_t *restrict item, const double *restrict lw, size_t q0, si
   return d;
 }
 
+/* Marble's top-octave move (non-literal c = (1 + sin(pi V)) / 2) in three
+ * passes: each point's value and its V = s (pre + amp Noise_l), as
+ * top_loop; the sines of all of them at the vector level (nl_math_sinpi_n,
+ * which gives nl_math_sinpi's bits, so the same doubles as one at a time);
+ * then the terms and their change, summed in list order. The sine is most
+ * of a marble move's time, and one point's does not wait on another's. */
+static double top_loop_marble(const uint32_t *restrict item, const double *restrict lw, size_t q0,
+                              size_t q1, double *restrict nvl, size_t F, const double *restrict pd,
+                              double *restrict term, nl_cheng__touch *restrict tu,
+                              double *restrict sv, double al, double s, double dc, double ds)
+{
+  size_t n = q1 - q0;
+  for (size_t q = q0; q < q1; q++) {
+    size_t i = item[q];
+    double *v = nvl + i * F, old = *v;
+    double vl = old + (lw[2 * q] * dc + lw[2 * q + 1] * ds);
+    *v = vl;
+    nl_cheng__touch *r = tu + (q - q0);
+    r->i = i;
+    r->v = old;
+    r->t = term[i];
+    double V = pd[2 * i] + al * vl;
+    V *= s;
+    sv[q - q0] = V;
+  }
+  nl_math_sinpi_n(n, sv, sv);
+  double d = 0;
+  for (size_t t = 0; t < n; t++) {
+    size_t i = tu[t].i;
+    double e = 0.5 * (1.0 + sv[t]) - pd[2 * i + 1];
+    double nt = e * e;
+    term[i] = nt;
+    d += nt - tu[t].t;
+  }
+  return d;
+}
+
 static double update_points_top(nl_cheng_problem *p, size_t k, size_t l, double dc, double ds)
 {
   const size_t *st = p->lstart + l * (p->m + 1);
@@ -385,7 +424,9 @@ static double update_points_top(nl_cheng_problem *p, size_t k, size_t l, double 
   switch (p->c.con * 2 + (p->c.literal != 0)) {
   case NL_CHENG_CON_PLAIN * 2: d = TOP(NL_CHENG_CON_PLAIN, 0); break;
   case NL_CHENG_CON_PLAIN * 2 + 1: d = TOP(NL_CHENG_CON_PLAIN, 1); break;
-  case NL_CHENG_CON_SIN * 2: d = TOP(NL_CHENG_CON_SIN, 0); break;
+  case NL_CHENG_CON_SIN * 2:
+    d = top_loop_marble(item, lw, q0, q1, nvl, F, pd, term, tu, p->sv, al, s, dc, ds);
+    break;
   case NL_CHENG_CON_SIN * 2 + 1: d = TOP(NL_CHENG_CON_SIN, 1); break;
   case NL_CHENG_CON_ABS * 2: d = TOP(NL_CHENG_CON_ABS, 0); break;
   case NL_CHENG_CON_ABS * 2 + 1: d = TOP(NL_CHENG_CON_ABS, 1); break;

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Reference values of sin(pi x) and cos(pi x) for nl_math_sinpi and
-nl_math_cospi (src/base/nl_math.h).
+nl_math_cospi (src/math/nl_math.h).
 
 Writes tests/data/math/sinpi.tsv: for each x (exact, as a C99 hexadecimal
 double) sin(pi x) and cos(pi x) computed by mpmath with 300-bit arithmetic,

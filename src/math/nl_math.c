@@ -2,7 +2,7 @@
  * definitions of its inline functions (C99 inline: a call the compiler does
  * not inline, or a program that takes the function's address, links to
  * these). */
-#include "base/nl_math.h"
+#include "math/nl_math.h"
 
 const double nl_math__coef[2][NL_MATH__NCOEF] = {
   {0.0, NL_MATH__SINPI_P0, NL_MATH__SINPI_P1, NL_MATH__SINPI_P2, NL_MATH__SINPI_P3,

@@ -12,7 +12,7 @@ the C lines of nl_math.h (exact hexadecimal, lowest degree first), which
 nl_math.h holds verbatim. Made with
 Debian's python3-mpmath (1.2.1; 1.3.0 gives the same output):
 
-    /usr/bin/python3 src/base/nl_math_fit.py
+    /usr/bin/python3 src/math/nl_math_fit.py
 """
 import mpmath as mp
 

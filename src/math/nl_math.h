@@ -3,6 +3,9 @@
  *   double nl_math_sinpi(double x);                          sin(pi x)
  *   double nl_math_cospi(double x);                          cos(pi x)
  *   void   nl_math_sincospi(double x, double *s, double *c); both, one reduction
+ *   void   nl_math_sinpi_n(size_t n, const double *x, double *y);
+ *                                         y[j] = nl_math_sinpi(x[j]), j < n,
+ *                                         vectorised, the same bits
  *
  * Why our own: a value that reaches an `exact` column must not depend on
  * which libm the machine has. glibc's sin picks an FMA or a non-FMA variant
@@ -30,7 +33,7 @@
  *     one polynomial is evaluated, its coefficients chosen by k's parity
  *     (a table, nl_math__coef), not two polynomials and a selection. The
  *     coefficients are Chebyshev fits of 200-bit values by
- *     src/base/nl_math_fit.py (mpmath), rounded to double; the fits' own
+ *     src/math/nl_math_fit.py (mpmath), rounded to double; the fits' own
  *     relative errors are 3.5e-18 (P) and 4.3e-20 (Q), far below the
  *     rounding of the evaluation.
  *  3. Evaluated as base + (w K + (w u) poly(u)), poly by Estrin's scheme:
@@ -51,7 +54,7 @@
  *
  * Accuracy: at most 1.83 ulp for both, measured at 10^6 random x against a
  * long double reference and at 2331 hard inputs against 300-bit mpmath
- * values (tests/data/math/sinpi.tsv); src/base/test_math.c holds them to
+ * values (tests/data/math/sinpi.tsv); src/math/test_math.c holds them to
  * 2 ulp. On marble's c = (1 + sinpi(V)) / 2, V in [-1, 1]: 1.21e-16 at most
  * (glibc's sin(M_PI * V): 2.3e-16).
  *
@@ -66,10 +69,11 @@
 #define NL_MATH_H
 
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <string.h>
 
-/* src/base/nl_math_fit.py's output, verbatim (P0's value is pi to 17
+/* src/math/nl_math_fit.py's output, verbatim (P0's value is pi to 17
  * digits, not pi itself). */
 /* SINPI_P: degree 6 in u, largest relative error 3.5e-18 */
 #define NL_MATH__SINPI_P0 0x1.921fb54442d18p+1   /* 3.1415926535897932 */
@@ -168,5 +172,11 @@ inline void nl_math_sincospi(double x, double *s, double *c)
   *s = nl_math__kernel(r, u, q) * copysign(1.0, x);
   *c = nl_math__kernel(r, u, q + 1u);
 }
+
+/* sinpi of n values at the library's vector level (simd/nl_simd.h): the
+ * same lane by lane operations, so every level gives the scalar function's
+ * bits (nl_math_simd_body.h). x and y may be the same array. Marble's
+ * annealer evaluates its control value this way, a move's points at once. */
+void nl_math_sinpi_n(size_t n, const double *x, double *y);
 
 #endif

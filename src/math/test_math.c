@@ -12,7 +12,8 @@
  * Tolerance: 2 ulp of the true value (measured here: 1.83 ulp for sinpi,
  * 1.79 for cospi: the roundings of w K, of u = r^2 and of the final sum,
  * nl_math.h). Exact zeros and ones must be exact, with IEEE 754's signs. */
-#include "base/nl_math.h"
+#include "math/nl_math.h"
+#include "simd/nl_simd.h"
 #include "nl_test.h"
 
 #include <gsl/gsl_rng.h>
@@ -173,6 +174,50 @@ NL_TEST(matches_long_double_at_a_million_random_inputs)
   NL_CHECK(worst_s <= TOL_ULPS);
   NL_CHECK(worst_c <= TOL_ULPS);
   NL_CHECK(mismatched == 0);   /* sincospi is sinpi and cospi, bit for bit */
+}
+
+/* nl_math_sinpi_n at every vector level the CPU runs: the scalar
+ * function's bits at the random inputs and at the special ones (huge, inf
+ * and NaN take the scalar path for their whole vector), for every length
+ * 0..40 (the tails) and at every offset into the array. */
+NL_TEST(sinpi_n_gives_the_scalar_bits_at_every_level)
+{
+  enum { N = 1 << 16 };
+  double *x = malloc(N * sizeof *x), *y = malloc(N * sizeof *y), *z = malloc(N * sizeof *z);
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, 20261128);
+  const double special[] = {0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 0x1p50, -0x1p50, 0x1p52 + 1, 1e300,
+                            INFINITY, -INFINITY, NAN, 0x1p-1074, -0x1p-1022, 0x1p51 + 0.5};
+  size_t ns = sizeof special / sizeof special[0];
+  for (size_t i = 0; i < N; i++)
+    x[i] = (i % 97 < ns) ? special[i % 97] : random_x(r, i);
+  gsl_rng_free(r);
+  for (size_t i = 0; i < N; i++) y[i] = nl_math_sinpi(x[i]);
+  int saved = nl_simd_get(), levels = 0;
+  for (int lv = NL_SIMD_SCALAR; lv <= NL_SIMD_AVX512; lv++) {
+    if (!nl_simd_supported(lv)) continue;
+    NL_CHECK(nl_simd_set(lv) == 0);
+    levels++;
+    nl_math_sinpi_n(N, x, z);
+    size_t diff = 0;
+    for (size_t i = 0; i < N; i++) diff += memcmp(&y[i], &z[i], sizeof y[i]) != 0;
+    for (size_t n = 0; n <= 40; n++)
+      for (size_t off = 0; off < 8; off++) {
+        double t[48];
+        for (size_t i = 0; i < 48; i++) t[i] = 7.0;
+        nl_math_sinpi_n(n, x + 97 * off, t + off);
+        for (size_t i = 0; i < n; i++)
+          diff += memcmp(&t[off + i], &y[97 * off + i], sizeof t[0]) != 0;
+        for (size_t i = 0; i < 48; i++) diff += (i < off || i >= off + n) && t[i] != 7.0;
+      }
+    if (diff) fprintf(stderr, "%s: %zu values differ from nl_math_sinpi\n", nl_simd_name(lv), diff);
+    NL_CHECK(diff == 0);
+  }
+  nl_math_sinpi_n(N, x, x);   /* in place */
+  NL_CHECK(memcmp(x, y, N * sizeof *x) == 0);
+  nl_simd_set(saved);
+  printf("sinpi_n: the scalar bits at %d levels\n", levels);
+  free(x); free(y); free(z);
 }
 
 int main(void) { return nl_test_run(); }

@@ -1,0 +1,13 @@
+/* nl_math_simd_sse2.c - nl_math_simd_body.h for SSE2, 2 doubles a vector.
+ * Compiled with a target pragma, never -march: called only when the
+ * dispatcher (nl_math_simd.c) has seen the CPU support it. */
+#include "simd/nl_simd_sse2.h"   /* vd, vl, v_all */
+
+#define NL_SIMD_W 2
+#define NL_SIMD_SINPI_N nl_math__sinpi_n_sse2
+
+#include "math/nl_math_simd_body.h"
+
+#if defined(__clang__)
+#pragma clang attribute pop
+#endif
