@@ -14,7 +14,10 @@
  *   - CPU time of one full 4-level optimisation (problem set-up included),
  *     best and median of `reps` runs on seeds 1..reps, and its wall time;
  *   - moves per level, with per-level rates from the levels' wall times;
- *   - raw incremental move + undo pairs per CPU second at level 1 and 4.
+ *   - raw incremental move + undo pairs per CPU second at level 1 and 4;
+ *   - CPU seconds per solution-pool run (C5's work: E_R over every octave,
+ *     annealed on the low entries, then the cold tail; nl_cheng_pool.c),
+ *     from the optimised table of seed 1, for cloud and for marble.
  * Targets: >= 2.5 M moves/s, a full optimisation <= 0.25 s CPU.
  *
  *   build/bench/bench_cheng [--reps N] [--grid G] [--stat ks|chisq|kuiper] [--tsv]
@@ -23,7 +26,9 @@
  * --tsv: '#' lines (setting, pinning, load), then a header and one line:
  * bench (cheng_<stat>, cheng_<stat>_marble), moves_per_s (per CPU second of
  * nl_cheng_optimise), cpu_s_per_opt (median CPU seconds of set-up +
- * optimisation), one line each.
+ * optimisation), one line each; then cheng_<stat>_pool and
+ * cheng_<stat>_pool_marble with moves_per_s NA and cpu_s_per_opt the CPU
+ * seconds of one pool run (the mean over POOL_RUNS runs).
  *
  * --dump: the bit-identity record of the annealer (a speed change must not
  * move it): for each configuration the moves, accepts, temperatures, T0,
@@ -201,6 +206,37 @@ static double optimisations(nl_cheng_config c, const nl_cheng_pattern *pat, long
   return (double)moves / opt_cpu;
 }
 
+#define POOL_RUNS 4
+#define POOL_KEEP 20
+
+/* CPU seconds per pool run: the table optimised from seed 1, then a pool of
+ * POOL_RUNS runs (N = POOL_KEEP kept states each) on one thread. */
+static double pool_seconds(nl_cheng_config c, const nl_cheng_pattern *pat)
+{
+  nl_error err;
+  nl_noise_grad2 *g = nl_noise_grad2_alloc(c.m);
+  nl_noise_grad2_seed(g, nl_seed_replicate(1, 0));
+  nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
+  if (!p) { fprintf(stderr, "bench_cheng: %s\n", err.msg); exit(1); }
+  nl_cheng_optimise(p, nl_seed_replicate(1, 0), NULL);
+  nl_cheng_problem_free(p);
+  nl_cheng_pool_options o;
+  nl_cheng_pool_options_default(&o);
+  o.runs = POOL_RUNS;
+  o.keep = POOL_KEEP;
+  o.threads = 1;
+  nl_cheng_pool *pool;
+  double c0 = nl_bench_cpu_now();
+  if (nl_cheng_pool_collect(g, &c, pat, &o, 1, &pool, &err)) {
+    fprintf(stderr, "bench_cheng: %s\n", err.msg);
+    exit(1);
+  }
+  double t = (nl_bench_cpu_now() - c0) / POOL_RUNS;
+  nl_cheng_pool_free(pool);
+  nl_noise_grad2_free(g);
+  return t;
+}
+
 int main(int argc, char **argv)
 {
   long reps = 5, grid = 64;
@@ -243,11 +279,14 @@ int main(int argc, char **argv)
   double *cpu_m = malloc((size_t)reps * sizeof *cpu_m);
   double lvl_mm[NL_CHENG_MAX_OCTAVES] = {0}, lvl_ms[NL_CHENG_MAX_OCTAVES] = {0};
   double rate_m = optimisations(cm, pat, reps, wall_m, cpu_m, lvl_mm, lvl_ms);
+  double pool_s = pool_seconds(c, pat), pool_m = pool_seconds(cm, pat);
   if (tsv) {
     nl_bench_report(stdout, "end");
     printf("bench\tmoves_per_s\tcpu_s_per_opt\n");
     printf("cheng_%s\t%.0f\t%.4f\n", nl_cheng_stat_name(c.stat), rate, cpu[reps / 2]);
     printf("cheng_%s_marble\t%.0f\t%.4f\n", nl_cheng_stat_name(c.stat), rate_m, cpu_m[reps / 2]);
+    printf("cheng_%s_pool\tNA\t%.4f\n", nl_cheng_stat_name(c.stat), pool_s);
+    printf("cheng_%s_pool_marble\tNA\t%.4f\n", nl_cheng_stat_name(c.stat), pool_m);
     nl_cheng_pattern_free(pat);
     free(wall); free(cpu); free(wall_m); free(cpu_m);
     return 0;
@@ -261,6 +300,8 @@ int main(int argc, char **argv)
          "(wall time: best %.3f s, median %.3f s)\n", cpu[0], cpu[reps / 2], reps, wall[0], wall[reps / 2]);
   printf("annealing, marble: %.2f M moves per CPU second; full optimisation CPU time best %.3f s, "
          "median %.3f s\n", rate_m / 1e6, cpu_m[0], cpu_m[reps / 2]);
+  printf("solution pool (E_R, %d runs of N = %d): CPU time per run %.3f s cloud, %.3f s marble\n",
+         POOL_RUNS, POOL_KEEP, pool_s, pool_m);
 
   nl_noise_grad2 *g = nl_noise_grad2_alloc(c.m);
   nl_noise_grad2_seed(g, 1);

@@ -281,35 +281,113 @@ static inline void copy_octaves(double *restrict to, const double *restrict from
   if (l < F) to[l] = from[l];
 }
 
-/* Adds W . (dc, ds) to the octaves <= level of every point listed for entry
- * k, saving each point's previous values once; returns the change of E_Con. */
-static double update_points_general(nl_cheng_problem *p, size_t k, double dc, double ds)
+/* The general path's second pass: each touched point's term from its F
+ * values (point_term's operations), the change summed in list order. One
+ * loop per texture and reading (con, literal constants, as top_loop).
+ * Marble's sines go through nl_math_sinpi_n: every point's V first, then
+ * all their sines at the vector level (nl_math_sinpi's bits), then the
+ * terms. */
+static inline __attribute__((always_inline)) double
+general_terms(const size_t *restrict tp, size_t n, const double *restrict nv, size_t F,
+              const double *restrict amp, int levels, double s, const double *restrict dv,
+              double *restrict term, const double *restrict tterm, double *restrict sv,
+              nl_cheng_con con, int literal)
 {
-  size_t F = (size_t)p->F, M1 = p->m + 1;
-  p->ntouch = 0;
-  p->tlev = -1;
-  p->pre_ok = 0;   /* lower octaves may change */
-  if (++p->stamp == 0) { memset(p->mark, 0, p->np * sizeof *p->mark); p->stamp = 1; }
-  for (size_t l = 0; l < (size_t)p->level; l++) {
-    const size_t *st = p->lstart + l * M1;
-    for (size_t q = st[k]; q < st[k + 1]; q++) {
-      size_t i = p->litem[q];
-      if (p->mark[i] != p->stamp) {
-        p->mark[i] = p->stamp;
-        copy_octaves(p->tnv + p->ntouch * F, p->nv + i * F, F);
-        p->tterm[p->ntouch] = p->term[i];
-        p->tp[p->ntouch++] = i;
-      }
-      p->nv[i * F + l] += p->lw[2 * q] * dc + p->lw[2 * q + 1] * ds;
-    }
-  }
   double d = 0;
-  for (size_t t = 0; t < p->ntouch; t++) {
-    size_t i = p->tp[t];
-    p->term[i] = point_term(p, p->nv + i * F, i);
-    d += p->term[i] - p->tterm[t];
+  if (con == NL_CHENG_CON_SIN && !literal) {
+    for (size_t t = 0; t < n; t++) {
+      double V = nl_cheng__octave_sum(con, nv + tp[t] * F, amp, levels, -1, 0.0);
+      V *= s;
+      sv[t] = V;
+    }
+    nl_math_sinpi_n(n, sv, sv);
+    for (size_t t = 0; t < n; t++) {
+      size_t i = tp[t];
+      double e = 0.5 * (1.0 + sv[t]) - dv[i];
+      double nt = e * e;
+      term[i] = nt;
+      d += nt - tterm[t];
+    }
+    return d;
+  }
+  for (size_t t = 0; t < n; t++) {
+    size_t i = tp[t];
+    double e = nl_cheng__control_value(con, nv + i * F, amp, levels, s, literal) - dv[i];
+    double nt = e * e;
+    term[i] = nt;
+    d += nt - tterm[t];
   }
   return d;
+}
+
+/* Adds W . (dc, ds) to the octaves < levels of every point listed for entry
+ * k, saving each point's previous F values once (in tnv, tterm, tp);
+ * returns how many points it touched. */
+static inline __attribute__((always_inline)) size_t
+general_values(nl_cheng_problem *p, size_t k, double dc, double ds, size_t F, size_t levels)
+{
+  size_t M1 = p->m + 1, n = 0;
+  if (++p->stamp == 0) { memset(p->mark, 0, p->np * sizeof *p->mark); p->stamp = 1; }
+  const unsigned stamp = p->stamp;
+  unsigned *restrict mark = p->mark;
+  const uint32_t *restrict item = p->litem;
+  const double *restrict lw = p->lw, *restrict term = p->term;
+  double *restrict nv = p->nv, *restrict tnv = p->tnv, *restrict tterm = p->tterm;
+  size_t *restrict tp = p->tp;
+  for (size_t l = 0; l < levels; l++) {
+    const size_t *st = p->lstart + l * M1;
+    for (size_t q = st[k]; q < st[k + 1]; q++) {
+      size_t i = item[q];
+      double *v = nv + i * F;
+      if (mark[i] != stamp) {
+        mark[i] = stamp;
+        copy_octaves(tnv + n * F, v, F);
+        tterm[n] = term[i];
+        tp[n++] = i;
+      }
+      v[l] += lw[2 * q] * dc + lw[2 * q + 1] * ds;
+    }
+  }
+  return n;
+}
+
+/* update_points_general for F octaves at level `levels`, both constants
+ * where the caller passes constants (the thesis's F = 4 at level 4, every
+ * move of a solution pool: the copies and sums unrolled). */
+static inline __attribute__((always_inline)) double
+general_path(nl_cheng_problem *p, size_t k, double dc, double ds, size_t F, size_t levels)
+{
+  size_t n = general_values(p, k, dc, ds, F, levels);
+  p->ntouch = n;
+  const size_t *tp = p->tp;
+  const double *nv = p->nv, *amp = p->amp, *dv = p->pat->d, *tterm = p->tterm;
+  double s = p->s, *sv = p->sv, *term = p->term;
+  int lv = (int)levels;
+#define TERMS(con, lit) general_terms(tp, n, nv, F, amp, lv, s, dv, term, tterm, sv, con, lit)
+  switch (p->c.con * 2 + (p->c.literal != 0)) {
+  case NL_CHENG_CON_PLAIN * 2: return TERMS(NL_CHENG_CON_PLAIN, 0);
+  case NL_CHENG_CON_PLAIN * 2 + 1: return TERMS(NL_CHENG_CON_PLAIN, 1);
+  case NL_CHENG_CON_SIN * 2: return TERMS(NL_CHENG_CON_SIN, 0);
+  case NL_CHENG_CON_SIN * 2 + 1: return TERMS(NL_CHENG_CON_SIN, 1);
+  case NL_CHENG_CON_ABS * 2: return TERMS(NL_CHENG_CON_ABS, 0);
+  case NL_CHENG_CON_ABS * 2 + 1: return TERMS(NL_CHENG_CON_ABS, 1);
+  case NL_CHENG_CON_FIRE * 2: return TERMS(NL_CHENG_CON_FIRE, 0);
+  default: return TERMS(NL_CHENG_CON_FIRE, 1);
+  }
+#undef TERMS
+}
+
+/* Adds W . (dc, ds) to the octaves <= level of every point listed for entry
+ * k, saving each point's previous values once; returns the change of E_Con.
+ * The solution pools' moves (E_R over every octave, nl_cheng_pool.c) all
+ * come here. The problem's arrays are read into restrict locals, so the
+ * stores to the octave values do not force reloads of the rest. */
+static double update_points_general(nl_cheng_problem *p, size_t k, double dc, double ds)
+{
+  p->tlev = -1;
+  p->pre_ok = 0;   /* lower octaves may change */
+  if (p->F == 4 && p->level == 4) return general_path(p, k, dc, ds, 4, 4);
+  return general_path(p, k, dc, ds, (size_t)p->F, (size_t)p->level);
 }
 
 /* The annealer's case: entry k is in one octave's lists only (a level's
