@@ -138,6 +138,12 @@ static inline double nl_cheng__control_of_sum(nl_cheng_con con, double v, double
        : con == NL_CHENG_CON_ABS ? fabs(v) : 0.5 * (1.0 + v);
 }
 
+/* The octave sums of n points of F = 4 octaves at level 4 (every point's
+ * first 4 values, nv + 4 tp[t]) into sv: nl_cheng__octave_sum's doubles,
+ * four points a vector (nl_cheng_simd_avx2.c; x86 with AVX2 only). */
+void nl_cheng__sums4_avx2(size_t n, const size_t *tp, const double *nv, const double *amp,
+                          int fire, double *sv);
+
 static inline double nl_cheng__control_value(nl_cheng_con con, const double *nv, const double *amp,
                                              int levels, double s, int literal)
 {

@@ -1,5 +1,6 @@
 #include "cheng/nl_cheng_internal.h"
 #include "cheng/test_cheng_fixture.h"
+#include "simd/nl_simd.h"
 
 #include <gsl/gsl_rng.h>
 #include <stdlib.h>
@@ -44,6 +45,62 @@ NL_TEST(incremental_objective_equals_full_recomputation)
     }
   NL_CHECK_NEAR(worst, 0.0, 1e-12);
   nl_cheng_pattern_free(pat);
+}
+
+/* The energies after a random sequence of moves and undos at every level
+ * and in a reproduction (E_R over every octave: the solution pools' moves,
+ * whose octave sums and marble's sines run at the vector level), for every
+ * texture, both readings: the same bits at every vector level the CPU has. */
+static void move_trace(int con, int literal, double *trace, size_t n)
+{
+  nl_cheng_pattern *pat = test_flower(FLOWER_PX, 32);
+  nl_cheng_config c = nl_cheng_config_default();
+  c.con = (nl_cheng_con)con;
+  c.literal = literal;
+  nl_noise_grad2 *g = nl_noise_grad2_alloc(512);
+  nl_noise_grad2_seed(g, nl_seed_stream(11, "test.levels", (unsigned long)(con * 2 + literal)));
+  nl_error err;
+  nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, 5);
+  size_t t = 0;
+  for (int L = 1; L <= 5; L++) {
+    if (L <= 4) nl_cheng_set_level(p, L);
+    else nl_cheng_set_reproduction(p, 1);
+    for (size_t m = 0; m < n / 5; m++) {
+      nl_cheng_move(p, gsl_rng_uniform_int(r, 512), NL_TWO_PI * gsl_rng_uniform(r));
+      if (gsl_rng_uniform(r) < 0.3) nl_cheng_undo(p);
+      double e_con;
+      nl_cheng_energy(p, NULL, &e_con);
+      trace[t++] = e_con;
+    }
+  }
+  gsl_rng_free(r);
+  nl_cheng_problem_free(p);
+  nl_noise_grad2_free(g);
+  nl_cheng_pattern_free(pat);
+}
+
+NL_TEST(moves_give_the_same_bits_at_every_vector_level)
+{
+  enum { N = 1500 };
+  static double ref[N], got[N];
+  int saved = nl_simd_get();
+  size_t differ = 0;
+  for (int con = 0; con < 4; con++)
+    for (int literal = 0; literal < 2; literal++) {
+      NL_CHECK(nl_simd_set(NL_SIMD_SCALAR) == 0);
+      move_trace(con, literal, ref, N);
+      for (int lv = NL_SIMD_SSE2; lv <= NL_SIMD_AVX512; lv++) {
+        if (!nl_simd_supported(lv)) continue;
+        NL_CHECK(nl_simd_set(lv) == 0);
+        move_trace(con, literal, got, N);
+        for (size_t i = 0; i < N; i++) differ += memcmp(&ref[i], &got[i], sizeof ref[i]) != 0;
+      }
+    }
+  nl_simd_set(saved);
+  if (differ) fprintf(stderr, "%zu energies differ from the scalar level's\n", differ);
+  NL_CHECK(differ == 0);
 }
 
 /* The stored corner weights reproduce the noise kernel (nl_noise_grad2_eval). */
