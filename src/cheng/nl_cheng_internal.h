@@ -68,7 +68,8 @@ struct nl_cheng_problem {
   size_t *tp, ntouch;
   double *tnv, *tterm;
   nl_cheng__touch *tu;
-  double *sv;            /* np: marble's sums, then their sines, in a top-octave move */
+  double *sv;            /* np: points' octave sums (then marble's sines) in a move or resum */
+  double *spre;          /* np: the sums below the top octave in a resum */
   unsigned *mark, stamp;
   /* pd[2i]: point i's octave sum over octaves 0..level-2 (nl_cheng__octave_sum's
    * first level-1 steps, formed at each resum). A move of the top octave
@@ -139,10 +140,12 @@ static inline double nl_cheng__control_of_sum(nl_cheng_con con, double v, double
 }
 
 /* The octave sums of n points of F = 4 octaves at level 4 (every point's
- * first 4 values, nv + 4 tp[t]) into sv: nl_cheng__octave_sum's doubles,
- * four points a vector (nl_cheng_simd_avx2.c; x86 with AVX2 only). */
+ * first 4 values, nv + 4 tp[t], or nv + 4 t if tp is NULL) into sv, and
+ * if pre is not NULL the sums of their first three into pre:
+ * nl_cheng__octave_sum's doubles, four points a vector
+ * (nl_cheng_simd_avx2.c; x86 with AVX2 only). */
 void nl_cheng__sums4_avx2(size_t n, const size_t *tp, const double *nv, const double *amp,
-                          int fire, double *sv);
+                          int fire, double *sv, double *pre);
 
 static inline double nl_cheng__control_value(nl_cheng_con con, const double *nv, const double *amp,
                                              int levels, double s, int literal)

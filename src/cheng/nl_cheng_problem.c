@@ -131,6 +131,7 @@ nl_cheng_problem *nl_cheng_problem_alloc(const nl_cheng_config *c, const nl_chen
   p->pd = nl_xmalloc(2 * p->np * sizeof *p->pd);
   p->tu = nl_xmalloc(p->np * sizeof *p->tu);
   p->sv = nl_xmalloc(p->np * sizeof *p->sv);
+  p->spre = nl_xmalloc(p->np * sizeof *p->spre);
   build_corners(p);
   build_usage(p);
   build_lists(p);
@@ -149,6 +150,7 @@ void nl_cheng_problem_free(nl_cheng_problem *p)
   free(p->pd);
   free(p->tu);
   free(p->sv);
+  free(p->spre);
   free(p);
 }
 
@@ -189,11 +191,41 @@ static int pre_valid(const nl_cheng_problem *p, size_t l)
 }
 
 /* Octave values <= level and terms of every point from the stored corners,
- * and each point's sum of the octaves below the top one (p->pre). */
+ * and each point's sum of the octaves below the top one (p->pre). For the
+ * thesis's F = 4 at level 4 where the CPU has AVX2, the sums of four points
+ * a vector and marble's sines at the vector level, as a pool move's
+ * (general_terms): the same doubles. */
 static void evaluate_points(nl_cheng_problem *p)
 {
   size_t F = (size_t)p->F;
   int top = p->level - 1;
+#if NL_SIMD_X86
+  if (F == 4 && p->level == 4 && nl_simd_get() >= NL_SIMD_AVX2) {
+    nl_cheng_con con = p->c.con;
+    int literal = p->c.literal;
+    double s = p->s, *sv = p->sv, *pre = p->spre;
+    const double *dv = p->pat->d;
+    for (size_t i = 0; i < p->np; i++)
+      for (size_t l = 0; l < 4; l++) p->nv[i * 4 + l] = octave_value(p, i, l);
+    nl_cheng__sums4_avx2(p->np, NULL, p->nv, p->amp, con == NL_CHENG_CON_FIRE, sv, pre);
+    int marble = con == NL_CHENG_CON_SIN && !literal;
+    if (marble) {
+      for (size_t i = 0; i < p->np; i++) sv[i] *= s;
+      nl_math_sinpi_n(p->np, sv, sv);
+    }
+    for (size_t i = 0; i < p->np; i++) {
+      double c = marble ? 0.5 * (1.0 + sv[i]) : nl_cheng__control_of_sum(con, sv[i], s, literal);
+      double e = c - dv[i];
+      p->term[i] = e * e;
+      p->pd[2 * i] = pre[i];
+      p->pd[2 * i + 1] = dv[i];
+    }
+    memcpy(p->pre_amp, p->amp, sizeof p->amp);
+    p->pre_ok = 1;
+    p->pre_level = p->level;
+    return;
+  }
+#endif
   for (size_t i = 0; i < p->np; i++) {
     for (size_t l = 0; l < (size_t)p->level; l++) p->nv[i * F + l] = octave_value(p, i, l);
     p->term[i] = point_term(p, p->nv + i * F, i);
@@ -297,10 +329,11 @@ general_terms(const size_t *restrict tp, size_t n, const double *restrict nv, si
 {
 #if NL_SIMD_X86
   if (F == 4 && levels == 4 && nl_simd_get() >= NL_SIMD_AVX2)
-    nl_cheng__sums4_avx2(n, tp, nv, amp, con == NL_CHENG_CON_FIRE, sv);
+    nl_cheng__sums4_avx2(n, tp, nv, amp, con == NL_CHENG_CON_FIRE, sv, NULL);
   else
 #endif
-    for (size_t t = 0; t < n; t++) sv[t] = nl_cheng__octave_sum(con, nv + tp[t] * F, amp, levels, -1, 0.0);
+    for (size_t t = 0; t < n; t++)
+      sv[t] = nl_cheng__octave_sum(con, nv + tp[t] * F, amp, levels, -1, 0.0);
   double d = 0;
   if (con == NL_CHENG_CON_SIN && !literal) {
     for (size_t t = 0; t < n; t++) sv[t] *= s;
