@@ -354,9 +354,18 @@ static size_t rank_of(const nl_stats_ks_incr *s, double v)
   size_t hi = hi_f < (double)n ? (hi_f > 0 ? (size_t)hi_f : 0) : n;
   if (hi < lo) hi = lo;
   size_t p = lo;
-  if (hi - lo <= 64)   /* count the smaller values: independent loads, no chain of dependent ones */
-    for (size_t i = lo; i < hi; i++) p += x[i] < v;
-  else
+  if (hi - lo <= 64) {   /* count the smaller values: independent loads, no chain of dependent ones */
+    size_t i = lo;
+#if defined(__SSE2__)
+    /* two at a time: each compare's mask is -1 where x[i] < v (NaN: 0, as x[i] < v) */
+    __m128i c = _mm_setzero_si128();
+    const __m128d vv = _mm_set1_pd(v);
+    for (; i + 2 <= hi; i += 2)
+      c = _mm_sub_epi64(c, _mm_castpd_si128(_mm_cmplt_pd(_mm_loadu_pd(x + i), vv)));
+    p += (size_t)_mm_cvtsi128_si64(c) + (size_t)_mm_cvtsi128_si64(_mm_unpackhi_epi64(c, c));
+#endif
+    for (; i < hi; i++) p += x[i] < v;
+  } else
     p += lower_bound(x + lo, hi - lo, v);
   if ((p == 0 || x[p - 1] < v) && (p == n || x[p] >= v)) return p;
   return lower_bound(x, n, v);
