@@ -1,5 +1,6 @@
 /* nl_simd.h - the vector level the library's kernels run on, chosen once
- * per process: one dispatch for noise, cellular and wavelet.
+ * per process: one dispatch for noise, cellular, wavelet,
+ * math (sinpi of an array) and the annealer's pool moves (cheng).
  *
  * The levels are SSE2 (the x86-64 baseline), AVX2 and AVX-512 (F, DQ, BW,
  * VL, VBMI), or scalar code. The best the CPU and OS support is found with

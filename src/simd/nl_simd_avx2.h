@@ -1,5 +1,5 @@
 /* nl_simd_avx2.h - the vector types and primitives every AVX2 kernel shares
- * (noise, cellular and wavelet: their *_simd_avx2.c), 4 doubles a vector,
+ * (noise, cellular, wavelet, math, cheng: their *_simd_avx2.c), 4 doubles a vector,
  * and the target pragma ("avx2"): a kernel file includes it first, so the
  * whole file compiles for the level, never with -march. Library-internal,
  * never installed. */

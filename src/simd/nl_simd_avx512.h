@@ -1,5 +1,5 @@
 /* nl_simd_avx512.h - the vector types and primitives every AVX-512 kernel
- * shares (noise, cellular and wavelet: their *_simd_avx512.c), 8 doubles a
+ * shares (noise, cellular, wavelet, math: their *_simd_avx512.c), 8 doubles a
  * vector, and the target pragma (F, DQ, BW, VL, VBMI): a kernel file
  * includes it first, so the whole file compiles for the level, never with
  * -march. Library-internal, never installed. */

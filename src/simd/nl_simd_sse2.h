@@ -1,5 +1,5 @@
 /* nl_simd_sse2.h - the vector types and primitives every SSE2 kernel shares
- * (noise, cellular and wavelet: their *_simd_sse2.c), 2 doubles a vector.
+ * (noise, cellular, wavelet, math: their *_simd_sse2.c), 2 doubles a vector.
  * Library-internal: included by a kernel file, never installed. SSE2 has
  * no floor instruction (SSE4.1's roundpd): floor goes through the 2^52
  * rounding trick, which gives floor's bits for |x| < 2^52. */
