@@ -53,14 +53,13 @@ NL_TEST(incremental_objective_equals_full_recomputation)
  * texture, both readings: the same bits at every vector level the CPU has. */
 static void move_trace(int con, int literal, double *trace, size_t n)
 {
-  nl_cheng_pattern *pat = test_flower(FLOWER_PX, 32);
   nl_cheng_config c = nl_cheng_config_default();
   c.con = (nl_cheng_con)con;
   c.literal = literal;
-  nl_noise_grad2 *g = nl_noise_grad2_alloc(512);
-  nl_noise_grad2_seed(g, nl_seed_stream(11, "test.levels", (unsigned long)(con * 2 + literal)));
-  nl_error err;
-  nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);
+  test_fixture f;
+  test_fixture_open(&f, FLOWER_PX, 32, &c,
+                    nl_seed_stream(11, "test.levels", (unsigned long)(con * 2 + literal)), 1);
+  nl_cheng_problem *p = f.p;
   gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(r, 5);
   size_t t = 0;
@@ -76,9 +75,7 @@ static void move_trace(int con, int literal, double *trace, size_t n)
     }
   }
   gsl_rng_free(r);
-  nl_cheng_problem_free(p);
-  nl_noise_grad2_free(g);
-  nl_cheng_pattern_free(pat);
+  test_fixture_close(&f);
 }
 
 NL_TEST(moves_give_the_same_bits_at_every_vector_level)
