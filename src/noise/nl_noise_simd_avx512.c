@@ -344,14 +344,15 @@ static inline __m256i cell_ints(vd x)
   return _mm512_cvt_roundpd_epi32((__m512d)x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
 }
 
-/* The fractions of 64 points, their fades and their hashes; 0 if a
- * coordinate has no int cell (then nothing is hashed). lfloor as the int
- * cell converted back (exact, and +0 for -0, as the scalar (double)i), so
- * the fraction is the scalar one. The fades are made here, apart from the
- * blends that use them: the chains of the second pass stay short. */
+/* The fractions of 64 points and their hashes; 0 if a coordinate has no
+ * int cell (then nothing is hashed). lfloor as the int cell converted back
+ * (exact, and +0 for -0, as the scalar (double)i), so the fraction is the
+ * scalar one. The fades are made where they are used: on Zen 4 a 64-byte
+ * store takes two cycles of the one store unit, and storing three fades
+ * per 8 points cost more than making them again (4% of the batch). */
 static inline __attribute__((always_inline)) int
 points_hash64(const p3tab *tab, double f, int scale, const double *x, const double *y,
-              const double *z, double fr[6][64], unsigned char hs[8][64])
+              const double *z, double fr[3][64], unsigned char hs[8][64])
 {
   const double *src[3] = {x, y, z};
   __mmask16 bad = 0;
@@ -367,7 +368,6 @@ points_hash64(const p3tab *tab, double f, int scale, const double *x, const doub
         ci[u] = cell_ints(v);
         vd t = v - (vd)_mm512_cvtepi32_pd(ci[u]);
         st(fr[a] + 8 * g, t);
-        st(fr[3 + a] + 8 * g, v_fade(t));
       }
       __m512i c16 = _mm512_inserti64x4(_mm512_castsi256_si512(ci[0]), ci[1], 1);
       bad |= _mm512_cmpeq_epi32_mask(c16, _mm512_set1_epi32((int)0x80000000u));
@@ -384,20 +384,17 @@ points_hash64(const p3tab *tab, double f, int scale, const double *x, const doub
 }
 
 /* Points 8 g .. 8 g + 7 of a hashed 64: nl_noise_perm3_eval from the
- * fractions and fades (two columns, then nl_noise.c's blend). */
+ * fractions (two columns, then nl_noise.c's blend). */
 static inline __attribute__((always_inline)) vd
-points_arith64(const p3tab *tab, const double fr[6][64], const unsigned char hs[8][64], int g)
+points_arith64(const p3tab *tab, const double fr[3][64], const unsigned char hs[8][64], int g)
 {
   vd fy = ld(fr[1] + 8 * g), fz = ld(fr[2] + 8 * g);
-  vd v = ld(fr[4] + 8 * g), w = ld(fr[5] + 8 * g), g0, a0, g1, a1;
+  vd v = v_fade(fy), w = v_fade(fz), g0, a0, g1, a1;
   column3_q(tab, widen8(hs[0] + 8 * g), widen8(hs[1] + 8 * g), widen8(hs[2] + 8 * g),
             widen8(hs[3] + 8 * g), fy, fz, v, w, &g0, &a0);
   column3_q(tab, widen8(hs[4] + 8 * g), widen8(hs[5] + 8 * g), widen8(hs[6] + 8 * g),
             widen8(hs[7] + 8 * g), fy, fz, v, w, &g1, &a1);
-  vd t = ld(fr[0] + 8 * g);   /* v_blend with its fade of t made earlier */
-  vd l = t * g0 + a0;
-  vd r = (t - 1.0) * g1 + a1;
-  return l + ld(fr[3] + 8 * g) * (r - l);
+  return v_blend(ld(fr[0] + 8 * g), g0, a0, g1, a1);
 }
 
 /* n points 16 at a time, stored or (sum) scaled by f and summed into out
@@ -411,7 +408,7 @@ points3_16(const nl_noise_perm3 *P, const int *p32, double f, const double *x, c
   size_t k = 0;
   int slow = 0;
   for (; k + 64 <= n; k += 64) {
-    double fr[6][64] __attribute__((aligned(64)));
+    double fr[3][64] __attribute__((aligned(64)));
     unsigned char hs64[8][64] __attribute__((aligned(64)));
     if (!points_hash64(&tab, f, sum, x + k, y + k, z + k, fr, hs64)) {
       slow |= points3_do(P, p32, f, x + k, y + k, z + k, 64, out + k, amp, top, sum);
@@ -466,7 +463,7 @@ static size_t points3_bounded(const nl_noise_perm3 *P, const int *p32, double f,
   vd vt = SPLAT(0.0);
   size_t k = 0, left = 0;
   for (; k + 64 <= n; k += 64) {   /* pass 1 reads the 64 before any is packed */
-    double fr[6][64] __attribute__((aligned(64)));
+    double fr[3][64] __attribute__((aligned(64)));
     unsigned char hs64[8][64] __attribute__((aligned(64)));
     if (!points_hash64(&tab, f, 1, pk->x + k, pk->y + k, pk->z + k, fr, hs64)) {
       left = points3_bounded_do(&tab, P, f, amp, r, pk, k, k + 64, left, hi, nhi, &vt);
