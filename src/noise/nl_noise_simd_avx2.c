@@ -11,7 +11,7 @@
 typedef int vi __attribute__((vector_size(16)));
 typedef unsigned vu __attribute__((vector_size(16)));
 
-/* Lookups lane by lane: on the machines measured (AMD Zen 5) a gather
+/* Lookups lane by lane: on the machines measured (AMD Zen 4) a gather
  * instruction costs more than its loads one by one. */
 #include "simd/nl_simd_lanes.h"
 

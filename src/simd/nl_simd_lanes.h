@@ -1,7 +1,7 @@
 /* nl_simd_lanes.h - library-internal: table lookups lane by lane,
  * for the levels that include it after defining NL_SIMD_W and the vector
  * types vd (doubles) and vi (int indices). On the machines measured (AMD
- * Zen 5) a gather instruction costs more than its loads one by one. */
+ * Zen 4) a gather instruction costs more than its loads one by one. */
 #include <string.h>
 
 static inline vd v_gd(const double *b, vi i)
