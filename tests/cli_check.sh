@@ -79,7 +79,8 @@ run 1 param $'manifest.tsv\t-\tparam\tsize=8'
 
 # Several experiments under two roots.
 mkdir -p "$out/r1" "$out/r2"; cp -r "$ref" "$out/r1/t1"; cp -r "$ref" "$out/r2/t1"
-"$check" "$out/r1" "$out/r2" t1 | grep -q 'check: t1: 2 tables'
+r="$("$check" "$out/r1" "$out/r2" t1)"
+grep -q 'check: t1: 2 tables' <<<"$r"
 
 # Many drifted values: the first 10 lines and a count; --all every line. The
 # summary names the experiment and the platform of both runs, what differs

@@ -63,19 +63,19 @@ p="$("$s3" --params --out "$out/params" --set octaves=2)" || { echo "--params fa
 rejected "outside" "$s3" --params --out "$out/params" --set octaves=99
 rejected "(valid: size, extent, z, octaves)" "$s3" --params --out "$out/params" --set nosuch=1
 [ "$(printf '%s\n' "$p" | head -n 1)" = $'name\tdefault\tmin\tmax\tmeaning' ] || { echo "--params header: '$p'"; exit 1; }
-printf '%s\n' "$p" | grep -q $'^octaves\t6\t1\t30\t[a-z]' || { echo "--params has no octaves line: '$p'"; exit 1; }
+grep -q $'^octaves\t6\t1\t30\t[a-z]' <<<"$p" || { echo "--params has no octaves line: '$p'"; exit 1; }
 printf '%s\n' "$p" | tsv_awk 'NF != 5 || v("meaning") == "" { bad = 1 } END { exit bad }' - || { echo "--params lines need 5 fields and a meaning: '$p'"; exit 1; }
 [ "$(printf '%s\n' "$p" | wc -l)" = 5 ] || { echo "--params: wanted 4 parameters: '$p'"; exit 1; }
 [ "$("$s3" --quick --params | tsv_awk 'v("name") == "size" { print v("default") }' -)" = 128 ] || { echo "--params --quick: size default is not the quick one"; exit 1; }
 pc="$("$c2" --params --patterns "$pat")" || { echo "c2 --params failed"; exit 1; }
-printf '%s\n' "$pc" | grep -q $'^w1\t0.995\t' || { echo "c2 --params has no w1: '$pc'"; exit 1; }
+grep -q $'^w1\t0.995\t' <<<"$pc" || { echo "c2 --params has no w1: '$pc'"; exit 1; }
 [ ! -e "$out/params" ] || { echo "--params made a folder"; exit 1; }
 
 # --help writes nothing either and lists the parameters with their meanings;
 # an accepted run still replaces the old one.
 h="$("$s3" --help --out "$out/help")" || { echo "--help failed"; exit 1; }
 [[ "$h" == *"usage: s3_fbm"* && "$h" == *"--params"* ]] || { echo "--help has no usage: '$h'"; exit 1; }
-printf '%s\n' "$h" | grep -q '^  octaves .*1, 30.*octaves summed' || { echo "--help does not list octaves: '$h'"; exit 1; }
+grep -q '^  octaves .*1, 30.*octaves summed' <<<"$h" || { echo "--help does not list octaves: '$h'"; exit 1; }
 [ ! -e "$out/help" ] || { echo "--help made a folder"; exit 1; }
 "$s3" --quick --seeds 1 --out "$out/s3" --set octaves=2 >/dev/null
 grep -q $'^param\toctaves=2$' "$out/s3/manifest.tsv" || { echo "accepted run did not write its manifest"; exit 1; }
@@ -87,7 +87,7 @@ mval() { tsv_awk -v k="$1" 'v("key") == k { print v("value") }' "$2"; }
 [ "$(mval arch "$out/s3/manifest.tsv")" = "$(uname -m)" ] \
   || { echo "manifest: arch is not uname -m"; exit 1; }
 libm="$(mval libm "$out/s3/manifest.tsv")"
-if ldd --version 2>&1 | grep -qi glibc && [ "$(uname -m)" = x86_64 ] &&
+if grep -qi glibc <<<"$(ldd --version 2>&1)" && [ "$(uname -m)" = x86_64 ] &&
    grep -qw fma /proc/cpuinfo && grep -qw avx2 /proc/cpuinfo; then
   [[ "$libm" == "glibc 2."*" fma" ]] \
     || { echo "manifest: libm '$libm', wanted glibc's fma variant"; exit 1; }
