@@ -235,9 +235,13 @@ arith8(const p3tab *tab, vi16 hs[2][4], int h, vd vx, vd vy, vd vz)
  * changing a lookup, and X + 1 may too. One lookup of 64 byte lanes then
  * serves 64 points, where int lanes serve 16: the 14 lookups of a point
  * fall from 56 permutes per 16 points to 56 per 64. The corner hashes go
- * through memory, where the arithmetic widens 8 of them at a time to the
- * qword indices of the gradient permutes (vpermt2pd reads the low 4 bits:
- * the & 15 is free). */
+ * through memory in a transposed order: byte 8 l + g of a corner's row
+ * holds point 8 g + l, so one 64-byte load at byte g gives qword l the
+ * hash of point 8 g + l in its low byte, and that load is the index of
+ * the gradient permutes (vpermt2pd reads the low 4 bits: the & 15 is
+ * free). Widening 8 hashes to qwords instead took a shuffle per corner
+ * from the pipes the permutes and the arithmetic share (5% of a batch
+ * on Zen 4). */
 typedef unsigned char vb __attribute__((vector_size(64)));   /* wraps mod 256 */
 /* p[idx]: the lanes with bit 7 set look up the upper 128 entries in place
  * (vpermi2b keeps the index where the mask is clear), then the others the
@@ -344,7 +348,26 @@ static inline __m256i cell_ints(vd x)
   return _mm512_cvt_roundpd_epi32((__m512d)x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
 }
 
-/* The fractions of 64 points and their hashes; 0 if a coordinate has no
+/* The low bytes of 16 cells (two vectors of 8 int lanes: points 16 h ..
+ * 16 h + 7 in the first, byte 4 l, and the next 8 in the second, byte
+ * 64 + 4 l of vpermt2b's pair) to their transposed places among 64 (byte
+ * 8 l + g for point 8 g + l), in one permute. tr_mask[h]: the places of
+ * points 16 h .. 16 h + 15, g = 2 h and 2 h + 1. */
+#define TR_P(i, h) (8 * ((i) & 7) + ((i) >> 3) - 16 * (h))
+#define TR_B(i, h) (TR_P(i, h) >= 0 && TR_P(i, h) < 8 ? 4 * TR_P(i, h)             \
+                    : TR_P(i, h) >= 8 && TR_P(i, h) < 16 ? 64 + 4 * (TR_P(i, h) - 8) \
+                    : 0)
+#define TR_8(i, h) TR_B(i, h), TR_B(i + 1, h), TR_B(i + 2, h), TR_B(i + 3, h), \
+                   TR_B(i + 4, h), TR_B(i + 5, h), TR_B(i + 6, h), TR_B(i + 7, h)
+#define TR_64(h) {TR_8(0, h), TR_8(8, h), TR_8(16, h), TR_8(24, h), \
+                  TR_8(32, h), TR_8(40, h), TR_8(48, h), TR_8(56, h)}
+static const unsigned char tr_ix[4][64] __attribute__((aligned(64))) = {
+    TR_64(0), TR_64(1), TR_64(2), TR_64(3)};
+static const __mmask64 tr_mask[4] = {0x0303030303030303ull, 0x0c0c0c0c0c0c0c0cull,
+                                     0x3030303030303030ull, 0xc0c0c0c0c0c0c0c0ull};
+
+/* The fractions of 64 points and their hashes, transposed (hash64): the
+ * hashing runs on the cells' bytes in that order. 0 if a coordinate has no
  * int cell (then nothing is hashed). lfloor as the int cell converted back
  * (exact, and +0 for -0, as the scalar (double)i), so the fraction is the
  * scalar one. The fades are made where they are used: on Zen 4 a 64-byte
@@ -352,13 +375,13 @@ static inline __m256i cell_ints(vd x)
  * per 8 points cost more than making them again (4% of the batch). */
 static inline __attribute__((always_inline)) int
 points_hash64(const p3tab *tab, double f, int scale, const double *x, const double *y,
-              const double *z, double fr[3][64], unsigned char hs[8][64])
+              const double *z, double fr[3][64], unsigned char hs[9][64])
 {
   const double *src[3] = {x, y, z};
-  __mmask16 bad = 0;
+  __mmask8 bad = 0;
   vb b[3];
   for (int a = 0; a < 3; a++) {
-    __m128i q[4];
+    __m512i w = _mm512_setzero_si512();
     for (int h = 0; h < 4; h++) {
       __m256i ci[2];
       for (int u = 0; u < 2; u++) {
@@ -368,32 +391,37 @@ points_hash64(const p3tab *tab, double f, int scale, const double *x, const doub
         ci[u] = cell_ints(v);
         vd t = v - (vd)_mm512_cvtepi32_pd(ci[u]);
         st(fr[a] + 8 * g, t);
+        bad |= _mm256_cmpeq_epi32_mask(ci[u], _mm256_set1_epi32((int)0x80000000u));
       }
-      __m512i c16 = _mm512_inserti64x4(_mm512_castsi256_si512(ci[0]), ci[1], 1);
-      bad |= _mm512_cmpeq_epi32_mask(c16, _mm512_set1_epi32((int)0x80000000u));
-      q[h] = _mm512_cvtepi32_epi8(c16);   /* the low bytes */
+      __m512i ix = _mm512_load_si512(tr_ix[h]);
+      w |= _mm512_maskz_permutex2var_epi8(tr_mask[h], _mm512_castsi256_si512(ci[0]), ix,
+                                          _mm512_castsi256_si512(ci[1]));
     }
-    __m512i w = _mm512_castsi128_si512(q[0]);
-    w = _mm512_inserti32x4(w, q[1], 1);
-    w = _mm512_inserti32x4(w, q[2], 2);
-    b[a] = (vb)_mm512_inserti32x4(w, q[3], 3);
+    b[a] = (vb)w;
   }
   if (bad) return 0;
   hash64(tab, b[0], b[1], b[2], hs);
   return 1;
 }
 
+/* The gradient index of points 8 g .. 8 g + 7 at one corner (hash64):
+ * bytes g .. g + 63 of its row, the last row's load reaching 7 bytes into
+ * the hs[8] that follows it. */
+static inline __m512i hash_ix(const unsigned char *row, int g)
+{
+  return _mm512_loadu_si512(row + g);
+}
 /* Points 8 g .. 8 g + 7 of a hashed 64: nl_noise_perm3_eval from the
  * fractions (two columns, then nl_noise.c's blend). */
 static inline __attribute__((always_inline)) vd
-points_arith64(const p3tab *tab, const double fr[3][64], const unsigned char hs[8][64], int g)
+points_arith64(const p3tab *tab, const double fr[3][64], const unsigned char hs[9][64], int g)
 {
   vd fy = ld(fr[1] + 8 * g), fz = ld(fr[2] + 8 * g);
   vd v = v_fade(fy), w = v_fade(fz), g0, a0, g1, a1;
-  column3_q(tab, widen8(hs[0] + 8 * g), widen8(hs[1] + 8 * g), widen8(hs[2] + 8 * g),
-            widen8(hs[3] + 8 * g), fy, fz, v, w, &g0, &a0);
-  column3_q(tab, widen8(hs[4] + 8 * g), widen8(hs[5] + 8 * g), widen8(hs[6] + 8 * g),
-            widen8(hs[7] + 8 * g), fy, fz, v, w, &g1, &a1);
+  column3_q(tab, hash_ix(hs[0], g), hash_ix(hs[1], g), hash_ix(hs[2], g), hash_ix(hs[3], g), fy,
+            fz, v, w, &g0, &a0);
+  column3_q(tab, hash_ix(hs[4], g), hash_ix(hs[5], g), hash_ix(hs[6], g), hash_ix(hs[7], g), fy,
+            fz, v, w, &g1, &a1);
   return v_blend(ld(fr[0] + 8 * g), g0, a0, g1, a1);
 }
 
@@ -407,9 +435,10 @@ points3_16(const nl_noise_perm3 *P, const int *p32, double f, const double *x, c
   vd vt = SPLAT(0.0);
   size_t k = 0;
   int slow = 0;
+  unsigned char hs64[9][64] __attribute__((aligned(64)));
+  memset(hs64[8], 0, sizeof hs64[8]);   /* read, never used (hash_ix) */
   for (; k + 64 <= n; k += 64) {
     double fr[3][64] __attribute__((aligned(64)));
-    unsigned char hs64[8][64] __attribute__((aligned(64)));
     if (!points_hash64(&tab, f, sum, x + k, y + k, z + k, fr, hs64)) {
       slow |= points3_do(P, p32, f, x + k, y + k, z + k, 64, out + k, amp, top, sum);
       continue;
@@ -462,9 +491,10 @@ static size_t points3_bounded(const nl_noise_perm3 *P, const int *p32, double f,
   p3tab tab = p3_make(P, p32);
   vd vt = SPLAT(0.0);
   size_t k = 0, left = 0;
+  unsigned char hs64[9][64] __attribute__((aligned(64)));
+  memset(hs64[8], 0, sizeof hs64[8]);   /* read, never used (hash_ix) */
   for (; k + 64 <= n; k += 64) {   /* pass 1 reads the 64 before any is packed */
     double fr[3][64] __attribute__((aligned(64)));
-    unsigned char hs64[8][64] __attribute__((aligned(64)));
     if (!points_hash64(&tab, f, 1, pk->x + k, pk->y + k, pk->z + k, fr, hs64)) {
       left = points3_bounded_do(&tab, P, f, amp, r, pk, k, k + 64, left, hi, nhi, &vt);
       continue;
