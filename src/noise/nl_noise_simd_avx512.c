@@ -366,6 +366,11 @@ static const unsigned char tr_ix[4][64] __attribute__((aligned(64))) = {
 static const __mmask64 tr_mask[4] = {0x0303030303030303ull, 0x0c0c0c0c0c0c0c0cull,
                                      0x3030303030303030ull, 0xc0c0c0c0c0c0c0c0ull};
 
+/* The 8 corner rows of a hashed 64 (hash64), and a ninth that hash_ix's
+ * loads at byte g of the last row reach 7 bytes into: cleared once by
+ * the caller, read, never used. */
+typedef struct { unsigned char row[9][64]; } __attribute__((aligned(64))) p3rows;
+
 /* The fractions of 64 points and their hashes, transposed (hash64): the
  * hashing runs on the cells' bytes in that order. 0 if a coordinate has no
  * int cell (then nothing is hashed). lfloor as the int cell converted back
@@ -375,7 +380,7 @@ static const __mmask64 tr_mask[4] = {0x0303030303030303ull, 0x0c0c0c0c0c0c0c0cul
  * per 8 points cost more than making them again (4% of the batch). */
 static inline __attribute__((always_inline)) int
 points_hash64(const p3tab *tab, double f, int scale, const double *x, const double *y,
-              const double *z, double fr[3][64], unsigned char hs[9][64])
+              const double *z, double fr[3][64], p3rows *hs)
 {
   const double *src[3] = {x, y, z};
   __mmask8 bad = 0;
@@ -400,13 +405,12 @@ points_hash64(const p3tab *tab, double f, int scale, const double *x, const doub
     b[a] = (vb)w;
   }
   if (bad) return 0;
-  hash64(tab, b[0], b[1], b[2], hs);
+  hash64(tab, b[0], b[1], b[2], hs->row);
   return 1;
 }
 
 /* The gradient index of points 8 g .. 8 g + 7 at one corner (hash64):
- * bytes g .. g + 63 of its row, the last row's load reaching 7 bytes into
- * the hs[8] that follows it. */
+ * bytes g .. g + 63 of its row (p3rows). */
 static inline __m512i hash_ix(const unsigned char *row, int g)
 {
   return _mm512_loadu_si512(row + g);
@@ -414,14 +418,15 @@ static inline __m512i hash_ix(const unsigned char *row, int g)
 /* Points 8 g .. 8 g + 7 of a hashed 64: nl_noise_perm3_eval from the
  * fractions (two columns, then nl_noise.c's blend). */
 static inline __attribute__((always_inline)) vd
-points_arith64(const p3tab *tab, const double fr[3][64], const unsigned char hs[9][64], int g)
+points_arith64(const p3tab *tab, const double fr[3][64], const p3rows *hs, int g)
 {
   vd fy = ld(fr[1] + 8 * g), fz = ld(fr[2] + 8 * g);
   vd v = v_fade(fy), w = v_fade(fz), g0, a0, g1, a1;
-  column3_q(tab, hash_ix(hs[0], g), hash_ix(hs[1], g), hash_ix(hs[2], g), hash_ix(hs[3], g), fy,
-            fz, v, w, &g0, &a0);
-  column3_q(tab, hash_ix(hs[4], g), hash_ix(hs[5], g), hash_ix(hs[6], g), hash_ix(hs[7], g), fy,
-            fz, v, w, &g1, &a1);
+  const unsigned char(*r)[64] = hs->row;
+  column3_q(tab, hash_ix(r[0], g), hash_ix(r[1], g), hash_ix(r[2], g), hash_ix(r[3], g), fy, fz, v,
+            w, &g0, &a0);
+  column3_q(tab, hash_ix(r[4], g), hash_ix(r[5], g), hash_ix(r[6], g), hash_ix(r[7], g), fy, fz, v,
+            w, &g1, &a1);
   return v_blend(ld(fr[0] + 8 * g), g0, a0, g1, a1);
 }
 
@@ -435,16 +440,16 @@ points3_16(const nl_noise_perm3 *P, const int *p32, double f, const double *x, c
   vd vt = SPLAT(0.0);
   size_t k = 0;
   int slow = 0;
-  unsigned char hs64[9][64] __attribute__((aligned(64)));
-  memset(hs64[8], 0, sizeof hs64[8]);   /* read, never used (hash_ix) */
+  p3rows hs64;
+  memset(hs64.row[8], 0, sizeof hs64.row[8]);
   for (; k + 64 <= n; k += 64) {
     double fr[3][64] __attribute__((aligned(64)));
-    if (!points_hash64(&tab, f, sum, x + k, y + k, z + k, fr, hs64)) {
+    if (!points_hash64(&tab, f, sum, x + k, y + k, z + k, fr, &hs64)) {
       slow |= points3_do(P, p32, f, x + k, y + k, z + k, 64, out + k, amp, top, sum);
       continue;
     }
     for (int g = 0; g < 8; g++)
-      v_points_emit(out + k + 8 * g, points_arith64(&tab, fr, hs64, g), sum, amp, &vt);
+      v_points_emit(out + k + 8 * g, points_arith64(&tab, fr, &hs64, g), sum, amp, &vt);
   }
   for (; k + 16 <= n; k += 16) {
     vd sx[2], sy[2], sz[2];
@@ -491,17 +496,17 @@ static size_t points3_bounded(const nl_noise_perm3 *P, const int *p32, double f,
   p3tab tab = p3_make(P, p32);
   vd vt = SPLAT(0.0);
   size_t k = 0, left = 0;
-  unsigned char hs64[9][64] __attribute__((aligned(64)));
-  memset(hs64[8], 0, sizeof hs64[8]);   /* read, never used (hash_ix) */
+  p3rows hs64;
+  memset(hs64.row[8], 0, sizeof hs64.row[8]);
   for (; k + 64 <= n; k += 64) {   /* pass 1 reads the 64 before any is packed */
     double fr[3][64] __attribute__((aligned(64)));
-    if (!points_hash64(&tab, f, 1, pk->x + k, pk->y + k, pk->z + k, fr, hs64)) {
+    if (!points_hash64(&tab, f, 1, pk->x + k, pk->y + k, pk->z + k, fr, &hs64)) {
       left = points3_bounded_do(&tab, P, f, amp, r, pk, k, k + 64, left, hi, nhi, &vt);
       continue;
     }
     for (int g = 0; g < 8; g++) {
       size_t q = k + 8 * (size_t)g;
-      vd v = points_arith64(&tab, fr, hs64, g);
+      vd v = points_arith64(&tab, fr, &hs64, g);
       v_top_raise(&vt, v);
       left = v_pack(pk, q, ld(pk->x + q), ld(pk->y + q), ld(pk->z + q), ld(pk->base + q),
                     ld(pk->sum + q) + amp * v, r, left, hi, nhi);
