@@ -57,10 +57,10 @@ grep -q $'^seed\t4294967295$' "$r/a1_bounds/manifest.tsv" || fail "seed 42949672
 # The verdict table: every complete folder's verdicts.tsv, read by column
 # name (planted here for S4, beside A1's own), counted: independent rows as
 # verdicts, the others by kind, a fitted row capped below "reproduced".
-{ printf 'reason\tquantity\tsource\tpaper\tours\tours_sd\trule\tkind\tverdict\n'
-  printf 'why\tgain\tx.tsv:g\t2\t2.08\t0.01\trel 0.05 0.25\tindependent\treproduced\n'
-  printf 'fit\tslope |s|\tx.tsv:s\t2\t2.01\t-\trel 0.05 0.25\tfitted 2/4\tconsistent after fit\n'
-  printf 'set\tF_inf\tx.tsv:f\t1\t1\t-\tabs 0 0\tby construction\tby construction\n'
+{ printf 'reason\tquantity\tsource\tpaper\tours\tours_sd\trule\tkind\tverdict\tcontrol\tcontrol_ours\tcontrol_verdict\n'
+  printf 'why\tgain\tx.tsv:g\t2\t2.08\t0.01\trel 0.05 0.25\tindependent\treproduced\ta flat image\t0.912345\tnot reproduced\n'
+  printf 'fit\tslope |s|\tx.tsv:s\t2\t2.01\t-\trel 0.05 0.25\tfitted 2/4\tconsistent after fit\t-\t-\t-\n'
+  printf 'set\tF_inf\tx.tsv:f\t1\t1\t-\tabs 0 0\tby construction\tby construction\t-\t-\t-\n'
 } >"$r/s4_marble/verdicts.tsv"
 SOURCE_DATE_EPOCH=86400 "$nl" reproduce --quick --seed 4294967295 --out "$r" A1 2>"$out/verdict.log" || { cat "$out/verdict.log"; fail "reproduce A1 failed"; }
 grep -q '^## Did it reproduce?' "$r/REPORT.md" || fail "REPORT.md has no verdict table"
@@ -74,9 +74,10 @@ ni=$(( $(a1_count independent) + 1 )); nf=$(( $(a1_count fitted) + 1 ))
 grep -qE "^$ni independent verdicts \(" "$r/REPORT.md" || fail "verdict count wrong: $(grep 'independent verdicts' "$r/REPORT.md")"
 grep -qE "^Not counted above: $nf fitted to the paper \([0-9]+ consistent after fit\)" "$r/REPORT.md" || fail "fitted count wrong: $(grep 'Not counted' "$r/REPORT.md")"
 # a row: the rule's thresholds in their own column, the reason as the experiment gave it
-row='| [S4](#s4_marble) | gain | independent | 2 | 2.08 +- 0.01 | **reproduced** | 5% / 25% | why |'
+# and its negative control: the same rule on a baseline without the method
+row='| [S4](#s4_marble) | gain | independent | 2 | 2.08 +- 0.01 | **reproduced** | 5% / 25% | a flat image: 0.9123, not reproduced | why |'
 grep -qF "$row" "$r/REPORT.md" || fail "verdict row: $(grep -F gain "$r/REPORT.md")"
-row='| [S4](#s4_marble) | F_inf | by construction | 1 | 1 | *by construction* | equal | set |'
+row='| [S4](#s4_marble) | F_inf | by construction | 1 | 1 | *by construction* | equal | - | set |'
 grep -qF "$row" "$r/REPORT.md" || fail "by-construction row: $(grep -F F_inf "$r/REPORT.md")"
 # one summary line per experiment, its rows counted by verdict, above the table
 sum='^- \[S4 - [^]]*\]\(#s4_marble\): \*\*1 reproduced\*\*, \*\*1 consistent after fit\*\*, '

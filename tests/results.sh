@@ -33,6 +33,37 @@ for dir in "$root/results" "$root/results/quick"; do
   done <"$list"
 done
 
+# The claims inventory of an experiment (experiments/NAME/claims.tsv): every
+# claim names the verdict row that decides it (its quantity, in both the
+# paper-scale and the quick verdicts.tsv) or says why none does. An
+# experiment with an inventory has a negative control on every independent
+# row: the same rule run on a baseline without the method, never itself
+# "reproduced" (the harness would have made the row "by construction").
+while IFS= read -r e; do
+  [ -n "$e" ] || continue
+  inv="$root/experiments/$e/claims.tsv"
+  [ -f "$inv" ] || continue
+  head -1 "$inv" | grep -qx $'id\tclaim\twhere\tdecided_by\twhy_not' ||
+    fail "$inv: header is not id, claim, where, decided_by, why_not"
+  for dir in "$root/results" "$root/results/quick"; do
+    v="$dir/$e/verdicts.tsv"
+    bad="$(awk -F'\t' '
+      FNR == 1 { split("", c); for (i = 1; i <= NF; i++) c[$i] = i; next }
+      FILENAME == ARGV[1] { q[$c["quantity"]] = 1
+        if ($c["kind"] == "independent" && (!("control_verdict" in c) || $c["control_verdict"] == "-"))
+          { print "independent row without a control: " $c["quantity"]; exit }
+        if ($c["kind"] == "independent" && $c["control_verdict"] == "reproduced")
+          { print "independent row whose control is reproduced: " $c["quantity"]; exit }
+        next }
+      NF != 5 { print "claim " $1 ": " NF " cells, wanted 5"; exit }
+      $c["decided_by"] == "-" && ($c["why_not"] == "" || $c["why_not"] == "-") {
+        print "claim " $c["id"] ": neither a verdict row nor a reason"; exit }
+      $c["decided_by"] != "-" && !($c["decided_by"] in q) {
+        print "claim " $c["id"] ": no verdict row \"" $c["decided_by"] "\""; exit }' "$v" "$inv")"
+    [ -z "$bad" ] || fail "$e ($dir): $bad"
+  done
+done <"$list"
+
 spread="$root/data/blas_spread.tsv"
 [ -f "$spread" ] || fail "no $spread"
 while IFS= read -r e; do

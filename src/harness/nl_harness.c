@@ -49,7 +49,13 @@ struct nl_harness {
   int prepared;           /* the output folder exists and its old manifest is gone */
   nl_table *manifest;     /* key, value (text) */
   nl_table *checks;       /* table, column, rule (text): regression rules */
-  nl_table *verdicts;     /* quantity, source, paper, ours, ours_sd, rule, verdict, reason */
+  nl_table *verdicts;     /* quantity, source, paper, ours, ours_sd, rule, verdict, reason, control... */
+  struct {                /* the verdict declared last, for its control */
+    enum { LAST_NONE, LAST_VALUE, LAST_EQUIV, LAST_P, LAST_LESS } type;
+    char rule[64], col[128], sd_col[128], n_col[128];
+    double paper, alpha;
+    int has_control;
+  } last;
   char **outputs;         /* files this run writes (nl_harness_path), and its figures */
   size_t noutputs;
   char **figures;         /* nl_harness_figure's files */
@@ -696,11 +702,27 @@ static void verdict_row(nl_harness *r, const char *quantity, const char *source,
   nl_error err;
   if (nl_harness_verdict_kind_check(kind, &err)) nl_harness_die(r, 1, "verdict '%s': %s", quantity, err.msg);
   if (!r->verdicts) {
-    const char *vcols[] = {"quantity", "source", "paper", "ours", "ours_sd", "rule", "kind", "verdict", "reason"};
-    r->verdicts = nl_table_alloc(9, vcols);
+    const char *vcols[] = {"quantity", "source", "paper",  "ours",    "ours_sd",      "rule",
+                           "kind",     "verdict", "reason", "control", "control_ours", "control_verdict"};
+    r->verdicts = nl_table_alloc(12, vcols);
   }
-  nl_table_append(r->verdicts, "sssssssss", quantity, source, paper, ours, sd ? sd : "-", rule, kind,
-                  nl_harness_verdict_word(v, kind), reason);
+  nl_table_append(r->verdicts, "ssssssssssss", quantity, source, paper, ours, sd ? sd : "-", rule, kind,
+                  nl_harness_verdict_word(v, kind), reason, "-", "-", "-");
+  r->last.type = LAST_NONE;   /* the caller says what it was */
+  r->last.has_control = 0;
+}
+
+/* Remembers the columns the verdict just declared read, for its control. */
+static void remember(nl_harness *r, int type, const char *rule, double paper, const char *col,
+                     const char *sd_col, const char *n_col, double alpha)
+{
+  r->last.type = type;
+  snprintf(r->last.rule, sizeof r->last.rule, "%s", rule);
+  snprintf(r->last.col, sizeof r->last.col, "%s", col);
+  snprintf(r->last.sd_col, sizeof r->last.sd_col, "%s", sd_col ? sd_col : "");
+  snprintf(r->last.n_col, sizeof r->last.n_col, "%s", n_col ? n_col : "");
+  r->last.paper = paper;
+  r->last.alpha = alpha;
 }
 
 static void append_note(char *reason, size_t len, const char *note)
@@ -742,6 +764,31 @@ void nl_harness_verdict(nl_harness *r, const char *file, const nl_table *t, size
   if (sd_col) nl_table_format_double(st, sd);
   snprintf(source, sizeof source, "%s:%s", file, ours_col);
   verdict_row(r, quantity, source, pt, ot, sd_col ? st : NULL, rule, kind, v, reason);
+  remember(r, LAST_VALUE, rule, paper, ours_col, sd_col, NULL, NAN);
+}
+
+void nl_harness_verdict_equiv(nl_harness *r, const char *file, const nl_table *t, size_t row,
+                              const char *quantity, const char *paper_col, const char *ours_col,
+                              const char *se_col, const char *n_col, const char *rule, const char *kind,
+                              const char *note)
+{
+  if (row >= t->nrows) nl_harness_die(r, 1, "verdict '%s': %s has no row %zu", quantity, file, row + 1);
+  const char *cols[] = {paper_col, ours_col, se_col, n_col};
+  need_columns(r, quantity, file, t, cols, 4);
+  double paper = nl_table_value(t, row, paper_col), ours = nl_table_value(t, row, ours_col);
+  double se = nl_table_value(t, row, se_col), df = n_col ? nl_table_value(t, row, n_col) - 1 : 0;
+  nl_harness_outcome v;
+  char reason[320], source[256], pt[32], ot[32], st[32];
+  nl_error err;
+  if (nl_harness_verdict_decide_equiv(rule, paper, ours, se, df, &v, reason, sizeof reason, &err))
+    nl_harness_die(r, 1, "verdict '%s': %s", quantity, err.msg);
+  append_note(reason, sizeof reason, note);
+  nl_table_format_double(pt, paper);
+  nl_table_format_double(ot, ours);
+  nl_table_format_double(st, se);
+  snprintf(source, sizeof source, "%s:%s", file, ours_col);
+  verdict_row(r, quantity, source, pt, ot, st, rule, kind, v, reason);
+  remember(r, LAST_EQUIV, rule, paper, ours_col, se_col, n_col, NAN);
 }
 
 void nl_harness_verdict_less(nl_harness *r, const char *file, const nl_table *t, size_t row_a,
@@ -766,6 +813,7 @@ void nl_harness_verdict_less(nl_harness *r, const char *file, const nl_table *t,
   snprintf(rule, sizeof rule, "less welch %g", alpha);
   snprintf(source, sizeof source, "%s:%s", file, col);
   verdict_row(r, quantity, source, claim, ours, NULL, rule, kind, v, reason);
+  remember(r, LAST_LESS, rule, NAN, col, sd_col, n_col, alpha);
 }
 
 void nl_harness_verdict_p(nl_harness *r, const char *file, const nl_table *t, size_t row,
@@ -787,6 +835,7 @@ void nl_harness_verdict_p(nl_harness *r, const char *file, const nl_table *t, si
   snprintf(ours, sizeof ours, "%s %.4g, p = %.2g", stat_col, stat, p);
   snprintf(source, sizeof source, "%s:%s", file, p_col);
   verdict_row(r, quantity, source, claim, ours, NULL, rule, kind, v, reason);
+  remember(r, LAST_P, rule, NAN, p_col, stat_col, NULL, NAN);
 }
 
 void nl_harness_verdict_figure(nl_harness *r, const char *quantity, const char *claim,
@@ -796,6 +845,93 @@ void nl_harness_verdict_figure(nl_harness *r, const char *quantity, const char *
   char reason[320] = "";
   snprintf(reason, sizeof reason, "%s", note && *note ? note : "the figure decides");
   verdict_row(r, quantity, figure, claim, figure, NULL, "-", "qualitative", NL_VERDICT_NOT, reason);
+}
+
+/* Writes the control's cells on the last verdict row; an independent row
+ * whose control passes is no evidence (nl_harness.h). */
+static void control_row(nl_harness *r, const char *control, const char *ours, nl_harness_outcome v,
+                        const char *why)
+{
+  size_t i = r->verdicts->nrows - 1;
+  const char *word = nl_harness_verdict_word(v, "independent");
+  nl_table_set_text(r->verdicts, i, "control", control);
+  nl_table_set_text(r->verdicts, i, "control_ours", ours);
+  nl_table_set_text(r->verdicts, i, "control_verdict", word);
+  r->last.has_control = 1;
+  if (v == NL_VERDICT_REPRODUCED && !strcmp(nl_table_text(r->verdicts, i, "kind"), "independent")) {
+    char reason[512];
+    snprintf(reason, sizeof reason, "%s; its control (%s) passes the same rule: %s",
+             nl_table_text(r->verdicts, i, "reason"), control, why);
+    nl_table_set_text(r->verdicts, i, "kind", "by construction");
+    nl_table_set_text(r->verdicts, i, "verdict", nl_harness_verdict_word(v, "by construction"));
+    nl_table_set_text(r->verdicts, i, "reason", reason);
+  }
+}
+
+static void control_start(nl_harness *r, const char *control, const char *file, const nl_table *t,
+                          size_t row)
+{
+  const char *q = r->verdicts && r->verdicts->nrows ? nl_table_text(r->verdicts, r->verdicts->nrows - 1, "quantity") : "";
+  if (r->last.type == LAST_NONE || r->last.has_control)
+    nl_harness_die(r, 1, "control '%s': no verdict declared just before it (or it has one)", control);
+  if (row >= t->nrows) nl_harness_die(r, 1, "control '%s' of '%s': %s has no row %zu", control, q, file, row + 1);
+  const char *cols[] = {r->last.col, r->last.sd_col[0] ? r->last.sd_col : NULL,
+                        r->last.n_col[0] ? r->last.n_col : NULL};
+  need_columns(r, q, file, t, cols, 3);
+}
+
+void nl_harness_verdict_control(nl_harness *r, const char *control, const char *file, const nl_table *t,
+                                size_t row)
+{
+  control_start(r, control, file, t, row);
+  if (r->last.type == LAST_LESS)
+    nl_harness_die(r, 1, "control '%s': the verdict compares two rows: nl_harness_verdict_control_less", control);
+  double x = nl_table_value(t, row, r->last.col);
+  double sd = r->last.sd_col[0] ? nl_table_value(t, row, r->last.sd_col) : NAN;
+  nl_harness_outcome v;
+  char reason[320], ours[192];
+  nl_error err;
+  nl_status st;
+  if (r->last.type == LAST_P) {
+    st = nl_harness_verdict_decide(r->last.rule, NAN, x, NAN, &v, reason, sizeof reason, &err);
+    snprintf(ours, sizeof ours, "%s %.4g, p = %.2g", r->last.sd_col, sd, x);
+  } else if (r->last.type == LAST_EQUIV) {
+    double df = r->last.n_col[0] ? nl_table_value(t, row, r->last.n_col) - 1 : 0;
+    st = nl_harness_verdict_decide_equiv(r->last.rule, r->last.paper, x, sd, df, &v, reason, sizeof reason, &err);
+    snprintf(ours, sizeof ours, "%.4g +- %.2g", x, sd);
+  } else {
+    if (!strncmp(r->last.rule, "factor ", 7) && !(x > 0)) {
+      st = NL_OK;   /* a ratio's rule cannot hold for a value <= 0 */
+      v = NL_VERDICT_NOT;
+      snprintf(reason, sizeof reason, "%g is not a positive value", x);
+    } else {
+      st = nl_harness_verdict_decide(r->last.rule, r->last.paper, x, sd, &v, reason, sizeof reason, &err);
+    }
+    nl_table_format_double(ours, x);
+  }
+  if (st) nl_harness_die(r, 1, "control '%s': %s", control, err.msg);
+  control_row(r, control, ours, v, reason);
+  (void)file;
+}
+
+void nl_harness_verdict_control_less(nl_harness *r, const char *control, const char *file,
+                                     const nl_table *t, size_t row_a, size_t row_b)
+{
+  control_start(r, control, file, t, row_a);
+  if (r->last.type != LAST_LESS)
+    nl_harness_die(r, 1, "control '%s': the verdict is not a comparison of two rows", control);
+  if (row_b >= t->nrows) nl_harness_die(r, 1, "control '%s': %s has no row %zu", control, file, row_b + 1);
+  const char *col = r->last.col, *sd_col = r->last.sd_col, *n_col = r->last.n_col;
+  double a = nl_table_value(t, row_a, col), b = nl_table_value(t, row_b, col);
+  double sa = nl_table_value(t, row_a, sd_col), sb = nl_table_value(t, row_b, sd_col);
+  double na = nl_table_value(t, row_a, n_col), nb = nl_table_value(t, row_b, n_col), p = NAN;
+  nl_error err;
+  if (nl_stats_welch_p(a, sa, (size_t)na, b, sb, (size_t)nb, &p, &err)) p = a == b ? 1 : 0;
+  nl_harness_outcome v = !(a < b) ? NL_VERDICT_NOT : p < r->last.alpha ? NL_VERDICT_REPRODUCED : NL_VERDICT_PARTLY;
+  char ours[128], reason[128];
+  snprintf(ours, sizeof ours, "%.4g +- %.2g vs %.4g +- %.2g", a, sa, b, sb);
+  snprintf(reason, sizeof reason, "%s; Welch p = %.2g", a < b ? "lower" : "not lower", p);
+  control_row(r, control, ours, v, reason);
 }
 
 void nl_harness_verdict_rows(nl_harness *r, const char *file, const nl_table *t, const char *what,

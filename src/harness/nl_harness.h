@@ -321,6 +321,13 @@ char **nl_harness_tables(const char *dir, size_t *n, nl_error *err);
  *   abs A B     |ours - paper| <= A                    (absolute difference)
  *   factor A B  max(ours/paper, paper/ours) <= A       (ratios, counts; both > 0)
  *   sd A B      |ours - paper| <= A sd (sd_col: the spread over seeds of ours)
+ * a claim that two values are equal, close or "very similar", decided by
+ * two one-sided tests (TOST) against a margin M fixed before the run from
+ * the paper's printed precision or a rule stated in docs/experiments.md
+ * (nl_harness_verdict_equiv; never by a failure to reject a difference):
+ *   equiv rel M A B   |ours - paper| < M |paper| shown at TOST p <= A
+ *                     (reproduced), p <= B (partly)
+ *   equiv abs M A B   |ours - paper| < M, likewise
  * and, for a claim decided by a test (nl_harness_verdict_p), on its p-value:
  *   p A B       the claimed effect: reproduced when p <= A, partly when p <= B
  *   fit A B     a claimed law (A >= B): reproduced when p >= A, partly when p >= B
@@ -345,7 +352,7 @@ char **nl_harness_tables(const char *dir, size_t *n, nl_error *err);
  * or kind, a missing column, or sd without sd_col is a bug in the
  * experiment: exit 1. nl_harness_end writes the rows to verdicts.tsv
  * (columns quantity, source, paper, ours, ours_sd, rule, kind, verdict,
- * reason); the entry script gathers every folder's verdicts.tsv into the
+ * reason, control, control_ours, control_verdict); the entry script gathers every folder's verdicts.tsv into the
  * table at the top of REPORT.md. The regression check ignores verdicts.tsv:
  * each value in it is a copy of a value compared, by its own rule, in the
  * table it came from. */
@@ -377,6 +384,33 @@ void nl_harness_verdict_less(nl_harness *r, const char *file, const nl_table *t,
 void nl_harness_verdict_p(nl_harness *r, const char *file, const nl_table *t, size_t row,
                           const char *quantity, const char *claim, const char *stat_col,
                           const char *p_col, const char *rule, const char *kind, const char *note);
+/* An equivalence (rule "equiv rel|abs M A B", above): ours in ours_col with
+ * its standard error in se_col and n_col the number of seeds it is a mean
+ * over (t on n - 1 degrees of freedom; n_col NULL: normal). */
+void nl_harness_verdict_equiv(nl_harness *r, const char *file, const nl_table *t, size_t row,
+                              const char *quantity, const char *paper_col, const char *ours_col,
+                              const char *se_col, const char *n_col, const char *rule, const char *kind,
+                              const char *note);
+/* The negative control of the verdict declared just before (any of the
+ * calls above but nl_harness_verdict_figure): the same rule, with the same
+ * paper value and thresholds, run on a baseline without the method (random
+ * or unoptimised tables, a flat image, a shuffled pattern, the other
+ * objective, noise without the method), named in words by `control`. Its
+ * value is row `row` of t (the baseline's own table, or another row of the
+ * verdict's) in the columns of the same names the verdict read: ours_col
+ * and sd_col, se_col and n_col, stat_col and p_col; for
+ * nl_harness_verdict_less, rows row and row_b (nl_harness_verdict_control_less).
+ * verdicts.tsv gets control (the words), control_ours and control_verdict
+ * ("-" on rows without one). A value outside a factor rule's domain (<= 0)
+ * is "not reproduced". An independent row whose control also comes out
+ * "reproduced" is no evidence for the claim (the rule passes without the
+ * method): the harness turns its kind to "by construction" and says why in
+ * the reason. Calling it with no verdict before, after a figure, or twice
+ * for one verdict is a bug in the experiment: exit 1. */
+void nl_harness_verdict_control(nl_harness *r, const char *control, const char *file, const nl_table *t,
+                                size_t row);
+void nl_harness_verdict_control_less(nl_harness *r, const char *control, const char *file,
+                                     const nl_table *t, size_t row_a, size_t row_b);
 /* A claim no number decides, shown by a figure of the run: kind
  * "qualitative", verdict "see figure", source the figure's file name. */
 void nl_harness_verdict_figure(nl_harness *r, const char *quantity, const char *claim,
@@ -387,6 +421,11 @@ void nl_harness_verdict_figure(nl_harness *r, const char *quantity, const char *
 nl_status nl_harness_verdict_decide(const char *rule, double paper, double ours, double sd,
                                     nl_harness_outcome *outcome, char *reason, size_t len,
                                     nl_error *err);
+/* The same for "equiv rel|abs M A B": ours with standard error se on df
+ * degrees of freedom (df < 1: normal). */
+nl_status nl_harness_verdict_decide_equiv(const char *rule, double paper, double ours, double se,
+                                          double df, nl_harness_outcome *outcome, char *reason,
+                                          size_t len, nl_error *err);
 /* NL_OK when `kind` is one of the kinds above (K, M, N >= 1). */
 nl_status nl_harness_verdict_kind_check(const char *kind, nl_error *err);
 /* The word in the verdict column: the outcome capped by the kind

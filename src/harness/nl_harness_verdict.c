@@ -6,6 +6,7 @@
  * once. */
 #include "harness/nl_harness.h"
 
+#include <gsl/gsl_cdf.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -55,6 +56,9 @@ nl_status nl_harness_verdict_decide(const char *rule, double paper, double ours,
   int used = 0;
   if (sscanf(rule, "%15s %lf %lf %n", kind, &a, &b, &used) != 3 || rule[used])
     kind[0] = 0;
+  if (!strcmp(kind, "equiv"))
+    return nl_fail(err, NL_EINVAL, "verdict rule '%s': an equivalence needs its degrees of freedom: "
+                   "nl_harness_verdict_decide_equiv", rule);
   if (!strcmp(kind, "p") || !strcmp(kind, "fit")) {
     /* p-value rules: "p A B" an effect (small p), "fit A B" a law (large p) */
     int effect = !strcmp(kind, "p");
@@ -96,5 +100,40 @@ nl_status nl_harness_verdict_decide(const char *rule, double paper, double ours,
     else snprintf(reason, len, "%.3g sd %s the paper", d, diff >= 0 ? "above" : "below");
   }
   *verdict = d <= a ? NL_VERDICT_REPRODUCED : d <= b ? NL_VERDICT_PARTLY : NL_VERDICT_NOT;
+  return NL_OK;
+}
+
+/* Two one-sided tests (Schuirmann 1987): ours - paper = d with standard
+ * error se on df degrees of freedom is shown to lie inside (-M, M) when
+ * both H0: d <= -M and H0: d >= M are rejected; the p-value is the larger
+ * of the two one-sided p's. A failure to reject a difference never counts
+ * as equality here: a wide se gives a large p whatever d is. */
+nl_status nl_harness_verdict_decide_equiv(const char *rule, double paper, double ours, double se,
+                                          double df, nl_harness_outcome *verdict, char *reason,
+                                          size_t len, nl_error *err)
+{
+  char scale[8];
+  double m, a, b;
+  int used = 0;
+  if (sscanf(rule, "equiv %7s %lf %lf %lf %n", scale, &m, &a, &b, &used) != 4 || rule[used] ||
+      (strcmp(scale, "rel") && strcmp(scale, "abs")) || !(m > 0) || !(a >= 0) || !(b >= a) || !(b <= 1))
+    return nl_fail(err, NL_EINVAL, "verdict rule '%s': wanted 'equiv rel|abs M A B' with M > 0 and "
+                   "0 <= A <= B <= 1", rule);
+  if (!isfinite(paper) || !isfinite(ours) || !(se >= 0) || !isfinite(se))
+    return nl_fail(err, NL_EINVAL, "verdict rule '%s': paper %g, ours %g, se %g: not finite", rule, paper,
+                   ours, se);
+  int rel = !strcmp(scale, "rel");
+  if (rel && paper == 0) return nl_fail(err, NL_EINVAL, "verdict rule '%s': the paper's value is 0", rule);
+  double margin = rel ? m * fabs(paper) : m, d = ours - paper, p;
+  if (se == 0) p = fabs(d) < margin ? 0 : 1;
+  else if (df >= 1) p = fmax(gsl_cdf_tdist_Q((d + margin) / se, df), gsl_cdf_tdist_P((d - margin) / se, df));
+  else p = fmax(gsl_cdf_ugaussian_Q((d + margin) / se), gsl_cdf_ugaussian_P((d - margin) / se));
+  *verdict = p <= a ? NL_VERDICT_REPRODUCED : p <= b ? NL_VERDICT_PARTLY : NL_VERDICT_NOT;
+  if (rel)
+    snprintf(reason, len, "TOST p = %.2g within +-%.3g%%: %.3g%% %s the paper, se %.2g%%", p, 100 * m,
+             100 * fabs(d) / fabs(paper), d >= 0 ? "above" : "below", 100 * se / fabs(paper));
+  else
+    snprintf(reason, len, "TOST p = %.2g within +-%.3g: %.3g %s the paper, se %.2g", p, m, fabs(d),
+             d >= 0 ? "above" : "below", se);
   return NL_OK;
 }

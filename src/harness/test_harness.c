@@ -221,6 +221,14 @@ NL_TEST(manifest_round_trip)
   nl_harness_report_table(r, t, NULL, 4);
   nl_harness_verdict(r, "t.tsv", t, 0, "E", "paper_E", "E", NULL, "rel 0.05 0.25", "independent", "a reading");
   nl_harness_verdict(r, "t.tsv", t, 0, "E fitted", "paper_E", "E", NULL, "rel 0.05 0.25", "fitted 2/3", NULL);
+  /* controls: the flat image's E is far off (the row stays independent);
+   * a control as good as the method turns the row to "by construction" */
+  nl_table_append(t, "sddd", "flat", 0.5, 0.9, 0.06);
+  nl_table_append(t, "sddd", "random", 0.5, 0.0601, 0.06);
+  nl_harness_verdict(r, "t.tsv", t, 0, "E ctl", "paper_E", "E", NULL, "rel 0.05 0.25", "independent", NULL);
+  nl_harness_verdict_control(r, "a flat image", "t.tsv", t, 1);
+  nl_harness_verdict(r, "t.tsv", t, 0, "E same", "paper_E", "E", NULL, "rel 0.05 0.25", "independent", NULL);
+  nl_harness_verdict_control(r, "random tables", "t.tsv", t, 2);
   nl_harness_verdict_figure(r, "the look", "looks like marble", "panels.png", NULL);
   nl_table_free(t);
   NL_CHECK(nl_harness_end(r) == 0);
@@ -233,14 +241,19 @@ NL_TEST(manifest_round_trip)
   nl_table *vt = NULL;
   NL_CHECK(nl_table_read(vp, NL_TABLE_TEXT, &vt, &err0) == NL_OK);
   if (vt) {
-    NL_CHECK(vt->nrows == 3 && !strcmp(nl_table_text(vt, 0, "verdict"), "reproduced"));
+    NL_CHECK(vt->nrows == 5 && !strcmp(nl_table_text(vt, 0, "verdict"), "reproduced"));
+    NL_CHECK(!strcmp(nl_table_text(vt, 0, "control"), "-") && !strcmp(nl_table_text(vt, 0, "control_verdict"), "-"));
+    NL_CHECK(!strcmp(nl_table_text(vt, 2, "kind"), "independent") && !strcmp(nl_table_text(vt, 2, "control"), "a flat image"));
+    NL_CHECK(!strcmp(nl_table_text(vt, 2, "control_verdict"), "not reproduced") && nl_table_value(vt, 2, "control_ours") == 0.9);
+    NL_CHECK(!strcmp(nl_table_text(vt, 3, "kind"), "by construction") && !strcmp(nl_table_text(vt, 3, "verdict"), "by construction"));
+    NL_CHECK(!strcmp(nl_table_text(vt, 3, "control_verdict"), "reproduced") && strstr(nl_table_text(vt, 3, "reason"), "its control (random tables) passes"));
     NL_CHECK(!strcmp(nl_table_text(vt, 0, "kind"), "independent"));
     /* a fitted reading is capped: it cannot be "reproduced" */
     NL_CHECK(!strcmp(nl_table_text(vt, 1, "verdict"), "consistent after fit"));
-    NL_CHECK(!strcmp(nl_table_text(vt, 2, "verdict"), "see figure") && !strcmp(nl_table_text(vt, 2, "kind"), "qualitative"));
+    NL_CHECK(!strcmp(nl_table_text(vt, 4, "verdict"), "see figure") && !strcmp(nl_table_text(vt, 4, "kind"), "qualitative"));
     /* the reason: the distance and the note, the thresholds left to the rule's column */
     NL_CHECK(!strcmp(nl_table_text(vt, 0, "reason"), "3.19% below the paper; a reading"));
-    NL_CHECK(!strcmp(nl_table_text(vt, 2, "reason"), "the figure decides"));
+    NL_CHECK(!strcmp(nl_table_text(vt, 4, "reason"), "the figure decides"));
     NL_CHECK(!strcmp(nl_table_text(vt, 0, "source"), "t.tsv:E"));
   }
   nl_table_free(vt);
@@ -405,6 +418,17 @@ NL_TEST(verdict_rules)
   NL_CHECK(v == NL_VERDICT_NOT);
   NL_CHECK(nl_harness_verdict_decide("fit 0.001 0.05", NAN, 0.5, NAN, &v, why, sizeof why, &err) == NL_EINVAL);
   NL_CHECK(nl_harness_verdict_decide("p 0.01 0.05", NAN, 1.5, NAN, &v, why, sizeof why, &err) == NL_EINVAL);
+  /* equivalence by two one-sided tests; p from scipy 1.10:
+   * max(t.sf(7, 9), t.cdf(-3, 9)) = 0.007478181955207101 */
+  NL_CHECK(nl_harness_verdict_decide_equiv("equiv rel 0.05 0.01 0.05", 1, 1.02, 0.01, 9, &v, why, sizeof why, &err) == NL_OK);
+  NL_CHECK(v == NL_VERDICT_REPRODUCED && strstr(why, "TOST p = 0.0075"));
+  /* normal: max(norm.sf(3.5), norm.cdf(-1.5)) = 0.06680720126885807 */
+  NL_CHECK(nl_harness_verdict_decide_equiv("equiv abs 0.01 0.01 0.1", 0, 0.004, 0.004, 0, &v, why, sizeof why, &err) == NL_OK);
+  NL_CHECK(v == NL_VERDICT_PARTLY && strstr(why, "TOST p = 0.067"));
+  /* a wide se never shows equality, however close ours is */
+  NL_CHECK(nl_harness_verdict_decide_equiv("equiv rel 0.05 0.01 0.05", 1, 1.0, 1.0, 9, &v, why, sizeof why, &err) == NL_OK && v == NL_VERDICT_NOT);
+  NL_CHECK(nl_harness_verdict_decide("equiv rel 0.05 0.01 0.05", 1, 1, 0.1, &v, why, sizeof why, &err) == NL_EINVAL);
+  NL_CHECK(nl_harness_verdict_decide_equiv("equiv rel 0 0.01 0.05", 1, 1, 0.1, 9, &v, why, sizeof why, &err) == NL_EINVAL);
   /* kinds, and the cap each puts on the word */
   const char *good[] = {"independent", "fitted 1/6", "fitted 4/12", "selected 1/19", "by construction", "qualitative"};
   for (size_t i = 0; i < sizeof good / sizeof *good; i++)
