@@ -336,25 +336,25 @@ static int caption_wrap(const char *text, int scale, int width, char *out)
   return lines;
 }
 
-nl_image *nl_image_montage(const nl_image *const *images, const char *const *labels, int n,
-                           int cols, const char *title)
+void nl_image_montage_layout(const int *widths, const int *heights, const char *const *labels, int n,
+                             int cols, const char *title, nl_image_montage_geometry *g, nl_image_rect *rects)
 {
   int cw = 1, chh = 1, pad = 8;
   for (int i = 0; i < n; i++) {
-    if (images[i]->width > cw) cw = images[i]->width;
-    if (images[i]->height > chh) chh = images[i]->height;
+    if (widths[i] > cw) cw = widths[i];
+    if (heights[i] > chh) chh = heights[i];
   }
   if (cols < 1) cols = 1;
   if (cols > n) cols = n;
   int f = 1;
   while (pad + cols * (cw / f + pad) > NL_MONTAGE_MAX_WIDTH && cw / f > 64) f++;
-  if (f > 1) {
-    nl_image **small = nl_xmalloc((size_t)n * sizeof *small);
-    for (int i = 0; i < n; i++) small[i] = nl_image_downsample(images[i], f);
-    nl_image *m = nl_image_montage((const nl_image *const *)small, labels, n, cols, title);
-    for (int i = 0; i < n; i++) nl_image_free(small[i]);
-    free(small);
-    return m;
+  if (f > 1) {   /* the panels box-filtered down by f (nl_image_downsample's sizes) */
+    cw = chh = 1;
+    for (int i = 0; i < n; i++) {
+      int w = widths[i] / f > 1 ? widths[i] / f : 1, h = heights[i] / f > 1 ? heights[i] / f : 1;
+      if (w > cw) cw = w;
+      if (h > chh) chh = h;
+    }
   }
   /* Captions scale with the panels so they stay legible in large montages. */
   int scale = cw >= 384 ? 3 : 2;
@@ -369,25 +369,68 @@ nl_image *nl_image_montage(const nl_image *const *images, const char *const *lab
   int caph = 12 * scale * lines + pad;
   /* The title, too, is broken into lines as wide as the grid. */
   int width = pad + cols * (cw + pad);
-  char *tbuf = title ? nl_xmalloc(strlen(title) + 1) : NULL;
-  int tlines = title ? caption_wrap(title, scale, width - 2 * pad, tbuf) : 0;
+  int tlines = 0;
+  if (title) {
+    char *tbuf = nl_xmalloc(strlen(title) + 1);
+    tlines = caption_wrap(title, scale, width - 2 * pad, tbuf);
+    free(tbuf);
+  }
   int titleh = title ? 14 * scale * tlines + pad : 0;
   int rows = (n + cols - 1) / cols;
-  nl_image *m = nl_image_alloc(width, titleh + pad + rows * (chh + caph + pad), 3);
+  g->width = width;
+  g->height = titleh + pad + rows * (chh + caph + pad);
+  g->factor = f;
+  g->cols = cols;
+  g->pad = pad;
+  g->scale = scale;
+  g->cell_w = cw;
+  g->cell_h = chh;
+  g->caption_h = caph;
+  g->title_h = titleh;
+  for (int i = 0; rects && i < n; i++) {
+    int w = f > 1 ? (widths[i] / f > 1 ? widths[i] / f : 1) : widths[i];
+    int h = f > 1 ? (heights[i] / f > 1 ? heights[i] / f : 1) : heights[i];
+    rects[i].x = pad + (i % cols) * (cw + pad) + (cw - w) / 2;
+    rects[i].y = titleh + pad + (i / cols) * (chh + caph + pad);
+    rects[i].w = w;
+    rects[i].h = h;
+  }
+}
+
+nl_image *nl_image_montage(const nl_image *const *images, const char *const *labels, int n,
+                           int cols, const char *title)
+{
+  int *wh = nl_xmalloc(2 * (size_t)(n > 0 ? n : 1) * sizeof *wh);
+  for (int i = 0; i < n; i++) {
+    wh[i] = images[i]->width;
+    wh[n + i] = images[i]->height;
+  }
+  nl_image_montage_geometry g;
+  nl_image_rect *rect = nl_xmalloc((size_t)(n > 0 ? n : 1) * sizeof *rect);
+  nl_image_montage_layout(wh, wh + n, labels, n, cols, title, &g, rect);
+  free(wh);
+  nl_image *m = nl_image_alloc(g.width, g.height, 3);
   for (size_t i = 0; i < (size_t)m->width * m->height * 3; i++) m->data[i] = 1.0f;
   const float black[3] = {0, 0, 0};
-  char *l = tbuf;
-  for (int line = 0; l; line++) {
-    char *nl = strchr(l, '\n');
-    if (nl) *nl = 0;
-    nl_image_text(m, pad, pad + 14 * scale * line, scale, l, black);
-    l = nl ? nl + 1 : NULL;
+  int scale = g.scale, pad = g.pad, cw = g.cell_w, chh = g.cell_h;
+  cols = g.cols;
+  if (title) {
+    char *tbuf = nl_xmalloc(strlen(title) + 1);
+    caption_wrap(title, scale, g.width - 2 * pad, tbuf);
+    char *l = tbuf;
+    for (int line = 0; l; line++) {
+      char *nl = strchr(l, '\n');
+      if (nl) *nl = 0;
+      nl_image_text(m, pad, pad + 14 * scale * line, scale, l, black);
+      l = nl ? nl + 1 : NULL;
+    }
+    free(tbuf);
   }
-  free(tbuf);
   for (int i = 0; i < n; i++) {
-    nl_image *rgb = nl_image_convert(images[i], 3);
-    int x0 = pad + (i % cols) * (cw + pad) + (cw - rgb->width) / 2;
-    int y0 = titleh + pad + (i / cols) * (chh + caph + pad);
+    nl_image *small = g.factor > 1 ? nl_image_downsample(images[i], g.factor) : NULL;
+    nl_image *rgb = nl_image_convert(small ? small : images[i], 3);
+    nl_image_free(small);
+    int x0 = rect[i].x, y0 = rect[i].y;
     for (int y = 0; y < rgb->height; y++)
       memcpy(nl_image_pixel(m, x0, y0 + y), nl_image_pixel(rgb, 0, y), (size_t)rgb->width * 3 * sizeof(float));
     if (labels && labels[i]) {
@@ -406,5 +449,6 @@ nl_image *nl_image_montage(const nl_image *const *images, const char *const *lab
     }
     nl_image_free(rgb);
   }
+  free(rect);
   return m;
 }

@@ -87,6 +87,23 @@ nl_image *nl_image_downsample(const nl_image *im, int f);
 nl_image *nl_image_montage(const nl_image *const *images, const char *const *labels, int n,
                            int cols, const char *title);
 
+/* Where nl_image_montage puts things, for the same panel sizes (widths[i] x
+ * heights[i]), labels, cols and title, computed without drawing: a test
+ * reads a panel back out of a montage file at rects[i] (n of them; may be
+ * NULL) to compare it with what its caption says. factor > 1 when the panels
+ * were box-filtered down (nl_image_downsample) to fit NL_MONTAGE_MAX_WIDTH:
+ * rects are then the reduced panels'. */
+typedef struct { int x, y, w, h; } nl_image_rect;
+typedef struct {
+  int width, height;           /* the montage */
+  int factor;                  /* reduction of every panel, 1 for none */
+  int cols, pad, scale;        /* grid columns, gap in pixels, caption font scale */
+  int cell_w, cell_h;          /* a cell, the largest (reduced) panel */
+  int caption_h, title_h;      /* caption band under each row, title band above */
+} nl_image_montage_geometry;
+void nl_image_montage_layout(const int *widths, const int *heights, const char *const *labels, int n,
+                             int cols, const char *title, nl_image_montage_geometry *g, nl_image_rect *rects);
+
 /* OpenImageIO's version string (the one this build was compiled against),
  * for manifests; it does not load the image back-end. */
 const char *nl_image_library_version(void);
