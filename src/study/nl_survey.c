@@ -85,8 +85,11 @@ static double separate_sd(const nl_noise_basis *b, const nl_noise_octaves *o,
   return sqrt(var);
 }
 
+/* Seed k's statistics of the sum rendered into v, which keeps the sum (the
+ * first seed's is the picture the montage shows); scratch holds the
+ * octaves rendered alone for separate_sd. */
 static void one_seed(nl_study_survey *s, nl_study_basis_kind kind, const nl_noise_octaves *o, const nl_noise_window *win,
-                     unsigned long seed, int k, double *v)
+                     unsigned long seed, int k, double *v, double *scratch)
 {
   nl_basis *b;
   nl_error err;
@@ -104,7 +107,7 @@ static void one_seed(nl_study_survey *s, nl_study_basis_kind kind, const nl_nois
   free(f);
   s->axis[k] = axis_fraction(&b->noise, o, win, NL_STUDY_AXIS_POINTS(win->w, win->h), seed,
                              &s->axis_worst[k]);
-  s->sd_sep[k] = o->n == 1 ? s->sd[k] : separate_sd(&b->noise, o, win, v);
+  s->sd_sep[k] = o->n == 1 ? s->sd[k] : separate_sd(&b->noise, o, win, scratch);
   s->bound = nl_noise_octaves_bound(o, b->noise.bound);
   nl_basis_free(b);
 }
@@ -127,9 +130,10 @@ nl_study_survey *nl_study_survey_run(nl_study_basis_kind kind, const nl_noise_oc
   s->freq = nl_xmalloc((size_t)s->nbins * sizeof *s->freq);
   s->power = nl_xmalloc((size_t)nseeds * s->nbins * sizeof *s->power);
   s->first = nl_xmalloc((size_t)win->w * win->h * sizeof *s->first);
-  double *v = nl_xmalloc((size_t)win->w * win->h * sizeof *v);
+  double *v = nl_xmalloc(2 * (size_t)win->w * win->h * sizeof *v);
   for (int k = 0; k < nseeds; k++)
-    one_seed(s, kind, o, win, nl_seed_replicate(seed0, k), k, k == 0 ? s->first : v);
+    one_seed(s, kind, o, win, nl_seed_replicate(seed0, k), k, k == 0 ? s->first : v,
+             v + (size_t)win->w * win->h);
   /* nl_spectrum_radial bins in cycles per pixel; a pixel is size/w units. */
   for (int b = 0; b < s->nbins; b++) s->freq[b] = (b + 0.5) * 0.5 / s->nbins * win->w / win->size;
   free(v);
