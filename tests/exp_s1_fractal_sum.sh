@@ -6,6 +6,10 @@ set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # tables by column name; refused
 exp="$1" expect="$2" out="$3"
 "$exp" --quick "${NOIMG[@]}" --out "$out" >/dev/null
+# Every panel against its caption, recomputed point by point
+# (tests/oracle_survey.c): this run's when it wrote images, and the
+# committed paper-scale figures the report shows.
+panels_oracle survey s1 "$out" "$(dirname "$0")/../results/s1_fractal_sum"
 "$expect" "$out/fractal_distribution.tsv" rows=4 'max_abs<=bound' 'sd>0' 'octaves>=1' \
   'max_abs_over_bound<1' image:fractal_panels.png file:manifest.tsv file:report.md
 "$expect" "$out/fractal_spectrum.tsv" rows=64 'freq>0'

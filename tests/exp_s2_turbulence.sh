@@ -6,6 +6,10 @@ set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # NOIMG
 exp="$1" expect="$2" out="$3"
 "$exp" --quick "${NOIMG[@]}" --out "$out" >/dev/null
+# Every panel against its caption, recomputed point by point
+# (tests/oracle_survey.c): this run's when it wrote images, and the
+# committed paper-scale figures the report shows.
+panels_oracle survey s2 "$out" "$(dirname "$0")/../results/s2_turbulence"
 "$expect" "$out/turbulence_distribution.tsv" rows=4 'min>=0' 'mean>0' 'max_abs<=bound' \
   image:turbulence_panels.png
 "$expect" "$out/turbulence_spectrum.tsv" rows=64

@@ -6,6 +6,10 @@ set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # NOIMG
 exp="$1" expect="$2" out="$3"
 "$exp" --quick "${NOIMG[@]}" --out "$out" >/dev/null
+# Every panel against its caption, recomputed point by point
+# (tests/oracle_survey.c): this run's when it wrote images, and the
+# committed paper-scale figures the report shows.
+panels_oracle survey s3 "$out" "$(dirname "$0")/../results/s3_fbm"
 for k in gain lacunarity; do
   "$expect" "$out/${k}_distribution.tsv" rows=5 'max_abs<=bound' 'sd>0' 'octaves==6' \
     "image:${k}_panels.png"

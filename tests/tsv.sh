@@ -122,3 +122,16 @@ verdict_kinds() {
         printf "verdicts: %d independent, %d qualitative, %d rows\n", k["independent"],
           k["qualitative"], NR - 1; exit 1 } }' "$1"
 }
+
+# panels_oracle FAMILY ID DIR...: the figures of each run folder DIR against
+# their captions, by tests/oracle_FAMILY (oracle.h) built beside expect;
+# a folder whose manifest says it wrote no images is skipped. ID names the
+# experiment to the oracle (s1, c4...). Fails with the oracle's lines.
+panels_oracle() {
+  local family="$1" id="$2" d
+  shift 2
+  for d in "$@"; do
+    grep -q $'^images\tyes$' "$d/manifest.tsv" || continue
+    "$(dirname "$expect")/oracle_$family" "$id" "$d" || { echo "panels of $d differ from their captions"; return 1; }
+  done
+}
