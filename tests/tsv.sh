@@ -132,6 +132,7 @@ panels_oracle() {
   shift 2
   for d in "$@"; do
     grep -q $'^images\tyes$' "$d/manifest.tsv" || continue
+    # shellcheck disable=SC2154  # expect: the tests' instrument, set by the sourcing script
     "$(dirname "$expect")/oracle_$family" "$id" "$d" || { echo "panels of $d differ from their captions"; return 1; }
   done
 }
