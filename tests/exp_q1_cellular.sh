@@ -18,13 +18,15 @@ tsv_awk 'NR>1 && v("rule")=="inverse-cdf" && (n("chi2_p")<0.01 || n("ks_p")<0.01
 "$expect" "$out/counts.tsv" rows=21 'poisson>0' 'closest>=0' 'inverse_cdf>=0' 'closest_last>=0'
 # The verdict: the paper's rule (closest p(m), 16-bit cube seeds) against
 # Poisson(4), every seed's cubes pooled: rejected (chi-square 3.1e4, p = 0).
-"$expect" "$out/count_law.tsv" rows=4 'p>=0' 'p<=1' 'chi2>0' 'cubes==12288'
+# Its negative control, row 5: every cube with 4 points (no count law),
+# rejected too (chi-square 5.1e4): the test tells a law from no law.
+"$expect" "$out/count_law.tsv" rows=5 'p>=0' 'p<=1' 'chi2>0' 'cubes==12288'
 tsv_awk 'v("rule") == "closest" && n("p") > 1e-6 { print "closest: p " n("p"); exit 1 }
   v("seeding") == "full hash" && n("p") < 0.01 { print "full hash pooled: p " n("p"); exit 1 }' \
   "$out/count_law.tsv"
 tsv_awk -v want=1 'FNR > 1 { rows++
     if (v("kind") != "independent" || v("verdict") != "not reproduced" \
-        || v("rule") != "fit 0.01 0.001") {
+        || v("rule") != "fit 0.01 0.001" || v("control_verdict") != "not reproduced") {
       print "verdict: " $0; exit 1 } }
   END { if (rows != want) { print "verdicts: " rows " rows"; exit 1 } }' "$out/verdicts.tsv"
 # The check: inverse-CDF counts with r from a full hash of (seed, i, j, k)
