@@ -9,6 +9,10 @@ set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 exp="$1" expect="$2" out="$3"
 "$exp" --quick "${NOIMG[@]}" --out "$out" >/dev/null
+# Every panel against its caption, recomputed point by point
+# (tests/oracle_sq.c): this run's when it wrote images, and the committed
+# paper-scale figures the report shows.
+panels_oracle sq q1 "$out" "$(dirname "$0")/../results/q1_cellular"
 "$expect" "$out/summary.tsv" rows=3 'mean_f1_theory>0.34' 'mean_f1_theory<0.36' image:planes.png
 tsv_awk 'v("rule")=="inverse-cdf" && (n("chi2_rejects")!=0 || n("ks_rejects")!=0 || n("mean_count")<3.8 || n("mean_count")>4.2) {print "row " NR " (" v("rule") ") out of range: " $0; exit 1}
             v("rule")=="closest" && (n("chi2_rejects")!=n("seeds") || n("ks_rejects")!=n("seeds")) {print "row " NR " (" v("rule") ") out of range: " $0; exit 1}

@@ -6,6 +6,10 @@ set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # byte_reruns
 exp="$1" expect="$2" out="$3"
 "$exp" --quick "${NOIMG[@]}" --out "$out" >/dev/null
+# Every panel against its caption, recomputed point by point
+# (tests/oracle_sq.c): this run's when it wrote images, and the committed
+# paper-scale figures the report shows.
+panels_oracle sq q2 "$out" "$(dirname "$0")/../results/q2_colour"
 "$expect" "$out/values.tsv" rows=6 'sd>0.01' 'max>min' 'max<=24.8' 'min>=-12' \
   image:colour.png file:report.md
 # What eq. 4 makes of each pattern (spline_use.tsv): the clamped share and

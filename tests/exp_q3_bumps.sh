@@ -12,6 +12,10 @@ set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 exp="$1" expect="$2" out="$3"
 "$exp" --quick "${NOIMG[@]}" --out "$out" >/dev/null
+# Every panel against its caption, recomputed point by point
+# (tests/oracle_sq.c): this run's when it wrote images, and the committed
+# paper-scale figures the report shows.
+panels_oracle sq q3 "$out" "$(dirname "$0")/../results/q3_bumps"
 "$expect" "$out/bumps.tsv" rows=6 image:bumps.png file:report.md
 tsv_awk 'NR==2 && (n("bump_mean")!=0 || n("bump_max")!=0 || n("shade_sd")!=0) {print "original plane not flat"; exit 1}
             NR==2 && (n("shade_mean") - 0.70710678118654752 > 1e-12 || 0.70710678118654752 - n("shade_mean") > 1e-12) {print "flat shade " n("shade_mean"); exit 1}

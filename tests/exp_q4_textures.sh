@@ -6,6 +6,10 @@ set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # tables by column name; refused
 exp="$1" expect="$2" out="$3"
 "$exp" --quick "${NOIMG[@]}" --out "$out" >/dev/null
+# Every panel against its caption, recomputed point by point
+# (tests/oracle_sq.c): this run's when it wrote images, and the committed
+# paper-scale figures the report shows.
+panels_oracle sq q4 "$out" "$(dirname "$0")/../results/q4_textures"
 "$expect" "$out/textures.tsv" rows=12 'sd>0.005' image:clouds.png image:textures.png file:report.md
 "$expect" "$out/wood.tsv" rows=2 'perturb_rings_sd>0.05' 'perturb_rings_sd<1' \
   'ring_sd~0.353:0.01' image:wood.png

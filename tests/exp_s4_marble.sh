@@ -6,6 +6,10 @@ set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # NOIMG
 exp="$1" expect="$2" out="$3"
 "$exp" --quick "${NOIMG[@]}" --out "$out" >/dev/null
+# Every panel against its caption, recomputed point by point
+# (tests/oracle_sq.c): this run's when it wrote images, and the committed
+# paper-scale figures the report shows.
+panels_oracle sq s4 "$out" "$(dirname "$0")/../results/s4_marble"
 "$expect" "$out/distribution.tsv" rows=4 'u_mean~0.5:0.05' 'u_sd~0.35355:0.02' image:panels.png
 "$expect" "$out/u_density.tsv" rows=20 'u>0' 'u<1'
 # The density itself. With the phase 2 pi stripes (y + a F(p)) uniform mod
