@@ -28,11 +28,21 @@ tsv_awk 'NR>1 && v("rule")=="inverse-cdf" && (n("chi2_p")<0.01 || n("ks_p")<0.01
 tsv_awk 'v("rule") == "closest" && n("p") > 1e-6 { print "closest: p " n("p"); exit 1 }
   v("seeding") == "full hash" && n("p") < 0.01 { print "full hash pooled: p " n("p"); exit 1 }' \
   "$out/count_law.tsv"
-tsv_awk -v want=1 'FNR > 1 { rows++
+tsv_awk 'FNR > 1 && v("quantity") == "count law of the paper'"'"'s rule" { rows++
     if (v("kind") != "independent" || v("verdict") != "not reproduced" \
         || v("rule") != "fit 0.01 0.001" || v("control_verdict") != "not reproduced") {
       print "verdict: " $0; exit 1 } }
-  END { if (rows != want) { print "verdicts: " rows " rows"; exit 1 } }' "$out/verdicts.tsv"
+  FNR > 1 && v("quantity") == "faces where some F_i jumps, paper'"'"'s rule" { rows++
+    if (v("kind") != "independent" || v("verdict") != "reproduced" \
+        || v("control_verdict") != "not reproduced") { print "verdict: " $0; exit 1 } }
+  END { if (rows != 2 || NR != 3) { print "verdicts: " NR - 1 " rows"; exit 1 } }' "$out/verdicts.tsv"
+# Continuity (sec. 3.1) across cube faces, where the 27 cubes searched
+# change: F1..F4 at both sides of 1000 x 3 random faces, 1e-7 apart, never
+# jump under the paper's rule (largest |dF| / step 0.99999: a distance is
+# 1-Lipschitz); searching x's own cube alone they jump at every face.
+"$expect" "$out/continuity.tsv" rows=2 'faces==3000' 'paper_jumps==0'
+tsv_awk 'v("search") == "27 cubes" && (n("jumps") != 0 || n("max_ratio") > 1.000001) { print; exit 1 }
+  v("search") == "own cube only" && n("jump_frac") < 0.9 { print; exit 1 }' "$out/continuity.tsv"
 # The check: inverse-CDF counts with r from a full hash of (seed, i, j, k)
 # pass on every seed (p 0.13-0.72 at seeds 1-3; paper scale: 0 of 10
 # rejected, pooled p = 0.24).
