@@ -44,6 +44,11 @@ int main(int argc, char **argv)
                             "octaves add detail at half the amplitude (images only)",
                             "fractal_panels.png", NULL);
   s1_report(r, d, law);
+  nl_harness_report_table(r, ctl,
+                          "The law's negative control (fractal_sd_control.tsv): the same octaves "
+                          "and gains all at the first octave's frequency, one noise summed with "
+                          "itself, against the same law; its sd is sd1 sum 2^-j",
+                          4);
   nl_table_free(law);
   nl_table_free(ctl);
   nl_table_free(seeds);

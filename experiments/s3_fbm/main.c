@@ -53,6 +53,11 @@ int main(int argc, char **argv)
   s3_sd_verdicts(r, lsd, "lacunarity_sd_law.tsv", lctl, "lacunarity_sd_control.tsv",
                  2); /* lacunarity 2: gain 0.5's row */
   s3_report_lacunarity(r, octaves, lsd, &win);
+  nl_harness_report_table(r, gctl,
+                          "The law's negative control for the gains (gain_sd_control.tsv): each "
+                          "row's octaves all at the first one's frequency, one noise summed with "
+                          "itself, against the same law; its sd is sd1 sum gain^j",
+                          4);
   nl_harness_verdict_figure(r, "fBm varying the gain", "higher gain, rougher fBm (images only)",
                             "gain_panels.png", NULL);
   nl_harness_verdict_figure(r, "fBm varying the lacunarity",
