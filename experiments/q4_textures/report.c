@@ -64,9 +64,9 @@ void q4_report(const q4 *q)
       "**Whose rings.** The rings of our wood come from the ring shader we added, not from the "
       "GCTBF: the shader without the basis shows %g and %g dark bands (table, trunk), with it "
       "%.1f and %.1f, and the GCTBF alone through the ramp %.1f and %.1f (rings.tsv). The "
-      "verdicts \"ramp below wood shader\" therefore pass their control, the shader without the "
-      "GCTBF, and count as by construction: Fig. 6's wood is not evidence that the GCTBF makes "
-      "rings.\n",
+      "verdicts \"ramp below wood shader\" have the shader without the GCTBF as their control: "
+      "where it passes the same rule, the row counts as by construction, and Fig. 6's wood is no "
+      "evidence that the GCTBF makes rings.\n",
       nl_table_value(wt, 0, "rings_geometry"), nl_table_value(wt, 1, "rings_geometry"),
       nl_table_value(wt, 0, "rings"), nl_table_value(wt, 1, "rings"),
       nl_table_value(wt, 0, "ramp_bands"), nl_table_value(wt, 1, "ramp_bands"));
