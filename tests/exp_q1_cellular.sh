@@ -9,6 +9,10 @@ set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 exp="$1" expect="$2" out="$3"
 "$exp" --quick "${NOIMG[@]}" --out "$out" >/dev/null
+# Every panel against its caption, recomputed point by point
+# (tests/oracle_sq.c): this run's when it wrote images, and the committed
+# paper-scale figures the report shows.
+panels_oracle sq q1 "$out" "$(dirname "$0")/../results/q1_cellular"
 "$expect" "$out/summary.tsv" rows=3 'mean_f1_theory>0.34' 'mean_f1_theory<0.36' image:planes.png
 tsv_awk 'v("rule")=="inverse-cdf" && (n("chi2_rejects")!=0 || n("ks_rejects")!=0 || n("mean_count")<3.8 || n("mean_count")>4.2) {print "row " NR " (" v("rule") ") out of range: " $0; exit 1}
             v("rule")=="closest" && (n("chi2_rejects")!=n("seeds") || n("ks_rejects")!=n("seeds")) {print "row " NR " (" v("rule") ") out of range: " $0; exit 1}
@@ -18,15 +22,27 @@ tsv_awk 'NR>1 && v("rule")=="inverse-cdf" && (n("chi2_p")<0.01 || n("ks_p")<0.01
 "$expect" "$out/counts.tsv" rows=21 'poisson>0' 'closest>=0' 'inverse_cdf>=0' 'closest_last>=0'
 # The verdict: the paper's rule (closest p(m), 16-bit cube seeds) against
 # Poisson(4), every seed's cubes pooled: rejected (chi-square 3.1e4, p = 0).
-"$expect" "$out/count_law.tsv" rows=4 'p>=0' 'p<=1' 'chi2>0' 'cubes==12288'
+# Its negative control, row 5: every cube with 4 points (no count law),
+# rejected too (chi-square 5.1e4): the test tells a law from no law.
+"$expect" "$out/count_law.tsv" rows=5 'p>=0' 'p<=1' 'chi2>0' 'cubes==12288'
 tsv_awk 'v("rule") == "closest" && n("p") > 1e-6 { print "closest: p " n("p"); exit 1 }
   v("seeding") == "full hash" && n("p") < 0.01 { print "full hash pooled: p " n("p"); exit 1 }' \
   "$out/count_law.tsv"
-tsv_awk -v want=1 'FNR > 1 { rows++
+tsv_awk 'FNR > 1 && v("quantity") == "count law of the paper'"'"'s rule" { rows++
     if (v("kind") != "independent" || v("verdict") != "not reproduced" \
-        || v("rule") != "fit 0.01 0.001") {
+        || v("rule") != "fit 0.01 0.001" || v("control_verdict") != "not reproduced") {
       print "verdict: " $0; exit 1 } }
-  END { if (rows != want) { print "verdicts: " rows " rows"; exit 1 } }' "$out/verdicts.tsv"
+  FNR > 1 && v("quantity") == "faces where some F_i jumps, paper'"'"'s rule" { rows++
+    if (v("kind") != "independent" || v("verdict") != "reproduced" \
+        || v("control_verdict") != "not reproduced") { print "verdict: " $0; exit 1 } }
+  END { if (rows != 2 || NR != 3) { print "verdicts: " NR - 1 " rows"; exit 1 } }' "$out/verdicts.tsv"
+# Continuity (sec. 3.1) across cube faces, where the 27 cubes searched
+# change: F1..F4 at both sides of 1000 x 3 random faces, 1e-7 apart, never
+# jump under the paper's rule (largest |dF| / step 0.99999: a distance is
+# 1-Lipschitz); searching x's own cube alone they jump at every face.
+"$expect" "$out/continuity.tsv" rows=2 'faces==3000' 'paper_jumps==0'
+tsv_awk 'v("search") == "27 cubes" && (n("jumps") != 0 || n("max_ratio") > 1.000001) { print; exit 1 }
+  v("search") == "own cube only" && n("jump_frac") < 0.9 { print; exit 1 }' "$out/continuity.tsv"
 # The check: inverse-CDF counts with r from a full hash of (seed, i, j, k)
 # pass on every seed (p 0.13-0.72 at seeds 1-3; paper scale: 0 of 10
 # rejected, pooled p = 0.24).

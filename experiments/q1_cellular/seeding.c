@@ -87,6 +87,12 @@ void q1_seeding(q1 *q, unsigned long seed0)
     for (int m = 0; m <= q->M; m++) pooled[m] += h[m];
   }
   law_row(r, c, law, "inverse-cdf", "full hash", pooled);
+  /* The negative control of the verdict below: no count law at all, every
+   * cube holding the mean number of points, lambda rounded (a jittered
+   * grid), as many cubes as the verdict's rows pool. */
+  for (int m = 0; m <= q->M; m++) h[m] = 0;
+  h[(int)fmin(q->M, floor(q->lambda + 0.5))] = cubes * q->seeds;
+  law_row(r, c, law, "fixed count", "none", h);
   /* The fixed set of 2^16 first draws, and the chi-square its bias adds to
    * one table of side^3 cubes (Pearson's statistic of the expected counts:
    * the non-centrality). */
@@ -115,6 +121,8 @@ void q1_seeding(q1 *q, unsigned long seed0)
                        "counts Poisson(lambda) (the m whose p(m) is closest to r)", "chi2", "p",
                        "fit 0.01 0.001", "independent",
                        "Pearson chi-square of every seed's cubes, tail pooled");
+  nl_harness_verdict_control(r, "every cube with lambda points, rounded (no count law)",
+                             "count_law.tsv", law, 4);
   q1_report_seeding(q, law, hc, fs, rejects);
   nl_table_free(law);
   nl_table_free(hc);

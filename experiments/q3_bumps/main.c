@@ -56,6 +56,8 @@ int main(int argc, char **argv)
     "octaves", "bump_mean", "bump_max", "shade_mean", "shade_sd", "slope_max"
   };
   nl_table *t = nl_table_alloc(6, cols);
+  /* centroid.tsv: octaves 0..max_oct of eq. 6, then max_oct at one scale */
+  double *cen = nl_xmalloc(((size_t)npan + 1) * seeds * sizeof *cen);
   for (int i = 0; i < npan; i++) labels[i] = nl_xmalloc(32);
   for (int i = 0; i < npan; i++) snprintf(labels[i], 32, i ? "octaves = %d" : "original", i - 1);
   for (int pan = 0; pan < npan; pan++) {
@@ -72,6 +74,11 @@ int main(int argc, char **argv)
         for (size_t q = 0; q < npix; q++) h[q] = 0.0; /* the flat plane */
       } else {
         nl_cellular_gctbf_fractal_bump_grid(&gb, pan - 1, k, &win, h);
+        cen[(size_t)pan * seeds + s] = q3_centroid(h, size, extent);
+        if (pan == npan - 1) {
+          q3_bump_one_scale(&gb, pan - 1, k, &win, sh);
+          cen[(size_t)npan * seeds + s] = q3_centroid(sh, size, extent); /* sh: scratch */
+        }
       }
       /* displacement amp * bump: the same as spacing / amp */
       nl_cellular_heightfield_shade(h, size, size, extent / size / amp, light, sh);
@@ -86,11 +93,31 @@ int main(int argc, char **argv)
     nl_table_append(t, "iddddd", pan - 1, st[0], st[1], st[2], st[3], st[4]);
   }
   nl_harness_write_table(r, t, "bumps.tsv");
+  const char *ccols[] = { "octaves", "scales", "centroid", "centroid_sd", "seeds" };
+  nl_table *ct = nl_table_alloc(5, ccols);
+  for (int pan = 1; pan <= npan; pan++) {
+    const double *c = cen + (size_t)pan * seeds;
+    nl_table_append(ct, "isddi", pan < npan ? pan - 1 : max_oct,
+                    pan < npan ? "2^i k" : "k", gsl_stats_mean(c, 1, seeds),
+                    seeds > 1 ? gsl_stats_sd(c, 1, seeds) : 0, seeds);
+  }
+  nl_harness_write_table(r, ct, "centroid.tsv");
+  /* Fig. 4's wrinkles grow finer as octaves are added: the centroid of the
+   * bump's power at octaves 0 below octaves max_oct. Control: the same sum
+   * with every octave at scale k, no finer octave in it. */
+  nl_harness_verdict_less(r, "centroid.tsv", ct, 0, (size_t)max_oct,
+                          "spectral centroid of the bump, octaves 0 below the last",
+                          "each octave adds wrinkles at twice the frequency (eq. 6)", "centroid",
+                          "centroid_sd", "seeds", 0.01, "independent");
+  nl_harness_verdict_control_less(r, "the same octaves all at scale k (no doubling)",
+                                  "centroid.tsv", ct, 0, (size_t)max_oct + 1);
   nl_image *m = nl_image_montage((const nl_image *const *)panels, (const char *const *)labels, npan,
                                  3, "Fig. 4: F2 - F1 - F1F1 wrinkles");
   nl_harness_write_image(r, m, "bumps.png");
 
-  q3_report(r, extent, k, amp, light, max_oct, t);
+  q3_report(r, extent, k, amp, light, max_oct, t, ct);
+  nl_table_free(ct);
+  free(cen);
   for (int i = 0; i < npan; i++) {
     nl_image_free(panels[i]);
     free(labels[i]);

@@ -58,6 +58,18 @@ void q4_report(const q4 *q)
   nl_harness_figure(
       q->r, "wood.png",
       "Wood, table (F1 - F1F1) and trunk (F3 - F3F3): the ramp reading beside the wood shader");
+  const nl_table *wt = q->wood;
+  nl_harness_text(
+      q->r,
+      "**Whose rings.** The rings of our wood come from the ring shader we added, not from the "
+      "GCTBF: the shader without the basis shows %g and %g dark bands (table, trunk), with it "
+      "%.1f and %.1f, and the GCTBF alone through the ramp %.1f and %.1f (rings.tsv). The "
+      "verdicts \"ramp below wood shader\" have the shader without the GCTBF as their control: "
+      "where it passes the same rule, the row counts as by construction, and Fig. 6's wood is no "
+      "evidence that the GCTBF makes rings.\n",
+      nl_table_value(wt, 0, "rings_geometry"), nl_table_value(wt, 1, "rings_geometry"),
+      nl_table_value(wt, 0, "rings"), nl_table_value(wt, 1, "rings"),
+      nl_table_value(wt, 0, "ramp_bands"), nl_table_value(wt, 1, "ramp_bands"));
   nl_harness_verdict_figure(q->r, "Fig. 5: eq. 7 clouds, Perlin and five GCTBF",
                             "cellular clouds beside Perlin's (images only)", "clouds.png",
                             "the five combinations are our reading: the figure names none");

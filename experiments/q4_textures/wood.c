@@ -71,3 +71,19 @@ nl_status q4_wood(nl_table *table, const char *panel, const char *expr, double k
   free(cb);
   return st;
 }
+
+nl_table *q4_rings_table(const nl_table *wood, int K)
+{
+  const char *cols[] = { "panel", "gctbf", "reading", "bands", "bands_sd", "seeds" };
+  nl_table *t = nl_table_alloc(6, cols);
+  for (size_t i = 0; i < wood->nrows; i++) {
+    const char *p = nl_table_text(wood, i, "panel"), *g = nl_table_text(wood, i, "gctbf");
+    nl_table_append(t, "sssddi", p, g, "ramp", nl_table_value(wood, i, "ramp_bands"),
+                    nl_table_value(wood, i, "ramp_bands_sd"), K);
+    nl_table_append(t, "sssddi", p, g, "wood shader", nl_table_value(wood, i, "rings"),
+                    nl_table_value(wood, i, "rings_sd"), K);
+    nl_table_append(t, "sssddi", p, g, "wood shader without the GCTBF",
+                    nl_table_value(wood, i, "rings_geometry"), 0.0, K);
+  }
+  return t;
+}

@@ -34,4 +34,10 @@ nl_status q4_wood(nl_table *table, const char *panel, const char *expr, double k
                   const nl_texture_ramp *ramp, double lo, double hi, int vertical, int index,
                   unsigned long seed0, int K, nl_image **rings, nl_image **ramped, nl_error *err);
 
+/* rings.tsv from the table of q4_wood (K seeds each): per panel three rows
+ * (panel, gctbf, reading, bands, bands_sd, seeds): "ramp" (the GCTBF
+ * alone through the ramp: ramp_bands), "wood shader" (rings) and "wood
+ * shader without the GCTBF" (rings_geometry, sd 0). Caller frees. */
+nl_table *q4_rings_table(const nl_table *wood, int K);
+
 #endif

@@ -31,15 +31,19 @@ static void shares(const double *v, const nl_noise_window *win, double cut, doub
 
 nl_table *s2_fold_table(const nl_noise_window *win, unsigned long seed0, int nseeds, double cut)
 {
-  const char *cols[] = { "field", "mean", "mean_sd", "dc_frac", "above_frac", "above_frac_sd" };
-  nl_table *t = nl_table_alloc(6, cols);
+  const char *cols[] = { "field",      "mean",          "mean_sd", "dc_frac",
+                         "above_frac", "above_frac_sd", "seeds" };
+  nl_table *t = nl_table_alloc(7, cols);
   size_t n = (size_t)win->w * win->h;
   double *v = nl_xmalloc(n * sizeof *v), *P = nl_xmalloc(n * sizeof *P);
   double *m = nl_xmalloc(3 * (size_t)nseeds * sizeof *m), *dc = m + nseeds, *ab = dc + nseeds;
-  for (int fold = 0; fold < 2; fold++) {
+  /* rows: noise, |noise|, and noise again on the next nseeds seeds (the
+   * unfolded baseline a comparison of the first two is checked against) */
+  for (int row = 0; row < 3; row++) {
+    int fold = row == 1;
     for (int k = 0; k < nseeds; k++) {
       nl_noise_perm3 p;
-      nl_noise_perm3_seed(&p, nl_seed_replicate(seed0, k));
+      nl_noise_perm3_seed(&p, nl_seed_replicate(seed0, row == 2 ? nseeds + k : k));
       nl_noise_basis b = nl_noise_basis_perm3(&p);
       nl_noise_octaves o = nl_noise_octaves_fractal(1);
       o.turbulence = fold;
@@ -49,8 +53,9 @@ nl_table *s2_fold_table(const nl_noise_window *win, unsigned long seed0, int nse
     }
     double msd = nseeds > 1 ? gsl_stats_sd(m, 1, nseeds) : 0;
     double asd = nseeds > 1 ? gsl_stats_sd(ab, 1, nseeds) : 0;
-    nl_table_append(t, "sddddd", fold ? "|noise|" : "noise", gsl_stats_mean(m, 1, nseeds), msd,
-                    gsl_stats_mean(dc, 1, nseeds), gsl_stats_mean(ab, 1, nseeds), asd);
+    nl_table_append(t, "sdddddi", row == 0 ? "noise" : row == 1 ? "|noise|" : "noise, other seeds",
+                    gsl_stats_mean(m, 1, nseeds), msd, gsl_stats_mean(dc, 1, nseeds),
+                    gsl_stats_mean(ab, 1, nseeds), asd, nseeds);
   }
   free(v);
   free(P);

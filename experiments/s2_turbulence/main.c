@@ -22,6 +22,15 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, fold, "fold.tsv");
   nl_harness_check(r, "fold.tsv", "mean", "welch mean_sd 1e-3");
   nl_harness_check(r, "fold.tsv", "above_frac", "welch above_frac_sd 1e-3");
+  /* The slide's creases as a number: |noise| holds more of its power above
+   * the octave's band than noise does (Welch over seeds); the control
+   * compares noise with noise of other seeds, no fold on either side. */
+  nl_harness_verdict_less(r, "fold.tsv", fold, 0, 1,
+                          "power above twice the octave's frequency, noise below |noise|",
+                          "|noise| folds each octave into creases sharper than the octave",
+                          "above_frac", "above_frac_sd", "seeds", 0.01, "independent");
+  nl_harness_verdict_control_less(r, "noise against noise of other seeds (no fold)", "fold.tsv",
+                                  fold, 0, 2);
   nl_harness_verdict_figure(r, "turbulence at 1, 2, 3 and 8 octaves",
                             "|noise| folds each octave into creases (images only)",
                             "turbulence_panels.png", NULL);

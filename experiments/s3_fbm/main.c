@@ -36,15 +36,28 @@ int main(int argc, char **argv)
   const char *lone = nl_table_text(gt, 0, "setting");
   nl_table *gsd = nl_study_sd_law_table(gt, gs, gs, lone);
   nl_harness_write_table(r, gsd, "gain_sd_law.tsv");
-  s3_sd_verdicts(r, gsd, "gain_sd_law.tsv", -1);
+  /* The law's negative control: each row's octaves at one frequency. */
+  unsigned long seed0 = nl_harness_seed(r);
+  int nseeds = nl_harness_seeds(r);
+  nl_table *gctl = nl_study_sd_law_control("improved", gsd, gs, lone, &win, seed0, nseeds);
+  nl_harness_write_table(r, gctl, "gain_sd_control.tsv");
+  s3_sd_verdicts(r, gsd, "gain_sd_law.tsv", gctl, "gain_sd_control.tsv", -1);
   s3_report_gain(r, octaves, gsd, "gain_spectrum.tsv");
   nl_harness_text(r, "### Varying the lacunarity\n");
   nl_table *lt = nl_study_series(r, "lacunarity", "fBm, gain 0.5: lacunarity 0.5, 1, 2, 4, 8",
                                  "improved", l, 5, &win, &ls);
   nl_table *lsd = nl_study_sd_law_table(lt, ls, gs, lone);
   nl_harness_write_table(r, lsd, "lacunarity_sd_law.tsv");
-  s3_sd_verdicts(r, lsd, "lacunarity_sd_law.tsv", 2); /* lacunarity 2: gain 0.5's row */
+  nl_table *lctl = nl_study_sd_law_control("improved", lsd, gs, lone, &win, seed0, nseeds);
+  nl_harness_write_table(r, lctl, "lacunarity_sd_control.tsv");
+  s3_sd_verdicts(r, lsd, "lacunarity_sd_law.tsv", lctl, "lacunarity_sd_control.tsv",
+                 2); /* lacunarity 2: gain 0.5's row */
   s3_report_lacunarity(r, octaves, lsd, &win);
+  nl_harness_report_table(r, gctl,
+                          "The law's negative control for the gains (gain_sd_control.tsv): each "
+                          "row's octaves all at the first one's frequency, one noise summed with "
+                          "itself, against the same law; its sd is sd1 sum gain^j",
+                          4);
   nl_harness_verdict_figure(r, "fBm varying the gain", "higher gain, rougher fBm (images only)",
                             "gain_panels.png", NULL);
   nl_harness_verdict_figure(r, "fBm varying the lacunarity",
@@ -56,6 +69,8 @@ int main(int argc, char **argv)
   nl_table_free(gs);
   nl_table_free(ls);
   nl_table_free(lsd);
+  nl_table_free(gctl);
+  nl_table_free(lctl);
   nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);
 }

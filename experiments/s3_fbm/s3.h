@@ -13,8 +13,11 @@ void s3_report_intro(nl_harness *r, int octaves, const nl_noise_window *win);
  * verdict row per row of law (nl_study_sd_law_table, written as `file`)
  * whose octaves are distinct and not a lone octave: lacunarity 1 (one noise
  * summed, sd_law exact) and gain 0 (sd1 itself) hold by construction. Row
- * `skip` (-1: none) is left out: a setting with its verdict elsewhere. */
-void s3_sd_verdicts(nl_harness *r, const nl_table *law, const char *file, long skip);
+ * `skip` (-1: none) is left out: a setting with its verdict elsewhere.
+ * Each row's negative control is the same row of ctl
+ * (nl_study_sd_law_control, written as ctl_file). */
+void s3_sd_verdicts(nl_harness *r, const nl_table *law, const char *file, const nl_table *ctl,
+                    const char *ctl_file, long skip);
 
 /* After the gain series: law its sd table; spectrum the file name of its
  * spectrum table, read back for gain 1's slope. */

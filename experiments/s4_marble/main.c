@@ -3,6 +3,7 @@
 #include "noise/nl_noise.h"
 #include "harness/nl_harness.h"
 #include "arcsine.h"
+#include "bend.h"
 #include "s4.h"
 #include "study/nl_study.h"
 #include "texture/nl_texture.h"
@@ -49,6 +50,11 @@ int main(int argc, char **argv)
   int nseeds = nl_harness_seeds(r);
   double *m = nl_xmalloc((size_t)nseeds * sizeof *m);
   double *sd = nl_xmalloc((size_t)nseeds * sizeof *sd);
+  /* bend.tsv: rows 0..NA-1 the marble at each a, NA.. the rows-only
+   * control at each a > 0 (bend.h) */
+  const char *bcols[] = { "a", "displacement", "gx_share", "gx_share_sd", "seeds" };
+  nl_table *bend = nl_table_alloc(5, bcols);
+  double *gx = nl_xmalloc(2 * (size_t)NA * nseeds * sizeof *gx);
   gsl_histogram *h = gsl_histogram_alloc(NBINS);
   gsl_histogram_set_ranges_uniform(h, 0.0, 1.0 + 1e-12);
   for (int i = 0; i < NA; i++) {
@@ -62,6 +68,9 @@ int main(int argc, char **argv)
       sd[k] = gsl_stats_sd_m(u, 1, npix, m[k]);
       for (size_t q = 0; q < npix; q++) gsl_histogram_increment(h, u[q]);
       if (k == 0) panels[i] = nl_texture_ramp_image(&ramp, u, size, size, 0, 1);
+      gx[(size_t)i * nseeds + k] = s4_bend_share(u, size, size);
+      s4_marble_rows(&b, &o, &win, NL_TWO_PI * stripes, amps[i], u);
+      gx[(size_t)(NA + i) * nseeds + k] = s4_bend_share(u, size, size);
     }
     /* density: samples per bin over all seeds, per unit of u */
     double dens[NBINS];
@@ -79,6 +88,14 @@ int main(int argc, char **argv)
   nl_image *mont = nl_image_montage((const nl_image *const *)panels, lab, NA, NA,
                                     "marble: u = (1 + sin(2 pi (y + a fractal_sum(p)))) / 2");
   nl_harness_write_image(r, mont, "panels.png");
+  for (int i = 0; i < 2 * NA; i++) {
+    if (i == NA) continue; /* a = 0 once: the control's a = 0 is the same raster */
+    const double *g = gx + (size_t)i * nseeds;
+    nl_table_append(bend, "dsddi", amps[i % NA], i < NA ? "fractal sum" : "row's first pixel",
+                    gsl_stats_mean(g, 1, nseeds), nseeds > 1 ? gsl_stats_sd(g, 1, nseeds) : 0,
+                    nseeds);
+  }
+  nl_harness_write_table(r, bend, "bend.tsv");
   nl_harness_write_table(r, hist, "u_density.tsv");
   nl_harness_write_table(r, dist, "distribution.tsv");
   /* Regression rules: u_mean and u_sd are means over seeds with their spreads
@@ -89,15 +106,27 @@ int main(int argc, char **argv)
   nl_harness_check(r, "distribution.tsv", "u_mean_sd", "ftest 1e-3");
   nl_harness_check(r, "distribution.tsv", "u_sd_sd", "ftest 1e-3");
 
+  /* "we need to add some noise first": the noise bends the stripes, u
+   * varies along x (a = 0.25, the sweep's smallest, against a = 0). The
+   * control displaces each row by one value of the same sum: the stripes
+   * move as much but stay straight. */
+  nl_harness_verdict_less(r, "bend.tsv", bend, 0, 1,
+                          "share of u's variation along the stripes, a = 0 below a = 0.25",
+                          "p.y + a fractal_sum(p) turns the ramp's stripes into marble veins",
+                          "gx_share", "gx_share_sd", "seeds", 0.01, "independent");
+  nl_harness_verdict_control_less(r, "each row displaced by the sum at its first pixel",
+                                  "bend.tsv", bend, 0, NA);
   nl_harness_verdict_figure(r, "marble through a colour ramp",
                             "turbulent marble veins (images only)", "panels.png",
                             "the amplitude a is not given: ours a sweep");
-  s4_report(r, stripes, octaves, &win, dist, NBINS, s4_uniform_gap(NBINS));
+  s4_report(r, stripes, octaves, &win, dist, bend, NBINS, s4_uniform_gap(NBINS));
   gsl_histogram_free(h);
   for (int i = 0; i < NA; i++) nl_image_free(panels[i]);
   nl_image_free(mont);
   nl_table_free(hist);
   nl_table_free(dist);
+  nl_table_free(bend);
+  free(gx);
   free(u);
   free(m);
   free(sd);

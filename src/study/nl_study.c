@@ -1,5 +1,6 @@
 #include "study/nl_study.h"
 
+#include "basis/nl_basis.h"
 #include "spectrum/nl_spectrum.h"
 #include "stats/nl_stats.h"
 
@@ -156,8 +157,8 @@ nl_table *nl_study_sd_law_table(const nl_table *dist, const nl_table *seeds,
   const char *cols[] = {"setting", "octaves", "gain",        "lacunarity",     "sd",
                         "sd_sd",   "sd1",     "sd_law",      "law",            "sd_over_law",
                         "sd_over_law_se",     "claim_ratio",    "sd_over_sep",    "sd_over_sep_se",
-                        "sep_over_law",       "sep_over_law_se"};
-  nl_table *t = nl_table_alloc(16, cols);
+                        "sep_over_law",       "sep_over_law_se",  "seeds"};
+  nl_table *t = nl_table_alloc(17, cols);
   for (size_t i = 0; i < dist->nrows; i++) {
     const char *name = nl_table_text(dist, i, "setting");
     int n = (int)nl_table_value(dist, i, "octaves");
@@ -188,10 +189,52 @@ nl_table *nl_study_sd_law_table(const nl_table *dist, const nl_table *seeds,
     mean_se(corr, m, &r[2], &r[3]);
     mean_se(samp, m, &r[4], &r[5]);
     free(ratio);
-    nl_table_append(t, "siddddddsddddddd", name, n, g, lac, nl_table_value(dist, i, "sd"),
+    nl_table_append(t, "siddddddsdddddddi", name, n, g, lac, nl_table_value(dist, i, "sd"),
                     nl_table_value(dist, i, "sd_sd"), sd1, sd1 * factor,
-                    same ? "identical" : "independent", r[0], r[1], 1.0, r[2], r[3], r[4], r[5]);
+                    same ? "identical" : "independent", r[0], r[1], 1.0, r[2], r[3], r[4], r[5],
+                    (int)m);
   }
+  return t;
+}
+
+nl_table *nl_study_sd_law_control(nl_study_basis_kind kind, const nl_table *law,
+                                  const nl_table *ref_seeds, const char *ref,
+                                  const nl_noise_window *win, unsigned long seed0, int nseeds)
+{
+  const char *cols[] = {"setting", "octaves", "gain",        "lacunarity",     "sd",   "sd1",
+                        "sd_law",  "sd_over_law", "sd_over_law_se", "claim_ratio", "seeds"};
+  nl_table *t = nl_table_alloc(11, cols);
+  size_t npix = (size_t)win->w * win->h;
+  double *v = nl_xmalloc(npix * sizeof *v);
+  double *ratio = nl_xmalloc((size_t)nseeds * sizeof *ratio);
+  for (size_t i = 0; i < law->nrows; i++) {
+    int n = (int)nl_table_value(law, i, "octaves");
+    double g = nl_table_value(law, i, "gain"), sum2 = 0, a = 1, sd = 0, sd1 = 0;
+    for (int j = 0; j < n; j++, a *= g) sum2 += a * a;
+    /* the row's octaves and gains, every octave at the first one's frequency */
+    nl_noise_octaves o = nl_noise_octaves_fbm(n, g, 1.0);
+    for (int k = 0; k < nseeds; k++) {
+      unsigned long seed = nl_seed_replicate(seed0, k);
+      nl_basis *b;
+      nl_error err;
+      if (nl_basis_make(kind, NULL, seed, &b, &err)) { /* kind is a name in the code */
+        fprintf(stderr, "noiselab: sd law control: %s\n", err.msg);
+        abort();
+      }
+      nl_noise_fractal_grid(&b->noise, &o, win, v);
+      nl_basis_free(b);
+      double s = gsl_stats_sd(v, 1, npix), s1 = seed_sd(ref_seeds, ref, (double)seed);
+      ratio[k] = s / (s1 * sqrt(sum2));
+      sd += s / nseeds;
+      sd1 += s1 / nseeds;
+    }
+    double mean, se;
+    mean_se(ratio, (size_t)nseeds, &mean, &se);
+    nl_table_append(t, "siddddddddi", nl_table_text(law, i, "setting"), n, g, 1.0, sd, sd1,
+                    sd1 * sqrt(sum2), mean, se, 1.0, nseeds);
+  }
+  free(v);
+  free(ratio);
   return t;
 }
 

@@ -158,10 +158,26 @@ nl_table *nl_study_octave_series(nl_harness *r, const nl_noise_window *win, int 
  * a mean of per-seed ratios with its standard error: sd_over_sep = sd /
  * sd_sep (the octaves' correlation: 1 when uncorrelated) and sep_over_law =
  * sd_sep / sd_law (each octave's variance on the window against the lone
- * first octave's: 1 when sampling treats every octave alike). Caller
- * frees. */
+ * first octave's: 1 when sampling treats every octave alike), and seeds,
+ * the number of per-seed ratios averaged. Caller frees. */
 nl_table *nl_study_sd_law_table(const nl_table *dist, const nl_table *seeds,
                                 const nl_table *ref_seeds, const char *ref);
+/* The rule that decides the law (S1, S3): sd_over_law equivalent to 1
+ * within 5% by two one-sided tests over the seeds, the margin stated in
+ * docs/experiments.md (Equivalence margins) before the run. */
+#define NL_STUDY_SD_LAW_RULE "equiv rel 0.05 0.05 0.2"
+/* The negative control of the law: for each row of a law table (above),
+ * the same octaves and gains with every octave at the first one's
+ * frequency (lacunarity 1: one noise summed with itself, octaves as
+ * correlated as they can be), rendered on win for nseeds seeds from seed0,
+ * its sd over sd1 sqrt(sum gain^2j) with sd1 from ref_seeds' setting ref,
+ * taken seed by seed. Same row order and column names as the law table
+ * (setting, octaves, gain, lacunarity, sd, sd1, sd_law, sd_over_law,
+ * sd_over_law_se, claim_ratio, seeds), so a verdict on row i of the law
+ * has its control on row i. Caller frees. */
+nl_table *nl_study_sd_law_control(nl_study_basis_kind kind, const nl_table *law,
+                                  const nl_table *ref_seeds, const char *ref,
+                                  const nl_noise_window *win, unsigned long seed0, int nseeds);
 /* One paragraph on such a table: the row of independent octaves farthest
  * from the law in standard errors, and its two factors. */
 void nl_study_sd_law_text(nl_harness *r, const nl_table *law);
