@@ -858,7 +858,11 @@ static void control_row(nl_harness *r, const char *control, const char *ours, nl
   nl_table_set_text(r->verdicts, i, "control_ours", ours);
   nl_table_set_text(r->verdicts, i, "control_verdict", word);
   r->last.has_control = 1;
-  if (v == NL_VERDICT_REPRODUCED && !strcmp(nl_table_text(r->verdicts, i, "kind"), "independent")) {
+  /* Only a row that passes (reproduced or partly) is turned: a row that
+   * fails where its baseline passes already says "not reproduced". */
+  const char *own = nl_table_text(r->verdicts, i, "verdict");
+  if (v == NL_VERDICT_REPRODUCED && !strcmp(nl_table_text(r->verdicts, i, "kind"), "independent") &&
+      (!strcmp(own, "reproduced") || !strcmp(own, "partly"))) {
     char reason[512];
     snprintf(reason, sizeof reason, "%s; its control (%s) passes the same rule: %s",
              nl_table_text(r->verdicts, i, "reason"), control, why);

@@ -402,10 +402,11 @@ void nl_harness_verdict_equiv(nl_harness *r, const char *file, const nl_table *t
  * nl_harness_verdict_less, rows row and row_b (nl_harness_verdict_control_less).
  * verdicts.tsv gets control (the words), control_ours and control_verdict
  * ("-" on rows without one). A value outside a factor rule's domain (<= 0)
- * is "not reproduced". An independent row whose control also comes out
- * "reproduced" is no evidence for the claim (the rule passes without the
- * method): the harness turns its kind to "by construction" and says why in
- * the reason. Calling it with no verdict before, after a figure, or twice
+ * is "not reproduced". An independent row that passes (reproduced or
+ * partly) while its control comes out "reproduced" is no evidence for the
+ * claim (the rule passes without the method): the harness turns its kind to
+ * "by construction" and says why in the reason. A row that fails keeps its
+ * "not reproduced" whatever its control says. Calling it with no verdict before, after a figure, or twice
  * for one verdict is a bug in the experiment: exit 1. */
 void nl_harness_verdict_control(nl_harness *r, const char *control, const char *file, const nl_table *t,
                                 size_t row);

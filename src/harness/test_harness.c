@@ -229,6 +229,9 @@ NL_TEST(manifest_round_trip)
   nl_harness_verdict_control(r, "a flat image", "t.tsv", t, 1);
   nl_harness_verdict(r, "t.tsv", t, 0, "E same", "paper_E", "E", NULL, "rel 0.05 0.25", "independent", NULL);
   nl_harness_verdict_control(r, "random tables", "t.tsv", t, 2);
+  /* a row that fails keeps its verdict when its baseline passes */
+  nl_harness_verdict(r, "t.tsv", t, 1, "E fails", "paper_E", "E", NULL, "rel 0.05 0.25", "independent", NULL);
+  nl_harness_verdict_control(r, "random tables", "t.tsv", t, 2);
   nl_harness_verdict_figure(r, "the look", "looks like marble", "panels.png", NULL);
   nl_table_free(t);
   NL_CHECK(nl_harness_end(r) == 0);
@@ -241,7 +244,9 @@ NL_TEST(manifest_round_trip)
   nl_table *vt = NULL;
   NL_CHECK(nl_table_read(vp, NL_TABLE_TEXT, &vt, &err0) == NL_OK);
   if (vt) {
-    NL_CHECK(vt->nrows == 5 && !strcmp(nl_table_text(vt, 0, "verdict"), "reproduced"));
+    NL_CHECK(vt->nrows == 6 && !strcmp(nl_table_text(vt, 0, "verdict"), "reproduced"));
+    NL_CHECK(!strcmp(nl_table_text(vt, 4, "kind"), "independent") && !strcmp(nl_table_text(vt, 4, "verdict"), "not reproduced"));
+    NL_CHECK(!strcmp(nl_table_text(vt, 4, "control_verdict"), "reproduced"));
     NL_CHECK(!strcmp(nl_table_text(vt, 0, "control"), "-") && !strcmp(nl_table_text(vt, 0, "control_verdict"), "-"));
     NL_CHECK(!strcmp(nl_table_text(vt, 2, "kind"), "independent") && !strcmp(nl_table_text(vt, 2, "control"), "a flat image"));
     NL_CHECK(!strcmp(nl_table_text(vt, 2, "control_verdict"), "not reproduced") && nl_table_value(vt, 2, "control_ours") == 0.9);
@@ -250,10 +255,10 @@ NL_TEST(manifest_round_trip)
     NL_CHECK(!strcmp(nl_table_text(vt, 0, "kind"), "independent"));
     /* a fitted reading is capped: it cannot be "reproduced" */
     NL_CHECK(!strcmp(nl_table_text(vt, 1, "verdict"), "consistent after fit"));
-    NL_CHECK(!strcmp(nl_table_text(vt, 4, "verdict"), "see figure") && !strcmp(nl_table_text(vt, 4, "kind"), "qualitative"));
+    NL_CHECK(!strcmp(nl_table_text(vt, 5, "verdict"), "see figure") && !strcmp(nl_table_text(vt, 5, "kind"), "qualitative"));
     /* the reason: the distance and the note, the thresholds left to the rule's column */
     NL_CHECK(!strcmp(nl_table_text(vt, 0, "reason"), "3.19% below the paper; a reading"));
-    NL_CHECK(!strcmp(nl_table_text(vt, 4, "reason"), "the figure decides"));
+    NL_CHECK(!strcmp(nl_table_text(vt, 5, "reason"), "the figure decides"));
     NL_CHECK(!strcmp(nl_table_text(vt, 0, "source"), "t.tsv:E"));
   }
   nl_table_free(vt);
