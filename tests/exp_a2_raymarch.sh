@@ -18,6 +18,8 @@ set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 exp="$1" expect="$2" out="$3"
 "$exp" --quick "${NOIMG[@]}" --threads 2 --out "$out" >/dev/null
+# every panel against its caption (oracle_al.c), this run and the committed one
+panels_oracle al a2 "$out" "$(dirname "$0")/../results/a2_raymarch"
 "$expect" "$out/timing.tsv" rows=6 'max_diff_levels==0' 'bounded_evals<plain_evals' \
   'eval_ratio>1' 'terms>octaves' 'max_noise<=1.2247448713915890' 'plain_ms>0' 'alt_eval_ratio>1' \
   'alt_slope==-4' 'plain_evals_per_term>0' 'paper_plain_ms_per_term>0' image:balls.png image:ball.png image:bounds.png file:report.md

@@ -12,6 +12,8 @@ set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 exp="$1" expect="$2" out="$3"
 "$exp" --quick "${NOIMG[@]}" --out "$out" >/dev/null
+# every panel against its caption (oracle_al.c), this run and the committed one
+panels_oracle al a4 "$out" "$(dirname "$0")/../results/a4_normalised"
 "$expect" "$out/aliasing.tsv" rows=2 'f_sup>=1' 'f_sup<3' 'aliased_fraction>0' image:normalised.png
 tsv_awk 'NR==2{a=n("aliased_fraction")} NR==3{b=n("aliased_fraction")} END{exit !(b * 2 < a)}' "$out/aliasing.tsv"
 "$expect" "$out/aliased_energy.tsv" rows=3 'energy_over_t>0' 'energy_over_t_sd>0' 'p_below>=0' \

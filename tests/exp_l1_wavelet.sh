@@ -7,6 +7,9 @@ set -euo pipefail
 # shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # NOIMG
 "$1" --quick "${NOIMG[@]}" --out "$3"
+expect="$2"   # panels_oracle finds oracle_al beside it
+# every panel against its caption (oracle_al.c), this run and the committed one
+panels_oracle al l1 "$3" "$(dirname "$0")/../results/l1_wavelet"
 "$2" "$3/summary.tsv" 'rows=8' 'ours>0' 'ours<1.0' 'ours_se>0' 'seeds==3' image:noise.png
 "$2" "$3/variance.tsv" 'rows=3' 'var2d~0.275:0.02' 'var3d~0.195:0.02'
 "$2" "$3/lattice.tsv" 'rows=9' 'var2d>var3d'

@@ -49,6 +49,9 @@ mkdir -p "$out/exemplars"
 # exemplar gets a run of its own (no size sweep: max_size 64, 2 seeds).
 exemplars="$(cd "$(dirname "$0")/.." && pwd)/data/exemplars"
 "$exp" --quick "${NOIMG[@]}" --threads 2 --exemplars "$exemplars" --out "$out"
+expect="$2"   # panels_oracle finds oracle_al beside it
+# every panel against its caption (oracle_al.c), this run and the committed one
+panels_oracle al l2 "$out" "$(dirname "$0")/../results/l2_weights"
 # The photographs' fits are nl_parallel_for items (l2_exemplar_fits): one
 # thread gives the same photos.tsv byte for byte (the size sweep, which does
 # not enter it, cut to 64 pixels and 2 seeds).

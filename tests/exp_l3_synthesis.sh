@@ -47,6 +47,9 @@ set -euo pipefail
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 ex="$(cd "$(dirname "$0")/../data/exemplars" && pwd)"
 "$1" --quick "${NOIMG[@]}" --threads 2 --out "$3" --exemplars "$ex"
+expect="$2"   # panels_oracle finds oracle_al beside it
+# every panel against its caption (oracle_al.c), this run and the committed one
+panels_oracle al l3 "$3" "$(dirname "$0")/../results/l3_synthesis"
 # The procedural exemplars' K syntheses are nl_parallel_for items
 # (l3_synth_seeds): one thread gives the same tables byte for
 # byte (the photographs cut to one at 16 pixels: they do not enter these).

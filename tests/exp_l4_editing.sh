@@ -33,6 +33,9 @@ set -euo pipefail
 # shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
 "$1" --quick "${NOIMG[@]}" --out "$3"
+expect="$2"   # panels_oracle finds oracle_al beside it
+# every panel against its caption (oracle_al.c), this run and the committed one
+panels_oracle al l4 "$3" "$(dirname "$0")/../results/l4_editing"
 tsv_awk 'NR == 1 || n("band") < 3' "$3/editing.tsv" > "$3/editing_fine.tsv"
 tsv_awk 'NR == 1 || n("band") >= 4' "$3/editing.tsv" > "$3/editing_coarse.tsv"
 "$2" "$3/editing_fine.tsv" 'rows=3' 'ratio<0.7' 'ratio_nohist<0.7' 'expected==0.0625' 'floor>0' 'ratio_sd>0'

@@ -105,7 +105,7 @@ int main(int argc, char **argv)
   nl_noise_perm3 p;
   nl_noise_perm3_seed(&p, nl_harness_seed(r));
   nl_image *pan[2] = { plane_image(&p, 1.0, size, size / rate2d),
-                       plane_image(&p, 1.0 / fs[0], size, size / rate2d) };
+                       plane_image(&p, 1.0 / PAPER_F_SUP, size, size / rate2d) };
   const char *labels[2] = { "(a) noise(x)", "(b) noise(x / F_sup)" };
   char title[96];
   a4_figure_title(&run, title, sizeof title);
