@@ -30,6 +30,7 @@
 #include "byexample/nl_byexample.h"
 #include "byexample/nl_byexample_leak.h"
 #include "noise/nl_noise.h"
+#include "study/nl_study_exemplars.h"
 #include "table/nl_table.h"
 #include "wavelet/nl_wavelet.h"
 
@@ -38,6 +39,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 static const char *manifest_value(const nl_table *m, const char *key)
 {
@@ -498,6 +500,104 @@ static int check_l3(const char *dir, const nl_table *man)
   return bad;
 }
 
+/* photos_montage.png: per photograph (the first `photos` PNGs of the run's
+ * exemplars folder, by name) the photo and the top-left crops of its
+ * gauss33, paper10 and calibrated syntheses (replicate 0). The first two
+ * are recomputed by point calls (no pixel of them depends on the image's
+ * size); the calibrated one adjusts its bands by FFTs of the whole output,
+ * which only nl_byexample_synthesize does: it is compared with that call,
+ * which checks the montage (crop, order, replicate), not the calibration. */
+static int check_l3_photos(const char *dir, const nl_table *man)
+{
+  const char *ex = manifest_value(man, "exemplars");
+  if (!ex) ex = "data/exemplars"; /* --exemplars' default */
+  int np = (int)param(man, "photos", 2), size = (int)param(man, "photo_size", 128), bad = 0;
+  int c = size < 256 ? size : 256;
+  unsigned long seed = run_seed(man);
+  char exdir[1024];
+  /* a relative folder is the repository's, two levels above a results folder */
+  snprintf(exdir, sizeof exdir, "%s", ex);
+  struct stat sb;
+  if (ex[0] != '/' && stat(exdir, &sb)) snprintf(exdir, sizeof exdir, "%s/../../%s", dir, ex);
+  char **paths = NULL;
+  int n = 0;
+  nl_error err;
+  if (nl_study_pngs(exdir, &paths, &n, &err)) {
+    printf("photos_montage.png: %s\n", err.msg);
+    return 1;
+  }
+  np = np < n ? np : n;
+  int *w = calloc((size_t)4 * np, sizeof *w), *h = calloc((size_t)4 * np, sizeof *h);
+  char(*lab)[96] = calloc((size_t)4 * np, sizeof *lab);
+  const char **labels = calloc((size_t)4 * np, sizeof *labels);
+  nl_image **photo = calloc((size_t)np, sizeof *photo);
+  const char *rep[3] = {"gauss33", "paper10", "calibrated"};
+  for (int i = 0; i < np; i++) {
+    if (nl_image_read(paths[i], &photo[i], &err)) {
+      printf("photos_montage.png: %s\n", err.msg);
+      bad++;
+      np = i;
+      break;
+    }
+    const char *base = strrchr(paths[i], '/') ? strrchr(paths[i], '/') + 1 : paths[i];
+    snprintf(lab[4 * i], sizeof lab[0], "%.*s %dx%d", (int)(strlen(base) - 4), base, photo[i]->width,
+             photo[i]->height);
+    w[4 * i] = photo[i]->width;
+    h[4 * i] = photo[i]->height;
+    for (int k = 0; k < 3; k++) {
+      snprintf(lab[4 * i + 1 + k], sizeof lab[0], "%s", rep[k]);
+      w[4 * i + 1 + k] = h[4 * i + 1 + k] = c;
+    }
+  }
+  for (int i = 0; i < 4 * np; i++) labels[i] = lab[i];
+  char title[128];
+  snprintf(title, sizeof title, "photographs | synthesis %d x %d (seed %lu), top-left %d x %d", size, size,
+           seed, c, c);
+  oracle_montage m;
+  if (!bad && !open_montage(&m, dir, "photos_montage.png", w, h, labels, 4 * np, 4, title)) {
+    double *v = malloc((size_t)4096 * 4096 * sizeof *v);
+    for (int i = 0; i < np; i++) {
+      red(photo[i], v);
+      bad += judge_colour("photos_montage.png", &m, 4 * i, labels[4 * i], v, photo[i]->width, photo[i]->height);
+      const nl_byexample_hist_kind kinds[3] = {NL_HIST_GAUSS, NL_HIST_PAPER, NL_HIST_GAUSS};
+      for (int k = 0; k < 3; k++) {
+        nl_byexample_options o = {1, 1, 0, 0, kinds[k], k == 2 ? NL_BYEXAMPLE_CALIBRATE : 0};
+        nl_byexample_params p;
+        if (nl_byexample_analyse(photo[i], &o, &p, &err)) {
+          printf("photos_montage.png: %s\n", err.msg);
+          bad++;
+          continue;
+        }
+        if (k < 2)
+          synth_points(&p, c, nl_seed_replicate(seed, 0), 0, 0, NL_SPLINE_STEFFEN, 0, v);
+        else {
+          nl_image *syn;
+          if (nl_byexample_synthesize(&p, size, size, nl_seed_replicate(seed, 0), NULL, &syn, &err)) {
+            printf("photos_montage.png: %s\n", err.msg);
+            bad++;
+            continue;
+          }
+          for (int y = 0; y < c; y++)
+            for (int x = 0; x < c; x++) v[(size_t)y * c + x] = nl_image_pixel(syn, x, y)[0];
+          nl_image_free(syn);
+        }
+        bad += judge_colour("photos_montage.png", &m, 4 * i + 1 + k, labels[4 * i + 1 + k], v, c, c);
+      }
+    }
+    free(v);
+    oracle_montage_free(&m);
+  } else
+    bad++;
+  for (int i = 0; i < np; i++) nl_image_free(photo[i]);
+  nl_study_paths_free(paths);
+  free(photo);
+  free(w);
+  free(h);
+  free(lab);
+  free(labels);
+  return bad;
+}
+
 static int check_l4(const char *dir, const nl_table *man)
 {
   int size = (int)param(man, "size", 128), nfine = (int)param(man, "edit_bands", 3), bad = 0;
@@ -574,7 +674,7 @@ int main(int argc, char **argv)
   else if (!strcmp(argv[1], "a4")) bad = check_a4(dir, man);
   else if (!strcmp(argv[1], "l1")) bad = check_l1(dir, man);
   else if (!strcmp(argv[1], "l2")) bad = check_l2(dir, man);
-  else if (!strcmp(argv[1], "l3")) bad = check_l3(dir, man);
+  else if (!strcmp(argv[1], "l3")) bad = check_l3(dir, man) + check_l3_photos(dir, man);
   else if (!strcmp(argv[1], "l4")) bad = check_l4(dir, man);
   else {
     fprintf(stderr, "oracle_al: unknown id '%s'\n", argv[1]);

@@ -96,6 +96,7 @@ int main(int argc, char **argv)
   double max_ks = nl_harness_param(r, "max_ks", 0.03, 0, 1,
                                    "the KS distance of the luminance must be below this");
   nl_harness_params_done(r);
+  nl_harness_note(r, "exemplars", "%s", exdir); /* the photographs' folder, for a figure's reader */
   int K = nl_harness_seeds(r);
   unsigned long seed0 = nl_harness_seed(r);
   char names[16][64];
