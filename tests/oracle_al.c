@@ -9,6 +9,7 @@
  *       N = 0, 1, 2, 5, 7, 10 (N + offset terms), ray-marched here one ray
  *       and one sample at a time without bounding (the figure shows the
  *       bounded march, which leaves every pixel as it is), first seed;
+ *       bounds.png: the terms eq. 5.4 needs per pixel of the slice z = 0;
  *   a4  normalised.png: noise(p) and noise(p / F_sup), F_sup = 1.7460938
  *       (Table 5.2), on the plane z = 0.5, point by point;
  *   l1  noise.png: band k of 2D and of 3D wavelet noise by the tile's point
@@ -32,6 +33,7 @@
 #include "noise/nl_noise.h"
 #include "study/nl_study_exemplars.h"
 #include "table/nl_table.h"
+#include "texture/nl_texture.h"
 #include "wavelet/nl_wavelet.h"
 
 #include <gsl/gsl_rng.h>
@@ -173,6 +175,65 @@ static void smoke_march(const nl_noise_perm3 *p, const smoke *s, const int *term
     }
 }
 
+/* bounds.png, Fig. 5.3: per pixel of the slice z = 0 at the largest N, how
+ * many terms were summed before eq. 5.4's interval (partial +- the
+ * octave bound times the remaining amplitudes) left (0, 1), N + offset + 1
+ * where it never did; coloured by the figure's ramp (a2_smoke_decision_image)
+ * and compared channel by channel. A pixel whose partial sum lands on the
+ * interval's edge may be decided one term apart by two roundings: at most
+ * 0.1% of the pixels may differ. */
+static int check_a2_bounds(const char *dir, const nl_table *man, const smoke *s, int terms)
+{
+  double bound = param(man, "octave_bound", NL_NOISE3_BOUND), rem[40];
+  rem[terms] = 0;
+  for (int k = terms - 1; k >= 0; k--) rem[k] = rem[k + 1] + bound * ldexp(1.0, -k);
+  nl_noise_perm3 p;
+  nl_noise_perm3_seed(&p, run_seed(man));
+  int n = s->size;
+  double *v = malloc((size_t)n * n * sizeof *v);
+  for (int r = 0; r < n; r++)
+    for (int c = 0; c < n; c++) {
+      double x = -0.5 + (c + 0.5) / n, y = -0.5 + (r + 0.5) / n, base = s->slope * sqrt(x * x + y * y) + 1;
+      double part = 0, f = s->freq;
+      int k = 0;
+      for (; k <= terms; k++, f *= 2) {
+        if (base + part + rem[k] <= 0 || base + part - rem[k] >= 1) break;
+        if (k < terms) part += ldexp(1.0, -k) * nl_noise_perm3_eval_general(&p, f * x, f * y, 0.0);
+      }
+      v[(size_t)r * n + c] = k; /* terms + 1: never decided */
+    }
+  const double pos[] = {0.0, 0.25 * terms, 0.5 * terms, 0.75 * terms, terms, terms + 0.5, terms + 1};
+  const float rgb[][3] = {{0.1f, 0.2f, 0.9f}, {0.1f, 0.8f, 0.9f}, {0.2f, 0.8f, 0.2f}, {0.95f, 0.85f, 0.1f},
+                          {0.9f, 0.1f, 0.1f}, {0.9f, 0.1f, 0.1f}, {0, 0, 0}};
+  nl_texture_ramp ramp = nl_texture_ramp_linear(7, pos, rgb);
+  nl_image *e = nl_texture_ramp_image(&ramp, v, n, n, 0.0, 1.0), *im = NULL;
+  char path[1024];
+  snprintf(path, sizeof path, "%s/bounds.png", dir);
+  nl_error err;
+  int bad = 0;
+  if (nl_image_read(path, &im, &err) || im->width != n || im->height != n || im->channels < 3) {
+    printf("bounds.png: %s\n", im ? "not the size of the slice" : err.msg);
+    bad = 1;
+  } else {
+    long off = 0;
+    for (int y = 0; y < n; y++)
+      for (int x = 0; x < n; x++)
+        for (int ch = 0; ch < 3; ch++)
+          if (fabs(nl_image_pixel(im, x, y)[ch] - nl_image_pixel(e, x, y)[ch]) > ORACLE_TOL_8BIT) {
+            off++;
+            break;
+          }
+    if (off > (long)n * n / 1000) {
+      printf("bounds.png: %ld of %d pixels are not the terms eq. 5.4 needs\n", off, n * n);
+      bad = 1;
+    }
+  }
+  nl_image_free(im);
+  nl_image_free(e);
+  free(v);
+  return bad;
+}
+
 static int check_a2(const char *dir, const nl_table *man)
 {
   static const int label[6] = {0, 1, 2, 5, 7, 10};
@@ -219,7 +280,7 @@ static int check_a2(const char *dir, const nl_table *man)
   }
   nl_image_free(im);
   for (int i = 0; i < 6; i++) free(img[i]);
-  return bad;
+  return bad + check_a2_bounds(dir, man, &s, label[5] + offset);
 }
 
 /* ---- A4: normalised noise ------------------------------------------------ */
