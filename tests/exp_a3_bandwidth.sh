@@ -53,13 +53,18 @@ tsv_awk -v bw="$out/bandwidth.tsv" -v sel="$out/bandwidth_selected.tsv" '
     if (k != 3) { print file " has " k " rows"; exit 1 } }
   END { w = order[1]; for (j = 2; j <= nh; j++) if (c[order[j]] > c[w]) w = order[j]
     same(bw, "improved02"); same(sel, w) }' "$out/hypotheses.tsv"
-# Verdicts: the six numbers of Table 5.2 under the headline, independent;
-# the selected reading's rows capped by their kind; every kind known.
-tsv_awk 'NR > 1 { k[v("kind")]++; if (v("kind") == "independent" && v("source") !~ /^bandwidth.tsv:/) bad = 1
+# Verdicts: the six numbers of Table 5.2 and the sum's F_sup over the 2nd
+# octave's under the headline, independent, each with its control (the
+# samples shuffled, which no rule passes); the selected reading's rows
+# capped by their kind; every kind known.
+"$expect" "$out/control_shuffled.tsv" rows=3 'f_sup>4' 'f_inf>0.5'
+"$expect" "$out/sum_over_octave.tsv" rows=2 'paper~1.1476:0.0001' 'ratio>0.9' 'ratio<1.1'
+tsv_awk 'NR > 1 { k[v("kind")]++; if (v("kind") == "independent" && v("source") !~ /^(bandwidth|sum_over_octave).tsv:/) bad = 1
+    if (v("kind") == "independent" && v("control_verdict") != "not reproduced") bad = 1
     if (v("kind") ~ /^selected 1\/19$/ && v("verdict") == "reproduced") bad = 1
     if (v("kind") == "by construction" && v("verdict") != "by construction") bad = 1
     if (v("kind") !~ /^(independent|selected 1\/19|by construction)$/) bad = 1 }
-  END { if (bad || k["independent"] != 6 || k["selected 1/19"] + k["by construction"] != 6) {
+  END { if (bad || k["independent"] != 7 || k["selected 1/19"] + k["by construction"] != 6) {
       print "verdict kinds: " k["independent"] " independent, " k["selected 1/19"] " selected, " k["by construction"] " by construction"; exit 1 } }' \
   "$out/verdicts.tsv"
 if byte_reruns; then   # same seed, same tables (tsv.sh: release build only)

@@ -34,8 +34,10 @@
 #  - verdict rows: "very similar" from eq. 12's error at the Fig. 4 side
 #    (similar.tsv, paper 0; measured 0.226 at quick), the error's trend with
 #    the side over seeds (trend.tsv: p-values in [0, 1]; the 6 finest bands'
-#    slope negative, measured -0.051 per doubling, as the ratio above says);
-#    three verdict rows, all independent.
+#    slope negative, measured -0.051 per doubling, as the ratio above says;
+#    its log2 slope against the -1 of halving, measured -0.40), and the same
+#    for random weights (the control); four verdict rows, all independent,
+#    each with a control that fails.
 set -euo pipefail
 # shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name; refused
@@ -47,6 +49,9 @@ mkdir -p "$out/exemplars"
 # exemplar gets a run of its own (no size sweep: max_size 64, 2 seeds).
 exemplars="$(cd "$(dirname "$0")/.." && pwd)/data/exemplars"
 "$exp" --quick "${NOIMG[@]}" --threads 2 --exemplars "$exemplars" --out "$out"
+expect="$2"   # panels_oracle finds oracle_al beside it
+# every panel against its caption (oracle_al.c), this run and the committed one
+panels_oracle al l2 "$out" "$(dirname "$0")/../results/l2_weights"
 # The photographs' fits are nl_parallel_for items (l2_exemplar_fits): one
 # thread gives the same photos.tsv byte for byte (the size sweep, which does
 # not enter it, cut to 64 pixels and 2 seeds).
@@ -78,11 +83,13 @@ tsv_awk 'NR > 1 && n("size") == 256 && n("err_mean") >= 0.40 {print "eq12 err_me
          NR > 1 && n("size") == 64 {e64 = n("err_fine_mean")} NR > 1 && n("size") == 256 {e256 = n("err_fine_mean")}
          END {if (!(e256 < 0.9 * e64)) {print "eq12 fine error does not shrink with size: " e64 " -> " e256; exit 1}}' \
   "$out/eq12.tsv"
-"$2" "$out/similar.tsv" 'rows=1' 'paper==0' 'ours>0' 'ours<1' 'seeds==3'
-"$2" "$out/trend.tsv" 'rows=2' 'p_falls>=0' 'p_falls<=1' 'slope_sd>0' 'sizes==3'
+"$2" "$out/similar.tsv" 'rows=2' 'paper==0' 'ours>0' 'ours<1' 'ours_se>0' 'seeds==3'
+"$2" "$out/trend.tsv" 'rows=4' 'p_falls>=0' 'p_falls<=1' 'slope_sd>0' 'sizes==3' \
+  'paper_log_slope==-1' 'log_slope_se>0'
 tsv_awk 'NR > 1 && v("bands") == "6 finest" && !(n("slope_mean") < 0) {print "fine slope " n("slope_mean"); exit 1}' "$out/trend.tsv"
-"$2" "$out/verdicts.tsv" 'rows=3'
-tsv_awk 'NR > 1 && v("kind") != "independent" {print "kind " v("kind"); exit 1}' "$out/verdicts.tsv"
+"$2" "$out/verdicts.tsv" 'rows=4'
+tsv_awk 'NR > 1 && (v("kind") != "independent" || v("control_verdict") != "not reproduced") {
+  print v("quantity") ": " v("kind") ", control " v("control_verdict"); exit 1}' "$out/verdicts.tsv"
 "$2" "$out/bands.tsv" 'rows=84' 'rmse>=0'
 tsv_awk 'NR > 1 && n("band") >= 1 && n("band") <= 3 {s[n("size") " " v("estimator")] += n("rmse")}
          function below(what, size, f) {

@@ -78,26 +78,51 @@ int main(int argc, char **argv)
   }
   nl_harness_write_table(r, t, "bounds.tsv");
 
-  /* The premise |noise| <= 1: climbs from the largest of random points. */
-  const char *mcols[] = {
-    "seed", "candidates", "starts", "sampled_max", "local_max", "x", "y", "z"
-  };
-  nl_table *mt = nl_table_alloc(8, mcols);
+  /* The premise |noise| <= 1: climbs from the largest of random points;
+   * the candidates themselves, unclimbed, are the random-point control. */
+  const char *mcols[] = { "seed",       "candidates",      "starts",     "sampled_max",
+                          "local_max",  "x",               "y",          "z",
+                          "candidates_over", "climbs_over" };
+  nl_table *mt = nl_table_alloc(10, mcols);
+  /* eq. 4.2: the same climbs on |Fnoise_n| / S_{n-1}, at 2 octaves and at nmax */
+  const char *fcols[] = { "seed", "octaves", "sampled_max", "local_max", "candidates_over",
+                          "climbs_over" };
+  nl_table *ft = nl_table_alloc(6, fcols);
+  /* eq. 5.4 as printed on the points of bounds.tsv at nmax octaves */
+  const char *pcols[] = { "seed", "octaves", "points", "over_printed", "over_dropped" };
+  nl_table *pt = nl_table_alloc(5, pcols);
+  int fn[2] = { 2, nmax };
   for (int s = 0; s < seeds; s++) {
     nl_noise_perm3 p;
     nl_noise_perm3_seed(&p, nl_seed_replicate(seed0, s));
-    double xyz[3], sampled;
-    double m = a1_local_max(&p, cands, starts, nl_seed_replicate(seed0, s), xyz, &sampled);
-    nl_table_append(mt, "iiiddddd", s, (int)cands, starts, sampled, m, xyz[0], xyz[1], xyz[2]);
+    a1_climbs c;
+    a1_climb_sum(&p, 1, cands, starts, nl_seed_replicate(seed0, s), &c);
+    nl_table_append(mt, "iiidddddii", s, (int)cands, starts, c.sampled, c.best, c.xyz[0],
+                    c.xyz[1], c.xyz[2], (int)c.candidates_over, (int)c.climbs_over);
+    for (int k = 0; k < 2 && fn[k] >= 2; k++) {
+      if (k == 1 && fn[1] == fn[0]) break;
+      a1_climb_sum(&p, fn[k], cands, starts, nl_seed_replicate(seed0, s), &c);
+      nl_table_append(ft, "iiddii", s, fn[k], c.sampled, c.best, (int)c.candidates_over,
+                      (int)c.climbs_over);
+    }
+    long printed, dropped;
+    unsigned long pts = nl_seed_stream(nl_seed_replicate(seed0, s), "a1.points", (unsigned long)nmax);
+    a1_printed_over(&p, nmax, points, pts, &printed, &dropped);
+    nl_table_append(pt, "iiiii", s, nmax, (int)points, (int)printed, (int)dropped);
+    nl_harness_progress(r, (double)(s + 1) / seeds, "climbs");
   }
   nl_harness_write_table(r, mt, "max_noise.tsv");
+  nl_harness_write_table(r, ft, "fractal_climbs.tsv");
+  nl_harness_write_table(r, pt, "printed.tsv");
 
-  a1_run run = { nmax, points, seeds, t, mt };
+  a1_run run = { nmax, points, seeds, t, mt, ft, pt };
   a1_report(r, &run);
   a1_verdicts(r, &run);
   free(maxes);
   nl_table_free(t);
   nl_table_free(mt);
+  nl_table_free(ft);
+  nl_table_free(pt);
   nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);
 }

@@ -31,4 +31,24 @@ long a1_octave_over(const nl_noise_perm3 *p, int n, long npoints, unsigned long 
 double a1_local_max(const nl_noise_perm3 *p, long candidates, int starts, unsigned long seed,
                     double xyz[3], double *sampled);
 
+/* The climbs of a1_local_max on |Fnoise_n(x)| / S_{n-1} (n = 1: |noise|,
+ * the octave bound of eq. 4.1 at every octave; n >= 2: the fractal bound
+ * of eq. 4.2): the largest ratio reached and where, the largest candidate,
+ * and how many candidates (random points, not climbed) and how many climbs
+ * end above 1, i.e. outside the paper's bound as printed. */
+typedef struct {
+  double best, sampled, xyz[3];
+  long candidates_over, climbs_over;
+} a1_climbs;
+void a1_climb_sum(const nl_noise_perm3 *p, int n, long candidates, int starts, unsigned long seed,
+                  a1_climbs *out);
+
+/* Eq. 5.4 as printed, |Fnoise_Nmax| <= |Fnoise_n + S_{Nmax-1} - S_n| for
+ * n = 1..nmax-1, on the points of nl_bounds_check_random: *printed counts
+ * the points where it fails for some n; *dropped those where |Fnoise_Nmax|
+ * > |Fnoise_n| for some n (the remainder's bound taken as 0: a bound
+ * without the method, which must fail). */
+void a1_printed_over(const nl_noise_perm3 *p, int nmax, long npoints, unsigned long seed,
+                     long *printed, long *dropped);
+
 #endif

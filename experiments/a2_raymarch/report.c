@@ -162,20 +162,34 @@ void a2_verdicts(nl_harness *r, const a2_run *run)
   const nl_table *t = run->timing, *g = run->growth;
   int n = run->n, last = n - 1;
   char kind[32];
-  snprintf(kind, sizeof kind, "fitted 3/%d", n);
+  /* Four numbers were chosen with the paper's six ratios in view: the
+   * slope, f0 and kappa by the joint fit, and the octave bound, taken at
+   * the noise's analytic bound after fit.tsv had compared it with the
+   * paper's 1 (the rss is about three times lower). */
+  snprintf(kind, sizeof kind, "fitted 4/%d", n);
   nl_harness_verdict_rows(r, "timing.tsv", t, "plain / bounded ratio", "octaves", "paper_ratio",
                           "eval_ratio", "eval_ratio_sd", "factor 1.25 2", kind,
-                          "evaluations; slope, f0 and kappa fitted jointly to the six ratios");
+                          "evaluations; slope, f0, kappa and the octave bound chosen by the six "
+                          "ratios");
+  /* Table 5.1 is in milliseconds: the same ratio in CPU time, one thread,
+   * on a shared machine (no sd over seeds kept for the ratio itself). */
+  nl_harness_verdict_rows(r, "timing.tsv", t, "plain / bounded time ratio", "octaves",
+                          "paper_ratio", "ratio", NULL, "factor 1.25 2", kind,
+                          "CPU time of one thread, the scene of the evaluation fit");
   char what[96];
   snprintf(what, sizeof what, "growth of the plain / bounded ratio, r(%d) / r(%d)",
            run->label[last], run->label[2]);
+  /* the growth is free of the slope's level but read on the fitted scene */
   nl_harness_verdict(r, "growth.tsv", g, 0, what, "paper_growth", "growth", "growth_sd",
-                     "factor 1.25 2", "independent",
-                     "slope-free; growth.tsv gives its range over every reading of the joint grid");
+                     "factor 1.25 2", kind,
+                     "the fitted scene; growth.tsv gives its range over every reading of the joint "
+                     "grid");
   nl_harness_text(r,
-                  "**Growth, slope-free:** the paper's ratio grows %.2fx from N = %d to N = %d; "
+                  "**Growth:** the paper's ratio grows %.2fx from N = %d to N = %d; "
                   "ours %.2fx (sd %.2g), and %.2fx to %.2fx over all %g readings of the joint grid "
-                  "(growth.tsv): no setting of the three free parameters reaches it.\n",
+                  "(growth.tsv): no setting of the three free parameters reaches it. The octave bound "
+                  "counts as a fourth: it was kept at the analytic bound after fit.tsv had "
+                  "compared it with the paper's 1.\n",
                   nl_table_value(g, 0, "paper_growth"), run->label[2], run->label[last],
                   nl_table_value(g, 0, "growth"), nl_table_value(g, 0, "growth_sd"),
                   nl_table_value(g, 0, "grid_min"), nl_table_value(g, 0, "grid_max"),

@@ -67,6 +67,16 @@ int main(int argc, char **argv)
   if (!ts) nl_harness_die(r, 1, "%s", err.msg);
   nl_harness_write_table(r, t, "bandwidth.tsv");
   nl_harness_write_table(r, ts, "bandwidth_selected.tsv");
+  /* The control: the headline's own samples in a random order, a noise
+   * with the same values and no band, through the same estimator. */
+  a3_reading shuf = rd;
+  shuf.shuffle = 1;
+  double mc[NSIG][7];
+  nl_table *tc = a3_bandwidth_table(&shuf, seed0, seeds, paper, sig_name, mc, &err);
+  if (!tc) nl_harness_die(r, 1, "%s", err.msg);
+  nl_harness_write_table(r, tc, "control_shuffled.tsv");
+  nl_table *tr = a3_ratio_table(m, mc, paper);
+  nl_harness_write_table(r, tr, "sum_over_octave.tsv");
 
   /* How the band moves with the unstated sample length, rate, encoding and
    * line, over at most 3 seeds. */
@@ -97,6 +107,8 @@ int main(int argc, char **argv)
                  .ms = ms,
                  .bandwidth = t,
                  .selected = ts,
+                 .control = tc,
+                 .ratio = tr,
                  .hypotheses = hy,
                  .psd = pt,
                  .sweep = sw,
@@ -106,6 +118,8 @@ int main(int argc, char **argv)
   a3_report_figures(r, &run);
   nl_table_free(t);
   nl_table_free(ts);
+  nl_table_free(tc);
+  nl_table_free(tr);
   nl_table_free(sw);
   nl_table_free(sh);
   nl_table_free(pt);

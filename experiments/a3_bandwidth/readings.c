@@ -2,6 +2,8 @@
 #include "readings.h"
 #include "noise/nl_noise_alt.h"
 
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_rng.h>
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>
 #include <stdlib.h>
@@ -123,6 +125,12 @@ double *a3_reading_sample(const nl_noise_perm3 *p, int s, const a3_reading *rd, 
     for (size_t k = 0; k < *n; k++) x[k] = 0.5 * (x[k] + 1.0); /* the shader stored (noise + 1)/2 */
   if (rd->hash24)
     for (size_t k = 0; k < *n; k++) x[k] = hash24_round_trip(x[k]);
+  if (rd->shuffle) {
+    gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(g, nl_seed_stream(seed, "a3.shuffle", (unsigned long)s));
+    gsl_ran_shuffle(g, x, *n, sizeof *x);
+    gsl_rng_free(g);
+  }
   return x;
 }
 

@@ -66,6 +66,8 @@ typedef struct {
   int shader, axis;
   int noise, hash24;
   int window, two_sided, sigma_rms, gamma_no_dc, bin_edge, radians;
+  int shuffle; /* 1: the line's samples in a random order (stream "a3.shuffle" of the
+                * seed): the same values and variance, a flat spectrum; the control */
 } a3_reading;
 
 /* One sample of signal s under a reading, on the line of seed (caller

@@ -24,6 +24,8 @@ typedef struct {
   const double (*m)[7], (*ms)[7]; /* a3_bandwidth_seeds of the headline, the selected */
   const nl_table *bandwidth, *selected, *hypotheses, *psd; /* selected: bandwidth_selected.tsv */
   const nl_table *sweep, *sweep_sel; /* sweep_sel NULL when the selected is the base */
+  const nl_table *control;           /* control_shuffled.tsv: the headline's samples shuffled */
+  const nl_table *ratio;             /* sum_over_octave.tsv: F_sup of Fnoise_2 / 2nd octave's */
 } a3_run;
 
 /* The paper and the reading of the bandwidth table, the table, the

@@ -37,6 +37,21 @@ nl_table *a3_psd(const a3_reading *rd, unsigned long seed, nl_error *err)
   return t;
 }
 
+nl_table *a3_ratio_table(const double m[A3_NSIGNALS][7], const double mc[A3_NSIGNALS][7],
+                         const double paper[][2])
+{
+  const char *cols[] = { "reading", "paper", "ratio", "ratio_sd" };
+  nl_table *t = nl_table_alloc(4, cols);
+  const double(*v[2])[7] = { m, mc };
+  const char *name[2] = { "headline", "shuffled control" };
+  for (int k = 0; k < 2; k++) {
+    double a = v[k][2][2], sa = v[k][2][3], b = v[k][1][2], sb = v[k][1][3], q = a / b;
+    nl_table_append(t, "sddd", name[k], paper[2][1] / paper[1][1], q,
+                    q * sqrt(sa * sa / (a * a) + sb * sb / (b * b)));
+  }
+  return t;
+}
+
 nl_table *a3_bandwidth_table(const a3_reading *rd, unsigned long seed0, int seeds,
                              const double paper[][2], const char *const *sig,
                              double m[A3_NSIGNALS][7], nl_error *err)

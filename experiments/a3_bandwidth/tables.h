@@ -25,6 +25,12 @@ nl_table *a3_bandwidth_table(const a3_reading *rd, unsigned long seed0, int seed
                              const double paper[][2], const char *const *sig,
                              double m[A3_NSIGNALS][7], nl_error *err);
 /* Columns freq, psd_oct1.., gamma_oct1.. up to 8 cycles per unit (DC left out). */
+/* Table 5.2's F_sup of Fnoise_2 over the 2nd octave's (the paper's is
+ * 14.8% above): one row for the headline (m) and one for the control (mc,
+ * a3_bandwidth_seeds of each), columns quantity, paper, ratio, ratio_sd
+ * (the sds of the two means propagated as if independent). */
+nl_table *a3_ratio_table(const double m[A3_NSIGNALS][7], const double mc[A3_NSIGNALS][7],
+                         const double paper[][2]);
 nl_table *a3_psd(const a3_reading *rd, unsigned long seed, nl_error *err);
 /* The sensitivity table: mean F_inf, F_sup of each signal when the length
  * (64 .. 2048 units), then the rate (4 .. 128 per unit), takes the first

@@ -1,6 +1,8 @@
 /* alias.c - A4's aliased energy (alias.h). */
 #include "alias.h"
 #include "line.h"
+#include "noise/nl_noise.h"
+#include "spectrum/nl_spectrum.h"
 
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_statistics_double.h>
@@ -20,6 +22,36 @@ nl_status a4_alias_energy(const nl_noise_perm3 *p, double f, double length, doub
    * value (noise + 1) / 2 has a quarter of it. */
   if (!rc) *e_over_t = frac * 0.25 * sigma * sigma / NL_BOUNDS_T;
   return rc;
+}
+
+nl_status a4_alias_energy2(const nl_noise_perm3 *p, double f, double extent, double rate,
+                           double nyquist, double *e_over_t, nl_error *err)
+{
+  int n = (int)llround(extent * rate);
+  nl_status rc = nl_spectrum_check_size(n, n, err);
+  if (rc) return rc;
+  nl_noise_basis b = nl_noise_basis_perm3(p);
+  nl_noise_octaves o = nl_noise_octaves_fbm(1, 1.0, 1.0);
+  o.freq[0] = f;
+  nl_noise_window w = { 0, 0, 0.5, extent, n, n };
+  size_t nn = (size_t)n * (size_t)n;
+  double *v = nl_xmalloc(nn * sizeof *v), *P = nl_xmalloc(nn * sizeof *P);
+  nl_noise_fractal_grid(&b, &o, &w, v);
+  for (size_t k = 0; k < nn; k++) v[k] = 0.5 * (v[k] + 1.0); /* the stored value */
+  nl_spectrum_hann2(v, n, n, v);
+  nl_spectrum_power2(v, n, n, P);
+  double above = 0;
+  for (int y = 0; y < n; y++) {
+    double fy = fabs(nl_spectrum_freq(y, n)) * rate;
+    for (int x = 0; x < n; x++) {
+      double fx = fabs(nl_spectrum_freq(x, n)) * rate;
+      if (fx > nyquist || fy > nyquist) above += P[(size_t)y * n + x];
+    }
+  }
+  free(v);
+  free(P);
+  *e_over_t = above / NL_BOUNDS_T;
+  return NL_OK;
 }
 
 void a4_t_test(const double *x, int n, double mu, double *p_below, double *p_above)

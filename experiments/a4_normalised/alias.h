@@ -22,6 +22,14 @@
 nl_status a4_alias_energy(const nl_noise_perm3 *p, double f, double length, double rate,
                           double nyquist, double *e_over_t, nl_error *err);
 
+/* The same for Fig. 5.7's 2D image: the stored value (noise(f p) + 1) / 2
+ * on the plane z = 0.5 over [0, extent)^2 at rate samples per unit, Hann
+ * tapered (nl_spectrum_hann2: its power sums to the variance), and the
+ * power outside the square |f_x|, |f_y| <= nyquist (cycles per unit) that
+ * a grid of 2 nyquist samples per unit folds back, over T. */
+nl_status a4_alias_energy2(const nl_noise_perm3 *p, double f, double extent, double rate,
+                           double nyquist, double *e_over_t, nl_error *err);
+
 /* One-sided p-values of Student's t test of the mean of x[0..n-1] against
  * mu: *p_below for the alternative mean < mu, *p_above for mean > mu (both
  * 0.5 when n < 2 or the sd is 0 and the mean equals mu; 0 or 1 when the sd

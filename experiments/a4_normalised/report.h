@@ -17,13 +17,18 @@ typedef struct {
   double f_sup;     /* mean F_sup over the seeds */
   int seeds;
   const nl_table *aliasing;
+  double extent;     /* side in units of the 2D planes of the energy */
+  double plane_rate; /* their samples per unit */
+  double paper_f_sup; /* Table 5.2's F_sup: the divisor of panel (b) and the headline */
 } a4_run;
 
 /* The paper and our reading, the aliasing table, Fig. 5.7 and its price. */
 void a4_report(nl_harness *r, const a4_run *run);
-/* The energy above Nyquist against T (aliased_energy.tsv), its prose,
- * the two verdicts of Fig. 5.7 decided by it and the figure's row. */
-void a4_report_energy(nl_harness *r, const nl_table *et, double nyquist);
+/* The energy above Nyquist against T on the line (aliased_energy.tsv) and
+ * on the 2D plane (aliased_energy_2d.tsv), its prose, the verdicts of
+ * Fig. 5.7 decided by it, each with its control, and the figure's row. */
+void a4_report_energy(nl_harness *r, const a4_run *run, const nl_table *et, const nl_table *et2,
+                      double nyquist);
 /* The title of Fig. 5.7's montage at the run's rate, into buf. */
 void a4_figure_title(const a4_run *run, char *buf, size_t size);
 

@@ -5,6 +5,8 @@
 #include "expect.h"
 #include "study/nl_study.h"
 
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
 #include <math.h>
 #include <stdlib.h>
@@ -157,4 +159,41 @@ double *l1_window(const double *img, int size, int w)
   for (int y = 0; y < w; y++)
     for (int x = 0; x < w; x++) o[(size_t)y * w + x] = img[(size_t)y * size + x];
   return o;
+}
+
+void l1_raw_tile_seed(nl_wavelet_tile *t, unsigned long seed)
+{
+  size_t total = (size_t)t->n * (size_t)t->n * (t->dim == 3 ? (size_t)t->n : 1u);
+  gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(g, nl_seed_stream(seed, "wavelet.tile", 0)); /* the tile's own step 1 */
+  for (size_t i = 0; i < total; i++) t->data[i] = (float)gsl_ran_gaussian_ziggurat(g, 1.0);
+  gsl_rng_free(g);
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+double l1_gauss_distance(const nl_wavelet_tile *t, int per_unit)
+{
+  size_t side = (size_t)t->n * (size_t)per_unit, n = side * side;
+  double *v = calloc(n, sizeof *v);
+  for (size_t y = 0; y < side; y++)
+    nl_wavelet_row(t, 0.5 / per_unit, 1.0 / per_unit, (y + 0.5) / per_unit, 0.5, side, 1.0,
+                   v + y * side);
+  double mean = 0, ss = 0;
+  for (size_t i = 0; i < n; i++) mean += v[i];
+  mean /= (double)n;
+  for (size_t i = 0; i < n; i++) ss += (v[i] - mean) * (v[i] - mean);
+  double sd = sqrt(ss / (double)(n - 1));
+  qsort(v, n, sizeof *v, cmp_double);
+  double d = 0;
+  for (size_t i = 0; i < n; i++) {
+    double phi = gsl_cdf_ugaussian_P((v[i] - mean) / sd);
+    d = fmax(d, fmax(fabs((double)(i + 1) / (double)n - phi), fabs(phi - (double)i / (double)n)));
+  }
+  free(v);
+  return d;
 }

@@ -35,6 +35,16 @@ nl_table *l1_variance_readings(int n, int K, unsigned long seed0, double paper);
 /* The readings whose |gap_in_sd| <= nsd, as "reading (var +- sd); ..." in
  * buf (size bytes, truncated at a whole reading); returns how many. */
 int l1_readings_within(const nl_table *t, double nsd, char *buf, size_t size);
+/* The control of L1's rows: step 1 of the tile alone, i.i.d. N(0, 1)
+ * coefficients (the very draws nl_wavelet_tile_seed starts from) with
+ * no band-pass (no down-, upsampling, subtraction), the same B-spline
+ * evaluation: noise without the wavelet construction. */
+void l1_raw_tile_seed(nl_wavelet_tile *t, unsigned long seed);
+/* The Kolmogorov distance sup |F_n - Phi| of a tile's values on one period
+ * (per_unit samples per unit and axis, 2D tiles; 3D: the plane z = 0.5),
+ * standardised by their own mean and sd, from the normal CDF. */
+double l1_gauss_distance(const nl_wavelet_tile *t, int per_unit);
+
 /* L1's leakage table from K seeds' nb x nb shares (nl_byexample_band_leakage,
  * share[(s nb + k) nb + j]: band k's power in eq. 13 band j): band, below
  * (mean share in coarser bands), inside (mean), inside_sd, above (finer). */

@@ -106,8 +106,8 @@ int main(int argc, char **argv)
   if (nphotos) nl_harness_write_table(r, pt, "photos.tsv");
 
   nl_table *tt;
-  nl_table *st = l2_claims(r, et, size, sw.err_all, sw.err_fine, sw.sizes, sw.nsizes, sw.seeds,
-                           FINE, &tt);
+  nl_table *st = l2_claims(r, size, sw.err_all, sw.err_fine, sw.sizes, sw.nsizes, sw.seeds, FINE,
+                           seed0, &tt);
   l2_report(r, &fig, &sw, wt, et, st, tt, pt, nphotos, exdir, pmax, pseeds);
   nl_table_free(st);
   nl_table_free(tt);

@@ -29,13 +29,14 @@ static const nl_byexample_options var_opt[NVAR] = {
 
 /* Exemplar k's variant v over the K seeds: one row of ks.tsv; returns the
  * synthesis of the first seed. */
-static nl_image *variant(nl_harness *r, nl_table *kt, int k, int v, const nl_image *ex, int size)
+static nl_image *variant(nl_harness *r, nl_table *kt, const char *kind, int v, const nl_image *ex,
+                         int size)
 {
   int K = nl_harness_seeds(r);
   nl_error err;
   nl_byexample_params p;
   if (nl_byexample_analyse(ex, &var_opt[v], &p, &err))
-    nl_harness_die(r, 1, "%s: %s", kinds[k], err.msg);
+    nl_harness_die(r, 1, "%s: %s", kind, err.msg);
   nl_byexample_spline_kind spline = v == 3 ? NL_SPLINE_FRITSCH_CARLSON : NL_SPLINE_STEFFEN;
   nl_byexample_synth_options so = {1, 0, 0, spline};
   double *ks = malloc((size_t)K * 5 * sizeof *ks);
@@ -44,7 +45,7 @@ static nl_image *variant(nl_harness *r, nl_table *kt, int k, int v, const nl_ima
   /* The K syntheses on the run's threads; sums in seed order after them. */
   nl_image *first = l3_synth_seeds(&p, &so, ex, size, K, nl_harness_seed(r),
                                    nl_harness_threads(r), ks, per, cs, &err);
-  if (!first) nl_harness_die(r, 1, "%s: %s", kinds[k], err.msg);
+  if (!first) nl_harness_die(r, 1, "%s: %s", kind, err.msg);
   double acc[3] = {0};
   double m = 0;
   double ss = 0;
@@ -54,9 +55,14 @@ static nl_image *variant(nl_harness *r, nl_table *kt, int k, int v, const nl_ima
     ce += cs[s] / K;
     m += ks[s] / K;
   }
-  for (int s = 0; s < K; s++) ss += (ks[s] - m) * (ks[s] - m);
-  nl_table_append(kt, "ssddddddi", kinds[k], variants[v], m, K > 1 ? sqrt(ss / (K - 1)) : 0.0,
-                  acc[0], acc[1], acc[2], ce, nl_byexample_param_count(&p));
+  double cv = 0;
+  for (int s = 0; s < K; s++) {
+    ss += (ks[s] - m) * (ks[s] - m);
+    cv += (cs[s] - ce) * (cs[s] - ce);
+  }
+  nl_table_append(kt, "ssddddddidi", kind, variants[v], m, K > 1 ? sqrt(ss / (K - 1)) : 0.0,
+                  acc[0], acc[1], acc[2], ce, nl_byexample_param_count(&p),
+                  K > 1 ? sqrt(cv / (K - 1)) : 0.0, K);
   free(ks);
   return first;
 }
@@ -90,6 +96,7 @@ int main(int argc, char **argv)
   double max_ks = nl_harness_param(r, "max_ks", 0.03, 0, 1,
                                    "the KS distance of the luminance must be below this");
   nl_harness_params_done(r);
+  nl_harness_note(r, "exemplars", "%s", exdir); /* the photographs' folder, for a figure's reader */
   int K = nl_harness_seeds(r);
   unsigned long seed0 = nl_harness_seed(r);
   char names[16][64];
@@ -97,9 +104,9 @@ int main(int argc, char **argv)
   int np = l3_photos_load(exdir, names, photos, nphoto, &err); /* before any output */
   if (np <= 0) nl_harness_die(r, 2, "%s", err.msg);
 
-  const char *kcols[] = {"kind", "variant", "ks_mean",  "ks_sd", "ks_r",
-                         "ks_g", "ks_b",    "corr_err", "params"};
-  nl_table *kt = nl_table_alloc(9, kcols);
+  const char *kcols[] = {"kind", "variant", "ks_mean",  "ks_sd",      "ks_r", "ks_g",
+                         "ks_b", "corr_err", "params", "corr_err_sd", "seeds"};
+  nl_table *kt = nl_table_alloc(11, kcols);
   const char *scols[] = {"kind", "max_abs_diff_fc_vs_steffen"};
   nl_table *ft = nl_table_alloc(2, scols);
 
@@ -108,7 +115,7 @@ int main(int argc, char **argv)
     nl_image *ex = nl_byexample_exemplar(kinds[k], size, xseed);
     nl_image *first[NVAR];
     for (int v = 0; v < NVAR; v++) {
-      first[v] = variant(r, kt, k, v, ex, size);
+      first[v] = variant(r, kt, kinds[k], v, ex, size);
       nl_harness_progress(r, (k * NVAR + v + 1.0) / (NKIND * NVAR), kinds[k]);
     }
     /* steffen vs Fritsch-Carlson on the same noise (seed0): pixel difference. */
@@ -126,13 +133,29 @@ int main(int argc, char **argv)
     nl_study_montage(r, panels, labels, 6, 6, title, name);
     for (int v = 0; v < NVAR; v++) nl_image_free(first[v]);
     nl_image_free(ex);
+    /* Fig. 5's control: the exemplar with each channel from another seed,
+     * so that its channels are independent and RGB synthesis loses no
+     * correlation; PCA and RGB syntheses of it. */
+    nl_image *ix = NULL;
+    for (int c = 0; c < 3; c++) {
+      nl_image *e = nl_byexample_exemplar(kinds[k], size, nl_seed_stream(xseed, "l3.channel", c));
+      if (!ix) ix = nl_image_alloc(e->width, e->height, 3);
+      for (size_t q = 0; q < (size_t)e->width * e->height; q++)
+        ix->data[3 * q + c] = e->data[q * e->channels + (e->channels == 3 ? c : 0)];
+      nl_image_free(e);
+    }
+    snprintf(name, sizeof name, "%s, channels independent", kinds[k]);
+    for (int v = 0; v <= 2; v += 2) /* pca_hist, rgb_hist */
+      nl_image_free(variant(r, kt, name, v, ix, size));
+    nl_image_free(ix);
   }
   nl_harness_write_table(r, kt, "ks.tsv");
   nl_harness_write_table(r, ft, "spline.tsv");
   nl_table *gt = l3_gauss_table((size_t)size * size, K, seed0, nl_harness_threads(r));
   nl_harness_write_table(r, gt, "gauss.tsv");
   nl_table *pt = l3_photos(r, names, photos, np, psize, K, seed0, min_share, max_ratio, max_ks);
-  nl_table *ct = l3_verdicts(r, pt, psize);
+  nl_table *ct = l3_verdicts(r, pt, psize, photos, names, np, min_share, max_ratio, max_ks);
+  l3_figure_verdicts(r, kt, kinds, NKIND);
 
   l3_report_exemplars(r, kt, ft, kinds, NKIND, size, K);
   l3_report_photos(r, kt, gt, pt, ct, K, psize, seed0, min_share, max_ratio, max_ks);

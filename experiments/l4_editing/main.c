@@ -65,10 +65,12 @@ int main(int argc, char **argv)
    * solid slices against the 2D synthesis; K seeds (replicate 0 is the figure's). */
   q.K = nl_harness_seeds(r);
   l4_edit *rep = nl_xcalloc((size_t)q.K, sizeof *rep);
+  l4_edit *rep1 = nl_xcalloc((size_t)q.K, sizeof *rep1); /* the control: factor 1 */
   for (int s = 0; s < q.K; s++) {
     unsigned long sk = nl_seed_replicate(seed, s);
     nl_image *exk = nl_byexample_exemplar("granite", size, nl_seed_stream(sk, "l4.exemplar", 0));
-    if (l4_edit_replicate(exk, q.nfine, q.factor, sk, &rep[s], &err))
+    if (l4_edit_replicate(exk, q.nfine, q.factor, sk, &rep[s], &err) ||
+        l4_edit_replicate(exk, q.nfine, 1.0, sk, &rep1[s], &err))
       nl_harness_die(r, 1, "%s", err.msg);
     nl_image_free(exk);
     nl_harness_progress(r, (s + 1.0) / q.K, "seeds");
@@ -104,7 +106,7 @@ int main(int argc, char **argv)
   nl_study_montage(r, (const nl_image *const *)seq, tl, 5, 5,
                    "Fig. 12: morphing clouds into granite", "morph.png");
 
-  q.claims = l4_verdicts(&q, rep);
+  q.claims = l4_verdicts(&q, rep, rep1);
   l4_report(&q);
   nl_image *all[] = {ex, syn, ed, s0, s1, ex2};
   for (int i = 0; i < 6; i++) nl_image_free(all[i]);
@@ -115,6 +117,7 @@ int main(int argc, char **argv)
   nl_table_free(q.morph);
   nl_table_free(q.claims);
   free(rep);
+  free(rep1);
   nl_harness_check_measured(r, "*", 100); /* measured tolerances (nl_harness.h) */
   return nl_harness_end(r);
 }
