@@ -23,6 +23,9 @@ set -euo pipefail
 exp="$1" expect="$2" out="$3"
 pat="$(cd "$(dirname "$0")/../data/patterns" && pwd)"
 "$exp" --quick "${NOIMG[@]}" --threads 2 --out "$out" --patterns "$pat" >/dev/null
+# every panel against its caption (tests/oracle_chengb.c: the first seed
+# rerun, the value point by point), this run's and the committed one's
+panels_oracle chengb c2 "$out" "$(dirname "$0")/../results/c2_ks_vs_chisq"
 "$expect" "$out/summary.tsv" rows=8 'E_ks<0.06' 'chi2>0' 'E_con>0' 'p_kuiper_min>0.05' \
   image:noise_flower.png image:noise_x.png
 awk -F'\t' 'NR == 1 {for (i = 1; i <= NF; i++) col[$i] = i} NR == 1 || $col["objective"] == "ks" || $col["objective"] == "kuiper"' \

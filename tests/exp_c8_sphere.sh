@@ -33,6 +33,9 @@ if thread_identity; then
   "$exp" --quick --no-images --threads 1 --set size=16 --set voxels=4 --out "$out.t1" >/dev/null 2>&1
   for t in summary ecdf levels; do cmp "$out/$t.tsv" "$out.t1/$t.tsv"; done
 fi
+# every panel against its caption (tests/oracle_chengb.c: the first seed
+# rerun, the value point by point), this run's and the committed one's
+panels_oracle chengb c8 "$out" "$(dirname "$0")/../results/c8_sphere"
 "$expect" "$out/summary.tsv" rows=6 'seeds==3' 'E_stat>0' 'E_con>0' 'E_con_const>0' 'contrast>0' \
   image:slices_torus.png image:slices_ball.png image:slices_slab.png
 "$expect" "$out/ecdf.tsv" rows=512 'z_opt>=0' 'z_opt<=1' 'phi_opt>=0' 'phi_opt<1'

@@ -30,6 +30,9 @@ pat="$root/data/patterns"
 # The seed runs are nl_parallel_for items (nl_study_cheng_runs): one thread
 # gives the same tables, timing columns aside (the check ignores them).
 same_on_one_thread "$exp" "$out" --patterns "$pat"
+# every panel against its caption (tests/oracle_chengb.c: the first seed
+# rerun, the value point by point), this run's and the committed one's
+panels_oracle chengb c9 "$out" "$(dirname "$0")/../results/c9_amplitudes"
 "$expect" "$out/summary.tsv" rows=18 'seeds==3' 'E_ks>0' 'E_ks<0.025' 'E_con<E_con_random' \
   'contrast>0' image:values.png
 "$expect" "$out/gains.tsv" rows=48 'gain<=R' 'at_bound>=0' 'at_bound<=1'
