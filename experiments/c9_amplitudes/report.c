@@ -254,6 +254,20 @@ void c9_verdicts(nl_harness *r, const c9_tables *t, const c9_tables *b, const nl
                   "negative control runs the same test with the gains fixed at random within the "
                   "same bounds (baselines.tsv), amplitudes changed as much but not towards the "
                   "pattern.\n");
+  { /* how much of the shape part is the contrast: its correlation over the
+     * rows with contrast x (1 - r), the scale the gains set times the shape */
+    double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0, n = (double)t->parts->nrows;
+    for (size_t q = 0; q < t->parts->nrows; q++) {
+      double x = nl_table_value(t->sum, q, "contrast") * nl_table_value(t->parts, q, "one_minus_r");
+      double y = nl_table_value(t->parts, q, "E_con_shape");
+      sx += x; sy += y; sxx += x * x; syy += y * y; sxy += x * y;
+    }
+    double cxy = sxy - sx * sy / n, cxx = sxx - sx * sx / n, cyy = syy - sy * sy / n;
+    nl_harness_text(r,
+                    "Over the %g rows of parts.tsv the shape part correlates %.4f with contrast x "
+                    "(1 - r): it measures the contrast the gains set as much as the shape.\n",
+                    n, cxx > 0 && cyy > 0 ? cxy / sqrt(cxx * cyy) : 0.0);
+  }
   nl_harness_report_columns(r, b->parts, "baselines_parts.tsv",
                             "texture,pattern,amplitudes,seeds,E_con,E_con_sd,one_minus_r,"
                             "one_minus_r_sd",
