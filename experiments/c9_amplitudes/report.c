@@ -254,20 +254,28 @@ void c9_verdicts(nl_harness *r, const c9_tables *t, const c9_tables *b, const nl
                   "negative control runs the same test with the gains fixed at random within the "
                   "same bounds (baselines.tsv), amplitudes changed as much but not towards the "
                   "pattern.\n");
-  { /* how much of the shape part is the contrast: its correlation over the
-     * rows with contrast x (1 - r), the scale the gains set times the shape */
-    double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0, n = (double)t->parts->nrows;
-    for (size_t q = 0; q < t->parts->nrows; q++) {
-      double x = nl_table_value(t->sum, q, "contrast") * nl_table_value(t->parts, q, "one_minus_r");
-      double y = nl_table_value(t->parts, q, "E_con_shape");
-      sx += x; sy += y; sxx += x * x; syy += y * y; sxy += x * y;
-    }
-    double cxy = sxy - sx * sy / n, cxx = sxx - sx * sx / n, cyy = syy - sy * sy / n;
-    nl_harness_text(r,
-                    "Over the %g rows of parts.tsv the shape part correlates %.4f with contrast x "
-                    "(1 - r): it measures the contrast the gains set as much as the shape.\n",
-                    n, cxx > 0 && cyy > 0 ? cxy / sqrt(cxx * cyy) : 0.0);
+  /* How much of the shape part is the contrast: per case, its change from
+   * fixed to optimised amplitudes beside the change of contrast x (1 - r),
+   * the scale the gains set times the shape alone. */
+  char line[1600];
+  size_t len = 0;
+  line[0] = 0;
+  for (int i = 0; i < ncase; i++) {
+    size_t f = (size_t)C9_NCOND * i, o = f + 1;
+    char tb[32], pb[32];
+    double rs = nl_table_value(t->parts, o, "E_con_shape") / nl_table_value(t->parts, f, "E_con_shape");
+    double rp = nl_table_value(t->sum, o, "contrast") * nl_table_value(t->parts, o, "one_minus_r") /
+                (nl_table_value(t->sum, f, "contrast") * nl_table_value(t->parts, f, "one_minus_r"));
+    len += (size_t)snprintf(line + len, sizeof line - len, "%s%s/%s x%.4g against x%.4g",
+                            i ? "; " : "", nl_table_cell_text(t->sum, f, 0, tb),
+                            nl_table_cell_text(t->sum, f, 1, pb), rs, rp);
+    if (len >= sizeof line) break;
   }
+  nl_harness_text(r,
+                  "The shape part from fixed to optimised amplitudes against contrast x (1 - r) "
+                  "over the same change: %s. The shape part follows the contrast the gains set; "
+                  "1 - r is what is left of the shape.\n",
+                  line);
   nl_harness_report_columns(r, b->parts, "baselines_parts.tsv",
                             "texture,pattern,amplitudes,seeds,E_con,E_con_sd,one_minus_r,"
                             "one_minus_r_sd",
