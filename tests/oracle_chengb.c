@@ -347,7 +347,8 @@ static void slice_3d(const nl_noise_grad3 *t, const nl_cheng3_config *c,
   double s = 1 / (NL_NOISE_GRAD3_BOUND * asum);
   for (int b = 0; b < n; b++)
     for (int a = 0; a < n; a++) {
-      double p[3] = { (a + 0.5) / n, axis == 2 ? (b + 0.5) / n : 0.5, axis == 2 ? 0.5 : (b + 0.5) / n };
+      double u = (a + 0.5) / n, w = (b + 0.5) / n;
+      double p[3] = { u, axis == 2 ? w : 0.5, axis == 2 ? 0.5 : w };
       double out;
       if (!t) {
         int g = pat->grid, k[3];

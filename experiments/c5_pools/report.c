@@ -71,10 +71,10 @@ static void growth_row(nl_harness *r, nl_table *g, const nl_table *t, size_t q, 
                nl_table_value(t, q, "paper_K_final") - nl_table_value(t, q, "paper_K_initial"));
   nl_harness_text(r,
                   "%s: one more full-covariance component in d = %.4g dimensions (the "
-                  "replicates' mean) has d (d + 1) / 2 + d + 1 = %.6g parameters, so it adds %.6g to AIC (eq. 3.19) unless the "
-                  "log-likelihood of the %g input samples rises by as much as %.6g (%.4g per "
-                  "sample): the path grows K from %.3g to %.3g (thesis %g -> %g), with about "
-                  "%.0f samples per initial component. %s\n",
+                  "replicates' mean) has d (d + 1) / 2 + d + 1 = %.6g parameters, so it adds "
+                  "%.6g to AIC (eq. 3.19) unless the log-likelihood of the %g input samples "
+                  "rises by as much as %.6g (%.4g per sample): the path grows K from %.3g to "
+                  "%.3g (thesis %g -> %g), with about %.0f samples per initial component. %s\n",
                   nl_table_text(t, q, "texture"), d, m, 2 * m, n, m, m / n,
                   nl_table_value(t, q, "K0"), nl_table_value(t, q, "K_final"),
                   nl_table_value(t, q, "paper_K_initial"), nl_table_value(t, q, "paper_K_final"),
@@ -280,7 +280,8 @@ void c5_report(nl_harness *r, const c5_pools *T, const nl_cheng_pool_options *po
       "N = %d, epsilon = %g; low entries = variables of level%s 1%s; %zu input samples drawn from "
       "the pool; the mixture on the angles as (cos, sin) pairs (the thesis's own representation of "
       "a gradient, eq. 3.7's text), so it has no cut at 0 / 2 pi; the clustering distance is each "
-      "reading's (readings.tsv; the headline's: Euclidean on the raw angles); complete linkage (the merge distance "
+      "reading's (readings.tsv; the headline's: Euclidean on the raw angles); complete linkage "
+      "(the merge distance "
       "is the farthest pair, so every pair in a cluster lies within the cutoff; the thesis names "
       "the Hausdorff distance, which lies between the single- and the complete-linkage distance "
       "and is no linkage itself: linkage.tsv gives K0 under single, average and complete "

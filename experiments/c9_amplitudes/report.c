@@ -263,9 +263,11 @@ void c9_verdicts(nl_harness *r, const c9_tables *t, const c9_tables *b, const nl
   for (int i = 0; i < ncase; i++) {
     size_t f = (size_t)C9_NCOND * i, o = f + 1;
     char tb[32], pb[32];
-    double rs = nl_table_value(t->parts, o, "E_con_shape") / nl_table_value(t->parts, f, "E_con_shape");
-    double rp = nl_table_value(t->sum, o, "contrast") * nl_table_value(t->parts, o, "one_minus_r") /
-                (nl_table_value(t->sum, f, "contrast") * nl_table_value(t->parts, f, "one_minus_r"));
+    double rs =
+        nl_table_value(t->parts, o, "E_con_shape") / nl_table_value(t->parts, f, "E_con_shape");
+    double co = nl_table_value(t->sum, o, "contrast") * nl_table_value(t->parts, o, "one_minus_r");
+    double cf = nl_table_value(t->sum, f, "contrast") * nl_table_value(t->parts, f, "one_minus_r");
+    double rp = co / cf;
     len += (size_t)snprintf(line + len, sizeof line - len, "%s%s/%s x%.4g against x%.4g",
                             i ? "; " : "", nl_table_cell_text(t->sum, f, 0, tb),
                             nl_table_cell_text(t->sum, f, 1, pb), rs, rp);
