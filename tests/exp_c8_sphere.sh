@@ -33,6 +33,9 @@ if thread_identity; then
   "$exp" --quick --no-images --threads 1 --set size=16 --set voxels=4 --out "$out.t1" >/dev/null 2>&1
   for t in summary ecdf levels; do cmp "$out/$t.tsv" "$out.t1/$t.tsv"; done
 fi
+# every panel against its caption (tests/oracle_chengb.c: the first seed
+# rerun, the value point by point), this run's and the committed one's
+panels_oracle chengb c8 "$out" "$(dirname "$0")/../results/c8_sphere"
 "$expect" "$out/summary.tsv" rows=6 'seeds==3' 'E_stat>0' 'E_con>0' 'E_con_const>0' 'contrast>0' \
   image:slices_torus.png image:slices_ball.png image:slices_slab.png
 "$expect" "$out/ecdf.tsv" rows=512 'z_opt>=0' 'z_opt<=1' 'phi_opt>=0' 'phi_opt<1'
@@ -85,10 +88,23 @@ tsv_awk 'NR > 1 { s = n("con_offset_frac") + n("con_contrast_frac") + n("con_sha
     if (c == "") c = v("chi2_indep")
     else if (v("chi2_indep") != c) { print "random chi2_indep: " $0; exit 1 } }' \
   "$out/summary.tsv"
-# one verdict per pattern: z and phi independent (kind independent, fit rule)
-tsv_awk 'NR > 1 && !(v("kind") == "independent" && v("rule") == "fit 0.05 0.01" &&
-    v("source") ~ /p_indep_bonf$/) { print "verdict: " $0; exit 1 }
-  END { if (NR != 4) { print "verdicts: " NR - 1 ", wanted 3"; exit 1 } }' "$out/verdicts.tsv"
+# Two verdicts per pattern, each with its negative control: E_Con below the
+# best constant volume (less welch; control the random start tables, which
+# must fail it: their E_Con is above the optimised one's) and z and phi
+# independent (fit rule; control the optimised tables with z and phi paired
+# by rank, which the test must reject: measured chi2_indep 3308..3392 on
+# 49 df, p = 0). baselines.tsv holds the four rows per pattern.
+"$expect" "$out/baselines.tsv" rows=12 'seeds==3'
+tsv_awk 'NR > 1 { k[v("pattern") "/" v("table")] = 1 }
+  NR > 1 && v("table") == "paired" && !(n("p_indep_bonf") < 0.01) { print "paired not rejected: " $0; exit 1 }
+  END { split("torus ball slab", p, " "); split("optimised flat random paired", t, " ")
+    for (i = 1; i <= 3; i++) for (j = 1; j <= 4; j++) if (!((p[i] "/" t[j]) in k)) { print "missing " p[i] "/" t[j]; exit 1 } }' \
+  "$out/baselines.tsv"
+tsv_awk 'NR > 1 && v("kind") != "independent" { print "kind: " $0; exit 1 }
+  NR > 1 && v("control_verdict") != "not reproduced" { print "control passes: " $0; exit 1 }
+  NR > 1 && v("quantity") ~ /^z and phi/ { ind++; if (!(v("rule") == "fit 0.05 0.01" && v("source") ~ /p_indep_bonf$/)) { print "verdict: " $0; exit 1 } }
+  NR > 1 && v("quantity") ~ /^E_Con below a flat volume/ { flat++; if (v("rule") != "less welch 0.05") { print "verdict: " $0; exit 1 } }
+  END { if (ind != 3 || flat != 3 || NR != 7) { print "verdicts: " ind " + " flat ", wanted 3 + 3"; exit 1 } }' "$out/verdicts.tsv"
 refused "$exp" --quick --set grid=1 --out "$out.bad"
 refused "$exp" --quick --set octaves=9 --out "$out.bad"
 refused "$exp" --quick --set w1=0 --set w2=0 --out "$out.bad"

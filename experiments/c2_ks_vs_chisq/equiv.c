@@ -23,26 +23,26 @@ nl_status c2_tost_p(double mean_a, double sd_a, size_t n_a, double mean_b, doubl
 
 nl_table *c2_equiv_alloc(void)
 {
-  const char *cols[] = { "pattern",  "a",           "b",      "seeds",   "mean_a", "mean_b",
-                         "diff_pct", "margin_frac", "margin", "p_welch", "p_tost" };
+  const char *cols[] = { "pattern", "a",  "b",     "seeds",  "mean_a",  "mean_b", "no_diff",
+                         "diff",    "diff_pct", "se", "n_eff", "margin", "p_welch", "p_tost" };
   return nl_table_alloc(sizeof cols / sizeof *cols, cols);
 }
 
-size_t c2_equiv_add(nl_table *t, const nl_table *sum, size_t ra, size_t rb, const char *pattern,
-                    const char *a, const char *b, double margin_frac)
+double c2_equiv_margin(double sd_a, double sd_b) { return sqrt(0.5 * (sd_a * sd_a + sd_b * sd_b)); }
+
+size_t c2_equiv_add(nl_table *t, const char *pattern, const char *a, const char *b, double ma,
+                    double sa, size_t na, double mb, double sb, size_t nb, double margin)
 {
-  double ma = nl_table_value(sum, ra, "E_con");
-  double sa = nl_table_value(sum, ra, "E_con_sd");
-  double mb = nl_table_value(sum, rb, "E_con");
-  double sb = nl_table_value(sum, rb, "E_con_sd");
-  size_t na = (size_t)nl_table_value(sum, ra, "seeds");
-  size_t nb = (size_t)nl_table_value(sum, rb, "seeds");
-  double margin = margin_frac * 0.5 * (ma + mb);
+  double va = sa * sa / (double)na, vb = sb * sb / (double)nb;
+  double se = sqrt(va + vb);
+  double df = va + vb > 0 ? (va + vb) * (va + vb) /
+                                (va * va / ((double)na - 1) + vb * vb / ((double)nb - 1))
+                          : (double)(na + nb - 2);
   double pw, pt;
   nl_error err;
   if (nl_stats_welch_p(ma, sa, na, mb, sb, nb, &pw, &err)) pw = ma == mb ? 1 : 0;
   if (c2_tost_p(ma, sa, na, mb, sb, nb, margin, &pt, &err)) pt = fabs(ma - mb) < margin ? 0 : 1;
-  nl_table_append(t, "sssdddddddd", pattern, a, b, (double)na, ma, mb, 100 * (ma - mb) / mb,
-                  margin_frac, margin, pw, pt);
+  nl_table_append(t, "sssddddddddddd", pattern, a, b, (double)na, ma, mb, 0.0, mb - ma,
+                  100 * (mb - ma) / ma, se, df + 1, margin, pw, pt);
   return t->nrows - 1;
 }

@@ -25,15 +25,21 @@
 nl_status c2_tost_p(double mean_a, double sd_a, size_t n_a, double mean_b, double sd_b, size_t n_b,
                     double margin, double *p, nl_error *err);
 
-/* The equivalence table: pattern, a, b (the objectives), seeds, mean_a,
- * mean_b, diff_pct (100 (mean_a - mean_b) / mean_b), margin_frac, margin
- * (margin_frac x the mean of the two means), p_welch (two-sided, equal
- * means) and p_tost (equal within the margin). */
+/* The equivalence table, one row per pair of conditions a, b of a pattern:
+ * pattern, a, b, seeds (of a), mean_a, mean_b (E_Con), no_diff (0, the
+ * claim "close"), diff (mean_b - mean_a), diff_pct (100 diff / mean_a), se
+ * (sqrt(sd_a^2 / n_a + sd_b^2 / n_b)), n_eff (Welch-Satterthwaite df + 1,
+ * the n the harness's TOST takes), margin, p_welch (two-sided, equal means)
+ * and p_tost (equal within the margin, c2_tost_p). */
 nl_table *c2_equiv_alloc(void);
-/* Appends E_Con's test between summary rows ra (objective a) and rb (b) of
- * one pattern; returns the new row. Exit-free: an untestable pair (both sds
- * 0) gets p_tost 0 when |d| < margin, else 1. */
-size_t c2_equiv_add(nl_table *t, const nl_table *sum, size_t ra, size_t rb, const char *pattern,
-                    const char *a, const char *b, double margin_frac);
+/* C2's margin rule (docs/experiments.md, "Equivalence margins"), fixed
+ * before the run: one sd over seeds of a single run's E_Con, pooled over
+ * the two objectives, sqrt((sd_a^2 + sd_b^2) / 2). */
+double c2_equiv_margin(double sd_a, double sd_b);
+/* Appends the row of a (mean ma, sd sa over na seeds) against b; returns
+ * it. Exit-free: an untestable pair (both sds 0) gets p_tost 0 when
+ * |d| < margin, else 1. */
+size_t c2_equiv_add(nl_table *t, const char *pattern, const char *a, const char *b, double ma,
+                    double sa, size_t na, double mb, double sb, size_t nb, double margin);
 
 #endif

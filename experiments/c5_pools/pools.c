@@ -3,6 +3,7 @@
  * cutoff rule over the fit seeds, K against the cutoff, and the held-out
  * checks of three model variants. */
 #include "pools.h"
+#include "fit.h"
 #include "stats/nl_stats.h"
 #include "base/nl_parallel.h"
 
@@ -31,6 +32,10 @@ static const char *const path_cols[] = {
 static const char *const curve_cols[] = { "texture", "low_levels", "cutoff", "K" };
 static const char *const pool_cols[] = {
   "texture", "low_levels", "run", "E_start", "E_best", "kept", "seconds"
+};
+static const char *const fit_cols[] = {
+  "texture", "low_levels", "model", "K", "d", "n_train", "n_held", "n_compared", "ll_train",
+  "ll_held", "ll_aic", "ks_median", "ks_reject", "p_bonf", "params"
 };
 static const char *const assess_cols[] = {
   "texture", "low_levels", "model", "K", "ll_train", "ll_held", "n_held", "ks_median", "ks_reject"
@@ -185,6 +190,8 @@ typedef struct {
   const nl_cheng_pool *pool;
   const nl_cheng_model_options *mo;
   nl_cheng_model_check ck[NVAR];
+  c5_fit fit;          /* variant 0, the thesis's full mixture (fit.h) */
+  double d, n_in;      /* its dimension and input rows */
   double k[NVAR];
   nl_status st[NVAR];
   nl_error err[NVAR];
@@ -208,6 +215,12 @@ static void assess_item(void *ctx, size_t v, int t)
   gsl_rng_set(rng, nl_seed_stream(nl_harness_seed(j->r), "c5.held_out", 0));
   if (m->gmm)
     j->st[v] = nl_cheng_model_assess(j->pool, m, C5_ASSESS_DRAWS, rng, &j->ck[v], &j->err[v]);
+  if (v == 0 && !j->st[v]) {
+    gsl_rng_set(rng, nl_seed_stream(nl_harness_seed(j->r), "c5.fit_check", 0));
+    j->d = (double)m->d;
+    j->n_in = (double)m->n_in;
+    j->st[v] = c5_fit_check(j->pool, m, C5_ASSESS_DRAWS, rng, &j->fit, &j->err[v]);
+  }
   gsl_rng_free(rng);
   nl_cheng_model_free(m);
 }
@@ -221,6 +234,17 @@ static void assess_rows(nl_harness *r, c5_pools *T, const nl_study_cheng_thesis_
     nl_table_append(T->assess, "sdsdddddd", th->texture, (double)low, variants[v], j->k[v],
                     ck->ll_train, ck->ll_held, (double)ck->n_held, ck->ks_median, ck->ks_reject);
   }
+  /* AIC's own estimate of the held-out mean log-likelihood: the training
+   * mean less the parameters per input row (AIC = -2 L + 2 m, eq. 3.19) */
+  const c5_fit *f = &j->fit;
+  double ll_aic = j->ck[0].ll_train - j->k[0] * c5_params_per_component(j->d) / j->n_in;
+  nl_table_append(T->fit, "sdsdddddddddddd", th->texture, (double)low, "mixture", j->k[0], j->d,
+                  j->n_in, (double)f->n_held, (double)f->n_compared, j->ck[0].ll_train,
+                  j->ck[0].ll_held, ll_aic, f->ks_median, f->ks_reject, f->p_bonf,
+                  j->k[0] * c5_params_per_component(j->d));
+  nl_table_append(T->fit, "sdsdddddsssdddd", th->texture, (double)low, "uniform", 0.0, j->d,
+                  j->n_in, (double)f->n_held, (double)f->n_compared, "n/a", "n/a", "n/a",
+                  f->ks_median_uniform, f->ks_reject_uniform, f->p_bonf_uniform, 0.0);
 }
 
 /* Both rules' seeds and the assessment's variants: one region of
@@ -250,6 +274,7 @@ void c5_pools_alloc(c5_pools *T)
   T->curve = nl_table_alloc(sizeof curve_cols / sizeof *curve_cols, curve_cols);
   T->runs = nl_table_alloc(sizeof pool_cols / sizeof *pool_cols, pool_cols);
   T->assess = nl_table_alloc(sizeof assess_cols / sizeof *assess_cols, assess_cols);
+  T->fit = nl_table_alloc(sizeof fit_cols / sizeof *fit_cols, fit_cols);
   T->orig = nl_table_alloc(sizeof orig_cols / sizeof *orig_cols, orig_cols);
 }
 
@@ -261,6 +286,7 @@ void c5_pools_write(nl_harness *r, const c5_pools *T)
   nl_harness_write_table(r, T->curve, "cutoff_k.tsv");
   nl_harness_write_table(r, T->runs, "pool_runs.tsv");
   nl_harness_write_table(r, T->assess, "assess.tsv");
+  nl_harness_write_table(r, T->fit, "fit.tsv");
   nl_harness_check(r, "original.tsv", "seconds_opt", "ignore"); /* times: never compared */
   nl_harness_check(r, "original.tsv", "seconds_pool", "ignore");
   nl_harness_check(r, "pool_runs.tsv", "seconds", "ignore");
@@ -274,6 +300,7 @@ void c5_pools_free(c5_pools *T)
   nl_table_free(T->curve);
   nl_table_free(T->runs);
   nl_table_free(T->assess);
+  nl_table_free(T->fit);
   nl_table_free(T->orig);
 }
 

@@ -1,23 +1,24 @@
 /* C5's tables (pools.c): gmm (Tables 4.2-4.4 per texture, split and cutoff
  * rule, the thesis's numbers beside ours), path (AIC/BIC along K, first
  * seed), curve (K against the cutoff), runs (E_R per pool run), assess
- * (held-out checks of three model variants), orig (the original table
- * against its pool). */
+ * (held-out checks of three model variants), fit (the thesis's full
+ * mixture against held-out rows, and uniform angles as its control: fit.h),
+ * orig (the original table against its pool). */
 #ifndef C5_POOLS_H
 #define C5_POOLS_H
 
 #include "study/nl_study_cheng.h"
 
 typedef struct {
-  nl_table *gmm, *path, *curve, *runs, *assess, *orig;
+  nl_table *gmm, *path, *curve, *runs, *assess, *fit, *orig;
 } c5_pools;
 
 #define C5_MAXSEEDS     64   /* seeds of the model fits averaged per row */
 #define C5_ASSESS_DRAWS 1000 /* mixture draws (and pool rows) per held-out KS check */
 
 void c5_pools_alloc(c5_pools *T);
-/* Writes the six tables (original.tsv, gmm.tsv, aic_path.tsv, cutoff_k.tsv,
- * pool_runs.tsv, assess.tsv) and marks their timing columns "ignore". */
+/* Writes the seven tables (original.tsv, gmm.tsv, aic_path.tsv, cutoff_k.tsv,
+ * pool_runs.tsv, assess.tsv, fit.tsv) and marks their timing columns "ignore". */
 void c5_pools_write(nl_harness *r, const c5_pools *T);
 void c5_pools_free(c5_pools *T);
 

@@ -17,12 +17,16 @@
  * ess.tsv: effective sample size per texture, replicate and pool rule;
  * reproduce.tsv: C6's question (reproductions below the original?) under
  * each reading's model of replicate 0.
- * HEADLINE: the reading the text states, fixed before any comparison
- * (C5_HEADLINE): Tables 4.2-4.4 print "Number of input sample 1000" and a
- * cutoff (15.5-19.5) on distances between the thesis's variables, the angles
- * (on (cos, sin) chords the printed cutoffs leave one cluster: gmm.tsv,
- * status one_cluster), and sec. 3.5.2 keeps the N solutions before the
- * end of each run (successive states). Its rows carry headline = 1.
+ * HEADLINE (C5_HEADLINE): the reading the text states: Tables 4.2-4.4 print
+ * "Number of input sample 1000" and a cutoff (15.5-19.5) on distances between
+ * the thesis's variables, the angles (on (cos, sin) chords the printed
+ * cutoffs leave one cluster: gmm.tsv, status one_cluster), and sec. 3.5.2
+ * keeps the N solutions before the end of each run (successive states). Its
+ * rows carry headline = 1. HISTORY: it became the headline in commit aeb6cf8,
+ * after every reading of readings.tsv had been compared with the thesis
+ * (the headline before it was the best match below); the reasons name the
+ * text, but the choice was made knowing every reading's numbers, so its
+ * verdicts are `selected 1/C5_NSEL`, not independent.
  * BEST-MATCH RULE (a selection, kept as measured alternatives): among the
  * C5_NSEL readings where K0 is a result, the one with the most matches over
  * the three textures, a match being K0 or K_final within a factor 1.25 of

@@ -1,5 +1,6 @@
 /* C8's independence test of z and phi on a grid of cells (indep.h). */
 #include "indep.h"
+#include "stats/nl_stats.h"
 
 #include <gsl/gsl_cdf.h>
 #include <math.h>
@@ -45,4 +46,17 @@ void c8_indep_pairs(const double *z, const double *phi, size_t m, int bins, c8_i
 void c8_indep_test(const nl_cheng3_table *t, int bins, c8_indep *out)
 {
   c8_indep_pairs(t->z, t->phi, t->m, bins, out);
+}
+
+void c8_indep_paired(const double *z, const double *phi, size_t m, int bins, c8_indep *out)
+{
+  double *zs = nl_xmalloc(2 * m * sizeof *zs), *ps = zs + m;
+  for (size_t k = 0; k < m; k++) {
+    zs[k] = z[k];
+    ps[k] = phi[k];
+  }
+  nl_stats_sort(zs, m);
+  nl_stats_sort(ps, m);
+  c8_indep_pairs(zs, ps, m, bins, out);
+  free(zs);
 }

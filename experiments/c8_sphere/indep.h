@@ -27,5 +27,11 @@ typedef struct {
 void c8_indep_test(const nl_cheng3_table *t, int bins, c8_indep *out);
 /* The same from M pairs (z in [-1, 1], phi in [0, 2 pi)). */
 void c8_indep_pairs(const double *z, const double *phi, size_t m, int bins, c8_indep *out);
+/* The same M values of z and of phi paired by rank (the k-th smallest z with
+ * the k-th smallest phi): both margins, and so E_stat, unchanged, z and phi
+ * as dependent as they can be. The independence verdict's negative control:
+ * a table E_stat cannot tell from the optimised one, which the test must
+ * reject. */
+void c8_indep_paired(const double *z, const double *phi, size_t m, int bins, c8_indep *out);
 
 #endif

@@ -51,11 +51,12 @@ int main(int argc, char **argv)
   if (nl_cheng_config_check(&c, &err) != NL_OK) nl_harness_die(r, 2, "%s", err.msg);
   int k = nl_harness_seeds(r);
   nl_table *sum = c8_summary_alloc();
+  nl_table *base = c8_baselines_alloc();
   for (int p = 0; p < NPAT; p++) {
     nl_cheng3_pattern *pat;
     if (nl_cheng3_pattern_shape(patterns[p], grid, &pat, &err) != NL_OK)
       nl_harness_die(r, 2, "%s", err.msg);
-    nl_cheng3_table *t0, *t = c8_seeds(r, &c, pat, sum, patterns[p], &t0, NULL);
+    nl_cheng3_table *t0, *t = c8_seeds(r, &c, pat, sum, base, patterns[p], &t0, NULL);
     nl_image *panels[C8_NPANELS];
     const char *labels[C8_NPANELS];
     c8_slices(t, t0, &c, pat, size, panels, labels);
@@ -85,8 +86,10 @@ int main(int argc, char **argv)
     nl_cheng3_pattern_free(pat);
   }
   nl_harness_write_table(r, sum, "summary.tsv");
-  c8_report(r, sum, &c, grid, k);
+  nl_harness_write_table(r, base, "baselines.tsv");
+  c8_report(r, sum, base, &c, grid, k);
   nl_table_free(sum);
+  nl_table_free(base);
   /* measured tolerances (nl_harness.h; data/blas_spread.tsv) */
   nl_harness_check_measured(r, "*", 100);
   return nl_harness_end(r);

@@ -11,7 +11,9 @@ void c8_slices_figure(nl_harness *r, const char *pattern, const char *file);
 void c8_levels_report(nl_harness *r, const nl_table *lv, const nl_cheng3_config *c,
                       const size_t *cnt);
 /* The setting (c, grid, k seeds), summary.tsv (sum) with a paragraph per
- * pattern, and the uniformity and volume figures. */
-void c8_report(nl_harness *r, const nl_table *sum, const nl_cheng3_config *c, int grid, int k);
+ * pattern, the verdicts with their baselines (base, baselines.tsv), and the
+ * uniformity and volume figures. */
+void c8_report(nl_harness *r, const nl_table *sum, const nl_table *base,
+               const nl_cheng3_config *c, int grid, int k);
 
 #endif

@@ -120,6 +120,7 @@ typedef struct {
   unsigned long seed;
   nl_cheng3_eval *ev, *ev0;
   c8_indep *ind, *ind0; /* z-phi independence of the optimised and start tables */
+  c8_indep *pair;       /* of the optimised table's z and phi paired by rank */
   nl_cheng3_table *first;
   nl_status *st;
   nl_error *err;
@@ -134,6 +135,7 @@ static void seed_item(void *ctx, size_t i, int thread)
   j->st[i] = nl_cheng3_run(j->c, j->pat, seed, &j->ev[i], &j->ev0[i], NULL, &t, &j->err[i]);
   if (j->st[i] != NL_OK) return;
   c8_indep_test(t, C8_INDEP_BINS, &j->ind[i]);
+  c8_indep_paired(t->z, t->phi, t->m, C8_INDEP_BINS, &j->pair[i]);
   nl_cheng3_table *t0 = nl_cheng3_table_alloc(j->c->m); /* the run's start table */
   nl_cheng3_table_seed(t0, seed);
   c8_indep_test(t0, C8_INDEP_BINS, &j->ind0[i]);
@@ -144,8 +146,47 @@ static void seed_item(void *ctx, size_t i, int thread)
     nl_cheng3_table_free(t);
 }
 
+/* clang-format off */
+static const char *const base_cols[] = {
+  "pattern", "table", "seeds", "E_con", "E_con_sd", "chi2_indep", "p_indep_bonf"
+};
+/* clang-format on */
+
+nl_table *c8_baselines_alloc(void)
+{
+  return nl_table_alloc(sizeof base_cols / sizeof *base_cols, base_cols);
+}
+
+/* mean and sd over the k seeds of x */
+static void mean_sd(const double *x, int k, double *m, double *sd)
+{
+  *m = nl_stats_mean(x, (size_t)k, NL_STATS_RUNNING);
+  *sd = nl_stats_sd(x, (size_t)k, NL_STATS_RUNNING);
+}
+
+static void baselines_add(nl_table *b, const char *name, const nl_cheng3_eval *ev,
+                          const nl_cheng3_eval *ev0, const c8_indep *pair, int k)
+{
+  double *x = nl_xmalloc((size_t)k * sizeof *x), m, sd;
+  for (int i = 0; i < k; i++) x[i] = ev[i].e_con;
+  mean_sd(x, k, &m, &sd);
+  nl_table_append(b, "ssdddss", name, "optimised", (double)k, m, sd, "n/a", "n/a");
+  nl_table_append(b, "ssdddss", name, "flat", (double)k, ev[0].e_con_const, 0.0, "n/a", "n/a");
+  for (int i = 0; i < k; i++) x[i] = ev0[i].e_con;
+  mean_sd(x, k, &m, &sd);
+  nl_table_append(b, "ssdddss", name, "random", (double)k, m, sd, "n/a", "n/a");
+  double chi = 0, pmin = 1;
+  for (int i = 0; i < k; i++) {
+    chi += pair[i].chi2_indep / k;
+    pmin = fmin(pmin, pair[i].p_indep);
+  }
+  nl_table_append(b, "ssdssdd", name, "paired", (double)k, "n/a", "n/a", chi, fmin(1.0, k * pmin));
+  free(x);
+}
+
 nl_cheng3_table *c8_seeds(nl_harness *r, const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
-                          nl_table *sum, const char *name, nl_cheng3_table **start, double *seconds)
+                          nl_table *sum, nl_table *base, const char *name,
+                          nl_cheng3_table **start, double *seconds)
 {
   int k = nl_harness_seeds(r);
   nl_cheng3_eval *ev = nl_xmalloc(2 * (size_t)k * sizeof *ev), *ev0 = ev + k;
@@ -153,8 +194,8 @@ nl_cheng3_table *c8_seeds(nl_harness *r, const nl_cheng3_config *c, const nl_che
   nl_error *err = nl_xmalloc((size_t)k * sizeof *err);
   double t0 = nl_time_now();
   /* The k seed runs on the run's threads; rows from them in seed order. */
-  c8_indep *ind = nl_xmalloc(2 * (size_t)k * sizeof *ind);
-  seeds_job j = { c, pat, nl_harness_seed(r), ev, ev0, ind, ind + k, NULL, st, err };
+  c8_indep *ind = nl_xmalloc(3 * (size_t)k * sizeof *ind);
+  seeds_job j = { c, pat, nl_harness_seed(r), ev, ev0, ind, ind + k, ind + 2 * k, NULL, st, err };
   nl_parallel_for((size_t)k, nl_harness_threads(r), seed_item, &j);
   for (int i = 0; i < k; i++) /* the first failure in seed order, as a serial loop met it */
     if (st[i] != NL_OK) nl_harness_die(r, 1, "%s", err[i].msg);
@@ -162,6 +203,7 @@ nl_cheng3_table *c8_seeds(nl_harness *r, const nl_cheng3_config *c, const nl_che
   if (seconds) *seconds = nl_time_now() - t0;
   summary_add(sum, name, "optimised", ev, ind, pat, k);
   summary_add(sum, name, "random", ev0, ind + k, pat, k);
+  baselines_add(base, name, ev, ev0, ind + 2 * k, k);
   *start = nl_cheng3_table_alloc(c->m);
   nl_cheng3_table_seed(*start,
                        nl_seed_replicate(nl_harness_seed(r), 0)); /* the first run's start */

@@ -4,7 +4,8 @@
  *
  *   nl_table *sum = c8_summary_alloc();
  *   nl_cheng3_table *t0;   // rows: optimised, random
- *   nl_cheng3_table *t = c8_seeds(r, &c, pat, sum, "torus", &t0, NULL);
+ *   nl_table *base = c8_baselines_alloc();
+ *   nl_cheng3_table *t = c8_seeds(r, &c, pat, sum, base, "torus", &t0, NULL);
  *   nl_table *u = c8_ecdf_table(t, t0);   // ECDFs of z and phi
  *   nl_table *v = c8_voxel_table(t, &c, pat, 24);
  *   nl_image *panels[C8_NPANELS];
@@ -33,14 +34,21 @@
  * with the summed df: a consistent pairing), p_joint (mean, min). */
 #define C8_INDEP_BINS 8 /* 8 x 8 cells: 8 of the M = 512 pairs expected per cell */
 nl_table *c8_summary_alloc(void);
+/* The baselines of C8's verdicts (baselines.tsv): per pattern the rows
+ * optimised (E_Con mean and sd over seeds), flat (the best constant
+ * volume's E_Con, sd 0), random (the start tables' E_Con) and paired (the
+ * optimised tables' z and phi paired by rank, indep.h: mean chi2_indep and
+ * p_indep_bonf = min(1, seeds x smallest p)); columns pattern, table, seeds,
+ * E_con, E_con_sd, chi2_indep, p_indep_bonf (n/a where a row has none). */
+nl_table *c8_baselines_alloc(void);
 /* The run's seeds (nl_seed_replicate of the base seed, nl_harness_seeds of
  * them) on pat: one row for the optimised tables and one for their random
- * start tables. Returns the first seed's optimised table and (in *start)
+ * start tables, and the pattern's four rows of base. Returns the first seed's optimised table and (in *start)
  * its start table (caller frees both). Exit 1 on error. *cpu_s: the
  * optimisations' summed wall time (not written in any table). */
 nl_cheng3_table *c8_seeds(nl_harness *r, const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
-                          nl_table *sum, const char *name, nl_cheng3_table **start,
-                          double *seconds);
+                          nl_table *sum, nl_table *base, const char *name,
+                          nl_cheng3_table **start, double *seconds);
 /* ECDFs: F = i/M, then sorted u = (z + 1)/2 and phi / 2 pi of each table:
  * columns F, z_opt, phi_opt, z_rand, phi_rand. */
 nl_table *c8_ecdf_table(const nl_cheng3_table *opt, const nl_cheng3_table *rnd);

@@ -5,6 +5,7 @@
 #include "study/nl_study_cheng.h"
 #include "stats/nl_stats.h"
 
+#include <gsl/gsl_rng.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -37,7 +38,8 @@ static size_t labelled_row(nl_table *t, int nlabels, const char *const *labels)
 static const char *const part_cols[] = {
   "seeds",           "E_con",          "E_con_sd",          "E_con_offset",
   "E_con_offset_sd", "E_con_contrast", "E_con_contrast_sd", "E_con_shape",
-  "E_con_shape_sd",  "octave1_share",  "octave1_share_sd"
+  "E_con_shape_sd",  "octave1_share",  "octave1_share_sd", "one_minus_r",
+  "one_minus_r_sd"
 };
 #define NPART (sizeof part_cols / sizeof *part_cols)
 
@@ -73,6 +75,11 @@ static void parts_row(nl_table *parts, int nlabels, const char *const *labels,
   }
   nl_table_set(parts, r, "octave1_share", nl_stats_mean(x, k, NL_STATS_RUNNING));
   nl_table_set(parts, r, "octave1_share_sd", nl_stats_sd(x, k, NL_STATS_RUNNING));
+  /* the shape alone, scale-free: 1 - r with the pattern (E_Con's shape part
+   * is 2 n sd_c sd_D (1 - r), so it grows with the contrast sd_c) */
+  for (int q = 0; q < k; q++) x[q] = 1 - evs[q].r_pattern;
+  nl_table_set(parts, r, "one_minus_r", nl_stats_mean(x, k, NL_STATS_RUNNING));
+  nl_table_set(parts, r, "one_minus_r_sd", nl_stats_sd(x, k, NL_STATS_RUNNING));
   free(x);
 }
 
@@ -139,4 +146,14 @@ void c9_tests_add(nl_table *tests, const c9_tables *t, size_t f, const char *gro
     nl_study_cheng_welch_add(tests, t->sum, w, o, wq[j], group, "optimised_wide", "optimised");
   nl_study_cheng_welch_add(tests, t->parts, w, o, "E_con_shape", group, "optimised_wide",
                            "optimised");
+}
+
+void c9_random_gains(nl_cheng_config *c, unsigned long seed, int index)
+{
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, nl_seed_stream(seed, "c9.random_gains", (unsigned long)index));
+  double hi = log(c->amp_range);
+  for (int l = 0; l < c->octaves; l++) c->log_gain[l] = hi * (2 * gsl_rng_uniform(rng) - 1);
+  c->amp_vary = 0;
+  gsl_rng_free(rng);
 }

@@ -22,8 +22,10 @@ nl_table *c9_gains_alloc(int nlabels, const char *const *labels);
 nl_table *c9_timing_alloc(int nlabels, const char *const *labels);
 /* E_Con's parts table: the labels, then seeds and mean and sd over seeds
  * of E_con, E_con_offset, E_con_contrast and E_con_shape (nl_cheng_eval:
- * n (mean c - mean D)^2, n (sd c - sd D)^2, 2 n sd c sd D (1 - r)). The
- * shape part is the one a contrast or offset change cannot lower. */
+ * n (mean c - mean D)^2, n (sd c - sd D)^2, 2 n sd c sd D (1 - r)),
+ * octave1_share(_sd), and one_minus_r(_sd), 1 - r with the pattern: the
+ * shape part divided by its scale 2 n sd c sd D, the only part a contrast
+ * change leaves alone (the shape part itself grows with sd c). */
 nl_table *c9_parts_alloc(int nlabels, const char *const *labels);
 /* The tables a case's rows go to, in the same row order. */
 typedef struct {
@@ -35,6 +37,12 @@ typedef struct {
  * and the first seed's log gains (c->octaves values) into first_log_gain. */
 void c9_rows(const nl_study_cheng *s, const nl_cheng_config *c, const nl_cheng_eval *evs,
              const c9_tables *t, int nlabels, const char *const *labels, double *first_log_gain);
+
+/* The negative control of the verdicts: c's octave gains fixed at random,
+ * log g_l uniform in [-ln R, ln R] (R = c->amp_range) from the stream
+ * (seed, "c9.random_gains", index), amp_vary 0: the amplitudes change as
+ * much as the optimiser may change them, but not towards the pattern. */
+void c9_random_gains(nl_cheng_config *c, unsigned long seed, int index);
 
 /* The Welch tests of one case, rows f (fixed), f + 1 (optimised), f + 2
  * (optimised within the wide bounds) of t's tables: optimised vs fixed on
@@ -51,8 +59,11 @@ void c9_intro_text(nl_harness *r, const nl_study_cheng *s, double range, double 
  * parts, the wide bounds, then one line per case. */
 void c9_results_text(nl_harness *r, const c9_tables *t, const nl_table *tests, double range);
 /* Per case (rows 3i, 3i + 1 of the summary and parts tables), the verdict
- * rows: E_Con and its shape part lower with optimised amplitudes (Welch). */
-void c9_verdicts(nl_harness *r, const c9_tables *t, const nl_table *tests, int ncase);
+ * rows: E_Con and the shape statistic 1 - r lower with optimised amplitudes
+ * (Welch), each with its negative control from b (baselines.tsv: rows 2i
+ * fixed, 2i + 1 random gains, c9_random_gains). */
+void c9_verdicts(nl_harness *r, const c9_tables *t, const c9_tables *b, const nl_table *tests,
+                 int ncase);
 /* Mean CPU time per optimisation, fixed (timing rows 0, 2, ...) against
  * optimised (1, 3, ...), over ncase cases; then the figures' captions. */
 void c9_timing_text(nl_harness *r, const nl_table *timing, int ncase);

@@ -37,10 +37,9 @@ int main(int argc, char **argv)
                       argv);
   nl_harness *r = s.r;
   int q = nl_harness_quick(r);
-  int ncase = (int)nl_harness_param_int(r, "cases", q ? 4 : NCASE, 1, NCASE,
+  int ncase = (int)nl_harness_param_int(r, "cases", NCASE, 1, NCASE,
                                         "cases run, in order: cloud/flower, marble/rings, "
-                                        "erosion/disc, fire/flower, cloud/star, fire/gradient "
-                                        "(quick 4)");
+                                        "erosion/disc, fire/flower, cloud/star, fire/gradient");
   double range = nl_harness_param(r, "amp_range", 4, 1, 64,
                                   "R: each optimised amplitude 1/a_l within [1/R, R] x the "
                                   "thesis's");
@@ -60,10 +59,11 @@ int main(int argc, char **argv)
   char group[NCASE][48];
   /* Every case, fixed and optimised, over the seeds as one set of independent
    * runs on the run's threads (nl_study_cheng_runs); rows in case order. */
-  nl_cheng_config cs[NCOND * NCASE];
+  /* then, per case, the negative control: gains fixed at random (c9.h) */
+  nl_cheng_config cs[(NCOND + 1) * NCASE];
   nl_cheng_pattern *pats[NCASE];
-  const nl_cheng_pattern *pp[NCOND * NCASE];
-  nl_noise_grad2 *firsts[NCOND * NCASE];
+  const nl_cheng_pattern *pp[(NCOND + 1) * NCASE];
+  nl_noise_grad2 *firsts[(NCOND + 1) * NCASE];
   for (int i = 0; i < ncase; i++) {
     nl_cheng_config *c = cs + NCOND * i;
     c[0] = s.c;
@@ -74,8 +74,16 @@ int main(int argc, char **argv)
     c[2].amp_range = wide;
     pats[i] = nl_study_cheng_pattern(&s, cases[i].pattern);
     for (int w = 0; w < NCOND; w++) pp[NCOND * i + w] = pats[i];
+    cs[NCOND * ncase + i] = c[0];
+    cs[NCOND * ncase + i].amp_range = range;
+    c9_random_gains(cs + NCOND * ncase + i, nl_harness_seed(r), i);
+    pp[NCOND * ncase + i] = pats[i];
   }
-  nl_cheng_eval *evs = nl_study_cheng_runs(&s, NCOND * ncase, cs, pp, firsts);
+  nl_cheng_eval *evs = nl_study_cheng_runs(&s, (NCOND + 1) * ncase, cs, pp, firsts);
+  /* the controls' tables: per case the fixed row again, then random gains */
+  nl_table *scratch[2] = { c9_gains_alloc(3, labels), c9_timing_alloc(3, labels) };
+  c9_tables bt = { nl_study_cheng_summary_alloc(3, labels), c9_parts_alloc(3, labels), scratch[0],
+                   scratch[1] };
   size_t k = (size_t)nl_harness_seeds(r);
   for (int i = 0; i < ncase; i++) {
     size_t f = NCOND * (size_t)i, o = f + 1; /* fixed and optimised rows; wide: f + 2 */
@@ -92,6 +100,12 @@ int main(int argc, char **argv)
     nl_noise_grad2 *gf = firsts[f];
     nl_noise_grad2 *go = firsts[o];
     nl_noise_grad2_free(firsts[f + 2]);
+    nl_noise_grad2_free(firsts[NCOND * ncase + i]);
+    double ug[NL_CHENG_MAX_OCTAVES];
+    lab[2] = "fixed";
+    c9_rows(&s, &cf, evs + f * k, &bt, 3, lab, ug);
+    lab[2] = "random_gains";
+    c9_rows(&s, cs + NCOND * ncase + i, evs + (NCOND * (size_t)ncase + i) * k, &bt, 3, lab, ug);
     snprintf(group[i], sizeof group[i], "%s/%s", lab[0], lab[1]);
     c9_tests_add(tests, &tb, f, group[i], quantities, sizeof quantities / sizeof *quantities);
     nl_image **p = panels + NCOL * i; /* first seed; co carries its optimised gains */
@@ -116,17 +130,23 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, tb.gains, "gains.tsv");
   nl_harness_write_table(r, tests, "tests.tsv");
   nl_harness_write_table(r, tb.timing, "timing.tsv");
+  nl_harness_write_table(r, bt.sum, "baselines.tsv");
+  nl_harness_write_table(r, bt.parts, "baselines_parts.tsv");
   nl_harness_check(r, "timing.tsv", "seconds_per_run", "ignore"); /* CPU time, not a result */
   c9_intro_text(r, &s, range, wide);
   c9_results_text(r, &tb, tests, range);
   nl_study_cheng_control_text(r, sum, 3);
-  c9_verdicts(r, &tb, tests, ncase);
+  c9_verdicts(r, &tb, &bt, tests, ncase);
   c9_timing_text(r, tb.timing, ncase);
   nl_table_free(sum);
   nl_table_free(tb.parts);
   nl_table_free(tb.gains);
   nl_table_free(tests);
   nl_table_free(tb.timing);
+  nl_table_free(bt.sum);
+  nl_table_free(bt.parts);
+  nl_table_free(scratch[0]);
+  nl_table_free(scratch[1]);
   /* measured tolerances (nl_harness.h; data/blas_spread.tsv) */
   nl_harness_check_measured(r, "*", 100);
   return nl_harness_end(r);

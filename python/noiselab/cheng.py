@@ -174,7 +174,7 @@ def optimise(pattern, seed=1, grid=64, **options):
     grid : int
         control points: the centres of a grid x grid raster (64).
     **options
-        nl_cheng_config fields: stat ('ks', 'chisq', 'kuiper'), con ('cloud',
+        nl_cheng_config fields: stat ('ks', 'chisq', 'kuiper', 'chisq_raw'), con ('cloud',
         'marble', 'erosion', 'fire'), w1, w2, octaves, f1, a1, m, chisq_bins,
         propagate, literal, amp_vary, amp_range, log_gain, and the schedule's
         n_temps, moves_per_var, t_decades, p0, stall.

@@ -42,7 +42,8 @@
  *     NL_CHENG_STAT_KS      D = max |F_obs - F_ideal| (eq. 3.5-3.7);
  *     NL_CHENG_STAT_KUIPER  V = D+ + D- (independent of where the circle is cut);
  *     NL_CHENG_STAT_CHISQ   Pearson chi2 on K = 500 equal bins (eq. 3.4), entered as
- *                           Cramer's V = sqrt(chi2 / (n (K - 1))) - see READINGS.
+ *                           Cramer's V = sqrt(chi2 / (n (K - 1))) - see READINGS;
+ *     NL_CHENG_STAT_CHISQ_RAW  the same chi2 entered as printed (eq. 3.4), unscaled.
  *   E_Con = sum_i (c(x_i) - D_i)^2 over the control points, with the control value
  *     NL_CHENG_CON_PLAIN   c = (1 + V) / 2                   (cloud, eq. 3.8)
  *     NL_CHENG_CON_SIN     c = (1 + sin(pi V)) / 2           (marble, eq. 4.1)
@@ -186,7 +187,8 @@ void nl_cheng_pattern_free(nl_cheng_pattern *p);
 
 /* ---- configuration ------------------------------------------------------ */
 
-typedef enum { NL_CHENG_STAT_KS = 0, NL_CHENG_STAT_CHISQ = 1, NL_CHENG_STAT_KUIPER = 2 } nl_cheng_stat;
+typedef enum { NL_CHENG_STAT_KS = 0, NL_CHENG_STAT_CHISQ = 1, NL_CHENG_STAT_KUIPER = 2,
+               NL_CHENG_STAT_CHISQ_RAW = 3 } nl_cheng_stat;
 typedef enum { NL_CHENG_CON_PLAIN = 0, NL_CHENG_CON_SIN = 1, NL_CHENG_CON_ABS = 2,
                NL_CHENG_CON_FIRE = 3 } nl_cheng_con;
 
@@ -220,7 +222,7 @@ nl_cheng_config nl_cheng_config_default(void);
  * schedule, amp_vary 0/1, finite log gains and, with amp_vary, amp_range >= 1
  * and |log_gain| <= ln amp_range; one-line message otherwise. */
 nl_status nl_cheng_config_check(const nl_cheng_config *c, nl_error *err);
-/* "ks", "chisq", "kuiper" / "cloud"|"plain", "marble"|"sin", "erosion"|"abs", "fire". */
+/* "ks", "chisq", "kuiper", "chisq_raw" / "cloud"|"plain", "marble"|"sin", "erosion"|"abs", "fire". */
 nl_status nl_cheng_stat_parse(const char *s, nl_cheng_stat *out, nl_error *err);
 nl_status nl_cheng_con_parse(const char *s, nl_cheng_con *out, nl_error *err);
 const char *nl_cheng_stat_name(nl_cheng_stat s);

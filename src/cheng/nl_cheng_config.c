@@ -28,7 +28,7 @@ nl_status nl_cheng_config_check(const nl_cheng_config *c, nl_error *err)
   if (c->octaves < 1 || c->octaves > NL_CHENG_MAX_OCTAVES)
     return nl_fail(err, NL_EINVAL, "octaves must be in 1..%d, got %d", NL_CHENG_MAX_OCTAVES, c->octaves);
   if (c->chisq_bins < 2) return nl_fail(err, NL_EINVAL, "chi-square needs >= 2 bins");
-  if ((unsigned)c->stat > NL_CHENG_STAT_KUIPER) return nl_fail(err, NL_EINVAL, "unknown objective %d", (int)c->stat);
+  if ((unsigned)c->stat > NL_CHENG_STAT_CHISQ_RAW) return nl_fail(err, NL_EINVAL, "unknown objective %d", (int)c->stat);
   if (c->literal != 0 && c->literal != 1) return nl_fail(err, NL_EINVAL, "literal must be 0 or 1, got %d", c->literal);
   if ((unsigned)c->con > NL_CHENG_CON_FIRE) return nl_fail(err, NL_EINVAL, "unknown texture type %d", (int)c->con);
   if (c->amp_vary != 0 && c->amp_vary != 1) return nl_fail(err, NL_EINVAL, "amp_vary must be 0 or 1, got %d", c->amp_vary);
@@ -45,15 +45,15 @@ nl_status nl_cheng_config_check(const nl_cheng_config *c, nl_error *err)
   return NL_OK;
 }
 
-static const char *const stat_names[] = {"ks", "chisq", "kuiper"};
+static const char *const stat_names[] = {"ks", "chisq", "kuiper", "chisq_raw"};
 static const char *const con_names[] = {"cloud", "marble", "erosion", "fire"};
 static const char *const con_alias[] = {"plain", "sin", "abs", "fire"};
 
 nl_status nl_cheng_stat_parse(const char *s, nl_cheng_stat *out, nl_error *err)
 {
-  for (int k = 0; k < 3; k++)
+  for (int k = 0; k < 4; k++)
     if (!strcmp(s, stat_names[k])) { *out = (nl_cheng_stat)k; return NL_OK; }
-  return nl_fail(err, NL_EINVAL, "unknown objective '%s' (ks, chisq, kuiper)", s);
+  return nl_fail(err, NL_EINVAL, "unknown objective '%s' (ks, chisq, kuiper, chisq_raw)", s);
 }
 
 nl_status nl_cheng_con_parse(const char *s, nl_cheng_con *out, nl_error *err)
@@ -63,7 +63,7 @@ nl_status nl_cheng_con_parse(const char *s, nl_cheng_con *out, nl_error *err)
   return nl_fail(err, NL_EINVAL, "unknown texture type '%s' (cloud, marble, erosion, fire)", s);
 }
 
-const char *nl_cheng_stat_name(nl_cheng_stat s) { return (unsigned)s < 3 ? stat_names[s] : "?"; }
+const char *nl_cheng_stat_name(nl_cheng_stat s) { return (unsigned)s < 4 ? stat_names[s] : "?"; }
 const char *nl_cheng_con_name(nl_cheng_con c) { return (unsigned)c < 4 ? con_names[c] : "?"; }
 
 double nl_cheng_objective(const nl_cheng_config *c, double e_stat, double e_con)

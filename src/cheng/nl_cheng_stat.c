@@ -6,6 +6,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Both chi-square terms keep bin counts; they differ only in the value. */
+static int is_chisq(nl_cheng_stat k) { return k == NL_CHENG_STAT_CHISQ || k == NL_CHENG_STAT_CHISQ_RAW; }
+
 void nl_cheng__stat_init(nl_cheng_statstate *s, nl_cheng_stat kind, size_t bins)
 {
   memset(s, 0, sizeof *s);
@@ -28,7 +31,7 @@ void nl_cheng__stat_reset(nl_cheng_statstate *s, const double *x, size_t n)
   nl_cheng__stat_clear(s);
   s->n = n;
   if (n == 0) return;
-  if (s->kind == NL_CHENG_STAT_CHISQ) {
+  if (is_chisq(s->kind)) {
     s->count = nl_xcalloc(s->k, sizeof *s->count);
     for (size_t i = 0; i < n; i++) s->count[nl_cheng__bin(x[i], s->k)]++;
     s->sumsq = 0;
@@ -44,7 +47,7 @@ void nl_cheng__stat_reset(nl_cheng_statstate *s, const double *x, size_t n)
 void nl_cheng__stat_replace(nl_cheng_statstate *s, double old_value, double new_value)
 {
   if (s->n == 0) return;
-  if (s->kind == NL_CHENG_STAT_CHISQ) {
+  if (is_chisq(s->kind)) {
     size_t a = nl_cheng__bin(old_value, s->k), b = nl_cheng__bin(new_value, s->k);
     if (a == b) return;
     /* (c-1)^2 - c^2 = 1 - 2c and (c+1)^2 - c^2 = 1 + 2c: integers, exact. */
@@ -65,7 +68,7 @@ void nl_cheng__stat_replace(nl_cheng_statstate *s, double old_value, double new_
 void nl_cheng__stat_undo(nl_cheng_statstate *s, double old_value, double new_value)
 {
   if (s->n == 0) return;
-  if (s->kind == NL_CHENG_STAT_CHISQ) { nl_cheng__stat_replace(s, new_value, old_value); return; }
+  if (is_chisq(s->kind)) { nl_cheng__stat_replace(s, new_value, old_value); return; }
   nl_error err;
   if (nl_stats_ks_incr_undo(s->ks, &err)) {
     fprintf(stderr, "nl_cheng: %s\n", err.msg);
@@ -82,10 +85,10 @@ static double cramer_v(double chi2, size_t n, size_t k)
 double nl_cheng__stat_value(const nl_cheng_statstate *s)
 {
   if (s->n == 0) return 0.0;
-  if (s->kind == NL_CHENG_STAT_CHISQ) {
+  if (is_chisq(s->kind)) {
     /* sum (O - E)^2 / E = sum O^2 / E - n with E = n / k. */
     double chi2 = (double)s->sumsq * (double)s->k / (double)s->n - (double)s->n;
-    return cramer_v(chi2, s->n, s->k);
+    return s->kind == NL_CHENG_STAT_CHISQ_RAW ? chi2 : cramer_v(chi2, s->n, s->k);
   }
   return s->kind == NL_CHENG_STAT_KUIPER ? s->ks->d_plus + s->ks->d_minus : s->ks->d;
 }
@@ -96,10 +99,10 @@ double nl_cheng__stat_full(nl_cheng_stat kind, size_t bins, const double *x, siz
   nl_error err;
   nl_status st;
   double v = 0;
-  if (kind == NL_CHENG_STAT_CHISQ) {
+  if (is_chisq(kind)) {
     nl_stats_chisq_result r;
     st = nl_stats_chisq_test_uniform(x, n, bins, 0.0, NL_TWO_PI, &r, &err);
-    v = cramer_v(r.chi2, n, bins);
+    v = kind == NL_CHENG_STAT_CHISQ_RAW ? r.chi2 : cramer_v(r.chi2, n, bins);
   } else if (kind == NL_CHENG_STAT_KUIPER) {
     nl_stats_kuiper_result r;
     st = nl_stats_kuiper_test_uniform(x, n, 0.0, NL_TWO_PI, &r, &err);
