@@ -62,6 +62,9 @@ tsv_awk 'NR > 1 && v("kind") == "independent" {i++}
          NR > 1 && v("kind") == "qualitative" {q++}
          END {if (i != 8 || q != 4) {print "verdicts: " i " independent, " q " qualitative"
                                      exit 1}}' "$out/verdicts.tsv"
-# Seams of the 12 headline cases' first tables and one start table.
-"$expect" "$out/seams.tsv" rows=13 'tables==1' 'seam_ratio>1' 'seam_quarter>0' 'seam_border>0' \
+# Seams of the 12 headline cases' first tables and one start table on the
+# domain [1, 2]^2, then the 12 cases again on [0, 1]^2 (origin 0).
+tsv_awk 'NR > 1 {c[n("origin")]++} END {if (c[1] != 13 || c[0] != 12) {print "seams rows per origin"; exit 1}}' \
+  "$out/seams.tsv"
+"$expect" "$out/seams.tsv" rows=25 'tables==1' 'seam_ratio>1' 'seam_quarter>0' 'seam_border>0' \
   'border_outward>=-1' 'border_outward<=1'

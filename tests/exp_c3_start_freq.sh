@@ -33,6 +33,7 @@ tsv_awk 'NR > 1 {q = n("roughness") / n("roughness_random")
 "$expect" "$out/verdicts.tsv" rows=1
 tsv_awk 'NR > 1 && (v("kind") != "independent" || v("rule") != "p 0.01 0.05") {print; exit 1}' \
   "$out/verdicts.tsv"
-# Seams per f1: the first seed's table and its start table.
-"$expect" "$out/seams.tsv" rows=8 'tables==1' 'seam_ratio>1' 'border_outward>=-1' \
+# Seams per f1: the first seed's table and its start table on [1, 2]^2, then
+# the first seed's table on [0, 1]^2 (origin 0).
+"$expect" "$out/seams.tsv" rows=12 'tables==1' 'seam_ratio>1' 'border_outward>=-1' \
   'border_outward<=1'

@@ -39,6 +39,10 @@ tsv_awk 'NR > 1 {a[v("reading")] = n("E_ks_a")} END {if (a["mixed_a_printed"] !=
   'rms_abs_log_ks>0'
 "$expect" "$out/econ_grid_runs.tsv" rows=48 'seeds==3'
 tsv_awk 'NR > 1 {k = v("budget") "/" v("reading"); if (k in last && !(n("E_con") > last[k])) {print "E_con not growing with the grid: " k; exit 1} last[k] = n("E_con")}' "$out/econ_grid.tsv"
+# Fig 4.8's printed panels' seams on the domains [1, 2]^2 and [0, 1]^2.
+"$expect" "$out/seams_domain.tsv" rows=12 'tables==1' 'seam_ratio>1' 'seam_quarter>0' 'seam_border>0'
+tsv_awk 'NR > 1 {c[n("origin")]++} END {if (c[1] != 6 || c[0] != 6) {print "seams_domain rows per origin"; exit 1}}' \
+  "$out/seams_domain.tsv"
 # Seams: the 12 panels and the unoptimised start tables, Welch p in [0, 1].
 "$expect" "$out/seams.tsv" rows=13 'seam_ratio>1' 'seam_ratio<3'
 "$expect" "$out/seam_tests.tsv" rows=12 'p_welch>=0' 'p_welch<=1' 'seeds==3'

@@ -82,6 +82,27 @@ int main(int argc, char **argv)
                                pp[i]);
   }
   c1_seams_start(&s, seams, &cs[0], pp[0], patterns[0][0]);
+  /* The alternative domain [0, 1]^2 (origin 0; nl_cheng.h READINGS): the
+   * headline cases again, the seams of their first seed's tables. */
+  {
+    enum { NH = NTEX * NPAT };
+    nl_cheng_config c0[NH];
+    const nl_cheng_pattern *p0[NH];
+    nl_noise_grad2 *f0[NH];
+    for (int i = 0; i < NH; i++) {
+      c0[i] = cs[2 * i];
+      c0[i].origin = 0;
+      p0[i] = pats[i];
+    }
+    free(nl_study_cheng_runs(&s, NH, c0, p0, f0));
+    for (int i = 0; i < NH; i++) {
+      const char *sl[3] = { nl_cheng_con_name(c0[i].con), patterns[i / NPAT][i % NPAT],
+                            "optimised" };
+      nl_study_cheng_seams_add(seams, 3, sl, (const nl_noise_grad2 *const *)&f0[i], 1, &c0[i],
+                               p0[i]);
+      nl_noise_grad2_free(f0[i]);
+    }
+  }
   /* the verdicts' tests: each texture over its patterns, headline formula */
   for (int t = 0; t < NTEX; t++) {
     const nl_cheng_eval *e[NPAT];

@@ -67,80 +67,6 @@ void c1_text(nl_harness *r, const nl_table *sum, const nl_cheng_config *c, int g
                   wks, wku, sum->nrows);
 }
 
-/* lo..hi of column col over the rows of t whose tables_from is `from` */
-static void seam_range(const nl_table *t, const char *from, const char *col, double *lo, double *hi)
-{
-  *lo = INFINITY;
-  *hi = -INFINITY;
-  for (size_t q = 0; q < t->nrows; q++)
-    if (!strcmp(nl_table_text(t, q, "tables_from"), from)) {
-      *lo = fmin(*lo, nl_table_value(t, q, col));
-      *hi = fmax(*hi, nl_table_value(t, q, col));
-    }
-}
-
-static void seams_text(nl_harness *r, const nl_table *t)
-{
-  nl_harness_report_table(
-      r, t,
-      "Seams of the first seed's textures (headline formula) and of its unoptimised start table "
-      "(nl_study_cheng.h: ratios of a boundary's mean |step| to its strip's mean, 1 = no seam)",
-      3);
-  double q0, q1, o0, o1, b0, b1, w0, w1, s0, s1;
-  seam_range(t, "optimised", "seam_quarter", &q0, &q1);
-  seam_range(t, "optimised", "seam_other", &o0, &o1);
-  seam_range(t, "optimised", "seam_border", &b0, &b1);
-  seam_range(t, "optimised", "border_outward", &w0, &w1);
-  seam_range(t, "optimised", "seam_ratio", &s0, &s1);
-  size_t st = t->nrows - 1; /* the start table's row comes last */
-  int more = 0, n = (int)st;
-  double *qv = nl_xmalloc(st * sizeof *qv), *wv = nl_xmalloc(st * sizeof *wv);
-  for (size_t q = 0; q < st; q++) {
-    more += nl_table_value(t, q, "seam_quarter") > nl_table_value(t, q, "seam_other");
-    qv[q] = nl_table_value(t, q, "seam_quarter");
-    wv[q] = nl_table_value(t, q, "border_outward");
-  }
-  /* per texture (rows come texture by texture, its patterns together): the
-   * means of the quarter's seam and of the outward component */
-  char per[512] = "";
-  for (size_t q = 0; q < st;) {
-    const char *tex = nl_table_text(t, q, "texture");
-    double sq = 0, sw = 0;
-    int m = 0;
-    for (; q < st && !strcmp(nl_table_text(t, q, "texture"), tex); q++, m++) {
-      sq += qv[q];
-      sw += wv[q];
-    }
-    size_t used = strlen(per);
-    snprintf(per + used, sizeof per - used, "%s%s %.2f, %.2f", used ? "; " : "", tex, sq / m,
-             sw / m);
-  }
-  double rq = gsl_stats_correlation(wv, 1, qv, 1, st);
-  nl_harness_text(
-      r,
-      "Seams: across the edges of the quarter [0, 1/2]^2 (x = 1/2 over y < 1/2, y = 1/2 over x < "
-      "1/2: the top-left quarter of the images) the textures' value steps %.2f..%.2f x its strip's "
-      "mean, across the same lines outside the quarter %.2f..%.2f, at the borders %.2f..%.2f; the "
-      "start table gives %.2f, %.2f and %.2f. The largest boundary (seam_ratio) is %.2f..%.2f "
-      "against the start table's %.2f. Octave 1's border gradients point outward by %.2f..%.2f "
-      "(start table %.2f). The quarter's edges step more than the same lines outside it in %d of "
-      "%d cases. Per texture (means over its patterns), the quarter's seam and the outward "
-      "component are: %s; over the %d cases their Pearson r is %.2f. The cause is C7's (its "
-      "section measures the controls: w2 = 0, no propagation): octave l over [0, 1/2]^2 is octave "
-      "l-1 over the whole square (eq. 3.10's one noise field, eq. 3.13's shared gradients), so "
-      "the border lines of octave l-1, whose gradients a dark border turns outward, reappear as "
-      "the quarter's edges. Cloud and marble read the signed sum V, and a dark target pushes V "
-      "negative there; erosion's |V| and fire's sum of |noise| are even in the noise's sign, so "
-      "a dark target only asks for small noise, and the gradients need not turn outward. It is "
-      "the method's, and the figures keep it.\n",
-      q0, q1, o0, o1, b0, b1, nl_table_value(t, st, "seam_quarter"),
-      nl_table_value(t, st, "seam_other"), nl_table_value(t, st, "seam_border"), s0, s1,
-      nl_table_value(t, st, "seam_ratio"), w0, w1, nl_table_value(t, st, "border_outward"), more, n,
-      per, n, rq);
-  free(qv);
-  free(wv);
-}
-
 void c1_control_text(nl_harness *r, const nl_table *claims, const nl_table *ctl,
                      const nl_table *seams)
 {
@@ -186,5 +112,5 @@ void c1_control_text(nl_harness *r, const nl_table *claims, const nl_table *ctl,
                           "rows are the measured alternative; no verdict)",
                           3);
   nl_study_cheng_flat_text(r, ctl, 3);
-  seams_text(r, seams);
+  nl_study_cheng_seams_text(r, seams, "the first seed's textures (headline formula) and of its start table");
 }

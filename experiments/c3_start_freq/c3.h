@@ -43,8 +43,5 @@ void c3_per_f1_add(nl_table *t, double f1, const double *opt, int k, const doubl
  * comparison (trend.tsv) and the verdict: what the optimisation adds to the
  * trend every table has. */
 void c3_trend_text(nl_harness *r, const nl_table *tt, const nl_table *per_f1);
-/* Seams per f1 (rows f1/optimised, f1/start table of the first seed), with
- * the quarter's edges against the start tables'. */
-void c3_seams_text(nl_harness *r, const nl_table *seams);
 
 #endif

@@ -43,6 +43,15 @@ int main(int argc, char **argv)
     pp[i] = pat;
   }
   nl_cheng_eval *evs = nl_study_cheng_runs(&s, NF, cs, pp, firsts);
+  /* the alternative domain [0, 1]^2 (origin 0; nl_cheng.h READINGS): the
+   * same runs, for the seams of their first seed's tables */
+  nl_cheng_config cs0[NF];
+  nl_noise_grad2 *firsts0[NF];
+  for (int i = 0; i < NF; i++) {
+    cs0[i] = cs[i];
+    cs0[i].origin = 0;
+  }
+  free(nl_study_cheng_runs(&s, NF, cs0, pp, firsts0));
 
   /* Fig 4.7: the controlled value (top row) and the cloud texture (bottom)
    * per f1, first seed, each row after the pattern. */
@@ -91,6 +100,14 @@ int main(int argc, char **argv)
     nl_noise_grad2_free(firsts[i]);
     nl_harness_progress(r, (i + 1.0) / NF, "f1");
   }
+  for (int i = 0; i < NF; i++) {
+    char f[32];
+    nl_table_format_double(f, f1s[i]);
+    const char *sl[2] = { f, "optimised" };
+    nl_study_cheng_seams_add(seams, 2, sl, (const nl_noise_grad2 *const *)&firsts0[i], 1, &cs0[i],
+                             pat);
+    nl_noise_grad2_free(firsts0[i]);
+  }
   c3_trend_test_add(tt, "optimised", xo, yo, (size_t)NF * k, nperm,
                     nl_seed_stream(nl_harness_seed(r), "c3.trend", 0));
   c3_trend_test_add(tt, "random", xr, yr, (size_t)NF * nrand, nperm,
@@ -105,7 +122,7 @@ int main(int argc, char **argv)
   c3_intro_text(r, &s, pattern, f1s, NF, sum);
   c3_result_text(r, sum, f1s, NF);
   c3_trend_text(r, tt, per_f1);
-  c3_seams_text(r, seams);
+  nl_study_cheng_seams_text(r, seams, "the first seed's table and its start table per f1");
   nl_study_cheng_control_text(r, sum, 1);
   free(evs);
   free(xo);

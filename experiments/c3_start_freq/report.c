@@ -118,26 +118,3 @@ void c3_trend_text(nl_harness *r, const nl_table *tt, const nl_table *per_f1)
       nl_table_value(tt, 0, "rho"), nl_table_value(tt, 0, "p_perm"), ro, ro / rr, ratios, ps,
       differ, per_f1->nrows, adds);
 }
-
-void c3_seams_text(nl_harness *r, const nl_table *t)
-{
-  nl_harness_report_table(r, t,
-                          "Seams of the first seed's table and of its unoptimised start table per "
-                          "f1 (nl_study_cheng.h; C7 measures their cause)",
-                          3);
-  char sr[2][160] = { "", "" }, qu[2][160] = { "", "" };
-  for (size_t q = 0; q < t->nrows; q++) {
-    int st = q % 2; /* rows alternate: optimised, start table */
-    size_t a = strlen(sr[st]), b = strlen(qu[st]);
-    snprintf(sr[st] + a, sizeof sr[st] - a, "%s%.2f", q < 2 ? "" : ", ",
-             nl_table_value(t, q, "seam_ratio"));
-    snprintf(qu[st] + b, sizeof qu[st] - b, "%s%.2f", q < 2 ? "" : ", ",
-             nl_table_value(t, q, "seam_quarter"));
-  }
-  nl_harness_text(
-      r,
-      "Seams per f1 (first seed): the largest boundary step over the mean (seam_ratio) is %s "
-      "optimised against %s for the start tables; across the edges of the quarter [0, 1/2]^2, "
-      "where octave l repeats octave l-1's border lines (C7), %s against %s.\n",
-      sr[0], sr[1], qu[0], qu[1]);
-}

@@ -104,6 +104,12 @@ size_t c4_econ_row(const nl_table *eg, int grid);
  * c4_econ_runs. */
 void c4_seams(const nl_study_cheng *s, const nl_cheng_config *base, const nl_cheng_pattern *pat,
               const nl_cheng_eval *main_evs, int npair);
+/* Fig 4.8's seams on both domains: seams_domain.tsv (nl_study_cheng_seams_add
+ * rows panel, tables_from "optimised", origin) for the printed panels' first
+ * seed tables firsts[2i] under cs[2i] (origin 1), and the same cases run
+ * again at origin 0 (nl_cheng.h READINGS), with their prose. */
+void c4_seams_domain(const nl_study_cheng *s, const nl_cheng_config *cs, const nl_cheng_pattern *pat,
+                     nl_noise_grad2 *const *firsts, int npair);
 
 /* ---- verdicts (verdicts.c) --------------------------------------------- */
 

@@ -105,6 +105,7 @@ int main(int argc, char **argv)
   for (int q = 0; q < n; q++)
     nl_study_cheng_rows_add(&s, q < 2 * NPAIR ? tab : sweep, 4, wc[q].lab, evs + (size_t)q * k);
   c4_fig48(r, pat, firsts, NPAIR, &base);
+  c4_seams_domain(&s, cs, pat, firsts, NPAIR);
   for (int q = 0; q < n; q++) nl_noise_grad2_free(firsts[q]);
   free(cs);
   free(pp);

@@ -55,6 +55,17 @@ int main(int argc, char **argv)
     nl_study_cheng_control_add(&s, ctl, 1, &names[i], &c, pat, evs, nrand, rseed, NULL);
     const char *sl[2] = { names[i], "optimised" };
     nl_study_cheng_seams_add(seams, 2, sl, (const nl_noise_grad2 *const *)tables, k, &c, pat);
+    /* the alternative domain [0, 1]^2 (origin 0; nl_cheng.h READINGS): the
+     * same runs, their seams */
+    {
+      nl_cheng_config c0 = c;
+      c0.origin = 0;
+      nl_noise_grad2 **t0 = nl_xmalloc((size_t)k * sizeof *t0);
+      free(c7_runs(&s, &c0, pat, t0));
+      nl_study_cheng_seams_add(seams, 2, sl, (const nl_noise_grad2 *const *)t0, k, &c0, pat);
+      for (int j = 0; j < k; j++) nl_noise_grad2_free(t0[j]);
+      free(t0);
+    }
     /* the seams' controls on the last pattern (star) */
     if (i == NPAT - 1) c7_seam_controls(&s, seams, &c, pat, names[i]);
     free(evs);

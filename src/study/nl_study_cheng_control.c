@@ -191,25 +191,27 @@ void nl_study_cheng_seams_measure(const nl_noise_grad2 *g, const nl_cheng_config
     if (l >= o.n) continue;
     double f = o.freq[l], other;
     for (int y = 0; y < n; y++)
-      nl_noise_grad2_row(g, f * 0.5 / n, f / n, f * (y + 0.5) / n, (size_t)n, v + (size_t)y * n);
+      nl_noise_grad2_row(g, f * (c->origin + 0.5 / n), f / n, f * (c->origin + (y + 0.5) / n),
+                         (size_t)n, v + (size_t)y * n);
     midlines(v, n, &out->octave_quarter[l], &other);
   }
   free(v);
-  /* The outward component of octave 1's unit gradients on the lines x = 0,
-   * x = 1, y = 0, y = 1 of its lattice (f1 integer: lattice lines 0 and f1) */
-  long L = (long)ceil(o.freq[0]);
+  /* The outward component of octave 1's unit gradients on the lattice lines
+   * of the domain's border, x = o, x = o + 1, y = o, y = o + 1 (f1 o integer:
+   * lattice lines f1 o and f1 (o + 1)) */
+  long L0 = (long)floor(o.freq[0] * c->origin), L = (long)ceil(o.freq[0] * (c->origin + 1));
   double s = 0;
-  for (long j = 0; j <= L; j++) {
-    s -= g->gx[nl_noise_grad2_index(g, 0, j)];
+  for (long j = L0; j <= L; j++) {
+    s -= g->gx[nl_noise_grad2_index(g, L0, j)];
     s += g->gx[nl_noise_grad2_index(g, L, j)];
-    s -= g->gy[nl_noise_grad2_index(g, j, 0)];
+    s -= g->gy[nl_noise_grad2_index(g, j, L0)];
     s += g->gy[nl_noise_grad2_index(g, j, L)];
   }
-  out->outward = s / (4.0 * (double)(L + 1));
+  out->outward = s / (4.0 * (double)(L - L0 + 1));
 }
 
 static const char *const seam_cols[] = {
-  "tables",       "seam_ratio",   "seam_quarter", "seam_quarter_sd", "seam_other",
+  "origin",       "tables",       "seam_ratio",   "seam_quarter", "seam_quarter_sd", "seam_other",
   "seam_border",  "seam_octave1", "seam_octave2", "seam_octave3",    "seam_octave4",
   "border_outward", "border_outward_sd",
 };
@@ -242,7 +244,8 @@ void nl_study_cheng_seams_add(nl_table *t, int nlabels, const char *const *label
     border += s.border / n;
     for (int l = 0; l < NL_STUDY_CHENG_SEAM_OCTAVES; l++) oct[l] += s.octave_quarter[l] / n;
   }
-  double row[NSEAM] = { n,
+  double row[NSEAM] = { c->origin,
+                        n,
                         ratio,
                         nl_stats_mean(q, (size_t)n, NL_STATS_RUNNING),
                         n > 1 ? nl_stats_sd(q, (size_t)n, NL_STATS_RUNNING) : 0,
@@ -259,6 +262,61 @@ void nl_study_cheng_seams_add(nl_table *t, int nlabels, const char *const *label
   for (int i = 0; i < nlabels; i++) nl_table_set_text(t, r, t->names[i], labels[i]);
   free(q);
   free(w);
+}
+
+/* lo..hi and count of column col over the rows of t from `from` at origin o */
+static int seam_range(const nl_table *t, const char *from, double o, const char *col, double *lo,
+                      double *hi)
+{
+  int n = 0;
+  *lo = INFINITY;
+  *hi = -INFINITY;
+  for (size_t q = 0; q < t->nrows; q++)
+    if (!strcmp(nl_table_text(t, q, "tables_from"), from) && nl_table_value(t, q, "origin") == o) {
+      *lo = fmin(*lo, nl_table_value(t, q, col));
+      *hi = fmax(*hi, nl_table_value(t, q, col));
+      n++;
+    }
+  return n;
+}
+
+void nl_study_cheng_seams_text(nl_harness *r, const nl_table *t, const char *what)
+{
+  char cap[256];
+  snprintf(cap, sizeof cap,
+           "Seams of %s on the domain [1, 2]^2 (origin 1, the headline) and [0, 1]^2 (origin 0): "
+           "a boundary's mean |step| over its strip's mean, 1 = no seam",
+           what);
+  nl_harness_report_table(r, t, cap, 3);
+  const char *cols[3] = { "seam_quarter", "seam_border", "seam_ratio" };
+  double lo[2][3], hi[2][3];
+  int n1 = 0, n0 = 0;
+  for (int c = 0; c < 3; c++) {
+    n1 = seam_range(t, "optimised", 1, cols[c], &lo[1][c], &hi[1][c]);
+    n0 = seam_range(t, "optimised", 0, cols[c], &lo[0][c], &hi[0][c]);
+  }
+  char start[256] = "";
+  double slo, shi, blo, bhi;
+  if (seam_range(t, "start table", 1, "seam_quarter", &slo, &shi) > 0) {
+    seam_range(t, "start table", 1, "seam_border", &blo, &bhi);
+    snprintf(start, sizeof start,
+             " Unoptimised start tables on [1, 2]^2 give %.2f..%.2f across the quarter's edges and "
+             "%.2f..%.2f at the borders.",
+             slo, shi, blo, bhi);
+  }
+  if (n1 == 0 || n0 == 0) return;
+  nl_harness_text(
+      r,
+      "**Seams and the domain.** Across the edges of the quarter (x = 1/2 over y < 1/2 and y = "
+      "1/2 over x < 1/2 of the image, where on [0, 1]^2 octave l repeats octave l-1's border "
+      "lines) the optimised tables step %.2f..%.2f x their strip's mean on [1, 2]^2 against "
+      "%.2f..%.2f on [0, 1]^2; at the image borders %.2f..%.2f against %.2f..%.2f; the largest "
+      "boundary anywhere (seam_ratio) %.2f..%.2f against %.2f..%.2f (%d and %d rows).%s On [1, "
+      "2]^2 no octave's lattice lies inside another's (nl_cheng.h READINGS), so no octave repeats "
+      "another's border; a step left at the borders comes with the control term (C7 measures it "
+      "with the term off).\n",
+      lo[1][0], hi[1][0], lo[0][0], hi[0][0], lo[1][1], hi[1][1], lo[0][1], hi[0][1], lo[1][2],
+      hi[1][2], lo[0][2], hi[0][2], n1, n0, start);
 }
 
 /* ---- prose ---------------------------------------------------------------- */
