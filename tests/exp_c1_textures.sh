@@ -44,23 +44,35 @@ tsv_awk 'NR > 1 && !(n("E_con") < n("E_con_random") && n("E_con_const") > 0 && n
   NR > 1 && v("formula") == "rescaled" && !(n("r_pattern") > 0) {print "r_pattern <= 0: " $0; exit 1}
   NR > 1 && v("texture") == "marble" {c[v("pattern") "/" v("formula")] = n("contrast")}
   END {for (p in c) if (p ~ /rescaled$/) {q = p; sub(/rescaled$/, "literal", q); if (!(c[p] > 2 * c[q])) {print "marble contrast " p; exit 1}}}' "$out/summary.tsv"
-# "The texture follows the pattern": per case (control.tsv, 24 rows) and
-# pooled per texture over its three patterns (claims.tsv, 4 rows, which the
-# verdicts read): r against 99 random tables (Monte-Carlo p in [1/100, 1];
-# measured pooled r 0.27..0.40 against random sd 0.027..0.035 at --quick,
-# p = 0.01 for all four textures) and E_Con against the flat images
-# (one-sided t over the seeds; the split's fractions sum to 1).
+# "The texture follows the pattern": per case (control.tsv, 24 rows, whose
+# 12 rescaled rows the verdicts read) and pooled per texture over its three
+# patterns (pooled.tsv, 4 rows, no verdict): r against 99 random tables
+# (Monte-Carlo p in [1/100, 1]; measured pooled r 0.27..0.40 against random
+# sd 0.027..0.035 at --quick, p = 0.01 for all four textures) and E_Con
+# against the flat images (one-sided t over the seeds; the split's fractions
+# sum to 1). The negative controls (baselines.tsv, two rows per headline
+# case): the optimised tables against the pattern shuffled (r near 0,
+# measured |r| < 0.02, p >= 0.25 at --quick) and the start tables (E_Con
+# above the flat image's, measured con_vs_const 1.08..1.90).
 "$expect" "$out/control.tsv" rows=24 'n_random==99' 'p_random>=0.01' 'p_random<=1' 'p_flat>=0' \
   'p_flat<=1' 'r_random_sd>0' 'E_con_const>0'
-"$expect" "$out/claims.tsv" rows=4 'patterns==3' 'seeds==3' 'n_random==99' 'p_random<=0.05' \
+"$expect" "$out/baselines.tsv" rows=24 'n_random==99' 'r_pattern<0.1' 'r_pattern>-0.1' \
+  'p_random>0.05'
+tsv_awk 'NR > 1 && v("baseline") == "start tables" && !(n("con_vs_const") > 1) {print "start tables beat flat: " $0; exit 1}' \
+  "$out/baselines.tsv"
+# "Statistics kept": per texture the optimised angles and the w1 = 0 control.
+"$expect" "$out/uniformity.tsv" rows=8 'runs==9' 'p_uniform>0' 'p_uniform<=1' 'p_ks_min<=p_uniform'
+"$expect" "$out/pooled.tsv" rows=4 'patterns==3' 'seeds==3' 'n_random==99' 'p_random<=0.05' \
   'p_random>=0.01' 'p_flat>=0' 'p_flat<=1' 'r_pattern>r_random_mean' 'con_vs_const>0'
 tsv_awk 'FNR > 1 {s = n("con_offset_frac") + n("con_contrast_frac") + n("con_shape_frac")
                  if (s < 1 - 1e-9 || s > 1 + 1e-9) {print "E_Con split sums to " s; exit 1}}' \
-  "$out/control.tsv" "$out/claims.tsv"
-# Verdicts: two independent rows per texture, one qualitative row per figure.
-tsv_awk 'NR > 1 && v("kind") == "independent" {i++}
+  "$out/control.tsv" "$out/pooled.tsv"
+# Verdicts: two per headline case (r, E_Con) and one per texture
+# (statistics kept), each with a negative control (independent, or by
+# construction when the control passes too), one qualitative row per figure.
+tsv_awk 'NR > 1 && v("kind") != "qualitative" {i++; if (v("control_verdict") == "-") {print "no control: " $0; exit 1}}
          NR > 1 && v("kind") == "qualitative" {q++}
-         END {if (i != 8 || q != 4) {print "verdicts: " i " independent, " q " qualitative"
+         END {if (i != 28 || q != 4) {print "verdicts: " i " with controls, " q " qualitative"
                                      exit 1}}' "$out/verdicts.tsv"
 # Seams of the 12 headline cases' first tables and one start table on the
 # domain [1, 2]^2, then the 12 cases again on [0, 1]^2 (origin 0).

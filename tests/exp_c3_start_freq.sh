@@ -29,10 +29,15 @@ tsv_awk 'NR > 1 {q = n("roughness") / n("roughness_random")
                  d = q - n("ratio")
                  if (d > 1e-9 || d < -1e-9) {print "ratio: " $0; exit 1}}' \
   "$out/trend.tsv"
-# One verdict, independent, decided by the trend test.
-"$expect" "$out/verdicts.tsv" rows=1
-tsv_awk 'NR > 1 && (v("kind") != "independent" || v("rule") != "p 0.01 0.05") {print; exit 1}' \
+# Three verdicts decided by p: the trend (its control, the random tables'
+# trend, passes as well: by construction, measured rho 0.97 both) and the
+# lowest f1's control of the pattern (r, E_Con), each with a control.
+"$expect" "$out/verdicts.tsv" rows=3
+tsv_awk 'NR > 1 && (v("rule") != "p 0.01 0.05" || v("control_verdict") == "-") {print; exit 1}
+         NR == 2 && v("kind") != "by construction" {print "trend: " $0; exit 1}' \
   "$out/verdicts.tsv"
+"$expect" "$out/control.tsv" rows=1 'f1==2' 'n_random==99' 'p_random>=0.01' 'p_random<=1'
+"$expect" "$out/baselines.tsv" rows=2 'r_pattern<0.1' 'r_pattern>-0.1'
 # Seams per f1: the first seed's table and its start table on [1, 2]^2, then
 # the first seed's table on [0, 1]^2 (origin 0).
 "$expect" "$out/seams.tsv" rows=12 'tables==1' 'seam_ratio>1' 'border_outward>=-1' \

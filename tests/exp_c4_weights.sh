@@ -47,9 +47,13 @@ tsv_awk 'NR > 1 {c[n("origin")]++} END {if (c[1] != 6 || c[0] != 6) {print "seam
 "$expect" "$out/seams.tsv" rows=13 'seam_ratio>1' 'seam_ratio<3'
 "$expect" "$out/seam_tests.tsv" rows=12 'p_welch>=0' 'p_welch<=1' 'seeds==3'
 "$expect" "$out/table41.tsv" 'seam_ratio>1' 'seam_ratio_swapped>1'
-# Verdicts: E_KS printed (6 independent) and closest reading (6 selected 1/3),
-# E_Con printed at the run's grid (6 independent) and at the fitted grid (1).
-tsv_awk 'NR > 1 {c[v("kind")]++} END {if (NR != 20 || c["independent"] != 12 || c["selected 1/3"] != 6 || c["fitted 1/6"] != 1) {print "verdict kinds"; exit 1}}' "$out/verdicts.tsv"
+# Verdicts: E_KS printed (6, with the start tables as control: independent
+# or by construction) and closest reading (6 selected 1/3), E_Con printed at
+# the run's grid (6, controlled likewise) and at the fitted grid (1), the
+# trend of r on log(w2 / w1) and (a) against (f), each with a control.
+tsv_awk 'NR > 1 {c[v("kind")]++} NR > 1 && v("kind") ~ /^(independent|by construction)$/ && v("control_verdict") == "-" {print "no control: " $0; exit 1}
+  END {if (NR != 22 || c["independent"] + c["by construction"] != 14 || c["selected 1/3"] != 6 || c["fitted 1/6"] != 1) {print "verdict kinds"; exit 1}}' "$out/verdicts.tsv"
+"$expect" "$out/trend.tsv" rows=2 'points==6' 'rho>=-1' 'rho<=1' 'p_perm>0' 'p_perm<=1'
 tsv_awk '$1 ~ /fitted/ && $2 !~ /^econ_grid.tsv:/ {print "fitted row source"; exit 1} $7 == "independent" && $8 ~ /consistent/ {print "independent row capped"; exit 1}' "$out/verdicts.tsv"
 # The selected reading's panel (a) takes the column that reading gives it.
 sel=$(tsv_awk 'NR > 1 && (best == "" || n("rms_abs_log_ks") < b) {b = n("rms_abs_log_ks"); best = v("reading")} END {print best}' "$out/readings.tsv")

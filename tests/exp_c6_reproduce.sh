@@ -52,4 +52,17 @@ tsv_awk 'NR > 1 && v("kind") == "independent" { ind++
     if (v("verdict") != "see figure") { print $0; exit 1 } }
   END { if (ind != 6 || fig != 4) {
     print "verdicts: " ind " independent, " fig " qualitative"; exit 1 } }' \
+  <(tsv_awk 'NR == 1 || v("quantity") !~ /(uniform|frame|pool E_R)/' "$out/verdicts.tsv")
+# The controls and the other claims' rows (controls.h): random tables in
+# place of reproductions (never below the original: measured 0 of 8), the
+# reproductions' uniformity against w1 = 0, a reproduced table against one
+# frame at 30 Hz (an optimisation as the control), the pool's E_R against
+# the original's (the runs' random starts as the control: never below).
+"$expect" "$out/below_ctl.tsv" rows=6 'n==8' 'below==0'
+"$expect" "$out/uniform.tsv" rows=6 'p_uniform>0' 'p_uniform<=1'
+"$expect" "$out/speed.tsv" rows=9 'ms>0' 'n>=1'
+"$expect" "$out/pool_er.tsv" rows=6 'n==6' 'p_below>0' 'p_below<=1' 'e_original>0'
+tsv_awk 'NR > 1 && v("runs") ~ /random starts/ && n("below") != 0 {print "a random start below the original: " $0; exit 1}' \
+  "$out/pool_er.tsv"
+tsv_awk 'NR > 1 && v("kind") != "qualitative" && v("control_verdict") == "-" {print "no control: " $0; exit 1}' \
   "$out/verdicts.tsv"

@@ -51,3 +51,9 @@ tsv_awk 'NR > 1 && v("tables_from") == "optimised" && n("origin") == 1 {o[++no] 
          END {for (i = 1; i <= no; i++)
                 if (!(o[i] > s)) {print "outward not above start"; exit 1}}' \
   "$out/seams.tsv"
+# The verdicts' negative controls (baselines.tsv, two rows per pattern): the
+# optimised tables against the pattern shuffled (|r| < 0.1, measured < 0.01
+# at --quick) and the unoptimised start tables (worse than a flat image).
+"$expect" "$out/baselines.tsv" rows=6 'n_random==99' 'r_pattern<0.1' 'r_pattern>-0.1'
+tsv_awk 'NR > 1 && v("kind") != "qualitative" && v("control_verdict") == "-" {print "no control: " $0; exit 1}' \
+  "$out/verdicts.tsv"

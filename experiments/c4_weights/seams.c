@@ -28,8 +28,8 @@ static nl_cheng_eval *start_evals(const nl_study_cheng *s, const nl_cheng_config
   return evs;
 }
 
-void c4_seams(const nl_study_cheng *s, const nl_cheng_config *base, const nl_cheng_pattern *pat,
-              const nl_cheng_eval *main_evs, int npair)
+nl_table *c4_seams(const nl_study_cheng *s, const nl_cheng_config *base,
+                   const nl_cheng_pattern *pat, const nl_cheng_eval *main_evs, int npair)
 {
   nl_harness *r = s->r;
   const char *labels[] = { "reading", "panel" };
@@ -78,7 +78,7 @@ void c4_seams(const nl_study_cheng *s, const nl_cheng_config *base, const nl_che
       nl_table_value(t, u, "seam_ratio"), nl_table_value(t, u, "seam_ratio_sd"), k, above[0], npair,
       above[1], npair);
   nl_table_free(wt);
-  nl_table_free(t);
+  return t;
 }
 
 void c4_seams_domain(const nl_study_cheng *s, const nl_cheng_config *cs, const nl_cheng_pattern *pat,

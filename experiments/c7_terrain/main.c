@@ -39,6 +39,8 @@ int main(int argc, char **argv)
   const char *labels[] = { "pattern" };
   nl_table *sum = nl_study_cheng_summary_alloc(1, labels);
   nl_table *ctl = nl_study_cheng_control_alloc(1, labels);
+  const char *blabels[] = { "pattern", "baseline" };
+  nl_table *bl = nl_study_cheng_control_alloc(2, blabels);
   const char *slabels[] = { "pattern", "tables_from" };
   nl_table *seams = nl_study_cheng_seams_alloc(2, slabels);
   int k = nl_harness_seeds(r);
@@ -53,6 +55,8 @@ int main(int argc, char **argv)
     nl_study_cheng_rows_add(&s, sum, 1, &names[i], evs);
     unsigned long rseed = nl_seed_stream(nl_harness_seed(r), "c7.random_r", (unsigned long)i);
     nl_study_cheng_control_add(&s, ctl, 1, &names[i], &c, pat, evs, nrand, rseed, NULL);
+    /* the verdicts' negative controls: the pattern shuffled, the start tables */
+    nl_study_cheng_baselines_add(&s, bl, 2, &names[i], &c, pat, tables, nrand, rseed);
     const char *sl[2] = { names[i], "optimised" };
     nl_study_cheng_seams_add(seams, 2, sl, (const nl_noise_grad2 *const *)tables, k, &c, pat);
     /* the alternative domain [0, 1]^2 (origin 0; nl_cheng.h READINGS): the
@@ -97,9 +101,11 @@ int main(int argc, char **argv)
                          "Fig 4.15-4.17: pattern | height | relief", "heightmaps.png");
   nl_harness_write_table(r, sum, "summary.tsv");
   nl_harness_write_table(r, ctl, "control.tsv");
+  nl_harness_write_table(r, bl, "baselines.tsv");
   nl_harness_write_table(r, seams, "seams.tsv");
   c7_text(r, &s, sum, mesh, zscale);
-  c7_control_text(r, ctl, seams, &c);
+  c7_control_text(r, ctl, bl, seams, &c);
+  nl_table_free(bl);
   nl_table_free(sum);
   nl_table_free(ctl);
   nl_table_free(seams);

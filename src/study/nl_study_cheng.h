@@ -241,6 +241,37 @@ void nl_study_cheng_control_add(const nl_study_cheng *s, nl_table *t, int nlabel
                                 const char *const *labels, const nl_cheng_config *c,
                                 const nl_cheng_pattern *pat, const nl_cheng_eval *evs,
                                 int n_random, unsigned long seed, double *r_random);
+/* The pattern with its targets D shuffled among its points (cells and
+ * positions kept; gsl MT19937 from seed): the same values, no shape. Free
+ * with nl_cheng_pattern_free. */
+nl_cheng_pattern *nl_study_cheng_pattern_shuffled(const nl_cheng_pattern *p, unsigned long seed);
+/* Evaluations (nl_cheng_evaluate under c on pat) of n tables; exit 1 on
+ * error. Caller frees. */
+nl_cheng_eval *nl_study_cheng_evaluate_tables(const nl_study_cheng *s, const nl_cheng_config *c,
+                                              const nl_cheng_pattern *pat,
+                                              nl_noise_grad2 *const *tables, int n);
+/* The run's k unoptimised start tables of nl_cheng_run (seed
+ * nl_seed_replicate(seed0, i), seed0 as nl_study_cheng_runs); caller frees
+ * each and the array. */
+nl_noise_grad2 **nl_study_cheng_start_tables(const nl_study_cheng *s, size_t m);
+/* The negative controls of "follows the pattern" (rows of a control table
+ * whose last label column names the baseline; labels: the first nlabels
+ * - 1): "shuffled pattern", the k optimised tables against pat with its
+ * targets shuffled (nl_study_cheng_pattern_shuffled from seed), its random
+ * tables' r on that pattern as the null; and "start tables", the run's k
+ * unoptimised start tables (nl_study_cheng_start_tables) on pat. Returns the
+ * first of the two rows. */
+size_t nl_study_cheng_baselines_add(const nl_study_cheng *s, nl_table *t, int nlabels,
+                                    const char *const *labels, const nl_cheng_config *c,
+                                    const nl_cheng_pattern *pat, nl_noise_grad2 *const *tables,
+                                    int n_random, unsigned long seed);
+/* Spearman's rho of y on x (GSL; ties get average ranks). */
+double nl_study_spearman(const double *x, const double *y, size_t n);
+/* rho into *rho and its one-sided permutation p (rho large): y shuffled
+ * nperm times (MT19937 from seed), p = (1 + #{rho_perm >= rho}) / (nperm +
+ * 1). */
+double nl_study_spearman_perm_p(const double *x, const double *y, size_t n, int nperm,
+                                unsigned long seed, double *rho);
 /* E_Con against the flat image per row of a control table, split (in units
  * of the flat image's E_Con) into offset + contrast + shape, naming the rows
  * whose offset alone makes them worse than flat. Returns the number of rows

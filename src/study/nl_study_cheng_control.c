@@ -7,6 +7,9 @@
 #include "stats/nl_stats.h"
 
 #include <gsl/gsl_cdf.h>
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_rng.h>
+#include <gsl/gsl_statistics_double.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -140,6 +143,109 @@ void nl_study_cheng_control_add(const nl_study_cheng *s, nl_table *t, int nlabel
   for (int i = 0; i < nlabels; i++) nl_table_set_text(t, rr, t->names[i], labels[i]);
   if (!r_random) free(null);
   free(x);
+}
+
+/* ---- negative controls ---------------------------------------------------- */
+
+nl_cheng_pattern *nl_study_cheng_pattern_shuffled(const nl_cheng_pattern *p, unsigned long seed)
+{
+  nl_cheng_pattern *q = nl_xcalloc(1, sizeof *q);
+  q->grid = p->grid;
+  q->n = p->n;
+  q->x = nl_xmalloc(p->n * sizeof *q->x);
+  q->y = nl_xmalloc(p->n * sizeof *q->y);
+  q->d = nl_xmalloc(p->n * sizeof *q->d);
+  q->cell = nl_xmalloc(p->n * sizeof *q->cell);
+  memcpy(q->x, p->x, p->n * sizeof *q->x);
+  memcpy(q->y, p->y, p->n * sizeof *q->y);
+  memcpy(q->d, p->d, p->n * sizeof *q->d);
+  memcpy(q->cell, p->cell, p->n * sizeof *q->cell);
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, seed);
+  gsl_ran_shuffle(rng, q->d, q->n, sizeof *q->d);
+  gsl_rng_free(rng);
+  return q;
+}
+
+nl_cheng_eval *nl_study_cheng_evaluate_tables(const nl_study_cheng *s, const nl_cheng_config *c,
+                                              const nl_cheng_pattern *pat,
+                                              nl_noise_grad2 *const *tables, int n)
+{
+  nl_cheng_eval *evs = nl_xmalloc((size_t)n * sizeof *evs);
+  for (int i = 0; i < n; i++) {
+    nl_error err;
+    if (nl_cheng_evaluate(tables[i], c, pat, &evs[i], &err)) nl_harness_die(s->r, 1, "%s", err.msg);
+    evs[i].e_con_random = evs[i].e_con;
+  }
+  return evs;
+}
+
+nl_noise_grad2 **nl_study_cheng_start_tables(const nl_study_cheng *s, size_t m)
+{
+  int k = nl_harness_seeds(s->r);
+  unsigned long seed0 =
+      s->role ? nl_seed_stream(nl_harness_seed(s->r), s->role, 0) : nl_harness_seed(s->r);
+  nl_noise_grad2 **t = nl_xmalloc((size_t)k * sizeof *t);
+  for (int i = 0; i < k; i++) {
+    t[i] = nl_noise_grad2_alloc(m);
+    nl_noise_grad2_seed(t[i], nl_seed_replicate(seed0, i)); /* as nl_cheng_run */
+  }
+  return t;
+}
+
+size_t nl_study_cheng_baselines_add(const nl_study_cheng *s, nl_table *t, int nlabels,
+                                    const char *const *labels, const nl_cheng_config *c,
+                                    const nl_cheng_pattern *pat, nl_noise_grad2 *const *tables,
+                                    int n_random, unsigned long seed)
+{
+  int k = nl_harness_seeds(s->r);
+  const char *lab[32];
+  for (int i = 0; i < nlabels - 1; i++) lab[i] = labels[i];
+  size_t first = t->nrows;
+  nl_cheng_pattern *sh = nl_study_cheng_pattern_shuffled(pat, nl_seed_stream(seed, "cheng.shuffle", 0));
+  nl_cheng_eval *evs = nl_study_cheng_evaluate_tables(s, c, sh, tables, k);
+  lab[nlabels - 1] = "shuffled pattern";
+  nl_study_cheng_control_add(s, t, nlabels, lab, c, sh, evs, n_random,
+                             nl_seed_stream(seed, "cheng.shuffle", 1), NULL);
+  free(evs);
+  nl_cheng_pattern_free(sh);
+  nl_noise_grad2 **st = nl_study_cheng_start_tables(s, c->m);
+  evs = nl_study_cheng_evaluate_tables(s, c, pat, st, k);
+  lab[nlabels - 1] = "start tables";
+  nl_study_cheng_control_add(s, t, nlabels, lab, c, pat, evs, n_random,
+                             nl_seed_stream(seed, "cheng.shuffle", 2), NULL);
+  free(evs);
+  for (int i = 0; i < k; i++) nl_noise_grad2_free(st[i]);
+  free(st);
+  return first;
+}
+
+double nl_study_spearman(const double *x, const double *y, size_t n)
+{
+  double *work = nl_xmalloc(2 * n * sizeof *work);
+  double rho = gsl_stats_spearman(x, 1, y, 1, n, work); /* ties: average ranks */
+  free(work);
+  return rho;
+}
+
+double nl_study_spearman_perm_p(const double *x, const double *y, size_t n, int nperm,
+                                unsigned long seed, double *rho)
+{
+  *rho = nl_study_spearman(x, y, n);
+  double *yp = nl_xmalloc(n * sizeof *yp);
+  memcpy(yp, y, n * sizeof *yp);
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, seed);
+  int at_least = 0;
+  for (int b = 0; b < nperm; b++) {
+    gsl_ran_shuffle(rng, yp, n, sizeof *yp);
+    /* a hair of tolerance: a permutation that only swaps tied values gives
+     * the same rho up to rounding */
+    at_least += nl_study_spearman(x, yp, n) >= *rho - 1e-12;
+  }
+  gsl_rng_free(rng);
+  free(yp);
+  return (1.0 + at_least) / (1.0 + nperm);
 }
 
 /* ---- seams ---------------------------------------------------------------- */
