@@ -80,3 +80,7 @@ tsv_awk 'NR > 1 {c[n("origin")]++} END {if (c[1] != 13 || c[0] != 12) {print "se
   "$out/seams.tsv"
 "$expect" "$out/seams.tsv" rows=25 'tables==1' 'seam_ratio>1' 'seam_quarter>0' 'seam_border>0' \
   'border_outward>=-1' 'border_outward<=1'
+# The figures against their captions (tests/oracle_cheng.c): every panel
+# recomputed from the run's tables.tsv through the noise's point call, and
+# the pattern panels from the pattern PNGs, compared to 8 bits.
+NL_PATTERNS="$pat" panels_oracle cheng c1 "$out" "$(dirname "$0")/../results/c1_textures"

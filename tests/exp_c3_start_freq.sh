@@ -42,3 +42,7 @@ tsv_awk 'NR > 1 && (v("rule") != "p 0.01 0.05" || v("control_verdict") == "-") {
 # the first seed's table on [0, 1]^2 (origin 0).
 "$expect" "$out/seams.tsv" rows=12 'tables==1' 'seam_ratio>1' 'border_outward>=-1' \
   'border_outward<=1'
+# The figures against their captions (tests/oracle_cheng.c): every panel
+# recomputed from the run's tables.tsv through the noise's point call, and
+# the pattern panels from the pattern PNGs, compared to 8 bits.
+NL_PATTERNS="$pat" panels_oracle cheng c3 "$out" "$(dirname "$0")/../results/c3_start_freq"

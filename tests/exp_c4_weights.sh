@@ -59,3 +59,7 @@ tsv_awk '$1 ~ /fitted/ && $2 !~ /^econ_grid.tsv:/ {print "fitted row source"; ex
 sel=$(tsv_awk 'NR > 1 && (best == "" || n("rms_abs_log_ks") < b) {b = n("rms_abs_log_ks"); best = v("reading")} END {print best}' "$out/readings.tsv")
 want=$([ "$sel" = swapped ] && echo E_ks_swapped || echo E_ks)
 tsv_awk -v want="table41.tsv:$want" 'v("quantity") == "E_KS, closest reading, panel a" && v("source") != want {print "panel (a) column " v("source"); exit 1}' "$out/verdicts.tsv"
+# The figures against their captions (tests/oracle_cheng.c): every panel
+# recomputed from the run's tables.tsv through the noise's point call, and
+# the pattern panels from the pattern PNGs, compared to 8 bits.
+NL_PATTERNS="$pat" panels_oracle cheng c4 "$out" "$(dirname "$0")/../results/c4_weights"

@@ -66,3 +66,7 @@ tsv_awk 'NR > 1 && v("runs") ~ /random starts/ && n("below") != 0 {print "a rand
   "$out/pool_er.tsv"
 tsv_awk 'NR > 1 && v("kind") != "qualitative" && v("control_verdict") == "-" {print "no control: " $0; exit 1}' \
   "$out/verdicts.tsv"
+# The figures against their captions (tests/oracle_cheng.c): every panel
+# recomputed from the run's tables.tsv through the noise's point call, and
+# the pattern panels from the pattern PNGs, compared to 8 bits.
+NL_PATTERNS="$pat" panels_oracle cheng c6 "$out" "$(dirname "$0")/../results/c6_reproduce"

@@ -57,3 +57,7 @@ tsv_awk 'NR > 1 && v("tables_from") == "optimised" && n("origin") == 1 {o[++no] 
 "$expect" "$out/baselines.tsv" rows=6 'n_random==99' 'r_pattern<0.1' 'r_pattern>-0.1'
 tsv_awk 'NR > 1 && v("kind") != "qualitative" && v("control_verdict") == "-" {print "no control: " $0; exit 1}' \
   "$out/verdicts.tsv"
+# The figures against their captions (tests/oracle_cheng.c): every panel
+# recomputed from the run's tables.tsv through the noise's point call, and
+# the pattern panels from the pattern PNGs, compared to 8 bits.
+NL_PATTERNS="$pat" panels_oracle cheng c7 "$out" "$(dirname "$0")/../results/c7_terrain"

@@ -148,6 +148,15 @@ int main(int argc, char **argv)
   free(nulls);
   free(evs);
 
+  /* the first seed's tables behind the figures (tests/oracle_cheng.c) */
+  nl_table *tabs = nl_study_cheng_tables_alloc(3, labels);
+  for (int i = 0; i < NCASE; i++) {
+    const char *lab[3] = { nl_cheng_con_name(cs[i].con), patterns[i / 2 / NPAT][i / 2 % NPAT],
+                           formula[i % 2] };
+    nl_study_cheng_tables_add(tabs, 3, lab, firsts[i]);
+  }
+  nl_harness_write_table(r, tabs, "tables.tsv");
+  nl_table_free(tabs);
   /* Fig 4.1-4.4, one montage per texture, first seed: pattern | value on its
    * own 0..1 scale | stretched | texture | the literal formula's value. */
   for (int t = 0; t < NTEX; t++) {

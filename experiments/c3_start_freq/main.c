@@ -49,6 +49,16 @@ int main(int argc, char **argv)
   nl_cheng_eval *evs = nl_study_cheng_runs_tables(&s, NF, cs, pp, tables);
   for (int i = 0; i < NF; i++) firsts[i] = nl_noise_grad2_alloc(base.m);
   for (int i = 0; i < NF; i++) nl_noise_grad2_copy(firsts[i], tables[(size_t)i * k]);
+  /* the first seed's tables behind the figure (tests/oracle_cheng.c) */
+  nl_table *tabs = nl_study_cheng_tables_alloc(1, labels);
+  for (int i = 0; i < NF; i++) {
+    char f[32];
+    nl_table_format_double(f, f1s[i]);
+    const char *l[1] = { f };
+    nl_study_cheng_tables_add(tabs, 1, l, firsts[i]);
+  }
+  nl_harness_write_table(r, tabs, "tables.tsv");
+  nl_table_free(tabs);
   /* "we can even control the lower frequency appearance": the lowest f1's
    * value against its pattern (r against random tables, E_Con against the
    * flat image), with the negative controls of nl_study_cheng_baselines_add */

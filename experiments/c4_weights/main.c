@@ -107,6 +107,14 @@ int main(int argc, char **argv)
   for (int q = 0; q < n; q++)
     nl_study_cheng_rows_add(&s, q < 2 * NPAIR ? tab : sweep, 4, wc[q].lab, evs + (size_t)q * k);
   c4_fig48(r, pat, firsts, NPAIR, &base);
+  {
+    /* the first seed's tables behind Fig 4.8 (tests/oracle_cheng.c) */
+    const char *tl[] = { "reading", "panel" };
+    nl_table *tabs = nl_study_cheng_tables_alloc(2, tl);
+    for (int q = 0; q < 2 * NPAIR; q++) nl_study_cheng_tables_add(tabs, 2, wc[q].lab, firsts[q]);
+    nl_harness_write_table(r, tabs, "tables.tsv");
+    nl_table_free(tabs);
+  }
   c4_seams_domain(&s, cs, pat, firsts, NPAIR);
   nl_table *trend = c4_trend(&s, &base, pat, sweep, tables + (size_t)2 * NPAIR * k, rhos, nsweep);
   for (size_t q = 0; q < (size_t)n * k; q++) nl_noise_grad2_free(tables[q]);

@@ -21,6 +21,8 @@ void c6_controls_init(c6_controls *k)
   k->uniform = nl_table_alloc(6, u);
   k->speed = nl_table_alloc(5, s);
   k->pool_er = nl_table_alloc(8, e);
+  const char *tl[] = { "texture", "table" };
+  k->tables = nl_study_cheng_tables_alloc(2, tl);
 }
 
 void c6_controls_free(c6_controls *k)
@@ -29,6 +31,7 @@ void c6_controls_free(c6_controls *k)
   nl_table_free(k->uniform);
   nl_table_free(k->speed);
   nl_table_free(k->pool_er);
+  nl_table_free(k->tables);
 }
 
 static void uniform_row(nl_table *t, const char *tex, const char *what, const double *p,
@@ -117,6 +120,7 @@ void c6_controls_text(nl_harness *r, const c6_controls *k)
   nl_harness_write_table(r, k->uniform, "uniform.tsv");
   nl_harness_write_table(r, k->speed, "speed.tsv");
   nl_harness_write_table(r, k->pool_er, "pool_er.tsv");
+  nl_harness_write_table(r, k->tables, "tables.tsv");
   nl_harness_check(r, "speed.tsv", "ms", "ignore"); /* times: never compared */
   nl_harness_check(r, "speed.tsv", "ms_sd", "ignore");
   nl_harness_report_table(r, k->uniform,

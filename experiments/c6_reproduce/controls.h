@@ -28,6 +28,7 @@
 
 typedef struct {
   nl_table *below_ctl, *uniform, *speed, *pool_er;
+  nl_table *tables;   /* tables.tsv: the montages' tables (texture, table: original, r1..) */
 } c6_controls;
 
 void c6_controls_init(c6_controls *k);

@@ -197,6 +197,12 @@ static void reproduce_from(const nl_study_cheng *st, nl_table *reps, nl_table *s
       summary_row(sum, th->texture, kind, s, nrep, rp, m->k);
       if (w == 0) {
         c6_controls_add(ctl, st, th->texture, &c, pat, rp, s->ks, s->p, s->ms, nrep);
+        for (int i = 0; i <= C6_NSHOW; i++) { /* the montage's tables (tests/oracle_cheng.c) */
+          char name[16];
+          snprintf(name, sizeof name, i ? "r%d" : "original", i);
+          const char *l[2] = { th->texture, name };
+          nl_study_cheng_tables_add(ctl->tables, 2, l, i ? g[i - 1] : rp->opt);
+        }
         montage(r, th->texture, &c, g, s, rp);
         const nl_noise_grad2 *tabs[C6_NSHOW + 1] = { rp->opt };
         const char *names[C6_NSHOW + 1] = { "original", "r1", "r2", "r3", "r4",

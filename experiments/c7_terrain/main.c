@@ -48,6 +48,7 @@ int main(int argc, char **argv)
   double *h = nl_xmalloc((size_t)mesh * mesh * sizeof *h);
   double *hp = nl_xmalloc((size_t)PANEL * PANEL * sizeof *hp);
   nl_image *panels[NCOL * NPAT];
+  nl_table *tabs = nl_study_cheng_tables_alloc(1, labels); /* the figure's tables (tests/oracle_cheng.c) */
   const char *plab[NCOL * NPAT];
   for (int i = 0; i < NPAT; i++) {
     nl_cheng_pattern *pat = nl_study_cheng_pattern(&s, names[i]);
@@ -75,6 +76,7 @@ int main(int argc, char **argv)
     free(evs);
     for (int j = 1; j < k; j++) nl_noise_grad2_free(tables[j]);
     nl_noise_grad2 *first = tables[0];
+    nl_study_cheng_tables_add(tabs, 1, &names[i], first);
     /* The height: the controlled value on the mesh, then at the panels' size. */
     nl_cheng_value_grid(first, &c, mesh, mesh, h);
     char file[64];
@@ -99,6 +101,8 @@ int main(int argc, char **argv)
   }
   nl_study_cheng_montage(r, panels, plab, NCOL * NPAT, NCOL,
                          "Fig 4.15-4.17: pattern | height | relief", "heightmaps.png");
+  nl_harness_write_table(r, tabs, "tables.tsv");
+  nl_table_free(tabs);
   nl_harness_write_table(r, sum, "summary.tsv");
   nl_harness_write_table(r, ctl, "control.tsv");
   nl_harness_write_table(r, bl, "baselines.tsv");

@@ -399,3 +399,25 @@ double nl_study_cheng_welch_add(nl_table *t, const nl_table *sum, size_t ra, siz
                   100 * (ma - mb) / mb, p);
   return p;
 }
+
+nl_table *nl_study_cheng_tables_alloc(int nlabels, const char *const *labels)
+{
+  const char *names[32];
+  for (int i = 0; i < nlabels; i++) names[i] = labels[i];
+  names[nlabels] = "k";
+  names[nlabels + 1] = "angle";
+  names[nlabels + 2] = "perm";
+  return nl_table_alloc((size_t)nlabels + 3, names);
+}
+
+void nl_study_cheng_tables_add(nl_table *t, int nlabels, const char *const *labels,
+                               const nl_noise_grad2 *g)
+{
+  for (size_t k = 0; k < g->m; k++) {
+    size_t r = nl_table_append_empty(t);
+    for (int i = 0; i < nlabels; i++) nl_table_set_text(t, r, t->names[i], labels[i]);
+    nl_table_set(t, r, "k", (double)k);
+    nl_table_set(t, r, "angle", g->angle[k]);
+    nl_table_set(t, r, "perm", (double)g->perm[k]);
+  }
+}

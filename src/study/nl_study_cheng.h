@@ -177,6 +177,14 @@ nl_noise_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_con
  * FILE; frees the panels. */
 void nl_study_cheng_montage(nl_harness *r, nl_image **panels, const char *const *labels, int n,
                             int cols, const char *title, const char *file);
+/* The gradient tables behind a run's figures, as data (tables.tsv): nlabels
+ * label columns naming the table, then k (entry), angle (radians,
+ * round-trip) and perm (P[k]); _add appends table g's m rows under labels.
+ * tests/oracle_cheng.c rebuilds each table from them and recomputes the
+ * panels through the noise's point call. */
+nl_table *nl_study_cheng_tables_alloc(int nlabels, const char *const *labels);
+void nl_study_cheng_tables_add(nl_table *t, int nlabels, const char *const *labels,
+                               const nl_noise_grad2 *g);
 /* The smallest value of column `col` over the table's rows (+inf if none). */
 double nl_study_column_min(const nl_table *t, const char *col);
 
