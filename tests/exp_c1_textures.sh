@@ -2,8 +2,9 @@
 # Quick C1: four textures x three patterns (3 seeds per row). What the method
 # claims, bounded by measurements at --quick over seeds 1..5:
 #  - the optimised tables stay uniform: E_ks < 0.02 (measured 0.0084..0.0134;
+#    0.0100..0.0145 at seed 1 on the domain [1, 2]^2;
 #    a random table of 512 angles has mean D = 0.87 / sqrt(512) = 0.038) and
-#    KS never rejects: p_ks_min > 0.9 (measured >= 0.9991; a random table's p
+#    KS never rejects: p_ks_min > 0.9 (measured >= 0.9991, 0.9957 on [1, 2]^2; a random table's p
 #    is uniform on [0, 1], so 0.9 fails 90% of unoptimised tables);
 #  - the control term works: each row's rms control error is below that of the
 #    same run with w2 = 0 (KS only, the control ignored). Ceilings below are the
@@ -14,8 +15,9 @@
 #  - controllability columns: every row's optimised E_Con is below its
 #    unoptimised start table's (measured 24 of 24 at --quick, seed 1; a run
 #    that ignored the pattern would not be), r_pattern > 0 for the rescaled
-#    rows (measured 0.18..0.44), and marble's rescaled sine has over twice the
-#    contrast of the literal sin V (measured 0.251..0.255 vs 0.062..0.065).
+#    rows (measured 0.18..0.44; 0.21..0.45 on [1, 2]^2), and marble's rescaled
+#    sine has over twice the contrast of the literal sin V (measured
+#    0.251..0.255 vs 0.062..0.065; 0.242..0.250 vs 0.062..0.064 on [1, 2]^2).
 set -euo pipefail
 # shellcheck source=tests/tsv.sh
 . "$(dirname "$0")/tsv.sh"   # tables by column name
@@ -47,8 +49,8 @@ tsv_awk 'NR > 1 && !(n("E_con") < n("E_con_random") && n("E_con_const") > 0 && n
 # "The texture follows the pattern": per case (control.tsv, 24 rows, whose
 # 12 rescaled rows the verdicts read) and pooled per texture over its three
 # patterns (pooled.tsv, 4 rows, no verdict): r against 99 random tables
-# (Monte-Carlo p in [1/100, 1]; measured pooled r 0.27..0.40 against random
-# sd 0.027..0.035 at --quick, p = 0.01 for all four textures) and E_Con
+# (Monte-Carlo p in [1/100, 1]; measured pooled r 0.28..0.40 against random
+# sd 0.028..0.036 at --quick on [1, 2]^2, p = 0.01 for all four textures) and E_Con
 # against the flat images (one-sided t over the seeds; the split's fractions
 # sum to 1). The negative controls (baselines.tsv, two rows per headline
 # case): the optimised tables against the pattern shuffled (r near 0,
