@@ -39,15 +39,27 @@ tsv_awk 'NR > 1 {a[v("reading")] = n("E_ks_a")} END {if (a["mixed_a_printed"] !=
   'rms_abs_log_ks>0'
 "$expect" "$out/econ_grid_runs.tsv" rows=48 'seeds==3'
 tsv_awk 'NR > 1 {k = v("budget") "/" v("reading"); if (k in last && !(n("E_con") > last[k])) {print "E_con not growing with the grid: " k; exit 1} last[k] = n("E_con")}' "$out/econ_grid.tsv"
+# Fig 4.8's printed panels' seams on the domains [1, 2]^2 and [0, 1]^2.
+"$expect" "$out/seams_domain.tsv" rows=12 'tables==1' 'seam_ratio>1' 'seam_quarter>0' 'seam_border>0'
+tsv_awk 'NR > 1 {c[n("origin")]++} END {if (c[1] != 6 || c[0] != 6) {print "seams_domain rows per origin"; exit 1}}' \
+  "$out/seams_domain.tsv"
 # Seams: the 12 panels and the unoptimised start tables, Welch p in [0, 1].
 "$expect" "$out/seams.tsv" rows=13 'seam_ratio>1' 'seam_ratio<3'
 "$expect" "$out/seam_tests.tsv" rows=12 'p_welch>=0' 'p_welch<=1' 'seeds==3'
 "$expect" "$out/table41.tsv" 'seam_ratio>1' 'seam_ratio_swapped>1'
-# Verdicts: E_KS printed (6 independent) and closest reading (6 selected 1/3),
-# E_Con printed at the run's grid (6 independent) and at the fitted grid (1).
-tsv_awk 'NR > 1 {c[v("kind")]++} END {if (NR != 20 || c["independent"] != 12 || c["selected 1/3"] != 6 || c["fitted 1/6"] != 1) {print "verdict kinds"; exit 1}}' "$out/verdicts.tsv"
+# Verdicts: E_KS printed (6, with the start tables as control: independent
+# or by construction) and closest reading (6 selected 1/3), E_Con printed at
+# the run's grid (6, controlled likewise) and at the fitted grid (1), the
+# trend of r on log(w2 / w1) and (a) against (f), each with a control.
+tsv_awk 'NR > 1 {c[v("kind")]++} NR > 1 && v("kind") ~ /^(independent|by construction)$/ && v("control_verdict") == "-" {print "no control: " $0; exit 1}
+  END {if (NR != 22 || c["independent"] + c["by construction"] != 14 || c["selected 1/3"] != 6 || c["fitted 1/6"] != 1) {print "verdict kinds"; exit 1}}' "$out/verdicts.tsv"
+"$expect" "$out/trend.tsv" rows=2 'points==6' 'rho>=-1' 'rho<=1' 'p_perm>0' 'p_perm<=1'
 tsv_awk '$1 ~ /fitted/ && $2 !~ /^econ_grid.tsv:/ {print "fitted row source"; exit 1} $7 == "independent" && $8 ~ /consistent/ {print "independent row capped"; exit 1}' "$out/verdicts.tsv"
 # The selected reading's panel (a) takes the column that reading gives it.
 sel=$(tsv_awk 'NR > 1 && (best == "" || n("rms_abs_log_ks") < b) {b = n("rms_abs_log_ks"); best = v("reading")} END {print best}' "$out/readings.tsv")
 want=$([ "$sel" = swapped ] && echo E_ks_swapped || echo E_ks)
 tsv_awk -v want="table41.tsv:$want" 'v("quantity") == "E_KS, closest reading, panel a" && v("source") != want {print "panel (a) column " v("source"); exit 1}' "$out/verdicts.tsv"
+# The figures against their captions (tests/oracle_cheng.c): every panel
+# recomputed from the run's tables.tsv through the noise's point call, and
+# the pattern panels from the pattern PNGs, compared to 8 bits.
+NL_PATTERNS="$pat" panels_oracle cheng c4 "$out" "$(dirname "$0")/../results/c4_weights"

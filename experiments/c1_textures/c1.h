@@ -36,11 +36,22 @@ void c1_claims_add(nl_table *t, const char *texture, int np, int k, const nl_che
  * unoptimised start table under config c on pat. */
 void c1_seams_start(const nl_study_cheng *s, nl_table *seams, const nl_cheng_config *c,
                     const nl_cheng_pattern *pat, const char *pattern);
-/* The claims' verdicts (two per texture, independent; one qualitative row
- * per texture's figure TEXTURE.png), the per-case control table and E_Con's
- * split, and the seams of the first seed's textures. */
-void c1_control_text(nl_harness *r, const nl_table *claims, const nl_table *ctl,
-                     const nl_table *seams);
+/* "Statistics kept" per texture: columns texture, tables, runs (patterns x
+ * seeds), E_ks (mean), p_ks_min (the smallest KS p of the runs) and
+ * p_uniform = min(1, runs p_ks_min) (Bonferroni: is any run non-uniform?).
+ * _add: one row from np patterns' k evaluations each. */
+nl_table *c1_uniform_alloc(void);
+void c1_uniform_add(nl_table *t, const char *texture, const char *tables, int np, int k,
+                    const nl_cheng_eval *const *evs);
+/* The verdicts: per headline case (ctl's rescaled rows) r against random
+ * tables and E_Con against the flat image, each with its negative control
+ * (bl rows 2q: the pattern shuffled, 2q + 1: the start tables, q the
+ * case's index among the headline rows); per texture "statistics kept"
+ * (uni rows 2t: optimised, 2t + 1: w1 = 0, the control); one qualitative
+ * row per figure TEXTURE.png; the pooled table, E_Con's split and the
+ * seams. */
+void c1_control_text(nl_harness *r, const nl_table *pooled, const nl_table *ctl,
+                     const nl_table *bl, const nl_table *uni, const nl_table *seams);
 
 /* Texture t's figure (Fig 4.(t+1)): its caption, control term `con` by
  * equation `equation`, image `file`. */

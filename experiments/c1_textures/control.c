@@ -75,3 +75,22 @@ void c1_seams_start(const nl_study_cheng *s, nl_table *seams, const nl_cheng_con
   nl_study_cheng_seams_add(seams, 3, lab, (const nl_noise_grad2 *const *)&g, 1, c, pat);
   nl_noise_grad2_free(g);
 }
+
+nl_table *c1_uniform_alloc(void)
+{
+  const char *cols[] = { "texture", "tables", "runs", "E_ks", "p_ks_min", "p_uniform" };
+  return nl_table_alloc(6, cols);
+}
+
+void c1_uniform_add(nl_table *t, const char *texture, const char *tables, int np, int k,
+                    const nl_cheng_eval *const *evs)
+{
+  double e = 0, pmin = 1;
+  for (int p = 0; p < np; p++)
+    for (int i = 0; i < k; i++) {
+      e += evs[p][i].e_ks / (np * k);
+      pmin = evs[p][i].p_ks < pmin ? evs[p][i].p_ks : pmin;
+    }
+  double n = (double)np * k, pu = n * pmin < 1 ? n * pmin : 1;
+  nl_table_append(t, "ssdddd", texture, tables, n, e, pmin, pu);
+}

@@ -55,6 +55,7 @@ int main(int argc, char **argv)
   nl_cheng_pattern *pats[NTEX * NPAT];
   const nl_cheng_pattern *pp[NCASE];
   nl_noise_grad2 *firsts[NCASE];
+  nl_noise_grad2 **tables = nl_xmalloc((size_t)NCASE * (size_t)k * sizeof *tables);
   for (int i = 0; i < NTEX * NPAT; i++) {
     cs[2 * i] = base;
     cs[2 * i].con = (nl_cheng_con)(i / NPAT); /* eq. 3.8, 4.1, 4.2, 4.3 */
@@ -64,8 +65,11 @@ int main(int argc, char **argv)
     pp[2 * i] = pats[i];
     pp[2 * i + 1] = pats[i];
   }
-  nl_cheng_eval *evs = nl_study_cheng_runs(&s, NCASE, cs, pp, firsts);
+  nl_cheng_eval *evs = nl_study_cheng_runs_tables(&s, NCASE, cs, pp, tables);
+  for (int i = 0; i < NCASE; i++) firsts[i] = tables[(size_t)i * k];
   nl_table *ctl = nl_study_cheng_control_alloc(3, labels), *claims = c1_claims_alloc();
+  const char *blabels[] = { "texture", "pattern", "baseline" };
+  nl_table *bl = nl_study_cheng_control_alloc(3, blabels);
   const char *slabels[] = { "texture", "pattern", "tables_from" };
   nl_table *seams = nl_study_cheng_seams_alloc(3, slabels);
   double *nulls = nl_xmalloc((size_t)NCASE * (size_t)nrand * sizeof *nulls);
@@ -77,12 +81,61 @@ int main(int argc, char **argv)
     nl_study_cheng_control_add(&s, ctl, 3, lab, &cs[i], pp[i], evs + (size_t)i * k, nrand, rs,
                                nulls + (size_t)i * nrand);
     const char *sl[3] = { lab[0], lab[1], "optimised" };
-    if (i % 2 == 0) /* the headline (rescaled) cases' first-seed tables */
+    if (i % 2 == 0) { /* the headline (rescaled) cases' first-seed tables */
       nl_study_cheng_seams_add(seams, 3, sl, (const nl_noise_grad2 *const *)&firsts[i], 1, &cs[i],
                                pp[i]);
+      /* the per-pattern verdicts' negative controls */
+      nl_study_cheng_baselines_add(&s, bl, 3, lab, &cs[i], pp[i], tables + (size_t)i * k, nrand,
+                                   rs);
+    }
   }
   c1_seams_start(&s, seams, &cs[0], pp[0], patterns[0][0]);
-  /* the verdicts' tests: each texture over its patterns, headline formula */
+  /* The alternative domain [0, 1]^2 (origin 0; nl_cheng.h READINGS): the
+   * headline cases again, the seams of their first seed's tables. */
+  {
+    enum { NH = NTEX * NPAT };
+    nl_cheng_config c0[NH];
+    const nl_cheng_pattern *p0[NH];
+    nl_noise_grad2 *f0[NH];
+    for (int i = 0; i < NH; i++) {
+      c0[i] = cs[2 * i];
+      c0[i].origin = 0;
+      p0[i] = pats[i];
+    }
+    free(nl_study_cheng_runs(&s, NH, c0, p0, f0));
+    for (int i = 0; i < NH; i++) {
+      const char *sl[3] = { nl_cheng_con_name(c0[i].con), patterns[i / NPAT][i % NPAT],
+                            "optimised" };
+      nl_study_cheng_seams_add(seams, 3, sl, (const nl_noise_grad2 *const *)&f0[i], 1, &c0[i],
+                               p0[i]);
+      nl_noise_grad2_free(f0[i]);
+    }
+  }
+  /* "statistics kept": the headline cases' uniformity against the same
+   * cases optimised for E_Con alone (w1 = 0) */
+  nl_table *uni = c1_uniform_alloc();
+  {
+    enum { NH = NTEX * NPAT };
+    nl_cheng_config cw[NH];
+    const nl_cheng_pattern *pw[NH];
+    for (int i = 0; i < NH; i++) {
+      cw[i] = cs[2 * i];
+      cw[i].w1 = 0;
+      pw[i] = pats[i];
+    }
+    nl_cheng_eval *ew = nl_study_cheng_runs(&s, NH, cw, pw, NULL);
+    for (int t = 0; t < NTEX; t++) {
+      const nl_cheng_eval *e[NPAT], *w[NPAT];
+      for (int j = 0; j < NPAT; j++) {
+        e[j] = evs + (size_t)(2 * (t * NPAT + j)) * k;
+        w[j] = ew + (size_t)(t * NPAT + j) * k;
+      }
+      c1_uniform_add(uni, nl_cheng_con_name(cs[2 * NPAT * t].con), "optimised", NPAT, k, e);
+      c1_uniform_add(uni, nl_cheng_con_name(cs[2 * NPAT * t].con), "w1 = 0", NPAT, k, w);
+    }
+    free(ew);
+  }
+  /* pooled over each texture's patterns (no verdict: each pattern decides) */
   for (int t = 0; t < NTEX; t++) {
     const nl_cheng_eval *e[NPAT];
     const double *nl[NPAT];
@@ -95,6 +148,15 @@ int main(int argc, char **argv)
   free(nulls);
   free(evs);
 
+  /* the first seed's tables behind the figures (tests/oracle_cheng.c) */
+  nl_table *tabs = nl_study_cheng_tables_alloc(3, labels);
+  for (int i = 0; i < NCASE; i++) {
+    const char *lab[3] = { nl_cheng_con_name(cs[i].con), patterns[i / 2 / NPAT][i / 2 % NPAT],
+                           formula[i % 2] };
+    nl_study_cheng_tables_add(tabs, 3, lab, firsts[i]);
+  }
+  nl_harness_write_table(r, tabs, "tables.tsv");
+  nl_table_free(tabs);
   /* Fig 4.1-4.4, one montage per texture, first seed: pattern | value on its
    * own 0..1 scale | stretched | texture | the literal formula's value. */
   for (int t = 0; t < NTEX; t++) {
@@ -115,8 +177,6 @@ int main(int argc, char **argv)
       p[4] = nl_study_cheng_value_image(lit, &cl, size);
       const char *pl[NCOL] = { patterns[t][j], "c, raw 0..1", "c, stretched", name, "literal c" };
       for (int q = 0; q < NCOL; q++) plab[NCOL * j + q] = pl[q];
-      nl_noise_grad2_free(first);
-      nl_noise_grad2_free(lit);
       nl_cheng_pattern_free(pats[i]);
       nl_harness_progress(r, (i + 1.0) / (NTEX * NPAT), name);
     }
@@ -128,10 +188,16 @@ int main(int argc, char **argv)
   }
   nl_harness_write_table(r, sum, "summary.tsv");
   nl_harness_write_table(r, ctl, "control.tsv");
-  nl_harness_write_table(r, claims, "claims.tsv");
+  nl_harness_write_table(r, claims, "pooled.tsv");
+  nl_harness_write_table(r, bl, "baselines.tsv");
+  nl_harness_write_table(r, uni, "uniformity.tsv");
   nl_harness_write_table(r, seams, "seams.tsv");
   c1_text(r, sum, &base, s.grid);
-  c1_control_text(r, claims, ctl, seams);
+  c1_control_text(r, claims, ctl, bl, uni, seams);
+  for (size_t i = 0; i < (size_t)NCASE * k; i++) nl_noise_grad2_free(tables[i]);
+  free(tables);
+  nl_table_free(bl);
+  nl_table_free(uni);
   nl_table_free(ctl);
   nl_table_free(claims);
   nl_table_free(seams);

@@ -67,124 +67,83 @@ void c1_text(nl_harness *r, const nl_table *sum, const nl_cheng_config *c, int g
                   wks, wku, sum->nrows);
 }
 
-/* lo..hi of column col over the rows of t whose tables_from is `from` */
-static void seam_range(const nl_table *t, const char *from, const char *col, double *lo, double *hi)
+void c1_control_text(nl_harness *r, const nl_table *pooled, const nl_table *ctl,
+                     const nl_table *bl, const nl_table *uni, const nl_table *seams)
 {
-  *lo = INFINITY;
-  *hi = -INFINITY;
-  for (size_t q = 0; q < t->nrows; q++)
-    if (!strcmp(nl_table_text(t, q, "tables_from"), from)) {
-      *lo = fmin(*lo, nl_table_value(t, q, col));
-      *hi = fmax(*hi, nl_table_value(t, q, col));
-    }
-}
-
-static void seams_text(nl_harness *r, const nl_table *t)
-{
-  nl_harness_report_table(
-      r, t,
-      "Seams of the first seed's textures (headline formula) and of its unoptimised start table "
-      "(nl_study_cheng.h: ratios of a boundary's mean |step| to its strip's mean, 1 = no seam)",
-      3);
-  double q0, q1, o0, o1, b0, b1, w0, w1, s0, s1;
-  seam_range(t, "optimised", "seam_quarter", &q0, &q1);
-  seam_range(t, "optimised", "seam_other", &o0, &o1);
-  seam_range(t, "optimised", "seam_border", &b0, &b1);
-  seam_range(t, "optimised", "border_outward", &w0, &w1);
-  seam_range(t, "optimised", "seam_ratio", &s0, &s1);
-  size_t st = t->nrows - 1; /* the start table's row comes last */
-  int more = 0, n = (int)st;
-  double *qv = nl_xmalloc(st * sizeof *qv), *wv = nl_xmalloc(st * sizeof *wv);
-  for (size_t q = 0; q < st; q++) {
-    more += nl_table_value(t, q, "seam_quarter") > nl_table_value(t, q, "seam_other");
-    qv[q] = nl_table_value(t, q, "seam_quarter");
-    wv[q] = nl_table_value(t, q, "border_outward");
-  }
-  /* per texture (rows come texture by texture, its patterns together): the
-   * means of the quarter's seam and of the outward component */
-  char per[512] = "";
-  for (size_t q = 0; q < st;) {
-    const char *tex = nl_table_text(t, q, "texture");
-    double sq = 0, sw = 0;
-    int m = 0;
-    for (; q < st && !strcmp(nl_table_text(t, q, "texture"), tex); q++, m++) {
-      sq += qv[q];
-      sw += wv[q];
-    }
-    size_t used = strlen(per);
-    snprintf(per + used, sizeof per - used, "%s%s %.2f, %.2f", used ? "; " : "", tex, sq / m,
-             sw / m);
-  }
-  double rq = gsl_stats_correlation(wv, 1, qv, 1, st);
-  nl_harness_text(
-      r,
-      "Seams: across the edges of the quarter [0, 1/2]^2 (x = 1/2 over y < 1/2, y = 1/2 over x < "
-      "1/2: the top-left quarter of the images) the textures' value steps %.2f..%.2f x its strip's "
-      "mean, across the same lines outside the quarter %.2f..%.2f, at the borders %.2f..%.2f; the "
-      "start table gives %.2f, %.2f and %.2f. The largest boundary (seam_ratio) is %.2f..%.2f "
-      "against the start table's %.2f. Octave 1's border gradients point outward by %.2f..%.2f "
-      "(start table %.2f). The quarter's edges step more than the same lines outside it in %d of "
-      "%d cases. Per texture (means over its patterns), the quarter's seam and the outward "
-      "component are: %s; over the %d cases their Pearson r is %.2f. The cause is C7's (its "
-      "section measures the controls: w2 = 0, no propagation): octave l over [0, 1/2]^2 is octave "
-      "l-1 over the whole square (eq. 3.10's one noise field, eq. 3.13's shared gradients), so "
-      "the border lines of octave l-1, whose gradients a dark border turns outward, reappear as "
-      "the quarter's edges. Cloud and marble read the signed sum V, and a dark target pushes V "
-      "negative there; erosion's |V| and fire's sum of |noise| are even in the noise's sign, so "
-      "a dark target only asks for small noise, and the gradients need not turn outward. It is "
-      "the method's, and the figures keep it.\n",
-      q0, q1, o0, o1, b0, b1, nl_table_value(t, st, "seam_quarter"),
-      nl_table_value(t, st, "seam_other"), nl_table_value(t, st, "seam_border"), s0, s1,
-      nl_table_value(t, st, "seam_ratio"), w0, w1, nl_table_value(t, st, "border_outward"), more, n,
-      per, n, rq);
-  free(qv);
-  free(wv);
-}
-
-void c1_control_text(nl_harness *r, const nl_table *claims, const nl_table *ctl,
-                     const nl_table *seams)
-{
-  nl_harness_report_table(
-      r, claims,
-      "\"The texture follows the pattern\", per texture over its three patterns (headline "
-      "formula): r against random tables, E_Con against the flat images",
-      3);
-  for (size_t q = 0; q < claims->nrows; q++) {
-    const char *tex = nl_table_text(claims, q, "texture");
-    char qty[96], claim[96], file[64];
-    snprintf(claim, sizeof claim, "%s follows its patterns", tex);
-    snprintf(qty, sizeof qty, "r with the patterns vs random tables, %s", tex);
+  nl_harness_report_table(r, ctl,
+                          "\"The texture follows the pattern\" per texture, pattern and formula: r "
+                          "against random tables, E_Con against the flat image (the rescaled rows "
+                          "decide, one pattern at a time as C7; the literal rows are the measured "
+                          "alternative)",
+                          3);
+  size_t q = 0; /* the headline case's index: its baselines are rows 2q, 2q + 1 */
+  for (size_t row = 0; row < ctl->nrows; row++) {
+    if (strcmp(nl_table_text(ctl, row, "formula"), "rescaled")) continue;
+    const char *tex = nl_table_text(ctl, row, "texture"), *pat = nl_table_text(ctl, row, "pattern");
+    char qty[128], claim[96];
+    snprintf(claim, sizeof claim, "%s follows its pattern", tex);
+    snprintf(qty, sizeof qty, "r with the pattern vs random tables, %s/%s", tex, pat);
     nl_harness_verdict_p(
-        r, "claims.tsv", claims, q, qty, claim, "r_pattern", "p_random", "p 0.01 0.05",
+        r, "control.tsv", ctl, row, qty, claim, "r_pattern", "p_random", "p 0.01 0.05",
         "independent",
-        "one-sided Monte-Carlo p of the patterns' mean r against random tables from the seed");
-    snprintf(qty, sizeof qty, "E_Con below the flat images', %s", tex);
-    nl_harness_verdict_p(r, "claims.tsv", claims, q, qty, claim, "con_vs_const", "p_flat",
+        "one-sided Monte-Carlo p of the seeds' mean r against single random tables from the seed");
+    nl_harness_verdict_control(r, "the optimised tables against the pattern shuffled",
+                               "baselines.tsv", bl, 2 * q);
+    snprintf(qty, sizeof qty, "E_Con below a flat image's, %s/%s", tex, pat);
+    nl_harness_verdict_p(r, "control.tsv", ctl, row, qty, claim, "con_vs_const", "p_flat",
                          "p 0.01 0.05", "independent",
-                         "summed E_Con over the flat images'; one-sided t over the seeds");
-    snprintf(qty, sizeof qty, "%s textures' appearance (Fig 4.%zu)", tex, q + 1);
+                         "E_Con over the best constant image's; one-sided t over the seeds");
+    nl_harness_verdict_control(r, "the unoptimised start tables", "baselines.tsv", bl, 2 * q + 1);
+    q++;
+  }
+  nl_harness_report_table(r, bl,
+                          "Negative controls per headline case: the optimised tables against the "
+                          "pattern with its targets shuffled among the cells, and the unoptimised "
+                          "start tables on the pattern",
+                          3);
+  nl_harness_report_table(r, uni,
+                          "\"Statistics kept\": uniformity of the gradient angles per texture over "
+                          "its patterns and seeds (p_uniform: the smallest KS p times the runs, "
+                          "Bonferroni), and the same cases optimised for E_Con alone (w1 = 0)",
+                          4);
+  for (size_t t = 0; t + 1 < uni->nrows; t += 2) {
+    const char *tex = nl_table_text(uni, t, "texture");
+    char qty[96];
+    snprintf(qty, sizeof qty, "statistics kept: angles uniform, %s", tex);
+    nl_harness_verdict_p(r, "uniformity.tsv", uni, t, qty,
+                         "preserve its original statistical properties", "E_ks", "p_uniform",
+                         "fit 0.05 0.01", "independent",
+                         "KS test of the angles against uniform, the smallest p over the runs "
+                         "times their number");
+    nl_harness_verdict_control(r, "the same cases optimised for E_Con alone (w1 = 0)",
+                               "uniformity.tsv", uni, t + 1);
+  }
+  for (size_t t = 0; t < pooled->nrows; t++) {
+    const char *tex = nl_table_text(pooled, t, "texture");
+    char qty[96], claim[96], file[64];
+    snprintf(qty, sizeof qty, "%s textures' appearance (Fig 4.%zu)", tex, t + 1);
     snprintf(claim, sizeof claim, "%s textures from three control patterns", tex);
     snprintf(file, sizeof file, "%s.png", tex);
     nl_harness_verdict_figure(r, qty, claim, file, "the likeness to the thesis's images");
   }
-  double rlo = INFINITY, rhi = -INFINITY, nlo = INFINITY, nhi = -INFINITY;
-  for (size_t q = 0; q < claims->nrows; q++) {
-    rlo = fmin(rlo, nl_table_value(claims, q, "r_pattern"));
-    rhi = fmax(rhi, nl_table_value(claims, q, "r_pattern"));
-    nlo = fmin(nlo, nl_table_value(claims, q, "r_random_sd"));
-    nhi = fmax(nhi, nl_table_value(claims, q, "r_random_sd"));
+  double rlo = INFINITY, rhi = -INFINITY;
+  int pass = 0, n = 0;
+  for (size_t row = 0; row < ctl->nrows; row++) {
+    if (strcmp(nl_table_text(ctl, row, "formula"), "rescaled")) continue;
+    rlo = fmin(rlo, nl_table_value(ctl, row, "r_pattern"));
+    rhi = fmax(rhi, nl_table_value(ctl, row, "r_pattern"));
+    pass += nl_table_value(ctl, row, "p_random") <= 0.01;
+    n++;
   }
-  nl_harness_text(
-      r,
-      "r with the patterns, per texture: %.3f..%.3f, against random tables whose pooled r has sd "
-      "%.3f..%.3f around 0 (%g tables per case; the smallest Monte-Carlo p is %.3g).\n",
-      rlo, rhi, nlo, nhi, nl_table_value(claims, 0, "n_random"),
-      1 / (1 + nl_table_value(claims, 0, "n_random")));
-  nl_study_cheng_flat_text(r, claims, 1);
-  nl_harness_report_table(r, ctl,
-                          "The same tests per texture, pattern and formula (the literal formula's "
-                          "rows are the measured alternative; no verdict)",
-                          3);
+  nl_harness_text(r,
+                  "r with the pattern, per headline case: %.3f..%.3f; %d of %d cases above the "
+                  "random tables at p <= 0.01 (%g tables per case; the smallest Monte-Carlo p is "
+                  "%.3g). The per-texture pool of the three patterns (no verdict) follows.\n",
+                  rlo, rhi, pass, n, nl_table_value(ctl, 0, "n_random"),
+                  1 / (1 + nl_table_value(ctl, 0, "n_random")));
+  nl_harness_report_table(
+      r, pooled,
+      "The same two tests pooled per texture over its three patterns (headline formula)", 3);
   nl_study_cheng_flat_text(r, ctl, 3);
-  seams_text(r, seams);
+  nl_study_cheng_seams_text(r, seams, "the first seed's textures (headline formula) and of its start table");
 }

@@ -18,13 +18,6 @@ void c3_intro_text(nl_harness *r, const nl_study_cheng *s, const char *pattern, 
  * strictly with f1 (lower f1 smoother) and where E_Con is lowest. */
 void c3_result_text(nl_harness *r, const nl_table *sum, const double *f1s, int n);
 
-/* Spearman's rho of y on x (GSL; ties get average ranks). */
-double c3_spearman(const double *x, const double *y, size_t n);
-/* rho into *rho and its one-sided permutation p (rho large): y shuffled
- * nperm times (MT19937 from seed), p = (1 + #{rho_perm >= rho}) / (nperm +
- * 1). */
-double c3_spearman_perm_p(const double *x, const double *y, size_t n, int nperm, unsigned long seed,
-                          double *rho);
 /* Columns tables, runs, rho, p_perm, n_perm, slope (OLS of roughness on
  * f1); _add: one row from n runs' (f1, roughness). */
 nl_table *c3_trend_test_alloc(void);
@@ -43,8 +36,11 @@ void c3_per_f1_add(nl_table *t, double f1, const double *opt, int k, const doubl
  * comparison (trend.tsv) and the verdict: what the optimisation adds to the
  * trend every table has. */
 void c3_trend_text(nl_harness *r, const nl_table *tt, const nl_table *per_f1);
-/* Seams per f1 (rows f1/optimised, f1/start table of the first seed), with
- * the quarter's edges against the start tables'. */
-void c3_seams_text(nl_harness *r, const nl_table *seams);
+
+/* "We can even control the lower frequency appearance": the lowest f1's
+ * control table row 0 (r against random tables, E_Con against the flat
+ * image) and its negative controls (bl rows 0: the pattern shuffled, 1: the
+ * start tables), two verdicts. */
+void c3_low_text(nl_harness *r, const nl_table *ctl, const nl_table *bl);
 
 #endif

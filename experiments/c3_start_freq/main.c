@@ -24,6 +24,9 @@ int main(int argc, char **argv)
   int nrand = (int)nl_harness_param_int(r, "random_tables", q ? 10 : 100, 2, 100000,
                                         "random (unoptimised) tables per f1: the baseline "
                                         "trend of roughness (quick 10)");
+  int nrand_r = (int)nl_harness_param_int(r, "random_r", q ? 99 : 999, 9, 1000000,
+                                          "random (unoptimised) tables: the null distribution of "
+                                          "r with the pattern at the lowest f1 (quick 99)");
   int nperm = (int)nl_harness_param_int(r, "permutations", 9999, 99, 10000000,
                                         "permutations of the trend test's roughness values");
   nl_study_cheng_ready(&s);
@@ -42,7 +45,44 @@ int main(int argc, char **argv)
     cs[i].f1 = f1s[i];
     pp[i] = pat;
   }
-  nl_cheng_eval *evs = nl_study_cheng_runs(&s, NF, cs, pp, firsts);
+  nl_noise_grad2 **tables = nl_xmalloc((size_t)NF * (size_t)k * sizeof *tables);
+  nl_cheng_eval *evs = nl_study_cheng_runs_tables(&s, NF, cs, pp, tables);
+  for (int i = 0; i < NF; i++) firsts[i] = nl_noise_grad2_alloc(base.m);
+  for (int i = 0; i < NF; i++) nl_noise_grad2_copy(firsts[i], tables[(size_t)i * k]);
+  /* the first seed's tables behind the figure (tests/oracle_cheng.c) */
+  nl_table *tabs = nl_study_cheng_tables_alloc(1, labels);
+  for (int i = 0; i < NF; i++) {
+    char f[32];
+    nl_table_format_double(f, f1s[i]);
+    const char *l[1] = { f };
+    nl_study_cheng_tables_add(tabs, 1, l, firsts[i]);
+  }
+  nl_harness_write_table(r, tabs, "tables.tsv");
+  nl_table_free(tabs);
+  /* "we can even control the lower frequency appearance": the lowest f1's
+   * value against its pattern (r against random tables, E_Con against the
+   * flat image), with the negative controls of nl_study_cheng_baselines_add */
+  nl_table *ctl = nl_study_cheng_control_alloc(1, (const char *const[]){ "f1" });
+  nl_table *bl = nl_study_cheng_control_alloc(2, (const char *const[]){ "f1", "baseline" });
+  {
+    char f[32];
+    nl_table_format_double(f, f1s[0]);
+    const char *l[1] = { f };
+    unsigned long cseed = nl_seed_stream(nl_harness_seed(r), "c3.random_r", 0);
+    nl_study_cheng_control_add(&s, ctl, 1, l, &cs[0], pat, evs, nrand_r, cseed, NULL);
+    nl_study_cheng_baselines_add(&s, bl, 2, l, &cs[0], pat, tables, nrand_r, cseed);
+  }
+  for (size_t i = 0; i < (size_t)NF * k; i++) nl_noise_grad2_free(tables[i]);
+  free(tables);
+  /* the alternative domain [0, 1]^2 (origin 0; nl_cheng.h READINGS): the
+   * same runs, for the seams of their first seed's tables */
+  nl_cheng_config cs0[NF];
+  nl_noise_grad2 *firsts0[NF];
+  for (int i = 0; i < NF; i++) {
+    cs0[i] = cs[i];
+    cs0[i].origin = 0;
+  }
+  free(nl_study_cheng_runs(&s, NF, cs0, pp, firsts0));
 
   /* Fig 4.7: the controlled value (top row) and the cloud texture (bottom)
    * per f1, first seed, each row after the pattern. */
@@ -91,6 +131,14 @@ int main(int argc, char **argv)
     nl_noise_grad2_free(firsts[i]);
     nl_harness_progress(r, (i + 1.0) / NF, "f1");
   }
+  for (int i = 0; i < NF; i++) {
+    char f[32];
+    nl_table_format_double(f, f1s[i]);
+    const char *sl[2] = { f, "optimised" };
+    nl_study_cheng_seams_add(seams, 2, sl, (const nl_noise_grad2 *const *)&firsts0[i], 1, &cs0[i],
+                             pat);
+    nl_noise_grad2_free(firsts0[i]);
+  }
   c3_trend_test_add(tt, "optimised", xo, yo, (size_t)NF * k, nperm,
                     nl_seed_stream(nl_harness_seed(r), "c3.trend", 0));
   c3_trend_test_add(tt, "random", xr, yr, (size_t)NF * nrand, nperm,
@@ -102,10 +150,15 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, per_f1, "trend.tsv");
   nl_harness_write_table(r, tt, "trend_test.tsv");
   nl_harness_write_table(r, seams, "seams.tsv");
+  nl_harness_write_table(r, ctl, "control.tsv");
+  nl_harness_write_table(r, bl, "baselines.tsv");
   c3_intro_text(r, &s, pattern, f1s, NF, sum);
   c3_result_text(r, sum, f1s, NF);
   c3_trend_text(r, tt, per_f1);
-  c3_seams_text(r, seams);
+  c3_low_text(r, ctl, bl);
+  nl_table_free(ctl);
+  nl_table_free(bl);
+  nl_study_cheng_seams_text(r, seams, "the first seed's table and its start table per f1");
   nl_study_cheng_control_text(r, sum, 1);
   free(evs);
   free(xo);

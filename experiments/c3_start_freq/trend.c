@@ -13,34 +13,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-double c3_spearman(const double *x, const double *y, size_t n)
-{
-  double *work = nl_xmalloc(2 * n * sizeof *work);
-  double rho = gsl_stats_spearman(x, 1, y, 1, n, work); /* ties: average ranks */
-  free(work);
-  return rho;
-}
-
-double c3_spearman_perm_p(const double *x, const double *y, size_t n, int nperm, unsigned long seed,
-                          double *rho)
-{
-  *rho = c3_spearman(x, y, n);
-  double *yp = nl_xmalloc(n * sizeof *yp);
-  for (size_t i = 0; i < n; i++) yp[i] = y[i];
-  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(rng, seed);
-  int at_least = 0;
-  for (int b = 0; b < nperm; b++) {
-    gsl_ran_shuffle(rng, yp, n, sizeof *yp);
-    /* a hair of tolerance: a permutation that only swaps tied values gives
-     * the same rho up to rounding */
-    at_least += c3_spearman(x, yp, n) >= *rho - 1e-12;
-  }
-  gsl_rng_free(rng);
-  free(yp);
-  return (1.0 + at_least) / (1.0 + nperm);
-}
-
 /* OLS slope of y on x */
 static double slope(const double *x, const double *y, size_t n)
 {
@@ -58,7 +30,7 @@ nl_table *c3_trend_test_alloc(void)
 void c3_trend_test_add(nl_table *t, const char *tables, const double *f1, const double *rough,
                        size_t n, int nperm, unsigned long seed)
 {
-  double rho, p = c3_spearman_perm_p(f1, rough, n, nperm, seed, &rho);
+  double rho, p = nl_study_spearman_perm_p(f1, rough, n, nperm, seed, &rho);
   nl_table_append(t, "sddddd", tables, (double)n, rho, p, (double)nperm, slope(f1, rough, n));
 }
 

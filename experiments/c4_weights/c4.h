@@ -101,17 +101,42 @@ size_t c4_econ_row(const nl_table *eg, int grid);
  * unoptimised start tables of the same seeds: seams.tsv (summary rows:
  * printed a..f, swapped a..f, then "unoptimised"), seam_tests.tsv (Welch,
  * each panel against the unoptimised row) and one sentence. main_evs as for
- * c4_econ_runs. */
-void c4_seams(const nl_study_cheng *s, const nl_cheng_config *base, const nl_cheng_pattern *pat,
-              const nl_cheng_eval *main_evs, int npair);
+ * c4_econ_runs. Returns the seams.tsv table (its last row: the unoptimised
+ * start tables; caller frees). */
+nl_table *c4_seams(const nl_study_cheng *s, const nl_cheng_config *base,
+                   const nl_cheng_pattern *pat, const nl_cheng_eval *main_evs, int npair);
+/* Fig 4.8's seams on both domains: seams_domain.tsv (nl_study_cheng_seams_add
+ * rows panel, tables_from "optimised", origin) for the printed panels' first
+ * seed tables firsts[2i] under cs[2i] (origin 1), and the same cases run
+ * again at origin 0 (nl_cheng.h READINGS), with their prose. */
+void c4_seams_domain(const nl_study_cheng *s, const nl_cheng_config *cs, const nl_cheng_pattern *pat,
+                     nl_noise_grad2 *const *firsts, int npair);
+
+/* ---- the trend (trend.c) ------------------------------------------------ */
+
+/* "The pattern is better preserved with a larger control weight": over the
+ * sweep's nsweep points (summary rows of sweep, w1 / w2 = rhos[j], the
+ * runs' tables at tables[j k + seed]), Spearman's rho of the mean r with the
+ * pattern on log(w2 / w1) and its one-sided permutation p; row 0 the
+ * optimised tables against the pattern, row 1 the same tables against the
+ * pattern shuffled (the negative control). Columns tables, points, rho,
+ * p_perm, n_perm. Writes trend.tsv; caller frees. */
+nl_table *c4_trend(const nl_study_cheng *s, const nl_cheng_config *base, const nl_cheng_pattern *pat,
+                   const nl_table *sweep, nl_noise_grad2 *const *tables, const double *rhos,
+                   int nsweep);
 
 /* ---- verdicts (verdicts.c) --------------------------------------------- */
 
 /* E_KS per panel: the printed reading (independent) and the reading closest
  * on absolute scale (selected 1/3, each panel's column as that reading
  * takes it); E_Con per panel at the run's grid (independent) and the mean at
- * the grid fitted to the thesis (fitted 1/6). */
-void c4_verdicts(nl_harness *r, const nl_table *cmp, const nl_table *rd, const nl_table *eg);
+ * the grid fitted to the thesis (fitted 1/6). The independent rows' negative
+ * control: the unoptimised start tables (seams.tsv's last row). Then the
+ * trend (trend.tsv) and "(a) keeps the pattern better than (f)": E_Con of
+ * the printed panels a and f (rows 0 and 10 of runs, table41_runs.tsv),
+ * Welch. */
+void c4_verdicts(nl_harness *r, const nl_table *cmp, const nl_table *rd, const nl_table *eg,
+                 const nl_table *seams, const nl_table *runs, const nl_table *trend);
 
 /* ---- report prose (report.c), every number from the tables or the run --- */
 

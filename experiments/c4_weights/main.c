@@ -99,13 +99,26 @@ int main(int argc, char **argv)
       c4_case_set(&cs[q], &wc[q], "sweep", "-", rho / (1 + rho), 1 / (1 + rho));
     }
   }
-  nl_cheng_eval *evs = nl_study_cheng_runs(&s, n, cs, pp, firsts);
+  nl_noise_grad2 **tables = nl_xmalloc((size_t)n * (size_t)k * sizeof *tables);
+  nl_cheng_eval *evs = nl_study_cheng_runs_tables(&s, n, cs, pp, tables);
+  for (int q = 0; q < n; q++) firsts[q] = tables[(size_t)q * k];
   nl_table *tab = nl_study_cheng_summary_alloc(4, labels);
   nl_table *sweep = nl_study_cheng_summary_alloc(4, labels);
   for (int q = 0; q < n; q++)
     nl_study_cheng_rows_add(&s, q < 2 * NPAIR ? tab : sweep, 4, wc[q].lab, evs + (size_t)q * k);
   c4_fig48(r, pat, firsts, NPAIR, &base);
-  for (int q = 0; q < n; q++) nl_noise_grad2_free(firsts[q]);
+  {
+    /* the first seed's tables behind Fig 4.8 (tests/oracle_cheng.c) */
+    const char *tl[] = { "reading", "panel" };
+    nl_table *tabs = nl_study_cheng_tables_alloc(2, tl);
+    for (int q = 0; q < 2 * NPAIR; q++) nl_study_cheng_tables_add(tabs, 2, wc[q].lab, firsts[q]);
+    nl_harness_write_table(r, tabs, "tables.tsv");
+    nl_table_free(tabs);
+  }
+  c4_seams_domain(&s, cs, pat, firsts, NPAIR);
+  nl_table *trend = c4_trend(&s, &base, pat, sweep, tables + (size_t)2 * NPAIR * k, rhos, nsweep);
+  for (size_t q = 0; q < (size_t)n * k; q++) nl_noise_grad2_free(tables[q]);
+  free(tables);
   free(cs);
   free(pp);
   free(firsts);
@@ -121,7 +134,7 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, rd, "readings.tsv");
   c4_readings_text(r, rd);
   c4_reading_tests(r, tab, NPAIR);
-  c4_seams(&s, &base, pat, evs, NPAIR);
+  nl_table *st = c4_seams(&s, &base, pat, evs, NPAIR);
 
   /* E_Con's scale: the printed and swapped pairs over grids and budgets. */
   nl_table *er = c4_econ_runs(&s, &base, "flower", thesis, NPAIR, evs, gmin, gmax, blow);
@@ -130,7 +143,9 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, er, "econ_grid_runs.tsv");
   nl_harness_write_table(r, eg, "econ_grid.tsv");
   c4_econ_text(r, eg, &base, s.grid, blow);
-  c4_verdicts(r, cmp, rd, eg);
+  c4_verdicts(r, cmp, rd, eg, st, tab, trend);
+  nl_table_free(st);
+  nl_table_free(trend);
   c4_uniformity_text(r, tab, sweep, rhos, NPAIR);
   c4_figures_text(r, thesis, NPAIR, sweep);
   nl_cheng_pattern_free(pat);

@@ -28,8 +28,8 @@ static nl_cheng_eval *start_evals(const nl_study_cheng *s, const nl_cheng_config
   return evs;
 }
 
-void c4_seams(const nl_study_cheng *s, const nl_cheng_config *base, const nl_cheng_pattern *pat,
-              const nl_cheng_eval *main_evs, int npair)
+nl_table *c4_seams(const nl_study_cheng *s, const nl_cheng_config *base,
+                   const nl_cheng_pattern *pat, const nl_cheng_eval *main_evs, int npair)
 {
   nl_harness *r = s->r;
   const char *labels[] = { "reading", "panel" };
@@ -78,5 +78,35 @@ void c4_seams(const nl_study_cheng *s, const nl_cheng_config *base, const nl_che
       nl_table_value(t, u, "seam_ratio"), nl_table_value(t, u, "seam_ratio_sd"), k, above[0], npair,
       above[1], npair);
   nl_table_free(wt);
+  return t;
+}
+
+void c4_seams_domain(const nl_study_cheng *s, const nl_cheng_config *cs, const nl_cheng_pattern *pat,
+                     nl_noise_grad2 *const *firsts, int npair)
+{
+  const char *labels[] = { "panel", "tables_from" };
+  nl_table *t = nl_study_cheng_seams_alloc(2, labels);
+  nl_cheng_config *c0 = nl_xmalloc((size_t)npair * sizeof *c0);
+  const nl_cheng_pattern **pp = nl_xmalloc((size_t)npair * sizeof *pp);
+  nl_noise_grad2 **f0 = nl_xmalloc((size_t)npair * sizeof *f0);
+  for (int i = 0; i < npair; i++) {
+    c0[i] = cs[2 * i];
+    c0[i].origin = 0;
+    pp[i] = pat;
+  }
+  free(nl_study_cheng_runs(s, npair, c0, pp, f0));
+  for (int o = 1; o >= 0; o--)
+    for (int i = 0; i < npair; i++) {
+      char panel[4] = { (char)('a' + i), 0 };
+      const char *l[2] = { panel, "optimised" };
+      nl_study_cheng_seams_add(t, 2, l, (const nl_noise_grad2 *const *)(o ? &firsts[2 * i] : &f0[i]),
+                               1, o ? &cs[2 * i] : &c0[i], pat);
+    }
+  for (int i = 0; i < npair; i++) nl_noise_grad2_free(f0[i]);
+  nl_harness_write_table(s->r, t, "seams_domain.tsv");
+  nl_study_cheng_seams_text(s->r, t, "Fig 4.8's printed panels (first seed)");
   nl_table_free(t);
+  free(c0);
+  free(pp);
+  free(f0);
 }

@@ -26,8 +26,10 @@ void c6_below_add(nl_table *b, const nl_table *sum);
 /* P(X <= k) for X ~ Binomial(n, 1/2). */
 double c6_sign_p(unsigned k, unsigned n);
 /* The reading in one sentence, the table, a verdict per texture and error
- * for the rows of the thesis's swap (kind reproduced_swap_SWAP), and the
- * figures' qualitative rows. */
-void c6_below_text(nl_harness *r, const nl_table *b, double swap);
+ * for the rows of the thesis's swap (kind reproduced_swap_SWAP), each with
+ * its negative control (the row of ctl, below_ctl.tsv, of the same texture
+ * and error: random tables in place of reproductions), and the figures'
+ * qualitative rows. */
+void c6_below_text(nl_harness *r, const nl_table *b, double swap, const nl_table *ctl);
 
 #endif

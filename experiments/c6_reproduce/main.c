@@ -34,7 +34,10 @@ int main(int argc, char **argv)
 
   nl_table *reps = c6_reps_alloc();
   nl_table *sum = c6_reps_summary_alloc();
-  c6_reproduce_cases(&s, reps, sum, nl_study_cheng_thesis_gmm_tables, NTEX, &po, &mo, nrep, swap);
+  c6_controls ctl;
+  c6_controls_init(&ctl);
+  c6_reproduce_cases(&s, reps, sum, nl_study_cheng_thesis_gmm_tables, NTEX, &po, &mo, nrep, swap,
+                     &ctl);
   nl_harness_write_table(r, reps, "reproductions.tsv");
   nl_harness_write_table(r, sum, "summary.tsv");
   /* times: never compared */
@@ -46,7 +49,9 @@ int main(int argc, char **argv)
   nl_table *below = c6_below_alloc(); /* "often below": a sign test per texture and error */
   c6_below_add(below, sum);
   nl_harness_write_table(r, below, "below.tsv");
-  c6_below_text(r, below, swap);
+  c6_below_text(r, below, swap, ctl.below_ctl);
+  c6_controls_text(r, &ctl);
+  c6_controls_free(&ctl);
   nl_table_free(below);
   nl_table_free(reps);
   nl_table_free(sum);

@@ -2,6 +2,7 @@
  * matched-K0 mixture and reproductions drawn from it, with and without the
  * swap of the high entries. */
 #include "reproduce.h"
+#include "controls.h"
 #include "stats/nl_stats.h"
 #include "base/nl_parallel.h"
 
@@ -166,7 +167,8 @@ static nl_cheng_model *matched_model(nl_harness *r, const nl_cheng_pool *pool,
 static void reproduce_from(const nl_study_cheng *st, nl_table *reps, nl_table *sum,
                            const nl_study_cheng_thesis_gmm *th, const nl_cheng_config *cp,
                            const nl_cheng_pattern *pat, nl_study_cheng_repro *rp,
-                           const nl_cheng_model_options *mo, int nrep, double swap)
+                           const nl_cheng_model_options *mo, int nrep, double swap,
+                           c6_controls *ctl)
 {
   nl_harness *r = st->r;
   const nl_cheng_config c = *cp;
@@ -194,6 +196,13 @@ static void reproduce_from(const nl_study_cheng *st, nl_table *reps, nl_table *s
       snprintf(kind, sizeof kind, "reproduced_swap_%g", swaps[w]);
       summary_row(sum, th->texture, kind, s, nrep, rp, m->k);
       if (w == 0) {
+        c6_controls_add(ctl, st, th->texture, &c, pat, rp, s->ks, s->p, s->ms, nrep);
+        for (int i = 0; i <= C6_NSHOW; i++) { /* the montage's tables (tests/oracle_cheng.c) */
+          char name[16];
+          snprintf(name, sizeof name, i ? "r%d" : "original", i);
+          const char *l[2] = { th->texture, name };
+          nl_study_cheng_tables_add(ctl->tables, 2, l, i ? g[i - 1] : rp->opt);
+        }
         montage(r, th->texture, &c, g, s, rp);
         const nl_noise_grad2 *tabs[C6_NSHOW + 1] = { rp->opt };
         const char *names[C6_NSHOW + 1] = { "original", "r1", "r2", "r3", "r4",
@@ -235,7 +244,7 @@ static void original_item(void *ctx, size_t i, int thread)
 void c6_reproduce_cases(const nl_study_cheng *st, nl_table *reps, nl_table *sum,
                         const nl_study_cheng_thesis_gmm *ths, int n,
                         const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nrep,
-                        double swap)
+                        double swap, c6_controls *ctl)
 {
   nl_harness *r = st->r;
   nl_cheng_config *c = nl_xmalloc((size_t)n * sizeof *c);
@@ -256,7 +265,7 @@ void c6_reproduce_cases(const nl_study_cheng *st, nl_table *reps, nl_table *sum,
     if (nl_study_cheng_repro_pool(&rp[i], &c[i], pat[i], po, nl_harness_seed(r),
                                   &err)) /* Q runs on the run's threads */
       nl_harness_die(r, 1, "%s: %s", ths[i].texture, err.msg);
-    reproduce_from(st, reps, sum, &ths[i], &c[i], pat[i], &rp[i], mo, nrep, swap);
+    reproduce_from(st, reps, sum, &ths[i], &c[i], pat[i], &rp[i], mo, nrep, swap, ctl);
     nl_study_cheng_repro_clear(&rp[i]);
     nl_cheng_pattern_free(pat[i]);
     nl_harness_progress(r, (i + 1.0) / n, ths[i].texture);

@@ -6,6 +6,7 @@
 #ifndef C6_REPRODUCE_H
 #define C6_REPRODUCE_H
 
+#include "controls.h"
 #include "study/nl_study_cheng.h"
 
 #define C6_NSHOW        8   /* reproductions shown (montage, CDF) */
@@ -21,10 +22,11 @@ nl_table *c6_reps_summary_alloc(void);
  * original and C6_NSHOW reproductions) and cdf_TEX.tsv. The draws stay in order on
  * one thread and the evaluations run on the run's threads, so the tables do
  * not depend on the thread count. A degenerate model is reported in the
- * text, with no reproductions. */
+ * text, with no reproductions. The controls and other claims' rows go to
+ * ctl (controls.h). */
 void c6_reproduce_cases(const nl_study_cheng *s, nl_table *reps, nl_table *sum,
                         const nl_study_cheng_thesis_gmm *ths, int n,
                         const nl_cheng_pool_options *po, const nl_cheng_model_options *mo, int nrep,
-                        double swap);
+                        double swap, c6_controls *ctl);
 
 #endif

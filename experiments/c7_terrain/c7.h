@@ -39,9 +39,11 @@ void c7_seam_controls(const nl_study_cheng *s, nl_table *seams, const nl_cheng_c
  * figures and the summary table. */
 void c7_text(nl_harness *r, const nl_study_cheng *s, const nl_table *sum, int mesh, double zscale);
 /* "The height follows the pattern": the control table's verdicts (r against
- * random tables, E_Con against a flat image), E_Con's split for every row
- * worse than flat, and the seams table with its cause. */
-void c7_control_text(nl_harness *r, const nl_table *ctl, const nl_table *seams,
-                     const nl_cheng_config *c);
+ * random tables, E_Con against a flat image), each with its negative control
+ * from the baselines table (rows 2q: the pattern shuffled, 2q + 1: the start
+ * tables, nl_study_cheng_baselines_add), E_Con's split for every row worse
+ * than flat, and the seams table. */
+void c7_control_text(nl_harness *r, const nl_table *ctl, const nl_table *bl,
+                     const nl_table *seams, const nl_cheng_config *c);
 
 #endif

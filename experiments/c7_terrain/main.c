@@ -39,6 +39,8 @@ int main(int argc, char **argv)
   const char *labels[] = { "pattern" };
   nl_table *sum = nl_study_cheng_summary_alloc(1, labels);
   nl_table *ctl = nl_study_cheng_control_alloc(1, labels);
+  const char *blabels[] = { "pattern", "baseline" };
+  nl_table *bl = nl_study_cheng_control_alloc(2, blabels);
   const char *slabels[] = { "pattern", "tables_from" };
   nl_table *seams = nl_study_cheng_seams_alloc(2, slabels);
   int k = nl_harness_seeds(r);
@@ -46,6 +48,7 @@ int main(int argc, char **argv)
   double *h = nl_xmalloc((size_t)mesh * mesh * sizeof *h);
   double *hp = nl_xmalloc((size_t)PANEL * PANEL * sizeof *hp);
   nl_image *panels[NCOL * NPAT];
+  nl_table *tabs = nl_study_cheng_tables_alloc(1, labels); /* the figure's tables (tests/oracle_cheng.c) */
   const char *plab[NCOL * NPAT];
   for (int i = 0; i < NPAT; i++) {
     nl_cheng_pattern *pat = nl_study_cheng_pattern(&s, names[i]);
@@ -53,13 +56,27 @@ int main(int argc, char **argv)
     nl_study_cheng_rows_add(&s, sum, 1, &names[i], evs);
     unsigned long rseed = nl_seed_stream(nl_harness_seed(r), "c7.random_r", (unsigned long)i);
     nl_study_cheng_control_add(&s, ctl, 1, &names[i], &c, pat, evs, nrand, rseed, NULL);
+    /* the verdicts' negative controls: the pattern shuffled, the start tables */
+    nl_study_cheng_baselines_add(&s, bl, 2, &names[i], &c, pat, tables, nrand, rseed);
     const char *sl[2] = { names[i], "optimised" };
     nl_study_cheng_seams_add(seams, 2, sl, (const nl_noise_grad2 *const *)tables, k, &c, pat);
+    /* the alternative domain [0, 1]^2 (origin 0; nl_cheng.h READINGS): the
+     * same runs, their seams */
+    {
+      nl_cheng_config c0 = c;
+      c0.origin = 0;
+      nl_noise_grad2 **t0 = nl_xmalloc((size_t)k * sizeof *t0);
+      free(c7_runs(&s, &c0, pat, t0));
+      nl_study_cheng_seams_add(seams, 2, sl, (const nl_noise_grad2 *const *)t0, k, &c0, pat);
+      for (int j = 0; j < k; j++) nl_noise_grad2_free(t0[j]);
+      free(t0);
+    }
     /* the seams' controls on the last pattern (star) */
     if (i == NPAT - 1) c7_seam_controls(&s, seams, &c, pat, names[i]);
     free(evs);
     for (int j = 1; j < k; j++) nl_noise_grad2_free(tables[j]);
     nl_noise_grad2 *first = tables[0];
+    nl_study_cheng_tables_add(tabs, 1, &names[i], first);
     /* The height: the controlled value on the mesh, then at the panels' size. */
     nl_cheng_value_grid(first, &c, mesh, mesh, h);
     char file[64];
@@ -84,11 +101,15 @@ int main(int argc, char **argv)
   }
   nl_study_cheng_montage(r, panels, plab, NCOL * NPAT, NCOL,
                          "Fig 4.15-4.17: pattern | height | relief", "heightmaps.png");
+  nl_harness_write_table(r, tabs, "tables.tsv");
+  nl_table_free(tabs);
   nl_harness_write_table(r, sum, "summary.tsv");
   nl_harness_write_table(r, ctl, "control.tsv");
+  nl_harness_write_table(r, bl, "baselines.tsv");
   nl_harness_write_table(r, seams, "seams.tsv");
   c7_text(r, &s, sum, mesh, zscale);
-  c7_control_text(r, ctl, seams, &c);
+  c7_control_text(r, ctl, bl, seams, &c);
+  nl_table_free(bl);
   nl_table_free(sum);
   nl_table_free(ctl);
   nl_table_free(seams);

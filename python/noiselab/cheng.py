@@ -36,7 +36,7 @@ class _Config(ctypes.Structure):
                 ("a1", ctypes.c_double), ("m", ctypes.c_size_t), ("chisq_bins", ctypes.c_size_t),
                 ("propagate", ctypes.c_int), ("sched", _Schedule), ("literal", ctypes.c_int),
                 ("amp_vary", ctypes.c_int), ("amp_range", ctypes.c_double),
-                ("log_gain", ctypes.c_double * _MAXO)]
+                ("log_gain", ctypes.c_double * _MAXO), ("origin", ctypes.c_double)]
 
 
 _EVAL_DOUBLES = ("e_ks", "p_ks", "kuiper_v", "p_kuiper", "chi2", "p_chi2", "e_con", "e",
@@ -176,7 +176,7 @@ def optimise(pattern, seed=1, grid=64, **options):
     **options
         nl_cheng_config fields: stat ('ks', 'chisq', 'kuiper', 'chisq_raw'), con ('cloud',
         'marble', 'erosion', 'fire'), w1, w2, octaves, f1, a1, m, chisq_bins,
-        propagate, literal, amp_vary, amp_range, log_gain, and the schedule's
+        propagate, literal, amp_vary, amp_range, log_gain, origin, and the schedule's
         n_temps, moves_per_var, t_decades, p0, stall.
 
     Returns

@@ -36,9 +36,11 @@ def test_same_seed_same_table():
 def test_value_grid_is_the_fractal_sum():
     """c = (1 + V) / 2, V = s sum_l Noise(f_l p) / a_l with f_l = 8 2^l,
     a_l = 4 2^l, s = 1 / (sqrt(2)/2 sum 1/a_l) (nl_cheng.h, cloud): the table's
-    fBm through noiselab.noise over [0, 8)^2 is the same sum, to rounding."""
+    fBm through noiselab.noise over [0, 8)^2 is the same sum, to rounding, on
+    the domain at the noise's origin (origin 0; the default [1, 2]^2 starts
+    each octave at f_l)."""
     r = nc.optimise(DISC, seed=3, **SMALL)
-    v = nc.value_grid(r.table, 32, octaves=2)
+    v = nc.value_grid(r.table, 32, octaves=2, origin=0)
     f = nn.grid("fbm", 32, extent=8.0, basis="table", table=r.table, octaves=2, gain=0.5,
                 lacunarity=2.0)
     s = 1.0 / (np.sqrt(2) / 2 * (1 / 4 + 1 / 8))

@@ -53,6 +53,7 @@ static const abi_entry abi[] = {
     M(nl_cheng_config, a1) M(nl_cheng_config, m) M(nl_cheng_config, chisq_bins)
     M(nl_cheng_config, propagate) M(nl_cheng_config, sched) M(nl_cheng_config, literal)
     M(nl_cheng_config, amp_vary) M(nl_cheng_config, amp_range) M(nl_cheng_config, log_gain)
+    M(nl_cheng_config, origin)
   T(nl_cheng_eval) M(nl_cheng_eval, e_ks) M(nl_cheng_eval, p_ks) M(nl_cheng_eval, kuiper_v)
     M(nl_cheng_eval, p_kuiper) M(nl_cheng_eval, chi2) M(nl_cheng_eval, p_chi2)
     M(nl_cheng_eval, e_con) M(nl_cheng_eval, e) M(nl_cheng_eval, rms_con)

@@ -28,14 +28,16 @@
  *   nl_cheng_problem *p = nl_cheng_problem_alloc(&c, pat, g, &err);     // g is edited in place
  *   nl_cheng_optimise(p, seed, stats);             // levels 1..F, stats may be NULL
  *   nl_cheng_eval ev; nl_cheng_evaluate(g, &c, pat, &ev, &err);         // E_KS, V, chi2, p, E_Con
- *   nl_cheng_value_grid(g, &c, 256, 256, v);       // the controlled value on [0,1)^2
+ *   nl_cheng_value_grid(g, &c, 256, 256, v);       // the controlled value over the domain
  * (nl_cheng_run does the last five lines in one call.)
  *
  * THE MODEL (thesis setting in nl_cheng_config_default)
  *   Noise(x, y) = sum over the 4 cell corners (i, j) of w(x-i) w(y-j) (Delta_ij . G_ij)
  *   (eq. 3.1-3.2), G_ij = G[P[P[i] + j]] (nl_noise_grad2, M = 512 angles, quintic fade);
  *   fractal sum F_sum = sum_{l=1..F} Noise(f_l x, f_l y) / a_l, f_l = f1 2^(l-1),
- *   a_l = a1 2^(l-1), F = 4, f1 = 8, a1 = 4 (eq. 3.10), over the unit square.
+ *   a_l = a1 2^(l-1), F = 4, f1 = 8, a1 = 4 (eq. 3.10), over the domain [o, o + 1]^2:
+ *   a texture point (x, y) in [0, 1)^2 (pattern cell centres, raster pixels) is
+ *   evaluated at (o + x, o + y), o = config.origin = 1 (READINGS: the domain).
  *
  * OBJECTIVE (eq. 3.9)  E = w1 E_stat + w2 E_Con,  w1 = 0.995, w2 = 0.005.
  *   E_stat, a statistic of the angles X against uniform on [0, 2 pi):
@@ -56,8 +58,8 @@
  *   marble's rescaled sine has pi s ~ 9.5 times the literal sine's gain).
  *
  * MULTI-LEVEL RULE (sec. 3.4.2, eq. 3.13-3.15). Level l = 1..F, low to high
- *   frequency. The lattice of octave l is the (ceil(f_l) + 1)^2 points that the
- *   unit square touches. Level l's variables are the table entries used by that
+ *   frequency. The lattice of octave l is the points floor(f_l o) .. ceil(f_l (o + 1))
+ *   (each axis) that the domain touches: (f_l + 1)^2 of them for integer f_l o. Level l's variables are the table entries used by that
  *   lattice and by no lower octave's lattice. At level l:
  *     E_stat^l is over the entries used by octave l's lattice (eq. 3.14, X^l_obs),
  *     E_Con^l uses the partial sum of octaves 1..l (eq. 3.15, V^l_i),
@@ -148,14 +150,28 @@
  *     consecutive slots P[P[i] + j], so a run of slots the optimiser made coherent
  *     reappears, shifted, in other columns of the higher octaves: optimised tables
  *     show faint vertical streaks (with or without propagation).
- *   - Side effect of eq. 3.10-3.13, not a reading: every octave evaluates the one
- *     noise field, so lattice point (I, J) has the same gradient in every octave
- *     and octave l over [0, 1/2]^2 is octave l-1 over [0, 1]^2, shrunk. A control
- *     term that pushes the border's value one way (a dark border under the signed
- *     cloud or marble terms) turns octave 1's border gradients outward, and the
- *     quarter's edges x = 1/2 (y < 1/2) and y = 1/2 (x < 1/2) repeat that steep
- *     border as a straight seam (measured by nl_study_cheng_seams_measure in C1,
- *     C3 and C7).
+ *   - The domain. The thesis states none. Every octave evaluates the one noise
+ *     field at f_l x (eq. 3.10), so lattice point (I, J) has the same gradient
+ *     in every octave. On the unit square at the noise's origin (o = 0) octave
+ *     l's lattice holds octave l-1's whole lattice in its quarter [0, 1/2]^2:
+ *     octave l there is octave l-1 over the square, shrunk, with entries frozen
+ *     at level l-1; a control term that pushes the border's value one way (a
+ *     dark border under the signed cloud or marble terms) turns octave 1's
+ *     border gradients outward, and the quarter's edges x = 1/2 (y < 1/2) and
+ *     y = 1/2 (x < 1/2) repeat that steep border as straight seams. On
+ *     [o, o + 1]^2 octave l covers the noise's [f_l o, f_l (o + 1)] per axis
+ *     and octave l-1 [f_l o / 2, f_l (o + 1) / 2]: the two overlap unless
+ *     o >= 1, whatever f1 and F. So o = 1, the smallest origin at which no
+ *     octave's cells lie inside another's (adjacent octaves share only the
+ *     corner lattice point f_l (o + 1) = f_{l+1} o of both axes), and an
+ *     integer, so every point keeps its fractional position in its cell (the
+ *     grid rule above) and each lattice has (f_l + 1)^2 points. Chosen by that
+ *     criterion alone, not by any number of the thesis; eq. 3.10-3.13 hold as
+ *     written (eq. 3.13's parent (floor(I/2), floor(J/2)) of a point of octave
+ *     l's lattice lies on octave l-1's over the same domain). The highest
+ *     index, f_F (o + 1) = 128 in the thesis setting, stays below M = 512, so
+ *     the hash does not wrap. o = 0 is the alternative reading, measured
+ *     beside it (seams.tsv of C1, C3, C4, C7).
  */
 #ifndef NL_CHENG_H
 #define NL_CHENG_H
@@ -215,6 +231,9 @@ typedef struct {
   int amp_vary;         /* 1: octave l's log gain is a level-l variable (X6 above); 0: fixed */
   double amp_range;     /* R: gains within [1/R, R] (default 4; >= 1) */
   double log_gain[NL_CHENG_MAX_OCTAVES];   /* u_l: 1/a_l = e^u_l / a_l^thesis (0: the thesis's) */
+  double origin;        /* o: the texture's unit square is [o, o + 1]^2 in the noise's coordinates
+                           before the octaves' f_l (default 1; 0: anchored at the noise's origin;
+                           READINGS) */
 } nl_cheng_config;
 
 nl_cheng_config nl_cheng_config_default(void);

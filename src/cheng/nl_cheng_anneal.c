@@ -123,13 +123,15 @@ void nl_cheng_propagate(nl_cheng_problem *p)
 {
   int L = p->level;
   if (L < 2) return;
-  long lmax = nl_cheng__lattice_max(p->freq[L - 1]);
+  long lo, hi;
+  nl_cheng__lattice_range(p->freq[L - 1], p->c.origin, &lo, &hi);
   unsigned char *done = nl_xcalloc(p->m, 1);
-  for (long J = 0; J <= lmax; J++)
-    for (long I = 0; I <= lmax; I++) {
+  for (long J = lo; J <= hi; J++)
+    for (long I = lo; I <= hi; I++) {
       size_t k = nl_noise_grad2_index(p->g, I, J);
       if (p->first_level[k] != L || done[k]) continue;
-      /* eq. 3.13: the lattice point at half the frequency (f_l = 2 f_{l-1}). */
+      /* eq. 3.13: the lattice point at half the frequency (f_l = 2 f_{l-1}),
+       * which lies on octave l-1's lattice over the same domain (indices >= 0) */
       size_t parent = nl_noise_grad2_index(p->g, I / 2, J / 2);
       nl_noise_grad2_set_angle(p->g, k, p->g->angle[parent]);
       done[k] = 1;

@@ -12,6 +12,7 @@ nl_cheng_config nl_cheng_config_default(void)
     .octaves = 4, .f1 = 8, .a1 = 4,        /* eq. 3.10 */
     .m = 512, .chisq_bins = 500,           /* sec. 3.2, 4.2 */
     .propagate = 1,                        /* sec. 3.4.2 */
+    .origin = 1,                           /* the domain [1, 2]^2 (nl_cheng.h READINGS) */
     .sched = {.n_temps = 60, .moves_per_var = 20, .t_decades = 4, .p0 = 0.8, .stall = 10},
     .amp_vary = 0, .amp_range = 4,         /* X6: fixed amplitudes; gains within [1/4, 4] when varied */
   };
@@ -27,6 +28,8 @@ nl_status nl_cheng_config_check(const nl_cheng_config *c, nl_error *err)
   if (!(c->a1 > 0 && isfinite(c->a1))) return nl_fail(err, NL_EINVAL, "a1 must be > 0, got %g", c->a1);
   if (c->octaves < 1 || c->octaves > NL_CHENG_MAX_OCTAVES)
     return nl_fail(err, NL_EINVAL, "octaves must be in 1..%d, got %d", NL_CHENG_MAX_OCTAVES, c->octaves);
+  if (!(c->origin >= 0 && c->origin <= 1e6))
+    return nl_fail(err, NL_EINVAL, "origin must be in [0, 1e6], got %g", c->origin);
   if (c->chisq_bins < 2) return nl_fail(err, NL_EINVAL, "chi-square needs >= 2 bins");
   if ((unsigned)c->stat > NL_CHENG_STAT_CHISQ_RAW) return nl_fail(err, NL_EINVAL, "unknown objective %d", (int)c->stat);
   if (c->literal != 0 && c->literal != 1) return nl_fail(err, NL_EINVAL, "literal must be 0 or 1, got %d", c->literal);

@@ -28,7 +28,8 @@ static double control_error(const nl_noise_grad2 *g, const nl_cheng_config *c, c
   double s = amp_scale(&o), e = 0, nv[NL_CHENG_MAX_OCTAVES];
   double sv = 0, sd = 0, svv = 0, sdd = 0, svd = 0, n = (double)pat->n;
   for (size_t i = 0; i < pat->n; i++) {
-    for (int l = 0; l < o.n; l++) nv[l] = nl_noise_grad2_eval(g, o.freq[l] * pat->x[i], o.freq[l] * pat->y[i]);
+    for (int l = 0; l < o.n; l++)
+      nv[l] = nl_noise_grad2_eval(g, o.freq[l] * (c->origin + pat->x[i]), o.freq[l] * (c->origin + pat->y[i]));
     double v = nl_cheng__control_value(c->con, nv, o.amp, o.n, s, c->literal), d = v - pat->d[i];
     e += d * d;
     sv += v; sd += pat->d[i]; svv += v * v; sdd += pat->d[i] * pat->d[i]; svd += v * pat->d[i];
@@ -143,8 +144,8 @@ void nl_cheng_value_grid(const nl_noise_grad2 *g, const nl_cheng_config *c, int 
   double *rows = nl_xmalloc((size_t)o.n * (size_t)w * sizeof *rows);
   for (int y = 0; y < h; y++) {
     for (int l = 0; l < o.n; l++)
-      nl_noise_grad2_row(g, o.freq[l] * 0.5 / w, o.freq[l] / w, o.freq[l] * (y + 0.5) / h, (size_t)w,
-                         rows + (size_t)l * w);
+      nl_noise_grad2_row(g, o.freq[l] * (c->origin + 0.5 / w), o.freq[l] / w,
+                         o.freq[l] * (c->origin + (y + 0.5) / h), (size_t)w, rows + (size_t)l * w);
     for (int x = 0; x < w; x++) {
       for (int l = 0; l < o.n; l++) nv[l] = rows[(size_t)l * w + x];
       out[(size_t)y * w + x] = nl_cheng__control_value(c->con, nv, o.amp, o.n, s, c->literal);

@@ -106,7 +106,9 @@ double nl_cheng__amp_scale(const double *amp, int n);
  * (nl_cheng_problem.c). */
 void nl_cheng__resum_top(nl_cheng_problem *p);
 
-long nl_cheng__lattice_max(double f);
+/* The lattice indices lo..hi (each axis) that octave f's cells over the
+ * domain [origin, origin + 1]^2 touch: floor(f o) .. ceil(f (o + 1)). */
+void nl_cheng__lattice_range(double f, double origin, long *lo, long *hi);
 /* The control value c of nl_cheng.h from a point's octave values (the first
  * `levels` of them); inline because every move evaluates it per point. In two
  * steps: the octave sum (left to right; fire sums |Noise_l|), with nv[rl]

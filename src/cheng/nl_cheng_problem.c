@@ -22,7 +22,11 @@ static void corner_weights(double tx, double ty, double *w)
   }
 }
 
-long nl_cheng__lattice_max(double f) { return (long)ceil(f); }
+void nl_cheng__lattice_range(double f, double origin, long *lo, long *hi)
+{
+  *lo = (long)floor(f * origin);
+  *hi = (long)ceil(f * (origin + 1));
+}
 
 /* Corners of every (point, octave): table entry and weight vector. */
 static void build_corners(nl_cheng_problem *p)
@@ -30,7 +34,7 @@ static void build_corners(nl_cheng_problem *p)
   const nl_cheng_pattern *pat = p->pat;
   for (size_t i = 0; i < p->np; i++)
     for (int l = 0; l < p->F; l++) {
-      double X = p->freq[l] * pat->x[i], Y = p->freq[l] * pat->y[i];
+      double X = p->freq[l] * (p->c.origin + pat->x[i]), Y = p->freq[l] * (p->c.origin + pat->y[i]);
       long ci = (long)floor(X), cj = (long)floor(Y);
       size_t base = (i * (size_t)p->F + (size_t)l) * 4;
       corner_weights(X - (double)ci, Y - (double)cj, p->cw + 2 * base);
@@ -39,14 +43,15 @@ static void build_corners(nl_cheng_problem *p)
     }
 }
 
-/* Which entries each octave's lattice over the unit square uses, and the
- * lowest level that uses each entry (0: none). */
+/* Which entries each octave's lattice over the domain [o, o + 1]^2 uses,
+ * and the lowest level that uses each entry (0: none). */
 static void build_usage(nl_cheng_problem *p)
 {
   for (int l = 0; l < p->F; l++) {
-    long L = nl_cheng__lattice_max(p->freq[l]);
-    for (long j = 0; j <= L; j++)
-      for (long i = 0; i <= L; i++) {
+    long lo, hi;
+    nl_cheng__lattice_range(p->freq[l], p->c.origin, &lo, &hi);
+    for (long j = lo; j <= hi; j++)
+      for (long i = lo; i <= hi; i++) {
         size_t k = nl_noise_grad2_index(p->g, i, j);
         p->used[(size_t)l * p->m + k] = 1;
         if (!p->first_level[k]) p->first_level[k] = l + 1;

@@ -9,7 +9,7 @@
  * 120 evaluations: random tables (M = 512), random RGBA patterns (grids 8 to
  * 64, some cells transparent), F = 1..5 octaves, f1 in {8, 4, 6}, a1 in
  * {4, 2, 3}, the three statistics, the four variants, both readings, random
- * weights w1, w2. Tolerances: D and V 2e-15 (the same rank fractions less
+ * weights w1, w2, domain origin 0 and 1. Tolerances: D and V 2e-15 (the same rank fractions less
  * the same theta / 2 pi); chi2 1e-12 relative (the same integer counts, the
  * sum in another order); E_Con 1e-12 relative to n: per point c differs by
  * the noise's 5e-15 (test_noise_grad2_reference.c) times sum 1/a_l scaled,
@@ -34,7 +34,7 @@ static double control(const nl_cheng_config *c, const nl_noise_grad2 *g, double 
   double sum = 0, sum_abs = 0, inv = 0;
   for (int l = 0; l < c->octaves; l++) {
     double f = c->f1 * ldexp(1.0, l), a = c->a1 * ldexp(1.0, l);
-    double v = cheng_gradient_noise(g->angle, g->perm, g->m, f * x, f * y);
+    double v = cheng_gradient_noise(g->angle, g->perm, g->m, f * (c->origin + x), f * (c->origin + y));
     sum += v / a;
     sum_abs += fabs(v) / a;
     inv += 1 / a;
@@ -72,6 +72,7 @@ NL_TEST(evaluate_matches_the_definitions)
     c.stat = (nl_cheng_stat)(t % 3);
     c.con = (nl_cheng_con)(t / 2 % 4);
     c.literal = t / 8 % 2;
+    c.origin = t / 16 % 2;   /* the domain [1, 2]^2 and the alternative [0, 1]^2 */
     c.w1 = gsl_rng_uniform(r);
     c.w2 = 1 - c.w1;
     nl_noise_grad2 *g = nl_noise_grad2_alloc(c.m);

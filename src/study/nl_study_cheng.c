@@ -34,6 +34,10 @@ static void run_params(nl_harness *r, nl_cheng_config *c, int *grid)
   c->octaves = (int)nl_harness_param_int(
       r, "octaves", c->octaves, 1, NL_CHENG_MAX_OCTAVES,
       "octaves F of the fractal sum, one annealing level each (thesis 4)");
+  c->origin = nl_harness_param(r, "origin", c->origin, 0, 1e6,
+                               "origin o of the texture's domain [o, o + 1]^2 in the noise's "
+                               "coordinates before eq. 3.10's f_l (1: no octave's lattice inside "
+                               "another's; 0: the unit square at the noise's origin)");
   c->literal =
       (int)nl_harness_param_int(r, "literal", 0, 0, 1,
                                 "1: the thesis's control formulas literally (V unscaled: c = V, "
@@ -222,6 +226,7 @@ typedef struct {
   int k;
   nl_cheng_eval *evs;
   nl_noise_grad2 **firsts;
+  nl_noise_grad2 **all;   /* NULL, or every run's table at its item's slot */
   nl_status *st;
   nl_error *err;
 } runs_job;
@@ -231,13 +236,17 @@ static void run_item(void *ctx, size_t i, int thread)
   (void)thread;
   runs_job *j = ctx;
   size_t q = i / (size_t)j->k, seed = i % (size_t)j->k;
-  j->st[i] =
-      nl_cheng_run(&j->cs[q], j->pats[q], nl_seed_replicate(j->seed0, (long)seed), &j->evs[i], NULL,
-                   seed == 0 && j->firsts ? &j->firsts[q] : NULL, &j->err[i]);
+  nl_noise_grad2 *g = NULL;
+  j->st[i] = nl_cheng_run(&j->cs[q], j->pats[q], nl_seed_replicate(j->seed0, (long)seed),
+                          &j->evs[i], NULL, &g, &j->err[i]);
+  if (j->all) j->all[i] = g;
+  else if (seed == 0 && j->firsts) j->firsts[q] = g;
+  else nl_noise_grad2_free(g);
 }
 
-nl_cheng_eval *nl_study_cheng_runs(const nl_study_cheng *s, int n, const nl_cheng_config *cs,
-                                   const nl_cheng_pattern *const *pats, nl_noise_grad2 **firsts)
+static nl_cheng_eval *runs(const nl_study_cheng *s, int n, const nl_cheng_config *cs,
+                           const nl_cheng_pattern *const *pats, nl_noise_grad2 **firsts,
+                           nl_noise_grad2 **all)
 {
   int k = nl_harness_seeds(s->r);
   size_t items = (size_t)n * (size_t)k;
@@ -246,7 +255,7 @@ nl_cheng_eval *nl_study_cheng_runs(const nl_study_cheng *s, int n, const nl_chen
   nl_error *err = nl_xmalloc(items * sizeof *err);
   unsigned long seed0 =
       s->role ? nl_seed_stream(nl_harness_seed(s->r), s->role, 0) : nl_harness_seed(s->r);
-  runs_job j = { cs, pats, seed0, k, evs, firsts, st, err };
+  runs_job j = { cs, pats, seed0, k, evs, firsts, all, st, err };
   nl_parallel_for(items, nl_harness_threads(s->r), run_item, &j);
   /* the first failure in case and seed order, as a serial loop met it */
   for (size_t i = 0; i < items; i++)
@@ -254,6 +263,20 @@ nl_cheng_eval *nl_study_cheng_runs(const nl_study_cheng *s, int n, const nl_chen
   free(st);
   free(err);
   return evs;
+}
+
+nl_cheng_eval *nl_study_cheng_runs(const nl_study_cheng *s, int n, const nl_cheng_config *cs,
+                                   const nl_cheng_pattern *const *pats, nl_noise_grad2 **firsts)
+{
+  return runs(s, n, cs, pats, firsts, NULL);
+}
+
+nl_cheng_eval *nl_study_cheng_runs_tables(const nl_study_cheng *s, int n,
+                                          const nl_cheng_config *cs,
+                                          const nl_cheng_pattern *const *pats,
+                                          nl_noise_grad2 **tables)
+{
+  return runs(s, n, cs, pats, NULL, tables);
 }
 
 void nl_study_cheng_rows_add(const nl_study_cheng *s, nl_table *sum, int nlabels,
@@ -375,4 +398,26 @@ double nl_study_cheng_welch_add(nl_table *t, const nl_table *sum, size_t ra, siz
   nl_table_append(t, "ssssddddddd", group, col, a, b, ma, sa, mb, sb, (double)na,
                   100 * (ma - mb) / mb, p);
   return p;
+}
+
+nl_table *nl_study_cheng_tables_alloc(int nlabels, const char *const *labels)
+{
+  const char *names[32];
+  for (int i = 0; i < nlabels; i++) names[i] = labels[i];
+  names[nlabels] = "k";
+  names[nlabels + 1] = "angle";
+  names[nlabels + 2] = "perm";
+  return nl_table_alloc((size_t)nlabels + 3, names);
+}
+
+void nl_study_cheng_tables_add(nl_table *t, int nlabels, const char *const *labels,
+                               const nl_noise_grad2 *g)
+{
+  for (size_t k = 0; k < g->m; k++) {
+    size_t r = nl_table_append_empty(t);
+    for (int i = 0; i < nlabels; i++) nl_table_set_text(t, r, t->names[i], labels[i]);
+    nl_table_set(t, r, "k", (double)k);
+    nl_table_set(t, r, "angle", g->angle[k]);
+    nl_table_set(t, r, "perm", (double)g->perm[k]);
+  }
 }

@@ -155,6 +155,12 @@ nl_table *nl_study_cheng_cdf_table(const nl_noise_grad2 *const *tables, const ch
  * 1 on error (the first failing run in case and seed order). */
 nl_cheng_eval *nl_study_cheng_runs(const nl_study_cheng *s, int n, const nl_cheng_config *cs,
                                    const nl_cheng_pattern *const *pats, nl_noise_grad2 **firsts);
+/* The same runs, every run's optimised table into tables[i k + seed] (n k of
+ * them, caller frees each). */
+nl_cheng_eval *nl_study_cheng_runs_tables(const nl_study_cheng *s, int n,
+                                          const nl_cheng_config *cs,
+                                          const nl_cheng_pattern *const *pats,
+                                          nl_noise_grad2 **tables);
 /* One case's k evaluations as a summary row of sum under the nlabels labels
  * (label cells as text, then the mean, sd and min over the runs), and its
  * cost row if s->cost. */
@@ -171,6 +177,14 @@ nl_noise_grad2 *nl_study_cheng_seeds(const nl_study_cheng *s, const nl_cheng_con
  * FILE; frees the panels. */
 void nl_study_cheng_montage(nl_harness *r, nl_image **panels, const char *const *labels, int n,
                             int cols, const char *title, const char *file);
+/* The gradient tables behind a run's figures, as data (tables.tsv): nlabels
+ * label columns naming the table, then k (entry), angle (radians,
+ * round-trip) and perm (P[k]); _add appends table g's m rows under labels.
+ * tests/oracle_cheng.c rebuilds each table from them and recomputes the
+ * panels through the noise's point call. */
+nl_table *nl_study_cheng_tables_alloc(int nlabels, const char *const *labels);
+void nl_study_cheng_tables_add(nl_table *t, int nlabels, const char *const *labels,
+                               const nl_noise_grad2 *g);
 /* The smallest value of column `col` over the table's rows (+inf if none). */
 double nl_study_column_min(const nl_table *t, const char *col);
 
@@ -235,26 +249,60 @@ void nl_study_cheng_control_add(const nl_study_cheng *s, nl_table *t, int nlabel
                                 const char *const *labels, const nl_cheng_config *c,
                                 const nl_cheng_pattern *pat, const nl_cheng_eval *evs,
                                 int n_random, unsigned long seed, double *r_random);
+/* The pattern with its targets D shuffled among its points (cells and
+ * positions kept; gsl MT19937 from seed): the same values, no shape. Free
+ * with nl_cheng_pattern_free. */
+nl_cheng_pattern *nl_study_cheng_pattern_shuffled(const nl_cheng_pattern *p, unsigned long seed);
+/* Evaluations (nl_cheng_evaluate under c on pat) of n tables; exit 1 on
+ * error. Caller frees. */
+nl_cheng_eval *nl_study_cheng_evaluate_tables(const nl_study_cheng *s, const nl_cheng_config *c,
+                                              const nl_cheng_pattern *pat,
+                                              nl_noise_grad2 *const *tables, int n);
+/* The run's k unoptimised start tables of nl_cheng_run (seed
+ * nl_seed_replicate(seed0, i), seed0 as nl_study_cheng_runs); caller frees
+ * each and the array. */
+nl_noise_grad2 **nl_study_cheng_start_tables(const nl_study_cheng *s, size_t m);
+/* The negative controls of "follows the pattern" (rows of a control table
+ * whose last label column names the baseline; labels: the first nlabels
+ * - 1): "shuffled pattern", the k optimised tables against pat with its
+ * targets shuffled (nl_study_cheng_pattern_shuffled from seed), its random
+ * tables' r on that pattern as the null; and "start tables", the run's k
+ * unoptimised start tables (nl_study_cheng_start_tables) on pat. Returns the
+ * first of the two rows. */
+size_t nl_study_cheng_baselines_add(const nl_study_cheng *s, nl_table *t, int nlabels,
+                                    const char *const *labels, const nl_cheng_config *c,
+                                    const nl_cheng_pattern *pat, nl_noise_grad2 *const *tables,
+                                    int n_random, unsigned long seed);
+/* Spearman's rho of y on x (GSL; ties get average ranks). */
+double nl_study_spearman(const double *x, const double *y, size_t n);
+/* rho into *rho and its one-sided permutation p (rho large): y shuffled
+ * nperm times (MT19937 from seed), p = (1 + #{rho_perm >= rho}) / (nperm +
+ * 1). */
+double nl_study_spearman_perm_p(const double *x, const double *y, size_t n, int nperm,
+                                unsigned long seed, double *rho);
 /* E_Con against the flat image per row of a control table, split (in units
  * of the flat image's E_Con) into offset + contrast + shape, naming the rows
  * whose offset alone makes them worse than flat. Returns the number of rows
  * worse than flat (con_vs_const >= 1). */
 int nl_study_cheng_flat_text(nl_harness *r, const nl_table *ctl, int nlabels);
 
-/* Where a table's seams are, on a 128^2 raster of the control value (row 0 =
- * y = 0). The fractal sum evaluates one noise field at f_l x, so octave l's
- * lattice over [0, 1]^2 contains octave l-1's whole lattice in the quarter
- * [0, 1/2]^2 (the same points, the same gradients): octave l-1's lines x = 1
- * and y = 1 reappear in octave l as the half-lines x = 1/2 over y < 1/2 and
- * y = 1/2 over x < 1/2. Each value is a mean |step| across one boundary
- * over the mean of all boundaries of the same strip (1 = no seam):
+/* Where a table's seams are, on a 128^2 raster of the control value over
+ * the config's domain (row 0 = y = 0). The fractal sum evaluates one noise
+ * field at f_l x, so on the domain at the noise's origin (origin 0) octave
+ * l's lattice contains octave l-1's whole lattice in the quarter [0, 1/2]^2
+ * (the same points, the same gradients): octave l-1's lines x = 1 and y = 1
+ * reappear in octave l as the half-lines x = 1/2 over y < 1/2 and y = 1/2
+ * over x < 1/2; on the headline domain [1, 2]^2 no octave's lattice lies in
+ * another's (nl_cheng.h READINGS). Each value is a mean |step| across one
+ * boundary over the mean of all boundaries of the same strip (1 = no seam),
+ * in the raster's coordinates (the quarter is its top-left quarter):
  *   quarter   across those two half-lines (the quarter's edges);
  *   other     across x = 1/2 over y > 1/2 and y = 1/2 over x > 1/2 (no copy);
  *   border    across the first and last column and row boundaries;
  *   octave_quarter   `quarter` for octave l + 1 alone, l < 4 (NAN past F);
- *   outward   the mean outward component (-gx at x = 0, gx at x = 1, -gy, gy)
- *             of the unit gradients on octave 1's border lattice lines (0 for
- *             a random table; 1 for gradients all pointing out). */
+ *   outward   the mean outward component (-gx at x = o, gx at x = o + 1, -gy,
+ *             gy) of the unit gradients on octave 1's border lattice lines (0
+ *             for a random table; 1 for gradients all pointing out). */
 #define NL_STUDY_CHENG_SEAM_OCTAVES 4
 typedef struct {
   double quarter, other, border, outward;
@@ -262,7 +310,8 @@ typedef struct {
 } nl_study_cheng_seams;
 void nl_study_cheng_seams_measure(const nl_noise_grad2 *g, const nl_cheng_config *c,
                                   nl_study_cheng_seams *out);
-/* A table of nlabels label columns, then tables, seam_ratio (nl_cheng_eval's:
+/* A table of nlabels label columns, then origin (the config's domain
+ * origin), tables, seam_ratio (nl_cheng_eval's:
  * the largest boundary over the mean), seam_quarter, seam_quarter_sd,
  * seam_other, seam_border, seam_octave1 .. seam_octave4 (octave_quarter),
  * border_outward, border_outward_sd:
@@ -272,6 +321,13 @@ nl_table *nl_study_cheng_seams_alloc(int nlabels, const char *const *labels);
 void nl_study_cheng_seams_add(nl_table *t, int nlabels, const char *const *labels,
                               const nl_noise_grad2 *const *tables, int n,
                               const nl_cheng_config *c, const nl_cheng_pattern *pat);
+/* The seams table (the column tables_from names what the tables are:
+ * "optimised", "start table", ...) in the report, and the domain's effect
+ * in one paragraph: the quarter's edges, the borders and the largest
+ * boundary of the "optimised" rows at origin 1 (the headline) against
+ * origin 0, and the start tables' where there are rows of them. `what`
+ * names the tables in the caption ("the first seed's textures"). */
+void nl_study_cheng_seams_text(nl_harness *r, const nl_table *t, const char *what);
 
 /* ---- what C5 and C6 share (nl_study_cheng_repro.c) ----------------------- */
 

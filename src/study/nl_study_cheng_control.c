@@ -7,6 +7,9 @@
 #include "stats/nl_stats.h"
 
 #include <gsl/gsl_cdf.h>
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_rng.h>
+#include <gsl/gsl_statistics_double.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -142,6 +145,109 @@ void nl_study_cheng_control_add(const nl_study_cheng *s, nl_table *t, int nlabel
   free(x);
 }
 
+/* ---- negative controls ---------------------------------------------------- */
+
+nl_cheng_pattern *nl_study_cheng_pattern_shuffled(const nl_cheng_pattern *p, unsigned long seed)
+{
+  nl_cheng_pattern *q = nl_xcalloc(1, sizeof *q);
+  q->grid = p->grid;
+  q->n = p->n;
+  q->x = nl_xmalloc(p->n * sizeof *q->x);
+  q->y = nl_xmalloc(p->n * sizeof *q->y);
+  q->d = nl_xmalloc(p->n * sizeof *q->d);
+  q->cell = nl_xmalloc(p->n * sizeof *q->cell);
+  memcpy(q->x, p->x, p->n * sizeof *q->x);
+  memcpy(q->y, p->y, p->n * sizeof *q->y);
+  memcpy(q->d, p->d, p->n * sizeof *q->d);
+  memcpy(q->cell, p->cell, p->n * sizeof *q->cell);
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, seed);
+  gsl_ran_shuffle(rng, q->d, q->n, sizeof *q->d);
+  gsl_rng_free(rng);
+  return q;
+}
+
+nl_cheng_eval *nl_study_cheng_evaluate_tables(const nl_study_cheng *s, const nl_cheng_config *c,
+                                              const nl_cheng_pattern *pat,
+                                              nl_noise_grad2 *const *tables, int n)
+{
+  nl_cheng_eval *evs = nl_xmalloc((size_t)n * sizeof *evs);
+  for (int i = 0; i < n; i++) {
+    nl_error err;
+    if (nl_cheng_evaluate(tables[i], c, pat, &evs[i], &err)) nl_harness_die(s->r, 1, "%s", err.msg);
+    evs[i].e_con_random = evs[i].e_con;
+  }
+  return evs;
+}
+
+nl_noise_grad2 **nl_study_cheng_start_tables(const nl_study_cheng *s, size_t m)
+{
+  int k = nl_harness_seeds(s->r);
+  unsigned long seed0 =
+      s->role ? nl_seed_stream(nl_harness_seed(s->r), s->role, 0) : nl_harness_seed(s->r);
+  nl_noise_grad2 **t = nl_xmalloc((size_t)k * sizeof *t);
+  for (int i = 0; i < k; i++) {
+    t[i] = nl_noise_grad2_alloc(m);
+    nl_noise_grad2_seed(t[i], nl_seed_replicate(seed0, i)); /* as nl_cheng_run */
+  }
+  return t;
+}
+
+size_t nl_study_cheng_baselines_add(const nl_study_cheng *s, nl_table *t, int nlabels,
+                                    const char *const *labels, const nl_cheng_config *c,
+                                    const nl_cheng_pattern *pat, nl_noise_grad2 *const *tables,
+                                    int n_random, unsigned long seed)
+{
+  int k = nl_harness_seeds(s->r);
+  const char *lab[32];
+  for (int i = 0; i < nlabels - 1; i++) lab[i] = labels[i];
+  size_t first = t->nrows;
+  nl_cheng_pattern *sh = nl_study_cheng_pattern_shuffled(pat, nl_seed_stream(seed, "cheng.shuffle", 0));
+  nl_cheng_eval *evs = nl_study_cheng_evaluate_tables(s, c, sh, tables, k);
+  lab[nlabels - 1] = "shuffled pattern";
+  nl_study_cheng_control_add(s, t, nlabels, lab, c, sh, evs, n_random,
+                             nl_seed_stream(seed, "cheng.shuffle", 1), NULL);
+  free(evs);
+  nl_cheng_pattern_free(sh);
+  nl_noise_grad2 **st = nl_study_cheng_start_tables(s, c->m);
+  evs = nl_study_cheng_evaluate_tables(s, c, pat, st, k);
+  lab[nlabels - 1] = "start tables";
+  nl_study_cheng_control_add(s, t, nlabels, lab, c, pat, evs, n_random,
+                             nl_seed_stream(seed, "cheng.shuffle", 2), NULL);
+  free(evs);
+  for (int i = 0; i < k; i++) nl_noise_grad2_free(st[i]);
+  free(st);
+  return first;
+}
+
+double nl_study_spearman(const double *x, const double *y, size_t n)
+{
+  double *work = nl_xmalloc(2 * n * sizeof *work);
+  double rho = gsl_stats_spearman(x, 1, y, 1, n, work); /* ties: average ranks */
+  free(work);
+  return rho;
+}
+
+double nl_study_spearman_perm_p(const double *x, const double *y, size_t n, int nperm,
+                                unsigned long seed, double *rho)
+{
+  *rho = nl_study_spearman(x, y, n);
+  double *yp = nl_xmalloc(n * sizeof *yp);
+  memcpy(yp, y, n * sizeof *yp);
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, seed);
+  int at_least = 0;
+  for (int b = 0; b < nperm; b++) {
+    gsl_ran_shuffle(rng, yp, n, sizeof *yp);
+    /* a hair of tolerance: a permutation that only swaps tied values gives
+     * the same rho up to rounding */
+    at_least += nl_study_spearman(x, yp, n) >= *rho - 1e-12;
+  }
+  gsl_rng_free(rng);
+  free(yp);
+  return (1.0 + at_least) / (1.0 + nperm);
+}
+
 /* ---- seams ---------------------------------------------------------------- */
 
 #define SEAM_N 128
@@ -191,25 +297,27 @@ void nl_study_cheng_seams_measure(const nl_noise_grad2 *g, const nl_cheng_config
     if (l >= o.n) continue;
     double f = o.freq[l], other;
     for (int y = 0; y < n; y++)
-      nl_noise_grad2_row(g, f * 0.5 / n, f / n, f * (y + 0.5) / n, (size_t)n, v + (size_t)y * n);
+      nl_noise_grad2_row(g, f * (c->origin + 0.5 / n), f / n, f * (c->origin + (y + 0.5) / n),
+                         (size_t)n, v + (size_t)y * n);
     midlines(v, n, &out->octave_quarter[l], &other);
   }
   free(v);
-  /* The outward component of octave 1's unit gradients on the lines x = 0,
-   * x = 1, y = 0, y = 1 of its lattice (f1 integer: lattice lines 0 and f1) */
-  long L = (long)ceil(o.freq[0]);
+  /* The outward component of octave 1's unit gradients on the lattice lines
+   * of the domain's border, x = o, x = o + 1, y = o, y = o + 1 (f1 o integer:
+   * lattice lines f1 o and f1 (o + 1)) */
+  long L0 = (long)floor(o.freq[0] * c->origin), L = (long)ceil(o.freq[0] * (c->origin + 1));
   double s = 0;
-  for (long j = 0; j <= L; j++) {
-    s -= g->gx[nl_noise_grad2_index(g, 0, j)];
+  for (long j = L0; j <= L; j++) {
+    s -= g->gx[nl_noise_grad2_index(g, L0, j)];
     s += g->gx[nl_noise_grad2_index(g, L, j)];
-    s -= g->gy[nl_noise_grad2_index(g, j, 0)];
+    s -= g->gy[nl_noise_grad2_index(g, j, L0)];
     s += g->gy[nl_noise_grad2_index(g, j, L)];
   }
-  out->outward = s / (4.0 * (double)(L + 1));
+  out->outward = s / (4.0 * (double)(L - L0 + 1));
 }
 
 static const char *const seam_cols[] = {
-  "tables",       "seam_ratio",   "seam_quarter", "seam_quarter_sd", "seam_other",
+  "origin",       "tables",       "seam_ratio",   "seam_quarter", "seam_quarter_sd", "seam_other",
   "seam_border",  "seam_octave1", "seam_octave2", "seam_octave3",    "seam_octave4",
   "border_outward", "border_outward_sd",
 };
@@ -242,7 +350,8 @@ void nl_study_cheng_seams_add(nl_table *t, int nlabels, const char *const *label
     border += s.border / n;
     for (int l = 0; l < NL_STUDY_CHENG_SEAM_OCTAVES; l++) oct[l] += s.octave_quarter[l] / n;
   }
-  double row[NSEAM] = { n,
+  double row[NSEAM] = { c->origin,
+                        n,
                         ratio,
                         nl_stats_mean(q, (size_t)n, NL_STATS_RUNNING),
                         n > 1 ? nl_stats_sd(q, (size_t)n, NL_STATS_RUNNING) : 0,
@@ -259,6 +368,61 @@ void nl_study_cheng_seams_add(nl_table *t, int nlabels, const char *const *label
   for (int i = 0; i < nlabels; i++) nl_table_set_text(t, r, t->names[i], labels[i]);
   free(q);
   free(w);
+}
+
+/* lo..hi and count of column col over the rows of t from `from` at origin o */
+static int seam_range(const nl_table *t, const char *from, double o, const char *col, double *lo,
+                      double *hi)
+{
+  int n = 0;
+  *lo = INFINITY;
+  *hi = -INFINITY;
+  for (size_t q = 0; q < t->nrows; q++)
+    if (!strcmp(nl_table_text(t, q, "tables_from"), from) && nl_table_value(t, q, "origin") == o) {
+      *lo = fmin(*lo, nl_table_value(t, q, col));
+      *hi = fmax(*hi, nl_table_value(t, q, col));
+      n++;
+    }
+  return n;
+}
+
+void nl_study_cheng_seams_text(nl_harness *r, const nl_table *t, const char *what)
+{
+  char cap[256];
+  snprintf(cap, sizeof cap,
+           "Seams of %s on the domain [1, 2]^2 (origin 1, the headline) and [0, 1]^2 (origin 0): "
+           "a boundary's mean |step| over its strip's mean, 1 = no seam",
+           what);
+  nl_harness_report_table(r, t, cap, 3);
+  const char *cols[3] = { "seam_quarter", "seam_border", "seam_ratio" };
+  double lo[2][3], hi[2][3];
+  int n1 = 0, n0 = 0;
+  for (int c = 0; c < 3; c++) {
+    n1 = seam_range(t, "optimised", 1, cols[c], &lo[1][c], &hi[1][c]);
+    n0 = seam_range(t, "optimised", 0, cols[c], &lo[0][c], &hi[0][c]);
+  }
+  char start[256] = "";
+  double slo, shi, blo, bhi;
+  if (seam_range(t, "start table", 1, "seam_quarter", &slo, &shi) > 0) {
+    seam_range(t, "start table", 1, "seam_border", &blo, &bhi);
+    snprintf(start, sizeof start,
+             " Unoptimised start tables on [1, 2]^2 give %.2f..%.2f across the quarter's edges and "
+             "%.2f..%.2f at the borders.",
+             slo, shi, blo, bhi);
+  }
+  if (n1 == 0 || n0 == 0) return;
+  nl_harness_text(
+      r,
+      "**Seams and the domain.** Across the edges of the quarter (x = 1/2 over y < 1/2 and y = "
+      "1/2 over x < 1/2 of the image, where on [0, 1]^2 octave l repeats octave l-1's border "
+      "lines) the optimised tables step %.2f..%.2f x their strip's mean on [1, 2]^2 against "
+      "%.2f..%.2f on [0, 1]^2; at the image borders %.2f..%.2f against %.2f..%.2f; the largest "
+      "boundary anywhere (seam_ratio) %.2f..%.2f against %.2f..%.2f (%d and %d rows).%s On [1, "
+      "2]^2 no octave's lattice lies inside another's (nl_cheng.h READINGS), so no octave repeats "
+      "another's border; a step left at the borders comes with the control term (C7 measures it "
+      "with the term off).\n",
+      lo[1][0], hi[1][0], lo[0][0], hi[0][0], lo[1][1], hi[1][1], lo[0][1], hi[0][1], lo[1][2],
+      hi[1][2], lo[0][2], hi[0][2], n1, n0, start);
 }
 
 /* ---- prose ---------------------------------------------------------------- */
