@@ -18,9 +18,10 @@
  * (red = D, grey 0.5 without control) nearest-neighbour upscaled. A panel
  * showing another objective's, another seed's or another setting's table
  * fails (grey levels and correlation), and panels whose captions differ
- * must not show one picture. The domain is the unit square (cube) at the
- * origin, as nl_cheng_value_grid's raster (domain_2d below is the one place
- * to change if the texture's domain moves). Exit 0 when every panel
+ * must not show one picture. The 2D domain is the unit square at the
+ * config's origin, [o, o + 1]^2 (nl_cheng.h, READINGS), sampled at pixel
+ * centres as nl_cheng_value_grid's raster; the 3D slices' cube is at the
+ * noise's origin. Exit 0 when every panel
  * matches, 1 with one line per mismatch, 2 on a usage or input error.
  */
 #include "oracle.h"
@@ -117,8 +118,8 @@ static nl_cheng_pattern *pattern_2d(const run *R, const char *name, int grid)
 
 /* ---- what a caption says, by another path -------------------------------- */
 
-/* Pixel centre (i + 1/2) / n of the texture's domain. */
-static double domain_2d(int i, int n) { return (i + 0.5) / n; }
+/* Pixel centre o + (i + 1/2) / n of the texture's domain. */
+static double domain_2d(const nl_cheng_config *c, int i, int n) { return c->origin + (i + 0.5) / n; }
 
 /* c of config c (gains u, NULL: the config's) at the n x n pixel centres. */
 static void value_2d(const nl_noise_grad2 *g, const nl_cheng_config *c, const double *u, int n,
@@ -133,7 +134,7 @@ static void value_2d(const nl_noise_grad2 *g, const nl_cheng_config *c, const do
   double s = c->literal ? 1 : 1 / (NL_NOISE2_BOUND * asum);
   for (int j = 0; j < n; j++)
     for (int i = 0; i < n; i++) {
-      double x = domain_2d(i, n), y = domain_2d(j, n), sum = 0;
+      double x = domain_2d(c, i, n), y = domain_2d(c, j, n), sum = 0;
       for (int l = 0; l < c->octaves; l++) {
         double nv = nl_noise_grad2_eval_general(g, f[l] * x, f[l] * y);
         sum += amp[l] * (c->con == NL_CHENG_CON_FIRE ? fabs(nv) : nv);
