@@ -33,17 +33,16 @@ for dir in "$root/results" "$root/results/quick"; do
   done <"$list"
 done
 
-# The claims inventory of an experiment (experiments/NAME/claims.tsv): every
-# claim names the verdict row that decides it (its quantity, in both the
-# paper-scale and the quick verdicts.tsv) or says why none does. An
-# experiment with an inventory has a negative control on every independent
-# row: the same rule run on a baseline without the method, never itself
-# "reproduced" beside a row that passes (the harness would have made the row
-# "by construction").
+# Every experiment has a claims inventory (experiments/NAME/claims.tsv):
+# every claim names the verdict row that decides it (its quantity, in both
+# the paper-scale and the quick verdicts.tsv) or says why none does. Every
+# independent row has a negative control: the same rule run on a baseline
+# without the method, never itself "reproduced" beside a row that passes
+# (the harness would have made the row "by construction").
 while IFS= read -r e; do
   [ -n "$e" ] || continue
   inv="$root/experiments/$e/claims.tsv"
-  [ -f "$inv" ] || continue
+  [ -f "$inv" ] || fail "$e has no claims inventory experiments/$e/claims.tsv"
   head -1 "$inv" | grep -qx $'id\tclaim\twhere\tdecided_by\twhy_not' ||
     fail "$inv: header is not id, claim, where, decided_by, why_not"
   for dir in "$root/results" "$root/results/quick"; do
