@@ -29,10 +29,12 @@
 #define NL_TESTS_ORACLE_H
 
 #include "image/nl_image.h"
+#include "table/nl_table.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* An 8-bit PNG holds a grey level to 0.5/255; the float maps of two paths
  * differ by rounding far below that. One level of slack covers a value that
@@ -130,6 +132,47 @@ static inline double oracle_panels_corr(const oracle_montage *m, int i, int j)
     }
   double ca = saa - sa * sa / n, cb = sbb - sb * sb / n;
   return ca > 0 && cb > 0 ? (sab - sa * sb / n) / sqrt(ca * cb) : 0;
+}
+
+/* The run's manifest (manifest.tsv, read with NL_TABLE_TEXT): the value of
+ * `key`, or NULL. */
+static inline const char *oracle_manifest_value(const nl_table *m, const char *key)
+{
+  for (size_t i = 0; i < m->nrows; i++)
+    if (!strcmp(nl_table_text(m, i, "key"), key)) return nl_table_text(m, i, "value");
+  return NULL;
+}
+
+/* A parameter from the manifest's "param NAME=VALUE" lines (round-trip
+ * doubles), else def: the oracle reads what the run used. */
+static inline double oracle_param(const nl_table *m, const char *name, double def)
+{
+  size_t len = strlen(name);
+  for (size_t i = 0; i < m->nrows; i++) {
+    const char *v = nl_table_text(m, i, "value");
+    if (!strcmp(nl_table_text(m, i, "key"), "param") && v && !strncmp(v, name, len) && v[len] == '=')
+      return strtod(v + len + 1, NULL);
+  }
+  return def;
+}
+
+static inline int oracle_cmp_double(const void *a, const void *b)
+{
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+/* A "stretched" panel's range: the values' own 1st and 99th percentiles
+ * (order statistics n/100 and n - 1 - n/100); a flat image gets +-0.5. */
+static inline void oracle_stretch(const double *v, size_t n, double *lo, double *hi)
+{
+  double *c = malloc(n * sizeof *c);
+  memcpy(c, v, n * sizeof *c);
+  qsort(c, n, sizeof *c, oracle_cmp_double);
+  *lo = c[n / 100];
+  *hi = c[n - 1 - n / 100];
+  if (!(*hi > *lo)) { *lo -= 0.5; *hi += 0.5; }
+  free(c);
 }
 
 #endif

@@ -43,28 +43,9 @@
 #include <string.h>
 #include <sys/stat.h>
 
-static const char *manifest_value(const nl_table *m, const char *key)
-{
-  for (size_t i = 0; i < m->nrows; i++)
-    if (!strcmp(nl_table_text(m, i, "key"), key)) return nl_table_text(m, i, "value");
-  return NULL;
-}
-
-/* A parameter from the manifest's "param NAME=VALUE" lines, else def. */
-static double param(const nl_table *m, const char *name, double def)
-{
-  size_t len = strlen(name);
-  for (size_t i = 0; i < m->nrows; i++) {
-    const char *v = nl_table_text(m, i, "value");
-    if (!strcmp(nl_table_text(m, i, "key"), "param") && v && !strncmp(v, name, len) && v[len] == '=')
-      return strtod(v + len + 1, NULL);
-  }
-  return def;
-}
-
 static unsigned long run_seed(const nl_table *m)
 {
-  const char *s = manifest_value(m, "seed");
+  const char *s = oracle_manifest_value(m, "seed");
   return s ? strtoul(s, NULL, 10) : 1;
 }
 
@@ -184,7 +165,7 @@ static void smoke_march(const nl_noise_perm3 *p, const smoke *s, const int *term
  * 0.1% of the pixels may differ. */
 static int check_a2_bounds(const char *dir, const nl_table *man, const smoke *s, int terms)
 {
-  double bound = param(man, "octave_bound", NL_NOISE3_BOUND), rem[40];
+  double bound = oracle_param(man, "octave_bound", NL_NOISE3_BOUND), rem[40];
   rem[terms] = 0;
   for (int k = terms - 1; k >= 0; k--) rem[k] = rem[k + 1] + bound * ldexp(1.0, -k);
   nl_noise_perm3 p;
@@ -237,9 +218,9 @@ static int check_a2_bounds(const char *dir, const nl_table *man, const smoke *s,
 static int check_a2(const char *dir, const nl_table *man)
 {
   static const int label[6] = {0, 1, 2, 5, 7, 10};
-  smoke s = {(int)param(man, "size", 32), param(man, "step", 0.01), param(man, "stop_opacity", 0.99),
-             param(man, "slope", -5), param(man, "freq", 2), param(man, "kappa", 15360)};
-  int offset = (int)param(man, "offset", 1), w[6], h[6], bad = 0;
+  smoke s = {(int)oracle_param(man, "size", 32), oracle_param(man, "step", 0.01), oracle_param(man, "stop_opacity", 0.99),
+             oracle_param(man, "slope", -5), oracle_param(man, "freq", 2), oracle_param(man, "kappa", 15360)};
+  int offset = (int)oracle_param(man, "offset", 1), w[6], h[6], bad = 0;
   char lab[6][32];
   const char *labels[6];
   for (int i = 0; i < 6; i++) {
@@ -287,8 +268,8 @@ static int check_a2(const char *dir, const nl_table *man)
 
 static int check_a4(const char *dir, const nl_table *man)
 {
-  int size = (int)param(man, "size", 96);
-  double rate = param(man, "rate", 2), extent = size / rate, div[2] = {1.0, 1.7460938};
+  int size = (int)oracle_param(man, "size", 96);
+  double rate = oracle_param(man, "rate", 2), extent = size / rate, div[2] = {1.0, 1.7460938};
   const char *labels[2] = {"(a) noise(x)", "(b) noise(x / F_sup)"};
   int w[2] = {size, size}, bad = 0;
   char title[96];
@@ -384,8 +365,8 @@ static void dft_log_power(const double *img, int w, double *out, double *top)
 
 static int check_l1(const char *dir, const nl_table *man)
 {
-  int size = (int)param(man, "size", 128), tile = (int)param(man, "tile", NL_BYEXAMPLE_TILE);
-  int tile3 = (int)param(man, "tile3", 32), band = (int)param(man, "band", 2), bad = 0;
+  int size = (int)oracle_param(man, "size", 128), tile = (int)oracle_param(man, "tile", NL_BYEXAMPLE_TILE);
+  int tile3 = (int)oracle_param(man, "tile3", 32), band = (int)oracle_param(man, "band", 2), bad = 0;
   unsigned long seed = run_seed(man);
   int w3 = size < (tile3 << band) ? size : tile3 << band;
   char lb[64], title[96];
@@ -426,7 +407,7 @@ static int check_l1(const char *dir, const nl_table *man)
 
 static int check_l2(const char *dir, const nl_table *man)
 {
-  int size = (int)param(man, "size", 128), tile = (int)param(man, "tile", NL_BYEXAMPLE_TILE), bad = 0;
+  int size = (int)oracle_param(man, "size", 128), tile = (int)oracle_param(man, "tile", NL_BYEXAMPLE_TILE), bad = 0;
   unsigned long seed = run_seed(man);
   int nb = nl_byexample_band_count(size, size);
   const char *labels[2] = {"(b) true weights", "(d) estimated weights"};
@@ -526,7 +507,7 @@ static int check_l3(const char *dir, const nl_table *man)
   const nl_byexample_options opt[5] = {{1, 1, 0, 0, NL_HIST_PAPER, 0}, {1, 0, 0, 0, NL_HIST_PAPER, 0},
                                        {0, 1, 0, 0, NL_HIST_PAPER, 0}, {1, 1, 0, 0, NL_HIST_PAPER, 0},
                                        {1, 1, 0, 0, NL_HIST_GAUSS, 0}};
-  int size = (int)param(man, "size", 128), bad = 0, w[6];
+  int size = (int)oracle_param(man, "size", 128), bad = 0, w[6];
   unsigned long seed = run_seed(man);
   for (int i = 0; i < 6; i++) w[i] = size;
   double *v = malloc((size_t)size * size * sizeof *v);
@@ -570,9 +551,9 @@ static int check_l3(const char *dir, const nl_table *man)
  * which checks the montage (crop, order, replicate), not the calibration. */
 static int check_l3_photos(const char *dir, const nl_table *man)
 {
-  const char *ex = manifest_value(man, "exemplars");
+  const char *ex = oracle_manifest_value(man, "exemplars");
   if (!ex) ex = "data/exemplars"; /* --exemplars' default */
-  int np = (int)param(man, "photos", 2), size = (int)param(man, "photo_size", 128), bad = 0;
+  int np = (int)oracle_param(man, "photos", 2), size = (int)oracle_param(man, "photo_size", 128), bad = 0;
   int c = size < 256 ? size : 256;
   unsigned long seed = run_seed(man);
   char exdir[1024];
@@ -661,8 +642,8 @@ static int check_l3_photos(const char *dir, const nl_table *man)
 
 static int check_l4(const char *dir, const nl_table *man)
 {
-  int size = (int)param(man, "size", 128), nfine = (int)param(man, "edit_bands", 3), bad = 0;
-  double factor = param(man, "edit_factor", 0.25);
+  int size = (int)oracle_param(man, "size", 128), nfine = (int)oracle_param(man, "edit_bands", 3), bad = 0;
+  double factor = oracle_param(man, "edit_factor", 0.25);
   unsigned long seed = run_seed(man);
   nl_error err;
   nl_image *ex = nl_byexample_exemplar("granite", size, nl_seed_stream(seed, "l4.exemplar", 0));

@@ -36,24 +36,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *manifest_value(const nl_table *m, const char *key)
-{
-  for (size_t i = 0; i < m->nrows; i++)
-    if (!strcmp(nl_table_text(m, i, "key"), key)) return nl_table_text(m, i, "value");
-  return NULL;
-}
-
-static double param(const nl_table *m, const char *name, double def)
-{
-  size_t len = strlen(name);
-  for (size_t i = 0; i < m->nrows; i++) {
-    const char *v = nl_table_text(m, i, "value");
-    if (!strcmp(nl_table_text(m, i, "key"), "param") && v && !strncmp(v, name, len) && v[len] == '=')
-      return strtod(v + len + 1, NULL);
-  }
-  return def;
-}
-
 /* ---- the model, written out ---------------------------------------------- */
 
 enum { CLOUD, MARBLE, EROSION, FIRE };
@@ -86,25 +68,6 @@ static double *value_raster(const model *md, const nl_noise_grad2 *g, int n)
   for (int j = 0; j < n; j++)
     for (int i = 0; i < n; i++) v[(size_t)j * n + i] = control(md, g, (i + 0.5) / n, (j + 0.5) / n);
   return v;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-  double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
-/* The display stretch: the 1st and 99th percentiles (order statistics n/100
- * and n - 1 - n/100); a flat image gets +-0.5. */
-static void stretch(const double *v, size_t n, double *lo, double *hi)
-{
-  double *c = malloc(n * sizeof *c);
-  memcpy(c, v, n * sizeof *c);
-  qsort(c, n, sizeof *c, cmp_double);
-  *lo = c[n / 100];
-  *hi = c[n - 1 - n / 100];
-  if (!(*hi > *lo)) { *lo -= 0.5; *hi += 0.5; }
-  free(c);
 }
 
 /* ---- the run's tables ------------------------------------------------------ */
@@ -236,7 +199,7 @@ static int value_panel(const oracle_montage *m, int i, const char *file, const c
     lo = md->literal && (md->con == CLOUD || md->con == MARBLE) ? -1 : 0;
     hi = 1;
   } else {
-    stretch(v, n, &lo, &hi);
+    oracle_stretch(v, n, &lo, &hi);
     if (map == TEXTURE) {
       texture_red(md->con, v, n, lo, hi);
       lo = 0;
@@ -286,7 +249,7 @@ static int c1(const run *rn)
     { "flower", "x", "star" }, { "rings", "spiral", "letter" }, { "disc", "star", "x" }, { "flower", "gradient", "letter" }
   };
   static const char *const eq[4] = { "eq. 3.8", "eq. 4.1", "eq. 4.2", "eq. 4.3" };
-  int size = (int)param(rn->man, "size", 256), bad = 0;
+  int size = (int)oracle_param(rn->man, "size", 256), bad = 0;
   const char *cols[3] = { "texture", "pattern", "formula" };
   for (int t = 0; t < 4; t++) {
     const char *labels[15];
@@ -498,10 +461,10 @@ int main(int argc, char **argv)
   }
   rn.man = man;
   rn.tabs = tabs;
-  rn.grid = (int)param(man, "grid", 64);
-  rn.md = (model){ CLOUD, 0, (int)param(man, "octaves", 4), param(man, "f1", 8), param(man, "a1", 4),
-                   param(man, "origin", 0) };
-  const char *env = getenv("NL_PATTERNS"), *mpat = manifest_value(man, "patterns");
+  rn.grid = (int)oracle_param(man, "grid", 64);
+  rn.md = (model){ CLOUD, 0, (int)oracle_param(man, "octaves", 4), oracle_param(man, "f1", 8), oracle_param(man, "a1", 4),
+                   oracle_param(man, "origin", 0) };
+  const char *env = getenv("NL_PATTERNS"), *mpat = oracle_manifest_value(man, "patterns");
   rn.patterns = env && *env ? env : mpat ? mpat : "data/patterns";
   int bad;
   if (!strcmp(argv[1], "c1")) bad = c1(&rn);

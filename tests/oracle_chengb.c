@@ -38,24 +38,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *manifest_value(const nl_table *m, const char *key)
-{
-  for (size_t i = 0; i < m->nrows; i++)
-    if (!strcmp(nl_table_text(m, i, "key"), key)) return nl_table_text(m, i, "value");
-  return NULL;
-}
-
-static double param(const nl_table *m, const char *name, double def)
-{
-  size_t len = strlen(name);
-  for (size_t i = 0; i < m->nrows; i++) {
-    const char *v = nl_table_text(m, i, "value");
-    if (!strcmp(nl_table_text(m, i, "key"), "param") && v && !strncmp(v, name, len) && v[len] == '=')
-      return strtod(v + len + 1, NULL);
-  }
-  return def;
-}
-
 /* ---- the run's setting --------------------------------------------------- */
 
 typedef struct {
@@ -70,14 +52,14 @@ typedef struct {
 static nl_cheng_config config_2d(const run *R)
 {
   nl_cheng_config c = nl_cheng_config_default();
-  c.w1 = param(R->man, "w1", c.w1);
-  c.w2 = param(R->man, "w2", c.w2);
-  c.f1 = param(R->man, "f1", c.f1);
-  c.a1 = param(R->man, "a1", c.a1);
-  c.octaves = (int)param(R->man, "octaves", c.octaves);
-  c.literal = (int)param(R->man, "literal", 0);
-  c.sched.n_temps = (int)param(R->man, "temps", c.sched.n_temps);
-  c.sched.moves_per_var = param(R->man, "moves_per_var", c.sched.moves_per_var);
+  c.w1 = oracle_param(R->man, "w1", c.w1);
+  c.w2 = oracle_param(R->man, "w2", c.w2);
+  c.f1 = oracle_param(R->man, "f1", c.f1);
+  c.a1 = oracle_param(R->man, "a1", c.a1);
+  c.octaves = (int)oracle_param(R->man, "octaves", c.octaves);
+  c.literal = (int)oracle_param(R->man, "literal", 0);
+  c.sched.n_temps = (int)oracle_param(R->man, "temps", c.sched.n_temps);
+  c.sched.moves_per_var = oracle_param(R->man, "moves_per_var", c.sched.moves_per_var);
   return c;
 }
 
@@ -85,7 +67,7 @@ static nl_cheng_config config_2d(const run *R)
  * folder's repository (results/NAME, results/quick/NAME). */
 static int find_patterns(run *R)
 {
-  const char *p = manifest_value(R->man, "patterns");
+  const char *p = oracle_manifest_value(R->man, "patterns");
   if (!p) p = "data/patterns";
   const char *pre[3] = { "", "/../../", "/../../../" };
   for (int i = 0; i < 3; i++) {
@@ -151,25 +133,6 @@ static void value_2d(const nl_noise_grad2 *g, const nl_cheng_config *c, const do
     }
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-  double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
-/* "stretched": the value's own 1st and 99th percentile (k = n/100 from
- * either end of the sorted values). */
-static void percentile_range(const double *v, size_t n, double *lo, double *hi)
-{
-  double *c = malloc(n * sizeof *c);
-  memcpy(c, v, n * sizeof *c);
-  qsort(c, n, sizeof *c, cmp_double);
-  *lo = c[n / 100];
-  *hi = c[n - 1 - n / 100];
-  if (!(*hi > *lo)) { *lo -= 0.5; *hi += 0.5; }
-  free(c);
-}
-
 /* The pattern panel's red: D of the cell under each pixel, 0.5 without control. */
 static void pattern_red(const nl_cheng_pattern *p, int n, double *v)
 {
@@ -187,7 +150,7 @@ static void pattern_red(const nl_cheng_pattern *p, int n, double *v)
 static void check(run *R, const oracle_montage *m, const char *file, int i, const char *label,
                   const double *v, int n, int stretch, double lo, double hi)
 {
-  if (stretch) percentile_range(v, (size_t)n * n, &lo, &hi);
+  if (stretch) oracle_stretch(v, (size_t)n * n, &lo, &hi);
   oracle_result res = oracle_panel_compare(m, i, v, n, n, lo, hi);
   if (res.max_diff > ORACLE_TOL_8BIT || res.corr < 0.999) {
     printf("%s: panel %s is not its caption: max grey difference %.4f at (%d, %d), correlation "
@@ -250,7 +213,7 @@ static void c2(run *R)
   const char *labels[5] = { "pattern", "KS term", "chi-square term", "Kuiper term",
                             "raw chi-square term" };
   const int size = 192; /* c2's PANEL */
-  int grid = (int)param(R->man, "grid", 64);
+  int grid = (int)oracle_param(R->man, "grid", 64);
   double *v = malloc((size_t)size * size * sizeof *v);
   for (int p = 0; p < 2; p++) {
     char file[64];
@@ -286,9 +249,9 @@ static void c9(run *R)
   } cases[6] = { { NL_CHENG_CON_PLAIN, "flower" }, { NL_CHENG_CON_SIN, "rings" },
                  { NL_CHENG_CON_ABS, "disc" },     { NL_CHENG_CON_FIRE, "flower" },
                  { NL_CHENG_CON_PLAIN, "star" },   { NL_CHENG_CON_FIRE, "gradient" } };
-  int ncase = (int)param(R->man, "cases", 6), size = (int)param(R->man, "size", 192);
-  int grid = (int)param(R->man, "grid", 64);
-  double range = param(R->man, "amp_range", 4);
+  int ncase = (int)oracle_param(R->man, "cases", 6), size = (int)oracle_param(R->man, "size", 192);
+  int grid = (int)oracle_param(R->man, "grid", 64);
+  double range = oracle_param(R->man, "amp_range", 4);
   char group[6][48];
   const char *labels[30];
   for (int i = 0; i < ncase; i++) {
@@ -372,14 +335,14 @@ static void c8(run *R)
   const char *pats[3] = { "torus", "ball", "slab" };
   const char *labels[8] = { "D xy", "c xy", "c xy str", "rand xy", "D xz", "c xz", "c xz str",
                             "rand xz" };
-  int size = (int)param(R->man, "size", 160), grid = (int)param(R->man, "grid", 16);
+  int size = (int)oracle_param(R->man, "size", 160), grid = (int)oracle_param(R->man, "grid", 16);
   nl_cheng3_config c = nl_cheng3_config_default();
-  c.w1 = param(R->man, "w1", c.w1);
-  c.w2 = param(R->man, "w2", c.w2);
-  c.octaves = (int)param(R->man, "octaves", c.octaves);
-  c.f1 = param(R->man, "f1", c.f1);
-  c.sched.n_temps = (int)param(R->man, "temps", c.sched.n_temps);
-  c.sched.moves_per_var = param(R->man, "moves_per_var", c.sched.moves_per_var);
+  c.w1 = oracle_param(R->man, "w1", c.w1);
+  c.w2 = oracle_param(R->man, "w2", c.w2);
+  c.octaves = (int)oracle_param(R->man, "octaves", c.octaves);
+  c.f1 = oracle_param(R->man, "f1", c.f1);
+  c.sched.n_temps = (int)oracle_param(R->man, "temps", c.sched.n_temps);
+  c.sched.moves_per_var = oracle_param(R->man, "moves_per_var", c.sched.moves_per_var);
   double *v = malloc((size_t)size * size * sizeof *v);
   for (int p = 0; p < 3; p++) {
     char file[64], title[128];
@@ -435,7 +398,7 @@ int main(int argc, char **argv)
     return 2;
   }
   R.man = man;
-  const char *seed_text = manifest_value(man, "seed");
+  const char *seed_text = oracle_manifest_value(man, "seed");
   R.seed = nl_seed_replicate(seed_text ? strtoul(seed_text, NULL, 10) : 1, 0);
   int rc = 0;
   if (!strcmp(argv[1], "c2")) {

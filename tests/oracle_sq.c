@@ -39,28 +39,9 @@
 
 #define SLICE_Z (64.0 / 3.0) /* the S and Perlin panels' plane (NL_STUDY_SLICE_Z) */
 
-static const char *manifest_value(const nl_table *m, const char *key)
-{
-  for (size_t i = 0; i < m->nrows; i++)
-    if (!strcmp(nl_table_text(m, i, "key"), key)) return nl_table_text(m, i, "value");
-  return NULL;
-}
-
-/* A parameter from the manifest's "param NAME=VALUE" lines, else def. */
-static double param(const nl_table *m, const char *name, double def)
-{
-  size_t len = strlen(name);
-  for (size_t i = 0; i < m->nrows; i++) {
-    const char *v = nl_table_text(m, i, "value");
-    if (!strcmp(nl_table_text(m, i, "key"), "param") && v && !strncmp(v, name, len) && v[len] == '=')
-      return strtod(v + len + 1, NULL);
-  }
-  return def;
-}
-
 static unsigned long run_seed(const nl_table *m)
 {
-  const char *s = manifest_value(m, "seed");
+  const char *s = oracle_manifest_value(m, "seed");
   return s ? strtoul(s, NULL, 10) : 1;
 }
 
@@ -238,8 +219,8 @@ static int fig_close(fig *f, int n, const char *const *labels)
 
 static int check_s4(const char *dir, const nl_table *man)
 {
-  int w = (int)param(man, "size", 128), oct = (int)param(man, "octaves", 6);
-  double s = param(man, "stripes", 1), extent = param(man, "extent", 4);
+  int w = (int)oracle_param(man, "size", 128), oct = (int)oracle_param(man, "octaves", 6);
+  double s = oracle_param(man, "stripes", 1), extent = oracle_param(man, "extent", 4);
   const double amps[4] = {0, 0.25, 0.5, 1.0};
   const char *labels[4] = {"(a) a = 0", "(b) a = 0.25", "(c) a = 0.5", "(d) a = 1"};
   fig f;
@@ -274,8 +255,8 @@ static int check_s4(const char *dir, const nl_table *man)
 
 static int check_q1(const char *dir, const nl_table *man)
 {
-  int w = (int)param(man, "size", 96), M = (int)param(man, "M", 50);
-  double lambda = param(man, "lambda", 4), extent = 4.0;
+  int w = (int)oracle_param(man, "size", 96), M = (int)oracle_param(man, "M", 50);
+  double lambda = oracle_param(man, "lambda", 4), extent = 4.0;
   const char *labels[6] = {"F1", "F2", "F3", "F4", "F2 - F1", "F1 paper rule"};
   fig f;
   if (fig_open(&f, dir, "planes.png", 6, w, labels, 3, "F_i on z = 0.5")) return 1;
@@ -304,8 +285,8 @@ static int check_q1(const char *dir, const nl_table *man)
 
 static int check_q2(const char *dir, const nl_table *man)
 {
-  int w = (int)param(man, "size", 96);
-  double extent = param(man, "extent", 4), pf = param(man, "perlin_freq", 2);
+  int w = (int)oracle_param(man, "size", 96);
+  double extent = oracle_param(man, "extent", 4), pf = oracle_param(man, "perlin_freq", 2);
   const char *labels[6] = {"Perlin noise", "F1", "F2 - F1", "F1F2", "F2 - F1 - F1F1", "F1F2 + F2F3"};
   fig f;
   if (fig_open(&f, dir, "colour.png", 6, w, labels, 3, "Fig. 2: spline colour map")) return 1;
@@ -335,8 +316,8 @@ static int check_q2(const char *dir, const nl_table *man)
 
 static int check_q3(const char *dir, const nl_table *man)
 {
-  int w = (int)param(man, "size", 96), top = (int)param(man, "octaves", 4);
-  double extent = param(man, "extent", 2), k = param(man, "k", 3), amp = param(man, "amp", 0.05);
+  int w = (int)oracle_param(man, "size", 96), top = (int)oracle_param(man, "octaves", 4);
+  double extent = oracle_param(man, "extent", 2), k = oracle_param(man, "k", 3), amp = oracle_param(man, "amp", 0.05);
   const double L[3] = {-0.5, 0.5, 0.70710678118654752};
   int n = top + 2;
   if (n > 8) {
@@ -460,8 +441,8 @@ static nl_image *q4_wood(const q4_run *q, const nl_texture_wood *wd, const doubl
 
 static int check_q4(const char *dir, const nl_table *man)
 {
-  q4_run q = {(int)param(man, "size", 96), (int)param(man, "octaves", 4), param(man, "k", 2), 2.0, 0, NULL, {{0}}};
-  double rings = param(man, "wood_rings", 6), turb = param(man, "wood_turb", 8);
+  q4_run q = {(int)oracle_param(man, "size", 96), (int)oracle_param(man, "octaves", 4), oracle_param(man, "k", 2), 2.0, 0, NULL, {{0}}};
+  double rings = oracle_param(man, "wood_rings", 6), turb = oracle_param(man, "wood_turb", 8);
   q.seed = nl_seed_replicate(run_seed(man), 0);
   q.c = table(4.0, 50, NL_COUNT_INVERSE_CDF, q.seed);
   nl_noise_perm3_seed(&q.p, q.seed);

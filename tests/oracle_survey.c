@@ -27,26 +27,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *manifest_value(const nl_table *m, const char *key)
-{
-  for (size_t i = 0; i < m->nrows; i++)
-    if (!strcmp(nl_table_text(m, i, "key"), key)) return nl_table_text(m, i, "value");
-  return NULL;
-}
-
-/* A parameter from the manifest's "param NAME=VALUE" lines (round-trip
- * doubles), else def. */
-static double param(const nl_table *m, const char *name, double def)
-{
-  size_t len = strlen(name);
-  for (size_t i = 0; i < m->nrows; i++) {
-    const char *v = nl_table_text(m, i, "value");
-    if (!strcmp(nl_table_text(m, i, "key"), "param") && v && !strncmp(v, name, len) && v[len] == '=')
-      return strtod(v + len + 1, NULL);
-  }
-  return def;
-}
-
 typedef struct {
   int n;              /* octaves */
   double gain, lac;
@@ -81,9 +61,9 @@ static void mean_sd(const double *v, size_t n, double *m, double *sd)
 static int check_montage(const char *dir, const char *file, const char *title, int n, const char *const *labels,
                          const sum_spec *specs, const nl_table *man)
 {
-  int w = (int)param(man, "size", 128);
-  double extent = param(man, "extent", 4), z = param(man, "z", 64.0 / 3);
-  const char *seed_text = manifest_value(man, "seed");
+  int w = (int)oracle_param(man, "size", 128);
+  double extent = oracle_param(man, "extent", 4), z = oracle_param(man, "z", 64.0 / 3);
+  const char *seed_text = oracle_manifest_value(man, "seed");
   unsigned long seed = seed_text ? strtoul(seed_text, NULL, 10) : 1;
   int ws[8], hs[8], bad = 0;
   for (int i = 0; i < n; i++) ws[i] = hs[i] = w;
@@ -155,7 +135,7 @@ int main(int argc, char **argv)
   } else if (!strcmp(argv[1], "s2")) {
     bad = octave_series(dir, "turbulence", "turbulence(p) = sum |noise(2^j p)| / 2^j", 1, man);
   } else if (!strcmp(argv[1], "s3")) {
-    int oct = (int)param(man, "octaves", 6);
+    int oct = (int)oracle_param(man, "octaves", 6);
     const double gains[5] = {0, 0.25, 0.5, 0.75, 1.0}, lacs[5] = {0.5, 1, 2, 4, 8};
     char gl[5][32], ll[5][32];
     const char *gp[5], *lp[5];
