@@ -175,4 +175,19 @@ static inline void oracle_stretch(const double *v, size_t n, double *lo, double 
   free(c);
 }
 
+/* A run folder's table `file` (read as text), or NULL after "PROG: message"
+ * on stderr: the oracles' input errors (exit 2). */
+static inline nl_table *oracle_read_table(const char *prog, const char *dir, const char *file)
+{
+  char path[1200];
+  nl_table *t = NULL;
+  nl_error err;
+  snprintf(path, sizeof path, "%s/%s", dir, file);
+  if (nl_table_read(path, NL_TABLE_TEXT, &t, &err)) {
+    fprintf(stderr, "%s: %s\n", prog, err.msg);
+    return NULL;
+  }
+  return t;
+}
+
 #endif

@@ -703,14 +703,8 @@ int main(int argc, char **argv)
     return 2;
   }
   const char *dir = argv[2];
-  char mp[1024];
-  snprintf(mp, sizeof mp, "%s/manifest.tsv", dir);
-  nl_table *man = NULL;
-  nl_error err;
-  if (nl_table_read(mp, NL_TABLE_TEXT, &man, &err)) {
-    fprintf(stderr, "oracle_al: %s\n", err.msg);
-    return 2;
-  }
+  nl_table *man = oracle_read_table("oracle_al", dir, "manifest.tsv");
+  if (!man) return 2;
   int bad;
   if (!strcmp(argv[1], "a2")) bad = check_a2(dir, man);
   else if (!strcmp(argv[1], "a4")) bad = check_a4(dir, man);

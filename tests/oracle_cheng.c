@@ -449,13 +449,9 @@ int main(int argc, char **argv)
     return 2;
   }
   run rn = { .dir = argv[2] };
-  char mp[1024], tp[1024];
-  snprintf(mp, sizeof mp, "%s/manifest.tsv", rn.dir);
-  snprintf(tp, sizeof tp, "%s/tables.tsv", rn.dir);
-  nl_table *man = NULL, *tabs = NULL;
-  nl_error err;
-  if (nl_table_read(mp, NL_TABLE_TEXT, &man, &err) || nl_table_read(tp, NL_TABLE_TEXT, &tabs, &err)) {
-    fprintf(stderr, "oracle_cheng: %s\n", err.msg);
+  nl_table *man = oracle_read_table("oracle_cheng", rn.dir, "manifest.tsv");
+  nl_table *tabs = man ? oracle_read_table("oracle_cheng", rn.dir, "tables.tsv") : NULL;
+  if (!tabs) {
     nl_table_free(man);
     return 2;
   }

@@ -389,14 +389,8 @@ int main(int argc, char **argv)
     return 2;
   }
   run R = { NULL, argv[2], 0, "", 0 };
-  char mp[1200];
-  snprintf(mp, sizeof mp, "%s/manifest.tsv", R.dir);
-  nl_table *man = NULL;
-  nl_error err;
-  if (nl_table_read(mp, NL_TABLE_TEXT, &man, &err)) {
-    fprintf(stderr, "oracle_chengb: %s\n", err.msg);
-    return 2;
-  }
+  nl_table *man = oracle_read_table("oracle_chengb", R.dir, "manifest.tsv");
+  if (!man) return 2;
   R.man = man;
   const char *seed_text = oracle_manifest_value(man, "seed");
   R.seed = nl_seed_replicate(seed_text ? strtoul(seed_text, NULL, 10) : 1, 0);

@@ -529,14 +529,8 @@ int main(int argc, char **argv)
     return 2;
   }
   const char *dir = argv[2];
-  char mp[1024];
-  snprintf(mp, sizeof mp, "%s/manifest.tsv", dir);
-  nl_table *man = NULL;
-  nl_error err;
-  if (nl_table_read(mp, NL_TABLE_TEXT, &man, &err)) {
-    fprintf(stderr, "oracle_sq: %s\n", err.msg);
-    return 2;
-  }
+  nl_table *man = oracle_read_table("oracle_sq", dir, "manifest.tsv");
+  if (!man) return 2;
   int bad;
   if (!strcmp(argv[1], "s4")) bad = check_s4(dir, man);
   else if (!strcmp(argv[1], "q1")) bad = check_q1(dir, man);

@@ -121,14 +121,8 @@ int main(int argc, char **argv)
     return 2;
   }
   const char *dir = argv[2];
-  char mp[1024];
-  snprintf(mp, sizeof mp, "%s/manifest.tsv", dir);
-  nl_table *man = NULL;
-  nl_error err;
-  if (nl_table_read(mp, NL_TABLE_TEXT, &man, &err)) {
-    fprintf(stderr, "oracle_survey: %s\n", err.msg);
-    return 2;
-  }
+  nl_table *man = oracle_read_table("oracle_survey", dir, "manifest.tsv");
+  if (!man) return 2;
   int bad = 0;
   if (!strcmp(argv[1], "s1")) {
     bad = octave_series(dir, "fractal", "fractal_sum(p) = sum noise(2^j p) / 2^j", 0, man);
