@@ -106,7 +106,8 @@ int main(int argc, char **argv)
                       (int)c.climbs_over);
     }
     long printed, dropped;
-    unsigned long pts = nl_seed_stream(nl_seed_replicate(seed0, s), "a1.points", (unsigned long)nmax);
+    unsigned long pts =
+        nl_seed_stream(nl_seed_replicate(seed0, s), "a1.points", (unsigned long)nmax);
     a1_printed_over(&p, nmax, points, pts, &printed, &dropped);
     nl_table_append(pt, "iiiii", s, nmax, (int)points, (int)printed, (int)dropped);
     nl_harness_progress(r, (double)(s + 1) / seeds, "climbs");

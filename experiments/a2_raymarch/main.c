@@ -62,11 +62,7 @@ int main(int argc, char **argv)
   for (int i = 0; i < NROWS; i++) paper[i] = paper_ms[i][0] / paper_ms[i][1];
 
   /* Does the evaluation ratio depend on the image size? Sizes size/16 ... size. */
-  int sizes[4], nsizes = 0;
-  for (int d = 16; d >= 1; d /= 2) {
-    int z = s->width / d;
-    if (d != 2 && z >= 8 && (nsizes == 0 || z > sizes[nsizes - 1])) sizes[nsizes++] = z;
-  }
+  int sizes[4], nsizes = a2_smoke_check_sizes(s->width, sizes);
   nl_table *sizet;
   int sweep_size = a2_smoke_size_check(r, &sc, check_slope, NCHECK, sizes, nsizes, label, NROWS,
                                        sweep_seeds, &sizet);

@@ -181,6 +181,16 @@ double a2_smoke_fit(const double *ours, const double *paper, int n, double *rms_
   return rss;
 }
 
+int a2_smoke_check_sizes(int width, int *sizes)
+{
+  int nsizes = 0;
+  for (int d = 16; d >= 1; d /= 2) {
+    int z = width / d;
+    if (d != 2 && z >= 8 && (nsizes == 0 || z > sizes[nsizes - 1])) sizes[nsizes++] = z;
+  }
+  return nsizes;
+}
+
 int a2_smoke_size_check(nl_harness *r, const a2_smoke_scene *sc, const double *slopes, int nslopes,
                         const int *sizes, int nsizes, const int *octaves, int n, int seeds,
                         nl_table **out)

@@ -78,6 +78,11 @@ void a2_smoke_curve(nl_harness *r, const a2_smoke_scene *sc, const int *octaves,
  * |ln ours - ln paper|. */
 double a2_smoke_fit(const double *ours, const double *paper, int n, double *rms_factor, int *worst);
 
+/* The image sizes of the size check: width / 16, / 8, / 4 and width itself,
+ * each at least 8 pixels and larger than the one before, into sizes[4].
+ * Returns their count. */
+int a2_smoke_check_sizes(int width, int *sizes);
+
 /* size_check.tsv: does the evaluation ratio depend on the image size? For
  * each slope and size (the last size is the reference), the untimed curve
  * over `seeds`: columns slope, size, octaves, eval_ratio, eval_ratio_sd,

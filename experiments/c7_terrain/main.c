@@ -48,7 +48,8 @@ int main(int argc, char **argv)
   double *h = nl_xmalloc((size_t)mesh * mesh * sizeof *h);
   double *hp = nl_xmalloc((size_t)PANEL * PANEL * sizeof *hp);
   nl_image *panels[NCOL * NPAT];
-  nl_table *tabs = nl_study_cheng_tables_alloc(1, labels); /* the figure's tables (tests/oracle_cheng.c) */
+  /* the figure's tables (tests/oracle_cheng.c) */
+  nl_table *tabs = nl_study_cheng_tables_alloc(1, labels);
   const char *plab[NCOL * NPAT];
   for (int i = 0; i < NPAT; i++) {
     nl_cheng_pattern *pat = nl_study_cheng_pattern(&s, names[i]);

@@ -37,7 +37,8 @@ int main(int argc, char **argv)
                              "sd_over_law_se", "seeds", NL_STUDY_SD_LAW_RULE, "independent",
                              "variances of uncorrelated octaves add; se: the standard error of "
                              "the ratio taken seed by seed");
-    nl_harness_verdict_control(r, "the same octaves at one frequency (one noise summed with itself)",
+    nl_harness_verdict_control(r,
+                               "the same octaves at one frequency (one noise summed with itself)",
                                "fractal_sd_control.tsv", ctl, i);
   }
   nl_harness_verdict_figure(r, "fractal sum at 1, 2, 3 and 8 octaves",
