@@ -157,3 +157,23 @@ void c9_random_gains(nl_cheng_config *c, unsigned long seed, int index)
   c->amp_vary = 0;
   gsl_rng_free(rng);
 }
+
+void c9_tables_write(nl_harness *r, const c9_tables *t, const c9_tables *b, const nl_table *tests)
+{
+  nl_harness_write_table(r, t->sum, "summary.tsv");
+  nl_harness_write_table(r, t->parts, "parts.tsv");
+  nl_harness_write_table(r, t->gains, "gains.tsv");
+  nl_harness_write_table(r, tests, "tests.tsv");
+  nl_harness_write_table(r, t->timing, "timing.tsv");
+  nl_harness_write_table(r, b->sum, "baselines.tsv");
+  nl_harness_write_table(r, b->parts, "baselines_parts.tsv");
+  nl_harness_check(r, "timing.tsv", "seconds_per_run", "ignore"); /* CPU time, not a result */
+}
+
+void c9_tables_free(c9_tables *t)
+{
+  nl_table_free(t->sum);
+  nl_table_free(t->parts);
+  nl_table_free(t->gains);
+  nl_table_free(t->timing);
+}

@@ -38,6 +38,13 @@ typedef struct {
 void c9_rows(const nl_study_cheng *s, const nl_cheng_config *c, const nl_cheng_eval *evs,
              const c9_tables *t, int nlabels, const char *const *labels, double *first_log_gain);
 
+/* The run's tables t, their controls b (only b's summary and parts are
+ * results: baselines.tsv, baselines_parts.tsv) and the Welch tests, in the
+ * order of the manifest; timing.tsv's CPU seconds are not checked. */
+void c9_tables_write(nl_harness *r, const c9_tables *t, const c9_tables *b, const nl_table *tests);
+/* Frees the four tables of t. */
+void c9_tables_free(c9_tables *t);
+
 /* The negative control of the verdicts: c's octave gains fixed at random,
  * log g_l uniform in [-ln R, ln R] (R = c->amp_range) from the stream
  * (seed, "c9.random_gains", index), amp_vary 0: the amplitudes change as

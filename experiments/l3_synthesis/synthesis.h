@@ -36,4 +36,12 @@ double l3_max_abs_diff(const nl_image *a, const nl_image *b);
 void l3_write_spectra(nl_harness *r, const char *name, const nl_image *ex,
                       const nl_image *syn, const nl_image *nohist);
 
+/* The variants of synthesis.c's exemplars, in ks.tsv's order: pca_hist (the
+ * paper's), pca_nohist, rgb_hist, pca_hist_fc, pca_hist_gauss33. */
+#define L3_NVAR 5
+/* Exemplar ex's variant v (kind names it) over the run's seeds: one row of
+ * kt (ks.tsv); returns the synthesis of the first seed (variants.c). */
+nl_image *l3_variant(nl_harness *r, nl_table *kt, const char *kind, int v, const nl_image *ex,
+                     int size);
+
 #endif

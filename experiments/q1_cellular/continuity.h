@@ -8,6 +8,7 @@
 #define Q1_CONTINUITY_H
 
 #include "cellular/nl_cellular.h"
+#include "q1.h"
 
 /* At `points` faces x = i (1 <= i < 999) at random (y, z) in [0, 1000)^2
  * (MT19937 from seed): F1..F4 at x = i -+ h/2 (nl_cellular_eval, or with
@@ -17,5 +18,10 @@
  * rounding). */
 void q1_face_jumps(const nl_cellular *c, int own, long points, unsigned long seed, double h,
                    long *jumps, double *max_ratio);
+
+/* Sec. 3.1's "F_i is a continuous function of x", across cube faces, for
+ * the paper's rule as written and for its control, the search without the
+ * 26 neighbouring cubes: continuity.tsv, the verdict, a paragraph. */
+void q1_continuity(q1 *q, unsigned long seed0);
 
 #endif

@@ -9,6 +9,7 @@
 
 #include "harness/nl_harness.h"
 #include "noise/nl_noise.h"
+#include "texture/nl_texture.h"
 
 typedef struct {
   nl_harness *r;
@@ -26,5 +27,17 @@ typedef struct {
 /* The report of Q4: the paper and our readings, the two tables, the three
  * figures (clouds.png, textures.png, wood.png). */
 void q4_report(const q4 *q);
+
+/* One texture over the seeds (textures.c): kind an nl_cellular_gctbf_texture,
+ * expr its GCTBF (NULL: Perlin's octaves), through ramp over [lo, hi] (NULL:
+ * eq. 7's cloud colours); appends label's mean and sd to q->t and returns
+ * the first seed's image. */
+nl_image *q4_texture(q4 *q, int kind, const char *label, const char *expr,
+                     const nl_texture_ramp *ramp, double lo, double hi);
+
+/* Per wood panel of q->wood, its dark bands through the ramp below those
+ * through the wood shader, with the shader without the GCTBF as control
+ * (verdicts.c): writes rings.tsv and returns it. */
+nl_table *q4_wood_verdicts(const q4 *q);
 
 #endif
