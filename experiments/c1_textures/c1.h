@@ -1,4 +1,5 @@
-/* c1.h - C1's cost table (cost.c) and report prose (report.c).
+/* c1.h - C1's cost table (cost.c), controls (control.c), figures
+ * (figures.c) and report prose (report.c).
  *
  * Cheng 2009 sec. 4.1 (Fig 4.1-4.4) shows cloud, marble, erosion and fire
  * textures, each from three control patterns with its own control term
@@ -36,6 +37,11 @@ void c1_claims_add(nl_table *t, const char *texture, int np, int k, const nl_che
  * unoptimised start table under config c on pat. */
 void c1_seams_start(const nl_study_cheng *s, nl_table *seams, const nl_cheng_config *c,
                     const nl_cheng_pattern *pat, const char *pattern);
+/* The alternative domain [0, 1]^2 (origin 0; nl_cheng.h READINGS): the n
+ * headline cases cs[2 i] (pattern pats[i], named names[i]) run again, the
+ * seams rows (texture, pattern, "optimised") of their first seed's tables. */
+void c1_seams_domain(const nl_study_cheng *s, nl_table *seams, int n, const nl_cheng_config *cs,
+                     nl_cheng_pattern *const *pats, const char *const *names);
 /* "Statistics kept" per texture: columns texture, tables, runs (patterns x
  * seeds), E_ks (mean), p_ks_min (the smallest KS p of the runs) and
  * p_uniform = min(1, runs p_ks_min) (Bonferroni: is any run non-uniform?).
@@ -43,6 +49,12 @@ void c1_seams_start(const nl_study_cheng *s, nl_table *seams, const nl_cheng_con
 nl_table *c1_uniform_alloc(void);
 void c1_uniform_add(nl_table *t, const char *texture, const char *tables, int np, int k,
                     const nl_cheng_eval *const *evs);
+/* "Statistics kept": per texture t, the headline cases cs[2 (t npat + j)]
+ * (evaluations evs, k per case) against the same cases optimised for E_Con
+ * alone (w1 = 0, run here on pats[t npat + j]); two uni rows per texture. */
+void c1_uniformity(const nl_study_cheng *s, nl_table *uni, int ntex, int npat,
+                   const nl_cheng_config *cs, nl_cheng_pattern *const *pats,
+                   const nl_cheng_eval *evs, int k);
 /* The verdicts: per headline case (ctl's rescaled rows) r against random
  * tables and E_Con against the flat image, each with its negative control
  * (bl rows 2q: the pattern shuffled, 2q + 1: the start tables, q the
@@ -53,6 +65,14 @@ void c1_uniform_add(nl_table *t, const char *texture, const char *tables, int np
 void c1_control_text(nl_harness *r, const nl_table *pooled, const nl_table *ctl,
                      const nl_table *bl, const nl_table *uni, const nl_table *seams);
 
+/* figures.c. Fig 4.1-4.4, one montage TEXTURE.png per texture t from its
+ * npat patterns' first-seed tables (headline firsts[2 i], literal
+ * firsts[2 i + 1], i = t npat + j): pattern | value on its own 0..1 scale |
+ * stretched | texture | the literal formula's value, with its caption
+ * (c1_figure_text). Frees the patterns pats[i]. */
+void c1_figures(nl_harness *r, int ntex, int npat, const nl_cheng_config *cs,
+                nl_noise_grad2 *const *firsts, nl_cheng_pattern **pats, const char *const *names,
+                const char *const *equation, int size);
 /* Texture t's figure (Fig 4.(t+1)): its caption, control term `con` by
  * equation `equation`, image `file`. */
 void c1_figure_text(nl_harness *r, int t, nl_cheng_con con, const char *equation, const char *file);

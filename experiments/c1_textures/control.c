@@ -94,3 +94,55 @@ void c1_uniform_add(nl_table *t, const char *texture, const char *tables, int np
   double n = (double)np * k, pu = n * pmin < 1 ? n * pmin : 1;
   nl_table_append(t, "ssdddd", texture, tables, n, e, pmin, pu);
 }
+
+void c1_seams_domain(const nl_study_cheng *s, nl_table *seams, int n, const nl_cheng_config *cs,
+                     nl_cheng_pattern *const *pats, const char *const *names)
+{
+  nl_cheng_config *c0 = nl_xmalloc((size_t)n * sizeof *c0);
+  const nl_cheng_pattern **p0 = nl_xmalloc((size_t)n * sizeof *p0);
+  nl_noise_grad2 **f0 = nl_xmalloc((size_t)n * sizeof *f0);
+  for (int i = 0; i < n; i++) {
+    c0[i] = cs[2 * i];
+    c0[i].origin = 0;
+    p0[i] = pats[i];
+  }
+  free(nl_study_cheng_runs(s, n, c0, p0, f0));
+  for (int i = 0; i < n; i++) {
+    const char *sl[3] = { nl_cheng_con_name(c0[i].con), names[i], "optimised" };
+    nl_study_cheng_seams_add(seams, 3, sl, (const nl_noise_grad2 *const *)&f0[i], 1, &c0[i], p0[i]);
+    nl_noise_grad2_free(f0[i]);
+  }
+  free(c0);
+  free(p0);
+  free(f0);
+}
+
+void c1_uniformity(const nl_study_cheng *s, nl_table *uni, int ntex, int npat,
+                   const nl_cheng_config *cs, nl_cheng_pattern *const *pats,
+                   const nl_cheng_eval *evs, int k)
+{
+  int nh = ntex * npat;
+  nl_cheng_config *cw = nl_xmalloc((size_t)nh * sizeof *cw);
+  const nl_cheng_pattern **pw = nl_xmalloc((size_t)nh * sizeof *pw);
+  for (int i = 0; i < nh; i++) {
+    cw[i] = cs[2 * i];
+    cw[i].w1 = 0;
+    pw[i] = pats[i];
+  }
+  nl_cheng_eval *ew = nl_study_cheng_runs(s, nh, cw, pw, NULL);
+  const nl_cheng_eval **e = nl_xmalloc((size_t)npat * sizeof *e);
+  const nl_cheng_eval **w = nl_xmalloc((size_t)npat * sizeof *w);
+  for (int t = 0; t < ntex; t++) {
+    for (int j = 0; j < npat; j++) {
+      e[j] = evs + (size_t)(2 * (t * npat + j)) * k;
+      w[j] = ew + (size_t)(t * npat + j) * k;
+    }
+    c1_uniform_add(uni, nl_cheng_con_name(cs[2 * npat * t].con), "optimised", npat, k, e);
+    c1_uniform_add(uni, nl_cheng_con_name(cs[2 * npat * t].con), "w1 = 0", npat, k, w);
+  }
+  free(e);
+  free(w);
+  free(cw);
+  free(pw);
+  free(ew);
+}

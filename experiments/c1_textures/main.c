@@ -10,12 +10,10 @@
 #include "study/nl_study_cheng.h"
 #include "harness/nl_harness.h"
 
-#include <stdio.h>
 #include <stdlib.h>
 
 #define NTEX 4
 #define NPAT 3
-#define NCOL 5 /* panels per pattern */
 
 /* Per texture, in nl_cheng_con's order (cloud, marble, erosion, fire): its
  * patterns and its control term's equation. */
@@ -54,6 +52,7 @@ int main(int argc, char **argv)
   nl_cheng_config cs[NCASE];
   nl_cheng_pattern *pats[NTEX * NPAT];
   const nl_cheng_pattern *pp[NCASE];
+  const char *names[NTEX * NPAT]; /* each headline case's pattern */
   nl_noise_grad2 *firsts[NCASE];
   nl_noise_grad2 **tables = nl_xmalloc((size_t)NCASE * (size_t)k * sizeof *tables);
   for (int i = 0; i < NTEX * NPAT; i++) {
@@ -61,7 +60,8 @@ int main(int argc, char **argv)
     cs[2 * i].con = (nl_cheng_con)(i / NPAT); /* eq. 3.8, 4.1, 4.2, 4.3 */
     cs[2 * i + 1] = cs[2 * i];
     cs[2 * i + 1].literal = 1;
-    pats[i] = nl_study_cheng_pattern(&s, patterns[i / NPAT][i % NPAT]);
+    names[i] = patterns[i / NPAT][i % NPAT];
+    pats[i] = nl_study_cheng_pattern(&s, names[i]);
     pp[2 * i] = pats[i];
     pp[2 * i + 1] = pats[i];
   }
@@ -92,49 +92,11 @@ int main(int argc, char **argv)
   c1_seams_start(&s, seams, &cs[0], pp[0], patterns[0][0]);
   /* The alternative domain [0, 1]^2 (origin 0; nl_cheng.h READINGS): the
    * headline cases again, the seams of their first seed's tables. */
-  {
-    enum { NH = NTEX * NPAT };
-    nl_cheng_config c0[NH];
-    const nl_cheng_pattern *p0[NH];
-    nl_noise_grad2 *f0[NH];
-    for (int i = 0; i < NH; i++) {
-      c0[i] = cs[2 * i];
-      c0[i].origin = 0;
-      p0[i] = pats[i];
-    }
-    free(nl_study_cheng_runs(&s, NH, c0, p0, f0));
-    for (int i = 0; i < NH; i++) {
-      const char *sl[3] = { nl_cheng_con_name(c0[i].con), patterns[i / NPAT][i % NPAT],
-                            "optimised" };
-      nl_study_cheng_seams_add(seams, 3, sl, (const nl_noise_grad2 *const *)&f0[i], 1, &c0[i],
-                               p0[i]);
-      nl_noise_grad2_free(f0[i]);
-    }
-  }
+  c1_seams_domain(&s, seams, NTEX * NPAT, cs, pats, names);
   /* "statistics kept": the headline cases' uniformity against the same
    * cases optimised for E_Con alone (w1 = 0) */
   nl_table *uni = c1_uniform_alloc();
-  {
-    enum { NH = NTEX * NPAT };
-    nl_cheng_config cw[NH];
-    const nl_cheng_pattern *pw[NH];
-    for (int i = 0; i < NH; i++) {
-      cw[i] = cs[2 * i];
-      cw[i].w1 = 0;
-      pw[i] = pats[i];
-    }
-    nl_cheng_eval *ew = nl_study_cheng_runs(&s, NH, cw, pw, NULL);
-    for (int t = 0; t < NTEX; t++) {
-      const nl_cheng_eval *e[NPAT], *w[NPAT];
-      for (int j = 0; j < NPAT; j++) {
-        e[j] = evs + (size_t)(2 * (t * NPAT + j)) * k;
-        w[j] = ew + (size_t)(t * NPAT + j) * k;
-      }
-      c1_uniform_add(uni, nl_cheng_con_name(cs[2 * NPAT * t].con), "optimised", NPAT, k, e);
-      c1_uniform_add(uni, nl_cheng_con_name(cs[2 * NPAT * t].con), "w1 = 0", NPAT, k, w);
-    }
-    free(ew);
-  }
+  c1_uniformity(&s, uni, NTEX, NPAT, cs, pats, evs, k);
   /* pooled over each texture's patterns (no verdict: each pattern decides) */
   for (int t = 0; t < NTEX; t++) {
     const nl_cheng_eval *e[NPAT];
@@ -159,33 +121,7 @@ int main(int argc, char **argv)
   nl_table_free(tabs);
   /* Fig 4.1-4.4, one montage per texture, first seed: pattern | value on its
    * own 0..1 scale | stretched | texture | the literal formula's value. */
-  for (int t = 0; t < NTEX; t++) {
-    nl_cheng_config c = cs[2 * NPAT * t];
-    nl_cheng_config cl = cs[2 * NPAT * t + 1];
-    const char *name = nl_cheng_con_name(c.con);
-    nl_image *panels[NCOL * NPAT];
-    const char *plab[NCOL * NPAT];
-    for (int j = 0; j < NPAT; j++) {
-      int i = t * NPAT + j;
-      nl_noise_grad2 *first = firsts[2 * i];
-      nl_noise_grad2 *lit = firsts[2 * i + 1];
-      nl_image **p = panels + NCOL * j;
-      p[0] = nl_study_cheng_pattern_panel(pats[i], size);
-      p[1] = nl_study_cheng_value_image_raw(first, &c, size);
-      p[2] = nl_study_cheng_value_image(first, &c, size);
-      p[3] = nl_study_cheng_texture_image(first, &c, size);
-      p[4] = nl_study_cheng_value_image(lit, &cl, size);
-      const char *pl[NCOL] = { patterns[t][j], "c, raw 0..1", "c, stretched", name, "literal c" };
-      for (int q = 0; q < NCOL; q++) plab[NCOL * j + q] = pl[q];
-      nl_cheng_pattern_free(pats[i]);
-      nl_harness_progress(r, (i + 1.0) / (NTEX * NPAT), name);
-    }
-    char title[96], file[64];
-    snprintf(title, sizeof title, "Fig 4.%d: %s (%s)", t + 1, name, equation[t]);
-    snprintf(file, sizeof file, "%s.png", name);
-    nl_study_cheng_montage(r, panels, plab, NCOL * NPAT, NCOL, title, file);
-    c1_figure_text(r, t, c.con, equation[t], file);
-  }
+  c1_figures(r, NTEX, NPAT, cs, firsts, pats, names, equation, size);
   nl_harness_write_table(r, sum, "summary.tsv");
   nl_harness_write_table(r, ctl, "control.tsv");
   nl_harness_write_table(r, claims, "pooled.tsv");

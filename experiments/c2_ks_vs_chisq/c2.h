@@ -28,6 +28,11 @@ nl_table *c2_own_alloc(void);
  * returns the new row. */
 size_t c2_own_add(nl_table *own, const nl_table *sum, size_t row, const char *pattern,
                   const char *objective, const char *statistic);
+/* Pattern p's own-statistic verdicts, each followed by its Kuiper control,
+ * from summary rows ks, chi and ku (the KS, chi-square and Kuiper
+ * objectives); appends their rows to own. */
+void c2_own_verdicts(nl_harness *r, nl_table *own, const nl_table *sum, const char *p, size_t ks,
+                     size_t chi, size_t ku);
 
 /* The thesis's claim, our setting and the summary table. */
 void c2_intro_text(nl_harness *r, const nl_table *sum, const char *const *pats,

@@ -1,4 +1,5 @@
-/* c3.h - C3's report prose (report.c).
+/* c3.h - C3's report prose (report.c), trend test (trend.c) and
+ * first-seed tables (tables.c).
  *
  * Cheng 2009 sec. 4.3.1 (Fig 4.7) optimises the controlled fractal sum at
  * starting frequencies f1 = 2, 4, 6, 8 (eq. 3.10: f_l = f1 2^(l-1)) and says
@@ -23,6 +24,11 @@ void c3_result_text(nl_harness *r, const nl_table *sum, const double *f1s, int n
 nl_table *c3_trend_test_alloc(void);
 void c3_trend_test_add(nl_table *t, const char *tables, const double *f1, const double *rough,
                        size_t n, int nperm, unsigned long seed);
+/* Both rows: the optimised runs' no (f1, roughness) pairs (xo, yo) and the
+ * random tables' nr (xr, yr), each permuted from its own stream "c3.trend"
+ * of the run's seed. */
+void c3_trend_tests(nl_table *t, const double *xo, const double *yo, size_t no, const double *xr,
+                    const double *yr, size_t nr, int nperm, unsigned long seed);
 /* Roughness (nl_cheng_evaluate) of n random tables under config c, table j
  * seeded nl_seed_stream(seed, "c3.random_table", j), on `threads`. */
 void c3_random_roughness(const nl_cheng_config *c, const nl_cheng_pattern *pat, unsigned long seed,
@@ -42,5 +48,19 @@ void c3_trend_text(nl_harness *r, const nl_table *tt, const nl_table *per_f1);
  * image) and its negative controls (bl rows 0: the pattern shuffled, 1: the
  * start tables), two verdicts. */
 void c3_low_text(nl_harness *r, const nl_table *ctl, const nl_table *bl);
+
+/* tables.c. Writes tables.tsv: the n first-seed tables, one per f1s[i]
+ * (tests/oracle_cheng.c reads them). */
+void c3_tables_write(nl_harness *r, const double *f1s, nl_noise_grad2 *const *firsts, int n);
+/* Appends the seams rows (f1, "optimised") of the n tables firsts[i] under
+ * cs[i] on pat, then frees the tables. */
+void c3_seams_add(nl_table *seams, const double *f1s, const nl_cheng_config *cs,
+                  nl_noise_grad2 **firsts, int n, const nl_cheng_pattern *pat);
+/* The control row (ctl) and negative controls (bl) of the lowest f1's runs
+ * evs (config c, its k tables `tables`) against nrand random tables, seeded
+ * from the stream "c3.random_r". */
+void c3_low_control(const nl_study_cheng *s, nl_table *ctl, nl_table *bl, const nl_cheng_config *c,
+                    const nl_cheng_pattern *pat, const nl_cheng_eval *evs,
+                    nl_noise_grad2 *const *tables, int nrand, double f1);
 
 #endif

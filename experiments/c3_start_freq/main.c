@@ -50,28 +50,13 @@ int main(int argc, char **argv)
   for (int i = 0; i < NF; i++) firsts[i] = nl_noise_grad2_alloc(base.m);
   for (int i = 0; i < NF; i++) nl_noise_grad2_copy(firsts[i], tables[(size_t)i * k]);
   /* the first seed's tables behind the figure (tests/oracle_cheng.c) */
-  nl_table *tabs = nl_study_cheng_tables_alloc(1, labels);
-  for (int i = 0; i < NF; i++) {
-    char f[32];
-    nl_table_format_double(f, f1s[i]);
-    const char *l[1] = { f };
-    nl_study_cheng_tables_add(tabs, 1, l, firsts[i]);
-  }
-  nl_harness_write_table(r, tabs, "tables.tsv");
-  nl_table_free(tabs);
+  c3_tables_write(r, f1s, firsts, NF);
   /* "we can even control the lower frequency appearance": the lowest f1's
    * value against its pattern (r against random tables, E_Con against the
    * flat image), with the negative controls of nl_study_cheng_baselines_add */
   nl_table *ctl = nl_study_cheng_control_alloc(1, (const char *const[]){ "f1" });
   nl_table *bl = nl_study_cheng_control_alloc(2, (const char *const[]){ "f1", "baseline" });
-  {
-    char f[32];
-    nl_table_format_double(f, f1s[0]);
-    const char *l[1] = { f };
-    unsigned long cseed = nl_seed_stream(nl_harness_seed(r), "c3.random_r", 0);
-    nl_study_cheng_control_add(&s, ctl, 1, l, &cs[0], pat, evs, nrand_r, cseed, NULL);
-    nl_study_cheng_baselines_add(&s, bl, 2, l, &cs[0], pat, tables, nrand_r, cseed);
-  }
+  c3_low_control(&s, ctl, bl, &cs[0], pat, evs, tables, nrand_r, f1s[0]);
   for (size_t i = 0; i < (size_t)NF * k; i++) nl_noise_grad2_free(tables[i]);
   free(tables);
   /* the alternative domain [0, 1]^2 (origin 0; nl_cheng.h READINGS): the
@@ -131,18 +116,8 @@ int main(int argc, char **argv)
     nl_noise_grad2_free(firsts[i]);
     nl_harness_progress(r, (i + 1.0) / NF, "f1");
   }
-  for (int i = 0; i < NF; i++) {
-    char f[32];
-    nl_table_format_double(f, f1s[i]);
-    const char *sl[2] = { f, "optimised" };
-    nl_study_cheng_seams_add(seams, 2, sl, (const nl_noise_grad2 *const *)&firsts0[i], 1, &cs0[i],
-                             pat);
-    nl_noise_grad2_free(firsts0[i]);
-  }
-  c3_trend_test_add(tt, "optimised", xo, yo, (size_t)NF * k, nperm,
-                    nl_seed_stream(nl_harness_seed(r), "c3.trend", 0));
-  c3_trend_test_add(tt, "random", xr, yr, (size_t)NF * nrand, nperm,
-                    nl_seed_stream(nl_harness_seed(r), "c3.trend", 1));
+  c3_seams_add(seams, f1s, cs0, firsts0, NF, pat);
+  c3_trend_tests(tt, xo, yo, (size_t)NF * k, xr, yr, (size_t)NF * nrand, nperm, nl_harness_seed(r));
   for (int i = 0; i < 2 * COLS; i++) labp[i] = lab[i];
   nl_study_cheng_montage(r, panels, labp, 2 * COLS, COLS,
                          "Fig 4.7: starting frequency f1 (first seed)", "panels.png");

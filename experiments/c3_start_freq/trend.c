@@ -85,3 +85,10 @@ void c3_per_f1_add(nl_table *t, double f1, const double *opt, int k, const doubl
     p = mo == mr ? 1 : 0; /* no spread on either side: nothing to test */
   nl_table_append(t, "ddddddddd", f1, (double)k, mo, so, (double)n, mr, sr, mo / mr, p);
 }
+
+void c3_trend_tests(nl_table *t, const double *xo, const double *yo, size_t no, const double *xr,
+                    const double *yr, size_t nr, int nperm, unsigned long seed)
+{
+  c3_trend_test_add(t, "optimised", xo, yo, no, nperm, nl_seed_stream(seed, "c3.trend", 0));
+  c3_trend_test_add(t, "random", xr, yr, nr, nperm, nl_seed_stream(seed, "c3.trend", 1));
+}

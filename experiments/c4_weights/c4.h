@@ -30,6 +30,16 @@ typedef struct {
  * by pointer. */
 void c4_case_set(nl_cheng_config *c, c4_case *w, const char *reading, const char *panel, double w1,
                  double w2);
+/* The 2 npair + nsweep cases, each from base: Table 4.1's pairs printed at
+ * cases 0, 2, 4, ... and swapped at 1, 3, 5, ... (panel panel_name[i]),
+ * then the sweep, log-spaced in w1 / w2 = rhos[j] from lo to hi with
+ * w1 + w2 = 1 (rhos filled here). */
+void c4_cases_set(nl_cheng_config *cs, c4_case *wc, const nl_cheng_config *base,
+                  const c4_thesis_row *thesis, const char *const *panel_name, int npair, double lo,
+                  double hi, int nsweep, double *rhos);
+/* Writes tables.tsv: the first seed's tables of the n cases wc behind
+ * Fig 4.8 (tests/oracle_cheng.c reads them). */
+void c4_tables_write(nl_harness *r, const c4_case *wc, nl_noise_grad2 *const *firsts, int n);
 /* Fig 4.8 as textures.png: the pattern, then the first seed's controlled
  * value per pair on its own 0..1 scale (no display stretch); top row the
  * printed pairs (firsts[2i]), bottom the swapped ones (firsts[2i + 1]). */

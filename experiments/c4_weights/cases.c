@@ -1,8 +1,10 @@
-/* C4's runs: a case of Table 4.1 or the sweep as weights and labels, and
- * Fig 4.8 from the first seed of each pair (Cheng 2009 sec. 4.3.2). */
+/* C4's runs: a case of Table 4.1 or the sweep as weights and labels, every
+ * case of the run, and Fig 4.8 and its tables from the first seed of each
+ * pair (Cheng 2009 sec. 4.3.2). */
 #include "c4.h"
 #include "harness/nl_harness.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -20,6 +22,33 @@ void c4_case_set(nl_cheng_config *c, c4_case *w, const char *reading, const char
   w->lab[1] = panel;
   w->lab[2] = w->txt[0];
   w->lab[3] = w->txt[1];
+}
+
+void c4_cases_set(nl_cheng_config *cs, c4_case *wc, const nl_cheng_config *base,
+                  const c4_thesis_row *thesis, const char *const *panel_name, int npair, double lo,
+                  double hi, int nsweep, double *rhos)
+{
+  for (int q = 0; q < 2 * npair + nsweep; q++) {
+    cs[q] = *base;
+    if (q < 2 * npair) {
+      int i = q / 2, sw = q % 2;
+      double w1 = thesis[i][sw ? 2 : 0], w2 = thesis[i][sw ? 0 : 2];
+      c4_case_set(&cs[q], &wc[q], sw ? "swapped" : "printed", panel_name[i], w1, w2);
+    } else {
+      int j = q - 2 * npair;
+      double rho = rhos[j] = lo * pow(hi / lo, (double)j / (nsweep - 1));
+      c4_case_set(&cs[q], &wc[q], "sweep", "-", rho / (1 + rho), 1 / (1 + rho));
+    }
+  }
+}
+
+void c4_tables_write(nl_harness *r, const c4_case *wc, nl_noise_grad2 *const *firsts, int n)
+{
+  const char *tl[] = { "reading", "panel" };
+  nl_table *tabs = nl_study_cheng_tables_alloc(2, tl);
+  for (int q = 0; q < n; q++) nl_study_cheng_tables_add(tabs, 2, wc[q].lab, firsts[q]);
+  nl_harness_write_table(r, tabs, "tables.tsv");
+  nl_table_free(tabs);
 }
 
 void c4_fig48(nl_harness *r, const nl_cheng_pattern *pat, nl_noise_grad2 *const *firsts,

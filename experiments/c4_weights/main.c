@@ -9,7 +9,6 @@
 #include "study/nl_study_cheng.h"
 #include "harness/nl_harness.h"
 
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -86,19 +85,8 @@ int main(int argc, char **argv)
   nl_noise_grad2 **firsts = nl_xmalloc((size_t)n * sizeof *firsts);
   c4_case *wc = nl_xmalloc((size_t)n * sizeof *wc);
   double *rhos = nl_xmalloc((size_t)nsweep * sizeof *rhos);
-  for (int q = 0; q < n; q++) {
-    cs[q] = base;
-    pp[q] = pat;
-    if (q < 2 * NPAIR) {
-      int i = q / 2, sw = q % 2;
-      double w1 = thesis[i][sw ? 2 : 0], w2 = thesis[i][sw ? 0 : 2];
-      c4_case_set(&cs[q], &wc[q], sw ? "swapped" : "printed", panel_name[i], w1, w2);
-    } else {
-      int j = q - 2 * NPAIR;
-      double rho = rhos[j] = lo * pow(hi / lo, (double)j / (nsweep - 1));
-      c4_case_set(&cs[q], &wc[q], "sweep", "-", rho / (1 + rho), 1 / (1 + rho));
-    }
-  }
+  c4_cases_set(cs, wc, &base, thesis, panel_name, NPAIR, lo, hi, nsweep, rhos);
+  for (int q = 0; q < n; q++) pp[q] = pat;
   nl_noise_grad2 **tables = nl_xmalloc((size_t)n * (size_t)k * sizeof *tables);
   nl_cheng_eval *evs = nl_study_cheng_runs_tables(&s, n, cs, pp, tables);
   for (int q = 0; q < n; q++) firsts[q] = tables[(size_t)q * k];
@@ -107,14 +95,7 @@ int main(int argc, char **argv)
   for (int q = 0; q < n; q++)
     nl_study_cheng_rows_add(&s, q < 2 * NPAIR ? tab : sweep, 4, wc[q].lab, evs + (size_t)q * k);
   c4_fig48(r, pat, firsts, NPAIR, &base);
-  {
-    /* the first seed's tables behind Fig 4.8 (tests/oracle_cheng.c) */
-    const char *tl[] = { "reading", "panel" };
-    nl_table *tabs = nl_study_cheng_tables_alloc(2, tl);
-    for (int q = 0; q < 2 * NPAIR; q++) nl_study_cheng_tables_add(tabs, 2, wc[q].lab, firsts[q]);
-    nl_harness_write_table(r, tabs, "tables.tsv");
-    nl_table_free(tabs);
-  }
+  c4_tables_write(r, wc, firsts, 2 * NPAIR);
   c4_seams_domain(&s, cs, pat, firsts, NPAIR);
   nl_table *trend = c4_trend(&s, &base, pat, sweep, tables + (size_t)2 * NPAIR * k, rhos, nsweep);
   for (size_t q = 0; q < (size_t)n * k; q++) nl_noise_grad2_free(tables[q]);
