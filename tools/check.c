@@ -31,7 +31,9 @@
  *   ; reference made elsewhere: architecture other (reference x86_64, this
  *     run aarch64), libm other (reference glibc 2.36 fma, this run ...)
  * A new table that is missing or that the table reader refuses (a NUL byte,
- * a ragged row) is drift, its line naming the reader's complaint.
+ * a ragged row) is drift, its line naming the reader's complaint; so is a
+ * table the new run wrote that the committed folder lacks (one deleted by
+ * hand would otherwise compare nothing).
  * Exit 0: no drift; 1: drift; 2: bad input (missing folder or manifest,
  * unreadable committed table, malformed rule, or a rule naming a table or
  * column the committed folder does not have).

@@ -344,6 +344,30 @@ static void note_elsewhere(nl_harness_check_state *s, const nl_table *ref, const
   }
 }
 
+/* A table the new run wrote that the reference folder lacks is drift too: a
+ * committed table deleted by hand (or never committed) would otherwise
+ * compare nothing and pass, while the same table missing from the new run
+ * fails. The new run's own manifest is not consulted: its folder holds only
+ * what it wrote. */
+static nl_status check_unreferenced(check_ctx *c, const char *new_dir, char **ref_tables, size_t nref,
+                                    nl_error *err)
+{
+  size_t n;
+  char **tables = nl_harness_tables(new_dir, &n, err);
+  if (!tables) return NL_EIO;
+  for (size_t i = 0; i < n; i++) {
+    size_t k = 0;
+    while (k < nref && strcmp(ref_tables[k], tables[i])) k++;
+    if (k == nref) {
+      c->s->tables++;
+      drift(c, tables[i], "-", "-", "missing", "table", "exact");
+    }
+    free(tables[i]);
+  }
+  free(tables);
+  return NL_OK;
+}
+
 /* The manifests, the rules and every committed table, in name order. */
 static nl_status check_folders(check_ctx *c, const char *ref_dir, const char *new_dir, nl_table *mref,
                                nl_table *mnew, nl_error *err)
@@ -363,10 +387,9 @@ static nl_status check_folders(check_ctx *c, const char *ref_dir, const char *ne
   char **tables = nl_harness_tables(ref_dir, &n, err);
   if (!tables) return NL_EIO;
   st = check_rule_tables(c, ref_dir, tables, n, err);
-  for (size_t i = 0; i < n; i++) {
-    if (!st) st = check_table(c, ref_dir, new_dir, tables[i], err);
-    free(tables[i]);
-  }
+  for (size_t i = 0; i < n && !st; i++) st = check_table(c, ref_dir, new_dir, tables[i], err);
+  if (!st) st = check_unreferenced(c, new_dir, tables, n, err);
+  for (size_t i = 0; i < n; i++) free(tables[i]);
   free(tables);
   if (!st) check_summary(c, mref, mnew);
   if (!st) note_elsewhere(c->s, mref, mnew);
