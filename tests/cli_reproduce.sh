@@ -6,6 +6,9 @@
 #  - SIGINT / SIGTERM during gnuplot stop it (and check) with exit 130 / 143, SIGKILL
 #    leaves no figure under its final name that is not whole and no folder
 #    with a manifest but without its figures; a rerun recovers;
+#  - a rerun that fails or is stopped keeps the previous complete folder,
+#    REPORT.md and report.html; REPORT.md follows each completed folder at
+#    once, so a run killed later leaves it current;
 #  - a second reproduce into the same folder names the first and exits 1,
 #    also when both start together; SIGKILL stops what the run started;
 #  - a rerun removes the outputs an earlier run listed and it did not write,
@@ -195,17 +198,21 @@ kill "$first" 2>/dev/null || true
 wait "$first" 2>/dev/null || true
 { [ "$rc" = 1 ] && [[ "$err" == *"in use"*"pid $first"*"reproduce --quick A1"* ]]; } \
   || fail "two runs at once: the second said (rc=$rc): $err"
-[ ! -f "$r/a1_bounds/manifest.tsv" ] || fail "SIGINT: a1_bounds kept a manifest"
+# The stopped rerun of A1 took nothing away: its previous complete run
+# (seed 4294967295) and REPORT.md's section stay.
+grep -q $'^seed\t4294967295$' "$r/a1_bounds/manifest.tsv" || fail "SIGINT: a1_bounds lost its previous run"
 { grep -q '<a id="s4_marble">' "$r/REPORT.md" \
-  && ! grep -q '<a id="a1_bounds">' "$r/REPORT.md"; } \
-  || fail "SIGINT: REPORT.md not rewritten from the complete folders"
-[ -z "$(find "$r" -name '.fig-*')" ] || fail "SIGINT left temporary figure folders"
+  && grep -q '<a id="a1_bounds">' "$r/REPORT.md"; } \
+  || fail "SIGINT: REPORT.md does not name the complete folders"
+[ -z "$(find "$r" -name '.fig-*' -o -name '.stage-*')" ] || fail "SIGINT left temporary folders"
 
-# SIGTERM: exit 143; no complete folder is left, so no REPORT.md either.
+# SIGTERM: exit 143; S4's previous run and REPORT.md stay as they were.
+cp "$r/REPORT.md" "$out/report-before-term.md"
 start_slow S4
 stop_slow TERM 143
 consistent "SIGTERM"
-[ ! -e "$r/REPORT.md" ] || fail "SIGTERM: REPORT.md names folders that are not complete"
+{ [ -f "$r/s4_marble/manifest.tsv" ] && cmp -s "$r/REPORT.md" "$out/report-before-term.md"; } \
+  || fail "SIGTERM: the previous S4 run or REPORT.md was not kept"
 
 # SIGKILL: nothing runs after it. The processes it started (here the fake
 # gnuplot) hold the folder's lock; its watchdog stops them, so they neither
@@ -233,7 +240,28 @@ consistent "SIGKILL"
 consistent "rerun"
 { [ -f "$r/a1_bounds/manifest.tsv" ] && [ -f "$r/s4_marble/manifest.tsv" ]; } \
   || fail "rerun: a folder is incomplete"
-[ -z "$(find "$r" -name '.fig-*' -o -name '.manifest-pending.tsv')" ] || fail "rerun left temporaries"
+[ -z "$(find "$r" -name '.fig-*' -o -name '.manifest-pending.tsv' -o -name '.stage-*')" ] \
+  || fail "rerun left temporaries"
+
+# A rerun that fails (here every figure: a full disk did the same) keeps the
+# previous complete folder, REPORT.md and report.html byte for byte, and
+# says so.
+mkdir -p "$out/failbin"; printf '#!/bin/sh\nexit 1\n' >"$out/failbin/gnuplot"; chmod +x "$out/failbin/gnuplot"
+for f in REPORT.md report.html s4_marble/manifest.tsv s4_marble/report.md; do cp "$r/$f" "$out/keep-${f//\//-}"; done
+rc=0; PATH="$out/failbin:$PATH" "$nl" reproduce --quick --seed 9 --out "$r" S4 2>"$out/failrerun.log" || rc=$?
+[ "$rc" = 2 ] && grep -q "^noiselab: s4_marble: figure .* was not made .*; the previous run in $r/s4_marble is kept$" \
+  "$out/failrerun.log" || { cat "$out/failrerun.log"; fail "failed rerun: rc=$rc"; }
+for f in REPORT.md report.html s4_marble/manifest.tsv s4_marble/report.md; do
+  cmp -s "$r/$f" "$out/keep-${f//\//-}" || fail "a failed rerun changed $f"
+done
+[ -z "$(find "$r" -name '.stage-*')" ] || fail "failed rerun left its stage"
+# A full disk is named as such (less than 1 MB free where the run writes).
+mkdir -p "$out/fullbin"
+printf '#!/bin/sh\n[ "$1" = -f ] && { echo "100 4096"; exit 0; }\nexec /usr/bin/stat "$@"\n' >"$out/fullbin/stat"
+chmod +x "$out/fullbin/stat"
+# shellcheck disable=SC2016
+[ "$(PATH="$out/fullbin:$PATH" bash -c 'source "$1"; space_note /x' _ "$nl")" = ", the disk holding /x is full (400 KB free)" ] \
+  || fail "space_note: $(PATH="$out/fullbin:$PATH" bash -c 'source "$1"; space_note /x' _ "$nl")"
 
 # --jobs (default: the number of cores; the rerun above ran S4 and A1 at
 # once): the same tables, figures' data and report sections as --jobs 1, and
@@ -251,7 +279,7 @@ done
   || fail "--jobs: messages not in report order: $(cat "$out/rerun.log")"
 jf="$out/jfail"; mkdir -p "$jf"; : >"$jf/a1_bounds"
 rc=0; "$nl" reproduce --quick --jobs 2 --out "$jf" A1 S4 2>"$out/jfail.log" || rc=$?
-{ [ "$rc" = 2 ] && grep -q '^noiselab: a1_bounds failed$' "$out/jfail.log" \
+{ [ "$rc" = 2 ] && grep -q '^noiselab: a1_bounds: .*/jfail/a1_bounds is not a folder (a file or a link)' "$out/jfail.log" \
   && [ "$(tail -n 1 "$out/jfail.log")" = "noiselab: reproduce: 1 experiment(s) failed" ] \
   && [ -f "$jf/s4_marble/manifest.tsv" ] && grep -q '<a id="s4_marble">' "$jf/REPORT.md" \
   && [ -z "$(find "$jf" -name '.log-*')" ]; } \
@@ -386,9 +414,11 @@ missing="$(PATH="$out/dpkg:$PATH" bash -c 'source "$1"; missing_packages gnuplot
 [ "$(bash -c 'source "$1"; repro_eta 7 2 3 4' _ "$nl")" = "2/2 done, elapsed 7 s" ] \
   || fail "repro_eta last: $(bash -c 'source "$1"; repro_eta 7 2 3 4' _ "$nl")"
 # SIGKILL after A1 finished a seed-3 run into a complete folder (A1 seed 2,
-# S4 seed 1), while S4's figure is made: REPORT.md still lists the old seeds
-# and S4. The next reproduce into the folder, even one that runs nothing
-# (--resume skips A1), makes REPORT.md agree with the folders first.
+# S4 seed 1), while S4's figure is made: REPORT.md already lists A1's seed-3
+# run (written with its folder) and S4's previous run, which is kept;
+# report.html follows at the end of a run, so it is behind. The next
+# reproduce into the folder, even one that runs nothing (--resume skips
+# A1), makes report.html agree first.
 rm -f "$out/mark"
 FAKE_GNUPLOT_ONLY=s4_marble REAL_GNUPLOT="$(command -v gnuplot)" FAKE_GNUPLOT_MARK="$out/mark" \
   PATH="$out/bin:$PATH" "$nl" reproduce --quick --jobs 1 --seed 3 --out "$rs" A1 S4 \
@@ -403,10 +433,10 @@ done
 kill -KILL "$PID"; wait "$PID" 2>/dev/null || true
 g="$(cat "$out/mark")"; kill "$g" 2>/dev/null || true
 while kill -0 "$g" 2>/dev/null; do sleep 0.1; done   # it held the folder's lock
-{ grep -q $'^seed\t3$' "$rs/a1_bounds/manifest.tsv" && [ ! -f "$rs/s4_marble/manifest.tsv" ] \
-  && grep -q '^| \[a1_bounds\](#a1_bounds) | 2 |' "$rs/REPORT.md" \
-  && grep -q '<a id="s4_marble">' "$rs/REPORT.md"; } \
-  || fail "seed 3 killed: not the state to test: $(cat "$out/kill3.log")"
+{ grep -q $'^seed\t3$' "$rs/a1_bounds/manifest.tsv" && grep -q $'^seed\t1$' "$rs/s4_marble/manifest.tsv" \
+  && grep -q '^| \[a1_bounds\](#a1_bounds) | 3 |' "$rs/REPORT.md" \
+  && grep -q '<a id="s4_marble">' "$rs/REPORT.md" && [ "$rs/REPORT.md" -nt "$rs/report.html" ]; } \
+  || fail "seed 3 killed: A1's run not in REPORT.md or S4's previous run lost: $(cat "$out/kill3.log")"
 "$nl" reproduce --quick --resume --seed 3 --out "$rs" A1 2>"$out/resume4.log" \
   || { cat "$out/resume4.log"; fail "reproduce --resume --seed 3 failed"; }
 grep -q '^noiselab: reproduce --resume: skipped 1 of 1 ' "$out/resume4.log" \
@@ -414,6 +444,6 @@ grep -q '^noiselab: reproduce --resume: skipped 1 of 1 ' "$out/resume4.log" \
 consistent "SIGKILL of --seed 3, then --resume"
 grep -q '^| \[a1_bounds\](#a1_bounds) | 3 |' "$rs/REPORT.md" \
   || fail "REPORT.md does not list A1's seed-3 run: $(grep -F '| [a1_bounds]' "$rs/REPORT.md")"
-{ [ ! "$rs/REPORT.md" -nt "$rs/report.html" ] && ! grep -q s4_marble "$rs/report.html"; } \
+{ [ ! "$rs/REPORT.md" -nt "$rs/report.html" ] && grep -q s4_marble "$rs/report.html"; } \
   || fail "report.html not made again from REPORT.md"
 echo "cli_reproduce: ok"
