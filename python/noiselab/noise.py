@@ -415,8 +415,12 @@ def _coords(names, arrays):
     for name, a in zip(names, arrays):
         a = np.asarray(a)
         if a.dtype != np.float64:
-            if a.dtype.kind not in "biuf":
-                raise TypeError(f"{name}: coordinates must be real numbers, got dtype {a.dtype}")
+            # float16 has 11 bits (a coordinate past 2048 is not where it was
+            # meant) and bool is no coordinate: as documented, only integers
+            # and float32 are converted
+            if a.dtype.kind not in "iu" and a.dtype != np.float32:
+                raise TypeError(f"{name}: coordinates must be real numbers (integer, float32 "
+                                f"or float64), got dtype {a.dtype}")
             a = a.astype(np.float64)
         conv.append(a)
     try:
@@ -467,8 +471,8 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
            lambda_=4.0, points=50, count="inverse", tile=64, out=None):
     """A noise at arrays of points: x, y (and z) broadcast together as numpy does.
 
-    Coordinates are float64 (integer and float32 arrays are converted; complex,
-    object or string arrays raise TypeError); a NaN or infinite coordinate, or
+    Coordinates are float64 (integer and float32 arrays are converted; other
+    dtypes, float16, bool, longdouble, complex, object or str, raise TypeError); a NaN or infinite coordinate, or
     one whose finest octave passes 2^52, is a ValueError naming the first such
     point (flat index): then ``out`` holds the values of the points before it
     in C order, and its entries from it on may have been written (the library

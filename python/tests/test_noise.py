@@ -115,6 +115,13 @@ def test_broadcast_and_dtypes():
 @pytest.mark.parametrize("call,exc,words", [
     (lambda: nn.points(np.array([1j]), 0.0), TypeError, "x: coordinates must be real"),
     (lambda: nn.points(np.array(["a"]), 0.0), TypeError, "x: coordinates must be real"),
+    # float16 and bool: other dtypes than integer and float32 raise, as documented
+    (lambda: nn.points(np.array([1.5], np.float16), 0.0), TypeError, "dtype float16"),
+    (lambda: nn.points(0.0, np.array([True])), TypeError, "y: coordinates must be real"),
+    (lambda: nn.points(0.0, 0.5, np.array([0.5], np.longdouble)), TypeError, "z: coordinates"),
+    (lambda: nn.points(True, 0.5), TypeError, "dtype bool"),
+    (lambda: nn.cellular(np.array([1.5], np.float16), 0.0), TypeError, "dtype float16"),
+    (lambda: nn.cellular(0.5, np.array([False]), 0.5), TypeError, "dtype bool"),
     (lambda: nn.points(np.zeros(3), np.zeros(4)), ValueError, "do not broadcast"),
     (lambda: nn.points(0.0, np.array([0.0, np.nan])), ValueError, "y: coordinate 1"),
     (lambda: nn.points(np.inf, 0.0), ValueError, "not a finite number"),
