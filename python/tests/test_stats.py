@@ -149,3 +149,13 @@ def test_bad_input(call, exc, words):
     with pytest.raises(exc) as e:
         call()
     assert words in str(e.value) and "\n" not in str(e.value), str(e.value)
+
+
+@pytest.mark.parametrize("x", [[], np.empty(0), np.empty((0, 3))])
+def test_mean_sd_of_nothing_raises(x):
+    """An empty sample has no mean (statistics.mean raises; numpy warns and
+    gives NaN): the library refuses it, as the stat tool an empty column."""
+    for rounding in ("running", "summed"):
+        with pytest.raises(ValueError) as e:
+            ns.mean_sd(x, rounding)
+        assert str(e.value) == "x: no values"
