@@ -330,3 +330,60 @@ def test_library_messages_name_the_python_parameter(kw, words):
             call()
         msg = str(e.value)
         assert msg.startswith(words) and "--" not in msg and "\n" not in msg, msg
+
+
+# Each value render refuses, with render's option and Python's parameter:
+# refused by the same library check (nl_basis_sum_check, nl_basis_window_check,
+# nl_basis_make), in the same words but the name.
+RANGE_CASES = [
+    ("fbm", "gain", float("nan"), "nan is not a finite number"),
+    ("fbm", "gain", 1e4, "10000 is outside [-1000, 1000]"),
+    ("fbm", "lacunarity", 0, "0 is outside [1e-06, 1e+06]"),
+    ("fbm", "lacunarity", -2, "-2 is outside [1e-06, 1e+06]"),
+    ("fbm", "octaves", 31, "31 is outside [1, 30]"),
+    ("improved", "extent", 1e10, "1e+10 is outside [1e-09, 1e+09]"),
+    ("improved", "extent", 0, "0 is outside [1e-09, 1e+09]"),
+    ("improved", "x0", 1e10, "1e+10 is outside [-1e+09, 1e+09]"),
+    ("improved", "y0", float("-inf"), "-inf is not a finite number"),
+    ("improved", "z", 1e10, "1e+10 is outside [-1e+09, 1e+09]"),
+    ("marble", "stripes", 0, "0 is outside [1e-09, 1e+09]"),
+    ("marble", "stripes", -1, "-1 is outside [1e-09, 1e+09]"),
+    ("marble", "amplitude", 1e7, "1e+07 is outside [-1e+06, 1e+06]"),
+    ("noise2", "table_size", 2**21, "2097152 is outside [4, 1048576]"),
+    ("improved", "size", 65537, "65537 is outside [1, 65536]"),
+]
+
+
+@pytest.mark.parametrize("noise,name,value,words", RANGE_CASES)
+def test_grid_refuses_what_render_refuses(noise, name, value, words):
+    kw = {"size": 4, name: value}
+    with pytest.raises(ValueError) as e:
+        nn.grid(noise, **kw)
+    assert str(e.value) == f"{name}: {words}"
+
+
+@pytest.mark.parametrize("noise,name,value,words", RANGE_CASES)
+def test_render_refuses_the_same(tmp_path, noise, name, value, words):
+    args = [noise, f"--{name.replace('_', '-')}", str(value), "-o", str(tmp_path / "x.png")]
+    if name != "size":
+        args += ["--size", "4"]
+    r = subprocess.run([RENDER, *args], capture_output=True, text=True)
+    assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
+    opt = f"--{name.replace('_', '-')}"
+    # a non-finite value is refused already as a word, quoted (nl_parse_double)
+    want = (f"{opt}: '{value}' is not a finite number" if "finite" in words else
+            f"{opt}: {words}")
+    assert r.stderr == f"noiselab render: {want}\n", r.stderr
+
+
+@pytest.mark.parametrize("call", [
+    lambda: nn.grid("improved", 4, seed=2**32),
+    lambda: nn.points(0.5, 0.5, seed=2**40),
+    lambda: nn.bound("fbm", lacunarity=0),
+    lambda: nn.points(np.zeros(3), 0.5, noise="fbm", gain=np.inf),
+    lambda: nn.cellular_grid(4, extent=-1),
+    lambda: nn.cellular_grid(4, x0=np.nan),
+])
+def test_points_bound_and_cellular_refuse_them_too(call):
+    with pytest.raises(ValueError):
+        call()

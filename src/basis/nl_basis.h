@@ -90,6 +90,8 @@ const nl_basis_kind *nl_basis_find(const char *name);
  * names the input as the command line spells it ("--tile: ..."). */
 nl_status nl_basis_make(const char *name, const nl_basis_options *o, unsigned long seed,
                         nl_basis **out, nl_error *err);
+/* noise2's table size in 4..NL_BASIS_MAX_TABLE (nl_basis_make refuses others). */
+#define NL_BASIS_MAX_TABLE 1048576
 void nl_basis_free(nl_basis *b);
 
 /* ---- sums of octaves ------------------------------------------------------ */
@@ -107,6 +109,20 @@ typedef struct {
 } nl_basis_sum_options;
 
 nl_basis_sum_options nl_basis_sum_defaults(void);
+
+/* The values the render command and the Python binding accept, checked in
+ * one place: every field of o (whether or not the chosen sum reads it),
+ * octaves in 1..NL_BASIS_MAX_OCTAVES, gain in [-1e3, 1e3], lacunarity in
+ * [1e-6, 1e6] (0 or a negative one would put every octave at the origin or
+ * mirror it), amplitude in [-1e6, 1e6], stripes in [1e-9, 1e9], each finite.
+ * NL_EINVAL naming the option as the command line spells it
+ * ("--lacunarity: 0 is outside [1e-06, 1e+06]"). */
+#define NL_BASIS_MAX_OCTAVES 30
+nl_status nl_basis_sum_check(const nl_basis_sum_options *o, nl_error *err);
+/* A render window: w and h in 1..NL_BASIS_MAX_SIZE ("--size"), size (the
+ * extent) in [1e-9, 1e9], x0, y0 and z in [-1e9, 1e9], each finite. */
+#define NL_BASIS_MAX_SIZE 65536
+nl_status nl_basis_window_check(const nl_noise_window *win, nl_error *err);
 
 typedef struct {
   const char *name, *summary;
