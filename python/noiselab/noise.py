@@ -84,6 +84,8 @@ _basis_make = fn("nl_basis_make", ctypes.c_int, ctypes.c_char_p, ctypes.POINTER(
 _basis_free = fn("nl_basis_free", None, ctypes.POINTER(_Basis))
 _sum_check = fn("nl_basis_sum_check", ctypes.c_int, ctypes.POINTER(_SumOptions),
                 ctypes.POINTER(Error))
+_options_check = fn("nl_basis_options_check", ctypes.c_int, ctypes.POINTER(_BasisOptions),
+                    ctypes.POINTER(Error))
 _window_check = fn("nl_basis_window_check", ctypes.c_int, ctypes.POINTER(_Window),
                    ctypes.POINTER(Error))
 _octaves_fbm = fn("nl_noise_octaves_fbm", _Octaves, ctypes.c_int, ctypes.c_double,
@@ -142,6 +144,7 @@ _SUMS = ("fractal", "turbulence", "fbm", "marble")
 # nl_basis_make names its inputs as render's options (or nl_cellular_alloc's
 # fields); a Python user typed these parameters.
 _BASIS_NAMES = {"--table-size": "table_size", "--terms": "terms", "--tile": "tile",
+                "--lambda": "lambda_", "--points": "points", "--count": "count",
                 "cellular: lambda": "lambda_", "cellular: M": "points"}
 # The sum's and the window's ranges are render's, checked by the library
 # (nl_basis_sum_check, nl_basis_window_check) in render's words.
@@ -216,21 +219,24 @@ class _Noise:
             raise ValueError(f"count: {count!r} is not one of {', '.join(_COUNTS)}")
         seed = _int("seed", seed, 0, _SEED_MAX)
         so = _sum_options(octaves, gain, lacunarity)
+        # every option in render's range, read or not (nl_basis_options_check)
+        o = _basis_defaults()
+        o.table_size = _int("table_size", table_size, -2**62, 2**62)
+        o.reference = 1 if reference else 0
+        o.lambda_ = _real("lambda_", lambda_)
+        o.points = _int("points", points, -2**62, 2**62)
+        o.count = _COUNTS[count]
+        self._terms = str(terms).encode()
+        o.terms = self._terms
+        o.tile = _int("tile", tile, -2**62, 2**62)
+        err = Error()
+        check(_options_check(ctypes.byref(o), ctypes.byref(err)), err, _BASIS_NAMES)
         if table is not None:
             if self.kind != "noise2":
                 raise ValueError(f"table: only noise2 (table under a sum) reads a table, "
                                  f"not {under}")
             self._own_table(table)
         else:
-            o = _basis_defaults()
-            o.table_size = _int("table_size", table_size, -2**62, 2**62)
-            o.reference = 1 if reference else 0
-            o.lambda_ = _real("lambda_", lambda_)
-            o.points = _int("points", points, -2**62, 2**62)
-            o.count = _COUNTS[count]
-            self._terms = str(terms).encode()
-            o.terms = self._terms
-            o.tile = _int("tile", tile, -2**62, 2**62)
             b = ctypes.POINTER(_Basis)()
             err = Error()
             check(_basis_make(self.kind.encode(), ctypes.byref(o), seed, ctypes.byref(b),

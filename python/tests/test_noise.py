@@ -136,7 +136,8 @@ def test_broadcast_and_dtypes():
     (lambda: nn.grid("perlin", 8), ValueError, "unknown noise 'perlin'"),
     (lambda: nn.grid("fbm", 8, basis="x"), ValueError, "unknown noise basis"),
     (lambda: nn.grid("gctbf", 8, terms="F9"), ValueError, "F9"),
-    (lambda: nn.grid("wavelet", 8, tile=7), ValueError, "tile: the wavelet tile period"),
+    (lambda: nn.grid("wavelet", 8, tile=7), ValueError, "tile: 7 is outside [8, 256]"),
+    (lambda: nn.grid("wavelet", 8, tile=9), ValueError, "tile: the wavelet tile period"),
     (lambda: nn.grid("noise2", 8, table=([0.0, 1.0], [0, 0])), ValueError, "not a permutation"),
 ])
 def test_bad_input(call, exc, words):
@@ -312,12 +313,17 @@ def test_refusal_keeps_the_points_before(noise, kw):
 
 
 @pytest.mark.parametrize("kw,words", [
-    (dict(noise="wavelet", tile=7), "tile: the wavelet tile period must be even and in 8..256"),
-    (dict(noise="wavelet", tile=4), "tile: the wavelet tile period must be even and in 8..256"),
-    (dict(noise="noise2", table_size=2), "table_size: 2 is below 4"),
+    (dict(noise="wavelet", tile=9), "tile: the wavelet tile period must be even and in 8..256"),
+    (dict(noise="wavelet", tile=4), "tile: 4 is outside [8, 256]"),
+    (dict(noise="noise2", table_size=2), "table_size: 2 is outside [4, 1048576]"),
     (dict(noise="gctbf", terms="F9"), "terms: "),
-    (dict(noise="gctbf", lambda_=0.0), "lambda_ must be in"),
-    (dict(noise="gctbf", points=0), "points must be in 1..64"),
+    (dict(noise="gctbf", lambda_=0.0), "lambda_: 0 must be in (0, 1000]"),
+    (dict(noise="gctbf", points=0), "points: 0 is outside [1, 64]"),
+    # render range-checks an option also where the noise ignores it
+    (dict(noise="improved", tile=7), "tile: 7 is outside [8, 256]"),
+    (dict(noise="fbm", points=65), "points: 65 is outside [1, 64]"),
+    (dict(noise="improved", lambda_=-1.0), "lambda_: -1 must be in (0, 1000]"),
+    (dict(noise="wavelet", table_size=2**21), "table_size: 2097152 is outside [4, 1048576]"),
     (dict(noise="fbm", basis="wavelet", tile=300), "tile: "),
 ])
 def test_library_messages_name_the_python_parameter(kw, words):

@@ -38,6 +38,21 @@ nl_status nl_basis_sum_check(const nl_basis_sum_options *o, nl_error *err)
   return NL_OK;
 }
 
+nl_status nl_basis_options_check(const nl_basis_options *o, nl_error *err)
+{
+  if (o->table_size < 4 || o->table_size > NL_BASIS_MAX_TABLE)
+    return nl_fail(err, NL_EINVAL, "--table-size: %ld is outside [4, %d]", o->table_size, NL_BASIS_MAX_TABLE);
+  if (o->tile < 8 || o->tile > 256) return nl_fail(err, NL_EINVAL, "--tile: %ld is outside [8, 256]", o->tile);
+  if (!(o->lambda > 0 && o->lambda <= 1000))
+    return nl_fail(err, NL_EINVAL, "--lambda: %g must be in (0, 1000] (mean feature points per unit cube)",
+                   o->lambda);
+  if (o->points < 1 || o->points > NL_CELLULAR_MAX_M)
+    return nl_fail(err, NL_EINVAL, "--points: %ld is outside [1, %d]", o->points, NL_CELLULAR_MAX_M);
+  if (o->count != NL_COUNT_CLOSEST && o->count != NL_COUNT_INVERSE_CDF && o->count != NL_COUNT_CLOSEST_LAST)
+    return nl_fail(err, NL_EINVAL, "--count: %d is not a count rule", (int)o->count);
+  return NL_OK;
+}
+
 nl_status nl_basis_window_check(const nl_noise_window *win, nl_error *err)
 {
   if (win->w < 1 || win->w > NL_BASIS_MAX_SIZE || win->h < 1 || win->h > NL_BASIS_MAX_SIZE)

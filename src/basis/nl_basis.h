@@ -90,8 +90,15 @@ const nl_basis_kind *nl_basis_find(const char *name);
  * names the input as the command line spells it ("--tile: ..."). */
 nl_status nl_basis_make(const char *name, const nl_basis_options *o, unsigned long seed,
                         nl_basis **out, nl_error *err);
-/* noise2's table size in 4..NL_BASIS_MAX_TABLE (nl_basis_make refuses others). */
+/* The ranges of render's basis options, every field whatever the basis
+ * (render refuses --tile 7 for improved noise too, where it is ignored):
+ * table_size 4..NL_BASIS_MAX_TABLE, tile 8..256 (even only where a wavelet
+ * tile is built), lambda in (0, 1000], points 1..NL_CELLULAR_MAX_M, a known
+ * count rule. NL_EINVAL naming the option ("--tile: 7 is outside [8, 256]");
+ * the Python binding calls it before nl_basis_make, so that both refuse the
+ * same values. nl_basis_make itself checks what the chosen basis reads. */
 #define NL_BASIS_MAX_TABLE 1048576
+nl_status nl_basis_options_check(const nl_basis_options *o, nl_error *err);
 void nl_basis_free(nl_basis *b);
 
 /* ---- sums of octaves ------------------------------------------------------ */

@@ -140,6 +140,17 @@ NL_TEST(sum_and_window_ranges_are_render_s)
   nl_basis *b;
   bo.table_size = NL_BASIS_MAX_TABLE + 1;
   NL_CHECK(nl_basis_make("noise2", &bo, 1, &b, &err) == NL_EINVAL && !strncmp(err.msg, "--table-size: ", 14));
+  NL_CHECK(nl_basis_options_check(&bo, &err) == NL_EINVAL && !strcmp(err.msg, "--table-size: 1048577 is outside [4, 1048576]"));
+  bo = nl_basis_defaults();
+  NL_CHECK(nl_basis_options_check(&bo, &err) == NL_OK);
+  bo.tile = 7;   /* refused whatever the basis, as render refuses it */
+  NL_CHECK(nl_basis_options_check(&bo, &err) == NL_EINVAL && !strcmp(err.msg, "--tile: 7 is outside [8, 256]"));
+  bo = nl_basis_defaults();
+  bo.lambda = NAN;
+  NL_CHECK(nl_basis_options_check(&bo, &err) == NL_EINVAL && !strncmp(err.msg, "--lambda: nan must be in", 24));
+  bo = nl_basis_defaults();
+  bo.points = 65;
+  NL_CHECK(nl_basis_options_check(&bo, &err) == NL_EINVAL && !strcmp(err.msg, "--points: 65 is outside [1, 64]"));
 }
 
 NL_TEST(sums_are_the_octaves_of_their_rule)
