@@ -172,6 +172,20 @@ grep -q '^bands 6$' "$out/m76.params"
 bad synthesize "$out/rgb.params" --size 0 -o "$out/x.png"
 bad synthesize "$out/rgb.params" -o "$out/x.png"
 bad morph "$out/rgb.params" "$out/rgb.params" --t 1.5 -o "$out/x.params"
+# The library's checks (nl_byexample_synth_check, nl_byexample_morph_check),
+# which the Python binding reaches too: every value the Python tests pass.
+for s in nan inf -1 0 1e-7 2e6; do
+  bad synthesize "$out/rgb.params" --size 16 --scale "$s" -o "$out/x.png"
+  grep -q -- "^noiselab example: --scale: " "$out/err.txt"
+done
+bad synthesize "$out/rgb.params" --size 16 --solid --z nan -o "$out/x.png"
+bad synthesize "$out/rgb.params" --size 16 --solid --z 2e9 -o "$out/x.png"
+grep -q -- "--z: 2e+09 is outside \[-1e+09, 1e+09\]" "$out/err.txt"
+for t in nan -0.25 2; do
+  bad morph "$out/rgb.params" "$out/rgb.params" --t "$t" -o "$out/x.params"
+  grep -q -- "^noiselab example: --t: " "$out/err.txt"
+done
+[ ! -e "$out/x.png" ] && [ ! -e "$out/x.params" ]
 bad frobnicate
 bad compare "$photo" -o "$out/x.tsv"
 bad compare "$photo" "$out/missing.png" -o "$out/x.tsv"

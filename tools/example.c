@@ -14,6 +14,7 @@
 #include "byexample/nl_byexample.h"
 #include "study/nl_study.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -113,22 +114,28 @@ static void parse(int argc, char **argv, args *a)
       break;
     case O_OUT: a->out = v; break;
     case O_BANDS: a->bands = v; break;
-    case O_SIZE: check(nl_parse_long("--size", v, 1, 32768, &a->size, &err), &err); a->have_size = 1; break;
+    case O_SIZE:
+      check(nl_parse_long("--size", v, 1, NL_BYEXAMPLE_MAX_SIDE, &a->size, &err), &err);
+      a->have_size = 1;
+      break;
     case O_HEIGHT:
-      check(nl_parse_long("--height", v, 1, 32768, &a->height, &err), &err);
+      check(nl_parse_long("--height", v, 1, NL_BYEXAMPLE_MAX_SIDE, &a->height, &err), &err);
       a->have_height = 1;
       break;
     case O_SEED:
       check(nl_parse_long("--seed", v, 0, 4294967295L, &a->seed, &err), &err);
       a->have_seed = 1;
       break;
-    case O_T: check(nl_parse_double("--t", v, 0, 1, &a->t, &err), &err); a->have_t = 1; break;
+    /* --t, --scale and --z: any number here, the range is the library's
+     * (nl_byexample_morph_check, nl_byexample_synth_check, below), which
+     * the Python binding reaches through the same calls */
+    case O_T: check(nl_parse_double("--t", v, -HUGE_VAL, HUGE_VAL, &a->t, &err), &err); a->have_t = 1; break;
     case O_SCALE:
-      check(nl_parse_double("--scale", v, 1e-6, 1e6, &a->scale, &err), &err);
+      check(nl_parse_double("--scale", v, -HUGE_VAL, HUGE_VAL, &a->scale, &err), &err);
       a->have_scale = 1;
       break;
     case O_Z:
-      check(nl_parse_double("--z", v, -1e9, 1e9, &a->z, &err), &err);
+      check(nl_parse_double("--z", v, -HUGE_VAL, HUGE_VAL, &a->z, &err), &err);
       a->have_z = 1;
       break;
     case O_RGB: a->rgb = 1; break;
@@ -140,6 +147,9 @@ static void parse(int argc, char **argv, args *a)
     }
   }
   nl_opt_end(&p);
+  nl_byexample_synth_options so = {a->scale, a->solid, a->z, NL_SPLINE_STEFFEN};
+  check(nl_byexample_synth_check(&so, &err), &err);
+  if (a->have_t) check(nl_byexample_morph_check(a->t, &err), &err);
   if (!a->out) die("-o OUT is required");
   /* a bad output is named before any input is read (an image read starts
    * OpenImageIO: 0.5 s) */

@@ -17,6 +17,7 @@
 #include "basis/nl_basis.h"
 #include "table/nl_table.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -162,34 +163,38 @@ static void parse(int argc, char **argv, options *o)
     case R_HELP: usage(); exit(0);
     case R_REFERENCE: o->bo.reference = 1; break;
     case R_OUT: o->out = v; break;
-    case R_SIZE: integer(a, v, 1, 65536, &o->size); break;
-    case R_OCTAVES: integer(a, v, 1, 30, &o->so.octaves); break;
+    /* the window's, the sum's and the basis's ranges are the library's
+     * (nl_basis_window_check, nl_basis_sum_check, nl_basis_options_check,
+     * after the loop), which the Python binding calls too */
+    case R_SIZE: integer(a, v, INT_MIN, INT_MAX, &o->size); break;
+    case R_OCTAVES: integer(a, v, LONG_MIN, LONG_MAX, &o->so.octaves); break;
     case R_SEED: integer(a, v, 0, 4294967295L, &o->seed); break;
-    case R_TABLE_SIZE: integer(a, v, 4, 1048576, &o->bo.table_size); break;
+    case R_TABLE_SIZE: integer(a, v, LONG_MIN, LONG_MAX, &o->bo.table_size); break;
     case R_BITS: integer(a, v, 8, 32, &o->bits); break;
-    case R_EXTENT: num(a, v, 1e-9, 1e9, &o->extent); break;
-    case R_X0: num(a, v, -1e9, 1e9, &o->x0); break;
-    case R_Y0: num(a, v, -1e9, 1e9, &o->y0); break;
-    case R_Z: num(a, v, -1e9, 1e9, &o->z); break;
-    case R_GAIN: num(a, v, -1e3, 1e3, &o->so.gain); break;
-    case R_LACUNARITY: num(a, v, 1e-6, 1e6, &o->so.lacunarity); break;
-    case R_AMPLITUDE: num(a, v, -1e6, 1e6, &o->so.amplitude); break;
-    case R_STRIPES: num(a, v, 1e-9, 1e9, &o->so.stripes); break;
+    case R_EXTENT: num(a, v, -HUGE_VAL, HUGE_VAL, &o->extent); break;
+    case R_X0: num(a, v, -HUGE_VAL, HUGE_VAL, &o->x0); break;
+    case R_Y0: num(a, v, -HUGE_VAL, HUGE_VAL, &o->y0); break;
+    case R_Z: num(a, v, -HUGE_VAL, HUGE_VAL, &o->z); break;
+    case R_GAIN: num(a, v, -HUGE_VAL, HUGE_VAL, &o->so.gain); break;
+    case R_LACUNARITY: num(a, v, -HUGE_VAL, HUGE_VAL, &o->so.lacunarity); break;
+    case R_AMPLITUDE: num(a, v, -HUGE_VAL, HUGE_VAL, &o->so.amplitude); break;
+    case R_STRIPES: num(a, v, -HUGE_VAL, HUGE_VAL, &o->so.stripes); break;
     case R_BASIS: o->basis = v; break;
     case R_TERMS: o->bo.terms = v; break;
-    case R_TILE: integer(a, v, 8, 256, &o->bo.tile); break;
+    case R_TILE: integer(a, v, LONG_MIN, LONG_MAX, &o->bo.tile); break;
     case R_COUNT: o->count = v; break;
     case R_LAMBDA:
-      num(a, v, -1e9, 1e9, &o->bo.lambda);
-      if (!(o->bo.lambda > 0 && o->bo.lambda <= 1000)) {
-        fail("--lambda: %s must be in (0, 1000] (mean feature points per unit cube)", v);
-      }
+      num(a, v, -HUGE_VAL, HUGE_VAL, &o->bo.lambda);
       break;
-    case R_POINTS: integer(a, v, 1, NL_CELLULAR_MAX_M, &o->bo.points); break;
+    case R_POINTS: integer(a, v, LONG_MIN, LONG_MAX, &o->bo.points); break;
     case R_NORMALIZE: o->normalize = v; break;
     }
   }
   nl_opt_end(&p);
+  nl_noise_window win = {o->x0, o->y0, o->z, o->extent, (int)o->size, (int)o->size};
+  if (nl_basis_window_check(&win, &err) || nl_basis_sum_check(&o->so, &err) ||
+      nl_basis_options_check(&o->bo, &err))
+    fail("%s", err.msg);
   char list[256];
   if (!o->noise) fail("no NOISE given (see --help)");
   /* The chosen sum (a single noise is the sum of one octave) and basis, as

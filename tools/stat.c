@@ -237,10 +237,10 @@ static void parse(int argc, char **argv, opts *o)
       break;
     case O_COVARIANCE: o->covariance = v; break;
     case O_SEED: o->seed = int_arg(o, a, v, 0, 4294967295L); break;
-    case O_TOL: o->tol = num_arg(o, a, v, 0, 1e300); break;
-    case O_MAX_ITER: o->max_iter = int_arg(o, a, v, 1, 100000000); break;
+    case O_TOL: o->tol = num_arg(o, a, v, 0, NL_GMM_MAX_TOL); break;
+    case O_MAX_ITER: o->max_iter = int_arg(o, a, v, 1, NL_GMM_MAX_ITER); break;
     case O_MAX_K: o->max_k = int_arg(o, a, v, 1, 100000); break;
-    case O_REG_COVAR: o->reg = num_arg(o, a, v, 0, 1e300); break;
+    case O_REG_COVAR: o->reg = num_arg(o, a, v, 0, NL_GMM_MAX_TOL); break;
     case O_ALTERNATIVE: o->alternative = v; break;
     case O_METRIC: o->metric = v; break;
     case O_DIST: o->dist = v; break;

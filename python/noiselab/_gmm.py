@@ -25,6 +25,25 @@ class _Gmm(ctypes.Structure):
                 ("converged", ctypes.c_int)]
 
 
+# nl_gmm_options_check names the options as `stat gmm` spells them.
+_NAMES = {"--tol": "tol", "--reg-covar": "reg_covar", "--max-iter": "max_iter"}
+
+
+def _int(name, v, lo, hi):
+    if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
+        raise TypeError(f"{name}: expected an integer, got {type(v).__name__}")
+    if not lo <= v <= hi:
+        raise ValueError(f"{name}: {v} is outside [{lo}, {hi}]")
+    return int(v)
+
+
+def _real(name, v):
+    try:
+        return float(v)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name}: expected a number, got {v!r}") from None
+
+
 _P = ctypes.POINTER(_Gmm)
 _E = ctypes.POINTER(Error)
 _defaults = fn("nl_gmm_options_default", None, ctypes.POINTER(_Options))
@@ -86,13 +105,15 @@ class GaussianMixture:
                  max_iter=100, random_state=0, n_threads=1):
         if covariance_type not in _COV:
             raise ValueError(f"covariance_type: {covariance_type!r} is not 'full' or 'diag'")
-        if int(n_components) < 1:
-            raise ValueError(f"n_components: {n_components} is not at least 1")
-        self.n_components = int(n_components)
+        self.n_components = _int("n_components", n_components, 1, 2**62)
         self.covariance_type = covariance_type
-        self.tol, self.reg_covar = float(tol), float(reg_covar)
-        self.max_iter, self.random_state = int(max_iter), int(random_state)
-        self.n_threads = int(n_threads)
+        # tol, reg_covar and max_iter are checked by the library at fit
+        # (nl_gmm_options_check, `stat gmm`'s ranges); here what C holds
+        self.tol, self.reg_covar = _real("tol", tol), _real("reg_covar", reg_covar)
+        self.max_iter = _int("max_iter", max_iter, 0, 2**62)
+        # `stat gmm --seed`'s range
+        self.random_state = _int("random_state", random_state, 0, 2**32 - 1)
+        self.n_threads = _int("n_threads", n_threads, 1, 2**31 - 1)
         self._g = None
 
     def __del__(self):
@@ -138,7 +159,7 @@ class GaussianMixture:
         s = _fit(g, _ptr(x), n, ctypes.byref(o), ctypes.byref(err))
         if s:
             _free(g)
-            check(s, err)
+            check(s, err, _NAMES)
         if self._g:
             _free(self._g)
         self._g = g

@@ -66,9 +66,31 @@ _analyse = fn("nl_byexample_analyse", ctypes.c_int, _IP, ctypes.POINTER(_Options
 _synthesize = fn("nl_byexample_synthesize", ctypes.c_int, _PP, ctypes.c_int, ctypes.c_int,
                  ctypes.c_ulong, ctypes.POINTER(_SynthOptions), ctypes.POINTER(_IP), _E)
 _morph = fn("nl_byexample_morph", ctypes.c_int, _PP, _PP, ctypes.c_double, _PP, _E)
+# The library checks synthesis and morphing arguments (nl_byexample_synth_check,
+# nl_byexample_morph_check) and names them as `noiselab example` spells them.
+_NAMES = {"--size": "width", "--height": "height", "--scale": "scale", "--z": "z", "--t": "t"}
 _save = fn("nl_byexample_params_save", ctypes.c_int, _PP, ctypes.c_char_p, _E)
 _load = fn("nl_byexample_params_load", ctypes.c_int, ctypes.c_char_p, _PP, _E)
 _param_count = fn("nl_byexample_param_count", ctypes.c_int, _PP)
+
+
+# `noiselab example --seed`'s range: a seed the tool refuses is refused here.
+_SEED_MAX = 2**32 - 1
+
+
+def _int(name, v, lo, hi):
+    if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
+        raise TypeError(f"{name}: expected an integer, got {type(v).__name__}")
+    if not lo <= v <= hi:
+        raise ValueError(f"{name}: {v} is outside [{lo}, {hi}]")
+    return int(v)
+
+
+def _number(name, v):
+    """A real number as a C double; its range is checked by the library."""
+    if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, float, np.integer, np.floating)):
+        raise TypeError(f"{name}: expected a number, got {type(v).__name__}")
+    return float(v)
 
 
 def _to_numpy(im):
@@ -223,6 +245,12 @@ def synthesize(params, width, height=None, *, seed=1, scale=1.0, solid=False, z=
     before writing its file. scale: pixel size in exemplar pixels; solid:
     a slice z of 3D wavelet noise.
 
+    What the tool refuses raises here, checked by the same library call
+    (nl_byexample_synth_check): width and height outside 1..32768, a seed
+    outside 0..2^32 - 1 or a scale outside [1e-6, 1e6] or not finite, |z| >
+    1e9 or not finite are a ValueError; a non-integer size or seed, or a
+    scale or z that is not a number, a TypeError.
+
     Example
     -------
     >>> import noiselab.noise as nn, noiselab.byexample as nb
@@ -232,14 +260,15 @@ def synthesize(params, width, height=None, *, seed=1, scale=1.0, solid=False, z=
     """
     if not isinstance(params, Params):
         raise TypeError(f"params: expected noiselab.byexample.Params, got {type(params).__name__}")
-    for name, v in (("width", width), ("height", width if height is None else height)):
-        if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or not 1 <= v <= 65536:
-            raise ValueError(f"{name}: {v!r} is not an integer in 1..65536")
-    so = _SynthOptions(float(scale), 1 if solid else 0, float(z), 0)
+    height = width if height is None else height
+    for name, v in (("width", width), ("height", height)):
+        # the range is the library's; here only what a C int holds
+        _int(name, v, -2**31, 2**31 - 1)
+    seed = _int("seed", seed, 0, _SEED_MAX)
+    so = _SynthOptions(_number("scale", scale), 1 if solid else 0, _number("z", z), 0)
     im, err = _IP(), Error()
-    check(_synthesize(ctypes.byref(params._p), int(width),
-                      int(width if height is None else height), int(seed), ctypes.byref(so),
-                      ctypes.byref(im), ctypes.byref(err)), err)
+    check(_synthesize(ctypes.byref(params._p), int(width), int(height), seed, ctypes.byref(so),
+                      ctypes.byref(im), ctypes.byref(err)), err, _NAMES)
     try:
         return _to_numpy(im)
     finally:
@@ -248,7 +277,8 @@ def synthesize(params, width, height=None, *, seed=1, scale=1.0, solid=False, z=
 
 def morph(a, b, t):
     """Params between a (t = 0) and b (t = 1): linear, the PCA rotation by
-    quaternion slerp (nl_byexample_morph).
+    quaternion slerp (nl_byexample_morph). t outside [0, 1] (it would
+    extrapolate) or not finite is a ValueError, as `example morph --t`.
 
     Example
     -------
@@ -258,7 +288,10 @@ def morph(a, b, t):
     >>> nb.morph(a, b, 0.5).channels
     1
     """
+    for name, v in (("a", a), ("b", b)):
+        if not isinstance(v, Params):
+            raise TypeError(f"{name}: expected noiselab.byexample.Params, got {type(v).__name__}")
     m, err = _Params(), Error()
-    check(_morph(ctypes.byref(a._p), ctypes.byref(b._p), float(t), ctypes.byref(m),
-                 ctypes.byref(err)), err)
+    check(_morph(ctypes.byref(a._p), ctypes.byref(b._p), _number("t", t), ctypes.byref(m),
+                 ctypes.byref(err)), err, _NAMES)
     return Params(m)

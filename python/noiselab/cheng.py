@@ -170,7 +170,8 @@ def optimise(pattern, seed=1, grid=64, **options):
         target; with 2 or 4 channels the last is alpha (cells of mean alpha
         below 1/2 carry no control).
     seed : int
-        the random start table and the annealer's generator.
+        the random start table and the annealer's generator, 0..2^32 - 1
+        (an experiment's --seed).
     grid : int
         control points: the centres of a grid x grid raster (64).
     **options
@@ -193,10 +194,12 @@ def optimise(pattern, seed=1, grid=64, **options):
     True
     """
     c = _config(options)
+    # the experiments' --seed range (nl_harness): -1 would wrap to 2^64 - 1
+    seed = _noise._int("seed", seed, 0, _noise._SEED_MAX)
     p = _pattern(pattern, grid)
     g, ev, err = _G2(), _Eval(), Error()
     try:
-        check(_run(ctypes.byref(c), p, int(seed), ctypes.byref(ev), None, ctypes.byref(g),
+        check(_run(ctypes.byref(c), p, seed, ctypes.byref(ev), None, ctypes.byref(g),
                    ctypes.byref(err)), err)
         try:
             return _result(g, ev)

@@ -65,6 +65,13 @@ class _BasisOptions(ctypes.Structure):
                 ("terms", ctypes.c_char_p), ("tile", ctypes.c_long)]
 
 
+@mirror("nl_basis_sum_options")
+class _SumOptions(ctypes.Structure):
+    _fields_ = [("octaves", ctypes.c_long), ("gain", ctypes.c_double),
+                ("lacunarity", ctypes.c_double), ("amplitude", ctypes.c_double),
+                ("stripes", ctypes.c_double)]
+
+
 @mirror("nl_noise_grad2")
 class _Grad2(ctypes.Structure):
     _fields_ = [("m", ctypes.c_size_t), ("angle", c_double_p), ("gx", c_double_p),
@@ -75,6 +82,12 @@ _basis_defaults = fn("nl_basis_defaults", _BasisOptions)
 _basis_make = fn("nl_basis_make", ctypes.c_int, ctypes.c_char_p, ctypes.POINTER(_BasisOptions),
                  ctypes.c_ulong, ctypes.POINTER(ctypes.POINTER(_Basis)), ctypes.POINTER(Error))
 _basis_free = fn("nl_basis_free", None, ctypes.POINTER(_Basis))
+_sum_check = fn("nl_basis_sum_check", ctypes.c_int, ctypes.POINTER(_SumOptions),
+                ctypes.POINTER(Error))
+_options_check = fn("nl_basis_options_check", ctypes.c_int, ctypes.POINTER(_BasisOptions),
+                    ctypes.POINTER(Error))
+_window_check = fn("nl_basis_window_check", ctypes.c_int, ctypes.POINTER(_Window),
+                   ctypes.POINTER(Error))
 _octaves_fbm = fn("nl_noise_octaves_fbm", _Octaves, ctypes.c_int, ctypes.c_double,
                   ctypes.c_double)
 _fractal_grid = fn("nl_noise_fractal_grid", None, ctypes.POINTER(_NoiseBasis),
@@ -131,7 +144,14 @@ _SUMS = ("fractal", "turbulence", "fbm", "marble")
 # nl_basis_make names its inputs as render's options (or nl_cellular_alloc's
 # fields); a Python user typed these parameters.
 _BASIS_NAMES = {"--table-size": "table_size", "--terms": "terms", "--tile": "tile",
+                "--lambda": "lambda_", "--points": "points", "--count": "count",
                 "cellular: lambda": "lambda_", "cellular: M": "points"}
+# The sum's and the window's ranges are render's, checked by the library
+# (nl_basis_sum_check, nl_basis_window_check) in render's words.
+_RANGE_NAMES = {f"--{k}": k for k in ("octaves", "gain", "lacunarity", "amplitude", "stripes",
+                                      "size", "extent", "x0", "y0", "z")}
+# render --seed's range: the library takes any unsigned long, the tool not.
+_SEED_MAX = 2**32 - 1
 _COUNTS = {"closest": 0, "inverse": 1, "closest-last": 2}
 _PLANAR = ("noise2",)
 
@@ -148,14 +168,32 @@ def _int(name, v, lo, hi):
     return int(v)
 
 
-def _real(name, v, lo=-np.inf, hi=np.inf):
+def _real(name, v):
+    """v as a C double; whether it is finite and in range is the library's to say."""
     try:
-        f = float(v)
+        return float(v)
     except (TypeError, ValueError):
         raise TypeError(f"{name}: expected a number, got {v!r}") from None
-    if not np.isfinite(f) or not lo <= f <= hi:
-        raise ValueError(f"{name}: {v!r} is not a finite number in [{lo}, {hi}]")
-    return f
+
+
+def _sum_options(octaves, gain, lacunarity, amplitude=0.5, stripes=1.0):
+    """The sum's options, checked by the library as render checks them."""
+    so = _SumOptions(_int("octaves", octaves, -2**63, 2**63 - 1), _real("gain", gain),
+                     _real("lacunarity", lacunarity), _real("amplitude", amplitude),
+                     _real("stripes", stripes))
+    err = Error()
+    check(_sum_check(ctypes.byref(so), ctypes.byref(err)), err, _RANGE_NAMES)
+    return so
+
+
+def _window(size, extent, x0, y0, z):
+    """grid's raster as render's window, checked by the library as render checks it."""
+    size = _int("size", size, -2**31, 2**31 - 1)
+    win = _Window(_real("x0", x0), _real("y0", y0), _real("z", z), _real("extent", extent),
+                  size, size)
+    err = Error()
+    check(_window_check(ctypes.byref(win), ctypes.byref(err)), err, _RANGE_NAMES)
+    return win
 
 
 class _Noise:
@@ -179,33 +217,35 @@ class _Noise:
         self.planar = self.kind in _PLANAR
         if count not in _COUNTS:
             raise ValueError(f"count: {count!r} is not one of {', '.join(_COUNTS)}")
-        seed = _int("seed", seed, 0, 2**64 - 1)
+        seed = _int("seed", seed, 0, _SEED_MAX)
+        so = _sum_options(octaves, gain, lacunarity)
+        # every option in render's range, read or not (nl_basis_options_check)
+        o = _basis_defaults()
+        o.table_size = _int("table_size", table_size, -2**62, 2**62)
+        o.reference = 1 if reference else 0
+        o.lambda_ = _real("lambda_", lambda_)
+        o.points = _int("points", points, -2**62, 2**62)
+        o.count = _COUNTS[count]
+        self._terms = str(terms).encode()
+        o.terms = self._terms
+        o.tile = _int("tile", tile, -2**62, 2**62)
+        err = Error()
+        check(_options_check(ctypes.byref(o), ctypes.byref(err)), err, _BASIS_NAMES)
         if table is not None:
             if self.kind != "noise2":
                 raise ValueError(f"table: only noise2 (table under a sum) reads a table, "
                                  f"not {under}")
             self._own_table(table)
         else:
-            o = _basis_defaults()
-            o.table_size = _int("table_size", table_size, 1, 2**40)
-            o.reference = 1 if reference else 0
-            o.lambda_ = _real("lambda_", lambda_)
-            o.points = _int("points", points, -2**62, 2**62)
-            o.count = _COUNTS[count]
-            self._terms = str(terms).encode()
-            o.terms = self._terms
-            o.tile = _int("tile", tile, -2**62, 2**62)
             b = ctypes.POINTER(_Basis)()
             err = Error()
             check(_basis_make(self.kind.encode(), ctypes.byref(o), seed, ctypes.byref(b),
                               ctypes.byref(err)), err, _BASIS_NAMES)
             self._b = b
             self.basis = b.contents.noise
-        n = 1
-        if self.sum is not None:
-            n = _int("octaves", octaves, 1, 30)
+        n = 1 if self.sum is None else so.octaves
         if self.sum == "fbm":
-            self.octaves = _octaves_fbm(n, _real("gain", gain), _real("lacunarity", lacunarity))
+            self.octaves = _octaves_fbm(n, so.gain, so.lacunarity)
         elif self.sum is None:
             self.octaves = _octaves_fbm(1, 1.0, 1.0)
         else:
@@ -296,7 +336,7 @@ _DOC_OPTIONS = """
         fractal, turbulence, fbm (``points`` has no marble).
     seed : int
         the tables' seed (the permutation, gradient table, feature points or
-        wavelet tile), as ``render --seed``; default 1.
+        wavelet tile), as ``render --seed``, 0..2^32 - 1; default 1.
     basis : str
         the noise under a sum: improved (default), table (noise2), gctbf, wavelet.
     octaves : int
@@ -315,6 +355,11 @@ _DOC_OPTIONS = """
         at most per cube (50), count rule (inverse, closest, closest-last).
     tile : int
         wavelet tile period, even, 8..256 (64).
+
+    A value ``render`` refuses raises ValueError, checked by the same library
+    call in render's words (octaves 1..30, gain [-1e3, 1e3], lacunarity
+    [1e-6, 1e6], amplitude [-1e6, 1e6], stripes [1e-9, 1e9], size 1..65536,
+    extent [1e-9, 1e9], x0, y0, z [-1e9, 1e9], each finite: nl_basis.h).
 """
 
 
@@ -352,11 +397,9 @@ def grid(noise="improved", size=512, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=
     >>> v.shape, v.dtype
     ((256, 256), dtype('float64'))
     """
-    size = _int("size", size, 1, 65536)
-    win = _Window(_real("x0", x0), _real("y0", y0), _real("z", z),
-                  _real("extent", extent, 0.0), size, size)
-    if not win.size > 0:
-        raise ValueError(f"extent: {extent!r} is not positive")
+    win = _window(size, extent, x0, y0, z)
+    size = win.w
+    so = _sum_options(octaves, gain, lacunarity, amplitude, stripes)
     nz = _make(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
                terms, lambda_, points, count, tile)
     c = max(abs(win.x0), abs(win.x0 + win.size), abs(win.y0), abs(win.y0 + win.size))
@@ -364,7 +407,7 @@ def grid(noise="improved", size=512, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=
     out = _out(out, (size, size))
     if nz.sum == "marble":
         _marble_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
-                     2 * np.pi * _real("stripes", stripes), _real("amplitude", amplitude),
+                     2 * np.pi * so.stripes, so.amplitude,
                      _ptr(out))
     else:
         _fractal_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
@@ -415,8 +458,12 @@ def _coords(names, arrays):
     for name, a in zip(names, arrays):
         a = np.asarray(a)
         if a.dtype != np.float64:
-            if a.dtype.kind not in "biuf":
-                raise TypeError(f"{name}: coordinates must be real numbers, got dtype {a.dtype}")
+            # float16 has 11 bits (a coordinate past 2048 is not where it was
+            # meant) and bool is no coordinate: as documented, only integers
+            # and float32 are converted
+            if a.dtype.kind not in "iu" and a.dtype != np.float32:
+                raise TypeError(f"{name}: coordinates must be real numbers (integer, float32 "
+                                f"or float64), got dtype {a.dtype}")
             a = a.astype(np.float64)
         conv.append(a)
     try:
@@ -467,8 +514,8 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
            lambda_=4.0, points=50, count="inverse", tile=64, out=None):
     """A noise at arrays of points: x, y (and z) broadcast together as numpy does.
 
-    Coordinates are float64 (integer and float32 arrays are converted; complex,
-    object or string arrays raise TypeError); a NaN or infinite coordinate, or
+    Coordinates are float64 (integer and float32 arrays are converted; other
+    dtypes, float16, bool, longdouble, complex, object or str, raise TypeError); a NaN or infinite coordinate, or
     one whose finest octave passes 2^52, is a ValueError naming the first such
     point (flat index): then ``out`` holds the values of the points before it
     in C order, and its entries from it on may have been written (the library
@@ -592,12 +639,9 @@ def cellular_grid(size=512, n=4, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=1, l
     >>> nn.cellular_grid(16, 3, seed=5).shape
     (16, 16, 3)
     """
-    size = _int("size", size, 1, 65536)
+    win = _window(size, extent, x0, y0, z)
+    size, ext, x0, y0, z = win.w, win.size, win.x0, win.y0, win.z
     n = _int("n", n, 1, 4)
-    ext = _real("extent", extent, 0.0)
-    if not ext > 0:
-        raise ValueError(f"extent: {extent!r} is not positive")
-    x0, y0, z = _real("x0", x0), _real("y0", y0), _real("z", z)
     nz = _cells(seed, lambda_, points, count)
     out = np.empty((size, size, n))
     try:

@@ -68,8 +68,8 @@ _kuiper_test = fn("nl_stats_kuiper_test", ctypes.c_int, c_double_p, ctypes.c_siz
                   ctypes.c_void_p, ctypes.POINTER(_KuiperResult), _E)
 _chisq_test = fn("nl_stats_chisq_test", ctypes.c_int, c_double_p, c_double_p, ctypes.c_size_t,
                  ctypes.POINTER(_ChisqResult), _E)
-_mean_sd = fn("nl_stats_mean_sd", None, c_double_p, ctypes.c_size_t, ctypes.c_int, c_double_p,
-               c_double_p)
+_mean_sd = fn("nl_stats_mean_sd_checked", ctypes.c_int, c_double_p, ctypes.c_size_t, ctypes.c_int,
+               c_double_p, c_double_p, _E)
 _linkage_parse = fn("nl_cluster_linkage_method_parse", ctypes.c_int, ctypes.c_char_p,
                     ctypes.POINTER(ctypes.c_int), _E)
 _linkage = fn("nl_cluster_linkage", ctypes.c_int, c_double_p, ctypes.c_size_t, ctypes.c_size_t,
@@ -278,6 +278,7 @@ def mean_sd(x, rounding="running"):
     named roundings, so that the numbers of a committed table come back to
     the bit: 'running' is GSL's running mean and sd (gsl_stats_mean,
     gsl_stats_sd), 'summed' the sum in order over n, then the sum of squares.
+    An empty x has no mean: ValueError (statistics.mean raises too).
 
     Example
     -------
@@ -288,9 +289,9 @@ def mean_sd(x, rounding="running"):
     a = _sample("x", x)
     if rounding not in ("running", "summed"):
         raise ValueError(f"rounding: {rounding!r} is not 'running' or 'summed'")
-    m, sd = ctypes.c_double(), ctypes.c_double()
-    _mean_sd(_ptr(a), a.size, 0 if rounding == "running" else 1, ctypes.byref(m),
-             ctypes.byref(sd))
+    m, sd, err = ctypes.c_double(), ctypes.c_double(), Error()
+    check(_mean_sd(_ptr(a), a.size, 0 if rounding == "running" else 1, ctypes.byref(m),
+                   ctypes.byref(sd), ctypes.byref(err)), err, {"sample": "x"})
     return m.value, sd.value
 
 

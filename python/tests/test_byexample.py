@@ -109,3 +109,58 @@ def test_failed_writes_leave_nothing(tmp_path):
     lines = r.stdout.splitlines()
     assert len(lines) == 2 and all(line.startswith("OSError:") for line in lines), r.stdout
     assert os.listdir(tmp_path) == []
+
+
+@pytest.fixture(scope="module")
+def params():
+    return nb.analyse(exemplar(1)[..., 0])
+
+
+# Each value `noiselab example` refuses, refused here by the same library
+# check (nl_byexample_synth_check, nl_byexample_morph_check), in the same words.
+@pytest.mark.parametrize("kw,words", [
+    (dict(scale=float("nan")), "scale: nan is not a finite number"),
+    (dict(scale=float("inf")), "scale: inf is not a finite number"),
+    (dict(scale=-1.0), "scale: -1 is outside [1e-06, 1e+06]"),
+    (dict(scale=0), "scale: 0 is outside [1e-06, 1e+06]"),
+    (dict(solid=True, z=float("nan")), "z: nan is not a finite number"),
+    (dict(z=2e9), "z: 2e+09 is outside [-1e+09, 1e+09]"),
+    (dict(width=32769), "width: 32769 is outside [1, 32768]"),
+    (dict(height=40000), "height: 40000 is outside [1, 32768]"),
+])
+def test_synthesize_refuses_what_the_tool_refuses(params, kw, words):
+    width = kw.pop("width", 16)
+    with pytest.raises(ValueError) as e:
+        nb.synthesize(params, width, **kw)
+    assert str(e.value) == words
+
+
+@pytest.mark.parametrize("kw,exc", [(dict(seed=-1), ValueError), (dict(seed=2**32), ValueError),
+                                    (dict(scale="1"), TypeError), (dict(width=1.5), TypeError),
+                                    (dict(width=2**32 + 16), ValueError)])
+def test_synthesize_refuses_seeds_and_types(params, kw, exc):
+    width = kw.pop("width", 16)
+    with pytest.raises(exc):
+        nb.synthesize(params, width, **kw)
+
+
+@pytest.mark.parametrize("t,words", [(float("nan"), "t: nan is not a finite number"),
+                                     (2.0, "t: 2 is outside [0, 1]"),
+                                     (-0.25, "t: -0.25 is outside [0, 1]")])
+def test_morph_refuses_what_the_tool_refuses(params, t, words):
+    with pytest.raises(ValueError) as e:
+        nb.morph(params, params, t)
+    assert str(e.value) == words
+
+
+@pytest.mark.parametrize("opt,value,words", [("--scale", "nan", "--scale: 'nan' is not a finite"),
+                                             ("--scale", "0", "--scale: 0 is outside"),
+                                             ("--scale", "-1", "--scale: -1 is outside"),
+                                             ("--t", "2", "--t: 2 is outside [0, 1]")])
+def test_tool_refuses_the_same(tmp_path, params, opt, value, words):
+    params.save(tmp_path / "p.params")
+    cmd = (["morph", tmp_path / "p.params", tmp_path / "p.params", "-o", tmp_path / "m.params"]
+           if opt == "--t" else
+           ["synthesize", tmp_path / "p.params", "--size", 16, "-o", tmp_path / "x.png"])
+    r = subprocess.run([EXAMPLE, *map(str, cmd), opt, value], capture_output=True, text=True)
+    assert r.returncode != 0 and words in r.stderr and r.stderr.count("\n") == 1, r.stderr

@@ -55,6 +55,10 @@ def test_value_grid_is_the_fractal_sum():
     (lambda: nc.optimise(DISC, speed=3), TypeError, "speed: not an option"),
     (lambda: nc.optimise(DISC, grid=0), ValueError, "grid"),
     (lambda: nc.value_grid((np.zeros(8), np.arange(8)), 8), ValueError, "config's m is 512"),
+    # the experiments' --seed range; -1 used to wrap to 2^64 - 1, 1.5 to 1
+    (lambda: nc.optimise(DISC, seed=-1, **SMALL), ValueError, "seed: -1 is outside"),
+    (lambda: nc.optimise(DISC, seed=2**32, **SMALL), ValueError, "seed: 4294967296 is outside"),
+    (lambda: nc.optimise(DISC, seed=1.5, **SMALL), TypeError, "seed: expected an integer"),
 ])
 def test_bad_input(call, exc, words):
     with pytest.raises(exc) as e:

@@ -115,6 +115,13 @@ def test_broadcast_and_dtypes():
 @pytest.mark.parametrize("call,exc,words", [
     (lambda: nn.points(np.array([1j]), 0.0), TypeError, "x: coordinates must be real"),
     (lambda: nn.points(np.array(["a"]), 0.0), TypeError, "x: coordinates must be real"),
+    # float16 and bool: other dtypes than integer and float32 raise, as documented
+    (lambda: nn.points(np.array([1.5], np.float16), 0.0), TypeError, "dtype float16"),
+    (lambda: nn.points(0.0, np.array([True])), TypeError, "y: coordinates must be real"),
+    (lambda: nn.points(0.0, 0.5, np.array([0.5], np.longdouble)), TypeError, "z: coordinates"),
+    (lambda: nn.points(True, 0.5), TypeError, "dtype bool"),
+    (lambda: nn.cellular(np.array([1.5], np.float16), 0.0), TypeError, "dtype float16"),
+    (lambda: nn.cellular(0.5, np.array([False]), 0.5), TypeError, "dtype bool"),
     (lambda: nn.points(np.zeros(3), np.zeros(4)), ValueError, "do not broadcast"),
     (lambda: nn.points(0.0, np.array([0.0, np.nan])), ValueError, "y: coordinate 1"),
     (lambda: nn.points(np.inf, 0.0), ValueError, "not a finite number"),
@@ -129,7 +136,8 @@ def test_broadcast_and_dtypes():
     (lambda: nn.grid("perlin", 8), ValueError, "unknown noise 'perlin'"),
     (lambda: nn.grid("fbm", 8, basis="x"), ValueError, "unknown noise basis"),
     (lambda: nn.grid("gctbf", 8, terms="F9"), ValueError, "F9"),
-    (lambda: nn.grid("wavelet", 8, tile=7), ValueError, "tile: the wavelet tile period"),
+    (lambda: nn.grid("wavelet", 8, tile=7), ValueError, "tile: 7 is outside [8, 256]"),
+    (lambda: nn.grid("wavelet", 8, tile=9), ValueError, "tile: the wavelet tile period"),
     (lambda: nn.grid("noise2", 8, table=([0.0, 1.0], [0, 0])), ValueError, "not a permutation"),
 ])
 def test_bad_input(call, exc, words):
@@ -305,12 +313,17 @@ def test_refusal_keeps_the_points_before(noise, kw):
 
 
 @pytest.mark.parametrize("kw,words", [
-    (dict(noise="wavelet", tile=7), "tile: the wavelet tile period must be even and in 8..256"),
-    (dict(noise="wavelet", tile=4), "tile: the wavelet tile period must be even and in 8..256"),
-    (dict(noise="noise2", table_size=2), "table_size: 2 is below 4"),
+    (dict(noise="wavelet", tile=9), "tile: the wavelet tile period must be even and in 8..256"),
+    (dict(noise="wavelet", tile=4), "tile: 4 is outside [8, 256]"),
+    (dict(noise="noise2", table_size=2), "table_size: 2 is outside [4, 1048576]"),
     (dict(noise="gctbf", terms="F9"), "terms: "),
-    (dict(noise="gctbf", lambda_=0.0), "lambda_ must be in"),
-    (dict(noise="gctbf", points=0), "points must be in 1..64"),
+    (dict(noise="gctbf", lambda_=0.0), "lambda_: 0 must be in (0, 1000]"),
+    (dict(noise="gctbf", points=0), "points: 0 is outside [1, 64]"),
+    # render range-checks an option also where the noise ignores it
+    (dict(noise="improved", tile=7), "tile: 7 is outside [8, 256]"),
+    (dict(noise="fbm", points=65), "points: 65 is outside [1, 64]"),
+    (dict(noise="improved", lambda_=-1.0), "lambda_: -1 must be in (0, 1000]"),
+    (dict(noise="wavelet", table_size=2**21), "table_size: 2097152 is outside [4, 1048576]"),
     (dict(noise="fbm", basis="wavelet", tile=300), "tile: "),
 ])
 def test_library_messages_name_the_python_parameter(kw, words):
@@ -323,3 +336,60 @@ def test_library_messages_name_the_python_parameter(kw, words):
             call()
         msg = str(e.value)
         assert msg.startswith(words) and "--" not in msg and "\n" not in msg, msg
+
+
+# Each value render refuses, with render's option and Python's parameter:
+# refused by the same library check (nl_basis_sum_check, nl_basis_window_check,
+# nl_basis_make), in the same words but the name.
+RANGE_CASES = [
+    ("fbm", "gain", float("nan"), "nan is not a finite number"),
+    ("fbm", "gain", 1e4, "10000 is outside [-1000, 1000]"),
+    ("fbm", "lacunarity", 0, "0 is outside [1e-06, 1e+06]"),
+    ("fbm", "lacunarity", -2, "-2 is outside [1e-06, 1e+06]"),
+    ("fbm", "octaves", 31, "31 is outside [1, 30]"),
+    ("improved", "extent", 1e10, "1e+10 is outside [1e-09, 1e+09]"),
+    ("improved", "extent", 0, "0 is outside [1e-09, 1e+09]"),
+    ("improved", "x0", 1e10, "1e+10 is outside [-1e+09, 1e+09]"),
+    ("improved", "y0", float("-inf"), "-inf is not a finite number"),
+    ("improved", "z", 1e10, "1e+10 is outside [-1e+09, 1e+09]"),
+    ("marble", "stripes", 0, "0 is outside [1e-09, 1e+09]"),
+    ("marble", "stripes", -1, "-1 is outside [1e-09, 1e+09]"),
+    ("marble", "amplitude", 1e7, "1e+07 is outside [-1e+06, 1e+06]"),
+    ("noise2", "table_size", 2**21, "2097152 is outside [4, 1048576]"),
+    ("improved", "size", 65537, "65537 is outside [1, 65536]"),
+]
+
+
+@pytest.mark.parametrize("noise,name,value,words", RANGE_CASES)
+def test_grid_refuses_what_render_refuses(noise, name, value, words):
+    kw = {"size": 4, name: value}
+    with pytest.raises(ValueError) as e:
+        nn.grid(noise, **kw)
+    assert str(e.value) == f"{name}: {words}"
+
+
+@pytest.mark.parametrize("noise,name,value,words", RANGE_CASES)
+def test_render_refuses_the_same(tmp_path, noise, name, value, words):
+    args = [noise, f"--{name.replace('_', '-')}", str(value), "-o", str(tmp_path / "x.png")]
+    if name != "size":
+        args += ["--size", "4"]
+    r = subprocess.run([RENDER, *args], capture_output=True, text=True)
+    assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
+    opt = f"--{name.replace('_', '-')}"
+    # a non-finite value is refused already as a word, quoted (nl_parse_double)
+    want = (f"{opt}: '{value}' is not a finite number" if "finite" in words else
+            f"{opt}: {words}")
+    assert r.stderr == f"noiselab render: {want}\n", r.stderr
+
+
+@pytest.mark.parametrize("call", [
+    lambda: nn.grid("improved", 4, seed=2**32),
+    lambda: nn.points(0.5, 0.5, seed=2**40),
+    lambda: nn.bound("fbm", lacunarity=0),
+    lambda: nn.points(np.zeros(3), 0.5, noise="fbm", gain=np.inf),
+    lambda: nn.cellular_grid(4, extent=-1),
+    lambda: nn.cellular_grid(4, x0=np.nan),
+])
+def test_points_bound_and_cellular_refuse_them_too(call):
+    with pytest.raises(ValueError):
+        call()

@@ -149,3 +149,34 @@ def test_bad_input(call, exc, words):
     with pytest.raises(exc) as e:
         call()
     assert words in str(e.value) and "\n" not in str(e.value), str(e.value)
+
+
+@pytest.mark.parametrize("x", [[], np.empty(0), np.empty((0, 3))])
+def test_mean_sd_of_nothing_raises(x):
+    """An empty sample has no mean (statistics.mean raises; numpy warns and
+    gives NaN): the library refuses it, as the stat tool an empty column."""
+    for rounding in ("running", "summed"):
+        with pytest.raises(ValueError) as e:
+            ns.mean_sd(x, rounding)
+        assert str(e.value) == "x: no values"
+
+
+# `stat gmm` refuses these (--tol, --reg-covar, --max-iter, --seed); the
+# library's nl_gmm_options_check refuses the first three for both.
+@pytest.mark.parametrize("kw,exc,words", [
+    (dict(tol=np.inf), ValueError, "tol: inf is not a finite number"),
+    (dict(tol=-1.0), ValueError, "tol: -1 is outside [0, 1e+300]"),
+    (dict(reg_covar=np.inf), ValueError, "reg_covar: inf is not a finite number"),
+    (dict(max_iter=2**40), ValueError, "max_iter: 1099511627776 is outside [1, 100000000]"),
+    (dict(max_iter=-1), ValueError, "max_iter: -1 is outside"),
+    (dict(random_state=-1), ValueError, "random_state: -1 is outside [0, 4294967295]"),
+    (dict(random_state=2**32), ValueError, "random_state: 4294967296 is outside"),
+    (dict(n_threads=0), ValueError, "n_threads: 0 is outside"),
+    (dict(n_components=2.5), TypeError, "n_components: expected an integer"),
+])
+def test_gmm_refuses_what_stat_gmm_refuses(kw, exc, words):
+    X = np.random.default_rng(1).random((20, 2))
+    kw.setdefault("n_components", 2)
+    with pytest.raises(exc) as e:
+        ns.GaussianMixture(**kw).fit(X)
+    assert str(e.value).startswith(words), str(e.value)

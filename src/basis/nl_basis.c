@@ -3,6 +3,7 @@
 #include "basis/nl_basis.h"
 #include "texture/nl_texture.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -18,6 +19,51 @@ nl_basis_sum_options nl_basis_sum_defaults(void)
                                 .stripes = 1};
 }
 
+/* what in [lo, hi] and finite: nl_parse_double's words, so that a value
+ * refused here reads as the command line's refusal */
+static nl_status in_range(const char *what, double v, double lo, double hi, nl_error *err)
+{
+  if (!isfinite(v)) return nl_fail(err, NL_EINVAL, "%s: %g is not a finite number", what, v);
+  if (!(v >= lo && v <= hi)) return nl_fail(err, NL_EINVAL, "%s: %g is outside [%g, %g]", what, v, lo, hi);
+  return NL_OK;
+}
+
+nl_status nl_basis_sum_check(const nl_basis_sum_options *o, nl_error *err)
+{
+  if (o->octaves < 1 || o->octaves > NL_BASIS_MAX_OCTAVES)
+    return nl_fail(err, NL_EINVAL, "--octaves: %ld is outside [1, %d]", o->octaves, NL_BASIS_MAX_OCTAVES);
+  if (in_range("--gain", o->gain, -1e3, 1e3, err) || in_range("--lacunarity", o->lacunarity, 1e-6, 1e6, err) ||
+      in_range("--amplitude", o->amplitude, -1e6, 1e6, err) || in_range("--stripes", o->stripes, 1e-9, 1e9, err))
+    return NL_EINVAL;
+  return NL_OK;
+}
+
+nl_status nl_basis_options_check(const nl_basis_options *o, nl_error *err)
+{
+  if (o->table_size < 4 || o->table_size > NL_BASIS_MAX_TABLE)
+    return nl_fail(err, NL_EINVAL, "--table-size: %ld is outside [4, %d]", o->table_size, NL_BASIS_MAX_TABLE);
+  if (o->tile < 8 || o->tile > 256) return nl_fail(err, NL_EINVAL, "--tile: %ld is outside [8, 256]", o->tile);
+  if (!(o->lambda > 0 && o->lambda <= 1000))
+    return nl_fail(err, NL_EINVAL, "--lambda: %g must be in (0, 1000] (mean feature points per unit cube)",
+                   o->lambda);
+  if (o->points < 1 || o->points > NL_CELLULAR_MAX_M)
+    return nl_fail(err, NL_EINVAL, "--points: %ld is outside [1, %d]", o->points, NL_CELLULAR_MAX_M);
+  if (o->count != NL_COUNT_CLOSEST && o->count != NL_COUNT_INVERSE_CDF && o->count != NL_COUNT_CLOSEST_LAST)
+    return nl_fail(err, NL_EINVAL, "--count: %d is not a count rule", (int)o->count);
+  return NL_OK;
+}
+
+nl_status nl_basis_window_check(const nl_noise_window *win, nl_error *err)
+{
+  if (win->w < 1 || win->w > NL_BASIS_MAX_SIZE || win->h < 1 || win->h > NL_BASIS_MAX_SIZE)
+    return nl_fail(err, NL_EINVAL, "--size: %d is outside [1, %d]", win->w < 1 || win->w > NL_BASIS_MAX_SIZE ? win->w : win->h,
+                   NL_BASIS_MAX_SIZE);
+  if (in_range("--extent", win->size, 1e-9, 1e9, err) || in_range("--x0", win->x0, -1e9, 1e9, err) ||
+      in_range("--y0", win->y0, -1e9, 1e9, err) || in_range("--z", win->z, -1e9, 1e9, err))
+    return NL_EINVAL;
+  return NL_OK;
+}
+
 /* ---- the bases ------------------------------------------------------------ */
 
 static nl_status make_grad2(nl_basis *b, const nl_basis_options *o, unsigned long seed,
@@ -25,6 +71,8 @@ static nl_status make_grad2(nl_basis *b, const nl_basis_options *o, unsigned lon
 {
   if (o->table_size < 4)
     return nl_fail(err, NL_EINVAL, "--table-size: %ld is below 4", o->table_size);
+  if (o->table_size > NL_BASIS_MAX_TABLE)
+    return nl_fail(err, NL_EINVAL, "--table-size: %ld is outside [4, %d]", o->table_size, NL_BASIS_MAX_TABLE);
   b->grad2 = nl_noise_grad2_alloc((size_t)o->table_size);
   nl_noise_grad2_seed(b->grad2, seed);
   b->noise = nl_noise_basis_grad2(b->grad2);

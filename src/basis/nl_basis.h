@@ -90,6 +90,15 @@ const nl_basis_kind *nl_basis_find(const char *name);
  * names the input as the command line spells it ("--tile: ..."). */
 nl_status nl_basis_make(const char *name, const nl_basis_options *o, unsigned long seed,
                         nl_basis **out, nl_error *err);
+/* The ranges of render's basis options, every field whatever the basis
+ * (render refuses --tile 7 for improved noise too, where it is ignored):
+ * table_size 4..NL_BASIS_MAX_TABLE, tile 8..256 (even only where a wavelet
+ * tile is built), lambda in (0, 1000], points 1..NL_CELLULAR_MAX_M, a known
+ * count rule. NL_EINVAL naming the option ("--tile: 7 is outside [8, 256]");
+ * the Python binding calls it before nl_basis_make, so that both refuse the
+ * same values. nl_basis_make itself checks what the chosen basis reads. */
+#define NL_BASIS_MAX_TABLE 1048576
+nl_status nl_basis_options_check(const nl_basis_options *o, nl_error *err);
 void nl_basis_free(nl_basis *b);
 
 /* ---- sums of octaves ------------------------------------------------------ */
@@ -107,6 +116,20 @@ typedef struct {
 } nl_basis_sum_options;
 
 nl_basis_sum_options nl_basis_sum_defaults(void);
+
+/* The values the render command and the Python binding accept, checked in
+ * one place: every field of o (whether or not the chosen sum reads it),
+ * octaves in 1..NL_BASIS_MAX_OCTAVES, gain in [-1e3, 1e3], lacunarity in
+ * [1e-6, 1e6] (0 or a negative one would put every octave at the origin or
+ * mirror it), amplitude in [-1e6, 1e6], stripes in [1e-9, 1e9], each finite.
+ * NL_EINVAL naming the option as the command line spells it
+ * ("--lacunarity: 0 is outside [1e-06, 1e+06]"). */
+#define NL_BASIS_MAX_OCTAVES 30
+nl_status nl_basis_sum_check(const nl_basis_sum_options *o, nl_error *err);
+/* A render window: w and h in 1..NL_BASIS_MAX_SIZE ("--size"), size (the
+ * extent) in [1e-9, 1e9], x0, y0 and z in [-1e9, 1e9], each finite. */
+#define NL_BASIS_MAX_SIZE 65536
+nl_status nl_basis_window_check(const nl_noise_window *win, nl_error *err);
 
 typedef struct {
   const char *name, *summary;

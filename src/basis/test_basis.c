@@ -5,6 +5,7 @@
 #include "basis/nl_basis.h"
 #include "nl_test.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -102,6 +103,54 @@ NL_TEST(bad_names_and_options_are_refused)
   o.terms = "F5";
   NL_CHECK(make_fails_with("gctbf", &o, "--terms: "));
   NL_CHECK(make_fails_with("gctbf", &o, "1..4"));
+}
+
+/* The render command's ranges, in the library so that its Python binding
+ * refuses the same values with the same words. */
+NL_TEST(sum_and_window_ranges_are_render_s)
+{
+  nl_error err;
+  nl_basis_sum_options so = nl_basis_sum_defaults();
+  NL_CHECK(nl_basis_sum_check(&so, &err) == NL_OK);
+  so.lacunarity = 0;
+  NL_CHECK(nl_basis_sum_check(&so, &err) == NL_EINVAL && !strcmp(err.msg, "--lacunarity: 0 is outside [1e-06, 1e+06]"));
+  so = nl_basis_sum_defaults();
+  so.gain = NAN;
+  NL_CHECK(nl_basis_sum_check(&so, &err) == NL_EINVAL && !strcmp(err.msg, "--gain: nan is not a finite number"));
+  so = nl_basis_sum_defaults();
+  so.octaves = 31;
+  NL_CHECK(nl_basis_sum_check(&so, &err) == NL_EINVAL && !strcmp(err.msg, "--octaves: 31 is outside [1, 30]"));
+  so = nl_basis_sum_defaults();
+  so.stripes = 0;
+  NL_CHECK(nl_basis_sum_check(&so, &err) == NL_EINVAL && !strncmp(err.msg, "--stripes: ", 11));
+  so = nl_basis_sum_defaults();
+  so.amplitude = -2e6;
+  NL_CHECK(nl_basis_sum_check(&so, &err) == NL_EINVAL && !strncmp(err.msg, "--amplitude: ", 13));
+  nl_noise_window w = {0, 0, 0.5, 4, 512, 512};
+  NL_CHECK(nl_basis_window_check(&w, &err) == NL_OK);
+  w.x0 = 1e10;
+  NL_CHECK(nl_basis_window_check(&w, &err) == NL_EINVAL && !strcmp(err.msg, "--x0: 1e+10 is outside [-1e+09, 1e+09]"));
+  w.x0 = 0;
+  w.size = INFINITY;
+  NL_CHECK(nl_basis_window_check(&w, &err) == NL_EINVAL && !strcmp(err.msg, "--extent: inf is not a finite number"));
+  w.size = 4;
+  w.h = 65537;
+  NL_CHECK(nl_basis_window_check(&w, &err) == NL_EINVAL && !strcmp(err.msg, "--size: 65537 is outside [1, 65536]"));
+  nl_basis_options bo = nl_basis_defaults();
+  nl_basis *b;
+  bo.table_size = NL_BASIS_MAX_TABLE + 1;
+  NL_CHECK(nl_basis_make("noise2", &bo, 1, &b, &err) == NL_EINVAL && !strncmp(err.msg, "--table-size: ", 14));
+  NL_CHECK(nl_basis_options_check(&bo, &err) == NL_EINVAL && !strcmp(err.msg, "--table-size: 1048577 is outside [4, 1048576]"));
+  bo = nl_basis_defaults();
+  NL_CHECK(nl_basis_options_check(&bo, &err) == NL_OK);
+  bo.tile = 7;   /* refused whatever the basis, as render refuses it */
+  NL_CHECK(nl_basis_options_check(&bo, &err) == NL_EINVAL && !strcmp(err.msg, "--tile: 7 is outside [8, 256]"));
+  bo = nl_basis_defaults();
+  bo.lambda = NAN;
+  NL_CHECK(nl_basis_options_check(&bo, &err) == NL_EINVAL && !strncmp(err.msg, "--lambda: nan must be in", 24));
+  bo = nl_basis_defaults();
+  bo.points = 65;
+  NL_CHECK(nl_basis_options_check(&bo, &err) == NL_EINVAL && !strcmp(err.msg, "--points: 65 is outside [1, 64]"));
 }
 
 NL_TEST(sums_are_the_octaves_of_their_rule)

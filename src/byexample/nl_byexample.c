@@ -528,12 +528,28 @@ static void calibrate_channels(const nl_byexample_params *p, const nl_wavelet_ti
   for (int c = 0; c < C; c++) free(B[c]);
 }
 
+nl_status nl_byexample_synth_check(const nl_byexample_synth_options *opt, nl_error *err)
+{
+  if (!opt) return NL_OK;
+  if (!isfinite(opt->scale)) return nl_fail(err, NL_EINVAL, "--scale: %g is not a finite number", opt->scale);
+  if (!(opt->scale >= NL_BYEXAMPLE_SCALE_MIN && opt->scale <= NL_BYEXAMPLE_SCALE_MAX))
+    return nl_fail(err, NL_EINVAL, "--scale: %g is outside [%g, %g]", opt->scale, NL_BYEXAMPLE_SCALE_MIN,
+                   NL_BYEXAMPLE_SCALE_MAX);
+  if (!isfinite(opt->z)) return nl_fail(err, NL_EINVAL, "--z: %g is not a finite number", opt->z);
+  if (fabs(opt->z) > NL_BYEXAMPLE_Z_MAX)
+    return nl_fail(err, NL_EINVAL, "--z: %g is outside [%g, %g]", opt->z, -NL_BYEXAMPLE_Z_MAX, NL_BYEXAMPLE_Z_MAX);
+  return NL_OK;
+}
+
 nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, unsigned long seed,
                                   const nl_byexample_synth_options *opt, nl_image **out,
                                   nl_error *err)
 {
-  if (w < 1 || h < 1)
-    return nl_fail(err, NL_EINVAL, "output size %d x %d: each side must be at least 1", w, h);
+  if (w < 1 || w > NL_BYEXAMPLE_MAX_SIDE)
+    return nl_fail(err, NL_EINVAL, "--size: %d is outside [1, %d]", w, NL_BYEXAMPLE_MAX_SIDE);
+  if (h < 1 || h > NL_BYEXAMPLE_MAX_SIDE)
+    return nl_fail(err, NL_EINVAL, "--height: %d is outside [1, %d]", h, NL_BYEXAMPLE_MAX_SIDE);
+  if (nl_byexample_synth_check(opt, err)) return NL_EINVAL;
   if ((double)w * h > 1e9)   /* each side may be in range while their product is not */
     return nl_fail(err, NL_EINVAL, "output size %d x %d is %.3g pixels, more than the limit of 1e9",
                    w, h, (double)w * h);

@@ -111,6 +111,13 @@
 #define NL_BYEXAMPLE_TILE3 64      /* 3D tile period for solid synthesis */
 #define NL_BYEXAMPLE_MIN_SIZE 16   /* smaller exemplars are rejected */
 #define NL_BYEXAMPLE_CALIBRATE 4   /* the `example` command's calibration iterations */
+/* What synthesis and morphing accept (nl_byexample_synth_check,
+ * nl_byexample_morph_check): the `example` command's --size, --height,
+ * --scale, --z and --t, and the Python binding, refuse the same values. */
+#define NL_BYEXAMPLE_MAX_SIDE 32768    /* pixels per side of a synthesis */
+#define NL_BYEXAMPLE_SCALE_MIN 1e-6    /* pixel size in exemplar pixels */
+#define NL_BYEXAMPLE_SCALE_MAX 1e6
+#define NL_BYEXAMPLE_Z_MAX 1e9         /* |z| of a solid slice */
 
 typedef enum { NL_HIST_PAPER = 0, NL_HIST_GAUSS = 1 } nl_byexample_hist_kind;
 
@@ -143,7 +150,7 @@ typedef struct {
 typedef enum { NL_SPLINE_STEFFEN = 0, NL_SPLINE_FRITSCH_CARLSON = 1 } nl_byexample_spline_kind;
 
 typedef struct {
-  double scale;       /* pixel size in exemplar pixels (0 -> 1) */
+  double scale;       /* pixel size in exemplar pixels, NL_BYEXAMPLE_SCALE_MIN..MAX */
   int solid;          /* 1: slice z of 3D wavelet noise (solid extrapolation) */
   double z;
   nl_byexample_spline_kind spline;
@@ -203,6 +210,16 @@ nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *o
 nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, unsigned long seed,
                                   const nl_byexample_synth_options *opt, nl_image **out,
                                   nl_error *err);
+/* nl_byexample_synthesize refuses (NL_EINVAL, naming the input as the
+ * command line spells it: "--size: 0 is outside [1, 32768]") a side outside
+ * 1..NL_BYEXAMPLE_MAX_SIDE and options that nl_byexample_synth_check
+ * refuses. That check, which the `example` command also calls before it
+ * reads a file: with opt (NULL: scale 1, plane z = 0) a finite scale in
+ * [NL_BYEXAMPLE_SCALE_MIN, NL_BYEXAMPLE_SCALE_MAX] and a finite z,
+ * |z| <= NL_BYEXAMPLE_Z_MAX. A NaN scale would make every pixel NaN, an
+ * infinite one a constant image, 0 or a negative one a degenerate or
+ * mirrored grid ("--scale: nan is not a finite number"). */
+nl_status nl_byexample_synth_check(const nl_byexample_synth_options *opt, nl_error *err);
 /* One decorrelated channel, before histogram matching and recorrelation:
  * the multiresolution noise of weights gain * w[c], offsets from seed and c. */
 void nl_byexample_channel_noise(const nl_byexample_params *p, int c, const nl_wavelet_tile *t,
@@ -223,9 +240,14 @@ nl_status nl_byexample_params_load(const char *path, nl_byexample_params *p, nl_
  * k = 0 finest) in both, so the result keeps the bands both have, and the
  * larger exemplar's coarsest bands are dropped (out->nbands is the smaller
  * count). Errors on different channel counts, histogram kinds or one
- * calibrated file and one not. */
+ * calibrated file and one not, and on a t that nl_byexample_morph_check
+ * refuses. */
 nl_status nl_byexample_morph(const nl_byexample_params *a, const nl_byexample_params *b, double t,
                              nl_byexample_params *out, nl_error *err);
+/* t finite in [0, 1]: outside, the linear parts extrapolate (negative
+ * weights, histograms out of order) and the slerp leaves the arc between
+ * the two rotations; NaN makes every parameter NaN. NL_EINVAL, "--t: ...". */
+nl_status nl_byexample_morph_check(double t, nl_error *err);
 /* Frequency-based editing (Fig. 10c): w[c][k] *= factor for the `nfine`
  * finest bands of every channel. */
 void nl_byexample_attenuate(nl_byexample_params *p, int nfine, double factor);

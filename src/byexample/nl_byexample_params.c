@@ -369,9 +369,17 @@ static void slerp(const double a[4], const double b0[4], double t, double q[4])
   for (int i = 0; i < 4; i++) q[i] /= sqrt(norm);
 }
 
+nl_status nl_byexample_morph_check(double t, nl_error *err)
+{
+  if (!isfinite(t)) return nl_fail(err, NL_EINVAL, "--t: %g is not a finite number", t);
+  if (!(t >= 0 && t <= 1)) return nl_fail(err, NL_EINVAL, "--t: %g is outside [0, 1]", t);
+  return NL_OK;
+}
+
 nl_status nl_byexample_morph(const nl_byexample_params *a, const nl_byexample_params *b, double t,
                              nl_byexample_params *out, nl_error *err)
 {
+  if (nl_byexample_morph_check(t, err)) return NL_EINVAL;
   if (a->channels != b->channels)
     return nl_fail(err, NL_EINVAL, "cannot morph %d channels into %d", a->channels, b->channels);
   if (a->histogram != b->histogram)

@@ -618,6 +618,22 @@ static void kmeans_labels(const double *x, size_t n, size_t d, size_t K, unsigne
 
 /* ---- fitting ------------------------------------------------------------------- */
 
+nl_status nl_gmm_options_check(const nl_gmm_options *o, nl_error *err)
+{
+  /* an infinite tol stops EM after one step, an infinite reg_covar makes
+   * every covariance singular: refused as `stat gmm` refuses them */
+  if (!isfinite(o->tol)) return nl_fail(err, NL_EINVAL, "--tol: %g is not a finite number", o->tol);
+  if (!isfinite(o->reg_covar))
+    return nl_fail(err, NL_EINVAL, "--reg-covar: %g is not a finite number", o->reg_covar);
+  if (!(o->tol >= 0.0 && o->tol <= NL_GMM_MAX_TOL))
+    return nl_fail(err, NL_EINVAL, "--tol: %g is outside [0, %g]", o->tol, NL_GMM_MAX_TOL);
+  if (!(o->reg_covar >= 0.0 && o->reg_covar <= NL_GMM_MAX_TOL))
+    return nl_fail(err, NL_EINVAL, "--reg-covar: %g is outside [0, %g]", o->reg_covar, NL_GMM_MAX_TOL);
+  if (o->max_iter < 1 || o->max_iter > NL_GMM_MAX_ITER)
+    return nl_fail(err, NL_EINVAL, "--max-iter: %zu is outside [1, %d]", o->max_iter, NL_GMM_MAX_ITER);
+  return NL_OK;
+}
+
 static nl_status check_fit_args(const nl_gmm *g, const double *x, size_t n,
                                 const nl_gmm_options *o, nl_error *err)
 {
@@ -628,8 +644,7 @@ static nl_status check_fit_args(const nl_gmm *g, const double *x, size_t n,
   if (s) return s;
   if (o->covariance != g->covariance)
     return nl_fail(err, NL_EINVAL, "options ask for another covariance type than the model has");
-  if (!(o->tol >= 0.0) || !(o->reg_covar >= 0.0) || o->max_iter < 1)
-    return nl_fail(err, NL_EINVAL, "tol and reg_covar must be >= 0 and max_iter >= 1");
+  if (nl_gmm_options_check(o, err)) return NL_EINVAL;
   for (size_t i = 0; i < n * g->d; i++)
     if (!isfinite(x[i]))
       return nl_fail(err, NL_EINVAL, "row %zu, column %zu is not finite", i / g->d + 1, i % g->d + 1);

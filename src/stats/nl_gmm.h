@@ -81,6 +81,13 @@ typedef struct {
 } nl_gmm_options;
 
 void nl_gmm_options_default(nl_gmm_options *o);
+/* What nl_gmm_fit (and so nl_gmm_select_aic) accepts, as `stat gmm` parses
+ * it: tol and reg_covar in [0, NL_GMM_MAX_TOL] (so finite), max_iter in
+ * 1..NL_GMM_MAX_ITER; NL_EINVAL naming the option ("--tol: inf is outside
+ * [0, 1e+300]"). */
+#define NL_GMM_MAX_TOL 1e300
+#define NL_GMM_MAX_ITER 100000000
+nl_status nl_gmm_options_check(const nl_gmm_options *o, nl_error *err);
 
 typedef struct {
   size_t k, d;

@@ -316,6 +316,12 @@ double nl_stats_mean(const double *x, size_t n, nl_stats_rounding rounding);
 double nl_stats_sd(const double *x, size_t n, nl_stats_rounding rounding);
 void nl_stats_mean_sd(const double *x, size_t n, nl_stats_rounding rounding, double *mean,
                       double *sd);
+/* The same for a sample from outside (the Python binding): n = 0, which has
+ * no mean (statistics.mean raises, numpy warns and gives NaN), and an
+ * unknown rounding are NL_EINVAL ("sample: no values"), mean and sd then
+ * untouched. */
+nl_status nl_stats_mean_sd_checked(const double *x, size_t n, nl_stats_rounding rounding,
+                                   double *mean, double *sd, nl_error *err);
 /* The smallest x (fmin: a NaN is passed over unless all are NaN); n >= 1. */
 double nl_stats_min(const double *x, size_t n);
 

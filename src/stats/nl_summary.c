@@ -40,6 +40,16 @@ void nl_stats_mean_sd(const double *x, size_t n, nl_stats_rounding rounding, dou
   else *sd = n > 1 ? gsl_stats_sd(x, 1, n) : 0.0;
 }
 
+nl_status nl_stats_mean_sd_checked(const double *x, size_t n, nl_stats_rounding rounding,
+                                   double *mean, double *sd, nl_error *err)
+{
+  if (rounding != NL_STATS_RUNNING && rounding != NL_STATS_SUMMED)
+    return nl_fail(err, NL_EINVAL, "rounding: %d is not running (0) or summed (1)", (int)rounding);
+  if (n == 0) return nl_fail(err, NL_EINVAL, "sample: no values");
+  nl_stats_mean_sd(x, n, rounding, mean, sd);
+  return NL_OK;
+}
+
 double nl_stats_min(const double *x, size_t n)
 {
   double m = x[0];

@@ -135,8 +135,18 @@ NL_TEST(constant_column_stays_finite_and_bad_input_fails)
   g = nl_gmm_alloc(2, 2, NL_GMM_FULL);
   o.reg_covar = 0.0;
   NL_CHECK(nl_gmm_fit(g, x, 20, &o, &err) == NL_ENUM && strstr(err.msg, "positive definite"));
-  x[5] = NAN;
+  /* `stat gmm`'s ranges: an infinite tol would stop EM after one step */
   o.reg_covar = 1e-6;
+  o.tol = INFINITY;
+  NL_CHECK(nl_gmm_fit(g, x, 20, &o, &err) == NL_EINVAL && !strcmp(err.msg, "--tol: inf is not a finite number"));
+  o.tol = 1e-3;
+  o.reg_covar = -1;
+  NL_CHECK(nl_gmm_fit(g, x, 20, &o, &err) == NL_EINVAL && !strncmp(err.msg, "--reg-covar: -1 is outside", 26));
+  o.reg_covar = 1e-6;
+  o.max_iter = (size_t)NL_GMM_MAX_ITER + 1;
+  NL_CHECK(nl_gmm_fit(g, x, 20, &o, &err) == NL_EINVAL && !strncmp(err.msg, "--max-iter: ", 12));
+  o.max_iter = 100;
+  x[5] = NAN;
   NL_CHECK(nl_gmm_fit(g, x, 20, &o, &err) == NL_EINVAL);
   nl_gmm_free(g);
 }

@@ -8,6 +8,7 @@
 #include <gsl/gsl_rng.h>
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>
+#include <string.h>
 
 NL_TEST(mean_sd_in_both_roundings)
 {
@@ -48,6 +49,12 @@ NL_TEST(mean_sd_in_both_roundings)
   double m, sd;
   nl_stats_mean_sd(v, 0, NL_STATS_SUMMED, &m, &sd);
   NL_CHECK(isnan(m) && sd == 0);
+  nl_error err;
+  m = sd = 7;
+  NL_CHECK(nl_stats_mean_sd_checked(v, 0, NL_STATS_RUNNING, &m, &sd, &err) == NL_EINVAL);
+  NL_CHECK(!strcmp(err.msg, "sample: no values") && m == 7 && sd == 7);
+  NL_CHECK(nl_stats_mean_sd_checked(v, 2, (nl_stats_rounding)2, &m, &sd, &err) == NL_EINVAL);
+  NL_CHECK(nl_stats_mean_sd_checked(v, 2, NL_STATS_SUMMED, &m, &sd, &err) == NL_OK && m == 1 && sd == sqrt(8));
   gsl_rng_free(r);
 }
 
