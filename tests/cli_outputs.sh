@@ -6,9 +6,20 @@
 # written through and stay what they are (devices: private copies made with
 # mknod, as root only); a command with several outputs checks them all
 # before writing any and replaces all or none.
+# A result printed on stdout is an output too: every command that prints one
+# fails when stdout cannot take it (> /dev/full), with a line on stderr.
+# Args: RENDER STAT EXAMPLE PATTERNS CHECK SWEEP S3_FBM [NOISELAB_SCRIPT].
 set -u
-RENDER=$(realpath "${1:?usage: cli_outputs.sh RENDER STAT}")
-STAT=$(realpath "${2:?usage: cli_outputs.sh RENDER STAT}")
+use="usage: cli_outputs.sh RENDER STAT EXAMPLE PATTERNS CHECK SWEEP S3_FBM [NOISELAB_SCRIPT]"
+RENDER=$(realpath "${1:?$use}")
+STAT=$(realpath "${2:?$use}")
+EXAMPLE=$(realpath "${3:?$use}")
+PATTERNS=$(realpath "${4:?$use}")
+CHECKTOOL=$(realpath "${5:?$use}")
+SWEEP=$(realpath "${6:?$use}")
+S3=$(realpath "${7:?$use}")
+NL="${8:+$(realpath "$8")}"
+SRC="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 cd "$TMP" || exit 1
@@ -107,6 +118,76 @@ if [ "$(id -u)" = 0 ] && mknod null c 1 3 2>/dev/null && mknod full c 1 7 2>/dev
   check test -c full
 else
   echo "cli_outputs: not root, device nodes not tested" >&2
+fi
+
+# ---- stdout is an output: a result that cannot be written fails, saying so
+# Runs CMD with stdout on /dev/full: it must exit non-zero with a line on
+# stderr naming the failed write.
+# FULL_LINES: how many lines stderr may have (1; check adds its summary).
+full() {   # LABEL CMD...
+  local label="$1" rc
+  shift
+  "$@" >/dev/full 2>err
+  rc=$?
+  if [ "$rc" != 0 ] && grep -q 'write error on standard output\|write failed: No space left' err \
+     && [ "$(wc -l <err)" -le "${FULL_LINES:-1}" ]; then
+    ok
+  else
+    bad "$label > /dev/full: exit $rc, stderr: $(head -c 300 err)"
+  fi
+}
+awk 'BEGIN { srand(3); for (i = 0; i < 200; i++) printf "%.6f\n", rand() }' >u.tsv
+awk 'BEGIN { srand(4); for (i = 0; i < 200; i++) printf "%.6f\n", rand() }' >v.tsv
+full "stat ks" "$STAT" ks u.tsv
+full "stat ks2" "$STAT" ks2 u.tsv v.tsv
+full "stat kuiper" "$STAT" kuiper u.tsv
+full "stat chisq" "$STAT" chisq u.tsv --bins 4
+full "stat hclust" "$STAT" hclust pts.tsv --linkage ward --clusters 3
+full "stat gmm" "$STAT" gmm pts.tsv --k 1
+full "stat --help" "$STAT" --help
+full "stat ks --help" "$STAT" ks --help
+full "render -o -" "$RENDER" fbm --size 8 -o -
+full "render --help" "$RENDER" --help
+full "example --help" "$EXAMPLE" --help
+full "patterns" "$PATTERNS" pat --size 8
+full "patterns --help" "$PATTERNS" --help
+ref="$SRC/results/quick/s3_fbm"
+full "check" "$CHECKTOOL" "$ref" "$ref"
+full "check --help" "$CHECKTOOL" --help
+full "sweep expand" "$SWEEP" expand a=1,2
+full "sweep plan" "$SWEEP" plan --experiment s3_fbm a=1,2
+full "sweep usage" "$SWEEP" usage
+full "sweep --help" "$SWEEP" --help
+full "experiment --params" "$S3" --params
+full "experiment --help" "$S3" --help
+if [ -n "$NL" ]; then
+  full "noiselab help" "$NL" help
+  full "noiselab list" "$NL" list
+  full "noiselab params S3" "$NL" params S3
+  full "noiselab stat ks" "$NL" stat ks u.tsv
+  full "noiselab render -o -" "$NL" render fbm --size 8 -o -
+  full "noiselab patterns" "$NL" patterns pat2 --size 8
+  full "noiselab sweep --help" "$NL" sweep --help
+  for c in reproduce check list setup test bench params; do
+    full "noiselab $c --help" "$NL" "$c" --help
+  done
+  # check: a fake experiment writes the committed quick tables of A1, so the
+  # comparison (noiselab-check, its lines on stdout) runs in a second.
+  mkdir -p fakebuild/experiments
+  # shellcheck disable=SC2016  # the fake's own $ are its shell's
+  printf '%s\n' '#!/bin/sh' 'while [ $# -gt 0 ]; do [ "$1" = --out ] && o="$2"; shift; done' \
+    'mkdir -p "$o" && cp -r "$FAKE_REF"/. "$o"/' >fakebuild/experiments/a1_bounds
+  chmod +x fakebuild/experiments/a1_bounds
+  FAKE_REF="$SRC/results/quick/a1_bounds" CHECK_BUILD="$TMP/fakebuild" FULL_LINES=3 \
+    full "noiselab check" "$NL" check --quick A1
+  # bench: its programs' printouts go through tee to stdout
+  mkdir -p fakebench
+  printf '%s\n' '#!/bin/sh' 'echo "bench line"' >fakebench/bench_fake
+  chmod +x fakebench/bench_fake
+  # shellcheck disable=SC2016  # the inner shell's arguments
+  "$BASH" -c 'source "$1"; run_benchmarks "$2"' _ "$NL" "$TMP/fakebench" >/dev/full 2>err
+  rc=$?
+  if [ "$rc" != 0 ] && [ -s err ]; then ok; else bad "bench > /dev/full: exit $rc: $(head -c 300 err)"; fi
 fi
 
 echo "cli_outputs: $pass passed, $fail failed"

@@ -11,6 +11,7 @@
  * Outputs are written atomically (temporary file, then rename).
  */
 #include "harness/nl_harness.h"
+#include "nl_tool.h"
 #include "byexample/nl_byexample.h"
 #include "study/nl_study.h"
 
@@ -259,7 +260,7 @@ static int compare(const args *a)
 
 int main(int argc, char **argv)
 {
-  nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
+  nl_tool_start("noiselab example");   /* OOM exit, SIGXFSZ ignored, stdout checked at exit */
   if (argc < 2) { usage(stderr, NULL); return 2; }
   const char *cmd = argv[1];
   if (!strcmp(cmd, "-h") || !strcmp(cmd, "--help")) { usage(stdout, NULL); return 0; }

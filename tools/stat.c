@@ -6,6 +6,7 @@
  * Every error is one line on stderr naming the input, and exit status 2.
  */
 #include "harness/nl_harness.h"
+#include "nl_tool.h"
 #include "stats/nl_cluster.h"
 #include "stats/nl_gmm.h"
 #include "stats/nl_stats.h"
@@ -854,7 +855,7 @@ static const char *sub_help(const char *sub)
 
 int main(int argc, char **argv)
 {
-  nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
+  nl_tool_start("noiselab stat");   /* OOM exit, SIGXFSZ ignored, stdout checked at exit */
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
     fputs(usage_text[0], argc < 2 ? stderr : stdout);
     return argc < 2 ? 2 : 0;

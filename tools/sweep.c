@@ -5,6 +5,7 @@
  * Errors: one line on stderr, exit 2.
  */
 #include "harness/nl_harness.h"
+#include "nl_tool.h"
 #include "sweep/nl_sweep.h"
 
 #include <stdarg.h>
@@ -197,7 +198,7 @@ static int merge_main(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
-  nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
+  nl_tool_start("noiselab sweep");   /* OOM exit, SIGXFSZ ignored, stdout checked at exit */
   nl_error err;
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
     printf("usage: noiselab-sweep expand NAME=SPEC\n"

@@ -6,6 +6,7 @@
 #include <signal.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stdio_ext.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -751,4 +752,24 @@ void nl_die(const char *prefix, const char *fmt, ...)
   nl_vmessage(stderr, fmt, ap);
   va_end(ap);
   exit(2);
+}
+
+nl_status nl_stream_close(FILE *f, const char *what, nl_error *err)
+{
+  int pending = __fpending(f) != 0, failed = ferror(f) != 0, e = 0;
+  /* After a failed write the buffer still holds what was not written: one
+   * more flush fails the same way and sets errno, which the caller of the
+   * first failed write may have lost. */
+  errno = 0;
+  if (fflush(f) != 0) e = errno ? errno : EIO;
+  failed |= e != 0;
+  errno = 0;
+  int closed = fclose(f) == 0, ce = errno;
+  if (!closed && !(ce == EBADF && !pending && !failed)) {
+    failed = 1;
+    if (!e) e = ce ? ce : EIO;
+  }
+  if (!failed) return NL_OK;
+  if (!e) return nl_fail(err, NL_EIO, "write error on %s", what);
+  return nl_fail(err, NL_EIO, "write error on %s: %s", what, strerror(e));
 }

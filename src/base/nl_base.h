@@ -71,6 +71,15 @@ void nl_vmessage(FILE *f, const char *fmt, va_list ap) __attribute__((format(pri
 void nl_die(const char *prefix, const char *fmt, ...)
   __attribute__((format(printf, 2, 3), noreturn));
 
+/* Flushes and closes a stream the program wrote without nl_atomic_* (its
+ * stdout) and says whether every byte got there: stdio's error flag (a write
+ * that failed earlier, its buffer full), the last flush and the close. A
+ * program that exits 0 after output lost on a full disk or a closed pipe
+ * reports a success it did not have. A stream that was already closed and
+ * never written (`prog >&-` with nothing to say) is no failure. `what`
+ * names it: "write error on standard output: No space left on device". */
+nl_status nl_stream_close(FILE *f, const char *what, nl_error *err);
+
 /* Allocation that never returns NULL: out-of-memory is not a condition any
  * caller here can recover from. On failure it prints "noiselab: out of
  * memory allocating N bytes", then calls the out-of-memory handler with the
