@@ -33,6 +33,37 @@ ok() {   # LABEL CMD...: runs CMD, its stderr kept for a failure
   "$@" >"$out/last.out" 2>"$out/last.err" || fail "$label: exit $?: $(cat "$out/last.err")"
 }
 
+# ---- unknown options and stray words: refused before any set-up -----------
+# The set-up's programs are fakes here that leave a mark: a refused command
+# must not reach them (bench --frob once ran apt-get and every benchmark).
+fake="$out/fakebin"; mkdir -p "$fake"
+for p in dpkg-query apt-get sudo meson ninja parallel gnuplot; do
+  printf '#!/bin/sh\n: >"%s/ran-%s"\nexit 1\n' "$fake" "$p" >"$fake/$p"
+  chmod +x "$fake/$p"
+done
+refused() {   # WANTED_LINE ARGS...
+  local want="$1" rc=0
+  shift
+  PATH="$fake:$PATH" "$nl" "$@" >"$out/ref.out" 2>"$out/ref.err" || rc=$?
+  [ "$rc" = 1 ] || fail "$*: exit $rc, wanted 1: $(cat "$out/ref.err")"
+  [ "$(cat "$out/ref.err")" = "$want" ] || fail "$*: said '$(cat "$out/ref.err")', wanted '$want'"
+  [ ! -s "$out/ref.out" ] || fail "$*: printed $(cat "$out/ref.out")"
+  [ -z "$(find "$fake" -name 'ran-*' -print -quit)" ] || fail "$*: ran $(find "$fake" -name 'ran-*')"
+}
+refused "noiselab bench: unknown option --frob" bench --frob
+refused "noiselab test: unknown option --frob" test --frob
+refused "noiselab setup: unknown option --frob" setup --frob
+refused "noiselab list: unknown option --frob" list --frob
+refused "noiselab help: unknown option --frob" help --frob
+refused "noiselab params: unknown option --frob" params S3 --frob
+refused "noiselab list: unexpected argument 'S3' (list takes none; scripts/noiselab list --help)" list S3
+refused "noiselab test: unexpected argument 'cli' (test takes none; scripts/noiselab test --help)" test cli
+refused "noiselab setup: unexpected argument 'x' (setup takes none; scripts/noiselab setup --help)" setup x
+refused "noiselab bench: unknown option --hlep (did you mean --help?)" bench --hlep
+refused "noiselab check: unknown option --quik (did you mean --quick?)" check --quik A1
+refused "noiselab reproduce: unknown option --resum (did you mean --resume?)" reproduce --resum
+refused "noiselab reproduce: unknown option --frob" reproduce --quick --frob A1
+
 # ---- paths relative to the user's folder ----------------------------------
 w="$out/elsewhere"; mkdir -p "$w"
 cd "$w"
