@@ -64,6 +64,21 @@ refused "noiselab check: unknown option --quik (did you mean --quick?)" check --
 refused "noiselab reproduce: unknown option --resum (did you mean --resume?)" reproduce --resum
 refused "noiselab reproduce: unknown option --frob" reproduce --quick --frob A1
 
+# ---- a failed build keeps its log inside the build folder ------------------
+# (beside it, build.ninja.log landed in the repository's root)
+fb2="$out/logs"; mkdir -p "$fb2/bin" "$fb2/b"
+printf '#!/bin/sh\nexit 0\n' >"$fb2/bin/meson"
+printf '#!/bin/sh\necho "FAILED: fake compile"\nexit 1\n' >"$fb2/bin/ninja"
+chmod +x "$fb2/bin/meson" "$fb2/bin/ninja"
+: >"$fb2/b/build.ninja"
+rc=0
+# shellcheck disable=SC2016  # the inner shell's arguments
+PATH="$fb2/bin:$PATH" bash -c 'source "$1"; build_locked "$2"' _ "$nl" "$fb2/b" >/dev/null \
+  2>"$out/build.err" || rc=$?
+[ "$rc" = 2 ] || fail "a failed build: exit $rc: $(cat "$out/build.err")"
+grep -q 'FAILED: fake compile' "$out/build.err" || fail "a failed build: no log shown: $(cat "$out/build.err")"
+[ "$(ls -A "$fb2")" = "$(printf 'b\nbin')" ] || fail "a failed build left beside its folder: $(ls -A "$fb2")"
+
 # ---- paths relative to the user's folder ----------------------------------
 w="$out/elsewhere"; mkdir -p "$w"
 cd "$w"

@@ -120,6 +120,44 @@ else
   echo "cli_outputs: not root, device nodes not tested" >&2
 fi
 
+# ---- an output never replaces an input, nor the program's own sources:
+# refused before any work, one line, exit 1, the file untouched
+replaces() {   # WANTED LABEL FILE CMD...: FILE must be untouched
+  local want="$1" label="$2" file="$3" sum rc
+  shift 3
+  sum="$(cksum <"$file")"
+  "$@" >out 2>err
+  rc=$?
+  if [ "$rc" = 1 ] && one_line err "$want" && [ "$(cksum <"$file")" = "$sum" ] && no_hidden .; then
+    ok
+  else
+    bad "$label: exit $rc, stderr: $(head -c 300 err)"
+  fi
+}
+"$RENDER" fbm --size 32 --seed 5 -o ex.png 2>/dev/null
+replaces "ex.png: is the input ex.png" "example analyse x.png -o x.png" ex.png \
+  "$EXAMPLE" analyse ex.png -o ex.png
+cp pts.tsv d.tsv
+replaces "d.tsv: is the input d.tsv" "stat hclust d.tsv --labels d.tsv" d.tsv \
+  "$STAT" hclust d.tsv --linkage ward --clusters 3 --labels d.tsv
+replaces "is the input d.tsv" "stat hclust d.tsv --merges ./d.tsv" d.tsv \
+  "$STAT" hclust d.tsv --linkage ward --clusters 3 --merges ./d.tsv
+ln -s d.tsv dlink.tsv
+replaces "dlink.tsv: is the input d.tsv" "stat gmm --params LINK-TO-INPUT" d.tsv \
+  "$STAT" gmm d.tsv --k 1 --params dlink.tsv
+mkdir sub
+replaces "is the input sub/../d.tsv" "stat hclust --labels: the input by another path" d.tsv \
+  "$STAT" hclust sub/../d.tsv --linkage ward --clusters 3 --labels "$TMP/d.tsv"
+replaces "a file of the noiselab sources" "render -o experiments/s3_fbm/main.c" \
+  "$SRC/experiments/s3_fbm/main.c" "$RENDER" fbm --size 8 -o "$SRC/experiments/s3_fbm/main.c"
+replaces "a file of the noiselab sources" "stat --labels README.md" "$SRC/README.md" \
+  "$STAT" hclust pts.tsv --linkage ward --clusters 3 --labels "$SRC/README.md"
+replaces "a file of the noiselab sources" "patterns data/patterns" \
+  "$SRC/data/patterns/flower.png" "$PATTERNS" "$SRC/data/patterns" --size 8
+# an untracked name in the repository, or a new one, is the user's to write
+"$RENDER" fbm --size 8 -o "$TMP/fresh.png" 2>/dev/null
+check test -s fresh.png
+
 # ---- stdout is an output: a result that cannot be written fails, saying so
 # Runs CMD with stdout on /dev/full: it must exit non-zero with a line on
 # stderr naming the failed write.

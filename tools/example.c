@@ -142,6 +142,8 @@ static void parse(int argc, char **argv, args *a)
   }
   nl_opt_end(&p);
   if (!a->out) die("-o OUT is required");
+  nl_tool_check_output(a->out, a->pos, a->npos);   /* not an input, not our sources */
+  nl_tool_check_output(a->bands, a->pos, a->npos);
   /* a bad output is named before any input is read (an image read starts
    * OpenImageIO: 0.5 s) */
   check(nl_path_check_writable(a->out, &err), &err);

@@ -18,4 +18,16 @@
  *    of a failed output, whatever main returned. */
 void nl_tool_start(const char *name);
 
+/* Refuses, before any work, an output path that would replace
+ *  - one of the command's inputs (n of them, NULL entries skipped): the same
+ *    file (device and inode; for an output not made yet, the same resolved
+ *    path). Devices and FIFOs are written through, never replaced: exempt;
+ *  - a file of the sources this tool was built from: inside that tree,
+ *    outside results/ (the committed results, written on purpose) and this
+ *    build folder, a file git tracks there (`git ls-files --error-unmatch`);
+ *    without git or a checkout, any existing file there outside build*
+ *    folders. A rebuilt source folder would fail the next build.
+ * One line "NAME: OUT: why" and exit 1. "-" (stdout) passes. */
+void nl_tool_check_output(const char *out, const char *const *inputs, int n);
+
 #endif

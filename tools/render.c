@@ -398,6 +398,7 @@ int main(int argc, char **argv)
   nl_tool_start("noiselab render");   /* OOM exit, SIGXFSZ ignored, stdout checked at exit */
   options o;
   parse(argc, argv, &o);
+  nl_tool_check_output(o.out, NULL, 0);   /* not the program's own sources */
   if (strcmp(o.out, "-")) check_writable(o.out);
   double lo, hi;
   double *v = evaluate(&o, &lo, &hi);
