@@ -55,6 +55,38 @@ for ext in exr tif; do
   check cmp -s "good.$ext" "keep.$ext"
 done
 
+# ---- a file size limit without the shell's help: the tools ignore SIGXFSZ
+# themselves, so the write fails with EFBIG, the command says so and exits
+# non-zero, and no temporary is left beside the output
+seq 0 299 | awk '{ print ($1 * 7919) % 1000 }' >pts.tsv
+for cmd in "$RENDER fbm --size 256 --seed 2 -o big.png" "$RENDER fbm --size 256 -o big.tsv" \
+           "$STAT hclust pts.tsv --linkage ward --clusters 3 --merges big.tsv" \
+           "$PATTERNS bigpat --size 256"; do
+  # shellcheck disable=SC2086  # the command's words
+  (ulimit -f 1; exec $cmd) >out 2>err
+  rc=$?
+  if [ "$rc" != 0 ] && [ "$rc" -lt 128 ] && grep -q 'File too large' err && no_hidden . && \
+     { [ ! -d bigpat ] || no_hidden bigpat; }; then
+    ok
+  else
+    bad "ulimit -f 1; $cmd: exit $rc, stderr: $(head -c 200 err), left: $(ls -A)"
+  fi
+  rm -rf big.png big.tsv bigpat
+done
+
+# ---- a temporary left by a writer killed outright (SIGKILL: no clean-up)
+# is removed by the next writer of that output once its pid is no process;
+# a live writer's is kept
+sh -c 'exit 0' & dead=$!
+wait "$dead"
+: >".kill.$dead.AbC123.png"
+: >".kill.$$.dEf456.png"
+"$RENDER" fbm --size 8 -o kill.png 2>/dev/null
+check test ! -e ".kill.$dead.AbC123.png"
+check test -e ".kill.$$.dEf456.png"
+check test -s kill.png
+rm -f ".kill.$$.dEf456.png"
+
 # ---- several outputs: a bad second path leaves the first file untouched
 seq 0 299 | awk '{ print ($1 * 7919) % 1000 }' >pts.tsv
 echo old >old.tsv
