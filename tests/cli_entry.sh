@@ -206,4 +206,25 @@ rc=0; wait "$pb" || rc=$?
 [ "$rc" = 0 ] || fail "check B: exit $rc: $(cat "$out/checkB.err")"
 [ -z "$(find "$fb" -mindepth 1 -maxdepth 1 -name 'check*')" ] \
   || fail "passed checks left their runs: $(ls "$fb")"
+# ---- a check killed outright: the next check removes its folder ------------
+# (SIGKILL runs no trap; the folder's name holds the dead check's pid). A
+# folder kept after a drift (no pid) and a live check's stay.
+exec 5>"$out/lockK"; flock 5
+CHECK_BUILD="$fb" FAKE_WHEN=late FAKE_LOCK="$out/lockK" FAKE_MARK="$out/markK" \
+  "$nl" check --quick A1 >/dev/null 2>"$out/checkK.err" 5>&- &
+pk=$!
+waitmark "$out/markK" "$pk" "$out/checkK.err"
+kill -KILL "$pk"
+wait "$pk" 2>/dev/null || true
+exec 5>&-   # the fake experiment, left alone, finishes
+for ((k = 0; k < 100; k++)); do pgrep -f "$fb/experiments/a1_bounds" >/dev/null || break; sleep 0.1; done
+left="$(find "$fb" -mindepth 1 -maxdepth 1 -name "check-quick.$pk.*")"
+[ -n "$left" ] || fail "a check killed outright left no folder to test with: $(ls "$fb")"
+mkdir "$fb/check-quick.Kept01" "$fb/check-quick.$$.Live01"
+CHECK_BUILD="$fb" FAKE_WHEN=early FAKE_LOCK="$out/lockA" FAKE_MARK="$out/markA" \
+  "$nl" check --quick A1 >/dev/null 2>"$out/checkK2.err" || fail "check after a killed one: $(cat "$out/checkK2.err")"
+[ ! -e "$left" ] || fail "the next check kept the killed check's folder $left"
+[ -d "$fb/check-quick.Kept01" ] || fail "the next check removed a kept folder"
+[ -d "$fb/check-quick.$$.Live01" ] || fail "the next check removed a live check's folder"
+rm -rf "$fb/check-quick.Kept01" "$fb/check-quick.$$.Live01"
 echo "cli_entry: ok"
