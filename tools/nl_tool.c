@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
+#include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -58,24 +59,29 @@ static int inside(const char *path, const char *dir)
 }
 
 /* git's answer for rel inside root: 0 tracked, 1 not tracked, -1 no answer
- * (no git, not a checkout, a git that refuses the folder). */
+ * (no git, not a checkout, a git that refuses the folder). posix_spawn, not
+ * fork: the process may have threads (OpenBLAS's). GIT_DIR and
+ * GIT_WORK_TREE, which would point git elsewhere, are left out. */
 static int git_tracked(const char *root, const char *rel)
 {
-  pid_t pid = fork();
-  if (pid < 0) return -1;
-  if (pid == 0) {
-    int null = open("/dev/null", O_RDWR);
-    if (null >= 0) {
-      dup2(null, 0);
-      dup2(null, 1);
-      dup2(null, 2);
-    }
-    unsetenv("GIT_DIR");
-    unsetenv("GIT_WORK_TREE");
-    execlp("git", "git", "--literal-pathspecs", "-C", root, "ls-files", "--error-unmatch", "--",
-           rel, (char *)NULL);
-    _exit(127);
-  }
+  extern char **environ;
+  size_t n = 0;
+  while (environ[n]) n++;
+  char **env = nl_xcalloc(n + 1, sizeof *env);
+  for (size_t i = 0, k = 0; i < n; i++)
+    if (strncmp(environ[i], "GIT_DIR=", 8) && strncmp(environ[i], "GIT_WORK_TREE=", 14))
+      env[k++] = environ[i];
+  char *argv[] = {"git", "--literal-pathspecs", "-C", (char *)root, "ls-files",
+                  "--error-unmatch", "--", (char *)rel, NULL};
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  for (int fd = 0; fd < 3; fd++)
+    posix_spawn_file_actions_addopen(&fa, fd, "/dev/null", fd ? O_WRONLY : O_RDONLY, 0);
+  pid_t pid;
+  int rc = posix_spawnp(&pid, "git", &fa, NULL, argv, env);
+  posix_spawn_file_actions_destroy(&fa);
+  free(env);
+  if (rc != 0) return -1;
   int st;
   while (waitpid(pid, &st, 0) < 0)
     if (errno != EINTR) return -1;
