@@ -108,6 +108,19 @@ ok "sweep merge" "$nl" sweep merge nl-cwd-test-sweep --table bounds.tsv --y max_
 ok "sweep C3" "$nl" sweep C3 --quick --param grid=64 --jobs 1 --out nl-cwd-test-sweep-c3
 [ "$(find nl-cwd-test-sweep-c3/tasks -name manifest.tsv | wc -l)" = 1 ] \
   || fail "sweep C3 from another folder: $(cat nl-cwd-test-sweep-c3/logs/*.log)"
+# The tools refuse an unknown option too (nl_opt): one line naming it,
+# non-zero, nothing written.
+for c in "example analyse nl-cwd-test.png -o nl-cwd-test-x.params --frob" \
+         "sweep A1 --quick --param points=500 --out nl-cwd-test-x --frob" \
+         "render fbm -o nl-cwd-test-x.png --frob" "patterns nl-cwd-test-x --frob" \
+         "stat ks u1000.tsv --frob"; do
+  rc=0
+  # shellcheck disable=SC2086  # the command's words
+  "$nl" $c >/dev/null 2>"$out/unk.err" || rc=$?
+  { [ "$rc" != 0 ] && grep -q -- '--frob' "$out/unk.err" && [ "$(wc -l <"$out/unk.err")" = 1 ]; } \
+    || fail "$c: exit $rc: $(cat "$out/unk.err")"
+  [ -z "$(find . -maxdepth 1 -name 'nl-cwd-test-x*')" ] || fail "$c: wrote $(ls -d nl-cwd-test-x*)"
+done
 # check takes names, not paths: from here it runs (0, or 1 on drift) and
 # leaves this folder as it was.
 before="$(ls -A)"
