@@ -76,7 +76,10 @@ run_local() {   # DIR JOBS
   # The tasks run from the repository, as reproduce's experiments do: their
   # default data/ folders are there. dir and the job lines are absolute
   # (noiselab-sweep prepare), so the user's own paths keep their meaning.
-  (cd "$ROOT" && exec parallel --will-cite --jobs "$jobs" --joblog "+$dir/joblog" --halt never \
+  # The tasks' shell is noiselab-sweep -c (tools/sweep.c): each task dies
+  # with parallel, even when a SIGKILL of this sweep's process group ends
+  # parallel without its clean-up.
+  (cd "$ROOT" && PARALLEL_SHELL="$TOOL" exec parallel --will-cite --jobs "$jobs" --joblog "+$dir/joblog" --halt never \
      <"$pending" >/dev/null 2>"$dir/.parallel.err") &
   pid=$!
   # Exit 128 + the signal's number, as the shell and reproduce do. GNU

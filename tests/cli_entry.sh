@@ -33,6 +33,52 @@ ok() {   # LABEL CMD...: runs CMD, its stderr kept for a failure
   "$@" >"$out/last.out" 2>"$out/last.err" || fail "$label: exit $?: $(cat "$out/last.err")"
 }
 
+# ---- unknown options and stray words: refused before any set-up -----------
+# The set-up's programs are fakes here that leave a mark: a refused command
+# must not reach them (bench --frob once ran apt-get and every benchmark).
+fake="$out/fakebin"; mkdir -p "$fake"
+for p in dpkg-query apt-get sudo meson ninja parallel gnuplot; do
+  printf '#!/bin/sh\n: >"%s/ran-%s"\nexit 1\n' "$fake" "$p" >"$fake/$p"
+  chmod +x "$fake/$p"
+done
+refused() {   # WANTED_LINE ARGS...
+  local want="$1" rc=0
+  shift
+  PATH="$fake:$PATH" "$nl" "$@" >"$out/ref.out" 2>"$out/ref.err" || rc=$?
+  [ "$rc" = 1 ] || fail "$*: exit $rc, wanted 1: $(cat "$out/ref.err")"
+  [ "$(cat "$out/ref.err")" = "$want" ] || fail "$*: said '$(cat "$out/ref.err")', wanted '$want'"
+  [ ! -s "$out/ref.out" ] || fail "$*: printed $(cat "$out/ref.out")"
+  [ -z "$(find "$fake" -name 'ran-*' -print -quit)" ] || fail "$*: ran $(find "$fake" -name 'ran-*')"
+}
+refused "noiselab bench: unknown option --frob" bench --frob
+refused "noiselab test: unknown option --frob" test --frob
+refused "noiselab setup: unknown option --frob" setup --frob
+refused "noiselab list: unknown option --frob" list --frob
+refused "noiselab help: unknown option --frob" help --frob
+refused "noiselab params: unknown option --frob" params S3 --frob
+refused "noiselab list: unexpected argument 'S3' (list takes none; scripts/noiselab list --help)" list S3
+refused "noiselab test: unexpected argument 'cli' (test takes none; scripts/noiselab test --help)" test cli
+refused "noiselab setup: unexpected argument 'x' (setup takes none; scripts/noiselab setup --help)" setup x
+refused "noiselab bench: unknown option --hlep (did you mean --help?)" bench --hlep
+refused "noiselab check: unknown option --quik (did you mean --quick?)" check --quik A1
+refused "noiselab reproduce: unknown option --resum (did you mean --resume?)" reproduce --resum
+refused "noiselab reproduce: unknown option --frob" reproduce --quick --frob A1
+
+# ---- a failed build keeps its log inside the build folder ------------------
+# (beside it, build.ninja.log landed in the repository's root)
+fb2="$out/logs"; mkdir -p "$fb2/bin" "$fb2/b"
+printf '#!/bin/sh\nexit 0\n' >"$fb2/bin/meson"
+printf '#!/bin/sh\necho "FAILED: fake compile"\nexit 1\n' >"$fb2/bin/ninja"
+chmod +x "$fb2/bin/meson" "$fb2/bin/ninja"
+: >"$fb2/b/build.ninja"
+rc=0
+# shellcheck disable=SC2016  # the inner shell's arguments
+PATH="$fb2/bin:$PATH" bash -c 'source "$1"; build_locked "$2"' _ "$nl" "$fb2/b" >/dev/null \
+  2>"$out/build.err" || rc=$?
+[ "$rc" = 2 ] || fail "a failed build: exit $rc: $(cat "$out/build.err")"
+grep -q 'FAILED: fake compile' "$out/build.err" || fail "a failed build: no log shown: $(cat "$out/build.err")"
+[ "$(ls -A "$fb2")" = "$(printf 'b\nbin')" ] || fail "a failed build left beside its folder: $(ls -A "$fb2")"
+
 # ---- paths relative to the user's folder ----------------------------------
 w="$out/elsewhere"; mkdir -p "$w"
 cd "$w"
@@ -62,6 +108,19 @@ ok "sweep merge" "$nl" sweep merge nl-cwd-test-sweep --table bounds.tsv --y max_
 ok "sweep C3" "$nl" sweep C3 --quick --param grid=64 --jobs 1 --out nl-cwd-test-sweep-c3
 [ "$(find nl-cwd-test-sweep-c3/tasks -name manifest.tsv | wc -l)" = 1 ] \
   || fail "sweep C3 from another folder: $(cat nl-cwd-test-sweep-c3/logs/*.log)"
+# The tools refuse an unknown option too (nl_opt): one line naming it,
+# non-zero, nothing written.
+for c in "example analyse nl-cwd-test.png -o nl-cwd-test-x.params --frob" \
+         "sweep A1 --quick --param points=500 --out nl-cwd-test-x --frob" \
+         "render fbm -o nl-cwd-test-x.png --frob" "patterns nl-cwd-test-x --frob" \
+         "stat ks u1000.tsv --frob"; do
+  rc=0
+  # shellcheck disable=SC2086  # the command's words
+  "$nl" $c >/dev/null 2>"$out/unk.err" || rc=$?
+  { [ "$rc" != 0 ] && grep -q -- '--frob' "$out/unk.err" && [ "$(wc -l <"$out/unk.err")" = 1 ]; } \
+    || fail "$c: exit $rc: $(cat "$out/unk.err")"
+  [ -z "$(find . -maxdepth 1 -name 'nl-cwd-test-x*')" ] || fail "$c: wrote $(ls -d nl-cwd-test-x*)"
+done
 # check takes names, not paths: from here it runs (0, or 1 on drift) and
 # leaves this folder as it was.
 before="$(ls -A)"
@@ -160,4 +219,25 @@ rc=0; wait "$pb" || rc=$?
 [ "$rc" = 0 ] || fail "check B: exit $rc: $(cat "$out/checkB.err")"
 [ -z "$(find "$fb" -mindepth 1 -maxdepth 1 -name 'check*')" ] \
   || fail "passed checks left their runs: $(ls "$fb")"
+# ---- a check killed outright: the next check removes its folder ------------
+# (SIGKILL runs no trap; the folder's name holds the dead check's pid). A
+# folder kept after a drift (no pid) and a live check's stay.
+exec 5>"$out/lockK"; flock 5
+CHECK_BUILD="$fb" FAKE_WHEN=late FAKE_LOCK="$out/lockK" FAKE_MARK="$out/markK" \
+  "$nl" check --quick A1 >/dev/null 2>"$out/checkK.err" 5>&- &
+pk=$!
+waitmark "$out/markK" "$pk" "$out/checkK.err"
+kill -KILL "$pk"
+wait "$pk" 2>/dev/null || true
+exec 5>&-   # the fake experiment, left alone, finishes
+for ((k = 0; k < 100; k++)); do pgrep -f "$fb/experiments/a1_bounds" >/dev/null || break; sleep 0.1; done
+left="$(find "$fb" -mindepth 1 -maxdepth 1 -name "check-quick.$pk.*")"
+[ -n "$left" ] || fail "a check killed outright left no folder to test with: $(ls "$fb")"
+mkdir "$fb/check-quick.Kept01" "$fb/check-quick.$$.Live01"
+CHECK_BUILD="$fb" FAKE_WHEN=early FAKE_LOCK="$out/lockA" FAKE_MARK="$out/markA" \
+  "$nl" check --quick A1 >/dev/null 2>"$out/checkK2.err" || fail "check after a killed one: $(cat "$out/checkK2.err")"
+[ ! -e "$left" ] || fail "the next check kept the killed check's folder $left"
+[ -d "$fb/check-quick.Kept01" ] || fail "the next check removed a kept folder"
+[ -d "$fb/check-quick.$$.Live01" ] || fail "the next check removed a live check's folder"
+rm -rf "$fb/check-quick.Kept01" "$fb/check-quick.$$.Live01"
 echo "cli_entry: ok"

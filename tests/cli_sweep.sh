@@ -89,6 +89,40 @@ grep -q 'sweep: 12/12 done, 0 failed' "$out/rerun.err" || { cat "$out/rerun.err"
 left="$(find "$kdir" -name '.pending.*' -o -name '.parallel.err')"
 [ -z "$left" ] || { echo "rerun after SIGKILL left $left"; exit 1; }
 
+# A SIGKILL of the sweep's whole process group (the shell, its watchdog and
+# GNU parallel, which starts each task in a group of its own) stops the
+# tasks too: they die with parallel (noiselab-sweep -c, parallel's shell).
+# The tasks of a fake build sleep until killed.
+fake="$out/fakebuild"
+mkdir -p "$fake/experiments" "$fake/tools"
+ln -sf "$(realpath "$tool")" "$fake/tools/noiselab-sweep"
+printf 'a1_bounds\n' >"$fake/experiments/experiments.txt"
+"$NL_BUILD/experiments/a1_bounds" --params >"$out/a1.params"
+cat >"$fake/experiments/a1_bounds" <<FAKE
+#!/usr/bin/env bash
+if [ "\$1" = --params ]; then cat "$out/a1.params"; exit 0; fi
+exec -a "$fake/experiments/a1_bounds-task" sleep 300
+FAKE
+chmod +x "$fake/experiments/a1_bounds"
+gdir="$out/group killed"
+NL_BUILD="$fake" setsid "${sweep[@]}" a1_bounds --param 'points=1,2' --jobs 2 --out "$gdir" \
+  2>"$out/group.err" &
+gpid=$!
+for ((k = 0; k < 600; k++)); do
+  [ "$(pgrep -c -f "$fake/experiments/a1_bounds-task" || true)" = 2 ] && break
+  sleep 0.05
+done
+[ "$k" -lt 600 ] || { cat "$out/group.err"; echo "the fake sweep's tasks did not start"; exit 1; }
+kill -KILL -- "-$gpid"
+wait "$gpid" 2>/dev/null || true
+for ((k = 0; k < 200; k++)); do pgrep -f "$fake/experiments/a1_bounds-task" >/dev/null || break; sleep 0.05; done
+left="$(pgrep -a -f "$fake/experiments/a1_bounds-task" || true)"
+if [ -n "$left" ]; then
+  # shellcheck disable=SC2046  # one pid a word
+  kill $(pgrep -f "$fake/experiments/a1_bounds-task") 2>/dev/null || true
+  echo "SIGKILL of the sweep's process group left its tasks running after 10 s: $left"; exit 1
+fi
+
 # Bad input: one line, exit 2, and the sweep folder untouched.
 cp "$dir/sweep.tsv" "$out/sweep.before"
 bad() {   # WANT_FRAGMENT ARGS...

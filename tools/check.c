@@ -41,6 +41,7 @@
  * src/harness/nl_harness.h); this is its command line.
  */
 #include "harness/nl_harness.h"
+#include "nl_tool.h"
 
 #include <stdarg.h>
 #include <stdlib.h>
@@ -61,7 +62,7 @@ static int die(const char *fmt, ...)
 
 int main(int argc, char **argv)
 {
-  nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
+  nl_tool_start("noiselab-check");   /* OOM exit, SIGXFSZ ignored, stdout checked at exit */
   nl_harness_check_state s = {0};
   nl_error err;
   /* nl_opt (GNU style); the positional words are gathered in argv[1..]. */

@@ -11,6 +11,7 @@
  * Outputs are written atomically (temporary file, then rename).
  */
 #include "harness/nl_harness.h"
+#include "nl_tool.h"
 #include "byexample/nl_byexample.h"
 #include "study/nl_study.h"
 
@@ -151,6 +152,8 @@ static void parse(int argc, char **argv, args *a)
   check(nl_byexample_synth_check(&so, &err), &err);
   if (a->have_t) check(nl_byexample_morph_check(a->t, &err), &err);
   if (!a->out) die("-o OUT is required");
+  nl_tool_check_output(a->out, a->pos, a->npos);   /* not an input, not our sources */
+  nl_tool_check_output(a->bands, a->pos, a->npos);
   /* a bad output is named before any input is read (an image read starts
    * OpenImageIO: 0.5 s) */
   check(nl_path_check_writable(a->out, &err), &err);
@@ -269,7 +272,7 @@ static int compare(const args *a)
 
 int main(int argc, char **argv)
 {
-  nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
+  nl_tool_start("noiselab example");   /* OOM exit, SIGXFSZ ignored, stdout checked at exit */
   if (argc < 2) { usage(stderr, NULL); return 2; }
   const char *cmd = argv[1];
   if (!strcmp(cmd, "-h") || !strcmp(cmd, "--help")) { usage(stdout, NULL); return 0; }

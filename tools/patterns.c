@@ -7,6 +7,7 @@
  * Errors: one line, exit 2 (bad arguments) or 1 (a file could not be written).
  */
 #include "harness/nl_harness.h"
+#include "nl_tool.h"
 #include "study/nl_study_cheng.h"
 
 #include <stdio.h>
@@ -23,7 +24,7 @@ static char *shape_path(const char *dir, int k)
 
 int main(int argc, char **argv)
 {
-  nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
+  nl_tool_start("noiselab patterns");   /* OOM exit, SIGXFSZ ignored, stdout checked at exit */
   const char *dir = NULL;
   long size = 128;
   nl_error err;
@@ -62,6 +63,7 @@ int main(int argc, char **argv)
    * writable, a name taken by a directory): all are refused alike. */
   for (int k = 0; nl_study_cheng_shape_names[k]; k++) {
     char *path = shape_path(dir, k);
+    nl_tool_check_output(path, NULL, 0);   /* not the shipped data/patterns */
     nl_status c = nl_path_check_writable(path, &err);
     free(path);
     if (c) { nl_message(stderr, "patterns: %s", err.msg); return 1; }

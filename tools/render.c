@@ -14,6 +14,7 @@
  * y) the raw values as a size x size array.
  */
 #include "harness/nl_harness.h"
+#include "nl_tool.h"
 #include "basis/nl_basis.h"
 #include "table/nl_table.h"
 
@@ -326,8 +327,10 @@ static void write_tsv(const options *o, const double *v)
       nl_table_append(t, "ddd", o->x0 + (c + 0.5) * d, o->y0 + (r + 0.5) * d, v[r * o->size + c]);
   nl_error err;
   int out = !strcmp(o->out, "-");
-  if (out ? nl_table_print(t, stdout, "<stdout>", &err) : nl_table_write(t, o->out, &err))
+  if (out ? nl_table_print(t, stdout, "<stdout>", &err) : nl_table_write(t, o->out, &err)) {
+    if (out) clearerr(stdout);   /* said here with its reason, not again at exit */
     fail("%s", err.msg);
+  }
   nl_message(stderr, "noiselab render: wrote %s (%ld x %ld values of %s: x, y, value)",
              out ? "<stdout>" : o->out, o->size, o->size, o->noise);
   nl_table_free(t);
@@ -397,9 +400,10 @@ static void check_finite(const options *o, const double *v)
 
 int main(int argc, char **argv)
 {
-  nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
+  nl_tool_start("noiselab render");   /* OOM exit, SIGXFSZ ignored, stdout checked at exit */
   options o;
   parse(argc, argv, &o);
+  nl_tool_check_output(o.out, NULL, 0);   /* not the program's own sources */
   if (strcmp(o.out, "-")) check_writable(o.out);
   double lo, hi;
   double *v = evaluate(&o, &lo, &hi);

@@ -6,6 +6,7 @@
  * Every error is one line on stderr naming the input, and exit status 2.
  */
 #include "harness/nl_harness.h"
+#include "nl_tool.h"
 #include "stats/nl_cluster.h"
 #include "stats/nl_gmm.h"
 #include "stats/nl_stats.h"
@@ -854,7 +855,7 @@ static const char *sub_help(const char *sub)
 
 int main(int argc, char **argv)
 {
-  nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
+  nl_tool_start("noiselab stat");   /* OOM exit, SIGXFSZ ignored, stdout checked at exit */
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
     fputs(usage_text[0], argc < 2 ? stderr : stdout);
     return argc < 2 ? 2 : 0;
@@ -870,6 +871,12 @@ int main(int argc, char **argv)
   for (int i = 2; i < argc && strcmp(argv[i], "--"); i++)
     if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) { fputs(help, stdout); return 0; }
   parse(argc, argv, &o);
+  /* No output replaces an input or the program's own sources. */
+  const char *ins[3] = {o.nfiles > 0 ? o.files[0] : NULL, o.nfiles > 1 ? o.files[1] : NULL,
+                        o.cdf_file};
+  nl_tool_check_output(o.labels_out, ins, 3);
+  nl_tool_check_output(o.merges_out, ins, 3);
+  nl_tool_check_output(o.params_out, ins, 3);
   if (o.nfiles == 0) die(o.sub, "no input file (see --help)");
   if (strcmp(o.sub, "ks2") && o.nfiles > 1) die(o.sub, "takes one input file");
   if (!strcmp(o.sub, "ks")) run_ks(&o, 0);

@@ -5,11 +5,16 @@
  * Errors: one line on stderr, exit 2.
  */
 #include "harness/nl_harness.h"
+#include "nl_tool.h"
 #include "sweep/nl_sweep.h"
 
+#include <errno.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 /* One line on stderr, exit 2: input quoted in it is escaped (nl_message). */
@@ -195,10 +200,68 @@ static int merge_main(int argc, char **argv)
   return 0;
 }
 
+/* ---- GNU parallel's shell for the tasks (PARALLEL_SHELL, scripts/sweep.sh)
+ *
+ * parallel starts each task in a process group of its own, so a SIGKILL of
+ * the sweep's group (the shell, its lock watchdog and parallel) reached no
+ * task: they ran on, orphaned, writing into the sweep folder. As parallel's
+ * shell, `noiselab-sweep -c LINE` asks the kernel for SIGTERM when parallel
+ * dies (PR_SET_PDEATHSIG), runs LINE with /bin/sh in a process group of its
+ * own and passes SIGTERM, SIGINT and SIGHUP on to that whole group (the
+ * experiment then removes its temporaries). */
+static volatile sig_atomic_t task_group, task_signal;
+
+static void task_forward(int sig)
+{
+  task_signal = sig;
+  if (task_group > 0)
+    kill(-(pid_t)task_group, sig);
+}
+
+static int shell_main(const char *line)
+{
+  static const int sigs[] = {SIGTERM, SIGINT, SIGHUP};
+  pid_t parent = getppid();
+  struct sigaction sa;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = task_forward;
+  sigemptyset(&sa.sa_mask);
+  for (int k = 0; k < 3; k++)
+    sigaction(sigs[k], &sa, NULL);
+  prctl(PR_SET_PDEATHSIG, SIGTERM);
+  /* parallel gone before the request: no signal will come. parallel names
+   * itself in PARALLEL_PID; a parent that differs was replaced by a reaper. */
+  const char *pp = getenv("PARALLEL_PID");
+  if (getppid() != parent || (pp && atol(pp) != (long)parent))
+    return 128 + SIGTERM;
+  pid_t child = fork();
+  if (child < 0)
+    die("-c: cannot start /bin/sh: %s", strerror(errno));
+  if (child == 0) {
+    setpgid(0, 0);
+    sa.sa_handler = SIG_DFL;
+    for (int k = 0; k < 3; k++)
+      sigaction(sigs[k], &sa, NULL);
+    execl("/bin/sh", "sh", "-c", line, (char *)NULL);
+    _exit(127);
+  }
+  setpgid(child, child);   /* both sides: whichever runs first */
+  task_group = child;
+  if (task_signal)   /* a signal that came before the group was known */
+    kill(-child, task_signal);
+  int st;
+  while (waitpid(child, &st, 0) < 0)
+    if (errno != EINTR)
+      return 1;
+  return WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
+}
+
 int main(int argc, char **argv)
 {
-  nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
+  nl_tool_start("noiselab sweep");   /* OOM exit, SIGXFSZ ignored, stdout checked at exit */
   nl_error err;
+  if (argc == 3 && !strcmp(argv[1], "-c"))
+    return shell_main(argv[2]);
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
     printf("usage: noiselab-sweep expand NAME=SPEC\n"
            "       noiselab-sweep plan --experiment E [--seed S] [--seeds N] [--task-seeds K]\n"
@@ -207,6 +270,7 @@ int main(int argc, char **argv)
            "       noiselab-sweep status DIR [pending|failures]\n"
            "       noiselab-sweep merge DIR [--table T] [--y COL[,COL2]] [--x NAME]\n"
            "       noiselab-sweep usage\n"
+           "       noiselab-sweep -c LINE   (GNU parallel's shell for the tasks)\n"
            "(the engine behind scripts/noiselab sweep; see scripts/sweep.sh)\n");
     return argc < 2 ? 2 : 0;
   }

@@ -1,11 +1,13 @@
 #include "base/nl_base.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stdio_ext.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -216,7 +218,9 @@ static size_t name_max_in(const char *dir, size_t dirlen)
 }
 
 /* nl_temp_sibling's template; *suffix: the bytes after its XXXXXX, for
- * mkstemps. */
+ * mkstemps. The writer's pid is in the name, so that a later writer of the
+ * same output can tell a temporary whose writer was killed outright
+ * (SIGKILL runs no clean-up) from one being written (remove_stale_temps). */
 static char *temp_template(const char *path, int *suffix)
 {
   const char *slash = strrchr(path, '/');
@@ -226,21 +230,74 @@ static char *temp_template(const char *path, int *suffix)
   size_t stemlen = dot ? (size_t)(dot - base) : strlen(base);
   const char *ext = dot ? dot : "";
   size_t extlen = strlen(ext), name_max = name_max_in(path, dirlen);
-  /* ".stem.XXXXXX.ext" is 8 bytes longer than the name: for a name the
-   * folder accepts but that leaves no room, the temporary is ".nl.XXXXXX.ext"
-   * (without the extension if even that is too long), a name the clean-up
-   * of leftovers still knows (".?*.XXXXXX[.*]", scripts/noiselab). */
+  char pid[24];
+  size_t pidlen = (size_t)snprintf(pid, sizeof pid, "%ld", (long)getpid());
+  /* ".stem.PID.XXXXXX.ext" is 9 + pidlen bytes longer than the name: for a
+   * name the folder accepts but that leaves no room, the temporary is
+   * ".nl.PID.XXXXXX.ext" (without the extension if even that is too long),
+   * a name the clean-up of leftovers still knows (".?*.XXXXXX[.*]",
+   * scripts/noiselab). */
   const char *stem = base;
-  if (stemlen + extlen + 8 > name_max) {
+  size_t extra = 9 + pidlen;
+  if (stemlen + extlen + extra > name_max) {
     stem = "nl";
     stemlen = 2;
-    if (stemlen + extlen + 8 > name_max) extlen = 0;
+    if (stemlen + extlen + extra > name_max) extlen = 0;
   }
-  size_t n = dirlen + 1 + stemlen + 8 + extlen + 1;
+  size_t n = dirlen + 1 + stemlen + extra + extlen + 1;
   char *t = nl_xmalloc(n);
-  snprintf(t, n, "%.*s.%.*s.XXXXXX%.*s", (int)dirlen, path, (int)stemlen, stem, (int)extlen, ext);
+  snprintf(t, n, "%.*s.%.*s.%s.XXXXXX%.*s", (int)dirlen, path, (int)stemlen, stem, pid,
+           (int)extlen, ext);
   *suffix = (int)extlen;
   return t;
+}
+
+/* With name ".PREFIX.PID.XXXXXX" + a tail (one of the temporary names of
+ * temp_template for this target), the writer's pid; else 0. */
+static long temp_writer(const char *name, const char *prefix, size_t plen, const char *ext)
+{
+  if (strncmp(name, prefix, plen)) return 0;
+  const char *p = name + plen, *q = p;
+  while (*q >= '0' && *q <= '9') q++;
+  if (q == p || q - p > 18 || *q != '.') return 0;
+  for (int k = 1; k <= 6; k++)
+    if (!q[k] || q[k] == '/') return 0;
+  if (strcmp(q + 7, ext) && q[7]) return 0;
+  return strtol(p, NULL, 10);
+}
+
+/* Removes the temporaries of `target` (temp_template's names, the short
+ * ".nl." form included) whose writer is no live process: a writer killed
+ * outright left them. A writer alive, or one this process may not signal
+ * (EPERM: it exists), keeps its file. */
+static void remove_stale_temps(const char *target)
+{
+  const char *slash = strrchr(target, '/');
+  const char *base = slash ? slash + 1 : target;
+  const char *dot = strrchr(base, '.');
+  size_t stemlen = dot ? (size_t)(dot - base) : strlen(base);
+  const char *ext = dot ? dot : "";
+  char *dir = slash ? nl_xmalloc((size_t)(slash - target) + 2) : nl_xstrdup(".");
+  if (slash) {
+    size_t dl = slash == target ? 1 : (size_t)(slash - target);
+    memcpy(dir, target, dl);
+    dir[dl] = '\0';
+  }
+  char *prefix = nl_xmalloc(stemlen + 3);
+  snprintf(prefix, stemlen + 3, ".%.*s.", (int)stemlen, base);
+  DIR *d = opendir(dir);
+  if (d) {
+    pid_t me = getpid();
+    for (struct dirent *e; (e = readdir(d));) {
+      long pid = temp_writer(e->d_name, prefix, stemlen + 2, ext);
+      if (!pid) pid = temp_writer(e->d_name, ".nl.", 4, ext);
+      if (pid <= 0 || pid == me || pid > 0x7fffffffL) continue;
+      if (kill((pid_t)pid, 0) != 0 && errno == ESRCH) unlinkat(dirfd(d), e->d_name, 0);
+    }
+    closedir(d);
+  }
+  free(prefix);
+  free(dir);
 }
 
 char *nl_temp_sibling(const char *path)
@@ -414,6 +471,7 @@ nl_status nl_atomic_open(nl_atomic_file *af, const char *path, nl_error *err)
   }
   af->path = nl_xstrdup(path);
   af->target = target == path ? af->path : target;
+  remove_stale_temps(af->target);
   int suffix;
   af->tmp = temp_template(af->target, &suffix);
   int fd = mkstemps(af->tmp, suffix);
@@ -751,4 +809,24 @@ void nl_die(const char *prefix, const char *fmt, ...)
   nl_vmessage(stderr, fmt, ap);
   va_end(ap);
   exit(2);
+}
+
+nl_status nl_stream_close(FILE *f, const char *what, nl_error *err)
+{
+  int pending = __fpending(f) != 0, failed = ferror(f) != 0, e = 0;
+  /* After a failed write the buffer still holds what was not written: one
+   * more flush fails the same way and sets errno, which the caller of the
+   * first failed write may have lost. */
+  errno = 0;
+  if (fflush(f) != 0) e = errno ? errno : EIO;
+  failed |= e != 0;
+  errno = 0;
+  int closed = fclose(f) == 0, ce = errno;
+  if (!closed && !(ce == EBADF && !pending && !failed)) {
+    failed = 1;
+    if (!e) e = ce ? ce : EIO;
+  }
+  if (!failed) return NL_OK;
+  if (!e) return nl_fail(err, NL_EIO, "write error on %s", what);
+  return nl_fail(err, NL_EIO, "write error on %s: %s", what, strerror(e));
 }

@@ -26,7 +26,9 @@
  *
  * Temporaries still open are removed when the program exits (exit(), so a
  * tool may die() between open and commit) and on SIGINT, SIGTERM and SIGHUP,
- * after which the signal's previous disposition applies.
+ * after which the signal's previous disposition applies. SIGKILL runs no
+ * clean-up: a temporary's name holds its writer's pid, and nl_atomic_open
+ * removes the temporaries of its target whose writer is no live process.
  *
  * A command that writes several files writes all or none: it opens every
  * output first (which checks each target), writes each, then calls
@@ -71,6 +73,15 @@ void nl_vmessage(FILE *f, const char *fmt, va_list ap) __attribute__((format(pri
 void nl_die(const char *prefix, const char *fmt, ...)
   __attribute__((format(printf, 2, 3), noreturn));
 
+/* Flushes and closes a stream the program wrote without nl_atomic_* (its
+ * stdout) and says whether every byte got there: stdio's error flag (a write
+ * that failed earlier, its buffer full), the last flush and the close. A
+ * program that exits 0 after output lost on a full disk or a closed pipe
+ * reports a success it did not have. A stream that was already closed and
+ * never written (`prog >&-` with nothing to say) is no failure. `what`
+ * names it: "write error on standard output: No space left on device". */
+nl_status nl_stream_close(FILE *f, const char *what, nl_error *err);
+
 /* Allocation that never returns NULL: out-of-memory is not a condition any
  * caller here can recover from. On failure it prints "noiselab: out of
  * memory allocating N bytes", then calls the out-of-memory handler with the
@@ -107,7 +118,8 @@ void nl_atomic_abort(nl_atomic_file *af);
 /* Writes n bytes to `path` the same way (open, write, commit). */
 nl_status nl_atomic_write(const char *path, const void *data, size_t n, nl_error *err);
 /* A temporary path beside `path` keeping its extension (image writers pick
- * the format from it): "dir/.name.XXXXXX.png", or "dir/.nl.XXXXXX.png" when
+ * the format from it) and the writer's pid: "dir/.name.PID.XXXXXX.png", or
+ * "dir/.nl.PID.XXXXXX.png" when
  * the name is too long for that in its folder (NAME_MAX, 255 bytes on most
  * file systems), so that every name the folder accepts can be written.
  * Caller frees. */

@@ -170,6 +170,41 @@ NL_TEST(messages_one_line_with_their_reason)
   NL_CHECK(whole && strstr(err.msg, ": bad") != NULL);
 }
 
+/* A writer killed outright (SIGKILL) leaves its temporary: the next writer
+ * of that output removes it, its pid being no live process, and keeps the
+ * temporary of a writer still alive. */
+NL_TEST(stale_temporaries_are_removed)
+{
+  nl_error err;
+  pid_t dead = fork();
+  if (dead == 0) _exit(0);
+  waitpid(dead, NULL, 0);
+  char name[128];
+  char *out = nl_path_join(dir, "stale.tsv");
+  snprintf(name, sizeof name, ".stale.%ld.AbC123.tsv", (long)dead);
+  char *gone = nl_path_join(dir, name);
+  snprintf(name, sizeof name, ".stale.%ld.dEf456.tsv", (long)getppid());
+  char *kept = nl_path_join(dir, name);
+  snprintf(name, sizeof name, ".other.%ld.AbC123.tsv", (long)dead);
+  char *other = nl_path_join(dir, name);
+  NL_CHECK(nl_atomic_write(gone, "x", 1, &err) == NL_OK);
+  NL_CHECK(nl_atomic_write(kept, "x", 1, &err) == NL_OK);
+  NL_CHECK(nl_atomic_write(other, "x", 1, &err) == NL_OK);
+  NL_CHECK(nl_atomic_write(out, "y", 1, &err) == NL_OK);
+  struct stat st;
+  NL_CHECK(stat(gone, &st) != 0);
+  NL_CHECK(stat(kept, &st) == 0);    /* its writer is alive */
+  NL_CHECK(stat(other, &st) == 0);   /* another output's */
+  NL_CHECK(stat(out, &st) == 0 && st.st_size == 1);
+  unlink(kept);
+  unlink(other);
+  unlink(out);
+  free(gone);
+  free(kept);
+  free(other);
+  free(out);
+}
+
 /* Every name the folder accepts can be written: the temporary of a name of
  * NAME_MAX bytes is a short one in the same folder, and nothing is left. */
 NL_TEST(longest_names_are_written)
@@ -180,7 +215,9 @@ NL_TEST(longest_names_are_written)
   strcpy(name + 251, ".png");
   char *path = nl_path_join(dir, name);
   char *t = nl_temp_sibling(path);
-  NL_CHECK(strlen(strrchr(t, '/') + 1) <= 255 && strstr(t, "/.nl.XXXXXX.png") != NULL);
+  char want[64];
+  snprintf(want, sizeof want, "/.nl.%ld.XXXXXX.png", (long)getpid());
+  NL_CHECK(strlen(strrchr(t, '/') + 1) <= 255 && strstr(t, want) != NULL);
   free(t);
   NL_CHECK(nl_atomic_write(path, "x", 1, &err) == NL_OK);
   struct stat st;

@@ -480,8 +480,11 @@ void nl_harness_params_done(nl_harness *r)
   if (r->listing) {
     if (r->listing == 1) usage(r->name, r->title);
     nl_harness_params_print(r, stdout, r->listing == 1);
-    fflush(stdout);
-    exit(ferror(stdout) ? 1 : 0);
+    /* A list lost on a full disk or a closed pipe is a failed output: one
+     * line and exit 2, as the tools say it (tools/nl_tool.c). */
+    nl_error err;
+    if (nl_stream_close(stdout, "standard output", &err)) nl_harness_die(r, 2, "%s", err.msg);
+    exit(0);
   }
 }
 
