@@ -335,9 +335,6 @@ expect_error "--linkage centroid needs --metric euclidean, not cityblock" \
   "$STAT" hclust "$REF/metric_X.tsv" --linkage centroid --metric cityblock --clusters 2
 expect_error "--metric: unknown metric 'manhattan' (euclidean, sqeuclidean, cityblock" \
   "$STAT" hclust "$REF/metric_X.tsv" --linkage single --metric manhattan --clusters 2
-printf '1 2\n0 0\n3 1\n' >"$TMP/zero_row.tsv"
-expect_error "zero_row.tsv: point 2 is zero: its cosine distance is 0/0" \
-  "$STAT" hclust "$TMP/zero_row.tsv" --linkage average --metric cosine --clusters 2
 # gmm: score (sklearn's mean log-likelihood per row) beside the total
 line=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3)
 expect_value "$line" score "$(awk 'BEGIN { printf "%.17g", -5069.630131017421 / 750 }')" 1e-8
@@ -436,6 +433,41 @@ expect_error "--bogus: unknown option" "$STAT" ks "$REF/u01_100.tsv" --bogus=1
 expect_error "--column: missing value" "$STAT" ks "$REF/u01_100.tsv" --column
 expect_error "--uniform: needs 2 values" "$STAT" ks "$REF/u01_100.tsv" --uniform 0
 expect_error "--csv: takes no value" "$STAT" ks "$REF/u01_100.tsv" --csv=yes
+
+# ---- distances that are not finite ---------------------------------------------
+# Where scipy's pdist gives inf or NaN (Bray-Curtis of x and -x, cosine of a
+# zero row, correlation of a constant row) its linkage refuses; so does every
+# linkage here, with the pair named (complete, average and weighted used to
+# corrupt the heap: exit 134). Where scipy's distance is finite it is given:
+# a zero row is at Bray-Curtis distance 1 from the others.
+printf 'x\ty\n1\t2\n-1\t-2\n3\t1\n' >"$TMP/b.tsv"
+printf 'x\ty\n1\t2\n0\t0\n3\t1\n' >"$TMP/z.tsv"
+printf 'x\ty\tz\n0.1\t0.1\t0.1\n1\t2\t3\n3\t1\t2\n' >"$TMP/c.tsv"
+for link in single complete average weighted; do
+  expect_error "b.tsv: points 1 and 2: the braycurtis distance is x/0" \
+    "$STAT" hclust "$TMP/b.tsv" --linkage "$link" --metric braycurtis --clusters 2
+  expect_error "z.tsv: points 1 and 2: the cosine distance is 0/0 (point 2 is zero)" \
+    "$STAT" hclust "$TMP/z.tsv" --linkage "$link" --metric cosine --clusters 2
+  expect_error "c.tsv: points 1 and 2: the correlation distance is 0/0 (point 1 is constant)" \
+    "$STAT" hclust "$TMP/c.tsv" --linkage "$link" --metric correlation --clusters 2
+  "$STAT" hclust "$TMP/z.tsv" --linkage "$link" --metric braycurtis --clusters 1 --merges "$TMP/zm.tsv" >/dev/null
+  if [ "$(tail -n 1 "$TMP/zm.tsv")" = "$(printf '1\t3\t1\t3')" ]; then ok
+  else bad "hclust --linkage $link --metric braycurtis with a zero row: $(tr '\n' ' ' <"$TMP/zm.tsv")"; fi
+done
+# Coordinates of 1e-200: squares underflow; cosine is scale-free and
+# Euclidean scales with the points, so the heights are those at 1 (times 1e-200).
+printf '1e-200\t-2e-200\n3e-200\t1e-200\n-1e-200\t-1e-200\n' >"$TMP/tiny.tsv"
+printf '1\t-2\n3\t1\n-1\t-1\n' >"$TMP/unit.tsv"
+for link in single complete; do
+  for metric in cosine euclidean; do
+    "$STAT" hclust "$TMP/tiny.tsv" --linkage $link --metric $metric --clusters 1 --merges "$TMP/tm.tsv" >/dev/null
+    "$STAT" hclust "$TMP/unit.tsv" --linkage $link --metric $metric --clusters 1 --merges "$TMP/um.tsv" >/dev/null
+    if awk -v m=$metric 'NR == FNR { h[FNR] = $3; next }
+         FNR > 1 { w = m == "cosine" ? h[FNR] : h[FNR] * 1e-200; e = $3 - w; if (e < 0) e = -e
+                   if (!(w > 0) || e > 1e-12 * w) bad = 1 } END { exit bad }' "$TMP/um.tsv" "$TMP/tm.tsv"
+    then ok; else bad "hclust --linkage $link --metric $metric at 1e-200: $(tr '\n' ' ' <"$TMP/tm.tsv")"; fi
+  done
+done
 
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]
