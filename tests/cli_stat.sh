@@ -469,5 +469,18 @@ for link in single complete; do
   done
 done
 
+# ---- an option the subcommand does not use is refused, not ignored ---------------
+U=$REF/u01_100.tsv
+expect_error "--bins is for chisq (ks does not use it" "$STAT" ks "$U" --bins 4 --linkage ward
+expect_error "--uniform is for ks, kuiper and chisq (gmm does not use it" "$STAT" gmm "$U" --uniform 0 1 --k 1
+expect_error "--linkage is for hclust (ks2 does not use it" "$STAT" ks2 "$U" "$U" --linkage ward
+expect_error "--k is for gmm (hclust does not use it" "$STAT" hclust "$U" --linkage single --clusters 2 --k 3
+expect_error "--metric is for hclust (kuiper does not use it" "$STAT" kuiper "$U" --metric=cosine
+expect_error "--dist is for ks and kuiper (chisq does not use it" "$STAT" chisq "$U" --bins 4 --dist norm
+expect_error "--merges is for hclust (gmm does not use it" "$STAT" gmm "$U" --k 1 --merges "$TMP/m.tsv"
+expect_error "--method is for hclust (chisq does not use it" "$STAT" chisq "$U" --bins 4 --method single
+expect_error "--seed is for gmm (ks does not use it" "$STAT" ks "$U" --seed 3
+if [ ! -e "$TMP/m.tsv" ]; then ok; else bad "a refused gmm wrote --merges"; fi
+
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]
