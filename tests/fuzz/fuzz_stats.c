@@ -21,6 +21,11 @@
  * GMM_MAX_COLS are not fitted: a unit stays well under a second (hclust is
  * O(n^2) in time and memory, a full covariance's Cholesky O(d^3)).
  *
+ * A table of at most ALL_PAIRS_ROWS rows is clustered with every linkage
+ * and metric (56 small linkages cost about what one of 300 rows does), so
+ * that every pair is reached whatever the corpus keeps; a larger one with
+ * the linkage and metric of the options.
+ *
  * Option bytes: o0 bits 0-2 linkage (single, complete, average, ward,
  * weighted, centroid, median; 7 is single), bits 3-5 metric (euclidean,
  * sqeuclidean, cityblock, chebyshev, cosine, correlation, canberra,
@@ -39,7 +44,7 @@
 
 #include <math.h>
 
-enum { MAX_ROWS = 300, GMM_MAX_COLS = 16, GMM_ITER = 10 };
+enum { MAX_ROWS = 300, ALL_PAIRS_ROWS = 16, GMM_MAX_COLS = 16, GMM_ITER = 10 };
 
 static void check_p(const char *what, double p)
 {
@@ -238,7 +243,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   fuzz_ks(col, t->nrows, (size_t)((o1 >> 4) & 7) + 2, alt);
   if (kind <= NL_DIST_TABLE) fuzz_dist(col, t->nrows, t, kind, alt, o3);
   free(col);
-  if (n >= 2) fuzz_hclust(t->num, n, d, (o0 & 7) % 7, (o0 >> 3) & 7, (size_t)((o1 >> 4) & 7) + 1);
+  size_t k = (size_t)((o1 >> 4) & 7) + 1;
+  if (n >= 2 && n <= ALL_PAIRS_ROWS) {
+    for (int m = 0; m < 7; m++)
+      for (int metric = 0; metric < 8; metric++) fuzz_hclust(t->num, n, d, m, metric, k);
+  } else if (n >= 2) {
+    fuzz_hclust(t->num, n, d, (o0 & 7) % 7, (o0 >> 3) & 7, k);
+  }
   if (d <= GMM_MAX_COLS)
     fuzz_gmm(t->num, n, d, (size_t)(o1 & 3) + 1, (o1 >> 2) & 3, (unsigned long)(o1 >> 7),
              reg_values[(o2 >> 6) & 3]);
