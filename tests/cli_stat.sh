@@ -482,5 +482,18 @@ expect_error "--method is for hclust (chisq does not use it" "$STAT" chisq "$U" 
 expect_error "--seed is for gmm (ks does not use it" "$STAT" ks "$U" --seed 3
 if [ ! -e "$TMP/m.tsv" ]; then ok; else bad "a refused gmm wrote --merges"; fi
 
+# ---- numbers: decimal, and nothing lost to underflow ------------------------------
+# A cell of 1e-400 (read as 0 by strtod and numpy) or 0x10 (16) is refused
+# with its line and column; a subnormal option value is a finite number.
+printf 'x\n0.5\n1e-400\n0.25\n' >"$TMP/under.tsv"
+printf 'x\n0.5\n0x10\n0.25\n' >"$TMP/hex.tsv"
+expect_error "under.tsv:3: column 'x' holds '1e-400', which underflows to 0" "$STAT" ks "$TMP/under.tsv"
+expect_error "hex.tsv:3: column 'x' holds '0x10', which is hexadecimal" "$STAT" kuiper "$TMP/hex.tsv"
+expect_error "--shape: '1e-400' underflows to 0" "$STAT" ks "$U" --dist gamma --shape 1e-400
+expect_error "--loc: '0x1p3' is hexadecimal" "$STAT" ks "$U" --dist norm --loc 0x1p3
+if line=$("$STAT" ks "$U" --dist gamma --shape 1e-308 2>"$TMP/err"); then
+  expect_value "$line" n 100 0
+else bad "ks --shape 1e-308 (subnormal, finite) refused: $(cat "$TMP/err")"; fi
+
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]
