@@ -335,9 +335,6 @@ expect_error "--linkage centroid needs --metric euclidean, not cityblock" \
   "$STAT" hclust "$REF/metric_X.tsv" --linkage centroid --metric cityblock --clusters 2
 expect_error "--metric: unknown metric 'manhattan' (euclidean, sqeuclidean, cityblock" \
   "$STAT" hclust "$REF/metric_X.tsv" --linkage single --metric manhattan --clusters 2
-printf '1 2\n0 0\n3 1\n' >"$TMP/zero_row.tsv"
-expect_error "zero_row.tsv: point 2 is zero: its cosine distance is 0/0" \
-  "$STAT" hclust "$TMP/zero_row.tsv" --linkage average --metric cosine --clusters 2
 # gmm: score (sklearn's mean log-likelihood per row) beside the total
 line=$("$STAT" gmm "$DATA/gmm_X.tsv" --k 3)
 expect_value "$line" score "$(awk 'BEGIN { printf "%.17g", -5069.630131017421 / 750 }')" 1e-8
@@ -436,6 +433,67 @@ expect_error "--bogus: unknown option" "$STAT" ks "$REF/u01_100.tsv" --bogus=1
 expect_error "--column: missing value" "$STAT" ks "$REF/u01_100.tsv" --column
 expect_error "--uniform: needs 2 values" "$STAT" ks "$REF/u01_100.tsv" --uniform 0
 expect_error "--csv: takes no value" "$STAT" ks "$REF/u01_100.tsv" --csv=yes
+
+# ---- distances that are not finite ---------------------------------------------
+# Where scipy's pdist gives inf or NaN (Bray-Curtis of x and -x, cosine of a
+# zero row, correlation of a constant row) its linkage refuses; so does every
+# linkage here, with the pair named (complete, average and weighted used to
+# corrupt the heap: exit 134). Where scipy's distance is finite it is given:
+# a zero row is at Bray-Curtis distance 1 from the others.
+printf 'x\ty\n1\t2\n-1\t-2\n3\t1\n' >"$TMP/b.tsv"
+printf 'x\ty\n1\t2\n0\t0\n3\t1\n' >"$TMP/z.tsv"
+printf 'x\ty\tz\n0.1\t0.1\t0.1\n1\t2\t3\n3\t1\t2\n' >"$TMP/c.tsv"
+for link in single complete average weighted; do
+  expect_error "b.tsv: points 1 and 2: the braycurtis distance is x/0" \
+    "$STAT" hclust "$TMP/b.tsv" --linkage "$link" --metric braycurtis --clusters 2
+  expect_error "z.tsv: points 1 and 2: the cosine distance is 0/0 (point 2 is zero)" \
+    "$STAT" hclust "$TMP/z.tsv" --linkage "$link" --metric cosine --clusters 2
+  expect_error "c.tsv: points 1 and 2: the correlation distance is 0/0 (point 1 is constant)" \
+    "$STAT" hclust "$TMP/c.tsv" --linkage "$link" --metric correlation --clusters 2
+  "$STAT" hclust "$TMP/z.tsv" --linkage "$link" --metric braycurtis --clusters 1 --merges "$TMP/zm.tsv" >/dev/null
+  if [ "$(tail -n 1 "$TMP/zm.tsv")" = "$(printf '1\t3\t1\t3')" ]; then ok
+  else bad "hclust --linkage $link --metric braycurtis with a zero row: $(tr '\n' ' ' <"$TMP/zm.tsv")"; fi
+done
+# Coordinates of 1e-200: squares underflow; cosine is scale-free and
+# Euclidean scales with the points, so the heights are those at 1 (times 1e-200).
+printf '1e-200\t-2e-200\n3e-200\t1e-200\n-1e-200\t-1e-200\n' >"$TMP/tiny.tsv"
+printf '1\t-2\n3\t1\n-1\t-1\n' >"$TMP/unit.tsv"
+for link in single complete; do
+  for metric in cosine euclidean; do
+    "$STAT" hclust "$TMP/tiny.tsv" --linkage $link --metric $metric --clusters 1 --merges "$TMP/tm.tsv" >/dev/null
+    "$STAT" hclust "$TMP/unit.tsv" --linkage $link --metric $metric --clusters 1 --merges "$TMP/um.tsv" >/dev/null
+    if awk -v m=$metric 'NR == FNR { h[FNR] = $3; next }
+         FNR > 1 { w = m == "cosine" ? h[FNR] : h[FNR] * 1e-200; e = $3 - w; if (e < 0) e = -e
+                   if (!(w > 0) || e > 1e-12 * w) bad = 1 } END { exit bad }' "$TMP/um.tsv" "$TMP/tm.tsv"
+    then ok; else bad "hclust --linkage $link --metric $metric at 1e-200: $(tr '\n' ' ' <"$TMP/tm.tsv")"; fi
+  done
+done
+
+# ---- an option the subcommand does not use is refused, not ignored ---------------
+U=$REF/u01_100.tsv
+expect_error "--bins is for chisq (ks does not use it" "$STAT" ks "$U" --bins 4 --linkage ward
+expect_error "--uniform is for ks, kuiper and chisq (gmm does not use it" "$STAT" gmm "$U" --uniform 0 1 --k 1
+expect_error "--linkage is for hclust (ks2 does not use it" "$STAT" ks2 "$U" "$U" --linkage ward
+expect_error "--k is for gmm (hclust does not use it" "$STAT" hclust "$U" --linkage single --clusters 2 --k 3
+expect_error "--metric is for hclust (kuiper does not use it" "$STAT" kuiper "$U" --metric=cosine
+expect_error "--dist is for ks and kuiper (chisq does not use it" "$STAT" chisq "$U" --bins 4 --dist norm
+expect_error "--merges is for hclust (gmm does not use it" "$STAT" gmm "$U" --k 1 --merges "$TMP/m.tsv"
+expect_error "--method is for hclust (chisq does not use it" "$STAT" chisq "$U" --bins 4 --method single
+expect_error "--seed is for gmm (ks does not use it" "$STAT" ks "$U" --seed 3
+if [ ! -e "$TMP/m.tsv" ]; then ok; else bad "a refused gmm wrote --merges"; fi
+
+# ---- numbers: decimal, and nothing lost to underflow ------------------------------
+# A cell of 1e-400 (read as 0 by strtod and numpy) or 0x10 (16) is refused
+# with its line and column; a subnormal option value is a finite number.
+printf 'x\n0.5\n1e-400\n0.25\n' >"$TMP/under.tsv"
+printf 'x\n0.5\n0x10\n0.25\n' >"$TMP/hex.tsv"
+expect_error "under.tsv:3: column 'x' holds '1e-400', which underflows to 0" "$STAT" ks "$TMP/under.tsv"
+expect_error "hex.tsv:3: column 'x' holds '0x10', which is hexadecimal" "$STAT" kuiper "$TMP/hex.tsv"
+expect_error "--shape: '1e-400' underflows to 0" "$STAT" ks "$U" --dist gamma --shape 1e-400
+expect_error "--loc: '0x1p3' is hexadecimal" "$STAT" ks "$U" --dist norm --loc 0x1p3
+if line=$("$STAT" ks "$U" --dist gamma --shape 1e-308 2>"$TMP/err"); then
+  expect_value "$line" n 100 0
+else bad "ks --shape 1e-308 (subnormal, finite) refused: $(cat "$TMP/err")"; fi
 
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]

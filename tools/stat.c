@@ -194,6 +194,46 @@ static const nl_opt_spec spec[] = {
   [O_CDF] = {"cdf", 0, 1}, [O_FORMAT] = {"format", 0, 1}, [O_CSV] = {"csv", 0, 0},
   [O_HELP] = {"help", 'h', 0}, {NULL, 0, 0}};
 
+/* The options each subcommand uses (bit O_x); any other is refused, so a
+ * misplaced one (`ks --bins 4`) is not silently ignored. */
+#define B(o) (1u << (o))
+static const struct { const char *sub; unsigned opts; } sub_opts[] = {
+  {"ks", B(O_COLUMN) | B(O_UNIFORM) | B(O_DIST) | B(O_SHAPE) | B(O_LOC) | B(O_SCALE) | B(O_CDF)
+         | B(O_ALTERNATIVE)},
+  {"ks2", B(O_COLUMN) | B(O_ALTERNATIVE)},
+  {"kuiper", B(O_COLUMN) | B(O_UNIFORM) | B(O_DIST) | B(O_SHAPE) | B(O_LOC) | B(O_SCALE) | B(O_CDF)},
+  {"chisq", B(O_COLUMN) | B(O_BINS) | B(O_UNIFORM)},
+  {"hclust", B(O_LINKAGE) | B(O_METHOD) | B(O_METRIC) | B(O_CUTOFF) | B(O_CLUSTERS) | B(O_LABELS)
+             | B(O_MERGES)},
+  {"gmm", B(O_K) | B(O_SELECT_AIC) | B(O_COVARIANCE) | B(O_SEED) | B(O_TOL) | B(O_MAX_ITER)
+          | B(O_MAX_K) | B(O_REG_COVAR) | B(O_PARAMS) | B(O_LABELS)},
+};
+enum { N_SUBS = sizeof sub_opts / sizeof sub_opts[0] };
+static const unsigned common_opts = B(O_FORMAT) | B(O_CSV) | B(O_HELP);
+#undef B
+
+/* Refuses option k (as typed: name) unless o->sub uses it, naming the
+ * subcommands that do. */
+static void check_option_used(const opts *o, int k, const char *name)
+{
+  const char *users[N_SUBS];
+  int nu = 0, mine = 0;
+  if (common_opts & (1u << k)) return;
+  for (int i = 0; i < N_SUBS; i++)
+    if (sub_opts[i].opts & (1u << k)) {
+      users[nu++] = sub_opts[i].sub;
+      mine |= !strcmp(sub_opts[i].sub, o->sub);
+    }
+  if (mine) return;
+  char list[128] = "";
+  for (int i = 0; i < nu; i++)
+    snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s",
+             i == 0 ? "" : i + 1 == nu ? " and " : ", ", users[i]);
+  const char *why = k == O_COLUMN ? "uses every column" : k == O_ALTERNATIVE ? "has no one-sided form"
+                                                                           : "does not use it";
+  die(o->sub, "%s is for %s (%s %s); see " PROG " %s --help", name, list, o->sub, why, o->sub);
+}
+
 /* Parses argv[2..] (nl_opt: --name VALUE or --name=VALUE, files anywhere). */
 static void parse(int argc, char **argv, opts *o)
 {
@@ -205,6 +245,7 @@ static void parse(int argc, char **argv, opts *o)
     if (k == NL_OPT_ERROR) {
       die(o->sub, "%s (see " PROG " %s --help)", err.msg, o->sub);
     }
+    if (k != NL_OPT_POSITIONAL) check_option_used(o, k, a);
     switch (k) {
     case NL_OPT_POSITIONAL:
       if (o->nfiles == 2) die(o->sub, "too many file arguments");
@@ -262,12 +303,6 @@ static void parse(int argc, char **argv, opts *o)
     }
   }
   nl_opt_end(&p);
-  if (o->have_column && (!strcmp(o->sub, "hclust") || !strcmp(o->sub, "gmm")))
-    die(o->sub, "--column is for ks, ks2, kuiper and chisq (%s uses every column)", o->sub);
-  if (o->metric && strcmp(o->sub, "hclust"))
-    die(o->sub, "--metric is for hclust");
-  if (o->alternative && strcmp(o->sub, "ks") && strcmp(o->sub, "ks2"))
-    die(o->sub, "--alternative is for ks and ks2 (%s has no one-sided form)", o->sub);
   if (o->alternative && nl_stats_ks_alternative_parse(o->alternative, &o->alt, &err))
     die(o->sub, "--alternative: %s", err.msg);
   if (o->have_uniform + (o->dist != NULL) + (o->cdf_file != NULL) > 1)
@@ -561,7 +596,6 @@ static void run_ks2(const opts *o)
 static void run_chisq(const opts *o)
 {
   if (!o->have_bins) die(o->sub, "--bins K is required");
-  if (o->dist || o->cdf_file) die(o->sub, "--dist and --cdf are for ks and kuiper; chisq bins [A, B] (--uniform A B)");
   nl_table *t = read_table(o, o->files[0]);
   double *x = column(o, t, o->files[0]);
   nl_stats_chisq_result c;

@@ -1,5 +1,6 @@
 #include "base/nl_base.h"
 
+#include <ctype.h>
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -704,17 +705,46 @@ double nl_time_thread_cpu(void)
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+nl_number_kind nl_number_read(const char *s, double *v)
+{
+  char *end;
+  errno = 0;
+  *v = strtod(s, &end);
+  if (end == s) return NL_NUMBER_NONE;
+  int range = errno == ERANGE;
+  if (*end) return NL_NUMBER_NONE;
+  const char *p = s;
+  while (isspace((unsigned char)*p)) p++;
+  if (*p == '+' || *p == '-') p++;
+  if (p[0] == '0' && (p[1] == 'x' || p[1] == 'X')) return NL_NUMBER_HEX;
+  if (isnan(*v) || (isinf(*v) && !range)) return NL_NUMBER_NONFINITE;
+  if (isinf(*v)) return NL_NUMBER_OVERFLOW;
+  /* glibc sets ERANGE for every inexact subnormal too: only a result of 0
+   * from digits that are not all zero has lost the value. */
+  if (range && *v == 0.0) return NL_NUMBER_UNDERFLOW;
+  return NL_NUMBER_OK;
+}
+
+const char *nl_number_problem(nl_number_kind k)
+{
+  switch (k) {
+  case NL_NUMBER_OK: return "is a number";
+  case NL_NUMBER_NONE: return "is not a number";
+  case NL_NUMBER_NONFINITE: return "is not a finite number";
+  case NL_NUMBER_OVERFLOW: return "is beyond the double range (1.8e308)";
+  case NL_NUMBER_UNDERFLOW: return "underflows to 0 (nearer 0 than 4.9e-324, the least double)";
+  case NL_NUMBER_HEX: return "is hexadecimal (write numbers in decimal)";
+  }
+  return "is not a number";
+}
+
 nl_status nl_parse_double(const char *what, const char *s, double lo, double hi,
                           double *out, nl_error *err)
 {
   if (!s || !*s) return nl_fail(err, NL_EINVAL, "%s: missing value", what);
-  char *end;
-  errno = 0;
-  double v = strtod(s, &end);
-  if (*end != '\0' || end == s)
-    return nl_fail(err, NL_EINVAL, "%s: '%s' is not a number", what, s);
-  if (v != v || errno == ERANGE || v > 1.7976931348623157e308 || v < -1.7976931348623157e308)
-    return nl_fail(err, NL_EINVAL, "%s: '%s' is not a finite number", what, s);
+  double v;
+  nl_number_kind k = nl_number_read(s, &v);
+  if (k != NL_NUMBER_OK) return nl_fail(err, NL_EINVAL, "%s: '%s' %s", what, s, nl_number_problem(k));
   if (v < lo || v > hi)
     return nl_fail(err, NL_EINVAL, "%s: %s is outside [%g, %g]", what, s, lo, hi);
   *out = v;

@@ -160,8 +160,26 @@ const char *nl_format_bytes(char *buf, double bytes);
 /* Joins dir and name with one '/'. Caller frees. */
 char *nl_path_join(const char *dir, const char *name);
 
+/* How a decimal number in text reads: the one number reader of tables
+ * (nl_table_read) and options (nl_parse_double). The whole string is the
+ * number; leading blanks are skipped (strtod). */
+typedef enum {
+  NL_NUMBER_OK,          /* a finite double, subnormals (1e-310) included */
+  NL_NUMBER_NONE,        /* not a number */
+  NL_NUMBER_NONFINITE,   /* nan, inf, infinity */
+  NL_NUMBER_OVERFLOW,    /* beyond the double range: 1e999 (a commit id: 7395e8327457) */
+  NL_NUMBER_UNDERFLOW,   /* not zero, but nearer 0 than the least subnormal: 1e-400 */
+  NL_NUMBER_HEX          /* hexadecimal (0x10, 0x1p-3): a cell or option is decimal */
+} nl_number_kind;
+/* *v is set for NL_NUMBER_OK (and holds strtod's value otherwise). */
+nl_number_kind nl_number_read(const char *s, double *v);
+/* "underflows to 0 (nearer 0 than 4.9e-324)", ... : what is wrong with a
+ * kind other than NL_NUMBER_OK, for a message "'S' <problem>". */
+const char *nl_number_problem(nl_number_kind k);
+
 /* Parse a whole string as a finite number within [lo, hi]; `what` names the
- * argument in the message ("--octaves: 'x' is not a number"). */
+ * argument in the message ("--octaves: 'x' is not a number"). Subnormals
+ * are numbers; a value that underflows to 0 is refused (nl_number_read). */
 nl_status nl_parse_double(const char *what, const char *s, double lo, double hi,
                           double *out, nl_error *err);
 nl_status nl_parse_long(const char *what, const char *s, long lo, long hi,

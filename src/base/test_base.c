@@ -475,7 +475,16 @@ NL_TEST(range_checked_parsing)
   NL_CHECK(nl_parse_double("--x", "x", 0, 1, &v, &err) == NL_EINVAL && strstr(err.msg, "'x'"));
   NL_CHECK(nl_parse_double("--x", "0.5 ", 0, 1, &v, &err) == NL_EINVAL);
   NL_CHECK(nl_parse_double("--x", "", 0, 1, &v, &err) == NL_EINVAL);
+  /* one reader with tables: a value that underflows to 0 or is hexadecimal
+   * is refused; a subnormal is finite and only the range decides */
+  NL_CHECK(nl_parse_double("--x", "1e-400", -1, 1, &v, &err) == NL_EINVAL && strstr(err.msg, "'1e-400' underflows to 0"));
+  NL_CHECK(nl_parse_double("--x", "0x10", 0, 100, &v, &err) == NL_EINVAL && strstr(err.msg, "'0x10' is hexadecimal"));
+  NL_CHECK(nl_parse_double("--x", "1e999", -INFINITY, INFINITY, &v, &err) == NL_EINVAL && strstr(err.msg, "beyond the double range"));
   NL_CHECK(v == 7);
+  NL_CHECK(nl_parse_double("--shape", "1e-308", -1e300, 1e300, &v, &err) == NL_OK && v == 1e-308);
+  NL_CHECK(nl_parse_double("--x", "4.9406564584124654e-324", 0, 1, &v, &err) == NL_OK && v > 0);
+  NL_CHECK(nl_parse_double("--x", "1e-310", 1e-300, 1, &v, &err) == NL_EINVAL && strstr(err.msg, "outside"));
+  NL_CHECK(nl_parse_double("--x", "0e-999", 0, 1, &v, &err) == NL_OK && v == 0);
 }
 
 /* nl_parallel_for: every item once, per-item streams, so the output bytes do

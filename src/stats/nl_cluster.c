@@ -117,8 +117,10 @@ double nl_cluster_sumsq(const double *a, size_t d)
 typedef struct { double dist; size_t order; } merge_key;
 
 /* The metrics other than Euclidean, as scipy.spatial.distance.pdist
- * computes them (scipy/spatial/src/distance_impl.h): cosine and correlation
- * clip the cosine to [-1, 1]; canberra skips 0/0 terms. */
+ * computes them (scipy/spatial/src/distance_impl.h and distance_metrics.h):
+ * sums in index order; cosine and correlation clip the cosine to [-1, 1];
+ * canberra counts a 0/0 term as 0. Cosine and correlation take the rows
+ * prepare_rows made (centred for correlation, scaled by a power of two). */
 static double metric_dist(nl_cluster_metric m, const double *a, const double *b, size_t d)
 {
   double s = 0.0, t = 0.0, u = 0.0;
@@ -142,20 +144,13 @@ static double metric_dist(nl_cluster_metric m, const double *a, const double *b,
       s += fabs(a[j] - b[j]);
       t += fabs(a[j] + b[j]);
     }
-    return s / t;
+    return s / t;   /* t = 0 only for b = -a: refused before (check_ratio_metric) */
   case NL_METRIC_COSINE:
   case NL_METRIC_CORRELATION: {
-    double ma = 0.0, mb = 0.0;
-    if (m == NL_METRIC_CORRELATION) {
-      for (size_t j = 0; j < d; j++) { ma += a[j]; mb += b[j]; }
-      ma /= (double)d;
-      mb /= (double)d;
-    }
     for (size_t j = 0; j < d; j++) {
-      double p = a[j] - ma, q = b[j] - mb;
-      s += p * q;
-      t += p * p;
-      u += q * q;
+      s += a[j] * b[j];
+      t += a[j] * a[j];
+      u += b[j] * b[j];
     }
     double c = s / (sqrt(t) * sqrt(u));
     if (fabs(c) > 1.0) c = copysign(1.0, c);
@@ -163,6 +158,136 @@ static double metric_dist(nl_cluster_metric m, const double *a, const double *b,
   }
   }
   return NAN;
+}
+
+/* numpy's pairwise sum of n doubles (numpy/core/src/umath/loops_utils.h,
+ * pairwise_sum_DOUBLE): what X.mean(axis=1) adds in scipy's correlation, so
+ * that the centred rows have scipy's bits. */
+static double numpy_sum(const double *a, size_t n)
+{
+  if (n < 8) {
+    double r = 0.0;
+    for (size_t i = 0; i < n; i++) r += a[i];
+    return r;
+  }
+  if (n <= 128) {
+    double r[8];
+    size_t i;
+    for (int k = 0; k < 8; k++) r[k] = a[k];
+    for (i = 8; i < n - n % 8; i += 8)
+      for (int k = 0; k < 8; k++) r[k] += a[i + (size_t)k];
+    double res = ((r[0] + r[1]) + (r[2] + r[3])) + ((r[4] + r[5]) + (r[6] + r[7]));
+    for (; i < n; i++) res += a[i];
+    return res;
+  }
+  size_t n2 = n / 2;
+  n2 -= n2 % 8;
+  return numpy_sum(a, n2) + numpy_sum(a + n2, n - n2);
+}
+
+/* Below this span (about 2e-121) the squares of the smaller distances
+ * between the points fall under DBL_MIN and lose digits, and below about
+ * 1e-154 underflow to 0 (scipy's heights are then all 0). */
+enum { TINY_SPAN_EXP = -400 };
+
+/* The points as the metric works on them, or NULL when that is x itself.
+ * Cosine and correlation: the rows (correlation's centred on their mean,
+ * scipy's X - X.mean(axis=1)), each scaled by the power of two that brings
+ * its largest magnitude into [0.5, 1). Cosine is the same for any positive
+ * scale of either row, and a power of two scales every product, sum and
+ * square root exactly, so the distances have scipy's bits wherever scipy's
+ * squares neither underflow nor overflow; where they would (coordinates
+ * below about 1e-154: scipy gives 0/0, or 1 - 1 = 0 for every pair) they
+ * stay the rows' cosine distance. A zero row stays zero: its distances are
+ * 0/0, refused before (check_ratio_metric).
+ * Euclidean and sqeuclidean: when the points span less than 2^TINY_SPAN_EXP,
+ * all of them scaled by one power of two 2^-e that brings the span into
+ * [0.5, 1); *shift = e (2e for sqeuclidean's squares) is what the heights
+ * are scaled back by (unscale_heights), exactly as well. */
+static double *prepare_rows(const double *x, size_t n, size_t d, nl_cluster_metric metric, double span,
+                            int *shift)
+{
+  *shift = 0;
+  if (metric == NL_METRIC_EUCLIDEAN || metric == NL_METRIC_SQEUCLIDEAN) {
+    int e = 0;
+    if (!(span > 0.0)) return NULL;
+    frexp(span, &e);
+    if (e >= TINY_SPAN_EXP) return NULL;
+    double *y = nl_xmalloc(n * d * sizeof *y);
+    for (size_t i = 0; i < n * d; i++) y[i] = ldexp(x[i], -e);
+    *shift = metric == NL_METRIC_SQEUCLIDEAN ? 2 * e : e;
+    return y;
+  }
+  if (metric != NL_METRIC_COSINE && metric != NL_METRIC_CORRELATION) return NULL;
+  double *y = nl_xmalloc(n * d * sizeof *y);
+  for (size_t i = 0; i < n; i++) {
+    const double *a = x + i * d;
+    double *r = y + i * d, mean = 0.0, big = 0.0;
+    if (metric == NL_METRIC_CORRELATION) mean = numpy_sum(a, d) / (double)d;
+    for (size_t j = 0; j < d; j++) {
+      r[j] = a[j] - mean;
+      big = fmax(big, fabs(r[j]));
+    }
+    int e = 0;
+    if (big > 0.0) frexp(big, &e);
+    for (size_t j = 0; j < d; j++) r[j] = ldexp(r[j], -e);
+  }
+  return y;
+}
+
+static void unscale_heights(double *Z, size_t n, int shift)
+{
+  if (shift)
+    for (size_t i = 0; i + 1 < n; i++) Z[4 * i + 2] = ldexp(Z[4 * i + 2], shift);
+}
+
+/* The pairs whose cosine, correlation or Bray-Curtis distance is 0/0 or
+ * x/0, which scipy's linkage refuses ("The condensed distance matrix must
+ * contain only finite values"): a zero row (cosine), a constant row
+ * (correlation: its centred row is zero; also when rounding leaves the mean
+ * a few ulp off and scipy returns a distance made of that rounding error),
+ * and a row that is the negative of another (Bray-Curtis: sum |u + v| = 0;
+ * a zero row alone is at distance 1 from every nonzero one). The first such
+ * pair in pdist's order is named. */
+static nl_status check_ratio_metric(const double *x, size_t n, size_t d, nl_cluster_metric metric,
+                                    nl_error *err)
+{
+  const char *name = metric_names[metric];
+  if (metric == NL_METRIC_COSINE || metric == NL_METRIC_CORRELATION) {
+    for (size_t i = 0; i < n; i++) {
+      const double *a = x + i * d;
+      size_t j = 1;
+      if (metric == NL_METRIC_COSINE) while (j <= d && a[j - 1] == 0.0) j++;
+      else while (j < d && a[j] == a[0]) j++;
+      if (j <= d && (metric == NL_METRIC_COSINE || j < d)) continue;
+      size_t p = i ? 0 : 1, q = i;   /* the first pair holding row i */
+      return nl_fail(err, NL_EINVAL, "points %zu and %zu: the %s distance is 0/0 (point %zu is %s); "
+                     "scipy's linkage refuses it too", (p < q ? p : q) + 1, (p < q ? q : p) + 1, name,
+                     i + 1, metric == NL_METRIC_COSINE ? "zero" : "constant");
+    }
+  } else if (metric == NL_METRIC_BRAYCURTIS) {
+    for (size_t i = 0; i + 1 < n; i++)
+      for (size_t j = i + 1; j < n; j++) {
+        size_t k = 0;
+        while (k < d && x[i * d + k] == -x[j * d + k]) k++;
+        if (k < d) continue;
+        int zero = 1;
+        for (k = 0; k < d; k++) zero &= x[i * d + k] == 0.0;
+        return nl_fail(err, NL_EINVAL, "points %zu and %zu: the braycurtis distance is %s "
+                       "(sum |u + v| = 0: %s); scipy's linkage refuses it too", i + 1, j + 1,
+                       zero ? "0/0" : "x/0", zero ? "both are zero" : "one is the negative of the other");
+      }
+  }
+  return NL_OK;
+}
+
+/* A distance that is not finite though the checks above passed: refused
+ * rather than handed to a linkage whose comparisons assume an order. */
+static nl_status not_finite(nl_cluster_metric metric, size_t i, size_t j, double v, nl_error *err)
+{
+  if (i > j) { size_t t = i; i = j; j = t; }
+  return nl_fail(err, NL_EINVAL, "points %zu and %zu: the %s distance is %g, not finite", i + 1, j + 1,
+                 metric_names[metric], v);
 }
 
 static int cmp_key(const void *pa, const void *pb)
@@ -206,7 +331,8 @@ static void sort_and_label(double *Z, size_t n)
 
 /* ---- single linkage: Prim's MST -------------------------------------------- */
 
-static void linkage_single(const double *x, size_t n, size_t d, nl_cluster_metric metric, double *Z)
+static nl_status linkage_single(const double *x, size_t n, size_t d, nl_cluster_metric metric,
+                                double *Z, nl_error *err)
 {
   double *dmin = nl_xmalloc(n * sizeof(double));
   unsigned char *merged = nl_xcalloc(n, 1);
@@ -219,6 +345,11 @@ static void linkage_single(const double *x, size_t n, size_t d, nl_cluster_metri
     for (size_t i = 0; i < n; i++) {
       if (merged[i]) continue;
       double dist = metric_dist(metric, x + cur * d, x + i * d, d);
+      if (!isfinite(dist)) {
+        free(dmin);
+        free(merged);
+        return not_finite(metric, cur, i, dist, err);
+      }
       if (dist < dmin[i]) dmin[i] = dist;
       if (dmin[i] < best || y == cur) { best = dmin[i]; y = i; }
     }
@@ -229,6 +360,7 @@ static void linkage_single(const double *x, size_t n, size_t d, nl_cluster_metri
   }
   free(dmin);
   free(merged);
+  return NL_OK;
 }
 
 /* ---- complete / average / ward: nearest-neighbour chain ----------------------------- */
@@ -451,7 +583,7 @@ static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method meth
       if (i == y) continue;
       double dx = D[cidx(n, i, x)], dy = D[cidx(n, i, y)];
       double v;
-      /* complete: max(dx, dy) (no NaN: the points are finite) */
+      /* complete: max(dx, dy) (no NaN: every distance was checked finite) */
       if (method == NL_LINKAGE_COMPLETE) v = dx > dy ? dx : dy;
       else if (method == NL_LINKAGE_AVERAGE) v = (nx * dx + ny * dy) / (nx + ny);
       else if (method == NL_LINKAGE_WEIGHTED) v = 0.5 * (dx + dy);   /* WPGMA, scipy's _weighted */
@@ -482,7 +614,7 @@ static void linkage_nn_chain(double *D, size_t n, nl_cluster_linkage_method meth
 /* The condensed matrix of another metric, with the column lists filled in
  * the order condensed_distances fills them (rows increasing per column). */
 static double *condensed_metric(const double *x, size_t n, size_t d, nl_cluster_metric metric,
-                                col_top *cm)
+                                col_top *cm, nl_status *st, nl_error *err)
 {
   double *D = condensed_alloc(n * (n - 1) / 2);
   if (!D) return NULL;
@@ -490,6 +622,10 @@ static double *condensed_metric(const double *x, size_t n, size_t d, nl_cluster_
   for (size_t i = 0; i + 1 < n; i++)
     for (size_t j = i + 1; j < n; j++) {
       double v = metric_dist(metric, x + i * d, x + j * d, d);
+      if (!isfinite(v)) {
+        *st = not_finite(metric, i, j, v, err);
+        return D;
+      }
       D[cidx(n, i, j)] = v;
       col_offer(&cm[j], v, i);
     }
@@ -635,7 +771,7 @@ static void linkage_generic(double *D, size_t n, nl_cluster_linkage_method metho
  * keep the subtraction finite for coordinates near +-DBL_MAX, and hypot
  * keeps the sum of their squares from overflowing before the comparison, so
  * the message gives the real span. */
-static nl_status check_span(const double *x, size_t n, size_t d, nl_error *err)
+static nl_status check_span(const double *x, size_t n, size_t d, double *span_out, nl_error *err)
 {
   double half_span = 0.0;
   for (size_t j = 0; j < d; j++) {
@@ -647,6 +783,7 @@ static nl_status check_span(const double *x, size_t n, size_t d, nl_error *err)
     half_span = hypot(half_span, hi / 2 - lo / 2);
   }
   double span = 2 * half_span;
+  *span_out = span;
   if (span <= NL_CLUSTER_MAX_SPAN) return NL_OK;
   return nl_fail(err, NL_EINVAL, "the points span a distance of %.3g; distances above %g overflow "
                  "in the linkage: rescale the data", span, NL_CLUSTER_MAX_SPAN);
@@ -673,35 +810,38 @@ nl_status nl_cluster_linkage_metric(const double *x, size_t n, size_t d,
   for (size_t i = 0; i < n * d; i++)
     if (!isfinite(x[i]))
       return nl_fail(err, NL_EINVAL, "point %zu, coordinate %zu is not finite", i / d + 1, i % d + 1);
-  nl_status s = check_span(x, n, d, err);
+  double span;
+  nl_status s = check_span(x, n, d, &span, err);
   if (s) return s;
-  int ratio = metric == NL_METRIC_COSINE || metric == NL_METRIC_CORRELATION
-              || metric == NL_METRIC_BRAYCURTIS;
-  if (ratio)
-    for (size_t i = 0; i < n; i++) {   /* the distances these metrics cannot give (0/0) */
-      double lo = x[i * d], hi = lo, sum = 0.0;
-      for (size_t j = 0; j < d; j++) {
-        lo = fmin(lo, x[i * d + j]);
-        hi = fmax(hi, x[i * d + j]);
-        sum += fabs(x[i * d + j]);
-      }
-      if (metric == NL_METRIC_CORRELATION ? lo == hi : sum == 0.0)
-        return nl_fail(err, NL_EINVAL, "point %zu is %s: its %s distance is 0/0", i + 1,
-                       metric == NL_METRIC_CORRELATION ? "constant" : "zero", metric_names[metric]);
-    }
+  s = check_ratio_metric(x, n, d, metric, err);
+  if (s) return s;
+  /* Euclidean distances need no check: the span bounds them (check_span). */
+  int shift = 0;
+  double *prep = prepare_rows(x, n, d, metric, span, &shift);
+  const double *px = prep ? prep : x;
   if (method == NL_LINKAGE_SINGLE) {
-    linkage_single(x, n, d, metric, Z);
+    s = linkage_single(px, n, d, metric, Z, err);
+    free(prep);
+    if (s) return s;
   } else {
     /* Checked before trying: malloc may grant what the machine cannot hold
      * (overcommit), and the O(n^2) fill would run for minutes first. */
     double need = (double)n * (double)(n - 1) / 2 * sizeof(double);
     char b1[32], b2[32];
-    if (!nl_mem_fits(need))
+    if (!nl_mem_fits(need)) {
+      free(prep);
       return nl_fail(err, NL_ENOMEM, "%zu rows need %s for the distance matrix; this machine has %s",
                      n, nl_format_bytes(b1, need), nl_format_bytes(b2, nl_mem_physical()));
+    }
     col_top *cm = nl_xmalloc(n * sizeof *cm);
-    double *D = metric == NL_METRIC_EUCLIDEAN ? condensed_distances(x, n, d, cm)
-                                              : condensed_metric(x, n, d, metric, cm);
+    double *D = metric == NL_METRIC_EUCLIDEAN ? condensed_distances(px, n, d, cm)
+                                              : condensed_metric(px, n, d, metric, cm, &s, err);
+    free(prep);
+    if (s) {
+      free(D);
+      free(cm);
+      return s;
+    }
     if (!D) {
       free(cm);
       return nl_fail(err, NL_ENOMEM, "%zu rows need %s for the distance matrix; allocating it failed",
@@ -711,6 +851,7 @@ nl_status nl_cluster_linkage_metric(const double *x, size_t n, size_t d,
       linkage_generic(D, n, method, Z);
       free(D);
       free(cm);
+      unscale_heights(Z, n, shift);
       return NL_OK;   /* scipy's order and numbers already; no sorting (inversions) */
     }
     linkage_nn_chain(D, n, method, cm, Z);
@@ -718,6 +859,7 @@ nl_status nl_cluster_linkage_metric(const double *x, size_t n, size_t d,
     free(cm);
   }
   sort_and_label(Z, n);
+  unscale_heights(Z, n, shift);
   return NL_OK;
 }
 

@@ -109,8 +109,12 @@ nl_status nl_cluster_linkage(const double *x, size_t n, size_t d, nl_cluster_lin
                              double *Z, nl_error *err);
 /* As nl_cluster_linkage with another metric: scipy.cluster.hierarchy.linkage(x,
  * method, metric). Ward, centroid and median need Euclidean (NL_EINVAL
- * otherwise, as scipy); cosine, correlation and braycurtis refuse a row
- * whose distance would be 0/0 (a zero or constant row). */
+ * otherwise, as scipy). NL_EINVAL, the first such pair named, where a
+ * distance is not finite and scipy's linkage refuses: cosine with a zero row,
+ * correlation with a constant row, Bray-Curtis of u and -u (or of two zero
+ * rows). Coordinates too small to square (1e-200) give the true heights:
+ * cosine and correlation rows, and Euclidean points spanning under 2^-400,
+ * are scaled by powers of two first (exact; scipy's bits elsewhere). */
 nl_status nl_cluster_linkage_metric(const double *x, size_t n, size_t d,
                                     nl_cluster_linkage_method method, nl_cluster_metric metric,
                                     double *Z, nl_error *err);

@@ -2,6 +2,7 @@
  * sklearn/mixture/_gaussian_mixture.py, on level-3 BLAS). */
 #define _GNU_SOURCE   /* RTLD_DEFAULT */
 #include "stats/nl_gmm.h"
+#include "stats/nl_stats_gsl.h"
 #include "stats/nl_cluster.h"
 #include "base/nl_parallel.h"
 
@@ -381,7 +382,7 @@ static void scatter_full(const double *x, size_t n, size_t d, const double *R, s
 
 /* Cholesky of covariance k into g->chol (and its inverse into g->prec);
  * 1 on failure. GSL's default error handler aborts, so it is off for the
- * M-step (handler_off). */
+ * M-step (nl_stats_gsl_quiet_begin). */
 static int factorize_one(nl_gmm *g, size_t k)
 {
   size_t d = g->d, cs = cov_size(g);
@@ -404,27 +405,6 @@ static int factorize_one(nl_gmm *g, size_t k)
   }
   for (size_t j = 0; j < cs && !bad; j++) bad = !isfinite(c[j]);
   return bad;
-}
-
-/* GSL's error handler is one process-wide variable, and fits may run on
- * several threads at once (a caller's nl_parallel_for over fits): the first
- * to need it off turns it off, the last restores it. */
-static pthread_mutex_t handler_lock = PTHREAD_MUTEX_INITIALIZER;
-static int handler_users;
-static gsl_error_handler_t *handler_saved;
-
-static void handler_off(void)
-{
-  pthread_mutex_lock(&handler_lock);
-  if (handler_users++ == 0) handler_saved = gsl_set_error_handler_off();
-  pthread_mutex_unlock(&handler_lock);
-}
-
-static void handler_restore(void)
-{
-  pthread_mutex_lock(&handler_lock);
-  if (--handler_users == 0) gsl_set_error_handler(handler_saved);
-  pthread_mutex_unlock(&handler_lock);
 }
 
 /* The M-step's items: component k's covariance from its responsibilities
@@ -515,10 +495,10 @@ static nl_status m_step(nl_gmm *g, const double *x, size_t n, const double *R, d
   gsl_matrix_view M = gsl_matrix_view_array(g->means, K, d);
   gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, &Rv.matrix, &Xv.matrix, 0.0, &M.matrix);
   mstep_job j = {g, x, n, R, reg, w};
-  handler_off();
+  nl_stats_gsl_quiet_begin();
   nl_parallel_for(K, w->threads, mstep_item, &j);
   if (g->covariance == NL_GMM_TIED) pool_tied(g, reg, w);
-  handler_restore();
+  nl_stats_gsl_quiet_end();
   for (size_t k = 0; k < K; k++) total += g->weights[k];
   for (size_t k = 0; k < K; k++) g->weights[k] /= normalise ? total : (double)n;
   for (size_t k = 0; k < K; k++)

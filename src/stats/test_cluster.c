@@ -274,4 +274,87 @@ NL_TEST(linkage_refuses_what_the_machine_cannot_hold)
   free(x); free(Z);
 }
 
+/* Every metric with single, complete, average and weighted linkage against
+ * scipy.cluster.hierarchy.linkage(X, method, metric) on 14 points with
+ * negative coordinates (hclust_metrics_*.tsv), and the same points times
+ * 2^-664 (1.05e-200, an exact scaling): the scale-free metrics (cosine,
+ * correlation, canberra, braycurtis) must give scipy's heights there too
+ * (scipy itself gives 0/0 for cosine and correlation, and 0 for every
+ * Euclidean height: its squares underflow), the others scipy's heights
+ * times 2^-664 (sqeuclidean's 1e-400 underflows: skipped).
+ * Tolerance: a, b and size exact; heights 1e-12 relative (measured: 0). */
+NL_TEST(metrics_match_scipy_at_any_scale)
+{
+  size_t n, d;
+  double *x = vec_matrix("hclust_metrics_X.tsv", &n, &d), *xs = nl_xmalloc(n * d * sizeof *xs);
+  double *Z = nl_xmalloc((n - 1) * 4 * sizeof *Z), worst[2] = {0, 0};
+  for (size_t i = 0; i < n * d; i++) xs[i] = ldexp(x[i], -664);
+  nl_table *t = vec_read("hclust_metrics_Z.tsv");
+  NL_CHECK(t->nrows == 32 * (n - 1));
+  for (size_t c = 0; c < 32; c++) {
+    nl_cluster_linkage_method lm;
+    nl_cluster_metric mt;
+    size_t r0 = c * (n - 1);
+    NL_CHECK(nl_cluster_linkage_method_parse(vec_text(t, r0, "method"), &lm, NULL) == NL_OK);
+    NL_CHECK(nl_cluster_metric_parse(vec_text(t, r0, "metric"), &mt, NULL) == NL_OK);
+    int scale_free = mt == NL_METRIC_COSINE || mt == NL_METRIC_CORRELATION
+                     || mt == NL_METRIC_CANBERRA || mt == NL_METRIC_BRAYCURTIS;
+    for (int pass = 0; pass < 2; pass++) {
+      if (pass == 1 && mt == NL_METRIC_SQEUCLIDEAN) continue;
+      nl_error err = {{0}};
+      nl_status st = nl_cluster_linkage_metric(pass ? xs : x, n, d, lm, mt, Z, &err);
+      if (st) fprintf(stderr, "  %s %s x%s: %s\n", vec_text(t, r0, "method"), vec_text(t, r0, "metric"),
+                      pass ? "1e-200" : "1", err.msg);
+      NL_CHECK(st == NL_OK);
+      if (st) continue;
+      int bad = 0;
+      for (size_t i = 0; i + 1 < n; i++) {
+        double want = vec_get(t, r0 + i, "dist"), got = Z[4 * i + 2];
+        if (pass && !scale_free) got = ldexp(got, 664);
+        double rel = fabs(got - want) / fabs(want);
+        worst[pass] = fmax(worst[pass], rel);
+        bad += Z[4 * i] != vec_get(t, r0 + i, "a") || Z[4 * i + 1] != vec_get(t, r0 + i, "b");
+        bad += Z[4 * i + 3] != vec_get(t, r0 + i, "size") || !(rel <= 1e-12);
+      }
+      if (bad) fprintf(stderr, "  %s %s x%s: %d mismatches\n", vec_text(t, r0, "method"),
+                       vec_text(t, r0, "metric"), pass ? "1e-200" : "1", bad);
+      NL_CHECK(bad == 0);
+    }
+  }
+  if (getenv("NL_TEST_VERBOSE"))
+    fprintf(stderr, "  worst relative height error: %.2g at scale 1, %.2g at 1e-200\n", worst[0], worst[1]);
+  nl_table_free(t);
+  free(x); free(xs); free(Z);
+}
+
+/* Where scipy's distances are not finite its linkage refuses ("The condensed
+ * distance matrix must contain only finite values"): every linkage refuses
+ * with the pair named, and never reaches the chain with a NaN (complete,
+ * average and weighted then corrupted the heap). Where scipy's are finite,
+ * they are given: a zero row is at Bray-Curtis distance 1 from any other
+ * (scipy: linkage([[0,0],[1,2],[3,1]], 'average', 'braycurtis') merges 1
+ * and 2 at 3/7, then 0 at 1). */
+NL_TEST(metrics_refuse_where_scipy_does)
+{
+  struct { double x[6]; nl_cluster_metric m; const char *want; } bad[] = {
+    {{1, 2, -1, -2, 3, 1}, NL_METRIC_BRAYCURTIS, "points 1 and 2: the braycurtis distance is x/0"},
+    {{3, 1, 0, 0, -0.0, 0}, NL_METRIC_BRAYCURTIS, "points 2 and 3: the braycurtis distance is 0/0"},
+    {{1, 2, 0, 0, 3, 1}, NL_METRIC_COSINE, "points 1 and 2: the cosine distance is 0/0 (point 2 is zero)"},
+    {{1, 2, 3, 1, 0, 0}, NL_METRIC_COSINE, "points 1 and 3: the cosine distance is 0/0 (point 3 is zero)"},
+    {{0.1, 0.1, 1, 2, 3, 1}, NL_METRIC_CORRELATION, "points 1 and 2: the correlation distance is 0/0 (point 1 is constant)"},
+  };
+  double Z[8];
+  for (size_t c = 0; c < sizeof bad / sizeof bad[0]; c++)
+    for (int m = 0; m < 5; m++) {
+      if (m == NL_LINKAGE_WARD) continue;
+      nl_error err = {{0}};
+      NL_CHECK(nl_cluster_linkage_metric(bad[c].x, 3, 2, (nl_cluster_linkage_method)m, bad[c].m, Z, &err) == NL_EINVAL);
+      if (!strstr(err.msg, bad[c].want)) fprintf(stderr, "  case %zu: %s\n", c, err.msg);
+      NL_CHECK(strstr(err.msg, bad[c].want) != NULL);
+    }
+  double zero[] = {0, 0, 1, 2, 3, 1};
+  NL_CHECK(nl_cluster_linkage_metric(zero, 3, 2, NL_LINKAGE_AVERAGE, NL_METRIC_BRAYCURTIS, Z, NULL) == NL_OK);
+  NL_CHECK(Z[0] == 1 && Z[1] == 2 && Z[2] == 3.0 / 7.0 && Z[4] == 0 && Z[5] == 3 && Z[6] == 1.0);
+}
+
 int main(void) { return nl_test_run(); }

@@ -220,21 +220,17 @@ static size_t split(char *line, int ws, char **f, size_t max)
   return n;
 }
 
-/* 1 = finite number, 0 = not a number, -1 = NaN or infinite, -2 = a number
- * beyond the double range ("1e999", and a commit id like 7395e8327457). */
-static int parse_num(const char *s, double *v)
+/* A cell as a number (nl_number_read), trailing spaces allowed (CSV's
+ * "1.5 , 2"): they are cut for the read and put back. */
+static nl_number_kind cell_number(char *cell, double *v)
 {
-  if (!*s) return 0;
-  char *end;
-  errno = 0;
-  *v = strtod(s, &end);
-  if (end == s) return 0;
-  int range = errno == ERANGE;
-  while (*end == ' ') end++;
-  if (*end) return 0;
-  if (isinf(*v) && range) return -2;
-  if (!isfinite(*v)) return -1;
-  return 1;
+  size_t n = strlen(cell);
+  while (n > 0 && cell[n - 1] == ' ') n--;
+  char saved = cell[n];
+  cell[n] = '\0';
+  nl_number_kind k = n ? nl_number_read(cell, v) : NL_NUMBER_NONE;
+  cell[n] = saved;
+  return k;
 }
 
 static void chomp(char *line)
@@ -325,7 +321,7 @@ static nl_status read_rows(FILE *fp, const char *path, int flags, nl_table **out
          * else, instead of quietly becoming a header and dropping a row. */
         header = 0;
         double v;
-        for (size_t c = 0; c < n; c++) if (parse_num(f[c], &v) == 0) header = 1;
+        for (size_t c = 0; c < n; c++) if (cell_number(f[c], &v) == NL_NUMBER_NONE) header = 1;
       }
       char **names = nl_xcalloc(n, sizeof *names);
       char num[32];
@@ -353,12 +349,19 @@ static nl_status read_rows(FILE *fp, const char *path, int flags, nl_table **out
     size_t r = grow(t);
     for (size_t c = 0; c < n; c++) {
       double v;
-      int k = parse_num(f[c], &v);
-      if (k == 1) t->num[r * t->ncols + c] = v;
-      else if (k == -1 || (k == -2 && !(flags & NL_TABLE_TEXT))) {
+      nl_number_kind k = cell_number(f[c], &v);
+      /* Text tables keep what only looks numeric as text: a commit id
+       * (7395e8327457 overflows) or a hexadecimal label. */
+      int text = (flags & NL_TABLE_TEXT) && (k == NL_NUMBER_NONE || k == NL_NUMBER_OVERFLOW || k == NL_NUMBER_HEX);
+      if (k == NL_NUMBER_OK) t->num[r * t->ncols + c] = v;
+      else if (k == NL_NUMBER_NONFINITE) {
         s = nl_fail(err, NL_EFORMAT, "%s:%zu: column '%s' holds '%s' (NaN or infinite)", path, lineno, t->names[c], f[c]);
         break;
-      } else if (flags & NL_TABLE_TEXT) t->text[r * t->ncols + c] = nl_xstrdup(f[c]);
+      } else if (!text && k != NL_NUMBER_NONE) {
+        s = nl_fail(err, NL_EFORMAT, "%s:%zu: column '%s' holds '%s', which %s", path, lineno, t->names[c], f[c],
+                    nl_number_problem(k));
+        break;
+      } else if (text) t->text[r * t->ncols + c] = nl_xstrdup(f[c]);
       else {
         s = nl_fail(err, NL_EFORMAT, "%s:%zu: column '%s' holds '%s', not a number%s", path, lineno, t->names[c], f[c],
                     ws != 2 && strchr(f[c], ',') ? " (commas: a CSV file? it is read as tab/blank-separated here)" : "");

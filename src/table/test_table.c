@@ -58,7 +58,34 @@ NL_TEST(rejects_bad_input_with_line)
   NL_CHECK(read_fails_with("a\tb\n1\t2\n3\tx\n", "bad.tsv:3: column 'b' holds 'x'", 0));
   NL_CHECK(read_fails_with("a\tb\n1\tnan\n", "bad.tsv:2: column 'b' holds 'nan' (NaN", 0));
   NL_CHECK(read_fails_with("a\tb\ninf\t1\n", "(NaN or infinite)", NL_TABLE_TEXT));
-  NL_CHECK(read_fails_with("a\tb\n1e999\t1\n", "holds '1e999' (NaN or infinite)", 0));
+  NL_CHECK(read_fails_with("a\tb\n1e999\t1\n", "bad.tsv:2: column 'a' holds '1e999', which is beyond the double range", 0));
+}
+
+/* A cell is a decimal number: one that underflows to 0 (1e-400, which
+ * strtod and numpy read as 0.0) is refused, as is hexadecimal (0x10 read as
+ * 16, 0x1p-2 as 0.25), with its line and column; a subnormal (1e-310) is a
+ * number, kept to the bit. The same reader takes options (nl_parse_double). */
+NL_TEST(underflow_and_hex_refused_subnormals_kept)
+{
+  NL_CHECK(read_fails_with("a\tb\n1\t2\n3\t1e-400\n", "bad.tsv:3: column 'b' holds '1e-400', which underflows to 0", 0));
+  NL_CHECK(read_fails_with("a\tb\n1\t-2e-324\n", "bad.tsv:2: column 'b' holds '-2e-324', which underflows to 0", NL_TABLE_TEXT));
+  NL_CHECK(read_fails_with("a\tb\n0x10\t2\n", "bad.tsv:2: column 'a' holds '0x10', which is hexadecimal", 0));
+  NL_CHECK(read_fails_with("0x1p-2 1\n", "bad.tsv:1: column 'c1' holds '0x1p-2', which is hexadecimal", NL_TABLE_WHITESPACE | NL_TABLE_HEADER_AUTO));
+  char *p = write_file("small.tsv", "a\tb\n1e-310\t0e-400\n4.9406564584124654e-324 \t-0\n");
+  nl_table *t = NULL;
+  nl_error err;
+  NL_CHECK(nl_table_read(p, 0, &t, &err) == NL_OK);
+  NL_CHECK(t && t->nrows == 2 && nl_table_get(t, 0, 0) == 1e-310 && nl_table_get(t, 0, 1) == 0.0);
+  NL_CHECK(t && nl_table_get(t, 1, 0) == 4.9406564584124654e-324 && nl_table_get(t, 1, 1) == 0.0);
+  nl_table_free(t);
+  free(p);
+  /* in a text table a hexadecimal word is text, like a commit id */
+  p = write_file("labels.tsv", "name\tv\n0x1f\t1\n");
+  t = NULL;
+  NL_CHECK(nl_table_read(p, NL_TABLE_TEXT, &t, &err) == NL_OK);
+  NL_CHECK(t && t->nrows == 1 && t->text[0] && !strcmp(t->text[0], "0x1f"));
+  nl_table_free(t);
+  free(p);
 }
 
 /* A word that reads as a number beyond the double range is text where text

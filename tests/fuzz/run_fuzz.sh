@@ -20,9 +20,11 @@
 # Fork mode (-fork=1: one child process at a time, each fuzzing for a few
 # seconds to minutes) keeps going past a finding and counts it; the run
 # fails if it counted any. Reached with these limits on 2 cores shared with
-# other work, no finding: fuzz_stats 10^6 executions in 419 s (2,386 per
-# second); fuzz_image 1,093,407 in four fork-mode runs (74,392 + 266,540 +
-# 612,363 + 140,112; about 250 per second: OpenImageIO tries every format on a
+# other work, no finding: fuzz_stats (every linkage x metric, every stat
+# option) 10^6 executions in 227 s (4,405 per second); fuzz_table 10^6 in
+# 69 s, fuzz_options 10^6 in 25 s, fuzz_params 10^6 in 68 s; fuzz_image
+# 1,093,407 in four fork-mode runs (74,392 + 266,540 + 612,363 + 140,112;
+# about 250 per second: OpenImageIO tries every format on a
 # damaged file, decodes up to NL_IMAGE_MAX_EXPANSION times the input's
 # 8 KB, and each input's new allocations are checked for leaks).
 set -euo pipefail

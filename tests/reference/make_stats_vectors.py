@@ -204,6 +204,23 @@ def make_linkage():
         write(f"hclust_{method}_labels.tsv", cols, np.array(labels).T.tolist())
 
 
+
+def make_linkage_metrics():
+    """Every pdist metric with single, complete, average and weighted linkage
+    on 14 points in 3-D with negative coordinates (standard normal), to be
+    compared with the same points times 1e-200 too (the scale-free metrics:
+    cosine, correlation, canberra, braycurtis; the others scale with them)."""
+    rng = np.random.default_rng(45)
+    X = rng.standard_normal((14, 3))
+    write_matrix("hclust_metrics_X.tsv", X)
+    rows = []
+    for metric in ("euclidean", "sqeuclidean", "cityblock", "chebyshev", "cosine",
+                   "correlation", "canberra", "braycurtis"):
+        for method in ("single", "complete", "average", "weighted"):
+            Z = sch.linkage(X, method, metric)
+            rows += [[method, metric, int(r[0]), int(r[1]), r[2], int(r[3])] for r in Z]
+    write("hclust_metrics_Z.tsv", ["method", "metric", "a", "b", "dist", "size"], rows)
+
 # ---- Gaussian mixtures -------------------------------------------------------------
 
 class GMMFromLabels(GaussianMixture):
@@ -257,6 +274,7 @@ def main():
     make_kuiper()
     make_chisq()
     make_linkage()
+    make_linkage_metrics()
     make_gmm()
 
 
