@@ -152,6 +152,13 @@ printf 'P5\n8 8\n255\n%064d' 0 > "$out/tiny.pgm"
 bad analyse "$out/tiny.pgm" -o "$out/x.params"
 grep -q 'tiny.pgm' "$out/err.txt"
 bad analyse "$out/missing.png" -o "$out/x.params"
+# A file cut to 30% (as a failed copy leaves it) is refused, naming it, not
+# read with the missing pixels as zeros: TIFF, PNG and EXR as written above.
+for f in rgb.tif grey16.png grey.exr; do
+  head -c "$(( $(wc -c < "$out/$f") * 3 / 10 ))" "$out/$f" > "$out/cut-$f"
+  bad analyse "$out/cut-$f" -o "$out/x.params"
+  grep -q "^noiselab example: $out/cut-$f: " "$out/err.txt" || { cat "$out/err.txt" >&2; exit 1; }
+done
 echo 'not an image' > "$out/junk.png"
 bad analyse "$out/junk.png" -o "$out/x.params"
 grep -v '^weights1' "$out/rgb.params" > "$out/missing.params"
