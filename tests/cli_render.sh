@@ -58,6 +58,10 @@ bad "new.png: PNG cannot hold 32-bit float; use .exr or .tif" \
   fbm --size 32 --bits 32 -o "$out/new.png"
 [ ! -e "$out/new.png" ] || { echo "render --bits 32 to a PNG wrote $out/new.png"; exit 1; }
 "$render" fbm --size 32 --bits 32 -o "$out/f32.tif"
+# EXR holds half or float samples: 8 bits is refused, not written as half
+# and reported as "8-bit float".
+bad "e8.exr: EXR holds 16-bit half or 32-bit float, not 8-bit" fbm --size 32 --bits 8 -o "$out/e8.exr"
+[ ! -e "$out/e8.exr" ] || { echo "render --bits 8 to an EXR wrote $out/e8.exr"; exit 1; }
 bad "must be even" wavelet --tile 9 -o "$out/x.png"
 bad "--lambda: -1 must be in (0, 1000]" gctbf --lambda -1 -o "$out/x.png"
 bad "F index must be in 1..4" gctbf --terms F5 -o "$out/x.png"
