@@ -277,6 +277,17 @@ if [ "$(awk '/^MemTotal:/ { print $2 }' /proc/meminfo)" -lt 30000000 ]; then   #
   bad synthesize "$out/rgb.params" --size 30000 --height 30000 -o "$out/x.png"
   grep -q 'output 30000 x 30000 with 3 channels needs' "$out/err.txt"
 fi
+# Memory is what /proc/meminfo says is available (capped here by the tool's
+# test hook), and a calibrated file is never synthesized uncalibrated to
+# fit: refused, saying what calibration needs.
+grep -q '^calibrate [1-9]' "$out/grey16.png.params"
+NL_MEMAVAILABLE_OVERRIDE=1e8 bad synthesize "$out/grey16.png.params" --size 2048 -o "$out/x.png"
+grep -q 'needs .* with the calibration its parameters ask for (.* without); 100 MB is available' "$out/err.txt"
+grep -q '^channels 3' "$out/rgb16.png.params" && grep -q '^bands 6' "$out/rgb16.png.params"
+if [ "$(awk '/^MemAvailable:/ { print $2 }' /proc/meminfo)" -lt 40000000 ]; then   # 48.3 GB
+  bad synthesize "$out/rgb16.png.params" --size 16384 -o "$out/x.png"
+  grep -q 'with the calibration its parameters ask for' "$out/err.txt"
+fi
 test ! -e "$out/x.png"
 test ! -e "$out/x.params"
 [ -z "$(find "$out" -mindepth 1 -maxdepth 1 -name '.*')" ]   # no temporary files left

@@ -260,6 +260,11 @@ static int compare(const args *a)
 int main(int argc, char **argv)
 {
   nl_harness_program_start();   /* OOM handler; OpenBLAS's idle workers stopped */
+  /* Test hook (nl_mem_cap, base/nl_base.h): NL_MEMAVAILABLE_OVERRIDE=BYTES
+   * counts at most BYTES as available, so the suite tests a refusal at a
+   * size this machine could allocate. */
+  const char *mem_cap = getenv("NL_MEMAVAILABLE_OVERRIDE");
+  if (mem_cap && *mem_cap) nl_mem_cap(strtod(mem_cap, NULL));
   if (argc < 2) { usage(stderr, NULL); return 2; }
   const char *cmd = argv[1];
   if (!strcmp(cmd, "-h") || !strcmp(cmd, "--help")) { usage(stdout, NULL); return 0; }

@@ -538,13 +538,24 @@ nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, un
     return nl_fail(err, NL_EINVAL, "output size %d x %d is %.3g pixels, more than the limit of 1e9",
                    w, h, (double)w * h);
   /* channel planes (double) and the image (float), checked before allocating */
-  double need = (double)w * h * p->channels * (sizeof(double) + sizeof(float));
-  if (!nl_mem_fits(need)) {
-    char b1[32], b2[32];
-    return nl_fail(err, NL_ENOMEM, "output %d x %d with %d channels needs %s; this machine has %s",
-                   w, h, p->channels, nl_format_bytes(b1, need), nl_format_bytes(b2, nl_mem_physical()));
-  }
   int solid = opt && opt->solid;
+  /* Calibration holds every band of every channel at the output size. The
+   * method never depends on the machine: when that does not fit, the
+   * synthesis is refused, saying what calibration needs. */
+  int cal = p->calibrate > 0 && p->histogram && !solid && !(opt && opt->scale > 0 && opt->scale != 1);
+  double need = (double)w * h * p->channels * (sizeof(double) + sizeof(float));
+  double cal_need = cal ? (double)w * h * p->nbands * p->channels * sizeof(double) : 0;
+  if (!nl_mem_fits(need + cal_need)) {
+    char b1[32], b2[32], b3[32];
+    if (cal && nl_mem_fits(need))
+      return nl_fail(err, NL_ENOMEM, "output %d x %d with %d channels and %d bands needs %s with "
+                     "the calibration its parameters ask for (%s without); %s is available", w, h, p->channels, p->nbands,
+                     nl_format_bytes(b1, need + cal_need), nl_format_bytes(b2, need),
+                     nl_format_bytes(b3, nl_mem_available()));
+    return nl_fail(err, NL_ENOMEM, "output %d x %d with %d channels needs %s%s; %s is available",
+                   w, h, p->channels, nl_format_bytes(b1, need + cal_need),
+                   cal ? " with calibration" : "", nl_format_bytes(b2, nl_mem_available()));
+  }
   nl_wavelet_tile *t = nl_wavelet_tile_alloc(solid ? 3 : 2, solid ? NL_BYEXAMPLE_TILE3 : p->tile);
   if (!t) return nl_fail(err, NL_EINVAL, "tile period %d not even and >= 8", p->tile);
   nl_wavelet_tile_seed(t, seed);
@@ -554,8 +565,6 @@ nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, un
   double gain = sqrt(p->sigma2 / nl_wavelet_tile_variance(t, solid ? 2 : 4));
   size_t n = (size_t)w * h;
   double *plane[3];
-  int cal = p->calibrate > 0 && p->histogram && !solid && !(opt && opt->scale > 0 && opt->scale != 1) &&
-            nl_mem_fits(need + (double)n * p->nbands * p->channels * sizeof(double));
   /* Calibration measures band powers by FFT of the output: O(n^2) for a
    * side with a large prime factor, as in the analysis. */
   if (cal && nl_spectrum_check_size(w, h, err)) {

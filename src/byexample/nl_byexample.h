@@ -77,8 +77,10 @@
  * the decorrelated channel before gaussianisation (target), and for 3
  * channels the per-band correlation of each channel pair (corr01, corr02,
  * corr12; by polarisation, shrunk until each band's 3x3 matrix is positive
- * definite). Synthesis (2D, scale 1, histogram on, memory permitting) draws
- * every channel's noise bands B_k once; when the output is larger than the
+ * definite). Synthesis (2D, scale 1, histogram on) draws every channel's
+ * noise bands B_k once (all of them held at the output size: an output whose
+ * bands do not fit in the memory available is refused with NL_ENOMEM, never
+ * synthesized uncalibrated); when the output is larger than the
  * photo, removes from the 3 coarsest bands the frequencies below the photo's
  * lowest band (and the DC); mixes each band across channels by the Cholesky
  * factor of its correlation; measures the leakage matrix A[k][j] = eq. 13

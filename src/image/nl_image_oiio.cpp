@@ -246,9 +246,9 @@ extern "C" nl_status nl_oiio_read(const char *path, nl_image **out, nl_error *er
   }
   if (!nl_mem_fits(bytes)) {
     char b1[32], b2[32];
-    return nl_fail(err, NL_ENOMEM, "%s: %d x %d x %d pixels need %s to read; this machine has %s",
+    return nl_fail(err, NL_ENOMEM, "%s: %d x %d x %d pixels need %s to read; %s is available",
                    path, spec.width, spec.height, ch, nl_format_bytes(b1, bytes),
-                   nl_format_bytes(b2, nl_mem_physical()));
+                   nl_format_bytes(b2, nl_mem_available()));
   }
   nl_image *im = nl_image_alloc(spec.width, spec.height, ch == 2 ? 4 : ch);
   // Grey+alpha (2 channels) is read as grey and alpha, stored as RGBA.
