@@ -152,6 +152,17 @@ printf 'P5\n8 8\n255\n%064d' 0 > "$out/tiny.pgm"
 bad analyse "$out/tiny.pgm" -o "$out/x.params"
 grep -q 'tiny.pgm' "$out/err.txt"
 bad analyse "$out/missing.png" -o "$out/x.params"
+# compare transforms both images: a side with a large prime factor (4093:
+# O(n^2) per transform) is refused at once, naming the file, as analyse
+# refuses it.
+"$tool" synthesize "$out/rgb.params" --size 4093 --height 64 -o "$out/p4093.png" 2>/dev/null
+t0=$SECONDS
+bad compare "$out/p4093.png" "$out/rgb16.png" -o "$out/x.tsv"
+grep -q "p4093.png: 4093 x 64 pixels: width 4093 has the prime factor 4093" "$out/err.txt"
+bad compare "$out/rgb16.png" "$out/p4093.png" -o "$out/x.tsv"
+grep -q "p4093.png: 4093 x 64 pixels" "$out/err.txt"
+[ $((SECONDS - t0)) -lt 10 ]
+test ! -e "$out/x.tsv"
 # A file cut to 30% (as a failed copy leaves it) is refused, naming it, not
 # read with the missing pixels as zeros: TIFF, PNG and EXR as written above.
 for f in rgb.tif grey16.png grey.exr; do

@@ -19,7 +19,7 @@ int main(int argc, char **argv)
   nl_harness *r = nl_harness_begin("l1_wavelet",
                                    "L1 - Wavelet noise: band variance and band limits", argc, argv);
   int quick = nl_harness_quick(r);
-  int size = (int)nl_harness_param_int(
+  int size = (int)nl_harness_param_fft_size(
       r, "size", quick ? 128 : 512, 32, 4096,
       "side in pixels of the wavelet-noise images and spectra (quick 128)");
   int tile =

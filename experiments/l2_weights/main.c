@@ -26,11 +26,11 @@ int main(int argc, char **argv)
   nl_harness *r = nl_harness_begin(
       "l2_weights", "L2 - Weights from an exemplar: the validation of Fig. 4", argc, argv);
   int quick = nl_harness_quick(r);
-  int size = (int)nl_harness_param_int(
+  int size = (int)nl_harness_param_fft_size(
       r, "size", quick ? 128 : 512, 16, 4096,
       "side in pixels of the noise whose weights are estimated (quick 128)");
   int maxsize =
-      (int)nl_harness_param_int(r, "max_size", quick ? 256 : 1024, 64, 4096,
+      (int)nl_harness_param_fft_size(r, "max_size", quick ? 256 : 1024, 64, 4096,
                                 "largest image side of the error-against-size sweep (quick 256)");
   int sweep_seeds =
       (int)nl_harness_param_int(r, "sweep_seeds", quick ? 3 : 20, 2, 1000,

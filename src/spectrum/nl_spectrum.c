@@ -2,6 +2,7 @@
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_fft_complex.h>
+#include <limits.h>
 #include <gsl/gsl_fft_real.h>
 #include <math.h>
 #include <stdlib.h>
@@ -238,17 +239,20 @@ static int size_passes(int w, int h)
   int lw, lh;
   prime_factor_sum(w, &lw);
   prime_factor_sum(h, &lh);
-  return nl_spectrum_fft2_cost(w, h) <= NL_SPECTRUM_MAX_COST || (lw <= 7 && lh <= 7);
+  return nl_spectrum_fft2_cost(w, h) <= NL_SPECTRUM_MAX_COST ||
+         (lw <= NL_SPECTRUM_MAX_FACTOR && lh <= NL_SPECTRUM_MAX_FACTOR);
 }
 
-/* The largest m <= n with which the other side `other` passes: made of 2,
- * 3, 5 and 7 (then passing needs the other side so too), or cheap enough. */
+/* The largest m <= n with which the other side `other` passes: its prime
+ * factors within NL_SPECTRUM_MAX_FACTOR (then passing needs the other side
+ * so too), or cheap enough. */
 static int crop_to(int n, int other, int is_width)
 {
   for (int m = n; m > 1; m--) {
     int largest;
     prime_factor_sum(m, &largest);
-    if (largest <= 7 || size_passes(is_width ? m : other, is_width ? other : m)) return m;
+    if (largest <= NL_SPECTRUM_MAX_FACTOR || size_passes(is_width ? m : other, is_width ? other : m))
+      return m;
   }
   return 1;
 }
@@ -268,10 +272,27 @@ nl_status nl_spectrum_check_size(int w, int h, nl_error *err)
     if (side_is_w) ch = crop_to(h, cw, 0);
     else cw = crop_to(w, ch, 1);
   }
-  return nl_fail(err, NL_EINVAL, "%d x %d pixels: %s %d has the prime factor %d, and a Fourier "
-                 "transform of it costs %.2g operations (limit %.0g); crop it to %d x %d",
+  return nl_fail(err, NL_EINVAL, "%d x %d pixels: %s %d has the prime factor %d (beyond %d), and a "
+                 "Fourier transform of it costs %.2g operations (limit %.0g); crop it to %d x %d",
                  w, h, side_is_w ? "width" : "height", side_is_w ? w : h, side_is_w ? lw : lh,
-                 nl_spectrum_fft2_cost(w, h), NL_SPECTRUM_MAX_COST, cw, ch);
+                 NL_SPECTRUM_MAX_FACTOR, nl_spectrum_fft2_cost(w, h), NL_SPECTRUM_MAX_COST, cw, ch);
+}
+
+nl_status nl_spectrum_check_length(size_t n, nl_error *err)
+{
+  if (n > INT_MAX) return nl_fail(err, NL_EINVAL, "%zu samples: more than a transform takes", n);
+  int largest;
+  double cost = (double)n * prime_factor_sum((int)n, &largest);
+  if (largest <= NL_SPECTRUM_MAX_FACTOR || cost <= NL_SPECTRUM_MAX_COST) return NL_OK;
+  int m = (int)n;
+  for (; m > 1; m--) {
+    int l;
+    double c = (double)m * prime_factor_sum(m, &l);
+    if (l <= NL_SPECTRUM_MAX_FACTOR || c <= NL_SPECTRUM_MAX_COST) break;
+  }
+  return nl_fail(err, NL_EINVAL, "%zu samples: %zu has the prime factor %d (beyond %d), and a "
+                 "Fourier transform of it costs %.2g operations (limit %.0g); use %d",
+                 n, n, largest, NL_SPECTRUM_MAX_FACTOR, cost, NL_SPECTRUM_MAX_COST, m);
 }
 
 void nl_spectrum_fft2(const double *img, int w, int h, double *F)
@@ -379,6 +400,7 @@ void nl_spectrum_hann2(const double *img, int w, int h, double *out) { nl_spectr
 nl_status nl_spectrum_psd1(const double *x, size_t n, double rate, double *f, double *P, nl_error *err)
 {
   if (n < 2 || !(rate > 0.0)) return nl_fail(err, NL_EINVAL, "psd1: need n >= 2 and rate > 0");
+  if (nl_spectrum_check_length(n, err)) return NL_EINVAL;
   double *d = nl_xmalloc(n * sizeof *d);
   memcpy(d, x, n * sizeof *d);
   gsl_fft_real_wavetable *wt = gsl_fft_real_wavetable_alloc(n);

@@ -50,14 +50,29 @@ void nl_spectrum_fft2(const double *img, int w, int h, double *F);
  * about: GSL's mixed-radix transform of length n costs n times the sum of
  * n's prime factors (a prime p beyond 7 is a general O(p) pass per output),
  * so a prime side is O(n^2): 16 x 65521 costs 7e10, 16 x 65536 4e7.
- * nl_spectrum_check_size refuses a size above NL_SPECTRUM_MAX_COST (about a
- * second of GSL per transform) when a side has a prime factor beyond 7 (a
- * large image of small factors is O(n log n) work and passes), with a
- * message naming the side, its largest prime factor and a size to crop to
- * that passes (the side with the larger factor cropped first). */
-#define NL_SPECTRUM_MAX_COST 2e9
+ *
+ * The guard every transform goes through: nl_spectrum_check_size refuses a
+ * size when a side has a prime factor beyond NL_SPECTRUM_MAX_FACTOR and the
+ * transform costs more than NL_SPECTRUM_MAX_COST, with a message naming the
+ * side, its largest prime factor and a size to crop to that passes (the
+ * side with the larger factor cropped first); nl_spectrum_check_length the
+ * same for n samples on a line (cost n times the sum of n's prime factors).
+ * The bounds come from a measurement (nl_spectrum_power2 of n x n, GCC -O2,
+ * one core of a Xeon shared with other jobs): 2-5e-10 s per operation of
+ * the cost for smooth sides, 9e-10 s for a prime side (GSL's general pass);
+ * n = 1024 (factor 2) 0.0093 s, 1029 (7) 0.026 s, 1001 (13) 0.037 s, 1012
+ * (23) 0.038 s, 1003 (59) 0.062 s, 1022 (73) 0.068 s, 1027 (79) 0.087 s,
+ * 509 (prime) 0.22 s, 1021 (prime) 1.9 s, 2039 (prime) 25 s. A
+ * factor up to 127 keeps a transform within about 12 times a power of two
+ * of the same size, so any size made of such factors passes; 2e8 operations
+ * is at most 0.2 s per transform whatever the factors (257 x 257, prime,
+ * 0.03 s, passes). An experiment transforms dozens of images: S3 --quick at
+ * 1021 took 58 s against 4.35 s at 1024. */
+#define NL_SPECTRUM_MAX_FACTOR 127
+#define NL_SPECTRUM_MAX_COST 2e8
 double nl_spectrum_fft2_cost(int w, int h);
 nl_status nl_spectrum_check_size(int w, int h, nl_error *err);
+nl_status nl_spectrum_check_length(size_t n, nl_error *err);
 void nl_spectrum_fft2_inverse(const double *F, int w, int h, double *img);
 void nl_spectrum_power2(const double *img, int w, int h, double *P);
 void nl_spectrum_radial(const double *img, int w, int h, int nbins, double *f, double *p);
@@ -77,8 +92,9 @@ void nl_spectrum_hann2(const double *img, int w, int h, double *out);
 void nl_spectrum_taper2(const double *img, int w, int h, double frac, double *out);
 /* Signed frequency of index u of an n-point DFT, in cycles per sample. */
 double nl_spectrum_freq(int u, int n);
-/* f and P hold n/2 + 1 values. n >= 2, rate > 0; NL_EINVAL otherwise, NL_ENUM
- * if GSL's transform fails. */
+/* f and P hold n/2 + 1 values. n >= 2, rate > 0, n passing
+ * nl_spectrum_check_length; NL_EINVAL otherwise, NL_ENUM if GSL's transform
+ * fails. */
 nl_status nl_spectrum_psd1(const double *x, size_t n, double rate, double *f, double *P, nl_error *err);
 enum { NL_SPECTRUM_RECT = 0, NL_SPECTRUM_HANN = 1 };
 /* NL_EINVAL also for an unknown window. */

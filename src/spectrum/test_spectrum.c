@@ -167,10 +167,26 @@ NL_TEST(awkward_sizes_refused)
   NL_CHECK(strstr(err.msg, "crop it to 65520 x 16") != NULL);
   NL_CHECK(nl_spectrum_check_size(4096, 4093, &err) == NL_EINVAL && strstr(err.msg, "height 4093"));
   NL_CHECK(nl_spectrum_check_size(16, 65536, &err) == NL_OK);
-  /* both sides awkward (776 = 8 x 97, 65474 = 2 x 19 x 1723): both cropped */
+  /* 776 = 8 x 97 has factors within the bound, 65474 = 2 x 19 x 1723 not:
+   * only the height is cropped */
   NL_CHECK(nl_spectrum_check_size(776, 65474, &err) == NL_EINVAL);
   NL_CHECK(strstr(err.msg, "height 65474") != NULL);
-  NL_CHECK(strstr(err.msg, "crop it to 768 x 64827") != NULL);
+  NL_CHECK(strstr(err.msg, "crop it to 776 x 65472") != NULL);
+  /* The bound (nl_spectrum.h): S3's --set size=1021 (1.9 s per transform,
+   * 205 times 1024's) and 509 (0.22 s) refused; a factor of 73 or 127 at
+   * any size, and a cheap prime side, pass. */
+  NL_CHECK(nl_spectrum_check_size(1021, 1021, &err) == NL_EINVAL &&
+           strstr(err.msg, "width 1021 has the prime factor 1021 (beyond 127)"));
+  NL_CHECK(nl_spectrum_check_size(509, 509, &err) == NL_EINVAL);
+  NL_CHECK(nl_spectrum_check_size(1022, 1022, &err) == NL_OK);
+  NL_CHECK(nl_spectrum_check_size(127 * 64, 127 * 32, &err) == NL_OK);
+  NL_CHECK(nl_spectrum_check_size(257, 257, &err) == NL_OK);
+  /* On a line (psd1): n times the sum of n's factors. */
+  NL_CHECK(nl_spectrum_check_length(65536, &err) == NL_OK);
+  NL_CHECK(nl_spectrum_check_length(10007, &err) == NL_OK);    /* prime: 1e8 operations */
+  NL_CHECK(nl_spectrum_check_length(65521, &err) == NL_EINVAL && strstr(err.msg, "use 65520"));
+  double x[8] = {0}, f[8], P[8];
+  NL_CHECK(nl_spectrum_psd1(x, 65521, 1.0, f, P, &err) == NL_EINVAL);   /* refused before reading x */
   NL_CHECK(nl_spectrum_check_size(16384, 16384, &err) == NL_OK);
   NL_CHECK(nl_spectrum_check_size(15000, 15000, &err) == NL_OK);
   NL_CHECK(nl_spectrum_check_size(512, 509, &err) == NL_OK);

@@ -110,7 +110,7 @@ static void octave_settings(const int *oct, int n, int turbulence, nl_study_sett
 
 nl_noise_window nl_study_window(nl_harness *r)
 {
-  int size = (int)nl_harness_param_int(r, "size", nl_harness_quick(r) ? 128 : 512, 16, 4096,
+  int size = (int)nl_harness_param_fft_size(r, "size", nl_harness_quick(r) ? 128 : 512, 16, 4096,
                                        "image side in pixels of each survey slice (quick 128)");
   double extent = nl_harness_param(r, "extent", 4.0, 1e-3, 1e4,
                                    "side of the noise-space square [0, extent)^2 the slice covers");
