@@ -64,9 +64,11 @@ int main(int argc, char **argv)
   double truth[MB], est[NE * MB], est2[MB], f[NE];
   double *b_img = malloc((size_t)size * size * sizeof *b_img);
   double *d_img = malloc((size_t)size * size * sizeof *d_img);
-  nl_byexample_transfer_measure(&T, tile, size, size, nb, frac, tseeds,
-                                nl_seed_stream(seed0, "l2.transfer", (unsigned long)size),
-                                nl_harness_threads(r));
+  nl_error err;
+  if (nl_byexample_transfer_measure(&T, tile, size, size, nb, frac, tseeds,
+                                    nl_seed_stream(seed0, "l2.transfer", (unsigned long)size),
+                                    nl_harness_threads(r), &err))
+    nl_harness_die(r, 2, "--set size=%d: %s", size, err.msg);
   nl_byexample_trial(&T, t, seed0, FINE, truth, est, b_img, fig.e, f, fig.pw);
   nl_wavelet_bands b; /* (d): the estimated weights with new offsets */
   nl_wavelet_bands_init(&b, nb, est, tile, nl_seed_stream(seed0, "l2.new_offsets", 0), NULL);

@@ -133,6 +133,10 @@ nl_status nl_mkdir_p(const char *dir, nl_error *err);
  * before their work starts. */
 nl_status nl_path_check_writable(const char *path, nl_error *err);
 
+/* A status that must be looked at: ignoring one is a compiler warning (the
+ * Fourier transforms' size refusals, spectrum/nl_spectrum.h). */
+#define NL_MUST_CHECK __attribute__((warn_unused_result))
+
 /* ---- memory a request needs ---------------------------------------------
  *
  * Places that allocate sizes derived from input (rows of a table, pixels of

@@ -1,17 +1,18 @@
 /* nl_spectrum.h - 2D discrete Fourier transforms of images and their power
  * spectra, on GSL's mixed-radix FFT (any size, not only powers of two).
  *
- *   nl_spectrum_fft2(img, w, h, F)       F[2*(v*w + u) + {0,1}] = sum_xy img[y*w+x] e^{-2 pi i (ux/w + vy/h)}
- *   nl_spectrum_fft2_inverse(F, w, h, img)        the inverse, including the 1/(w h)
- *   nl_spectrum_power2(img, w, h, P)     P[v*w+u] = |F|^2 / (w h)^2, so sum P = mean(img^2)
+ *   nl_spectrum_fft2(img, w, h, F, err)  F[2*(v*w + u) + {0,1}] = sum_xy img[y*w+x] e^{-2 pi i (ux/w + vy/h)}
+ *   nl_spectrum_fft2_inverse(F, w, h, img, err)   the inverse, including the 1/(w h)
+ *   nl_spectrum_power2(img, w, h, P, err) P[v*w+u] = |F|^2 / (w h)^2, so sum P = mean(img^2)
  *                               (Parseval); the DC term is P[0]
- *   nl_spectrum_radial(img, w, h, nbins, f, p)
+ *   nl_spectrum_radial(img, w, h, nbins, f, p, err)
  *       radially averaged power: bin b covers |k| in [b, b+1) * 0.5/nbins
  *       cycles per pixel (k folded to [-1/2, 1/2) per axis); f[b] is the
  *       bin centre, p[b] the mean of P over the bin's frequencies (0 if none).
  *       Frequencies past the Nyquist circle (corners) are not counted.
  * Frequencies are in cycles per pixel; multiply by the sampling rate for
- * cycles per unit.
+ * cycles per unit. Each returns NL_EINVAL (err says why) for a size
+ * nl_spectrum_check_size refuses, before any work.
  *
  * 1D (Arnerin's bandwidth, bounds/, and anything else sampled on a line):
  *   nl_spectrum_psd1(x, n, rate, f, P, err)
@@ -40,12 +41,16 @@
  * radix-4 path (rows in pairs as one complex sequence, then only the
  * w/2+1 columns, gathered a block at a time); other sizes GSL's mixed-radix
  * complex transform, whose bits nl_spectrum_fft2 keeps for them. A plan is
- * not shared between threads (it holds work buffers). */
+ * not shared between threads (it holds work buffers).
+ *
+ * Every 2D transform goes through nl_spectrum_check_size (below): the plan
+ * allocator returns NULL and the others NL_EINVAL, with its message, for a
+ * size it refuses, before any work; a caller cannot skip it. */
 typedef struct nl_spectrum_fft2_plan nl_spectrum_fft2_plan;
-nl_spectrum_fft2_plan *nl_spectrum_fft2_plan_alloc(int w, int h);
+nl_spectrum_fft2_plan *nl_spectrum_fft2_plan_alloc(int w, int h, nl_error *err);
 void nl_spectrum_fft2_plan_free(nl_spectrum_fft2_plan *p);
 void nl_spectrum_rfft2(nl_spectrum_fft2_plan *p, const double *img, double *H);
-void nl_spectrum_fft2(const double *img, int w, int h, double *F);
+NL_MUST_CHECK nl_status nl_spectrum_fft2(const double *img, int w, int h, double *F, nl_error *err);
 /* The work of one 2D transform of a w x h image, in complex multiply-adds,
  * about: GSL's mixed-radix transform of length n costs n times the sum of
  * n's prime factors (a prime p beyond 7 is a general O(p) pass per output),
@@ -73,9 +78,10 @@ void nl_spectrum_fft2(const double *img, int w, int h, double *F);
 double nl_spectrum_fft2_cost(int w, int h);
 nl_status nl_spectrum_check_size(int w, int h, nl_error *err);
 nl_status nl_spectrum_check_length(size_t n, nl_error *err);
-void nl_spectrum_fft2_inverse(const double *F, int w, int h, double *img);
-void nl_spectrum_power2(const double *img, int w, int h, double *P);
-void nl_spectrum_radial(const double *img, int w, int h, int nbins, double *f, double *p);
+NL_MUST_CHECK nl_status nl_spectrum_fft2_inverse(const double *F, int w, int h, double *img, nl_error *err);
+NL_MUST_CHECK nl_status nl_spectrum_power2(const double *img, int w, int h, double *P, nl_error *err);
+NL_MUST_CHECK nl_status nl_spectrum_radial(const double *img, int w, int h, int nbins, double *f, double *p,
+                                           nl_error *err);
 /* A Hann-tapered copy of a non-periodic image, for power spectra without
  * the edge discontinuity the DFT's periodic extension adds (its power
  * leaks ~1/f^2 across every band): out = (img - mean) h(x) h(y) / sqrt(W),

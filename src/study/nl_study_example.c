@@ -74,8 +74,12 @@ nl_status nl_study_example_compare(const nl_image *ex, const nl_image *syn, cons
   /* a smaller synthesis lacks the coarsest bands */
   int nb = nl_byexample_band_count(syn->width, syn->height);
   if (nb > nbe) nb = nbe;
-  nl_byexample_band_power(le, ex->width, ex->height, nbe, pe);
-  nl_byexample_band_power(ls, syn->width, syn->height, nb, ps);
+  if (nl_byexample_band_power(le, ex->width, ex->height, nbe, pe, err) ||
+      nl_byexample_band_power(ls, syn->width, syn->height, nb, ps, err)) {   /* checked above */
+    free(le);
+    free(ls);
+    return NL_EINVAL;
+  }
   for (int k = 0; k < nbe; k++) total += pe[k];
   int checked = 0, worst_k = -1;
   for (int k = 0; k < nb; k++) {
