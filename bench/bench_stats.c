@@ -207,10 +207,17 @@ static void fft2_gsl_strided(const double *img, double *F)
 
 typedef struct { const double *img; double *out; nl_spectrum_fft2_plan *plan; int which; } fft_ctx;
 
+/* FW is a power of two: a refusal is a bug here. */
+static void fft_checked(nl_status st, const nl_error *err)
+{
+  if (st) { fprintf(stderr, "bench_stats: %s\n", err->msg); exit(1); }
+}
+
 static void fft_once(fft_ctx *c)
 {
+  nl_error err;
   if (c->which == 0) fft2_gsl_strided(c->img, c->out);
-  else if (c->which == 1) nl_spectrum_fft2(c->img, FW, FW, c->out);
+  else if (c->which == 1) fft_checked(nl_spectrum_fft2(c->img, FW, FW, c->out, &err), &err);
   else nl_spectrum_rfft2(c->plan, c->img, c->out);
 }
 
@@ -232,7 +239,9 @@ static void bench_fft(gsl_rng *rng)
   size_t n = (size_t)FW * FW;
   double *img = nl_xmalloc(n * sizeof *img), *F = nl_xmalloc(2 * n * sizeof *F), *G = nl_xmalloc(2 * n * sizeof *G);
   for (size_t k = 0; k < n; k++) img[k] = gsl_ran_gaussian(rng, 1.0);
-  nl_spectrum_fft2_plan *plan = nl_spectrum_fft2_plan_alloc(FW, FW);
+  nl_error err;
+  nl_spectrum_fft2_plan *plan = nl_spectrum_fft2_plan_alloc(FW, FW, &err);
+  fft_checked(plan ? NL_OK : NL_EINVAL, &err);
   const char *names[3] = {"gsl complex, strided columns (before)", "nl_spectrum_fft2 (full spectrum)",
                           "nl_spectrum_rfft2 (half spectrum, plan)"};
   for (int which = 0; which < 3; which++) {
@@ -242,7 +251,7 @@ static void bench_fft(gsl_rng *rng)
     printf("fft2     C    %dx%d %-40s %7.3f ms CPU/call (%.3f ms wall)\n", FW, FW, names[which], cm, wm);
   }
   /* agreement: the full spectrum against GSL's, relative to the largest |F| */
-  nl_spectrum_fft2(img, FW, FW, G);
+  fft_checked(nl_spectrum_fft2(img, FW, FW, G, &err), &err);
   double worst = 0, big = 0;
   for (size_t k = 0; k < 2 * n; k++) { worst = fmax(worst, fabs(F[k] - G[k])); big = fmax(big, fabs(F[k])); }
   printf("fft2     C    %dx%d largest |nl_spectrum_fft2 - GSL| %.3g (%.3g of max |F|)\n", FW, FW, worst, worst / big);

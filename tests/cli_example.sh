@@ -152,6 +152,24 @@ printf 'P5\n8 8\n255\n%064d' 0 > "$out/tiny.pgm"
 bad analyse "$out/tiny.pgm" -o "$out/x.params"
 grep -q 'tiny.pgm' "$out/err.txt"
 bad analyse "$out/missing.png" -o "$out/x.params"
+# compare transforms both images: a side with a large prime factor (4093:
+# O(n^2) per transform) is refused at once, naming the file, as analyse
+# refuses it.
+"$tool" synthesize "$out/rgb.params" --size 4093 --height 64 -o "$out/p4093.png" 2>/dev/null
+t0=$SECONDS
+bad compare "$out/p4093.png" "$out/rgb16.png" -o "$out/x.tsv"
+grep -q "p4093.png: 4093 x 64 pixels: width 4093 has the prime factor 4093" "$out/err.txt"
+bad compare "$out/rgb16.png" "$out/p4093.png" -o "$out/x.tsv"
+grep -q "p4093.png: 4093 x 64 pixels" "$out/err.txt"
+[ $((SECONDS - t0)) -lt 10 ]
+test ! -e "$out/x.tsv"
+# A file cut to 30% (as a failed copy leaves it) is refused, naming it, not
+# read with the missing pixels as zeros: TIFF, PNG and EXR as written above.
+for f in rgb.tif grey16.png grey.exr; do
+  head -c "$(( $(wc -c < "$out/$f") * 3 / 10 ))" "$out/$f" > "$out/cut-$f"
+  bad analyse "$out/cut-$f" -o "$out/x.params"
+  grep -q "^noiselab example: $out/cut-$f: " "$out/err.txt" || { cat "$out/err.txt" >&2; exit 1; }
+done
 echo 'not an image' > "$out/junk.png"
 bad analyse "$out/junk.png" -o "$out/x.params"
 grep -v '^weights1' "$out/rgb.params" > "$out/missing.params"
@@ -283,6 +301,17 @@ grep -q "parent $out/half.params is not a directory" "$out/err.txt"
 if [ "$(awk '/^MemTotal:/ { print $2 }' /proc/meminfo)" -lt 30000000 ]; then   # 32.4 GB needed
   bad synthesize "$out/rgb.params" --size 30000 --height 30000 -o "$out/x.png"
   grep -q 'output 30000 x 30000 with 3 channels needs' "$out/err.txt"
+fi
+# Memory is what /proc/meminfo says is available (capped here by the tool's
+# test hook), and a calibrated file is never synthesized uncalibrated to
+# fit: refused, saying what calibration needs.
+grep -q '^calibrate [1-9]' "$out/grey16.png.params"
+NL_MEMAVAILABLE_OVERRIDE=1e8 bad synthesize "$out/grey16.png.params" --size 2048 -o "$out/x.png"
+grep -q 'needs .* with the calibration its parameters ask for (.* without); 100 MB is available' "$out/err.txt"
+grep -q '^channels 3' "$out/rgb16.png.params" && grep -q '^bands 6' "$out/rgb16.png.params"
+if [ "$(awk '/^MemAvailable:/ { print $2 }' /proc/meminfo)" -lt 40000000 ]; then   # 48.3 GB
+  bad synthesize "$out/rgb16.png.params" --size 16384 -o "$out/x.png"
+  grep -q 'with the calibration its parameters ask for' "$out/err.txt"
 fi
 test ! -e "$out/x.png"
 test ! -e "$out/x.params"

@@ -22,4 +22,7 @@ bad "--size: 2 is outside [8, 4096]" "$out/c" --size=2
 bad "unexpected argument 'd'" "$out/c" d
 bad "missing output folder" --size 16
 [ ! -e "$out/c" ]
+# DIR is made, its missing parents are not (as render's -o): named, exit 2.
+bad "$out/no/such: directory $out/no does not exist" "$out/no/such" --size 16
+[ ! -e "$out/no" ]
 echo "cli_patterns: ok"

@@ -52,12 +52,24 @@ bad "--octaves: 31 is outside" fbm --octaves 31 -o "$out/x.png"
 bad "--gain: 'abc' is not a number" fbm --gain abc -o "$out/x.png"
 bad "/nonexistent/dir/x.png: directory /nonexistent/dir does not exist" fbm --size 8 -o /nonexistent/dir/x.png
 bad "no output file" fbm --size 8
+# Memory is held to what is available, not to the total: capped by the
+# tool's test hook, and at 65536 (51.5 GB) against the real figure.
+NL_MEMAVAILABLE_OVERRIDE=1e8 bad "--size 4000 needs 192 MB of memory; 100 MB is available" \
+  fbm --size 4000 -o "$out/x.png"
+if [ "$(awk '/^MemAvailable:/ { print $2 }' /proc/meminfo)" -lt 50000000 ]; then
+  bad "--size 65536 needs 51.5 GB of memory; " fbm --size 65536 -o "$out/x.png"
+fi
 # An integer format cannot hold raw 32-bit floats: refused, nothing written.
 rm -f "$out/new.png"
 bad "new.png: PNG cannot hold 32-bit float; use .exr or .tif" \
   fbm --size 32 --bits 32 -o "$out/new.png"
 [ ! -e "$out/new.png" ] || { echo "render --bits 32 to a PNG wrote $out/new.png"; exit 1; }
 "$render" fbm --size 32 --bits 32 -o "$out/f32.tif"
+# EXR holds half or float samples: 8 bits is refused, not written as half
+# and reported as "8-bit float".
+rm -f "$out/e8.exr"
+bad "e8.exr: EXR holds 16-bit half or 32-bit float, not 8-bit" fbm --size 32 --bits 8 -o "$out/e8.exr"
+[ ! -e "$out/e8.exr" ] || { echo "render --bits 8 to an EXR wrote $out/e8.exr"; exit 1; }
 bad "must be even" wavelet --tile 9 -o "$out/x.png"
 bad "--lambda: -1 must be in (0, 1000]" gctbf --lambda -1 -o "$out/x.png"
 bad "F index must be in 1..4" gctbf --terms F5 -o "$out/x.png"

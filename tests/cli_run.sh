@@ -37,6 +37,14 @@ for o in "$out/s3" "$out/fresh"; do
   rejected "--frobnicate: unknown option" "$s3" --out "$o" --frobnicate
 done
 rejected "--out: empty" "$s3" --out ""
+# A side whose Fourier transforms are O(n^2) (1021 is prime: 1.9 s per
+# transform, S3 --quick 58 s against 4.35 s at 1024) is a bad value,
+# refused before any work, and so by a sweep's --params --set check.
+t0=$SECONDS
+rejected "--set size=1021: 1021 x 1021 pixels: width 1021 has the prime factor 1021" \
+  "$s3" --quick --out "$out/fresh" --set size=1021
+rejected "--set size=1021: 1021 x 1021 pixels" "$s3" --params --set size=1021
+[ $((SECONDS - t0)) -lt 10 ] || { echo "s3 --set size=1021 took $((SECONDS - t0)) s to refuse"; exit 1; }
 c2o="$out/c2"
 rejected "--patterns /nonexistent" "$c2" --quick --out "$c2o" --patterns /nonexistent
 rejected "--patterns: missing value" "$c2" --quick --out "$c2o" --patterns

@@ -249,7 +249,8 @@ static int compare(const args *a)
     die("%s: image is %d x %d pixels, smaller than %d", a->pos[0], im[0]->width, im[0]->height,
         NL_BYEXAMPLE_MIN_SIZE);
   nl_table *bt = nl_study_example_band_table(), *st = nl_study_example_summary_table();
-  nl_study_example_compare(im[0], im[1], a->pos[0], a->pos[1], 0, 0.02, 1.3, 0.03, bt, st);
+  check(nl_study_example_compare(im[0], im[1], a->pos[0], a->pos[1], 0, 0.02, 1.3, 0.03, bt, st, &err),
+        &err);
   /* Both tables or neither: the second path is checked before the first
    * file is replaced. */
   nl_atomic_file af[2] = {{0}, {0}};

@@ -33,6 +33,11 @@ void nl_tool_start(const char *name)
   nl_harness_program_start();
   signal(SIGXFSZ, SIG_IGN);
   atexit(tool_close_stdout);
+  /* Test hook (nl_mem_cap, base/nl_base.h): NL_MEMAVAILABLE_OVERRIDE=BYTES
+   * counts at most BYTES as available, so the suite tests a refusal at a
+   * size this machine could allocate. */
+  const char *mem_cap = getenv("NL_MEMAVAILABLE_OVERRIDE");
+  if (mem_cap && *mem_cap) nl_mem_cap(strtod(mem_cap, NULL));
 }
 
 /* path made absolute with every link resolved; for a path that does not

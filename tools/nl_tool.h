@@ -15,7 +15,10 @@
  *  - At exit, stdout is flushed and closed and checked (nl_stream_close): a
  *    result lost on a full disk or a closed pipe is one line
  *    "NAME: write error on standard output: REASON" and exit 2, the status
- *    of a failed output, whatever main returned. */
+ *    of a failed output, whatever main returned.
+ *  - NL_MEMAVAILABLE_OVERRIDE=BYTES, when set, caps the memory nl_mem_fits
+ *    counts as available (nl_mem_cap): a test hook, so the suite can test a
+ *    refusal at a size this machine could allocate. */
 void nl_tool_start(const char *name);
 
 /* Refuses, before any work, an output path that would replace

@@ -4,15 +4,19 @@
  *
  *   noiselab patterns DIR [--size N]      (default 128; data/patterns ships them)
  *
+ * DIR is made if missing; its parent must exist (as render's -o).
+ *
  * Errors: one line, exit 2 (bad arguments) or 1 (a file could not be written).
  */
 #include "harness/nl_harness.h"
 #include "nl_tool.h"
 #include "study/nl_study_cheng.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 /* DIR/SHAPE.png for shape k. Caller frees. */
 static char *shape_path(const char *dir, int k)
@@ -58,7 +62,16 @@ int main(int argc, char **argv)
   }
   nl_opt_end(&p);
   if (!dir) { fprintf(stderr, "patterns: missing output folder (usage: noiselab patterns DIR [--size N])\n"); return 2; }
-  if (nl_mkdir_p(dir, &err)) { nl_message(stderr, "patterns: %s", err.msg); return 1; }
+  /* DIR is made if missing, but not its parents: a mistyped path is named,
+   * as render names an output's missing folder, instead of growing a tree. */
+  struct stat st;
+  if (stat(dir, &st) != 0) {
+    if (nl_path_check_writable(dir, &err)) { nl_message(stderr, "patterns: %s", err.msg); return 2; }
+    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
+      nl_message(stderr, "patterns: %s: cannot make the folder: %s", dir, strerror(errno));
+      return 1;
+    }
+  }
   /* Every file is checked before the first is written (a folder that is not
    * writable, a name taken by a directory): all are refused alike. */
   for (int k = 0; nl_study_cheng_shape_names[k]; k++) {

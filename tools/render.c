@@ -263,8 +263,8 @@ static void parse(int argc, char **argv, options *o)
   double bytes = (double)o->size * o->size * (12.0 + (tsv ? 96.0 : 0.0));
   if (!nl_mem_fits(bytes)) {
     char b1[32], b2[32];
-    fail("--size %ld%s needs %s of memory; this machine has %s", o->size, tsv ? " as a .tsv" : "",
-         nl_format_bytes(b1, bytes), nl_format_bytes(b2, nl_mem_physical()));
+    fail("--size %ld%s needs %s of memory; %s is available", o->size, tsv ? " as a .tsv" : "",
+         nl_format_bytes(b1, bytes), nl_format_bytes(b2, nl_mem_available()));
   }
 }
 

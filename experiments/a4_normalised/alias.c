@@ -39,7 +39,11 @@ nl_status a4_alias_energy2(const nl_noise_perm3 *p, double f, double extent, dou
   nl_noise_fractal_grid(&b, &o, &w, v);
   for (size_t k = 0; k < nn; k++) v[k] = 0.5 * (v[k] + 1.0); /* the stored value */
   nl_spectrum_hann2(v, n, n, v);
-  nl_spectrum_power2(v, n, n, P);
+  if (nl_spectrum_power2(v, n, n, P, err)) {   /* checked above */
+    free(v);
+    free(P);
+    return NL_EINVAL;
+  }
   double above = 0;
   for (int y = 0; y < n; y++) {
     double fy = fabs(nl_spectrum_freq(y, n)) * rate;

@@ -28,10 +28,12 @@ int l1_band_figure(nl_harness *r, nl_wavelet_tile *t2, nl_wavelet_tile *t3,
   /* (b) and (d) show one period of the 3D tile at most: a wider window repeats it */
   int w3 = size < (tile3 << band) ? size : tile3 << band;
   double *win3 = l1_window(img3, size, w3);
+  nl_error err;
   nl_image *im[4] = { nl_image_from_values(img2, size, size, -1.5, 1.5),
                       nl_image_from_values(win3, w3, w3, -1.5, 1.5),
-                      nl_byexample_spectrum_image(img2, size, size, c->decades),
-                      nl_byexample_spectrum_image(win3, w3, w3, c->decades) };
+                      nl_byexample_spectrum_image(img2, size, size, c->decades, &err), NULL };
+  if (im[2]) im[3] = nl_byexample_spectrum_image(win3, w3, w3, c->decades, &err);
+  if (!im[2] || !im[3]) nl_harness_die(r, 1, "spectrum figure: %s", err.msg);
   free(win3);
   char lb[64];
   snprintf(lb, sizeof lb, w3 == tile3 << band ? "(b) 3D slice, one period" : "(b) 3D slice, %d px",

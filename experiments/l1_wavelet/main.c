@@ -19,7 +19,7 @@ int main(int argc, char **argv)
   nl_harness *r = nl_harness_begin("l1_wavelet",
                                    "L1 - Wavelet noise: band variance and band limits", argc, argv);
   int quick = nl_harness_quick(r);
-  int size = (int)nl_harness_param_int(
+  int size = (int)nl_harness_param_fft_size(
       r, "size", quick ? 128 : 512, 32, 4096,
       "side in pixels of the wavelet-noise images and spectra (quick 128)");
   int tile =
@@ -58,16 +58,19 @@ int main(int argc, char **argv)
     v2[s] = nl_wavelet_tile_variance(t2, SAMPLES);
     v3[s] = nl_wavelet_tile_variance(t3, SAMPLES);
     nl_table_append(vt, "idd", (int)(nl_seed_replicate(seed0, s)), v2[s], v3[s]);
-    nl_byexample_band_leakage(t2, size, nb, nl_seed_replicate(seed0, s),
-                              share + (size_t)s * nb * nb, var);
+    nl_error err;
+    if (nl_byexample_band_leakage(t2, size, nb, nl_seed_replicate(seed0, s),
+                                  share + (size_t)s * nb * nb, var, &err))
+      nl_harness_die(r, 2, "--set size=%d: %s", size, err.msg);
     ks[s] = l1_gauss_distance(t2, SAMPLES);
     l1_raw_tile_seed(r2, nl_seed_replicate(seed0, s));
     l1_raw_tile_seed(r3, nl_seed_replicate(seed0, s));
     rv2[s] = nl_wavelet_tile_variance(r2, SAMPLES);
     rv3[s] = nl_wavelet_tile_variance(r3, SAMPLES);
     rks[s] = l1_gauss_distance(r2, SAMPLES);
-    nl_byexample_band_leakage(r2, size, nb, nl_seed_replicate(seed0, s),
-                              rshare + (size_t)s * nb * nb, var);
+    if (nl_byexample_band_leakage(r2, size, nb, nl_seed_replicate(seed0, s),
+                                  rshare + (size_t)s * nb * nb, var, &err))
+      nl_harness_die(r, 2, "--set size=%d: %s", size, err.msg);
     nl_harness_progress(r, (s + 1.0) / K, "seeds");
   }
   nl_harness_write_table(r, vt, "variance.tsv");

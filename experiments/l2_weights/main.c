@@ -26,11 +26,11 @@ int main(int argc, char **argv)
   nl_harness *r = nl_harness_begin(
       "l2_weights", "L2 - Weights from an exemplar: the validation of Fig. 4", argc, argv);
   int quick = nl_harness_quick(r);
-  int size = (int)nl_harness_param_int(
+  int size = (int)nl_harness_param_fft_size(
       r, "size", quick ? 128 : 512, 16, 4096,
       "side in pixels of the noise whose weights are estimated (quick 128)");
   int maxsize =
-      (int)nl_harness_param_int(r, "max_size", quick ? 256 : 1024, 64, 4096,
+      (int)nl_harness_param_fft_size(r, "max_size", quick ? 256 : 1024, 64, 4096,
                                 "largest image side of the error-against-size sweep (quick 256)");
   int sweep_seeds =
       (int)nl_harness_param_int(r, "sweep_seeds", quick ? 3 : 20, 2, 1000,
@@ -64,9 +64,11 @@ int main(int argc, char **argv)
   double truth[MB], est[NE * MB], est2[MB], f[NE];
   double *b_img = malloc((size_t)size * size * sizeof *b_img);
   double *d_img = malloc((size_t)size * size * sizeof *d_img);
-  nl_byexample_transfer_measure(&T, tile, size, size, nb, frac, tseeds,
-                                nl_seed_stream(seed0, "l2.transfer", (unsigned long)size),
-                                nl_harness_threads(r));
+  nl_error err;
+  if (nl_byexample_transfer_measure(&T, tile, size, size, nb, frac, tseeds,
+                                    nl_seed_stream(seed0, "l2.transfer", (unsigned long)size),
+                                    nl_harness_threads(r), &err))
+    nl_harness_die(r, 2, "--set size=%d: %s", size, err.msg);
   nl_byexample_trial(&T, t, seed0, FINE, truth, est, b_img, fig.e, f, fig.pw);
   nl_wavelet_bands b; /* (d): the estimated weights with new offsets */
   nl_wavelet_bands_init(&b, nb, est, tile, nl_seed_stream(seed0, "l2.new_offsets", 0), NULL);

@@ -1,5 +1,6 @@
 /* L2's exemplar photographs (photos.h): the --exemplars option and every
  * photograph's fit by every estimator. */
+#include "spectrum/nl_spectrum.h"
 #include "photos.h"
 #include "byexample/nl_byexample_leak.h"
 #include "base/nl_parallel.h"
@@ -95,6 +96,11 @@ nl_table *l2_exemplar_fits(nl_harness *r, char *const *paths, int n, int max, in
   nl_parallel_for((size_t)n, nl_harness_threads(r), fit_item, &j);
   for (int i = 0; i < n; i++) {
     const char *name = strrchr(paths[i], '/');
+    if (j.nb[i] < 0) {   /* nl_byexample_fit_all: a size no transform is allowed */
+      nl_error err;
+      nl_spectrum_check_size(j.w[i], j.h[i], &err);
+      nl_harness_die(r, 1, "%s: %s", paths[i], err.msg);
+    }
     for (int q = 0; q < NL_BYEXAMPLE_ESTIMATORS; q++)
       nl_table_append(t, "siiisdd", name ? name + 1 : paths[i], j.w[i], j.h[i], j.nb[i],
                       nl_byexample_estimator_names[q], j.res[i][q][0], j.res[i][q][1]);

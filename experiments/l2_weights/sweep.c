@@ -55,9 +55,11 @@ nl_table *l2_size_sweep(nl_harness *r, int tile, unsigned long seed0, l2_sweep *
   for (int done = 0; done < sw->nsizes; done++) {
     int s = sw->sizes[done];
     int n = nl_byexample_band_count(s, s);
-    nl_byexample_transfer_measure(&T, tile, s, s, n, sw->frac, sw->tseeds,
-                                  nl_seed_stream(seed0, "l2.transfer", (unsigned long)s),
-                                  nl_harness_threads(r));
+    nl_error err;
+    if (nl_byexample_transfer_measure(&T, tile, s, s, n, sw->frac, sw->tseeds,
+                                      nl_seed_stream(seed0, "l2.transfer", (unsigned long)s),
+                                      nl_harness_threads(r), &err))
+      nl_harness_die(r, 1, "error-against-size sweep: %s", err.msg);
     nl_byexample_trials(&T, seeds, k, sw->fine, E, rms, bias, nl_harness_threads(r));
     for (int q = 0; q < NE; q++)
       for (int b = 0; b < n; b++)

@@ -31,13 +31,13 @@ int main(int argc, char **argv)
       "l3_synthesis", "L3 - Texture synthesis by example: PCA colour and histogram matching", argc,
       argv);
   int quick = nl_harness_quick(r);
-  int size = (int)nl_harness_param_int(r, "size", quick ? 128 : 512, 16, 4096,
+  int size = (int)nl_harness_param_fft_size(r, "size", quick ? 128 : 512, 16, 4096,
                                        "side in pixels of the exemplar analysed and of the "
                                        "synthesised textures (quick 128)");
   int nphoto = (int)nl_harness_param_int(r, "photos", quick ? 2 : 16, 1, 16,
                                          "photographs of --exemplars DIR used, in name order "
                                          "(quick 2)");
-  int psize = (int)nl_harness_param_int(r, "photo_size", quick ? 128 : 512, 16, 4096,
+  int psize = (int)nl_harness_param_fft_size(r, "photo_size", quick ? 128 : 512, 16, 4096,
                                         "side of the syntheses of photographs (quick 128)");
   double min_share = nl_harness_param(r, "min_share", 0.02, 0, 1,
                                       "bands holding at least this share of the photo's power "

@@ -214,9 +214,13 @@ static void photo_item(void *ctx, size_t q, int thread)
     return;
   j->bands[q] = nl_study_example_band_table();
   j->sum[q] = nl_study_example_summary_table();
-  nl_study_example_compare(j->photos[i], syn, j->names[i],
-                           j->cal[h] > 0 ? "calibrated" : nl_byexample_hist_name(j->kinds[h]), s,
-                           j->min_share, j->max_ratio, j->max_ks, j->bands[q], j->sum[q]);
+  if ((j->sst[q] = nl_study_example_compare(
+           j->photos[i], syn, j->names[i],
+           j->cal[h] > 0 ? "calibrated" : nl_byexample_hist_name(j->kinds[h]), s, j->min_share,
+           j->max_ratio, j->max_ks, j->bands[q], j->sum[q], &j->serr[q]))) {
+    nl_image_free(syn);
+    return;
+  }
   /* the montage shows the first replicate, its top-left 256^2 at most */
   if (!s) j->crops[ih] = crop(syn, j->size < 256 ? j->size : 256);
   /* coherence at the photo's size (its top-left crop), so that photo and synthesis are read over

@@ -58,8 +58,10 @@ nl_table *l3_verdicts(nl_harness *r, const nl_table *pt, int psize, nl_image *co
     const nl_image *o = photos[(i + 1) % np];
     int c = o->width < o->height ? o->width : o->height;
     nl_image *sq = square(o, c < psize ? c : psize);
-    nl_study_example_compare(photos[i], sq, names[i], "another photograph", 0, min_share,
-                             max_ratio, max_ks, bt, sm);
+    nl_error err;
+    if (nl_study_example_compare(photos[i], sq, names[i], "another photograph", 0, min_share,
+                                 max_ratio, max_ks, bt, sm, &err))
+      nl_harness_die(r, 1, "%s", err.msg);
     cpass += nl_table_value(sm, sm->nrows - 1, "pass") != 0;
     l3_structure a, b;
     l3_structure_measure(photos[i], &a);

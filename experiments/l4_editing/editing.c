@@ -15,12 +15,13 @@ static nl_image *synth(const nl_byexample_params *p, int size, unsigned long see
   return nl_byexample_synthesize(p, size, size, seed, &so, &im, err) ? NULL : im;
 }
 
-static void luminance_power(const nl_image *im, int nb, double *power)
+static nl_status luminance_power(const nl_image *im, int nb, double *power, nl_error *err)
 {
   double *v = nl_xmalloc((size_t)im->width * im->height * sizeof *v);
   nl_byexample_luminance(im, v);
-  nl_byexample_band_power(v, im->width, im->height, nb, power);
+  nl_status st = nl_byexample_band_power(v, im->width, im->height, nb, power, err);
   free(v);
+  return st;
 }
 
 nl_status l4_edit_replicate(const nl_image *ex, int nfine, double factor, unsigned long seed,
@@ -48,9 +49,16 @@ nl_status l4_edit_replicate(const nl_image *ex, int nfine, double factor, unsign
     }
     double pc[NL_WAVELET_MAX_BANDS], pz[NL_WAVELET_MAX_BANDS];
     out->nbands = p[h].nbands;
-    luminance_power(b, out->nbands, out->power[h]);
-    luminance_power(c, out->nbands, pc);
-    luminance_power(z, out->nbands, pz);
+    nl_status st = luminance_power(b, out->nbands, out->power[h], err);
+    if (!st) st = luminance_power(c, out->nbands, pc, err);
+    if (!st) st = luminance_power(z, out->nbands, pz, err);
+    nl_image_free(c);
+    nl_image_free(z);
+    c = z = NULL;
+    if (st) {
+      nl_image_free(b);
+      return st;
+    }
     for (int k = 0; k < out->nbands; k++) {
       out->ratio[h][k] = pc[k] / out->power[h][k];
       out->floor[h][k] = pz[k] / out->power[h][k];
@@ -80,7 +88,12 @@ nl_status l4_edit_replicate(const nl_image *ex, int nfine, double factor, unsign
   nl_wavelet_tile_seed(t, nl_seed_stream(seed, "l4.leakage", 0));
   double *share = nl_xmalloc((size_t)nb * nb * sizeof *share);
   double var[NL_WAVELET_MAX_BANDS];
-  nl_byexample_band_leakage(t, size, nb, nl_seed_stream(seed, "l4.leakage", 1), share, var);
+  nl_status st = nl_byexample_band_leakage(t, size, nb, nl_seed_stream(seed, "l4.leakage", 1), share, var, err);
+  if (st) {
+    free(share);
+    nl_wavelet_tile_free(t);
+    return st;
+  }
   for (int k = 0; k < nb; k++) {
     out->leak[k] = 0;
     for (int j = 0; j < nfine && j < nb; j++) out->leak[k] += share[(size_t)k * nb + j];

@@ -29,7 +29,7 @@ int main(int argc, char **argv)
                          "L4 - Frequency-based editing, solid extrapolation, morphing", argc, argv);
   nl_harness *r = q.r;
   int quick = nl_harness_quick(r);
-  q.size = (int)nl_harness_param_int(r, "size", quick ? 128 : 512, 16, 4096,
+  q.size = (int)nl_harness_param_fft_size(r, "size", quick ? 128 : 512, 16, 4096,
                                      "side in pixels of the exemplar and the edited textures "
                                      "(quick 128)");
   q.nfine = (int)nl_harness_param_int(r, "edit_bands", 3, 1, 16,

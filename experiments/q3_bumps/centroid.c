@@ -15,7 +15,11 @@ double q3_centroid(const double *h, int w, double extent)
   double m = 0;
   for (size_t q = 0; q < n; q++) m += h[q] / n;
   for (size_t q = 0; q < n; q++) c[q] = h[q] - m;
-  nl_spectrum_radial(c, w, w, nb, f, p);
+  if (nl_spectrum_radial(c, w, w, nb, f, p, NULL)) {   /* w passed nl_harness_param_fft_size */
+    free(c);
+    free(f);
+    return NAN;
+  }
   double sp = 0, sfp = 0;
   for (int b = 0; b < nb; b++) {
     sp += p[b];

@@ -26,7 +26,7 @@ int main(int argc, char **argv)
 {
   nl_harness *r =
       nl_harness_begin("q3_bumps", "Q3 - Fractal bump wrinkles with F2 - F1 - F1F1", argc, argv);
-  int size = (int)nl_harness_param_int(r, "size", nl_harness_quick(r) ? 96 : 256, 8, 4096,
+  int size = (int)nl_harness_param_fft_size(r, "size", nl_harness_quick(r) ? 96 : 256, 8, 4096,
                                        "side in pixels of the shaded bump images (quick 96)");
   double extent = nl_harness_param(r, "extent", 2.0, 1e-3, 1e4,
                                    "side of the square of the plane the images cover, in "

@@ -675,9 +675,35 @@ double nl_mem_physical(void)
   return (double)pages * (double)size;
 }
 
+static double mem_cap;   /* nl_mem_cap: 0 for none */
+
+void nl_mem_cap(double bytes) { mem_cap = bytes > 0 ? bytes : 0; }
+
+/* MemAvailable is the kernel's estimate of what can be allocated without
+ * swapping (free memory plus the reclaimable caches); a machine whose other
+ * processes hold most of its RAM cannot give us the total. Linux before 3.14
+ * has no MemAvailable: the total is the best we know there. */
+double nl_mem_available(void)
+{
+  double avail = 0, total = 0;
+  FILE *f = fopen("/proc/meminfo", "r");
+  if (f) {
+    char line[256];
+    while (fgets(line, sizeof line, f)) {
+      double kb;
+      if (sscanf(line, "MemAvailable: %lf kB", &kb) == 1) avail = kb * 1024;
+      else if (sscanf(line, "MemTotal: %lf kB", &kb) == 1) total = kb * 1024;
+    }
+    fclose(f);
+  }
+  double m = avail > 0 ? avail : total > 0 ? total : nl_mem_physical();
+  if (mem_cap > 0 && (m <= 0 || mem_cap < m)) m = mem_cap;
+  return m;
+}
+
 int nl_mem_fits(double bytes)
 {
-  double m = nl_mem_physical();
+  double m = nl_mem_available();
   return m <= 0 || bytes <= m;
 }
 

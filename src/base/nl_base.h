@@ -145,6 +145,10 @@ nl_status nl_mkdir_p(const char *dir, nl_error *err);
  * before their work starts. */
 nl_status nl_path_check_writable(const char *path, nl_error *err);
 
+/* A status that must be looked at: ignoring one is a compiler warning (the
+ * Fourier transforms' size refusals, spectrum/nl_spectrum.h). */
+#define NL_MUST_CHECK __attribute__((warn_unused_result))
+
 /* ---- memory a request needs ---------------------------------------------
  *
  * Places that allocate sizes derived from input (rows of a table, pixels of
@@ -153,8 +157,18 @@ nl_status nl_path_check_writable(const char *path, nl_error *err);
  * nl_xmalloc or being killed. */
 /* Physical memory of this machine in bytes (sysconf), or 0 if unknown. */
 double nl_mem_physical(void);
-/* 1 when `bytes` fits in the machine's physical memory (always when unknown). */
+/* What can be allocated now, in bytes: MemAvailable of /proc/meminfo (free
+ * memory and reclaimable caches), else MemTotal, else nl_mem_physical; 0 if
+ * unknown. Never more than a cap set by nl_mem_cap. */
+double nl_mem_available(void);
+/* 1 when `bytes` fits in what is available (nl_mem_available; always when
+ * unknown). The one place a request is held to the machine's memory. */
 int nl_mem_fits(double bytes);
+/* Caps nl_mem_available for this process (0: no cap). A test hook: the
+ * render and example tools set it from the environment variable
+ * NL_MEMAVAILABLE_OVERRIDE (bytes), so that a refusal is tested at sizes
+ * this machine could allocate; the library reads no environment for it. */
+void nl_mem_cap(double bytes);
 /* "160 GB", "894 MB", "512 kB", "12 bytes" (decimal units) into buf[32]; returns buf. */
 const char *nl_format_bytes(char *buf, double bytes);
 /* Joins dir and name with one '/'. Caller frees. */

@@ -250,6 +250,13 @@ NL_TEST(memory_sizes)
   NL_CHECK(strcmp(nl_format_bytes(b, 12), "12 bytes") == 0);
   NL_CHECK(nl_mem_physical() > 1e6);
   NL_CHECK(nl_mem_fits(1e6) && !nl_mem_fits(1e18));
+  /* Held to what is available (MemAvailable), not the total; a cap lowers it. */
+  double avail = nl_mem_available();
+  NL_CHECK(avail > 1e6 && avail <= nl_mem_physical());
+  nl_mem_cap(5e6);
+  NL_CHECK(nl_mem_available() == 5e6 && nl_mem_fits(4e6) && !nl_mem_fits(6e6));
+  nl_mem_cap(0);
+  NL_CHECK(nl_mem_available() > 5e6);
 }
 
 static char *slurp_file(const char *path)

@@ -32,10 +32,14 @@ static int band_of(double m)
   return e - 1;
 }
 
-void nl_byexample_band_power(const double *img, int w, int h, int nbands, double *power)
+nl_status nl_byexample_band_power(const double *img, int w, int h, int nbands, double *power,
+                                  nl_error *err)
 {
   double *P = nl_xmalloc((size_t)w * h * sizeof *P);
-  nl_spectrum_power2(img, w, h, P);
+  if (nl_spectrum_power2(img, w, h, P, err)) {
+    free(P);
+    return NL_EINVAL;
+  }
   memset(power, 0, (size_t)nbands * sizeof *power);
   for (int v = 0; v < h; v++) {
     double fy = fabs(nl_spectrum_freq(v, h));
@@ -47,17 +51,21 @@ void nl_byexample_band_power(const double *img, int w, int h, int nbands, double
     }
   }
   free(P);
+  return NL_OK;
 }
 
-void nl_byexample_weights(const double *img, int w, int h, int nbands, double sigma2, double *wts)
+nl_status nl_byexample_weights(const double *img, int w, int h, int nbands, double sigma2, double *wts,
+                               nl_error *err)
 {
-  nl_byexample_band_power(img, w, h, nbands, wts);
+  if (nl_byexample_band_power(img, w, h, nbands, wts, err)) return NL_EINVAL;
   for (int k = 0; k < nbands; k++) wts[k] = sqrt(wts[k] / sigma2);
+  return NL_OK;
 }
 
-void nl_byexample_band_leakage(const nl_wavelet_tile *t, int size, int nbands, unsigned long seed,
-                               double *share, double *var)
+nl_status nl_byexample_band_leakage(const nl_wavelet_tile *t, int size, int nbands, unsigned long seed,
+                                    double *share, double *var, nl_error *err)
 {
+  if (nl_spectrum_check_size(size, size, err)) return NL_EINVAL;
   double *img = nl_xmalloc((size_t)size * size * sizeof *img), w[NL_WAVELET_MAX_BANDS];
   for (int k = 0; k < nbands; k++) {
     nl_wavelet_bands b;
@@ -65,12 +73,16 @@ void nl_byexample_band_leakage(const nl_wavelet_tile *t, int size, int nbands, u
     nl_wavelet_bands_init(&b, nbands, w, t->n, seed, NULL);
     nl_wavelet_bands_grid(t, &b, size, size, 0, 1, img);
     double *row = share + (size_t)k * nbands;
-    nl_byexample_band_power(img, size, size, nbands, row);
+    if (nl_byexample_band_power(img, size, size, nbands, row, err)) {   /* checked above */
+      free(img);
+      return NL_EINVAL;
+    }
     var[k] = 0;
     for (int j = 0; j < nbands; j++) var[k] += row[j];
     for (int j = 0; j < nbands; j++) row[j] /= var[k];
   }
   free(img);
+  return NL_OK;
 }
 
 double nl_byexample_sigma2(int n)
@@ -319,7 +331,8 @@ void nl_byexample_match_kind(double *v, size_t n, double sigma, nl_byexample_his
  * sqrt(P(a) P(b)). Channels missing (flat) or bands without power get 0;
  * each band's 3 x 3 matrix is shrunk towards the identity until it is
  * positive definite (its Cholesky factor mixes the noise in synthesis). */
-static void band_correlation(double *const *plane, int w, int h, nl_byexample_params *p)
+static nl_status band_correlation(double *const *plane, int w, int h, nl_byexample_params *p,
+                                  nl_error *err)
 {
   static const int pair[3][2] = {{0, 1}, {0, 2}, {1, 2}};
   size_t n = (size_t)w * h;
@@ -328,7 +341,10 @@ static void band_correlation(double *const *plane, int w, int h, nl_byexample_pa
     const double *a = plane[pair[q][0]], *b = plane[pair[q][1]];
     if (!a || !b) continue;
     for (size_t i = 0; i < n; i++) s[i] = a[i] + b[i];
-    nl_byexample_band_power(s, w, h, p->nbands, sum);
+    if (nl_byexample_band_power(s, w, h, p->nbands, sum, err)) {
+      free(s);
+      return NL_EINVAL;
+    }
     for (int k = 0; k < p->nbands; k++) {
       double pa = p->target[pair[q][0]][k], pb = p->target[pair[q][1]][k];
       p->corr[q][k] = pa > 0 && pb > 0 ? fmax(-0.99, fmin(0.99, (sum[k] - pa - pb) / (2 * sqrt(pa * pb)))) : 0;
@@ -339,6 +355,7 @@ static void band_correlation(double *const *plane, int w, int h, nl_byexample_pa
     double L[3][3];
     while (nl_byexample_band_cholesky(p, k, L)) for (int q = 0; q < 3; q++) p->corr[q][k] *= 0.9;
   }
+  return NL_OK;
 }
 
 int nl_byexample_band_cholesky(const nl_byexample_params *p, int k, double L[3][3])
@@ -398,14 +415,18 @@ nl_status nl_byexample_analyse(const nl_image *im, const nl_byexample_options *o
     nl_byexample_quantiles(plane[c], n, ext);
     nl_byexample_hist(plane[c], n, p->hist_kind, p->hist[c]);
     int flat = ext[0] == ext[NL_BYEXAMPLE_HIST - 1];
-    if (p->calibrate && !flat) nl_byexample_band_power(plane[c], im->width, im->height, p->nbands, p->target[c]);
+    /* The size passed nl_spectrum_check_size above: these transforms cannot
+     * be refused, but their status is still the one returned. */
+    if (p->calibrate && !flat && !st)
+      st = nl_byexample_band_power(plane[c], im->width, im->height, p->nbands, p->target[c], err);
     if (p->calibrate && !flat) { keep[c] = nl_xmalloc(n * sizeof(double)); memcpy(keep[c], plane[c], n * sizeof(double)); }
     if (p->histogram && !flat) nl_byexample_gaussianize(plane[c], n);
-    if (!flat) nl_byexample_weights(plane[c], im->width, im->height, p->nbands, p->sigma2, p->w[c]);
+    if (!flat && !st) st = nl_byexample_weights(plane[c], im->width, im->height, p->nbands, p->sigma2, p->w[c], err);
     free(plane[c]);
   }
-  if (p->calibrate && p->channels == 3) band_correlation(keep, im->width, im->height, p);
+  if (!st && p->calibrate && p->channels == 3) st = band_correlation(keep, im->width, im->height, p, err);
   for (int c = 0; c < 3; c++) free(keep[c]);
+  if (st) return st;
   /* Finite pixels can still overflow (values near FLT_MAX squared in the
    * PCA): a result synthesis would reject is an error here. */
   for (int c = 0; c < p->channels; c++) {
@@ -445,11 +466,14 @@ static void match_ranked(const nl_byexample_params *p, int c, double *v, size_t 
 
 /* Removes from img the frequencies of eq. 13 bands >= nb (below the
  * exemplar's lowest frequency) and the DC. */
-static void high_pass(double *img, int w, int h, int nb)
+static nl_status high_pass(double *img, int w, int h, int nb, nl_error *err)
 {
   size_t n = (size_t)w * h;
   double *F = nl_xmalloc(2 * n * sizeof *F);
-  nl_spectrum_fft2(img, w, h, F);
+  if (nl_spectrum_fft2(img, w, h, F, err)) {
+    free(F);
+    return NL_EINVAL;
+  }
   for (int v = 0; v < h; v++) {
     double fy = fabs(nl_spectrum_freq(v, h));
     for (int u = 0; u < w; u++) {
@@ -457,8 +481,9 @@ static void high_pass(double *img, int w, int h, int nb)
       if (m == 0 || band_of(m) >= nb) F[2 * ((size_t)v * w + u)] = F[2 * ((size_t)v * w + u) + 1] = 0;
     }
   }
-  nl_spectrum_fft2_inverse(F, w, h, img);
+  nl_status st = nl_spectrum_fft2_inverse(F, w, h, img, err);
   free(F);
+  return st;
 }
 
 /* Synthesis-time calibration (nl_byexample.h). Every channel's noise bands
@@ -470,9 +495,11 @@ static void high_pass(double *img, int w, int h, int nb)
  * histogram by rank, measure P, and solve NNLS A^T g^2 = target * S / P
  * (what the sum needs for the matched image to hit the target); the last
  * sum, matched, is the output. */
-static void calibrate_channels(const nl_byexample_params *p, const nl_wavelet_tile *t, double gain, int w, int h,
-                               unsigned long seed, const nl_byexample_synth_options *opt, double **out)
+static nl_status calibrate_channels(const nl_byexample_params *p, const nl_wavelet_tile *t, double gain,
+                                    int w, int h, unsigned long seed,
+                                    const nl_byexample_synth_options *opt, double **out, nl_error *err)
 {
+  nl_status st = NL_OK;
   size_t n = (size_t)w * h;
   int nb = p->nbands, C = p->channels, nbs = nl_byexample_band_count(w, h), nbo = nbs < nb ? nbs : nb;
   double *B[3], g2[NL_WAVELET_MAX_BANDS], P[NL_WAVELET_MAX_BANDS], S[NL_WAVELET_MAX_BANDS], b[NL_WAVELET_MAX_BANDS];
@@ -484,7 +511,7 @@ static void calibrate_channels(const nl_byexample_params *p, const nl_wavelet_ti
       for (int j = 0; j < nb; j++) one.w[c][j] = j == k;
       nl_byexample_channel_noise(&one, c, t, gain, w, h, seed, opt, B[c] + (size_t)k * n);
       /* only the 3 coarsest noise bands reach below the exemplar's lowest frequency */
-      if (nbs > nb && k >= nb - 3) high_pass(B[c] + (size_t)k * n, w, h, nb);
+      if (!st && nbs > nb && k >= nb - 3) st = high_pass(B[c] + (size_t)k * n, w, h, nb, err);
     }
   }
   for (int k = 0; k < nb && C == 3; k++) {
@@ -499,14 +526,14 @@ static void calibrate_channels(const nl_byexample_params *p, const nl_wavelet_ti
       }
     }
   }
-  for (int c = 0; c < C; c++) {
-    for (int k = 0; k < nb; k++) {
+  for (int c = 0; c < C && !st; c++) {
+    for (int k = 0; k < nb && !st; k++) {
       g2[k] = p->w[c][k] * p->w[c][k];
-      nl_byexample_band_power(B[c] + (size_t)k * n, w, h, nbo, A + (size_t)k * nbo);
+      st = nl_byexample_band_power(B[c] + (size_t)k * n, w, h, nbo, A + (size_t)k * nbo, err);
     }
     for (int j = 0; j < nbo; j++)
       for (int k = 0; k < nb; k++) M[j * nb + k] = A[k * nbo + j];
-    for (int it = 0; it <= p->calibrate; it++) {
+    for (int it = 0; it <= p->calibrate && !st; it++) {
       memset(out[c], 0, n * sizeof *out[c]);
       for (int k = 0; k < nb; k++)
         if (g2[k] > 0) {
@@ -515,7 +542,7 @@ static void calibrate_channels(const nl_byexample_params *p, const nl_wavelet_ti
         }
       match_ranked(p, c, out[c], n, opt ? opt->spline : 0);
       if (it == p->calibrate) break;
-      nl_byexample_band_power(out[c], w, h, nbo, P);
+      if ((st = nl_byexample_band_power(out[c], w, h, nbo, P, err))) break;
       for (int j = 0; j < nbo; j++) {
         S[j] = 0;
         for (int k = 0; k < nb; k++) S[j] += g2[k] * A[k * nbo + j];
@@ -526,6 +553,7 @@ static void calibrate_channels(const nl_byexample_params *p, const nl_wavelet_ti
     }
   }
   for (int c = 0; c < C; c++) free(B[c]);
+  return st;
 }
 
 nl_status nl_byexample_synth_check(const nl_byexample_synth_options *opt, nl_error *err)
@@ -554,13 +582,24 @@ nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, un
     return nl_fail(err, NL_EINVAL, "output size %d x %d is %.3g pixels, more than the limit of 1e9",
                    w, h, (double)w * h);
   /* channel planes (double) and the image (float), checked before allocating */
-  double need = (double)w * h * p->channels * (sizeof(double) + sizeof(float));
-  if (!nl_mem_fits(need)) {
-    char b1[32], b2[32];
-    return nl_fail(err, NL_ENOMEM, "output %d x %d with %d channels needs %s; this machine has %s",
-                   w, h, p->channels, nl_format_bytes(b1, need), nl_format_bytes(b2, nl_mem_physical()));
-  }
   int solid = opt && opt->solid;
+  /* Calibration holds every band of every channel at the output size. The
+   * method never depends on the machine: when that does not fit, the
+   * synthesis is refused, saying what calibration needs. */
+  int cal = p->calibrate > 0 && p->histogram && !solid && !(opt && opt->scale > 0 && opt->scale != 1);
+  double need = (double)w * h * p->channels * (sizeof(double) + sizeof(float));
+  double cal_need = cal ? (double)w * h * p->nbands * p->channels * sizeof(double) : 0;
+  if (!nl_mem_fits(need + cal_need)) {
+    char b1[32], b2[32], b3[32];
+    if (cal && nl_mem_fits(need))
+      return nl_fail(err, NL_ENOMEM, "output %d x %d with %d channels and %d bands needs %s with "
+                     "the calibration its parameters ask for (%s without); %s is available", w, h, p->channels, p->nbands,
+                     nl_format_bytes(b1, need + cal_need), nl_format_bytes(b2, need),
+                     nl_format_bytes(b3, nl_mem_available()));
+    return nl_fail(err, NL_ENOMEM, "output %d x %d with %d channels needs %s%s; %s is available",
+                   w, h, p->channels, nl_format_bytes(b1, need + cal_need),
+                   cal ? " with calibration" : "", nl_format_bytes(b2, nl_mem_available()));
+  }
   nl_wavelet_tile *t = nl_wavelet_tile_alloc(solid ? 3 : 2, solid ? NL_BYEXAMPLE_TILE3 : p->tile);
   if (!t) return nl_fail(err, NL_EINVAL, "tile period %d not even and >= 8", p->tile);
   nl_wavelet_tile_seed(t, seed);
@@ -570,8 +609,6 @@ nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, un
   double gain = sqrt(p->sigma2 / nl_wavelet_tile_variance(t, solid ? 2 : 4));
   size_t n = (size_t)w * h;
   double *plane[3];
-  int cal = p->calibrate > 0 && p->histogram && !solid && !(opt && opt->scale > 0 && opt->scale != 1) &&
-            nl_mem_fits(need + (double)n * p->nbands * p->channels * sizeof(double));
   /* Calibration measures band powers by FFT of the output: O(n^2) for a
    * side with a large prime factor, as in the analysis. */
   if (cal && nl_spectrum_check_size(w, h, err)) {
@@ -579,7 +616,11 @@ nl_status nl_byexample_synthesize(const nl_byexample_params *p, int w, int h, un
     return NL_EINVAL;
   }
   for (int c = 0; c < p->channels; c++) plane[c] = nl_xmalloc(n * sizeof(double));
-  if (cal) calibrate_channels(p, t, gain, w, h, seed, opt, plane);
+  if (cal && calibrate_channels(p, t, gain, w, h, seed, opt, plane, err)) {   /* size checked above */
+    nl_wavelet_tile_free(t);
+    for (int c = 0; c < p->channels; c++) free(plane[c]);
+    return NL_EINVAL;
+  }
   for (int c = 0; c < p->channels && !cal; c++) {
     nl_byexample_channel_noise(p, c, t, gain, w, h, seed, opt, plane[c]);
     if (p->histogram) {
@@ -606,11 +647,15 @@ void nl_byexample_attenuate(nl_byexample_params *p, int nfine, double factor)
     }
 }
 
-nl_image *nl_byexample_spectrum_image(const double *img, int w, int h, double decades)
+nl_image *nl_byexample_spectrum_image(const double *img, int w, int h, double decades, nl_error *err)
 {
   size_t n = (size_t)w * h;
   double *P = nl_xmalloc(n * sizeof *P), *L = nl_xmalloc(n * sizeof *L), top = -INFINITY;
-  nl_spectrum_power2(img, w, h, P);
+  if (nl_spectrum_power2(img, w, h, P, err)) {
+    free(P);
+    free(L);
+    return NULL;
+  }
   for (int v = 0; v < h; v++)
     for (int u = 0; u < w; u++) {
       double l = log10(P[(size_t)v * w + u] + 1e-300);

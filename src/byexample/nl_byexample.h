@@ -77,8 +77,10 @@
  * the decorrelated channel before gaussianisation (target), and for 3
  * channels the per-band correlation of each channel pair (corr01, corr02,
  * corr12; by polarisation, shrunk until each band's 3x3 matrix is positive
- * definite). Synthesis (2D, scale 1, histogram on, memory permitting) draws
- * every channel's noise bands B_k once; when the output is larger than the
+ * definite). Synthesis (2D, scale 1, histogram on) draws every channel's
+ * noise bands B_k once (all of them held at the output size: an output whose
+ * bands do not fit in the memory available is refused with NL_ENOMEM, never
+ * synthesized uncalibrated); when the output is larger than the
  * photo, removes from the 3 coarsest bands the frequencies below the photo's
  * lowest band (and the DC); mixes each band across channels by the Cholesky
  * factor of its correlation; measures the leakage matrix A[k][j] = eq. 13
@@ -159,16 +161,20 @@ typedef struct {
 /* ---- noise by example (sec. 4) ---------------------------------------- */
 
 int nl_byexample_band_count(int w, int h);
-/* power[k], k < nbands: eq. 13 band power of a w x h image (DC excluded). */
-void nl_byexample_band_power(const double *img, int w, int h, int nbands, double *power);
+/* power[k], k < nbands: eq. 13 band power of a w x h image (DC excluded).
+ * These and the functions below that transform an image return NL_EINVAL
+ * (NULL for an image) for a size nl_spectrum_check_size refuses. */
+NL_MUST_CHECK nl_status nl_byexample_band_power(const double *img, int w, int h, int nbands, double *power,
+                                  nl_error *err);
 /* Eq. 12. */
-void nl_byexample_weights(const double *img, int w, int h, int nbands, double sigma2, double *wts);
+NL_MUST_CHECK nl_status nl_byexample_weights(const double *img, int w, int h, int nbands, double sigma2, double *wts,
+                               nl_error *err);
 /* How single wavelet-noise bands spread over eq. 13's bands: for k <
  * nbands, a size x size image of N(2^-k x + o_k) (offsets from seed) has
  * total power var[k] (DC excluded), of which share[k * nbands + j] falls
  * in band j. Ideal orthogonal bands (eq. 7) would give the identity. */
-void nl_byexample_band_leakage(const nl_wavelet_tile *t, int size, int nbands, unsigned long seed,
-                               double *share, double *var);
+NL_MUST_CHECK nl_status nl_byexample_band_leakage(const nl_wavelet_tile *t, int size, int nbands, unsigned long seed,
+                                    double *share, double *var, nl_error *err);
 /* Band variance of our 2D wavelet noise for tile period n: the mean of
  * nl_wavelet_tile_variance(t, 4) over tiles seeded 1..4 (cached). */
 double nl_byexample_sigma2(int n);
@@ -269,7 +275,7 @@ void nl_byexample_rotation_error(const double M[3][3], double *det, double *orth
 
 /* log10 of the power spectrum (nl_spectrum_power2), DC at the centre, mapped from
  * [max - decades, max] to [0, 1]: a grey picture of a spectrum. */
-nl_image *nl_byexample_spectrum_image(const double *img, int w, int h, double decades);
+nl_image *nl_byexample_spectrum_image(const double *img, int w, int h, double decades, nl_error *err);
 
 /* ---- measures of a synthesis against its exemplar (L3's photos table) --- */
 

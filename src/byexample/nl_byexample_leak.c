@@ -15,20 +15,26 @@ enum { MAXB = NL_WAVELET_MAX_BANDS };
 
 const char *const nl_byexample_estimator_names[NL_BYEXAMPLE_ESTIMATORS] = {"eq12", "eq12_taper", "nnls_raw", "corrected"};
 
-void nl_byexample_band_power_taper(const double *img, int w, int h, int nbands, double frac, double *power)
+nl_status nl_byexample_band_power_taper(const double *img, int w, int h, int nbands, double frac,
+                                        double *power, nl_error *err)
 {
-  if (frac <= 0) { nl_byexample_band_power(img, w, h, nbands, power); return; }
+  if (frac <= 0) return nl_byexample_band_power(img, w, h, nbands, power, err);
   double *win = nl_xmalloc((size_t)w * h * sizeof *win);
   nl_spectrum_taper2(img, w, h, frac, win);
-  nl_byexample_band_power(win, w, h, nbands, power);
+  nl_status st = nl_byexample_band_power(win, w, h, nbands, power, err);
   free(win);
+  return st;
 }
 
-/* Both band powers of one image: one render serves both tapers. */
+/* Both band powers of one image: one render serves both tapers. The size
+ * is a transfer matrix's, which nl_byexample_transfer_measure checked; were
+ * it refused all the same, the powers are NaN, never a transform's worth of
+ * minutes. */
 static void powers(const double *img, int w, int h, int nbands, double frac, double *raw, double *tapered)
 {
-  nl_byexample_band_power_taper(img, w, h, nbands, 0, raw);
-  nl_byexample_band_power_taper(img, w, h, nbands, frac, tapered);
+  if (nl_byexample_band_power_taper(img, w, h, nbands, 0, raw, NULL) ||
+      nl_byexample_band_power_taper(img, w, h, nbands, frac, tapered, NULL))
+    for (int k = 0; k < nbands; k++) raw[k] = tapered[k] = NAN;
 }
 
 /* The transfer measurement's items (s, i): replicate s's noise of unit
@@ -63,10 +69,12 @@ static void transfer_item(void *ctx, size_t item, int th)
   powers(j->img[th], j->w, j->h, j->nbands, j->frac, j->P[item][0], j->P[item][1]);
 }
 
-void nl_byexample_transfer_measure(nl_byexample_transfer *T, int tile, int w, int h, int nbands, double frac,
-                                   int nseeds, unsigned long seed, int threads)
+nl_status nl_byexample_transfer_measure(nl_byexample_transfer *T, int tile, int w, int h, int nbands,
+                                        double frac, int nseeds, unsigned long seed, int threads,
+                                        nl_error *err)
 {
   memset(T, 0, sizeof *T);
+  if (nl_spectrum_check_size(w, h, err)) return NL_EINVAL;
   T->w = w; T->h = h; T->nbands = nbands; T->tile = tile; T->frac = frac;
   T->sigma2 = nl_byexample_sigma2(tile);
   size_t n = (size_t)nseeds * (size_t)nbands;
@@ -85,6 +93,7 @@ void nl_byexample_transfer_measure(nl_byexample_transfer *T, int tile, int w, in
   }
   free(j->P);
   free(j);
+  return NL_OK;
 }
 
 /* Least squares on the columns cols[0..np-1] of M (m x n, m >= np) by
@@ -287,7 +296,9 @@ int nl_byexample_fit_all(const double *img, int w, int h, int tile, double frac,
 {
   nl_byexample_transfer T;
   double wts[MAXB];
-  nl_byexample_transfer_measure(&T, tile, w, h, nl_byexample_band_count(w, h), frac, nseeds, tseed, 1);   /* callers thread over images */
+  if (nl_byexample_transfer_measure(&T, tile, w, h, nl_byexample_band_count(w, h), frac, nseeds, tseed, 1,
+                                    NULL))   /* callers thread over images */
+    return -1;
   for (int q = 0; q < NL_BYEXAMPLE_ESTIMATORS; q++) {
     nl_byexample_estimate(&T, q, img, wts);
     nl_byexample_fit_residual(&T, wts, img, nsyn, rseed, resid[q]);

@@ -26,7 +26,7 @@
  *   corrected  steps 1-3
  *
  *   nl_byexample_transfer T;
- *   nl_byexample_transfer_measure(&T, NL_BYEXAMPLE_TILE, w, h, nbands, 0.25, 8, seed, threads);
+ *   nl_byexample_transfer_measure(&T, NL_BYEXAMPLE_TILE, w, h, nbands, 0.25, 8, seed, threads, &err);
  *   nl_byexample_estimate(&T, NL_BYEXAMPLE_CORRECTED, img, wts);
  */
 #ifndef NL_BYEXAMPLE_LEAK_H
@@ -49,15 +49,19 @@ typedef struct {
 
 /* Eq. 13 band powers of img, raw (frac 0: nl_byexample_band_power) or
  * tapered (nl_spectrum_taper2 with frac in (0, 1]; 1 is Hann). */
-void nl_byexample_band_power_taper(const double *img, int w, int h, int nbands, double frac, double *power);
+NL_MUST_CHECK nl_status nl_byexample_band_power_taper(const double *img, int w, int h, int nbands, double frac,
+                                        double *power, nl_error *err);
 
 /* Measures A (raw and tapered by frac) on w x h noise: replicate s seeds the tile
  * (period `tile`) and the band offsets from nl_seed_stream(seed,
  * "byexample.transfer", s), s < nseeds. The (replicate, band) renders run
  * on `threads` threads (nl_parallel_for; summed in order afterwards, so A
- * does not depend on the thread count). */
-void nl_byexample_transfer_measure(nl_byexample_transfer *T, int tile, int w, int h, int nbands, double frac,
-                                   int nseeds, unsigned long seed, int threads);
+ * does not depend on the thread count). NL_EINVAL, nothing measured, for a
+ * size nl_spectrum_check_size refuses: the functions taking T then never
+ * transform a refused size. */
+NL_MUST_CHECK nl_status nl_byexample_transfer_measure(nl_byexample_transfer *T, int tile, int w, int h, int nbands,
+                                        double frac, int nseeds, unsigned long seed, int threads,
+                                        nl_error *err);
 
 /* The weights of estimator `kind` (NL_BYEX_*) from a T->w x T->h image. */
 void nl_byexample_estimate(const nl_byexample_transfer *T, int kind, const double *img, double *wts);
@@ -102,7 +106,8 @@ void nl_byexample_fit_residual(const nl_byexample_transfer *T, const double *wts
 /* An image's fit by every estimator: A measured at the image's size
  * (nseeds noises from tseed), weights of each estimator, and their
  * nl_byexample_fit_residual (nsyn syntheses from rseed) into
- * resid[kind][taper]. Returns the band count. */
+ * resid[kind][taper]. Returns the band count, or -1 (nothing measured) for
+ * a size nl_spectrum_check_size refuses. */
 int nl_byexample_fit_all(const double *img, int w, int h, int tile, double frac, int nseeds, unsigned long tseed,
                          int nsyn, unsigned long rseed, double resid[NL_BYEXAMPLE_ESTIMATORS][2]);
 

@@ -22,7 +22,7 @@ NL_TEST(weights_of_known_noise)
     nl_wavelet_bands_init(&b, NB, truth, t->n, (unsigned long)s, NULL);
     nl_wavelet_bands_grid(t, &b, N, N, 0, 1, img);
     double w[NB];
-    nl_byexample_weights(img, N, N, NB, sigma2, w);
+    NL_CHECK(nl_byexample_weights(img, N, N, NB, sigma2, w, NULL) == NL_OK);
     for (int k = 0; k < NB; k++) est[k] += w[k] / SEEDS;
   }
   for (int k = 0; k < NB; k++) printf("  band %d: true %.3f est %.3f\n", k, truth[k], est[k]);
@@ -48,7 +48,7 @@ NL_TEST(band_power_is_parseval_without_dc)
   NL_CHECK(nl_byexample_band_count(N, N) == 6);
   NL_CHECK(nl_byexample_band_count(512, 512) == 9);
   NL_CHECK(nl_byexample_band_count(600, 16) == 9);
-  nl_byexample_band_power(img, N, N, 6, p);
+  NL_CHECK(nl_byexample_band_power(img, N, N, 6, p, NULL) == NL_OK);
   double s = 0;
   for (int k = 0; k < 6; k++) s += p[k];
   NL_CHECK_NEAR(s, ms, 1e-12);
@@ -56,7 +56,7 @@ NL_TEST(band_power_is_parseval_without_dc)
    * the top of (1/16, 1/8]). */
   for (int y = 0; y < N; y++)
     for (int x = 0; x < N; x++) img[y * N + x] = cos(NL_TWO_PI * x / 8.0);
-  nl_byexample_band_power(img, N, N, 6, p);
+  NL_CHECK(nl_byexample_band_power(img, N, N, 6, p, NULL) == NL_OK);
   NL_CHECK_NEAR(p[2], 0.5, 1e-12);
   NL_CHECK_NEAR(p[1] + p[3], 0, 1e-20);
 }
@@ -323,4 +323,11 @@ NL_TEST(prime_width_refused_quickly)
   NL_CHECK(nl_time_now() - t0 < 5.0);
   NL_CHECK(strstr(err.msg, "crop it to 32748 x 16") != NULL);
   nl_image_free(ex);
+  /* The band powers themselves (public, and under L1-L4's figures) refuse. */
+  double *img = nl_xcalloc((size_t)65521 * 16, sizeof *img), pw[NL_WAVELET_MAX_BANDS];
+  t0 = nl_time_now();
+  NL_CHECK(nl_byexample_band_power(img, 65521, 16, 4, pw, &err) == NL_EINVAL);
+  NL_CHECK(nl_byexample_weights(img, 65521, 16, 4, 1.0, pw, &err) == NL_EINVAL);
+  NL_CHECK(nl_time_now() - t0 < 1.0 && strstr(err.msg, "prime factor 65521"));
+  free(img);
 }

@@ -39,7 +39,7 @@ NL_TEST(transfer_matrix)
 {
   nl_byexample_transfer T;
   int nb = nl_byexample_band_count(128, 128);
-  nl_byexample_transfer_measure(&T, NL_BYEXAMPLE_TILE, 128, 128, nb, 1.0, 2, 7, 1);
+  NL_CHECK(nl_byexample_transfer_measure(&T, NL_BYEXAMPLE_TILE, 128, 128, nb, 1.0, 2, 7, 1, NULL) == NL_OK);
   double far[2] = {0, 0};
   for (int i = 0; i < nb; i++) {
     double tot = 0;

@@ -195,7 +195,8 @@ typedef struct {
 /* From interleaved float pixels (width x height, row 0 at the top, 1 grey, 2
  * grey+alpha, 3 RGB or 4 RGBA channels: nl_image's layout): D = the mean red
  * (grey) of the cell's pixels weighted by alpha; cells of mean alpha < 1/2
- * carry no control. NL_EINVAL if no cell carries control, grid is outside
+ * carry no control. NL_EINVAL if a red (grey) or alpha value is outside
+ * [0, 1] (the first such pixel named), no cell carries control, grid is outside
  * 1..4096 or the raster is not one of those layouts. */
 nl_status nl_cheng_pattern_from_pixels(const float *data, int width, int height, int channels,
                                        int grid, nl_cheng_pattern **out, nl_error *err);

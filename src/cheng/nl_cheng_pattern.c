@@ -49,6 +49,18 @@ nl_status nl_cheng_pattern_from_pixels(const float *data, int width, int height,
                    width, height, channels);
   const nl_pixels px = {data, width, height, channels}, *im = &px;
   if (grid < 1 || grid > 4096) return nl_fail(err, NL_EINVAL, "control grid %d out of range 1..4096", grid);
+  /* D is a fraction of the way from black to red (Fig 3.7) and alpha a
+   * weight: a float file's 1.5 or -0.2 is neither, and the cell mean would
+   * clamp it away unseen. */
+  for (int y = 0; y < height; y++)
+    for (int x = 0; x < width; x++) {
+      double v[2];
+      red_alpha(im, x, y, &v[0], &v[1]);
+      for (int k = 0; k < 2; k++)
+        if (!(v[k] >= 0 && v[k] <= 1))
+          return nl_fail(err, NL_EINVAL, "pixel (%d, %d): %s %g is outside [0, 1]", x, y,
+                         k ? "alpha" : channels < 3 ? "grey" : "red", v[k]);
+    }
   size_t cap = (size_t)grid * grid;
   nl_cheng_pattern *p = nl_xcalloc(1, sizeof *p);
   p->grid = grid;

@@ -301,6 +301,29 @@ NL_TEST(ks_median)
   NL_CHECK(m < 0.8276 / sqrt(512.0) && m > 0.97 * 0.8276 / sqrt(512.0));
 }
 
+/* A control value is a fraction of the way from black to red and alpha a
+ * weight: a float pattern's 1.5 or -0.25 is refused, naming the pixel. */
+NL_TEST(pattern_values_outside_unit_interval_refused)
+{
+  float px[4 * 6 * 4];
+  for (int k = 0; k < 4 * 6; k++) { px[4 * k] = 0.5f; px[4 * k + 1] = px[4 * k + 2] = 0; px[4 * k + 3] = 1; }
+  nl_cheng_pattern *p = NULL;
+  nl_error err;
+  NL_CHECK(nl_cheng_pattern_from_pixels(px, 6, 4, 4, 4, &p, &err) == NL_OK && p);
+  nl_cheng_pattern_free(p);
+  const float bad[] = {1.5f, -0.25f, NAN};
+  for (int b = 0; b < 3; b++) {
+    px[4 * (2 * 6 + 3)] = bad[b];
+    p = NULL;
+    NL_CHECK(nl_cheng_pattern_from_pixels(px, 6, 4, 4, 4, &p, &err) == NL_EINVAL && !p);
+    NL_CHECK(strstr(err.msg, "pixel (3, 2): red") && strstr(err.msg, "outside [0, 1]"));
+  }
+  px[4 * (2 * 6 + 3)] = 0.5f;
+  px[4 * 5 + 3] = 2.0f;   /* alpha of pixel (5, 0) */
+  NL_CHECK(nl_cheng_pattern_from_pixels(px, 6, 4, 4, 4, &p, &err) == NL_EINVAL && !p);
+  NL_CHECK(strstr(err.msg, "pixel (5, 0): alpha 2 is outside [0, 1]") != NULL);
+}
+
 int main(void) { return nl_test_run(); }
 
 /* Eq. 3.9, E = w1 E_KS + w2 E_Con, pinned on a table small enough to check by

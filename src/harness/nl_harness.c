@@ -2,6 +2,7 @@
 #include "harness/nl_harness.h"
 #include "harness/nl_build_info.h"
 #include "base/nl_parallel.h"
+#include "spectrum/nl_spectrum.h"
 #include "stats/nl_stats.h"
 
 #include <gsl/gsl_version.h>
@@ -454,6 +455,16 @@ long nl_harness_param_int(nl_harness *r, const char *name, long def, long lo, lo
   nl_error err;
   if (s && nl_parse_long(what, s, lo, hi, &v, &err)) nl_harness_die(r, 2, "%s", err.msg);
   nl_harness_note(r, "param", "%s=%ld", name, v);
+  return v;
+}
+
+long nl_harness_param_fft_size(nl_harness *r, const char *name, long def, long lo, long hi,
+                               const char *meaning)
+{
+  long v = nl_harness_param_int(r, name, def, lo, hi, meaning);
+  nl_error err;
+  if (nl_spectrum_check_size((int)v, (int)v, &err))
+    nl_harness_die(r, 2, "--set %s=%ld: %s", name, v, err.msg);
   return v;
 }
 

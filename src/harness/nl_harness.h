@@ -124,6 +124,13 @@ double nl_harness_param(nl_harness *r, const char *name, double def, double lo, 
                         const char *meaning);
 long nl_harness_param_int(nl_harness *r, const char *name, long def, long lo, long hi,
                           const char *meaning);
+/* An image side that is Fourier-transformed: nl_harness_param_int, and a
+ * side whose square nl_spectrum_check_size refuses (a large prime factor:
+ * minutes of O(n^2) transforms) is a bad value like one out of range,
+ * "NAME: --set size=1021: 1021 x 1021 pixels: ...", exit 2, before any work
+ * (and so for a sweep's --params --set check). */
+long nl_harness_param_fft_size(nl_harness *r, const char *name, long def, long lo, long hi,
+                               const char *meaning);
 /* Every parameter is declared: refuses a --set name none declared (exit 2,
  * one line listing the valid names); then, with --help or --params, prints
  * the list (nl_harness_params_print) and exits 0. Runs at the first write at

@@ -159,8 +159,13 @@ nl_status nl_image_check_bits(const char *path, int bits, nl_error *err)
   static const char *const integer_only[][2] = {
     {".png", "PNG"}, {".jpg", "JPEG"}, {".jpeg", "JPEG"}, {".bmp", "BMP"}, {".gif", "GIF"},
     {".ppm", "PNM"}, {".pgm", "PNM"}, {".pnm", "PNM"}, {".tga", "TGA"}, {".webp", "WebP"}};
-  if (bits != 32) return NL_OK;
   size_t len = strlen(path);
+  /* EXR stores half or float samples only: "8 bits" would be written as
+   * half and reported as what it is not. */
+  if (bits != 0 && bits != 16 && bits != 32 && len >= 4 && strcasecmp(path + len - 4, ".exr") == 0)
+    return nl_fail(err, NL_EINVAL, "%s: EXR holds 16-bit half or 32-bit float, not %d-bit; use "
+                   "16 or 32, or .png or .tif for 8 bits", path, bits);
+  if (bits != 32) return NL_OK;
   for (size_t i = 0; i < sizeof integer_only / sizeof *integer_only; i++) {
     size_t e = strlen(integer_only[i][0]);
     if (len >= e && strcasecmp(path + len - e, integer_only[i][0]) == 0)

@@ -55,7 +55,9 @@ nl_status nl_image_read(const char *path, nl_image **out, nl_error *err);
 nl_status nl_image_write(const nl_image *im, const char *path, int bits, nl_error *err);
 /* NL_EINVAL (and nl_image_write refuses) when path's format cannot hold
  * `bits` as asked: 32-bit float to an integer format (PNG, JPEG, BMP, GIF,
- * PNM, TGA, WebP), which OpenImageIO would quietly clip to 0..1 at 8 bits.
+ * PNM, TGA, WebP), which OpenImageIO would quietly clip to 0..1 at 8 bits,
+ * and any depth but 16 (half) or 32 (float) to EXR (bits 0, a program's
+ * "not given", passes).
  * Programs call it before computing an image so a refusal costs nothing. */
 nl_status nl_image_check_bits(const char *path, int bits, nl_error *err);
 

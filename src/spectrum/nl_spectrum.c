@@ -2,6 +2,7 @@
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_fft_complex.h>
+#include <limits.h>
 #include <gsl/gsl_fft_real.h>
 #include <math.h>
 #include <stdlib.h>
@@ -99,8 +100,9 @@ static void stockham(int n, size_t s, int eo, double *x, double *y, const double
 /* Batched forward DFT in place: x holds s interleaved sequences; y is work. */
 static void fft1_batch(const fft1_plan *p, size_t s, double *x, double *y) { stockham(p->n, s, 0, x, y, p->tw); }
 
-nl_spectrum_fft2_plan *nl_spectrum_fft2_plan_alloc(int w, int h)
+nl_spectrum_fft2_plan *nl_spectrum_fft2_plan_alloc(int w, int h, nl_error *err)
 {
+  if (nl_spectrum_check_size(w, h, err)) return NULL;
   nl_spectrum_fft2_plan *p = nl_xcalloc(1, sizeof *p);
   p->w = w; p->h = h;
   p->fast = is_pow2(w) && is_pow2(h) && w >= 2;
@@ -238,17 +240,20 @@ static int size_passes(int w, int h)
   int lw, lh;
   prime_factor_sum(w, &lw);
   prime_factor_sum(h, &lh);
-  return nl_spectrum_fft2_cost(w, h) <= NL_SPECTRUM_MAX_COST || (lw <= 7 && lh <= 7);
+  return nl_spectrum_fft2_cost(w, h) <= NL_SPECTRUM_MAX_COST ||
+         (lw <= NL_SPECTRUM_MAX_FACTOR && lh <= NL_SPECTRUM_MAX_FACTOR);
 }
 
-/* The largest m <= n with which the other side `other` passes: made of 2,
- * 3, 5 and 7 (then passing needs the other side so too), or cheap enough. */
+/* The largest m <= n with which the other side `other` passes: its prime
+ * factors within NL_SPECTRUM_MAX_FACTOR (then passing needs the other side
+ * so too), or cheap enough. */
 static int crop_to(int n, int other, int is_width)
 {
   for (int m = n; m > 1; m--) {
     int largest;
     prime_factor_sum(m, &largest);
-    if (largest <= 7 || size_passes(is_width ? m : other, is_width ? other : m)) return m;
+    if (largest <= NL_SPECTRUM_MAX_FACTOR || size_passes(is_width ? m : other, is_width ? other : m))
+      return m;
   }
   return 1;
 }
@@ -268,20 +273,38 @@ nl_status nl_spectrum_check_size(int w, int h, nl_error *err)
     if (side_is_w) ch = crop_to(h, cw, 0);
     else cw = crop_to(w, ch, 1);
   }
-  return nl_fail(err, NL_EINVAL, "%d x %d pixels: %s %d has the prime factor %d, and a Fourier "
-                 "transform of it costs %.2g operations (limit %.0g); crop it to %d x %d",
+  return nl_fail(err, NL_EINVAL, "%d x %d pixels: %s %d has the prime factor %d (beyond %d), and a "
+                 "Fourier transform of it costs %.2g operations (limit %.0g); crop it to %d x %d",
                  w, h, side_is_w ? "width" : "height", side_is_w ? w : h, side_is_w ? lw : lh,
-                 nl_spectrum_fft2_cost(w, h), NL_SPECTRUM_MAX_COST, cw, ch);
+                 NL_SPECTRUM_MAX_FACTOR, nl_spectrum_fft2_cost(w, h), NL_SPECTRUM_MAX_COST, cw, ch);
 }
 
-void nl_spectrum_fft2(const double *img, int w, int h, double *F)
+nl_status nl_spectrum_check_length(size_t n, nl_error *err)
 {
-  nl_spectrum_fft2_plan *p = nl_spectrum_fft2_plan_alloc(w, h);
+  if (n > INT_MAX) return nl_fail(err, NL_EINVAL, "%zu samples: more than a transform takes", n);
+  int largest;
+  double cost = (double)n * prime_factor_sum((int)n, &largest);
+  if (largest <= NL_SPECTRUM_MAX_FACTOR || cost <= NL_SPECTRUM_MAX_COST) return NL_OK;
+  int m = (int)n;
+  for (; m > 1; m--) {
+    int l;
+    double c = (double)m * prime_factor_sum(m, &l);
+    if (l <= NL_SPECTRUM_MAX_FACTOR || c <= NL_SPECTRUM_MAX_COST) break;
+  }
+  return nl_fail(err, NL_EINVAL, "%zu samples: %zu has the prime factor %d (beyond %d), and a "
+                 "Fourier transform of it costs %.2g operations (limit %.0g); use %d",
+                 n, n, largest, NL_SPECTRUM_MAX_FACTOR, cost, NL_SPECTRUM_MAX_COST, m);
+}
+
+nl_status nl_spectrum_fft2(const double *img, int w, int h, double *F, nl_error *err)
+{
+  nl_spectrum_fft2_plan *p = nl_spectrum_fft2_plan_alloc(w, h, err);
+  if (!p) return NL_EINVAL;
   if (!p->fast) {   /* GSL's transform of the complex image, as before */
     for (size_t k = 0; k < (size_t)w * h; k++) { F[2 * k] = img[k]; F[2 * k + 1] = 0; }
     fft2_gsl(F, w, h, gsl_fft_forward);
     nl_spectrum_fft2_plan_free(p);
-    return;
+    return NL_OK;
   }
   int m = w / 2 + 1;
   double *H = nl_xmalloc(2 * (size_t)m * h * sizeof *H);
@@ -294,23 +317,27 @@ void nl_spectrum_fft2(const double *img, int w, int h, double *F)
   }
   free(H);
   nl_spectrum_fft2_plan_free(p);
+  return NL_OK;
 }
 
-void nl_spectrum_fft2_inverse(const double *F, int w, int h, double *img)
+nl_status nl_spectrum_fft2_inverse(const double *F, int w, int h, double *img, nl_error *err)
 {
+  if (nl_spectrum_check_size(w, h, err)) return NL_EINVAL;
   size_t n = (size_t)w * h;
   double *G = nl_xmalloc(2 * n * sizeof *G);
   memcpy(G, F, 2 * n * sizeof *G);
   fft2_gsl(G, w, h, gsl_fft_backward);
   for (size_t k = 0; k < n; k++) img[k] = G[2 * k] / (double)n;
   free(G);
+  return NL_OK;
 }
 
-void nl_spectrum_power2(const double *img, int w, int h, double *P)
+nl_status nl_spectrum_power2(const double *img, int w, int h, double *P, nl_error *err)
 {
   size_t n = (size_t)w * h;
   double s = 1.0 / ((double)n * (double)n);
-  nl_spectrum_fft2_plan *p = nl_spectrum_fft2_plan_alloc(w, h);
+  nl_spectrum_fft2_plan *p = nl_spectrum_fft2_plan_alloc(w, h, err);
+  if (!p) return NL_EINVAL;
   int m = w / 2 + 1;
   double *H = nl_xmalloc(2 * (size_t)m * h * sizeof *H);
   nl_spectrum_rfft2(p, img, H);
@@ -323,14 +350,19 @@ void nl_spectrum_power2(const double *img, int w, int h, double *P)
   for (int v = 0; v < h; v++)   /* |F(u, v)| = |F(w - u, h - v)| for a real image */
     for (int u = m; u < w; u++) P[(size_t)v * w + u] = P[(size_t)((h - v) % h) * w + (w - u)];
   free(H);
+  return NL_OK;
 }
 
-void nl_spectrum_radial(const double *img, int w, int h, int nbins, double *f, double *p)
+nl_status nl_spectrum_radial(const double *img, int w, int h, int nbins, double *f, double *p,
+                             nl_error *err)
 {
   size_t n = (size_t)w * h;
   double *P = nl_xmalloc(n * sizeof *P);
+  if (nl_spectrum_power2(img, w, h, P, err)) {
+    free(P);
+    return NL_EINVAL;
+  }
   size_t *count = nl_xcalloc((size_t)nbins, sizeof *count);
-  nl_spectrum_power2(img, w, h, P);
   for (int b = 0; b < nbins; b++) { p[b] = 0; f[b] = (b + 0.5) * 0.5 / nbins; }
   for (int v = 0; v < h; v++)
     for (int u = 0; u < w; u++) {
@@ -342,6 +374,7 @@ void nl_spectrum_radial(const double *img, int w, int h, int nbins, double *f, d
     }
   for (int b = 0; b < nbins; b++) if (count[b]) p[b] /= (double)count[b];
   free(P); free(count);
+  return NL_OK;
 }
 
 /* Tukey window of n samples, taper fraction frac: sin^2 over the outer frac/2 of each side. */
@@ -379,6 +412,7 @@ void nl_spectrum_hann2(const double *img, int w, int h, double *out) { nl_spectr
 nl_status nl_spectrum_psd1(const double *x, size_t n, double rate, double *f, double *P, nl_error *err)
 {
   if (n < 2 || !(rate > 0.0)) return nl_fail(err, NL_EINVAL, "psd1: need n >= 2 and rate > 0");
+  if (nl_spectrum_check_length(n, err)) return NL_EINVAL;
   double *d = nl_xmalloc(n * sizeof *d);
   memcpy(d, x, n * sizeof *d);
   gsl_fft_real_wavetable *wt = gsl_fft_real_wavetable_alloc(n);

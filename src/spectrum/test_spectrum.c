@@ -12,11 +12,11 @@ NL_TEST(parseval_and_round_trip_odd_size)
   double *F = malloc(2 * n * sizeof *F), ms = 0, sp = 0;
   srand(3);
   for (size_t k = 0; k < n; k++) { x[k] = rand() / (double)RAND_MAX - 0.3; ms += x[k] * x[k] / n; }
-  nl_spectrum_power2(x, w, h, P);
+  NL_CHECK(nl_spectrum_power2(x, w, h, P, NULL) == NL_OK);
   for (size_t k = 0; k < n; k++) sp += P[k];
   NL_CHECK_NEAR(sp, ms, 1e-12);
-  nl_spectrum_fft2(x, w, h, F);
-  nl_spectrum_fft2_inverse(F, w, h, y);
+  NL_CHECK(nl_spectrum_fft2(x, w, h, F, NULL) == NL_OK);
+  NL_CHECK(nl_spectrum_fft2_inverse(F, w, h, y, NULL) == NL_OK);
   double worst = 0;
   for (size_t k = 0; k < n; k++) worst = fmax(worst, fabs(x[k] - y[k]));
   NL_CHECK(worst < 1e-13);
@@ -30,7 +30,7 @@ NL_TEST(cosine_lands_in_its_bin)
   double *x = malloc(sizeof(double) * w * h), f[32], p[32];
   for (int r = 0; r < h; r++)
     for (int c = 0; c < w; c++) x[r * w + c] = cos(NL_TWO_PI * 8 * c / w);
-  nl_spectrum_radial(x, w, h, nb, f, p);
+  NL_CHECK(nl_spectrum_radial(x, w, h, nb, f, p, NULL) == NL_OK);
   int best = 0;
   for (int b = 1; b < nb; b++) if (p[b] > p[best]) best = b;
   NL_CHECK(best == 8);    /* 0.125 / 0.5 * 32 */
@@ -64,7 +64,7 @@ NL_TEST(hann_power_and_leakage)
     for (int r = 0; r < h; r++)
       for (int c = 0; c < w; c++) x[r * w + c] = cos(NL_TWO_PI * 2.5 * c / w);
     if (t) nl_spectrum_taper2(x, w, h, t == 1 ? 1.0 : 0.25, x);
-    nl_spectrum_power2(x, w, h, P);
+    NL_CHECK(nl_spectrum_power2(x, w, h, P, NULL) == NL_OK);
     double tot = 0;
     for (int v = 0; v < h; v++)
       for (int u = 0; u < w; u++) {
@@ -128,10 +128,10 @@ NL_TEST(real_path_matches_direct_dft)
     int w = shapes[sidx][0], h = shapes[sidx][1], m = w / 2 + 1;
     size_t n = (size_t)w * h;
     double *x = malloc(n * sizeof *x), *F = malloc(2 * n * sizeof *F), *H = malloc(2 * (size_t)m * h * sizeof *H);
-    nl_spectrum_fft2_plan *p = nl_spectrum_fft2_plan_alloc(w, h);
+    nl_spectrum_fft2_plan *p = nl_spectrum_fft2_plan_alloc(w, h, NULL);
     for (int rep = 0; rep < 2; rep++) {
       for (size_t k = 0; k < n; k++) x[k] = rand() / (double)RAND_MAX - 0.5;
-      nl_spectrum_fft2(x, w, h, F);
+      NL_CHECK(nl_spectrum_fft2(x, w, h, F, NULL) == NL_OK);
       nl_spectrum_rfft2(p, x, H);
       for (int v = 0; v < h; v++)
         for (int u = 0; u < w; u++) {
@@ -167,10 +167,40 @@ NL_TEST(awkward_sizes_refused)
   NL_CHECK(strstr(err.msg, "crop it to 65520 x 16") != NULL);
   NL_CHECK(nl_spectrum_check_size(4096, 4093, &err) == NL_EINVAL && strstr(err.msg, "height 4093"));
   NL_CHECK(nl_spectrum_check_size(16, 65536, &err) == NL_OK);
-  /* both sides awkward (776 = 8 x 97, 65474 = 2 x 19 x 1723): both cropped */
+  /* 776 = 8 x 97 has factors within the bound, 65474 = 2 x 19 x 1723 not:
+   * only the height is cropped */
   NL_CHECK(nl_spectrum_check_size(776, 65474, &err) == NL_EINVAL);
   NL_CHECK(strstr(err.msg, "height 65474") != NULL);
-  NL_CHECK(strstr(err.msg, "crop it to 768 x 64827") != NULL);
+  NL_CHECK(strstr(err.msg, "crop it to 776 x 65472") != NULL);
+  /* The bound (nl_spectrum.h): S3's --set size=1021 (1.9 s per transform,
+   * 205 times 1024's) and 509 (0.22 s) refused; a factor of 73 or 127 at
+   * any size, and a cheap prime side, pass. */
+  NL_CHECK(nl_spectrum_check_size(1021, 1021, &err) == NL_EINVAL &&
+           strstr(err.msg, "width 1021 has the prime factor 1021 (beyond 127)"));
+  NL_CHECK(nl_spectrum_check_size(509, 509, &err) == NL_EINVAL);
+  NL_CHECK(nl_spectrum_check_size(1022, 1022, &err) == NL_OK);
+  NL_CHECK(nl_spectrum_check_size(127 * 64, 127 * 32, &err) == NL_OK);
+  NL_CHECK(nl_spectrum_check_size(257, 257, &err) == NL_OK);
+  /* On a line (psd1): n times the sum of n's factors. */
+  NL_CHECK(nl_spectrum_check_length(65536, &err) == NL_OK);
+  NL_CHECK(nl_spectrum_check_length(10007, &err) == NL_OK);    /* prime: 1e8 operations */
+  NL_CHECK(nl_spectrum_check_length(65521, &err) == NL_EINVAL && strstr(err.msg, "use 65520"));
+  double x[8] = {0}, f[8], P[8];
+  NL_CHECK(nl_spectrum_psd1(x, 65521, 1.0, f, P, &err) == NL_EINVAL);   /* refused before reading x */
+  /* Every 2D transform refuses such a size itself, before any work (one
+   * 1021 x 1021 transform is 1.9 s): no caller can skip the guard. */
+  size_t n = (size_t)1021 * 1021;
+  double *img = nl_xcalloc(2 * n, sizeof *img), *out = nl_xmalloc(2 * n * sizeof *out), rf[510], rp[510];
+  double t0 = nl_time_now();
+  NL_CHECK(nl_spectrum_fft2_plan_alloc(1021, 1021, &err) == NULL && strstr(err.msg, "prime factor 1021"));
+  NL_CHECK(nl_spectrum_fft2(img, 1021, 1021, out, &err) == NL_EINVAL);
+  NL_CHECK(nl_spectrum_fft2_inverse(img, 1021, 1021, out, &err) == NL_EINVAL);
+  NL_CHECK(nl_spectrum_power2(img, 1021, 1021, out, &err) == NL_EINVAL);
+  NL_CHECK(nl_spectrum_radial(img, 1021, 1021, 510, rf, rp, &err) == NL_EINVAL);
+  NL_CHECK(strstr(err.msg, "1021 x 1021 pixels: width 1021") != NULL);
+  NL_CHECK(nl_time_now() - t0 < 0.5);
+  free(img);
+  free(out);
   NL_CHECK(nl_spectrum_check_size(16384, 16384, &err) == NL_OK);
   NL_CHECK(nl_spectrum_check_size(15000, 15000, &err) == NL_OK);
   NL_CHECK(nl_spectrum_check_size(512, 509, &err) == NL_OK);

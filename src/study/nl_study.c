@@ -110,7 +110,7 @@ static void octave_settings(const int *oct, int n, int turbulence, nl_study_sett
 
 nl_noise_window nl_study_window(nl_harness *r)
 {
-  int size = (int)nl_harness_param_int(r, "size", nl_harness_quick(r) ? 128 : 512, 16, 4096,
+  int size = (int)nl_harness_param_fft_size(r, "size", nl_harness_quick(r) ? 128 : 512, 16, 4096,
                                        "image side in pixels of each survey slice (quick 128)");
   double extent = nl_harness_param(r, "extent", 4.0, 1e-3, 1e4,
                                    "side of the noise-space square [0, extent)^2 the slice covers");
@@ -283,8 +283,11 @@ nl_table *nl_study_radial_table(const double *const *img, const char *const *col
   for (int i = 0; i < n; i++) names[i + 1] = cols[i];
   nl_table *t = nl_table_alloc((size_t)n + 1, names);
   double *f = nl_xmalloc((size_t)nbins * sizeof *f), *p = nl_xmalloc((size_t)n * nbins * sizeof *p);
+  /* size is an experiment's checked side (nl_harness_param_fft_size); were
+   * it refused all the same, the column is NaN, not minutes of transform. */
   for (int i = 0; i < n; i++)
-    nl_spectrum_radial(img[i], size, size, nbins, f, p + (size_t)i * nbins);
+    if (nl_spectrum_radial(img[i], size, size, nbins, f, p + (size_t)i * nbins, NULL))
+      for (int b = 0; b < nbins; b++) f[b] = p[(size_t)i * nbins + b] = NAN;
   for (int b = first; b < nbins; b++) {
     size_t row = nl_table_append_empty(t);
     nl_table_set(t, row, "freq", f[b]);

@@ -220,9 +220,12 @@ nl_table *nl_study_example_summary_table(void);
  * `sum` (KS of the luminance, mean KS over R, G, B, tail mass beyond 2.5 sd
  * of photo and synthesis, speckle (nl_byexample_speckle), the checked band
  * whose ratio is farthest from 1, and pass = that ratio within
- * [1/max_ratio, max_ratio] and KS < max_ks). rep names the representation. */
-void nl_study_example_compare(const nl_image *ex, const nl_image *syn, const char *name,
-                              const char *rep, int replicate, double min_share, double max_ratio,
-                              double max_ks, nl_table *bands, nl_table *sum);
+ * [1/max_ratio, max_ratio] and KS < max_ks). rep names the representation.
+ * NL_EINVAL, nothing appended, when either image's size is one whose Fourier
+ * transform nl_spectrum_check_size refuses (the message names ex by name,
+ * syn by rep). */
+nl_status nl_study_example_compare(const nl_image *ex, const nl_image *syn, const char *name,
+                                   const char *rep, int replicate, double min_share, double max_ratio,
+                                   double max_ks, nl_table *bands, nl_table *sum, nl_error *err);
 
 #endif

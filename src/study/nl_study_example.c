@@ -3,9 +3,11 @@
  * photographs. See nl_study.h. */
 #include "study/nl_study.h"
 #include "byexample/nl_byexample.h"
+#include "spectrum/nl_spectrum.h"
 #include "stats/nl_stats.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -48,10 +50,18 @@ static size_t grad_mag(const double *l, int w, int h, double *g)
   return k;
 }
 
-void nl_study_example_compare(const nl_image *ex, const nl_image *syn, const char *name,
-                              const char *rep, int replicate, double min_share, double max_ratio,
-                              double max_ks, nl_table *bands, nl_table *sum)
+nl_status nl_study_example_compare(const nl_image *ex, const nl_image *syn, const char *name,
+                                   const char *rep, int replicate, double min_share, double max_ratio,
+                                   double max_ks, nl_table *bands, nl_table *sum, nl_error *err)
 {
+  /* Both images are Fourier-transformed (eq. 13 band powers). */
+  const nl_image *im[2] = {ex, syn};
+  for (int i = 0; i < 2; i++)
+    if (nl_spectrum_check_size(im[i]->width, im[i]->height, err)) {
+      char msg[NL_ERROR_LEN];
+      snprintf(msg, sizeof msg, "%s", err ? err->msg : "");
+      return nl_fail(err, NL_EINVAL, "%s: %s", i ? rep : name, msg);
+    }
   size_t n = (size_t)ex->width * ex->height, m = (size_t)syn->width * syn->height;
   double *le = nl_xmalloc(n * sizeof *le), *ls = nl_xmalloc(m * sizeof *ls);
   nl_byexample_luminance(ex, le);
@@ -64,8 +74,12 @@ void nl_study_example_compare(const nl_image *ex, const nl_image *syn, const cha
   /* a smaller synthesis lacks the coarsest bands */
   int nb = nl_byexample_band_count(syn->width, syn->height);
   if (nb > nbe) nb = nbe;
-  nl_byexample_band_power(le, ex->width, ex->height, nbe, pe);
-  nl_byexample_band_power(ls, syn->width, syn->height, nb, ps);
+  if (nl_byexample_band_power(le, ex->width, ex->height, nbe, pe, err) ||
+      nl_byexample_band_power(ls, syn->width, syn->height, nb, ps, err)) {   /* checked above */
+    free(le);
+    free(ls);
+    return NL_EINVAL;
+  }
   for (int k = 0; k < nbe; k++) total += pe[k];
   int checked = 0, worst_k = -1;
   for (int k = 0; k < nb; k++) {
@@ -96,4 +110,5 @@ void nl_study_example_compare(const nl_image *ex, const nl_image *syn, const cha
   free(gs);
   free(le);
   free(ls);
+  return NL_OK;
 }

@@ -103,7 +103,10 @@ static void one_seed(nl_study_survey *s, nl_study_basis_kind kind, const nl_nois
   s->sd[k] = gsl_stats_sd_m(v, 1, n, s->mean[k]);
   gsl_stats_minmax(&s->min[k], &s->max[k], v, 1, n);
   double *f = nl_xmalloc((size_t)s->nbins * sizeof *f);
-  nl_spectrum_radial(v, win->w, win->h, s->nbins, f, s->power + (size_t)k * s->nbins);
+  /* The window's side passed nl_harness_param_fft_size (nl_study_window);
+   * were it refused all the same, the power is NaN, not minutes. */
+  if (nl_spectrum_radial(v, win->w, win->h, s->nbins, f, s->power + (size_t)k * s->nbins, NULL))
+    for (int q = 0; q < s->nbins; q++) s->power[(size_t)k * s->nbins + q] = NAN;
   free(f);
   s->axis[k] = axis_fraction(&b->noise, o, win, NL_STUDY_AXIS_POINTS(win->w, win->h), seed,
                              &s->axis_worst[k]);
