@@ -167,7 +167,7 @@ expect_error "/dev/zero:1: line longer than 1048576 bytes" timeout 120 "$STAT" k
 expect_error "/dev/urandom:" timeout 120 "$STAT" kuiper /dev/urandom
 expect_error "read error: Is a directory" "$STAT" ks "$TMP"
 awk 'BEGIN { for (i = 0; i < 1000000; i++) print i % 97, i % 13 }' >"$TMP/big.tsv"
-expect_error "big.tsv: 1000000 rows need 4 TB for the distance matrix; this machine has" \
+expect_error "big.tsv: 1000000 rows need 4 TB for the distance matrix; " \
   timeout 120 "$STAT" hclust "$TMP/big.tsv" --linkage complete --clusters 3
 expect_error "big.tsv: 1000000 rows of 2 columns with 100000 components need" \
   timeout 120 "$STAT" gmm "$TMP/big.tsv" --k 100000

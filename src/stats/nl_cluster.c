@@ -830,8 +830,8 @@ nl_status nl_cluster_linkage_metric(const double *x, size_t n, size_t d,
     char b1[32], b2[32];
     if (!nl_mem_fits(need)) {
       free(prep);
-      return nl_fail(err, NL_ENOMEM, "%zu rows need %s for the distance matrix; this machine has %s",
-                     n, nl_format_bytes(b1, need), nl_format_bytes(b2, nl_mem_physical()));
+      return nl_fail(err, NL_ENOMEM, "%zu rows need %s for the distance matrix; %s is available",
+                     n, nl_format_bytes(b1, need), nl_format_bytes(b2, nl_mem_available()));
     }
     col_top *cm = nl_xmalloc(n * sizeof *cm);
     double *D = metric == NL_METRIC_EUCLIDEAN ? condensed_distances(px, n, d, cm)

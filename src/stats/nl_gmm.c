@@ -248,8 +248,8 @@ nl_status nl_gmm_check_size(size_t n, size_t d, size_t k, nl_gmm_covariance cova
   double need = nl_gmm_bytes(n, d, k, covariance);
   if (nl_mem_fits(need)) return NL_OK;
   char b1[32], b2[32];
-  return nl_fail(err, NL_ENOMEM, "%zu rows of %zu columns with %zu components need %s; this machine has %s",
-                 n, d, k, nl_format_bytes(b1, need), nl_format_bytes(b2, nl_mem_physical()));
+  return nl_fail(err, NL_ENOMEM, "%zu rows of %zu columns with %zu components need %s; %s is available",
+                 n, d, k, nl_format_bytes(b1, need), nl_format_bytes(b2, nl_mem_available()));
 }
 
 void nl_gmm_free(nl_gmm *g)

@@ -110,9 +110,9 @@ typedef struct {
 
 nl_gmm *nl_gmm_alloc(size_t k, size_t d, nl_gmm_covariance covariance);
 /* Bytes a fit of k components to n rows of d columns needs (responsibilities,
- * k-means distances, two models), and a check of it against the machine's
- * memory: "200000 rows of 3 columns with 5000 components need 16 GB;
- * this machine has 8 GB". nl_gmm_fit and nl_gmm_select_aic check first;
+ * k-means distances, two models), and a check of it against the memory
+ * available: "200000 rows of 3 columns with 5000 components need 16 GB;
+ * 8 GB is available". nl_gmm_fit and nl_gmm_select_aic check first;
  * callers check before nl_gmm_alloc when k and d come from input. */
 double nl_gmm_bytes(size_t n, size_t d, size_t k, nl_gmm_covariance covariance);
 nl_status nl_gmm_check_size(size_t n, size_t d, size_t k, nl_gmm_covariance covariance,

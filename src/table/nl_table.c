@@ -340,10 +340,10 @@ static nl_status read_rows(FILE *fp, const char *path, int flags, nl_table **out
     }
     if (t->nrows == t->cap && !nl_mem_fits(2.0 * (double)t->cap * (double)t->ncols * (sizeof *t->num + sizeof *t->text))) {
       char b1[32], b2[32];
-      s = nl_fail(err, NL_ENOMEM, "%s:%zu: %zu rows of %zu columns would need more than %s; this machine has %s",
+      s = nl_fail(err, NL_ENOMEM, "%s:%zu: %zu rows of %zu columns would need more than %s; %s is available",
                   path, lineno, t->nrows, t->ncols,
                   nl_format_bytes(b1, 2.0 * (double)t->cap * (double)t->ncols * (sizeof *t->num + sizeof *t->text)),
-                  nl_format_bytes(b2, nl_mem_physical()));
+                  nl_format_bytes(b2, nl_mem_available()));
       break;
     }
     size_t r = grow(t);
