@@ -66,10 +66,14 @@ run 1 relbad $'spec.tsv\t2\tpower' 'rel 1e-9'
 # Shape and run: a missing table, an extra row, another parameter.
 copy notable; rm "$out/notable/spec.tsv"
 run 1 notable $'spec.tsv\t-\t-\ttable\tmissing'
-# The other way round: a table the run wrote that the committed folder lacks
-# (deleted by hand, never committed) is drift, not a table compared by none.
-copy extra; tsv "$out/extra/more.tsv" 'a|b' '1|2'
+# The other way round: a table the run wrote (its manifest's "output" lines)
+# that the committed folder lacks (deleted by hand, never committed) is
+# drift, not a table compared by none; a file the run did not write (a
+# test's own table beside it) is not the run's.
+copy extra; tsv "$out/extra/more.tsv" 'a|b' '1|2'; printf 'output\tmore.tsv\n' >>"$out/extra/manifest.tsv"
 run 1 extra $'more.tsv\t-\t-\tmissing\ttable' '1 drifted'
+copy beside; tsv "$out/beside/mine.tsv" 'a|b' '1|2'
+run 0 beside '0 drifted'
 # A table the run wrote but the reader refuses (NUL bytes; nothing but
 # NULs) is drift that names the reader's complaint, never "missing".
 copy nul; { printf 'freq\tpower\n0.125\t0.0'; printf '\000'; printf '77\n'; } >"$out/nul/spec.tsv"
