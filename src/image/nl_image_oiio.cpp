@@ -21,7 +21,9 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <exception>
 #include <memory>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -189,7 +191,7 @@ static nl_status precheck(const char *path, long long *size, nl_error *err)
   return s;
 }
 
-extern "C" nl_status nl_oiio_read(const char *path, nl_image **out, nl_error *err)
+static nl_status read_image(const char *path, nl_image **out, nl_error *err)
 {
   *out = nullptr;
   long long file_bytes = 0;
@@ -250,7 +252,6 @@ extern "C" nl_status nl_oiio_read(const char *path, nl_image **out, nl_error *er
                    path, spec.width, spec.height, ch, nl_format_bytes(b1, bytes),
                    nl_format_bytes(b2, nl_mem_available()));
   }
-  nl_image *im = nl_image_alloc(spec.width, spec.height, ch == 2 ? 4 : ch);
   // Grey+alpha (2 channels) is read as grey and alpha, stored as RGBA.
   size_t npix = (size_t)spec.width * spec.height;
   std::unique_ptr<float[]> buf(new float[npix * ch]);
@@ -265,14 +266,9 @@ extern "C" nl_status nl_oiio_read(const char *path, nl_image **out, nl_error *er
     mute_stderr m;
     ok = in->read_image(0, 0, 0, ch, TypeDesc::FLOAT, buf.get());
   }
-  if (!ok) {
-    std::string why = in->geterror();
-    nl_image_free(im);
-    return set_err(err, NL_EFORMAT, path, why);
-  }
+  if (!ok) return set_err(err, NL_EFORMAT, path, in->geterror());
   if (in->has_error()) {
     std::string why = one_line(in->geterror());
-    nl_image_free(im);
     return nl_fail(err, NL_EFORMAT, "%s: truncated or damaged: %s", path, why.c_str());
   }
   // Integer samples cannot be NaN: one still NaN was not delivered. (A float
@@ -284,31 +280,51 @@ extern "C" nl_status nl_oiio_read(const char *path, nl_image **out, nl_error *er
       for (int c = 0; c < ch; c++) whole = whole && !std::isnan(buf[p * ch + c]);
       got += whole;
     }
-    if (got < npix) {
-      nl_image_free(im);
+    if (got < npix)
       return nl_fail(err, NL_EFORMAT, "%s: truncated or damaged: %zu of %zu pixels were read",
                      path, got, npix);
-    }
-  }
-  for (size_t i = 0; i < npix; i++) {
-    float *d = im->data + i * im->channels;
-    const float *s = buf.get() + i * ch;
-    if (ch == 2) { d[0] = d[1] = d[2] = s[0]; d[3] = s[1]; }
-    else std::memcpy(d, s, ch * sizeof(float));
   }
   // NaN and infinities are no pixel values (an all-inf EXR once became a
   // params file holding inf and -nan): name the first one.
   for (size_t i = 0; i < npix * ch; i++)
     if (!std::isfinite(buf[i])) {
       size_t p = i / ch;
-      nl_status s = nl_fail(err, NL_EFORMAT, "%s: pixel (%zu, %zu) channel %zu is %s; pixel values must be finite",
-                            path, p % (size_t)spec.width, p / (size_t)spec.width, i % ch + 1,
-                            std::isnan(buf[i]) ? "NaN" : buf[i] > 0 ? "inf" : "-inf");
-      nl_image_free(im);
-      return s;
+      return nl_fail(err, NL_EFORMAT, "%s: pixel (%zu, %zu) channel %zu is %s; pixel values must be finite",
+                     path, p % (size_t)spec.width, p / (size_t)spec.width, i % ch + 1,
+                     std::isnan(buf[i]) ? "NaN" : buf[i] > 0 ? "inf" : "-inf");
     }
+  nl_image *im = nl_image_alloc(spec.width, spec.height, ch == 2 ? 4 : ch);
+  for (size_t i = 0; i < npix; i++) {
+    float *d = im->data + i * im->channels;
+    const float *s = buf.get() + i * ch;
+    if (ch == 2) { d[0] = d[1] = d[2] = s[0]; d[3] = s[1]; }
+    else std::memcpy(d, s, ch * sizeof(float));
+  }
   *out = im;
   return NL_OK;
+}
+
+// No C++ exception may cross into C: OpenImageIO 2.4's TIFF reader throws
+// std::length_error on some tile layouts (found by fuzz_image), and new[]
+// throws std::bad_alloc. Either becomes a status. Every allocation above is
+// owned by an object until *out is set, so nothing leaks on the way out.
+template <class F> static nl_status guarded(const char *path, nl_error *err, F f)
+{
+  try {
+    return f();
+  } catch (const std::bad_alloc &) {
+    return nl_fail(err, NL_ENOMEM, "%s: out of memory", path);
+  } catch (const std::exception &e) {
+    return set_err(err, NL_EFORMAT, path, std::string("damaged or unsupported: ") + e.what());
+  } catch (...) {
+    return nl_fail(err, NL_EFORMAT, "%s: damaged or unsupported (the image library failed)", path);
+  }
+}
+
+extern "C" nl_status nl_oiio_read(const char *path, nl_image **out, nl_error *err)
+{
+  *out = nullptr;
+  return guarded(path, err, [&] { return read_image(path, out, err); });
 }
 
 static TypeDesc type_for(const std::string &path, int bits)
@@ -343,11 +359,9 @@ static nl_status nl_image_timestamp(const char *path, std::string *out, nl_error
 // all report failed writes (the PNG writer ignores a full disk), so the bytes
 // go to disk through nl_atomic_write, which checks every one of them and
 // knows what to do with a symbolic link or a device. *data is malloc'd.
-extern "C" nl_status nl_oiio_encode(const nl_image *im, const char *path, int bits,
-                                    unsigned char **data, size_t *size, nl_error *err)
+static nl_status encode_image(const nl_image *im, const char *path, int bits,
+                              unsigned char **data, size_t *size, nl_error *err)
 {
-  *data = nullptr;
-  *size = 0;
   if (bits != 8 && bits != 16 && bits != 32)
     return nl_fail(err, NL_EINVAL, "%s: bit depth %d is not 8, 16 or 32", path, bits);
   if (!std::strrchr(path, '.'))
@@ -378,6 +392,16 @@ extern "C" nl_status nl_oiio_encode(const nl_image *im, const char *path, int bi
   std::memcpy(*data, buf.data(), buf.size());
   *size = buf.size();
   return NL_OK;
+}
+
+extern "C" nl_status nl_oiio_encode(const nl_image *im, const char *path, int bits,
+                                    unsigned char **data, size_t *size, nl_error *err)
+{
+  *data = nullptr;
+  *size = 0;
+  nl_status st = guarded(path, err, [&] { return encode_image(im, path, bits, data, size, err); });
+  if (st && *data) { std::free(*data); *data = nullptr; *size = 0; }
+  return st;
 }
 
 extern "C" const char *nl_oiio_version(void)
