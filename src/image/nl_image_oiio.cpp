@@ -11,6 +11,7 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -245,6 +246,20 @@ static nl_status read_image(const char *path, nl_image **out, nl_error *err)
     return nl_fail(err, NL_EFORMAT, "%s: declares %d x %d pixels%s (%.3g bytes of samples) in %lld "
                    "bytes, more than compression expands to (%dx): the file is damaged",
                    path, spec.width, spec.height, tiles, raw, file_bytes, NL_IMAGE_MAX_EXPANSION);
+  }
+  // OpenImageIO 2.4 sizes its strip buffer by the file's RowsPerStrip
+  // without clamping it to the image's rows as libtiff does: a 444-byte
+  // TIFF of 8 x 65274 pixels declaring 1,073,742,026 rows per strip asked
+  // for 8.6 GB (found by fuzz_image). A strip taller than the image is held
+  // to the bound of the samples above.
+  if (!std::strcmp(in->format_name(), "tiff")) {
+    const ParamValue *rp = spec.find_attribute("tiff:RowsPerStrip");
+    double rows = rp ? (double)(uint32_t)rp->get_int() : 0.0;
+    double strip = rows * (double)spec.scanline_bytes();
+    double bound = std::max(raw, (double)file_bytes * NL_IMAGE_MAX_EXPANSION);
+    if (rows > spec.height && strip > bound)
+      return nl_fail(err, NL_EFORMAT, "%s: declares %.0f rows per strip for an image of %d rows "
+                     "(%.3g bytes a strip): the file is damaged", path, rows, spec.height, strip);
   }
   if (!nl_mem_fits(bytes)) {
     char b1[32], b2[32];
