@@ -82,10 +82,15 @@ row='| [S4](#s4_marble) | gain | independent | 2 | 2.08 +- 0.01 | **reproduced**
 grep -qF "$row" "$r/REPORT.md" || fail "verdict row: $(grep -F gain "$r/REPORT.md")"
 row='| [S4](#s4_marble) | F_inf | by construction | 1 | 1 | *by construction* | equal | - | set |'
 grep -qF "$row" "$r/REPORT.md" || fail "by-construction row: $(grep -F F_inf "$r/REPORT.md")"
-# one summary line per experiment, its rows counted by verdict, above the table
-sum='^- \[S4 - [^]]*\]\(#s4_marble\): \*\*1 reproduced\*\*, \*\*1 consistent after fit\*\*, '
-grep -qE "$sum"'\*\*1 by construction\*\*$' "$r/REPORT.md" ||
+# one summary line per experiment, above the table: its independent rows
+# counted by verdict, the others by kind and never under a verdict's word
+sum='^- \[S4 - [^]]*\]\(#s4_marble\): \*\*1 reproduced\*\*; not counted: 1 fitted \(1 consistent\), '
+grep -qE "$sum"'1 by construction$' "$r/REPORT.md" ||
   fail "summary line: $(grep -F '(#s4_marble):' "$r/REPORT.md")"
+# the answer per paper (S4: Shaffer's slides; A1: Arnerin's), its
+# independent verdicts counted, the rest named as not counted
+grep -qE '^Per paper: \*\*Shaffer\*\* 1 reproduced, 0 partly, 0 not reproduced \(2 more not counted\); \*\*Arnerin\*\* ' \
+  "$r/REPORT.md" || fail "per-paper line: $(grep '^Per paper' "$r/REPORT.md")"
 at() { grep -n -m1 "$1" "$r/REPORT.md" | cut -d: -f1; }
 [ "$(at '(#s4_marble):')" -lt "$(at '^| id | quantity')" ] || fail "the summary is below the table"
 # a | inside a cell is escaped, or it would split the row
