@@ -5,6 +5,7 @@ import ctypes
 import numpy as np
 
 from ._lib import Error, c_double_p, check, fn, mirror
+from ._lib import integer as _int, real as _real
 
 
 @mirror("nl_gmm_options")
@@ -27,21 +28,6 @@ class _Gmm(ctypes.Structure):
 
 # nl_gmm_options_check names the options as `stat gmm` spells them.
 _NAMES = {"--tol": "tol", "--reg-covar": "reg_covar", "--max-iter": "max_iter"}
-
-
-def _int(name, v, lo, hi):
-    if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
-        raise TypeError(f"{name}: expected an integer, got {type(v).__name__}")
-    if not lo <= v <= hi:
-        raise ValueError(f"{name}: {v} is outside [{lo}, {hi}]")
-    return int(v)
-
-
-def _real(name, v):
-    try:
-        return float(v)
-    except (TypeError, ValueError):
-        raise TypeError(f"{name}: expected a number, got {v!r}") from None
 
 
 _P = ctypes.POINTER(_Gmm)

@@ -16,6 +16,8 @@ import ctypes.util
 import os
 import subprocess
 
+import numpy as np
+
 NL_OK, NL_EINVAL, NL_EIO, NL_EFORMAT, NL_ENOMEM, NL_ENUM = range(6)
 
 
@@ -141,3 +143,23 @@ def mirror(c_type, **members):
 class Error(ctypes.Structure):
     """nl_error: the library's one-line message."""
     _fields_ = [("msg", ctypes.c_char * 512)]
+
+
+# The checks Python makes itself: a value's type, and an integer's range
+# where the C call takes a narrower type. Ranges of values are the library's
+# to check (one validation for the tools and Python).
+def integer(name, v, lo, hi, interval="[{lo}, {hi}]"):
+    """v as an int in lo..hi; TypeError for a non-integer (bool included)."""
+    if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
+        raise TypeError(f"{name}: expected an integer, got {type(v).__name__}")
+    if not lo <= v <= hi:
+        raise ValueError(f"{name}: {v} is outside " + interval.format(lo=lo, hi=hi))
+    return int(v)
+
+
+def real(name, v):
+    """v as a C double; whether it is finite and in range is the library's to say."""
+    try:
+        return float(v)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name}: expected a number, got {v!r}") from None

@@ -19,6 +19,7 @@ import os
 import numpy as np
 
 from ._lib import Error, check, fn, mirror
+from ._lib import integer as _int
 
 _MAXB = 16
 _HMAX = 33
@@ -76,14 +77,6 @@ _param_count = fn("nl_byexample_param_count", ctypes.c_int, _PP)
 
 # `noiselab example --seed`'s range: a seed the tool refuses is refused here.
 _SEED_MAX = 2**32 - 1
-
-
-def _int(name, v, lo, hi):
-    if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
-        raise TypeError(f"{name}: expected an integer, got {type(v).__name__}")
-    if not lo <= v <= hi:
-        raise ValueError(f"{name}: {v} is outside [{lo}, {hi}]")
-    return int(v)
 
 
 def _number(name, v):

@@ -22,7 +22,8 @@ import functools
 
 import numpy as np
 
-from ._lib import Error, c_double_p, check, fn, mirror
+from ._lib import Error, c_double_p, check, fn, integer, mirror
+from ._lib import real as _real
 
 _MAX_OCTAVES = 32
 
@@ -161,19 +162,7 @@ def _ptr(a):
 
 
 def _int(name, v, lo, hi):
-    if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
-        raise TypeError(f"{name}: expected an integer, got {type(v).__name__}")
-    if not lo <= v <= hi:
-        raise ValueError(f"{name}: {v} is outside {lo}..{hi}")
-    return int(v)
-
-
-def _real(name, v):
-    """v as a C double; whether it is finite and in range is the library's to say."""
-    try:
-        return float(v)
-    except (TypeError, ValueError):
-        raise TypeError(f"{name}: expected a number, got {v!r}") from None
+    return integer(name, v, lo, hi, "{lo}..{hi}")
 
 
 def _sum_options(octaves, gain, lacunarity, amplitude=0.5, stripes=1.0):
