@@ -63,6 +63,12 @@ refused "noiselab bench: unknown option --hlep (did you mean --help?)" bench --h
 refused "noiselab check: unknown option --quik (did you mean --quick?)" check --quik A1
 refused "noiselab reproduce: unknown option --resum (did you mean --resume?)" reproduce --resum
 refused "noiselab reproduce: unknown option --frob" reproduce --quick --frob A1
+refused "noiselab reproduce: unknown option --quik (did you mean --quick?)" reproduce --quik
+# bare: a command left out is an error (help on stderr, exit 2), as git's
+rc=0; PATH="$fake:$PATH" "$nl" >"$out/ref.out" 2>"$out/ref.err" || rc=$?
+[ "$rc" = 2 ] || fail "bare noiselab: exit $rc, wanted 2"
+[ ! -s "$out/ref.out" ] || fail "bare noiselab: printed on stdout"
+head -n 1 "$out/ref.err" | grep -q '^noiselab - ' || fail "bare noiselab: no help on stderr"
 
 # ---- a failed build keeps its log inside the build folder ------------------
 # (beside it, build.ninja.log landed in the repository's root)
@@ -85,7 +91,7 @@ cd "$w"
 readme="$(cksum <"$root/README.md")"
 awk 'BEGIN { srand(7); for (i = 0; i < 1000; i++) printf "%.6f\n", rand() }' >u1000.tsv
 printf '0 0\n0.1 0\n5 5\n5.1 5\n10 0\n10 0.1\n' >pts.tsv
-ok "stat ks u1000.tsv" "$nl" stat ks u1000.tsv
+ok "stat ks u1000.tsv" "$nl" stat ks u1000.tsv --uniform 0 1
 grep -q 'n=1000' "$out/last.out" || fail "stat ks: $(cat "$out/last.out")"
 ok "stat hclust --labels" "$nl" stat hclust pts.tsv --linkage ward --clusters 3 --labels nl-cwd-test-labels.tsv
 [ "$(wc -l <nl-cwd-test-labels.tsv)" = 7 ] || fail "hclust --labels: not a header and 6 labels in $w"
@@ -152,7 +158,7 @@ if [ -r /proc/locks ]; then
     echo "$n"
   }
   # (7>&-: a command that inherited the descriptor would hold the lock too.)
-  "$nl" stat ks "$w/u1000.tsv" >"$out/wait1.out" 2>"$out/wait1.err" 7>&- &
+  "$nl" stat ks "$w/u1000.tsv" --uniform 0 1 >"$out/wait1.out" 2>"$out/wait1.err" 7>&- &
   p1=$!
   "$nl" render fbm --size 16 -o "$out/wait2.png" >/dev/null 2>"$out/wait2.err" 7>&- &
   p2=$!

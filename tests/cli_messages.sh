@@ -131,7 +131,7 @@ refused 'img.png: a PNG image, not a parameter file' "$EXAMPLE" synthesize img.p
 check test ! -e s.png
 # a pipe is read, not sniffed (its first bytes cannot be put back)
 seq 1 9 | awk '{ print $1 / 10 }' >u.tsv
-"$STAT" ks /dev/stdin <u.tsv >out 2>err
+"$STAT" ks /dev/stdin --uniform 0 1 <u.tsv >out 2>err
 check grep -q 'n=9 ' out
 # each example subcommand's --help is its own
 "$EXAMPLE" synthesize --help >out 2>err

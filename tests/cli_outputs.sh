@@ -208,7 +208,7 @@ full() {   # LABEL CMD...
 }
 awk 'BEGIN { srand(3); for (i = 0; i < 200; i++) printf "%.6f\n", rand() }' >u.tsv
 awk 'BEGIN { srand(4); for (i = 0; i < 200; i++) printf "%.6f\n", rand() }' >v.tsv
-full "stat ks" "$STAT" ks u.tsv
+full "stat ks" "$STAT" ks u.tsv --uniform 0 1
 full "stat ks2" "$STAT" ks2 u.tsv v.tsv
 full "stat kuiper" "$STAT" kuiper u.tsv
 full "stat chisq" "$STAT" chisq u.tsv --bins 4
@@ -234,7 +234,7 @@ if [ -n "$NL" ]; then
   full "noiselab help" "$NL" help
   full "noiselab list" "$NL" list
   full "noiselab params S3" "$NL" params S3
-  full "noiselab stat ks" "$NL" stat ks u.tsv
+  full "noiselab stat ks" "$NL" stat ks u.tsv --uniform 0 1
   full "noiselab render -o -" "$NL" render fbm --size 8 -o -
   full "noiselab patterns" "$NL" patterns pat2 --size 8
   full "noiselab sweep --help" "$NL" sweep --help

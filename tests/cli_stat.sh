@@ -55,7 +55,7 @@ case $line in *method=pelz-good*) ok ;; *) bad "ks method: $line" ;; esac
 line=$("$STAT" ks "$DATA/ks_pow1.3_5000_s2.tsv" --uniform 0 $TWO_PI)
 expect_value "$line" p "$(tsv_awk 'v("file") == "ks_pow1.3_5000_s2.tsv" { print v("p") }' "$DATA/ks_one.tsv")" 1e-10
 
-line=$(tsv_awk 'NR > 1 { printf "%.17g\n", n("x0") / 6.283185307179586 }' "$DATA/ks_unif_100_s0.tsv" | "$STAT" ks -)
+line=$(tsv_awk 'NR > 1 { printf "%.17g\n", n("x0") / 6.283185307179586 }' "$DATA/ks_unif_100_s0.tsv" | "$STAT" ks - --uniform 0 1)
 expect_value "$line" D "$(tsv_awk 'v("file") == "ks_unif_100_s0.tsv" { print v("d") }' "$DATA/ks_one.tsv")" 1e-12
 
 line=$("$STAT" ks2 "$DATA/ks2_1_a.tsv" "$DATA/ks2_1_b.tsv")
@@ -131,7 +131,7 @@ expect_error "only 3 rows" "$STAT" gmm "$TMP/three.tsv" --k 4
 # is a row of data, refused on line 1, not a header that drops a row.
 { printf '\357\273\277'; awk 'BEGIN { for (i = 0; i < 1000; i++) print (i + 0.5) / 1000 }'; } \
   >"$TMP/bom.tsv"
-case $("$STAT" ks "$TMP/bom.tsv") in
+case $("$STAT" ks "$TMP/bom.tsv" --uniform 0 1) in
   *"n=1000 "*) ok ;;
   *) bad "ks on a file with a BOM: not n=1000" ;;
 esac
@@ -156,7 +156,8 @@ expect_error "no column 2" "$STAT" ks "$DATA/ks_facts_512.tsv" --column 2
 expect_error "unknown linkage 'medoid' (single, complete, average, weighted, ward, centroid or" \
   "$STAT" hclust "$DATA/hclust_X.tsv" --linkage medoid --clusters 2
 expect_error "exactly one" "$STAT" gmm "$DATA/gmm_X.tsv"
-expect_error "two files" "$STAT" ks2 "$DATA/ks2_1_a.tsv"
+expect_error "one file needs two columns to compare: --column C1 --column C2" \
+  "$STAT" ks2 "$DATA/ks2_1_a.tsv"
 expect_error "unknown subcommand" "$STAT" frobnicate x
 
 # NUL bytes, endless lines, endless non-regular files,
@@ -255,6 +256,27 @@ while IFS=$'\t' read -r f1 f2 alt D p; do
   expect_value "$line" p "$p" 1e-10
 done <"$REF/ks2_alt.tsv"
 if [ "$rows" = 18 ]; then ok; else bad "ks2_alt.tsv: $rows cases read, want 18"; fi
+# ks2 on two columns of one table: the same samples as two files, so scipy's
+# ks_2samp values of ks2_alt.tsv (by name, by number, and a file's two columns
+# named once for each file)
+paste "$REF/ks2_40_40_a.tsv" "$REF/ks2_40_40_b.tsv" | sed '1s/.*/a\tb/' >"$TMP/ab.tsv"
+while IFS=$'\t' read -r f1 f2 alt D p; do
+  if [ "$f1" != ks2_40_40_a.tsv ] || [ "$f2" != ks2_40_40_b.tsv ]; then continue; fi
+  for cols in "--column a --column b" "--column=1 --column=2"; do
+    # shellcheck disable=SC2086
+    line=$("$STAT" ks2 "$TMP/ab.tsv" $cols --alternative "$alt")
+    expect_value "$line" D "$D" 1e-13
+    expect_value "$line" p "$p" 1e-10
+  done
+  line=$("$STAT" ks2 "$TMP/ab.tsv" "$TMP/ab.tsv" --column a --column b --alternative "$alt")
+  expect_value "$line" D "$D" 1e-13
+done <"$REF/ks2_alt.tsv"
+expect_error "--column given three times" "$STAT" ks2 "$TMP/ab.tsv" --column a --column b --column a
+expect_error "--column given twice" "$STAT" ks "$TMP/ab.tsv" --column a --column b --uniform 0 1
+expect_error "ab.tsv: no column 'c'" "$STAT" ks2 "$TMP/ab.tsv" --column a --column c
+# ks names its null distribution: scipy's kstest has no default CDF
+expect_error "the null distribution is required: --uniform A B, --dist NAME or --cdf TABLE" \
+  "$STAT" ks "$REF/u01_100.tsv"
 expect_error "--alternative: unknown alternative 'lower' (two-sided, less or greater)" \
   "$STAT" ks "$REF/u01_100.tsv" --alternative lower
 expect_error "--alternative is for ks and ks2" "$STAT" kuiper "$REF/u01_100.tsv" --alternative less
@@ -346,7 +368,7 @@ else
 fi
 # JSON: valid (strict) for every subcommand, flags as true/false, and complete:
 # hclust gives scipy's linkage matrix and the labels, gmm its parameters.
-for cmd in "ks $REF/u01_100.tsv" "kuiper $REF/u01_100.tsv" "chisq $REF/u01_100.tsv --bins 4" \
+for cmd in "ks $REF/u01_100.tsv --uniform 0 1" "kuiper $REF/u01_100.tsv" "chisq $REF/u01_100.tsv --bins 4" \
            "ks2 $REF/ks2_40_40_a.tsv $REF/ks2_40_40_b.tsv" "gmm $DATA/gmm_X.tsv --k 3" \
            "gmm $DATA/gmm_X.tsv --select-aic 1 20" \
            "hclust $REF/ward_X.tsv --linkage ward --clusters 4"; do

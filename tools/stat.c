@@ -34,12 +34,13 @@ static const char *usage_text[] = {
 
 static const char *help_ks =
   "usage: " PROG " ks FILE [--column C]\n"
-  "                 [--uniform A B | --dist NAME [--shape A[,B]] [--loc L] [--scale S]\n"
-  "                  | --cdf TABLE]\n"
+  "                 (--uniform A B | --dist NAME [--shape A[,B]] [--loc L] [--scale S]\n"
+  "                  | --cdf TABLE)\n"
   "                 [--alternative two-sided|less|greater] [--csv] [--format kv|tsv|json]\n"
   "One-sample Kolmogorov-Smirnov test of column C (a number, 1-based, default 1, or the\n"
-  "name of a header's column) against\n"
-  "  --uniform A B     the uniform distribution on [A, B) (end points; the default, 0 1)\n"
+  "name of a header's column) against the null distribution, which is required (as scipy's\n"
+  "kstest requires its CDF):\n"
+  "  --uniform A B     the uniform distribution on [A, B) (end points)\n"
   "  --dist NAME       a distribution of scipy.stats with its --shape A[,B] (if it has any),\n"
   "                    --loc L (0) and --scale S (1): F((x - L) / S; A, B), so uniform is on\n"
   "                    [L, L + S] (scipy.stats.kstest(x, NAME, (A, B, L, S))). NAME (shapes):\n"
@@ -54,10 +55,12 @@ static const char *help_ks =
   "p is exact for finite n (scipy.stats.kstest; one-sided: Smirnov's law, ksone); method\n"
   "names the algorithm (durbin-mtw, pomeranz, pelz-good, smirnov, ruben-gambino).\n";
 static const char *help_ks2 =
-  "usage: " PROG " ks2 FILE1 FILE2 [--column C] [--alternative two-sided|less|greater]\n"
-  "                  [--csv] [--format kv|tsv|json]\n"
+  "usage: " PROG " ks2 FILE1 FILE2 [--column C [--column C2]]\n"
+  "       " PROG " ks2 FILE --column C1 --column C2\n"
+  "                  [--alternative two-sided|less|greater] [--csv] [--format kv|tsv|json]\n"
   "Two-sample Kolmogorov-Smirnov test of column C (number or header name, default 1)\n"
-  "of each file.\n"
+  "of each file; a second --column names FILE2's column (C2), or, with one FILE, the\n"
+  "two columns of that table compared with each other.\n"
   "--alternative: greater tests F1 > F2 somewhere (D = max(F1 - F2)), less F1 < F2.\n"
   "Prints D=... p=... n=N1,N2 method=exact|asymp (scipy.stats.ks_2samp).\n";
 static const char *help_kuiper =
@@ -120,6 +123,9 @@ typedef struct {
   const char *files[2];
   int nfiles;
   const char *column_name;   /* --column NAME: a header's column; NULL: the number column */
+  const char *column2_name;  /* ks2's second --column: FILE2's, or the one table's other */
+  long column2;
+  int ncolumns;
   long column, bins, clusters, k, k0, seed, max_iter, max_k;
   double a, b, cutoff, tol, reg, thresh, loc, scale, shape[2];
   size_t nshape;
@@ -251,13 +257,21 @@ static void parse(int argc, char **argv, opts *o)
       if (o->nfiles == 2) die(o->sub, "too many file arguments");
       o->files[o->nfiles++] = v;
       break;
-    case O_COLUMN:
-      /* A number keeps its meaning (1-based); anything else names a header's column. */
-      o->column_name = NULL;
+    case O_COLUMN: {
+      /* A number keeps its meaning (1-based); anything else names a header's column. Only
+       * ks2 compares two columns, so only it takes a second --column. */
+      if (o->ncolumns == (strcmp(o->sub, "ks2") ? 1 : 2))
+        die(o->sub, "--column given %s (see " PROG " %s --help)",
+            o->ncolumns == 1 ? "twice" : "three times", o->sub);
+      const char **name = o->ncolumns ? &o->column2_name : &o->column_name;
+      long *number = o->ncolumns ? &o->column2 : &o->column;
+      *name = NULL;
       o->have_column = 1;
-      if (strspn(v, "0123456789+-") == strlen(v)) o->column = int_arg(o, a, v, 1, 1000000);
-      else o->column_name = v;
+      o->ncolumns++;
+      if (strspn(v, "0123456789+-") == strlen(v)) *number = int_arg(o, a, v, 1, 1000000);
+      else *name = v;
       break;
+    }
     case O_UNIFORM:
       o->a = num_arg(o, a, v, -1e300, 1e300);
       o->b = num_arg(o, a, p.value[1], -1e300, 1e300);
@@ -454,12 +468,13 @@ static nl_table *read_table(const opts *o, const char *path)
   return t;
 }
 
-/* Column --column of the table (a number, or a header's name) as a new array. */
-static double *column(const opts *o, const nl_table *t, const char *path)
+/* Column NUMBER (1-based) or NAME (a header's, when not NULL) of the table as a new array. */
+static double *column_of(const opts *o, const nl_table *t, const char *path, long number,
+                         const char *name)
 {
-  size_t c = (size_t)o->column - 1;
-  if (o->column_name) {
-    long j = nl_table_column(t, o->column_name);
+  size_t c = (size_t)number - 1;
+  if (name) {
+    long j = nl_table_column(t, name);
     if (j < 0) {
       /* The table's own names, so the user can copy one; a wide table's list is cut. */
       char list[512];
@@ -470,16 +485,21 @@ static double *column(const opts *o, const nl_table *t, const char *path)
         len += w > 0 ? (size_t)w : 0;
         if (i >= 16) break;
       }
-      die(o->sub, "%s: no column '%s' (the table's columns: %s)", shown(path), o->column_name,
-          list);
+      die(o->sub, "%s: no column '%s' (the table's columns: %s)", shown(path), name, list);
     }
     c = (size_t)j;
-  } else if ((size_t)o->column > t->ncols) {
-    die(o->sub, "%s: no column %ld (the table has %zu)", shown(path), o->column, t->ncols);
+  } else if ((size_t)number > t->ncols) {
+    die(o->sub, "%s: no column %ld (the table has %zu)", shown(path), number, t->ncols);
   }
   double *x = nl_xmalloc(t->nrows * sizeof(double));
   for (size_t i = 0; i < t->nrows; i++) x[i] = nl_table_get(t, i, c);
   return hold(x);
+}
+
+/* Column --column of the table. */
+static double *column(const opts *o, const nl_table *t, const char *path)
+{
+  return column_of(o, t, path, o->column, o->column_name);
 }
 
 static void fail_lib(const opts *o, const char *path, const nl_error *err)
@@ -539,6 +559,11 @@ static void run_ks(const opts *o, int kuiper)
 {
   nl_table *t = read_table(o, o->files[0]);
   double *x = column(o, t, o->files[0]);
+  /* scipy's kstest has no default CDF; a silent U(0, 1) tested the wrong law. Kuiper's keeps
+   * astropy's default, the uniform on the circle [0, 1). */
+  if (!kuiper && !o->have_uniform && !o->dist && !o->cdf_file)
+    die(o->sub, "the null distribution is required: --uniform A B, --dist NAME or --cdf TABLE "
+        "(see " PROG " ks --help)");
   nl_stats_dist dist;
   nl_table *ct;
   double *xF;
@@ -573,12 +598,21 @@ static void run_ks(const opts *o, int kuiper)
 
 static void run_ks2(const opts *o)
 {
-  if (o->nfiles != 2) die(o->sub, "needs two files (see " PROG " ks2 --help)");
-  nl_table *t1 = read_table(o, o->files[0]), *t2 = read_table(o, o->files[1]);
-  double *x = column(o, t1, o->files[0]), *y = column(o, t2, o->files[1]);
+  if (o->nfiles == 1 && o->ncolumns != 2)
+    die(o->sub, "one file needs two columns to compare: --column C1 --column C2 (see " PROG
+        " ks2 --help)");
+  if (o->nfiles != 1 && o->nfiles != 2) die(o->sub, "needs two files (see " PROG " ks2 --help)");
+  /* One table read once: its two columns are the two samples. */
+  nl_table *t1 = read_table(o, o->files[0]);
+  nl_table *t2 = o->nfiles == 2 ? read_table(o, o->files[1]) : NULL;
+  const nl_table *second = t2 ? t2 : t1;
+  const char *second_path = o->files[o->nfiles - 1];
+  double *x = column(o, t1, o->files[0]);
+  double *y = o->ncolumns == 2 ? column_of(o, second, second_path, o->column2, o->column2_name)
+                               : column(o, second, second_path);
   nl_stats_ks_result k;
   nl_error err;
-  if (nl_stats_ks2_test(x, t1->nrows, y, t2->nrows, &k, &err)) fail_lib(o, o->files[0], &err);
+  if (nl_stats_ks2_test(x, t1->nrows, y, second->nrows, &k, &err)) fail_lib(o, o->files[0], &err);
   nl_stats_ks_one_sided(&k, o->alt);
   record r = {0};
   char n12[64];
