@@ -2,8 +2,11 @@
 # The installed library as another project uses it:
 #  - `meson install --destdir` puts libnoiselab (shared and static), the
 #    headers under include/noiselab/ and noiselab.pc in the destdir;
-#  - every installed header compiles on its own with pkg-config's --cflags
-#    (a public header that needs a private, uninstalled one fails here);
+#  - every installed header compiles on its own with pkg-config's --cflags,
+#    as C and as C++ (a public header that needs a private, uninstalled one
+#    fails here, and so does one whose C a C++ compiler refuses or whose
+#    calls lack extern "C": a C++ program calls one through a pointer, which
+#    links only with C linkage);
 #  - an outside C program, built with `pkg-config --cflags --libs noiselab`,
 #    evaluates Perlin's improved noise, writes a table with nl_table and a
 #    PNG through the image module; the values are checked by column name,
@@ -43,18 +46,44 @@ cflags="$(pc --cflags)" || fail "pkg-config --cflags noiselab failed"
 libs="$(pc --libs)" || fail "pkg-config --libs noiselab failed"
 slibs="$(pc --static --libs)" || fail "pkg-config --static --libs noiselab failed"
 [[ "$cflags" == *"$inc/noiselab"* ]] || fail "--cflags does not point into the destdir: $cflags"
-CC="${CC:-cc}"
+CC="${CC:-cc}" CXX="${CXX:-c++}"
 
-# Every installed header on its own.
+# Every installed header on its own, in C and in C++.
 n=0
 while IFS= read -r h; do
   # shellcheck disable=SC2086  # pkg-config's flags are words
   printf '#include "%s"\n' "${h#"$inc/noiselab/"}" \
     | "$CC" -std=c11 -fsyntax-only -Wall -Werror $cflags -x c - 2>"$out/header.log" \
     || { cat "$out/header.log"; fail "installed header ${h#"$dest"} does not compile on its own"; }
+  # shellcheck disable=SC2086
+  printf '#include "%s"\nint main(void) { return 0; }\n' "${h#"$inc/noiselab/"}" \
+    | "$CXX" -std=c++17 -fsyntax-only -Wall -Wextra -Werror $cflags -x c++ - 2>"$out/header.log" \
+    || { cat "$out/header.log"; fail "installed header ${h#"$dest"} does not compile as C++"; }
+  grep -q 'extern "C"' "$h" || fail "installed header ${h#"$dest"} has no extern \"C\" guard"
   n=$((n + 1))
 done < <(find "$inc/noiselab" -name '*.h' | sort)
 [ "$n" -ge 10 ] || fail "only $n headers installed"
+
+# A C++ program that calls the library (out-of-line calls: C linkage, or the
+# link fails) and gets the same value as the inline point call.
+cat >"$out/outside.cpp" <<'CPP'
+#include <noise/nl_noise.h>
+#include <cstdio>
+int main()
+{
+  nl_noise_perm3 p;
+  nl_noise_perm3_reference(&p);
+  double row[1];
+  nl_noise_perm3_row(&p, 3.14, 0.1, 42, 7, 1, row);
+  std::printf("%.17g %.17g\n", row[0], nl_noise_perm3_eval(&p, 3.14, 42, 7));
+  return row[0] == nl_noise_perm3_eval(&p, 3.14, 42, 7) ? 0 : 1;
+}
+CPP
+# shellcheck disable=SC2086
+"$CXX" -std=c++17 -Wall -Werror $cflags -o "$out/outside-cpp" "$out/outside.cpp" $libs \
+  2>"$out/cxx.log" || { cat "$out/cxx.log"; fail "a C++ program does not build against libnoiselab"; }
+LD_LIBRARY_PATH="$lib" "$out/outside-cpp" >"$out/cpp.log" 2>&1 \
+  || fail "the C++ program's row and point call differ: $(cat "$out/cpp.log")"
 
 cat >"$out/outside.c" <<'C'
 /* An outside program: Perlin's improved noise on a few points, as a table. */

@@ -29,7 +29,15 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 size_t nl_abi_sizeof(const char *type, const char *member);
 long nl_abi_offsetof(const char *type, const char *member);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -41,6 +41,10 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum {
   NL_OK = 0,
   NL_EINVAL = 1,   /* bad argument or parameter */
@@ -295,5 +299,9 @@ double nl_wrap_angle(double t);
 /* log |Gamma(x)|, the value of lgamma, without writing lgamma's global
  * signgam (a data race when p-values are computed in threads). */
 double nl_lgamma(double x);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -36,6 +36,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef void (*nl_parallel_fn)(void *ctx, size_t item, int thread);
 
 void nl_parallel_for(size_t n, int nthreads, nl_parallel_fn fn, void *ctx);
@@ -78,5 +82,9 @@ void nl_parallel_blas_restore(int was);
 
 /* The most threads nl_parallel_for starts. */
 #define NL_PARALLEL_MAX 64
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

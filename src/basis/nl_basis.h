@@ -36,6 +36,10 @@
 #include "noise/nl_noise.h"
 #include "wavelet/nl_wavelet.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* What a basis reads of nl_basis_options, and how it lies in space. */
 enum {
   NL_BASIS_READS_TABLE = 1 << 0,      /* table_size */
@@ -145,5 +149,9 @@ typedef struct {
 extern const nl_basis_sum nl_basis_single;
 const nl_basis_sum *nl_basis_sums(size_t *n);
 const nl_basis_sum *nl_basis_sum_find(const char *name);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -73,6 +73,10 @@
 #include "noise/nl_noise.h"
 #include "spectrum/nl_spectrum.h"   /* nl_spectrum_psd1: bounds sits above spectrum */
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* ---- fractal bounds (eq. 4.1-4.3) ------------------------------------ */
 
 double nl_bounds_octave(int i);      /* 2^-i */
@@ -174,5 +178,9 @@ nl_status nl_bounds_psd1_fraction_above(const double *x, size_t n, double rate, 
 void nl_bounds_sample_line(const nl_noise_perm3 *p, const nl_noise_octaves *o,
                            const double *origin, const double *dir, double rate, size_t n,
                            double *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

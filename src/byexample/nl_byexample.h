@@ -107,6 +107,10 @@
 #include "image/nl_image.h"
 #include "wavelet/nl_wavelet.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define NL_BYEXAMPLE_HIST 10       /* the paper's reading: quantiles at p = j/9 */
 #define NL_BYEXAMPLE_HIST_MAX 33   /* knots of the widest representation */
 #define NL_BYEXAMPLE_TILE 256      /* default 2D tile period */
@@ -296,5 +300,9 @@ double nl_byexample_speckle(const nl_image *ex, const nl_image *syn);
  * (turbulence, 3 colours), "marble" (stripes: anisotropic, a failure case).
  * NULL for an unknown kind. */
 nl_image *nl_byexample_exemplar(const char *kind, int size, unsigned long seed);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -34,6 +34,10 @@
 
 #include "byexample/nl_byexample.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 enum { NL_BYEXAMPLE_EQ12, NL_BYEXAMPLE_EQ12_TAPER, NL_BYEXAMPLE_NNLS_RAW, NL_BYEXAMPLE_CORRECTED, NL_BYEXAMPLE_ESTIMATORS };
 extern const char *const nl_byexample_estimator_names[NL_BYEXAMPLE_ESTIMATORS];
 
@@ -114,5 +118,9 @@ int nl_byexample_fit_all(const double *img, int w, int h, int tile, double frac,
 /* Two-sided p-value of the paired t-test of a[i] - b[i], i < n (n >= 2;
  * 1 when every difference is 0). */
 double nl_byexample_paired_p(const double *a, const double *b, int n);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

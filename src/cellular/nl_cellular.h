@@ -73,6 +73,10 @@
 #include "noise/nl_noise.h"
 #include "stats/nl_stats.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define NL_CELLULAR_PERM 65536
 #define NL_CELLULAR_MAX_M 64
 #define NL_CELLULAR_NMAX 4
@@ -190,5 +194,9 @@ nl_status nl_cellular_texture_grid(nl_cellular_gctbf_texture kind, const char *e
  * `spacing`; light is a unit vector. */
 void nl_cellular_heightfield_shade(const double *height, int w, int h, double spacing,
                                    const double *light, double *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

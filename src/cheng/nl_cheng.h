@@ -181,6 +181,10 @@
 
 #include <gsl/gsl_rng.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* ---- control pattern ---------------------------------------------------- */
 
 #define NL_CHENG_MAX_OCTAVES 8   /* F <= 8 (nl_cheng_config_check) */
@@ -382,5 +386,9 @@ nl_noise_octaves nl_cheng_octaves(const nl_cheng_config *c);
 /* The problem's current log gains u_1..u_F into out[0..F-1] (the config's
  * until a level with amp_vary has moved them). */
 void nl_cheng_log_gains(const nl_cheng_problem *p, double *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -91,6 +91,10 @@
 
 #include <gsl/gsl_rng.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* ---- gradient table on the sphere -------------------------------------- */
 
 /* The table is nl_noise_grad3 (seeded from stream ("cheng3.table", 0)); the
@@ -183,5 +187,9 @@ nl_status nl_cheng3_run(const nl_cheng3_config *c, const nl_cheng3_pattern *pat,
 /* counts[l] = entries first used by octave l+1's lattice ((ceil(f_l) + 1)^3
  * points), for l < octaves: what multi-level annealing would give each level. */
 void nl_cheng3_level_entries(const nl_noise_grad3 *t, const nl_cheng3_config *c, size_t *counts);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

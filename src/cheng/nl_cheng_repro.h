@@ -96,6 +96,10 @@
 #include "cheng/nl_cheng.h"
 #include "stats/nl_gmm.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum { NL_CHENG_REP_COSSIN = 0, NL_CHENG_REP_UNWRAP = 1 } nl_cheng_rep;
 
 typedef struct {
@@ -248,5 +252,9 @@ nl_status nl_cheng_k_curve(const nl_cheng_pool *pool, const nl_cheng_model *m, c
 typedef struct { double tau, ess_tau, icc, ess_kish, msd1, var_total, dec; int capped; } nl_cheng_pool_ess_result;
 nl_cheng_pool *nl_cheng_pool_thin(const nl_cheng_pool *p, int per_run, int stride);
 void nl_cheng_pool_ess(const nl_cheng_pool *p, nl_cheng_pool_ess_result *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

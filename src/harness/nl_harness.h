@@ -71,6 +71,10 @@
 #include "image/nl_image.h"
 #include "table/nl_table.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct nl_harness nl_harness;
 
 /* The common options as parsed, nothing else done (no output, no exit). */
@@ -444,5 +448,9 @@ const char *nl_harness_verdict_word(nl_harness_outcome outcome, const char *kind
 /* Writes report.md, checks.tsv, verdicts.tsv (when declared) and manifest.tsv,
  * frees r; returns 0 for main(). */
 int nl_harness_end(nl_harness *r);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -21,6 +21,10 @@
 
 #include "base/nl_base.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct nl_image {
   int width, height, channels;
   float *data;
@@ -117,5 +121,9 @@ const char *nl_image_library_version(void);
  * it; if none loads, read and write fail with NL_EIO and a message naming
  * the places tried. 1 once it is loaded (for tests). */
 int nl_image_backend_loaded(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -73,6 +73,10 @@
 #include <stdint.h>
 #include <string.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* src/math/nl_math_fit.py's output, verbatim (P0's value is pi to 17
  * digits, not pi itself). */
 /* SINPI_P: degree 6 in u, largest relative error 3.5e-18 */
@@ -178,5 +182,9 @@ inline void nl_math_sincospi(double x, double *s, double *c)
  * bits (nl_math_simd_body.h). x and y may be the same array. Marble's
  * annealer evaluates its control value this way, a move's points at once. */
 void nl_math_sinpi_n(size_t n, const double *x, double *y);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -79,6 +79,10 @@
 #define NL_NOISE_INLINE
 #endif
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* ---- 2D gradient-table noise ---------------------------------------- */
 
 typedef struct {
@@ -331,7 +335,11 @@ typedef double nl_noise_v2d __attribute__((vector_size(16)));
 /* Gradients a and b of Perlin's 16 as lane pairs, at entry 16 a + b of
  * each component's array. */
 typedef struct { nl_noise_v2d gx[256], gy[256], gz[256]; } nl_noise_perm3_gradpairs_table;
+#ifdef __cplusplus
+static_assert(sizeof(nl_noise_v2d[256]) == 4096, "the point call's offsets of gy and gz");
+#else
 _Static_assert(sizeof(nl_noise_v2d[256]) == 4096, "the point call's offsets of gy and gz");
+#endif
 extern const nl_noise_perm3_gradpairs_table nl_noise_perm3_gradpairs;
 
 #define NL_NOISE_FADE_(t) ((t) * (t) * (t) * ((t) * ((t) * 6.0 - 15.0) + 10.0))
@@ -451,6 +459,10 @@ NL_NOISE_INLINE double nl_noise_perm3_fractal_eval(const nl_noise_perm3 *p,
 #undef NL_NOISE_LERP_
 #undef NL_NOISE_FADE_
 
+#endif
+
+#ifdef __cplusplus
+}
 #endif
 
 #endif

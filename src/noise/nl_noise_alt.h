@@ -32,6 +32,10 @@
 
 #include "noise/nl_noise.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
   unsigned char p[512];   /* permutation of 0..255, doubled */
   double g[256][3];       /* gradient per hash value */
@@ -55,5 +59,9 @@ void nl_noise_alt_simplex2(nl_noise_alt *t, const nl_noise_perm3 *p);
 /* Gradients through an RGBA8 texture, evaluation in float32. */
 void nl_noise_alt_gpu8(nl_noise_alt *t);
 double nl_noise_alt_eval(const nl_noise_alt *t, double x, double y, double z);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -20,6 +20,10 @@
 #include <math.h>
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Perlin 2002's quintic fade, in his operation order (Horner from t^5 down):
  * another order changes the last bits of every sample. */
 static inline double nl_noise_fade(double t) { return t * t * t * (t * (t * 6 - 15) + 10); }
@@ -66,5 +70,9 @@ static inline long nl_noise_lmod(long a, long m)
 /* Row sampling indexes collapsed columns by cell: only where the lattice
  * coordinate is below 2^52 (beyond, doubles have no fractional bits). */
 #define NL_LATTICE_EXACT 0x1p52
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

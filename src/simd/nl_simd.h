@@ -32,6 +32,10 @@
 #define NL_SIMD_X86 0
 #endif
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum {
   NL_SIMD_SCALAR = 0, NL_SIMD_SSE2 = 1, NL_SIMD_AVX2 = 2, NL_SIMD_AVX512 = 3
 } nl_simd_level;
@@ -43,5 +47,9 @@ int nl_simd_supported(int level);    /* 1 if this CPU runs it */
 int nl_simd_set(int level);
 const char *nl_simd_name(int level);          /* "scalar", ..., "avx512"; "unknown" */
 int nl_simd_from_name(const char *name);      /* -1 if none */
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -33,6 +33,10 @@
 
 #include "base/nl_base.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* A plan for w x h real images: twiddles and buffers allocated once per
  * size, for transforming many images (GSL style: _alloc, use, _free).
  * nl_spectrum_rfft2 writes the half spectrum, numpy's rfft2 layout:
@@ -106,5 +110,9 @@ enum { NL_SPECTRUM_RECT = 0, NL_SPECTRUM_HANN = 1 };
 /* NL_EINVAL also for an unknown window. */
 nl_status nl_spectrum_psd1_window(const double *x, size_t n, double rate, int window, double *f, double *P,
                                   nl_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -59,6 +59,10 @@
 
 #include "base/nl_base.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum {
   NL_LINKAGE_SINGLE,
   NL_LINKAGE_COMPLETE,
@@ -124,5 +128,9 @@ nl_status nl_cluster_fcluster_distance(const double *Z, size_t n, double t, int 
                                        size_t *nclusters, nl_error *err);
 nl_status nl_cluster_fcluster_maxclust(const double *Z, size_t n, size_t k, int *labels,
                                        size_t *nclusters, nl_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

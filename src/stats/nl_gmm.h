@@ -59,6 +59,10 @@
 
 #include <gsl/gsl_rng.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* scikit-learn's covariance_type: full (one matrix per component), diag
  * (variances per component), tied (one matrix shared by all components:
  * the pooled scatter / n + reg_covar I) and spherical (one variance per
@@ -168,5 +172,9 @@ nl_gmm_memo *nl_gmm_memo_alloc(void);
 void nl_gmm_memo_free(nl_gmm_memo *m);
 /* Fits done and fits taken from the memo (path entries), for reports. */
 void nl_gmm_memo_counts(const nl_gmm_memo *m, size_t *fitted, size_t *reused);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

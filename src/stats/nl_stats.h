@@ -74,6 +74,10 @@
 
 #include <gsl/gsl_histogram.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* A continuous cumulative distribution function. */
 typedef double (*nl_stats_cdf_fn)(double x, void *params);
 
@@ -360,5 +364,9 @@ void nl_stats_sort(double *x, size_t n);
  * kind='stable'): equal values, -0 and +0 included, in index order (the
  * radix sort at every n). NaN not allowed. */
 void nl_stats_argsort(const double *x, size_t n, size_t *order);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

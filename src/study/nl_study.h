@@ -41,6 +41,10 @@
 #include "table/nl_table.h"
 #include "texture/nl_texture.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* ---- surveys: what a sum of octaves looks like, over seeds -------------
  *
  * nl_study_survey_run evaluates a sum of octaves of the chosen basis (a fresh
@@ -227,5 +231,9 @@ nl_table *nl_study_example_summary_table(void);
 nl_status nl_study_example_compare(const nl_image *ex, const nl_image *syn, const char *name,
                                    const char *rep, int replicate, double min_share, double max_ratio,
                                    double max_ks, nl_table *bands, nl_table *sum, nl_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

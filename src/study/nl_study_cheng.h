@@ -42,6 +42,10 @@
 #include "study/nl_study.h"
 #include "table/nl_table.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* ---- control patterns from images (sec. 3.4.1) -------------------------- */
 
 /* From an RGBA/RGB/grey image: D = red (grey) channel, alpha 0 = no control.
@@ -365,5 +369,9 @@ nl_status nl_study_cheng_repro_pool(nl_study_cheng_repro *rp, const nl_cheng_con
                                     const nl_cheng_pattern *pat, const nl_cheng_pool_options *po,
                                     unsigned long seed, nl_error *err);
 void nl_study_cheng_repro_clear(nl_study_cheng_repro *rp);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -7,6 +7,10 @@
 
 #include "base/nl_base.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Removes "OPTION DIR" from argv (before nl_harness_begin sees it) and sets
  * *dir to DIR, else to def; "OPTION: missing value" / "empty folder name". */
 nl_status nl_study_dir_option(int *argc, char **argv, const char *option, const char *def,
@@ -17,5 +21,9 @@ nl_status nl_study_dir_option(int *argc, char **argv, const char *option, const 
  * folder. */
 nl_status nl_study_pngs(const char *dir, char ***paths, int *n, nl_error *err);
 void nl_study_paths_free(char **paths);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

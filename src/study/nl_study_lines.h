@@ -21,6 +21,10 @@
 
 #include "bounds/nl_bounds.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The points origin + t dir, t in noise units (dir of unit length for t to
  * be the arc length). */
 typedef struct {
@@ -31,5 +35,9 @@ typedef struct {
  * units apart from the origin (nl_bounds_sample_line); the caller frees. */
 double *nl_study_line_sample(const nl_noise_perm3 *p, const nl_noise_octaves *o,
                              const nl_study_line *l, double length, double rate, size_t *n);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -27,6 +27,10 @@
 
 #include <stdio.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* ---- values: NAME=SPEC (nl_sweep_plan.c) -------------------------------
  *
  * SPEC is a list 0,0.1,0.5 (each a number, kept as written); a linear range
@@ -164,5 +168,9 @@ nl_status nl_sweep_plot(const nl_sweep_merge *m, const nl_sweep_merge_opts *o, c
  * dir/merged, the plot of o->table (NULL: the first) written. */
 nl_status nl_sweep_merge_all(const char *dir, const nl_sweep_merge_opts *o, FILE *out, FILE *log,
                              nl_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -33,6 +33,10 @@
 
 #include "base/nl_base.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct nl_table {
   size_t nrows, ncols;
   char **names;      /* ncols column names */
@@ -103,5 +107,9 @@ nl_status nl_table_read(const char *path, int flags, nl_table **out, nl_error *e
 /* Formats a double the way the writer does (shortest of %.15g/%.17g that
  * round-trips). buf needs 32 bytes. */
 void nl_table_format_double(char *buf, double v);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -21,6 +21,10 @@
 #include "image/nl_image.h"
 #include "noise/nl_noise.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define NL_RAMP_MAX 32
 enum { NL_RAMP_LINEAR = 0, NL_RAMP_SPLINE = 1 };
 
@@ -86,5 +90,9 @@ nl_image *nl_texture_wood_image(const nl_texture_wood *w, const double *t, int w
  * (vertical 1) of an image: down-crossings of the line's mean luminance
  * (Rec. 709), with a hysteresis of a tenth of its range. */
 int nl_texture_band_count(const nl_image *im, int vertical, int index);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -54,6 +54,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct {
   int dim;        /* 2 or 3 */
   int n;          /* period per axis, even */
@@ -131,5 +135,9 @@ nl_status nl_wavelet_bands_init(nl_wavelet_bands *b, int nbands, const double *w
  * out[y*w + x] = sum_k b->w[k] N(2^-k scale (x + 1/2, y + 1/2, z) + o_k). */
 void nl_wavelet_bands_grid(const nl_wavelet_tile *t, const nl_wavelet_bands *b, int w, int h,
                            double z, double scale, double *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
