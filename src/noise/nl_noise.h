@@ -184,7 +184,7 @@ typedef nl_simd_level nl_noise_simd_level;
 static inline int nl_noise_simd_get(void) { return nl_simd_get(); }
 static inline int nl_noise_simd_best(void) { return nl_simd_best(); }
 static inline int nl_noise_simd_supported(int level) { return nl_simd_supported(level); }
-static inline int nl_noise_simd_set(int level) { return nl_simd_set(level); }
+static inline nl_status nl_noise_simd_set(int level) { return nl_simd_set(level); }
 static inline const char *nl_noise_simd_name(int level) { return nl_simd_name(level); }
 static inline int nl_noise_simd_from_name(const char *name) { return nl_simd_from_name(name); }
 

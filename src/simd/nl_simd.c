@@ -3,7 +3,6 @@
 #include "simd/nl_simd.h"
 #include "base/nl_base.h"
 
-#include <gsl/gsl_errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -71,10 +70,9 @@ int nl_simd_get(void)
   return l;
 }
 
-int nl_simd_set(int level)
+nl_status nl_simd_set(int level)
 {
-  if (level < 0 || level > NL_SIMD_AVX512) return GSL_EINVAL;
-  if (!nl_simd_supported(level)) return GSL_EUNSUP;
+  if (level < 0 || level > NL_SIMD_AVX512 || !nl_simd_supported(level)) return NL_EINVAL;
   __atomic_store_n(&simd_level, level, __ATOMIC_RELEASE);
-  return GSL_SUCCESS;
+  return NL_OK;
 }

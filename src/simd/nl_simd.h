@@ -32,6 +32,8 @@
 #define NL_SIMD_X86 0
 #endif
 
+#include "base/nl_base.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -43,8 +45,9 @@ typedef enum {
 int nl_simd_get(void);               /* the level in use */
 int nl_simd_best(void);              /* the best this CPU runs */
 int nl_simd_supported(int level);    /* 1 if this CPU runs it */
-/* GSL_SUCCESS, GSL_EINVAL (no such level) or GSL_EUNSUP (not on this CPU). */
-int nl_simd_set(int level);
+/* NL_OK, or NL_EINVAL for a level that does not exist or that this CPU cannot
+ * run (nl_simd_supported tells which); the level in use is then unchanged. */
+nl_status nl_simd_set(int level);
 const char *nl_simd_name(int level);          /* "scalar", ..., "avx512"; "unknown" */
 int nl_simd_from_name(const char *name);      /* -1 if none */
 
