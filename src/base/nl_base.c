@@ -345,7 +345,7 @@ static void live_on_signal(int sig)
 
 static void live_install(void)
 {
-  atexit(live_unlink_all);
+  atexit(live_unlink_all);   /* exit(), so a tool may die() between open and commit */
   for (int k = 0; k < 3; k++) {
     struct sigaction sa;
     if (sigaction(live_signals[k], NULL, &live_previous[k]) != 0) continue;
@@ -359,9 +359,15 @@ static void live_install(void)
   }
 }
 
-static int live_add(char *name)
+/* A library must not change how its host program ends: the handlers and the
+ * exit hook are the program's choice, made once, before its first output. */
+void nl_atomic_cleanup_install(void)
 {
   pthread_once(&live_once, live_install);
+}
+
+static int live_add(char *name)
+{
   for (int i = 0; i < LIVE_MAX; i++) {
     char *none = NULL;
     __atomic_store_n(&live_pid[i], getpid(), __ATOMIC_RELEASE);

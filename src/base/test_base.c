@@ -440,6 +440,7 @@ NL_TEST(atomic_temporaries_removed_on_exit_and_signals)
     pid_t pid = fork();
     if (pid == 0) {
       nl_atomic_file af;
+      nl_atomic_cleanup_install();
       if (nl_atomic_open(&af, p, &err)) _exit(4);
       fputs("half", af.fp);
       fflush(af.fp);
@@ -455,6 +456,49 @@ NL_TEST(atomic_temporaries_removed_on_exit_and_signals)
   }
   NL_CHECK(access(p, F_OK) != 0);
   free(sub); free(p);
+}
+
+/* The library leaves the host's signal dispositions as they were: a program
+ * with its own SIGINT handler keeps it after writing through the library, and
+ * nothing is installed until the program asks (nl_atomic_cleanup_install). */
+static void host_handler(int sig) { (void)sig; }
+
+NL_TEST(library_installs_no_signal_handler)
+{
+  static const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+  pid_t pid = fork();
+  if (pid == 0) {   /* a fresh process: the test runner's own state stays out */
+    struct sigaction mine, was;
+    memset(&mine, 0, sizeof mine);
+    mine.sa_handler = host_handler;
+    if (sigaction(SIGINT, &mine, NULL)) _exit(3);
+    struct sigaction before[3];
+    for (int k = 0; k < 3; k++) sigaction(sigs[k], NULL, &before[k]);
+    nl_error err;
+    char *p = nl_path_join(dir, "host.tsv");
+    nl_atomic_file af;
+    if (nl_atomic_open(&af, p, &err)) _exit(4);
+    fputs("x\n", af.fp);
+    if (nl_atomic_commit(&af, &err)) _exit(5);
+    if (nl_atomic_write(p, "y\n", 2, &err)) _exit(6);
+    for (int k = 0; k < 3; k++) {
+      sigaction(sigs[k], NULL, &was);
+      if (was.sa_handler != before[k].sa_handler) _exit(10 + k);
+    }
+    sigaction(SIGINT, NULL, &was);
+    if (was.sa_handler != host_handler) _exit(20);
+    /* and the program's own choice does install them */
+    nl_atomic_cleanup_install();
+    sigaction(SIGTERM, NULL, &was);
+    _exit(was.sa_handler == before[1].sa_handler && before[1].sa_handler != SIG_IGN ? 21 : 0);
+  }
+  int status = -1;
+  NL_CHECK(pid > 0 && waitpid(pid, &status, 0) == pid);
+  NL_CHECK(WIFEXITED(status));
+  if (WIFEXITED(status) && WEXITSTATUS(status))
+    printf("  child exit %d (10..12: a disposition changed; 20: SIGINT's handler; 21: none installed on request)\n",
+           WEXITSTATUS(status));
+  NL_CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 0);
 }
 
 NL_TEST(range_checked_parsing)

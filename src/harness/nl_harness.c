@@ -219,6 +219,7 @@ void nl_harness_oom_exit(size_t n)
 
 void nl_harness_program_start(void)
 {
+  nl_atomic_cleanup_install();
   nl_set_oom_handler(nl_harness_oom_exit);
   nl_parallel_blas_idle();
 }

@@ -101,8 +101,10 @@ void nl_harness_options_free(nl_harness_options *o);
 void nl_harness_oom_exit(size_t n);
 
 /* What every program does first (nl_harness_begin calls it; the tools call
- * it first thing in main): installs nl_harness_oom_exit and stops OpenBLAS's
- * spinning idle workers (nl_parallel_blas_idle, base/nl_parallel.h). */
+ * it first thing in main): installs the clean-up of open temporaries at exit
+ * and on a signal (nl_atomic_cleanup_install), installs nl_harness_oom_exit
+ * and stops OpenBLAS's spinning idle workers (nl_parallel_blas_idle,
+ * base/nl_parallel.h). */
 void nl_harness_program_start(void);
 
 /* nl_harness_parse; on error prints "NAME: message" and exits 2. --help and
