@@ -76,7 +76,7 @@ static void usage(FILE *fp, const char *cmd)
 }
 
 /* One line on stderr, exit 2: input quoted in it is escaped (nl_message). */
-#define die(...) nl_die("noiselab example: ", __VA_ARGS__)
+#define die(...) nl_tool_die("noiselab example: ", __VA_ARGS__)
 
 static void check(nl_status st, const nl_error *err) { if (st) die("%s", err->msg); }
 

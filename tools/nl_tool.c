@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
+#include <stdarg.h>
 #include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -38,6 +39,16 @@ void nl_tool_start(const char *name)
    * size this machine could allocate. */
   const char *mem_cap = getenv("NL_MEMAVAILABLE_OVERRIDE");
   if (mem_cap && *mem_cap) nl_mem_cap(strtod(mem_cap, NULL));
+}
+
+void nl_tool_die(const char *prefix, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  fputs(prefix, stderr);
+  nl_vmessage(stderr, fmt, ap);
+  va_end(ap);
+  exit(2);
 }
 
 /* path made absolute with every link resolved; for a path that does not

@@ -21,6 +21,11 @@
  *    refusal at a size this machine could allocate. */
 void nl_tool_start(const char *name);
 
+/* A tool's refusal: prefix ("noiselab render: ") and the message as
+ * nl_message prints it on stderr, then exit(2), the usage-error status. */
+void nl_tool_die(const char *prefix, const char *fmt, ...)
+  __attribute__((format(printf, 2, 3), noreturn));
+
 /* Refuses, before any work, an output path that would replace
  *  - one of the command's inputs (n of them, NULL entries skipped): the same
  *    file (device and inode; for an output not made yet, the same resolved

@@ -98,7 +98,7 @@ static void usage(void)
 }
 
 /* One line on stderr, exit 2: input quoted in it is escaped (nl_message). */
-#define fail(...) nl_die("noiselab render: ", __VA_ARGS__)
+#define fail(...) nl_tool_die("noiselab render: ", __VA_ARGS__)
 
 static void num(const char *opt, const char *val, double lo, double hi, double *out)
 {

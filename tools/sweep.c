@@ -18,7 +18,7 @@
 #include <unistd.h>
 
 /* One line on stderr, exit 2: input quoted in it is escaped (nl_message). */
-#define die(...) nl_die("noiselab sweep: ", __VA_ARGS__)
+#define die(...) nl_tool_die("noiselab sweep: ", __VA_ARGS__)
 
 static void check(nl_status s, const nl_error *err)
 {

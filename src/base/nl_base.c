@@ -863,16 +863,6 @@ const char *nl_file_image_kind(FILE *fp)
   return NULL;
 }
 
-void nl_die(const char *prefix, const char *fmt, ...)
-{
-  va_list ap;
-  va_start(ap, fmt);
-  fputs(prefix, stderr);
-  nl_vmessage(stderr, fmt, ap);
-  va_end(ap);
-  exit(2);
-}
-
 nl_status nl_stream_close(FILE *f, const char *what, nl_error *err)
 {
   int pending = __fpending(f) != 0, failed = ferror(f) != 0, e = 0;

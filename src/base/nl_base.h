@@ -75,10 +75,6 @@ nl_status nl_fail(nl_error *err, nl_status status, const char *fmt, ...)
  * input in it ("noiselab render: wrote FILE", a tool's error line). */
 void nl_message(FILE *f, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 void nl_vmessage(FILE *f, const char *fmt, va_list ap) __attribute__((format(printf, 2, 0)));
-/* A program's refusal: prefix ("noiselab render: ") and the message as
- * nl_message prints it on stderr, then exit(2), the usage-error status. */
-void nl_die(const char *prefix, const char *fmt, ...)
-  __attribute__((format(printf, 2, 3), noreturn));
 
 /* Flushes and closes a stream the program wrote without nl_atomic_* (its
  * stdout) and says whether every byte got there: stdio's error flag (a write
