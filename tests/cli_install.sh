@@ -42,6 +42,18 @@ for f in "$lib/libnoiselab.so" "$lib/libnoiselab.a" "$lib/noiselab/libnl_oiio.so
   [ -e "$f" ] || fail "not installed: ${f#"$dest"} (installed: $(cd "$dest" && find . -type f | sort | tr '\n' ' '))"
 done
 [ ! -e "$inc/noiselab/cheng/nl_cheng_internal.h" ] || fail "a private header was installed: nl_cheng_internal.h"
+# The lab (harness, study, sweep: how the noiselab programs run, record and
+# end) is not the library: none of its headers installed, none of its
+# symbols exported, and the library calls nothing that changes how its host
+# process ends (a signal disposition, an exit hook, exit itself).
+for m in harness study sweep; do
+  [ ! -e "$inc/noiselab/$m" ] || fail "the lab's headers were installed: include/noiselab/$m"
+done
+lab_syms="$(nm -D --defined-only "$lib/libnoiselab.so" | awk '$3 ~ /^nl_(harness|study|sweep|survey)_/ {print $3}' | head -n 3)"
+[ -z "$lab_syms" ] || fail "libnoiselab exports the lab's symbols: $lab_syms"
+ends="$(nm -D --undefined-only "$lib/libnoiselab.so" | awk '{sub(/@.*/, "", $2); print $2}' \
+        | grep -xE 'exit|_exit|_Exit|quick_exit|atexit|__cxa_atexit|on_exit|signal|sigaction|sigset|bsd_signal' || true)"
+[ -z "$ends" ] || fail "libnoiselab calls what ends or signals its host: $(echo $ends)"
 cflags="$(pc --cflags)" || fail "pkg-config --cflags noiselab failed"
 libs="$(pc --libs)" || fail "pkg-config --libs noiselab failed"
 slibs="$(pc --static --libs)" || fail "pkg-config --static --libs noiselab failed"

@@ -4,7 +4,6 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
-#include <pthread.h>
 #include <signal.h>
 #include <math.h>
 #include <stdarg.h>
@@ -307,63 +306,26 @@ char *nl_temp_sibling(const char *path)
   return temp_template(path, &suffix);
 }
 
-/* ---- temporaries removed at exit and on a signal --------------------
+/* ---- the temporaries open in this process ---------------------------
  *
  * A fixed table of the temporaries open in this process, claimed and
  * released with atomic exchanges so that threads writing at once need no
- * lock and a signal handler can read it: it only calls unlink() (async-
- * signal-safe). The pid kept with each entry stops a forked child that
- * calls exit() from removing its parent's files. */
+ * lock and a signal handler can read it: nl_atomic_unlink_open only calls
+ * unlink() (async-signal-safe). The pid kept with each entry stops a forked
+ * child that calls exit() from removing its parent's files. Who calls it, at
+ * exit or on a signal, is the program's choice (the lab's
+ * nl_harness_program_start): the library installs no handler. */
 #define LIVE_MAX 256
 static char *live_name[LIVE_MAX];
 static pid_t live_pid[LIVE_MAX];
-static const int live_signals[3] = {SIGINT, SIGTERM, SIGHUP};
-static struct sigaction live_previous[3];
-static pthread_once_t live_once = PTHREAD_ONCE_INIT;
 
-static void live_unlink_all(void)
+void nl_atomic_unlink_open(void)
 {
   pid_t me = getpid();
   for (int i = 0; i < LIVE_MAX; i++) {
     char *name = __atomic_load_n(&live_name[i], __ATOMIC_ACQUIRE);
     if (name && __atomic_load_n(&live_pid[i], __ATOMIC_ACQUIRE) == me) unlink(name);
   }
-}
-
-/* Removes the temporaries, puts back what the signal did before (the
- * default: end the process; or the program's own handler) and raises it
- * again; it is blocked in here, so it arrives when this returns. */
-static void live_on_signal(int sig)
-{
-  int saved = errno;
-  live_unlink_all();
-  for (int k = 0; k < 3; k++)
-    if (live_signals[k] == sig) sigaction(sig, &live_previous[k], NULL);
-  raise(sig);
-  errno = saved;
-}
-
-static void live_install(void)
-{
-  atexit(live_unlink_all);   /* exit(), so a tool may die() between open and commit */
-  for (int k = 0; k < 3; k++) {
-    struct sigaction sa;
-    if (sigaction(live_signals[k], NULL, &live_previous[k]) != 0) continue;
-    /* An ignored signal stays ignored (nohup, a shell's background job). */
-    if (!(live_previous[k].sa_flags & SA_SIGINFO) && live_previous[k].sa_handler == SIG_IGN)
-      continue;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = live_on_signal;
-    sigfillset(&sa.sa_mask);
-    sigaction(live_signals[k], &sa, NULL);
-  }
-}
-
-/* A library must not change how its host program ends: the handlers and the
- * exit hook are the program's choice, made once, before its first output. */
-void nl_atomic_cleanup_install(void)
-{
-  pthread_once(&live_once, live_install);
 }
 
 static int live_add(char *name)

@@ -25,11 +25,10 @@
  *   - anything else (a directory, a socket, a block device): refused.
  *
  * The library installs no signal handler and no exit hook: a program that
- * wants its open temporaries removed when it exits (exit(), so a tool may
- * die() between open and commit) and on SIGINT, SIGTERM and SIGHUP calls
- * nl_atomic_cleanup_install() once, first thing (the noiselab tools and
- * experiments do); the signal's previous disposition then applies. Without
- * it, or after SIGKILL, a temporary stays until the next write of its target:
+ * wants its open temporaries removed when it exits or on a signal calls
+ * nl_atomic_unlink_open() from its own hook and handler (the noiselab tools
+ * and experiments do, nl_harness_program_start). Without them, or after
+ * SIGKILL, a temporary stays until the next write of its target:
  * its name holds its writer's pid, and nl_atomic_open removes the
  * temporaries of its target whose writer is no live process.
  *
@@ -118,12 +117,11 @@ nl_status nl_atomic_commit(nl_atomic_file *af, nl_error *err);
  * are removed. Entries never opened (path NULL) are skipped. */
 nl_status nl_atomic_commit_all(nl_atomic_file *af, size_t n, nl_error *err);
 void nl_atomic_abort(nl_atomic_file *af);
-/* Removes this process's open temporaries at exit() and on SIGINT, SIGTERM
- * and SIGHUP (a signal ignored at the call stays ignored), then lets the
- * signal do what it did before. Once per process; any thread; idempotent.
- * Only a program calls it: it changes how the whole process ends.
- *   int main(void) { nl_atomic_cleanup_install(); ... } */
-void nl_atomic_cleanup_install(void);
+/* Removes the temporaries this process has open (not yet committed or
+ * aborted), by unlink() only: async-signal-safe, for a program's exit hook
+ * or signal handler (the noiselab programs install both:
+ * nl_harness_program_start). */
+void nl_atomic_unlink_open(void);
 /* Writes n bytes to `path` the same way (open, write, commit). */
 nl_status nl_atomic_write(const char *path, const void *data, size_t n, nl_error *err);
 /* A temporary path beside `path` keeping its extension (image writers pick

@@ -419,48 +419,9 @@ NL_TEST(atomic_commit_all_is_all_or_nothing)
   free(sub); free(a); free(b);
 }
 
-/* A temporary still open when the program exits or is stopped by SIGINT,
- * SIGTERM or SIGHUP is removed; the signal still ends the process. */
-NL_TEST(atomic_temporaries_removed_on_exit_and_signals)
-{
-  static const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
-  char *sub = nl_path_join(dir, "signals");
-  nl_error err = {{0}};
-  NL_CHECK(nl_mkdir_p(sub, &err) == NL_OK);
-  char *p = nl_path_join(sub, "t.tsv");
-  for (int k = 0; k <= 3; k++) {
-    struct sigaction was;
-    /* The library leaves a signal that was ignored when it installed its
-     * handlers ignored (nohup ignores SIGHUP): nothing to test there. */
-    if (k < 3 && sigaction(sigs[k], NULL, &was) == 0 && !(was.sa_flags & SA_SIGINFO) &&
-        was.sa_handler == SIG_IGN) {
-      nl_test_skip("signal %d is ignored in this environment (nohup?): left ignored", sigs[k]);
-      continue;
-    }
-    pid_t pid = fork();
-    if (pid == 0) {
-      nl_atomic_file af;
-      nl_atomic_cleanup_install();
-      if (nl_atomic_open(&af, p, &err)) _exit(4);
-      fputs("half", af.fp);
-      fflush(af.fp);
-      if (k == 3) exit(5);
-      raise(sigs[k]);
-      _exit(6);
-    }
-    int status = -1;
-    NL_CHECK(pid > 0 && waitpid(pid, &status, 0) == pid);
-    if (k == 3) NL_CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 5);
-    else NL_CHECK(WIFSIGNALED(status) && WTERMSIG(status) == sigs[k]);
-    NL_CHECK(no_temporaries(sub));
-  }
-  NL_CHECK(access(p, F_OK) != 0);
-  free(sub); free(p);
-}
-
 /* The library leaves the host's signal dispositions as they were: a program
- * with its own SIGINT handler keeps it after writing through the library, and
- * nothing is installed until the program asks (nl_atomic_cleanup_install). */
+ * with its own SIGINT handler keeps it after writing through the library
+ * (the noiselab programs install their clean-up: nl_harness_program_start). */
 static void host_handler(int sig) { (void)sig; }
 
 NL_TEST(library_installs_no_signal_handler)
@@ -487,16 +448,13 @@ NL_TEST(library_installs_no_signal_handler)
     }
     sigaction(SIGINT, NULL, &was);
     if (was.sa_handler != host_handler) _exit(20);
-    /* and the program's own choice does install them */
-    nl_atomic_cleanup_install();
-    sigaction(SIGTERM, NULL, &was);
-    _exit(was.sa_handler == before[1].sa_handler && before[1].sa_handler != SIG_IGN ? 21 : 0);
+    _exit(0);
   }
   int status = -1;
   NL_CHECK(pid > 0 && waitpid(pid, &status, 0) == pid);
   NL_CHECK(WIFEXITED(status));
   if (WIFEXITED(status) && WEXITSTATUS(status))
-    printf("  child exit %d (10..12: a disposition changed; 20: SIGINT's handler; 21: none installed on request)\n",
+    printf("  child exit %d (10..12: a disposition changed; 20: SIGINT's handler)\n",
            WEXITSTATUS(status));
   NL_CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 0);
 }

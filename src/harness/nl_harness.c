@@ -22,6 +22,8 @@
 #endif
 #endif
 #include <math.h>
+#include <pthread.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -217,9 +219,46 @@ void nl_harness_oom_exit(size_t n)
   exit(3);
 }
 
+/* ---- a program's end: its open temporaries removed -------------------
+ *
+ * At exit() (so a tool may die() between an output's open and its commit)
+ * and on SIGINT, SIGTERM and SIGHUP: the handler removes the temporaries,
+ * puts back what the signal did before (the default: end the process; or
+ * the program's own handler) and raises it again; it is blocked in here, so
+ * it arrives when the handler returns. An ignored signal stays ignored
+ * (nohup, a shell's background job). */
+static const int end_signals[3] = {SIGINT, SIGTERM, SIGHUP};
+static struct sigaction end_previous[3];
+static pthread_once_t end_once = PTHREAD_ONCE_INIT;
+
+static void end_on_signal(int sig)
+{
+  int saved = errno;
+  nl_atomic_unlink_open();
+  for (int k = 0; k < 3; k++)
+    if (end_signals[k] == sig) sigaction(sig, &end_previous[k], NULL);
+  raise(sig);
+  errno = saved;
+}
+
+static void end_install(void)
+{
+  atexit(nl_atomic_unlink_open);
+  for (int k = 0; k < 3; k++) {
+    struct sigaction sa;
+    if (sigaction(end_signals[k], NULL, &end_previous[k]) != 0) continue;
+    if (!(end_previous[k].sa_flags & SA_SIGINFO) && end_previous[k].sa_handler == SIG_IGN)
+      continue;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = end_on_signal;
+    sigfillset(&sa.sa_mask);
+    sigaction(end_signals[k], &sa, NULL);
+  }
+}
+
 void nl_harness_program_start(void)
 {
-  nl_atomic_cleanup_install();
+  pthread_once(&end_once, end_install);
   nl_set_oom_handler(nl_harness_oom_exit);
   nl_parallel_blas_idle();
 }

@@ -101,8 +101,9 @@ void nl_harness_options_free(nl_harness_options *o);
 void nl_harness_oom_exit(size_t n);
 
 /* What every program does first (nl_harness_begin calls it; the tools call
- * it first thing in main): installs the clean-up of open temporaries at exit
- * and on a signal (nl_atomic_cleanup_install), installs nl_harness_oom_exit
+ * it first thing in main): removes the open temporaries (nl_atomic_unlink_open)
+ * at exit and on SIGINT, SIGTERM and SIGHUP, then lets the signal do what it
+ * did before (an ignored one stays ignored), installs nl_harness_oom_exit
  * and stops OpenBLAS's spinning idle workers (nl_parallel_blas_idle,
  * base/nl_parallel.h). */
 void nl_harness_program_start(void);

@@ -9,6 +9,8 @@
 #include "table/nl_table.h"
 #include "nl_test.h"
 
+#include <signal.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
@@ -444,6 +446,58 @@ NL_TEST(verdict_rules)
   NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_REPRODUCED, "selected 1/19"), "consistent after selection"));
   NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_PARTLY, "fitted 1/6"), "partly"));
   NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_REPRODUCED, "by construction"), "by construction"));
+}
+
+/* No hidden file (a temporary's name starts with a dot) left in folder. */
+static int no_temporaries(const char *folder)
+{
+  char cmd[600], out[64] = "";
+  snprintf(cmd, sizeof cmd, "ls -A '%s' | grep -c '^\\.' || true", folder);
+  FILE *p = popen(cmd, "r");
+  if (!p) return 0;
+  if (!fgets(out, sizeof out, p)) out[0] = '\0';
+  pclose(p);
+  return atoi(out) == 0;
+}
+
+/* In a program started by nl_harness_program_start, a temporary still open
+ * when the program exits or is stopped by SIGINT, SIGTERM or SIGHUP is
+ * removed; the signal still ends the process. */
+NL_TEST(atomic_temporaries_removed_on_exit_and_signals)
+{
+  static const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+  char *sub = nl_path_join(dir, "signals");
+  nl_error err = {{0}};
+  NL_CHECK(nl_mkdir_p(sub, &err) == NL_OK);
+  char *p = nl_path_join(sub, "t.tsv");
+  for (int k = 0; k <= 3; k++) {
+    struct sigaction was;
+    /* A signal ignored when the handlers were installed stays ignored
+     * (nohup ignores SIGHUP): nothing to test there. */
+    if (k < 3 && sigaction(sigs[k], NULL, &was) == 0 && !(was.sa_flags & SA_SIGINFO) &&
+        was.sa_handler == SIG_IGN) {
+      nl_test_skip("signal %d is ignored in this environment (nohup?): left ignored", sigs[k]);
+      continue;
+    }
+    pid_t pid = fork();
+    if (pid == 0) {
+      nl_atomic_file af;
+      nl_harness_program_start();
+      if (nl_atomic_open(&af, p, &err)) _exit(4);
+      fputs("half", af.fp);
+      fflush(af.fp);
+      if (k == 3) exit(5);
+      raise(sigs[k]);
+      _exit(6);
+    }
+    int status = -1;
+    NL_CHECK(pid > 0 && waitpid(pid, &status, 0) == pid);
+    if (k == 3) NL_CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 5);
+    else NL_CHECK(WIFSIGNALED(status) && WTERMSIG(status) == sigs[k]);
+    NL_CHECK(no_temporaries(sub));
+  }
+  NL_CHECK(access(p, F_OK) != 0);
+  free(sub); free(p);
 }
 
 int main(int argc, char **argv)
