@@ -127,9 +127,12 @@ grep -qE '^\| \*\*Cheng 2009\*\* .* \| Every counted number reproduces: 1 of 1\.
   fail "Cheng's row: $(grep -F '**Cheng' "$r")"
 at() { grep -n -m1 -- "$1" "$r" | cut -d: -f1; }
 [ "$(at '^| paper |')" -lt "$(at '(#s4_marble):')" ] || fail "the per-paper table is below the experiment lines"
-[ "$(at '^#### Shaffer')" -lt "$(at '(#s4_marble):')" ] && [ "$(at '^#### Cheng')" -lt "$(at '(#c5_pools):')" ] &&
-  [ "$(at '(#c5_pools):')" -lt "$(at '^#### Arnerin')" ] || fail "experiment lines not under their paper"
+if ! { [ "$(at '^#### Shaffer')" -lt "$(at '(#s4_marble):')" ] && [ "$(at '^#### Cheng')" -lt "$(at '(#c5_pools):')" ] &&
+        [ "$(at '(#c5_pools):')" -lt "$(at '^#### Arnerin')" ]; }; then
+  fail "experiment lines not under their paper"
+fi
 # the paper -> program -> output map: every experiment, its item and outputs
+# shellcheck disable=SC2016  # the backquotes are Markdown, not a command
 grep -qF '| [S4](#s4_marble) | slides: marble through a colour ramp | `experiments/s4_marble/main.c` -> `build/experiments/s4_marble` | `panels.png`, `bend.tsv` |' "$r" ||
   fail "S4's program row: $(grep -F '| [S4](#s4_marble) | slides' "$r")"
 grep -qF '| [C5](#c5_pools) | sec 3.5, Tables 4.2-4.4 |' "$r" || fail "C5's program row"
