@@ -10,8 +10,14 @@ local class_of = {
   ["reproduced"] = "v-reproduced",
   ["partly"] = "v-partly",
   ["not reproduced"] = "v-not",
+  -- fitted and selected rows are not verdicts: colours of their own, never
+  -- the counted ones, so a failed fit does not read as a failed verdict
   ["consistent after fit"] = "v-consistent",
   ["consistent after selection"] = "v-consistent",
+  ["partly consistent after fit"] = "v-fit-partly",
+  ["partly consistent after selection"] = "v-fit-partly",
+  ["not consistent after fit"] = "v-fit-not",
+  ["not consistent after selection"] = "v-fit-not",
   ["by construction"] = "v-construction",
   ["see figure"] = "v-figure",
 }
@@ -38,13 +44,16 @@ local function breakable(el)
   end
 end
 
--- Tables of many columns (an experiment's full table: 20 and more) in a
--- smaller type, so that their numbers, which never break, fit the window.
+-- Every table in a box of the window's width that scrolls sideways
+-- (scripts/report.css, .table-wrap): a table of 24 columns whose numbers
+-- never break is wider than a 1280 px window, and the page must not be.
+-- Tables of many columns (an experiment's full table: 20 and more) also in
+-- a smaller type, so that most fit without scrolling.
 local function narrow(el)
   local n = #el.colspecs
-  if n > 12 then
-    return pandoc.Div({el}, pandoc.Attr("", {n > 18 and "widest" or "wide"}))
-  end
+  local classes = {"table-wrap"}
+  if n > 12 then classes[2] = n > 18 and "widest" or "wide" end
+  return pandoc.Div({el}, pandoc.Attr("", classes))
 end
 
 return {{Strong = mark, Emph = mark, Str = breakable}, {Table = narrow}}

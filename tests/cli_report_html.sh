@@ -4,11 +4,13 @@
 # and images) and C4 (the verdict table), every figure of the page loads
 # (naturalWidth > 0), every in-page link has its target, every relative link
 # names a file that exists, and every gnuplot figure has its SVG beside the
-# PNG. In a 1400 x 900 window, as a reader sees it (tests/report_probe.js):
-# the per-experiment summary on the first screen, no table wider than the
-# window, no cell cut, "reproduced" and "not reproduced" in different
-# colours. The probe must also fail: a copy of the page with one figure
-# missing, and one without its stylesheet, are reported broken.
+# PNG. In a 1280 x 800 window, as a reader sees it (tests/report_probe.js):
+# the per-paper table on the first screen, no element past the window's
+# right edge (a wide table scrolls inside its own box), no cell cut,
+# "reproduced" and "not reproduced" in different colours. The probe must
+# also fail: a copy of the page with one figure missing, one without its
+# stylesheet, and one with a table of 30 columns whose box does not scroll
+# are reported broken, the last naming the widest element.
 # Args: NOISELAB_SCRIPT OUTDIR.
 set -euo pipefail
 nl="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")" out="$2"
@@ -28,7 +30,7 @@ probe() {   # HTML_IN_DIR -> prints the probe's line
   { sed 's#</body>##' "$page"; printf '<script>\n'; cat "$root/tests/report_probe.js"; printf '</script>\n</body>\n'; } >"$copy"
   # --no-sandbox: CI runs as root; a fresh profile each time.
   timeout 120 chromium --headless --no-sandbox --disable-gpu --user-data-dir="$out/profile" \
-    --window-size=1400,900 --hide-scrollbars --virtual-time-budget=20000 --dump-dom "file://$copy" \
+    --window-size=1280,800 --hide-scrollbars --virtual-time-budget=20000 --dump-dom "file://$copy" \
     2>"$out/chromium.log" | grep -oE 'NL-PROBE images=[0-9]+[^<]*' || true
   rm -f "$copy"
 }
@@ -54,11 +56,26 @@ rm "$out/broken/s3_fbm/gain_spectrum.png"
 line="$(probe "$out/broken/report.html")"
 [[ "$line" == *"BROKEN: image s3_fbm/gain_spectrum.png"* ]] || fail "a missing figure was not reported: $line"
 # the probe can fail: the page without its stylesheet (pandoc's default
-# alone) has a table wider than the window and verdicts in one colour
+# alone) has its verdicts in one colour
 sed '/<style id="report-css">/,/<\/style>/d' "$r/report.html" >"$r/bare.html"
 grep -q 'v-reproduced {' "$r/bare.html" && fail "the stylesheet was not removed from the copy"
 line="$(probe "$r/bare.html")"
 rm "$r/bare.html"
-[[ "$line" == *"wider than the window"* && "$line" == *"verdicts in one colour"* ]] ||
-  fail "a page without its stylesheet was not reported: $line"
+[[ "$line" == *"verdicts in one colour"* ]] || fail "a page without its stylesheet was not reported: $line"
+# a table of 30 columns of numbers, as an experiment's widest (C5: 23, L3:
+# 24) but wider, after the first section: it scrolls in its box and the page
+# passes; with the box's rule gone it runs past the window and the probe
+# names it
+wide="$(printf '<div class="table-wrap widest"><table><tr>'
+        for i in $(seq 30); do printf '<td>-15079449.07%02d</td>' "$i"; done
+        printf '</tr></table></div>')"
+awk -v t="$wide" '{print} /^<h2 id="did-it-reproduce">/ && !done {print t; done = 1}' "$r/report.html" >"$r/wide.html"
+line="$(probe "$r/wide.html")"
+[[ "$line" == "NL-PROBE images="*" OK" ]] || fail "a wide table in its scrolling box was reported: $line"
+sed '/^ *\.table-wrap {$/,/^ *}$/d' "$r/wide.html" >"$r/wide-bare.html"
+grep -q '^ *\.table-wrap {' "$r/wide-bare.html" && fail "the .table-wrap rule was not removed from the copy"
+line="$(probe "$r/wide-bare.html")"
+rm "$r/wide.html" "$r/wide-bare.html"
+[[ "$line" == *"widest element "*" (30 columns) wider than the window"* && "$line" == *"page scrolls sideways"* ]] ||
+  fail "a table past the window was not reported: $line"
 echo "report.html: $n images, links and figures whole"

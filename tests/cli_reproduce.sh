@@ -87,12 +87,14 @@ grep -qF "$row" "$r/REPORT.md" || fail "by-construction row: $(grep -F F_inf "$r
 sum='^- \[S4 - [^]]*\]\(#s4_marble\): \*\*1 reproduced\*\*; not counted: 1 fitted \(1 consistent\), '
 grep -qE "$sum"'1 by construction$' "$r/REPORT.md" ||
   fail "summary line: $(grep -F '(#s4_marble):' "$r/REPORT.md")"
-# the answer per paper (S4: Shaffer's slides; A1: Arnerin's), its
-# independent verdicts counted, the rest named as not counted
-grep -qE '^Per paper: \*\*Shaffer\*\* 1 reproduced, 0 partly, 0 not reproduced \(2 more not counted\); \*\*Arnerin\*\* ' \
-  "$r/REPORT.md" || fail "per-paper line: $(grep '^Per paper' "$r/REPORT.md")"
+# the answer per paper (S4: Shaffer's slides; A1: Arnerin's), first: its
+# citation, its independent verdicts counted, the rest by kind, the sentence
+grep -qE '^\| \*\*Shaffer\*\* Eric Shaffer\. .* \| 1 \| 0 \| 0 \| 1 fitted \(1 consistent\), 1 by construction \| .* \| Every counted number reproduces: 1 of 1\. \|$' \
+  "$r/REPORT.md" || fail "per-paper row: $(grep -F '**Shaffer**' "$r/REPORT.md")"
+grep -qE '^\| \*\*Arnerin 2009\*\* Reynald Arnerin\. ' "$r/REPORT.md" || fail "no per-paper row for Arnerin"
 at() { grep -n -m1 "$1" "$r/REPORT.md" | cut -d: -f1; }
 [ "$(at '(#s4_marble):')" -lt "$(at '^| id | quantity')" ] || fail "the summary is below the table"
+[ "$(at '^| paper |')" -lt "$(at '(#s4_marble):')" ] || fail "the per-paper table is below the experiment lines"
 # a | inside a cell is escaped, or it would split the row
 grep -qF '| [S4](#s4_marble) | slope \|s\| | fitted 2/4 |' "$r/REPORT.md" || fail "a | in a cell: $(grep -F slope "$r/REPORT.md")"
 rm "$r/s4_marble/verdicts.tsv"

@@ -350,9 +350,11 @@ char **nl_harness_tables(const char *dir, size_t *n, nl_error *err);
  *   "independent"      the headline: the paper's stated reading, or one chosen
  *                      by a criterion that never looks at the paper's numbers;
  *   "fitted K/M"       K parameters were fitted jointly to M of the paper's
- *                      numbers: at best "consistent after fit";
+ *                      numbers: "consistent after fit", "partly consistent
+ *                      after fit" or "not consistent after fit";
  *   "selected 1/N"     the best of N readings by closeness to the paper: at
- *                      best "consistent after selection";
+ *                      best "consistent after selection" (likewise "partly
+ *                      ..." and "not consistent after selection");
  *   "by construction"  the value cannot differ from the paper's by how the
  *                      experiment is set up: verdict "by construction";
  *   "qualitative"      a claim no number decides (nl_harness_verdict_figure):
@@ -444,8 +446,10 @@ nl_status nl_harness_verdict_decide_equiv(const char *rule, double paper, double
 /* NL_OK when `kind` is one of the kinds above (K, M, N >= 1). */
 nl_status nl_harness_verdict_kind_check(const char *kind, nl_error *err);
 /* The word in the verdict column: the outcome capped by the kind
- * ("reproduced", "partly", "not reproduced", "consistent after fit",
- * "consistent after selection", "by construction", "see figure"). */
+ * ("reproduced", "partly", "not reproduced" for an independent row only;
+ * "consistent after fit", "partly consistent after fit", "not consistent
+ * after fit", likewise "... after selection"; "by construction", "see
+ * figure"). */
 const char *nl_harness_verdict_word(nl_harness_outcome outcome, const char *kind);
 
 /* Writes report.md, checks.tsv, verdicts.tsv (when declared) and manifest.tsv,

@@ -39,9 +39,16 @@ const char *nl_harness_verdict_word(nl_harness_outcome outcome, const char *kind
 {
   if (!strcmp(kind, "by construction")) return "by construction";
   if (!strcmp(kind, "qualitative")) return "see figure";
-  if (outcome == NL_VERDICT_REPRODUCED && has_prefix(kind, "fitted")) return "consistent after fit";
-  if (outcome == NL_VERDICT_REPRODUCED && has_prefix(kind, "selected"))
-    return "consistent after selection";
+  /* A row fitted to, or selected by closeness to, the paper's numbers is no
+   * independent evidence: its word names the fit or the selection whatever
+   * the outcome, so that no fitted row is read (or counted) as a verdict. */
+  int fit = has_prefix(kind, "fitted"), sel = has_prefix(kind, "selected");
+  if (fit || sel) {
+    if (outcome == NL_VERDICT_REPRODUCED) return fit ? "consistent after fit" : "consistent after selection";
+    if (outcome == NL_VERDICT_PARTLY)
+      return fit ? "partly consistent after fit" : "partly consistent after selection";
+    return fit ? "not consistent after fit" : "not consistent after selection";
+  }
   return outcome == NL_VERDICT_REPRODUCED ? "reproduced"
          : outcome == NL_VERDICT_PARTLY   ? "partly"
                                           : "not reproduced";

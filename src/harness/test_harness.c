@@ -444,7 +444,14 @@ NL_TEST(verdict_rules)
   for (size_t i = 0; i < sizeof bad / sizeof *bad; i++)
     NL_CHECK(nl_harness_verdict_kind_check(bad[i], &err) == NL_EINVAL);
   NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_REPRODUCED, "selected 1/19"), "consistent after selection"));
-  NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_PARTLY, "fitted 1/6"), "partly"));
+  NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_REPRODUCED, "fitted 1/6"), "consistent after fit"));
+  NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_PARTLY, "fitted 1/6"), "partly consistent after fit"));
+  NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_NOT, "fitted 4/12"), "not consistent after fit"));
+  NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_PARTLY, "selected 1/8"), "partly consistent after selection"));
+  NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_NOT, "selected 1/19"), "not consistent after selection"));
+  /* the counted words belong to independent rows only */
+  NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_PARTLY, "independent"), "partly"));
+  NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_NOT, "independent"), "not reproduced"));
   NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_REPRODUCED, "by construction"), "by construction"));
 }
 
