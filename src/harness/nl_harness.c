@@ -65,7 +65,12 @@ struct nl_harness {
   size_t nprevious;
   char *md;               /* report section being built */
   size_t md_len, md_cap;
-  double last_progress;
+  /* progress (nl_harness_stage): the current stage's share of the bar and
+   * its part (substage); the furthest fraction shown, the last label printed
+   * off a terminal, and whether a terminal line is left open */
+  double stage_from, stage_to, part_from, part_to, shown;
+  char stage_what[64], last_what[64];
+  int staged, line_open;
 };
 
 /* The compiler by name and version: gcc's __VERSION__ is the bare number
@@ -273,7 +278,7 @@ nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char
   nl_harness_note(r, "threads", "%d", r->threads);   /* speed only: the tables do not depend on it */
   note(r, "images", r->images ? "yes" : "no");        /* --no-images: tables only */
   nl_harness_text(r, "## %s\n", title);
-  r->last_progress = -1;
+  r->stage_to = r->part_to = 1.0;
   return r;
 }
 
@@ -525,16 +530,54 @@ void nl_harness_write_image(nl_harness *r, const nl_image *im, const char *file)
   free(p);
 }
 
+static void progress_print(nl_harness *r, double f, const char *what)
+{
+  int tty = isatty(2);
+  if (f < r->shown) f = r->shown;   /* one bar: never back */
+  r->shown = f;
+  char label[160];
+  if (r->staged && what && strcmp(what, r->stage_what))
+    snprintf(label, sizeof label, "%s: %s", r->stage_what, what);
+  else
+    snprintf(label, sizeof label, "%s", what ? what : r->stage_what);
+  fprintf(stderr, "%s[%s] %3.0f%% %s (%.1f s)%s", tty ? "\r\033[K" : "", r->name, 100 * f, label,
+          nl_time_now() - r->t0, tty ? "" : "\n");
+  r->line_open = tty;
+  if (tty && f >= 1.0) {
+    fputc('\n', stderr);
+    r->line_open = 0;
+  }
+  fflush(stderr);
+}
+
+void nl_harness_stage(nl_harness *r, double from, double to, const char *what)
+{
+  r->staged = 1;
+  r->stage_from = r->part_from = from;
+  r->stage_to = r->part_to = to;
+  snprintf(r->stage_what, sizeof r->stage_what, "%s", what ? what : "");
+  progress_print(r, from, NULL);
+}
+
+void nl_harness_substage(nl_harness *r, int k, int n)
+{
+  double w = (r->stage_to - r->stage_from) / (n > 0 ? n : 1);
+  r->part_from = r->stage_from + k * w;
+  r->part_to = r->part_from + w;
+}
+
 void nl_harness_progress(nl_harness *r, double fraction, const char *what)
 {
-  double now = nl_time_now();
-  int tty = isatty(2);
-  if (!tty && r->last_progress >= 0 && now - r->last_progress < 1.0 && fraction < 1.0) return;
-  r->last_progress = now;
-  fprintf(stderr, "%s[%s] %3.0f%% %s (%.1f s)%s", tty ? "\r\033[K" : "", r->name,
-          100 * fraction, what ? what : "", now - r->t0, tty ? "" : "\n");
-  if (tty && fraction >= 1.0) fputc('\n', stderr);
-  fflush(stderr);
+  double f = r->part_from + (fraction < 0 ? 0 : fraction > 1 ? 1 : fraction) * (r->part_to - r->part_from);
+  if (!isatty(2)) {
+    /* off a terminal: a line per stage; a declared stage printed its own */
+    if (r->staged || !strcmp(what ? what : "", r->last_what)) {
+      if (f > r->shown) r->shown = f;
+      return;
+    }
+    snprintf(r->last_what, sizeof r->last_what, "%s", what ? what : "");
+  }
+  progress_print(r, f, what);
 }
 
 /* ---- report section --------------------------------------------------- */
@@ -1064,8 +1107,45 @@ static void note_platform(nl_harness *r)
   }
 }
 
+/* When and how long the run took, in run.tsv beside the manifest: the
+ * manifest identifies the run and is committed with the results, so that a
+ * rerun of the same commit writes it byte for byte; these values differ on
+ * every run and go to a file that is not tracked (.gitignore) and not an
+ * "output" (the regression check would count it as a table the reference
+ * lacks). Written through nl_table_write, i.e. by rename: the entry script
+ * stages a run in hard links of the previous folder. */
+static void run_times_write(nl_harness *r)
+{
+  const char *cols[] = {"key", "value"};
+  nl_table *t = nl_table_alloc(2, cols);
+  char buf[128];
+  nl_table_append(t, "ss", "started", r->started);
+  snprintf(buf, sizeof buf, "%.3f", nl_time_now() - r->t0);
+  nl_table_append(t, "ss", "seconds", buf);
+  struct rusage ru;
+  getrusage(RUSAGE_SELF, &ru);
+  /* CPU time of all threads (user + sys, the process start included): with
+   * `seconds` it says how well a run used the cores. */
+  double user = ru.ru_utime.tv_sec + ru.ru_utime.tv_usec * 1e-6;
+  double sys = ru.ru_stime.tv_sec + ru.ru_stime.tv_usec * 1e-6;
+  snprintf(buf, sizeof buf, "%.3f (user %.3f + sys %.3f)", user + sys, user, sys);
+  nl_table_append(t, "ss", "cpu_seconds", buf);
+  snprintf(buf, sizeof buf, "%.1f", ru.ru_maxrss / 1024.0);
+  nl_table_append(t, "ss", "peak_rss_mb", buf);
+  char *p = nl_path_join(r->out, "run.tsv");
+  nl_error err;
+  nl_status st = nl_table_write(t, p, &err);
+  nl_table_free(t);
+  free(p);
+  if (st) nl_harness_die(r, 1, "%s", err.msg);
+}
+
 int nl_harness_end(nl_harness *r)
 {
+  if (r->line_open) {   /* a progress bar that stopped short of 100% */
+    fputc('\n', stderr);
+    r->line_open = 0;
+  }
   write_text(r, "report.md", r->md ? r->md : "");
   const char *commit = getenv("NL_COMMIT");
   note(r, "commit", commit && *commit ? commit : "unknown");
@@ -1074,16 +1154,7 @@ int nl_harness_end(nl_harness *r)
   nl_harness_note(r, "compiler", "%s", NL_COMPILER);
   note(r, "cflags", NL_BUILD_CFLAGS);
   note_platform(r);
-  note(r, "started", r->started);
-  nl_harness_note(r, "seconds", "%.3f", nl_time_now() - r->t0);
-  struct rusage ru;
-  getrusage(RUSAGE_SELF, &ru);
-  /* CPU time of all threads (user + sys, the process start included): with
-   * `seconds` it says how well a run used the cores. */
-  nl_harness_note(r, "cpu_seconds", "%.3f (user %.3f + sys %.3f)",
-                  ru.ru_utime.tv_sec + ru.ru_utime.tv_usec * 1e-6 + ru.ru_stime.tv_sec + ru.ru_stime.tv_usec * 1e-6,
-                  ru.ru_utime.tv_sec + ru.ru_utime.tv_usec * 1e-6, ru.ru_stime.tv_sec + ru.ru_stime.tv_usec * 1e-6);
-  nl_harness_note(r, "peak_rss_mb", "%.1f", ru.ru_maxrss / 1024.0);
+  run_times_write(r);
   if (r->verdicts) {
     nl_harness_write_table(r, r->verdicts, "verdicts.tsv");
     nl_harness_check(r, "verdicts.tsv", "*", "ignore");   /* copies of compared values */
@@ -1121,7 +1192,9 @@ char **nl_harness_tables(const char *dir, size_t *n, nl_error *err)
   while ((e = readdir(d))) {
     size_t len = strlen(e->d_name);
     if (e->d_name[0] == '.' || len < 5 || strcmp(e->d_name + len - 4, ".tsv")) continue;
-    if (!strcmp(e->d_name, "manifest.tsv") || !strcmp(e->d_name, "checks.tsv")) continue;
+    if (!strcmp(e->d_name, "manifest.tsv") || !strcmp(e->d_name, "checks.tsv") ||
+        !strcmp(e->d_name, "run.tsv") || !strcmp(e->d_name, "times.tsv"))
+      continue;   /* the run's identity and rules, and its times (not tracked) */
     names = nl_xrealloc(names, (*n + 1) * sizeof *names);
     names[(*n)++] = nl_xstrdup(e->d_name);
   }
