@@ -71,6 +71,11 @@ struct nl_harness {
   double stage_from, stage_to, part_from, part_to, shown;
   char stage_what[64], last_what[64];
   int staged, line_open;
+  /* nl_harness_time_column: the time columns (file, column) and the values
+   * taken out of the written tables, for times.tsv */
+  char **time_file, **time_col;
+  size_t ntime;
+  nl_table *times;
 };
 
 /* The compiler by name and version: gcc's __VERSION__ is the bare number
@@ -513,11 +518,79 @@ char *nl_harness_path(const nl_harness *r, const char *file)
   return nl_path_join(r->out, file);
 }
 
+static int is_time(const nl_harness *r, const char *file, const char *col)
+{
+  for (size_t i = 0; i < r->ntime; i++)
+    if ((!file || !strcmp(r->time_file[i], file)) && !strcmp(r->time_col[i], col)) return 1;
+  return 0;
+}
+
+static void drop_rule(nl_harness *r, const char *table, const char *column)
+{
+  nl_table *c = r->checks;
+  for (size_t i = 0; i < c->nrows; i++) {
+    char **row = c->text + i * c->ncols;
+    if (strcmp(row[0], table) || strcmp(row[1], column)) continue;
+    for (size_t k = 0; k < c->ncols; k++) free(row[k]);
+    memmove(row, row + c->ncols, (c->nrows - i - 1) * c->ncols * sizeof *row);
+    memmove(c->num + i * c->ncols, c->num + (i + 1) * c->ncols, (c->nrows - i - 1) * c->ncols * sizeof *c->num);
+    c->nrows--;
+    return;
+  }
+}
+
+void nl_harness_time_column(nl_harness *r, const char *file, const char *column)
+{
+  if (is_time(r, file, column)) return;
+  r->time_file = nl_xrealloc(r->time_file, (r->ntime + 1) * sizeof *r->time_file);
+  r->time_col = nl_xrealloc(r->time_col, (r->ntime + 1) * sizeof *r->time_col);
+  r->time_file[r->ntime] = nl_xstrdup(file);
+  r->time_col[r->ntime++] = nl_xstrdup(column);
+  drop_rule(r, file, column);   /* nothing left to compare */
+}
+
+/* t without FILE's time columns (NULL when it has none); their cells go to
+ * r->times, one row each: table, row (from 1), the row's first cell, column,
+ * value. */
+static nl_table *without_times(nl_harness *r, const nl_table *t, const char *file)
+{
+  size_t nkeep = 0;
+  for (size_t c = 0; c < t->ncols; c++) nkeep += !is_time(r, file, t->names[c]);
+  if (nkeep == t->ncols) return NULL;
+  const char **names = nl_xmalloc((nkeep + 1) * sizeof *names);
+  size_t k = 0;
+  for (size_t c = 0; c < t->ncols; c++)
+    if (!is_time(r, file, t->names[c])) names[k++] = t->names[c];
+  nl_table *v = nl_table_alloc(nkeep, names);
+  free(names);
+  if (!r->times) {
+    const char *cols[] = {"table", "row", "key", "column", "value"};
+    r->times = nl_table_alloc(5, cols);
+  }
+  char a[64], b[64];
+  for (size_t row = 0; row < t->nrows; row++) {
+    size_t i = nl_table_append_empty(v);
+    for (size_t c = 0; c < t->ncols; c++) {
+      const char *tx = t->text ? t->text[row * t->ncols + c] : NULL;
+      if (is_time(r, file, t->names[c])) {
+        nl_table_append(r->times, "sdsss", file, (double)(row + 1),
+                        nl_table_cell_text(t, row, 0, a), t->names[c], nl_table_cell_text(t, row, c, b));
+        continue;
+      }
+      if (tx) nl_table_set_text(v, i, t->names[c], tx);
+      else nl_table_set(v, i, t->names[c], nl_table_get(t, row, c));
+    }
+  }
+  return v;
+}
+
 void nl_harness_write_table(nl_harness *r, const nl_table *t, const char *file)
 {
   char *p = nl_harness_path(r, file);
   nl_error err;
-  if (nl_table_write(t, p, &err)) nl_harness_die(r, 1, "%s", err.msg);
+  nl_table *v = without_times(r, t, file);
+  if (nl_table_write(v ? v : t, p, &err)) nl_harness_die(r, 1, "%s", err.msg);
+  nl_table_free(v);
   free(p);
 }
 
@@ -624,12 +697,17 @@ void nl_harness_report_table(nl_harness *r, const nl_table *t, const char *capti
 {
   char cell[64];
   if (caption) nl_harness_text(r, "*%s*\n", caption);
-  for (size_t c = 0; c < t->ncols; c++) { md_append(r, "| "); md_append(r, t->names[c]); md_append(r, " "); }
+  /* time columns (nl_harness_time_column) are in times.tsv, not here */
+  for (size_t c = 0; c < t->ncols; c++) {
+    if (is_time(r, NULL, t->names[c])) continue;
+    md_append(r, "| "); md_append(r, t->names[c]); md_append(r, " ");
+  }
   md_append(r, "|\n");
-  for (size_t c = 0; c < t->ncols; c++) md_append(r, "|---");
+  for (size_t c = 0; c < t->ncols; c++) if (!is_time(r, NULL, t->names[c])) md_append(r, "|---");
   md_append(r, "|\n");
   for (size_t row = 0; row < t->nrows; row++) {
     for (size_t c = 0; c < t->ncols; c++) {
+      if (is_time(r, NULL, t->names[c])) continue;
       size_t k = row * t->ncols + c;
       /* Text cells that are whole numbers (labels such as a sweep's w1) are
        * rounded like the numbers. */
@@ -653,6 +731,7 @@ void nl_harness_report_columns(nl_harness *r, const nl_table *t, const char *fil
   for (char *c = strtok_r(list, ",", &save); c; c = strtok_r(NULL, ",", &save)) {
     long k = nl_table_column(t, c);
     if (k < 0) nl_harness_die(r, 1, "report of %s: no column '%s'", file, c);
+    if (is_time(r, file, c)) continue;   /* in times.tsv */
     if (n == 256) nl_harness_die(r, 1, "report of %s: more than 256 columns", file);
     names[n] = t->names[k];
     idx[n++] = (size_t)k;
@@ -667,7 +746,9 @@ void nl_harness_report_columns(nl_harness *r, const nl_table *t, const char *fil
     }
   }
   nl_harness_report_table(r, v, caption, digits);
-  nl_harness_text(r, "Shown: %zu of the table's %zu columns; all of them in [%s](%s/%s).\n", n, t->ncols, file, r->name, file);
+  size_t ncols = 0;
+  for (size_t c = 0; c < t->ncols; c++) ncols += !is_time(r, file, t->names[c]);
+  nl_harness_text(r, "Shown: %zu of the table's %zu columns; all of them in [%s](%s/%s).\n", n, ncols, file, r->name, file);
   nl_table_free(v);
   free(list);
 }
@@ -723,6 +804,7 @@ void nl_harness_check(nl_harness *r, const char *table, const char *column, cons
   nl_harness_rule parsed;
   nl_error err;
   if (nl_harness_rule_parse(rule, &parsed, &err)) nl_harness_die(r, 1, "%s: %s: %s", table, column, err.msg);
+  if (is_time(r, table, column)) return;   /* not in the table written */
   nl_table *c = r->checks;
   for (size_t i = 0; i < c->nrows; i++) {
     char **row = c->text + i * c->ncols;
@@ -1138,6 +1220,12 @@ static void run_times_write(nl_harness *r)
   nl_table_free(t);
   free(p);
   if (st) nl_harness_die(r, 1, "%s", err.msg);
+  if (r->times) {   /* the time columns of the tables, likewise */
+    p = nl_path_join(r->out, "times.tsv");
+    st = nl_table_write(r->times, p, &err);
+    free(p);
+    if (st) nl_harness_die(r, 1, "%s", err.msg);
+  }
 }
 
 int nl_harness_end(nl_harness *r)
@@ -1171,6 +1259,9 @@ int nl_harness_end(nl_harness *r)
   for (size_t i = 0; i < r->nfigures; i++) free(r->figures[i]);
   for (size_t i = 0; i < r->nprevious; i++) free(r->previous[i]);
   free(r->outputs); free(r->figures); free(r->previous);
+  for (size_t i = 0; i < r->ntime; i++) { free(r->time_file[i]); free(r->time_col[i]); }
+  free(r->time_file); free(r->time_col);
+  nl_table_free(r->times);
   for (int k = 0; k < r->nset; k++) { free(r->set_key[k]); free(r->set_val[k]); }
   free(r->set_key); free(r->set_val); free(r->set_used); free(r->param);
   nl_table_free(r->manifest);

@@ -164,6 +164,17 @@ char *nl_harness_path(const nl_harness *r, const char *file);
  * tables): a program's first image write starts OpenImageIO, about 0.6 s of
  * CPU (1 s under the sanitizers), often more than a quick run's work. */
 void nl_harness_write_table(nl_harness *r, const nl_table *t, const char *file);
+
+/* A column of FILE that is a wall or CPU time: it differs on every run, so
+ * nl_harness_write_table leaves it out of FILE (declare it before the
+ * write) and puts its cells in times.tsv (table, row, key: the row's first
+ * cell, column, value), beside the manifest, not tracked by git and not an
+ * output; report tables (nl_harness_report_table, _columns) leave out every
+ * column of that name, and no check rule is kept for it. A committed
+ * result then does not change when the same commit runs again. Times the
+ * paper's claims are about (A2's Table 5.1, C6's real-time claim) stay in
+ * their tables. */
+void nl_harness_time_column(nl_harness *r, const char *file, const char *column);
 void nl_harness_write_image(nl_harness *r, const nl_image *im, const char *file);
 
 /* Progress for long runs: "[name] 40% what (3.2 s)" on stderr. One bar per
