@@ -45,6 +45,13 @@ for l in "${listed[@]}"; do
   [ -f "$out/r1/$l" ] || fail "docs/experiments.md lists $l, which the run did not write"
 done
 
+# Without the timing experiments REPORT.md and report.html are the same
+# bytes too (the commit's date, no times in the header).
+for k in 1 2; do
+  "$nl" reproduce --quick --out "$out/s$k" S4 C9 2>"$out/s$k.log" || { cat "$out/s$k.log"; fail "reproduce S4 C9 $k failed"; }
+done
+for f in REPORT.md report.html; do cmp -s "$out/s1/$f" "$out/s2/$f" || fail "two runs of S4 C9 differ in $f"; done
+
 # run.tsv and times.tsv: written, no manifest output, ignored by git under results/
 for e in a2_raymarch c1_textures c5_pools c6_reproduce c9_amplitudes; do
   for f in run.tsv times.tsv; do
