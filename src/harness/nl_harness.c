@@ -606,6 +606,9 @@ void nl_harness_write_image(nl_harness *r, const nl_image *im, const char *file)
 static void progress_print(nl_harness *r, double f, const char *what)
 {
   int tty = isatty(2);
+  /* a finished bar stays finished: a later loop that reports 100% again
+   * would print one more line each time */
+  if (tty && r->shown >= 1.0 && !r->line_open) return;
   if (f < r->shown) f = r->shown;   /* one bar: never back */
   r->shown = f;
   char label[160];
