@@ -85,6 +85,26 @@ PATH="$fb2/bin:$PATH" bash -c 'source "$1"; build_locked "$2"' _ "$nl" "$fb2/b" 
 grep -q 'FAILED: fake compile' "$out/build.err" || fail "a failed build: no log shown: $(cat "$out/build.err")"
 [ "$(ls -A "$fb2")" = "$(printf 'b\nbin')" ] || fail "a failed build left beside its folder: $(ls -A "$fb2")"
 
+# ---- off a terminal the build says a line per stage, and nothing when it
+# has no work (ninja -n lists what it would do, "[K/N] ...")
+sb="$out/stages"; mkdir -p "$sb/bin" "$sb/b"
+printf '#!/bin/sh\nexit 0\n' >"$sb/bin/meson"
+# shellcheck disable=SC2016  # the fake ninja's own script
+printf '#!/bin/sh\ncase " $* " in *" -n "*) cat "$(dirname "$0")/plan" ;; esac\nexit 0\n' >"$sb/bin/ninja"
+chmod +x "$sb/bin/meson" "$sb/bin/ninja"
+printf '[1/3] cc a.o\n[2/3] cc b.o\n[3/3] link x\n' >"$sb/bin/plan"
+# shellcheck disable=SC2016  # the inner shell's arguments
+PATH="$sb/bin:$PATH" bash -c 'source "$1"; build_locked "$2"' _ "$nl" "$sb/b" >/dev/null 2>"$out/stages.err" \
+  || fail "build stages: $(cat "$out/stages.err")"
+[ "$(sed 's/done in [0-9]* s/done in N s/' "$out/stages.err")" = "$(printf 'noiselab: configuring %s/\nnoiselab: building %s/ (3 steps)\nnoiselab: build done in N s' "${sb#"$root"/}/b" "${sb#"$root"/}/b")" ] \
+  || fail "build stages: $(cat "$out/stages.err")"
+echo 'ninja: no work to do.' >"$sb/bin/plan"
+: >"$sb/b/build.ninja"   # configured (the fake meson wrote none)
+# shellcheck disable=SC2016
+PATH="$sb/bin:$PATH" bash -c 'source "$1"; build_locked "$2"' _ "$nl" "$sb/b" >/dev/null 2>"$out/stages.err" \
+  || fail "build, nothing to do: $(cat "$out/stages.err")"
+[ ! -s "$out/stages.err" ] || fail "an up-to-date build said: $(cat "$out/stages.err")"
+
 # ---- paths relative to the user's folder ----------------------------------
 w="$out/elsewhere"; mkdir -p "$w"
 cd "$w"

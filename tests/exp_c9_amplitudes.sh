@@ -41,7 +41,10 @@ tsv_awk 'NR > 1 { a = v("amplitudes")
     if (n("R") != r || !(n("gain") * r >= 1 - 1e-12)) { print "bounds: " $0; exit 1 } }' \
   "$out/gains.tsv"
 "$expect" "$out/tests.tsv" rows=72 'p_welch>=0' 'p_welch<=1' 'seeds==3'
-"$expect" "$out/timing.tsv" rows=18 'seconds_per_run>0'
+"$expect" "$out/timing.tsv" rows=18
+# its times, in times.tsv (not tracked)
+tsv_awk 'v("table") == "timing.tsv" && v("column") == "seconds_per_run" { k++; if (!(n("value") > 0)) exit 1 }
+         END { exit !(k == 18) }' "$out/times.tsv" || { echo "times.tsv: timing's seconds_per_run"; exit 1; }
 "$expect" "$out/parts.tsv" rows=18 'seeds==3' 'E_con_offset>=0' 'E_con_contrast>=0' 'E_con_shape>=0'
 tsv_awk 'NR > 1 { d = n("E_con_offset") + n("E_con_contrast") + n("E_con_shape") - n("E_con")
     if (d * d > (1e-9 * n("E_con")) ^ 2) { print "parts: " $0; exit 1 } }' "$out/parts.tsv"

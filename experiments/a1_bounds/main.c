@@ -46,6 +46,7 @@ int main(int argc, char **argv)
                          "over_paper_octave" };
   nl_table *t = nl_table_alloc(13, cols);
   double *maxes = nl_xmalloc((size_t)seeds * sizeof *maxes);
+  nl_harness_stage(r, 0.0, 0.5, "octaves");   /* one progress bar over both loops */
   for (int n = 1; n <= nmax; n++) {
     nl_noise_octaves o = nl_noise_octaves_fractal(n);
     long over_p = 0, over_pi = 0, over_b = 0, over_bi = 0, over_o = 0;
@@ -92,6 +93,7 @@ int main(int argc, char **argv)
   const char *pcols[] = { "seed", "octaves", "points", "over_printed", "over_dropped" };
   nl_table *pt = nl_table_alloc(5, pcols);
   int fn[2] = { 2, nmax };
+  nl_harness_stage(r, 0.5, 1.0, "climbs");
   for (int s = 0; s < seeds; s++) {
     nl_noise_perm3 p;
     nl_noise_perm3_seed(&p, nl_seed_replicate(seed0, s));

@@ -40,6 +40,7 @@ a2_smoke_scene a2_joint_fit(nl_harness *r, const a2_smoke_scene *center, const a
         sc.s.slope = g->slope[a];
         sc.s.freq = g->freq[f];
         sc.s.kappa = g->kappa[k];
+        nl_harness_substage(r, (a * g->nf + f) * g->nk + k, g->ns * g->nf * g->nk);
         a2_smoke_curve(r, &sc, octaves, n, seeds, 0, pt, NULL);
         for (int i = 0; i < n; i++) er[i] = pt[i].eval_ratio;
         double rms;

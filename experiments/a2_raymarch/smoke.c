@@ -208,6 +208,7 @@ int a2_smoke_size_check(nl_harness *r, const a2_smoke_scene *sc, const double *s
       a2_smoke_scene c = *sc;
       c.s.slope = slopes[a];
       c.s.width = c.s.height = sizes[z];
+      nl_harness_substage(r, a * nsizes + (nsizes - 1 - z), nslopes * nsizes);
       a2_smoke_curve(r, &c, octaves, n, seeds, 0, pt + (size_t)z * n, NULL);
     }
     const a2_smoke_point *ref = pt + (size_t)(nsizes - 1) * n;
@@ -307,11 +308,12 @@ a2_smoke_scene a2_smoke_sweep(nl_harness *r, const a2_smoke_scene *center, const
   for (int v = 0; v < nvary; v++) total += vary[v].n;
   a2_smoke_scene *sc = nl_xmalloc((size_t)total * sizeof *sc);
   double best_rss = INFINITY;
-  int best = 0, k = 0;
+  int best = 0, k = 0, part = 0;   /* part: the reading's share of the progress bar */
   /* The slope first (the parameter the ratio at N = 0 hangs on), ... */
   for (int a = 0; a < nslopes; a++, k++) {
     sc[k] = *center;
     sc[k].s.slope = slopes[a];
+    nl_harness_substage(r, part++, total);
     double rss =
         sweep_reading(r, &sc[k], "slope", slopes[a], 1, octaves, paper, n, seeds, *sweep, *fit);
     if (rss < best_rss) {
@@ -324,6 +326,7 @@ a2_smoke_scene a2_smoke_sweep(nl_harness *r, const a2_smoke_scene *center, const
   for (int v = 0; v < nvary; v++)
     for (int j = 0; j < vary[v].n; j++) {
       sc[k] = around;
+      nl_harness_substage(r, part++, total);
       if (set_param(r, &sc[k], vary[v].name, vary[v].v[j]) == vary[v].v[j])
         continue; /* the slope row */
       double rss = sweep_reading(r, &sc[k], vary[v].name, vary[v].v[j], vary[v].is_free, octaves,

@@ -38,12 +38,13 @@ int main(int argc, char **argv)
   c6_controls_init(&ctl);
   c6_reproduce_cases(&s, reps, sum, nl_study_cheng_thesis_gmm_tables, NTEX, &po, &mo, nrep, swap,
                      &ctl);
+  /* times differ on every run: times.tsv (speed.tsv keeps the ones the
+   * real-time claim is decided on) */
+  const char *tcols[] = { "ms_reproduce", "ms_texture", "seconds_opt" };
+  for (int i = 0; i < 3; i++) nl_harness_time_column(r, "summary.tsv", tcols[i]);
+  for (int i = 0; i < 2; i++) nl_harness_time_column(r, "reproductions.tsv", tcols[i]);
   nl_harness_write_table(r, reps, "reproductions.tsv");
   nl_harness_write_table(r, sum, "summary.tsv");
-  /* times: never compared */
-  const char *tcols[] = { "ms_reproduce", "ms_texture", "seconds_opt" };
-  for (int i = 0; i < 3; i++) nl_harness_check(r, "summary.tsv", tcols[i], "ignore");
-  for (int i = 0; i < 2; i++) nl_harness_check(r, "reproductions.tsv", tcols[i], "ignore");
 
   c6_report(r, sum, nrep, swap, &po, &s.c);
   nl_table *below = c6_below_alloc(); /* "often below": a sign test per texture and error */

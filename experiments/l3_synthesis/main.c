@@ -62,6 +62,8 @@ int main(int argc, char **argv)
   const char *scols[] = {"kind", "max_abs_diff_fc_vs_steffen"};
   nl_table *ft = nl_table_alloc(2, scols);
 
+  /* One progress bar: the synthetic exemplars, then the photographs. */
+  nl_harness_stage(r, 0.0, 0.5, "exemplars");
   for (int k = 0; k < NKIND; k++) {
     unsigned long xseed = nl_seed_stream(seed0, "l3.exemplar", (unsigned long)k);
     nl_image *ex = nl_byexample_exemplar(kinds[k], size, xseed);
@@ -105,6 +107,7 @@ int main(int argc, char **argv)
   nl_harness_write_table(r, ft, "spline.tsv");
   nl_table *gt = l3_gauss_table((size_t)size * size, K, seed0, nl_harness_threads(r));
   nl_harness_write_table(r, gt, "gauss.tsv");
+  nl_harness_stage(r, 0.5, 1.0, "photographs");
   nl_table *pt = l3_photos(r, names, photos, np, psize, K, seed0, min_share, max_ratio, max_ks);
   nl_table *ct = l3_verdicts(r, pt, psize, photos, names, np, min_share, max_ratio, max_ks);
   l3_figure_verdicts(r, kt, kinds, NKIND);

@@ -67,7 +67,17 @@ struct nl_harness {
   size_t nprevious;
   char *md;               /* report section being built */
   size_t md_len, md_cap;
-  double last_progress;
+  /* progress (nl_harness_stage): the current stage's share of the bar and
+   * its part (substage); the furthest fraction shown, the last label printed
+   * off a terminal, and whether a terminal line is left open */
+  double stage_from, stage_to, part_from, part_to, shown;
+  char stage_what[64], last_what[64];
+  int staged, line_open;
+  /* nl_harness_time_column: the time columns (file, column) and the values
+   * taken out of the written tables, for times.tsv */
+  char **time_file, **time_col;
+  size_t ntime;
+  nl_table *times;
 };
 
 /* The compiler by name and version: gcc's __VERSION__ is the bare number
@@ -313,7 +323,7 @@ nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char
   nl_harness_note(r, "threads", "%d", r->threads);   /* speed only: the tables do not depend on it */
   note(r, "images", r->images ? "yes" : "no");        /* --no-images: tables only */
   nl_harness_text(r, "## %s\n", title);
-  r->last_progress = -1;
+  r->stage_to = r->part_to = 1.0;
   return r;
 }
 
@@ -548,11 +558,79 @@ char *nl_harness_path(const nl_harness *r, const char *file)
   return nl_path_join(r->out, file);
 }
 
+static int is_time(const nl_harness *r, const char *file, const char *col)
+{
+  for (size_t i = 0; i < r->ntime; i++)
+    if ((!file || !strcmp(r->time_file[i], file)) && !strcmp(r->time_col[i], col)) return 1;
+  return 0;
+}
+
+static void drop_rule(nl_harness *r, const char *table, const char *column)
+{
+  nl_table *c = r->checks;
+  for (size_t i = 0; i < c->nrows; i++) {
+    char **row = c->text + i * c->ncols;
+    if (strcmp(row[0], table) || strcmp(row[1], column)) continue;
+    for (size_t k = 0; k < c->ncols; k++) free(row[k]);
+    memmove(row, row + c->ncols, (c->nrows - i - 1) * c->ncols * sizeof *row);
+    memmove(c->num + i * c->ncols, c->num + (i + 1) * c->ncols, (c->nrows - i - 1) * c->ncols * sizeof *c->num);
+    c->nrows--;
+    return;
+  }
+}
+
+void nl_harness_time_column(nl_harness *r, const char *file, const char *column)
+{
+  if (is_time(r, file, column)) return;
+  r->time_file = nl_xrealloc(r->time_file, (r->ntime + 1) * sizeof *r->time_file);
+  r->time_col = nl_xrealloc(r->time_col, (r->ntime + 1) * sizeof *r->time_col);
+  r->time_file[r->ntime] = nl_xstrdup(file);
+  r->time_col[r->ntime++] = nl_xstrdup(column);
+  drop_rule(r, file, column);   /* nothing left to compare */
+}
+
+/* t without FILE's time columns (NULL when it has none); their cells go to
+ * r->times, one row each: table, row (from 1), the row's first cell, column,
+ * value. */
+static nl_table *without_times(nl_harness *r, const nl_table *t, const char *file)
+{
+  size_t nkeep = 0;
+  for (size_t c = 0; c < t->ncols; c++) nkeep += !is_time(r, file, t->names[c]);
+  if (nkeep == t->ncols) return NULL;
+  const char **names = nl_xmalloc((nkeep + 1) * sizeof *names);
+  size_t k = 0;
+  for (size_t c = 0; c < t->ncols; c++)
+    if (!is_time(r, file, t->names[c])) names[k++] = t->names[c];
+  nl_table *v = nl_table_alloc(nkeep, names);
+  free(names);
+  if (!r->times) {
+    const char *cols[] = {"table", "row", "key", "column", "value"};
+    r->times = nl_table_alloc(5, cols);
+  }
+  char a[64], b[64];
+  for (size_t row = 0; row < t->nrows; row++) {
+    size_t i = nl_table_append_empty(v);
+    for (size_t c = 0; c < t->ncols; c++) {
+      const char *tx = t->text ? t->text[row * t->ncols + c] : NULL;
+      if (is_time(r, file, t->names[c])) {
+        nl_table_append(r->times, "sdsss", file, (double)(row + 1),
+                        nl_table_cell_text(t, row, 0, a), t->names[c], nl_table_cell_text(t, row, c, b));
+        continue;
+      }
+      if (tx) nl_table_set_text(v, i, t->names[c], tx);
+      else nl_table_set(v, i, t->names[c], nl_table_get(t, row, c));
+    }
+  }
+  return v;
+}
+
 void nl_harness_write_table(nl_harness *r, const nl_table *t, const char *file)
 {
   char *p = nl_harness_path(r, file);
   nl_error err;
-  if (nl_table_write(t, p, &err)) nl_harness_die(r, 1, "%s", err.msg);
+  nl_table *v = without_times(r, t, file);
+  if (nl_table_write(v ? v : t, p, &err)) nl_harness_die(r, 1, "%s", err.msg);
+  nl_table_free(v);
   free(p);
 }
 
@@ -565,16 +643,57 @@ void nl_harness_write_image(nl_harness *r, const nl_image *im, const char *file)
   free(p);
 }
 
+static void progress_print(nl_harness *r, double f, const char *what)
+{
+  int tty = isatty(2);
+  /* a finished bar stays finished: a later loop that reports 100% again
+   * would print one more line each time */
+  if (tty && r->shown >= 1.0 && !r->line_open) return;
+  if (f < r->shown) f = r->shown;   /* one bar: never back */
+  r->shown = f;
+  char label[160];
+  if (r->staged && what && strcmp(what, r->stage_what))
+    snprintf(label, sizeof label, "%s: %s", r->stage_what, what);
+  else
+    snprintf(label, sizeof label, "%s", what ? what : r->stage_what);
+  fprintf(stderr, "%s[%s] %3.0f%% %s (%.1f s)%s", tty ? "\r\033[K" : "", r->name, 100 * f, label,
+          nl_time_now() - r->t0, tty ? "" : "\n");
+  r->line_open = tty;
+  if (tty && f >= 1.0) {
+    fputc('\n', stderr);
+    r->line_open = 0;
+  }
+  fflush(stderr);
+}
+
+void nl_harness_stage(nl_harness *r, double from, double to, const char *what)
+{
+  r->staged = 1;
+  r->stage_from = r->part_from = from;
+  r->stage_to = r->part_to = to;
+  snprintf(r->stage_what, sizeof r->stage_what, "%s", what ? what : "");
+  progress_print(r, from, NULL);
+}
+
+void nl_harness_substage(nl_harness *r, int k, int n)
+{
+  double w = (r->stage_to - r->stage_from) / (n > 0 ? n : 1);
+  r->part_from = r->stage_from + k * w;
+  r->part_to = r->part_from + w;
+}
+
 void nl_harness_progress(nl_harness *r, double fraction, const char *what)
 {
-  double now = nl_time_now();
-  int tty = isatty(2);
-  if (!tty && r->last_progress >= 0 && now - r->last_progress < 1.0 && fraction < 1.0) return;
-  r->last_progress = now;
-  fprintf(stderr, "%s[%s] %3.0f%% %s (%.1f s)%s", tty ? "\r\033[K" : "", r->name,
-          100 * fraction, what ? what : "", now - r->t0, tty ? "" : "\n");
-  if (tty && fraction >= 1.0) fputc('\n', stderr);
-  fflush(stderr);
+  double f = r->part_from + (fraction < 0 ? 0 : fraction > 1 ? 1 : fraction) * (r->part_to - r->part_from);
+  if (!isatty(2)) {
+    /* off a terminal: a line per stage; a declared stage printed its own */
+    if (r->staged || !strcmp(what ? what : "", r->last_what)) {
+      if (f > r->shown) r->shown = f;
+      return;
+    }
+    snprintf(r->last_what, sizeof r->last_what, "%s", what ? what : "");
+  }
+  progress_print(r, f, what);
 }
 
 /* ---- report section --------------------------------------------------- */
@@ -621,12 +740,17 @@ void nl_harness_report_table(nl_harness *r, const nl_table *t, const char *capti
 {
   char cell[64];
   if (caption) nl_harness_text(r, "*%s*\n", caption);
-  for (size_t c = 0; c < t->ncols; c++) { md_append(r, "| "); md_append(r, t->names[c]); md_append(r, " "); }
+  /* time columns (nl_harness_time_column) are in times.tsv, not here */
+  for (size_t c = 0; c < t->ncols; c++) {
+    if (is_time(r, NULL, t->names[c])) continue;
+    md_append(r, "| "); md_append(r, t->names[c]); md_append(r, " ");
+  }
   md_append(r, "|\n");
-  for (size_t c = 0; c < t->ncols; c++) md_append(r, "|---");
+  for (size_t c = 0; c < t->ncols; c++) if (!is_time(r, NULL, t->names[c])) md_append(r, "|---");
   md_append(r, "|\n");
   for (size_t row = 0; row < t->nrows; row++) {
     for (size_t c = 0; c < t->ncols; c++) {
+      if (is_time(r, NULL, t->names[c])) continue;
       size_t k = row * t->ncols + c;
       /* Text cells that are whole numbers (labels such as a sweep's w1) are
        * rounded like the numbers. */
@@ -650,6 +774,7 @@ void nl_harness_report_columns(nl_harness *r, const nl_table *t, const char *fil
   for (char *c = strtok_r(list, ",", &save); c; c = strtok_r(NULL, ",", &save)) {
     long k = nl_table_column(t, c);
     if (k < 0) nl_harness_die(r, 1, "report of %s: no column '%s'", file, c);
+    if (is_time(r, file, c)) continue;   /* in times.tsv */
     if (n == 256) nl_harness_die(r, 1, "report of %s: more than 256 columns", file);
     names[n] = t->names[k];
     idx[n++] = (size_t)k;
@@ -664,7 +789,9 @@ void nl_harness_report_columns(nl_harness *r, const nl_table *t, const char *fil
     }
   }
   nl_harness_report_table(r, v, caption, digits);
-  nl_harness_text(r, "Shown: %zu of the table's %zu columns; all of them in [%s](%s/%s).\n", n, t->ncols, file, r->name, file);
+  size_t ncols = 0;
+  for (size_t c = 0; c < t->ncols; c++) ncols += !is_time(r, file, t->names[c]);
+  nl_harness_text(r, "Shown: %zu of the table's %zu columns; all of them in [%s](%s/%s).\n", n, ncols, file, r->name, file);
   nl_table_free(v);
   free(list);
 }
@@ -720,6 +847,7 @@ void nl_harness_check(nl_harness *r, const char *table, const char *column, cons
   nl_harness_rule parsed;
   nl_error err;
   if (nl_harness_rule_parse(rule, &parsed, &err)) nl_harness_die(r, 1, "%s: %s: %s", table, column, err.msg);
+  if (is_time(r, table, column)) return;   /* not in the table written */
   nl_table *c = r->checks;
   for (size_t i = 0; i < c->nrows; i++) {
     char **row = c->text + i * c->ncols;
@@ -1104,8 +1232,51 @@ static void note_platform(nl_harness *r)
   }
 }
 
+/* When and how long the run took, in run.tsv beside the manifest: the
+ * manifest identifies the run and is committed with the results, so that a
+ * rerun of the same commit writes it byte for byte; these values differ on
+ * every run and go to a file that is not tracked (.gitignore) and not an
+ * "output" (the regression check would count it as a table the reference
+ * lacks). Written through nl_table_write, i.e. by rename: the entry script
+ * stages a run in hard links of the previous folder. */
+static void run_times_write(nl_harness *r)
+{
+  const char *cols[] = {"key", "value"};
+  nl_table *t = nl_table_alloc(2, cols);
+  char buf[128];
+  nl_table_append(t, "ss", "started", r->started);
+  snprintf(buf, sizeof buf, "%.3f", nl_time_now() - r->t0);
+  nl_table_append(t, "ss", "seconds", buf);
+  struct rusage ru;
+  getrusage(RUSAGE_SELF, &ru);
+  /* CPU time of all threads (user + sys, the process start included): with
+   * `seconds` it says how well a run used the cores. */
+  double user = ru.ru_utime.tv_sec + ru.ru_utime.tv_usec * 1e-6;
+  double sys = ru.ru_stime.tv_sec + ru.ru_stime.tv_usec * 1e-6;
+  snprintf(buf, sizeof buf, "%.3f (user %.3f + sys %.3f)", user + sys, user, sys);
+  nl_table_append(t, "ss", "cpu_seconds", buf);
+  snprintf(buf, sizeof buf, "%.1f", ru.ru_maxrss / 1024.0);
+  nl_table_append(t, "ss", "peak_rss_mb", buf);
+  char *p = nl_path_join(r->out, "run.tsv");
+  nl_error err;
+  nl_status st = nl_table_write(t, p, &err);
+  nl_table_free(t);
+  free(p);
+  if (st) nl_harness_die(r, 1, "%s", err.msg);
+  if (r->times) {   /* the time columns of the tables, likewise */
+    p = nl_path_join(r->out, "times.tsv");
+    st = nl_table_write(r->times, p, &err);
+    free(p);
+    if (st) nl_harness_die(r, 1, "%s", err.msg);
+  }
+}
+
 int nl_harness_end(nl_harness *r)
 {
+  if (r->line_open) {   /* a progress bar that stopped short of 100% */
+    fputc('\n', stderr);
+    r->line_open = 0;
+  }
   write_text(r, "report.md", r->md ? r->md : "");
   const char *commit = getenv("NL_COMMIT");
   note(r, "commit", commit && *commit ? commit : "unknown");
@@ -1114,16 +1285,7 @@ int nl_harness_end(nl_harness *r)
   nl_harness_note(r, "compiler", "%s", NL_COMPILER);
   note(r, "cflags", NL_BUILD_CFLAGS);
   note_platform(r);
-  note(r, "started", r->started);
-  nl_harness_note(r, "seconds", "%.3f", nl_time_now() - r->t0);
-  struct rusage ru;
-  getrusage(RUSAGE_SELF, &ru);
-  /* CPU time of all threads (user + sys, the process start included): with
-   * `seconds` it says how well a run used the cores. */
-  nl_harness_note(r, "cpu_seconds", "%.3f (user %.3f + sys %.3f)",
-                  ru.ru_utime.tv_sec + ru.ru_utime.tv_usec * 1e-6 + ru.ru_stime.tv_sec + ru.ru_stime.tv_usec * 1e-6,
-                  ru.ru_utime.tv_sec + ru.ru_utime.tv_usec * 1e-6, ru.ru_stime.tv_sec + ru.ru_stime.tv_usec * 1e-6);
-  nl_harness_note(r, "peak_rss_mb", "%.1f", ru.ru_maxrss / 1024.0);
+  run_times_write(r);
   if (r->verdicts) {
     nl_harness_write_table(r, r->verdicts, "verdicts.tsv");
     nl_harness_check(r, "verdicts.tsv", "*", "ignore");   /* copies of compared values */
@@ -1140,6 +1302,9 @@ int nl_harness_end(nl_harness *r)
   for (size_t i = 0; i < r->nfigures; i++) free(r->figures[i]);
   for (size_t i = 0; i < r->nprevious; i++) free(r->previous[i]);
   free(r->outputs); free(r->figures); free(r->previous);
+  for (size_t i = 0; i < r->ntime; i++) { free(r->time_file[i]); free(r->time_col[i]); }
+  free(r->time_file); free(r->time_col);
+  nl_table_free(r->times);
   for (int k = 0; k < r->nset; k++) { free(r->set_key[k]); free(r->set_val[k]); }
   free(r->set_key); free(r->set_val); free(r->set_used); free(r->param);
   nl_table_free(r->manifest);
@@ -1161,7 +1326,9 @@ char **nl_harness_tables(const char *dir, size_t *n, nl_error *err)
   while ((e = readdir(d))) {
     size_t len = strlen(e->d_name);
     if (e->d_name[0] == '.' || len < 5 || strcmp(e->d_name + len - 4, ".tsv")) continue;
-    if (!strcmp(e->d_name, "manifest.tsv") || !strcmp(e->d_name, "checks.tsv")) continue;
+    if (!strcmp(e->d_name, "manifest.tsv") || !strcmp(e->d_name, "checks.tsv") ||
+        !strcmp(e->d_name, "run.tsv") || !strcmp(e->d_name, "times.tsv"))
+      continue;   /* the run's identity and rules, and its times (not tracked) */
     names = nl_xrealloc(names, (*n + 1) * sizeof *names);
     names[(*n)++] = nl_xstrdup(e->d_name);
   }

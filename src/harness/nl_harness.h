@@ -32,8 +32,8 @@
  * so `--params --set NAME=VALUE...` validates a sweep point; the list shows
  * the defaults.
  * The manifest (manifest.tsv: key, value) records the experiment, seed,
- * parameters, commit (NL_COMMIT from the entry script), library versions,
- * wall time, peak memory and where it was made: compiler (name and version,
+ * parameters, commit (NL_COMMIT from the entry script), library versions
+ * and where it was made: compiler (name and version,
  * "gcc 12.2.0"), cflags
  * (project and user C flags, buildtype, optimisation, sanitizers), cpu
  * (/proc/cpuinfo model name), arch (uname's machine, "x86_64"), libm
@@ -43,8 +43,10 @@
  * blas (library file; "OpenBLAS (path)" when
  * OpenBLAS is loaded), blas_core, blas_config, blas_threads (OpenBLAS's
  * openblas_get_corename/config/num_threads; "none" without OpenBLAS).
- * The regression check compares none of these (nor started, seconds,
- * peak_rss_mb), but names cpu, arch, blas_core and libm when it finds drift.
+ * The regression check compares none of these, but names cpu, arch, blas_core and libm when it finds drift.
+ * When and how long the run took (started, seconds, cpu_seconds,
+ * peak_rss_mb) go to run.tsv beside it, a file no "output" line names: they
+ * differ on every run, and the manifest is committed with the results.
  * One "output" line per file the run wrote (every path nl_harness_path handed
  * out, and each nl_harness_figure file; a PNG figure the program did not
  * write is drawn by the entry script with an SVG beside it): a run that
@@ -169,11 +171,32 @@ char *nl_harness_path(const nl_harness *r, const char *file);
  * tables): a program's first image write starts OpenImageIO, about 0.6 s of
  * CPU (1 s under the sanitizers), often more than a quick run's work. */
 void nl_harness_write_table(nl_harness *r, const nl_table *t, const char *file);
+
+/* A column of FILE that is a wall or CPU time: it differs on every run, so
+ * nl_harness_write_table leaves it out of FILE (declare it before the
+ * write) and puts its cells in times.tsv (table, row, key: the row's first
+ * cell, column, value), beside the manifest, not tracked by git and not an
+ * output; report tables (nl_harness_report_table, _columns) leave out every
+ * column of that name, and no check rule is kept for it. A committed
+ * result then does not change when the same commit runs again. Times the
+ * paper's claims are about (A2's Table 5.1, C6's real-time claim) stay in
+ * their tables. */
+void nl_harness_time_column(nl_harness *r, const char *file, const char *column);
 void nl_harness_write_image(nl_harness *r, const nl_image *im, const char *file);
 
-/* Progress for long runs: "[name] 40% what (3.2 s)" on stderr, one
- * rewritten line on a terminal, at most one plain line a second otherwise. */
+/* Progress for long runs: "[name] 40% what (3.2 s)" on stderr. One bar per
+ * experiment, never going back: a run made of several stages (a size check,
+ * a fit, a sweep, each a loop of its own) declares each with
+ * nl_harness_stage, its share [from, to] of the bar; nl_harness_substage
+ * splits the current stage into n equal parts (part k for the calls that
+ * follow, e.g. one reading of a sweep), and nl_harness_progress's fraction
+ * runs over the current part. On a terminal the bar is one rewritten line
+ * (ended at 100% or by nl_harness_end); otherwise one plain line per stage
+ * (at nl_harness_stage, or, in a run that declares none, when `what`
+ * changes), so a log is not flooded. */
 void nl_harness_progress(nl_harness *r, double fraction, const char *what);
+void nl_harness_stage(nl_harness *r, double from, double to, const char *what);
+void nl_harness_substage(nl_harness *r, int k, int n);
 
 /* Prints "name: message" and exits with `code`; the manifest is not written. */
 void nl_harness_die(nl_harness *r, int code, const char *fmt, ...)
@@ -310,8 +333,9 @@ nl_status nl_harness_check_experiment(nl_harness_check_state *s, const char *ref
  * across them. */
 void nl_harness_check_totals(const nl_harness_check_state *s);
 
-/* The data tables of a run folder: every *.tsv but manifest.tsv and
- * checks.tsv (hidden files are temporaries), sorted by name. Caller frees
+/* The data tables of a run folder: every *.tsv but manifest.tsv,
+ * checks.tsv and the times run.tsv and times.tsv (hidden files are
+ * temporaries), sorted by name. Caller frees
  * each name and the array (never NULL when the folder is read, even if
  * empty); NULL and a message if the folder cannot be read. */
 char **nl_harness_tables(const char *dir, size_t *n, nl_error *err);
