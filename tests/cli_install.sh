@@ -53,7 +53,7 @@ lab_syms="$(nm -D --defined-only "$lib/libnoiselab.so" | awk '$3 ~ /^nl_(harness
 [ -z "$lab_syms" ] || fail "libnoiselab exports the lab's symbols: $lab_syms"
 ends="$(nm -D --undefined-only "$lib/libnoiselab.so" | awk '{sub(/@.*/, "", $2); print $2}' \
         | grep -xE 'exit|_exit|_Exit|quick_exit|atexit|__cxa_atexit|on_exit|signal|sigaction|sigset|bsd_signal' || true)"
-[ -z "$ends" ] || fail "libnoiselab calls what ends or signals its host: $(echo $ends)"
+[ -z "$ends" ] || fail "libnoiselab calls what ends or signals its host: ${ends//$'\n'/ }"
 cflags="$(pc --cflags)" || fail "pkg-config --cflags noiselab failed"
 libs="$(pc --libs)" || fail "pkg-config --libs noiselab failed"
 slibs="$(pc --static --libs)" || fail "pkg-config --static --libs noiselab failed"
