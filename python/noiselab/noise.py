@@ -551,6 +551,25 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
         names = "xyz"
         xs, ys, zs = _coords(names, (x, y, 0.5 if z is None else z))
     out = _out(out, xs.shape)
+    # The sums accumulate octave by octave into out, and every kernel writes a
+    # block before it reads the next: an out that overlaps a coordinate would
+    # feed written values back as coordinates. As numpy's ufuncs buffer such
+    # an overlap, the noise is computed into a temporary and copied.
+    dest = out
+    if any(np.may_share_memory(out, a) for a in (x, y, z, xs, ys, zs)
+           if isinstance(a, np.ndarray)):
+        out = np.empty_like(dest)
+    k = _points_into(nz, xs, ys, zs, out)
+    if out is not dest:
+        dest.ravel()[:k] = out.ravel()[:k]
+    if k < out.size:
+        _refuse(nz, names, (xs, ys, zs), k)
+    return dest
+
+
+def _points_into(nz, xs, ys, zs, out):
+    """points' C call into out, which overlaps no coordinate: the flat index of
+    the first point the library refused, out.size if none."""
     n = out.size
     o = nz.octaves
     px, py, po = _ptr(xs), _ptr(ys), _ptr(out)
@@ -571,9 +590,7 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
             _gctbf_points(b.gctbf_cell, ctypes.byref(b.gctbf), px, py, pz, k, po)
         else:
             _fractal_points(ctypes.byref(nz.basis), ctypes.byref(o), px, py, pz, k, po)
-    if k < n:
-        _refuse(nz, names, (xs, ys, zs), k)
-    return out
+    return k
 
 
 # The options both functions share, written once.
