@@ -195,7 +195,7 @@ def optimise(pattern, seed=1, grid=64, **options):
     """
     c = _config(options)
     # the experiments' --seed range (nl_harness): -1 would wrap to 2^64 - 1
-    seed = _noise._int("seed", seed, 0, _noise._SEED_MAX)
+    seed = _noise.integer("seed", seed, 0, _noise._SEED_MAX)
     p = _pattern(pattern, grid)
     g, ev, err = _G2(), _Eval(), Error()
     try:

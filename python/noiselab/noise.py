@@ -206,7 +206,7 @@ class _Noise:
         self.planar = self.kind in _PLANAR
         if count not in _COUNTS:
             raise ValueError(f"count: {count!r} is not one of {', '.join(_COUNTS)}")
-        seed = _int("seed", seed, 0, _SEED_MAX)
+        seed = integer("seed", seed, 0, _SEED_MAX)
         so = _sum_options(octaves, gain, lacunarity)
         # every option in render's range, read or not (nl_basis_options_check)
         o = _basis_defaults()
@@ -300,23 +300,39 @@ class _Noise:
         self.close()
 
 
-@functools.lru_cache(maxsize=8)
+@functools.lru_cache(maxsize=8, typed=True)
 def _cached(*args):
     return _Noise(*args)
 
 
-def _make(noise, seed, basis, octaves, gain, lacunarity, table, *rest):
+def _name(name, v):
+    if not isinstance(v, str):
+        raise TypeError(f"{name}: expected a str, got {type(v).__name__}")
+    return v
+
+
+def _make(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference, terms,
+          lambda_, points, count, tile):
     """The built noise: the last few seeded ones are kept (building a table
     costs more than a point), a given table is built afresh each call.
-    Built noises are never changed, so threads may share them."""
+    Built noises are never changed, so threads may share them.
+
+    The cache is keyed by the arguments once their types are checked and
+    they are converted to Python's int, float, bool and str: equal keys are
+    then the same values, which _Noise accepts or refuses alike, so what one
+    call passed never decides what another may (1.0 == 1 would hit a seed=1
+    entry by hash and equality alone)."""
+    args = (_name("noise", noise), integer("seed", seed, 0, _SEED_MAX),
+            _name("basis", basis),
+            _int("octaves", octaves, -2**63, 2**63 - 1), _real("gain", gain),
+            _real("lacunarity", lacunarity), None,
+            _int("table_size", table_size, -2**62, 2**62), bool(reference),
+            _name("terms", terms), _real("lambda_", lambda_),
+            _int("points", points, -2**62, 2**62), _name("count", count),
+            _int("tile", tile, -2**62, 2**62))
     if table is not None:
-        return _Noise(noise, seed, basis, octaves, gain, lacunarity, table, *rest)
-    try:
-        return _cached(noise, seed, basis, octaves, gain, lacunarity, None, *rest)
-    except TypeError as e:
-        if "unhashable" not in str(e):
-            raise
-        return _Noise(noise, seed, basis, octaves, gain, lacunarity, None, *rest)
+        return _Noise(*args[:6], table, *args[7:])
+    return _cached(*args)
 
 
 _DOC_OPTIONS = """
@@ -444,8 +460,14 @@ def _coords(names, arrays):
     they are). NaN, infinity and the lattice limit are checked by the C side,
     block by block beside the kernel (nl_noise_points_refused)."""
     conv = []
-    for name, a in zip(names, arrays):
-        a = np.asarray(a)
+    for name, given in zip(names, arrays):
+        a = np.asarray(given)
+        if a.dtype.kind in "OSUV" and not isinstance(given, np.ndarray):
+            # a str or an object is no coordinate: say which argument got what
+            raise TypeError(f"{name}: coordinates must be real numbers or arrays of them, "
+                            f"got {type(given).__name__} {given!r:.40}" +
+                            (" (the noise is the argument noise=)" if isinstance(given, str)
+                             else ""))
         if a.dtype != np.float64:
             # float16 has 11 bits (a coordinate past 2048 is not where it was
             # meant) and bool is no coordinate: as documented, only integers

@@ -435,3 +435,49 @@ def test_out_aliasing_keeps_the_points_before_a_refusal():
     with pytest.raises(ValueError, match="x: coordinate 700"):
         nn.points(x, 0.5, 0.5, "fbm", out=x)
     assert np.array_equal(x[:700], plain[:700])
+
+
+@pytest.mark.parametrize("name,good,bad", [
+    ("seed", 1, 1.0), ("seed", 2, np.float64(2.0)), ("octaves", 4, 4.0), ("table_size", 64, 64.0),
+    ("points", 20, 20.0), ("tile", 16, 16.0), ("seed", 1, True), ("octaves", 1, True),
+])
+@pytest.mark.parametrize("order", ["bad first", "good first"])
+def test_what_is_accepted_does_not_depend_on_earlier_calls(name, good, bad, order):
+    """A value is accepted or refused for what it is: the built-noise cache
+    keys equal-comparing 1 and 1.0 (or True) apart, so a call with seed=1
+    never lets seed=1.0 through later."""
+    noise = {"table_size": "noise2", "points": "gctbf", "tile": "wavelet"}.get(name, "fbm")
+    x = np.linspace(0, 1, 4)
+    calls = [False, True] if order == "bad first" else [True, False]
+    for ok in calls:
+        if ok:
+            nn.points(x, x, None if noise == "noise2" else 0.5, noise, **{name: good})
+        else:
+            with pytest.raises(TypeError, match=f"^{name}: expected an integer"):
+                nn.points(x, x, None if noise == "noise2" else 0.5, noise, **{name: bad})
+
+
+@pytest.mark.parametrize("z", ["fbm", "0.5", b"1", object(), ["a"]])
+def test_a_string_for_z_names_z(z):
+    with pytest.raises(TypeError) as e:
+        nn.points(np.zeros(3), np.zeros(3), z)
+    assert str(e.value).startswith("z: coordinates must be real numbers or arrays of them, got "
+                                   f"{type(z).__name__}"), str(e.value)
+
+
+@pytest.mark.parametrize("value", [-1, 2**32])
+@pytest.mark.parametrize("call", ["grid", "points", "cheng"])
+def test_seed_is_refused_in_render_words(tmp_path, value, call):
+    r = subprocess.run([RENDER, "improved", "--seed", str(value), "--size", "4", "-o",
+                        str(tmp_path / "x.tsv")], capture_output=True, text=True)
+    assert r.returncode == 2 and r.stderr.startswith("noiselab render: --seed: "), r.stderr
+    want = r.stderr[len("noiselab render: --"):].strip()
+    import noiselab.cheng as nc
+    with pytest.raises(ValueError) as e:
+        if call == "grid":
+            nn.grid("improved", 4, seed=value)
+        elif call == "points":
+            nn.points(0.5, 0.5, seed=value)
+        else:
+            nc.optimise(np.zeros((16, 16)), seed=value)
+    assert str(e.value) == want
