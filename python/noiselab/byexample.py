@@ -21,6 +21,8 @@ import numpy as np
 from ._lib import Error, check, fn, mirror
 from ._lib import integer as _int
 
+__all__ = ["analyse", "synthesize", "morph", "read_image", "write_image", "Params"]
+
 _MAXB = 16
 _HMAX = 33
 _CALIBRATE = 4   # NL_BYEXAMPLE_CALIBRATE

@@ -20,6 +20,8 @@ import numpy as np
 from ._lib import Error, c_double_p, check, fn, mirror
 from . import noise as _noise
 
+__all__ = ["optimise", "evaluate", "value_grid", "ChengResult"]
+
 _MAXO = 8
 
 

@@ -25,6 +25,8 @@ import numpy as np
 from ._lib import Error, c_double_p, check, fn, integer, mirror
 from ._lib import real as _real
 
+__all__ = ["grid", "points", "bound", "cellular", "cellular_grid"]
+
 _MAX_OCTAVES = 32
 
 
