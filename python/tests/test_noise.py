@@ -481,3 +481,21 @@ def test_seed_is_refused_in_render_words(tmp_path, value, call):
         else:
             nc.optimise(np.zeros((16, 16)), seed=value)
     assert str(e.value) == want
+
+
+@pytest.mark.parametrize("noise,name", [
+    ("fbm", "gain"), ("fbm", "lacunarity"), ("gctbf", "lambda_"), ("marble", "amplitude"),
+    ("marble", "stripes"), ("improved", "extent"), ("improved", "x0"), ("improved", "y0"),
+    ("improved", "z")])
+@pytest.mark.parametrize("value", [float("nan"), float("inf"), -float("inf")])
+def test_a_non_finite_option_is_refused_in_render_words(tmp_path, noise, name, value):
+    """render refuses a non-finite number as a word ('nan'); Python names the
+    parameter and the value in the same sentence (the library's check)."""
+    opt = "--" + name.rstrip("_").replace("_", "-")
+    r = subprocess.run([RENDER, noise, opt, str(value), "--size", "4", "-o",
+                        str(tmp_path / "x.tsv")], capture_output=True, text=True)
+    assert r.returncode == 2
+    assert r.stderr == f"noiselab render: {opt}: '{value}' is not a finite number\n", r.stderr
+    with pytest.raises(ValueError) as e:
+        nn.grid(noise, 4, **{name: value})
+    assert str(e.value) == f"{name}: {value} is not a finite number"
