@@ -187,6 +187,12 @@ def _window(size, extent, x0, y0, z):
     return win
 
 
+def _name(name, v):
+    if not isinstance(v, str):
+        raise TypeError(f"{name}: expected a str, got {type(v).__name__}")
+    return v
+
+
 class _Noise:
     """A built noise (its C tables) and the octaves of its sum."""
 
@@ -194,6 +200,8 @@ class _Noise:
                  reference, terms, lambda_, points, count, tile):
         self._b = None
         self._g = None
+        for name, v in (("noise", noise), ("basis", basis), ("terms", terms), ("count", count)):
+            _name(name, v)
         if noise in _SUMS:
             self.sum, under = noise, basis
             if under not in _BASES:
@@ -217,7 +225,7 @@ class _Noise:
         o.lambda_ = _real("lambda_", lambda_)
         o.points = _int("points", points, -2**62, 2**62)
         o.count = _COUNTS[count]
-        self._terms = str(terms).encode()
+        self._terms = terms.encode()
         o.terms = self._terms
         o.tile = _int("tile", tile, -2**62, 2**62)
         err = Error()
@@ -307,10 +315,10 @@ def _cached(*args):
     return _Noise(*args)
 
 
-def _name(name, v):
-    if not isinstance(v, str):
-        raise TypeError(f"{name}: expected a str, got {type(v).__name__}")
-    return v
+# Argument types whose equal values are the same value: an entry made from
+# them is what _Noise would build (or refuse) from any equal arguments of the
+# same types, which the typed cache keys apart (1 and 1.0 and True).
+_PLAIN = frozenset((int, float, str, bool, type(None)))
 
 
 def _make(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference, terms,
@@ -319,15 +327,19 @@ def _make(noise, seed, basis, octaves, gain, lacunarity, table, table_size, refe
     costs more than a point), a given table is built afresh each call.
     Built noises are never changed, so threads may share them.
 
-    The cache is keyed by the arguments once their types are checked and
-    they are converted to Python's int, float, bool and str: equal keys are
-    then the same values, which _Noise accepts or refuses alike, so what one
-    call passed never decides what another may (1.0 == 1 would hit a seed=1
-    entry by hash and equality alone)."""
+    What is accepted never depends on earlier calls: the cache is keyed by
+    the arguments with their types when they are plain Python values, else
+    by the values they convert to once their types are checked (numpy
+    integers and floats, say): equal keys are then the same values, which
+    _Noise accepts or refuses alike. (Untyped, seed=1.0 == 1 would hit a
+    seed=1 entry by hash and equality alone.) A refusal is never cached."""
+    args = (noise, seed, basis, octaves, gain, lacunarity, None, table_size, reference, terms,
+            lambda_, points, count, tile)
+    if table is None and _PLAIN.issuperset(map(type, args)):
+        return _cached(*args)
     args = (_name("noise", noise), integer("seed", seed, 0, _SEED_MAX),
-            _name("basis", basis),
-            _int("octaves", octaves, -2**63, 2**63 - 1), _real("gain", gain),
-            _real("lacunarity", lacunarity), None,
+            _name("basis", basis), _int("octaves", octaves, -2**63, 2**63 - 1),
+            _real("gain", gain), _real("lacunarity", lacunarity), None,
             _int("table_size", table_size, -2**62, 2**62), bool(reference),
             _name("terms", terms), _real("lambda_", lambda_),
             _int("points", points, -2**62, 2**62), _name("count", count),

@@ -499,3 +499,15 @@ def test_a_non_finite_option_is_refused_in_render_words(tmp_path, noise, name, v
     with pytest.raises(ValueError) as e:
         nn.grid(noise, 4, **{name: value})
     assert str(e.value) == f"{name}: {value} is not a finite number"
+
+
+@pytest.mark.parametrize("name,value", [("terms", 5), ("count", 1), ("noise", ["fbm"]),
+                                        ("basis", None)])
+@pytest.mark.parametrize("wrap", [lambda v: v, lambda v: np.array(v)[()] if np.ndim(v) == 0
+                                  and v is not None else v])
+def test_a_name_that_is_no_str_is_a_type_error(name, value, wrap):
+    """Plain Python values and numpy scalars take different ways to the
+    cache (_make) and are refused alike."""
+    kw = {"noise": "gctbf", name: wrap(value)}
+    with pytest.raises(TypeError, match=f"^{name}: expected a str"):
+        nn.points(np.zeros(2), 0.5, 0.5, **kw)
