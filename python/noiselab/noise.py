@@ -155,6 +155,7 @@ _RANGE_NAMES = {f"--{k}": k for k in ("octaves", "gain", "lacunarity", "amplitud
                                       "size", "extent", "x0", "y0", "z")}
 # render --seed's range: the library takes any unsigned long, the tool not.
 _SEED_MAX = 2**32 - 1
+# render --count's words (nl_cellular_count_rule's values)
 _COUNTS = {"closest": 0, "inverse": 1, "closest-last": 2}
 _PLANAR = ("noise2",)
 
@@ -215,7 +216,7 @@ class _Noise:
         self.kind = _BASES[under]
         self.planar = self.kind in _PLANAR
         if count not in _COUNTS:
-            raise ValueError(f"count: {count!r} is not one of {', '.join(_COUNTS)}")
+            raise ValueError(f"count: {count!r} is not inverse, closest or closest-last")
         seed = integer("seed", seed, 0, _SEED_MAX)
         so = _sum_options(octaves, gain, lacunarity)
         # every option in render's range, read or not (nl_basis_options_check)

@@ -31,6 +31,8 @@ CASES = [
     ("fbm", ["--octaves", "3", "--lacunarity", "1.9", "--basis", "wavelet", "--tile", "32"],
      dict(octaves=3, lacunarity=1.9, basis="wavelet", tile=32)),
     ("gctbf", ["--terms", "F2 - F1", "--seed", "5"], dict(terms="F2 - F1", seed=5)),
+    # lambda 4 has a tie p(3) = p(4), where closest-last takes the larger count
+    ("gctbf", ["--count", "closest-last", "--seed", "3"], dict(count="closest-last", seed=3)),
     ("wavelet", ["--tile", "16", "--extent", "40", "--seed", "4"],
      dict(tile=16, extent=40.0, seed=4)),
     ("marble", ["--octaves", "4", "--amplitude", "0.8", "--stripes", "2"],
@@ -511,3 +513,15 @@ def test_a_name_that_is_no_str_is_a_type_error(name, value, wrap):
     kw = {"noise": "gctbf", name: wrap(value)}
     with pytest.raises(TypeError, match=f"^{name}: expected a str"):
         nn.points(np.zeros(2), 0.5, 0.5, **kw)
+
+
+def test_count_is_refused_in_render_words(tmp_path):
+    r = subprocess.run([RENDER, "gctbf", "--count", "last", "--size", "4", "-o",
+                        str(tmp_path / "x.tsv")], capture_output=True, text=True)
+    assert r.returncode == 2
+    with pytest.raises(ValueError) as e:
+        nn.grid("gctbf", 4, count="last")
+    assert r.stderr == f"noiselab render: --{e.value}\n"
+    # the three rules give three rasters: closest-last is no alias
+    g = [nn.grid("gctbf", 32, count=c, seed=3) for c in ("inverse", "closest", "closest-last")]
+    assert not np.array_equal(g[1], g[2]) and not np.array_equal(g[0], g[2])
