@@ -518,7 +518,8 @@ def _scalars(*v):
 
 def _point(nz, x, y, z):
     """One point of improved or noise2 through the point call (the batch
-    kernels' bits), without numpy's array machinery: ~50x less overhead."""
+    kernels' bits), without numpy's array machinery: a third of a
+    one-element array's cost (3.6 us against 23 us, measured)."""
     x, y = float(x), float(y)
     if nz.planar:
         if z is not None:
@@ -560,7 +561,10 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
     x, y, z : array_like
         coordinates, any shapes that broadcast together.
     out : numpy.ndarray, optional
-        a C-contiguous float64 array of the broadcast shape to write into.
+        a C-contiguous float64 array of the broadcast shape to write into; it
+        may overlap x, y or z (``out=x``): the values are then those of the
+        call without out, computed into a temporary first, as numpy's ufuncs
+        buffer overlaps.
     %OPTIONS%
     Returns
     -------
@@ -572,6 +576,9 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
     >>> x = np.linspace(0, 4, 5)
     >>> nn.points(x, 1.5, 0.5, "improved", seed=3).shape
     (5,)
+    >>> y = x.copy()
+    >>> np.array_equal(nn.points(y, 1.5, 0.5, "fbm", out=y), nn.points(x, 1.5, 0.5, "fbm"))
+    True
     """
     nz = _make(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
                terms, lambda_, points, count, tile)
