@@ -82,8 +82,9 @@ static void usage(void)
          "  --terms EXPR         GCTBF, e.g. \"F2 - F1 - F1F1\" or \"0.5*F1 + 2 F1*F2\" (F1)\n"
          "  --lambda L           mean feature points per unit cube, (0, 1000] (4)\n"
          "  --points M           feature points per cube at most, 1..64 (50)\n"
-         "  --count inverse|closest  feature-point count rule (inverse: inverse-CDF sampling;\n"
-         "                       closest: the paper's 'p(m) closest to r')\n"
+         "  --count inverse|closest|closest-last  feature-point count rule (inverse:\n"
+         "                       inverse-CDF sampling; closest: the paper's 'p(m) closest to\n"
+         "                       r', the smaller m on ties; closest-last: the larger)\n"
          "  --table-size M       gradient-table size for noise2/table, 4..1048576 (512)\n"
          "  --seed S             table seed (1)   --reference  Perlin's own permutation\n"
          "  --bits 8|16|32       image bit depth (8; EXR defaults to 32)\n"
@@ -241,16 +242,18 @@ static void parse(int argc, char **argv, options *o)
     fail("%s: unknown noise (%s)", o->noise, list);
   }
   if (!o->out) fail("-o: no output file given");
-  const char *norms[] = {"bound", "range", NULL}, *counts[] = {"inverse", "closest", NULL};
+  const char *norms[] = {"bound", "range", NULL};
+  const char *counts[] = {"inverse", "closest", "closest-last", NULL};
   const nl_basis_kind *under = nl_basis_find(o->basis);
   if (!under || strcmp(o->basis, under->under)) {
     names(list, sizeof list, 1, ", ", " or ");
     fail("--basis: '%s' is not %s", o->basis, list);
   }
   if (!one_of(o->count, counts)) {
-    fail("--count: '%s' is not inverse or closest", o->count);
+    fail("--count: '%s' is not inverse, closest or closest-last", o->count);
   }
-  o->bo.count = !strcmp(o->count, "closest") ? NL_COUNT_CLOSEST : NL_COUNT_INVERSE_CDF;
+  o->bo.count = !strcmp(o->count, "closest") ? NL_COUNT_CLOSEST
+              : !strcmp(o->count, "closest-last") ? NL_COUNT_CLOSEST_LAST : NL_COUNT_INVERSE_CDF;
   if (!one_of(o->normalize, norms)) fail("--normalize: '%s' is not bound or range", o->normalize);
   if (o->bits && o->bits != 8 && o->bits != 16 && o->bits != 32)
     fail("--bits: %ld is not 8, 16 or 32", o->bits);

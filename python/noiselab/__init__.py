@@ -32,8 +32,22 @@ Example (from a checkout built by ``scripts/noiselab setup``):
   >>> v = nn.grid("fbm", 512, octaves=6, seed=7)   # as `noiselab render fbm --seed 7`
 """
 
+import importlib
+
 from ._lib import NoiselabError, path as library_path
 
-__all__ = ["NoiselabError", "library_path", "noise", "stats", "cheng", "byexample",
-           "results"]
+_SUBMODULES = ("noise", "stats", "cheng", "byexample", "results")
+__all__ = ["NoiselabError", "library_path", *_SUBMODULES]
 __version__ = "0.1.0"
+
+
+def __getattr__(name):
+    """``noiselab.stats`` without importing it first: submodules load on first
+    use (PEP 562), as scipy's do, so ``import noiselab`` stays cheap."""
+    if name in _SUBMODULES:
+        return importlib.import_module(f".{name}", __name__)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(set(globals()) | set(_SUBMODULES))

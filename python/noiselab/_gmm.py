@@ -7,6 +7,8 @@ import numpy as np
 from ._lib import Error, c_double_p, check, fn, mirror
 from ._lib import integer as _int, real as _real
 
+__all__ = ["GaussianMixture"]
+
 
 @mirror("nl_gmm_options")
 class _Options(ctypes.Structure):

@@ -18,6 +18,9 @@ import subprocess
 
 import numpy as np
 
+__all__ = ["NoiselabError", "Error", "lib", "path", "check", "fn",
+           "mirror", "integer", "real", "c_double_p"]
+
 NL_OK, NL_EINVAL, NL_EIO, NL_EFORMAT, NL_ENOMEM, NL_ENUM = range(6)
 
 

@@ -21,6 +21,8 @@ import numpy as np
 from ._lib import Error, check, fn, mirror
 from ._lib import integer as _int
 
+__all__ = ["analyse", "synthesize", "morph", "read_image", "write_image", "Params"]
+
 _MAXB = 16
 _HMAX = 33
 _CALIBRATE = 4   # NL_BYEXAMPLE_CALIBRATE
@@ -96,6 +98,16 @@ def _from_numpy(name, a):
     a = np.asarray(a)
     if a.dtype.kind not in "biuf":
         raise TypeError(f"{name}: expected a real array, got dtype {a.dtype}")
+    if a.dtype in (np.uint8, np.uint16):
+        # An image file of 8 or 16 bits is read as level / (2^bits - 1), in
+        # [0, 1] (nl_image_read through OpenImageIO, as skimage's img_as_float
+        # scales): the same pixels as an array give the same parameters. The
+        # reader multiplies by the float 1/max, so this does too, bit for bit.
+        a = a.astype(np.float32) * np.float32(1.0 / np.iinfo(a.dtype).max)
+    elif a.dtype.kind in "iu":
+        raise TypeError(f"{name}: integer dtype {a.dtype} has no agreed grey scale: pass "
+                        f"floats (an image file reads as [0, 1]) or uint8 / uint16 levels, "
+                        f"scaled by 1/255 and 1/65535")
     if a.ndim == 2:
         a = a[:, :, None]
     if a.ndim != 3 or not 1 <= a.shape[2] <= 4 or a.shape[0] < 1 or a.shape[1] < 1:
@@ -125,7 +137,9 @@ def read_image(path):
 
 def write_image(image, path, bits=16):
     """Writes an (h, w[, channels]) array as the library writes images (atomic;
-    format from the extension; bits 8/16 for PNG, 16/32 for EXR).
+    format from the extension; bits 8/16 for PNG, 16/32 for EXR). Values
+    as ``analyse`` takes them: floats in [0, 1] map to the file's range,
+    uint8 and uint16 levels are scaled by 1/255 and 1/65535 first.
 
     Example
     -------
@@ -203,6 +217,10 @@ def analyse(image, *, rgb=False, histogram=True, paper_histogram=False, calibrat
     ----------
     image : array_like (h, w) or (h, w, channels), or a file name
         grey, grey+alpha, RGB or RGBA (alpha dropped), at least 16 x 16.
+        Floats are taken as they are; uint8 and uint16 are levels, scaled
+        to [0, 1] by 1/255 and 1/65535 as an image file of that depth reads
+        (and as skimage's img_as_float does); other integer dtypes raise
+        TypeError.
     rgb : bool             plain RGB channels instead of the PCA decorrelation
     histogram : bool       histogram matching (sec. 5.2)
     paper_histogram : bool the paper's 10 quantiles instead of 33 Gaussian ones

@@ -20,6 +20,8 @@ import numpy as np
 from ._lib import Error, c_double_p, check, fn, mirror
 from . import noise as _noise
 
+__all__ = ["optimise", "evaluate", "value_grid", "ChengResult"]
+
 _MAXO = 8
 
 
@@ -195,7 +197,7 @@ def optimise(pattern, seed=1, grid=64, **options):
     """
     c = _config(options)
     # the experiments' --seed range (nl_harness): -1 would wrap to 2^64 - 1
-    seed = _noise._int("seed", seed, 0, _noise._SEED_MAX)
+    seed = _noise.integer("seed", seed, 0, _noise._SEED_MAX)
     p = _pattern(pattern, grid)
     g, ev, err = _G2(), _Eval(), Error()
     try:

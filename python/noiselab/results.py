@@ -19,6 +19,8 @@ import numpy as np
 
 from ._lib import Error, check, fn, mirror
 
+__all__ = ["load", "read_table", "report", "Results"]
+
 
 @mirror("nl_table")
 class _Table(ctypes.Structure):

@@ -164,3 +164,27 @@ def test_tool_refuses_the_same(tmp_path, params, opt, value, words):
            ["synthesize", tmp_path / "p.params", "--size", 16, "-o", tmp_path / "x.png"])
     r = subprocess.run([EXAMPLE, *map(str, cmd), opt, value], capture_output=True, text=True)
     assert r.returncode != 0 and words in r.stderr and r.stderr.count("\n") == 1, r.stderr
+
+
+@pytest.mark.parametrize("dtype,bits", [(np.uint8, 8), (np.uint16, 16)])
+def test_integer_levels_are_scaled_as_the_file_reads(tmp_path, dtype, bits):
+    """uint8 and uint16 arrays are levels: the parameters are those of the
+    same pixels read from a PNG of that depth (level / (2^bits - 1)), not of
+    values 0..255 taken as they are."""
+    top = np.iinfo(dtype).max
+    levels = np.clip(np.round(exemplar(3) * top), 0, top).astype(dtype)
+    path = tmp_path / "e.png"
+    nb.write_image(levels, path, bits)
+    scaled = levels.astype(np.float32) * np.float32(1.0 / top)
+    assert np.array_equal(nb.read_image(path), scaled)
+    got, ref = nb.analyse(levels), nb.analyse(path)
+    assert np.array_equal(got.weights, ref.weights) and np.array_equal(got.mean, ref.mean)
+    assert np.array_equal(got.weights, nb.analyse(scaled).weights)
+    assert not np.allclose(got.mean, nb.analyse(levels.astype(float)).mean)
+
+
+@pytest.mark.parametrize("dtype", [np.int64, np.int8, np.uint32])
+def test_other_integer_images_are_refused(dtype):
+    with pytest.raises(TypeError) as e:
+        nb.analyse(np.zeros((32, 32), dtype))
+    assert str(e.value).startswith(f"image: integer dtype {np.dtype(dtype)} has no agreed")

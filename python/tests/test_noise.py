@@ -31,6 +31,8 @@ CASES = [
     ("fbm", ["--octaves", "3", "--lacunarity", "1.9", "--basis", "wavelet", "--tile", "32"],
      dict(octaves=3, lacunarity=1.9, basis="wavelet", tile=32)),
     ("gctbf", ["--terms", "F2 - F1", "--seed", "5"], dict(terms="F2 - F1", seed=5)),
+    # lambda 4 has a tie p(3) = p(4), where closest-last takes the larger count
+    ("gctbf", ["--count", "closest-last", "--seed", "3"], dict(count="closest-last", seed=3)),
     ("wavelet", ["--tile", "16", "--extent", "40", "--seed", "4"],
      dict(tile=16, extent=40.0, seed=4)),
     ("marble", ["--octaves", "4", "--amplitude", "0.8", "--stripes", "2"],
@@ -393,3 +395,133 @@ def test_render_refuses_the_same(tmp_path, noise, name, value, words):
 def test_points_bound_and_cellular_refuse_them_too(call):
     with pytest.raises(ValueError):
         call()
+
+
+ALIAS_CASES = [
+    ("improved", {}), ("noise2", {}), ("gctbf", dict(terms="F2 - F1")), ("wavelet", dict(tile=16)),
+    *[(s, dict(basis=b, octaves=4)) for s in ("fractal", "turbulence", "fbm")
+      for b in ("improved", "table", "gctbf", "wavelet")],
+]
+
+
+@pytest.mark.parametrize("noise,kw", ALIAS_CASES)
+@pytest.mark.parametrize("alias", ["x", "y", "z"])
+def test_out_aliasing_a_coordinate_is_the_plain_call(noise, kw, alias):
+    """out= that is x, y or z itself (or a view of it) gives the plain call's
+    bits, as numpy's ufuncs buffer such overlaps: the sums accumulate octave
+    by octave into out and would otherwise read back what they wrote."""
+    rng = np.random.default_rng(48)
+    planar = noise == "noise2" or kw.get("basis") == "table"
+    if planar and alias == "z":
+        pytest.skip("2D noise: no z")
+    x, y, z = rng.uniform(-10, 10, (3, 2000))
+    args = [x, y] if planar else [x, y, z]
+    plain = nn.points(*[a.copy() for a in args], noise=noise, **kw)
+    given = dict(x=x, y=y, z=z)[alias]
+    got = nn.points(*args, noise=noise, out=given, **kw)
+    assert got is given
+    assert np.array_equal(got, plain), np.max(np.abs(got - plain))
+    # a broadcast coordinate that out overlaps through a view of its buffer
+    buf = rng.uniform(-10, 10, 2000)
+    plain = nn.points(buf.copy(), *[a.copy() for a in args[1:]], noise=noise, **kw)
+    got = nn.points(buf[:, None][:, 0], *args[1:], noise=noise, out=buf, **kw)
+    assert np.array_equal(got, plain)
+
+
+def test_out_aliasing_keeps_the_points_before_a_refusal():
+    x = np.linspace(-3, 3, 1000)
+    x[700] = np.nan
+    plain = np.full(1000, 7.0)
+    with pytest.raises(ValueError, match="x: coordinate 700"):
+        nn.points(x.copy(), 0.5, 0.5, "fbm", out=plain)
+    with pytest.raises(ValueError, match="x: coordinate 700"):
+        nn.points(x, 0.5, 0.5, "fbm", out=x)
+    assert np.array_equal(x[:700], plain[:700])
+
+
+@pytest.mark.parametrize("name,good,bad", [
+    ("seed", 1, 1.0), ("seed", 2, np.float64(2.0)), ("octaves", 4, 4.0), ("table_size", 64, 64.0),
+    ("points", 20, 20.0), ("tile", 16, 16.0), ("seed", 1, True), ("octaves", 1, True),
+])
+@pytest.mark.parametrize("order", ["bad first", "good first"])
+def test_what_is_accepted_does_not_depend_on_earlier_calls(name, good, bad, order):
+    """A value is accepted or refused for what it is: the built-noise cache
+    keys equal-comparing 1 and 1.0 (or True) apart, so a call with seed=1
+    never lets seed=1.0 through later."""
+    noise = {"table_size": "noise2", "points": "gctbf", "tile": "wavelet"}.get(name, "fbm")
+    x = np.linspace(0, 1, 4)
+    calls = [False, True] if order == "bad first" else [True, False]
+    for ok in calls:
+        if ok:
+            nn.points(x, x, None if noise == "noise2" else 0.5, noise, **{name: good})
+        else:
+            with pytest.raises(TypeError, match=f"^{name}: expected an integer"):
+                nn.points(x, x, None if noise == "noise2" else 0.5, noise, **{name: bad})
+
+
+@pytest.mark.parametrize("z", ["fbm", "0.5", b"1", object(), ["a"]])
+def test_a_string_for_z_names_z(z):
+    with pytest.raises(TypeError) as e:
+        nn.points(np.zeros(3), np.zeros(3), z)
+    assert str(e.value).startswith("z: coordinates must be real numbers or arrays of them, got "
+                                   f"{type(z).__name__}"), str(e.value)
+
+
+@pytest.mark.parametrize("value", [-1, 2**32])
+@pytest.mark.parametrize("call", ["grid", "points", "cheng"])
+def test_seed_is_refused_in_render_words(tmp_path, value, call):
+    r = subprocess.run([RENDER, "improved", "--seed", str(value), "--size", "4", "-o",
+                        str(tmp_path / "x.tsv")], capture_output=True, text=True)
+    assert r.returncode == 2 and r.stderr.startswith("noiselab render: --seed: "), r.stderr
+    want = r.stderr[len("noiselab render: --"):].strip()
+    import noiselab.cheng as nc
+    with pytest.raises(ValueError) as e:
+        if call == "grid":
+            nn.grid("improved", 4, seed=value)
+        elif call == "points":
+            nn.points(0.5, 0.5, seed=value)
+        else:
+            nc.optimise(np.zeros((16, 16)), seed=value)
+    assert str(e.value) == want
+
+
+@pytest.mark.parametrize("noise,name", [
+    ("fbm", "gain"), ("fbm", "lacunarity"), ("gctbf", "lambda_"), ("marble", "amplitude"),
+    ("marble", "stripes"), ("improved", "extent"), ("improved", "x0"), ("improved", "y0"),
+    ("improved", "z")])
+@pytest.mark.parametrize("value", [float("nan"), float("inf"), -float("inf")])
+def test_a_non_finite_option_is_refused_in_render_words(tmp_path, noise, name, value):
+    """render refuses a non-finite number as a word ('nan'); Python names the
+    parameter and the value in the same sentence (the library's check)."""
+    opt = "--" + name.rstrip("_").replace("_", "-")
+    r = subprocess.run([RENDER, noise, opt, str(value), "--size", "4", "-o",
+                        str(tmp_path / "x.tsv")], capture_output=True, text=True)
+    assert r.returncode == 2
+    assert r.stderr == f"noiselab render: {opt}: '{value}' is not a finite number\n", r.stderr
+    with pytest.raises(ValueError) as e:
+        nn.grid(noise, 4, **{name: value})
+    assert str(e.value) == f"{name}: {value} is not a finite number"
+
+
+@pytest.mark.parametrize("name,value", [("terms", 5), ("count", 1), ("noise", ["fbm"]),
+                                        ("basis", None)])
+@pytest.mark.parametrize("wrap", [lambda v: v, lambda v: np.array(v)[()] if np.ndim(v) == 0
+                                  and v is not None else v])
+def test_a_name_that_is_no_str_is_a_type_error(name, value, wrap):
+    """Plain Python values and numpy scalars take different ways to the
+    cache (_make) and are refused alike."""
+    kw = {"noise": "gctbf", name: wrap(value)}
+    with pytest.raises(TypeError, match=f"^{name}: expected a str"):
+        nn.points(np.zeros(2), 0.5, 0.5, **kw)
+
+
+def test_count_is_refused_in_render_words(tmp_path):
+    r = subprocess.run([RENDER, "gctbf", "--count", "last", "--size", "4", "-o",
+                        str(tmp_path / "x.tsv")], capture_output=True, text=True)
+    assert r.returncode == 2
+    with pytest.raises(ValueError) as e:
+        nn.grid("gctbf", 4, count="last")
+    assert r.stderr == f"noiselab render: --{e.value}\n"
+    # the three rules give three rasters: closest-last is no alias
+    g = [nn.grid("gctbf", 32, count=c, seed=3) for c in ("inverse", "closest", "closest-last")]
+    assert not np.array_equal(g[1], g[2]) and not np.array_equal(g[0], g[2])

@@ -5,6 +5,7 @@
 committed values; linkage heights 1e-12 relative with the same merges;
 GMM log-likelihood, AIC, BIC 1e-8 relative, same iteration count."""
 import os
+import zlib
 
 import numpy as np
 import pytest
@@ -138,8 +139,9 @@ def test_gmm_kmeans_init_finds_clusters():
     (lambda: ns.kstest(np.array(["a"]), "norm"), TypeError, "rvs: expected real"),
     (lambda: ns.kstest([0.1], lambda x: 2.0), ValueError, ""),
     (lambda: ns.kstest([0.1], lambda x: 1 / 0), ZeroDivisionError, "division"),
-    (lambda: ns.chisquare([1, 2, 3], [1, 2]), ValueError, "f_exp: 2 expected"),
-    (lambda: ns.linkage(np.zeros(5), "ward"), ValueError, "2-D"),
+    (lambda: ns.chisquare([1, 2, 3], [1, 2]), ValueError, "f_exp: shape (2,) does not broadcast"),
+    (lambda: ns.linkage(np.zeros(5), "ward"), ValueError, "5 is no such number"),
+    (lambda: ns.linkage(np.zeros((2, 2, 2)), "ward"), ValueError, "got shape (2, 2, 2)"),
     (lambda: ns.linkage(np.zeros((5, 2)), "medoid"), ValueError, "medoid"),
     (lambda: ns.GaussianMixture(2, covariance_type="tied"), ValueError, "tied"),
     (lambda: ns.GaussianMixture(2).score(np.zeros((3, 2))), ValueError, "not fitted"),
@@ -180,3 +182,219 @@ def test_gmm_refuses_what_stat_gmm_refuses(kw, exc, words):
     with pytest.raises(exc) as e:
         ns.GaussianMixture(**kw).fit(X)
     assert str(e.value).startswith(words), str(e.value)
+
+
+# ---- scipy's habits: unpacking, alternative= and method=, a vectorised CDF,
+# chisquare per axis, linkage on condensed distances and metric=.
+
+def test_results_unpack_as_scipy_does():
+    x = np.random.default_rng(5).normal(0, 1, 200)
+    for r, s in ((ns.kstest(x, "norm"), st.kstest(x, "norm")),
+                 (ns.ks_2samp(x[:120], x[120:]), st.ks_2samp(x[:120], x[120:])),
+                 (ns.chisquare([16, 18, 16, 14, 12, 12]), st.chisquare([16, 18, 16, 14, 12, 12]))):
+        stat, p = r
+        assert (stat, p) == (r.statistic, r.pvalue) == (r[0], r[1]) and len(r) == 2
+        assert tuple(r) == (r.statistic, r.pvalue)
+        assert rel(stat, s[0], 1e-12) and rel(p, s[1], 1e-10)
+    v, p = ns.kuiper(x, "norm")
+    assert v == ns.kuiper(x, "norm").d_plus + ns.kuiper(x, "norm").d_minus
+
+
+# Tolerances: D, D+, D- bit for bit or 1e-15 absolute; the exact laws' p
+# 1e-10 relative (the C tests' bound); the asymptotic laws 1e-12 relative.
+KS_TOL = {"auto": 1e-10, "exact": 1e-10, "asymp": 1e-12, "approx": 1e-10}
+
+
+@pytest.mark.parametrize("alternative", ["two-sided", "less", "greater"])
+@pytest.mark.parametrize("method", ["auto", "exact", "asymp", "approx"])
+def test_kstest_alternative_and_method_are_scipy(alternative, method):
+    """Many random samples (sizes 1..3000, shifted and scaled away from the
+    null so that small p-values are in), by name and by callable."""
+    rng = np.random.default_rng(zlib.crc32(f"{alternative} {method}".encode()))
+    for trial in range(40):
+        n = int(rng.choice([1, 2, 5, 17, 100, 640, 3000]))
+        x = rng.normal(rng.uniform(-0.3, 0.3), rng.uniform(0.8, 1.25), n)
+        b = st.kstest(x, "norm", alternative=alternative, method=method)
+        for cdf in ("norm", st.norm.cdf):
+            a = ns.kstest(x, cdf, alternative=alternative, method=method)
+            assert abs(a.statistic - b.statistic) <= 1e-15, (n, a, b)
+            tol = KS_TOL[method] if alternative == "two-sided" else 1e-10   # exact Smirnov
+            assert rel(a.pvalue, b.pvalue, tol), (n, a.pvalue, b.pvalue, a.method)
+            assert a.statistic_sign == b.statistic_sign
+            D, p = a
+            assert (D, p) == (a.statistic, a.pvalue)
+
+
+@pytest.mark.parametrize("seed", range(3))
+@pytest.mark.parametrize("alternative", ["two-sided", "less", "greater"])
+@pytest.mark.parametrize("method", ["auto", "exact", "asymp"])
+def test_ks_2samp_alternative_and_method_are_scipy(alternative, method, seed):
+    rng = np.random.default_rng(zlib.crc32(f"{alternative} {method} 2".encode()) + seed)
+    sizes = [1, 3, 8, 20, 64, 100, 333, 1000]
+    for trial in range(30):
+        n1, n2 = (int(v) for v in rng.choice(sizes, 2))
+        x, y = rng.normal(0, 1, n1), rng.normal(rng.uniform(-0.5, 0.5), 1, n2)
+        if trial % 5 == 0:   # ties across the samples
+            x, y = np.round(x, 1), np.round(y, 1)
+        a = ns.ks_2samp(x, y, alternative=alternative, method=method)
+        b = st.ks_2samp(x, y, alternative=alternative, method=method)
+        assert abs(a.statistic - b.statistic) <= 1e-15, (n1, n2, a, b)
+        if n1 == n2 == 1 and method == "asymp" and alternative == "two-sided":
+            # scipy's effective size rounds 1/2 to 0 and kstwo.sf(d, 0) is
+            # NaN; the library takes n = 1, P(D_1 >= d)
+            assert np.isnan(b.pvalue) and 0 <= a.pvalue <= 1
+            continue
+        assert rel(a.pvalue, b.pvalue, 1e-10), (n1, n2, a.pvalue, b.pvalue, a.method)
+        assert a.statistic_sign == b.statistic_sign
+
+
+def test_ks_2samp_exact_beyond_auto_sizes_is_scipy():
+    """method='exact' past auto's 10000 (scipy tries the lattice count, and
+    where a count overflows warns and takes the asymptotic law of the
+    lattice value: both here)."""
+    import warnings
+    rng = np.random.default_rng(7)
+    x, y = rng.normal(0, 1, 10050), rng.normal(0.02, 1, 201)
+    for alt, law in (("two-sided", "exact"), ("greater", "asymp"), ("less", "asymp")):
+        with warnings.catch_warnings(record=True) as w:
+            warnings.simplefilter("always")
+            a = ns.ks_2samp(x, y, alternative=alt, method="exact")
+            b = st.ks_2samp(x, y, alternative=alt, method="exact")
+        assert a.method == law and ns.ks_2samp(x, y, alternative=alt).method == "asymp"
+        assert len(w) == (0 if law == "exact" else 2), [str(m.message) for m in w]
+        assert a.statistic == b.statistic and rel(a.pvalue, b.pvalue, 1e-12), (a, b)
+
+
+def test_callable_cdf_is_called_once_with_the_sorted_sample():
+    x = np.random.default_rng(3).normal(0, 1, 20000)
+    calls = []
+
+    def F(v, loc, scale):
+        calls.append(np.array(v, copy=True))
+        return st.norm.cdf(v, loc, scale)
+    for test in (ns.kstest, ns.kuiper):
+        calls.clear()
+        r = test(x, F, args=(0.0, 1.0))
+        assert len(calls) == 1 and np.array_equal(calls[0], np.sort(x))
+    assert abs(ns.kstest(x, F, args=(0.0, 1.0)).statistic - st.kstest(x, "norm").statistic) \
+        <= 1e-15
+    with pytest.raises(ValueError, match="must return an array of its shape"):
+        ns.kstest(x, lambda v: 0.5)
+
+
+def test_chisquare_per_axis_is_scipy():
+    rng = np.random.default_rng(11)
+    obs = rng.integers(5, 50, (6, 4, 3)).astype(float)
+    for axis in (0, 1, -1, None):
+        a, b = ns.chisquare(obs, axis=axis), st.chisquare(obs, axis=axis)
+        assert np.shape(a.statistic) == np.shape(b.statistic)
+        assert np.allclose(a.statistic, b.statistic, rtol=1e-12, atol=0)
+        assert np.allclose(a.pvalue, b.pvalue, rtol=1e-10, atol=0)
+    exp = rng.uniform(0.5, 1.5, obs.shape)
+    exp *= obs.sum(axis=0, keepdims=True) / exp.sum(axis=0, keepdims=True)
+    a, b = ns.chisquare(obs, exp), st.chisquare(obs, exp)
+    assert np.allclose(a.statistic, b.statistic, rtol=1e-12, atol=0)
+    assert np.allclose(a.pvalue, b.pvalue, rtol=1e-10, atol=0)
+    assert a.df.shape == (4, 3) and np.all(a.df == 5)
+    # a 1-D f_exp broadcasts against every column, as in scipy
+    col = np.full(6, obs[:, 0, 0].sum() / 6)
+    a, b = ns.chisquare(obs[:, :1, 0], col[:, None]), st.chisquare(obs[:, :1, 0], col[:, None])
+    assert np.allclose(a.statistic, b.statistic, rtol=1e-12, atol=0)
+
+
+def test_chisquare_refuses_mismatched_sums_as_scipy():
+    obs, exp = np.array([10.0, 20.0, 30.0]), np.array([10.0, 20.0, 30.0 + 3e-6])
+    with pytest.raises(ValueError) as e:
+        ns.chisquare(obs, exp)
+    with pytest.raises(ValueError, match="relative tolerance of 1e-08"):
+        st.chisquare(obs, exp)
+    msg = str(e.value)
+    assert msg.startswith("f_exp: for each axis slice, the sum of the observed frequencies "
+                          "must agree with the sum of the expected frequencies to a relative "
+                          "tolerance of 1e-08") and "\n" not in msg, msg
+    ok = np.array([10.0, 20.0, 30.0 + 5e-7])   # inside scipy's rtol: both accept
+    assert rel(ns.chisquare(obs, ok).statistic, st.chisquare(obs, ok).statistic, 1e-12)
+
+
+METHODS = ["single", "complete", "average", "weighted", "ward", "centroid", "median"]
+METRICS = ["euclidean", "sqeuclidean", "cityblock", "chebyshev", "cosine", "correlation",
+           "canberra", "braycurtis"]
+
+
+def same_linkage(a, b, atol=0.0):
+    """Same merges and sizes; heights 1e-12 relative (the C tests' bound),
+    or atol absolute."""
+    return (np.array_equal(a[:, [0, 1, 3]], b[:, [0, 1, 3]]) and
+            np.allclose(a[:, 2], b[:, 2], rtol=1e-12, atol=atol))
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_linkage_on_condensed_distances_is_scipy(method):
+    from scipy.spatial.distance import pdist
+    rng = np.random.default_rng(METHODS.index(method))
+    for n in (2, 3, 17, 150):
+        x = rng.normal(0, 1, (n, 3))
+        y = pdist(x)
+        assert same_linkage(ns.linkage(y, method), sch.linkage(y, method)), (n, method)
+        assert same_linkage(ns.linkage(y, method), ns.linkage(x, method))
+        # distances of no geometry (scipy reads them as given)
+        y2 = rng.uniform(0.1, 5.0, n * (n - 1) // 2)
+        assert same_linkage(ns.linkage(y2, method), sch.linkage(y2, method)), (n, method)
+
+
+@pytest.mark.parametrize("metric", METRICS)
+@pytest.mark.parametrize("method", ["single", "complete", "average", "weighted"])
+def test_linkage_metric_is_scipy(metric, method):
+    rng = np.random.default_rng(7 * METRICS.index(metric) + len(method))
+    x = rng.uniform(0.1, 2.0, (60, 4))
+    # cosine and correlation are 1 - u.v / (|u| |v|): near 0 their rounding
+    # is that of 1.0, 2^-52 absolute, which is 1.4e-12 of a height of 1.6e-4
+    # here (the library and pdist order the products differently)
+    atol = 2 * np.finfo(float).eps if metric in ("cosine", "correlation") else 0.0
+    assert same_linkage(ns.linkage(x, method, metric=metric),
+                        sch.linkage(x, method, metric=metric), atol), (method, metric)
+
+
+@pytest.mark.parametrize("call,words", [
+    (lambda: ns.linkage(np.ones(4), "single"), "y: a condensed distance matrix"),
+    (lambda: ns.linkage(np.array([1.0, -1.0, 2.0]), "single"), "distance 2 is -1"),
+    (lambda: ns.linkage(np.array([1.0, np.nan, 2.0]), "average"), "distance 2 is nan"),
+    (lambda: ns.linkage(np.ones((4, 2)), "ward", metric="cityblock"), "Euclidean"),
+    (lambda: ns.linkage(np.ones((4, 2)), "single", metric="hamming"), "hamming"),
+    (lambda: ns.kstest([0.1, 0.2], "norm", alternative="both"), "unknown alternative 'both'"),
+    (lambda: ns.kstest([0.1, 0.2], "norm", method="fast"), "method: 'fast' is not one of"),
+    (lambda: ns.ks_2samp([0.1, 0.2], [0.3], method="approx"), "method: 'approx'"),
+    (lambda: ns.chisquare(np.ones((3, 2)), axis=2), "axis: 2 is out of bounds"),
+])
+def test_new_arguments_refuse_in_one_line(call, words):
+    with pytest.raises(ValueError) as e:
+        call()
+    assert words in str(e.value) and "\n" not in str(e.value), str(e.value)
+
+
+def test_submodules_load_lazily_and_every_module_has_all():
+    import subprocess
+    import sys
+    code = ("import sys, noiselab; assert 'noiselab.stats' not in sys.modules; "
+            "r = noiselab.stats.ks_2samp([1.0, 2.0], [3.0]); "
+            "assert 'noiselab.stats' in sys.modules; print(sorted(dir(noiselab)))")
+    env = dict(os.environ, PYTHONPATH=os.path.join(ROOT, "python"))
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env,
+                       cwd="/")
+    assert r.returncode == 0, r.stderr
+    assert "'stats'" in r.stdout and "'noise'" in r.stdout
+    import importlib
+    import noiselab
+    with pytest.raises(AttributeError, match="no attribute 'nosuch'"):
+        noiselab.nosuch
+    pkg = os.path.join(ROOT, "python", "noiselab")
+    mods = sorted(f[:-3] for f in os.listdir(pkg) if f.endswith(".py"))
+    assert "noise" in mods and "_lib" in mods
+    for name in mods:
+        m = importlib.import_module(f"noiselab.{name}" if name != "__init__" else "noiselab")
+        assert isinstance(m.__all__, list), name
+        for a in m.__all__:
+            assert hasattr(m, a), (name, a)
+        public = [k for k, v in vars(m).items() if not k.startswith("_") and
+                  getattr(v, "__module__", None) == m.__name__ and callable(v)]
+        assert set(public) <= set(m.__all__), (name, set(public) - set(m.__all__))

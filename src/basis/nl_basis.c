@@ -43,6 +43,8 @@ nl_status nl_basis_options_check(const nl_basis_options *o, nl_error *err)
   if (o->table_size < 4 || o->table_size > NL_BASIS_MAX_TABLE)
     return nl_fail(err, NL_EINVAL, "--table-size: %ld is outside [4, %d]", o->table_size, NL_BASIS_MAX_TABLE);
   if (o->tile < 8 || o->tile > 256) return nl_fail(err, NL_EINVAL, "--tile: %ld is outside [8, 256]", o->tile);
+  if (!isfinite(o->lambda))   /* the parser's words, as the other options' */
+    return nl_fail(err, NL_EINVAL, "--lambda: %g is not a finite number", o->lambda);
   if (!(o->lambda > 0 && o->lambda <= 1000))
     return nl_fail(err, NL_EINVAL, "--lambda: %g must be in (0, 1000] (mean feature points per unit cube)",
                    o->lambda);

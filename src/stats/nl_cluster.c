@@ -863,6 +863,74 @@ nl_status nl_cluster_linkage_metric(const double *x, size_t n, size_t d,
   return NL_OK;
 }
 
+/* Single linkage on a condensed matrix: linkage_single's Prim loop, its
+ * distances read instead of computed, so ties resolve the same way. */
+static void linkage_single_condensed(const double *D, size_t n, double *Z)
+{
+  double *dmin = nl_xmalloc(n * sizeof(double));
+  unsigned char *merged = nl_xcalloc(n, 1);
+  for (size_t i = 0; i < n; i++) dmin[i] = INFINITY;
+  size_t cur = 0;
+  for (size_t k = 0; k + 1 < n; k++) {
+    merged[cur] = 1;
+    double best = INFINITY;
+    size_t y = cur;
+    for (size_t i = 0; i < n; i++) {
+      if (merged[i]) continue;
+      double dist = D[cidx(n, cur, i)];
+      if (dist < dmin[i]) dmin[i] = dist;
+      if (dmin[i] < best || y == cur) { best = dmin[i]; y = i; }
+    }
+    Z[4 * k] = (double)cur;
+    Z[4 * k + 1] = (double)y;
+    Z[4 * k + 2] = best;
+    cur = y;
+  }
+  free(dmin);
+  free(merged);
+}
+
+nl_status nl_cluster_linkage_condensed(const double *y, size_t n, nl_cluster_linkage_method method,
+                                       double *Z, nl_error *err)
+{
+  if (n < 2) return nl_fail(err, NL_EINVAL, "clustering needs at least 2 points, got %zu", n);
+  size_t m = n * (n - 1) / 2;
+  for (size_t k = 0; k < m; k++)
+    if (!(isfinite(y[k]) && y[k] >= 0))
+      return nl_fail(err, NL_EINVAL, "distance %zu is %g: distances must be finite and >= 0",
+                     k + 1, y[k]);
+  if (method == NL_LINKAGE_SINGLE) {
+    linkage_single_condensed(y, n, Z);
+    sort_and_label(Z, n);
+    return NL_OK;
+  }
+  char b1[32], b2[32];
+  double need = (double)m * sizeof(double);
+  if (!nl_mem_fits(need))
+    return nl_fail(err, NL_ENOMEM, "%zu rows need %s for the distance matrix; %s is available",
+                   n, nl_format_bytes(b1, need), nl_format_bytes(b2, nl_mem_available()));
+  double *D = condensed_alloc(m);
+  if (!D)
+    return nl_fail(err, NL_ENOMEM, "%zu rows need %s for the distance matrix; allocating it failed",
+                   n, nl_format_bytes(b1, need));
+  memcpy(D, y, m * sizeof(double));
+  if (method == NL_LINKAGE_CENTROID || method == NL_LINKAGE_MEDIAN) {
+    linkage_generic(D, n, method, Z);
+    free(D);
+    return NL_OK;
+  }
+  /* the column lists in condensed_metric's order: rows increasing per column */
+  col_top *cm = nl_xmalloc(n * sizeof *cm);
+  for (size_t j = 0; j < n; j++) { cm[j].cnt = 0; cm[j].full = 1; }
+  for (size_t i = 0; i + 1 < n; i++)
+    for (size_t j = i + 1; j < n; j++) col_offer(&cm[j], D[cidx(n, i, j)], i);
+  linkage_nn_chain(D, n, method, cm, Z);
+  free(D);
+  free(cm);
+  sort_and_label(Z, n);
+  return NL_OK;
+}
+
 /* ---- flat clusters ------------------------------------------------------------- */
 
 static nl_status check_Z(const double *Z, size_t n, nl_error *err)

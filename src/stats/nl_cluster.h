@@ -123,6 +123,14 @@ nl_status nl_cluster_linkage_metric(const double *x, size_t n, size_t d,
                                     nl_cluster_linkage_method method, nl_cluster_metric metric,
                                     double *Z, nl_error *err);
 
+/* scipy.cluster.hierarchy.linkage(y, method) on a condensed distance matrix
+ * y (scipy.spatial.distance.pdist's layout: the n(n-1)/2 entries i < j row
+ * by row), taken as given: every method, ward, centroid and median reading
+ * the distances as Euclidean ones, as scipy does. NL_EINVAL, the first
+ * named, for a distance that is negative or not finite. */
+nl_status nl_cluster_linkage_condensed(const double *y, size_t n, nl_cluster_linkage_method method,
+                                       double *Z, nl_error *err);
+
 /* labels: n ints, 1-based. *nclusters (may be NULL) receives k. */
 nl_status nl_cluster_fcluster_distance(const double *Z, size_t n, double t, int *labels,
                                        size_t *nclusters, nl_error *err);

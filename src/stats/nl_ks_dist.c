@@ -378,24 +378,35 @@ static double ks2_outer_prob_inside(long m, long n, long g, long h)
 
 static long gcd_long(long a, long b) { while (b) { long t = a % b; a = b; b = t; } return a; }
 
+/* The exact two-sided law on the lattice h / lcm(n1, n2): 0 where a count
+ * overflows or the result is not a probability (scipy then falls back). */
+static int ks2_exact_two_sided(size_t n1, size_t n2, double d, double *p)
+{
+  long g = gcd_long((long)n1, (long)n2), lcm = (long)n1 / g * (long)n2;
+  long h = (long)nearbyint(d * (double)lcm);
+  *p = h <= 0 ? 1.0
+     : n1 == n2 ? ks2_prob_outside_square((long)n1, h)
+     : ks2_outer_prob_inside((long)n1, (long)n2, g, h);
+  return isfinite(*p) && *p >= 0.0 && *p <= 1.0;
+}
+
+/* Smirnov's limit through the one-sample law at n1 n2 / (n1 + n2),
+ * rounded half to even like numpy. */
+static double ks2_asymp_two_sided(size_t n1, size_t n2, double d)
+{
+  double a = (double)n1, b = (double)n2, en = nearbyint(a * b / (a + b));
+  return nl_stats_ks_sf(en < 1.0 ? 1 : (size_t)en, d, NULL);
+}
+
 double nl_stats_ks2_sf(size_t n1, size_t n2, double d, nl_stats_ks_method *method)
 {
-  if (n1 <= 10000 && n2 <= 10000) {
-    long g = gcd_long((long)n1, (long)n2), lcm = (long)n1 / g * (long)n2;
-    long h = (long)nearbyint(d * (double)lcm);
-    double p = h <= 0 ? 1.0
-             : n1 == n2 ? ks2_prob_outside_square((long)n1, h)
-             : ks2_outer_prob_inside((long)n1, (long)n2, g, h);
-    if (isfinite(p) && p >= 0.0 && p <= 1.0) {
-      if (method) *method = NL_KS_TWO_SAMPLE_EXACT;
-      return p;
-    }
+  double p;
+  if (n1 <= 10000 && n2 <= 10000 && ks2_exact_two_sided(n1, n2, d, &p)) {
+    if (method) *method = NL_KS_TWO_SAMPLE_EXACT;
+    return p;
   }
-  /* Smirnov's limit through the one-sample law at n1 n2 / (n1 + n2),
-   * rounded half to even like numpy. */
-  double a = (double)n1, b = (double)n2, en = nearbyint(a * b / (a + b));
   if (method) *method = NL_KS_TWO_SAMPLE_ASYMP;
-  return nl_stats_ks_sf(en < 1.0 ? 1 : (size_t)en, d, NULL);
+  return ks2_asymp_two_sided(n1, n2, d);
 }
 
 /* scipy.special.binom for integer n >= k >= 0: the product for small k (with
@@ -448,29 +459,62 @@ static double ks2_count_paths_outside(long m, long n, long g, long h)
   return paths;
 }
 
-double nl_stats_ks2_sf_one_sided(size_t n1, size_t n2, double d, nl_stats_ks_method *method)
+static int ks2_exact_one_sided(size_t n1, size_t n2, double d, double *p)
 {
-  if (n1 <= 10000 && n2 <= 10000) {
-    long g = gcd_long((long)n1, (long)n2), lcm = (long)n1 / g * (long)n2;
-    long h = (long)nearbyint(d * (double)lcm);
-    double p;
-    if (h <= 0) p = 1.0;
-    else if (n1 == n2) {   /* C(2n, n - h) / C(2n, n) as a product */
-      p = 1.0;
-      for (long j = 0; j < h; j++) p *= ((double)n1 - (double)j) / ((double)n1 + (double)j + 1.0);
-    } else {
-      double paths = ks2_count_paths_outside((long)n1, (long)n2, g, h);
-      double all = binom_scipy((double)(n1 + n2), (double)n1);
-      p = isfinite(all) && isfinite(paths) && paths <= all ? paths / all : NAN;
-    }
-    if (isfinite(p) && p >= 0.0 && p <= 1.0) {
-      if (method) *method = NL_KS_TWO_SAMPLE_EXACT;
-      return p;
-    }
+  long g = gcd_long((long)n1, (long)n2), lcm = (long)n1 / g * (long)n2;
+  long h = (long)nearbyint(d * (double)lcm);
+  if (h <= 0) *p = 1.0;
+  else if (n1 == n2) {   /* C(2n, n - h) / C(2n, n) as a product */
+    *p = 1.0;
+    for (long j = 0; j < h; j++) *p *= ((double)n1 - (double)j) / ((double)n1 + (double)j + 1.0);
+  } else {
+    double paths = ks2_count_paths_outside((long)n1, (long)n2, g, h);
+    double all = binom_scipy((double)(n1 + n2), (double)n1);
+    *p = isfinite(all) && isfinite(paths) && paths <= all ? paths / all : NAN;
   }
-  /* Hodges' (1958) corrected limit, scipy's asymptotic one-sided p. */
+  return isfinite(*p) && *p >= 0.0 && *p <= 1.0;
+}
+
+/* Hodges' (1958) corrected limit, scipy's asymptotic one-sided p. */
+static double ks2_asymp_one_sided(size_t n1, size_t n2, double d)
+{
   double m = (double)(n1 > n2 ? n1 : n2), n = (double)(n1 > n2 ? n2 : n1), en = m * n / (m + n);
   double z = sqrt(en) * d;
-  if (method) *method = NL_KS_TWO_SAMPLE_ASYMP;
   return clip01(exp(-2 * z * z - 2 * z * (m + 2 * n) / sqrt(m * n * (m + n)) / 3.0));
+}
+
+double nl_stats_ks2_sf_one_sided(size_t n1, size_t n2, double d, nl_stats_ks_method *method)
+{
+  double p;
+  if (n1 <= 10000 && n2 <= 10000 && ks2_exact_one_sided(n1, n2, d, &p)) {
+    if (method) *method = NL_KS_TWO_SAMPLE_EXACT;
+    return p;
+  }
+  if (method) *method = NL_KS_TWO_SAMPLE_ASYMP;
+  return ks2_asymp_one_sided(n1, n2, d);
+}
+
+double nl_stats_ks2_sf_method(size_t n1, size_t n2, double d, int one_sided,
+                              nl_stats_ks_method want, nl_stats_ks_method *method)
+{
+  if (want != NL_KS_TWO_SAMPLE_EXACT && want != NL_KS_TWO_SAMPLE_ASYMP)
+    return one_sided ? nl_stats_ks2_sf_one_sided(n1, n2, d, method)
+                     : nl_stats_ks2_sf(n1, n2, d, method);
+  double p;
+  /* scipy's bound for trying: lcm(n1, n2) below 2^31 - 1 */
+  long g = gcd_long((long)n1, (long)n2);
+  int fits = (double)((long)n1 / g) < 2147483647.0 / (double)((long)n2 / g);
+  if (want == NL_KS_TWO_SAMPLE_EXACT && fits) {
+    /* scipy puts d on the lattice before trying, and keeps it there when
+     * it falls back, so the asymptotic p below is of the lattice value */
+    double lcm = (double)((long)n1 / g * (long)n2);
+    d = nearbyint(d * lcm) / lcm;
+  }
+  if (want == NL_KS_TWO_SAMPLE_EXACT && fits
+      && (one_sided ? ks2_exact_one_sided(n1, n2, d, &p) : ks2_exact_two_sided(n1, n2, d, &p))) {
+    if (method) *method = NL_KS_TWO_SAMPLE_EXACT;
+    return p;
+  }
+  if (method) *method = NL_KS_TWO_SAMPLE_ASYMP;
+  return one_sided ? ks2_asymp_one_sided(n1, n2, d) : ks2_asymp_two_sided(n1, n2, d);
 }

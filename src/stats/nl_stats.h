@@ -183,6 +183,16 @@ double nl_stats_ks2_sf(size_t n1, size_t n2, double d, nl_stats_ks_method *metho
  * scipy.stats.ks_2samp(alternative='greater', method='auto'). */
 double nl_stats_ks2_sf_one_sided(size_t n1, size_t n2, double d, nl_stats_ks_method *method);
 
+/* scipy.stats.ks_2samp's method=: want NL_KS_TWO_SAMPLE_EXACT is the exact law
+ * at any sizes whose lcm is below 2^31 - 1 (slow for large ones, as scipy's),
+ * NL_KS_TWO_SAMPLE_ASYMP the asymptotic law of nl_stats_ks2_sf (two-sided) or
+ * nl_stats_ks2_sf_one_sided (one_sided != 0), any other value 'auto' (those
+ * two functions). *method (may be NULL) says which ran: ASYMP after an
+ * exact try that overflowed, where scipy warns and falls back too (then,
+ * as in scipy, the asymptotic law is of d put on the lattice h / lcm). */
+double nl_stats_ks2_sf_method(size_t n1, size_t n2, double d, int one_sided,
+                              nl_stats_ks_method want, nl_stats_ks_method *method);
+
 /* scipy.stats.kstest's alternatives, F_n the sample's ECDF and F the null's
  * CDF (two samples: F_1 and F_2): "greater" tests F_n > F somewhere with
  * D+ = max(F_n - F) (max(F_1 - F_2)), "less" F_n < F with D- = max(F - F_n)

@@ -357,4 +357,33 @@ NL_TEST(metrics_refuse_where_scipy_does)
   NL_CHECK(Z[0] == 1 && Z[1] == 2 && Z[2] == 3.0 / 7.0 && Z[4] == 0 && Z[5] == 3 && Z[6] == 1.0);
 }
 
+/* The condensed entry point on pdist's matrix of the points gives the points'
+ * linkage bit for bit (the same distances, the same algorithms and ties). */
+NL_TEST(condensed_distances_give_the_points_linkage)
+{
+  size_t n, d;
+  double *x = vec_matrix("hclust_X.tsv", &n, &d);
+  double *y = nl_xmalloc(n * (n - 1) / 2 * sizeof(double));
+  double *Z = nl_xmalloc((n - 1) * 4 * sizeof(double)), *Zc = nl_xmalloc((n - 1) * 4 * sizeof(double));
+  for (size_t i = 0, k = 0; i < n; i++)
+    for (size_t j = i + 1; j < n; j++) y[k++] = nl_cluster_euclidean(x + i * d, x + j * d, d);
+  for (int m = 0; m <= NL_LINKAGE_MEDIAN; m++) {
+    NL_CHECK(nl_cluster_linkage(x, n, d, (nl_cluster_linkage_method)m, Z, NULL) == NL_OK);
+    NL_CHECK(nl_cluster_linkage_condensed(y, n, (nl_cluster_linkage_method)m, Zc, NULL) == NL_OK);
+    size_t bad = 0;
+    for (size_t i = 0; i < (n - 1) * 4; i++) bad += Z[i] != Zc[i];
+    if (bad) fprintf(stderr, "  %s: %zu entries differ\n", nl_cluster_linkage_method_name((nl_cluster_linkage_method)m), bad);
+    NL_CHECK(bad == 0);
+  }
+  nl_error err = {{0}};
+  double neg[] = {1.0, -0.5, 2.0};
+  NL_CHECK(nl_cluster_linkage_condensed(neg, 3, NL_LINKAGE_SINGLE, Zc, &err) == NL_EINVAL);
+  NL_CHECK(strstr(err.msg, "distance 2 is -0.5") != NULL);
+  NL_CHECK(nl_cluster_linkage_condensed(neg, 1, NL_LINKAGE_SINGLE, Zc, NULL) == NL_EINVAL);
+  free(x);
+  free(y);
+  free(Z);
+  free(Zc);
+}
+
 int main(void) { return nl_test_run(); }

@@ -120,6 +120,31 @@ NL_TEST(ks2_matches_scipy_ks_2samp)
   nl_table_free(t);
 }
 
+/* method= 'auto' is nl_stats_ks2_sf / _one_sided; 'asymp' the laws those
+ * fall back to past 10000; 'exact' the lattice law past 10000 too. */
+NL_TEST(ks2_methods_are_the_auto_laws)
+{
+  size_t sizes[][2] = {{1, 1}, {3, 7}, {20, 20}, {64, 100}, {333, 1000}, {10050, 201}};
+  for (size_t c = 0; c < sizeof sizes / sizeof sizes[0]; c++)
+    for (int one = 0; one <= 1; one++)
+      for (double d = 0.01; d < 1.0; d += 0.07) {
+        size_t n1 = sizes[c][0], n2 = sizes[c][1];
+        nl_stats_ks_method ma, mm;
+        double auto_p = one ? nl_stats_ks2_sf_one_sided(n1, n2, d, &ma) : nl_stats_ks2_sf(n1, n2, d, &ma);
+        NL_CHECK(nl_stats_ks2_sf_method(n1, n2, d, one, NL_KS_RUBEN_GAMBINO, &mm) == auto_p && mm == ma);
+        double a = nl_stats_ks2_sf_method(n1, n2, d, one, NL_KS_TWO_SAMPLE_ASYMP, &mm);
+        NL_CHECK(mm == NL_KS_TWO_SAMPLE_ASYMP && a >= 0 && a <= 1);
+        if (ma == NL_KS_TWO_SAMPLE_ASYMP) NL_CHECK(a == auto_p);
+        double e = nl_stats_ks2_sf_method(n1, n2, d, one, NL_KS_TWO_SAMPLE_EXACT, &mm);
+        if (ma == NL_KS_TWO_SAMPLE_EXACT) NL_CHECK(e == auto_p && mm == NL_KS_TWO_SAMPLE_EXACT);
+        NL_CHECK(e >= 0 && e <= 1);
+      }
+  /* past auto's bound the exact two-sided law still runs */
+  nl_stats_ks_method m;
+  double p = nl_stats_ks2_sf_method(10050, 201, 0.036019900497512435, 0, NL_KS_TWO_SAMPLE_EXACT, &m);
+  NL_CHECK(m == NL_KS_TWO_SAMPLE_EXACT && p > 0.9 && p < 1);
+}
+
 static void kuiper_case(const nl_table *t, size_t r, const double *x, size_t n)
 {
   nl_stats_kuiper_result res;
