@@ -70,7 +70,8 @@ while IFS= read -r e; do
   [ -n "$e" ] || continue
   q="$root/results/quick/$e"
   for t in "$q"/*.tsv; do
-    case "$(basename "$t")" in manifest.tsv|checks.tsv|verdicts.tsv) continue ;; esac
+    # run.tsv and times.tsv: the run's timings, untracked (docs/experiments.md)
+    case "$(basename "$t")" in manifest.tsv|checks.tsv|verdicts.tsv|run.tsv|times.tsv) continue ;; esac
     # Columns with a number in any row (the cells bench/blas-spread.sh measures),
     # less those the committed checks.tsv ignores, without a quick-scale spread.
     miss="$(awk -F'\t' -v e="$e" -v t="$(basename "$t")" '
