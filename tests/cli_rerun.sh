@@ -5,8 +5,8 @@
 # twice at quick scale into two folders, and every file must be byte for
 # byte the same, except run.tsv and times.tsv (untracked, and in no
 # manifest's output lines) and the listed files. commit_id names the last
-# commit that touched anything but results/, also after a commit of results,
-# in a scratch git repository.
+# commit that touched what results are made from (RESULT_SOURCES), also
+# after a commit of results or of a test, in a scratch git repository.
 # Args: NOISELAB_SCRIPT OUTDIR.
 set -euo pipefail
 nl="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")" out="$2"
@@ -66,8 +66,8 @@ grep -q $'^seconds\t[0-9.]*$' "$out/r1/s4_marble/run.tsv" || fail "run.tsv: no s
 ! grep -q $'^\\(started\\|seconds\\|cpu_seconds\\|peak_rss_mb\\)\t' "$out/r1/s4_marble/manifest.tsv" \
   || fail "the manifest still holds times"
 
-# commit_id and report_date in a scratch repository: a commit of results/
-# after the code's commit changes neither.
+# commit_id and report_date in a scratch repository: a commit of results/,
+# or of a test, after the code's commit changes neither.
 g="$out/git"; mkdir -p "$g/scripts" "$g/results"
 cp "$nl" "$root/scripts/experiments.sh" "$root/scripts/lock.sh" "$g/scripts/"
 git -C "$g" init -q
@@ -77,9 +77,12 @@ code="$(git -C "$g" rev-parse --short=12 HEAD)"
 echo x >"$g/results/REPORT.md"
 git -C "$g" -c user.name=t -c user.email=t@t add results
 GIT_COMMITTER_DATE='2009-02-03T04:05:06Z' git -C "$g" -c user.name=t -c user.email=t@t commit -q -m results
+mkdir -p "$g/tests"; echo t >"$g/tests/t.sh"
+git -C "$g" -c user.name=t -c user.email=t@t add tests
+GIT_COMMITTER_DATE='2010-02-03T04:05:06Z' git -C "$g" -c user.name=t -c user.email=t@t commit -q -m test
 # shellcheck disable=SC2016  # the inner shell's arguments
 got="$(bash -c 'source "$1"; commit_id; echo; report_date' _ "$g/scripts/noiselab")"
-[ "$got" = "$code"$'\n'"2001-02-03" ] || fail "commit_id, report_date after a results commit: '$got', wanted $code and 2001-02-03"
+[ "$got" = "$code"$'\n'"2001-02-03" ] || fail "commit_id, report_date after a results and a test commit: '$got', wanted $code and 2001-02-03"
 echo y >"$g/scripts/note.txt"   # a file not committed: the tree is modified
 # shellcheck disable=SC2016
 got="$(bash -c 'source "$1"; commit_id' _ "$g/scripts/noiselab")"
