@@ -103,7 +103,7 @@ class _SkFromLabels(SkGMM):
         self._initialize(X, resp)
 
 
-@pytest.mark.parametrize("cov", ["full", "diag"])
+@pytest.mark.parametrize("cov", ["full", "diag", "tied", "spherical"])
 @pytest.mark.parametrize("k", [1, 2, 3])
 def test_gmm_is_sklearn(cov, k):
     r = np.random.default_rng(40 + k)
@@ -121,6 +121,62 @@ def test_gmm_is_sklearn(cov, k):
     assert np.allclose(ours.score_samples(X), sk.score_samples(X), rtol=1e-8, atol=0)
     assert np.mean(ours.predict(X) == sk.predict(X)) > 0.999
     assert np.allclose(ours.predict_proba(X), sk.predict_proba(X), atol=1e-6)
+    # sklearn's shapes and values for the covariances and precisions
+    for f in ("covariances_", "precisions_", "precisions_cholesky_"):
+        a, b = getattr(ours, f), getattr(sk, f)
+        assert a.shape == b.shape, f
+        assert np.allclose(a, b, rtol=1e-5, atol=1e-8), f
+
+
+def _two_blobs(seed=0):
+    r = np.random.default_rng(seed)
+    return np.vstack([r.normal(0, 1, (200, 2)), r.normal(8, 1, (200, 2))])
+
+
+def test_gmm_is_an_estimator():
+    """scikit-learn's estimator habits: clone, get/set_params, pickle,
+    fit_predict, random_state as None, int, RandomState or Generator."""
+    import pickle
+    from sklearn.base import clone
+    from sklearn.utils.estimator_checks import check_get_params_invariance, check_set_params
+    X = _two_blobs()
+    g = ns.GaussianMixture(2, covariance_type="diag", tol=1e-4, random_state=3)
+    check_get_params_invariance("GaussianMixture", g)
+    check_set_params("GaussianMixture", g)
+    c = clone(g)
+    assert c.get_params() == g.get_params() and c is not g
+    assert g.set_params(max_iter=50) is g and g.max_iter == 50
+    with pytest.raises(ValueError, match="'bogus' is not a parameter"):
+        g.set_params(bogus=1)
+    g.fit(X)
+    back = pickle.loads(pickle.dumps(g))
+    assert np.array_equal(back.score_samples(X), g.score_samples(X))
+    assert np.array_equal(back.predict(X), g.predict(X))
+    assert np.array_equal(back.means_, g.means_)
+    unfitted = pickle.loads(pickle.dumps(ns.GaussianMixture(3)))
+    assert unfitted.n_components == 3
+    lab = ns.GaussianMixture(2, random_state=1).fit_predict(X)
+    assert np.array_equal(lab, ns.GaussianMixture(2, random_state=1).fit(X).predict(X))
+    for rs in (None, 7, np.random.RandomState(7), np.random.default_rng(7)):
+        m = ns.GaussianMixture(2, random_state=rs).fit(X)
+        assert sorted(np.round(m.means_[:, 0]).tolist()) == [0.0, 8.0], rs
+
+
+@pytest.mark.parametrize("cov", ["full", "diag", "tied", "spherical"])
+def test_gmm_sample_is_the_mixture(cov):
+    """sample(n): rows grouped by component (sklearn's order), the same draws
+    for the same int random_state, and each group's mean near its component's."""
+    X = _two_blobs(1)
+    g = ns.GaussianMixture(2, covariance_type=cov, random_state=5).fit(X)
+    Xs, ys = g.sample(4000)
+    assert Xs.shape == (4000, 2) and ys.shape == (4000,)
+    assert np.all(np.diff(ys) >= 0)
+    Xs2, ys2 = g.sample(4000)
+    assert np.array_equal(Xs, Xs2) and np.array_equal(ys, ys2)
+    for j in range(2):
+        # 4 standard errors of a mean of about 2000 unit-variance draws
+        assert np.allclose(Xs[ys == j].mean(axis=0), g.means_[j], atol=4 * 1.2 / np.sqrt(1000))
+    assert abs(np.mean(ys == 0) - g.weights_[0]) < 4 * np.sqrt(0.25 / 4000)
 
 
 def test_gmm_kmeans_init_finds_clusters():
@@ -143,7 +199,8 @@ def test_gmm_kmeans_init_finds_clusters():
     (lambda: ns.linkage(np.zeros(5), "ward"), ValueError, "5 is no such number"),
     (lambda: ns.linkage(np.zeros((2, 2, 2)), "ward"), ValueError, "got shape (2, 2, 2)"),
     (lambda: ns.linkage(np.zeros((5, 2)), "medoid"), ValueError, "medoid"),
-    (lambda: ns.GaussianMixture(2, covariance_type="tied"), ValueError, "tied"),
+    (lambda: ns.GaussianMixture(2, covariance_type="ellipsoid").fit(np.zeros((3, 2))), ValueError,
+     "covariance_type: 'ellipsoid' is not 'full', 'tied', 'diag' or 'spherical'"),
     (lambda: ns.GaussianMixture(2).score(np.zeros((3, 2))), ValueError, "not fitted"),
     (lambda: ns.GaussianMixture(5).fit(np.zeros((3, 2))), ValueError, ""),
 ])
