@@ -88,10 +88,15 @@ def _value(s):
 class Results:
     """An experiment folder: tables (by file name without .tsv), manifest
     (dict; a key written several times, like param, maps to a list),
-    verdicts (the verdict rows, a structured array) and checks."""
+    verdicts (the verdict rows, a structured array), checks (the regression
+    rule of each column: table, column, rule; a structured array) and run
+    (dict: when the run started and the time and memory it took, from the
+    untracked run.tsv; empty for the committed results of a fresh clone)."""
 
-    def __init__(self, folder, tables, manifest, verdicts):
+    def __init__(self, folder, tables, manifest, verdicts, checks=None, run=None):
         self.folder, self.tables, self.manifest, self.verdicts = folder, tables, manifest, verdicts
+        self.checks = checks if checks is not None else np.empty(0, dtype=[])
+        self.run = run if run is not None else {}
 
     def frame(self, name):
         """Table name as a pandas DataFrame (pandas must be installed)."""
@@ -120,7 +125,7 @@ def load(folder):
 
     Returns
     -------
-    Results with .tables, .manifest, .verdicts, .frame(name)
+    Results with .tables, .manifest, .verdicts, .checks, .run, .frame(name)
 
     Example
     -------
@@ -149,7 +154,11 @@ def load(folder):
             tables[f[:-4]] = read_table(os.path.join(folder, f))
     vpath = os.path.join(folder, "verdicts.tsv")
     verdicts = read_table(vpath) if os.path.exists(vpath) else np.empty(0, dtype=[])
-    return Results(folder, tables, manifest, verdicts)
+    checks = tables.get("checks", np.empty(0, dtype=[]))
+    rpath = os.path.join(folder, "run.tsv")
+    run = {str(row["key"]): _value(str(row["value"])) for row in read_table(rpath)} \
+        if os.path.exists(rpath) else {}
+    return Results(folder, tables, manifest, verdicts, checks, run)
 
 
 def report(folder):

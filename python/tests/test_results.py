@@ -38,6 +38,20 @@ def test_s3_tables_are_the_files():
                 assert t[col].tolist() == cells, (name, col)
 
 
+def test_checks_and_run():
+    """.checks are checks.tsv's rows; .run is run.tsv's keys, or empty when
+    the folder has none (the committed results carry no times)."""
+    folder = os.path.join(QUICK, "s3_fbm")
+    r = nr.load(folder)
+    text = rows(os.path.join(folder, "checks.tsv"))
+    assert list(r.checks.dtype.names) == ["table", "column", "rule"]
+    assert r.checks["rule"].tolist() == [row[2] for row in text[1:]]
+    if os.path.exists(os.path.join(folder, "run.tsv")):
+        assert {"started", "seconds", "cpu_seconds", "peak_rss_mb"} <= set(r.run)
+    else:
+        assert r.run == {}
+
+
 def test_report_is_the_verdict_rows():
     folder = os.path.join(QUICK, "s3_fbm")
     v = nr.report(folder)
