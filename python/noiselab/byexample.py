@@ -123,6 +123,15 @@ def _from_numpy(name, a):
 def read_image(path):
     """An image file (any format OpenImageIO reads) as a float32 (h, w, channels) array.
 
+    Parameters
+    ----------
+    path : str or os.PathLike
+
+    Returns
+    -------
+    ndarray (h, w, channels) float32, values as the file's levels scaled to [0, 1]
+    (floating-point files as stored)
+
     Example
     -------
     >>> img = read_image("data/exemplars/wood.png")            # doctest: +SKIP
@@ -140,6 +149,16 @@ def write_image(image, path, bits=16):
     format from the extension; bits 8/16 for PNG, 16/32 for EXR). Values
     as ``analyse`` takes them: floats in [0, 1] map to the file's range,
     uint8 and uint16 levels are scaled by 1/255 and 1/65535 first.
+
+    Parameters
+    ----------
+    image : array_like (h, w) or (h, w, channels)
+    path : str or os.PathLike    the format from its extension
+    bits : int             8 or 16 for PNG, 16 or 32 for EXR
+
+    Returns
+    -------
+    None; OSError naming the path when it cannot be written
 
     Example
     -------
@@ -226,6 +245,10 @@ def analyse(image, *, rgb=False, histogram=True, paper_histogram=False, calibrat
     paper_histogram : bool the paper's 10 quantiles instead of 33 Gaussian ones
     calibrate : bool       store the band targets for the calibrated synthesis
 
+    Returns
+    -------
+    Params : the exemplar's parameters (channels, bands, weights, histograms)
+
     Example
     -------
     >>> import numpy as np, noiselab.noise as nn, noiselab.byexample as nb
@@ -262,6 +285,19 @@ def synthesize(params, width, height=None, *, seed=1, scale=1.0, solid=False, z=
     1e9 or not finite are a ValueError; a non-integer size or seed, or a
     scale or z that is not a number, a TypeError.
 
+    Parameters
+    ----------
+    params : Params        from analyse() or morph()
+    width, height : int    pixels (height defaults to width)
+    seed : int             the noise's seed, 0..2^32 - 1
+    scale : float          pixel size in exemplar pixels
+    solid : bool           a slice of 3D wavelet noise instead of 2D
+    z : float              the slice's z (solid only)
+
+    Returns
+    -------
+    ndarray (height, width, channels) float32
+
     Example
     -------
     >>> import noiselab.noise as nn, noiselab.byexample as nb
@@ -290,6 +326,15 @@ def morph(a, b, t):
     """Params between a (t = 0) and b (t = 1): linear, the PCA rotation by
     quaternion slerp (nl_byexample_morph). t outside [0, 1] (it would
     extrapolate) or not finite is a ValueError, as `example morph --t`.
+
+    Parameters
+    ----------
+    a, b : Params          the two ends, with the same channels
+    t : float              in [0, 1]
+
+    Returns
+    -------
+    Params
 
     Example
     -------

@@ -215,6 +215,18 @@ def evaluate(table, pattern, grid=64, **options):
     """E_KS, E_Con and the other measures of a given table (angles, perm)
     against a pattern (nl_cheng_evaluate), as a ChengResult; options as optimise's.
 
+    Parameters
+    ----------
+    table : (angles, perm) the gradient angles (M values in [0, 2 pi)) and a
+        permutation of 0..M-1
+    pattern : array_like (h, w) the control pattern, values in [0, 1]
+    grid : int             the control grid's cells a side
+    **options              as optimise's (stat, con, w1, w2, octaves, f1, ...)
+
+    Returns
+    -------
+    ChengResult : e_ks, e_con and the other measures
+
     Example
     -------
     >>> import numpy as np, noiselab.cheng as nc
@@ -242,6 +254,16 @@ def evaluate(table, pattern, grid=64, **options):
 def value_grid(table, size, **options):
     """The control value c(x, y) (all octaves, the config's variant) of a table
     at the pixel centres of a size x size raster of [0,1)^2, row 0 at y = 0.
+
+    Parameters
+    ----------
+    table : (angles, perm) as evaluate's
+    size : int             pixels a side
+    **options              as optimise's (octaves, f1, a1, amp_vary, ...)
+
+    Returns
+    -------
+    ndarray (size, size) float64, values in [0, 1]
 
     Example
     -------

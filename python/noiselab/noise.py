@@ -454,6 +454,17 @@ def bound(noise="improved", *, seed=1, basis="improved", octaves=6, gain=0.5, la
     render maps an integer image's grey levels by it. Marble's values lie in
     [0, 1]. Options as grid's.
 
+    Parameters
+    ----------
+    noise : str            a noise of grid()/points() ("improved", "fbm", ...)
+    seed, basis, octaves, gain, lacunarity, table, table_size, reference, terms,
+    lambda_, points, count, tile : as grid's (the bound depends on the basis, the
+        amplitudes and, for cellular terms, on lambda_ and points)
+
+    Returns
+    -------
+    float : B >= 0
+
     Example
     -------
     >>> import noiselab.noise as nn
@@ -656,6 +667,16 @@ def cellular(x, y, z=0.5, n=4, *, seed=1, lambda_=4.0, points=50, count="inverse
     lambda_, points and count, so F1 equals points(..., "gctbf") with
     terms="F1". One C call for all points (nl_cellular_points).
 
+    Parameters
+    ----------
+    x, y, z : array_like   coordinates, broadcast together (z default 0.5)
+    n : int                how many distances, 1..4
+    seed, lambda_, points, count : the feature points, as gctbf's
+
+    Returns
+    -------
+    ndarray : the broadcast shape plus a last axis of n, float64
+
     Example
     -------
     >>> import numpy as np, noiselab.noise as nn
@@ -682,6 +703,17 @@ def cellular_grid(size=512, n=4, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=1, l
                   points=50, count="inverse"):
     """F1..Fn on grid()'s raster through the cellular row kernel:
     (size, size, n) float64, [r, c, i] = F_{i+1} at grid's pixel (r, c).
+
+    Parameters
+    ----------
+    size : int             pixels a side
+    n : int                how many distances, 1..4
+    extent, x0, y0, z : grid()'s window (extent units across, pixel centres)
+    seed, lambda_, points, count : the feature points, as gctbf's
+
+    Returns
+    -------
+    ndarray (size, size, n) float64
 
     Example
     -------

@@ -41,6 +41,14 @@ _cell_text = fn("nl_table_cell_text", ctypes.c_char_p, ctypes.POINTER(_Table), c
 def read_table(path):
     """One TSV table as a numpy structured array, fields named by its header.
 
+    Parameters
+    ----------
+    path : str or os.PathLike    a TSV file with a header
+
+    Returns
+    -------
+    numpy structured array : numbers as float64 (to the bit), text as str
+
     Example
     -------
     >>> t = read_table("results/quick/s3_fbm/gain_distribution.tsv")   # doctest: +SKIP
@@ -164,6 +172,14 @@ def load(folder):
 def report(folder):
     """The verdict rows of an experiment folder (quantity, paper, ours,
     verdict, reason, ...), as a structured array.
+
+    Parameters
+    ----------
+    folder : str or os.PathLike    an experiment folder
+
+    Returns
+    -------
+    numpy structured array : load(folder).verdicts
 
     Example
     -------

@@ -379,7 +379,15 @@ def kuiper(rvs, cdf, args=()):
     """Kuiper's test, V = D+ + D-: the KS of a circle (it does not depend on
     where the circle is cut), p-value as astropy.stats.kuiper's.
 
-    Parameters as kstest.
+    Parameters
+    ----------
+    rvs : array_like       the sample (angles scaled to the distribution's range)
+    cdf : str or callable  as kstest's (a named distribution with args, or F)
+    args : tuple           the distribution's shapes, loc and scale
+
+    Returns
+    -------
+    KuiperResult : statistic (V), pvalue; unpacks as (statistic, pvalue)
 
     Example
     -------
@@ -494,6 +502,15 @@ def mean_sd(x, rounding="running"):
     the bit: 'running' is GSL's running mean and sd (gsl_stats_mean,
     gsl_stats_sd), 'summed' the sum in order over n, then the sum of squares.
     An empty x has no mean: ValueError (statistics.mean raises too).
+
+    Parameters
+    ----------
+    x : array_like         real numbers, at least one, all finite
+    rounding : str         'running' (GSL's) or 'summed'
+
+    Returns
+    -------
+    (mean, sd) : two floats; sd is 0 for one value
 
     Example
     -------

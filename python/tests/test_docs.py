@@ -28,6 +28,21 @@ def test_every_public_function_has_an_example(mod):
 
 
 @pytest.mark.parametrize("mod", MODULES, ids=lambda m: m.__name__)
+def test_every_public_function_says_its_parameters_and_returns(mod):
+    """numpydoc's sections, as scipy's: a function says what it takes and what
+    it gives (a function without arguments only what it gives)."""
+    missing = []
+    for name in getattr(mod, "__all__", []):
+        f = getattr(mod, name)
+        if not inspect.isfunction(f):
+            continue
+        doc = inspect.getdoc(f) or ""
+        want = ["Returns"] + (["Parameters"] if inspect.signature(f).parameters else [])
+        missing += [f"{name} ({s})" for s in want if f"{s}\n---" not in doc]
+    assert not missing, f"{mod.__name__}: no section {missing}"
+
+
+@pytest.mark.parametrize("mod", MODULES, ids=lambda m: m.__name__)
 def test_examples_run(mod):
     r = doctest.testmod(mod, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
     assert r.failed == 0
