@@ -65,6 +65,19 @@ static inline const char *nl_test_tmpdir(void)
   return nl__tmpdir;
 }
 
+/* 1 when folder holds no hidden file: an output's temporary (.NAME.PID.XXXXXX)
+ * left behind starts with a dot. */
+static inline int nl_test_no_hidden_files(const char *folder)
+{
+  char cmd[600], out[64] = "";
+  snprintf(cmd, sizeof cmd, "ls -A '%s' | grep -c '^\\.' || true", folder);
+  FILE *p = popen(cmd, "r");
+  if (!p) return 0;
+  if (!fgets(out, sizeof out, p)) out[0] = '\0';
+  pclose(p);
+  return atoi(out) == 0;
+}
+
 #define NL_TEST_MAX_SKIPS 16
 static char nl__skips[NL_TEST_MAX_SKIPS][128];
 static int nl__nskips;

@@ -277,18 +277,6 @@ static void write_old(const char *path)
   fclose(f);
 }
 
-/* No temporary left beside the target (hidden files of the folder). */
-static int no_temporaries(const char *folder)
-{
-  char cmd[600], out[64] = "";
-  snprintf(cmd, sizeof cmd, "ls -A '%s' | grep -c '^\\.' || true", folder);
-  FILE *p = popen(cmd, "r");
-  if (!p) return 0;
-  if (!fgets(out, sizeof out, p)) out[0] = '\0';
-  pclose(p);
-  return atoi(out) == 0;
-}
-
 NL_TEST(atomic_write_replaces_whole_or_not_at_all)
 {
   nl_error err = {{0}};
@@ -308,7 +296,7 @@ NL_TEST(atomic_write_replaces_whole_or_not_at_all)
   fputs("half", af.fp);
   nl_atomic_abort(&af);
   NL_CHECK(strcmp(slurp_file(path), "old\n") == 0);
-  NL_CHECK(no_temporaries(sub));
+  NL_CHECK(nl_test_no_hidden_files(sub));
   /* A commit whose temporary vanished fails and leaves the old file. */
   NL_CHECK(nl_atomic_open(&af, path, &err) == NL_OK);
   fputs("lost", af.fp);
@@ -339,7 +327,7 @@ NL_TEST(atomic_write_that_fails_midway_leaves_the_old_file)
   NL_CHECK(pid > 0 && waitpid(pid, &status, 0) == pid);
   NL_CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 0);
   NL_CHECK(strcmp(slurp_file(path), "old\n") == 0);
-  NL_CHECK(no_temporaries(dir));
+  NL_CHECK(nl_test_no_hidden_files(dir));
   free(path);
 }
 
@@ -385,7 +373,7 @@ NL_TEST(atomic_write_keeps_links_fifos_and_devices)
     unlink(null); unlink(full);
     free(null); free(full);
   }
-  NL_CHECK(no_temporaries(sub));
+  NL_CHECK(nl_test_no_hidden_files(sub));
   free(sub); free(real); free(link); free(dangling); free(fifo);
 }
 
@@ -415,7 +403,7 @@ NL_TEST(atomic_commit_all_is_all_or_nothing)
   NL_CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 0);
   NL_CHECK(strcmp(slurp_file(a), "old\n") == 0);
   NL_CHECK(strcmp(slurp_file(b), "old\n") == 0);
-  NL_CHECK(no_temporaries(sub));
+  NL_CHECK(nl_test_no_hidden_files(sub));
   free(sub); free(a); free(b);
 }
 

@@ -455,18 +455,6 @@ NL_TEST(verdict_rules)
   NL_CHECK(!strcmp(nl_harness_verdict_word(NL_VERDICT_REPRODUCED, "by construction"), "by construction"));
 }
 
-/* No hidden file (a temporary's name starts with a dot) left in folder. */
-static int no_temporaries(const char *folder)
-{
-  char cmd[600], out[64] = "";
-  snprintf(cmd, sizeof cmd, "ls -A '%s' | grep -c '^\\.' || true", folder);
-  FILE *p = popen(cmd, "r");
-  if (!p) return 0;
-  if (!fgets(out, sizeof out, p)) out[0] = '\0';
-  pclose(p);
-  return atoi(out) == 0;
-}
-
 /* In a program started by nl_harness_program_start, a temporary still open
  * when the program exits or is stopped by SIGINT, SIGTERM or SIGHUP is
  * removed; the signal still ends the process. */
@@ -501,7 +489,7 @@ NL_TEST(atomic_temporaries_removed_on_exit_and_signals)
     NL_CHECK(pid > 0 && waitpid(pid, &status, 0) == pid);
     if (k == 3) NL_CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 5);
     else NL_CHECK(WIFSIGNALED(status) && WTERMSIG(status) == sigs[k]);
-    NL_CHECK(no_temporaries(sub));
+    NL_CHECK(nl_test_no_hidden_files(sub));
   }
   NL_CHECK(access(p, F_OK) != 0);
   free(sub); free(p);
