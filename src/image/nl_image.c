@@ -4,9 +4,7 @@
 #endif
 #include "image/nl_image.h"
 #include "image/nl_image_config.h"
-#if !NL_OIIO_BUILT
 #include "image/nl_image_png.h"
-#endif
 
 #include <errno.h>
 #include <math.h>
@@ -175,6 +173,24 @@ nl_status nl_image_check_bits(const char *path, int bits, nl_error *err)
   return NL_OK;
 }
 
+nl_status nl_image_source_date(const char *path, int *set, long long *t, nl_error *err)
+{
+  *set = 0;
+  *t = 0;
+  const char *e = getenv("SOURCE_DATE_EPOCH");
+  if (!e || !*e) return NL_OK;
+  char *end;
+  errno = 0;
+  long long v = strtoll(e, &end, 10);
+  /* 253402300799 is 9999-12-31 23:59:59: beyond it a year has five digits. */
+  if (*end || errno || v < 0 || v > 253402300799LL)
+    return nl_fail(err, NL_EINVAL, "%s: SOURCE_DATE_EPOCH '%s' is not a number of seconds since 1970",
+                   path, e);
+  *set = 1;
+  *t = v;
+  return NL_OK;
+}
+
 /* A PNG ends with its IEND chunk: length 0, "IEND", CRC ae 42 60 82. */
 static int png_whole(const unsigned char *d, size_t n)
 {
@@ -189,16 +205,27 @@ nl_status nl_image_write(const nl_image *im, const char *path, int bits, nl_erro
   /* A target that cannot be written is named before the codec is loaded. */
   s = nl_path_check_writable(path, err);
   if (s) return s;
-  s = backend(path, err);
-  if (s) return s;
   unsigned char *data = NULL;
   size_t n = 0;
+  const char *dot = strrchr(path, '.');
+  int png = dot && strcasecmp(dot, ".png") == 0;
+#if NL_PNG_WRITE && !defined(NL_OIIO_STATIC)
+  /* Grey with alpha is left to OpenImageIO, which treats the second
+   * channel as associated alpha and divides it out. */
+  if (png && im->channels != 2) {
+    s = nl_image_png_encode(im, path, bits, NL_PNG_LEVEL, &data, &n, err);
+    if (!s) s = nl_atomic_write(path, data, n, err);
+    free(data);
+    return s;
+  }
+#endif
+  s = backend(path, err);
+  if (s) return s;
   QUIET_BEGIN();
   s = oiio_encode(im, path, bits, &data, &n, err);
   QUIET_END();
   if (s) return s;
-  const char *dot = strrchr(path, '.');
-  if (dot && strcasecmp(dot, ".png") == 0 && !png_whole(data, n))
+  if (png && !png_whole(data, n))
     s = nl_fail(err, NL_EIO, "%s: the PNG encoder stopped before the end (no IEND chunk)", path);
   else
     s = nl_atomic_write(path, data, n, err);

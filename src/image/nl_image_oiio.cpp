@@ -8,6 +8,8 @@
 // nl_oiio_read / nl_oiio_encode; nl_image.c's nl_image_read/nl_image_write
 // call them (directly when NL_OIIO_STATIC links this file in, as the fuzz
 // targets do).
+#include "image/nl_image_png.h"
+
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
@@ -351,16 +353,14 @@ static TypeDesc type_for(const std::string &path, int bits)
   return bits == 16 ? TypeDesc::UINT16 : TypeDesc::UINT8;
 }
 
+// SOURCE_DATE_EPOCH as the DateTime attribute ("" when unset: none written).
 static nl_status nl_image_timestamp(const char *path, std::string *out, nl_error *err)
 {
   out->clear();
-  const char *e = std::getenv("SOURCE_DATE_EPOCH");
-  if (!e || !*e) return NL_OK;
-  char *end;
-  errno = 0;
-  long long t = std::strtoll(e, &end, 10);
-  if (*end || errno || t < 0 || t > 253402300799LL)
-    return nl_fail(err, NL_EINVAL, "%s: SOURCE_DATE_EPOCH '%s' is not a number of seconds since 1970", path, e);
+  int set;
+  long long t;
+  nl_status s = nl_image_source_date(path, &set, &t, err);
+  if (s || !set) return s;
   time_t tt = (time_t)t;
   struct tm tm;
   gmtime_r(&tt, &tm);

@@ -2,7 +2,11 @@
 #include "image/nl_image.h"
 #include "image/nl_image_png.h"
 #include "harness/nl_build_info.h"   /* NL_SOURCE_ROOT: data/ */
+#include "image/nl_image_config.h"
 #include "nl_test.h"
+
+#include <dlfcn.h>
+#include <math.h>
 
 #include <dirent.h>
 #include <stdlib.h>
@@ -48,20 +52,99 @@ static void round_trip(const char *name, int bits, int channels, double tol)
   nl_image_free(a); nl_image_free(b); free(p);
 }
 
-/* First test: OpenImageIO is a module opened on the first image, so that
- * programs writing only tables start in milliseconds. */
+/* First test: OpenImageIO is a module opened on the first image it is
+ * needed for, so that programs writing only tables or PNGs start in
+ * milliseconds: a PNG is written without it, a TIFF loads it. */
 NL_TEST(backend_loads_on_first_use)
 {
   NL_CHECK(!nl_image_backend_loaded());
   NL_CHECK(strlen(nl_image_library_version()) > 0);   /* the manifest's: no load */
   NL_CHECK(!nl_image_backend_loaded());
   nl_image *im = nl_image_alloc(2, 2, 1);
-  char *p = nl_path_join(dir, "first.png");
+  char *p = nl_path_join(dir, "first.png"), *t = nl_path_join(dir, "first.tif");
   nl_error err;
   NL_CHECK(nl_image_write(im, p, 8, &err) == NL_OK);
+  NL_CHECK(nl_image_backend_loaded() == !NL_PNG_WRITE);
+  NL_CHECK(nl_image_write(im, t, 8, &err) == NL_OK);
   NL_CHECK(nl_image_backend_loaded());
   free(p);
+  free(t);
   nl_image_free(im);
+}
+
+/* The PNG writer (nl_image_png.c) against OpenImageIO's, called in its
+ * module: both files decode to the same samples, 8 and 16 bits, 1, 3 and 4
+ * channels (grey with alpha goes to the module), at random values in [-0.25, 1.25] and at every quantisation
+ * boundary (k + 1/2) / max and the floats either side of it, where a
+ * rounding rule that differs would show; and both stamp SOURCE_DATE_EPOCH
+ * as the same tIME chunk. */
+typedef nl_status (*oiio_encode_fn)(const nl_image *, const char *, int, unsigned char **, size_t *,
+                                    nl_error *);
+static nl_image *png_decode(const char *name, const unsigned char *d, size_t n)
+{
+  char *p = nl_path_join(dir, name);
+  FILE *f = fopen(p, "wb");
+  NL_CHECK(f && fwrite(d, 1, n, f) == n && fclose(f) == 0);
+  nl_image *im = NULL;
+  nl_error err = {{0}};
+  NL_CHECK(nl_image_png_read(p, &im, &err) == NL_OK);
+  free(p);
+  return im;
+}
+
+NL_TEST(png_writer_gives_the_module_samples)
+{
+#if NL_PNG_WRITE
+  void *h = dlopen(NL_OIIO_MODULE_BUILD, RTLD_NOW | RTLD_LOCAL);
+  NL_CHECK(h != NULL);
+  if (!h) return;
+  oiio_encode_fn oiio = (oiio_encode_fn)(void (*)(void))dlsym(h, "nl_oiio_encode");
+  NL_CHECK(oiio != NULL);
+  unsigned long long st = 0x9e3779b97f4a7c15ULL;
+  for (int bits = 8; bits <= 16; bits += 8)
+    for (int c = 1; c <= 4 && oiio; c += c == 1 ? 2 : 1) {
+      const float max = bits == 16 ? 65535.0f : 255.0f;
+      nl_image *im = nl_image_alloc(301, 67, c);
+      size_t n = (size_t)im->width * im->height * c, k = 0;
+      for (unsigned q = 0; q <= (unsigned)max && k + 3 <= n / 2; q += bits == 16 ? 97 : 1) {
+        float b = ((float)q + 0.5f) / max;
+        im->data[k++] = b;
+        im->data[k++] = nextafterf(b, 0.0f);
+        im->data[k++] = nextafterf(b, 2.0f);
+      }
+      for (; k < n; k++) {
+        st = st * 6364136223846793005ULL + 1442695040888963407ULL;
+        im->data[k] = (float)((double)(st >> 11) * 0x1.0p-53 * 1.5 - 0.25);
+      }
+      setenv("SOURCE_DATE_EPOCH", "1234567890", 1);
+      unsigned char *a = NULL, *b = NULL;
+      size_t na = 0, nb = 0;
+      nl_error err = {{0}};
+      NL_CHECK(nl_image_png_encode(im, "ours.png", bits, 6, &a, &na, &err) == NL_OK);
+      NL_CHECK(oiio(im, "oiio.png", bits, &b, &nb, &err) == NL_OK);
+      unsetenv("SOURCE_DATE_EPOCH");
+      NL_CHECK(a && b && memmem(a, na, "tIME", 4) && memmem(b, nb, "tIME", 4));
+      if (a && b)
+        NL_CHECK(memcmp(memmem(a, na, "tIME", 4), memmem(b, nb, "tIME", 4), 4 + 7) == 0);
+      nl_image *da = a ? png_decode("ours.png", a, na) : NULL;
+      nl_image *db = b ? png_decode("oiio.png", b, nb) : NULL;
+      size_t nd = da ? (size_t)da->width * da->height * da->channels : 0;
+      int same = da && db && da->channels == db->channels && da->width == db->width &&
+                 memcmp(da->data, db->data, nd * sizeof *da->data) == 0;
+      if (!same) fprintf(stderr, "  %d-bit, %d channels: the two encoders' samples differ\n", bits, c);
+      if (!same && da && db && da->channels == db->channels)
+        for (size_t i = 0; i < nd; i++)
+          if (da->data[i] != db->data[i]) {
+            fprintf(stderr, "    decoded sample %zu: ours %.9g, oiio %.9g\n", i,
+                    (double)da->data[i] * max, (double)db->data[i] * max);
+            break;
+          }
+      NL_CHECK(same);
+      nl_image_free(da); nl_image_free(db); nl_image_free(im);
+      free(a); free(b);
+    }
+  dlclose(h);
+#endif
 }
 
 NL_TEST(png_exr_tiff_round_trips)
