@@ -137,32 +137,10 @@ double *a3_reading_sample(const nl_noise_perm3 *p, int s, const a3_reading *rd, 
 nl_status a3_bandwidth_reading(const double *x, size_t n, const a3_reading *rd, double T,
                                nl_bounds_bandwidth *bw, nl_error *err)
 {
-  if (!(T > 0.0)) return nl_fail(err, NL_EINVAL, "bandwidth: threshold T must be positive");
-  size_t m = n / 2 + 1;
-  double *f = nl_xmalloc(m * sizeof *f), *P = nl_xmalloc(m * sizeof *P);
-  nl_status rc = nl_spectrum_psd1_window(x, n, rd->rate, rd->window, f, P, err);
-  if (!rc) {
-    double *g = nl_xmalloc(m * sizeof *g), res = rd->rate / (double)n;
-    for (size_t k = 1; rd->two_sided && 2 * k < n; k++)
-      P[k] *= 0.5; /* positive half of the two-sided PSD */
-    if (rd->gamma_no_dc) P[0] = 0.0;
-    for (size_t k = 0; k < m; k++)
-      f[k] = (rd->bin_edge ? fmax(f[k] - 0.5 * res, 0.0) : f[k]) * (rd->radians ? 2.0 * M_PI : 1.0);
-    nl_bounds_psd1_tail(P, m, g);
-    nl_bounds_moments(x, n, &bw->mean, &bw->sigma);
-    double rms = sqrt(bw->mean * bw->mean + bw->sigma * bw->sigma);
-    double lo = (rd->sigma_rms ? rms : bw->sigma) - sqrt(T);
-    bw->f_sup = nl_bounds_psd1_tail_inverse(f, g, m, T);
-    bw->f_inf = nl_bounds_psd1_tail_inverse(f, g, m, lo > 0.0 ? lo * lo : 0.0);
-    double lr = sqrt(g[0]) - sqrt(T);
-    bw->f_inf_rms = nl_bounds_psd1_tail_inverse(f, g, m, lr > 0.0 ? lr * lr : 0.0);
-    bw->resolution = res;
-    bw->nyquist = 0.5 * rd->rate;
-    free(g);
-  }
-  free(f);
-  free(P);
-  return rc;
+  nl_bounds_bandwidth_options o = {.window = rd->window, .two_sided = rd->two_sided,
+                                   .sigma_rms = rd->sigma_rms, .no_dc = rd->gamma_no_dc,
+                                   .bin_edge = rd->bin_edge, .radians = rd->radians};
+  return nl_bounds_bandwidth_1d_with(x, n, rd->rate, T, &o, bw, err);
 }
 
 int a3_readings(const a3_reading *base, a3_reading *out, const char **name, int max)

@@ -384,24 +384,41 @@ void nl_bounds_moments(const double *x, size_t n, double *mean, double *sigma)
 nl_status nl_bounds_bandwidth_1d(const double *x, size_t n, double rate, double T,
                                  nl_bounds_bandwidth *bw, nl_error *err)
 {
+  return nl_bounds_bandwidth_1d_with(x, n, rate, T, NULL, bw, err);
+}
+
+nl_status nl_bounds_bandwidth_1d_with(const double *x, size_t n, double rate, double T,
+                                      const nl_bounds_bandwidth_options *opt,
+                                      nl_bounds_bandwidth *bw, nl_error *err)
+{
+  static const nl_bounds_bandwidth_options plain = {0};
+  const nl_bounds_bandwidth_options *o = opt ? opt : &plain;
   if (!(T > 0.0)) return nl_fail(err, NL_EINVAL, "bandwidth: threshold T must be positive");
   size_t m = n / 2 + 1;
   double *f = nl_xmalloc(m * sizeof *f), *P = nl_xmalloc(m * sizeof *P);
-  nl_status rc = nl_spectrum_psd1(x, n, rate, f, P, err);
+  nl_status rc = nl_spectrum_psd1_window(x, n, rate, o->window, f, P, err);
   if (!rc) {
-    double *g = nl_xmalloc(m * sizeof *g);
+    double *g = nl_xmalloc(m * sizeof *g), res = rate / (double)n;
+    for (size_t k = 1; o->two_sided && 2 * k < n; k++)
+      P[k] *= 0.5;   /* positive half of the two-sided PSD */
+    if (o->no_dc) P[0] = 0.0;
+    if (o->bin_edge || o->radians)
+      for (size_t k = 0; k < m; k++)
+        f[k] = (o->bin_edge ? fmax(f[k] - 0.5 * res, 0.0) : f[k]) * (o->radians ? 2.0 * M_PI : 1.0);
     nl_bounds_psd1_tail(P, m, g);
     nl_bounds_moments(x, n, &bw->mean, &bw->sigma);
-    double lo = bw->sigma - sqrt(T);
+    double rms = sqrt(bw->mean * bw->mean + bw->sigma * bw->sigma);
+    double lo = (o->sigma_rms ? rms : bw->sigma) - sqrt(T);
     bw->f_sup = nl_bounds_psd1_tail_inverse(f, g, m, T);
     bw->f_inf = nl_bounds_psd1_tail_inverse(f, g, m, lo > 0.0 ? lo * lo : 0.0);
-    double rms = sqrt(g[0]) - sqrt(T);
-    bw->f_inf_rms = nl_bounds_psd1_tail_inverse(f, g, m, rms > 0.0 ? rms * rms : 0.0);
-    bw->resolution = rate / (double)n;
+    double lr = sqrt(g[0]) - sqrt(T);
+    bw->f_inf_rms = nl_bounds_psd1_tail_inverse(f, g, m, lr > 0.0 ? lr * lr : 0.0);
+    bw->resolution = res;
     bw->nyquist = 0.5 * rate;
     free(g);
   }
-  free(f); free(P);
+  free(f);
+  free(P);
   return rc;
 }
 

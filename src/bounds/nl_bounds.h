@@ -164,6 +164,23 @@ typedef struct {
 } nl_bounds_bandwidth;
 nl_status nl_bounds_bandwidth_1d(const double *x, size_t n, double rate, double T,
                                  nl_bounds_bandwidth *bw, nl_error *err);
+/* The estimator's readings where the paper leaves them open (sec. 5.2.2;
+ * A3 sweeps them): all 0 is nl_bounds_bandwidth_1d bit for bit.
+ *   window       NL_SPECTRUM_RECT (none) or NL_SPECTRUM_HANN
+ *   two_sided    Gamma integrates the positive half of the two-sided PSD
+ *                (half the energy of each f > 0)
+ *   sigma_rms    sigma of F_inf is the RMS (the DC in sigma), not the sd
+ *   no_dc        the DC bin left out of Gamma
+ *   bin_edge     a bin's frequency is its lower edge f - res/2, not its centre
+ *   radians      frequencies times 2 pi
+ *   nl_bounds_bandwidth_options o = {.window = NL_SPECTRUM_HANN, .two_sided = 1};
+ *   nl_bounds_bandwidth_1d_with(x, n, rate, NL_BOUNDS_T, &o, &bw, &err); */
+typedef struct {
+  int window, two_sided, sigma_rms, no_dc, bin_edge, radians;
+} nl_bounds_bandwidth_options;
+nl_status nl_bounds_bandwidth_1d_with(const double *x, size_t n, double rate, double T,
+                                      const nl_bounds_bandwidth_options *o,
+                                      nl_bounds_bandwidth *bw, nl_error *err);
 /* The mean and the sigma of F_inf: sigma^2 = sum_k (x[k] - mean)^2 / n (over
  * n, not n - 1), both summed in index order (the bits of
  * nl_bounds_bandwidth_1d's bw->mean and bw->sigma). For an estimator that

@@ -238,6 +238,29 @@ NL_TEST(psd_and_bandwidth)
   NL_CHECK(nl_bounds_psd1_fraction_above(x, n, rate, 0.3, &frac, NULL) == NL_OK);
   NL_CHECK_NEAR(frac, 0.0, 1e-12);
   NL_CHECK(nl_bounds_bandwidth_1d(x, n, rate, 0.0, &bw, NULL) == NL_EINVAL);
+  /* The estimator's readings: all 0 is the plain call's bits; each one
+   * moves the band as its definition says, on the 37-cycle sine (bin 37,
+   * whose band starts one bin up, at the first bin below T). */
+  nl_bounds_bandwidth b0, b1;
+  nl_bounds_bandwidth_options o = {0};
+  NL_CHECK(nl_bounds_bandwidth_1d_with(x, n, rate, NL_BOUNDS_T, &o, &b0, NULL) == NL_OK);
+  NL_CHECK(memcmp(&b0, &bw, sizeof bw) == 0);
+  o.radians = 1;
+  NL_CHECK(nl_bounds_bandwidth_1d_with(x, n, rate, NL_BOUNDS_T, &o, &b1, NULL) == NL_OK);
+  NL_CHECK_NEAR(b1.f_sup, 2 * M_PI * b0.f_sup, 1e-12);
+  o = (nl_bounds_bandwidth_options){.bin_edge = 1};
+  NL_CHECK(nl_bounds_bandwidth_1d_with(x, n, rate, NL_BOUNDS_T, &o, &b1, NULL) == NL_OK);
+  NL_CHECK_NEAR(b1.f_sup, b0.f_sup - 0.5 * rate / n, 1e-12);
+  o = (nl_bounds_bandwidth_options){.sigma_rms = 1};
+  NL_CHECK(nl_bounds_bandwidth_1d_with(x, n, rate, NL_BOUNDS_T, &o, &b1, NULL) == NL_OK);
+  NL_CHECK(b1.f_inf <= b0.f_inf && b1.f_sup == b0.f_sup);   /* a larger sigma: F_inf no higher */
+  o = (nl_bounds_bandwidth_options){.no_dc = 1};
+  NL_CHECK(nl_bounds_bandwidth_1d_with(x, n, rate, NL_BOUNDS_T, &o, &b1, NULL) == NL_OK);
+  NL_CHECK(b1.f_inf_rms >= b0.f_inf_rms);   /* less energy in Gamma: F_inf_rms no lower */
+  o = (nl_bounds_bandwidth_options){.two_sided = 1, .window = NL_SPECTRUM_HANN};
+  NL_CHECK(nl_bounds_bandwidth_1d_with(x, n, rate, NL_BOUNDS_T, &o, &b1, NULL) == NL_OK);
+  NL_CHECK(b1.f_sup >= 37 * rate / n && b1.f_sup <= 40 * rate / n);
+  NL_CHECK(nl_bounds_bandwidth_1d_with(x, n, rate, 0.0, &o, &b1, NULL) == NL_EINVAL);
   /* the moments are the bandwidth's own bits */
   double mean, sigma;
   nl_bounds_moments(x, n, &mean, &sigma);
