@@ -391,6 +391,7 @@ void c5_readings_case(const nl_study_cheng *s, c5_readings *R, c5_pools *T,
   pl.keep = po->keep * ro->stride; /* N x stride tail states per run */
   nl_cheng_model_options mm = *mo; /* every fit of this texture shares one memo of EM fits */
   mm.gmm.memo = nl_gmm_memo_alloc();
+  mm.gmm.workspace = nl_gmm_workspace_alloc(); /* and one workspace of their arrays */
   int reps = ro->reps, ng = 0;
   nl_study_cheng_repro rp[MAXREP];
   nl_cheng_pool *pools[MAXREP][2];
@@ -453,7 +454,8 @@ void c5_readings_case(const nl_study_cheng *s, c5_readings *R, c5_pools *T,
         fit_rows(R, &A[rd_index(1, n, 1, p)], &g->f[2], g->f[2].acut, th->texture, 1, n, 1, p);
         for (int v = 0; v < 3; v++) free(g->f[v].path);
       }
-  nl_gmm_memo_free(mm.gmm.memo);
+  nl_gmm_memo_free(mm.gmm.memo);   /* its models first: their arrays go back to the workspace */
+  nl_gmm_workspace_free(mm.gmm.workspace);
   for (int k = 0; k < reps; k++) {
     nl_cheng_pool_free(pools[k][0]);
     nl_cheng_pool_free(pools[k][1]);

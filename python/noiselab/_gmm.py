@@ -15,7 +15,8 @@ class _Options(ctypes.Structure):
     _fields_ = [("covariance", ctypes.c_int), ("tol", ctypes.c_double),
                 ("reg_covar", ctypes.c_double), ("max_iter", ctypes.c_size_t),
                 ("seed", ctypes.c_ulong), ("init_labels", ctypes.POINTER(ctypes.c_int)),
-                ("threads", ctypes.c_int), ("memo", ctypes.c_void_p)]
+                ("threads", ctypes.c_int), ("memo", ctypes.c_void_p),
+                ("workspace", ctypes.c_void_p)]
 
 
 @mirror("nl_gmm")

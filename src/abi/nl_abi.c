@@ -34,6 +34,7 @@ static const abi_entry abi[] = {
   T(nl_gmm_options) M(nl_gmm_options, covariance) M(nl_gmm_options, tol)
     M(nl_gmm_options, reg_covar) M(nl_gmm_options, max_iter) M(nl_gmm_options, seed)
     M(nl_gmm_options, init_labels) M(nl_gmm_options, threads) M(nl_gmm_options, memo)
+    M(nl_gmm_options, workspace)
   T(nl_gmm) M(nl_gmm, k) M(nl_gmm, d) M(nl_gmm, covariance) M(nl_gmm, weights) M(nl_gmm, means)
     M(nl_gmm, covs) M(nl_gmm, chol) M(nl_gmm, prec) M(nl_gmm, n) M(nl_gmm, loglik) M(nl_gmm, aic)
     M(nl_gmm, bic) M(nl_gmm, nparams) M(nl_gmm, iterations) M(nl_gmm, converged)

@@ -48,9 +48,9 @@ typedef struct {
   double *z[NL_PARALLEL_MAX];   /* per thread, nb x d: M-step block (full covariances) */
   double *rmax;   /* kcap */
   int *bad;       /* kcap: factorisation failed */
-} workspace;
+} buffers;
 
-static void ws_init(workspace *w, size_t n, size_t d, size_t kcap, int threads)
+static void ws_init(buffers *w, size_t n, size_t d, size_t kcap, int threads)
 {
   w->nb = n < BLOCK ? n : BLOCK;
   w->kcap = kcap;
@@ -65,7 +65,7 @@ static void ws_init(workspace *w, size_t n, size_t d, size_t kcap, int threads)
   w->bad = nl_xmalloc(kcap * sizeof(int));
 }
 
-static void ws_free(workspace *w)
+static void ws_free(buffers *w)
 {
   free(w->R); free(w->rmax); free(w->bad);
   for (int t = 0; t < w->nt; t++) { free(w->y[t]); free(w->z[t]); }
@@ -117,64 +117,82 @@ static size_t cov_size(const nl_gmm *g)
 
 /* K d^2 arrays (covariances, factors, inverses): several MB each, and a
  * C5 run fits about a hundred AIC paths. Fresh memory for each path made a
- * third of a quick C5 run page faults and page zeroing, so the arrays are
- * kept after nl_gmm_free in a small process-wide cache (at most
- * CACHE_SLOTS arrays, CACHE_MAX bytes, behind a mutex) for the next model.
+ * third of a quick C5 run page faults and page zeroing, so a caller that
+ * fits many paths passes a workspace (o->workspace) that keeps the arrays
+ * after nl_gmm_free for the next model: at most CACHE_SLOTS arrays,
+ * CACHE_MAX bytes, behind a mutex, so the threads of one run share it.
+ * Without one, the arrays are malloc'd and freed.
  * They are not advised onto 2 MB pages (MADV_HUGEPAGE): on this project's
  * machines (2-core VMs) a fresh 2 MB page cost the kernel several times
- * what 512 small ones do, and C5's quick run took 2.62 s of system time
- * with the advice against 0.80 s without (means of four alternating runs;
- * user time the same, 9.3 s; the BLAS calls stream through the arrays, so
- * small pages' TLB misses do not show). Not per thread: arrays held only in
- * thread-local storage would be lost when a worker thread ends, and look
- * leaked to LeakSanitizer, which our sanitizer runs keep off TLS (use_tls=0). A freed array
- * that finds the cache full pushes out smaller ones (a larger array serves
- * their requests too): C5's quick run alternates 34 MB and 79 MB arrays, and
- * keeping the small ones re-zeroed the large ones' pages for every path. No value is ever read before it is written,
- * so the results do not depend on which memory a model gets. A header in
- * front of each array keeps its size. The slots hold what is alive at
+ * what 512 small ones do (C5's quick run: 2.62 s of system time with the
+ * advice against 0.80 s without; the BLAS calls stream through the
+ * arrays, so small pages' TLB misses do not show). A freed array that
+ * finds the cache full pushes out smaller ones (a larger array serves
+ * their requests too): C5's quick run alternates 34 MB and 79 MB arrays,
+ * and keeping the small ones re-zeroed the large ones' pages for every
+ * path. No value is ever read before it is written, so the results do
+ * not depend on which memory a model gets. A header in front of each
+ * array keeps its size and its workspace. The slots hold what is alive at
  * once: 3 arrays of each of the 2 models an AIC path alternates between,
- * for every thread running a path, plus the memo's models (up to 8 of 3).
- * With 8 slots C5's quick run (2 threads) missed the cache for 118 arrays,
- * 2.4 GB of fresh pages; with 32 for 48, 1.7 GB: its working set, grown in
- * 4 steps as d and K grow. */
+ * for every thread running a path, plus the memo's models (up to 8 of 3). */
 #define GRAIN ((size_t)2 << 20)   /* sizes are rounded to it: a freed array serves a bit more */
 #define HEADER 64
 #define CACHE_SLOTS 32
 #define CACHE_MAX ((size_t)1 << 30)
 
 typedef struct { void *base; size_t bytes; } cached;
-static cached cache[CACHE_SLOTS];
-static size_t cache_total;
-static pthread_mutex_t cache_lock = PTHREAD_MUTEX_INITIALIZER;
+struct nl_gmm_workspace {
+  pthread_mutex_t lock;
+  cached cache[CACHE_SLOTS];
+  size_t total;
+};
+typedef struct { size_t bytes; nl_gmm_workspace *ws; } header;
 
-static double *big_alloc(size_t count, int zero)
+nl_gmm_workspace *nl_gmm_workspace_alloc(void)
+{
+  nl_gmm_workspace *w = calloc(1, sizeof *w);
+  if (w) pthread_mutex_init(&w->lock, NULL);
+  return w;
+}
+
+void nl_gmm_workspace_free(nl_gmm_workspace *w)
+{
+  if (!w) return;
+  for (int q = 0; q < CACHE_SLOTS; q++) free(w->cache[q].base);
+  pthread_mutex_destroy(&w->lock);
+  free(w);
+}
+
+size_t nl_gmm_workspace_bytes(const nl_gmm_workspace *w)
+{
+  return w ? w->total : 0;
+}
+
+static double *big_alloc(nl_gmm_workspace *ws, size_t count, int zero)
 {
   size_t bytes = HEADER + count * sizeof(double);
   void *base = NULL;
-  if (bytes < 2 * GRAIN) {
+  if (!ws || bytes < 2 * GRAIN) {
     base = zero ? nl_xcalloc(1, bytes) : nl_xmalloc(bytes);
+    ws = NULL;
   } else {
     bytes = (bytes + GRAIN - 1) / GRAIN * GRAIN;
     int best = -1;   /* the smallest cached array that is large enough */
-    pthread_mutex_lock(&cache_lock);
+    pthread_mutex_lock(&ws->lock);
     for (int q = 0; q < CACHE_SLOTS; q++)
-      if (cache[q].base && cache[q].bytes >= bytes && (best < 0 || cache[q].bytes < cache[best].bytes)) best = q;
+      if (ws->cache[q].base && ws->cache[q].bytes >= bytes &&
+          (best < 0 || ws->cache[q].bytes < ws->cache[best].bytes)) best = q;
     if (best >= 0) {
-      base = cache[best].base;
-      bytes = cache[best].bytes;
-      cache_total -= bytes;
-      cache[best].base = NULL;
+      base = ws->cache[best].base;
+      bytes = ws->cache[best].bytes;
+      ws->total -= bytes;
+      ws->cache[best].base = NULL;
     }
-    pthread_mutex_unlock(&cache_lock);
-    if (best >= 0) {
-      if (zero) memset((char *)base + HEADER, 0, count * sizeof(double));
-    } else {
-      base = nl_xmalloc(bytes);
-      if (zero) memset((char *)base + HEADER, 0, count * sizeof(double));
-    }
+    pthread_mutex_unlock(&ws->lock);
+    if (best < 0) base = nl_xmalloc(bytes);
+    if (zero) memset((char *)base + HEADER, 0, count * sizeof(double));
   }
-  *(size_t *)base = bytes;
+  *(header *)base = (header){bytes, ws};
   return (double *)((char *)base + HEADER);
 }
 
@@ -182,28 +200,30 @@ static void big_free(double *p)
 {
   if (!p) return;
   void *base = (char *)p - HEADER;
-  size_t bytes = *(size_t *)base;
-  if (bytes >= 2 * GRAIN) {
-    pthread_mutex_lock(&cache_lock);
+  header h = *(header *)base;
+  nl_gmm_workspace *ws = h.ws;
+  if (ws) {
+    pthread_mutex_lock(&ws->lock);
     int kept = 0;
     for (;;) {   /* room for it: smaller arrays make way (a larger one serves their requests too) */
       int freeslot = -1, small = -1;
       for (int q = 0; q < CACHE_SLOTS; q++) {
-        if (!cache[q].base) freeslot = q;
-        else if (cache[q].bytes < bytes && (small < 0 || cache[q].bytes < cache[small].bytes)) small = q;
+        if (!ws->cache[q].base) freeslot = q;
+        else if (ws->cache[q].bytes < h.bytes && (small < 0 || ws->cache[q].bytes < ws->cache[small].bytes))
+          small = q;
       }
-      if (freeslot >= 0 && cache_total + bytes <= CACHE_MAX) {
-        cache[freeslot] = (cached){base, bytes};
-        cache_total += bytes;
+      if (freeslot >= 0 && ws->total + h.bytes <= CACHE_MAX) {
+        ws->cache[freeslot] = (cached){base, h.bytes};
+        ws->total += h.bytes;
         kept = 1;
         break;
       }
       if (small < 0) break;
-      free(cache[small].base);
-      cache_total -= cache[small].bytes;
-      cache[small].base = NULL;
+      free(ws->cache[small].base);
+      ws->total -= ws->cache[small].bytes;
+      ws->cache[small].base = NULL;
     }
-    pthread_mutex_unlock(&cache_lock);
+    pthread_mutex_unlock(&ws->lock);
     if (kept) return;
   }
   free(base);
@@ -211,7 +231,8 @@ static void big_free(double *p)
 
 /* Room for kcap components; zeroed only when zero (a fit writes every
  * entry, and untouched pages of unzeroed memory cost nothing). */
-static nl_gmm *gmm_new(size_t k, size_t kcap, size_t d, nl_gmm_covariance covariance, int zero)
+static nl_gmm *gmm_new(size_t k, size_t kcap, size_t d, nl_gmm_covariance covariance, int zero,
+                       nl_gmm_workspace *ws)
 {
   nl_gmm *g = nl_xcalloc(1, sizeof *g);
   g->k = k;
@@ -221,9 +242,9 @@ static nl_gmm *gmm_new(size_t k, size_t kcap, size_t d, nl_gmm_covariance covari
 #define GET(m) (zero ? nl_xcalloc((m), sizeof(double)) : nl_xmalloc((m) * sizeof(double)))
   g->weights = GET(kcap);
   g->means = GET(kcap * d);
-  g->covs = big_alloc(kcap * cs, zero);
-  g->chol = big_alloc(kcap * cs, zero);
-  g->prec = full_storage(covariance) ? big_alloc(kcap * d * d, zero) : NULL;
+  g->covs = big_alloc(ws, kcap * cs, zero);
+  g->chol = big_alloc(ws, kcap * cs, zero);
+  g->prec = full_storage(covariance) ? big_alloc(ws, kcap * d * d, zero) : NULL;
 #undef GET
   g->nparams = nl_gmm_nparams(k, d, covariance);
   return g;
@@ -231,7 +252,13 @@ static nl_gmm *gmm_new(size_t k, size_t kcap, size_t d, nl_gmm_covariance covari
 
 nl_gmm *nl_gmm_alloc(size_t k, size_t d, nl_gmm_covariance covariance)
 {
-  return gmm_new(k, k, d, covariance, 1);
+  return gmm_new(k, k, d, covariance, 1, NULL);
+}
+
+nl_gmm *nl_gmm_alloc_workspace(size_t k, size_t d, nl_gmm_covariance covariance,
+                               nl_gmm_workspace *w)
+{
+  return gmm_new(k, k, d, covariance, 1, w);
 }
 
 double nl_gmm_bytes(size_t n, size_t d, size_t k, nl_gmm_covariance covariance)
@@ -324,7 +351,7 @@ static void estep_item(void *ctx, size_t item, int t)
  * threads (w's scratch; w NULL: one thread, own scratch); the sums run in
  * row order afterwards, so the result does not depend on the threads. */
 static double e_step(const nl_gmm *g, const double *x, size_t n, double *R, double *logp,
-                     workspace *w)
+                     buffers *w)
 {
   size_t K = g->k, d = g->d, nb0 = n < BLOCK ? n : BLOCK, nblk = (n + BLOCK - 1) / BLOCK;
   double *own = NULL, *const *y = w ? w->y : &own;
@@ -410,7 +437,7 @@ static int factorize_one(nl_gmm *g, size_t k)
 /* The M-step's items: component k's covariance from its responsibilities
  * (scatter with its thread's z) and its factor; each writes only component
  * k's arrays and bad[k]. */
-typedef struct { nl_gmm *g; const double *x; size_t n; const double *R; double reg; workspace *w; } mstep_job;
+typedef struct { nl_gmm *g; const double *x; size_t n; const double *R; double reg; buffers *w; } mstep_job;
 
 static void mstep_item(void *ctx, size_t k, int t)
 {
@@ -452,7 +479,7 @@ static void mstep_item(void *ctx, size_t k, int t)
  * _estimate_gaussian_covariances_tied, the pooled within-component
  * covariance), into every component; its factor once, copied. The
  * weights still hold N_k here. */
-static void pool_tied(nl_gmm *g, double reg, workspace *w)
+static void pool_tied(nl_gmm *g, double reg, buffers *w)
 {
   size_t K = g->k, d = g->d, cs = d * d;
   double nsum = 0.0, *S = g->covs;
@@ -479,7 +506,7 @@ static void pool_tied(nl_gmm *g, double reg, workspace *w)
  * the first component (in order) whose covariance is not positive
  * definite, as a serial loop would. */
 static nl_status m_step(nl_gmm *g, const double *x, size_t n, const double *R, double reg,
-                        int normalise, workspace *w, nl_error *err)
+                        int normalise, buffers *w, nl_error *err)
 {
   size_t K = g->k, d = g->d;
   double total = 0.0;
@@ -638,7 +665,7 @@ static nl_status check_fit_args(const nl_gmm *g, const double *x, size_t n,
 
 /* EM on g (k components) with the buffers of w (kcap >= k). */
 static nl_status fit_ws(nl_gmm *g, const double *x, size_t n, const nl_gmm_options *o,
-                        workspace *w, nl_error *err)
+                        buffers *w, nl_error *err)
 {
   nl_status s;
   size_t K = g->k;
@@ -675,7 +702,7 @@ nl_status nl_gmm_fit(nl_gmm *g, const double *x, size_t n, const nl_gmm_options 
 {
   nl_status s = check_fit_args(g, x, n, o, err);
   if (s) return s;
-  workspace w;
+  buffers w;
   ws_init(&w, n, g->d, g->k, o->threads);
   int threads = blas_threads_limit(n, g->d);
   s = fit_ws(g, x, n, o, &w, err);
@@ -862,10 +889,11 @@ static size_t model_bytes(const nl_gmm *g)
   return sizeof(double) * (g->k * (1 + g->d) + g->k * cs * (full_storage(g->covariance) ? 3 : 2));
 }
 
-/* A copy of g with exactly g->k components. */
+/* A copy of g with exactly g->k components, its arrays from g's workspace. */
 static nl_gmm *gmm_clone(const nl_gmm *g)
 {
-  nl_gmm *c = gmm_new(g->k, g->k, g->d, g->covariance, 0);
+  nl_gmm *c = gmm_new(g->k, g->k, g->d, g->covariance, 0,
+                      ((header *)(void *)((char *)g->covs - HEADER))->ws);
   size_t k = g->k, d = g->d, cs = cov_size(g);
   memcpy(c->weights, g->weights, k * sizeof(double));
   memcpy(c->means, g->means, k * d * sizeof(double));
@@ -917,14 +945,14 @@ typedef struct {
   size_t n, d, kcap;
   const nl_gmm_options *o;
   nl_gmm *spare;
-  workspace w;
+  buffers w;
   int threads, ready;
 } path_fits;
 
 /* Fits K components into the spare model (or a new one) -> *out. */
 static nl_status path_fit(path_fits *p, size_t k, nl_gmm **out, nl_error *err)
 {
-  nl_gmm *g = p->spare ? p->spare : gmm_new(k, p->kcap, p->d, p->o->covariance, 0);
+  nl_gmm *g = p->spare ? p->spare : gmm_new(k, p->kcap, p->d, p->o->covariance, 0, p->o->workspace);
   p->spare = NULL;
   g->k = k;
   g->nparams = nl_gmm_nparams(k, p->d, p->o->covariance);

@@ -82,7 +82,27 @@ typedef struct {
   int threads;              /* E- and M-step work on this many threads
                                (nl_parallel_for); 1. Results do not depend on it. */
   struct nl_gmm_memo *memo; /* fits shared between AIC paths (below); NULL */
+  struct nl_gmm_workspace *workspace;   /* arrays kept between fits (below); NULL */
 } nl_gmm_options;
+
+/* A workspace keeps the large arrays (K d^2 covariances, factors,
+ * inverses) of the models an AIC path makes after they are freed, for the
+ * next path's models, instead of returning them to the system: a program
+ * that fits many paths of large models (C5: about a hundred) spends a
+ * third of its time faulting in and zeroing fresh pages without one. At
+ * most 32 arrays, 1 GiB; several threads may share one (a mutex). Models
+ * made with o.workspace set must be freed before the workspace. Results
+ * do not depend on it.
+ *   nl_gmm_workspace *w = nl_gmm_workspace_alloc();
+ *   o.workspace = w;
+ *   ... nl_gmm_select_aic(..., &o, ...) for every path, nl_gmm_free(best) ...
+ *   nl_gmm_workspace_free(w);
+ * nl_gmm_workspace_alloc returns NULL when out of memory; _bytes is what it
+ * holds now. */
+typedef struct nl_gmm_workspace nl_gmm_workspace;
+nl_gmm_workspace *nl_gmm_workspace_alloc(void);
+void nl_gmm_workspace_free(nl_gmm_workspace *w);
+size_t nl_gmm_workspace_bytes(const nl_gmm_workspace *w);
 
 void nl_gmm_options_default(nl_gmm_options *o);
 /* What nl_gmm_fit (and so nl_gmm_select_aic) accepts, as `stat gmm` parses
@@ -113,6 +133,10 @@ typedef struct {
 } nl_gmm;
 
 nl_gmm *nl_gmm_alloc(size_t k, size_t d, nl_gmm_covariance covariance);
+/* nl_gmm_alloc with its large arrays taken from (and, at nl_gmm_free,
+ * given back to) w; w NULL: nl_gmm_alloc. */
+nl_gmm *nl_gmm_alloc_workspace(size_t k, size_t d, nl_gmm_covariance covariance,
+                               nl_gmm_workspace *w);
 /* Bytes a fit of k components to n rows of d columns needs (responsibilities,
  * k-means distances, two models), and a check of it against the memory
  * available: "200000 rows of 3 columns with 5000 components need 16 GB;
