@@ -8,8 +8,9 @@
 #    calls lack extern "C": a C++ program calls one through a pointer, which
 #    links only with C linkage);
 #  - an outside C program, built with `pkg-config --cflags --libs noiselab`,
-#    evaluates Perlin's improved noise, writes a table with nl_table and a
-#    PNG through the image module; the values are checked by column name,
+#    evaluates Perlin's improved noise, writes a table with nl_table, a PNG
+#    (the library's own encoder) and a TIFF through the image module; the
+#    values are checked by column name,
 #    and the module must come from the destdir (found beside the installed
 #    library, src/image/nl_image.c), not from the build tree;
 #  - the same program linked statically (`pkg-config --static`) gives the
@@ -107,7 +108,7 @@ cat >"$out/outside.c" <<'C'
 
 int main(int argc, char **argv)
 {
-  if (argc < 2) { fprintf(stderr, "usage: outside TABLE [PNG]\n"); return 2; }
+  if (argc < 2) { fprintf(stderr, "usage: outside TABLE [IMAGE...]\n"); return 2; }
   nl_noise_perm3 p;
   nl_noise_perm3_reference(&p);
   const char *cols[] = {"x", "y", "z", "noise"};
@@ -124,7 +125,8 @@ int main(int argc, char **argv)
   nl_table_free(t);
   if (argc > 2) {
     nl_image *im = nl_image_from_values(row, 8, 8, -1, 1);
-    if (nl_image_write(im, argv[2], 8, &err)) { fprintf(stderr, "%s\n", err.msg); return 1; }
+    for (int a = 2; a < argc; a++)
+      if (nl_image_write(im, argv[a], 8, &err)) { fprintf(stderr, "%s\n", err.msg); return 1; }
     nl_image_free(im);
     FILE *maps = fopen("/proc/self/maps", "r");   /* where the image module came from */
     char line[4096];
@@ -144,11 +146,13 @@ C
   || { cat "$out/cc.log"; fail "the outside program does not link statically with: $slibs"; }
 # The module is looked up beside the library first: a build-tree module
 # would also load, so the test names the one that did.
-LD_LIBRARY_PATH="$lib" "$out/outside" "$out/noise.tsv" "$out/noise.png" >"$out/run.log" 2>&1 \
+LD_LIBRARY_PATH="$lib" "$out/outside" "$out/noise.tsv" "$out/noise.png" "$out/noise.tif" \
+  >"$out/run.log" 2>&1 \
   || { cat "$out/run.log"; fail "the outside program failed"; }
 grep -q "^module $lib/noiselab/libnl_oiio.so\$" "$out/run.log" \
   || fail "image module not taken from the install ($lib/noiselab): $(cat "$out/run.log")"
 [ -s "$out/noise.png" ] || fail "no PNG written"
+[ -s "$out/noise.tif" ] || fail "no TIFF written"
 "$out/outside-static" "$out/noise-static.tsv" || fail "the static program failed"
 ! grep -q libnoiselab <<<"$(ldd "$out/outside-static" 2>&1)" || fail "the static program needs libnoiselab.so"
 cmp -s "$out/noise.tsv" "$out/noise-static.tsv" || fail "shared and static programs wrote different tables"
