@@ -208,18 +208,20 @@ static void grad2_points(const nl_noise_grad2 *t, const nl_f32_oct *o, const flo
   const nl_f32_kernels *k = kern();
   if (k && g2_native(t) && n >= G2_TABLE_MIN) {
     uint32_t *pp = nl_xmalloc((t->m + 1) * sizeof *pp);
-    float *gt = nl_xmalloc(2 * (t->m + 1) * sizeof *gt);
-    for (size_t s = 0; s <= t->m; s++) {
-      unsigned e = t->perm[s & g.km];
-      pp[s] = e;
-      gt[2 * s] = (float)t->gx[e];
-      gt[2 * s + 1] = (float)t->gy[e];
+    float *g4 = nl_xmalloc(4 * t->m * sizeof *g4);
+    for (size_t s = 0; s <= t->m; s++) pp[s] = t->perm[s & g.km];
+    for (size_t s = 0; s < t->m; s++) {
+      unsigned e0 = t->perm[s], e1 = t->perm[(s + 1) & g.km];
+      g4[4 * s] = (float)t->gx[e0];
+      g4[4 * s + 1] = (float)t->gy[e0];
+      g4[4 * s + 2] = (float)t->gx[e1];
+      g4[4 * s + 3] = (float)t->gy[e1];
     }
     g.pp = pp;
-    g.g = gt;
+    g.g4 = g4;
     k->g2_points(&g, o, x, y, n, out);
     free(pp);
-    free(gt);
+    free(g4);
     return;
   }
   for (size_t i = 0; i < n; i++) out[i] = s_grad2_oct(&g, o, x[i], y[i]);

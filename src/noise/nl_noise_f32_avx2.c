@@ -89,11 +89,11 @@ static inline void g2_get(const nl_f32_g2 *g, vi cx, vi cy, vf gx[4], vf gy[4])
   s[0] = _mm256_and_si256(_mm256_add_epi32(pi0, (__m256i)cy), km);
   s[1] = _mm256_and_si256(_mm256_add_epi32(pi1, (__m256i)cy), km);
   for (int col = 0; col < 2; col++) {
-    __m256i e0 = _mm256_slli_epi32(s[col], 1), e1 = _mm256_add_epi32(e0, _mm256_set1_epi32(2));
-    gx[2 * col] = (vf)_mm256_i32gather_ps(g->g, e0, 4);
-    gy[2 * col] = (vf)_mm256_i32gather_ps(g->g + 1, e0, 4);
-    gx[2 * col + 1] = (vf)_mm256_i32gather_ps(g->g, e1, 4);
-    gy[2 * col + 1] = (vf)_mm256_i32gather_ps(g->g + 1, e1, 4);
+    __m256i e = _mm256_slli_epi32(s[col], 2);
+    gx[2 * col] = (vf)_mm256_i32gather_ps(g->g4, e, 4);
+    gy[2 * col] = (vf)_mm256_i32gather_ps(g->g4 + 1, e, 4);
+    gx[2 * col + 1] = (vf)_mm256_i32gather_ps(g->g4 + 2, e, 4);
+    gy[2 * col + 1] = (vf)_mm256_i32gather_ps(g->g4 + 3, e, 4);
   }
 }
 

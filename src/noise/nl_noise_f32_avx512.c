@@ -80,21 +80,41 @@ static inline vf grad3(const p3ctx *c, int comp, vi h)
   return (vf)_mm512_permutexvar_ps((__m512i)h, c->g[comp]);
 }
 
-/* The batch tables by gathers (too big for registers at m = 512). */
+/* The batch tables lane by lane: a gather costs more than its loads one
+ * by one on AMD Zen 4. Point q's column (P[i] + j) mod m reads its two
+ * corners as one 16-byte entry of g4, inserted in quarter q / 4 of register
+ * q mod 4; a 4 x 4 transpose within each quarter then leaves gx and gy of
+ * both corners with point q in lane q. */
+#define G2_INSERT(r, k, ptr) (r) = _mm512_insertf32x4((r), _mm_loadu_ps(ptr), (k))
 static inline void g2_get(const nl_f32_g2 *g, vi cx, vi cy, vf gx[4], vf gy[4])
 {
-  __m512i km = _mm512_set1_epi32((int)g->km), one = _mm512_set1_epi32(1);
-  __m512i pi0 = _mm512_i32gather_epi32((__m512i)cx, g->pp, 4);
-  __m512i pi1 = _mm512_i32gather_epi32(_mm512_add_epi32((__m512i)cx, one), g->pp, 4);
-  __m512i s[2];
-  s[0] = _mm512_and_si512(_mm512_add_epi32(pi0, (__m512i)cy), km);
-  s[1] = _mm512_and_si512(_mm512_add_epi32(pi1, (__m512i)cy), km);
+  const uint32_t *pp = g->pp;
+  const float *G = g->g4;
+  unsigned km = g->km;
+  __m512 r[2][4];
+  for (int rr = 0; rr < 4; rr++) {
+    const float *e[2][4];
+    for (int k = 0; k < 4; k++) {
+      int q = 4 * k + rr;
+      unsigned i = (unsigned)cx[q], j = (unsigned)cy[q];
+      e[0][k] = G + 4 * ((pp[i] + j) & km);
+      e[1][k] = G + 4 * ((pp[i + 1] + j) & km);
+    }
+    for (int col = 0; col < 2; col++) {
+      __m512 v = _mm512_castps128_ps512(_mm_loadu_ps(e[col][0]));
+      G2_INSERT(v, 1, e[col][1]);
+      G2_INSERT(v, 2, e[col][2]);
+      G2_INSERT(v, 3, e[col][3]);
+      r[col][rr] = v;
+    }
+  }
   for (int col = 0; col < 2; col++) {
-    __m512i e0 = _mm512_slli_epi32(s[col], 1), e1 = _mm512_add_epi32(e0, _mm512_set1_epi32(2));
-    gx[2 * col] = (vf)_mm512_i32gather_ps(e0, g->g, 4);
-    gy[2 * col] = (vf)_mm512_i32gather_ps(e0, g->g + 1, 4);
-    gx[2 * col + 1] = (vf)_mm512_i32gather_ps(e1, g->g, 4);
-    gy[2 * col + 1] = (vf)_mm512_i32gather_ps(e1, g->g + 1, 4);
+    __m512 t0 = _mm512_unpacklo_ps(r[col][0], r[col][1]), t1 = _mm512_unpackhi_ps(r[col][0], r[col][1]);
+    __m512 t2 = _mm512_unpacklo_ps(r[col][2], r[col][3]), t3 = _mm512_unpackhi_ps(r[col][2], r[col][3]);
+    gx[2 * col] = (vf)_mm512_castpd_ps(_mm512_unpacklo_pd(_mm512_castps_pd(t0), _mm512_castps_pd(t2)));
+    gy[2 * col] = (vf)_mm512_castpd_ps(_mm512_unpackhi_pd(_mm512_castps_pd(t0), _mm512_castps_pd(t2)));
+    gx[2 * col + 1] = (vf)_mm512_castpd_ps(_mm512_unpacklo_pd(_mm512_castps_pd(t1), _mm512_castps_pd(t3)));
+    gy[2 * col + 1] = (vf)_mm512_castpd_ps(_mm512_unpackhi_pd(_mm512_castps_pd(t1), _mm512_castps_pd(t3)));
   }
 }
 

@@ -36,6 +36,23 @@ static inline vi v_iota(void)
   return r;
 }
 
+/* Samples k .. k + W - 1 of a row at octave frequency f (f NULL: 1, and
+ * x * 1 = x, so skipping it changes no bit): fmaf(k, dx, x0) * f. kf is
+ * k as a float, kept by adding W while that is exact (k < 2^24). */
+static inline vf row_x(vf kf, float x0, float dx, const vf *f)
+{
+  vf x = NLF_FMA(kf, NLF_C(dx), NLF_C(x0));
+  return f ? x * *f : x;
+}
+static inline vf row_k(size_t k) { return v_i2f(vi_c((int)k) + v_iota()); }
+/* The largest cell the stored samples of a row reach: samples are
+ * monotone in k, so it is the larger of the first and last sample's. */
+static inline long long row_hi(float x0, float dx, const vf *f, size_t n)
+{
+  vi a = v_cvtt(v_floor(row_x(row_k(0), x0, dx, f))), b = v_cvtt(v_floor(row_x(row_k(n - 1), x0, dx, f)));
+  return a[0] > b[0] ? a[0] : b[0];
+}
+
 /* ---- Perlin's improved noise ---------------------------------------------- */
 
 /* the column of the corners h[0..3] of hash3's order */
@@ -98,13 +115,17 @@ typedef struct {
   vf ys, zs, fy, fy1, fz, fz1, v, w;
   vi Y, Z;
   vf wgx[2], wa[2];
-  long long base;
+  long long base, hi;   /* window's first column; the row's last cell */
   int have;
 } p3row;
 
 static inline void p3_window(const p3ctx *c, p3row *r, long long base)
 {
   for (int half = 0; half < 2; half++) {
+    if (half == 1 && r->hi + 1 < base + W) {   /* the row ends in the first half */
+      r->wgx[1] = r->wa[1] = NLF_C(0.0f);
+      break;
+    }
     vi X = vi_c((int)(base + half * W)) + v_iota(), h[8];
     hash3(c, X, r->Y, r->Z, h);
     p3_column(c, h, r->fy, r->fy1, r->fz, r->fz1, r->v, r->w, &r->wgx[half], &r->wa[half]);
@@ -133,6 +154,7 @@ static inline vf p3_row_vec(const p3ctx *c, p3row *r, vf x)
 static void p3_row(const nl_noise_perm3 *p, const nl_f32_oct *o, float x0, float dx, float y, float z,
                    size_t n, float *out)
 {
+  if (n == 0) return;
   if (o && o->n <= 0) {   /* an empty sum */
     memset(out, 0, n * sizeof *out);
     return;
@@ -155,15 +177,19 @@ static void p3_row(const nl_noise_perm3 *p, const nl_f32_oct *o, float x0, float
     r.fz1 = r.fz - NLF_C(1.0f);
     r.have = 0;
     r.base = 0;
-    for (size_t k = 0; k < n; k += W) {
-      vf x = NLF_FMA(v_i2f(vi_c((int)k) + v_iota()), NLF_C(dx), NLF_C(x0)) * f;
+    r.hi = row_hi(x0, dx, o ? &f : NULL, n);
+    vf kf = row_k(0);
+    for (size_t k = 0; k < n; k += W, kf = k < (1u << 24) ? kf + NLF_C((float)W) : row_k(k)) {
+      vf x = row_x(kf, x0, dx, o ? &f : NULL);
       vf val = p3_row_vec(&c, &r, x);
       size_t m = n - k < W ? n - k : W;
       float buf[W];
       if (o) {
         if (o->turbulence) val = v_abs(val);
         vf sum = NLF_C(0.0f);
-        if (l > 0) {
+        if (l > 0 && m == W) {
+          sum = v_load(out + k);
+        } else if (l > 0) {
           memcpy(buf, out + k, m * sizeof *buf);
           sum = v_load(buf);
         }
@@ -258,7 +284,7 @@ typedef struct {
   vf ys, fy, fy1, v;
   unsigned jm;
   vf wgx[2], wa[2];
-  long long base;
+  long long base, hi;
   int have;
 } g2row;
 
@@ -267,8 +293,9 @@ static inline void g2_window(const nl_f32_g2 *g, g2row *r, long long base)
   const unsigned *P = g->t->perm;
   const double *GX = g->t->gx, *GY = g->t->gy;
   unsigned km = g->km, j = r->jm;
-  float a[4][2 * W];
-  for (int q = 0; q < 2 * W; q++) {
+  float a[4][2 * W] = {{0}};
+  long long cols = r->hi + 2 - base < 2 * W ? r->hi + 2 - base : 2 * W;
+  for (int q = 0; q < cols; q++) {
     unsigned s = (P[(unsigned)(base + q) & km] + j) & km, k0 = P[s], k1 = P[(s + 1) & km];
     a[0][q] = (float)GX[k0];
     a[1][q] = (float)GY[k0];
@@ -302,6 +329,7 @@ static inline vf g2_row_vec(const nl_f32_g2 *g, g2row *r, vf x)
 static void g2_row(const nl_f32_g2 *g, const nl_f32_oct *o, float x0, float dx, float y, size_t n,
                    float *out)
 {
+  if (n == 0) return;
   if (o && o->n <= 0) {   /* an empty sum */
     memset(out, 0, n * sizeof *out);
     return;
@@ -319,15 +347,19 @@ static void g2_row(const nl_f32_g2 *g, const nl_f32_oct *o, float x0, float dx, 
     r.fy1 = r.fy - NLF_C(1.0f);
     r.have = 0;
     r.base = 0;
-    for (size_t k = 0; k < n; k += W) {
-      vf x = NLF_FMA(v_i2f(vi_c((int)k) + v_iota()), NLF_C(dx), NLF_C(x0)) * f;
+    r.hi = row_hi(x0, dx, o ? &f : NULL, n);
+    vf kf = row_k(0);
+    for (size_t k = 0; k < n; k += W, kf = k < (1u << 24) ? kf + NLF_C((float)W) : row_k(k)) {
+      vf x = row_x(kf, x0, dx, o ? &f : NULL);
       vf val = g2_row_vec(g, &r, x);
       size_t mm = n - k < W ? n - k : W;
       float buf[W];
       if (o) {
         if (o->turbulence) val = v_abs(val);
         vf sum = NLF_C(0.0f);
-        if (l > 0) {
+        if (l > 0 && mm == W) {
+          sum = v_load(out + k);
+        } else if (l > 0) {
           memcpy(buf, out + k, mm * sizeof *buf);
           sum = v_load(buf);
         }

@@ -16,15 +16,15 @@ typedef struct {
 } nl_f32_oct;
 
 /* The 2D table as the kernels read it (m a power of two, m <= 2^24).
- * pp and g are built only for batches: pp[s] = P[s mod m] and
- * g[2 s], g[2 s + 1] = (float)gx, (float)gy of entry P[s mod m], s <= m,
- * so that a column's pair (P[i], P[i + 1]) and a corner's pair of lattice
- * rows are one 8-byte read each. */
+ * pp and g4 are built only for batches: pp[s] = P[s mod m] (s <= m) and
+ * g4[4 s .. 4 s + 3] = (float) gx, gy of entries P[s] and P[(s + 1) mod m]
+ * (s < m), so that a column's pair (P[i], P[i + 1]) is one 8-byte read and
+ * a column's two corners (dy = 0, 1) one 16-byte read. */
 typedef struct {
   const nl_noise_grad2 *t;
   unsigned m, km;
   const uint32_t *pp;
-  const float *g;
+  const float *g4;
 } nl_f32_g2;
 
 /* o NULL: the noise itself; else the sum of octaves. */
