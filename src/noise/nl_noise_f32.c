@@ -208,10 +208,10 @@ static void grad2_points(const nl_noise_grad2 *t, const nl_f32_oct *o, const flo
   const nl_f32_kernels *k = kern();
   if (k && g2_native(t) && n >= G2_TABLE_MIN) {
     uint32_t *pp = nl_xmalloc((t->m + 1) * sizeof *pp);
-    float *g4 = nl_xmalloc(4 * t->m * sizeof *g4);
-    for (size_t s = 0; s <= t->m; s++) pp[s] = t->perm[s & g.km];
-    for (size_t s = 0; s < t->m; s++) {
-      unsigned e0 = t->perm[s], e1 = t->perm[(s + 1) & g.km];
+    float *g4 = nl_xmalloc(8 * t->m * sizeof *g4);
+    for (size_t s = 0; s <= t->m; s++) pp[s] = 4 * t->perm[s & g.km];
+    for (size_t s = 0; s < 2 * t->m; s++) {
+      unsigned e0 = t->perm[s & g.km], e1 = t->perm[(s + 1) & g.km];
       g4[4 * s] = (float)t->gx[e0];
       g4[4 * s + 1] = (float)t->gy[e0];
       g4[4 * s + 2] = (float)t->gx[e1];

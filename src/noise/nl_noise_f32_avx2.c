@@ -81,19 +81,17 @@ static inline vf grad3(const p3ctx *c, int comp, vi h)
 
 static inline void g2_get(const nl_f32_g2 *g, vi cx, vi cy, vf gx[4], vf gy[4])
 {
-  __m256i km = _mm256_set1_epi32((int)g->km), one = _mm256_set1_epi32(1);
   const int *pp = (const int *)(const void *)g->pp;
-  __m256i pi0 = _mm256_i32gather_epi32(pp, (__m256i)cx, 4);
-  __m256i pi1 = _mm256_i32gather_epi32(pp, _mm256_add_epi32((__m256i)cx, one), 4);
-  __m256i s[2];
-  s[0] = _mm256_and_si256(_mm256_add_epi32(pi0, (__m256i)cy), km);
-  s[1] = _mm256_and_si256(_mm256_add_epi32(pi1, (__m256i)cy), km);
+  __m256i cy4 = _mm256_slli_epi32((__m256i)cy, 2);
+  __m256i e[2];
+  e[0] = _mm256_add_epi32(_mm256_i32gather_epi32(pp, (__m256i)cx, 4), cy4);
+  e[1] = _mm256_add_epi32(_mm256_i32gather_epi32(pp, _mm256_add_epi32((__m256i)cx, _mm256_set1_epi32(1)), 4),
+                          cy4);
   for (int col = 0; col < 2; col++) {
-    __m256i e = _mm256_slli_epi32(s[col], 2);
-    gx[2 * col] = (vf)_mm256_i32gather_ps(g->g4, e, 4);
-    gy[2 * col] = (vf)_mm256_i32gather_ps(g->g4 + 1, e, 4);
-    gx[2 * col + 1] = (vf)_mm256_i32gather_ps(g->g4 + 2, e, 4);
-    gy[2 * col + 1] = (vf)_mm256_i32gather_ps(g->g4 + 3, e, 4);
+    gx[2 * col] = (vf)_mm256_i32gather_ps(g->g4, e[col], 4);
+    gy[2 * col] = (vf)_mm256_i32gather_ps(g->g4 + 1, e[col], 4);
+    gx[2 * col + 1] = (vf)_mm256_i32gather_ps(g->g4 + 2, e[col], 4);
+    gy[2 * col + 1] = (vf)_mm256_i32gather_ps(g->g4 + 3, e[col], 4);
   }
 }
 

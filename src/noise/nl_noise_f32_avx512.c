@@ -80,25 +80,27 @@ static inline vf grad3(const p3ctx *c, int comp, vi h)
   return (vf)_mm512_permutexvar_ps((__m512i)h, c->g[comp]);
 }
 
-/* The batch tables lane by lane: a gather costs more than its loads one
- * by one on AMD Zen 4. Point q's column (P[i] + j) mod m reads its two
- * corners as one 16-byte entry of g4, inserted in quarter q / 4 of register
- * q mod 4; a 4 x 4 transpose within each quarter then leaves gx and gy of
- * both corners with point q in lane q. */
+/* The batch tables lane by lane (a gather costs more than its loads one
+ * by one): point q's two corners of a column, one 16-byte entry of g4,
+ * go to quarter q / 4 of register q mod 4; a 4 x 4 transpose within each
+ * quarter then leaves gx and gy of both corners with point q in lane q. */
 #define G2_INSERT(r, k, ptr) (r) = _mm512_insertf32x4((r), _mm_loadu_ps(ptr), (k))
-static inline void g2_get(const nl_f32_g2 *g, vi cx, vi cy, vf gx[4], vf gy[4])
+static inline __attribute__((always_inline)) void g2_get(const nl_f32_g2 *g, vi cx, vi cy, vf gx[4],
+                                                         vf gy[4])
 {
   const uint32_t *pp = g->pp;
   const float *G = g->g4;
-  unsigned km = g->km;
+  int ci[W], cj[W];
+  _mm512_storeu_si512(ci, (__m512i)cx);
+  _mm512_storeu_si512(cj, _mm512_slli_epi32((__m512i)cy, 2));
   __m512 r[2][4];
   for (int rr = 0; rr < 4; rr++) {
     const float *e[2][4];
     for (int k = 0; k < 4; k++) {
       int q = 4 * k + rr;
-      unsigned i = (unsigned)cx[q], j = (unsigned)cy[q];
-      e[0][k] = G + 4 * ((pp[i] + j) & km);
-      e[1][k] = G + 4 * ((pp[i + 1] + j) & km);
+      unsigned i = (unsigned)ci[q], j4 = (unsigned)cj[q];
+      e[0][k] = G + (pp[i] + j4);
+      e[1][k] = G + (pp[i + 1] + j4);
     }
     for (int col = 0; col < 2; col++) {
       __m512 v = _mm512_castps128_ps512(_mm_loadu_ps(e[col][0]));

@@ -68,7 +68,7 @@ static inline void p3_column(const p3ctx *c, const vi h[4], vf fy, vf fy1, vf fz
   v_col3(gx, gy, gz, fy, fy1, fz, fz1, v, w, GX, A);
 }
 
-static inline vf p3_eval(const p3ctx *c, vf x, vf y, vf z)
+static inline __attribute__((always_inline)) vf p3_eval(const p3ctx *c, vf x, vf y, vf z)
 {
   vf flx = v_floor(x), fly = v_floor(y), flz = v_floor(z);
   vf fx = x - flx, fy = y - fly, fz = z - flz;
@@ -81,7 +81,8 @@ static inline vf p3_eval(const p3ctx *c, vf x, vf y, vf z)
   return v_blend(fx, u, GX0, A0, GX1, A1);
 }
 
-static inline vf p3_oct(const p3ctx *c, const nl_f32_oct *o, vf x, vf y, vf z)
+static inline __attribute__((always_inline)) vf p3_oct(const p3ctx *c, const nl_f32_oct *o, vf x, vf y,
+                                                       vf z)
 {
   if (!o) return p3_eval(c, x, y, z);
   vf sum = NLF_C(0.0f);
@@ -97,7 +98,10 @@ static void p3_points(const nl_noise_perm3 *p, const nl_f32_oct *o, const float 
 {
   p3ctx c = p3ctx_make(p);
   size_t k = 0;
-  for (; k + W <= n; k += W) v_store(out + k, p3_oct(&c, o, v_load(x + k), v_load(y + k), v_load(z + k)));
+  if (!o)   /* the plain noise's loop apart, with no octave test inside */
+    for (; k + W <= n; k += W) v_store(out + k, p3_eval(&c, v_load(x + k), v_load(y + k), v_load(z + k)));
+  else
+    for (; k + W <= n; k += W) v_store(out + k, p3_oct(&c, o, v_load(x + k), v_load(y + k), v_load(z + k)));
   if (k < n) {
     float bx[W] = {0}, by[W] = {0}, bz[W] = {0}, bo[W];
     size_t r = n - k;
@@ -237,14 +241,16 @@ static inline void g2_get_lanes(const nl_f32_g2 *g, vi cx, vi cy, vf gx[4], vf g
   }
 }
 
-static inline vf g2_eval(const nl_f32_g2 *g, vf x, vf y)
+/* tab: read the batch tables (g->pp, g->g4), else the caller's table */
+static inline __attribute__((always_inline)) vf g2_eval(const nl_f32_g2 *g, vf x, vf y, int tab)
 {
-  vf m = NLF_C((float)g->m), rm = NLF_C(1.0f / (float)g->m);
+  /* 1/m exact: m is a power of two */
+  vf m = NLF_C((float)g->m), rm = NLF_C(0x1p-24f * (float)((1u << 24) / g->m));
   vi km = vi_c((int)g->km);
   vf flx = v_floor(x), fly = v_floor(y), fx = x - flx, fy = y - fly;
   vi cx = g2_cell(flx, m, rm, km), cy = g2_cell(fly, m, rm, km);
   vf gx[4], gy[4], GX0, A0, GX1, A1;
-  if (g->pp)
+  if (tab)
     g2_get(g, cx, cy, gx, gy);
   else
     g2_get_lanes(g, cx, cy, gx, gy);
@@ -254,12 +260,13 @@ static inline vf g2_eval(const nl_f32_g2 *g, vf x, vf y)
   return v_blend(fx, u, GX0, A0, GX1, A1);
 }
 
-static inline vf g2_oct(const nl_f32_g2 *g, const nl_f32_oct *o, vf x, vf y)
+static inline __attribute__((always_inline)) vf g2_oct(const nl_f32_g2 *g, const nl_f32_oct *o, vf x,
+                                                       vf y)
 {
-  if (!o) return g2_eval(g, x, y);
+  if (!o) return g2_eval(g, x, y, 1);
   vf sum = NLF_C(0.0f);
   for (int l = 0; l < o->n; l++) {
-    vf f = NLF_C(o->f[l]), v = g2_eval(g, x * f, y * f);
+    vf f = NLF_C(o->f[l]), v = g2_eval(g, x * f, y * f, 1);
     sum = NLF_FMA(NLF_C(o->a[l]), o->turbulence ? v_abs(v) : v, sum);
   }
   return sum;
@@ -269,7 +276,10 @@ static void g2_points(const nl_f32_g2 *g, const nl_f32_oct *o, const float *x, c
                       float *out)
 {
   size_t k = 0;
-  for (; k + W <= n; k += W) v_store(out + k, g2_oct(g, o, v_load(x + k), v_load(y + k)));
+  if (!o)
+    for (; k + W <= n; k += W) v_store(out + k, g2_eval(g, v_load(x + k), v_load(y + k), 1));
+  else
+    for (; k + W <= n; k += W) v_store(out + k, g2_oct(g, o, v_load(x + k), v_load(y + k)));
   if (k < n) {
     float bx[W] = {0}, by[W] = {0}, bo[W];
     size_t r = n - k;
@@ -318,7 +328,7 @@ static inline vf g2_row_vec(const nl_f32_g2 *g, g2row *r, vf x)
   vf fl = v_floor(x), t = x - fl;
   vi ci = v_cvtt(fl);
   long long a = ci[0], b = ci[W - 1], lo = a < b ? a : b, hi = a < b ? b : a;
-  if (lo == -0x80000000LL || hi - lo > 2 * W - 2) return g2_eval(g, x, r->ys);
+  if (lo == -0x80000000LL || hi - lo > 2 * W - 2) return g2_eval(g, x, r->ys, 0);
   if (!r->have || lo < r->base || hi > r->base + 2 * W - 2) g2_window(g, r, lo);
   vi idx = ci - vi_c((int)r->base), idx1 = idx + vi_c(1);
   vf g0 = win_get(r->wgx, idx), a0 = win_get(r->wa, idx);

@@ -16,10 +16,11 @@ typedef struct {
 } nl_f32_oct;
 
 /* The 2D table as the kernels read it (m a power of two, m <= 2^24).
- * pp and g4 are built only for batches: pp[s] = P[s mod m] (s <= m) and
- * g4[4 s .. 4 s + 3] = (float) gx, gy of entries P[s] and P[(s + 1) mod m]
- * (s < m), so that a column's pair (P[i], P[i + 1]) is one 8-byte read and
- * a column's two corners (dy = 0, 1) one 16-byte read. */
+ * pp and g4 are built only for batches: pp[s] = 4 P[s mod m] (s <= m) and
+ * g4[4 s .. 4 s + 3] = (float) gx, gy of entries P[s mod m] and
+ * P[(s + 1) mod m] (s < 2 m), so that a column's two corners (dy = 0, 1)
+ * are the 16 bytes at g4 + pp[i] + 4 j, with no reduction mod m (P[i] + j
+ * < 2 m). */
 typedef struct {
   const nl_noise_grad2 *t;
   unsigned m, km;
