@@ -123,17 +123,30 @@ typedef struct {
   int have;
 } p3row;
 
-static inline void p3_window(const p3ctx *c, p3row *r, long long base)
+static inline void p3_half(const p3ctx *c, p3row *r, int half, long long first)
 {
-  for (int half = 0; half < 2; half++) {
-    if (half == 1 && r->hi + 1 < base + W) {   /* the row ends in the first half */
-      r->wgx[1] = r->wa[1] = NLF_C(0.0f);
-      break;
-    }
-    vi X = vi_c((int)(base + half * W)) + v_iota(), h[8];
-    hash3(c, X, r->Y, r->Z, h);
-    p3_column(c, h, r->fy, r->fy1, r->fz, r->fz1, r->v, r->w, &r->wgx[half], &r->wa[half]);
+  vi X = vi_c((int)first) + v_iota(), h[8];
+  hash3(c, X, r->Y, r->Z, h);
+  p3_column(c, h, r->fy, r->fy1, r->fz, r->fz1, r->v, r->w, &r->wgx[half], &r->wa[half]);
+}
+
+/* A window holding cells lo .. hi + 1. A row moving on by W columns or
+ * more keeps its second half as the first (sparse rows refill every
+ * vector or two: one half computed, not two). */
+static inline void p3_window(const p3ctx *c, p3row *r, long long lo, long long hi)
+{
+  long long base = lo;
+  if (r->have && lo >= r->base + W && hi <= r->base + 3 * W - 2) {
+    r->wgx[0] = r->wgx[1];
+    r->wa[0] = r->wa[1];
+    base = r->base + W;
+  } else {
+    p3_half(c, r, 0, base);
   }
+  if (r->hi + 1 < base + W)   /* the row ends in the first half */
+    r->wgx[1] = r->wa[1] = NLF_C(0.0f);
+  else
+    p3_half(c, r, 1, base + W);
   r->base = base;
   r->have = 1;
 }
@@ -148,7 +161,7 @@ static inline vf p3_row_vec(const p3ctx *c, p3row *r, vf x)
   vi ci = v_cvtt(fl);
   long long a = ci[0], b = ci[W - 1], lo = a < b ? a : b, hi = a < b ? b : a;
   if (hi - lo > 2 * W - 2) return p3_eval(c, x, r->ys, r->zs);
-  if (!r->have || lo < r->base || hi > r->base + 2 * W - 2) p3_window(c, r, lo);
+  if (!r->have || lo < r->base || hi > r->base + 2 * W - 2) p3_window(c, r, lo, hi);
   vi idx = ci - vi_c((int)r->base), idx1 = idx + vi_c(1);
   vf g0 = win_get(r->wgx, idx), a0 = win_get(r->wa, idx);
   vf g1 = win_get(r->wgx, idx1), a1 = win_get(r->wa, idx1);
