@@ -98,9 +98,10 @@ static inline __attribute__((always_inline)) void g2_get(const nl_f32_g2 *g, vi 
     const float *e[2][4];
     for (int k = 0; k < 4; k++) {
       int q = 4 * k + rr;
-      unsigned i = (unsigned)ci[q], j4 = (unsigned)cj[q];
-      e[0][k] = G + (pp[i] + j4);
-      e[1][k] = G + (pp[i + 1] + j4);
+      const uint32_t *pi = pp + (uint32_t)ci[q];   /* (P[i], P[i + 1]): one base */
+      uint32_t j4 = (uint32_t)cj[q];
+      e[0][k] = G + (pi[0] + j4);
+      e[1][k] = G + (pi[1] + j4);
     }
     for (int col = 0; col < 2; col++) {
       __m512 v = _mm512_castps128_ps512(_mm_loadu_ps(e[col][0]));
