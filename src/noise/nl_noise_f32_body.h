@@ -285,9 +285,10 @@ static inline __attribute__((always_inline)) vf g2_oct(const nl_f32_g2 *g, const
   return sum;
 }
 
-static void g2_points(const nl_f32_g2 *g, const nl_f32_oct *o, const float *x, const float *y, size_t n,
+static void g2_points(const nl_f32_g2 *gp, const nl_f32_oct *o, const float *x, const float *y, size_t n,
                       float *out)
 {
+  const nl_f32_g2 gl = *gp, *g = &gl;   /* a copy no store can alias: m and the tables stay in registers */
   size_t k = 0;
   if (!o)
     for (; k + W <= n; k += W) v_store(out + k, g2_eval(g, v_load(x + k), v_load(y + k), 1));
