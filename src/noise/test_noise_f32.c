@@ -332,6 +332,52 @@ NL_TEST(other_tables_round_the_double_noise)
   nl_noise_grad2_free(t);
 }
 
+/* The grid is its rows (pixel centres placed in double, then rounded), and
+ * the point calls are the batches' values, at every level. */
+NL_TEST(grid_and_point_calls_agree_with_rows_and_batches)
+{
+  nl_noise_perm3 p;
+  nl_noise_perm3_seed(&p, 3);
+  nl_noise_grad2 *t = nl_noise_grad2_alloc(256);
+  nl_noise_grad2_seed(t, 3);
+  nl_noise_octaves o = nl_noise_octaves_fbm(4, 0.5, 2.0);
+  nl_noise_window win = {-3.25, 250.5, 0.75, 9.5, 77, 31};
+  float *grid = malloc(77 * 31 * sizeof *grid), row[77];
+  long wrong = 0;
+  for (int l = NL_SIMD_SCALAR; l <= NL_SIMD_AVX512; l++) {
+    if (!nl_noise_simd_supported(l)) continue;
+    nl_noise_simd_set(l);
+    for (int which = 0; which < 2; which++) {
+      nl_noise_fractal_grid_f32(which ? t : NULL, which ? NULL : &p, &o, &win, grid);
+      double dx = win.size / win.w, dy = win.size / win.h;
+      for (int r = 0; r < win.h; r++) {
+        float x0 = (float)(win.x0 + 0.5 * dx), y = (float)(win.y0 + (r + 0.5) * dy);
+        if (which)
+          nl_noise_grad2_fractal_row_f32(t, &o, x0, (float)dx, y, 77, row);
+        else
+          nl_noise_perm3_fractal_row_f32(&p, &o, x0, (float)dx, y, (float)win.z, 77, row);
+        wrong += differ(row, grid + (size_t)r * 77, 77);
+      }
+    }
+    float x[40], y[40], z[40], v3[40], v2[40];
+    for (int k = 0; k < 40; k++) {
+      x[k] = -20.5f + 1.37f * (float)k;
+      y[k] = 255.9f - 0.71f * (float)k;
+      z[k] = (float)k * 0.25f;
+    }
+    nl_noise_perm3_points_f32(&p, x, y, z, 40, v3);
+    nl_noise_grad2_points_f32(t, x, y, 40, v2);
+    for (int k = 0; k < 40; k++) {
+      float a = nl_noise_perm3_eval_f32(&p, x[k], y[k], z[k]), b = nl_noise_grad2_eval_f32(t, x[k], y[k]);
+      wrong += memcmp(&a, v3 + k, sizeof a) != 0 || memcmp(&b, v2 + k, sizeof b) != 0;
+    }
+  }
+  nl_noise_simd_set(nl_noise_simd_best());
+  NL_CHECK(wrong == 0);
+  free(grid);
+  nl_noise_grad2_free(t);
+}
+
 /* An empty sum is 0 everywhere, at every level. */
 NL_TEST(an_empty_sum_is_zero)
 {
