@@ -90,25 +90,60 @@ static inline __attribute__((always_inline)) void g2_get(const nl_f32_g2 *g, vi 
 {
   const uint32_t *pp = g->pp;
   const float *G = g->g4;
-  int ci[W], cj[W];
-  _mm512_storeu_si512(ci, (__m512i)cx);
-  _mm512_storeu_si512(cj, _mm512_slli_epi32((__m512i)cy, 2));
   __m512 r[2][4];
-  for (int rr = 0; rr < 4; rr++) {
-    const float *e[2][4];
-    for (int k = 0; k < 4; k++) {
-      int q = 4 * k + rr;
-      const uint32_t *pi = pp + (uint32_t)ci[q];   /* (P[i], P[i + 1]): one base */
-      uint32_t j4 = (uint32_t)cj[q];
-      e[0][k] = G + (pi[0] + j4);
-      e[1][k] = G + (pi[1] + j4);
-    }
-    for (int col = 0; col < 2; col++) {
-      __m512 v = _mm512_castps128_ps512(_mm_loadu_ps(e[col][0]));
-      G2_INSERT(v, 1, e[col][1]);
-      G2_INSERT(v, 2, e[col][2]);
-      G2_INSERT(v, 3, e[col][3]);
-      r[col][rr] = v;
+  if (g->m <= (1u << 14)) {
+    /* i and 4 j share a 32-bit lane: lanes 4c .. 4c + 3 leave the register
+     * as two 64-bit moves of chunk c (few uops on the vector ports, which
+     * the arithmetic needs) */
+    __m512i u = _mm512_or_si512((__m512i)cx, _mm512_slli_epi32((__m512i)cy, 18));
+#define G2_LANE(d, k, c)                                                       \
+  do {                                                                         \
+    const uint32_t *pi_ = pp + ((d) & 0xffffu);                                \
+    uint32_t j4_ = (uint32_t)(d) >> 16;                                        \
+    const float *gj_ = G + j4_, *e0_ = gj_ + pi_[0], *e1_ = gj_ + pi_[1];     \
+    if ((c) == 0) {                                                            \
+      r[0][k] = _mm512_castps128_ps512(_mm_loadu_ps(e0_));                     \
+      r[1][k] = _mm512_castps128_ps512(_mm_loadu_ps(e1_));                     \
+    } else {                                                                   \
+      G2_INSERT(r[0][k], (c), e0_);                                            \
+      G2_INSERT(r[1][k], (c), e1_);                                            \
+    }                                                                          \
+  } while (0)
+#define G2_CHUNK(c)                                                            \
+  do {                                                                         \
+    __m128i x_ = _mm512_extracti32x4_epi32(u, (c));                            \
+    uint64_t a_ = (uint64_t)_mm_cvtsi128_si64(x_), b_ = (uint64_t)_mm_extract_epi64(x_, 1); \
+    G2_LANE((uint32_t)a_, 0, c);                                               \
+    G2_LANE((uint32_t)(a_ >> 32), 1, c);                                       \
+    G2_LANE((uint32_t)b_, 2, c);                                               \
+    G2_LANE((uint32_t)(b_ >> 32), 3, c);                                       \
+  } while (0)
+    G2_CHUNK(0);
+    G2_CHUNK(1);
+    G2_CHUNK(2);
+    G2_CHUNK(3);
+#undef G2_CHUNK
+#undef G2_LANE
+  } else {
+    int ci[W], cj[W];
+    _mm512_storeu_si512(ci, (__m512i)cx);
+    _mm512_storeu_si512(cj, _mm512_slli_epi32((__m512i)cy, 2));
+    for (int rr = 0; rr < 4; rr++) {
+      const float *e[2][4];
+      for (int k = 0; k < 4; k++) {
+        int q = 4 * k + rr;
+        const uint32_t *pi = pp + (uint32_t)ci[q];   /* (P[i], P[i + 1]): one base */
+        uint32_t j4 = (uint32_t)cj[q];
+        e[0][k] = G + (pi[0] + j4);
+        e[1][k] = G + (pi[1] + j4);
+      }
+      for (int col = 0; col < 2; col++) {
+        __m512 v = _mm512_castps128_ps512(_mm_loadu_ps(e[col][0]));
+        G2_INSERT(v, 1, e[col][1]);
+        G2_INSERT(v, 2, e[col][2]);
+        G2_INSERT(v, 3, e[col][3]);
+        r[col][rr] = v;
+      }
     }
   }
   for (int col = 0; col < 2; col++) {
