@@ -84,7 +84,9 @@ static inline vf grad3(const p3ctx *c, int comp, vi h)
  * by one): point q's two corners of a column, one 16-byte entry of g4,
  * go to quarter q / 4 of register q mod 4; a 4 x 4 transpose within each
  * quarter then leaves gx and gy of both corners with point q in lane q. */
-#define G2_INSERT(r, k, ptr) (r) = _mm512_insertf32x4((r), _mm_loadu_ps(ptr), (k))
+/* a masked broadcast from memory: one load and one blend, where a
+ * register insert would run on the shuffle port */
+#define G2_INSERT(r, k, ptr) (r) = _mm512_mask_broadcast_f32x4((r), (__mmask16)(0xFu << (4 * (k))), _mm_loadu_ps(ptr))
 static inline __attribute__((always_inline)) void g2_get(const nl_f32_g2 *g, vi cx, vi cy, vf gx[4],
                                                          vf gy[4])
 {
