@@ -328,7 +328,7 @@ void nl_noise_fractal_grid(const nl_noise_basis *b, const nl_noise_octaves *o, c
  * [-300, 300]^3), and beyond 2^23 every float is a lattice point. The
  * calls refuse nothing: below 2^12 the float path is within 1e-3 of the
  * double noise at double points; beyond, use the double path.
- * Rows sample x_k = fmaf(k, dx, x0) (one rounding; k < 2^31); sums of
+ * Rows sample x_k = fmaf((float)k, dx, x0) (k < 2^31); sums of
  * octaves use freq and amp rounded to float, octave l adding
  * fmaf(amp_l, N(f_l x, f_l y, f_l z), sum) to a sum started at 0 (|N| for
  * turbulence), so a row gives the bits of the points x_k, and of the
@@ -342,7 +342,7 @@ void nl_noise_perm3_points_f32(const nl_noise_perm3 *p, const float *x, const fl
                                size_t n, float *out);
 void nl_noise_grad2_points_f32(const nl_noise_grad2 *t, const float *x, const float *y, size_t n,
                                float *out);
-/* out[k] = noise(fmaf(k, dx, x0), y[, z]), k < n */
+/* out[k] = noise(fmaf((float)k, dx, x0), y[, z]), k < n */
 void nl_noise_perm3_row_f32(const nl_noise_perm3 *p, float x0, float dx, float y, float z, size_t n,
                             float *out);
 void nl_noise_grad2_row_f32(const nl_noise_grad2 *t, float x0, float dx, float y, size_t n, float *out);
