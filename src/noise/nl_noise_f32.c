@@ -201,42 +201,57 @@ static void perm3_row(const nl_noise_perm3 *p, const nl_f32_oct *o, float x0, fl
  * O(m) set-up) and run the scalar code: the same bits. */
 enum { G2_TABLE_MIN = 256 };
 
+/* The batch tables of nl_f32_g2 (O(m) to make: for batches, and grids,
+ * which share them over their rows). */
+static void g2_tables(const nl_noise_grad2 *t, nl_f32_g2 *g)
+{
+  uint32_t *pp = nl_xmalloc((t->m + 1) * sizeof *pp);
+  float *g4 = nl_xmalloc(8 * t->m * sizeof *g4);
+  for (size_t s = 0; s <= t->m; s++) pp[s] = 4 * t->perm[s & g->km];
+  for (size_t s = 0; s < 2 * t->m; s++) {
+    unsigned e0 = t->perm[s & g->km], e1 = t->perm[(s + 1) & g->km];
+    g4[4 * s] = (float)t->gx[e0];
+    g4[4 * s + 1] = (float)t->gy[e0];
+    g4[4 * s + 2] = (float)t->gx[e1];
+    g4[4 * s + 3] = (float)t->gy[e1];
+  }
+  g->pp = pp;
+  g->g4 = g4;
+}
+
+static void g2_tables_free(nl_f32_g2 *g)
+{
+  free((void *)g->pp);
+  free((void *)g->g4);
+  g->pp = NULL;
+  g->g4 = NULL;
+}
+
 static void grad2_points(const nl_noise_grad2 *t, const nl_f32_oct *o, const float *x, const float *y,
                          size_t n, float *out)
 {
   nl_f32_g2 g = {t, (unsigned)t->m, (unsigned)t->m - 1, NULL, NULL};
   const nl_f32_kernels *k = kern();
   if (k && g2_native(t) && n >= G2_TABLE_MIN) {
-    uint32_t *pp = nl_xmalloc((t->m + 1) * sizeof *pp);
-    float *g4 = nl_xmalloc(8 * t->m * sizeof *g4);
-    for (size_t s = 0; s <= t->m; s++) pp[s] = 4 * t->perm[s & g.km];
-    for (size_t s = 0; s < 2 * t->m; s++) {
-      unsigned e0 = t->perm[s & g.km], e1 = t->perm[(s + 1) & g.km];
-      g4[4 * s] = (float)t->gx[e0];
-      g4[4 * s + 1] = (float)t->gy[e0];
-      g4[4 * s + 2] = (float)t->gx[e1];
-      g4[4 * s + 3] = (float)t->gy[e1];
-    }
-    g.pp = pp;
-    g.g4 = g4;
+    g2_tables(t, &g);
     k->g2_points(&g, o, x, y, n, out);
-    free(pp);
-    free(g4);
+    g2_tables_free(&g);
     return;
   }
   for (size_t i = 0; i < n; i++) out[i] = s_grad2_oct(&g, o, x[i], y[i]);
 }
 
-static void grad2_row(const nl_noise_grad2 *t, const nl_f32_oct *o, float x0, float dx, float y, size_t n,
+/* g: the table, with batch tables or without (the rows then read the
+ * caller's table column by column). */
+static void grad2_row(const nl_f32_g2 *g, const nl_f32_oct *o, float x0, float dx, float y, size_t n,
                       float *out)
 {
-  nl_f32_g2 g = {t, (unsigned)t->m, (unsigned)t->m - 1, NULL, NULL};
   const nl_f32_kernels *k = kern();
-  if (k && g2_native(t)) {
-    k->g2_row(&g, o, x0, dx, y, n, out);
+  if (k && g2_native(g->t)) {
+    k->g2_row(g, o, x0, dx, y, n, out);
     return;
   }
-  for (size_t i = 0; i < n; i++) out[i] = s_grad2_oct(&g, o, row_x(x0, dx, i), y);
+  for (size_t i = 0; i < n; i++) out[i] = s_grad2_oct(g, o, row_x(x0, dx, i), y);
 }
 
 void nl_noise_perm3_points_f32(const nl_noise_perm3 *p, const float *x, const float *y, const float *z,
@@ -259,7 +274,8 @@ void nl_noise_grad2_points_f32(const nl_noise_grad2 *t, const float *x, const fl
 
 void nl_noise_grad2_row_f32(const nl_noise_grad2 *t, float x0, float dx, float y, size_t n, float *out)
 {
-  grad2_row(t, NULL, x0, dx, y, n, out);
+  nl_f32_g2 g = {t, (unsigned)t->m, (unsigned)t->m - 1, NULL, NULL};
+  grad2_row(&g, NULL, x0, dx, y, n, out);
 }
 
 void nl_noise_perm3_fractal_points_f32(const nl_noise_perm3 *p, const nl_noise_octaves *o, const float *x,
@@ -287,7 +303,8 @@ void nl_noise_grad2_fractal_row_f32(const nl_noise_grad2 *t, const nl_noise_octa
                                     float dx, float y, size_t n, float *out)
 {
   nl_f32_oct of = oct_f32(o);
-  grad2_row(t, &of, x0, dx, y, n, out);
+  nl_f32_g2 g = {t, (unsigned)t->m, (unsigned)t->m - 1, NULL, NULL};
+  grad2_row(&g, &of, x0, dx, y, n, out);
 }
 
 void nl_noise_fractal_grid_f32(const nl_noise_grad2 *t2, const nl_noise_perm3 *p3,
@@ -296,12 +313,15 @@ void nl_noise_fractal_grid_f32(const nl_noise_grad2 *t2, const nl_noise_perm3 *p
   /* pixel centres as nl_noise_fractal_grid places them, in double, then rounded */
   double dx = win->size / win->w, dy = win->size / win->h;
   nl_f32_oct of = oct_f32(o);
+  nl_f32_g2 g = {t2, p3 ? 0 : (unsigned)t2->m, p3 ? 0 : (unsigned)t2->m - 1, NULL, NULL};
+  if (!p3 && kern() && g2_native(t2)) g2_tables(t2, &g);   /* the rows' columns read them */
   for (int r = 0; r < win->h; r++) {
     float x0 = (float)(win->x0 + 0.5 * dx), y = (float)(win->y0 + (r + 0.5) * dy);
     float *row = out + (size_t)r * (size_t)win->w;
     if (p3)
       perm3_row(p3, &of, x0, (float)dx, y, (float)win->z, (size_t)win->w, row);
     else
-      grad2_row(t2, &of, x0, (float)dx, y, (size_t)win->w, row);
+      grad2_row(&g, &of, x0, (float)dx, y, (size_t)win->w, row);
   }
+  g2_tables_free(&g);
 }

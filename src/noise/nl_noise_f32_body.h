@@ -319,12 +319,20 @@ static inline void g2_window(const nl_f32_g2 *g, g2row *r, long long base)
   unsigned km = g->km, j = r->jm;
   float a[4][2 * W] = {{0}};
   long long cols = r->hi + 2 - base < 2 * W ? r->hi + 2 - base : 2 * W;
-  for (int q = 0; q < cols; q++) {
-    unsigned s = (P[(unsigned)(base + q) & km] + j) & km, k0 = P[s], k1 = P[(s + 1) & km];
-    a[0][q] = (float)GX[k0];
-    a[1][q] = (float)GY[k0];
-    a[2][q] = (float)GX[k1];
-    a[3][q] = (float)GY[k1];
+  if (g->g4) {   /* a grid's batch tables: the column's two corners, one entry */
+    const float *G = g->g4 + 4 * j;
+    for (int q = 0; q < cols; q++) {
+      const float *e = G + g->pp[(unsigned)(base + q) & km];
+      for (int c = 0; c < 4; c++) a[c][q] = e[c];
+    }
+  } else {
+    for (int q = 0; q < cols; q++) {
+      unsigned s = (P[(unsigned)(base + q) & km] + j) & km, k0 = P[s], k1 = P[(s + 1) & km];
+      a[0][q] = (float)GX[k0];
+      a[1][q] = (float)GY[k0];
+      a[2][q] = (float)GX[k1];
+      a[3][q] = (float)GY[k1];
+    }
   }
   for (int half = 0; half < 2; half++) {
     int o = half * W;
@@ -350,9 +358,10 @@ static inline vf g2_row_vec(const nl_f32_g2 *g, g2row *r, vf x)
   return v_blend(t, v_fade(t), g0, a0, g1, a1);
 }
 
-static void g2_row(const nl_f32_g2 *g, const nl_f32_oct *o, float x0, float dx, float y, size_t n,
+static void g2_row(const nl_f32_g2 *gp, const nl_f32_oct *o, float x0, float dx, float y, size_t n,
                    float *out)
 {
+  const nl_f32_g2 gl = *gp, *g = &gl;   /* a copy no store can alias */
   if (n == 0) return;
   if (o && o->n <= 0) {   /* an empty sum */
     memset(out, 0, n * sizeof *out);
