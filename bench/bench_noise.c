@@ -155,6 +155,75 @@ static void g_cellular(const void *ctx, double *out)
 typedef struct { double rate, cpu_ms, wall_ms; } timing;
 static volatile double sink;
 
+/* The float32 path (nl_noise.h) on the same grid, sparse rows and random
+ * points (rounded to float), into float buffers made at the first call. */
+static float *f32_out, *f32_x, *f32_y, *f32_z;
+static float *f32_buf(void)
+{
+  if (!f32_out) {
+    size_t n = (size_t)N * N;
+    f32_out = nl_xmalloc(n * sizeof *f32_out);
+    f32_x = nl_xmalloc(n * sizeof *f32_x);
+    f32_y = nl_xmalloc(n * sizeof *f32_y);
+    f32_z = nl_xmalloc(n * sizeof *f32_z);
+    for (size_t k = 0; k < n; k++) {
+      f32_x[k] = (float)rx[k];
+      f32_y[k] = (float)ry[k];
+      f32_z[k] = (float)rz[k];
+    }
+  }
+  return f32_out;
+}
+static void g_noise3_f32(const void *ctx, double *out)
+{
+  (void)out;
+  float *o = f32_buf(), dx = (float)(EXTENT / N);
+  for (int r = 0; r < N; r++)
+    nl_noise_perm3_row_f32(ctx, 0.5f * dx, dx, (float)((r + 0.5) * dx), 0.5f, (size_t)N, o + (size_t)r * N);
+}
+static void g_noise3_sparse_f32(const void *ctx, double *out)
+{
+  (void)out;
+  float *o = f32_buf();
+  double dy = EXTENT / N;
+  for (int r = 0; r < N; r++)
+    nl_noise_perm3_row_f32(ctx, (float)SPARSE_X0, (float)SPARSE_DX, (float)((r + 0.5) * dy), 0.5f, (size_t)N,
+                           o + (size_t)r * N);
+}
+static void g_noise2_f32(const void *ctx, double *out)
+{
+  (void)out;
+  float *o = f32_buf(), dx = (float)(EXTENT / N);
+  for (int r = 0; r < N; r++)
+    nl_noise_grad2_row_f32(ctx, 0.5f * dx, dx, (float)((r + 0.5) * dx), (size_t)N, o + (size_t)r * N);
+}
+static void g_noise3_points_f32(const void *ctx, double *out)
+{
+  (void)out;
+  float *o = f32_buf();
+  nl_noise_perm3_points_f32(ctx, f32_x, f32_y, f32_z, (size_t)N * N, o);
+}
+static void g_noise2_points_f32(const void *ctx, double *out)
+{
+  (void)out;
+  float *o = f32_buf();
+  nl_noise_grad2_points_f32(ctx, f32_x, f32_y, (size_t)N * N, o);
+}
+static void g_fbm3_f32(const void *ctx, double *out)
+{
+  (void)out;
+  nl_noise_octaves o = nl_noise_octaves_fbm(4, 0.5, 2.0);
+  nl_noise_window w = {0, 0, 0.5, EXTENT, N, N};
+  nl_noise_fractal_grid_f32(NULL, ctx, &o, &w, f32_buf());
+}
+static void g_fbm2_f32(const void *ctx, double *out)
+{
+  (void)out;
+  nl_noise_octaves o = nl_noise_octaves_fbm(4, 0.5, 2.0);
+  nl_noise_window w = {0, 0, 0.5, EXTENT, N, N};
+  nl_noise_fractal_grid_f32(ctx, NULL, &o, &w, f32_buf());
+}
+
 /* One round of a kernel: repeated for at least 0.1 s of CPU time; the
  * fastest round is kept. The rate is per CPU second. */
 static void round_of(void (*f)(const void *, double *), const void *ctx, double *out, timing *best)
@@ -216,6 +285,14 @@ int main(int argc, char **argv)
     {"fbm4_2d_row", "fbm 4 oct, 2D table", g_fbm, &b2, 1, {0, 0, 0}},
     {"cellular_row", "nl_cellular_row (F1..F4, lambda=4)", g_cellular, cell, 2, {0, 0, 0}},
     {"wavelet_row", "nl_wavelet_row (2D tile, 256^2)", g_wavelet, wt, 2, {0, 0, 0}},
+    /* the float32 path, each row's peer as its double kernel's */
+    {"noise3_row_f32", "nl_noise_perm3_row_f32 (float32)", g_noise3_f32, &p, 0, {0, 0, 0}},
+    {"noise3_row_sparse_f32", "nl_noise_perm3_row_f32, 0.7 cells", g_noise3_sparse_f32, &p, 3, {0, 0, 0}},
+    {"noise3_points_f32", "nl_noise_perm3_points_f32, random", g_noise3_points_f32, &p, 4, {0, 0, 0}},
+    {"noise2_row_f32", "nl_noise_grad2_row_f32 (float32)", g_noise2_f32, t, 0, {0, 0, 0}},
+    {"noise2_points_f32", "nl_noise_grad2_points_f32, random", g_noise2_points_f32, t, 0, {0, 0, 0}},
+    {"fbm4_3d_row_f32", "fbm 4 oct, improved 3D, float32", g_fbm3_f32, &p, 1, {0, 0, 0}},
+    {"fbm4_2d_row_f32", "fbm 4 oct, 2D table, float32", g_fbm2_f32, t, 1, {0, 0, 0}},
   };
   /* Rounds over all the kernels, stb's among them, so that each meets the
    * same spells of a shared machine; the fastest round of each counts. */
@@ -264,5 +341,6 @@ int main(int argc, char **argv)
   nl_wavelet_tile_free(wt);
   nl_cellular_free(cell);
   free(out); free(rx); free(ry); free(rz);
+  free(f32_out); free(f32_x); free(f32_y); free(f32_z);
   return 0;
 }

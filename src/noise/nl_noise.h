@@ -301,6 +301,66 @@ double nl_noise_octaves_fmax(const nl_noise_octaves *o);
 typedef struct { double x0, y0, z, size; int w, h; } nl_noise_window;
 void nl_noise_fractal_grid(const nl_noise_basis *b, const nl_noise_octaves *o, const nl_noise_window *win, double *out);
 
+/* ---- float32 path ----------------------------------------------------
+ *
+ * Perlin's improved 3D noise and the 2D table noise (m a power of two, at
+ * most 2^24) computed in float: rows, point batches, sums of octaves over
+ * both, and a grid. Fused multiply-adds in the operation order of the
+ * double path's kernels (the column lines of "Evaluation order" above);
+ * 16 lanes on the AVX-512 level, 8 on AVX2 (either with FMA), and a
+ * scalar level (fmaf(), the SSE2 level and non-x86 builds). Every level
+ * gives the scalar level's bits (test_noise_f32.c); they are not the double
+ * path's bits.
+ *
+ * Accuracy. At the same coordinates (a float converted to double exactly)
+ * |f32 - double| <= 2e-6 (measured 1.1e-6, 9 ulps of 1; test_noise_f32.c)
+ * for the improved noise and the 2D noise, at every finite float
+ * coordinate: the cell and the fraction x - floor(x) are exact in float
+ * (but in (-1, 0), where x + 1 rounds to a multiple of 2^-24, and to 1 -
+ * the point 0's value, as in double - in [-2^-25, 0)), and the cell mod
+ * 256 (mod m) is exact however far from 0 (from 2^31 on, every float is a
+ * multiple of 256; the 2D cell is reduced mod m in float exactly). NaN or
+ * an infinite coordinate gives NaN. What float loses is the input's
+ * resolution: a coordinate given in double and rounded to float moves by
+ * up to |c| 2^-24, so at |c| = 2^12 a sample lands up to 2^-12 of a cell
+ * from where a double caller meant it; against the double noise at the
+ * double point that measured 3.5e-4 in [-2^12, 2^12]^3 (3.8e-5 in
+ * [-300, 300]^3), and beyond 2^23 every float is a lattice point. The
+ * calls refuse nothing: below 2^12 the float path is within 1e-3 of the
+ * double noise at double points; beyond, use the double path.
+ * Rows sample x_k = fmaf((float)k, dx, x0) (k < 2^31); sums of
+ * octaves use freq and amp rounded to float, octave l adding
+ * fmaf(amp_l, N(f_l x, f_l y, f_l z), sum) to a sum started at 0 (|N| for
+ * turbulence), so a row gives the bits of the points x_k, and of the
+ * points' sums.
+ * 2D tables whose m is not a power of two or above 2^24: every value is
+ * the double noise at the same point, rounded to float.
+ * out must not overlap the inputs unless it is one of them. */
+float nl_noise_perm3_eval_f32(const nl_noise_perm3 *p, float x, float y, float z);
+float nl_noise_grad2_eval_f32(const nl_noise_grad2 *t, float x, float y);
+void nl_noise_perm3_points_f32(const nl_noise_perm3 *p, const float *x, const float *y, const float *z,
+                               size_t n, float *out);
+void nl_noise_grad2_points_f32(const nl_noise_grad2 *t, const float *x, const float *y, size_t n,
+                               float *out);
+/* out[k] = noise(fmaf((float)k, dx, x0), y[, z]), k < n */
+void nl_noise_perm3_row_f32(const nl_noise_perm3 *p, float x0, float dx, float y, float z, size_t n,
+                            float *out);
+void nl_noise_grad2_row_f32(const nl_noise_grad2 *t, float x0, float dx, float y, size_t n, float *out);
+/* Sums of octaves o (fBm, turbulence) over batches and rows. */
+void nl_noise_perm3_fractal_points_f32(const nl_noise_perm3 *p, const nl_noise_octaves *o, const float *x,
+                                       const float *y, const float *z, size_t n, float *out);
+void nl_noise_perm3_fractal_row_f32(const nl_noise_perm3 *p, const nl_noise_octaves *o, float x0,
+                                    float dx, float y, float z, size_t n, float *out);
+void nl_noise_grad2_fractal_points_f32(const nl_noise_grad2 *t, const nl_noise_octaves *o, const float *x,
+                                       const float *y, size_t n, float *out);
+void nl_noise_grad2_fractal_row_f32(const nl_noise_grad2 *t, const nl_noise_octaves *o, float x0,
+                                    float dx, float y, size_t n, float *out);
+/* The sum of octaves of p3 (t2 when p3 is NULL) over a window, as
+ * nl_noise_fractal_grid places the pixel centres (in double, then each
+ * row's x0, dx and y rounded to float), out[r w + c]. */
+void nl_noise_fractal_grid_f32(const nl_noise_grad2 *t2, const nl_noise_perm3 *p3,
+                               const nl_noise_octaves *o, const nl_noise_window *win, float *out);
+
 /* ---- the point calls, inline ----------------------------------------
  *
  * The bodies of nl_noise_grad2_eval, nl_noise_perm3_eval and
