@@ -9,7 +9,11 @@ Two entry points, both float64 out:
     the noise at arrays of coordinates of any shape, broadcast as numpy
     broadcasts, one C call per array: the SIMD batch kernels where the
     library has them (improved and noise2 on their own, fractal and fBm sums
-    over improved), the library's point loops otherwise.
+    over improved), the library's point loops otherwise;
+``function(noise, ...)``
+    the built noise as a function f(x, y[, z]): a call on Python floats
+    costs about what python3-noise's pnoise3 costs (the extension's fast
+    path, noiselab/_ext.c), arrays as ``points``.
 
 Noises (``noise``): ``improved`` (Perlin 2002), ``noise2`` (Cheng 2009's 2D
 gradient table; ``table`` under a sum), ``gctbf`` (Qin & Yang's cellular
@@ -19,13 +23,22 @@ sum of F1..F4), ``wavelet`` (Cook & DeRose 2005), and the sums ``fractal``,
 
 import ctypes
 import functools
+from typing import Any, Optional, Tuple, Union
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
-from ._lib import Error, c_double_p, check, fn, integer, mirror
+from ._lib import Error, c_double_p, check, ext, fn, integer, mirror
 from ._lib import real as _real
 
-__all__ = ["grid", "points", "bound", "cellular", "cellular_grid"]
+if ext is None:
+    raise ImportError("noiselab.noise needs the extension noiselab._ext, which this build "
+                      "does not have (meson builds it where numpy's headers are found: "
+                      "`scripts/noiselab setup`)")
+
+__all__ = ["grid", "points", "function", "NoiseFunction", "bound", "cellular", "cellular_grid"]
+
+NoiseFunction = ext.NoiseFunction
 
 _MAX_OCTAVES = 32
 
@@ -141,8 +154,10 @@ _grad2_set_angle = fn("nl_noise_grad2_set_angle", None, ctypes.POINTER(_Grad2), 
                       ctypes.c_double)
 _basis_grad2 = fn("nl_noise_basis_grad2", _NoiseBasis, ctypes.POINTER(_Grad2))
 
-_BASES = {"improved": "improved", "noise2": "noise2", "table": "noise2", "gctbf": "gctbf",
-          "wavelet": "wavelet"}
+# The library's bases (nl_basis_kinds): each by its name and its name under
+# a sum (noise2 is "table" there), in its order; the planar ones take no z.
+_BASES = {n: name for name, under, _ in ext.bases() for n in (name, under)}
+_PLANAR = tuple(name for name, _, planar in ext.bases() if planar)
 _SUMS = ("fractal", "turbulence", "fbm", "marble")
 # nl_basis_make names its inputs as render's options (or nl_cellular_alloc's
 # fields); a Python user typed these parameters.
@@ -157,7 +172,10 @@ _RANGE_NAMES = {f"--{k}": k for k in ("octaves", "gain", "lacunarity", "amplitud
 _SEED_MAX = 2**32 - 1
 # render --count's words (nl_cellular_count_rule's values)
 _COUNTS = {"closest": 0, "inverse": 1, "closest-last": 2}
-_PLANAR = ("noise2",)
+# How the extension evaluates a noise (_ext.c's enum): the SIMD batch
+# kernels of improved noise (alone, fractal and fbm sums) and of noise2, the
+# library's point loops of wavelet and gctbf, any other sum by its rows.
+_K_PERM3, _K_GRAD2, _K_WAVELET, _K_GCTBF, _K_SUM = range(5)
 
 
 def _ptr(a):
@@ -296,6 +314,25 @@ class _Noise:
 
     def grad2(self):
         return ctypes.cast(self._g, ctypes.c_void_p) if self._g else self._b.contents.grad2
+
+    @functools.cached_property
+    def kernel(self):
+        """This noise as the extension's NoiseFunction (it keeps self alive;
+        the cycle is the garbage collector's)."""
+        if self.sum == "marble":
+            raise ValueError("noise: marble is a texture of the plane: use grid()")
+        if self.kind == "improved" and not self.octaves.turbulence:
+            kind = _K_PERM3
+        elif self.sum is None:
+            kind = {"noise2": _K_GRAD2, "wavelet": _K_WAVELET, "gctbf": _K_GCTBF}[self.kind]
+        else:
+            kind = _K_SUM
+        g = self.grad2()
+        return NoiseFunction(self, functools.partial(_points_nz, self), kind, int(self.planar),
+                             ctypes.addressof(self._b.contents) if self._b else None,
+                             ctypes.addressof(self.basis), ctypes.addressof(self.octaves),
+                             g.value if isinstance(g, ctypes.c_void_p) else g,
+                             int(self.sum is not None))
 
     # The freeing functions are bound as defaults: at interpreter exit the
     # cached noises are collected after the module's globals are gone.
@@ -527,26 +564,6 @@ def _scalars(*v):
     return all(type(a) in (float, int, np.float64) for a in v if a is not None)
 
 
-def _point(nz, x, y, z):
-    """One point of improved or noise2 through the point call (the batch
-    kernels' bits), without numpy's array machinery: a third of a
-    one-element array's cost (3.6 us against 23 us, measured)."""
-    x, y = float(x), float(y)
-    if nz.planar:
-        if z is not None:
-            raise ValueError(f"z: {nz.kind} is a 2D noise and takes no z")
-        zf = 0.0
-    else:
-        zf = 0.5 if z is None else float(z)
-    for name, v in (("x", x), ("y", y), ("z", zf)):
-        if not np.isfinite(v):
-            raise ValueError(f"{name}: coordinate 0 (flat index) is {v}, not a finite number")
-    nz.check_lattice(max(abs(x), abs(y), abs(zf)))
-    if nz.planar:
-        return np.float64(_grad2_eval(nz.grad2(), x, y))
-    return np.float64(_perm3_eval(ctypes.addressof(nz._b.contents.perm3), x, y, zf))
-
-
 def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=6, gain=0.5,
            lacunarity=2.0, table=None, table_size=512, reference=False, terms="F1",
            lambda_=4.0, points=50, count="inverse", tile=64, out=None):
@@ -593,11 +610,16 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
     """
     nz = _make(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
                terms, lambda_, points, count, tile)
-    if out is None and nz.sum is None and nz.kind in ("improved", "noise2") \
-            and _scalars(x, y, z):
-        return _point(nz, x, y, z)
-    if nz.sum == "marble":
-        raise ValueError("noise: marble is a texture of the plane: use grid()")
+    f = nz.kernel
+    if out is None and _scalars(x, y, z):
+        # the extension's scalar path: no array is made (a point the
+        # library refuses comes back through _points_nz for its message)
+        return f(x, y) if z is None else f(x, y, z)
+    return _points_nz(nz, x, y, z, out=out)
+
+
+def _points_nz(nz, x, y, z=None, *, out=None):
+    """points() of the built noise nz: the arrays' path."""
     if nz.planar:
         if z is not None:
             raise ValueError(f"z: {nz.kind} is a 2D noise and takes no z")
@@ -614,7 +636,9 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
     if any(np.may_share_memory(out, a) for a in (x, y, z, xs, ys, zs)
            if isinstance(a, np.ndarray)):
         out = np.empty_like(dest)
-    k = _points_into(nz, xs, ys, zs, out)
+    # one C call, a block at a time with the GIL released and signals
+    # (Ctrl-C) checked between blocks (_ext.c)
+    k = ext.points(nz.kernel, xs, ys, zs, out)
     if out is not dest:
         dest.ravel()[:k] = out.ravel()[:k]
     if k < out.size:
@@ -622,35 +646,43 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
     return dest
 
 
-def _points_into(nz, xs, ys, zs, out):
-    """points' C call into out, which overlaps no coordinate: the flat index of
-    the first point the library refused, out.size if none."""
-    n = out.size
-    o = nz.octaves
-    px, py, po = _ptr(xs), _ptr(ys), _ptr(out)
-    pz = _ptr(zs) if zs is not None else None
-    # The SIMD kernels check their points block by block (nl_noise_*_checked);
-    # the others are checked in one pass first, which costs little beside them.
-    if nz.kind == "improved" and not o.turbulence:
-        perm3 = ctypes.addressof(nz._b.contents.perm3)
-        k = _perm3_checked(perm3, None if nz.sum is None else ctypes.byref(o), px, py, pz, n, po)
-    elif nz.kind == "noise2" and nz.sum is None:
-        k = _grad2_checked(nz.grad2(), px, py, n, po)
-    else:
-        k = _points_refused(px, py, pz, n, _octaves_fmax(ctypes.byref(o)))
-        if nz.kind == "wavelet" and nz.sum is None:
-            _wavelet_points(nz._b.contents.tile, px, py, pz, k, po)
-        elif nz.kind == "gctbf" and nz.sum is None:
-            b = nz._b.contents
-            _gctbf_points(b.gctbf_cell, ctypes.byref(b.gctbf), px, py, pz, k, po)
-        else:
-            _fractal_points(ctypes.byref(nz.basis), ctypes.byref(o), px, py, pz, k, po)
-    return k
+def function(noise="improved", *, seed=1, basis="improved", octaves=6, gain=0.5,
+             lacunarity=2.0, table=None, table_size=512, reference=False, terms="F1",
+             lambda_=4.0, points=50, count="inverse", tile=64):
+    """A noise built once, as a function: ``f = function("fbm", octaves=4); f(x, y, z)``.
+
+    ``f(x, y[, z])`` is ``points(x, y, z, noise, ...)`` with these options:
+    on Python floats or ints (or numpy float64 scalars) it takes the
+    extension's fast path (no array is made, the options are not looked up
+    again: about python3-noise's ``pnoise3`` per call, docs/python.md) and
+    returns a numpy float64; on arrays, with ``out=``, or for a point the
+    library refuses it is ``points`` (broadcasting, the same errors). Use it
+    in a loop over single points; for arrays both cost the same.
+
+    Parameters
+    ----------
+    %OPTIONS%
+    Returns
+    -------
+    NoiseFunction : callable f(x, y[, z], *, out=None)
+
+    Example
+    -------
+    >>> import noiselab.noise as nn
+    >>> f = nn.function("improved", seed=3)
+    >>> f(1.25, 2.5, 0.5) == nn.points(1.25, 2.5, 0.5, seed=3)
+    True
+    >>> f([0.5, 1.5], 2.5).shape
+    (2,)
+    """
+    return _make(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
+                 terms, lambda_, points, count, tile).kernel
 
 
 # The options both functions share, written once.
 grid.__doc__ = grid.__doc__.replace("%OPTIONS%", _DOC_OPTIONS)
 points.__doc__ = points.__doc__.replace("%OPTIONS%", _DOC_OPTIONS)
+function.__doc__ = function.__doc__.replace("%OPTIONS%", _DOC_OPTIONS)
 
 
 def _cells(seed, lambda_, points, count):
