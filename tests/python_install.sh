@@ -80,4 +80,15 @@ vsite="$("$out/venv/bin/python" -c 'import sysconfig; print(sysconfig.get_path("
 # the wheel holds the package alone: no library, header or program beside it
 extra="$(cd "$out/venv" && find . -name 'libnoiselab*' -o -name 'nl_noise.h' -o -name 'noiselab.pc' | head -n 3)"
 [ -z "$extra" ] || fail "the wheel installed more than the package: $extra"
-echo "python_install: ok (meson install: $site; pip: $vsite)"
+# PEP 561: a type checker reads the installed package's hints (py.typed),
+# here mypy (Debian's, where installed) run for the venv's interpreter.
+typed="mypy not installed: hints not checked"
+if $py -c 'import mypy' 2>/dev/null; then
+  printf 'import noiselab.noise as nn\nnn.grid("fbm", "64")\n' >"$out/caller.py"
+  (cd "$out" && $py -m mypy --no-incremental --cache-dir /dev/null \
+     --python-executable "$out/venv/bin/python" caller.py) >"$out/mypy.log" 2>&1 || true
+  grep -q 'Argument 2 to "grid" has incompatible type "str"' "$out/mypy.log" \
+    || fail "mypy does not read the installed package's hints: $(cat "$out/mypy.log")"
+  typed="mypy reads its hints"
+fi
+echo "python_install: ok (meson install: $site; pip: $vsite; $typed)"

@@ -23,7 +23,7 @@ sum of F1..F4), ``wavelet`` (Cook & DeRose 2005), and the sums ``fractal``,
 
 import ctypes
 import functools
-from typing import Any, Optional, Tuple, Union
+from typing import TYPE_CHECKING, Optional, Tuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -38,7 +38,12 @@ if ext is None:
 
 __all__ = ["grid", "points", "function", "NoiseFunction", "bound", "cellular", "cellular_grid"]
 
-NoiseFunction = ext.NoiseFunction
+if TYPE_CHECKING:
+    from ._ext import NoiseFunction
+else:
+    NoiseFunction = ext.NoiseFunction
+# noise2's gradient table: m angles (radians) and a permutation of 0..m-1
+Table = Tuple[ArrayLike, ArrayLike]
 
 _MAX_OCTAVES = 32
 
@@ -420,10 +425,13 @@ _DOC_OPTIONS = """
 """
 
 
-def grid(noise="improved", size=512, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=1,
-         basis="improved", octaves=6, gain=0.5, lacunarity=2.0, amplitude=0.5, stripes=1.0,
-         table=None, table_size=512, reference=False, terms="F1", lambda_=4.0, points=50,
-         count="inverse", tile=64, out=None):
+def grid(noise: str = "improved", size: int = 512, *, extent: float = 4.0, x0: float = 0.0,
+         y0: float = 0.0, z: float = 0.5, seed: int = 1, basis: str = "improved",
+         octaves: int = 6, gain: float = 0.5, lacunarity: float = 2.0, amplitude: float = 0.5,
+         stripes: float = 1.0, table: Optional[Table] = None, table_size: int = 512,
+         reference: bool = False, terms: str = "F1", lambda_: float = 4.0, points: int = 50,
+         count: str = "inverse", tile: int = 64,
+         out: Optional[NDArray[np.float64]] = None) -> NDArray[np.float64]:
     """A size x size raster of a noise, as ``scripts/noiselab render`` makes it.
 
     Pixel (row r, column c) holds the noise at x = x0 + (c + 1/2) extent / size,
@@ -461,15 +469,15 @@ def grid(noise="improved", size=512, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=
                terms, lambda_, points, count, tile)
     c = max(abs(win.x0), abs(win.x0 + win.size), abs(win.y0), abs(win.y0 + win.size))
     nz.check_lattice(c if nz.planar else max(c, abs(win.z)))
-    out = _out(out, (size, size))
+    res = _out(out, (size, size))
     if nz.sum == "marble":
         _marble_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
                      2 * np.pi * so.stripes, so.amplitude,
-                     _ptr(out))
+                     _ptr(res))
     else:
         _fractal_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
-                      _ptr(out))
-    return out
+                      _ptr(res))
+    return res
 
 
 def _out(out, shape):
@@ -483,9 +491,11 @@ def _out(out, shape):
     return out
 
 
-def bound(noise="improved", *, seed=1, basis="improved", octaves=6, gain=0.5, lacunarity=2.0,
-          table=None, table_size=512, reference=False, terms="F1", lambda_=4.0, points=50,
-          count="inverse", tile=64):
+def bound(noise: str = "improved", *, seed: int = 1, basis: str = "improved", octaves: int = 6,
+          gain: float = 0.5, lacunarity: float = 2.0, table: Optional[Table] = None,
+          table_size: int = 512, reference: bool = False, terms: str = "F1",
+          lambda_: float = 4.0, points: int = 50, count: str = "inverse",
+          tile: int = 64) -> float:
     """The analytic bound B of a noise, |value| <= B (turbulence: 0 <= value <= B):
     the basis's bound times the sum of |amplitudes| (nl_noise_octaves_bound);
     render maps an integer image's grey levels by it. Marble's values lie in
@@ -564,9 +574,12 @@ def _scalars(*v):
     return all(type(a) in (float, int, np.float64) for a in v if a is not None)
 
 
-def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=6, gain=0.5,
-           lacunarity=2.0, table=None, table_size=512, reference=False, terms="F1",
-           lambda_=4.0, points=50, count="inverse", tile=64, out=None):
+def points(x: ArrayLike, y: ArrayLike, z: Optional[ArrayLike] = None, noise: str = "improved",
+           *, seed: int = 1, basis: str = "improved", octaves: int = 6, gain: float = 0.5,
+           lacunarity: float = 2.0, table: Optional[Table] = None, table_size: int = 512,
+           reference: bool = False, terms: str = "F1", lambda_: float = 4.0, points: int = 50,
+           count: str = "inverse", tile: int = 64,
+           out: Optional[NDArray[np.float64]] = None) -> NDArray[np.float64]:
     """A noise at arrays of points: x, y (and z) broadcast together as numpy does.
 
     Coordinates are float64 (integer and float32 arrays are converted; other
@@ -646,9 +659,11 @@ def _points_nz(nz, x, y, z=None, *, out=None):
     return dest
 
 
-def function(noise="improved", *, seed=1, basis="improved", octaves=6, gain=0.5,
-             lacunarity=2.0, table=None, table_size=512, reference=False, terms="F1",
-             lambda_=4.0, points=50, count="inverse", tile=64):
+def function(noise: str = "improved", *, seed: int = 1, basis: str = "improved",
+             octaves: int = 6, gain: float = 0.5, lacunarity: float = 2.0,
+             table: Optional[Table] = None, table_size: int = 512, reference: bool = False,
+             terms: str = "F1", lambda_: float = 4.0, points: int = 50, count: str = "inverse",
+             tile: int = 64) -> NoiseFunction:
     """A noise built once, as a function: ``f = function("fbm", octaves=4); f(x, y, z)``.
 
     ``f(x, y[, z])`` is ``points(x, y, z, noise, ...)`` with these options:
@@ -680,9 +695,8 @@ def function(noise="improved", *, seed=1, basis="improved", octaves=6, gain=0.5,
 
 
 # The options both functions share, written once.
-grid.__doc__ = grid.__doc__.replace("%OPTIONS%", _DOC_OPTIONS)
-points.__doc__ = points.__doc__.replace("%OPTIONS%", _DOC_OPTIONS)
-function.__doc__ = function.__doc__.replace("%OPTIONS%", _DOC_OPTIONS)
+for _f in (grid, points, function):
+    _f.__doc__ = (_f.__doc__ or "").replace("%OPTIONS%", _DOC_OPTIONS)
 
 
 def _cells(seed, lambda_, points, count):
@@ -690,7 +704,9 @@ def _cells(seed, lambda_, points, count):
                   points, count, 64)
 
 
-def cellular(x, y, z=0.5, n=4, *, seed=1, lambda_=4.0, points=50, count="inverse"):
+def cellular(x: ArrayLike, y: ArrayLike, z: ArrayLike = 0.5, n: int = 4, *, seed: int = 1,
+             lambda_: float = 4.0, points: int = 50,
+             count: str = "inverse") -> NDArray[np.float64]:
     """Worley's cellular distances F1..Fn (Qin & Yang 2000's feature points,
     src/cellular/nl_cellular.h) at arrays of points, broadcast as numpy does.
 
@@ -731,8 +747,9 @@ def cellular(x, y, z=0.5, n=4, *, seed=1, lambda_=4.0, points=50, count="inverse
     return out
 
 
-def cellular_grid(size=512, n=4, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=1, lambda_=4.0,
-                  points=50, count="inverse"):
+def cellular_grid(size: int = 512, n: int = 4, *, extent: float = 4.0, x0: float = 0.0,
+                  y0: float = 0.0, z: float = 0.5, seed: int = 1, lambda_: float = 4.0,
+                  points: int = 50, count: str = "inverse") -> NDArray[np.float64]:
     """F1..Fn on grid()'s raster through the cellular row kernel:
     (size, size, n) float64, [r, c, i] = F_{i+1} at grid's pixel (r, c).
 
