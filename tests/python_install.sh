@@ -13,7 +13,9 @@
 #    -c 'import noiselab.stats; ...'`.
 # Each gives Perlin's reference noise(3.14, 42, 7) through the installed
 # extension (which holds the library: no libnoiselab.so needed beside it)
-# and runs a KS test. Skipped (77) without numpy, venv or meson-python.
+# and runs a KS test; the wheel's also reads a PNG through the OpenImageIO
+# module it carries (noiselab/noiselab/libnl_oiio.so, where the library's
+# code looks first). Skipped (77) without numpy, venv or meson-python.
 # Args: SOURCE_DIR BUILD_DIR OUTDIR.
 set -euo pipefail
 src="$(cd "$1" && pwd)" build="$(cd "$2" && pwd)" out="$3"
@@ -43,6 +45,12 @@ f = nn.function("improved", reference=True)
 assert float(f(3.14, 42.0, 7.0)) == v
 D, p = ns.kstest(np.linspace(0.005, 0.995, 100), "uniform")
 assert 0 < D < 0.01 and p > 0.99, (D, p)
+if len(sys.argv) > 2:   # an image through the OpenImageIO module the install carries
+    import noiselab.byexample as nb
+    assert nb.read_image(sys.argv[2]).shape[2] >= 1
+    maps = open("/proc/self/maps").read()
+    mod = [l.split()[-1] for l in maps.splitlines() if l.endswith("libnl_oiio.so")]
+    assert mod and mod[0].startswith(where), mod
 print("ok", noiselab.__file__)
 '
 
@@ -75,7 +83,9 @@ $py -m venv --system-site-packages "$out/venv" >"$out/venv.log" 2>&1 \
    --disable-pip-version-check .) >"$out/pip.log" 2>&1 \
   || { tail -n 40 "$out/pip.log"; fail "pip install . failed (log: $out/pip.log)"; }
 vsite="$("$out/venv/bin/python" -c 'import sysconfig; print(sysconfig.get_path("platlib"))')"
-(cd / && PYTHONDONTWRITEBYTECODE=1 "$out/venv/bin/python" -c "$check" "$vsite") \
+png="$(find "$src/data/exemplars" -name '*.png' | sort | head -n 1)"
+[ -n "$png" ] || fail "no PNG in $src/data/exemplars to read"
+(cd / && PYTHONDONTWRITEBYTECODE=1 "$out/venv/bin/python" -c "$check" "$vsite" "$png") \
   >"$out/pip-run.log" 2>&1 || { cat "$out/pip-run.log"; fail "the pip-installed package does not run"; }
 # the wheel holds the package alone: no library, header or program beside it
 extra="$(cd "$out/venv" && find . -name 'libnoiselab*' -o -name 'nl_noise.h' -o -name 'noiselab.pc' | head -n 3)"

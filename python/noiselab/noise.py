@@ -589,10 +589,13 @@ def points(x: ArrayLike, y: ArrayLike, z: Optional[ArrayLike] = None, noise: str
     in C order, and its entries from it on may have been written (the library
     checks the points a block of 512 at a time, beside the kernel, where they
     are in cache). z defaults to the plane 0.5 that ``grid`` and
-    render use; 2D noise (noise2) takes no z. Every noise is one C call for
-    the whole array (the GIL released): SIMD batch kernels for improved,
-    noise2 and the fractal and fbm sums over improved, point loops in C for
-    the others.
+    render use; 2D noise (noise2) takes no z. Every noise is one call of
+    the extension for the whole array, run a block at a time with the GIL
+    released and Ctrl-C (KeyboardInterrupt) honoured between blocks: SIMD
+    batch kernels for improved, noise2 and the fractal and fbm sums over
+    improved, point loops in C for the others. On Python floats, points()
+    returns a numpy float64 through the extension's scalar path (no array
+    is made); ``function`` spares the options' lookup as well.
     A point gives the bits ``grid`` gives at the same coordinates (for sums,
     when every octave's frequency is a power of two, as with lacunarity 2:
     the row kernels scale x0 and dx separately).
