@@ -49,10 +49,12 @@ except ImportError:
 
 
 def pair(ours, peer, repeats):
-    """Alternate the two so that both see the same machine."""
+    """Alternate the two so that both see the same machine, in the order
+    ours, peer, peer, ours (neither always runs first, after the other)."""
     to, tp = [], []
-    for _ in range(repeats):
-        for f, ts in ((ours, to), (peer, tp)):
+    for k in range(repeats):
+        order = ((ours, to), (peer, tp)) if k % 2 == 0 else ((peer, tp), (ours, to))
+        for f, ts in order:
             t = time.thread_time()
             f()
             ts.append(time.thread_time() - t)
