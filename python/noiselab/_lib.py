@@ -57,8 +57,13 @@ def _load_ext():
             f = os.path.join(build, "python", "_ext" + suffix)
             if os.path.exists(f):
                 spec = importlib.util.spec_from_file_location(name, f)
+                if spec is None or spec.loader is None:
+                    continue
                 mod = importlib.util.module_from_spec(spec)
-                spec.loader.exec_module(mod)
+                try:
+                    spec.loader.exec_module(mod)
+                except ImportError:   # another numpy's ABI: stats and the rest still load
+                    continue
                 sys.modules[name] = mod
                 return mod
     return None
