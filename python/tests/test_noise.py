@@ -539,3 +539,49 @@ def test_count_is_refused_in_render_words(tmp_path):
     # the three rules give three rasters: closest-last is no alias
     g = [nn.grid("gctbf", 32, count=c, seed=3) for c in ("inverse", "closest", "closest-last")]
     assert not np.array_equal(g[1], g[2]) and not np.array_equal(g[0], g[2])
+
+
+@pytest.mark.parametrize("noise,kw", [("improved", {}), ("improved", dict(reference=True)),
+                                      ("fbm", dict(octaves=5, lacunarity=2.3)),
+                                      ("fractal", {}), ("turbulence", dict(octaves=3)),
+                                      ("noise2", {}), ("fbm", dict(basis="table")),
+                                      ("wavelet", dict(tile=16)), ("gctbf", {}),
+                                      ("fbm", dict(basis="wavelet", tile=16, octaves=2))])
+def test_function_scalar_calls_are_the_array_calls(noise, kw):
+    """nn.function's fast path (Python floats and ints, no array made) gives
+    the bits of the batch over the same points, for every way the extension
+    evaluates a noise; points() on scalars takes the same path."""
+    r = np.random.default_rng(5)
+    planar = noise == "noise2" or kw.get("basis") == "table"
+    x = r.uniform(-60, 60, (2 if planar else 3, 300))
+    x[:, :5] = np.round(x[:, :5])   # lattice points among them
+    ref = nn.points(*x, noise=noise, **kw)
+    f = nn.function(noise, **kw)
+    got = [f(*p) for p in x.T.tolist()]
+    assert all(type(v) is np.float64 for v in got)
+    assert np.array_equal(got, ref)
+    ints = [f(*map(int, p)) for p in x[:, :5].T]
+    assert np.array_equal(ints, ref[:5])
+    assert np.array_equal([nn.points(*p, noise=noise, **kw) for p in x.T.tolist()[:20]], ref[:20])
+    if not planar:   # z defaults to render's plane 0.5, as points' does
+        assert f(x[0, 7], x[1, 7]) == nn.points(x[0, 7], x[1, 7], 0.5, noise, **kw)
+
+
+def test_function_declines_to_points_for_what_it_does_not_take():
+    """What the fast path does not take goes to points(), with its errors."""
+    f = nn.function("improved")
+    with pytest.raises(ValueError, match=r"x: coordinate 0 \(flat index\) is nan"):
+        f(float("nan"), 1.0, 2.0)
+    with pytest.raises(ValueError, match="beyond 2\\^52"):
+        f(2.0 ** 60, 1.0, 2.0)
+    with pytest.raises(TypeError, match="z: coordinates must be real numbers"):
+        f(1.0, 2.0, "fbm")
+    with pytest.raises(TypeError, match="dtype bool"):
+        f(True, 2.0, 3.0)
+    with pytest.raises(ValueError, match="z: noise2 is a 2D noise"):
+        nn.function("noise2")(1.0, 2.0, 3.0)
+    with pytest.raises(ValueError, match="marble is a texture"):
+        nn.function("marble")
+    out = np.empty(3)
+    assert f([0.5, 1.5, 2.5], 1.0, 2.0, out=out) is out
+    assert np.array_equal(out, nn.points([0.5, 1.5, 2.5], 1.0, 2.0))
