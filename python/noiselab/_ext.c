@@ -21,7 +21,11 @@
  * the GIL released; between blocks the GIL is taken back to check for
  * signals (PyErr_CheckSignals needs it), so Ctrl-C raises
  * KeyboardInterrupt within a block's time (a few ms) instead of at the
- * end of a long call. */
+ * end of a long call.
+ *
+ * grid(): nl_noise_fractal_grid's raster (and nl_texture_marble_grid's), the
+ * same row calls in the same order, a block of rows at a time with the same
+ * signal checks between blocks. */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
 #include <structmember.h>
@@ -30,6 +34,7 @@
 #include <numpy/arrayscalars.h>
 
 #include "basis/nl_basis.h"
+#include "texture/nl_texture.h"
 
 /* How a built noise evaluates points (noise.py chooses, by what the
  * library has kernels for). */
@@ -306,6 +311,62 @@ static PyObject *ext_points(PyObject *mod, PyObject *const *args, Py_ssize_t nar
   return PyLong_FromSize_t(done);
 }
 
+/* grid(noise_basis, octaves, x0, y0, z, size, w, h, marble, omega, a, block, out):
+ * the window {x0, y0, z, size, w, h} of nl_noise_fractal_grid over the basis
+ * and octaves at those addresses (the caller keeps them alive) into the
+ * C-contiguous float64 out of h x w; marble: then nl_texture_marble_grid's
+ * stripes, omega and a as its. The bits of those calls: the same rows, each
+ * nl_noise_fractal_row at x0 + dx/2, y0 + (r + 1/2) dy. A block is as many
+ * rows as hold about block samples times octaves (at least one row). */
+static PyObject *ext_grid(PyObject *mod, PyObject *args)
+{
+  (void)mod;
+  PyObject *pb, *po, *pout;
+  nl_noise_window win;
+  int marble;
+  double omega, a;
+  Py_ssize_t block;
+  if (!PyArg_ParseTuple(args, "OOddddiipddnO", &pb, &po, &win.x0, &win.y0, &win.z, &win.size,
+                        &win.w, &win.h, &marble, &omega, &a, &block, &pout))
+    return NULL;
+  const nl_noise_basis *b = address(pb);
+  const nl_noise_octaves *o = address(po);
+  if (PyErr_Occurred())
+    return NULL;
+  if (!b || !o || win.w < 1 || win.h < 1) {
+    PyErr_SetString(PyExc_ValueError, "grid: no basis, no octaves or an empty window");
+    return NULL;
+  }
+  size_t w = (size_t)win.w, h = (size_t)win.h;
+  double *out = (double *)data_of(pout, w * h, "out", 1);
+  if (!out)
+    return NULL;
+  double *scratch = malloc(w * sizeof *scratch);
+  if (!scratch)
+    return PyErr_NoMemory();
+  size_t oct = o->n > 1 ? (size_t)o->n : 1, work = w * oct;
+  size_t rows = block < 1 || work >= (size_t)block ? 1 : (size_t)block / work;
+  double dx = win.size / win.w, dy = win.size / win.h;
+  for (size_t r0 = 0; r0 < h; r0 += rows) {
+    size_t r1 = r0 + rows < h ? r0 + rows : h;
+    Py_BEGIN_ALLOW_THREADS
+    for (size_t r = r0; r < r1; r++) {
+      double y = win.y0 + ((int)r + 0.5) * dy, *row = out + r * w;
+      nl_noise_fractal_row(b, o, win.x0 + 0.5 * dx, dx, y, win.z, w, row, scratch);
+      if (marble)
+        for (size_t c = 0; c < w; c++)
+          row[c] = nl_texture_marble(omega * y, omega * a, row[c]);
+    }
+    Py_END_ALLOW_THREADS
+    if (r1 < h && PyErr_CheckSignals()) {
+      free(scratch);
+      return NULL;
+    }
+  }
+  free(scratch);
+  Py_RETURN_NONE;
+}
+
 /* bases(): the library's registry of bases (nl_basis_kinds), as
  * (name, name under a sum, planar) triples, so that noise.py lists none. */
 static PyObject *ext_bases(PyObject *mod, PyObject *unused)
@@ -331,6 +392,8 @@ static PyMethodDef ext_methods[] = {
   {"points", (PyCFunction)(void (*)(void))ext_points, METH_FASTCALL,
    "points(f, x, y, z, out) -> index of the first refused point (out.size if none)"},
   {"bases", ext_bases, METH_NOARGS, "bases() -> ((name, under, planar), ...)"},
+  {"grid", ext_grid, METH_VARARGS,
+   "grid(noise_basis, octaves, x0, y0, z, size, w, h, marble, omega, a, block, out)"},
   {NULL, NULL, 0, NULL}
 };
 

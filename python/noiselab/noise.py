@@ -437,7 +437,8 @@ def grid(noise: str = "improved", size: int = 512, *, extent: float = 4.0, x0: f
     Pixel (row r, column c) holds the noise at x = x0 + (c + 1/2) extent / size,
     y = y0 + (r + 1/2) extent / size, in the plane z (2D noises ignore z):
     row 0 is y0, the top of render's image. Computed by the library's row
-    kernels (SIMD, the scalar code's bits); the GIL is released meanwhile.
+    kernels (SIMD, the scalar code's bits); the GIL is released meanwhile
+    and Ctrl-C raises KeyboardInterrupt between blocks of rows.
 
     Parameters
     ----------
@@ -470,13 +471,15 @@ def grid(noise: str = "improved", size: int = 512, *, extent: float = 4.0, x0: f
     c = max(abs(win.x0), abs(win.x0 + win.size), abs(win.y0), abs(win.y0 + win.size))
     nz.check_lattice(c if nz.planar else max(c, abs(win.z)))
     res = _out(out, (size, size))
-    if nz.sum == "marble":
-        _marble_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
-                     2 * np.pi * so.stripes, so.amplitude,
-                     _ptr(res))
-    else:
-        _fractal_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
-                      _ptr(res))
+    # nl_noise_fractal_grid's rows (nl_texture_marble_grid's for marble), a
+    # block of rows at a time with the GIL released and Ctrl-C honoured
+    # between blocks (_ext.c), a block of a few ms: the SIMD row kernels of
+    # improved and noise2 take ~1 ns a sample and octave, gctbf and wavelet
+    # rows tens of times more (as the point blocks of _ext.c)
+    block = 65536 if nz.kind in ("improved", "noise2") else 4096
+    ext.grid(ctypes.addressof(nz.basis), ctypes.addressof(nz.octaves), win.x0, win.y0, win.z,
+             win.size, win.w, win.h, nz.sum == "marble", 2 * np.pi * so.stripes, so.amplitude,
+             block, res)
     return res
 
 

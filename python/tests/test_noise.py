@@ -166,36 +166,60 @@ def test_cellular_distances():
         nn.cellular(0.0, 0.0, 0.0, n=5)
 
 
-def test_long_calls_release_the_gil():
-    """While a long grid runs in C on one thread, Python runs on another
-    (ctypes drops the GIL around foreign calls): the main thread's loop keeps
-    stamping times through the call's span. Held (ctypes.PyDLL, measured),
-    the main thread runs only in the switch interval before the call: its
-    stamps inside the span covered 7% of it (12 ms of 160), released 99%."""
+@pytest.mark.parametrize("call", ["grid", "points"])
+def test_long_calls_release_the_gil(call):
+    """While a long grid or batch of points runs in C on one thread, Python
+    runs on another (the extension releases the GIL around each block): the
+    main thread's loop keeps stamping times through the call's span. With
+    the GIL held the main thread would run only in the switch interval
+    before the call (a few % of the span)."""
     import threading
     import time
     span = []
+    r = np.random.default_rng(3)
+    pts = r.uniform(-50, 50, (3, 300000))
 
     def work():
-        buf = np.empty((1536, 1536))
         t0 = time.perf_counter()
-        nn._fractal_grid(*work.args, nn._ptr(buf))
+        if call == "grid":
+            nn.grid("fbm", 1536, octaves=12)
+        else:
+            nn.points(*pts, "fbm", octaves=12)
         span.extend([t0, time.perf_counter()])
 
-    nz = nn._Noise("fbm", 1, "improved", 12, 0.5, 2.0, None, 512, False, "F1", 4.0, 50,
-                   "inverse", 64)
-    win = nn._Window(0.0, 0.0, 0.5, 4.0, 1536, 1536)
-    work.args = (ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win))
     t = threading.Thread(target=work)
     stamps = []
     t.start()
     while t.is_alive():
         stamps.append(time.perf_counter())
     t.join()
-    nz.close()
     inside = [s for s in stamps if span[0] < s < span[1]]
     covered = (inside[-1] - inside[0]) / (span[1] - span[0]) if inside else 0.0
     assert covered > 0.5, (covered, span[1] - span[0])
+
+
+@pytest.mark.parametrize("noise,kw", [("fbm", dict(octaves=5)), ("marble", dict(stripes=2.5)),
+                                      ("turbulence", dict(basis="wavelet", tile=16)),
+                                      ("gctbf", {}), ("noise2", {}),
+                                      ("fbm", dict(lacunarity=1.7, gain=0.6))])
+def test_grid_is_the_library_grid(noise, kw):
+    """grid's rows, run a block at a time by the extension, are
+    nl_noise_fractal_grid's (nl_texture_marble_grid's) bits, on a window
+    that is not square in its pixel count's factors either."""
+    size, x0, y0, z = 37, -3.25, 1.5, 0.75
+    v = nn.grid(noise, size, x0=x0, y0=y0, z=z, extent=5.0, **kw)
+    nz = nn._make(noise, 1, kw.get("basis", "improved"), kw.get("octaves", 6), kw.get("gain", 0.5),
+                  kw.get("lacunarity", 2.0), None, 512, False, "F1", 4.0, 50, "inverse",
+                  kw.get("tile", 64))
+    win = nn._Window(x0, y0, z, 5.0, size, size)
+    ref = np.empty((size, size))
+    if noise == "marble":
+        nn._marble_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
+                        2 * np.pi * kw["stripes"], 0.5, nn._ptr(ref))
+    else:
+        nn._fractal_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
+                         nn._ptr(ref))
+    assert np.array_equal(v, ref)
 
 
 def test_scalar_point_is_the_batch():
@@ -246,6 +270,9 @@ class _CountedExt:
     def points(self, f, *a):
         self.calls.append(f._kind)
         return _REAL_EXT.points(f, *a)
+
+    def __getattr__(self, name):
+        return getattr(_REAL_EXT, name)
 
 
 def test_batches_are_the_point_calls(monkeypatch):

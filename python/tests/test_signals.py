@@ -1,4 +1,4 @@
-"""Ctrl-C during a long noise call: the extension runs it a block at a time
+"""Ctrl-C during a long noise call (points, grid): the extension runs it a block at a time
 with the GIL released and checks for signals between blocks (_ext.c), so
 SIGINT raises KeyboardInterrupt within a block's time, not when the call
 ends. A child process starts a call that would take seconds; this process
@@ -15,18 +15,25 @@ import pytest
 from conftest import BUILD, ROOT
 
 CHILD = r"""
-import sys, time, numpy as np, noiselab.noise as nn
+import math, sys, time, numpy as np, noiselab.noise as nn
 noise, kw, seconds = sys.argv[1], eval(sys.argv[2]), float(sys.argv[3])
+grid = kw.pop("grid", False)
 r = np.random.default_rng(1)
 x = r.uniform(-100, 100, (3, 2000))
 t = time.thread_time()
-nn.points(*x, noise, **kw)
-per = (time.thread_time() - t) / x.shape[1]
+nn.grid(noise, 40, **kw) if grid else nn.points(*x, noise, **kw)
+per = (time.thread_time() - t) / (1600 if grid else x.shape[1])
 n = int(seconds / per)   # a call of this many seconds of CPU, were it not stopped
-x = r.uniform(-100, 100, (3, n))
+if grid:
+    size = int(math.sqrt(n))
+    call = lambda: nn.grid(noise, size, **kw)
+    n = size * size
+else:
+    x = r.uniform(-100, 100, (3, n))
+    call = lambda: nn.points(*x, noise, **kw)
 print("go", per * n, flush=True)
 try:
-    nn.points(*x, noise, **kw)
+    call()
     print("done", flush=True)
 except KeyboardInterrupt:
     print("interrupted", time.monotonic(), flush=True)
@@ -36,6 +43,7 @@ except KeyboardInterrupt:
 @pytest.mark.parametrize("noise,kw,seconds", [
     ("fbm", dict(basis="gctbf", octaves=8), 20.0),   # the library's point loops
     ("fbm", dict(octaves=30), 4.0),                   # the SIMD batch kernel
+    ("fbm", dict(basis="gctbf", octaves=4, grid=True), 10.0),   # grid's rows
 ])
 def test_ctrl_c_interrupts_a_long_call_within_0_2_s(noise, kw, seconds):
     env = dict(os.environ, NOISELAB_BUILD=BUILD,
