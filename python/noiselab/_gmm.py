@@ -1,8 +1,10 @@
 """GaussianMixture over nl_gmm (stats/nl_gmm.h), scikit-learn's names."""
 
 import ctypes
+from typing import Any, Dict, Optional, Tuple, Union
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from ._lib import Error, c_double_p, check, fn, mirror
 from ._lib import integer as _int, real as _real
@@ -120,8 +122,11 @@ class GaussianMixture:
     ((4, 2), (4,))
     """
 
-    def __init__(self, n_components=1, *, covariance_type="full", tol=1e-3, reg_covar=1e-6,
-                 max_iter=100, random_state=0, n_threads=1):
+    def __init__(self, n_components: int = 1, *, covariance_type: str = "full",
+                 tol: float = 1e-3, reg_covar: float = 1e-6, max_iter: int = 100,
+                 random_state: Union[None, int, np.random.RandomState,
+                                     np.random.Generator] = 0,
+                 n_threads: int = 1) -> None:
         # Stored as given (sklearn.base.clone checks that), checked at fit.
         self.n_components = n_components
         self.covariance_type = covariance_type
@@ -132,11 +137,11 @@ class GaussianMixture:
         self.n_threads = n_threads
         self._g = None
 
-    def get_params(self, deep=True):
+    def get_params(self, deep: bool = True) -> Dict[str, Any]:
         """The constructor's arguments, by name (sklearn's get_params)."""
         return {name: getattr(self, name) for name in _PARAMS}
 
-    def set_params(self, **params):
+    def set_params(self, **params: Any) -> "GaussianMixture":
         """Sets constructor arguments by name (checked at the next fit); returns self."""
         for name, value in params.items():
             if name not in _PARAMS:
@@ -197,7 +202,8 @@ class GaussianMixture:
                              f"{self._g.contents.d}")
         return x
 
-    def fit(self, X, y=None, *, init_labels=None):
+    def fit(self, X: ArrayLike, y: Any = None, *,
+            init_labels: Optional[ArrayLike] = None) -> "GaussianMixture":
         """Fits the mixture to the rows of X; returns self.
 
         init_labels: n labels in 0..n_components-1 to start EM from (one-hot
@@ -261,11 +267,11 @@ class GaussianMixture:
         self.n_features_in_ = d
         return self
 
-    def fit_predict(self, X, y=None):
+    def fit_predict(self, X: ArrayLike, y: Any = None) -> NDArray[np.intp]:
         """Fits, then the most probable component of each row (sklearn's fit_predict)."""
         return self.fit(X).predict(X)
 
-    def sample(self, n_samples=1):
+    def sample(self, n_samples: int = 1) -> Tuple[NDArray[np.float64], NDArray[np.intp]]:
         """n_samples draws from the fitted mixture: (X, y), rows grouped by
         component as sklearn's (counts from a multinomial, then each
         component's normal draws), from random_state's stream."""
@@ -294,7 +300,7 @@ class GaussianMixture:
             raise ValueError("GaussianMixture: not fitted yet; call fit(X) first")
         return self._g
 
-    def score_samples(self, X):
+    def score_samples(self, X: ArrayLike) -> NDArray[np.float64]:
         """log p(x_i) of each row under the mixture."""
         g = self._fitted()
         x = self._rows(X)
@@ -303,7 +309,7 @@ class GaussianMixture:
                       ctypes.byref(err)), err)
         return logp
 
-    def score(self, X, y=None):
+    def score(self, X: ArrayLike, y: Any = None) -> float:
         """The mean log-likelihood of the rows of X (sklearn's score)."""
         g = self._fitted()
         x = self._rows(X)
@@ -315,11 +321,11 @@ class GaussianMixture:
         c = self._fitted().contents
         return int(_nparams(c.k, c.d, c.covariance))
 
-    def aic(self, X):
+    def aic(self, X: ArrayLike) -> float:
         """Akaike's criterion on X: -2 log L + 2 m (sklearn's aic)."""
         return -2 * self.score(X) * np.asarray(X).shape[0] + 2 * self._n_parameters()
 
-    def bic(self, X):
+    def bic(self, X: ArrayLike) -> float:
         """Schwarz's criterion on X: -2 log L + m ln n (sklearn's bic)."""
         n = np.asarray(X).shape[0]
         return -2 * self.score(X) * n + self._n_parameters() * np.log(n)
@@ -352,13 +358,13 @@ class GaussianMixture:
             out[:, j] = col + np.log(g.weights[j])
         return out
 
-    def predict_proba(self, X):
+    def predict_proba(self, X: ArrayLike) -> NDArray[np.float64]:
         """Responsibilities: the posterior probability of each component, n x k."""
         lp = self._component_logpdf(self._rows(X))
         m = lp.max(axis=1, keepdims=True)
         p = np.exp(lp - m)
         return p / p.sum(axis=1, keepdims=True)
 
-    def predict(self, X):
+    def predict(self, X: ArrayLike) -> NDArray[np.intp]:
         """The most probable component of each row."""
         return np.argmax(self._component_logpdf(self._rows(X)), axis=1)

@@ -1,24 +1,34 @@
 """Loading libnoiselab and turning its status codes into exceptions.
 
-Where the library is looked for, first found wins:
+The extension noiselab._ext (_ext.c: the noise calls) holds the whole
+library (linked in whole), so an installed package or a wheel is one file
+of C. It is imported from the package (installed: meson install, pip), else
+from a build tree: $NOISELAB_BUILD/python/, then build/python/ beside
+python/noiselab/ (a checkout built by `scripts/noiselab setup`, so that
+`PYTHONPATH=python` works with no installation).
+
+Where ctypes finds the library for everything else, first found wins:
   1. the file named by NOISELAB_LIBRARY (a path to libnoiselab.so);
-  2. the build tree this package sits in: python/noiselab/ beside build/
-     (a checkout built by `scripts/noiselab setup`), so that
-     `PYTHONPATH=python` works with no installation;
-  3. LIBDIR recorded when meson installed this package (_config.py);
-  4. LIBDIR of an installed noiselab, from `pkg-config --variable=libdir
+  2. the extension itself (ctypes opens it: the same copy of the library);
+  3. a build tree: $NOISELAB_BUILD/libnoiselab.so, then build/ beside
+     python/noiselab/;
+  4. LIBDIR recorded when meson installed this package (_config.py);
+  5. LIBDIR of an installed noiselab, from `pkg-config --variable=libdir
      noiselab` (meson install puts noiselab.pc there);
-  5. the dynamic loader's own search (ctypes.util.find_library).
+  6. the dynamic loader's own search (ctypes.util.find_library).
 """
 
 import ctypes
 import ctypes.util
+import importlib.machinery
+import importlib.util
 import os
 import subprocess
+import sys
 
 import numpy as np
 
-__all__ = ["NoiselabError", "Error", "lib", "path", "check", "fn",
+__all__ = ["NoiselabError", "Error", "ext", "lib", "path", "check", "fn",
            "mirror", "integer", "real", "c_double_p"]
 
 NL_OK, NL_EINVAL, NL_EIO, NL_EFORMAT, NL_ENOMEM, NL_ENUM = range(6)
@@ -30,14 +40,47 @@ class NoiselabError(RuntimeError):
 
 
 
+_HERE = os.path.dirname(os.path.abspath(__file__))
+_BUILDS = [os.environ["NOISELAB_BUILD"]] if os.environ.get("NOISELAB_BUILD") else []
+_BUILDS.append(os.path.join(os.path.dirname(os.path.dirname(_HERE)), "build"))
+
+
+def _load_ext():
+    """noiselab._ext: the package's own, else a build tree's; None if neither."""
+    name = __name__.rpartition(".")[0] + "._ext"
+    try:
+        return importlib.import_module(name)
+    except ImportError:
+        pass
+    for build in _BUILDS:
+        for suffix in importlib.machinery.EXTENSION_SUFFIXES:
+            f = os.path.join(build, "python", "_ext" + suffix)
+            if os.path.exists(f):
+                spec = importlib.util.spec_from_file_location(name, f)
+                if spec is None or spec.loader is None:
+                    continue
+                mod = importlib.util.module_from_spec(spec)
+                try:
+                    spec.loader.exec_module(mod)
+                except ImportError:   # another numpy's ABI: stats and the rest still load
+                    continue
+                sys.modules[name] = mod
+                return mod
+    return None
+
+
+ext = _load_ext()
+
+
 def _candidates():
     env = os.environ.get("NOISELAB_LIBRARY")
     if env:
         yield env
         return
-    here = os.path.dirname(os.path.abspath(__file__))
-    root = os.path.dirname(os.path.dirname(here))
-    yield os.path.join(root, "build", "libnoiselab.so")
+    if ext is not None:
+        yield ext.__file__
+    for build in _BUILDS:
+        yield os.path.join(build, "libnoiselab.so")
     try:
         from . import _config
         yield os.path.join(_config.LIBDIR, "libnoiselab.so")

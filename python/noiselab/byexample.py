@@ -15,8 +15,10 @@ decorrelation, the 33-quantile Gaussian histogram, the calibrated synthesis
 
 import ctypes
 import os
+from typing import Any, Optional, Union
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from ._lib import Error, check, fn, mirror
 from ._lib import integer as _int
@@ -120,7 +122,7 @@ def _from_numpy(name, a):
     return im
 
 
-def read_image(path):
+def read_image(path: Union[str, "os.PathLike[str]"]) -> NDArray[np.float32]:
     """An image file (any format OpenImageIO reads) as a float32 (h, w, channels) array.
 
     Parameters
@@ -144,7 +146,8 @@ def read_image(path):
         _image_free(im)
 
 
-def write_image(image, path, bits=16):
+def write_image(image: ArrayLike, path: Union[str, "os.PathLike[str]"],
+                bits: int = 16) -> None:
     """Writes an (h, w[, channels]) array as the library writes images (atomic;
     format from the extension; bits 8/16 for PNG, 16/32 for EXR). Values
     as ``analyse`` takes them: floats in [0, 1] map to the file's range,
@@ -178,46 +181,46 @@ class Params:
     channel and band, finest first). Save and load the `example` command's
     files with save() and Params.load()."""
 
-    def __init__(self, raw):
+    def __init__(self, raw: Any) -> None:
         self._p = raw
 
     @property
-    def channels(self):
+    def channels(self) -> int:
         return self._p.channels
 
     @property
-    def nbands(self):
+    def nbands(self) -> int:
         return self._p.nbands
 
     @property
-    def mean(self):
+    def mean(self) -> NDArray[np.float64]:
         return np.array(self._p.mean[:self.channels])
 
     @property
-    def matrix(self):
+    def matrix(self) -> NDArray[np.float64]:
         c = self.channels
         return np.array([[self._p.matrix[i][j] for j in range(c)] for i in range(c)])
 
     @property
-    def hist(self):
+    def hist(self) -> NDArray[np.float64]:
         return np.array([self._p.hist[c][:self._p.nhist] for c in range(self.channels)])
 
     @property
-    def weights(self):
+    def weights(self) -> NDArray[np.float64]:
         return np.array([self._p.w[c][:self.nbands] for c in range(self.channels)])
 
     @property
-    def param_count(self):
+    def param_count(self) -> int:
         """The parameters the paper counts (66 for a 512^2 RGB exemplar)."""
         return _param_count(ctypes.byref(self._p))
 
-    def save(self, path):
+    def save(self, path: Union[str, "os.PathLike[str]"]) -> None:
         """Writes the parameters file (atomically), as `example analyse -o` does."""
         err = Error()
         check(_save(ctypes.byref(self._p), os.fsencode(os.fspath(path)), ctypes.byref(err)), err)
 
     @classmethod
-    def load(cls, path):
+    def load(cls, path: Union[str, "os.PathLike[str]"]) -> "Params":
         """Reads a parameters file written by save() or `noiselab example`."""
         p, err = _Params(), Error()
         check(_load(os.fsencode(os.fspath(path)), ctypes.byref(p), ctypes.byref(err)), err)
@@ -228,7 +231,9 @@ class Params:
                 f"{self.param_count} parameters)")
 
 
-def analyse(image, *, rgb=False, histogram=True, paper_histogram=False, calibrate=True):
+def analyse(image: Union[ArrayLike, str, "os.PathLike[str]"], *, rgb: bool = False,
+            histogram: bool = True, paper_histogram: bool = False,
+            calibrate: bool = True) -> Params:
     """Analyses an exemplar into Params (nl_byexample_analyse), as
     `noiselab example analyse` does.
 
@@ -273,7 +278,8 @@ def analyse(image, *, rgb=False, histogram=True, paper_histogram=False, calibrat
         _image_free(im)
 
 
-def synthesize(params, width, height=None, *, seed=1, scale=1.0, solid=False, z=0.0):
+def synthesize(params: Params, width: int, height: Optional[int] = None, *, seed: int = 1,
+               scale: float = 1.0, solid: bool = False, z: float = 0.0) -> NDArray[np.float32]:
     """A width x height texture from Params (nl_byexample_synthesize), float32
     (height, width, channels), as `noiselab example synthesize` makes it
     before writing its file. scale: pixel size in exemplar pixels; solid:
@@ -322,7 +328,7 @@ def synthesize(params, width, height=None, *, seed=1, scale=1.0, solid=False, z=
         _image_free(im)
 
 
-def morph(a, b, t):
+def morph(a: Params, b: Params, t: float) -> Params:
     """Params between a (t = 0) and b (t = 1): linear, the PCA rotation by
     quaternion slerp (nl_byexample_morph). t outside [0, 1] (it would
     extrapolate) or not finite is a ValueError, as `example morph --t`.

@@ -14,8 +14,10 @@ are the thesis's setting (512 angles, 4 octaves from f1 = 8, a1 = 4, w1 =
 
 import ctypes
 from dataclasses import dataclass, field
+from typing import Any, Dict, Tuple
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from ._lib import Error, c_double_p, check, fn, mirror
 from . import noise as _noise
@@ -93,7 +95,7 @@ class ChengResult:
     eval: dict = field(repr=False)
 
     @property
-    def table(self):
+    def table(self) -> Tuple[np.ndarray, np.ndarray]:
         """(angles, perm), as noiselab.noise takes a table."""
         return (self.angles, self.perm)
 
@@ -162,7 +164,7 @@ def _result(g, ev):
     return ChengResult(angles, perm, ev.e_ks, ev.e_con, ev.e, d)
 
 
-def optimise(pattern, seed=1, grid=64, **options):
+def optimise(pattern: ArrayLike, seed: int = 1, grid: int = 64, **options: Any) -> ChengResult:
     """Optimises a gradient table for a control pattern (nl_cheng_run).
 
     Parameters
@@ -211,7 +213,8 @@ def optimise(pattern, seed=1, grid=64, **options):
         _pattern_free(p)
 
 
-def evaluate(table, pattern, grid=64, **options):
+def evaluate(table: Tuple[ArrayLike, ArrayLike], pattern: ArrayLike, grid: int = 64,
+             **options: Any) -> ChengResult:
     """E_KS, E_Con and the other measures of a given table (angles, perm)
     against a pattern (nl_cheng_evaluate), as a ChengResult; options as optimise's.
 
@@ -251,7 +254,8 @@ def evaluate(table, pattern, grid=64, **options):
         _pattern_free(p)
 
 
-def value_grid(table, size, **options):
+def value_grid(table: Tuple[ArrayLike, ArrayLike], size: int,
+               **options: Any) -> NDArray[np.float64]:
     """The control value c(x, y) (all octaves, the config's variant) of a table
     at the pixel centres of a size x size raster of [0,1)^2, row 0 at y = 0.
 

@@ -9,7 +9,11 @@ Two entry points, both float64 out:
     the noise at arrays of coordinates of any shape, broadcast as numpy
     broadcasts, one C call per array: the SIMD batch kernels where the
     library has them (improved and noise2 on their own, fractal and fBm sums
-    over improved), the library's point loops otherwise.
+    over improved), the library's point loops otherwise;
+``function(noise, ...)``
+    the built noise as a function f(x, y[, z]): a call on Python floats
+    costs about what python3-noise's pnoise3 costs (the extension's fast
+    path, noiselab/_ext.c), arrays as ``points``.
 
 Noises (``noise``): ``improved`` (Perlin 2002), ``noise2`` (Cheng 2009's 2D
 gradient table; ``table`` under a sum), ``gctbf`` (Qin & Yang's cellular
@@ -19,13 +23,27 @@ sum of F1..F4), ``wavelet`` (Cook & DeRose 2005), and the sums ``fractal``,
 
 import ctypes
 import functools
+from typing import TYPE_CHECKING, Optional, Tuple
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
-from ._lib import Error, c_double_p, check, fn, integer, mirror
+from ._lib import Error, c_double_p, check, ext, fn, integer, mirror
 from ._lib import real as _real
 
-__all__ = ["grid", "points", "bound", "cellular", "cellular_grid"]
+if ext is None:
+    raise ImportError("noiselab.noise needs the extension noiselab._ext, which this build "
+                      "does not have (meson builds it where numpy's headers are found: "
+                      "`scripts/noiselab setup`)")
+
+__all__ = ["grid", "points", "function", "NoiseFunction", "bound", "cellular", "cellular_grid"]
+
+if TYPE_CHECKING:
+    from ._ext import NoiseFunction
+else:
+    NoiseFunction = ext.NoiseFunction
+# noise2's gradient table: m angles (radians) and a permutation of 0..m-1
+Table = Tuple[ArrayLike, ArrayLike]
 
 _MAX_OCTAVES = 32
 
@@ -141,8 +159,10 @@ _grad2_set_angle = fn("nl_noise_grad2_set_angle", None, ctypes.POINTER(_Grad2), 
                       ctypes.c_double)
 _basis_grad2 = fn("nl_noise_basis_grad2", _NoiseBasis, ctypes.POINTER(_Grad2))
 
-_BASES = {"improved": "improved", "noise2": "noise2", "table": "noise2", "gctbf": "gctbf",
-          "wavelet": "wavelet"}
+# The library's bases (nl_basis_kinds): each by its name and its name under
+# a sum (noise2 is "table" there), in its order; the planar ones take no z.
+_BASES = {n: name for name, under, _ in ext.bases() for n in (name, under)}
+_PLANAR = tuple(name for name, _, planar in ext.bases() if planar)
 _SUMS = ("fractal", "turbulence", "fbm", "marble")
 # nl_basis_make names its inputs as render's options (or nl_cellular_alloc's
 # fields); a Python user typed these parameters.
@@ -157,7 +177,10 @@ _RANGE_NAMES = {f"--{k}": k for k in ("octaves", "gain", "lacunarity", "amplitud
 _SEED_MAX = 2**32 - 1
 # render --count's words (nl_cellular_count_rule's values)
 _COUNTS = {"closest": 0, "inverse": 1, "closest-last": 2}
-_PLANAR = ("noise2",)
+# How the extension evaluates a noise (_ext.c's enum): the SIMD batch
+# kernels of improved noise (alone, fractal and fbm sums) and of noise2, the
+# library's point loops of wavelet and gctbf, any other sum by its rows.
+_K_PERM3, _K_GRAD2, _K_WAVELET, _K_GCTBF, _K_SUM = range(5)
 
 
 def _ptr(a):
@@ -297,6 +320,25 @@ class _Noise:
     def grad2(self):
         return ctypes.cast(self._g, ctypes.c_void_p) if self._g else self._b.contents.grad2
 
+    @functools.cached_property
+    def kernel(self):
+        """This noise as the extension's NoiseFunction (it keeps self alive;
+        the cycle is the garbage collector's)."""
+        if self.sum == "marble":
+            raise ValueError("noise: marble is a texture of the plane: use grid()")
+        if self.kind == "improved" and not self.octaves.turbulence:
+            kind = _K_PERM3
+        elif self.sum is None:
+            kind = {"noise2": _K_GRAD2, "wavelet": _K_WAVELET, "gctbf": _K_GCTBF}[self.kind]
+        else:
+            kind = _K_SUM
+        g = self.grad2()
+        return NoiseFunction(self, functools.partial(_points_nz, self), kind, int(self.planar),
+                             ctypes.addressof(self._b.contents) if self._b else None,
+                             ctypes.addressof(self.basis), ctypes.addressof(self.octaves),
+                             g.value if isinstance(g, ctypes.c_void_p) else g,
+                             int(self.sum is not None))
+
     # The freeing functions are bound as defaults: at interpreter exit the
     # cached noises are collected after the module's globals are gone.
     def close(self, basis_free=_basis_free, grad2_free=_grad2_free):
@@ -383,16 +425,20 @@ _DOC_OPTIONS = """
 """
 
 
-def grid(noise="improved", size=512, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=1,
-         basis="improved", octaves=6, gain=0.5, lacunarity=2.0, amplitude=0.5, stripes=1.0,
-         table=None, table_size=512, reference=False, terms="F1", lambda_=4.0, points=50,
-         count="inverse", tile=64, out=None):
+def grid(noise: str = "improved", size: int = 512, *, extent: float = 4.0, x0: float = 0.0,
+         y0: float = 0.0, z: float = 0.5, seed: int = 1, basis: str = "improved",
+         octaves: int = 6, gain: float = 0.5, lacunarity: float = 2.0, amplitude: float = 0.5,
+         stripes: float = 1.0, table: Optional[Table] = None, table_size: int = 512,
+         reference: bool = False, terms: str = "F1", lambda_: float = 4.0, points: int = 50,
+         count: str = "inverse", tile: int = 64,
+         out: Optional[NDArray[np.float64]] = None) -> NDArray[np.float64]:
     """A size x size raster of a noise, as ``scripts/noiselab render`` makes it.
 
     Pixel (row r, column c) holds the noise at x = x0 + (c + 1/2) extent / size,
     y = y0 + (r + 1/2) extent / size, in the plane z (2D noises ignore z):
     row 0 is y0, the top of render's image. Computed by the library's row
-    kernels (SIMD, the scalar code's bits); the GIL is released meanwhile.
+    kernels (SIMD, the scalar code's bits); the GIL is released meanwhile
+    and Ctrl-C raises KeyboardInterrupt between blocks of rows.
 
     Parameters
     ----------
@@ -424,15 +470,17 @@ def grid(noise="improved", size=512, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=
                terms, lambda_, points, count, tile)
     c = max(abs(win.x0), abs(win.x0 + win.size), abs(win.y0), abs(win.y0 + win.size))
     nz.check_lattice(c if nz.planar else max(c, abs(win.z)))
-    out = _out(out, (size, size))
-    if nz.sum == "marble":
-        _marble_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
-                     2 * np.pi * so.stripes, so.amplitude,
-                     _ptr(out))
-    else:
-        _fractal_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
-                      _ptr(out))
-    return out
+    res = _out(out, (size, size))
+    # nl_noise_fractal_grid's rows (nl_texture_marble_grid's for marble), a
+    # block of rows at a time with the GIL released and Ctrl-C honoured
+    # between blocks (_ext.c), a block of a few ms: the SIMD row kernels of
+    # improved and noise2 take ~1 ns a sample and octave, gctbf and wavelet
+    # rows tens of times more (as the point blocks of _ext.c)
+    block = 65536 if nz.kind in ("improved", "noise2") else 4096
+    ext.grid(ctypes.addressof(nz.basis), ctypes.addressof(nz.octaves), win.x0, win.y0, win.z,
+             win.size, win.w, win.h, nz.sum == "marble", 2 * np.pi * so.stripes, so.amplitude,
+             block, res)
+    return res
 
 
 def _out(out, shape):
@@ -446,9 +494,11 @@ def _out(out, shape):
     return out
 
 
-def bound(noise="improved", *, seed=1, basis="improved", octaves=6, gain=0.5, lacunarity=2.0,
-          table=None, table_size=512, reference=False, terms="F1", lambda_=4.0, points=50,
-          count="inverse", tile=64):
+def bound(noise: str = "improved", *, seed: int = 1, basis: str = "improved", octaves: int = 6,
+          gain: float = 0.5, lacunarity: float = 2.0, table: Optional[Table] = None,
+          table_size: int = 512, reference: bool = False, terms: str = "F1",
+          lambda_: float = 4.0, points: int = 50, count: str = "inverse",
+          tile: int = 64) -> float:
     """The analytic bound B of a noise, |value| <= B (turbulence: 0 <= value <= B):
     the basis's bound times the sum of |amplitudes| (nl_noise_octaves_bound);
     render maps an integer image's grey levels by it. Marble's values lie in
@@ -504,11 +554,21 @@ def _coords(names, arrays):
             a = a.astype(np.float64)
         conv.append(a)
     try:
-        b = np.broadcast_arrays(*conv)
+        shape = np.broadcast(*conv).shape
     except ValueError:
         shapes = ", ".join(f"{n} {a.shape}" for n, a in zip(names, conv))
         raise ValueError(f"coordinates do not broadcast together: {shapes}") from None
-    return [np.ascontiguousarray(a).reshape(a.shape) for a in b]   # 0-d stays 0-d
+    # numpy's broadcasting by assignment into a fresh array, which is what
+    # np.broadcast_arrays and a contiguous copy give, at a third of their
+    # cost on small arrays (a call on one point was 45 us, most of it there)
+    out = []
+    for a in conv:
+        if a.shape != shape or not a.flags.c_contiguous:
+            c = np.empty(shape)
+            c[...] = a
+            a = c
+        out.append(a)
+    return out
 
 
 def _refuse(nz, names, arrays, k):
@@ -527,29 +587,12 @@ def _scalars(*v):
     return all(type(a) in (float, int, np.float64) for a in v if a is not None)
 
 
-def _point(nz, x, y, z):
-    """One point of improved or noise2 through the point call (the batch
-    kernels' bits), without numpy's array machinery: a third of a
-    one-element array's cost (3.6 us against 23 us, measured)."""
-    x, y = float(x), float(y)
-    if nz.planar:
-        if z is not None:
-            raise ValueError(f"z: {nz.kind} is a 2D noise and takes no z")
-        zf = 0.0
-    else:
-        zf = 0.5 if z is None else float(z)
-    for name, v in (("x", x), ("y", y), ("z", zf)):
-        if not np.isfinite(v):
-            raise ValueError(f"{name}: coordinate 0 (flat index) is {v}, not a finite number")
-    nz.check_lattice(max(abs(x), abs(y), abs(zf)))
-    if nz.planar:
-        return np.float64(_grad2_eval(nz.grad2(), x, y))
-    return np.float64(_perm3_eval(ctypes.addressof(nz._b.contents.perm3), x, y, zf))
-
-
-def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=6, gain=0.5,
-           lacunarity=2.0, table=None, table_size=512, reference=False, terms="F1",
-           lambda_=4.0, points=50, count="inverse", tile=64, out=None):
+def points(x: ArrayLike, y: ArrayLike, z: Optional[ArrayLike] = None, noise: str = "improved",
+           *, seed: int = 1, basis: str = "improved", octaves: int = 6, gain: float = 0.5,
+           lacunarity: float = 2.0, table: Optional[Table] = None, table_size: int = 512,
+           reference: bool = False, terms: str = "F1", lambda_: float = 4.0, points: int = 50,
+           count: str = "inverse", tile: int = 64,
+           out: Optional[NDArray[np.float64]] = None) -> NDArray[np.float64]:
     """A noise at arrays of points: x, y (and z) broadcast together as numpy does.
 
     Coordinates are float64 (integer and float32 arrays are converted; other
@@ -559,10 +602,13 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
     in C order, and its entries from it on may have been written (the library
     checks the points a block of 512 at a time, beside the kernel, where they
     are in cache). z defaults to the plane 0.5 that ``grid`` and
-    render use; 2D noise (noise2) takes no z. Every noise is one C call for
-    the whole array (the GIL released): SIMD batch kernels for improved,
-    noise2 and the fractal and fbm sums over improved, point loops in C for
-    the others.
+    render use; 2D noise (noise2) takes no z. Every noise is one call of
+    the extension for the whole array, run a block at a time with the GIL
+    released and Ctrl-C (KeyboardInterrupt) honoured between blocks: SIMD
+    batch kernels for improved, noise2 and the fractal and fbm sums over
+    improved, point loops in C for the others. On Python floats, points()
+    returns a numpy float64 through the extension's scalar path (no array
+    is made); ``function`` spares the options' lookup as well.
     A point gives the bits ``grid`` gives at the same coordinates (for sums,
     when every octave's frequency is a power of two, as with lacunarity 2:
     the row kernels scale x0 and dx separately).
@@ -593,11 +639,16 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
     """
     nz = _make(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
                terms, lambda_, points, count, tile)
-    if out is None and nz.sum is None and nz.kind in ("improved", "noise2") \
-            and _scalars(x, y, z):
-        return _point(nz, x, y, z)
-    if nz.sum == "marble":
-        raise ValueError("noise: marble is a texture of the plane: use grid()")
+    f = nz.kernel
+    if out is None and _scalars(x, y, z):
+        # the extension's scalar path: no array is made (a point the
+        # library refuses comes back through _points_nz for its message)
+        return f(x, y) if z is None else f(x, y, z)
+    return _points_nz(nz, x, y, z, out=out)
+
+
+def _points_nz(nz, x, y, z=None, *, out=None):
+    """points() of the built noise nz: the arrays' path."""
     if nz.planar:
         if z is not None:
             raise ValueError(f"z: {nz.kind} is a 2D noise and takes no z")
@@ -610,11 +661,15 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
     # block before it reads the next: an out that overlaps a coordinate would
     # feed written values back as coordinates. As numpy's ufuncs buffer such
     # an overlap, the noise is computed into a temporary and copied.
+    # xs, ys, zs are what the kernel reads: views of the given arrays where
+    # those are float64 and C-contiguous (then sharing their memory), else
+    # fresh copies, which cannot overlap out.
     dest = out
-    if any(np.may_share_memory(out, a) for a in (x, y, z, xs, ys, zs)
-           if isinstance(a, np.ndarray)):
+    if any(np.may_share_memory(out, a) for a in (xs, ys, zs) if a is not None):
         out = np.empty_like(dest)
-    k = _points_into(nz, xs, ys, zs, out)
+    # one C call, a block at a time with the GIL released and signals
+    # (Ctrl-C) checked between blocks (_ext.c)
+    k = ext.points(nz.kernel, xs, ys, zs, out)
     if out is not dest:
         dest.ravel()[:k] = out.ravel()[:k]
     if k < out.size:
@@ -622,35 +677,44 @@ def points(x, y, z=None, noise="improved", *, seed=1, basis="improved", octaves=
     return dest
 
 
-def _points_into(nz, xs, ys, zs, out):
-    """points' C call into out, which overlaps no coordinate: the flat index of
-    the first point the library refused, out.size if none."""
-    n = out.size
-    o = nz.octaves
-    px, py, po = _ptr(xs), _ptr(ys), _ptr(out)
-    pz = _ptr(zs) if zs is not None else None
-    # The SIMD kernels check their points block by block (nl_noise_*_checked);
-    # the others are checked in one pass first, which costs little beside them.
-    if nz.kind == "improved" and not o.turbulence:
-        perm3 = ctypes.addressof(nz._b.contents.perm3)
-        k = _perm3_checked(perm3, None if nz.sum is None else ctypes.byref(o), px, py, pz, n, po)
-    elif nz.kind == "noise2" and nz.sum is None:
-        k = _grad2_checked(nz.grad2(), px, py, n, po)
-    else:
-        k = _points_refused(px, py, pz, n, _octaves_fmax(ctypes.byref(o)))
-        if nz.kind == "wavelet" and nz.sum is None:
-            _wavelet_points(nz._b.contents.tile, px, py, pz, k, po)
-        elif nz.kind == "gctbf" and nz.sum is None:
-            b = nz._b.contents
-            _gctbf_points(b.gctbf_cell, ctypes.byref(b.gctbf), px, py, pz, k, po)
-        else:
-            _fractal_points(ctypes.byref(nz.basis), ctypes.byref(o), px, py, pz, k, po)
-    return k
+def function(noise: str = "improved", *, seed: int = 1, basis: str = "improved",
+             octaves: int = 6, gain: float = 0.5, lacunarity: float = 2.0,
+             table: Optional[Table] = None, table_size: int = 512, reference: bool = False,
+             terms: str = "F1", lambda_: float = 4.0, points: int = 50, count: str = "inverse",
+             tile: int = 64) -> NoiseFunction:
+    """A noise built once, as a function: ``f = function("fbm", octaves=4); f(x, y, z)``.
+
+    ``f(x, y[, z])`` is ``points(x, y, z, noise, ...)`` with these options:
+    on Python floats or ints (or numpy float64 scalars) it takes the
+    extension's fast path (no array is made, the options are not looked up
+    again: about python3-noise's ``pnoise3`` per call, docs/python.md) and
+    returns a numpy float64; on arrays, with ``out=``, or for a point the
+    library refuses it is ``points`` (broadcasting, the same errors). Use it
+    in a loop over single points; for arrays both cost the same.
+
+    Parameters
+    ----------
+    %OPTIONS%
+    Returns
+    -------
+    NoiseFunction : callable f(x, y[, z], *, out=None)
+
+    Example
+    -------
+    >>> import noiselab.noise as nn
+    >>> f = nn.function("improved", seed=3)
+    >>> f(1.25, 2.5, 0.5) == nn.points(1.25, 2.5, 0.5, seed=3)
+    True
+    >>> f([0.5, 1.5], 2.5).shape
+    (2,)
+    """
+    return _make(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
+                 terms, lambda_, points, count, tile).kernel
 
 
 # The options both functions share, written once.
-grid.__doc__ = grid.__doc__.replace("%OPTIONS%", _DOC_OPTIONS)
-points.__doc__ = points.__doc__.replace("%OPTIONS%", _DOC_OPTIONS)
+for _f in (grid, points, function):
+    _f.__doc__ = (_f.__doc__ or "").replace("%OPTIONS%", _DOC_OPTIONS)
 
 
 def _cells(seed, lambda_, points, count):
@@ -658,7 +722,9 @@ def _cells(seed, lambda_, points, count):
                   points, count, 64)
 
 
-def cellular(x, y, z=0.5, n=4, *, seed=1, lambda_=4.0, points=50, count="inverse"):
+def cellular(x: ArrayLike, y: ArrayLike, z: ArrayLike = 0.5, n: int = 4, *, seed: int = 1,
+             lambda_: float = 4.0, points: int = 50,
+             count: str = "inverse") -> NDArray[np.float64]:
     """Worley's cellular distances F1..Fn (Qin & Yang 2000's feature points,
     src/cellular/nl_cellular.h) at arrays of points, broadcast as numpy does.
 
@@ -699,8 +765,9 @@ def cellular(x, y, z=0.5, n=4, *, seed=1, lambda_=4.0, points=50, count="inverse
     return out
 
 
-def cellular_grid(size=512, n=4, *, extent=4.0, x0=0.0, y0=0.0, z=0.5, seed=1, lambda_=4.0,
-                  points=50, count="inverse"):
+def cellular_grid(size: int = 512, n: int = 4, *, extent: float = 4.0, x0: float = 0.0,
+                  y0: float = 0.0, z: float = 0.5, seed: int = 1, lambda_: float = 4.0,
+                  points: int = 50, count: str = "inverse") -> NDArray[np.float64]:
     """F1..Fn on grid()'s raster through the cellular row kernel:
     (size, size, n) float64, [r, c, i] = F_{i+1} at grid's pixel (r, c).
 

@@ -14,8 +14,10 @@ the harness writes them.
 
 import ctypes
 import os
+from typing import Any, Dict, List, Optional, Tuple, Union
 
 import numpy as np
+from numpy.typing import NDArray
 
 from ._lib import Error, check, fn, mirror
 
@@ -38,7 +40,7 @@ _cell_text = fn("nl_table_cell_text", ctypes.c_char_p, ctypes.POINTER(_Table), c
                 ctypes.c_size_t, ctypes.c_char_p)
 
 
-def read_table(path):
+def read_table(path: Union[str, "os.PathLike[str]"]) -> NDArray[Any]:
     """One TSV table as a numpy structured array, fields named by its header.
 
     Parameters
@@ -65,7 +67,8 @@ def read_table(path):
         num = np.ctypeslib.as_array(c.num, shape=(nr * nc,)).reshape(nr, nc) if nr else \
             np.empty((0, nc))
         buf = ctypes.create_string_buffer(32)
-        cols, dtypes = [], []
+        cols: List[Any] = []
+        dtypes: List[Tuple[str, Any]] = []
         for j in range(nc):
             if all(not c.text[r * nc + j] for r in range(nr)):
                 cols.append(num[:, j].copy())
@@ -76,10 +79,10 @@ def read_table(path):
                 dtypes.append((names[j], cols[-1].dtype if nr else "U1"))
     finally:
         _free(t)
-    out = np.empty(nr, dtype=dtypes)
+    table = np.empty(nr, dtype=dtypes)
     for (name, _), col in zip(dtypes, cols):
-        out[name] = col
-    return out
+        table[name] = col
+    return table
 
 
 def _value(s):
@@ -101,15 +104,17 @@ class Results:
     (dict: when the run started and the time and memory it took, from the
     untracked run.tsv; empty for the committed results of a fresh clone)."""
 
-    def __init__(self, folder, tables, manifest, verdicts, checks=None, run=None):
+    def __init__(self, folder: str, tables: Dict[str, NDArray[Any]], manifest: Dict[str, Any],
+                 verdicts: NDArray[Any], checks: Optional[NDArray[Any]] = None,
+                 run: Optional[Dict[str, Any]] = None) -> None:
         self.folder, self.tables, self.manifest, self.verdicts = folder, tables, manifest, verdicts
         self.checks = checks if checks is not None else np.empty(0, dtype=[])
         self.run = run if run is not None else {}
 
-    def frame(self, name):
+    def frame(self, name: str) -> Any:
         """Table name as a pandas DataFrame (pandas must be installed)."""
         try:
-            import pandas as pd
+            import pandas as pd  # type: ignore[import]
         except ImportError:
             raise ImportError("frame: pandas is not installed; use .tables[name], a numpy "
                               "structured array") from None
@@ -123,7 +128,7 @@ class Results:
                 f"{len(self.tables)} tables, {len(self.verdicts)} verdicts)")
 
 
-def load(folder):
+def load(folder: Union[str, "os.PathLike[str]"]) -> Results:
     """An experiment's folder (a complete one: it holds manifest.tsv) as data.
 
     Parameters
@@ -147,7 +152,7 @@ def load(folder):
     mpath = os.path.join(folder, "manifest.tsv")
     if not os.path.exists(mpath):
         raise FileNotFoundError(f"{folder}: no manifest.tsv (not a complete experiment folder)")
-    manifest = {}
+    manifest: Dict[str, Any] = {}
     for row in read_table(mpath):
         k, v = str(row["key"]), _value(str(row["value"]))
         if k in manifest:
@@ -169,7 +174,7 @@ def load(folder):
     return Results(folder, tables, manifest, verdicts, checks, run)
 
 
-def report(folder):
+def report(folder: Union[str, "os.PathLike[str]"]) -> NDArray[Any]:
     """The verdict rows of an experiment folder (quantity, paper, ours,
     verdict, reason, ...), as a structured array.
 

@@ -21,8 +21,10 @@ import ctypes
 import math
 import warnings
 from dataclasses import dataclass
+from typing import Any, Callable, Iterator, Optional, Sequence, Tuple, Union
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from ._lib import Error, c_double_p, check, fn, mirror
 
@@ -123,13 +125,16 @@ class _Pair:
     """scipy's result habit: the object unpacks and indexes as the tuple
     (statistic, pvalue) (``D, p = kstest(...)``) and keeps its attributes."""
 
-    def __iter__(self):
+    statistic: Any
+    pvalue: Any
+
+    def __iter__(self) -> Iterator[Any]:
         return iter((self.statistic, self.pvalue))
 
-    def __len__(self):
+    def __len__(self) -> int:
         return 2
 
-    def __getitem__(self, i):
+    def __getitem__(self, i: int) -> Any:
         return (self.statistic, self.pvalue)[i]
 
 
@@ -244,7 +249,8 @@ def _ks_result(res, sign):
                         _ks_method_name(res.method).decode(), sign)
 
 
-def kstest(rvs, cdf, args=(), alternative="two-sided", method="auto"):
+def kstest(rvs: ArrayLike, cdf: Union[str, Callable[..., Any]], args: Sequence[float] = (),
+           alternative: str = "two-sided", method: str = "auto") -> KstestResult:
     """One-sample Kolmogorov-Smirnov test, as scipy.stats.kstest (1.10).
 
     D and its p-value equal scipy's to 1e-15 (absolute) and 1e-10 (relative)
@@ -316,7 +322,8 @@ def kstest(rvs, cdf, args=(), alternative="two-sided", method="auto"):
     return _ks_result(res, 1 if res.d_plus > res.d_minus else -1)
 
 
-def ks_2samp(data1, data2, alternative="two-sided", method="auto"):
+def ks_2samp(data1: ArrayLike, data2: ArrayLike, alternative: str = "two-sided",
+             method: str = "auto") -> KstestResult:
     """Two-sample Kolmogorov-Smirnov test, as scipy.stats.ks_2samp (1.10).
 
     Parameters
@@ -375,7 +382,8 @@ def ks_2samp(data1, data2, alternative="two-sided", method="auto"):
     return _ks_result(res, sign)
 
 
-def kuiper(rvs, cdf, args=()):
+def kuiper(rvs: ArrayLike, cdf: Union[str, Callable[..., Any]],
+           args: Sequence[float] = ()) -> KuiperResult:
     """Kuiper's test, V = D+ + D-: the KS of a circle (it does not depend on
     where the circle is cut), p-value as astropy.stats.kuiper's.
 
@@ -410,7 +418,8 @@ def kuiper(rvs, cdf, args=()):
     return KuiperResult(res.v, res.p, res.d_plus, res.d_minus, res.n)
 
 
-def chisquare(f_obs, f_exp=None, axis=0):
+def chisquare(f_obs: ArrayLike, f_exp: Optional[ArrayLike] = None,
+              axis: Optional[int] = 0) -> ChisquareResult:
     """Pearson's chi-square test of observed counts, scipy.stats.chisquare
     (1.10) with ddof 0.
 
@@ -458,7 +467,8 @@ def chisquare(f_obs, f_exp=None, axis=0):
                              f"{o.shape}") from None
     if axis is None:
         o = o.ravel()
-        e = None if f_exp is None else e.ravel()
+        if f_exp is not None:
+            e = e.ravel()
         axis = 0
     if o.ndim == 0:
         raise ValueError("f_obs: expected an array of counts, got a scalar")
@@ -496,7 +506,7 @@ def chisquare(f_obs, f_exp=None, axis=0):
     return ChisquareResult(*cols)
 
 
-def mean_sd(x, rounding="running"):
+def mean_sd(x: ArrayLike, rounding: str = "running") -> Tuple[float, float]:
     """The mean and sample sd (divisor n - 1) of x in one of the library's two
     named roundings, so that the numbers of a committed table come back to
     the bit: 'running' is GSL's running mean and sd (gsl_stats_mean,
@@ -527,7 +537,8 @@ def mean_sd(x, rounding="running"):
     return m.value, sd.value
 
 
-def linkage(y, method="single", metric="euclidean"):
+def linkage(y: ArrayLike, method: str = "single",
+            metric: str = "euclidean") -> NDArray[np.float64]:
     """Agglomerative clustering, as scipy.cluster.hierarchy.linkage(y,
     method, metric).
 

@@ -166,36 +166,60 @@ def test_cellular_distances():
         nn.cellular(0.0, 0.0, 0.0, n=5)
 
 
-def test_long_calls_release_the_gil():
-    """While a long grid runs in C on one thread, Python runs on another
-    (ctypes drops the GIL around foreign calls): the main thread's loop keeps
-    stamping times through the call's span. Held (ctypes.PyDLL, measured),
-    the main thread runs only in the switch interval before the call: its
-    stamps inside the span covered 7% of it (12 ms of 160), released 99%."""
+@pytest.mark.parametrize("call", ["grid", "points"])
+def test_long_calls_release_the_gil(call):
+    """While a long grid or batch of points runs in C on one thread, Python
+    runs on another (the extension releases the GIL around each block): the
+    main thread's loop keeps stamping times through the call's span. With
+    the GIL held the main thread would run only in the switch interval
+    before the call (a few % of the span)."""
     import threading
     import time
     span = []
+    r = np.random.default_rng(3)
+    pts = r.uniform(-50, 50, (3, 300000))
 
     def work():
-        buf = np.empty((1536, 1536))
         t0 = time.perf_counter()
-        nn._fractal_grid(*work.args, nn._ptr(buf))
+        if call == "grid":
+            nn.grid("fbm", 1536, octaves=12)
+        else:
+            nn.points(*pts, "fbm", octaves=12)
         span.extend([t0, time.perf_counter()])
 
-    nz = nn._Noise("fbm", 1, "improved", 12, 0.5, 2.0, None, 512, False, "F1", 4.0, 50,
-                   "inverse", 64)
-    win = nn._Window(0.0, 0.0, 0.5, 4.0, 1536, 1536)
-    work.args = (ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win))
     t = threading.Thread(target=work)
     stamps = []
     t.start()
     while t.is_alive():
         stamps.append(time.perf_counter())
     t.join()
-    nz.close()
     inside = [s for s in stamps if span[0] < s < span[1]]
     covered = (inside[-1] - inside[0]) / (span[1] - span[0]) if inside else 0.0
     assert covered > 0.5, (covered, span[1] - span[0])
+
+
+@pytest.mark.parametrize("noise,kw", [("fbm", dict(octaves=5)), ("marble", dict(stripes=2.5)),
+                                      ("turbulence", dict(basis="wavelet", tile=16)),
+                                      ("gctbf", {}), ("noise2", {}),
+                                      ("fbm", dict(lacunarity=1.7, gain=0.6))])
+def test_grid_is_the_library_grid(noise, kw):
+    """grid's rows, run a block at a time by the extension, are
+    nl_noise_fractal_grid's (nl_texture_marble_grid's) bits, on a window
+    that is not square in its pixel count's factors either."""
+    size, x0, y0, z = 37, -3.25, 1.5, 0.75
+    v = nn.grid(noise, size, x0=x0, y0=y0, z=z, extent=5.0, **kw)
+    nz = nn._make(noise, 1, kw.get("basis", "improved"), kw.get("octaves", 6), kw.get("gain", 0.5),
+                  kw.get("lacunarity", 2.0), None, 512, False, "F1", 4.0, 50, "inverse",
+                  kw.get("tile", 64))
+    win = nn._Window(x0, y0, z, 5.0, size, size)
+    ref = np.empty((size, size))
+    if noise == "marble":
+        nn._marble_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
+                        2 * np.pi * kw["stripes"], 0.5, nn._ptr(ref))
+    else:
+        nn._fractal_grid(ctypes.byref(nz.basis), ctypes.byref(nz.octaves), ctypes.byref(win),
+                         nn._ptr(ref))
+    assert np.array_equal(v, ref)
 
 
 def test_scalar_point_is_the_batch():
@@ -233,6 +257,24 @@ def _pt_fns():
     return ev3, cev, val
 
 
+_REAL_EXT = nn.ext
+
+
+class _CountedExt:
+    """noiselab._ext with its batch call counted: calls gets the kernel's
+    kind (_ext.c: one call per array, run there a block at a time)."""
+
+    def __init__(self, calls):
+        self.calls = calls
+
+    def points(self, f, *a):
+        self.calls.append(f._kind)
+        return _REAL_EXT.points(f, *a)
+
+    def __getattr__(self, name):
+        return getattr(_REAL_EXT, name)
+
+
 def test_batches_are_the_point_calls(monkeypatch):
     """Wavelet, gctbf and F1..F4 at scattered points (negative and far ones
     among them) are one C call per array and give the point calls' bits."""
@@ -242,9 +284,9 @@ def test_batches_are_the_point_calls(monkeypatch):
     y = r.uniform(-50, 10, x.size)
     z = r.uniform(-1e4, 1e4, x.size)
     calls = []
-    for name in ("_wavelet_points", "_gctbf_points", "_cellular_points"):
-        f = getattr(nn, name)
-        monkeypatch.setattr(nn, name, lambda *a, f=f, name=name: (calls.append(name), f(*a))[1])
+    f = nn._cellular_points
+    monkeypatch.setattr(nn, "_cellular_points", lambda *a: (calls.append("cellular"), f(*a))[1])
+    monkeypatch.setattr(nn, "ext", _CountedExt(calls))
 
     w = nn.points(x, y, z, "wavelet", seed=4, tile=16)
     nz = nn._Noise("wavelet", 4, "improved", 1, 0.5, 2.0, None, 512, False, "F1", 4.0, 50,
@@ -268,15 +310,14 @@ def test_batches_are_the_point_calls(monkeypatch):
     nz.close()
     assert np.array_equal(g, ref)
     assert np.array_equal(F, np.array(refF))
-    assert calls == ["_wavelet_points", "_gctbf_points", "_cellular_points"]
+    assert calls == [nn._K_WAVELET, nn._K_GCTBF, "cellular"]
 
 
 def test_sums_over_any_basis_are_one_call(monkeypatch):
     """A sum over a basis without a batch kernel of its own (turbulence, the
     table, wavelet) is one nl_noise_fractal_points call with the grid's bits."""
     calls = []
-    f = nn._fractal_points
-    monkeypatch.setattr(nn, "_fractal_points", lambda *a: (calls.append(1), f(*a))[1])
+    monkeypatch.setattr(nn, "ext", _CountedExt(calls))
     for noise, kw in (("turbulence", dict(octaves=4)), ("fbm", dict(basis="wavelet", tile=16)),
                       ("fractal", dict(basis="table", table_size=64))):
         size = 16
@@ -286,7 +327,7 @@ def test_sums_over_any_basis_are_one_call(monkeypatch):
         ys = -2.0 + (np.arange(size)[:, None] + 0.5) * d
         zz = None if kw.get("basis") == "table" else 0.5
         assert np.array_equal(nn.points(xs[None, :], ys, zz, noise, **kw), v), noise
-    assert len(calls) == 3
+    assert calls == [nn._K_SUM] * 3
 
 
 @pytest.mark.parametrize("noise,kw", [("improved", {}), ("fbm", dict(octaves=5)),
@@ -525,3 +566,49 @@ def test_count_is_refused_in_render_words(tmp_path):
     # the three rules give three rasters: closest-last is no alias
     g = [nn.grid("gctbf", 32, count=c, seed=3) for c in ("inverse", "closest", "closest-last")]
     assert not np.array_equal(g[1], g[2]) and not np.array_equal(g[0], g[2])
+
+
+@pytest.mark.parametrize("noise,kw", [("improved", {}), ("improved", dict(reference=True)),
+                                      ("fbm", dict(octaves=5, lacunarity=2.3)),
+                                      ("fractal", {}), ("turbulence", dict(octaves=3)),
+                                      ("noise2", {}), ("fbm", dict(basis="table")),
+                                      ("wavelet", dict(tile=16)), ("gctbf", {}),
+                                      ("fbm", dict(basis="wavelet", tile=16, octaves=2))])
+def test_function_scalar_calls_are_the_array_calls(noise, kw):
+    """nn.function's fast path (Python floats and ints, no array made) gives
+    the bits of the batch over the same points, for every way the extension
+    evaluates a noise; points() on scalars takes the same path."""
+    r = np.random.default_rng(5)
+    planar = noise == "noise2" or kw.get("basis") == "table"
+    x = r.uniform(-60, 60, (2 if planar else 3, 300))
+    x[:, :5] = np.round(x[:, :5])   # lattice points among them
+    ref = nn.points(*x, noise=noise, **kw)
+    f = nn.function(noise, **kw)
+    got = [f(*p) for p in x.T.tolist()]
+    assert all(type(v) is np.float64 for v in got)
+    assert np.array_equal(got, ref)
+    ints = [f(*map(int, p)) for p in x[:, :5].T]
+    assert np.array_equal(ints, ref[:5])
+    assert np.array_equal([nn.points(*p, noise=noise, **kw) for p in x.T.tolist()[:20]], ref[:20])
+    if not planar:   # z defaults to render's plane 0.5, as points' does
+        assert f(x[0, 7], x[1, 7]) == nn.points(x[0, 7], x[1, 7], 0.5, noise, **kw)
+
+
+def test_function_declines_to_points_for_what_it_does_not_take():
+    """What the fast path does not take goes to points(), with its errors."""
+    f = nn.function("improved")
+    with pytest.raises(ValueError, match=r"x: coordinate 0 \(flat index\) is nan"):
+        f(float("nan"), 1.0, 2.0)
+    with pytest.raises(ValueError, match="beyond 2\\^52"):
+        f(2.0 ** 60, 1.0, 2.0)
+    with pytest.raises(TypeError, match="z: coordinates must be real numbers"):
+        f(1.0, 2.0, "fbm")
+    with pytest.raises(TypeError, match="dtype bool"):
+        f(True, 2.0, 3.0)
+    with pytest.raises(ValueError, match="z: noise2 is a 2D noise"):
+        nn.function("noise2")(1.0, 2.0, 3.0)
+    with pytest.raises(ValueError, match="marble is a texture"):
+        nn.function("marble")
+    out = np.empty(3)
+    assert f([0.5, 1.5, 2.5], 1.0, 2.0, out=out) is out
+    assert np.array_equal(out, nn.points([0.5, 1.5, 2.5], 1.0, 2.0))
