@@ -36,6 +36,8 @@
 #include "basis/nl_basis.h"
 #include "texture/nl_texture.h"
 
+#include <math.h>
+
 /* How a built noise evaluates points (noise.py chooses, by what the
  * library has kernels for). */
 enum {
@@ -367,6 +369,101 @@ static PyObject *ext_grid(PyObject *mod, PyObject *args)
   Py_RETURN_NONE;
 }
 
+/* The float32 path (nl_noise.h, "float32 path"): improved noise alone or
+ * its fBm and fractal sums, and the 2D table noise, computed in float. */
+static int has_f32(const NoiseFunction *f) { return f->kind == K_PERM3 || f->kind == K_GRAD2; }
+
+/* The first point of a float32 block the double path would refuse (n if
+ * none): a coordinate that is not finite, or f |c| >= 2^52 - the same rule
+ * as nl_noise_points_refused, so both dtypes refuse the same points. */
+static size_t refused_f32(const float *x, const float *y, const float *z, size_t n, double f)
+{
+  const double lim = 4503599627370496.0;   /* 2^52 */
+  for (size_t k = 0; k < n; k++) {
+    double a = x[k], b = y[k], c = z ? z[k] : 0.0;
+    if (!(fabs(a) * f < lim && fabs(b) * f < lim && fabs(c) * f < lim)) return k;
+  }
+  return n;
+}
+
+static size_t run_f32(const NoiseFunction *f, const float *x, const float *y, const float *z,
+                      size_t n, float *out)
+{
+  size_t k = refused_f32(x, y, z, n, f->fmax);
+  if (f->kind == K_GRAD2)
+    nl_noise_grad2_points_f32(f->grad2, x, y, k, out);
+  else if (f->has_sum)
+    nl_noise_perm3_fractal_points_f32(&f->b->perm3, &f->oct, x, y, z, k, out);
+  else
+    nl_noise_perm3_points_f32(&f->b->perm3, x, y, z, k, out);
+  return k;
+}
+
+static const float *data_f32(PyObject *a, size_t n, const char *name, int writeable)
+{
+  if (!PyArray_Check(a) || PyArray_TYPE((PyArrayObject *)a) != NPY_FLOAT ||
+      !PyArray_IS_C_CONTIGUOUS((PyArrayObject *)a) || (size_t)PyArray_SIZE((PyArrayObject *)a) != n ||
+      (writeable && !PyArray_ISWRITEABLE((PyArrayObject *)a))) {
+    PyErr_Format(PyExc_ValueError, "%s: expected a C-contiguous float32 array of %zu entries",
+                 name, n);
+    return NULL;
+  }
+  return PyArray_DATA((PyArrayObject *)a);
+}
+
+/* points_f32(f, x, y, z, out): points() over float32 arrays through the
+ * float32 kernels; f must have them (has_f32, noise.py asks). */
+static PyObject *ext_points_f32(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+  (void)mod;
+  if (nargs != 5 || !PyObject_TypeCheck(args[0], &NoiseFunctionType)) {
+    PyErr_SetString(PyExc_TypeError, "points_f32(f, x, y, z, out)");
+    return NULL;
+  }
+  const NoiseFunction *f = (const NoiseFunction *)args[0];
+  if (!has_f32(f)) {
+    PyErr_SetString(PyExc_ValueError, "points_f32: this noise has no float32 kernel");
+    return NULL;
+  }
+  if (!PyArray_Check(args[4])) {
+    PyErr_SetString(PyExc_ValueError, "out: expected a numpy array");
+    return NULL;
+  }
+  size_t n = (size_t)PyArray_SIZE((PyArrayObject *)args[4]);
+  float *out = (float *)data_f32(args[4], n, "out", 1);
+  const float *x = out ? data_f32(args[1], n, "x", 0) : NULL;
+  const float *y = x ? data_f32(args[2], n, "y", 0) : NULL;
+  const float *z = NULL;
+  if (!y)
+    return NULL;
+  if (!f->planar && !(z = data_f32(args[3], n, "z", 0)))
+    return NULL;
+  size_t block = block_points(f), done = 0;
+  while (done < n) {
+    size_t m = n - done < block ? n - done : block, k;
+    Py_BEGIN_ALLOW_THREADS
+    k = run_f32(f, x + done, y + done, z ? z + done : NULL, m, out + done);
+    Py_END_ALLOW_THREADS
+    done += k;
+    if (k < m)
+      break;
+    if (done < n && PyErr_CheckSignals())
+      return NULL;
+  }
+  return PyLong_FromSize_t(done);
+}
+
+/* has_f32(f): whether points_f32 takes f. */
+static PyObject *ext_has_f32(PyObject *mod, PyObject *arg)
+{
+  (void)mod;
+  if (!PyObject_TypeCheck(arg, &NoiseFunctionType)) {
+    PyErr_SetString(PyExc_TypeError, "has_f32(f): f must be a NoiseFunction");
+    return NULL;
+  }
+  return PyBool_FromLong(has_f32((const NoiseFunction *)arg));
+}
+
 /* bases(): the library's registry of bases (nl_basis_kinds), as
  * (name, name under a sum, planar) triples, so that noise.py lists none. */
 static PyObject *ext_bases(PyObject *mod, PyObject *unused)
@@ -391,6 +488,9 @@ static PyObject *ext_bases(PyObject *mod, PyObject *unused)
 static PyMethodDef ext_methods[] = {
   {"points", (PyCFunction)(void (*)(void))ext_points, METH_FASTCALL,
    "points(f, x, y, z, out) -> index of the first refused point (out.size if none)"},
+  {"points_f32", (PyCFunction)(void (*)(void))ext_points_f32, METH_FASTCALL,
+   "points_f32(f, x, y, z, out) -> as points, over float32 arrays (float32 kernels)"},
+  {"has_f32", ext_has_f32, METH_O, "has_f32(f) -> whether f has float32 kernels"},
   {"bases", ext_bases, METH_NOARGS, "bases() -> ((name, under, planar), ...)"},
   {"grid", ext_grid, METH_VARARGS,
    "grid(noise_basis, octaves, x0, y0, z, size, w, h, marble, omega, a, block, out)"},

@@ -1,6 +1,7 @@
 """Noise on numpy arrays: every noise of ``scripts/noiselab render``.
 
-Two entry points, both float64 out:
+Three entry points, float64 out (``points`` and ``function`` give float32 for float32
+coordinates):
 
 ``grid(noise, size, ...)``
     a size x size raster through the library's row kernels (the same call
@@ -483,13 +484,13 @@ def grid(noise: str = "improved", size: int = 512, *, extent: float = 4.0, x0: f
     return res
 
 
-def _out(out, shape):
+def _out(out, shape, dtype=np.dtype(np.float64)):
     if out is None:
-        return np.empty(shape, dtype=np.float64)
-    if not isinstance(out, np.ndarray) or out.dtype != np.float64 or out.shape != shape \
+        return np.empty(shape, dtype=dtype)
+    if not isinstance(out, np.ndarray) or out.dtype != dtype or out.shape != shape \
             or not out.flags.c_contiguous or not out.flags.writeable:
         desc = f"{out.dtype} {out.shape}" if isinstance(out, np.ndarray) else type(out).__name__
-        raise ValueError(f"out: expected a writeable C-contiguous float64 array of shape "
+        raise ValueError(f"out: expected a writeable C-contiguous {dtype} array of shape "
                          f"{shape}, got {desc}")
     return out
 
@@ -531,10 +532,22 @@ def bound(noise: str = "improved", *, seed: int = 1, basis: str = "improved", oc
         nz.close()
 
 
-def _coords(names, arrays):
-    """float64, C-contiguous, broadcast copies of coordinate arrays (views when
-    they are). NaN, infinity and the lattice limit are checked by the C side,
-    block by block beside the kernel (nl_noise_points_refused)."""
+def _dtype(arrays):
+    """The result's dtype, as numpy's arithmetic would give it: float32 when
+    the coordinates are float32 arrays or scalars, with Python numbers
+    beside them (numpy's value-based casting: a Python float does not widen
+    a float32 array); float64 otherwise (float64 or integer coordinates)."""
+    typed = [a for a in arrays if isinstance(a, (np.ndarray, np.generic))]
+    if typed and all(a.dtype == np.float32 for a in typed):
+        return np.dtype(np.float32)
+    return np.dtype(np.float64)
+
+
+def _coords(names, arrays, dtype=np.float64):
+    """dtype (float64, or float32 for the float32 path), C-contiguous,
+    broadcast copies of coordinate arrays (views when they are). NaN,
+    infinity and the lattice limit are checked by the C side, block by
+    block beside the kernel (nl_noise_points_refused)."""
     conv = []
     for name, given in zip(names, arrays):
         a = np.asarray(given)
@@ -544,14 +557,14 @@ def _coords(names, arrays):
                             f"got {type(given).__name__} {given!r:.40}" +
                             (" (the noise is the argument noise=)" if isinstance(given, str)
                              else ""))
-        if a.dtype != np.float64:
+        if a.dtype != dtype:
             # float16 has 11 bits (a coordinate past 2048 is not where it was
             # meant) and bool is no coordinate: as documented, only integers
             # and float32 are converted
-            if a.dtype.kind not in "iu" and a.dtype != np.float32:
+            if a.dtype.kind not in "iu" and a.dtype not in (np.float32, np.float64):
                 raise TypeError(f"{name}: coordinates must be real numbers (integer, float32 "
                                 f"or float64), got dtype {a.dtype}")
-            a = a.astype(np.float64)
+            a = a.astype(dtype)
         conv.append(a)
     try:
         shape = np.broadcast(*conv).shape
@@ -564,7 +577,7 @@ def _coords(names, arrays):
     out = []
     for a in conv:
         if a.shape != shape or not a.flags.c_contiguous:
-            c = np.empty(shape)
+            c = np.empty(shape, dtype=dtype)
             c[...] = a
             a = c
         out.append(a)
@@ -595,8 +608,14 @@ def points(x: ArrayLike, y: ArrayLike, z: Optional[ArrayLike] = None, noise: str
            out: Optional[NDArray[np.float64]] = None) -> NDArray[np.float64]:
     """A noise at arrays of points: x, y (and z) broadcast together as numpy does.
 
-    Coordinates are float64 (integer and float32 arrays are converted; other
-    dtypes, float16, bool, longdouble, complex, object or str, raise TypeError); a NaN or infinite coordinate, or
+    Coordinates are float64 or float32 (integer arrays are converted to
+    float64; other dtypes, float16, bool, longdouble, complex, object or
+    str, raise TypeError). float32 coordinates (arrays or numpy scalars,
+    with Python numbers beside them) give float32 values, as numpy's own
+    functions do: improved noise, its fbm and fractal sums and noise2 through
+    the library's float32 kernels (within 2e-6 of the double noise at the
+    same coordinates, nl_noise.h), the other noises in double rounded to
+    float32. A NaN or infinite coordinate, or
     one whose finest octave passes 2^52, is a ValueError naming the first such
     point (flat index): then ``out`` holds the values of the points before it
     in C order, and its entries from it on may have been written (the library
@@ -618,14 +637,15 @@ def points(x: ArrayLike, y: ArrayLike, z: Optional[ArrayLike] = None, noise: str
     x, y, z : array_like
         coordinates, any shapes that broadcast together.
     out : numpy.ndarray, optional
-        a C-contiguous float64 array of the broadcast shape to write into; it
+        a C-contiguous array of the broadcast shape and the result's dtype
+        (float64, or float32 for float32 coordinates) to write into; it
         may overlap x, y or z (``out=x``): the values are then those of the
         call without out, computed into a temporary first, as numpy's ufuncs
         buffer overlaps.
     %OPTIONS%
     Returns
     -------
-    numpy.ndarray of float64 with the broadcast shape
+    numpy.ndarray of float64 (float32 for float32 coordinates) with the broadcast shape
 
     Example
     -------
@@ -649,31 +669,39 @@ def points(x: ArrayLike, y: ArrayLike, z: Optional[ArrayLike] = None, noise: str
 
 def _points_nz(nz, x, y, z=None, *, out=None):
     """points() of the built noise nz: the arrays' path."""
+    # float32 coordinates keep float32 (numpy's habit): through the float32
+    # kernels where the library has them, else computed in double and
+    # rounded to float32
+    dtype = _dtype((x, y) if z is None else (x, y, z))
+    f32 = dtype == np.float32 and ext.has_f32(nz.kernel)
+    cdt = np.float32 if f32 else np.float64
     if nz.planar:
         if z is not None:
             raise ValueError(f"z: {nz.kind} is a 2D noise and takes no z")
-        names, (xs, ys), zs = "xy", _coords("xy", (x, y)), None
+        names, (xs, ys), zs = "xy", _coords("xy", (x, y), cdt), None
     else:
         names = "xyz"
-        xs, ys, zs = _coords(names, (x, y, 0.5 if z is None else z))
-    out = _out(out, xs.shape)
+        xs, ys, zs = _coords(names, (x, y, 0.5 if z is None else z), cdt)
+    out = _out(out, xs.shape, dtype)
     # The sums accumulate octave by octave into out, and every kernel writes a
     # block before it reads the next: an out that overlaps a coordinate would
     # feed written values back as coordinates. As numpy's ufuncs buffer such
     # an overlap, the noise is computed into a temporary and copied.
     # xs, ys, zs are what the kernel reads: views of the given arrays where
-    # those are float64 and C-contiguous (then sharing their memory), else
+    # those are of the kernel's dtype and C-contiguous (sharing their memory), else
     # fresh copies, which cannot overlap out.
     dest = out
-    if any(np.may_share_memory(out, a) for a in (xs, ys, zs) if a is not None):
-        out = np.empty_like(dest)
+    if dtype != cdt or any(np.may_share_memory(out, a) for a in (xs, ys, zs) if a is not None):
+        out = np.empty(dest.shape, dtype=cdt)
     # one C call, a block at a time with the GIL released and signals
     # (Ctrl-C) checked between blocks (_ext.c)
-    k = ext.points(nz.kernel, xs, ys, zs, out)
+    k = (ext.points_f32 if f32 else ext.points)(nz.kernel, xs, ys, zs, out)
     if out is not dest:
         dest.ravel()[:k] = out.ravel()[:k]
     if k < out.size:
         _refuse(nz, names, (xs, ys, zs), k)
+    if dest.ndim == 0 and not any(isinstance(a, np.ndarray) for a in (x, y, z)):
+        return dest[()]   # scalars in, a numpy scalar out, as numpy's functions do
     return dest
 
 

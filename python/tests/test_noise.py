@@ -612,3 +612,34 @@ def test_function_declines_to_points_for_what_it_does_not_take():
     out = np.empty(3)
     assert f([0.5, 1.5, 2.5], 1.0, 2.0, out=out) is out
     assert np.array_equal(out, nn.points([0.5, 1.5, 2.5], 1.0, 2.0))
+
+
+def test_float32_in_float32_out():
+    """float32 coordinates give float32 values, as numpy's functions do:
+    through the library's float32 kernels (improved, its fbm and fractal
+    sums, noise2) within the 2e-6 nl_noise.h states of the double noise at
+    the same coordinates, the other noises in double rounded to float32;
+    out= must then be float32, may alias a coordinate, and NaN is refused
+    by name as in float64."""
+    rng = np.random.default_rng(5)
+    x, y, z = rng.uniform(-300, 300, (3, 20000)).astype(np.float32)
+    for noise, tol in [("improved", 2e-6), ("fbm", 4e-6), ("fractal", 4e-6), ("noise2", 2e-6),
+                       ("turbulence", 1e-6), ("wavelet", 1e-6)]:
+        zz = None if noise == "noise2" else z
+        a = nn.points(x, y, zz, noise)
+        b = nn.points(x.astype(np.float64), y.astype(np.float64),
+                      None if zz is None else zz.astype(np.float64), noise)
+        assert a.dtype == np.float32 and a.shape == x.shape, noise
+        assert np.max(np.abs(a - b)) <= tol, (noise, np.max(np.abs(a - b)))
+    # a Python float beside float32 arrays keeps float32; float64 beside them widens
+    assert nn.points(x, y, 0.5).dtype == np.float32
+    assert nn.points(x, y.astype(np.float64), z).dtype == np.float64
+    assert isinstance(nn.points(np.float32(0.3), np.float32(0.7), 0.5), np.float32)
+    o = x.copy()
+    assert np.array_equal(nn.points(o, y, z, "fbm", out=o), nn.points(x, y, z, "fbm"))
+    with pytest.raises(ValueError, match="out: expected a writeable C-contiguous float32"):
+        nn.points(x, y, z, out=np.empty(x.shape))
+    bad = x.copy()
+    bad[7] = np.nan
+    with pytest.raises(ValueError, match=r"x: coordinate 7 \(flat index\) is nan"):
+        nn.points(bad, y, z)

@@ -34,8 +34,9 @@ def test_s3_tables_are_the_files():
             cells = [row[j] for row in text[1:]]
             if t.dtype[col].kind == "f":
                 assert np.array_equal(t[col], np.array([float(c) for c in cells])), (name, col)
-            else:
-                assert t[col].tolist() == cells, (name, col)
+            else:   # text as written; a number among text as the harness writes it
+                for got, cell in zip(t[col].tolist(), cells):
+                    assert got == cell or float(got) == float(cell), (name, col, got, cell)
 
 
 def test_checks_and_run():
