@@ -21,7 +21,8 @@
  *
  *   build/bench/bench_stats [--only fft|linkage|gmm|ks] [DIR]   one part only (Python side too)
  *   build/bench/bench_stats --only linkage --scale   complete linkage's CPU ns per n^2 at
- *                                       n = 1k, 2k, 5k, 10k, 20k (bench_linkage_scale)
+ *                                       n = 1k, 2k, 5k, 10k, 20k (bench_linkage_scale; the
+ *                                       whole run ends with it too)
  */
 #define _GNU_SOURCE   /* sched_getaffinity in nl_bench.h */
 #include "nl_bench.h"
@@ -445,6 +446,8 @@ int main(int argc, char **argv)
     bench_linkage(dir, x, NL_LINKAGE_SINGLE, "single");
   }
   run_python(dir, only);
+  /* the growth of linkage's cost with n, last: its own data, up to 4 GB */
+  if (!only) bench_linkage_scale(rng);
   nl_bench_report(stdout, "end");
   free(x); free(labels); free(lab);
   gsl_rng_free(rng);

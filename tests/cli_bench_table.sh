@@ -4,6 +4,7 @@
 #    and the ratio recomputed from them (> 1: ours faster);
 #  - the stb rows keep their peers, and a printout without FastNoise2
 #    ("# FastNoise2: not built") has no fastnoise2 row;
+#  - bench_stats's linkage_scale lines give one row per n against n = 1000;
 #  - bench_noise --fastnoise2 with a library that does not load is one line
 #    naming it, exit 2, before any timing.
 # Args: NOISELAB_SCRIPT BENCH_NOISE OUTDIR.
@@ -42,6 +43,18 @@ tsv="$out/without.out/bench.tsv"
 [ "$(awk -F'\t' '$5 == "fastnoise2"' "$tsv" | wc -l)" = 0 ] || fail "a fastnoise2 row without FastNoise2"
 [ "$(row 'nl_noise_perm3_row (improved 3D)' stb_perlin_noise3 "$tsv")" = "986.5|58.8|16.8" ] \
   || fail "without FastNoise2, 3D rows against stb: $(cat "$tsv")"
+
+# bench_stats's growth figure: each n against n = 1000, as a cost.
+mkdir -p "$out/scale"
+printf '#!/bin/sh\ncat <<"END"\n%s\n%s\nEND\n' \
+  'linkage_scale C complete n=1000 d=81: 0.021 s CPU (0.178 s wall) a call, 24 calls, 21.27 ns CPU per n^2 (user 16.97 + system 4.39), 1.00x that at n=1000 (load 11.88 12.00 11.00)' \
+  'linkage_scale C complete n=20000 d=81: 9.216 s CPU (48.822 s wall) a call, 1 call, 23.04 ns CPU per n^2 (user 17.67 + system 5.38), 1.08x that at n=1000 (load 12.22 12.00 11.00)' \
+  >"$out/scale/bench_stats"
+chmod +x "$out/scale/bench_stats"
+bash -c 'source "$1"; run_benchmarks "$2" "$3"' _ "$nl" "$out/scale" "$out/scale.out" >/dev/null 2>&1 \
+  || fail "scale: run_benchmarks failed"
+[ "$(row 'complete linkage CPU per n^2, n = 20000, 81 dims' 'the same at n = 1000' "$out/scale.out/bench.tsv")" \
+  = "23.04|21.27|0.923" ] || fail "linkage growth row: $(cat "$out/scale.out/bench.tsv")"
 
 rc=0
 err="$("$bn" --fastnoise2 "$out/no such library.so" 2>&1 >/dev/null)" || rc=$?
