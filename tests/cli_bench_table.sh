@@ -4,7 +4,8 @@
 #    and the ratio recomputed from them (> 1: ours faster);
 #  - the stb rows keep their peers, and a printout without FastNoise2
 #    ("# FastNoise2: not built") has no fastnoise2 row;
-#  - bench_stats's linkage_scale lines give one row per n against n = 1000;
+#  - bench_stats's linkage_scale lines give rows per n against n = 1000,
+#    CPU and user CPU;
 #  - bench_noise --fastnoise2 with a library that does not load is one line
 #    naming it, exit 2, before any timing.
 # Args: NOISELAB_SCRIPT BENCH_NOISE OUTDIR.
@@ -55,6 +56,8 @@ bash -c 'source "$1"; run_benchmarks "$2" "$3"' _ "$nl" "$out/scale" "$out/scale
   || fail "scale: run_benchmarks failed"
 [ "$(row 'complete linkage CPU per n^2, n = 20000, 81 dims' 'the same at n = 1000' "$out/scale.out/bench.tsv")" \
   = "23.04|21.27|0.923" ] || fail "linkage growth row: $(cat "$out/scale.out/bench.tsv")"
+[ "$(row 'complete linkage user CPU per n^2, n = 20000, 81 dims' 'the same at n = 1000' "$out/scale.out/bench.tsv")" \
+  = "17.67|16.97|0.96" ] || fail "linkage user growth row: $(cat "$out/scale.out/bench.tsv")"
 
 rc=0
 err="$("$bn" --fastnoise2 "$out/no such library.so" 2>&1 >/dev/null)" || rc=$?
