@@ -3,7 +3,8 @@
  *
  * Single thread, a N x N grid over [0, 16)^2 on the plane z = 0.5 (lambda = 4:
  * about 4 feature points per unit cube), evaluated row by row, repeated until
- * 0.5 s has passed; best of 3. Also: F1..F4 at random points (no row reuse,
+ * 0.5 s of the thread's CPU time has passed; best of 3; pinned to the core it
+ * starts on (unless given one). Also: F1..F4 at random points (no row reuse,
  * 27 cubes generated per point) and one GCTBF row (F2 - F1 - F1F1).
  *
  *   build/bench/bench_cellular [--size N]
@@ -79,13 +80,15 @@ int main(int argc, char **argv)
   nl_cellular_gctbf_basis gb = {ci, {0}};
   nl_cellular_gctbf_parse("F2 - F1 - F1F1", &gb.g, NULL);
 
+  char where[64];
+  nl_bench_pin(where, sizeof where);
   nl_bench_report(stdout, "start");
   double n3 = nl_bench_rate(g_noise3, &p, out, (size_t)N * N), n3r = nl_bench_rate(g_noise3_random, &p, out, (size_t)N * N);
   double ri = nl_bench_rate(g_cell_rows, ci, out, (size_t)N * N), rc = nl_bench_rate(g_cell_rows, cc, out, (size_t)N * N);
   double pr = nl_bench_rate(g_cell_random, ci, out, (size_t)N * N), gr = nl_bench_rate(g_gctbf, &gb, out, (size_t)N * N);
-  printf("# %d x %d grid over [0,%g)^2 at z = 0.5 (random points: [0,%g)^3), single thread,\n"
-         "# Mpoints/s (best of 3); cellular: lambda = 4, M = 50, all of F1..F4 per point\n",
-         N, N, EXTENT, EXTENT);
+  printf("# %d x %d grid over [0,%g)^2 at z = 0.5 (random points: [0,%g)^3), single thread (%s),\n"
+         "# Mpoints per CPU second (best of 3); cellular: lambda = 4, M = 50, all of F1..F4 per point\n",
+         N, N, EXTENT, EXTENT, where);
   printf("%-40s %10s %10s\n", "function", "Mpoint/s", "vs noise3");
   printf("%-40s %10.2f %10s\n", "nl_noise_perm3_row (improved 3D)", n3, "1.000");
   printf("%-40s %10.2f %10.3f\n", "nl_cellular_row F1..F4 (inverse CDF)", ri, ri / n3);

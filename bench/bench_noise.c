@@ -26,12 +26,23 @@
  * The program pins itself to the processor it starts on (sched_setaffinity)
  * unless already given one, and prints the load average.
  *
- *   build/bench/bench_noise [--size N] [--tsv]
- *   NL_NOISE_SIMD=scalar|sse2|avx2|avx512 picks the noise kernels' level.
+ * FastNoise2 (the float32 peer, fn2_* below) runs in the same rounds on the
+ * same grids and points when its library loads: Perlin 3D and 2D by grid
+ * rows (fnGenUniformGrid3D/2D) and at the random points (fnGenPositionArray
+ * 3D/2D), and FractalFBm of 4 octaves over it on both grids; its lines
+ * ("fn2: ...") give our rate, its rate and their ratio.
+ *
+ *   build/bench/bench_noise [--size N] [--tsv] [--fastnoise2 LIBRARY]
+ *   NL_NOISE_SIMD=scalar|sse2|avx2|avx512 picks the noise kernels' level
+ *   (avx2 also caps FastNoise2 at AVX2).
+ *   --fastnoise2: FastNoise2's shared library (default: build/fastnoise2/
+ *   lib/libFastNoise.so beside this program's build/bench, used if present;
+ *   otherwise "# FastNoise2: not built" and no peer rows).
  *
  * --tsv: lines starting with '#' (load, level, CPU), then a header line and
  * one tab-separated line per kernel: kernel, msamples_per_s (per CPU
- * second), cpu_ms and wall_ms (of one 1024^2 grid), vs_stb.
+ * second), cpu_ms and wall_ms (of one 1024^2 grid), vs_stb; FastNoise2's
+ * kernels as fastnoise2_<our kernel>.
  */
 #define _GNU_SOURCE
 #include "nl_bench.h"
@@ -45,6 +56,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+/* FastNoise2, the peer loaded at run time */
+#include <ctype.h>
+#include <dlfcn.h>
+#include <stdbool.h>
+#include <unistd.h>
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
@@ -236,15 +252,213 @@ static void round_of(void (*f)(const void *, double *), const void *ctx, double 
   if (rate > best->rate) { best->rate = rate; best->cpu_ms = 1e3 * c / (double)iters; best->wall_ms = 1e3 * w / (double)iters; }
 }
 
+/* ---- FastNoise2, the float32 peer (loaded with dlopen) -------------------
+ * FastNoise2 (Auburn, MIT; bench/third_party/FastNoise2, built by
+ * `scripts/noiselab bench` into build/fastnoise2) through its C API. Its
+ * Perlin node is set to our frequency ("Feature Scale" 1: a sample at x
+ * reads lattice cell floor(x), as ours), one octave; its FractalFBm over
+ * that node is 4 octaves, gain 0.5, lacunarity 2, as ours. It computes in
+ * float (32-bit) in its widest SIMD level (fnGetActiveFeatureSet; capped at
+ * AVX2 when NL_NOISE_SIMD=avx2, so that both sides run at one level); ours in
+ * double. Same points (the random points rounded to float), same rounds. */
+typedef struct {
+  void *lib, *perlin, *fbm;
+  unsigned level;
+  int (*meta_count)(void);
+  const char *(*meta_name)(int);
+  void *(*new_node)(int, unsigned);
+  void (*del_node)(void *);
+  unsigned (*active_level)(const void *);
+  int (*var_count)(int);
+  const char *(*var_name)(int, int);
+  bool (*set_float)(void *, int, float);
+  bool (*set_int)(void *, int, int);
+  int (*lookup_count)(int);
+  const char *(*lookup_name)(int, int);
+  bool (*set_lookup)(void *, int, const void *);
+  int (*hybrid_count)(int);
+  const char *(*hybrid_name)(int, int);
+  bool (*set_hybrid)(void *, int, float);
+  void (*grid2)(const void *, float *, float, float, int, int, float, float, int, float *);
+  void (*grid3)(const void *, float *, float, float, float, int, int, int, float, float, float, int, float *);
+  void (*pos2)(const void *, float *, int, const float *, const float *, float, float, int, float *);
+  void (*pos3)(const void *, float *, int, const float *, const float *, const float *, float, float, float, int,
+               float *);
+} fn2_api;
+
+static fn2_api fn2;
+static float *fx, *fy, *fz;
+enum { FN2_SEED = 1337 };
+
+static int fn2_meta_id(const char *name)
+{
+  for (int i = 0; i < fn2.meta_count(); i++)
+    if (strcmp(fn2.meta_name(i), name) == 0) return i;
+  return -1;
+}
+
+/* Index of the variable, node lookup or hybrid called name of node type id
+ * (the name compared without spaces and case: the C API formats them). */
+static int fn2_same(const char *a, const char *b)
+{
+  for (;; a++, b++) {
+    while (*a == ' ') a++;
+    while (*b == ' ') b++;
+    if (tolower((unsigned char)*a) != tolower((unsigned char)*b)) return 0;
+    if (!*a) return 1;
+  }
+}
+
+static int fn2_index(int (*count)(int), const char *(*name)(int, int), int id, const char *want)
+{
+  for (int i = 0; i < count(id); i++)
+    if (fn2_same(name(id, i), want)) return i;
+  return -1;
+}
+
+static const char *fn2_level_name(unsigned fs)
+{
+  /* FastSIMD::FeatureFlag bits: SSE2 3, SSE41 6, AVX2 9, AVX512_F 10 */
+  if (fs & (1u << 10)) return "AVX512";
+  if (fs & (1u << 9)) return "AVX2";
+  if (fs & (1u << 6)) return "SSE4.1";
+  if (fs & (1u << 3)) return "SSE2";
+  return "scalar";
+}
+
+/* Loads path; on failure says why in why and returns 0. */
+static int fn2_load(const char *path, char *why, size_t len)
+{
+  fn2.lib = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+  if (!fn2.lib) { snprintf(why, len, "%s", dlerror()); return 0; }
+  struct { void **fp; const char *name; } sym[] = {
+    {(void **)&fn2.meta_count, "fnGetMetadataCount"}, {(void **)&fn2.meta_name, "fnGetMetadataName"},
+    {(void **)&fn2.new_node, "fnNewFromMetadata"}, {(void **)&fn2.del_node, "fnDeleteNodeRef"},
+    {(void **)&fn2.active_level, "fnGetActiveFeatureSet"},
+    {(void **)&fn2.var_count, "fnGetMetadataVariableCount"}, {(void **)&fn2.var_name, "fnGetMetadataVariableName"},
+    {(void **)&fn2.set_float, "fnSetVariableFloat"}, {(void **)&fn2.set_int, "fnSetVariableIntEnum"},
+    {(void **)&fn2.lookup_count, "fnGetMetadataNodeLookupCount"},
+    {(void **)&fn2.lookup_name, "fnGetMetadataNodeLookupName"}, {(void **)&fn2.set_lookup, "fnSetNodeLookup"},
+    {(void **)&fn2.hybrid_count, "fnGetMetadataHybridCount"}, {(void **)&fn2.hybrid_name, "fnGetMetadataHybridName"},
+    {(void **)&fn2.set_hybrid, "fnSetHybridFloat"},
+    {(void **)&fn2.grid2, "fnGenUniformGrid2D"}, {(void **)&fn2.grid3, "fnGenUniformGrid3D"},
+    {(void **)&fn2.pos2, "fnGenPositionArray2D"}, {(void **)&fn2.pos3, "fnGenPositionArray3D"},
+  };
+  for (size_t i = 0; i < sizeof sym / sizeof *sym; i++)
+    if (!(*sym[i].fp = dlsym(fn2.lib, sym[i].name))) { snprintf(why, len, "%s: no %s", path, sym[i].name); return 0; }
+  /* FastSIMD::FeatureSet AVX2 (x86, SSE..AVX2: bits 1-9), or no limit */
+  const char *lv = getenv("NL_NOISE_SIMD");
+  unsigned cap = lv && strcmp(lv, "avx2") == 0 ? 0x3FEu : ~0u;
+  int pid = fn2_meta_id("Perlin"), fid = fn2_meta_id("FractalFBm");
+  if (pid < 0 || fid < 0) { snprintf(why, len, "%s: no Perlin or FractalFBm node", path); return 0; }
+  fn2.perlin = fn2.new_node(pid, cap);
+  fn2.fbm = fn2.new_node(fid, cap);
+  int scale = fn2_index(fn2.var_count, fn2.var_name, pid, "Feature Scale");
+  int oct = fn2_index(fn2.var_count, fn2.var_name, fid, "Octaves");
+  int lac = fn2_index(fn2.var_count, fn2.var_name, fid, "Lacunarity");
+  int src = fn2_index(fn2.lookup_count, fn2.lookup_name, fid, "Source");
+  int gain = fn2_index(fn2.hybrid_count, fn2.hybrid_name, fid, "Gain");
+  if (!fn2.perlin || !fn2.fbm || scale < 0 || oct < 0 || lac < 0 || src < 0 || gain < 0 ||
+      !fn2.set_float(fn2.perlin, scale, 1.0f) || !fn2.set_int(fn2.fbm, oct, 4) ||
+      !fn2.set_float(fn2.fbm, lac, 2.0f) || !fn2.set_hybrid(fn2.fbm, gain, 0.5f) ||
+      !fn2.set_lookup(fn2.fbm, src, fn2.perlin)) {
+    snprintf(why, len, "%s: cannot set Perlin's scale or the fBm's octaves, gain, lacunarity, source", path);
+    return 0;
+  }
+  fn2.level = fn2.active_level(fn2.perlin);
+  return 1;
+}
+
+static void f_fn2_noise3(const void *ctx, double *out)
+{
+  (void)ctx;
+  float dx = (float)(EXTENT / N);
+  fn2.grid3(fn2.perlin, (float *)out, 0.5f * dx, 0.5f * dx, 0.5f, N, N, 1, dx, dx, dx, FN2_SEED, NULL);
+}
+
+static void f_fn2_noise2(const void *ctx, double *out)
+{
+  (void)ctx;
+  float dx = (float)(EXTENT / N);
+  fn2.grid2(fn2.perlin, (float *)out, 0.5f * dx, 0.5f * dx, N, N, dx, dx, FN2_SEED, NULL);
+}
+
+static void f_fn2_fbm3(const void *ctx, double *out)
+{
+  (void)ctx;
+  float dx = (float)(EXTENT / N);
+  fn2.grid3(fn2.fbm, (float *)out, 0.5f * dx, 0.5f * dx, 0.5f, N, N, 1, dx, dx, dx, FN2_SEED, NULL);
+}
+
+static void f_fn2_fbm2(const void *ctx, double *out)
+{
+  (void)ctx;
+  float dx = (float)(EXTENT / N);
+  fn2.grid2(fn2.fbm, (float *)out, 0.5f * dx, 0.5f * dx, N, N, dx, dx, FN2_SEED, NULL);
+}
+
+static void f_fn2_points3(const void *ctx, double *out)
+{
+  (void)ctx;
+  fn2.pos3(fn2.perlin, (float *)out, N * N, fx, fy, fz, 0, 0, 0, FN2_SEED, NULL);
+}
+
+static void f_fn2_points2(const void *ctx, double *out)
+{
+  (void)ctx;
+  fn2.pos2(fn2.perlin, (float *)out, N * N, fx, fy, 0, 0, FN2_SEED, NULL);
+}
+
+/* Each FastNoise2 kernel beside the one of ours it is compared with (by
+ * name in main's table k[]). */
+static struct { const char *ours, *label; void (*f)(const void *, double *); timing tm; } fn2k[] = {
+  {"noise3_row", "Perlin 3D, grid rows", f_fn2_noise3, {0, 0, 0}},
+  {"noise3_points", "Perlin 3D, random points", f_fn2_points3, {0, 0, 0}},
+  {"noise2_row", "Perlin 2D, grid rows", f_fn2_noise2, {0, 0, 0}},
+  {"noise2_points", "Perlin 2D, random points", f_fn2_points2, {0, 0, 0}},
+  {"fbm4_3d_row", "FractalFBm 4 oct, 3D grid", f_fn2_fbm3, {0, 0, 0}},
+  {"fbm4_2d_row", "FractalFBm 4 oct, 2D grid", f_fn2_fbm2, {0, 0, 0}},
+};
+enum { NFN2 = sizeof fn2k / sizeof *fn2k };
+
+static void fn2_say(int have, const char *path, const char *why, const char *level)
+{
+  if (!have) printf("# FastNoise2: %s\n", why);
+  else
+    printf("# FastNoise2 (%s), SIMD level %s, float32, same points and rounds; ours in double, level %s\n",
+           path, fn2_level_name(fn2.level), level);
+}
+
+/* The library: --fastnoise2 PATH, else build/fastnoise2/lib/libFastNoise.so
+ * beside this program's build/bench. */
+static const char *fn2_default_path(char *buf, size_t len)
+{
+  ssize_t r = readlink("/proc/self/exe", buf, len - 1);
+  if (r <= 0) return NULL;
+  buf[r] = 0;
+  char *slash = strrchr(buf, '/');
+  if (!slash) return NULL;
+  *slash = 0;
+  slash = strrchr(buf, '/');   /* build/bench -> build */
+  if (!slash) return NULL;
+  *slash = 0;
+  size_t used = strlen(buf);
+  snprintf(buf + used, len - used, "/fastnoise2/lib/libFastNoise.so");
+  return access(buf, R_OK) == 0 ? buf : NULL;
+}
+
+
 
 
 int main(int argc, char **argv)
 {
   int tsv = 0;
+  const char *fn2_path = NULL;
   for (int a = 1; a < argc; a++) {
     if (strcmp(argv[a], "--size") == 0 && a + 1 < argc) N = atoi(argv[++a]);
     else if (strcmp(argv[a], "--tsv") == 0) tsv = 1;
-    else { fprintf(stderr, "usage: bench_noise [--size N] [--tsv]\n"); return 2; }
+    else if (strcmp(argv[a], "--fastnoise2") == 0 && a + 1 < argc) fn2_path = argv[++a];
+    else { fprintf(stderr, "usage: bench_noise [--size N] [--tsv] [--fastnoise2 LIBRARY]\n"); return 2; }
   }
   if (N < 16 || N > 8192) { fprintf(stderr, "bench_noise: --size must be in [16, 8192]\n"); return 2; }
   char where[64], load0[128], load1[128];
@@ -257,6 +471,22 @@ int main(int argc, char **argv)
   srand(1);
   for (size_t k = 0; k < (size_t)N * N; k++) {
     rx[k] = EXTENT * rand() / RAND_MAX; ry[k] = EXTENT * rand() / RAND_MAX; rz[k] = EXTENT * rand() / RAND_MAX;
+  }
+  /* FastNoise2: a library named on the command line must load (exit 2
+   * otherwise); the default one is used when it was built. */
+  char fn2_buf[4096], fn2_why[512] = "not built (scripts/noiselab bench builds it)";
+  int have_fn2 = 0;
+  if (!fn2_path) fn2_path = fn2_default_path(fn2_buf, sizeof fn2_buf);
+  else if (!fn2_load(fn2_path, fn2_why, sizeof fn2_why)) {
+    fprintf(stderr, "bench_noise: --fastnoise2 %s: %s\n", fn2_path, fn2_why);
+    return 2;
+  } else have_fn2 = 1;
+  if (fn2_path && !have_fn2) have_fn2 = fn2_load(fn2_path, fn2_why, sizeof fn2_why);
+  if (have_fn2) {
+    fx = nl_xmalloc((size_t)N * N * sizeof *fx);
+    fy = nl_xmalloc((size_t)N * N * sizeof *fy);
+    fz = nl_xmalloc((size_t)N * N * sizeof *fz);
+    for (size_t q = 0; q < (size_t)N * N; q++) { fx[q] = (float)rx[q]; fy[q] = (float)ry[q]; fz[q] = (float)rz[q]; }
   }
   nl_noise_grad2 *t = nl_noise_grad2_alloc(512);
   nl_noise_grad2_seed(t, 1);
@@ -303,6 +533,7 @@ int main(int argc, char **argv)
     round_of(g_stb3_sparse, NULL, out, &stbs);
     round_of(g_stb3_points, NULL, out, &stbp);
     for (size_t i = 0; i < sizeof k / sizeof *k; i++) round_of(k[i].f, k[i].ctx, out, &k[i].tm);
+    for (int i = 0; have_fn2 && i < NFN2; i++) round_of(fn2k[i].f, NULL, out, &fn2k[i].tm);
   }
   int nk = (int)(sizeof k / sizeof *k);
   const timing *peer[] = {&stb, &stbf, &stb, &stbs, &stbp};   /* by the field fbm */
@@ -315,6 +546,7 @@ int main(int argc, char **argv)
     printf("# stb_perlin_noise3 %.1f Msamples/s, stb_perlin_fbm_noise3 (4 oct) %.1f Msamples/s\n", stb.rate, stbf.rate);
     printf("# stb_perlin_noise3 on the sparse rows' samples %.1f Msamples/s, on the random"
            " points %.1f\n", stbs.rate, stbp.rate);
+    fn2_say(have_fn2, fn2_path, fn2_why, level);
     printf("kernel\tmsamples_per_s\tcpu_ms\twall_ms\tvs_stb\n");
     for (int i = 0; i < nk; i++)
       printf("%s\t%.1f\t%.2f\t%.2f\t%.2f\n", k[i].name, k[i].tm.rate, k[i].tm.cpu_ms, k[i].tm.wall_ms,
@@ -336,6 +568,27 @@ int main(int argc, char **argv)
       printf("%-34s %10.1f %10.2f %10.2f %8.2f\n", k[i].label, k[i].tm.rate, k[i].tm.cpu_ms, k[i].tm.wall_ms,
              k[i].tm.rate / pe->rate);
     }
+  }
+  /* FastNoise2 beside ours: ratio = our rate / its rate (> 1: ours faster);
+   * with --tsv its '#' line went above the table */
+  if (!tsv) fn2_say(have_fn2, fn2_path, fn2_why, level);
+  if (have_fn2) {
+    if (!tsv) printf("%-44s %10s %10s %8s\n", "ours vs FastNoise2", "ours", "FN2", "ratio");
+    for (int i = 0; i < NFN2; i++) {
+      const timing *ours = &k[0].tm, *stb_peer = peer[0];
+      const char *olabel = "";
+      for (int j = 0; j < nk; j++)
+        if (strcmp(k[j].name, fn2k[i].ours) == 0) { ours = &k[j].tm; olabel = k[j].label; stb_peer = peer[k[j].fbm]; }
+      if (tsv)
+        printf("fastnoise2_%s\t%.1f\t%.2f\t%.2f\t%.2f\n", fn2k[i].ours, fn2k[i].tm.rate, fn2k[i].tm.cpu_ms,
+               fn2k[i].tm.wall_ms, fn2k[i].tm.rate / stb_peer->rate);
+      else
+        printf("fn2: %-39s %10.1f %10.1f %8.2f   (%s)\n", olabel, ours->rate, fn2k[i].tm.rate,
+               ours->rate / fn2k[i].tm.rate, fn2k[i].label);
+    }
+    fn2.del_node(fn2.fbm);
+    fn2.del_node(fn2.perlin);
+    free(fx); free(fy); free(fz);
   }
   nl_noise_grad2_free(t);
   nl_wavelet_tile_free(wt);

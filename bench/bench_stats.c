@@ -20,6 +20,9 @@
  * program re-executes itself with it set).
  *
  *   build/bench/bench_stats [--only fft|linkage|gmm|ks] [DIR]   one part only (Python side too)
+ *   build/bench/bench_stats --only linkage --scale   complete linkage's CPU ns per n^2 at
+ *                                       n = 1k, 2k, 5k, 10k, 20k (bench_linkage_scale; the
+ *                                       whole run ends with it too)
  */
 #define _GNU_SOURCE   /* sched_getaffinity in nl_bench.h */
 #include "nl_bench.h"
@@ -33,6 +36,7 @@
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
 #include <ftw.h>
+#include <malloc.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,14 +49,14 @@ enum { N = 10000, D = 81, K = 30 };
 
 /* A mixture of K Gaussians with random centres and random covariances
  * A A^T / d + 0.5 I: the clusters overlap a little, as real features do. */
-static double *make_data(gsl_rng *rng)
+static double *make_data_n(gsl_rng *rng, size_t n)
 {
-  double *x = nl_xmalloc((size_t)N * D * sizeof(double));
+  double *x = nl_xmalloc(n * D * sizeof(double));
   double *A = nl_xmalloc((size_t)K * D * D * sizeof(double)), *mu = nl_xmalloc(K * D * sizeof(double));
   for (size_t i = 0; i < (size_t)K * D * D; i++) A[i] = gsl_ran_gaussian(rng, 1.0) / sqrt((double)D);
   for (size_t i = 0; i < (size_t)K * D; i++) mu[i] = gsl_ran_gaussian(rng, 0.4);
   double z[D];
-  for (size_t i = 0; i < N; i++) {
+  for (size_t i = 0; i < n; i++) {
     size_t k = gsl_rng_uniform_int(rng, K);
     for (int j = 0; j < D; j++) z[j] = gsl_ran_gaussian(rng, 1.0);
     for (int r = 0; r < D; r++) {
@@ -65,6 +69,8 @@ static double *make_data(gsl_rng *rng)
   free(mu);
   return x;
 }
+
+static double *make_data(gsl_rng *rng) { return make_data_n(rng, N); }
 
 static void save(const char *dir, const char *name, size_t rows, size_t cols, const double *v)
 {
@@ -88,12 +94,14 @@ static void bench_gmm(const double *x, const int *labels)
   o.init_labels = labels;
   nl_gmm *g = nl_gmm_alloc(K, D, NL_GMM_FULL);
   nl_error err;
-  double t0 = nl_time_now();
+  /* the thread's CPU time, as docs/speed.md says (one thread: o.threads = 1,
+   * OpenBLAS at one thread); the wall time beside it */
+  double t0 = nl_time_thread_cpu(), w0 = nl_time_now();
   if (nl_gmm_fit(g, x, N, &o, &err)) { fprintf(stderr, "gmm: %s\n", err.msg); exit(1); }
-  double t = nl_time_now() - t0;
-  printf("gmm_em   C    n=%d d=%d K=%d full: %.3f s total, %zu iterations, %.4f s/iteration, "
-         "mean loglik %.10f, converged %d\n", N, D, K, t, g->iterations, t / (double)g->iterations,
-         g->loglik / N, g->converged);
+  double t = nl_time_thread_cpu() - t0, w = nl_time_now() - w0;
+  printf("gmm_em   C    n=%d d=%d K=%d full: %.3f s total thread CPU (%.3f s wall), %zu iterations, "
+         "%.4f s/iteration, mean loglik %.10f, converged %d\n", N, D, K, t, w, g->iterations,
+         t / (double)g->iterations, g->loglik / N, g->converged);
   nl_gmm_free(g);
 }
 
@@ -263,6 +271,61 @@ static void bench_fft(gsl_rng *rng)
   free(img); free(F); free(G);
 }
 
+/* User and system CPU seconds of the calling thread so far. */
+static void thread_user_system(double *user, double *sys)
+{
+  struct rusage ru;
+  getrusage(RUSAGE_THREAD, &ru);
+  *user = (double)ru.ru_utime.tv_sec + 1e-6 * (double)ru.ru_utime.tv_usec;
+  *sys = (double)ru.ru_stime.tv_sec + 1e-6 * (double)ru.ru_stime.tv_usec;
+}
+
+/* Complete linkage's cost per n^2 as n grows (--scale): the same mixture
+ * (make_data_n, d = 81) at n = 1,000 ... 20,000, calls adding up to at
+ * least 0.5 s (one at the largest n) in this thread, timed in its CPU time. An O(n^2) algorithm whose memory traffic
+ * stays sequential keeps ns / n^2 flat; one that reads the distance matrix
+ * by strided columns pays a cache (and TLB) miss a read once the matrix
+ * outgrows the caches, and the figure climbs with n. */
+static void bench_linkage_scale(gsl_rng *rng)
+{
+  static const size_t ns[] = {1000, 2000, 5000, 10000, 20000};
+  double first = 0;
+  /* Fresh pages for every call, as a program's one linkage gets: glibc
+   * would otherwise raise its mmap threshold after the first free, and the
+   * repeated small calls would reuse warm heap memory that the single call
+   * at n = 20,000 does not have (measured: 1.2 against 5-10 ns per n^2 of
+   * system time). */
+  mallopt(M_MMAP_THRESHOLD, 128 * 1024);
+  for (size_t i = 0; i < sizeof ns / sizeof *ns; i++) {
+    size_t n = ns[i];
+    double *x = make_data_n(rng, n), *Z = nl_xmalloc((n - 1) * 4 * sizeof *Z);
+    char l0[128], l1[128];
+    nl_bench_loadavg(l0, sizeof l0);
+    nl_error err;
+    double u0, s0, u1, s1;
+    int calls = 0;
+    thread_user_system(&u0, &s0);
+    double w0 = nl_time_now(), c0 = nl_time_thread_cpu(), c;
+    do {   /* calls adding up to 0.5 s: the user / system split is counted in scheduler ticks */
+      if (nl_cluster_linkage(x, n, D, NL_LINKAGE_COMPLETE, Z, &err)) { fprintf(stderr, "%s\n", err.msg); exit(1); }
+      calls++;
+      c = nl_time_thread_cpu() - c0;
+    } while (c < 0.5);
+    double w = (nl_time_now() - w0) / calls;
+    thread_user_system(&u1, &s1);
+    nl_bench_loadavg(l1, sizeof l1);
+    c /= calls;
+    double nn = (double)n * (double)n * calls, per = c * calls / nn * 1e9;
+    if (i == 0) first = per;
+    printf("linkage_scale C complete n=%zu d=%d: %.3f s CPU (%.3f s wall) a call, %d call%s, %.2f ns CPU "
+           "per n^2 (user %.2f + system %.2f), %.2fx that at n=%zu (load %s .. %s)\n", n, D, c, w, calls,
+           calls > 1 ? "s" : "", per, (u1 - u0) / nn * 1e9, (s1 - s0) / nn * 1e9, per / first, ns[0], l0, l1);
+    fflush(stdout);
+    free(x);
+    free(Z);
+  }
+}
+
 static void run_python(const char *dir, const char *only)
 {
   if (system("/usr/bin/python3 -c 'import numpy' >/dev/null 2>&1") != 0) {
@@ -304,14 +367,18 @@ int main(int argc, char **argv)
     execv("/proc/self/exe", argv);
   }
   const char *only = NULL;
-  int a = 1;
+  int a = 1, scale = 0;
   if (argc > 2 && strcmp(argv[1], "--only") == 0) {
     only = argv[2];
     a = 3;
   }
+  if (only && strcmp(only, "linkage") == 0 && argc > a && strcmp(argv[a], "--scale") == 0) {
+    scale = 1;
+    a++;
+  }
   /* An option where the data folder goes would become a folder named "--help". */
   if (argc > a + 1 || (argc > a && argv[a][0] == '-')) {
-    fprintf(stderr, "usage: bench_stats [--only ks|fft|linkage|gmm] [DIR]\n");
+    fprintf(stderr, "usage: bench_stats [--only ks|fft|linkage [--scale]|gmm] [DIR]\n");
     return 2;
   }
   if (only && strcmp(only, "ks") && strcmp(only, "fft") && strcmp(only, "linkage") &&
@@ -331,6 +398,13 @@ int main(int argc, char **argv)
   printf("bench_stats: OPENBLAS_NUM_THREADS=%s, data in %s, %s\n", getenv("OPENBLAS_NUM_THREADS"), dir,
          nl_bench_pin(pin, sizeof pin));
   nl_bench_report(stdout, "start");
+  if (scale) {   /* the growth figure alone: no data files, no Python side */
+    bench_linkage_scale(rng);
+    nl_bench_report(stdout, "end");
+    gsl_rng_free(rng);
+    if (argc <= a) remove_tree(dir);
+    return 0;
+  }
   if (!only || !strcmp(only, "ks")) bench_ks(rng);
   if (!only || !strcmp(only, "fft")) bench_fft(rng);
   if (only && strcmp(only, "linkage") && strcmp(only, "gmm")) {
@@ -372,6 +446,8 @@ int main(int argc, char **argv)
     bench_linkage(dir, x, NL_LINKAGE_SINGLE, "single");
   }
   run_python(dir, only);
+  /* the growth of linkage's cost with n, last: its own data, up to 4 GB */
+  if (!only) bench_linkage_scale(rng);
   nl_bench_report(stdout, "end");
   free(x); free(labels); free(lab);
   gsl_rng_free(rng);

@@ -2,11 +2,12 @@
  * wall time, the machine's load, pinning to one core.
  *
  * nl_bench_rate(f, ctx, out, npoints): calls f(ctx, out) (which computes
- * npoints samples into out) repeatedly for at least 0.5 s, three times, and
- * returns the best rate in millions of samples per second (wall clock). The
- * best of three discounts interruptions by other processes on a shared
- * machine; nl_bench_cpu_share holds CPU time / wall time of that round (near 1
- * on an idle core, lower when other work took the core).
+ * npoints samples into out) repeatedly for at least 0.5 s of the thread's CPU
+ * time, three times, and returns the best rate in millions of samples per
+ * CPU second (time descheduled on a shared machine does not count; the best
+ * of three discounts what is left: caches another process emptied).
+ * nl_bench_cpu_share holds CPU time / wall time of that round (near 1 on an
+ * idle core, lower when other work took the core).
  * nl_bench_report(fp, "start"|"end") prints a '#' line with /proc/loadavg and
  * the lowest CPU share seen so far: a number is only as good as its load.
  */
@@ -40,9 +41,9 @@ static inline double nl_bench_rate(nl_bench_fn f, const void *ctx, double *out, 
   double best = 0;
   for (int rep = 0; rep < 3; rep++) {
     size_t iters = 0;
-    double t0 = nl_time_now(), c0 = nl_bench_cpu_now(), t;
-    do { f(ctx, out); nl_bench_sink = out[iters % npoints]; iters++; t = nl_time_now() - t0; } while (t < 0.5);
-    double r = (double)iters * (double)npoints / t / 1e6, share = (nl_bench_cpu_now() - c0) / t;
+    double t0 = nl_time_now(), c0 = nl_bench_cpu_now(), c;
+    do { f(ctx, out); nl_bench_sink = out[iters % npoints]; iters++; c = nl_bench_cpu_now() - c0; } while (c < 0.5);
+    double r = (double)iters * (double)npoints / c / 1e6, share = c / (nl_time_now() - t0);
     if (r > best) { best = r; nl_bench_cpu_share = share; }
   }
   if (nl_bench_cpu_share < nl_bench_cpu_share_min) nl_bench_cpu_share_min = nl_bench_cpu_share;

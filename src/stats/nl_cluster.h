@@ -17,16 +17,27 @@
  * algorithms", arXiv:1109.2378, sec. 3), O(n^2) time but centroid and median:
  *   single:   Prim's minimum spanning tree with distances computed on the
  *             fly: O(n d) memory. (Single linkage = MST, Gower & Ross 1969.)
- *   complete, average: the nearest-neighbour chain on the condensed distance
- *             matrix, n(n-1)/2 doubles: 400 MB for n = 10,000 (scipy holds
- *             about twice that). The Lance-Williams updates are
- *             complete d = max(d_ax, d_bx), average (UPGMA)
+ *   complete, average: the nearest-neighbour chain, O(n^2) time, with
+ *             memory traffic that stays sequential, so that the time per
+ *             n^2 stays flat as n grows (bench_stats --only linkage
+ *             --scale prints it for n = 1,000 ... 20,000). The Lance-Williams
+ *             updates are complete d = max(d_ax, d_bx), average (UPGMA)
  *             d = (n_a d_ax + n_b d_bx) / (n_a + n_b); both are reducible,
- *             which the chain needs. The matrix is asked for on 2 MB pages
- *             (MADV_HUGEPAGE), and each column keeps its 4 smallest entries
- *             (56 bytes a point) so that the chain's nearest-neighbour
- *             search rarely scans a column (strided in the condensed
- *             layout); the merges are the plain chain's, bit for bit.
+ *             which the chain needs. Every cluster has a whole row of a
+ *             square matrix, n rows of about 1.25 n doubles (1 GB for
+ *             n = 10,000; scipy holds 800 MB): a merged cluster's row is
+ *             made from its two parts' rows, and it takes a new column,
+ *             written into the other rows eight new columns at a time (one
+ *             cache line a row). Where that matrix does not fit in the
+ *             available memory, the chain runs on the condensed matrix,
+ *             n(n-1)/2 doubles (400 MB for n = 10,000) on 2 MB pages, each
+ *             column keeping its 4 smallest entries (56 bytes a point) so
+ *             that the nearest-neighbour search rarely scans a column
+ *             (strided in that layout); its merges' memory reads go by
+ *             columns, a cache miss each, so its time per n^2 grows with n
+ *             once the matrix outgrows the caches. Both give the plain
+ *             chain's merges, bit for bit, ties resolved as scipy's
+ *             nn_chain resolves them.
  *   ward:     the same chain with Ward's Lance-Williams update on Euclidean
  *             distances (Ward 1963; Muellner eq. in table 1), written as
  *             scipy writes it, t = 1 / (n_a + n_b + n_x):

@@ -133,10 +133,14 @@ NL_TEST(ward_by_hand)
   NL_CHECK(Z[11] == 4.0);
 }
 
-/* ---- the column lists against a plain NN-chain ----------------------------
- * nl_cluster.c caches each column's smallest entries so that the chain's
- * nearest-neighbour search does not scan columns; the merges must be the
- * ones the plain chain makes, bit for bit, ties included. The reference
+/* ---- both chains against a plain NN-chain ---------------------------------
+ * nl_cluster.c runs the chain on a square matrix whose new clusters take new
+ * columns (and whose ties are decided by scipy's indices, not the slots'),
+ * or, where that matrix does not fit, on the condensed matrix with each
+ * column's smallest entries cached; the merges of both must be the ones the
+ * plain chain makes, bit for bit, ties included. The condensed chain is run
+ * by capping the memory the library sees (nl_mem_cap) between the condensed
+ * matrix's size and the square one's. The reference
  * below is that plain chain (full scans, the same tie rule: prev first,
  * else the lowest index at the minimum) with scipy's stable sort and
  * relabelling. Points on a small integer grid give many equal distances
@@ -214,14 +218,22 @@ static size_t differ_from_plain_chain(const double *x, size_t n, size_t d, const
 {
   double *Z = nl_xmalloc(4 * n * sizeof *Z), *R = nl_xmalloc(4 * n * sizeof *R);
   size_t total = 0;
-  for (int m = NL_LINKAGE_COMPLETE; m <= NL_LINKAGE_WARD; m++) {
-    if (nl_cluster_linkage(x, n, d, (nl_cluster_linkage_method)m, Z, NULL) != NL_OK) return SIZE_MAX;
-    ref_linkage(x, n, d, (nl_cluster_linkage_method)m, R);
-    size_t bad = 0;
-    for (size_t i = 0; i < 4 * (n - 1); i++) bad += memcmp(&Z[i], &R[i], sizeof *Z) != 0;
-    if (bad) fprintf(stderr, "  %s, method %d: %zu values differ from the plain chain\n", what, m, bad);
-    total += bad;
-  }
+  /* condensed: n(n-1)/2 doubles; square: n rows of at least n + n/4 */
+  double condensed = (double)n * (double)(n - 1) / 2 * sizeof(double);
+  for (int layout = 0; layout < 2; layout++)
+    for (int m = NL_LINKAGE_COMPLETE; m <= NL_LINKAGE_WARD; m++) {
+      ref_linkage(x, n, d, (nl_cluster_linkage_method)m, R);
+      nl_mem_cap(layout ? 1.5 * condensed : 0);
+      nl_status st = nl_cluster_linkage(x, n, d, (nl_cluster_linkage_method)m, Z, NULL);
+      nl_mem_cap(0);
+      if (st != NL_OK) return SIZE_MAX;
+      size_t bad = 0;
+      for (size_t i = 0; i < 4 * (n - 1); i++) bad += memcmp(&Z[i], &R[i], sizeof *Z) != 0;
+      if (bad)
+        fprintf(stderr, "  %s, method %d, %s chain: %zu values differ from the plain chain\n", what, m,
+                layout ? "condensed" : "square", bad);
+      total += bad;
+    }
   free(Z); free(R);
   return total;
 }

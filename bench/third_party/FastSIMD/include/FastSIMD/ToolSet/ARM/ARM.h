@@ -1,0 +1,5 @@
+#pragma once
+
+#if FASTSIMD_MAX_FEATURE_VALUE() >= FASTSIMD_FEATURE_VALUE( NEON )
+#include "NEON.h"
+#endif
