@@ -585,6 +585,14 @@ int main(int argc, char **argv)
       else
         printf("fn2: %-39s %10.1f %10.1f %8.2f   (%s)\n", olabel, ours->rate, fn2k[i].tm.rate,
                ours->rate / fn2k[i].tm.rate, fn2k[i].label);
+      /* and our float32 kernel of the same work, where there is one: the
+       * like-for-like comparison (FastNoise2 computes in float) */
+      char f32name[64];
+      snprintf(f32name, sizeof f32name, "%s_f32", fn2k[i].ours);
+      for (int j = 0; !tsv && j < nk; j++)
+        if (strcmp(k[j].name, f32name) == 0)
+          printf("fn2: %-39s %10.1f %10.1f %8.2f   (%s)\n", k[j].label, k[j].tm.rate, fn2k[i].tm.rate,
+                 k[j].tm.rate / fn2k[i].tm.rate, fn2k[i].label);
     }
     fn2.del_node(fn2.fbm);
     fn2.del_node(fn2.perlin);
