@@ -33,6 +33,8 @@
 #include <time.h>
 #include <unistd.h>
 
+#define SHARD_DIR ".shards"   /* the shard files' folder in OUT without --shards */
+
 struct nl_harness {
   const char *name, *title;
   char *out;
@@ -80,8 +82,10 @@ struct nl_harness {
   nl_table *times;
   /* shards (nl_harness_units): --shard K/N (shard_n 0: none), --merge; the
    * units' stored values, the unit being computed (-1: none) */
-  int shard_k, shard_n, merge;
+  int shard_k, shard_n, merge, units_query;
+  char *shard_dir;        /* --shards, default OUT/.shards */
   long nunits;            /* -1 until nl_harness_units */
+  double shards_cpu, shards_rss;   /* --merge: the shards' CPU seconds (sum) and peak RSS MB (max) */
   struct unit_entry *ue;
   size_t nue, cue;
   long unit_cur;
@@ -115,6 +119,8 @@ static void usage(const char *name, const char *title)
          "                DIR/.shards/K-of-N.tsv (experiments that declare units)\n"
          "  --merge       read DIR/.shards/*-of-N.tsv (all N) and write the run\n"
          "                exactly as an unsharded run writes it\n"
+         "  --shards D    the shard files' folder (default DIR/.shards)\n"
+         "  --units       print the number of units (sharded experiments) and exit\n"
          "  --params      list the parameters as TSV (name, default, min, max, meaning)\n\n"
          "Nothing in the output folder changes until every option and parameter\n"
          "is accepted; a folder with a manifest.tsv is a finished run.\n",
@@ -185,7 +191,7 @@ void nl_harness_options_free(nl_harness_options *o)
 {
   if (!o) return;
   for (int k = 0; k < o->nset; k++) { free(o->set_key[k]); free(o->set_val[k]); }
-  free(o->set_key); free(o->set_val); free(o->out);
+  free(o->set_key); free(o->set_val); free(o->out); free(o->shard_dir);
   memset(o, 0, sizeof *o);
 }
 
@@ -194,7 +200,8 @@ nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_erro
   /* GNU style through the tools' parser: --seed 3, --seed=3, unique prefixes. */
   static const nl_opt_spec spec[] = {{"help", 'h', 0}, {"params", 0, 0}, {"quick", 0, 0}, {"out", 0, 1},
                                      {"seed", 0, 1}, {"seeds", 0, 1}, {"set", 0, 1}, {"threads", 0, 1},
-                                     {"no-images", 0, 0}, {"shard", 0, 1}, {"merge", 0, 0}, {0}};
+                                     {"no-images", 0, 0}, {"shard", 0, 1}, {"merge", 0, 0},
+                                     {"shards", 0, 1}, {"units", 0, 0}, {0}};
   memset(o, 0, sizeof *o);
   o->seed = 1;
   o->seeds = -1;
@@ -212,6 +219,11 @@ nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_erro
     else if (!strcmp(spec[k].name, "quick")) o->quick = 1;
     else if (!strcmp(spec[k].name, "no-images")) o->no_images = 1;
     else if (!strcmp(spec[k].name, "merge")) o->merge = 1;
+    else if (!strcmp(spec[k].name, "units")) o->units = 1;
+    else if (!strcmp(spec[k].name, "shards")) {
+      if (!*v) st = nl_fail(err, NL_EINVAL, "--shards: empty folder name");
+      else { free(o->shard_dir); o->shard_dir = nl_xstrdup(v); }
+    }
     else if (!strcmp(spec[k].name, "shard")) {
       int kk, nn, used = 0;
       if (sscanf(v, "%d/%d%n", &kk, &nn, &used) != 2 || v[used] || nn < 1 || nn > 10000 || kk < 1 || kk > nn)
@@ -334,6 +346,8 @@ nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char
   r->shard_k = o.shard_k;
   r->shard_n = o.shard_n;
   r->merge = o.merge;
+  r->shard_dir = o.shard_dir ? o.shard_dir : nl_path_join(r->out, SHARD_DIR);
+  r->units_query = o.units;
   r->nunits = -1;
   r->unit_cur = -1;
   /* The output folder is not touched here: see prepare(). */
@@ -1289,6 +1303,12 @@ static void run_times_write(nl_harness *r)
   nl_table_append(t, "ss", "cpu_seconds", buf);
   snprintf(buf, sizeof buf, "%.1f", ru.ru_maxrss / 1024.0);
   nl_table_append(t, "ss", "peak_rss_mb", buf);
+  if (r->merge) {   /* the shards this run merged: their CPU (sum) and largest peak */
+    snprintf(buf, sizeof buf, "%.3f", r->shards_cpu);
+    nl_table_append(t, "ss", "shards_cpu_seconds", buf);
+    snprintf(buf, sizeof buf, "%.1f", r->shards_rss);
+    nl_table_append(t, "ss", "shards_peak_rss_mb", buf);
+  }
   char *p = nl_path_join(r->out, "run.tsv");
   nl_error err;
   nl_status st = nl_table_write(t, p, &err);
@@ -1332,6 +1352,7 @@ int nl_harness_end(nl_harness *r)
   free(pending);
   shards_remove(r);
   units_clear(r);
+  free(r->shard_dir);
   for (size_t i = 0; i < r->noutputs; i++) free(r->outputs[i]);
   for (size_t i = 0; i < r->nfigures; i++) free(r->figures[i]);
   for (size_t i = 0; i < r->nprevious; i++) free(r->previous[i]);
@@ -1382,7 +1403,6 @@ struct unit_entry {
   char **text;      /* table: ncols names then n * ncols cells (NULL: numeric); note: its value */
 };
 
-#define SHARD_DIR ".shards"
 
 static struct unit_entry *unit_add(nl_harness *r, long u, char kind, const char *key)
 {
@@ -1415,8 +1435,8 @@ static void units_clear(nl_harness *r)
  * its units, and a shard writes nothing but its shard file. */
 static void units_refuse(nl_harness *r)
 {
-  const char *opt = r->merge ? "--merge" : "--shard";
-  if (!r->merge && !r->shard_n) return;
+  const char *opt = r->merge ? "--merge" : r->shard_n ? "--shard" : "--units";
+  if (!r->merge && !r->shard_n && !r->units_query) return;
   if (r->nunits < 0)
     nl_harness_die(r, 2, "%s: %s declares no units to shard; run it whole", opt, r->name);
   if (r->shard_n) nl_harness_die(r, 1, "--shard: a write before nl_harness_units_done (a bug)");
@@ -1436,6 +1456,10 @@ long nl_harness_units(nl_harness *r, long n)
   if (!r->params_checked) nl_harness_params_done(r);
   if (n < 0 || r->nunits >= 0) nl_harness_die(r, 1, "nl_harness_units: called twice or with n < 0 (a bug)");
   r->nunits = n;
+  if (r->units_query) {   /* --units: the count, for a scheduler; nothing run or written */
+    printf("%ld\n", n);
+    exit(0);
+  }
   return n;
 }
 
@@ -1550,7 +1574,9 @@ static char *shard_settings(const nl_harness *r)
 {
   size_t cap = 256, len = 0;
   char *s = nl_xmalloc(cap);
-  len = (size_t)snprintf(s, cap, "%s; units %ld", r->name, r->nunits);
+  const char *commit = getenv("NL_COMMIT");   /* a shard of other code is another run */
+  len = (size_t)snprintf(s, cap, "%s; units %ld; commit %s", r->name, r->nunits,
+                         commit && *commit ? commit : "unknown");
   for (size_t i = 0; i < r->manifest->nrows; i++) {
     const char *k = r->manifest->text[i * 2], *v = r->manifest->text[i * 2 + 1];
     if (strcmp(k, "seed") && strcmp(k, "seeds") && strcmp(k, "quick") && strcmp(k, "param")) continue;
@@ -1564,15 +1590,15 @@ static char *shard_settings(const nl_harness *r)
 static char *shard_path(const nl_harness *r, int k, int n)
 {
   char name[64];
-  snprintf(name, sizeof name, "%s/%d-of-%d.tsv", SHARD_DIR, k, n);
-  return nl_path_join(r->out, name);
+  snprintf(name, sizeof name, "%d-of-%d.tsv", k, n);
+  return nl_path_join(r->shard_dir, name);
 }
 
 static void shard_write(nl_harness *r)
 {
   nl_error err;
-  char *dir = nl_path_join(r->out, SHARD_DIR), *path = shard_path(r, r->shard_k, r->shard_n);
-  if (nl_mkdir_p(dir, &err)) nl_harness_die(r, 1, "%s", err.msg);
+  char *path = shard_path(r, r->shard_k, r->shard_n);
+  if (nl_mkdir_p(r->shard_dir, &err)) nl_harness_die(r, 1, "%s", err.msg);
   nl_atomic_file af;
   if (nl_atomic_open(&af, path, &err)) nl_harness_die(r, 1, "%s", err.msg);
   char *set = shard_settings(r);
@@ -1580,6 +1606,13 @@ static void shard_write(nl_harness *r)
   put_text(af.fp, set);
   fputc('\n', af.fp);
   free(set);
+  { /* what this shard cost, for the merge's run.tsv (CPU-hours of a sharded run) */
+    struct rusage ru;
+    getrusage(RUSAGE_SELF, &ru);
+    fprintf(af.fp, "#cost\t%.3f\t%.1f\n",
+            ru.ru_utime.tv_sec + ru.ru_utime.tv_usec * 1e-6 + ru.ru_stime.tv_sec + ru.ru_stime.tv_usec * 1e-6,
+            ru.ru_maxrss / 1024.0);
+  }
   for (size_t i = 0; i < r->nue; i++) {
     const struct unit_entry *e = &r->ue[i];
     fprintf(af.fp, "%ld\t%c\t", e->u, e->kind);
@@ -1603,7 +1636,6 @@ static void shard_write(nl_harness *r)
     fputc('\n', af.fp);
   }
   if (nl_atomic_commit(&af, &err)) nl_harness_die(r, 1, "%s", err.msg);
-  free(dir);
   free(path);
 }
 
@@ -1639,6 +1671,12 @@ static void shard_read(nl_harness *r, const char *path, int k, int n, const char
       int ok = s && !strcmp(s, set);
       free(s);
       if (!ok) nl_harness_die(r, 2, "--merge: %s was made by another run (other settings or units)", path);
+      continue;
+    }
+    if (!strcmp(f[0], "#cost") && nf == 3) {
+      double rss = strtod(f[2], NULL);
+      r->shards_cpu += strtod(f[1], NULL);
+      if (rss > r->shards_rss) r->shards_rss = rss;
       continue;
     }
     char *end;
@@ -1683,7 +1721,7 @@ static void shard_read(nl_harness *r, const char *path, int k, int n, const char
 
 static void shards_merge(nl_harness *r)
 {
-  char *dir = nl_path_join(r->out, SHARD_DIR);
+  const char *dir = r->shard_dir;
   DIR *d = opendir(dir);
   if (!d) nl_harness_die(r, 2, "--merge: no shards in %s (%s)", dir, strerror(errno));
   int n = 0, other = 0;
@@ -1705,7 +1743,6 @@ static void shards_merge(nl_harness *r)
     free(p);
   }
   free(set);
-  free(dir);
 }
 
 void nl_harness_units_done(nl_harness *r)
@@ -1723,7 +1760,7 @@ void nl_harness_units_done(nl_harness *r)
 static void shards_remove(nl_harness *r)
 {
   if (!r->merge) return;
-  char *dir = nl_path_join(r->out, SHARD_DIR);
+  const char *dir = r->shard_dir;
   DIR *d = opendir(dir);
   struct dirent *de;
   while (d && (de = readdir(d))) {
@@ -1734,5 +1771,4 @@ static void shards_remove(nl_harness *r)
   }
   if (d) closedir(d);
   rmdir(dir);
-  free(dir);
 }

@@ -25,6 +25,8 @@
  *   --set K=V    an experiment parameter (repeatable), for sweeps
  *   --shard K/N  only the units u with u mod N == K - 1 (nl_harness_units below)
  *   --merge      the run from the shard files of all N shards
+ *   --shards DIR where the shard files are (default OUT/.shards)
+ *   --units      print the number of units and exit 0 (sharded experiments)
  *   --params     print the parameters as TSV, a header line then one line
  *                each: name, default, min, max, meaning; exit 0
  *   --help       the usage and the parameters in readable form; exit 0
@@ -92,6 +94,8 @@ typedef struct {
   int no_images;           /* --no-images */
   int shard_k, shard_n;    /* --shard K/N; 0 0 without */
   int merge;               /* --merge */
+  char *shard_dir;         /* --shards DIR, or NULL: OUT/.shards */
+  int units;               /* --units */
   int nset;                /* --set NAME=VALUE, in order */
   char **set_key, **set_val;
 } nl_harness_options;
@@ -508,16 +512,21 @@ const char *nl_harness_verdict_word(nl_harness_outcome outcome, const char *kind
  * the same store, so one code path makes the tables in all three modes.
  * --shard K/N: unit u is mine when u mod N == K - 1 (round robin: the
  * replicates of every case spread over the shards); nl_harness_units_done
- * writes the stored values to OUT/.shards/K-of-N.tsv (atomically; numbers
+ * writes the stored values to DIR/K-of-N.tsv (DIR: --shards, default
+ * OUT/.shards; atomically; first line the run's settings and NL_COMMIT; numbers
  * as C99 hex floats, so NaN and every bit survive) and exits 0, no table,
  * report or manifest written. --merge: no unit is mine; nl_harness_units_done
- * reads OUT/.shards/K-of-N.tsv for K = 1..N (N from the files found; a
+ * reads DIR/K-of-N.tsv for K = 1..N (N from the files found; a
  * missing shard or one of another unit count is "NAME: --merge: shard K of N
- * missing (PATH)", exit 2), and nl_harness_end removes OUT/.shards once the
+ * missing (PATH)", exit 2); its run.tsv adds shards_cpu_seconds (their sum)
+ * and shards_peak_rss_mb (their largest), which each shard file records,
+ * and nl_harness_end empties and removes DIR once the
  * manifest is written: the folder is then the unsharded run's, file for
  * file. An experiment that writes before declaring units refuses --shard
  * and --merge (exit 2): it has nothing to shard. Getting a value no unit
- * stored is a bug in the experiment (exit 1). */
+ * stored is a bug in the experiment (exit 1). --units: nl_harness_units
+ * prints n and exits 0 (a scheduler's query; the experiment's work before
+ * it, its parameters and patterns, is all that runs). */
 long nl_harness_units(nl_harness *r, long n);
 int nl_harness_unit_mine(const nl_harness *r, long u);
 /* 0 normal run, 1 --shard, 2 --merge */
