@@ -26,7 +26,7 @@ same_as_local() {   # DIR
     diff -r -x run.tsv -x times.tsv "$out/local/$e" "$1/$e" >"$1.diff" || fail "$1/$e differs from the local run: $(head -5 "$1.diff")"
   done
   cmp -s "$out/local/REPORT.md" "$1/REPORT.md" || fail "$1/REPORT.md differs from the local one"
-  [ ! -e "$1/.shards-c5_pools" ] && [ ! -e "$1/.parts" ] || fail "$1: shards or parts left after the merge"
+  if [ -e "$1/.shards-c5_pools" ] || [ -e "$1/.parts" ]; then fail "$1: shards or parts left after the merge"; fi
 }
 
 if [ "$mode" = slurm ]; then

@@ -37,7 +37,7 @@ for e in "${sharded[@]}"; do
     for p in "${pids[@]}"; do wait "$p" || fail "$e: a shard of $n failed"; done
     left="$(cd "$d" && find . -path ./.shards -prune -o -type f -print)"
     [ -z "$left" ] || fail "$e: shards of $n wrote more than their shard files: $left"
-    [ "$(ls "$d/.shards" | wc -l)" = "$n" ] || fail "$e: $n shards did not write $n shard files"
+    [ "$(find "$d/.shards" -type f | wc -l)" = "$n" ] || fail "$e: $n shards did not write $n shard files"
     "$x" --quick --out "$d" --merge 2>/dev/null || fail "$e: the merge of $n shards failed"
     [ ! -e "$d/.shards" ] || fail "$e: the merge of $n shards left .shards/"
     diff -r -x run.tsv -x times.tsv "$out/$e/whole" "$d" >"$out/$e/diff-$n" \
@@ -48,7 +48,7 @@ for e in "${sharded[@]}"; do
   "$x" --quick --out "$d" --shard 1/3 2>/dev/null
   "$x" --quick --out "$d" --shard 3/3 2>/dev/null
   one_line_exit2 "shard 2 of 3 missing ($d/.shards/2-of-3.tsv)" "$x" --quick --out "$d" --merge
-  [ ! -e "$d/manifest.tsv" ] && [ -z "$(ls "$d")" ] || fail "$e: a refused merge wrote into $d"
+  [ -z "$(find "$d" -path "$d/.shards" -prune -o -type f -print)" ] || fail "$e: a refused merge wrote into $d"
   # a shard of another run (its parameters or seed differ) is not merged
   d="$out/$e/other"
   "$x" --quick --out "$d" --shard 1/1 --seed 2 2>/dev/null
