@@ -16,7 +16,7 @@ for v in $(env | sed -n 's/^\(NL_[A-Za-z0-9_]*\)=.*/\1/p'); do unset "$v"; done
 fail() { echo "cli_shard: $*"; exit 1; }
 cd "$root"   # the experiments read data/patterns
 
-mapfile -t sharded < <(grep -l 'nl_harness_units(' experiments/*/*.c | cut -d/ -f2 | sort -u)
+mapfile -t sharded < <(grep -El 'nl_harness_units(_weighted)?\(' experiments/*/*.c | cut -d/ -f2 | sort -u)
 [ ${#sharded[@]} -gt 0 ] || fail "no experiment declares units"
 grep -q '^c5_pools$' <(printf '%s\n' "${sharded[@]}") || fail "C5 declares no units"
 

@@ -120,7 +120,7 @@ static void usage(const char *name, const char *title)
          "  --merge       read DIR/.shards/*-of-N.tsv (all N) and write the run\n"
          "                exactly as an unsharded run writes it\n"
          "  --shards D    the shard files' folder (default DIR/.shards)\n"
-         "  --units       print the number of units (sharded experiments) and exit\n"
+         "  --units       print one line a unit, its relative cost, and exit\n"
          "  --params      list the parameters as TSV (name, default, min, max, meaning)\n\n"
          "Nothing in the output folder changes until every option and parameter\n"
          "is accepted; a folder with a manifest.tsv is a finished run.\n",
@@ -1451,17 +1451,19 @@ static int unit_note(nl_harness *r, const char *key, const char *value)
   return 1;
 }
 
-long nl_harness_units(nl_harness *r, long n)
+long nl_harness_units_weighted(nl_harness *r, long n, const double *cost)
 {
   if (!r->params_checked) nl_harness_params_done(r);
   if (n < 0 || r->nunits >= 0) nl_harness_die(r, 1, "nl_harness_units: called twice or with n < 0 (a bug)");
   r->nunits = n;
-  if (r->units_query) {   /* --units: the count, for a scheduler; nothing run or written */
-    printf("%ld\n", n);
+  if (r->units_query) {   /* --units: one line a unit, its cost, for a scheduler; nothing run or written */
+    for (long u = 0; u < n; u++) printf("%g\n", cost ? cost[u] : 1.0);
     exit(0);
   }
   return n;
 }
+
+long nl_harness_units(nl_harness *r, long n) { return nl_harness_units_weighted(r, n, NULL); }
 
 int nl_harness_shard_mode(const nl_harness *r) { return r->merge ? 2 : r->shard_n ? 1 : 0; }
 

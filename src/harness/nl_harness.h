@@ -26,7 +26,7 @@
  *   --shard K/N  only the units u with u mod N == K - 1 (nl_harness_units below)
  *   --merge      the run from the shard files of all N shards
  *   --shards DIR where the shard files are (default OUT/.shards)
- *   --units      print the number of units and exit 0 (sharded experiments)
+ *   --units      print each unit's relative cost, one line a unit; exit 0
  *   --params     print the parameters as TSV, a header line then one line
  *                each: name, default, min, max, meaning; exit 0
  *   --help       the usage and the parameters in readable form; exit 0
@@ -525,9 +525,12 @@ const char *nl_harness_verdict_word(nl_harness_outcome outcome, const char *kind
  * file. An experiment that writes before declaring units refuses --shard
  * and --merge (exit 2): it has nothing to shard. Getting a value no unit
  * stored is a bug in the experiment (exit 1). --units: nl_harness_units
- * prints n and exits 0 (a scheduler's query; the experiment's work before
- * it, its parameters and patterns, is all that runs). */
+ * prints one line a unit, its relative cost (1 unless declared with
+ * nl_harness_units_weighted: cost[u], measured, so that a scheduler starts
+ * the costly ones first), and exits 0; the experiment's work before it, its
+ * parameters and patterns, is all that runs. */
 long nl_harness_units(nl_harness *r, long n);
+long nl_harness_units_weighted(nl_harness *r, long n, const double *cost);
 int nl_harness_unit_mine(const nl_harness *r, long u);
 /* 0 normal run, 1 --shard, 2 --merge */
 int nl_harness_shard_mode(const nl_harness *r);
