@@ -174,27 +174,61 @@ static void floor_rows(c5_floor *F, const char *tex, const floor_job *j, int rep
   }
 }
 
-void c5_floor_case(nl_harness *r, c5_floor *F, const char *texture, double paper_aic,
-                   const nl_cheng_model_options *o, nl_cheng_pool *const *pools,
-                   const unsigned long *seeds, int reps, int threads)
+static void linkage_rows(c5_floor *F, const char *texture, const floor_job *j, int reps,
+                         double cutoff)
 {
-  if (reps > MAXR) reps = MAXR;
-  floor_job *j = nl_xcalloc(1, sizeof *j);
-  j->o = o;
-  j->pools = pools;
-  j->seeds = seeds;
-  j->cutoff = o->cutoff;
-  size_t n = (size_t)reps * (C5_NFLOOR + 1);
-  nl_parallel_for(n, threads, floor_item, j);
-  for (size_t i = 0; i < n; i++)
-    if (j->st[i]) nl_harness_die(r, 1, "%s: %s", texture, j->err[i].msg);
-  floor_rows(F, texture, j, reps, paper_aic);
   for (int l = 0; l < NLINK; l++) {
     double k0[MAXR], m, sd;
     for (int q = 0; q < reps; q++) k0[q] = j->k0_link[q][l];
     mean_sd(k0, reps, &m, &sd);
-    nl_table_append(F->linkage, "ssdddd", texture, link_names[l], (double)reps, o->cutoff, m, sd);
+    nl_table_append(F->linkage, "ssdddd", texture, link_names[l], (double)reps, cutoff, m, sd);
   }
+}
+
+/* One replicate: its floors and linkages as items (pools[0], seeds[0]: the
+ * replicate's own). */
+void c5_floor_unit(nl_harness *r, const char *texture, const nl_cheng_model_options *o,
+                   nl_cheng_pool *pool, unsigned long seed, int threads, double *out)
+{
+  floor_job *j = nl_xcalloc(1, sizeof *j);
+  nl_cheng_pool *pools[1] = { pool };
+  unsigned long seeds[1] = { seed };
+  j->o = o;
+  j->pools = pools;
+  j->seeds = seeds;
+  j->cutoff = o->cutoff;
+  nl_parallel_for(C5_NFLOOR + 1, threads, floor_item, j);
+  for (size_t i = 0; i < C5_NFLOOR + 1; i++)
+    if (j->st[i]) nl_harness_die(r, 1, "%s: %s", texture, j->err[i].msg);
+  for (int f = 0; f < C5_NFLOOR; f++) {
+    const floor_fit *a = &j->fit[0][f];
+    double v[7] = { a->k0, a->k, a->aic, a->dims, (double)a->n, (double)a->d, (double)a->status };
+    memcpy(out + 7 * f, v, sizeof v);
+  }
+  memcpy(out + 7 * C5_NFLOOR, j->k0_link[0], NLINK * sizeof *out);
+  free(j);
+}
+
+void c5_floor_gather(nl_harness *r, c5_floor *F, const char *texture, double paper_aic,
+                     double cutoff, const double *const *vals, int reps)
+{
+  (void)r;
+  if (reps > MAXR) reps = MAXR;
+  floor_job *j = nl_xcalloc(1, sizeof *j);
+  for (int q = 0; q < reps; q++) {
+    const double *v = vals[q];
+    for (int f = 0; f < C5_NFLOOR; f++, v += 7)
+      j->fit[q][f] = (floor_fit){ .k0 = v[0],
+                                  .k = v[1],
+                                  .aic = v[2],
+                                  .dims = v[3],
+                                  .n = (size_t)v[4],
+                                  .d = (size_t)v[5],
+                                  .status = (nl_cheng_model_status)v[6] };
+    memcpy(j->k0_link[q], v, NLINK * sizeof *v);
+  }
+  floor_rows(F, texture, j, reps, paper_aic);
+  linkage_rows(F, texture, j, reps, cutoff);
   free(j);
 }
 

@@ -35,13 +35,16 @@ typedef struct {
 
 void c5_floor_alloc(c5_floor *F);
 void c5_floor_free(c5_floor *F);
-/* One texture (paper_aic: its thesis AIC): the headline options o (its cutoff, distance and sample)
- * refitted at every floor and clustered under every linkage, on each of
- * the reps pools (pool k fitted from seeds[k]); rows added to F. Exit 1 on
- * error. */
-void c5_floor_case(nl_harness *r, c5_floor *F, const char *texture, double paper_aic,
-                   const nl_cheng_model_options *o, nl_cheng_pool *const *pools,
-                   const unsigned long *seeds, int reps, int threads);
+/* One texture (paper_aic: its thesis AIC), in two steps for shards: the
+ * headline options o (its cutoff, distance and sample) refitted at every
+ * floor and clustered under every linkage on one replicate's pool (fitted
+ * from seed) into out[C5_FLOOR_VALS]; then the rows from every replicate's
+ * values (vals[k], k < reps), added to F. Exit 1 on error. */
+#define C5_FLOOR_VALS (C5_NFLOOR * 7 + 3)
+void c5_floor_unit(nl_harness *r, const char *texture, const nl_cheng_model_options *o,
+                   nl_cheng_pool *pool, unsigned long seed, int threads, double *out);
+void c5_floor_gather(nl_harness *r, c5_floor *F, const char *texture, double paper_aic,
+                     double cutoff, const double *const *vals, int reps);
 /* Writes floor.tsv and linkage.tsv. */
 void c5_floor_write(nl_harness *r, const c5_floor *F);
 /* Their tables and prose in the report. */

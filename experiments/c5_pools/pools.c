@@ -293,6 +293,20 @@ void c5_pools_write(nl_harness *r, const c5_pools *T)
   nl_harness_write_table(r, T->fit, "fit.tsv");
 }
 
+static const char *const pools_keys[7] = { "gmm", "path", "curve", "runs", "assess", "fit", "orig" };
+
+void c5_pools_put(nl_harness *r, const c5_pools *T)
+{
+  const nl_table *t[7] = { T->gmm, T->path, T->curve, T->runs, T->assess, T->fit, T->orig };
+  for (int i = 0; i < 7; i++) nl_harness_unit_put_table(r, pools_keys[i], t[i]);
+}
+
+void c5_pools_get(nl_harness *r, long u, c5_pools *T)
+{
+  nl_table *t[7] = { T->gmm, T->path, T->curve, T->runs, T->assess, T->fit, T->orig };
+  for (int i = 0; i < 7; i++) nl_harness_unit_get_rows(r, u, pools_keys[i], t[i]);
+}
+
 void c5_pools_free(c5_pools *T)
 {
   nl_table_free(T->gmm);

@@ -21,6 +21,10 @@ void c5_pools_alloc(c5_pools *T);
  * pool_runs.tsv, assess.tsv, fit.tsv) and marks their timing columns "ignore". */
 void c5_pools_write(nl_harness *r, const c5_pools *T);
 void c5_pools_free(c5_pools *T);
+/* The seven tables' rows into the current unit (nl_harness_unit_put_table),
+ * and back: appended to T from unit u. */
+void c5_pools_put(nl_harness *r, const c5_pools *T);
+void c5_pools_get(nl_harness *r, long u, c5_pools *T);
 
 /* One texture at one low/high split: the original and its pool, a gmm and
  * path row per cutoff rule (the thesis's cutoff; the one matching its K0)

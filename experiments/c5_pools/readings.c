@@ -358,112 +358,163 @@ static void rows(c5_readings *R, const acc *A, const nl_study_cheng_thesis_gmm *
         }
 }
 
-/* The original optimisation of every replicate: independent items (each from
- * its replicate's seed, into its own slot). */
-typedef struct {
-  const nl_cheng_config *c;
-  const nl_cheng_pattern *pat;
-  unsigned long base;
-  nl_study_cheng_repro *rp;
-  nl_status *st;
-  nl_error *err;
-} orig_job;
+/* A fit's values in the unit store: the fields of fit_out, then its path's
+ * length (-1: no path), K, AIC and BIC per step under its own key. */
+#define FIT_VALS 25
 
-static void orig_item(void *ctx, size_t k, int t)
+static void fit_pack(const fit_out *f, double *v)
 {
-  (void)t;
-  orig_job *j = ctx;
-  j->st[k] = nl_study_cheng_repro_original(j->c, j->pat, nl_seed_replicate(j->base, (long)k),
-                                           &j->rp[k], &j->err[k]);
+  double w[15] = { f->cutoff, f->acut, f->k0, f->k, f->aic, f->sec, (double)f->n_in,
+                   (double)f->n_cl, (double)f->d, (double)f->status, (double)f->capped,
+                   (double)f->drawn, f->path ? (double)f->npath : -1.0, 0, 0 };
+  memcpy(v, w, 13 * sizeof *v);
+  memcpy(v + 13, f->rep, 10 * sizeof *v);
+  v[23] = v[24] = 0;
 }
 
-void c5_readings_case(const nl_study_cheng *s, c5_readings *R, c5_pools *T,
-                      const nl_study_cheng_thesis_gmm *th, const nl_cheng_pool_options *po,
-                      const nl_cheng_model_options *mo, const c5_readings_options *ro, int nseeds,
-                      int full)
+static void fit_unpack(nl_harness *r, long u, const char *pkey, const double *v, fit_out *f)
+{
+  *f = (fit_out){ .cutoff = v[0],
+                  .acut = v[1],
+                  .k0 = v[2],
+                  .k = v[3],
+                  .aic = v[4],
+                  .sec = v[5],
+                  .n_in = (size_t)v[6],
+                  .n_cl = (size_t)v[7],
+                  .d = (size_t)v[8],
+                  .status = (nl_cheng_model_status)v[9],
+                  .capped = (int)v[10],
+                  .drawn = (int)v[11] };
+  memcpy(f->rep, v + 13, 10 * sizeof *v);
+  if (v[12] < 0) return;
+  size_t n;
+  const double *p = nl_harness_unit_get(r, u, pkey, &n);
+  f->npath = n / 3;
+  f->path = nl_xmalloc((f->npath ? f->npath : 1) * sizeof *f->path);
+  for (size_t i = 0; i < f->npath; i++)
+    f->path[i] = (nl_gmm_step){ .k = (size_t)p[3 * i], .aic = p[3 * i + 1], .bic = p[3 * i + 2] };
+}
+
+void c5_readings_unit(const nl_study_cheng *s, const nl_study_cheng_thesis_gmm *th,
+                      const nl_cheng_pool_options *po, const nl_cheng_model_options *mm,
+                      const c5_readings_options *ro, int nseeds, int full, int k,
+                      const nl_cheng_pattern *pat, const nl_cheng_config *c)
 {
   nl_harness *r = s->r;
-  acc *A = nl_xcalloc(NRD, sizeof *A);
-  nl_cheng_pattern *pat = nl_study_cheng_pattern(s, th->pattern);
-  nl_cheng_config c = s->c;
-  c.con = th->con;
+  unsigned long seed = nl_seed_replicate(nl_harness_seed(r), k);
   nl_cheng_pool_options pl = *po;
   pl.keep = po->keep * ro->stride; /* N x stride tail states per run */
-  nl_cheng_model_options mm = *mo; /* every fit of this texture shares one memo of EM fits */
-  mm.gmm.memo = nl_gmm_memo_alloc();
-  mm.gmm.workspace = nl_gmm_workspace_alloc(); /* and one workspace of their arrays */
-  int reps = ro->reps, ng = 0;
-  nl_study_cheng_repro rp[MAXREP];
-  nl_cheng_pool *pools[MAXREP][2];
-  nl_status st[MAXREP];
-  nl_error err[MAXREP];
-  orig_job oj = { &c, pat, nl_harness_seed(r), rp, st, err };
-  nl_parallel_for((size_t)reps, po->threads, orig_item, &oj);
-  for (int k = 0; k < reps; k++) { /* pools: their runs are the items */
-    if (st[k] || nl_study_cheng_repro_pool(&rp[k], &c, pat, &pl,
-                                           nl_seed_replicate(nl_harness_seed(r), k), &err[k]))
-      nl_harness_die(r, 1, "%s: %s", th->texture, err[k].msg);
-    pools[k][0] = nl_cheng_pool_thin(rp[k].pool, po->keep, 1);
-    pools[k][1] = nl_cheng_pool_thin(rp[k].pool, po->keep, ro->stride);
-    for (int p = 0; p < 2; p++) ess_row(R->ess, th->texture, k, p, ro->stride, pools[k][p]);
-  }
+  nl_study_cheng_repro rp;
+  nl_error err;
+  /* the original, then the pool (its runs are the items) */
+  if (nl_study_cheng_repro_original(c, pat, seed, &rp, &err) ||
+      nl_study_cheng_repro_pool(&rp, c, pat, &pl, seed, &err))
+    nl_harness_die(r, 1, "%s: %s", th->texture, err.msg);
+  nl_cheng_pool *pools[2] = { nl_cheng_pool_thin(rp.pool, po->keep, 1),
+                              nl_cheng_pool_thin(rp.pool, po->keep, ro->stride) };
+  nl_table *ess = nl_table_alloc(sizeof ess_cols / sizeof *ess_cols, ess_cols);
+  for (int p = 0; p < 2; p++) ess_row(ess, th->texture, k, p, ro->stride, pools[p]);
+  nl_harness_unit_put_table(r, "ess", ess);
+  nl_table_free(ess);
   { /* the headline's settings the thesis leaves open: floor and linkage (floor.h) */
-    nl_cheng_model_options ho = mm;
-    ho.samples = ho.cluster_samples = mo->samples;
+    nl_cheng_model_options ho = *mm;
+    ho.samples = ho.cluster_samples = mm->samples;
     ho.cluster_angles = 1;
     ho.cutoff = th->cutoff;
-    nl_cheng_pool *succ[MAXREP];
-    unsigned long seeds[MAXREP];
-    for (int k = 0; k < reps; k++) {
-      succ[k] = pools[k][0];
-      seeds[k] = nl_seed_replicate(nl_harness_seed(r), k);
-    }
-    c5_floor_case(r, &R->floor, th->texture, th->aic, &ho, succ, seeds, reps, po->threads);
+    double v[C5_FLOOR_VALS];
+    c5_floor_unit(r, th->texture, &ho, pools[0], seed, po->threads, v);
+    nl_harness_unit_put(r, "floor", v, C5_FLOOR_VALS);
   }
-  if (T) { /* the older tables: replicate 0, successive states (the default pool) */
-    nl_study_cheng_repro r0 = rp[0];
-    r0.pool = pools[0][0];
-    c5_pool_case_with(s, T, th, po, &mm, nseeds, full, &r0);
+  if (k == 0) { /* the older tables: replicate 0, successive states (the default pool) */
+    c5_pools T;
+    c5_pools_alloc(&T);
+    nl_study_cheng_repro r0 = rp;
+    r0.pool = pools[0];
+    c5_pool_case_with(s, &T, th, po, mm, nseeds, full, &r0);
+    c5_pools_put(r, &T);
+    c5_pools_free(&T);
   }
-  /* Every (replicate, sample rule, pool rule) group is an item; the costly
-   * all-rows groups first so the two threads end together. Rows are added
-   * in the serial order afterwards. */
-  repro_ctx x = { r, &rp[0], &c, pat, ro->draws };
-  group *gs = nl_xcalloc((size_t)reps * 4, sizeof *gs), *order[MAXREP * 4];
+  /* Every (sample rule, pool rule) group is an item; the costly all-rows
+   * groups first so the threads end together. */
+  repro_ctx x = { r, &rp, c, pat, ro->draws };
+  group gs[4], *order[4];
+  int ng = 0;
   for (int n = 1; n >= 0; n--)
-    for (int k = 0; k < reps; k++)
-      for (int p = 0; p < 2 && (n == 0 || k < ro->all_reps); p++) {
-        group *g = &gs[(k * 2 + n) * 2 + p];
-        *g = (group){ .pool = pools[k][p],
-                      .th = th,
-                      .mo = &mm,
-                      .seed = nl_seed_replicate(nl_harness_seed(r), k),
-                      .n = n,
-                      .x = k == 0 ? &x : NULL };
-        order[ng++] = g;
-      }
+    for (int p = 0; p < 2 && (n == 0 || k < ro->all_reps); p++) {
+      group *g = &gs[n * 2 + p];
+      *g = (group){ .pool = pools[p],
+                    .th = th,
+                    .mo = mm,
+                    .seed = seed,
+                    .n = n,
+                    .x = k == 0 ? &x : NULL };
+      order[ng++] = g;
+    }
   nl_parallel_for((size_t)ng, po->threads, group_item, order);
+  for (int i = 0; i < ng; i++) {
+    group *g = order[i];
+    if (g->st) nl_harness_die(r, 1, "%s", g->err.msg);
+    int p = (int)(g - gs) % 2;
+    double v[3 * FIT_VALS];
+    char key[32];
+    for (int f = 0; f < 3; f++) {
+      fit_pack(&g->f[f], v + f * FIT_VALS);
+      if (g->f[f].path) {
+        double *pv = nl_xmalloc((3 * g->f[f].npath + 1) * sizeof *pv);
+        for (size_t q = 0; q < g->f[f].npath; q++) {
+          pv[3 * q] = (double)g->f[f].path[q].k;
+          pv[3 * q + 1] = g->f[f].path[q].aic;
+          pv[3 * q + 2] = g->f[f].path[q].bic;
+        }
+        snprintf(key, sizeof key, "path%d%d%d", g->n, p, f);
+        nl_harness_unit_put(r, key, pv, 3 * g->f[f].npath);
+        free(pv);
+      }
+      free(g->f[f].path);
+    }
+    snprintf(key, sizeof key, "group%d%d", g->n, p);
+    nl_harness_unit_put(r, key, v, 3 * FIT_VALS);
+  }
+  nl_cheng_pool_free(pools[0]);
+  nl_cheng_pool_free(pools[1]);
+  nl_study_cheng_repro_clear(&rp);
+}
+
+void c5_readings_gather(const nl_study_cheng *s, c5_readings *R, c5_pools *T,
+                        const nl_study_cheng_thesis_gmm *th, const c5_readings_options *ro, long u0)
+{
+  nl_harness *r = s->r;
+  int reps = ro->reps;
+  acc *A = nl_xcalloc(NRD, sizeof *A);
+  const double *fl[MAXREP];
+  for (int k = 0; k < reps; k++) {
+    nl_harness_unit_get_rows(r, u0 + k, "ess", R->ess);
+    fl[k] = nl_harness_unit_get(r, u0 + k, "floor", NULL);
+  }
+  c5_floor_gather(r, &R->floor, th->texture, th->aic, th->cutoff, fl, reps);
+  if (T) {
+    c5_pools_get(r, u0, T);
+    nl_harness_unit_notes(r, u0);
+  }
   for (int k = 0; k < reps; k++)
     for (int n = 0; n < 1 + (k < ro->all_reps); n++)
       for (int p = 0; p < 2; p++) {
-        group *g = &gs[(k * 2 + n) * 2 + p];
-        if (g->st) nl_harness_die(r, 1, "%s", g->err.msg);
+        char key[32], pk[3][32];
+        snprintf(key, sizeof key, "group%d%d", n, p);
+        const double *v = nl_harness_unit_get(r, u0 + k, key, NULL);
+        fit_out f[3];
+        for (int q = 0; q < 3; q++) {
+          snprintf(pk[q], sizeof pk[q], "path%d%d%d", n, p, q);
+          fit_unpack(r, u0 + k, pk[q], v + q * FIT_VALS, &f[q]);
+        }
         for (int d = 0; d < 2; d++)
-          fit_rows(R, &A[rd_index(0, n, d, p)], &g->f[d], g->f[d].cutoff, th->texture, 0, n, d, p);
-        fit_rows(R, &A[rd_index(1, n, 0, p)], &g->f[2], g->f[2].cutoff, th->texture, 1, n, 0, p);
-        fit_rows(R, &A[rd_index(1, n, 1, p)], &g->f[2], g->f[2].acut, th->texture, 1, n, 1, p);
-        for (int v = 0; v < 3; v++) free(g->f[v].path);
+          fit_rows(R, &A[rd_index(0, n, d, p)], &f[d], f[d].cutoff, th->texture, 0, n, d, p);
+        fit_rows(R, &A[rd_index(1, n, 0, p)], &f[2], f[2].cutoff, th->texture, 1, n, 0, p);
+        fit_rows(R, &A[rd_index(1, n, 1, p)], &f[2], f[2].acut, th->texture, 1, n, 1, p);
+        for (int q = 0; q < 3; q++) free(f[q].path);
       }
-  nl_gmm_memo_free(mm.gmm.memo);   /* its models first: their arrays go back to the workspace */
-  nl_gmm_workspace_free(mm.gmm.workspace);
-  for (int k = 0; k < reps; k++) {
-    nl_cheng_pool_free(pools[k][0]);
-    nl_cheng_pool_free(pools[k][1]);
-    nl_study_cheng_repro_clear(&rp[k]);
-  }
-  free(gs);
   rows(R, A, th, ro->stride);
-  nl_cheng_pattern_free(pat);
   free(A);
 }
 

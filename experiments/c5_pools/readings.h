@@ -63,14 +63,21 @@ void c5_readings_params(nl_harness *r, c5_readings_options *ro);
 
 void c5_readings_alloc(c5_readings *R);
 void c5_readings_free(c5_readings *R);
-/* One texture: for each replicate, the original, a pool with N x stride tail
- * states per run, its successive and spaced pools, their ESS, and every
- * reading's model. Replicate 0's successive pool also feeds C5's older
- * tables (T; gmm.tsv ... over nseeds fit seeds, as c5_pool_case). */
-void c5_readings_case(const nl_study_cheng *s, c5_readings *R, c5_pools *T,
-                      const nl_study_cheng_thesis_gmm *th, const nl_cheng_pool_options *po,
-                      const nl_cheng_model_options *mo, const c5_readings_options *ro, int nseeds,
-                      int full);
+/* One texture in units (shards, nl_harness.h): c5_readings_unit computes
+ * replicate k - the original, a pool with N x stride tail states per run,
+ * its successive and spaced pools, their ESS, the floor and linkage fits
+ * and every reading's model; on replicate 0 also C5's older tables
+ * (c5_pool_case_with over nseeds fit seeds, on the successive pool) - from
+ * nl_seed_replicate(seed, k) alone, and stores them in the current unit;
+ * mm's memo (shared by the texture's units in one process) changes no
+ * value. c5_readings_gather then adds the rows of the texture's units u0 ..
+ * u0 + reps - 1 to R (and replicate 0's older tables to T), in replicate order. */
+void c5_readings_unit(const nl_study_cheng *s, const nl_study_cheng_thesis_gmm *th,
+                      const nl_cheng_pool_options *po, const nl_cheng_model_options *mm,
+                      const c5_readings_options *ro, int nseeds, int full, int k,
+                      const nl_cheng_pattern *pat, const nl_cheng_config *c);
+void c5_readings_gather(const nl_study_cheng *s, c5_readings *R, c5_pools *T,
+                        const nl_study_cheng_thesis_gmm *th, const c5_readings_options *ro, long u0);
 /* Marks the headline and the best match (rules above) in readings.tsv and
  * aic_readings.tsv, writes them with ess.tsv, reproduce.tsv, floor.tsv and
  * linkage.tsv, and returns the best match's reading id (static storage).

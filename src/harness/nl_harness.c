@@ -33,6 +33,8 @@
 #include <time.h>
 #include <unistd.h>
 
+#define SHARD_DIR ".shards"   /* the shard files' folder in OUT without --shards */
+
 struct nl_harness {
   const char *name, *title;
   char *out;
@@ -78,6 +80,15 @@ struct nl_harness {
   char **time_file, **time_col;
   size_t ntime;
   nl_table *times;
+  /* shards (nl_harness_units): --shard K/N (shard_n 0: none), --merge; the
+   * units' stored values, the unit being computed (-1: none) */
+  int shard_k, shard_n, merge, units_query;
+  char *shard_dir;        /* --shards, default OUT/.shards */
+  long nunits;            /* -1 until nl_harness_units */
+  double shards_cpu, shards_rss;   /* --merge: the shards' CPU seconds (sum) and peak RSS MB (max) */
+  struct unit_entry *ue;
+  size_t nue, cue;
+  long unit_cur;
 };
 
 /* The compiler by name and version: gcc's __VERSION__ is the bare number
@@ -104,6 +115,12 @@ static void usage(const char *name, const char *title)
          "  --no-images   tables, manifest and report text only, no image files (for\n"
          "                sweeps and reruns that compare tables; manifest: images no)\n"
          "  --set K=V     set an experiment parameter (listed below)\n"
+         "  --shard K/N   compute only the units u with u mod N = K - 1 into\n"
+         "                DIR/.shards/K-of-N.tsv (experiments that declare units)\n"
+         "  --merge       read DIR/.shards/*-of-N.tsv (all N) and write the run\n"
+         "                exactly as an unsharded run writes it\n"
+         "  --shards D    the shard files' folder (default DIR/.shards)\n"
+         "  --units       print one line a unit, its relative cost, and exit\n"
          "  --params      list the parameters as TSV (name, default, min, max, meaning)\n\n"
          "Nothing in the output folder changes until every option and parameter\n"
          "is accepted; a folder with a manifest.tsv is a finished run.\n",
@@ -150,8 +167,11 @@ void nl_harness_die(nl_harness *r, int code, const char *fmt, ...)
   exit(code);
 }
 
+static int unit_note(nl_harness *r, const char *key, const char *value);
+
 static void note(nl_harness *r, const char *key, const char *value)
 {
+  if (unit_note(r, key, value)) return;   /* inside a unit: stored with its values */
   nl_table_append(r->manifest, "ss", key, value);
 }
 
@@ -171,7 +191,7 @@ void nl_harness_options_free(nl_harness_options *o)
 {
   if (!o) return;
   for (int k = 0; k < o->nset; k++) { free(o->set_key[k]); free(o->set_val[k]); }
-  free(o->set_key); free(o->set_val); free(o->out);
+  free(o->set_key); free(o->set_val); free(o->out); free(o->shard_dir);
   memset(o, 0, sizeof *o);
 }
 
@@ -180,7 +200,8 @@ nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_erro
   /* GNU style through the tools' parser: --seed 3, --seed=3, unique prefixes. */
   static const nl_opt_spec spec[] = {{"help", 'h', 0}, {"params", 0, 0}, {"quick", 0, 0}, {"out", 0, 1},
                                      {"seed", 0, 1}, {"seeds", 0, 1}, {"set", 0, 1}, {"threads", 0, 1},
-                                     {"no-images", 0, 0}, {0}};
+                                     {"no-images", 0, 0}, {"shard", 0, 1}, {"merge", 0, 0},
+                                     {"shards", 0, 1}, {"units", 0, 0}, {0}};
   memset(o, 0, sizeof *o);
   o->seed = 1;
   o->seeds = -1;
@@ -197,6 +218,18 @@ nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_erro
     else if (!strcmp(spec[k].name, "params")) o->params = 1;
     else if (!strcmp(spec[k].name, "quick")) o->quick = 1;
     else if (!strcmp(spec[k].name, "no-images")) o->no_images = 1;
+    else if (!strcmp(spec[k].name, "merge")) o->merge = 1;
+    else if (!strcmp(spec[k].name, "units")) o->units = 1;
+    else if (!strcmp(spec[k].name, "shards")) {
+      if (!*v) st = nl_fail(err, NL_EINVAL, "--shards: empty folder name");
+      else { free(o->shard_dir); o->shard_dir = nl_xstrdup(v); }
+    }
+    else if (!strcmp(spec[k].name, "shard")) {
+      int kk, nn, used = 0;
+      if (sscanf(v, "%d/%d%n", &kk, &nn, &used) != 2 || v[used] || nn < 1 || nn > 10000 || kk < 1 || kk > nn)
+        st = nl_fail(err, NL_EINVAL, "--shard: '%s' is not K/N with 1 <= K <= N <= 10000", v);
+      else { o->shard_k = kk; o->shard_n = nn; }
+    }
     else if (!strcmp(spec[k].name, "out")) {
       if (!*v) st = nl_fail(err, NL_EINVAL, "--out: empty folder name");
       else { free(o->out); o->out = nl_xstrdup(v); }
@@ -219,6 +252,7 @@ nl_status nl_harness_parse(nl_harness_options *o, int argc, char **argv, nl_erro
     }
   }
   nl_opt_end(&p);
+  if (!st && o->merge && o->shard_n) st = nl_fail(err, NL_EINVAL, "--merge: not with --shard (merge after every shard ran)");
   if (st) nl_harness_options_free(o);
   return st;
 }
@@ -309,6 +343,13 @@ nl_harness *nl_harness_begin(const char *name, const char *title, int argc, char
   r->set_key = o.set_key;
   r->set_val = o.set_val;
   r->set_used = nl_xcalloc((size_t)o.nset + 1, sizeof *r->set_used);
+  r->shard_k = o.shard_k;
+  r->shard_n = o.shard_n;
+  r->merge = o.merge;
+  r->shard_dir = o.shard_dir ? o.shard_dir : nl_path_join(r->out, SHARD_DIR);
+  r->units_query = o.units;
+  r->nunits = -1;
+  r->unit_cur = -1;
   /* The output folder is not touched here: see prepare(). */
   time_t now = time(NULL);
   strftime(r->started, sizeof r->started, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
@@ -443,10 +484,15 @@ static void outputs_settle(nl_harness *r)
  * the previous run's manifest removed (a folder with a manifest is a
  * finished run; this one is not, yet). Called by every function that writes
  * into the folder or hands out a path in it. */
+static void units_refuse(nl_harness *r);
+static void units_clear(nl_harness *r);
+static void shards_remove(nl_harness *r);
+
 static void prepare(nl_harness *r)
 {
   if (r->prepared) return;
   if (!r->params_checked) nl_harness_params_done(r);
+  units_refuse(r);
   nl_error err;
   if (nl_mkdir_p(r->out, &err)) nl_harness_die(r, 1, "%s", err.msg);
   previous_keep(r);
@@ -1257,6 +1303,12 @@ static void run_times_write(nl_harness *r)
   nl_table_append(t, "ss", "cpu_seconds", buf);
   snprintf(buf, sizeof buf, "%.1f", ru.ru_maxrss / 1024.0);
   nl_table_append(t, "ss", "peak_rss_mb", buf);
+  if (r->merge) {   /* the shards this run merged: their CPU (sum) and largest peak */
+    snprintf(buf, sizeof buf, "%.3f", r->shards_cpu);
+    nl_table_append(t, "ss", "shards_cpu_seconds", buf);
+    snprintf(buf, sizeof buf, "%.1f", r->shards_rss);
+    nl_table_append(t, "ss", "shards_peak_rss_mb", buf);
+  }
   char *p = nl_path_join(r->out, "run.tsv");
   nl_error err;
   nl_status st = nl_table_write(t, p, &err);
@@ -1298,6 +1350,9 @@ int nl_harness_end(nl_harness *r)
   if (unlink(pending) && errno != ENOENT)
     nl_harness_die(r, 1, "%s: cannot remove: %s", pending, strerror(errno));
   free(pending);
+  shards_remove(r);
+  units_clear(r);
+  free(r->shard_dir);
   for (size_t i = 0; i < r->noutputs; i++) free(r->outputs[i]);
   for (size_t i = 0; i < r->nfigures; i++) free(r->figures[i]);
   for (size_t i = 0; i < r->nprevious; i++) free(r->previous[i]);
@@ -1335,4 +1390,387 @@ char **nl_harness_tables(const char *dir, size_t *n, nl_error *err)
   closedir(d);
   if (*n) qsort(names, *n, sizeof *names, by_name);
   return names;
+}
+
+/* ---- shards: the units' stored values (nl_harness.h) -------------------- */
+
+struct unit_entry {
+  long u;
+  char kind;        /* 'v' values, 't' table rows, 'n' a manifest note */
+  char *key;
+  size_t n, ncols;  /* values: count; table: rows and columns */
+  double *v;        /* values; table: cells, row-major (NaN in text cells) */
+  char **text;      /* table: ncols names then n * ncols cells (NULL: numeric); note: its value */
+};
+
+
+static struct unit_entry *unit_add(nl_harness *r, long u, char kind, const char *key)
+{
+  if (r->nue == r->cue) {
+    r->cue = r->cue ? 2 * r->cue : 64;
+    r->ue = nl_xrealloc(r->ue, r->cue * sizeof *r->ue);
+  }
+  struct unit_entry *e = &r->ue[r->nue++];
+  memset(e, 0, sizeof *e);
+  e->u = u;
+  e->kind = kind;
+  e->key = nl_xstrdup(key);
+  return e;
+}
+
+static void units_clear(nl_harness *r)
+{
+  for (size_t i = 0; i < r->nue; i++) {
+    struct unit_entry *e = &r->ue[i];
+    size_t nt = e->kind == 't' ? e->ncols + e->n * e->ncols : e->kind == 'n' ? 1 : 0;
+    for (size_t k = 0; k < nt; k++) free(e->text[k]);
+    free(e->text); free(e->v); free(e->key);
+  }
+  free(r->ue);
+  r->ue = NULL;
+  r->nue = r->cue = 0;
+}
+
+/* A writer ran: with --shard or --merge the experiment must have declared
+ * its units, and a shard writes nothing but its shard file. */
+static void units_refuse(nl_harness *r)
+{
+  const char *opt = r->merge ? "--merge" : r->shard_n ? "--shard" : "--units";
+  if (!r->merge && !r->shard_n && !r->units_query) return;
+  if (r->nunits < 0)
+    nl_harness_die(r, 2, "%s: %s declares no units to shard; run it whole", opt, r->name);
+  if (r->shard_n) nl_harness_die(r, 1, "--shard: a write before nl_harness_units_done (a bug)");
+}
+
+static int unit_note(nl_harness *r, const char *key, const char *value)
+{
+  if (r->unit_cur < 0) return 0;
+  struct unit_entry *e = unit_add(r, r->unit_cur, 'n', key);
+  e->text = nl_xmalloc(sizeof *e->text);
+  e->text[0] = nl_xstrdup(value);
+  return 1;
+}
+
+long nl_harness_units_weighted(nl_harness *r, long n, const double *cost)
+{
+  if (!r->params_checked) nl_harness_params_done(r);
+  if (n < 0 || r->nunits >= 0) nl_harness_die(r, 1, "nl_harness_units: called twice or with n < 0 (a bug)");
+  r->nunits = n;
+  if (r->units_query) {   /* --units: one line a unit, its cost, for a scheduler; nothing run or written */
+    for (long u = 0; u < n; u++) printf("%g\n", cost ? cost[u] : 1.0);
+    exit(0);
+  }
+  return n;
+}
+
+long nl_harness_units(nl_harness *r, long n) { return nl_harness_units_weighted(r, n, NULL); }
+
+int nl_harness_shard_mode(const nl_harness *r) { return r->merge ? 2 : r->shard_n ? 1 : 0; }
+
+int nl_harness_unit_mine(const nl_harness *r, long u)
+{
+  if (r->merge) return 0;
+  if (!r->shard_n) return 1;
+  return u % r->shard_n == r->shard_k - 1;
+}
+
+void nl_harness_unit_begin(nl_harness *r, long u)
+{
+  if (r->nunits < 0 || u < 0 || u >= r->nunits || r->unit_cur >= 0 || !nl_harness_unit_mine(r, u))
+    nl_harness_die(r, 1, "nl_harness_unit_begin(%ld): not a unit of this run (a bug)", u);
+  r->unit_cur = u;
+}
+
+void nl_harness_unit_end(nl_harness *r) { r->unit_cur = -1; }
+
+void nl_harness_unit_put(nl_harness *r, const char *key, const double *v, size_t n)
+{
+  if (r->unit_cur < 0) nl_harness_die(r, 1, "nl_harness_unit_put(%s): outside a unit (a bug)", key);
+  struct unit_entry *e = unit_add(r, r->unit_cur, 'v', key);
+  e->n = n;
+  e->v = nl_xmalloc((n ? n : 1) * sizeof *e->v);
+  if (n) memcpy(e->v, v, n * sizeof *v);
+}
+
+void nl_harness_unit_put_table(nl_harness *r, const char *key, const nl_table *t)
+{
+  if (r->unit_cur < 0) nl_harness_die(r, 1, "nl_harness_unit_put_table(%s): outside a unit (a bug)", key);
+  struct unit_entry *e = unit_add(r, r->unit_cur, 't', key);
+  e->n = t->nrows;
+  e->ncols = t->ncols;
+  e->v = nl_xmalloc((t->nrows * t->ncols + 1) * sizeof *e->v);
+  e->text = nl_xcalloc(t->ncols + t->nrows * t->ncols + 1, sizeof *e->text);
+  for (size_t c = 0; c < t->ncols; c++) e->text[c] = nl_xstrdup(t->names[c]);
+  for (size_t i = 0; i < t->nrows * t->ncols; i++) {
+    e->v[i] = t->num[i];
+    if (t->text[i]) e->text[t->ncols + i] = nl_xstrdup(t->text[i]);
+  }
+}
+
+static const struct unit_entry *unit_find(nl_harness *r, long u, char kind, const char *key)
+{
+  for (size_t i = 0; i < r->nue; i++)
+    if (r->ue[i].u == u && r->ue[i].kind == kind && !strcmp(r->ue[i].key, key)) return &r->ue[i];
+  nl_harness_die(r, 1, "unit %ld stored no %s '%s' (a bug in the experiment)", u,
+                 kind == 'v' ? "values" : "table", key);
+}
+
+const double *nl_harness_unit_get(nl_harness *r, long u, const char *key, size_t *n)
+{
+  const struct unit_entry *e = unit_find(r, u, 'v', key);
+  if (n) *n = e->n;
+  return e->v;
+}
+
+void nl_harness_unit_get_rows(nl_harness *r, long u, const char *key, nl_table *t)
+{
+  const struct unit_entry *e = unit_find(r, u, 't', key);
+  if (e->ncols != t->ncols)
+    nl_harness_die(r, 1, "unit %ld table '%s': %zu columns, not %zu (a bug)", u, key, e->ncols, t->ncols);
+  for (size_t c = 0; c < t->ncols; c++)
+    if (strcmp(e->text[c], t->names[c]))
+      nl_harness_die(r, 1, "unit %ld table '%s': column %s, not %s (a bug)", u, key, e->text[c], t->names[c]);
+  for (size_t i = 0; i < e->n; i++) {
+    size_t q = nl_table_append_empty(t);
+    for (size_t c = 0; c < t->ncols; c++) {
+      const char *s = e->text[e->ncols + i * e->ncols + c];
+      if (s) nl_table_set_text(t, q, t->names[c], s);
+      else t->num[q * t->ncols + c] = e->v[i * e->ncols + c];
+    }
+  }
+}
+
+void nl_harness_unit_notes(nl_harness *r, long u)
+{
+  for (size_t i = 0; i < r->nue; i++)
+    if (r->ue[i].u == u && r->ue[i].kind == 'n') nl_table_append(r->manifest, "ss", r->ue[i].key, r->ue[i].text[0]);
+}
+
+/* Text in a shard file: tab, newline and backslash escaped. */
+static void put_text(FILE *fp, const char *s)
+{
+  for (; *s; s++) {
+    if (*s == '\t') fputs("\\t", fp);
+    else if (*s == '\n') fputs("\\n", fp);
+    else if (*s == '\\') fputs("\\\\", fp);
+    else fputc(*s, fp);
+  }
+}
+
+static char *get_text(const char *s)
+{
+  char *o = nl_xmalloc(strlen(s) + 1), *p = o;
+  for (; *s; s++) {
+    if (*s == '\\' && s[1]) {
+      s++;
+      *p++ = *s == 't' ? '\t' : *s == 'n' ? '\n' : *s;
+    } else *p++ = *s;
+  }
+  *p = '\0';
+  return o;
+}
+
+/* What every shard of one run shares: the experiment, its seeds, scale,
+ * parameters and unit count; a shard made otherwise is not merged. */
+static char *shard_settings(const nl_harness *r)
+{
+  size_t cap = 256, len = 0;
+  char *s = nl_xmalloc(cap);
+  const char *commit = getenv("NL_COMMIT");   /* a shard of other code is another run */
+  len = (size_t)snprintf(s, cap, "%s; units %ld; commit %s", r->name, r->nunits,
+                         commit && *commit ? commit : "unknown");
+  for (size_t i = 0; i < r->manifest->nrows; i++) {
+    const char *k = r->manifest->text[i * 2], *v = r->manifest->text[i * 2 + 1];
+    if (strcmp(k, "seed") && strcmp(k, "seeds") && strcmp(k, "quick") && strcmp(k, "param")) continue;
+    size_t need = len + strlen(k) + strlen(v) + 4;
+    if (need > cap) { cap = 2 * need; s = nl_xrealloc(s, cap); }
+    len += (size_t)snprintf(s + len, cap - len, "; %s %s", k, v);
+  }
+  return s;
+}
+
+static char *shard_path(const nl_harness *r, int k, int n)
+{
+  char name[64];
+  snprintf(name, sizeof name, "%d-of-%d.tsv", k, n);
+  return nl_path_join(r->shard_dir, name);
+}
+
+static void shard_write(nl_harness *r)
+{
+  nl_error err;
+  char *path = shard_path(r, r->shard_k, r->shard_n);
+  if (nl_mkdir_p(r->shard_dir, &err)) nl_harness_die(r, 1, "%s", err.msg);
+  nl_atomic_file af;
+  if (nl_atomic_open(&af, path, &err)) nl_harness_die(r, 1, "%s", err.msg);
+  char *set = shard_settings(r);
+  fprintf(af.fp, "# noiselab shard %d of %d\t", r->shard_k, r->shard_n);
+  put_text(af.fp, set);
+  fputc('\n', af.fp);
+  free(set);
+  { /* what this shard cost, for the merge's run.tsv (CPU-hours of a sharded run) */
+    struct rusage ru;
+    getrusage(RUSAGE_SELF, &ru);
+    fprintf(af.fp, "#cost\t%.3f\t%.1f\n",
+            ru.ru_utime.tv_sec + ru.ru_utime.tv_usec * 1e-6 + ru.ru_stime.tv_sec + ru.ru_stime.tv_usec * 1e-6,
+            ru.ru_maxrss / 1024.0);
+  }
+  for (size_t i = 0; i < r->nue; i++) {
+    const struct unit_entry *e = &r->ue[i];
+    fprintf(af.fp, "%ld\t%c\t", e->u, e->kind);
+    put_text(af.fp, e->key);
+    if (e->kind == 'n') {
+      fputc('\t', af.fp);
+      put_text(af.fp, e->text[0]);
+    } else if (e->kind == 'v') {
+      fprintf(af.fp, "\t%zu", e->n);
+      for (size_t k = 0; k < e->n; k++) fprintf(af.fp, "\t%a", e->v[k]);
+    } else {
+      fprintf(af.fp, "\t%zu\t%zu", e->n, e->ncols);
+      for (size_t c = 0; c < e->ncols; c++) { fputc('\t', af.fp); put_text(af.fp, e->text[c]); }
+      for (size_t k = 0; k < e->n * e->ncols; k++) {
+        const char *s = e->text[e->ncols + k];
+        fputc('\t', af.fp);
+        if (s) { fputc('=', af.fp); put_text(af.fp, s); }
+        else fprintf(af.fp, "#%a", e->v[k]);
+      }
+    }
+    fputc('\n', af.fp);
+  }
+  if (nl_atomic_commit(&af, &err)) nl_harness_die(r, 1, "%s", err.msg);
+  free(path);
+}
+
+/* Splits line (modified) at tabs into at most max fields; returns the count. */
+static size_t split_tabs(char *line, char **f, size_t max)
+{
+  size_t n = 0;
+  for (char *p = line; n < max;) {
+    f[n++] = p;
+    p = strchr(p, '\t');
+    if (!p) break;
+    *p++ = '\0';
+  }
+  return n;
+}
+
+static void shard_read(nl_harness *r, const char *path, int k, int n, const char *set)
+{
+  FILE *fp = fopen(path, "r");
+  if (!fp) nl_harness_die(r, 2, "--merge: shard %d of %d missing (%s)", k, n, path);
+  char *line = NULL, **f = NULL;
+  size_t cap = 0, fcap = 0, lineno = 0;
+  ssize_t len;
+  while ((len = getline(&line, &cap, fp)) > 0) {
+    lineno++;
+    if (line[len - 1] == '\n') line[--len] = '\0';
+    size_t nf = 1;
+    for (char *p = line; *p; p++) nf += *p == '\t';
+    if (nf > fcap) { fcap = nf; f = nl_xrealloc(f, fcap * sizeof *f); }
+    nf = split_tabs(line, f, nf);
+    if (lineno == 1) {
+      char *s = nf == 2 ? get_text(f[1]) : NULL;
+      int ok = s && !strcmp(s, set);
+      free(s);
+      if (!ok) nl_harness_die(r, 2, "--merge: %s was made by another run (other settings or units)", path);
+      continue;
+    }
+    if (!strcmp(f[0], "#cost") && nf == 3) {
+      double rss = strtod(f[2], NULL);
+      r->shards_cpu += strtod(f[1], NULL);
+      if (rss > r->shards_rss) r->shards_rss = rss;
+      continue;
+    }
+    char *end;
+    long u = nf >= 3 ? strtol(f[0], &end, 10) : -1;
+    if (nf < 3 || u < 0 || u >= r->nunits || strlen(f[1]) != 1 || u % n != k - 1)
+      nl_harness_die(r, 2, "--merge: %s:%zu: not a line of this shard", path, lineno);
+    char *key = get_text(f[2]);
+    struct unit_entry *e = unit_add(r, u, f[1][0], key);
+    free(key);
+    int bad = 0;
+    if (e->kind == 'n') {
+      e->text = nl_xmalloc(sizeof *e->text);
+      e->text[0] = get_text(nf > 3 ? f[3] : "");
+    } else if (e->kind == 'v') {
+      e->n = nf > 3 ? strtoul(f[3], NULL, 10) : 0;
+      bad = nf != 4 + e->n;
+      e->v = nl_xmalloc((e->n + 1) * sizeof *e->v);
+      for (size_t q = 0; !bad && q < e->n; q++) e->v[q] = strtod(f[4 + q], NULL);
+    } else if (e->kind == 't') {
+      e->n = nf > 4 ? strtoul(f[3], NULL, 10) : 0;
+      e->ncols = nf > 4 ? strtoul(f[4], NULL, 10) : 0;
+      bad = nf != 5 + e->ncols + e->n * e->ncols;
+      e->v = nl_xmalloc((e->n * e->ncols + 1) * sizeof *e->v);
+      e->text = nl_xcalloc(e->ncols + e->n * e->ncols + 1, sizeof *e->text);
+      for (size_t c = 0; !bad && c < e->ncols; c++) e->text[c] = get_text(f[5 + c]);
+      for (size_t q = 0; !bad && q < e->n * e->ncols; q++) {
+        const char *s = f[5 + e->ncols + q];
+        if (*s == '=') { e->text[e->ncols + q] = get_text(s + 1); e->v[q] = NAN; }
+        else if (*s == '#') e->v[q] = strtod(s + 1, NULL);
+        else bad = 1;
+      }
+      if (bad) { e->n = 0; e->ncols = 0; }   /* nothing for units_clear to free past */
+    } else bad = 1;
+    if (bad) nl_harness_die(r, 2, "--merge: %s:%zu: malformed", path, lineno);
+  }
+  int rerr = ferror(fp);
+  fclose(fp);
+  free(line);
+  free(f);
+  if (rerr || lineno == 0) nl_harness_die(r, 2, "--merge: %s: unreadable or empty", path);
+}
+
+static void shards_merge(nl_harness *r)
+{
+  const char *dir = r->shard_dir;
+  DIR *d = opendir(dir);
+  if (!d) nl_harness_die(r, 2, "--merge: no shards in %s (%s)", dir, strerror(errno));
+  int n = 0, other = 0;
+  struct dirent *de;
+  while ((de = readdir(d))) {
+    int k, nn, used = 0;
+    if (sscanf(de->d_name, "%d-of-%d.tsv%n", &k, &nn, &used) == 2 && !de->d_name[used] && nn > 0) {
+      if (n && nn != n) other = nn > other ? nn : other;
+      if (!n) n = nn;
+    }
+  }
+  closedir(d);
+  if (!n) nl_harness_die(r, 2, "--merge: no shard files (K-of-N.tsv) in %s", dir);
+  if (other) nl_harness_die(r, 2, "--merge: %s holds shards of two runs (N = %d and %d)", dir, n, other);
+  char *set = shard_settings(r);
+  for (int k = 1; k <= n; k++) {
+    char *p = shard_path(r, k, n);
+    shard_read(r, p, k, n, set);
+    free(p);
+  }
+  free(set);
+}
+
+void nl_harness_units_done(nl_harness *r)
+{
+  if (r->nunits < 0) nl_harness_die(r, 1, "nl_harness_units_done before nl_harness_units (a bug)");
+  if (r->shard_n) {
+    shard_write(r);
+    if (r->line_open) fputc('\n', stderr);
+    exit(0);
+  }
+  if (r->merge) shards_merge(r);
+}
+
+/* After a merge's manifest: the shards are spent, the folder is the run's. */
+static void shards_remove(nl_harness *r)
+{
+  if (!r->merge) return;
+  const char *dir = r->shard_dir;
+  DIR *d = opendir(dir);
+  struct dirent *de;
+  while (d && (de = readdir(d))) {
+    if (!strcmp(de->d_name, ".") || !strcmp(de->d_name, "..")) continue;
+    char *p = nl_path_join(dir, de->d_name);
+    unlink(p);
+    free(p);
+  }
+  if (d) closedir(d);
+  rmdir(dir);
 }

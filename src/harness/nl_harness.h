@@ -23,6 +23,10 @@
  *   --seeds K    number of seeds for means and spreads (default 10, quick 3)
  *   --quick      small sizes for tests and CI
  *   --set K=V    an experiment parameter (repeatable), for sweeps
+ *   --shard K/N  only the units u with u mod N == K - 1 (nl_harness_units below)
+ *   --merge      the run from the shard files of all N shards
+ *   --shards DIR where the shard files are (default OUT/.shards)
+ *   --units      print each unit's relative cost, one line a unit; exit 0
  *   --params     print the parameters as TSV, a header line then one line
  *                each: name, default, min, max, meaning; exit 0
  *   --help       the usage and the parameters in readable form; exit 0
@@ -88,6 +92,10 @@ typedef struct {
   int threads;             /* 0 unless --threads N (1..NL_PARALLEL_MAX) */
   int params;              /* --params */
   int no_images;           /* --no-images */
+  int shard_k, shard_n;    /* --shard K/N; 0 0 without */
+  int merge;               /* --merge */
+  char *shard_dir;         /* --shards DIR, or NULL: OUT/.shards */
+  int units;               /* --units */
   int nset;                /* --set NAME=VALUE, in order */
   char **set_key, **set_val;
 } nl_harness_options;
@@ -475,6 +483,69 @@ nl_status nl_harness_verdict_kind_check(const char *kind, nl_error *err);
  * after fit", likewise "... after selection"; "by construction", "see
  * figure"). */
 const char *nl_harness_verdict_word(nl_harness_outcome outcome, const char *kind);
+
+/* ---- shards: the independent units of an experiment ------------------
+ *
+ * An experiment whose cost is a set of independent units (replicates,
+ * draws, cases, seeds) declares them, computes each one from its own seed
+ * (the one seed rule, from the unit's index, never from the shard it runs
+ * in), stores what its tables need of it, and builds its tables from the
+ * stored values in unit order:
+ *
+ *   long n = nl_harness_units(r, reps);                // after the parameters
+ *   for (long u = 0; u < n; u++) {
+ *     if (!nl_harness_unit_mine(r, u)) continue;
+ *     nl_harness_unit_begin(r, u);                     // notes go to the unit
+ *     ... compute replicate u from nl_seed_replicate(seed, u) ...
+ *     nl_harness_unit_put(r, "fit", v, 7);             // doubles, bit-exact
+ *     nl_harness_unit_put_table(r, "gmm", t);          // rows of a table
+ *     nl_harness_unit_end(r);
+ *   }
+ *   nl_harness_units_done(r);
+ *   for (long u = 0; u < n; u++) {
+ *     const double *v = nl_harness_unit_get(r, u, "fit", &len);
+ *     nl_harness_unit_get_rows(r, u, "gmm", gmm);       // appended
+ *     nl_harness_unit_notes(r, u);                     // its manifest notes
+ *   }
+ *
+ * Without --shard or --merge every unit is mine and the values go through
+ * the same store, so one code path makes the tables in all three modes.
+ * --shard K/N: unit u is mine when u mod N == K - 1 (round robin: the
+ * replicates of every case spread over the shards); nl_harness_units_done
+ * writes the stored values to DIR/K-of-N.tsv (DIR: --shards, default
+ * OUT/.shards; atomically; first line the run's settings and NL_COMMIT; numbers
+ * as C99 hex floats, so NaN and every bit survive) and exits 0, no table,
+ * report or manifest written. --merge: no unit is mine; nl_harness_units_done
+ * reads DIR/K-of-N.tsv for K = 1..N (N from the files found; a
+ * missing shard or one of another unit count is "NAME: --merge: shard K of N
+ * missing (PATH)", exit 2); its run.tsv adds shards_cpu_seconds (their sum)
+ * and shards_peak_rss_mb (their largest), which each shard file records,
+ * and nl_harness_end empties and removes DIR once the
+ * manifest is written: the folder is then the unsharded run's, file for
+ * file. An experiment that writes before declaring units refuses --shard
+ * and --merge (exit 2): it has nothing to shard. Getting a value no unit
+ * stored is a bug in the experiment (exit 1). --units: nl_harness_units
+ * prints one line a unit, its relative cost (1 unless declared with
+ * nl_harness_units_weighted: cost[u], measured, so that a scheduler starts
+ * the costly ones first), and exits 0; the experiment's work before it, its
+ * parameters and patterns, is all that runs. */
+long nl_harness_units(nl_harness *r, long n);
+long nl_harness_units_weighted(nl_harness *r, long n, const double *cost);
+int nl_harness_unit_mine(const nl_harness *r, long u);
+/* 0 normal run, 1 --shard, 2 --merge */
+int nl_harness_shard_mode(const nl_harness *r);
+void nl_harness_unit_begin(nl_harness *r, long u);
+void nl_harness_unit_end(nl_harness *r);
+void nl_harness_unit_put(nl_harness *r, const char *key, const double *v, size_t n);
+void nl_harness_unit_put_table(nl_harness *r, const char *key, const nl_table *t);
+void nl_harness_units_done(nl_harness *r);
+/* The values stored under key by unit u (owned by r); exit 1 when none. */
+const double *nl_harness_unit_get(nl_harness *r, long u, const char *key, size_t *n);
+/* Appends the rows stored under key by unit u to t (same columns). */
+void nl_harness_unit_get_rows(nl_harness *r, long u, const char *key, nl_table *t);
+/* Adds unit u's notes (nl_harness_note between its begin and end) to the
+ * manifest, in the order they were made. */
+void nl_harness_unit_notes(nl_harness *r, long u);
 
 /* Writes report.md, checks.tsv, verdicts.tsv (when declared) and manifest.tsv,
  * frees r; returns 0 for main(). */

@@ -41,6 +41,14 @@ NL_TEST(options_parse)
   NL_CHECK(parse(&o, &err, 5, gnu) == NL_OK && o.seed == 7 && !strcmp(o.out, "e") && o.quick);
   NL_CHECK(o.nset == 1 && !strcmp(o.set_key[0], "size") && !strcmp(o.set_val[0], "32"));
   nl_harness_options_free(&o);
+  /* shards: --shard K/N (an exact name beats the prefix of --shards), --merge, --units */
+  const char *sh[] = {"x", "--shard", "2/5", "--shards", "d/s", "--units"};
+  NL_CHECK(parse(&o, &err, 6, sh) == NL_OK && o.shard_k == 2 && o.shard_n == 5 && o.units &&
+           !strcmp(o.shard_dir, "d/s") && !o.merge);
+  nl_harness_options_free(&o);
+  const char *mg[] = {"x", "--merge"};
+  NL_CHECK(parse(&o, &err, 2, mg) == NL_OK && o.merge && o.shard_n == 0 && !o.shard_dir);
+  nl_harness_options_free(&o);
   const char *amb[] = {"x", "--see", "3"};
   NL_CHECK(parse(&o, &err, 3, amb) == NL_EINVAL && strstr(err.msg, "ambiguous"));
   const char *none[] = {"x"};
@@ -60,6 +68,10 @@ NL_TEST(option_errors_are_one_line_naming_the_option)
     {3, {"x", "--seeds", "two"}, "--seeds"},
     {3, {"x", "--set", "=1"}, "is not NAME=VALUE"},
     {3, {"x", "--set", "size"}, "is not NAME=VALUE"},
+    {3, {"x", "--shard", "3/2"}, "--shard: '3/2' is not K/N"},
+    {3, {"x", "--shard", "0/2"}, "--shard: '0/2' is not K/N"},
+    {3, {"x", "--shard", "1/2x"}, "--shard: '1/2x' is not K/N"},
+    {3, {"x", "--shards", ""}, "--shards: empty folder name"},
   };
   for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
     nl_harness_options o;
