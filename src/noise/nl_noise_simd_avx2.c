@@ -138,11 +138,14 @@ cells32(double f, int scale, const double *x, const double *y, const double *z, 
 static inline __attribute__((always_inline)) void
 hash4(const unsigned char *pp, const unsigned char *p15, block32 *B, int l0)
 {
+  /* size_t indices and p + 1 as its own pointer: no zero extensions, and
+   * A + 1 in the address (7% of the batch's instructions) */
+  const unsigned char *pp1 = pp + 1;
 #pragma GCC unroll 4
   for (int l = l0; l < l0 + 4; l++) {
-    unsigned X = (unsigned)B->ci[0][l], Y = (unsigned)B->ci[1][l], Z = (unsigned)B->ci[2][l];
+    size_t X = (size_t)B->ci[0][l], Y = (size_t)B->ci[1][l], Z = (size_t)B->ci[2][l];
     for (int c = 0; c < 2; c++) {
-      unsigned A = pp[X + (unsigned)c] + Y, AA = pp[A] + Z, AB = pp[A + 1] + Z;
+      size_t A = (c ? pp1 : pp)[X] + Y, AA = pp[A] + Z, AB = pp1[A] + Z;
       unsigned char *h = B->hb[l >> 3][c] + 2 * (l & 7);
       memcpy(h, p15 + AA, 2);
       memcpy(h + 16, p15 + AB, 2);
