@@ -345,16 +345,16 @@ static void columns3_32(const nl_noise_perm3 *P, const int *p32, unsigned xm, un
     columns3(P, p32, xm, ym, zm, fy, fz, v, w, ncol, gxo, ao);
     return;
   }
-  const unsigned char *pp = P->p;
+  const unsigned char *pp = P->p, *pp1 = pp + 1;
   unsigned char p15[512];
   perm15(pp, p15);
   vd vfy = SPLAT(fy), vfz = SPLAT(fz), vv = SPLAT(v), vw = SPLAT(w);
   block32 B;
   for (size_t c0 = 0; c0 < ncol; c0 += 32) {
     size_t m = ncol - c0 < 32 ? ncol - c0 : 32;   /* a multiple of NL_SIMD_PAD */
-    for (size_t l = 0; l < m; l++) {   /* nl_noise.c column3's hashing */
-      unsigned X = (xm + (unsigned)(c0 + l)) & 255u, A = pp[X] + ym, AA = pp[A] + zm,
-               AB = pp[A + 1] + zm;
+    for (size_t l = 0; l < m; l++) {   /* nl_noise.c column3's hashing, as hash4 */
+      size_t X = (xm + c0 + l) & 255u, A = pp[X] + (size_t)ym, AA = pp[A] + (size_t)zm,
+             AB = pp1[A] + (size_t)zm;
       unsigned char *h = B.hb[l >> 3][0] + 2 * (l & 7);
       memcpy(h, p15 + AA, 2);
       memcpy(h + 16, p15 + AB, 2);
