@@ -369,7 +369,66 @@ static void columns3_32(const nl_noise_perm3 *P, const int *p32, unsigned xm, un
   }
 }
 
-const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3_32, points2_fold, points3,
+/* ---- batches of the 2D table noise ----------------------------------------
+ *
+ * points2_fold (nl_noise_simd_body.h) with its pairs (gx, gy)[P[a]] read
+ * by one 16-byte load per corner and lane and split into the two vectors
+ * by two unpacks, as the AVX-512 level does, where the body stores and
+ * reloads each double. The indices stay scalar work beside the vectors. */
+static inline __attribute__((always_inline)) vd pairs4(const double *const q[4], vd *gy)
+{
+  __m256d A = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(q[0])), _mm_loadu_pd(q[2]), 1);
+  __m256d B = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(q[1])), _mm_loadu_pd(q[3]), 1);
+  *gy = (vd)_mm256_unpackhi_pd(A, B);
+  return (vd)_mm256_unpacklo_pd(A, B);
+}
+
+static int points2_q(const nl_noise_grad2 *t, const double *x, const double *y, size_t n,
+                     double *out)
+{
+  if (!points2_foldable(t, n))
+    return points2(t, x, y, n, out);
+  int slow = 0;
+  double q2[2 * NL_Q2_MAX];
+  unsigned p2[NL_Q2_MAX + 1];
+  size_t mask = t->m - 1;
+  points2_fold_tables(t, q2, p2);
+  for (size_t k = 0; k < n; k += NL_SIMD_W) {
+    vd vx = ld(x + k), vy = ld(y + k);
+    if (!v_all(v_small(vx) & v_small(vy))) {
+      for (size_t l = 0; l < NL_SIMD_W; l++)
+        out[k + l] = nl_noise_grad2_eval(t, x[k + l], y[k + l]);
+      slow = 1;
+      continue;
+    }
+    /* nl_noise_grad2_eval: i = lfloor(x), j = lfloor(y), fy = lfrac(y, j), v = fade(fy) */
+    vd ci = v_cell(vx), cj = v_cell(vy);
+    vd fy = v_frac(vy, cj), v = v_fade(fy), fx = v_frac(vx, ci);
+    int is[4], js[4];
+    _mm_storeu_si128((__m128i *)is, _mm256_cvttpd_epi32((__m256d)ci));
+    _mm_storeu_si128((__m128i *)js, _mm256_cvttpd_epi32((__m256d)cj));
+    const double *q[4][4];   /* corners (i + di, j + dj), q = dj + 2 di */
+    for (int l = 0; l < 4; l++) {
+      const unsigned *pi = p2 + ((size_t)(unsigned)is[l] & mask);
+      size_t j = (unsigned)js[l], p0 = pi[0], p1 = pi[1];
+      q[0][l] = q2 + 2 * ((p0 + j) & mask);
+      q[1][l] = q2 + 2 * ((p0 + j + 1) & mask);
+      q[2][l] = q2 + 2 * ((p1 + j) & mask);
+      q[3][l] = q2 + 2 * ((p1 + j + 1) & mask);
+    }
+    /* column2 at i and i + 1, then blend(lfrac(x, i), ...), as points2_fold */
+    vd fy1 = fy - 1.0, y00, y01, y10, y11;
+    vd g00 = pairs4(q[0], &y00), g01 = pairs4(q[1], &y01);
+    vd g10 = pairs4(q[2], &y10), g11 = pairs4(q[3], &y11);
+    vd a00 = y00 * fy, a01 = y01 * fy1, a10 = y10 * fy, a11 = y11 * fy1;
+    vd gx0 = g00 + v * (g01 - g00), a0 = a00 + v * (a01 - a00);
+    vd gx1 = g10 + v * (g11 - g10), a1 = a10 + v * (a11 - a10);
+    st(out + k, v_blend(fx, gx0, a0, gx1, a1));
+  }
+  return slow;
+}
+
+const nl_noise_simd_kernels NL_SIMD_TABLE = {samples, columns3_32, points2_q, points3,
                                            points3_sum, points3_bounded, refused_lanes};
 
 #if defined(__clang__)
