@@ -79,26 +79,27 @@ static void samples(const double *gx, const double *a, long ifirst, double x0, d
  *
  * Perlin's hashing of a point (14 lookups of the permutation) runs in the
  * scalar integer pipes, lane by lane, interleaved with the vector
- * arithmetic of the 32 points before: on AMD Zen 4 the vector pipes are
+ * arithmetic of the block two before: on AMD Zen 4 the vector pipes are
  * full with the arithmetic, the integer ones idle, and vpgatherdd from the
  * permutation widened to int was slower (3D batch 92 Ms/s against 109 with
  * the same hashing not interleaved). The 8 corner hashes of a point are
  * kept as bytes; their gradients' components (Perlin's 16, each -1, 0 or
- * 1) are one vpshufb per component for 32 hashes, as int8, widened to
- * doubles where the arithmetic reads them (vpmovsxbd, vcvtdq2pd: exact),
- * in place of 24 double loads a point lane by lane. The arithmetic is
- * v_column3_fp's and v_blend's on these doubles, the same operations in
- * the same order. */
+ * 1) are one vpshufb per component for 32 hashes, widened to int32 and
+ * converted to doubles where the arithmetic reads them (vcvtdq2pd from
+ * memory: exact), in place of 24 double loads a point lane by lane. The
+ * arithmetic is v_column3_fp's and v_blend's on these doubles, the same
+ * operations in the same order. */
+/* nl_noise_simd_g3 as int8, for vpshufb */
 static const signed char g3b[3][16] __attribute__((aligned(16))) = {
   {1, -1, 1, -1, 1, -1, 1, -1, 0, 0, 0, 0, 1, 0, -1, 0},
   {1, 1, -1, -1, 0, 0, 0, 0, 1, -1, 1, -1, 1, -1, 1, -1},
   {0, 0, 0, 0, 1, 1, -1, -1, 1, 1, -1, -1, 0, 1, 0, -1}};
 
-/* A block of 32 points: fractions, cells (as ints) and, once hashed, the
- * corner hashes and their gradient components. hb[q][c] and g[q][c][comp]
- * hold, for the 8 points 8 q .. 8 q + 7 and column i + c, corner e's hash
- * (e = 0..3: h00, h10, h01, h11 of v_column3) or its component at byte
- * 8 e + l for point 8 q + l. */
+/* A block of 32 points: fractions, cells & 255 (as ints) and, once
+ * hashed, the corner hashes (hb, laid out by hash4) and their gradient
+ * components: g[q][c][comp] holds, for the 8 points 8 q .. 8 q + 7 and
+ * column i + c, corner e's component at 8 e + l for point 8 q + l, e =
+ * 0..3 for h00, h01, h10, h11 of v_column3. */
 typedef struct {
   double fr[3][32];
   int ci[3][32];
