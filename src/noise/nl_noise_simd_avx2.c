@@ -107,7 +107,8 @@ static const signed char g3b[3][16] __attribute__((aligned(16))) = {
  * hashed, the corner hashes (hb, laid out by hash4) and their gradient
  * components: g[q][c][comp] holds, for the 8 points 8 q .. 8 q + 7 and
  * column i + c, corner e's component at 8 e + l for point 8 q + l, e =
- * 0..3 for h00, h01, h10, h11 of v_column3. */
+ * 0..3 for h00, h01, h10, h11 of v_column3 (of the x component, e = 2, 3
+ * hold h10's less h00's and h11's less h01's: grads32n). */
 typedef struct {
   double fr[3][32];
   int ci[3][32];
@@ -176,6 +177,9 @@ static inline void grads32n(block32 *B, int nc)
       for (int comp = 0; comp < 3; comp++) {
         __m256i t = _mm256_broadcastsi128_si256(_mm_load_si128((const __m128i *)g3b[comp]));
         __m256i v = _mm256_shuffle_epi8(t, h);
+        /* x components: h10 - h00 and h11 - h01 in place of h10, h11 (exact
+         * in int8), so that column3_b's first lerps skip their subtraction */
+        if (comp == 0) v = _mm256_sub_epi8(v, _mm256_permute2x128_si256(v, v, 0x08));
         int *dst = B->g[q][c][comp];
         _mm256_store_si256((__m256i *)dst, _mm256_cvtepi8_epi32(_mm256_castsi256_si128(v)));
         _mm256_store_si256((__m256i *)(dst + 8),
@@ -200,8 +204,9 @@ static inline vd gcomp(const int row[3][32], int comp, int e, int o)
 static inline __attribute__((always_inline)) void
 column3_b(const int row[3][32], int o, vd fy, vd fz, vd v, vd w, vd *gxo, vd *ao)
 {
-  *gxo = v_lerp(w, v_lerp(v, gcomp(row, 0, 0, o), gcomp(row, 0, 2, o)),
-                v_lerp(v, gcomp(row, 0, 1, o), gcomp(row, 0, 3, o)));
+  /* v_lerp(v, g00, g10) = g00 + v * (g10 - g00), the difference stored */
+  *gxo = v_lerp(w, gcomp(row, 0, 0, o) + v * gcomp(row, 0, 2, o),
+                gcomp(row, 0, 1, o) + v * gcomp(row, 0, 3, o));
   vd fy1 = fy - 1.0, fz1 = fz - 1.0;
   vd y00 = gcomp(row, 1, 0, o) * fy + gcomp(row, 2, 0, o) * fz;
   vd y10 = gcomp(row, 1, 2, o) * fy1 + gcomp(row, 2, 2, o) * fz;
