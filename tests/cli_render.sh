@@ -37,6 +37,15 @@ awk -F'\t' -v f="$first" 'NR == 2 { d = $3 - f; exit !(d < 1e-12 && d > -1e-12) 
 # Same seed, same bytes.
 "$render" noise2 --size 16 --seed 3 -o "$out/n2.tsv"
 cmp "$out/n.tsv" "$out/n2.tsv"
+# --threads: the same bytes for 1, 2 and 3 threads (200^2 x 6 octaves is
+# above the size where the grid starts threads; turbulence too)
+for s in fbm turbulence; do
+  "$render" "$s" --size 200 --threads 1 -o "$out/$s-t1.npy" 2>/dev/null
+  for t in 2 3; do
+    "$render" "$s" --size 200 --threads "$t" -o "$out/$s-t$t.npy" 2>/dev/null
+    cmp "$out/$s-t1.npy" "$out/$s-t$t.npy"
+  done
+done
 bad() {   # expected message fragment, then arguments
   local want="$1"; shift
   local err rc=0
@@ -52,6 +61,7 @@ bad "--octaves: 31 is outside" fbm --octaves 31 -o "$out/x.png"
 bad "--gain: 'abc' is not a number" fbm --gain abc -o "$out/x.png"
 bad "/nonexistent/dir/x.png: directory /nonexistent/dir does not exist" fbm --size 8 -o /nonexistent/dir/x.png
 bad "no output file" fbm --size 8
+bad "--threads: 0 is outside [1, 64]" fbm --size 8 --threads 0 -o "$out/x.png"
 # Memory is held to what is available, not to the total: capped by the
 # tool's test hook, and at 65536 (51.5 GB) against the real figure.
 NL_MEMAVAILABLE_OVERRIDE=1e8 bad "--size 4000 needs 192 MB of memory; 100 MB is available" \

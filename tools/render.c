@@ -17,6 +17,7 @@
 #include "nl_tool.h"
 #include "basis/nl_basis.h"
 #include "table/nl_table.h"
+#include "base/nl_parallel.h"
 
 #include <limits.h>
 #include <math.h>
@@ -32,7 +33,7 @@ typedef struct {
   const nl_basis_sum *sum;   /* the chosen sum, or nl_basis_single */
   nl_basis_options bo;
   nl_basis_sum_options so;
-  long size, seed, bits;
+  long size, seed, bits, threads;
   double extent, x0, y0, z;
 } options;
 
@@ -88,6 +89,8 @@ static void usage(void)
          "  --table-size M       gradient-table size for noise2/table, 4..1048576 (512)\n"
          "  --seed S             table seed (1)   --reference  Perlin's own permutation\n"
          "  --bits 8|16|32       image bit depth (8; EXR defaults to 32)\n"
+         "  --threads N          threads for the sums' grids, 1..%d (default: the %d\n"
+         "                       processors online); the same values for any count\n"
          "  --normalize range|bound   grey mapping for integer formats: the image's min..max\n"
          "                       (range), or the noise's analytic bound, the same grey for\n"
          "                       the same value at every setting (bound)\n\n"
@@ -95,7 +98,7 @@ static void usage(void)
          "y = y0 + (r + 1/2) extent / size: row 0 is the top of the image, so y grows\n"
          "downward in the picture (as the .tsv's rows). An option that does not apply to\n"
          "the chosen noise or output format is ignored with a warning.\n",
-         bases, nl_basis_default()->under);
+         bases, nl_basis_default()->under, NL_PARALLEL_MAX, nl_parallel_cores());
 }
 
 /* One line on stderr, exit 2: input quoted in it is escaped (nl_message). */
@@ -136,10 +139,10 @@ static void parse(int argc, char **argv, options *o)
 {
   *o = (options){.basis = nl_basis_default()->under, .normalize = "range", .count = "inverse",
                  .bo = nl_basis_defaults(), .so = nl_basis_sum_defaults(), .size = 512, .seed = 1,
-                 .bits = 0, .extent = 4, .z = 0.5};
+                 .bits = 0, .extent = 4, .z = 0.5, .threads = nl_parallel_cores()};
   enum { R_OUT, R_SIZE, R_OCTAVES, R_SEED, R_TABLE_SIZE, R_BITS, R_EXTENT, R_X0, R_Y0, R_Z, R_GAIN,
          R_LACUNARITY, R_AMPLITUDE, R_STRIPES, R_BASIS, R_TERMS, R_TILE, R_COUNT, R_LAMBDA, R_POINTS,
-         R_NORMALIZE, R_REFERENCE, R_HELP };
+         R_NORMALIZE, R_REFERENCE, R_THREADS, R_HELP };
   static const nl_opt_spec spec[] = {
     [R_OUT] = {"out", 'o', 1}, [R_SIZE] = {"size", 0, 1}, [R_OCTAVES] = {"octaves", 0, 1},
     [R_SEED] = {"seed", 0, 1}, [R_TABLE_SIZE] = {"table-size", 0, 1}, [R_BITS] = {"bits", 0, 1},
@@ -148,6 +151,7 @@ static void parse(int argc, char **argv, options *o)
     [R_STRIPES] = {"stripes", 0, 1}, [R_BASIS] = {"basis", 0, 1}, [R_TERMS] = {"terms", 0, 1},
     [R_TILE] = {"tile", 0, 1}, [R_COUNT] = {"count", 0, 1}, [R_LAMBDA] = {"lambda", 0, 1},
     [R_POINTS] = {"points", 0, 1}, [R_NORMALIZE] = {"normalize", 0, 1}, [R_REFERENCE] = {"reference", 0, 0},
+    [R_THREADS] = {"threads", 0, 1},
     [R_HELP] = {"help", 'h', 0}, {NULL, 0, 0}};
   nl_opt_parser p;
   nl_error err;
@@ -190,6 +194,7 @@ static void parse(int argc, char **argv, options *o)
       break;
     case R_POINTS: integer(a, v, LONG_MIN, LONG_MAX, &o->bo.points); break;
     case R_NORMALIZE: o->normalize = v; break;
+    case R_THREADS: integer(a, v, 1, NL_PARALLEL_MAX, &o->threads); break;
     }
   }
   nl_opt_end(&p);
@@ -315,7 +320,7 @@ static double *evaluate(const options *o, double *lo, double *hi)
   nl_noise_octaves oct = o->sum->octaves(&o->so);
   check_lattice(o, &oct, b);
   double *v = nl_xmalloc((size_t)o->size * o->size * sizeof *v);
-  o->sum->grid(&b->noise, &oct, &o->so, &win, v, lo, hi);
+  nl_basis_sum_grid_threads(o->sum, &b->noise, &oct, &o->so, &win, (int)o->threads, v, lo, hi);
   nl_basis_free(b);
   return v;
 }

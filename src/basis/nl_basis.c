@@ -227,6 +227,21 @@ static void marble_grid(const nl_noise_basis *b, const nl_noise_octaves *oct,
 
 const nl_basis_sum nl_basis_single = {"", "", 0, one_octave, sum_grid};
 
+void nl_basis_sum_grid_threads(const nl_basis_sum *s, const nl_noise_basis *b,
+                               const nl_noise_octaves *oct, const nl_basis_sum_options *o,
+                               const nl_noise_window *win, int nthreads, double *v, double *lo,
+                               double *hi)
+{
+  if (s->grid != sum_grid) {   /* marble: one thread */
+    s->grid(b, oct, o, win, v, lo, hi);
+    return;
+  }
+  double B = nl_noise_octaves_bound(oct, b->bound);
+  nl_noise_fractal_grid_threads(b, oct, win, nthreads, v);   /* sum_grid's values, by rows */
+  *lo = oct->turbulence ? 0 : -B;
+  *hi = B;
+}
+
 static const nl_basis_sum sums[] = {
   {"fractal", "sum_j noise(2^j p) / 2^j            (Shaffer)", NL_BASIS_SUM_OCTAVES, fractal,
    sum_grid},

@@ -147,6 +147,13 @@ typedef struct {
 
 /* A basis on its own: one octave of frequency and amplitude 1. */
 extern const nl_basis_sum nl_basis_single;
+/* s->grid on nthreads threads (nl_noise_fractal_grid_threads: the same
+ * bytes for any count) where s is a plain sum of octaves (the single
+ * noise, fractal, turbulence, fbm); other sums (marble) on one thread. */
+void nl_basis_sum_grid_threads(const nl_basis_sum *s, const nl_noise_basis *b,
+                               const nl_noise_octaves *oct, const nl_basis_sum_options *o,
+                               const nl_noise_window *win, int nthreads, double *v, double *lo,
+                               double *hi);
 const nl_basis_sum *nl_basis_sums(size_t *n);
 const nl_basis_sum *nl_basis_sum_find(const char *name);
 

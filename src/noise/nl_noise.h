@@ -361,6 +361,31 @@ void nl_noise_grad2_fractal_row_f32(const nl_noise_grad2 *t, const nl_noise_octa
 void nl_noise_fractal_grid_f32(const nl_noise_grad2 *t2, const nl_noise_perm3 *p3,
                                const nl_noise_octaves *o, const nl_noise_window *win, float *out);
 
+/* ---- threads ---------------------------------------------------------
+ *
+ * Large work split across threads by nl_parallel_for (base/nl_parallel.h),
+ * the same bytes as one thread for any nthreads: every value is made by
+ * the one-thread call on a part (a grid row; a run of whole
+ * NL_NOISE_CHECK_BLOCK blocks of points), and no value depends on another.
+ * The caller chooses nthreads (the library never does); nthreads <= 1, or
+ * work below a size threshold measured where starting threads cost more
+ * than they save, runs on the calling thread.
+ *   nl_noise_fractal_grid_threads           nl_noise_fractal_grid, by rows;
+ *       b->row must be safe to call from several threads at once (every
+ *       basis of the library is: its tables are only read);
+ *   nl_noise_perm3_points_checked_threads   nl_noise_perm3_points_checked,
+ *   nl_noise_grad2_points_checked_threads   nl_noise_grad2_points_checked,
+ *       with their contract exactly: the first refused k (n if none),
+ *       out[0 .. k) the values, out[k1 ..) untouched for k1 the end of
+ *       k's block. */
+void nl_noise_fractal_grid_threads(const nl_noise_basis *b, const nl_noise_octaves *o,
+                                   const nl_noise_window *win, int nthreads, double *out);
+size_t nl_noise_perm3_points_checked_threads(const nl_noise_perm3 *p, const struct nl_noise_octaves *o,
+                                             const double *x, const double *y, const double *z,
+                                             size_t n, double *out, int nthreads);
+size_t nl_noise_grad2_points_checked_threads(const nl_noise_grad2 *t, const double *x,
+                                             const double *y, size_t n, double *out, int nthreads);
+
 /* ---- the point calls, inline ----------------------------------------
  *
  * The bodies of nl_noise_grad2_eval, nl_noise_perm3_eval and
