@@ -34,6 +34,7 @@
 #include <numpy/arrayscalars.h>
 
 #include "basis/nl_basis.h"
+#include "base/nl_parallel.h"
 #include "texture/nl_texture.h"
 
 #include <math.h>
@@ -66,6 +67,11 @@ typedef struct {
  * kernel stays within a few ms (10^6 points of 6-octave fbm: ~60 ms in all;
  * gctbf ~1 us a point), and 16 GIL round trips in 10^6 points cost
  * nothing measurable. */
+/* A threaded call's blocks are this many times the one-thread block: each
+ * nl_parallel_for starts its threads (about 0.1 ms), and the one-thread
+ * blocks, sized for Ctrl-C, are too small to pay for that. */
+#define THREADED_BLOCKS 16
+
 static size_t block_points(const NoiseFunction *f)
 {
   size_t per = (f->kind == K_PERM3 || f->kind == K_GRAD2) ? 65536 : 4096;
@@ -76,15 +82,15 @@ static size_t block_points(const NoiseFunction *f)
 
 /* The first refused point of x[0..n) (n if none); out[0..k) written. No GIL. */
 static size_t run(const NoiseFunction *f, const double *x, const double *y, const double *z,
-                  size_t n, double *out)
+                  size_t n, double *out, int nthreads)
 {
   size_t k;
   switch (f->kind) {
-  case K_PERM3:
-    return nl_noise_perm3_points_checked(&f->b->perm3, f->has_sum ? &f->oct : NULL, x, y, z,
-                                         n, out);
+  case K_PERM3:   /* the same bytes for any nthreads (nl_noise.h, "threads") */
+    return nl_noise_perm3_points_checked_threads(&f->b->perm3, f->has_sum ? &f->oct : NULL, x, y,
+                                                 z, n, out, nthreads);
   case K_GRAD2:
-    return nl_noise_grad2_points_checked(f->grad2, x, y, n, out);
+    return nl_noise_grad2_points_checked_threads(f->grad2, x, y, n, out, nthreads);
   default:
     break;
   }
@@ -137,7 +143,7 @@ static PyObject *nf_vectorcall(PyObject *self, PyObject *const *args, size_t nar
     if (nl_noise_points_refused(&c[0], &c[1], NULL, 1, f->fmax) != 1)
       goto slow;
     v = nl_noise_grad2_eval(f->grad2, c[0], c[1]);
-  } else if (run(f, &c[0], &c[1], f->planar ? NULL : &c[2], 1, &v) != 1) {
+  } else if (run(f, &c[0], &c[1], f->planar ? NULL : &c[2], 1, &v, 1) != 1) {
     goto slow;
   }
   r = PyArrayScalar_New(Double);
@@ -280,10 +286,13 @@ static const double *data_of(PyObject *a, size_t n, const char *name, int writea
 static PyObject *ext_points(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
 {
   (void)mod;
-  if (nargs != 5 || !PyObject_TypeCheck(args[0], &NoiseFunctionType)) {
-    PyErr_SetString(PyExc_TypeError, "points(f, x, y, z, out)");
+  if ((nargs != 5 && nargs != 6) || !PyObject_TypeCheck(args[0], &NoiseFunctionType)) {
+    PyErr_SetString(PyExc_TypeError, "points(f, x, y, z, out[, threads])");
     return NULL;
   }
+  int nthreads = 1;
+  if (nargs == 6 && (nthreads = _PyLong_AsInt(args[5])) == -1 && PyErr_Occurred())
+    return NULL;
   const NoiseFunction *f = (const NoiseFunction *)args[0];
   if (!PyArray_Check(args[4])) {
     PyErr_SetString(PyExc_ValueError, "out: expected a numpy array");
@@ -298,11 +307,17 @@ static PyObject *ext_points(PyObject *mod, PyObject *const *args, Py_ssize_t nar
     return NULL;
   if (!f->planar && !(z = data_of(args[3], n, "z", 0)))
     return NULL;
+  /* threads split a block when it is above the library's size threshold
+   * (2^17 samples): a threaded call's blocks are THREADED_BLOCKS times as
+   * large (each nl_parallel_for starts its threads), still a few
+   * milliseconds between checks for signals */
   size_t block = block_points(f), done = 0;
+  if (nthreads > 1 && (f->kind == K_PERM3 || f->kind == K_GRAD2))
+    block *= THREADED_BLOCKS;
   while (done < n) {
     size_t m = n - done < block ? n - done : block, k;
     Py_BEGIN_ALLOW_THREADS
-    k = run(f, x + done, y + done, z ? z + done : NULL, m, out + done);
+    k = run(f, x + done, y + done, z ? z + done : NULL, m, out + done, nthreads);
     Py_END_ALLOW_THREADS
     done += k;
     if (k < m)
@@ -320,16 +335,44 @@ static PyObject *ext_points(PyObject *mod, PyObject *const *args, Py_ssize_t nar
  * stripes, omega and a as its. The bits of those calls: the same rows, each
  * nl_noise_fractal_row at x0 + dx/2, y0 + (r + 1/2) dy. A block is as many
  * rows as hold about block samples times octaves (at least one row). */
+/* A block of rows runs on threads when it holds at least twice the
+ * one-thread block's samples (pixels x octaves): for the SIMD bases 2^17,
+ * the library's own threshold for its threaded calls (nl_noise.h,
+ * "threads"); the slower bases' blocks are smaller in proportion. */
+typedef struct {
+  const nl_noise_basis *b;
+  const nl_noise_octaves *o;
+  const nl_noise_window *win;
+  double dx, dy;
+  int marble;
+  double omega, a;
+  double *out, *scratch;
+  size_t w, r0;
+} grid_job;
+
+/* Row r0 + i of the window, with thread t's scratch (no GIL). */
+static void grid_row(void *ctx, size_t i, int t)
+{
+  const grid_job *j = ctx;
+  size_t r = j->r0 + i;
+  double y = j->win->y0 + ((int)r + 0.5) * j->dy, *row = j->out + r * j->w;
+  nl_noise_fractal_row(j->b, j->o, j->win->x0 + 0.5 * j->dx, j->dx, y, j->win->z, j->w, row,
+                       j->scratch + (size_t)t * j->w);
+  if (j->marble)
+    for (size_t c = 0; c < j->w; c++)
+      row[c] = nl_texture_marble(j->omega * y, j->omega * j->a, row[c]);
+}
+
 static PyObject *ext_grid(PyObject *mod, PyObject *args)
 {
   (void)mod;
   PyObject *pb, *po, *pout;
   nl_noise_window win;
-  int marble;
+  int marble, nthreads = 1;
   double omega, a;
   Py_ssize_t block;
-  if (!PyArg_ParseTuple(args, "OOddddiipddnO", &pb, &po, &win.x0, &win.y0, &win.z, &win.size,
-                        &win.w, &win.h, &marble, &omega, &a, &block, &pout))
+  if (!PyArg_ParseTuple(args, "OOddddiipddnO|i", &pb, &po, &win.x0, &win.y0, &win.z, &win.size,
+                        &win.w, &win.h, &marble, &omega, &a, &block, &pout, &nthreads))
     return NULL;
   const nl_noise_basis *b = address(pb);
   const nl_noise_octaves *o = address(po);
@@ -343,22 +386,26 @@ static PyObject *ext_grid(PyObject *mod, PyObject *args)
   double *out = (double *)data_of(pout, w * h, "out", 1);
   if (!out)
     return NULL;
-  double *scratch = malloc(w * sizeof *scratch);
+  if (nthreads < 1)
+    nthreads = 1;
+  int nt = nl_parallel_threads((size_t)-1, nthreads);
+  double *scratch = malloc((size_t)nt * w * sizeof *scratch);
   if (!scratch)
     return PyErr_NoMemory();
   size_t oct = o->n > 1 ? (size_t)o->n : 1, work = w * oct;
+  /* a block's rows are the items of one nl_parallel_for: each row is made
+   * as on one thread (its own slot, its thread's scratch), so the bytes do
+   * not depend on the thread count */
   size_t rows = block < 1 || work >= (size_t)block ? 1 : (size_t)block / work;
-  double dx = win.size / win.w, dy = win.size / win.h;
+  if (nt > 1 && block > 0 && rows * work < THREADED_BLOCKS * (size_t)block)
+    rows = (THREADED_BLOCKS * (size_t)block + work - 1) / work;
+  grid_job j = {b, o, &win, win.size / win.w, win.size / win.h, marble, omega, a, out, scratch, w, 0};
   for (size_t r0 = 0; r0 < h; r0 += rows) {
     size_t r1 = r0 + rows < h ? r0 + rows : h;
+    j.r0 = r0;
     Py_BEGIN_ALLOW_THREADS
-    for (size_t r = r0; r < r1; r++) {
-      double y = win.y0 + ((int)r + 0.5) * dy, *row = out + r * w;
-      nl_noise_fractal_row(b, o, win.x0 + 0.5 * dx, dx, y, win.z, w, row, scratch);
-      if (marble)
-        for (size_t c = 0; c < w; c++)
-          row[c] = nl_texture_marble(omega * y, omega * a, row[c]);
-    }
+    nl_parallel_for(r1 - r0, r1 - r0 > 1 && work * (r1 - r0) >= 2 * (size_t)block ? nthreads : 1,
+                    grid_row, &j);
     Py_END_ALLOW_THREADS
     if (r1 < h && PyErr_CheckSignals()) {
       free(scratch);
@@ -487,13 +534,13 @@ static PyObject *ext_bases(PyObject *mod, PyObject *unused)
 
 static PyMethodDef ext_methods[] = {
   {"points", (PyCFunction)(void (*)(void))ext_points, METH_FASTCALL,
-   "points(f, x, y, z, out) -> index of the first refused point (out.size if none)"},
+   "points(f, x, y, z, out[, threads]) -> index of the first refused point (out.size if none)"},
   {"points_f32", (PyCFunction)(void (*)(void))ext_points_f32, METH_FASTCALL,
    "points_f32(f, x, y, z, out) -> as points, over float32 arrays (float32 kernels)"},
   {"has_f32", ext_has_f32, METH_O, "has_f32(f) -> whether f has float32 kernels"},
   {"bases", ext_bases, METH_NOARGS, "bases() -> ((name, under, planar), ...)"},
   {"grid", ext_grid, METH_VARARGS,
-   "grid(noise_basis, octaves, x0, y0, z, size, w, h, marble, omega, a, block, out)"},
+   "grid(noise_basis, octaves, x0, y0, z, size, w, h, marble, omega, a, block, out[, threads])"},
   {NULL, NULL, 0, NULL}
 };
 

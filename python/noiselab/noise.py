@@ -23,6 +23,7 @@ sum of F1..F4), ``wavelet`` (Cook & DeRose 2005), and the sums ``fractal``,
 """
 
 import ctypes
+import os
 import functools
 from typing import TYPE_CHECKING, Optional, Tuple
 
@@ -432,7 +433,7 @@ def grid(noise: str = "improved", size: int = 512, *, extent: float = 4.0, x0: f
          stripes: float = 1.0, table: Optional[Table] = None, table_size: int = 512,
          reference: bool = False, terms: str = "F1", lambda_: float = 4.0, points: int = 50,
          count: str = "inverse", tile: int = 64,
-         out: Optional[NDArray[np.float64]] = None) -> NDArray[np.float64]:
+         out: Optional[NDArray[np.float64]] = None, workers: int = -1) -> NDArray[np.float64]:
     """A size x size raster of a noise, as ``scripts/noiselab render`` makes it.
 
     Pixel (row r, column c) holds the noise at x = x0 + (c + 1/2) extent / size,
@@ -452,6 +453,11 @@ def grid(noise: str = "improved", size: int = 512, *, extent: float = 4.0, x0: f
     out : numpy.ndarray, optional
         a C-contiguous float64 (size, size) array to write into (a fresh one
         costs its page faults, as much as the noise on a loaded machine).
+    workers : int
+        threads for the rows, as scipy's ``workers``: -1 (default) every
+        processor, as ``render --threads``; 1 the calling thread only. The
+        values are the same bytes for any count; small rasters (below 2^17
+        samples a block) stay on one thread.
     %OPTIONS%
     Returns
     -------
@@ -480,8 +486,17 @@ def grid(noise: str = "improved", size: int = 512, *, extent: float = 4.0, x0: f
     block = 65536 if nz.kind in ("improved", "noise2") else 4096
     ext.grid(ctypes.addressof(nz.basis), ctypes.addressof(nz.octaves), win.x0, win.y0, win.z,
              win.size, win.w, win.h, nz.sum == "marble", 2 * np.pi * so.stripes, so.amplitude,
-             block, res)
+             block, res, _workers(workers))
     return res
+
+
+def _workers(workers):
+    """scipy's ``workers``: a positive count, or -1 for every processor
+    (os.cpu_count, the processors online: the library's default rule)."""
+    if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)) or \
+            not (workers == -1 or 1 <= workers <= 1024):
+        raise ValueError(f"workers: {workers!r} must be -1 (every processor) or 1..1024")
+    return int(workers) if workers != -1 else (os.cpu_count() or 1)
 
 
 def _out(out, shape, dtype=np.dtype(np.float64)):
@@ -605,7 +620,7 @@ def points(x: ArrayLike, y: ArrayLike, z: Optional[ArrayLike] = None, noise: str
            lacunarity: float = 2.0, table: Optional[Table] = None, table_size: int = 512,
            reference: bool = False, terms: str = "F1", lambda_: float = 4.0, points: int = 50,
            count: str = "inverse", tile: int = 64,
-           out: Optional[NDArray[np.float64]] = None) -> NDArray[np.float64]:
+           out: Optional[NDArray[np.float64]] = None, workers: int = -1) -> NDArray[np.float64]:
     """A noise at arrays of points: x, y (and z) broadcast together as numpy does.
 
     Coordinates are float64 or float32 (integer arrays are converted to
@@ -642,6 +657,11 @@ def points(x: ArrayLike, y: ArrayLike, z: Optional[ArrayLike] = None, noise: str
         may overlap x, y or z (``out=x``): the values are then those of the
         call without out, computed into a temporary first, as numpy's ufuncs
         buffer overlaps.
+    workers : int
+        threads for the improved and noise2 batches and their sums (float64),
+        as scipy's ``workers``: -1 (default) every processor, 1 the calling
+        thread only; the same bytes for any count, and batches below 2^17
+        samples stay on one thread.
     %OPTIONS%
     Returns
     -------
@@ -660,14 +680,15 @@ def points(x: ArrayLike, y: ArrayLike, z: Optional[ArrayLike] = None, noise: str
     nz = _make(noise, seed, basis, octaves, gain, lacunarity, table, table_size, reference,
                terms, lambda_, points, count, tile)
     f = nz.kernel
+    nthreads = _workers(workers)
     if out is None and _scalars(x, y, z):
         # the extension's scalar path: no array is made (a point the
         # library refuses comes back through _points_nz for its message)
         return f(x, y) if z is None else f(x, y, z)
-    return _points_nz(nz, x, y, z, out=out)
+    return _points_nz(nz, x, y, z, out=out, threads=nthreads)
 
 
-def _points_nz(nz, x, y, z=None, *, out=None):
+def _points_nz(nz, x, y, z=None, *, out=None, threads=None):
     """points() of the built noise nz: the arrays' path."""
     # float32 coordinates keep float32 (numpy's habit): through the float32
     # kernels where the library has them, else computed in double and
@@ -695,7 +716,10 @@ def _points_nz(nz, x, y, z=None, *, out=None):
         out = np.empty(dest.shape, dtype=cdt)
     # one C call, a block at a time with the GIL released and signals
     # (Ctrl-C) checked between blocks (_ext.c)
-    k = (ext.points_f32 if f32 else ext.points)(nz.kernel, xs, ys, zs, out)
+    if f32:
+        k = ext.points_f32(nz.kernel, xs, ys, zs, out)
+    else:
+        k = ext.points(nz.kernel, xs, ys, zs, out, threads or (os.cpu_count() or 1))
     if out is not dest:
         dest.ravel()[:k] = out.ravel()[:k]
     if k < out.size:

@@ -643,3 +643,24 @@ def test_float32_in_float32_out():
     bad[7] = np.nan
     with pytest.raises(ValueError, match=r"x: coordinate 7 \(flat index\) is nan"):
         nn.points(bad, y, z)
+
+
+def test_workers_give_the_same_bytes():
+    """workers= (scipy's name) splits grids by rows and the improved and
+    noise2 batches by blocks across threads: 1, 2 and 3 threads give the same
+    bytes, on work above the threaded size (2^17 samples) and below it;
+    anything but -1 or 1..1024 is refused naming the argument."""
+    rng = np.random.default_rng(9)
+    x, y, z = rng.uniform(-40, 40, (3, 300_001))
+    for noise in ("improved", "fbm", "fractal", "noise2", "turbulence"):
+        zz = None if noise == "noise2" else z
+        ref = nn.points(x, y, zz, noise, workers=1)
+        for w in (2, 3, -1):
+            assert np.array_equal(nn.points(x, y, zz, noise, workers=w), ref), (noise, w)
+    for noise, size in (("fbm", 700), ("marble", 300), ("noise2", 64)):
+        ref = nn.grid(noise, size, workers=1)
+        for w in (2, 3):
+            assert np.array_equal(nn.grid(noise, size, workers=w), ref), (noise, w)
+    for bad in (0, -2, 1025, 1.5, True):
+        with pytest.raises(ValueError, match="workers: .* must be -1 .* or 1..1024"):
+            nn.grid("fbm", 8, workers=bad)
