@@ -56,7 +56,8 @@ int main(int argc, char **argv)
     const nl_study_cheng_thesis_gmm *th = &nl_study_cheng_thesis_gmm_tables[t % NTEX];
     long u0 = (long)t * ro.reps;
     int mine = 0;
-    for (long u = u0; u < (t < NTEX ? u0 + ro.reps : nunits); u++) mine += nl_harness_unit_mine(r, u);
+    long u1 = t < NTEX ? u0 + ro.reps : nunits;
+    for (long u = u0; u < u1; u++) mine += nl_harness_unit_mine(r, u);
     if (!mine) continue;
     if (t < NTEX) {
       /* every reading over pool replicates; replicate 0 also fills the older tables */
