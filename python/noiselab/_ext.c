@@ -267,57 +267,106 @@ static PyTypeObject NoiseFunctionType = {
   .tp_members = nf_members,
 };
 
-static const double *data_of(PyObject *a, size_t n, const char *name, int writeable)
+/* The data of a C-contiguous numpy array of n entries of type (NPY_DOUBLE
+ * or NPY_FLOAT), or NULL with a ValueError naming it. */
+static void *array_of(PyObject *a, size_t n, const char *name, int writeable, int type)
 {
-  if (!PyArray_Check(a) || PyArray_TYPE((PyArrayObject *)a) != NPY_DOUBLE ||
+  if (!PyArray_Check(a) || PyArray_TYPE((PyArrayObject *)a) != type ||
       !PyArray_IS_C_CONTIGUOUS((PyArrayObject *)a) || (size_t)PyArray_SIZE((PyArrayObject *)a) != n ||
       (writeable && !PyArray_ISWRITEABLE((PyArrayObject *)a))) {
-    PyErr_Format(PyExc_ValueError, "%s: expected a C-contiguous float64 array of %zu entries",
-                 name, n);
+    PyErr_Format(PyExc_ValueError, "%s: expected a C-contiguous %s array of %zu entries", name,
+                 type == NPY_FLOAT ? "float32" : "float64", n);
     return NULL;
   }
   return PyArray_DATA((PyArrayObject *)a);
 }
 
-/* points(f, x, y, z, out): f's noise at the points of the contiguous
- * float64 arrays x, y, z (None for planar noises) into out, which overlaps
- * none of them (noise.py buffers an overlap). Returns the flat index of the
- * first refused point (out.size if none); out[0 .. k) holds values. */
-static PyObject *ext_points(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+static const double *data_of(PyObject *a, size_t n, const char *name, int writeable)
 {
-  (void)mod;
-  if ((nargs != 5 && nargs != 6) || !PyObject_TypeCheck(args[0], &NoiseFunctionType)) {
-    PyErr_SetString(PyExc_TypeError, "points(f, x, y, z, out[, threads])");
+  return array_of(a, n, name, writeable, NPY_DOUBLE);
+}
+
+/* The float32 path (nl_noise.h, "float32 path"): improved noise alone or
+ * its fBm and fractal sums, and the 2D table noise, computed in float. */
+static int has_f32(const NoiseFunction *f) { return f->kind == K_PERM3 || f->kind == K_GRAD2; }
+
+/* The first point of a float32 block the double path would refuse (n if
+ * none): a coordinate that is not finite, or f |c| >= 2^52 - the same rule
+ * as nl_noise_points_refused, so both dtypes refuse the same points. */
+static size_t refused_f32(const float *x, const float *y, const float *z, size_t n, double f)
+{
+  const double lim = 4503599627370496.0;   /* 2^52 */
+  for (size_t k = 0; k < n; k++) {
+    double a = x[k], b = y[k], c = z ? z[k] : 0.0;
+    if (!(fabs(a) * f < lim && fabs(b) * f < lim && fabs(c) * f < lim)) return k;
+  }
+  return n;
+}
+
+static size_t run_f32(const NoiseFunction *f, const float *x, const float *y, const float *z,
+                      size_t n, float *out)
+{
+  size_t k = refused_f32(x, y, z, n, f->fmax);
+  if (f->kind == K_GRAD2)
+    nl_noise_grad2_points_f32(f->grad2, x, y, k, out);
+  else if (f->has_sum)
+    nl_noise_perm3_fractal_points_f32(&f->b->perm3, &f->oct, x, y, z, k, out);
+  else
+    nl_noise_perm3_points_f32(&f->b->perm3, x, y, z, k, out);
+  return k;
+}
+
+/* points(f, x, y, z, out[, threads]): f's noise at the points of the
+ * contiguous float64 arrays x, y, z (None for planar noises) into out,
+ * which overlaps none of them (noise.py buffers an overlap). Returns the
+ * flat index of the first refused point (out.size if none); out[0 .. k)
+ * holds values. points_f32(f, x, y, z, out): the same over float32 arrays
+ * through the float32 kernels (f must have them: has_f32). */
+static PyObject *points_call(PyObject *const *args, Py_ssize_t nargs, int f32)
+{
+  if ((nargs != 5 && (f32 || nargs != 6)) || !PyObject_TypeCheck(args[0], &NoiseFunctionType)) {
+    PyErr_SetString(PyExc_TypeError, f32 ? "points_f32(f, x, y, z, out)"
+                                         : "points(f, x, y, z, out[, threads])");
     return NULL;
   }
   int nthreads = 1;
   if (nargs == 6 && (nthreads = _PyLong_AsInt(args[5])) == -1 && PyErr_Occurred())
     return NULL;
   const NoiseFunction *f = (const NoiseFunction *)args[0];
+  if (f32 && !has_f32(f)) {
+    PyErr_SetString(PyExc_ValueError, "points_f32: this noise has no float32 kernel");
+    return NULL;
+  }
   if (!PyArray_Check(args[4])) {
     PyErr_SetString(PyExc_ValueError, "out: expected a numpy array");
     return NULL;
   }
+  int type = f32 ? NPY_FLOAT : NPY_DOUBLE;
   size_t n = (size_t)PyArray_SIZE((PyArrayObject *)args[4]);
-  double *out = (double *)data_of(args[4], n, "out", 1);
-  const double *x = out ? data_of(args[1], n, "x", 0) : NULL;
-  const double *y = x ? data_of(args[2], n, "y", 0) : NULL;
-  const double *z = NULL;
+  char *out = array_of(args[4], n, "out", 1, type);
+  const char *x = out ? array_of(args[1], n, "x", 0, type) : NULL;
+  const char *y = x ? array_of(args[2], n, "y", 0, type) : NULL;
+  const char *z = NULL;
   if (!y)
     return NULL;
-  if (!f->planar && !(z = data_of(args[3], n, "z", 0)))
+  if (!f->planar && !(z = array_of(args[3], n, "z", 0, type)))
     return NULL;
   /* threads split a block when it is above the library's size threshold
    * (2^17 samples): a threaded call's blocks are THREADED_BLOCKS times as
    * large (each nl_parallel_for starts its threads), still a few
    * milliseconds between checks for signals */
-  size_t block = block_points(f), done = 0;
+  size_t block = block_points(f), done = 0, sz = f32 ? sizeof(float) : sizeof(double);
   if (nthreads > 1 && (f->kind == K_PERM3 || f->kind == K_GRAD2))
     block *= THREADED_BLOCKS;
   while (done < n) {
-    size_t m = n - done < block ? n - done : block, k;
+    size_t m = n - done < block ? n - done : block, k, at = done * sz;
     Py_BEGIN_ALLOW_THREADS
-    k = run(f, x + done, y + done, z ? z + done : NULL, m, out + done, nthreads);
+    if (f32)
+      k = run_f32(f, (const float *)(x + at), (const float *)(y + at),
+                  z ? (const float *)(z + at) : NULL, m, (float *)(out + at));
+    else
+      k = run(f, (const double *)(x + at), (const double *)(y + at),
+              z ? (const double *)(z + at) : NULL, m, (double *)(out + at), nthreads);
     Py_END_ALLOW_THREADS
     done += k;
     if (k < m)
@@ -326,6 +375,18 @@ static PyObject *ext_points(PyObject *mod, PyObject *const *args, Py_ssize_t nar
       return NULL;
   }
   return PyLong_FromSize_t(done);
+}
+
+static PyObject *ext_points(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+  (void)mod;
+  return points_call(args, nargs, 0);
+}
+
+static PyObject *ext_points_f32(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
+{
+  (void)mod;
+  return points_call(args, nargs, 1);
 }
 
 /* grid(noise_basis, octaves, x0, y0, z, size, w, h, marble, omega, a, block, out):
@@ -414,90 +475,6 @@ static PyObject *ext_grid(PyObject *mod, PyObject *args)
   }
   free(scratch);
   Py_RETURN_NONE;
-}
-
-/* The float32 path (nl_noise.h, "float32 path"): improved noise alone or
- * its fBm and fractal sums, and the 2D table noise, computed in float. */
-static int has_f32(const NoiseFunction *f) { return f->kind == K_PERM3 || f->kind == K_GRAD2; }
-
-/* The first point of a float32 block the double path would refuse (n if
- * none): a coordinate that is not finite, or f |c| >= 2^52 - the same rule
- * as nl_noise_points_refused, so both dtypes refuse the same points. */
-static size_t refused_f32(const float *x, const float *y, const float *z, size_t n, double f)
-{
-  const double lim = 4503599627370496.0;   /* 2^52 */
-  for (size_t k = 0; k < n; k++) {
-    double a = x[k], b = y[k], c = z ? z[k] : 0.0;
-    if (!(fabs(a) * f < lim && fabs(b) * f < lim && fabs(c) * f < lim)) return k;
-  }
-  return n;
-}
-
-static size_t run_f32(const NoiseFunction *f, const float *x, const float *y, const float *z,
-                      size_t n, float *out)
-{
-  size_t k = refused_f32(x, y, z, n, f->fmax);
-  if (f->kind == K_GRAD2)
-    nl_noise_grad2_points_f32(f->grad2, x, y, k, out);
-  else if (f->has_sum)
-    nl_noise_perm3_fractal_points_f32(&f->b->perm3, &f->oct, x, y, z, k, out);
-  else
-    nl_noise_perm3_points_f32(&f->b->perm3, x, y, z, k, out);
-  return k;
-}
-
-static const float *data_f32(PyObject *a, size_t n, const char *name, int writeable)
-{
-  if (!PyArray_Check(a) || PyArray_TYPE((PyArrayObject *)a) != NPY_FLOAT ||
-      !PyArray_IS_C_CONTIGUOUS((PyArrayObject *)a) || (size_t)PyArray_SIZE((PyArrayObject *)a) != n ||
-      (writeable && !PyArray_ISWRITEABLE((PyArrayObject *)a))) {
-    PyErr_Format(PyExc_ValueError, "%s: expected a C-contiguous float32 array of %zu entries",
-                 name, n);
-    return NULL;
-  }
-  return PyArray_DATA((PyArrayObject *)a);
-}
-
-/* points_f32(f, x, y, z, out): points() over float32 arrays through the
- * float32 kernels; f must have them (has_f32, noise.py asks). */
-static PyObject *ext_points_f32(PyObject *mod, PyObject *const *args, Py_ssize_t nargs)
-{
-  (void)mod;
-  if (nargs != 5 || !PyObject_TypeCheck(args[0], &NoiseFunctionType)) {
-    PyErr_SetString(PyExc_TypeError, "points_f32(f, x, y, z, out)");
-    return NULL;
-  }
-  const NoiseFunction *f = (const NoiseFunction *)args[0];
-  if (!has_f32(f)) {
-    PyErr_SetString(PyExc_ValueError, "points_f32: this noise has no float32 kernel");
-    return NULL;
-  }
-  if (!PyArray_Check(args[4])) {
-    PyErr_SetString(PyExc_ValueError, "out: expected a numpy array");
-    return NULL;
-  }
-  size_t n = (size_t)PyArray_SIZE((PyArrayObject *)args[4]);
-  float *out = (float *)data_f32(args[4], n, "out", 1);
-  const float *x = out ? data_f32(args[1], n, "x", 0) : NULL;
-  const float *y = x ? data_f32(args[2], n, "y", 0) : NULL;
-  const float *z = NULL;
-  if (!y)
-    return NULL;
-  if (!f->planar && !(z = data_f32(args[3], n, "z", 0)))
-    return NULL;
-  size_t block = block_points(f), done = 0;
-  while (done < n) {
-    size_t m = n - done < block ? n - done : block, k;
-    Py_BEGIN_ALLOW_THREADS
-    k = run_f32(f, x + done, y + done, z ? z + done : NULL, m, out + done);
-    Py_END_ALLOW_THREADS
-    done += k;
-    if (k < m)
-      break;
-    if (done < n && PyErr_CheckSignals())
-      return NULL;
-  }
-  return PyLong_FromSize_t(done);
 }
 
 /* has_f32(f): whether points_f32 takes f. */
