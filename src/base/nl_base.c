@@ -7,6 +7,7 @@
 #include <signal.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio_ext.h>
 #include <stdlib.h>
 #include <string.h>
@@ -143,6 +144,56 @@ void nl_message(FILE *f, const char *fmt, ...)
   va_start(ap, fmt);
   nl_vmessage(f, fmt, ap);
   va_end(ap);
+}
+
+static nl_alloc_hook alloc_hook = NULL;
+static void *alloc_hook_ctx = NULL;
+
+void nl_alloc_set_hook(nl_alloc_hook h, void *ctx)
+{
+  alloc_hook = h;
+  alloc_hook_ctx = ctx;
+}
+
+static int alloc_allowed(size_t n)
+{
+  return !alloc_hook || alloc_hook(n, alloc_hook_ctx);
+}
+
+void *nl_malloc(size_t n)
+{
+  return alloc_allowed(n) ? malloc(n ? n : 1) : NULL;
+}
+
+void *nl_malloc_array(size_t n, size_t size)
+{
+  if (size && n > SIZE_MAX / size) return NULL;
+  return nl_malloc(n * size);
+}
+
+void *nl_calloc(size_t n, size_t size)
+{
+  if (size && n > SIZE_MAX / size) return NULL;
+  return alloc_allowed(n * size) ? calloc(n ? n : 1, size ? size : 1) : NULL;
+}
+
+void *nl_realloc(void *p, size_t n)
+{
+  return alloc_allowed(n) ? realloc(p, n ? n : 1) : NULL;
+}
+
+char *nl_strdup(const char *s)
+{
+  size_t n = strlen(s) + 1;
+  char *d = nl_malloc(n);
+  if (d) memcpy(d, s, n);
+  return d;
+}
+
+nl_status nl_fail_nomem(nl_error *err, const char *what, size_t n)
+{
+  if (what) return nl_fail(err, NL_ENOMEM, "%s: out of memory allocating %zu bytes", what, n);
+  return nl_fail(err, NL_ENOMEM, "out of memory allocating %zu bytes", n);
 }
 
 /* NULL: abort() after the message, as GSL's default error handler does. */

@@ -84,6 +84,33 @@ void nl_vmessage(FILE *f, const char *fmt, va_list ap) __attribute__((format(pri
  * names it: "write error on standard output: No space left on device". */
 nl_status nl_stream_close(FILE *f, const char *what, nl_error *err);
 
+/* The library's allocation: malloc's contract (NULL on failure; a size of
+ * 0 asks for 1 byte, so NULL always means failure; nl_calloc and
+ * nl_malloc_array refuse a product that overflows size_t). Memory from them
+ * is released with free(). A library call that cannot allocate returns
+ * NL_ENOMEM with nl_fail_nomem's message; it never prints, exits or aborts:
+ * what happens next is the calling program's choice.
+ *
+ * A host may watch or refuse allocations: nl_alloc_set_hook(h, ctx) makes
+ * every allocation of these four first call h(n, ctx) with the bytes asked
+ * for, and fail (as malloc returning NULL) when h returns 0. NULL removes the
+ * hook. The hook is the host's process-wide setting, like SQLite's
+ * sqlite3_config(SQLITE_CONFIG_MALLOC): set it before any other call, not
+ * while library calls run in other threads. The tests set a counting hook
+ * that makes the 1st, 2nd, ... allocation of a call fail in turn, to show
+ * every path returns NL_ENOMEM and leaks nothing. */
+typedef int (*nl_alloc_hook)(size_t n, void *ctx);
+void nl_alloc_set_hook(nl_alloc_hook h, void *ctx);
+void *nl_malloc(size_t n);
+void *nl_calloc(size_t n, size_t size);
+void *nl_malloc_array(size_t n, size_t size);
+void *nl_realloc(void *p, size_t n);
+char *nl_strdup(const char *s);
+/* "out of memory allocating N bytes" (what names the caller's object when
+ * not NULL: "nl_gmm_fit: out of memory allocating N bytes"); returns
+ * NL_ENOMEM, for `return nl_fail_nomem(err, "what", n);`. */
+nl_status nl_fail_nomem(nl_error *err, const char *what, size_t n);
+
 /* Allocation that never returns NULL: out-of-memory is not a condition any
  * caller here can recover from. On failure it prints "noiselab: out of
  * memory allocating N bytes", then calls the out-of-memory handler with the

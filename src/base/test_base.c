@@ -6,6 +6,7 @@
 #include "base/nl_base.h"
 #include "base/nl_parallel.h"
 #include "nl_test.h"
+#include "nl_test_alloc.h"
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -613,6 +614,40 @@ NL_TEST(blas_idle_stops_workers_same_bytes)
   nl_parallel_blas_idle();   /* twice in a row: nothing left to stop */
   nl_parallel_blas_idle();
   free(a); free(b); free(c1); free(c2);
+}
+
+NL_TEST(allocation_reports_failure_and_obeys_the_hook)
+{
+  /* malloc's contract: NULL only on failure, 0 bytes is one, overflow refused. */
+  void *p = nl_malloc(0);
+  NL_CHECK(p != NULL);
+  free(p);
+  NL_CHECK(nl_calloc((size_t)-1 / 2, 4) == NULL);
+  NL_CHECK(nl_malloc_array((size_t)-1 / 2, 4) == NULL);
+  double *d = nl_calloc(3, sizeof *d);
+  NL_CHECK(d && d[0] == 0 && d[2] == 0);
+  d = nl_realloc(d, 5 * sizeof *d);
+  NL_CHECK(d != NULL);
+  free(d);
+  char *s = nl_strdup("abc");
+  NL_CHECK(s && strcmp(s, "abc") == 0);
+  free(s);
+  nl_error err;
+  NL_CHECK(nl_fail_nomem(&err, "nl_thing", 24) == NL_ENOMEM);
+  NL_CHECK(strcmp(err.msg, "nl_thing: out of memory allocating 24 bytes") == 0);
+
+  /* The counting hook refuses the k-th allocation only: here a call that
+   * allocates twice is refused twice, then runs whole. */
+  nl_status st = NL_OK;
+  NL_FAIL_EACH_ALLOC(st, (void)0, {
+      char *a = nl_strdup("x"), *b = a ? nl_malloc(8) : NULL;
+      st = a && b ? NL_OK : NL_ENOMEM;
+      free(a); free(b);
+    });
+  NL_CHECK(nl_test_alloc_runs() == 3);
+  p = nl_malloc(1);   /* the hook is removed after the loop */
+  NL_CHECK(p != NULL);
+  free(p);
 }
 
 int main(void)
